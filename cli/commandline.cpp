@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "commandline.h"
+#include "profilecommand.h"
+
+namespace Cli {
+
+CommandLine::CommandLine() = default;
+CommandLine::~CommandLine() = default;
+
+void CommandLine::addCommand(std::unique_ptr<Command> command)
+{
+    m_commands.push_back(std::move(command));
+}
+
+Command *CommandLine::find(const QString &name) const
+{
+    for (const auto &command : m_commands) {
+        if (command->name() == name)
+            return command.get();
+    }
+    return nullptr;
+}
+
+QString CommandLine::help() const
+{
+    QString text = QStringLiteral(
+        "Usage: rtctl [--help] [--version] COMMAND [ARGUMENTS...]\n\n"
+        "RT Studio on the command line: profiles, code generation and live systems.\n\n"
+        "Commands:\n");
+    for (const auto &command : m_commands)
+        text += QStringLiteral("  %1  %2\n").arg(command->name(), -10).arg(command->summary());
+    text += QStringLiteral("\n'rtctl COMMAND --help' describes a command.\n"
+                           "Exit codes: 0 success, 1 problems found or the action failed, 2 usage "
+                           "error.\n");
+    return text;
+}
+
+int CommandLine::run(const QStringList &arguments, Streams streams)
+{
+    if (arguments.isEmpty()) {
+        streams.err << help();
+        return ExitUsage;
+    }
+    const QString first = arguments.first();
+    if (first == QLatin1String("--help") || first == QLatin1String("-h")
+        || first == QLatin1String("help")) {
+        streams.out << help();
+        return ExitOk;
+    }
+    if (first == QLatin1String("--version")) {
+        streams.out << "rtctl " << RTSTUDIO_VERSION << '\n';
+        return ExitOk;
+    }
+    Command *command = find(first);
+    if (!command) {
+        streams.err << "rtctl: unknown command '" << first << "'\n\n" << help();
+        return ExitUsage;
+    }
+    const QStringList rest = arguments.mid(1);
+    if (rest.contains(QLatin1String("--help")) || rest.contains(QLatin1String("-h"))) {
+        streams.out << command->usage();
+        return ExitOk;
+    }
+    return command->run(rest, streams);
+}
+
+std::unique_ptr<CommandLine> createCommandLine()
+{
+    auto commandLine = std::make_unique<CommandLine>();
+    commandLine->addCommand(std::make_unique<ProfileCommand>());
+    return commandLine;
+}
+
+} // namespace Cli
