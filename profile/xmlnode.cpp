@@ -3,6 +3,7 @@
 #include "namespaces.h"
 
 #include <QCoreApplication>
+#include <algorithm>
 #include <QHash>
 #include <QStringDecoder>
 #include <QXmlStreamReader>
@@ -87,10 +88,11 @@ QString tr(const char *text)
 }
 
 /// Finds the first byte that is not valid UTF-8 and reports its line and column.
-bool checkUtf8(const QByteArray &data, const QString &fileName, Diagnostics *diagnostics)
+bool checkUtf8(const QByteArray &data, const QString &fileName, Diagnostics *diagnostics,
+               QString *decoded)
 {
     QStringDecoder decoder(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
-    const QString decoded = decoder.decode(data);
+    *decoded = decoder.decode(data);
     if (!decoder.hasError())
         return true;
     // Find the offending line by decoding line by line.
@@ -159,6 +161,24 @@ private:
 class Parser
 {
 public:
+    /// Parses decoded text; element positions are then exact (the '<' of the start tag).
+    Parser(const QString &text, const QString &fileName, Diagnostics *diagnostics,
+           const XmlLimits &limits)
+        : m_reader(text)
+        , m_text(text)
+        , m_fileName(fileName)
+        , m_diagnostics(diagnostics)
+        , m_limits(limits)
+    {
+        m_reader.setNamespaceProcessing(true);
+        m_lineStarts.push_back(0);
+        for (qsizetype i = 0; i < text.size(); ++i) {
+            if (text.at(i) == QLatin1Char('\n'))
+                m_lineStarts.push_back(i + 1);
+        }
+    }
+
+    /// Parses bytes in an encoding other than UTF-8; positions are where start tags end.
     Parser(const QByteArray &data, const QString &fileName, Diagnostics *diagnostics,
            const XmlLimits &limits)
         : m_reader(data)
@@ -211,7 +231,7 @@ private:
         node.namespaceUri = m_reader.namespaceUri().toString();
         node.prefix = m_reader.prefix().toString();
         node.name = m_reader.name().toString();
-        node.location = SourceLocation{int(m_reader.lineNumber()), int(m_reader.columnNumber())};
+        node.location = startTagLocation();
         const QXmlStreamAttributes attributes = m_reader.attributes();
         node.attributes.reserve(attributes.size());
         for (const QXmlStreamAttribute &a : attributes) {
@@ -251,6 +271,19 @@ private:
         return false;
     }
 
+    /// QXmlStreamReader reports where a start tag ends; users want where it begins.
+    SourceLocation startTagLocation() const
+    {
+        if (m_lineStarts.empty())
+            return SourceLocation{int(m_reader.lineNumber()), int(m_reader.columnNumber())};
+        const qsizetype end = qMin<qsizetype>(m_reader.characterOffset(), m_text.size());
+        const qsizetype lt = m_text.lastIndexOf(QLatin1Char('<'), qMax<qsizetype>(end - 1, 0));
+        const qsizetype offset = lt < 0 ? end : lt;
+        const auto next = std::upper_bound(m_lineStarts.cbegin(), m_lineStarts.cend(), offset);
+        const auto line = int(next - m_lineStarts.cbegin());
+        return SourceLocation{line, int(offset - *(next - 1)) + 1};
+    }
+
     void failFromReader()
     {
         QString message = m_reader.errorString();
@@ -268,6 +301,8 @@ private:
     }
 
     QXmlStreamReader m_reader;
+    QString m_text;
+    std::vector<qsizetype> m_lineStarts;
     QString m_fileName;
     Diagnostics *m_diagnostics;
     XmlLimits m_limits;
@@ -348,9 +383,12 @@ std::optional<XmlNode> parseXml(const QByteArray &data, const QString &fileName,
         }
         return std::nullopt;
     }
-    if (!declaresOtherEncoding(data) && !checkUtf8(data, fileName, diagnostics))
+    if (declaresOtherEncoding(data))
+        return Parser(data, fileName, diagnostics, limits).run();
+    QString text;
+    if (!checkUtf8(data, fileName, diagnostics, &text))
         return std::nullopt;
-    return Parser(data, fileName, diagnostics, limits).run();
+    return Parser(text, fileName, diagnostics, limits).run();
 }
 
 QByteArray serializeXml(const XmlNode &root)

@@ -13,6 +13,7 @@ class TestXmlNode : public QObject
 
 private slots:
     void parsesNamespacesAndXsiType();
+    void locatesMultiLineStartTags();
     void roundTripsThroughSerialisation();
     void reportsErrorsWithPosition_data();
     void reportsErrorsWithPosition();
@@ -42,6 +43,20 @@ void TestXmlNode::parsesNamespacesAndXsiType()
     QVERIFY(!basic.attribute(Ns::Xsi, QStringLiteral("type")));
     QCOMPARE(basic.children.front().text, QStringLiteral("log 1"));
     QCOMPARE(basic.location.line, 5);
+    QCOMPARE(basic.location.column, 3);
+}
+
+void TestXmlNode::locatesMultiLineStartTags()
+{
+    const QByteArray xml = "<r>\n  <a x=\"1\"\n     y=\"2\"/>\n  <b/></r>";
+    Diagnostics diagnostics;
+    const auto root = parseXml(xml, QStringLiteral("t.xml"), &diagnostics);
+    QVERIFY(root);
+    QCOMPARE(root->location.line, 1);
+    QCOMPARE(root->location.column, 1);
+    QCOMPARE(root->children.at(0).location.line, 2);
+    QCOMPARE(root->children.at(0).location.column, 3);
+    QCOMPARE(root->children.at(1).location.line, 4);
 }
 
 void TestXmlNode::roundTripsThroughSerialisation()
