@@ -283,14 +283,16 @@ struct RtcProfile
     static inline const QString CurrentVersion = QStringLiteral("0.3");
 
     QString id;      ///< `RTC:vendor:category:name:version`
-    QString version; ///< profile format version: "0.3" (current), "0.2", older "0.1"/"1.0"
+    /// The format version the file was read in ("0.3" current, "0.2", older "0.1"/"1.0"); the
+    /// writers always write CurrentVersion.
+    QString version;
     RtcBasicInfo basicInfo;
     RtcActions actions;
 
     /// `rtc:ConfigurationSet/rtc:Configuration*`.
     QList<RtcConfiguration> configurations;
-    /// The file had a `rtc:ConfigurationSet` element even though it held no configuration;
-    /// the writer writes the set when this is true or when there are configurations.
+    /// The file had an empty `rtc:ConfigurationSet` element (readers set it only then); the
+    /// writers write the set when this is true or when there are configurations.
     bool hasConfigurationSet = false;
     XmlExtras configurationSetExtras;
     SourceLocation configurationSetLocation;

@@ -24,7 +24,8 @@ std::optional<RtcProfile> readRtcXml(const QByteArray &data, const QString &file
 
 /// Writes version 0.3 in the schema's spelling with OpenRTP's prefixes and xsi:types
 /// (basic_info_ext, action_status_doc, configuration_ext, dataport_ext …); unknown content
-/// goes back in place. The `version` attribute is written as the profile's version.
+/// goes back in place. The format version written is always RtcProfile::CurrentVersion: saving
+/// upgrades an old file, as RTC Builder does.
 QByteArray writeRtcXml(const RtcProfile &profile);
 
 /// The element tree writeRtcXml() serialises.
