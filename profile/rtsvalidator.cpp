@@ -179,6 +179,17 @@ private:
                                         "component's sets").arg(*c.activeConfigurationSet));
     }
 
+    /// rtsprofile's samples use '.' where ':' belongs (`RTC:v.c.n:1.0`); that is the same id.
+    static bool sameComponentId(const QString &a, const QString &b)
+    {
+        if (a == b)
+            return true;
+        QString left = a;
+        QString right = b;
+        return left.replace(QLatin1Char('.'), QLatin1Char(':'))
+            == right.replace(QLatin1Char('.'), QLatin1Char(':'));
+    }
+
     /// The component a reference names, or null after reporting that it names none.
     const ComponentInfo *checkReference(const RtsTargetComponent &t, const QString &object)
     {
@@ -187,10 +198,7 @@ private:
             error(t.location, object, tr("'%1' names no component of the system").arg(t.instanceName));
             return nullptr;
         }
-        // rtsprofile's samples use '.' where ':' belongs; that is the same id.
-        QString given = t.componentId;
-        if (given != found->component->id
-            && given.replace(QLatin1Char('.'), QLatin1Char(':')) != found->component->id) {
+        if (!sameComponentId(t.componentId, found->component->id)) {
             warning(t.location, object, tr("component id '%1' of '%2' differs from the component's id '%3'")
                                             .arg(t.componentId, t.instanceName, found->component->id));
         }
