@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: MIT
+#include "basicpage.h"
+
+#include "fieldrules.h"
+#include "rtccommands.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace Studio {
+
+namespace {
+
+using Field = RtcDocument::BasicField;
+
+constexpr Field AllFields[] = {
+    Field::Name,          Field::Description,  Field::Version,      Field::Vendor,
+    Field::Category,      Field::ComponentType, Field::ActivityType, Field::MaxInstances,
+    Field::ExecutionType, Field::ExecutionRate,
+};
+
+QString editorText(const QWidget *editor)
+{
+    if (const auto *line = qobject_cast<const QLineEdit *>(editor))
+        return line->text();
+    return static_cast<const QComboBox *>(editor)->currentText();
+}
+
+/// Marks an editor holding a problem with a reddish background, the usual inline cue.
+void setInvalidLook(QWidget *editor, bool invalid)
+{
+    QPalette palette = editor->parentWidget()->palette();
+    if (invalid)
+        palette.setColor(QPalette::Base, QColor(255, 228, 225));
+    editor->setPalette(palette);
+}
+
+} // namespace
+
+BasicPage::BasicPage(RtcDocument *document, QWidget *parent)
+    : QWidget(parent)
+    , m_document(document)
+{
+    buildForm();
+    refreshAll();
+    connect(document, &RtcDocument::basicFieldChanged, this, [this](Field field) {
+        refresh(field);
+        refreshHeader();
+    });
+    connect(document, &RtcDocument::componentIdChanged, this, &BasicPage::refreshHeader);
+}
+
+QWidget *BasicPage::editor(RtcDocument::BasicField field) const
+{
+    return m_rows.value(int(field)).editor;
+}
+
+QString BasicPage::problem(RtcDocument::BasicField field) const
+{
+    const QLabel *message = m_rows.value(int(field)).message;
+    return message && !message->isHidden() ? message->text() : QString();
+}
+
+QStringList BasicPage::categoryPresets()
+{
+    return {
+        QStringLiteral("Actuator"),
+        QStringLiteral("Animation"),
+        QStringLiteral("Autonomous Decentralized System"),
+        QStringLiteral("Chatbot"),
+        QStringLiteral("Computer Algebra System"),
+        QStringLiteral("Controller"),
+        QStringLiteral("Converter"),
+        QStringLiteral("Database"),
+        QStringLiteral("Educational Tool"),
+        QStringLiteral("Game"),
+        QStringLiteral("ImageProcessing"),
+        QStringLiteral("Machine Learning"),
+        QStringLiteral("Manipulator"),
+        QStringLiteral("Manufacturing System"),
+        QStringLiteral("Master-Slave"),
+        QStringLiteral("Mobile Robot"),
+        QStringLiteral("Motion Capture"),
+        QStringLiteral("Navigation"),
+        QStringLiteral("Nonholonomic System"),
+        QStringLiteral("Office Suite"),
+        QStringLiteral("Robot"),
+        QStringLiteral("Sample"),
+        QStringLiteral("Script Engine"),
+        QStringLiteral("Sensor"),
+        QStringLiteral("Simulator"),
+        QStringLiteral("Speech Processing"),
+        QStringLiteral("Streaming"),
+        QStringLiteral("Test"),
+        QStringLiteral("Transport System"),
+        QStringLiteral("User Interface"),
+        QStringLiteral("Vehicle"),
+        QStringLiteral("Web Application Server"),
+    };
+}
+
+QStringList BasicPage::executionTypePresets()
+{
+    return {QStringLiteral("PeriodicExecutionContext"), QStringLiteral("ExtTrigExecutionContext")};
+}
+
+void BasicPage::buildForm()
+{
+    m_content = new QWidget;
+    auto *contentLayout = new QVBoxLayout(m_content);
+    m_title = new QLabel(m_content);
+    QFont titleFont = m_title->font();
+    titleFont.setPointSizeF(titleFont.pointSizeF() * 1.4);
+    titleFont.setBold(true);
+    m_title->setFont(titleFont);
+    m_componentId = new QLabel(m_content);
+    m_componentId->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    contentLayout->addWidget(m_title);
+    contentLayout->addWidget(m_componentId);
+
+    QFormLayout *component = addSection(tr("Component"));
+    addLineEdit(component, Field::Name, tr("&Name:"), QString());
+    addLineEdit(component, Field::Description, tr("&Description:"), tr("(none)"));
+    addLineEdit(component, Field::Version, tr("&Version:"), QString());
+    addLineEdit(component, Field::Vendor, tr("V&endor:"), QString());
+    addComboBox(component, Field::Category, tr("&Category:"), categoryPresets(), true);
+
+    QFormLayout *behaviour = addSection(tr("Behaviour"));
+    addComboBox(behaviour, Field::ComponentType, tr("Component &type:"),
+                Profile::rtcComponentTypes(), false);
+    addComboBox(behaviour, Field::ActivityType, tr("&Activity type:"),
+                Profile::rtcActivityTypes(), false);
+    addLineEdit(behaviour, Field::MaxInstances, tr("&Max instances:"), tr("(not set)"));
+
+    QFormLayout *execution = addSection(tr("Execution Context"));
+    addComboBox(execution, Field::ExecutionType, tr("E&xecution type:"), executionTypePresets(),
+                true);
+    addLineEdit(execution, Field::ExecutionRate, tr("Execution &rate (Hz):"), tr("(not set)"));
+    contentLayout->addStretch(1);
+
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_content);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(scroll);
+}
+
+QFormLayout *BasicPage::addSection(const QString &title)
+{
+    auto *group = new QGroupBox(title, m_content);
+    auto *form = new QFormLayout(group);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    group->setMaximumWidth(720);
+    m_content->layout()->addWidget(group);
+    return form;
+}
+
+void BasicPage::addLineEdit(QFormLayout *form, RtcDocument::BasicField field, const QString &label,
+                            const QString &placeholder)
+{
+    auto *edit = new QLineEdit;
+    edit->setPlaceholderText(placeholder);
+    // textEdited fires for the user's typing only, never for refreshes from the document.
+    connect(edit, &QLineEdit::textEdited, this,
+            [this, field](const QString &text) { userEdited(field, text); });
+    addRow(form, field, label, edit);
+}
+
+void BasicPage::addComboBox(QFormLayout *form, RtcDocument::BasicField field,
+                            const QString &label, const QStringList &items, bool editable)
+{
+    auto *combo = new QComboBox;
+    combo->setEditable(editable);
+    combo->addItems(items);
+    if (editable)
+        combo->setInsertPolicy(QComboBox::NoInsert);
+    connect(combo, &QComboBox::currentTextChanged, this, [this, field](const QString &text) {
+        if (!m_updating)
+            userEdited(field, text);
+    });
+    addRow(form, field, label, combo);
+}
+
+void BasicPage::addRow(QFormLayout *form, RtcDocument::BasicField field, const QString &label,
+                       QWidget *editor)
+{
+    // The editor and its problem line share one cell, so the message sits right under it.
+    auto *cell = new QWidget;
+    auto *cellLayout = new QVBoxLayout(cell);
+    cellLayout->setContentsMargins(0, 0, 0, 0);
+    cellLayout->setSpacing(2);
+    auto *message = new QLabel(cell);
+    message->setWordWrap(true);
+    message->setStyleSheet(QStringLiteral("color: #b3261e;"));
+    message->hide();
+    editor->setParent(cell);
+    cellLayout->addWidget(editor);
+    cellLayout->addWidget(message);
+    form->addRow(label, cell);
+    if (auto *buddy = qobject_cast<QLabel *>(form->labelForField(cell)))
+        buddy->setBuddy(editor);
+    m_rows.insert(int(field), Row{editor, message});
+}
+
+void BasicPage::userEdited(RtcDocument::BasicField field, const QString &text)
+{
+    if (!m_document || m_document->basicField(field).value_or(QString()) == text)
+        return;
+    std::optional<QString> value = text;
+    if (RtcDocument::isOptional(field) && text.isEmpty())
+        value = std::nullopt;
+    m_document->undoStack()->push(new SetBasicFieldCommand(m_document, field, value));
+}
+
+void BasicPage::refresh(RtcDocument::BasicField field)
+{
+    const Row row = m_rows.value(int(field));
+    if (!row.editor || !m_document)
+        return;
+    const QString value = m_document->basicField(field).value_or(QString());
+    m_updating = true;
+    if (auto *line = qobject_cast<QLineEdit *>(row.editor)) {
+        if (line->text() != value)
+            line->setText(value);
+    } else {
+        auto *combo = static_cast<QComboBox *>(row.editor);
+        int index = combo->findText(value);
+        // A value outside the list is shown as it is, never replaced by a list entry.
+        if (index < 0 && !combo->isEditable()) {
+            combo->addItem(value);
+            index = combo->count() - 1;
+        }
+        if (index >= 0)
+            combo->setCurrentIndex(index);
+        if (combo->isEditable() && combo->currentText() != value)
+            combo->setEditText(value);
+    }
+    m_updating = false;
+    showProblem(field, problemFor(field, editorText(row.editor)));
+}
+
+void BasicPage::refreshAll()
+{
+    for (Field field : AllFields)
+        refresh(field);
+    refreshHeader();
+}
+
+void BasicPage::refreshHeader()
+{
+    if (!m_document)
+        return;
+    const QString name = m_document->basicField(Field::Name).value_or(QString());
+    m_title->setText(name.isEmpty() ? tr("(unnamed component)") : name);
+    m_componentId->setText(tr("Component id: %1").arg(m_document->componentId()));
+}
+
+void BasicPage::showProblem(RtcDocument::BasicField field, const QString &text)
+{
+    const Row row = m_rows.value(int(field));
+    row.message->setText(text);
+    row.message->setVisible(!text.isEmpty());
+    setInvalidLook(row.editor, !text.isEmpty());
+    row.editor->setToolTip(text);
+}
+
+QString BasicPage::problemFor(RtcDocument::BasicField field, const QString &text) const
+{
+    switch (field) {
+    case Field::Name:
+        return FieldRules::componentNameProblem(text);
+    case Field::Version:
+    case Field::Vendor:
+    case Field::Category:
+    case Field::ExecutionType:
+        return FieldRules::requiredProblem(text);
+    case Field::ComponentType:
+        return FieldRules::enumerationProblem(text, Profile::rtcComponentTypes());
+    case Field::ActivityType:
+        return FieldRules::enumerationProblem(text, Profile::rtcActivityTypes());
+    case Field::MaxInstances:
+        return FieldRules::nonNegativeIntegerProblem(text);
+    case Field::ExecutionRate:
+        return FieldRules::nonNegativeNumberProblem(text);
+    case Field::Description:
+        break;
+    }
+    return {};
+}
+
+} // namespace Studio

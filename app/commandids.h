@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+namespace Studio {
+
+/// QUndoCommand::id() values; commands with the same id may merge (see mergeWith()).
+enum CommandId : int {
+    RtcBasicFieldCommandId = 1001,
+    SystemInfoCommandId = 2001,
+};
+
+} // namespace Studio

@@ -1,0 +1,253 @@
+// SPDX-License-Identifier: MIT
+#include "documentcontroller.h"
+
+#include "documentloader.h"
+#include "recentfiles.h"
+#include "rtcdocument.h"
+#include "rtsdocument.h"
+#include "userprompts.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QSettings>
+
+namespace Studio {
+
+namespace {
+
+const QString LastDirectoryKey = QStringLiteral("lastDirectory");
+
+QString canonicalPath(const QString &path)
+{
+    return QDir::cleanPath(QFileInfo(path).absoluteFilePath());
+}
+
+} // namespace
+
+DocumentController::DocumentController(UserPrompts *prompts, QObject *parent)
+    : QObject(parent)
+    , m_prompts(prompts)
+    , m_recentFiles(new RecentFiles(QStringLiteral("recentFiles"), this))
+{
+}
+
+DocumentController::~DocumentController()
+{
+    // Windows may still hold editors of these documents; tell them before the documents go.
+    const QList<Document *> documents = m_documents;
+    for (Document *document : documents)
+        discard(document);
+}
+
+Document *DocumentController::findByPath(const QString &path) const
+{
+    const QString wanted = canonicalPath(path);
+    for (Document *document : m_documents) {
+        if (!document->isUntitled() && canonicalPath(document->filePath()) == wanted)
+            return document;
+    }
+    return nullptr;
+}
+
+RtcDocument *DocumentController::newComponent()
+{
+    auto *document = new RtcDocument(Profile::RtcProfile::createDefault(), this);
+    document->setUntitledName(tr("New Component %1").arg(++m_newComponents));
+    addDocument(document);
+    return document;
+}
+
+RtsDocument *DocumentController::newSystem()
+{
+    ++m_newSystems;
+    Profile::RtsProfile profile = Profile::RtsProfile::createNew(
+        QStringLiteral("VenderName"), QStringLiteral("NewSystem%1").arg(m_newSystems),
+        QStringLiteral("1.0"));
+    auto *document = new RtsDocument(std::move(profile), this);
+    document->setUntitledName(tr("New System %1").arg(m_newSystems));
+    addDocument(document);
+    return document;
+}
+
+QList<Document *> DocumentController::openFiles(const QStringList &paths)
+{
+    QList<Document *> opened;
+    Profile::Diagnostics failures;
+    QStringList failedNames;
+    for (const QString &path : paths) {
+        if (Document *document = openOne(path, &failures))
+            opened << document;
+        else
+            failedNames << QFileInfo(path).fileName();
+    }
+    if (!failedNames.isEmpty()) {
+        const QString summary = tr("Could not open %1.").arg(failedNames.join(QStringLiteral(", ")));
+        emit problemsReported(summary, failures);
+        if (m_prompts) {
+            m_prompts->showProblems(tr("Open Failed"),
+                                    summary + QLatin1Char(' ')
+                                        + tr("Open documents were not changed."),
+                                    failures);
+        }
+    }
+    return opened;
+}
+
+QList<Document *> DocumentController::openWithDialog()
+{
+    if (!m_prompts)
+        return {};
+    const QStringList paths = m_prompts->askOpenFileNames(lastDirectory());
+    return paths.isEmpty() ? QList<Document *>() : openFiles(paths);
+}
+
+bool DocumentController::save(Document *document)
+{
+    if (document->isUntitled())
+        return saveAs(document);
+    return saveTo(document, document->filePath(), true);
+}
+
+bool DocumentController::saveAs(Document *document)
+{
+    if (!m_prompts)
+        return false;
+    const QString path = m_prompts->askSaveFileName(document->kind(), suggestedSavePath(document));
+    if (path.isEmpty())
+        return false;
+    return saveAs(document, path);
+}
+
+bool DocumentController::saveAs(Document *document, const QString &path)
+{
+    return saveTo(document, path, false);
+}
+
+bool DocumentController::close(Document *document)
+{
+    if (!m_documents.contains(document) || !confirmClose(document))
+        return false;
+    discard(document);
+    return true;
+}
+
+bool DocumentController::closeAll()
+{
+    const QList<Document *> documents = m_documents;
+    for (Document *document : documents) {
+        if (!confirmClose(document))
+            return false;
+    }
+    for (Document *document : documents)
+        discard(document);
+    return true;
+}
+
+QString DocumentController::lastDirectory() const
+{
+    const QString stored = QSettings().value(LastDirectoryKey).toString();
+    return !stored.isEmpty() && QFileInfo(stored).isDir() ? stored : QDir::homePath();
+}
+
+Document *DocumentController::openOne(const QString &path, Profile::Diagnostics *failures)
+{
+    if (Document *existing = findByPath(path)) {
+        emit activationRequested(existing);
+        return existing;
+    }
+    Profile::Diagnostics diagnostics;
+    std::unique_ptr<Document> document = loadDocument(path, &diagnostics);
+    if (!document) {
+        if (diagnostics.isEmpty())
+            diagnostics << Profile::Diagnostic::error(path, 0, 0, tr("could not be read"));
+        failures->append(diagnostics);
+        return nullptr;
+    }
+    Document *added = document.release();
+    added->setParent(this);
+    addDocument(added);
+    m_recentFiles->add(added->filePath());
+    rememberDirectory(added->filePath());
+    const Profile::Diagnostics warnings = added->loadWarnings();
+    if (!warnings.isEmpty()) {
+        emit problemsReported(
+            tr("%1 was opened with %n warning(s).", nullptr, int(warnings.size()))
+                .arg(added->displayName()),
+            warnings);
+    }
+    emit statusMessage(tr("Opened %1").arg(added->filePath()));
+    return added;
+}
+
+void DocumentController::addDocument(Document *document)
+{
+    m_documents << document;
+    emit documentAdded(document);
+}
+
+bool DocumentController::saveTo(Document *document, const QString &path, bool keepFormat)
+{
+    Profile::Diagnostics diagnostics;
+    const bool saved = keepFormat ? document->save(&diagnostics)
+                                  : document->saveAs(path, &diagnostics);
+    if (!saved) {
+        if (diagnostics.isEmpty())
+            diagnostics << Profile::Diagnostic::error(path, 0, 0, tr("could not be written"));
+        const QString summary = tr("Could not save %1.").arg(QFileInfo(path).fileName());
+        emit problemsReported(summary, diagnostics);
+        if (m_prompts) {
+            m_prompts->showProblems(tr("Save Failed"),
+                                    summary + QLatin1Char(' ')
+                                        + tr("The document stays open with its changes."),
+                                    diagnostics);
+        }
+        return false;
+    }
+    m_recentFiles->add(document->filePath());
+    rememberDirectory(document->filePath());
+    emit statusMessage(tr("Saved %1").arg(document->filePath()));
+    return true;
+}
+
+bool DocumentController::confirmClose(Document *document)
+{
+    if (!document->isModified())
+        return true;
+    if (!m_prompts)
+        return false; // nobody to ask: never throw changes away silently
+    switch (m_prompts->askSaveChanges(document->displayName())) {
+    case UserPrompts::SaveChoice::Save:
+        return save(document);
+    case UserPrompts::SaveChoice::Discard:
+        return true;
+    case UserPrompts::SaveChoice::Cancel:
+        break;
+    }
+    return false;
+}
+
+void DocumentController::discard(Document *document)
+{
+    emit documentClosing(document);
+    m_documents.removeAll(document);
+    delete document;
+}
+
+void DocumentController::rememberDirectory(const QString &filePath)
+{
+    QSettings().setValue(LastDirectoryKey, QFileInfo(filePath).absolutePath());
+}
+
+QString DocumentController::suggestedSavePath(const Document *document) const
+{
+    if (!document->isUntitled())
+        return document->filePath();
+    QString fileName = QStringLiteral("RTC.xml");
+    if (const auto *system = qobject_cast<const RtsDocument *>(document)) {
+        const QString name = system->systemField(RtsDocument::SystemField::Name);
+        fileName = (name.isEmpty() ? QStringLiteral("System") : name) + QStringLiteral(".xml");
+    }
+    return QDir(lastDirectory()).filePath(fileName);
+}
+
+} // namespace Studio

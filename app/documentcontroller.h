@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "diagnostic.h"
+
+#include <QList>
+#include <QObject>
+#include <QStringList>
+
+namespace Studio {
+
+class Document;
+class RecentFiles;
+class RtcDocument;
+class RtsDocument;
+class UserPrompts;
+
+/**
+ * The open documents and the file operations on them: new, open, save, save as, close, with
+ * the questions these ask (through UserPrompts) and the problems they report.
+ *
+ * It owns the documents; windows learn about them through documentAdded() and
+ * documentClosing() and never create or delete documents themselves.
+ */
+class DocumentController : public QObject
+{
+    Q_OBJECT
+
+public:
+    /// `prompts` must outlive the controller (or be replaced with setPrompts()).
+    explicit DocumentController(UserPrompts *prompts, QObject *parent = nullptr);
+    ~DocumentController() override;
+
+    void setPrompts(UserPrompts *prompts) { m_prompts = prompts; }
+    RecentFiles *recentFiles() const { return m_recentFiles; }
+
+    QList<Document *> documents() const { return m_documents; }
+    /// The open document of this file (compared as absolute, clean paths), or null.
+    Document *findByPath(const QString &path) const;
+
+    /// A new component with RTC Builder's defaults, untitled and unmodified.
+    RtcDocument *newComponent();
+    /// A new empty system, untitled and unmodified.
+    RtsDocument *newSystem();
+
+    /**
+     * Opens the files; a file that is open already is not read again, its document is returned.
+     * Files that fail to load change nothing; all their diagnostics are reported together.
+     * Returns the documents of the files that could be opened.
+     */
+    QList<Document *> openFiles(const QStringList &paths);
+    /// Asks for files and opens them.
+    QList<Document *> openWithDialog();
+
+    /// Saves to the document's file, or asks for one when untitled. False on failure or cancel.
+    bool save(Document *document);
+    /// Asks for a file name and saves there (format by extension).
+    bool saveAs(Document *document);
+    /// Saves to `path` (format by extension); on failure the document stays as it was.
+    bool saveAs(Document *document, const QString &path);
+
+    /// Closes a document, asking about unsaved changes. False when the user cancelled or the
+    /// requested save failed; the document is then still open.
+    bool close(Document *document);
+    /// Asks about every modified document, then closes all. False (nothing closed) on cancel.
+    bool closeAll();
+
+    /// Where the file dialogs start: the folder of the last opened or saved file.
+    QString lastDirectory() const;
+
+signals:
+    void documentAdded(Studio::Document *document);
+    /// An already open document was asked for again (e.g. opened a second time): show it.
+    void activationRequested(Studio::Document *document);
+    /// The document is about to be deleted; drop every reference to it.
+    void documentClosing(Studio::Document *document);
+    /// Diagnostics of a failed operation, or warnings of a successful load.
+    void problemsReported(const QString &summary, const Profile::Diagnostics &diagnostics);
+    void statusMessage(const QString &message);
+
+private:
+    Document *openOne(const QString &path, Profile::Diagnostics *failures);
+    void addDocument(Document *document);
+    bool saveTo(Document *document, const QString &path, bool keepFormat);
+    bool confirmClose(Document *document);
+    void discard(Document *document);
+    void rememberDirectory(const QString &filePath);
+    QString suggestedSavePath(const Document *document) const;
+
+    UserPrompts *m_prompts;
+    RecentFiles *m_recentFiles;
+    QList<Document *> m_documents;
+    int m_newComponents = 0;
+    int m_newSystems = 0;
+};
+
+} // namespace Studio

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "diagnostic.h"
+
+#include <memory>
+
+class QObject;
+class QString;
+
+namespace Studio {
+
+class Document;
+
+/**
+ * Reads an RTC or RTS profile (XML or YAML, detected by content) into a new document of the
+ * matching kind. On failure returns null and appends the reasons (`FILE:LINE:COL`) to
+ * `diagnostics`; the reader's warnings of a successful load are kept in the document.
+ */
+std::unique_ptr<Document> loadDocument(const QString &path, Profile::Diagnostics *diagnostics);
+
+} // namespace Studio

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+#include "editorfactory.h"
+
+#include "rtcdocument.h"
+#include "rtceditor.h"
+#include "rtsdocument.h"
+#include "rtseditor.h"
+
+namespace Studio {
+
+QWidget *createEditor(Document *document, QWidget *parent)
+{
+    if (auto *rtc = qobject_cast<RtcDocument *>(document))
+        return new RtcEditor(rtc, parent);
+    if (auto *rts = qobject_cast<RtsDocument *>(document))
+        return new RtsEditor(rts, parent);
+    return nullptr;
+}
+
+} // namespace Studio

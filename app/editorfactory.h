@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+class QWidget;
+
+namespace Studio {
+
+class Document;
+
+/// The editor widget for a document of either kind (RtcEditor or RtsEditor).
+QWidget *createEditor(Document *document, QWidget *parent = nullptr);
+
+} // namespace Studio

@@ -1,0 +1,454 @@
+// SPDX-License-Identifier: MIT
+#include "mainwindow.h"
+
+#include "dialogprompts.h"
+#include "document.h"
+#include "documentcontroller.h"
+#include "editorfactory.h"
+#include "problemspanel.h"
+#include "recentfiles.h"
+#include "rtstudioresources.h"
+
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QSettings>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
+#include <QUndoGroup>
+#include <QUndoStack>
+
+namespace Studio {
+
+namespace {
+
+const QString GeometryKey = QStringLiteral("mainWindow/geometry");
+const QString StateKey = QStringLiteral("mainWindow/state");
+const QString PerspectiveKey = QStringLiteral("mainWindow/perspective");
+
+QIcon icon(const QString &name)
+{
+    return QIcon(Resources::iconPath(name));
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent)
+    , m_prompts(std::make_unique<DialogPrompts>(this))
+    , m_controller(new DocumentController(m_prompts.get(), this))
+    , m_undoGroup(new QUndoGroup(this))
+{
+    setObjectName(QStringLiteral("MainWindow"));
+    setWindowIcon(QIcon(Resources::applicationIconPath()));
+    setAcceptDrops(true);
+    createPerspectives();
+    createProblemsDock();
+    createActions();
+    createMenus();
+    createToolBar();
+    connectController();
+    statusBar();
+    readSettings();
+    updateActiveDocument();
+}
+
+MainWindow::~MainWindow()
+{
+    // Documents go first, while the perspectives that show them still exist.
+    delete m_controller;
+}
+
+void MainWindow::setPrompts(std::unique_ptr<UserPrompts> prompts)
+{
+    m_controller->setPrompts(prompts.get());
+    m_prompts = std::move(prompts);
+}
+
+Perspective *MainWindow::perspective(Perspective::Id id) const
+{
+    return id == Perspective::Id::Builder ? m_builder : m_systemEditor;
+}
+
+Perspective *MainWindow::currentPerspective() const
+{
+    return static_cast<Perspective *>(m_perspectives->currentWidget());
+}
+
+void MainWindow::showPerspective(Perspective::Id id)
+{
+    Perspective *target = perspective(id);
+    m_perspectives->setCurrentWidget(target);
+    const QString actionName = id == Perspective::Id::Builder
+                                   ? QStringLiteral("actionPerspectiveBuilder")
+                                   : QStringLiteral("actionPerspectiveSystemEditor");
+    if (auto *action = findChild<QAction *>(actionName))
+        action->setChecked(true);
+    updateActiveDocument();
+}
+
+Document *MainWindow::activeDocument() const
+{
+    return currentPerspective() ? currentPerspective()->currentDocument() : nullptr;
+}
+
+bool MainWindow::openFiles(const QStringList &paths)
+{
+    return m_controller->openFiles(paths).size() == paths.size();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    writeSettings();
+    if (m_controller->closeAll())
+        event->accept();
+    else
+        event->ignore();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent *event)
+{
+    if (event->mimeData()->hasUrls())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent *event)
+{
+    QStringList paths;
+    for (const QUrl &url : event->mimeData()->urls()) {
+        if (url.isLocalFile())
+            paths << url.toLocalFile();
+    }
+    if (!paths.isEmpty()) {
+        event->acceptProposedAction();
+        openFiles(paths);
+    }
+}
+
+QAction *MainWindow::addAction(const QString &objectName, const QString &text,
+                               const QString &iconName, const QKeySequence &shortcut)
+{
+    auto *action = new QAction(text, this);
+    action->setObjectName(objectName);
+    if (!iconName.isEmpty())
+        action->setIcon(icon(iconName));
+    if (!shortcut.isEmpty())
+        action->setShortcut(shortcut);
+    return action;
+}
+
+void MainWindow::createActions()
+{
+    QAction *newComponent = addAction(QStringLiteral("actionNewComponent"),
+                                      tr("New &Component"), QStringLiteral("new-component"),
+                                      QKeySequence::New);
+    newComponent->setToolTip(tr("Create a new RT-Component profile in the Builder"));
+    connect(newComponent, &QAction::triggered, m_controller, &DocumentController::newComponent);
+
+    QAction *newSystem = addAction(QStringLiteral("actionNewSystem"), tr("New &System"),
+                                   QStringLiteral("new-system"),
+                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+    newSystem->setToolTip(tr("Create a new RT System in the System Editor"));
+    connect(newSystem, &QAction::triggered, m_controller, &DocumentController::newSystem);
+
+    QAction *open = addAction(QStringLiteral("actionOpen"), tr("&Open…"), QStringLiteral("open"),
+                              QKeySequence::Open);
+    open->setToolTip(tr("Open an RTC or RTS profile (XML or YAML)"));
+    connect(open, &QAction::triggered, m_controller, &DocumentController::openWithDialog);
+
+    QAction *save = addAction(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("save"),
+                              QKeySequence::Save);
+    connect(save, &QAction::triggered, this, [this] {
+        if (Document *document = activeDocument())
+            m_controller->save(document);
+    });
+    QAction *saveAs = addAction(QStringLiteral("actionSaveAs"), tr("Save &As…"),
+                                QStringLiteral("save-as"), QKeySequence::SaveAs);
+    connect(saveAs, &QAction::triggered, this, [this] {
+        if (Document *document = activeDocument())
+            m_controller->saveAs(document);
+    });
+    QAction *close = addAction(QStringLiteral("actionClose"), tr("&Close"),
+                               QStringLiteral("close"), QKeySequence::Close);
+    connect(close, &QAction::triggered, this, [this] {
+        if (Document *document = activeDocument())
+            m_controller->close(document);
+    });
+    QAction *quit = addAction(QStringLiteral("actionQuit"), tr("&Quit"), QStringLiteral("quit"),
+                              QKeySequence::Quit);
+    quit->setMenuRole(QAction::QuitRole);
+    connect(quit, &QAction::triggered, this, &QWidget::close);
+
+    QAction *undo = m_undoGroup->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("actionUndo"));
+    undo->setIcon(icon(QStringLiteral("undo")));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_undoGroup->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("actionRedo"));
+    redo->setIcon(icon(QStringLiteral("redo")));
+    redo->setShortcut(QKeySequence::Redo);
+
+    QAction *about = addAction(QStringLiteral("actionAbout"), tr("&About RT Studio"),
+                               QStringLiteral("about"));
+    about->setMenuRole(QAction::AboutRole);
+    connect(about, &QAction::triggered, this, [this] { m_prompts->showAbout(); });
+
+    m_perspectiveActions = new QActionGroup(this);
+    const std::pair<Perspective *, QString> perspectives[] = {
+        {m_builder, QStringLiteral("actionPerspectiveBuilder")},
+        {m_systemEditor, QStringLiteral("actionPerspectiveSystemEditor")},
+    };
+    for (const auto &[target, name] : perspectives) {
+        const bool builder = target == m_builder;
+        QAction *action = addAction(name, target->title(),
+                                    builder ? QStringLiteral("component")
+                                            : QStringLiteral("system"),
+                                    QKeySequence(Qt::CTRL | (builder ? Qt::Key_1 : Qt::Key_2)));
+        action->setCheckable(true);
+        action->setToolTip(tr("Switch to the %1 perspective").arg(target->title()));
+        m_perspectiveActions->addAction(action);
+        const Perspective::Id id = target->id();
+        connect(action, &QAction::triggered, this, [this, id] { showPerspective(id); });
+    }
+}
+
+void MainWindow::createMenus()
+{
+    const auto action = [this](const char *name) {
+        return findChild<QAction *>(QLatin1String(name));
+    };
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(action("actionNewComponent"));
+    file->addAction(action("actionNewSystem"));
+    file->addSeparator();
+    file->addAction(action("actionOpen"));
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("menuRecentFiles"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::fillRecentFilesMenu);
+    file->addSeparator();
+    file->addAction(action("actionSave"));
+    file->addAction(action("actionSaveAs"));
+    file->addAction(action("actionClose"));
+    file->addSeparator();
+    file->addAction(action("actionQuit"));
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(action("actionUndo"));
+    edit->addAction(action("actionRedo"));
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addActions(m_perspectiveActions->actions());
+    view->addSeparator();
+    view->addAction(m_problemsDock->toggleViewAction());
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(action("actionAbout"));
+    fillRecentFilesMenu();
+}
+
+void MainWindow::createToolBar()
+{
+    QToolBar *bar = addToolBar(tr("Main"));
+    bar->setObjectName(QStringLiteral("mainToolBar"));
+    bar->setMovable(false);
+    for (const char *name : {"actionNewComponent", "actionNewSystem", "actionOpen", "actionSave"})
+        bar->addAction(findChild<QAction *>(QLatin1String(name)));
+    bar->addSeparator();
+    bar->addAction(findChild<QAction *>(QStringLiteral("actionUndo")));
+    bar->addAction(findChild<QAction *>(QStringLiteral("actionRedo")));
+
+    // The perspective switcher sits at the right end, as in Eclipse-based OpenRTP.
+    auto *spacer = new QWidget(bar);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    bar->addWidget(spacer);
+    bar->addSeparator();
+    for (QAction *action : m_perspectiveActions->actions()) {
+        bar->addAction(action);
+        if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(action)))
+            button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    }
+}
+
+void MainWindow::createPerspectives()
+{
+    m_builder = new Perspective(Perspective::Id::Builder, tr("Builder"));
+    m_builder->setObjectName(QStringLiteral("perspectiveBuilder"));
+    m_builder->setEmptyHint(tr("<p><b>Builder</b></p><p>Design an RT-Component: "
+                               "File ▸ New Component, or open an RTC profile (RTC.xml or "
+                               "YAML) with File ▸ Open.</p>"));
+    m_systemEditor = new Perspective(Perspective::Id::SystemEditor, tr("System Editor"));
+    m_systemEditor->setObjectName(QStringLiteral("perspectiveSystemEditor"));
+    m_systemEditor->setEmptyHint(tr("<p><b>System Editor</b></p><p>Compose RT-Components into "
+                                    "a system: File ▸ New System, or open an RTS profile with "
+                                    "File ▸ Open.</p>"));
+    m_perspectives = new QStackedWidget(this);
+    m_perspectives->addWidget(m_builder);
+    m_perspectives->addWidget(m_systemEditor);
+    setCentralWidget(m_perspectives);
+
+    for (Perspective *perspective : {m_builder, m_systemEditor}) {
+        connect(perspective, &Perspective::currentDocumentChanged, this,
+                &MainWindow::updateActiveDocument);
+        connect(perspective, &Perspective::closeRequested, m_controller,
+                &DocumentController::close);
+    }
+}
+
+void MainWindow::createProblemsDock()
+{
+    m_problems = new ProblemsPanel;
+    m_problemsDock = new QDockWidget(tr("Problems"), this);
+    m_problemsDock->setObjectName(QStringLiteral("problemsDock"));
+    m_problemsDock->setWidget(m_problems);
+    addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
+    m_problemsDock->hide();
+    connect(m_problems, &ProblemsPanel::countChanged, this, [this](int count) {
+        m_problemsDock->setWindowTitle(count > 0 ? tr("Problems (%1)").arg(count)
+                                                 : tr("Problems"));
+    });
+}
+
+void MainWindow::connectController()
+{
+    connect(m_controller, &DocumentController::documentAdded, this, &MainWindow::addDocument);
+    connect(m_controller, &DocumentController::activationRequested, this,
+            &MainWindow::activateDocument);
+    connect(m_controller, &DocumentController::documentClosing, this,
+            &MainWindow::removeDocument);
+    connect(m_controller, &DocumentController::problemsReported, this, &MainWindow::showProblems);
+    connect(m_controller, &DocumentController::statusMessage, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 5000); });
+    connect(m_controller->recentFiles(), &RecentFiles::changed, this,
+            &MainWindow::fillRecentFilesMenu);
+}
+
+void MainWindow::addDocument(Document *document)
+{
+    const Perspective::Id id = document->kind() == Profile::ProfileKind::Rts
+                                   ? Perspective::Id::SystemEditor
+                                   : Perspective::Id::Builder;
+    m_undoGroup->addStack(document->undoStack());
+    connect(document, &Document::modifiedChanged, this, [this, document] {
+        if (document == m_activeDocument) {
+            updateTitle();
+            updateActions();
+        }
+    });
+    connect(document, &Document::displayNameChanged, this, [this, document] {
+        if (document == m_activeDocument)
+            updateTitle();
+    });
+    perspective(id)->addDocument(document, createEditor(document));
+    showPerspective(id);
+}
+
+void MainWindow::activateDocument(Document *document)
+{
+    for (Perspective *target : {m_builder, m_systemEditor}) {
+        if (target->contains(document)) {
+            target->setCurrentDocument(document);
+            showPerspective(target->id());
+        }
+    }
+}
+
+void MainWindow::removeDocument(Document *document)
+{
+    disconnect(document, nullptr, this, nullptr);
+    m_undoGroup->removeStack(document->undoStack());
+    if (m_activeDocument == document)
+        m_activeDocument = nullptr;
+    m_builder->removeDocument(document);
+    m_systemEditor->removeDocument(document);
+    updateActiveDocument();
+}
+
+void MainWindow::updateActiveDocument()
+{
+    m_activeDocument = activeDocument();
+    m_undoGroup->setActiveStack(m_activeDocument ? m_activeDocument->undoStack() : nullptr);
+    updateTitle();
+    updateActions();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString application = tr("RT Studio");
+    const QString perspectiveTitle = currentPerspective() ? currentPerspective()->title()
+                                                          : QString();
+    if (!m_activeDocument) {
+        setWindowTitle(QStringLiteral("%1 — %2").arg(perspectiveTitle, application));
+        setWindowModified(false);
+        return;
+    }
+    // "[*]" is where Qt shows the modified marker; it shows only while windowModified is set.
+    setWindowTitle(QStringLiteral("%1[*] — %2 — %3")
+                       .arg(m_activeDocument->displayName(), perspectiveTitle, application));
+    setWindowModified(m_activeDocument->isModified());
+}
+
+void MainWindow::updateActions()
+{
+    Document *document = m_activeDocument;
+    findChild<QAction *>(QStringLiteral("actionSave"))
+        ->setEnabled(document && (document->isModified() || document->isUntitled()));
+    findChild<QAction *>(QStringLiteral("actionSaveAs"))->setEnabled(document != nullptr);
+    findChild<QAction *>(QStringLiteral("actionClose"))->setEnabled(document != nullptr);
+}
+
+void MainWindow::fillRecentFilesMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = m_controller->recentFiles()->files();
+    for (int i = 0; i < files.size(); ++i) {
+        const QString path = files.at(i);
+        // Numbered accelerators 1–9 make the first entries quick to pick from the keyboard.
+        const QString text = i < 9 ? QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName())
+                                   : QFileInfo(path).fileName();
+        QAction *action = m_recentMenu->addAction(text);
+        action->setToolTip(path);
+        action->setStatusTip(path);
+        connect(action, &QAction::triggered, this, [this, path] { openFiles({path}); });
+    }
+    if (!files.isEmpty()) {
+        m_recentMenu->addSeparator();
+        QAction *clear = m_recentMenu->addAction(tr("Clear List"));
+        connect(clear, &QAction::triggered, m_controller->recentFiles(), &RecentFiles::clear);
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::showProblems(const QString &summary, const Profile::Diagnostics &diagnostics)
+{
+    m_problems->setDiagnostics(summary, diagnostics);
+    m_problemsDock->show();
+    statusBar()->showMessage(summary, 5000);
+}
+
+void MainWindow::readSettings()
+{
+    QSettings settings;
+    if (!restoreGeometry(settings.value(GeometryKey).toByteArray()))
+        resize(1200, 800);
+    restoreState(settings.value(StateKey).toByteArray());
+    const bool systemEditor = settings.value(PerspectiveKey).toString()
+                              == QLatin1String("SystemEditor");
+    showPerspective(systemEditor ? Perspective::Id::SystemEditor : Perspective::Id::Builder);
+}
+
+void MainWindow::writeSettings() const
+{
+    QSettings settings;
+    settings.setValue(GeometryKey, saveGeometry());
+    settings.setValue(StateKey, saveState());
+    settings.setValue(PerspectiveKey, currentPerspective()->id() == Perspective::Id::SystemEditor
+                                          ? QStringLiteral("SystemEditor")
+                                          : QStringLiteral("Builder"));
+}
+
+} // namespace Studio

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "diagnostic.h"
+#include "perspective.h"
+
+#include <QMainWindow>
+
+#include <memory>
+
+class QAction;
+class QActionGroup;
+class QDockWidget;
+class QMenu;
+class QStackedWidget;
+class QUndoGroup;
+
+namespace Studio {
+
+class Document;
+class DocumentController;
+class ProblemsPanel;
+class UserPrompts;
+
+/**
+ * The RT Studio main window: the Builder and System Editor perspectives (switched from the
+ * toolbar, each with its own document tabs), the File/Edit/View/Help menus, a Problems panel,
+ * and the window title showing the active document with its modified marker.
+ *
+ * Undo and Redo act on the active document's undo stack (through a QUndoGroup). Window geometry,
+ * toolbar/dock state and the last perspective are kept in QSettings. Actions have object names
+ * (`actionSave`, `actionUndo`, …) by which tests and scripts can find them.
+ */
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    /// Replaces the dialogs (e.g. with scripted answers in tests).
+    void setPrompts(std::unique_ptr<UserPrompts> prompts);
+
+    DocumentController *documents() const { return m_controller; }
+    QUndoGroup *undoGroup() const { return m_undoGroup; }
+    ProblemsPanel *problemsPanel() const { return m_problems; }
+    QDockWidget *problemsDock() const { return m_problemsDock; }
+
+    Perspective *perspective(Perspective::Id id) const;
+    Perspective *currentPerspective() const;
+    void showPerspective(Perspective::Id id);
+
+    /// The document of the current tab of the current perspective, or null.
+    Document *activeDocument() const;
+    /// Opens files as `rtstudio FILE…` does; true when all of them opened.
+    bool openFiles(const QStringList &paths);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
+
+private:
+    QAction *addAction(const QString &objectName, const QString &text, const QString &icon,
+                       const QKeySequence &shortcut = {});
+    void createActions();
+    void createMenus();
+    void createToolBar();
+    void createPerspectives();
+    void createProblemsDock();
+    void connectController();
+
+    void addDocument(Document *document);
+    void activateDocument(Document *document);
+    void removeDocument(Document *document);
+    void updateActiveDocument();
+    void updateTitle();
+    void updateActions();
+    void fillRecentFilesMenu();
+    void showProblems(const QString &summary, const Profile::Diagnostics &diagnostics);
+
+    void readSettings();
+    void writeSettings() const;
+
+    std::unique_ptr<UserPrompts> m_prompts;
+    DocumentController *m_controller;
+    QUndoGroup *m_undoGroup;
+    QStackedWidget *m_perspectives = nullptr;
+    Perspective *m_builder = nullptr;
+    Perspective *m_systemEditor = nullptr;
+    QActionGroup *m_perspectiveActions = nullptr;
+    ProblemsPanel *m_problems = nullptr;
+    QDockWidget *m_problemsDock = nullptr;
+    QMenu *m_recentMenu = nullptr;
+    Document *m_activeDocument = nullptr;
+};
+
+} // namespace Studio

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+#include "problemspanel.h"
+
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QStyle>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace Studio {
+
+namespace {
+
+QIcon severityIcon(const QStyle *style, Profile::Diagnostic::Severity severity)
+{
+    switch (severity) {
+    case Profile::Diagnostic::Severity::Error:
+        return style->standardIcon(QStyle::SP_MessageBoxCritical);
+    case Profile::Diagnostic::Severity::Warning:
+        return style->standardIcon(QStyle::SP_MessageBoxWarning);
+    case Profile::Diagnostic::Severity::Info:
+        break;
+    }
+    return style->standardIcon(QStyle::SP_MessageBoxInformation);
+}
+
+QString locationText(const Profile::Diagnostic &diagnostic)
+{
+    QString text = QFileInfo(diagnostic.file).fileName();
+    if (diagnostic.line > 0)
+        text += QStringLiteral(":%1").arg(diagnostic.line);
+    if (diagnostic.line > 0 && diagnostic.column > 0)
+        text += QStringLiteral(":%1").arg(diagnostic.column);
+    return text;
+}
+
+} // namespace
+
+ProblemsPanel::ProblemsPanel(QWidget *parent)
+    : QWidget(parent)
+    , m_summary(new QLabel(this))
+    , m_list(new QTreeWidget(this))
+{
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_summary->setText(tr("No problems."));
+    m_list->setColumnCount(2);
+    m_list->setHeaderLabels({tr("Location"), tr("Message")});
+    m_list->setRootIsDecorated(false);
+    m_list->setAlternatingRowColors(true);
+    m_list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_list->header()->setStretchLastSection(true);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_summary);
+    layout->addWidget(m_list);
+}
+
+void ProblemsPanel::setDiagnostics(const QString &summary, const Profile::Diagnostics &diagnostics)
+{
+    m_diagnostics = diagnostics;
+    m_summary->setText(summary);
+    m_list->clear();
+    for (const Profile::Diagnostic &diagnostic : diagnostics) {
+        auto *item = new QTreeWidgetItem(m_list);
+        item->setIcon(0, severityIcon(style(), diagnostic.severity));
+        item->setText(0, locationText(diagnostic));
+        item->setToolTip(0, diagnostic.file);
+        item->setText(1, diagnostic.message);
+        item->setToolTip(1, diagnostic.toString());
+    }
+    emit countChanged(count());
+}
+
+void ProblemsPanel::clear()
+{
+    setDiagnostics(tr("No problems."), {});
+}
+
+int ProblemsPanel::count() const
+{
+    return int(m_diagnostics.size());
+}
+
+QString ProblemsPanel::summary() const
+{
+    return m_summary->text();
+}
+
+QString ProblemsPanel::text(int row) const
+{
+    return m_diagnostics.value(row).toString();
+}
+
+} // namespace Studio
