@@ -105,6 +105,12 @@ std::optional<QString> Map::scalar(const QString &key)
     return fromStd(value->Scalar());
 }
 
+std::optional<YAML::Node> Map::value(const QString &key)
+{
+    const YAML::Node *value = take(key);
+    return value ? std::optional<YAML::Node>(*value) : std::nullopt;
+}
+
 QString Map::required(const char *key)
 {
     const QString name = QLatin1String(key);

@@ -58,6 +58,9 @@ public:
     /// A scalar that must be there; an error at the mapping and an empty string when absent.
     QString required(const char *key);
 
+    /// The value of any kind; nothing when absent.
+    std::optional<YAML::Node> value(const QString &key);
+
     /// The value if it is a sequence (an error when it is something else); null = absent.
     std::optional<YAML::Node> sequence(const QString &key) { return typed(key, true); }
     /// The value if it is a mapping (an error when it is something else); null = absent.

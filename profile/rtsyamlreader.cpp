@@ -108,31 +108,47 @@ private:
     QString readDate(Map &m, const char *key)
     {
         const QString name = QLatin1String(key);
-        if (const auto date = m.map(name))
+        const auto date = m.value(name);
+        if (!date || date->IsNull()) {
+            m_context.error(m.node().Mark(), tr("the mapping lacks the required key '%1'").arg(name));
+            return {};
+        }
+        if (date->IsMap())
             return readDateMap(*date, name);
-        return m.required(key);
+        if (date->IsScalar())
+            return fromStd(date->Scalar());
+        m_context.error(date->Mark(), tr("'%1' must be a date").arg(name));
+        return {};
+    }
+
+    int readDatePart(Map &m, const char *part, const QString &name)
+    {
+        const auto value = m.value(QLatin1String(part));
+        bool ok = false;
+        const int number = value && value->IsScalar() ? fromStd(value->Scalar()).toInt(&ok) : 0;
+        if (!value)
+            m_context.error(m.node().Mark(), tr("'%1' lacks '%2'").arg(name, QLatin1String(part)));
+        else if (!ok)
+            m_context.error(value->Mark(), tr("'%1.%2' must be a whole number").arg(name, QLatin1String(part)));
+        return number;
     }
 
     QString readDateMap(const YAML::Node &node, const QString &name)
     {
         Map m(node, m_context);
-        static const char *const parts[] = {"year", "month", "day", "hour", "minute", "second"};
-        static const int widths[] = {4, 2, 2, 2, 2, 2};
-        int values[6] = {};
-        for (int i = 0; i < 6; ++i) {
-            bool ok = false;
-            values[i] = m.required(parts[i]).toInt(&ok);
-            if (!ok)
-                m_context.error(node.Mark(), tr("'%1.%2' must be a whole number")
-                                                 .arg(name, QLatin1String(parts[i])));
-        }
-        QString text;
-        for (int i = 0; i < 6; ++i) {
-            static const char separators[] = {'-', '-', 'T', ':', ':', '\0'};
-            text += QStringLiteral("%1").arg(values[i], widths[i], 10, QLatin1Char('0'));
-            if (separators[i])
-                text += QLatin1Char(separators[i]);
-        }
+        const int year = readDatePart(m, "year", name);
+        const int month = readDatePart(m, "month", name);
+        const int day = readDatePart(m, "day", name);
+        const int hour = readDatePart(m, "hour", name);
+        const int minute = readDatePart(m, "minute", name);
+        const int second = readDatePart(m, "second", name);
+        QString text = QStringLiteral("%1-%2-%3T%4:%5:%6")
+                           .arg(year, 4, 10, QLatin1Char('0'))
+                           .arg(month, 2, 10, QLatin1Char('0'))
+                           .arg(day, 2, 10, QLatin1Char('0'))
+                           .arg(hour, 2, 10, QLatin1Char('0'))
+                           .arg(minute, 2, 10, QLatin1Char('0'))
+                           .arg(second, 2, 10, QLatin1Char('0'));
         if (const auto fraction = m.scalar("fraction"))
             text += QLatin1Char('.') + *fraction;
         if (const auto zone = m.scalar("timeZone"))

@@ -12,12 +12,22 @@ namespace {
 
 using namespace RtsYaml;
 
-/// YAML 1.1 would resolve this plain scalar to a number.
+/// YAML 1.1 (PyYAML, used by rtsprofile) would resolve this plain scalar to a number.
 bool looksNumeric(const QString &text)
 {
     static const QRegularExpression number(QStringLiteral(
-        R"(^[-+]?(\d[\d_]*(\.[\d_]*)?|\.\d+)([eE][-+]?\d+)?$|^0x[0-9a-fA-F_]+$|^[-+]?\.(inf|Inf|INF)$|^\.(nan|NaN|NAN)$)"));
+        R"(^[-+]?(\d[\d_]*(\.[\d_]*)?|\.\d+)([eE][-+]?\d+)?$|^0x[0-9a-fA-F_]+$|^[-+]?\.(inf|Inf|INF)$)"
+        R"(|^\.(nan|NaN|NAN)$|^[-+]?[1-9][\d_]*(:[0-5]?\d)+(\.[\d_]*)?$)"));
     return number.match(text).hasMatch();
+}
+
+/// This text would not come back as the same text from a plain scalar: a number, a YAML 1.1
+/// boolean or null, or nothing at all.
+bool needsQuotes(const QString &text)
+{
+    static const QRegularExpression special(QStringLiteral(
+        R"(^(y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF|null|Null|NULL|~)$)"));
+    return text.isEmpty() || looksNumeric(text) || special.match(text).hasMatch();
 }
 
 class RtsYamlWriter
@@ -70,7 +80,7 @@ private:
     void text(const QString &name, const QString &value)
     {
         key(name);
-        if (looksNumeric(value))
+        if (needsQuotes(value))
             m_out << YAML::SingleQuoted;
         m_out << toStd(value);
     }
@@ -125,10 +135,11 @@ private:
         static const char *const parts[] = {"year", "month", "day", "hour", "minute", "second"};
         for (int i = 0; i < 6; ++i)
             m_out << YAML::Key << parts[i] << YAML::Value << match.captured(i + 1).toInt();
+        // Quoted: "+10:00" would be a base-60 number to YAML 1.1, "500" a number.
         if (match.hasCaptured(7))
-            text("fraction", match.captured(7));
+            m_out << YAML::Key << "fraction" << YAML::Value << YAML::SingleQuoted << toStd(match.captured(7));
         if (match.hasCaptured(8))
-            text("timeZone", match.captured(8));
+            m_out << YAML::Key << "timeZone" << YAML::Value << YAML::SingleQuoted << toStd(match.captured(8));
         m_out << YAML::EndMap;
     }
 
@@ -151,7 +162,7 @@ private:
         key(name);
         m_out << YAML::BeginSeq;
         for (const QString &value : values) {
-            if (looksNumeric(value))
+            if (needsQuotes(value))
                 m_out << YAML::SingleQuoted;
             m_out << toStd(value);
         }
