@@ -113,6 +113,9 @@ private:
     {
         item.extras = r.extras();
         item.location = r.location();
+        // XmlExtras has no place for character data; say so rather than drop it silently.
+        if (!r.node().text.trimmed().isEmpty())
+            r.warn(tr("text inside <%1> is not part of an RTS Profile and is not kept").arg(r.node().name));
     }
 
     RtsProperty readProperty(const XmlNode &node)

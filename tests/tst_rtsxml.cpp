@@ -453,6 +453,7 @@ void TestRtsXml::reportsMissingRequiredParts()
   <rts:DataPortConnectors rts:connectorId="x" rts:name="x" rts:dataType="d"
       rts:interfaceType="i" rts:dataflowType="push"/>
   <rts:StartUp><rts:targets rts:sequence="1"/></rts:StartUp>
+  <rts:Groups rts:groupId="g">stray text</rts:Groups>
 </rts:RtsProfile>)";
     Diagnostics diagnostics;
     const auto profile = readRtsXml(xml, QStringLiteral("m.xml"), &diagnostics);
@@ -467,6 +468,7 @@ void TestRtsXml::reportsMissingRequiredParts()
              qPrintable(all));
     QVERIFY2(all.contains(QStringLiteral("m.xml:7:")) && all.contains(QStringLiteral("TargetComponent")),
              qPrintable(all));
+    QVERIFY2(all.contains(QStringLiteral("m.xml:8:3: warning: text inside <Groups>")), qPrintable(all));
 }
 
 namespace {
