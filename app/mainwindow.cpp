@@ -339,6 +339,13 @@ void MainWindow::addDocument(Document *document)
             updateActions();
         }
     });
+    // Saving an untitled document gives it a name without changing its modified state.
+    connect(document, &Document::filePathChanged, this, [this, document] {
+        if (document == m_activeDocument) {
+            updateTitle();
+            updateActions();
+        }
+    });
     connect(document, &Document::displayNameChanged, this, [this, document] {
         if (document == m_activeDocument)
             updateTitle();

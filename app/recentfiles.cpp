@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "recentfiles.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QSettings>
 
@@ -10,7 +11,7 @@ namespace {
 
 QString normalised(const QString &path)
 {
-    return QFileInfo(path).absoluteFilePath();
+    return QDir::cleanPath(QFileInfo(path).absoluteFilePath());
 }
 
 } // namespace

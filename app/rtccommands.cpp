@@ -41,6 +41,10 @@ bool SetBasicFieldCommand::mergeWith(const QUndoCommand *other)
         return false;
     m_after = normalized(edit->m_after);
     m_idAfter = edit->m_idAfter;
+    // Normalising against the older "before" can differ from what the newer edit applied
+    // (e.g. typing into an absent field and deleting again); the merged step must end where
+    // it says it does.
+    apply(m_after, m_idAfter);
     setObsolete(m_after == m_before && m_idAfter == m_idBefore);
     return true;
 }

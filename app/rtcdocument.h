@@ -28,6 +28,7 @@ public:
         ExecutionType,
         ExecutionRate,
     };
+    Q_ENUM(BasicField)
 
     explicit RtcDocument(Profile::RtcProfile profile, QObject *parent = nullptr);
 

@@ -43,6 +43,9 @@ bool EditSystemInfoCommand::mergeWith(const QUndoCommand *other)
         return false;
     m_after = m_field == RtsDocument::SystemField::Abstract ? normalizedAbstract(edit->m_after)
                                                             : edit->m_after;
+    // Normalising against the older "before" can differ from what the newer edit applied; the
+    // merged step must end where it says it does.
+    apply(m_after);
     setObsolete(m_after == m_before);
     return true;
 }

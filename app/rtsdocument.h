@@ -21,6 +21,7 @@ class RtsDocument : public Document
 public:
     /// The "system info" fields the System Editor edits.
     enum class SystemField { Vendor, Name, Version, Abstract };
+    Q_ENUM(SystemField)
 
     explicit RtsDocument(Profile::RtsProfile profile, QObject *parent = nullptr);
 
@@ -46,8 +47,6 @@ public:
 signals:
     /// The id or the abstract changed.
     void systemInfoChanged();
-    /// Components, their ports or connectors changed; outlines rebuild.
-    void structureChanged();
 
 private:
     Profile::RtsProfile m_profile;

@@ -28,8 +28,6 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     m_outlineView->header()->setSectionResizeMode(SystemOutlineModel::NameColumn,
                                                   QHeaderView::ResizeToContents);
     m_outlineView->expandAll();
-    // A rebuilt outline (e.g. after a structural edit) opens up again like the first one.
-    connect(m_outlineModel, &QAbstractItemModel::modelReset, m_outlineView, &QTreeView::expandAll);
 
     auto *systemBox = new QGroupBox(tr("System"));
     auto *boxLayout = new QVBoxLayout(systemBox);

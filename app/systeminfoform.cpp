@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QRegularExpressionValidator>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -72,6 +73,9 @@ void SystemInfoForm::addIdRow(QFormLayout *form, RtsDocument::SystemField field,
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     auto *edit = new QLineEdit(cell);
+    // ':' separates the parts of the system id, so it cannot be part of one; refusing it at the
+    // keyboard keeps the id unambiguous.
+    edit->setValidator(new QRegularExpressionValidator(QRegularExpression(QStringLiteral("[^:]*")), edit));
     connect(edit, &QLineEdit::textEdited, this,
             [this, field](const QString &text) { userEdited(field, text); });
     auto *message = new QLabel(cell);

@@ -20,13 +20,12 @@ QString endText(const Profile::RtsTargetPort &end)
 SystemOutlineModel::SystemOutlineModel(RtsDocument *document, QObject *parent)
     : QAbstractItemModel(parent)
     , m_document(document)
+    , m_componentIcon(Resources::iconPath(QStringLiteral("component")))
+    , m_dataPortIcon(Resources::iconPath(QStringLiteral("port-data")))
+    , m_servicePortIcon(Resources::iconPath(QStringLiteral("port-service")))
+    , m_connectorIcon(Resources::iconPath(QStringLiteral("connector")))
 {
-    rebuild();
-    connect(document, &RtsDocument::structureChanged, this, [this] {
-        beginResetModel();
-        rebuild();
-        endResetModel();
-    });
+    build();
 }
 
 QModelIndex SystemOutlineModel::index(int row, int column, const QModelIndex &parent) const
@@ -127,7 +126,7 @@ QModelIndex SystemOutlineModel::connectorIndex(const QString &connectorId) const
     return {};
 }
 
-void SystemOutlineModel::rebuild()
+void SystemOutlineModel::build()
 {
     m_nodes.clear();
     m_nodes.emplace_back(); // the invisible root
@@ -242,15 +241,15 @@ QIcon SystemOutlineModel::iconFor(NodeKind kind) const
     switch (kind) {
     case NodeKind::ComponentGroup:
     case NodeKind::Component:
-        return QIcon(Resources::iconPath(QStringLiteral("component")));
+        return m_componentIcon;
     case NodeKind::DataPort:
-        return QIcon(Resources::iconPath(QStringLiteral("port-data")));
+        return m_dataPortIcon;
     case NodeKind::ServicePort:
-        return QIcon(Resources::iconPath(QStringLiteral("port-service")));
+        return m_servicePortIcon;
     case NodeKind::ConnectorGroup:
     case NodeKind::DataConnector:
     case NodeKind::ServiceConnector:
-        return QIcon(Resources::iconPath(QStringLiteral("connector")));
+        return m_connectorIcon;
     case NodeKind::ConnectorSource:
     case NodeKind::ConnectorTarget:
         break;

@@ -16,8 +16,8 @@ class RtsDocument;
  * ports) and a "Connectors" branch (each connector with its source and target end).
  *
  * Two columns: name and details. Items carry the stable ids of what they show (instance name,
- * port name, connector id) in custom roles, so that other views can find the same object. The
- * model rebuilds itself when the document reports a structural change.
+ * port name, connector id) in custom roles, so that other views can find the same object.
+ * Nothing edits the structure of a system yet, so the outline is built once from the document.
  */
 class SystemOutlineModel : public QAbstractItemModel
 {
@@ -81,7 +81,7 @@ private:
         QString connectorId;
     };
 
-    void rebuild();
+    void build();
     int addNode(int parent, Node node);
     void addComponents();
     void addConnectors();
@@ -91,6 +91,10 @@ private:
 
     QPointer<RtsDocument> m_document;
     std::vector<Node> m_nodes; ///< m_nodes[0] is the invisible root
+    QIcon m_componentIcon;
+    QIcon m_dataPortIcon;
+    QIcon m_servicePortIcon;
+    QIcon m_connectorIcon;
 };
 
 } // namespace Studio

@@ -31,7 +31,8 @@ struct RtsYamlExtras
     bool operator!=(const RtsYamlExtras &other) const { return !(*this == other); }
 };
 
-/// `rtsExt:Properties @name @value?` — a free key/value pair (IOR, COMPONENT_PATH_ID, dataport.* …).
+/// `rtsExt:Properties @name @value?` — a free key/value pair (IOR, COMPONENT_PATH_ID, dataport.*
+/// …).
 struct RtsProperty
 {
     QString name;
@@ -59,7 +60,7 @@ void setRtsProperty(RtsProperties &properties, const QString &name, const QStrin
  */
 struct RtsTargetComponent
 {
-    QString componentId;  ///< `RTC:vendor:category:name:version` of the referenced component
+    QString componentId; ///< `RTC:vendor:category:name:version` of the referenced component
     QString instanceName; ///< the stable key of the referenced component in the system
     RtsProperties properties; ///< rtsExt:Properties (target_component_ext)
 

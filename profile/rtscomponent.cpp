@@ -75,7 +75,7 @@ std::optional<RtsComponentTypeId> RtsComponentTypeId::parse(const QString &id)
         if (part.trimmed().isEmpty())
             return std::nullopt;
     }
-    return RtsComponentTypeId{parts.at(1), parts.at(2), parts.at(3), parts.at(4)};
+    return RtsComponentTypeId {parts.at(1), parts.at(2), parts.at(3), parts.at(4)};
 }
 
 QString RtsComponentTypeId::toString() const
@@ -85,9 +85,12 @@ QString RtsComponentTypeId::toString() const
 
 QStringList RtsComponent::compositeTypes()
 {
-    return {QStringLiteral("None"),     QStringLiteral("PeriodicECShared"),
-            QStringLiteral("PeriodicStateShared"), QStringLiteral("Grouping"),
-            QStringLiteral("FsmECShared"), QStringLiteral("FsmStateShared")};
+    return {QStringLiteral("None"),
+            QStringLiteral("PeriodicECShared"),
+            QStringLiteral("PeriodicStateShared"),
+            QStringLiteral("Grouping"),
+            QStringLiteral("FsmECShared"),
+            QStringLiteral("FsmStateShared")};
 }
 
 namespace {
@@ -133,13 +136,13 @@ bool RtsComponent::isRequiredValue() const
 bool RtsComponent::operator==(const RtsComponent &other) const
 {
     return std::tie(id, pathUri, instanceName, activeConfigurationSet, compositeType, isRequired,
-                    comment, visible, dataPorts, servicePorts, configurationSets,
-                    executionContexts, participants, layout, properties, extras, yamlExtras)
+                    comment, visible, dataPorts, servicePorts, configurationSets, executionContexts,
+                    participants, layout, properties, extras, yamlExtras)
         == std::tie(other.id, other.pathUri, other.instanceName, other.activeConfigurationSet,
                     other.compositeType, other.isRequired, other.comment, other.visible,
                     other.dataPorts, other.servicePorts, other.configurationSets,
-                    other.executionContexts, other.participants, other.layout,
-                    other.properties, other.extras, other.yamlExtras);
+                    other.executionContexts, other.participants, other.layout, other.properties,
+                    other.extras, other.yamlExtras);
 }
 
 } // namespace Profile

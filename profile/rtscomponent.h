@@ -7,13 +7,15 @@
 
 namespace Profile {
 
-/// `rts:DataPorts` / `rts:ServicePorts` (+ dataport_ext / serviceport_ext): a port shown in the system.
+/// `rts:DataPorts` / `rts:ServicePorts` (+ dataport_ext / serviceport_ext): a port shown in the
+/// system.
 struct RtsPort
 {
     QString name; ///< the stable key of the port within its component
     std::optional<QString> comment; ///< rtsExt:comment
-    std::optional<QString> visible; ///< rtsExt:visible, `true`/`false` (other text kept for validation)
-    RtsProperties properties;       ///< rtsExt:Properties
+    std::optional<QString>
+        visible; ///< rtsExt:visible, `true`/`false` (other text kept for validation)
+    RtsProperties properties; ///< rtsExt:Properties
 
     XmlExtras extras;
     RtsYamlExtras yamlExtras;
@@ -54,11 +56,11 @@ struct RtsConfigurationSet
 /// `rts:ExecutionContexts` (+ execution_context_ext) `@id @kind @rate?`.
 struct RtsExecutionContext
 {
-    QString id;   ///< may be non-numeric (`Comp1Ec1`)
+    QString id; ///< may be non-numeric (`Comp1Ec1`)
     QString kind; ///< e.g. PeriodicExecutionContext
     std::optional<QString> rate; ///< Hz, raw text (xs:double)
     QList<RtsTargetComponent> participants; ///< rts:Participants
-    RtsProperties properties;               ///< rtsExt:Properties
+    RtsProperties properties; ///< rtsExt:Properties
 
     XmlExtras extras;
     RtsYamlExtras yamlExtras;
@@ -90,7 +92,7 @@ struct RtsLocation
     QString x;
     QString y;
     QString height; ///< -1 = default size
-    QString width;  ///< -1 = default size
+    QString width; ///< -1 = default size
     QString direction; ///< UP|DOWN|LEFT|RIGHT (read case-insensitively and stored upper case)
 
     XmlExtras extras;
@@ -124,8 +126,8 @@ struct RtsComponentTypeId
  */
 struct RtsComponent
 {
-    QString id;           ///< `RTC:vendor:category:name:version`
-    QString pathUri;      ///< naming-service path or file URI
+    QString id; ///< `RTC:vendor:category:name:version`
+    QString pathUri; ///< naming-service path or file URI
     QString instanceName;
     std::optional<QString> activeConfigurationSet;
     std::optional<QString> compositeType; ///< one of compositeTypes(); raw text otherwise
@@ -138,8 +140,8 @@ struct RtsComponent
     QList<RtsConfigurationSet> configurationSets;
     QList<RtsExecutionContext> executionContexts;
     QList<RtsParticipant> participants; ///< members when this is a composite
-    std::optional<RtsLocation> layout;  ///< rtsExt:Location
-    RtsProperties properties;           ///< rtsExt:Properties (IOR, COMPONENT_PATH_ID …)
+    std::optional<RtsLocation> layout; ///< rtsExt:Location
+    RtsProperties properties; ///< rtsExt:Properties (IOR, COMPONENT_PATH_ID …)
 
     XmlExtras extras;
     RtsYamlExtras yamlExtras;

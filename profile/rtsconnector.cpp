@@ -17,8 +17,8 @@ bool RtsDataPortConnector::operator==(const RtsDataPortConnector &other) const
 {
     return RtsPortConnector::operator==(other)
         && std::tie(dataType, interfaceType, dataflowType, subscriptionType, pushInterval)
-        == std::tie(other.dataType, other.interfaceType, other.dataflowType,
-                    other.subscriptionType, other.pushInterval);
+        == std::tie(other.dataType, other.interfaceType, other.dataflowType, other.subscriptionType,
+                    other.pushInterval);
 }
 
 bool RtsServicePortConnector::operator==(const RtsServicePortConnector &other) const

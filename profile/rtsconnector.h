@@ -17,7 +17,7 @@ struct RtsPortConnector
     RtsTargetPort target; ///< rts:targetDataPort / rts:targetServicePort
     std::optional<QString> comment; ///< rtsExt:comment
     std::optional<QString> visible; ///< rtsExt:visible
-    RtsProperties properties;       ///< rtsExt:Properties (dataport.*, BEND_POINT …)
+    RtsProperties properties; ///< rtsExt:Properties (dataport.*, BEND_POINT …)
 
     XmlExtras extras;
     RtsYamlExtras yamlExtras;
@@ -30,11 +30,11 @@ struct RtsPortConnector
 /// `rts:DataPortConnectors` (+ dataport_connector_ext).
 struct RtsDataPortConnector : RtsPortConnector
 {
-    QString dataType;      ///< e.g. RTC::TimedLong
+    QString dataType; ///< e.g. RTC::TimedLong
     QString interfaceType; ///< e.g. corba_cdr
-    QString dataflowType;  ///< push|pull
+    QString dataflowType; ///< push|pull
     std::optional<QString> subscriptionType; ///< flush|new|periodic
-    std::optional<QString> pushInterval;     ///< Hz, raw text (xs:double)
+    std::optional<QString> pushInterval; ///< Hz, raw text (xs:double)
 
     bool operator==(const RtsDataPortConnector &other) const;
     bool operator!=(const RtsDataPortConnector &other) const { return !(*this == other); }

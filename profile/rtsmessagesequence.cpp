@@ -33,9 +33,9 @@ bool RtsCondition::operator==(const RtsCondition &other) const
 
 QList<RtsSequenceKind> rtsSequenceKinds()
 {
-    return {RtsSequenceKind::StartUp,      RtsSequenceKind::ShutDown,
-            RtsSequenceKind::Activation,   RtsSequenceKind::Deactivation,
-            RtsSequenceKind::Resetting,    RtsSequenceKind::Initializing,
+    return {RtsSequenceKind::StartUp,    RtsSequenceKind::ShutDown,
+            RtsSequenceKind::Activation, RtsSequenceKind::Deactivation,
+            RtsSequenceKind::Resetting,  RtsSequenceKind::Initializing,
             RtsSequenceKind::Finalizing};
 }
 

@@ -23,7 +23,7 @@ struct RtsWaitTime
 /// `rts:Preceding @timeout? @sendingTiming?`: send after the preceding components are done.
 struct RtsPreceding
 {
-    std::optional<QString> timeout;       ///< ms, raw text
+    std::optional<QString> timeout; ///< ms, raw text
     std::optional<QString> sendingTiming; ///< one of sendingTimings(); raw text otherwise
     QList<RtsTargetExecutionContext> precedingComponents;
 
@@ -60,7 +60,15 @@ struct RtsCondition
 };
 
 /// The seven message-sequence blocks of a system, in schema order.
-enum class RtsSequenceKind { StartUp, ShutDown, Activation, Deactivation, Resetting, Initializing, Finalizing };
+enum class RtsSequenceKind {
+    StartUp,
+    ShutDown,
+    Activation,
+    Deactivation,
+    Resetting,
+    Initializing,
+    Finalizing
+};
 
 /// All kinds, in schema order (for loops).
 QList<RtsSequenceKind> rtsSequenceKinds();

@@ -28,7 +28,7 @@ std::optional<RtsSystemId> RtsSystemId::parse(const QString &id)
         if (part.trimmed().isEmpty())
             return std::nullopt;
     }
-    return RtsSystemId{parts.at(1), parts.at(2), parts.at(3)};
+    return RtsSystemId {parts.at(1), parts.at(2), parts.at(3)};
 }
 
 QString RtsSystemId::toString() const
@@ -39,7 +39,7 @@ QString RtsSystemId::toString() const
 RtsProfile RtsProfile::createNew(const QString &vendor, const QString &name, const QString &version)
 {
     RtsProfile profile;
-    profile.id = RtsSystemId{vendor, name, version}.toString();
+    profile.id = RtsSystemId {vendor, name, version}.toString();
     profile.version = CurrentVersion;
     profile.creationDate = currentDateTimeText();
     profile.updateDate = profile.creationDate;
@@ -145,12 +145,12 @@ bool RtsProfile::operator==(const RtsProfile &other) const
                     dataPortConnectors, servicePortConnectors, startUp, shutDown, activation,
                     deactivation, resetting, initializing, finalizing, versionUpLogs, properties,
                     systems, extras, yamlExtras)
-        == std::tie(other.id, other.version, other.abstract, other.creationDate,
-                    other.updateDate, other.comment, other.components, other.groups,
-                    other.dataPortConnectors, other.servicePortConnectors, other.startUp,
-                    other.shutDown, other.activation, other.deactivation, other.resetting,
-                    other.initializing, other.finalizing, other.versionUpLogs, other.properties,
-                    other.systems, other.extras, other.yamlExtras);
+        == std::tie(other.id, other.version, other.abstract, other.creationDate, other.updateDate,
+                    other.comment, other.components, other.groups, other.dataPortConnectors,
+                    other.servicePortConnectors, other.startUp, other.shutDown, other.activation,
+                    other.deactivation, other.resetting, other.initializing, other.finalizing,
+                    other.versionUpLogs, other.properties, other.systems, other.extras,
+                    other.yamlExtras);
 }
 
 } // namespace Profile

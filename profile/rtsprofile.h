@@ -62,11 +62,11 @@ struct RtsProfile
     /// The RTS Profile version this project writes.
     static inline const QString CurrentVersion = QStringLiteral("0.2");
 
-    QString id;      ///< `RTSystem:vendor:name:version`
+    QString id; ///< `RTSystem:vendor:name:version`
     QString version; ///< RTS Profile format version, "0.2"
     std::optional<QString> abstract; ///< optional in the schema (rtsprofile wrongly requires it)
     QString creationDate; ///< xs:dateTime text
-    QString updateDate;   ///< xs:dateTime text
+    QString updateDate; ///< xs:dateTime text
     std::optional<QString> comment; ///< rtsExt:comment
 
     QList<RtsComponent> components;
@@ -80,9 +80,9 @@ struct RtsProfile
     std::optional<RtsMessageSequence> resetting;
     std::optional<RtsMessageSequence> initializing;
     std::optional<RtsMessageSequence> finalizing;
-    QStringList versionUpLogs;     ///< rtsExt:VersionUpLogs (legacy VersionUpLog)
-    RtsProperties properties;      ///< rtsExt:Properties
-    QList<RtsSystemPath> systems;  ///< rtsExt:Systems
+    QStringList versionUpLogs; ///< rtsExt:VersionUpLogs (legacy VersionUpLog)
+    RtsProperties properties; ///< rtsExt:Properties
+    QList<RtsSystemPath> systems; ///< rtsExt:Systems
 
     XmlExtras extras;
     RtsYamlExtras yamlExtras;

@@ -30,8 +30,7 @@ public:
     RtsValidator(const RtsProfile &profile, const QString &fileName)
         : m_profile(profile)
         , m_fileName(fileName)
-    {
-    }
+    { }
 
     Diagnostics run()
     {
@@ -86,7 +85,8 @@ private:
                       const std::optional<QString> &value)
     {
         if (value && !isInteger(*value))
-            error(where, object, tr("%1 '%2' is not a whole number").arg(QLatin1String(what), *value));
+            error(where, object,
+                  tr("%1 '%2' is not a whole number").arg(QLatin1String(what), *value));
     }
     void checkNumber(const SourceLocation &where, const QString &object, const char *what,
                      const std::optional<QString> &value)
@@ -98,7 +98,8 @@ private:
                       const std::optional<QString> &value)
     {
         if (value && !parseBoolean(*value))
-            warning(where, object, tr("%1 '%2' is not true or false").arg(QLatin1String(what), *value));
+            warning(where, object,
+                    tr("%1 '%2' is not true or false").arg(QLatin1String(what), *value));
     }
 
     void checkSystem()
@@ -117,7 +118,8 @@ private:
         for (const RtsComponent &c : m_profile.components) {
             if (m_components.contains(c.instanceName)) {
                 error(c.location, tr("component %1").arg(c.instanceName),
-                      tr("instance name '%1' is used by more than one component").arg(c.instanceName));
+                      tr("instance name '%1' is used by more than one component")
+                          .arg(c.instanceName));
                 continue;
             }
             ComponentInfo info;
@@ -175,8 +177,10 @@ private:
             if (set.id == *c.activeConfigurationSet)
                 return;
         }
-        warning(c.location, object, tr("the active configuration set '%1' is not one of the "
-                                        "component's sets").arg(*c.activeConfigurationSet));
+        warning(c.location, object,
+                tr("the active configuration set '%1' is not one of the "
+                   "component's sets")
+                    .arg(*c.activeConfigurationSet));
     }
 
     /// rtsprofile's samples use '.' where ':' belongs (`RTC:v.c.n:1.0`); that is the same id.
@@ -195,12 +199,14 @@ private:
     {
         const auto found = m_components.constFind(t.instanceName);
         if (found == m_components.cend()) {
-            error(t.location, object, tr("'%1' names no component of the system").arg(t.instanceName));
+            error(t.location, object,
+                  tr("'%1' names no component of the system").arg(t.instanceName));
             return nullptr;
         }
         if (!sameComponentId(t.componentId, found->component->id)) {
-            warning(t.location, object, tr("component id '%1' of '%2' differs from the component's id '%3'")
-                                            .arg(t.componentId, t.instanceName, found->component->id));
+            warning(t.location, object,
+                    tr("component id '%1' of '%2' differs from the component's id '%3'")
+                        .arg(t.componentId, t.instanceName, found->component->id));
         }
         return &*found;
     }
@@ -209,8 +215,8 @@ private:
     {
         const ComponentInfo *info = checkReference(end, object);
         if (info && !info->ports.isEmpty() && !info->ports.contains(end.portName)) {
-            warning(end.location, object, tr("component '%1' has no port '%2'")
-                                              .arg(end.instanceName, end.portName));
+            warning(end.location, object,
+                    tr("component '%1' has no port '%2'").arg(end.instanceName, end.portName));
         }
     }
 
@@ -218,7 +224,8 @@ private:
     {
         const QString object = tr("connector %1").arg(c.name);
         if (ids.contains(c.connectorId))
-            error(c.location, object, tr("connector id '%1' is used more than once").arg(c.connectorId));
+            error(c.location, object,
+                  tr("connector id '%1' is used more than once").arg(c.connectorId));
         ids.insert(c.connectorId);
         checkConnectorEnd(c.source, object);
         checkConnectorEnd(c.target, object);
@@ -231,7 +238,8 @@ private:
         ids.reserve(m_profile.dataPortConnectors.size() + m_profile.servicePortConnectors.size());
         for (const RtsDataPortConnector &c : m_profile.dataPortConnectors) {
             checkConnectorCommon(c, ids);
-            checkNumber(c.location, tr("connector %1").arg(c.name), "push interval", c.pushInterval);
+            checkNumber(c.location, tr("connector %1").arg(c.name), "push interval",
+                        c.pushInterval);
         }
         for (const RtsServicePortConnector &c : m_profile.servicePortConnectors)
             checkConnectorCommon(c, ids);
@@ -241,8 +249,8 @@ private:
     {
         const ComponentInfo *info = checkReference(t, object);
         if (info && !info->contexts.isEmpty() && !info->contexts.contains(t.id)) {
-            warning(t.location, object, tr("component '%1' has no execution context '%2'")
-                                            .arg(t.instanceName, t.id));
+            warning(t.location, object,
+                    tr("component '%1' has no execution context '%2'").arg(t.instanceName, t.id));
         }
     }
 
@@ -266,7 +274,8 @@ private:
             if (c.preceding)
                 checkPreceding(*c.preceding, object);
             if (c.waitTime && c.preceding)
-                warning(c.location, object, tr("a target has both a wait time and preceding components"));
+                warning(c.location, object,
+                        tr("a target has both a wait time and preceding components"));
         }
     }
 

@@ -44,8 +44,7 @@ public:
     RtsXmlReader(const QString &fileName, Diagnostics *diagnostics)
         : m_fileName(fileName)
         , m_diagnostics(diagnostics)
-    {
-    }
+    { }
 
     std::optional<RtsProfile> read(const XmlNode &root)
     {
@@ -68,12 +67,15 @@ private:
         if (root.is(Ns::Rts, rtsName("RtsProfile")))
             return true;
         if (root.name == QLatin1String("RtsProfile")) {
-            error(root.location, tr("the root element <RtsProfile> is in namespace '%1', expected '%2'")
-                                     .arg(root.namespaceUri, Ns::Rts));
-        } else {
-            const QString shown = root.prefix.isEmpty() ? root.name : root.prefix + QLatin1Char(':') + root.name;
             error(root.location,
-                  tr("not an RTS Profile: the root element is <%1>, expected <rts:RtsProfile>").arg(shown));
+                  tr("the root element <RtsProfile> is in namespace '%1', expected '%2'")
+                      .arg(root.namespaceUri, Ns::Rts));
+        } else {
+            const QString shown
+                = root.prefix.isEmpty() ? root.name : root.prefix + QLatin1Char(':') + root.name;
+            error(root.location,
+                  tr("not an RTS Profile: the root element is <%1>, expected <rts:RtsProfile>")
+                      .arg(shown));
         }
         return false;
     }
@@ -82,11 +84,12 @@ private:
     {
         for (const XmlAttribute &a : node.attributes) {
             if (a.value.size() > MaxAttributeLength) {
-                error(node.location, tr("the value of attribute '%1' on <%2> is %3 characters long "
-                                        "(at most %4 are accepted)")
-                                         .arg(a.name, node.name)
-                                         .arg(a.value.size())
-                                         .arg(MaxAttributeLength));
+                error(node.location,
+                      tr("the value of attribute '%1' on <%2> is %3 characters long "
+                         "(at most %4 are accepted)")
+                          .arg(a.name, node.name)
+                          .arg(a.value.size())
+                          .arg(MaxAttributeLength));
                 return false;
             }
         }
@@ -108,14 +111,14 @@ private:
         return result;
     }
 
-    template<typename T>
-    void finish(T &item, const NodeReader &r)
+    template<typename T> void finish(T &item, const NodeReader &r)
     {
         item.extras = r.extras();
         item.location = r.location();
         // XmlExtras has no place for character data; say so rather than drop it silently.
         if (!r.node().text.trimmed().isEmpty())
-            r.warn(tr("text inside <%1> is not part of an RTS Profile and is not kept").arg(r.node().name));
+            r.warn(tr("text inside <%1> is not part of an RTS Profile and is not kept")
+                       .arg(r.node().name));
     }
 
     RtsProperty readProperty(const XmlNode &node)
@@ -264,8 +267,8 @@ private:
                                                            &RtsXmlReader::readConfigurationSet);
         c.executionContexts = readAll<RtsExecutionContext>(r, Ns::Rts, "ExecutionContexts",
                                                            &RtsXmlReader::readExecutionContext);
-        c.participants = readAll<RtsParticipant>(r, Ns::Rts, "Participants",
-                                                 &RtsXmlReader::readParticipant);
+        c.participants
+            = readAll<RtsParticipant>(r, Ns::Rts, "Participants", &RtsXmlReader::readParticipant);
         if (const XmlNode *location = r.child(Ns::RtsExt, rtsName("Location")))
             c.layout = readLocation(*location);
         c.properties = readProperties(r);
@@ -420,10 +423,11 @@ private:
         NodeReader r = reader(root);
         RtsProfile p;
         readRootAttributes(r, p);
-        p.components = readAll<RtsComponent>(r, Ns::Rts, "Components", &RtsXmlReader::readComponent);
+        p.components
+            = readAll<RtsComponent>(r, Ns::Rts, "Components", &RtsXmlReader::readComponent);
         p.groups = readAll<RtsGroup>(r, Ns::Rts, "Groups", &RtsXmlReader::readGroup);
-        p.dataPortConnectors = readAll<RtsDataPortConnector>(
-            r, Ns::Rts, "DataPortConnectors", &RtsXmlReader::readDataPortConnector);
+        p.dataPortConnectors = readAll<RtsDataPortConnector>(r, Ns::Rts, "DataPortConnectors",
+                                                             &RtsXmlReader::readDataPortConnector);
         p.servicePortConnectors = readAll<RtsServicePortConnector>(
             r, Ns::Rts, "ServicePortConnectors", &RtsXmlReader::readServicePortConnector);
         readSequences(r, p);

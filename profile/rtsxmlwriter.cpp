@@ -185,8 +185,8 @@ void writeDataPortConnector(XmlNode &parent, const RtsDataPortConnector &c)
 
 void writeServicePortConnector(XmlNode &parent, const RtsServicePortConnector &c)
 {
-    XmlNode &node =
-        writeConnectorBase(parent, "ServicePortConnectors", "serviceport_connector_ext", c);
+    XmlNode &node
+        = writeConnectorBase(parent, "ServicePortConnectors", "serviceport_connector_ext", c);
     node.setAttribute(Ns::Rts, n("transMethod"), c.transMethod);
     writeConnectorExtension(node, c);
     writeTargetPort(node, "sourceServicePort", c.source);
@@ -260,7 +260,7 @@ QByteArray writeRtsXml(const RtsProfile &profile)
     root.prefix = Ns::preferredPrefix(Ns::Rts);
     writeRootAttributes(root, profile);
     root.children.reserve(std::size_t(profile.components.size() + profile.dataPortConnectors.size()
-                                       + profile.servicePortConnectors.size() + 16));
+                                      + profile.servicePortConnectors.size() + 16));
     for (const RtsComponent &c : profile.components)
         writeComponent(root, c);
     for (const RtsGroup &g : profile.groups)

@@ -31,10 +31,10 @@ QString ext(const char *key)
 Context::Context(const QString &fileName, Diagnostics *diagnostics)
     : m_fileName(fileName)
     , m_diagnostics(diagnostics)
-{
-}
+{ }
 
-void Context::report(Diagnostic::Severity severity, const YAML::Mark &mark, const QString &message) const
+void Context::report(Diagnostic::Severity severity, const YAML::Mark &mark,
+                     const QString &message) const
 {
     if (!m_diagnostics)
         return;
@@ -58,7 +58,7 @@ void Context::warn(const YAML::Mark &mark, const QString &message) const
 SourceLocation locationOf(const YAML::Node &node)
 {
     const YAML::Mark mark = node.Mark();
-    return mark.line < 0 ? SourceLocation{} : SourceLocation{mark.line + 1, mark.column + 1};
+    return mark.line < 0 ? SourceLocation {} : SourceLocation {mark.line + 1, mark.column + 1};
 }
 
 bool checkUtf8(const QByteArray &data, const Context &context)
@@ -180,8 +180,9 @@ std::optional<YAML::Node> Map::typed(const QString &key, bool wantSequence)
         return std::nullopt;
     if (wantSequence ? value->IsSequence() : value->IsMap())
         return *value;
-    m_context.error(value->Mark(), wantSequence ? tr("'%1' must be a list").arg(key)
-                                                : tr("'%1' must be a mapping").arg(key));
+    m_context.error(value->Mark(),
+                    wantSequence ? tr("'%1' must be a list").arg(key)
+                                 : tr("'%1' must be a mapping").arg(key));
     return std::nullopt;
 }
 

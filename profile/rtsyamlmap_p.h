@@ -25,7 +25,8 @@ class Context
 public:
     Context(const QString &fileName, Diagnostics *diagnostics);
 
-    void report(Diagnostic::Severity severity, const YAML::Mark &mark, const QString &message) const;
+    void report(Diagnostic::Severity severity, const YAML::Mark &mark,
+                const QString &message) const;
     void error(const YAML::Mark &mark, const QString &message) const;
     void warn(const YAML::Mark &mark, const QString &message) const;
 

@@ -32,8 +32,7 @@ class RtsYamlReader
 public:
     explicit RtsYamlReader(const Context &context)
         : m_context(context)
-    {
-    }
+    { }
 
     RtsProfile readProfile(const YAML::Node &node)
     {
@@ -63,8 +62,7 @@ public:
     }
 
 private:
-    template<typename T>
-    void finish(T &item, const Map &m)
+    template<typename T> void finish(T &item, const Map &m)
     {
         item.yamlExtras = m.extras();
         item.location = m.location();
@@ -110,7 +108,8 @@ private:
         const QString name = QLatin1String(key);
         const auto date = m.value(name);
         if (!date || date->IsNull()) {
-            m_context.error(m.node().Mark(), tr("the mapping lacks the required key '%1'").arg(name));
+            m_context.error(m.node().Mark(),
+                            tr("the mapping lacks the required key '%1'").arg(name));
             return {};
         }
         if (date->IsMap())
@@ -129,7 +128,8 @@ private:
         if (!value)
             m_context.error(m.node().Mark(), tr("'%1' lacks '%2'").arg(name, QLatin1String(part)));
         else if (!ok)
-            m_context.error(value->Mark(), tr("'%1.%2' must be a whole number").arg(name, QLatin1String(part)));
+            m_context.error(value->Mark(),
+                            tr("'%1.%2' must be a whole number").arg(name, QLatin1String(part)));
         return number;
     }
 
@@ -248,8 +248,8 @@ private:
         ec.id = m.required("id");
         ec.kind = m.required("kind");
         ec.rate = m.scalar("rate");
-        ec.participants = readList<RtsTargetComponent>(m, "participants",
-                                                       &RtsYamlReader::readTargetComponent);
+        ec.participants
+            = readList<RtsTargetComponent>(m, "participants", &RtsYamlReader::readTargetComponent);
         ec.properties = readProperties(m);
         finish(ec, m);
         return ec;
@@ -306,7 +306,8 @@ private:
                                                             &RtsYamlReader::readConfigurationSet);
         c.executionContexts = readList<RtsExecutionContext>(m, "executionContexts",
                                                             &RtsYamlReader::readExecutionContext);
-        c.participants = readList<RtsParticipant>(m, "participants", &RtsYamlReader::readParticipant);
+        c.participants
+            = readList<RtsParticipant>(m, "participants", &RtsYamlReader::readParticipant);
         if (const auto location = m.map(ext("location")))
             c.layout = readLocation(*location);
         c.properties = readProperties(m);
@@ -339,11 +340,13 @@ private:
         if (const auto source = m.map(sourceKey))
             c.source = readTargetPort(*source);
         else
-            m_context.error(m.node().Mark(), tr("the connector lacks '%1'").arg(QLatin1String(sourceKey)));
+            m_context.error(m.node().Mark(),
+                            tr("the connector lacks '%1'").arg(QLatin1String(sourceKey)));
         if (const auto target = m.map(targetKey))
             c.target = readTargetPort(*target);
         else
-            m_context.error(m.node().Mark(), tr("the connector lacks '%1'").arg(QLatin1String(targetKey)));
+            m_context.error(m.node().Mark(),
+                            tr("the connector lacks '%1'").arg(QLatin1String(targetKey)));
         c.properties = readProperties(m);
     }
 
@@ -451,8 +454,8 @@ std::optional<RtsProfile> readDocument(const YAML::Node &document, const Context
     }
     for (auto it = document.begin(); it != document.end(); ++it) {
         if (it->first.Scalar() != "rtsProfile")
-            context.warn(it->first.Mark(), tr("the top-level key '%1' was ignored")
-                                               .arg(fromStd(it->first.Scalar())));
+            context.warn(it->first.Mark(),
+                         tr("the top-level key '%1' was ignored").arg(fromStd(it->first.Scalar())));
     }
     const YAML::Node profile = document["rtsProfile"];
     if (!profile.IsMap()) {
@@ -469,7 +472,8 @@ std::optional<RtsProfile> readRtsYaml(const QByteArray &data, const QString &fil
 {
     const Context context(fileName, diagnostics);
     if (data.size() > MaxYamlBytes) {
-        context.error(YAML::Mark::null_mark(), tr("file is larger than %1 bytes").arg(MaxYamlBytes));
+        context.error(YAML::Mark::null_mark(),
+                      tr("file is larger than %1 bytes").arg(MaxYamlBytes));
         return std::nullopt;
     }
     if (!checkUtf8(data, context))
@@ -480,7 +484,8 @@ std::optional<RtsProfile> readRtsYaml(const QByteArray &data, const QString &fil
     } catch (const YAML::Exception &e) {
         context.error(e.mark, fromStd(e.msg));
     } catch (const std::exception &e) {
-        context.error(YAML::Mark::null_mark(), tr("cannot read YAML: %1").arg(QString::fromLocal8Bit(e.what())));
+        context.error(YAML::Mark::null_mark(),
+                      tr("cannot read YAML: %1").arg(QString::fromLocal8Bit(e.what())));
     }
     return std::nullopt;
 }

@@ -35,8 +35,7 @@ class RtsYamlWriter
 public:
     explicit RtsYamlWriter(YAML::Emitter &out)
         : m_out(out)
-    {
-    }
+    { }
 
     void writeProfile(const RtsProfile &p)
     {
@@ -137,9 +136,11 @@ private:
             m_out << YAML::Key << parts[i] << YAML::Value << match.captured(i + 1).toInt();
         // Quoted: "+10:00" would be a base-60 number to YAML 1.1, "500" a number.
         if (match.hasCaptured(7))
-            m_out << YAML::Key << "fraction" << YAML::Value << YAML::SingleQuoted << toStd(match.captured(7));
+            m_out << YAML::Key << "fraction" << YAML::Value << YAML::SingleQuoted
+                  << toStd(match.captured(7));
         if (match.hasCaptured(8))
-            m_out << YAML::Key << "timeZone" << YAML::Value << YAML::SingleQuoted << toStd(match.captured(8));
+            m_out << YAML::Key << "timeZone" << YAML::Value << YAML::SingleQuoted
+                  << toStd(match.captured(8));
         m_out << YAML::EndMap;
     }
 

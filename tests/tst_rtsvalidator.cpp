@@ -37,8 +37,8 @@ RtsProfile load(const QString &name)
     Diagnostics diagnostics;
     const QByteArray data = readFile(dataPath(name));
     const auto profile = name.endsWith(QLatin1String(".yaml"))
-                             ? readRtsYaml(data, name, &diagnostics)
-                             : readRtsXml(data, name, &diagnostics);
+        ? readRtsYaml(data, name, &diagnostics)
+        : readRtsXml(data, name, &diagnostics);
     if (!profile || !diagnostics.isEmpty())
         qWarning().noquote() << name << joined(diagnostics);
     return profile.value_or(RtsProfile());
@@ -126,7 +126,8 @@ void TestRtsValidator::reportsEachProblem_data()
     QTest::newRow("unknown port") << 23 << false << "has no port 'A0.nothing'";
     QTest::newRow("unknown component") << 24 << true << "'Nobody' names no component";
     QTest::newRow("push interval") << 21 << true << "push interval 'often'";
-    QTest::newRow("duplicate connector") << 26 << true << "connector id 'dup' is used more than once";
+    QTest::newRow("duplicate connector")
+        << 26 << true << "connector id 'dup' is used more than once";
     QTest::newRow("end id") << 28 << false << "'RTC:V:c:X:1.0' of 'B0' differs";
     QTest::newRow("sequence") << 31 << true << "sequence 'first'";
     QTest::newRow("execution context") << 32 << false << "no execution context '9'";
@@ -153,7 +154,8 @@ void TestRtsValidator::reportsEachProblem()
     QCOMPARE(found->file, name);
     QCOMPARE(found->line, line);
     QVERIFY(found->column > 0);
-    QCOMPARE(found->severity, isError ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning);
+    QCOMPARE(found->severity,
+             isError ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning);
     QVERIFY(!found->object.isEmpty());
 }
 
@@ -166,13 +168,15 @@ void TestRtsValidator::reportsNothingElse()
 
 void TestRtsValidator::checksPortsOnlyWhenListed()
 {
-    RtsProfile p = RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("N"), QStringLiteral("1"));
+    RtsProfile p
+        = RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("N"), QStringLiteral("1"));
     const RtsComponent a = component(QStringLiteral("A0"), {QStringLiteral("A0.out")});
     const RtsComponent b = component(QStringLiteral("B0"), {}); // ports not listed
     p.components << a << b;
     p.dataPortConnectors << connector(QStringLiteral("c1"), a, QStringLiteral("A0.out"), b,
                                       QStringLiteral("B0.anything"));
-    QVERIFY2(validateRtsProfile(p, QString()).isEmpty(), qPrintable(joined(validateRtsProfile(p, {}))));
+    QVERIFY2(validateRtsProfile(p, QString()).isEmpty(),
+             qPrintable(joined(validateRtsProfile(p, {}))));
 
     p.dataPortConnectors << connector(QStringLiteral("c2"), b, QStringLiteral("B0.x"), a,
                                       QStringLiteral("A0.in"));
@@ -180,7 +184,8 @@ void TestRtsValidator::checksPortsOnlyWhenListed()
     QCOMPARE(diagnostics.size(), 1);
     QVERIFY(diagnostics.at(0).message.contains(QStringLiteral("no port 'A0.in'")));
     QCOMPARE(diagnostics.at(0).line, 0); // built in memory: no position
-    QCOMPARE(diagnostics.at(0).toString(), QStringLiteral("mem: warning: connector c2: component 'A0' has no port 'A0.in'"));
+    QCOMPARE(diagnostics.at(0).toString(),
+             QStringLiteral("mem: warning: connector c2: component 'A0' has no port 'A0.in'"));
 
     p.components[1].instanceName.clear();
     QVERIFY(hasErrors(validateRtsProfile(p, QString())));
@@ -211,10 +216,12 @@ void TestRtsValidator::locatesYamlProblems()
 
 void TestRtsValidator::validatesLargeSystemsQuickly()
 {
-    RtsProfile p = RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("N"), QStringLiteral("1"));
+    RtsProfile p
+        = RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("N"), QStringLiteral("1"));
     for (int i = 0; i < 1000; ++i) {
         const QString name = QStringLiteral("C%1").arg(i);
-        p.components << component(name, {name + QStringLiteral(".in"), name + QStringLiteral(".out")});
+        p.components << component(name,
+                                  {name + QStringLiteral(".in"), name + QStringLiteral(".out")});
     }
     for (int i = 0; i < 1500; ++i) {
         const RtsComponent &from = p.components.at(i % 1000);

@@ -179,7 +179,8 @@ void TestRtsXml::readsComponents()
     QCOMPARE(pipeline->compositeType, std::optional<QString>(QStringLiteral("PeriodicECShared")));
     QCOMPARE(pipeline->participants.size(), 2);
     QCOMPARE(pipeline->participants.at(1).participant.instanceName, QStringLiteral("Blur0"));
-    QCOMPARE(pipeline->participants.at(1).participant.properties.at(0).name, QStringLiteral("order"));
+    QCOMPARE(pipeline->participants.at(1).participant.properties.at(0).name,
+             QStringLiteral("order"));
     QCOMPARE(pipeline->layout->direction, QStringLiteral("DOWN"));
     QCOMPARE(p.componentIndex().value(QStringLiteral("Pipeline0")), 2);
 }
@@ -260,8 +261,9 @@ void TestRtsXml::readsMessageSequences()
 void TestRtsXml::readsExtension()
 {
     const RtsProfile p = load(QStringLiteral("rts/full.xml"));
-    QCOMPARE(p.versionUpLogs, (QStringList{QStringLiteral("2024-01-02 created"),
-                                           QStringLiteral("2024-02-03 blur added")}));
+    QCOMPARE(p.versionUpLogs,
+             (QStringList {QStringLiteral("2024-01-02 created"),
+                           QStringLiteral("2024-02-03 blur added")}));
     QCOMPARE(p.properties.size(), 1);
     QCOMPARE(p.properties.at(0).name, QStringLiteral("system.owner"));
     QCOMPARE(p.systems.size(), 2);
@@ -274,8 +276,9 @@ void TestRtsXml::mapsLegacySpellings()
     QCOMPARE(p.abstract, std::nullopt);
     QCOMPARE(p.groups.size(), 1);
     QCOMPARE(p.groups.at(0).groupId, QStringLiteral("legacyGroup"));
-    QCOMPARE(p.versionUpLogs,
-             (QStringList{QStringLiteral("first"), QStringLiteral("second"), QStringLiteral("third")}));
+    QCOMPARE(
+        p.versionUpLogs,
+        (QStringList {QStringLiteral("first"), QStringLiteral("second"), QStringLiteral("third")}));
     const RtsComponent *a = p.component(QStringLiteral("A0"));
     QVERIFY(a);
     QCOMPARE(a->isRequired, QStringLiteral("true"));
@@ -320,7 +323,8 @@ void TestRtsXml::keepsUnknownContentInPlace()
     QCOMPARE(indexOfChild(*component, future, QStringLiteral("Calibration")), 5);
     const XmlNode *calibration = &component->children.at(5);
     QCOMPARE(calibration->text, QStringLiteral("intrinsics"));
-    QCOMPARE(calibration->attribute(future, QStringLiteral("file"))->value, QStringLiteral("camera.yml"));
+    QCOMPARE(calibration->attribute(future, QStringLiteral("file"))->value,
+             QStringLiteral("camera.yml"));
 
     const XmlNode *connector = childAt(*saved, Ns::Rts, QStringLiteral("DataPortConnectors"));
     const XmlNode *target = childAt(*connector, Ns::Rts, QStringLiteral("targetDataPort"));
@@ -335,10 +339,10 @@ void TestRtsXml::keepsUnknownContentInPlace()
 void TestRtsXml::writesSchemaFormWithXsiTypes()
 {
     const QByteArray saved = writeRtsXml(load(QStringLiteral("rts/full.xml")));
-    for (const char *type : {"component_ext", "dataport_ext", "serviceport_ext",
-                             "execution_context_ext", "target_component_ext",
-                             "dataport_connector_ext", "serviceport_connector_ext",
-                             "target_port_ext", "condition_ext"}) {
+    for (const char *type :
+         {"component_ext", "dataport_ext", "serviceport_ext", "execution_context_ext",
+          "target_component_ext", "dataport_connector_ext", "serviceport_connector_ext",
+          "target_port_ext", "condition_ext"}) {
         QVERIFY2(saved.contains(QByteArray("xsi:type=\"rtsExt:") + type + '"'), type);
     }
     QVERIFY(saved.contains("xmlns:rts=\"http://www.openrtp.org/namespaces/rts\""));
@@ -393,8 +397,14 @@ void TestRtsXml::editedModelSurvivesSaving()
     c.instanceName = QStringLiteral("Comp0");
     c.compositeType = QStringLiteral("None");
     c.comment = QString(); // present but empty: must stay distinct from absent
-    c.layout = RtsLocation{QStringLiteral("1"), QStringLiteral("2"), QStringLiteral("-1"),
-                           QStringLiteral("-1"), QStringLiteral("RIGHT"), {}, {}, {}};
+    c.layout = RtsLocation {QStringLiteral("1"),
+                            QStringLiteral("2"),
+                            QStringLiteral("-1"),
+                            QStringLiteral("-1"),
+                            QStringLiteral("RIGHT"),
+                            {},
+                            {},
+                            {}};
     p.components.append(c);
     setRtsProperty(p.components.last().properties, QStringLiteral("IOR"), QStringLiteral("IOR:00"));
     setRtsProperty(p.components.last().properties, QStringLiteral("IOR"), QStringLiteral("IOR:01"));
@@ -417,8 +427,8 @@ void TestRtsXml::rejectsBrokenFiles_data()
     QTest::addColumn<QString>("fragment");
     QTest::newRow("truncated") << "truncated.xml" << 9 << QString();
     QTest::newRow("wrong root") << "wrong-root.xml" << 2 << "expected <rts:RtsProfile>";
-    QTest::newRow("wrong namespace") << "wrong-namespace.xml" << 2
-                                     << "http://www.openrtp.org/namespaces/rts'";
+    QTest::newRow("wrong namespace")
+        << "wrong-namespace.xml" << 2 << "http://www.openrtp.org/namespaces/rts'";
     QTest::newRow("invalid utf-8") << "invalid-utf8.xml" << 6 << "UTF-8";
     QTest::newRow("huge attribute") << "huge-attribute.xml" << 7 << "characters long";
     QTest::newRow("deep nesting") << "deep-nesting.xml" << 4 << "deeper than";
@@ -459,16 +469,21 @@ void TestRtsXml::reportsMissingRequiredParts()
     const auto profile = readRtsXml(xml, QStringLiteral("m.xml"), &diagnostics);
     QVERIFY(profile); // still understood: the editor can show and fix it
     const QString all = joined(diagnostics);
-    QVERIFY2(all.contains(QStringLiteral("m.xml:2:1: error:")) && all.contains(QStringLiteral("creationDate")),
+    QVERIFY2(all.contains(QStringLiteral("m.xml:2:1: error:"))
+                 && all.contains(QStringLiteral("creationDate")),
              qPrintable(all));
-    QVERIFY2(all.contains(QStringLiteral("m.xml:4:")) && all.contains(QStringLiteral("instanceName")),
+    QVERIFY2(all.contains(QStringLiteral("m.xml:4:"))
+                 && all.contains(QStringLiteral("instanceName")),
              qPrintable(all));
-    QVERIFY2(all.contains(QStringLiteral("m.xml:5:")) && all.contains(QStringLiteral("sourceDataPort"))
+    QVERIFY2(all.contains(QStringLiteral("m.xml:5:"))
+                 && all.contains(QStringLiteral("sourceDataPort"))
                  && all.contains(QStringLiteral("targetDataPort")),
              qPrintable(all));
-    QVERIFY2(all.contains(QStringLiteral("m.xml:7:")) && all.contains(QStringLiteral("TargetComponent")),
+    QVERIFY2(all.contains(QStringLiteral("m.xml:7:"))
+                 && all.contains(QStringLiteral("TargetComponent")),
              qPrintable(all));
-    QVERIFY2(all.contains(QStringLiteral("m.xml:8:3: warning: text inside <Groups>")), qPrintable(all));
+    QVERIFY2(all.contains(QStringLiteral("m.xml:8:3: warning: text inside <Groups>")),
+             qPrintable(all));
 }
 
 namespace {
@@ -495,9 +510,14 @@ RtsProfile largeSystem(int components, int connectors)
         ec.kind = QStringLiteral("PeriodicExecutionContext");
         ec.rate = QStringLiteral("1000.0");
         c.executionContexts.append(ec);
-        c.layout = RtsLocation{QString::number(i % 40 * 100), QString::number(i / 40 * 100),
-                               QStringLiteral("-1"), QStringLiteral("-1"), QStringLiteral("RIGHT"),
-                               {}, {}, {}};
+        c.layout = RtsLocation {QString::number(i % 40 * 100),
+                                QString::number(i / 40 * 100),
+                                QStringLiteral("-1"),
+                                QStringLiteral("-1"),
+                                QStringLiteral("RIGHT"),
+                                {},
+                                {},
+                                {}};
         setRtsProperty(c.properties, QStringLiteral("COMPONENT_PATH_ID"), c.pathUri);
         p.components.append(c);
     }

@@ -92,7 +92,8 @@ void TestRtsYaml::readsEveryKey()
     QCOMPARE(camera.configurationSets.at(0).data.at(1).data, std::nullopt);
     QCOMPARE(camera.executionContexts.at(0).id, QStringLiteral("0"));
     QCOMPARE(camera.executionContexts.at(0).rate, text("30.0"));
-    QCOMPARE(camera.executionContexts.at(0).participants.at(0).properties.at(0).value, text("attached"));
+    QCOMPARE(camera.executionContexts.at(0).participants.at(0).properties.at(0).value,
+             text("attached"));
     QCOMPARE(camera.executionContexts.at(0).properties.at(0).value, text("YES"));
     QCOMPARE(camera.executionContexts.at(1).rate, std::nullopt);
     QVERIFY(camera.layout);
@@ -117,7 +118,8 @@ void TestRtsYaml::readsEveryKey()
     QCOMPARE(image.target.properties.at(0).name, QStringLiteral("COMPONENT_PATH_ID"));
     QCOMPARE(p.servicePortConnectors.at(0).transMethod, text("corba"));
     QCOMPARE(p.servicePortConnectors.at(0).visible, text("false"));
-    QCOMPARE(p.versionUpLogs, (QStringList{QStringLiteral("2024-01-02 created"), QStringLiteral("2.0")}));
+    QCOMPARE(p.versionUpLogs,
+             (QStringList {QStringLiteral("2024-01-02 created"), QStringLiteral("2.0")}));
     QCOMPARE(p.properties.at(0).value, text("lab"));
     QCOMPARE(p.systems.at(0).path, QStringLiteral("sub/Arm.xml"));
     QCOMPARE(p.components.at(0).location.line, 8);
@@ -246,12 +248,27 @@ void TestRtsYaml::writesRtsprofileDialect()
 {
     const QByteArray yaml = writeRtsYaml(loadYaml(QStringLiteral("rts/full.yaml")));
     QVERIFY(yaml.startsWith("rtsProfile:\n"));
-    for (const char *expected :
-         {"version: '0.2'", "\"rtsExt::location\":", "\"rtsExt::visible\": 'true'",
-          "isRequired: 'true'", "\"rtsExt::properties\":", "\"rtsExt::versionUpLogs\":",
-          "\"rtsExt::systems\":", "dataPortConnectors:", "servicePortConnectors:", "startUp:",
-          "shutDown:", "activation:", "deactivation:", "resetting:", "initializing:", "finalizing:",
-          "precedingComponents:", "sendingTiming: SYNC", "rate: 30.0", "year: 2024", "id: '0'"}) {
+    for (const char *expected : {"version: '0.2'",
+                                 "\"rtsExt::location\":",
+                                 "\"rtsExt::visible\": 'true'",
+                                 "isRequired: 'true'",
+                                 "\"rtsExt::properties\":",
+                                 "\"rtsExt::versionUpLogs\":",
+                                 "\"rtsExt::systems\":",
+                                 "dataPortConnectors:",
+                                 "servicePortConnectors:",
+                                 "startUp:",
+                                 "shutDown:",
+                                 "activation:",
+                                 "deactivation:",
+                                 "resetting:",
+                                 "initializing:",
+                                 "finalizing:",
+                                 "precedingComponents:",
+                                 "sendingTiming: SYNC",
+                                 "rate: 30.0",
+                                 "year: 2024",
+                                 "id: '0'"}) {
         QVERIFY2(yaml.contains(expected), expected);
     }
     // Every target has a condition mapping: rtsprofile looks it up unconditionally.
@@ -262,8 +279,9 @@ void TestRtsYaml::writesRtsprofileDialect()
 void TestRtsYaml::quotesTextThatWouldChangeType_data()
 {
     QTest::addColumn<QString>("value");
-    for (const char *value : {"yes", "No", "true", "OFF", "null", "~", "", "0.2", "12", "-3.5e2",
-                              "0x1F", ".inf", "a: b", "#hash", " padded ", "line\nbreak", "日本語"}) {
+    for (const char *value :
+         {"yes", "No", "true", "OFF", "null", "~", "", "0.2", "12", "-3.5e2", "0x1F", ".inf",
+          "a: b", "#hash", " padded ", "line\nbreak", "日本語"}) {
         const QByteArray name = "'" + QByteArray(value).replace('\n', "\\n") + "'";
         QTest::newRow(name.constData()) << QString::fromUtf8(value);
     }
@@ -272,22 +290,23 @@ void TestRtsYaml::quotesTextThatWouldChangeType_data()
 void TestRtsYaml::quotesTextThatWouldChangeType()
 {
     QFETCH(QString, value);
-    RtsProfile p = RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("N"), QStringLiteral("1"));
+    RtsProfile p
+        = RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("N"), QStringLiteral("1"));
     p.comment = value;
     p.abstract = value;
     p.versionUpLogs << value;
     const QByteArray yaml = writeRtsYaml(p);
     const QByteArray line = yaml.mid(yaml.indexOf("abstract:"));
     const QByteArray first = line.left(line.indexOf('\n'));
-    static const QRegularExpression plainSpecial(QStringLiteral(
-        R"(^abstract: (yes|No|true|OFF|null|~|0\.2|12|-3\.5e2|0x1F|\.inf)?$)"));
+    static const QRegularExpression plainSpecial(
+        QStringLiteral(R"(^abstract: (yes|No|true|OFF|null|~|0\.2|12|-3\.5e2|0x1F|\.inf)?$)"));
     QVERIFY2(!plainSpecial.match(QString::fromUtf8(first)).hasMatch(), first.constData());
     Diagnostics diagnostics;
     const auto again = readRtsYaml(yaml, QStringLiteral("q.yaml"), &diagnostics);
     QVERIFY2(again && diagnostics.isEmpty(), qPrintable(joined(diagnostics)));
     QCOMPARE(again->abstract, std::optional<QString>(value));
     QCOMPARE(again->comment, std::optional<QString>(value));
-    QCOMPARE(again->versionUpLogs, QStringList{value});
+    QCOMPARE(again->versionUpLogs, QStringList {value});
 }
 
 void TestRtsYaml::rejectsBrokenFiles_data()
@@ -297,9 +316,10 @@ void TestRtsYaml::rejectsBrokenFiles_data()
     QTest::addColumn<int>("line");
     QTest::addColumn<QString>("fragment");
     QTest::newRow("malformed") << "malformed.yaml" << false << 6 << QString();
-    QTest::newRow("list expected") << "type-error-list.yaml" << true << 6 << "'components' must be a list";
-    QTest::newRow("value expected") << "type-error-scalar.yaml" << true << 10
-                                    << "'instanceName' must be a single value";
+    QTest::newRow("list expected")
+        << "type-error-list.yaml" << true << 6 << "'components' must be a list";
+    QTest::newRow("value expected")
+        << "type-error-scalar.yaml" << true << 10 << "'instanceName' must be a single value";
     QTest::newRow("bad date") << "type-error-date.yaml" << true << 6 << "creationDate.year";
     QTest::newRow("not a system") << "not-rts.yaml" << false << 1 << "rtsProfile";
     QTest::newRow("invalid utf-8") << "invalid-utf8.yaml" << false << 4 << "UTF-8";
