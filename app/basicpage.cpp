@@ -20,7 +20,7 @@ namespace {
 using Field = RtcDocument::BasicField;
 
 constexpr Field AllFields[] = {
-    Field::Name,          Field::Description,  Field::Version,      Field::Vendor,
+    Field::Name,          Field::Description,   Field::Version,      Field::Vendor,
     Field::Category,      Field::ComponentType, Field::ActivityType, Field::MaxInstances,
     Field::ExecutionType, Field::ExecutionRate,
 };
@@ -134,8 +134,8 @@ void BasicPage::buildForm()
     QFormLayout *behaviour = addSection(tr("Behaviour"));
     addComboBox(behaviour, Field::ComponentType, tr("Component &type:"),
                 Profile::rtcComponentTypes(), false);
-    addComboBox(behaviour, Field::ActivityType, tr("&Activity type:"),
-                Profile::rtcActivityTypes(), false);
+    addComboBox(behaviour, Field::ActivityType, tr("&Activity type:"), Profile::rtcActivityTypes(),
+                false);
     addLineEdit(behaviour, Field::MaxInstances, tr("&Max instances:"), tr("(not set)"));
 
     QFormLayout *execution = addSection(tr("Execution Context"));
@@ -174,8 +174,8 @@ void BasicPage::addLineEdit(QFormLayout *form, RtcDocument::BasicField field, co
     addRow(form, field, label, edit);
 }
 
-void BasicPage::addComboBox(QFormLayout *form, RtcDocument::BasicField field,
-                            const QString &label, const QStringList &items, bool editable)
+void BasicPage::addComboBox(QFormLayout *form, RtcDocument::BasicField field, const QString &label,
+                            const QStringList &items, bool editable)
 {
     auto *combo = new QComboBox;
     combo->setEditable(editable);
@@ -207,7 +207,7 @@ void BasicPage::addRow(QFormLayout *form, RtcDocument::BasicField field, const Q
     form->addRow(label, cell);
     if (auto *buddy = qobject_cast<QLabel *>(form->labelForField(cell)))
         buddy->setBuddy(editor);
-    m_rows.insert(int(field), Row{editor, message});
+    m_rows.insert(int(field), Row {editor, message});
 }
 
 void BasicPage::userEdited(RtcDocument::BasicField field, const QString &text)

@@ -29,8 +29,7 @@ QString yamlFilter()
 
 DialogPrompts::DialogPrompts(QWidget *parent)
     : m_parent(parent)
-{
-}
+{ }
 
 UserPrompts::SaveChoice DialogPrompts::askSaveChanges(const QString &documentName)
 {
@@ -51,8 +50,8 @@ UserPrompts::SaveChoice DialogPrompts::askSaveChanges(const QString &documentNam
 
 QStringList DialogPrompts::askOpenFileNames(const QString &directory)
 {
-    const QString filters = tr("Profiles (*.xml *.yaml *.yml)") + QStringLiteral(";;")
-                            + tr("All files (*)");
+    const QString filters
+        = tr("Profiles (*.xml *.yaml *.yml)") + QStringLiteral(";;") + tr("All files (*)");
     return QFileDialog::getOpenFileNames(m_parent, tr("Open Profile"), directory, filters);
 }
 
@@ -60,7 +59,9 @@ QString DialogPrompts::askSaveFileName(Profile::ProfileKind kind, const QString 
 {
     const QString title = kind == Profile::ProfileKind::Rts ? tr("Save System Profile")
                                                             : tr("Save Component Profile");
-    QString selected = Profile::formatForFileName(suggestedPath) == Profile::FileFormat::Yaml ? yamlFilter() : xmlFilter();
+    QString selected = Profile::formatForFileName(suggestedPath) == Profile::FileFormat::Yaml
+        ? yamlFilter()
+        : xmlFilter();
     QString path = QFileDialog::getSaveFileName(m_parent, title, suggestedPath,
                                                 xmlFilter() + QStringLiteral(";;") + yamlFilter(),
                                                 &selected);

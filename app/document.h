@@ -73,7 +73,8 @@ protected:
 
 private:
     void setFile(const QString &path, Profile::FileFormat format);
-    bool writeTo(const QString &path, Profile::FileFormat format, Profile::Diagnostics *diagnostics);
+    bool writeTo(const QString &path, Profile::FileFormat format,
+                 Profile::Diagnostics *diagnostics);
 
     QUndoStack *m_undoStack;
     QString m_filePath;

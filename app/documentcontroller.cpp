@@ -28,8 +28,7 @@ DocumentController::DocumentController(UserPrompts *prompts, QObject *parent)
     : QObject(parent)
     , m_prompts(prompts)
     , m_recentFiles(new RecentFiles(QStringLiteral("recentFiles"), this))
-{
-}
+{ }
 
 DocumentController::~DocumentController()
 {
@@ -81,13 +80,13 @@ QList<Document *> DocumentController::openFiles(const QStringList &paths)
             failedNames << QFileInfo(path).fileName();
     }
     if (!failedNames.isEmpty()) {
-        const QString summary = tr("Could not open %1.").arg(failedNames.join(QStringLiteral(", ")));
+        const QString summary
+            = tr("Could not open %1.").arg(failedNames.join(QStringLiteral(", ")));
         emit problemsReported(summary, failures);
         if (m_prompts) {
-            m_prompts->showProblems(tr("Open Failed"),
-                                    summary + QLatin1Char(' ')
-                                        + tr("Open documents were not changed."),
-                                    failures);
+            m_prompts->showProblems(
+                tr("Open Failed"),
+                summary + QLatin1Char(' ') + tr("Open documents were not changed."), failures);
         }
     }
     return opened;
@@ -170,10 +169,9 @@ Document *DocumentController::openOne(const QString &path, Profile::Diagnostics 
     rememberDirectory(added->filePath());
     const Profile::Diagnostics warnings = added->loadWarnings();
     if (!warnings.isEmpty()) {
-        emit problemsReported(
-            tr("%1 was opened with %n warning(s).", nullptr, int(warnings.size()))
-                .arg(added->displayName()),
-            warnings);
+        emit problemsReported(tr("%1 was opened with %n warning(s).", nullptr, int(warnings.size()))
+                                  .arg(added->displayName()),
+                              warnings);
     }
     emit statusMessage(tr("Opened %1").arg(added->filePath()));
     return added;
@@ -188,8 +186,8 @@ void DocumentController::addDocument(Document *document)
 bool DocumentController::saveTo(Document *document, const QString &path, bool keepFormat)
 {
     Profile::Diagnostics diagnostics;
-    const bool saved = keepFormat ? document->save(&diagnostics)
-                                  : document->saveAs(path, &diagnostics);
+    const bool saved
+        = keepFormat ? document->save(&diagnostics) : document->saveAs(path, &diagnostics);
     if (!saved) {
         if (diagnostics.isEmpty())
             diagnostics << Profile::Diagnostic::error(path, 0, 0, tr("could not be written"));

@@ -25,8 +25,7 @@ std::unique_ptr<Document> loadDocument(const QString &path, Profile::Diagnostics
         if (diagnostics) {
             diagnostics->append(Profile::Diagnostic::error(
                 path, 0, 0,
-                QCoreApplication::translate("Studio::loadDocument",
-                                            "not an RTC or RTS profile")));
+                QCoreApplication::translate("Studio::loadDocument", "not an RTC or RTS profile")));
         }
         return nullptr;
     }

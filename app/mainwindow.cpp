@@ -85,8 +85,8 @@ void MainWindow::showPerspective(Perspective::Id id)
     Perspective *target = perspective(id);
     m_perspectives->setCurrentWidget(target);
     const QString actionName = id == Perspective::Id::Builder
-                                   ? QStringLiteral("actionPerspectiveBuilder")
-                                   : QStringLiteral("actionPerspectiveSystemEditor");
+        ? QStringLiteral("actionPerspectiveBuilder")
+        : QStringLiteral("actionPerspectiveSystemEditor");
     if (auto *action = findChild<QAction *>(actionName))
         action->setChecked(true);
     updateActiveDocument();
@@ -144,15 +144,14 @@ QAction *MainWindow::addAction(const QString &objectName, const QString &text,
 
 void MainWindow::createActions()
 {
-    QAction *newComponent = addAction(QStringLiteral("actionNewComponent"),
-                                      tr("New &Component"), QStringLiteral("new-component"),
-                                      QKeySequence::New);
+    QAction *newComponent = addAction(QStringLiteral("actionNewComponent"), tr("New &Component"),
+                                      QStringLiteral("new-component"), QKeySequence::New);
     newComponent->setToolTip(tr("Create a new RT-Component profile in the Builder"));
     connect(newComponent, &QAction::triggered, m_controller, &DocumentController::newComponent);
 
-    QAction *newSystem = addAction(QStringLiteral("actionNewSystem"), tr("New &System"),
-                                   QStringLiteral("new-system"),
-                                   QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+    QAction *newSystem
+        = addAction(QStringLiteral("actionNewSystem"), tr("New &System"),
+                    QStringLiteral("new-system"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     newSystem->setToolTip(tr("Create a new RT System in the System Editor"));
     connect(newSystem, &QAction::triggered, m_controller, &DocumentController::newSystem);
 
@@ -173,8 +172,8 @@ void MainWindow::createActions()
         if (Document *document = activeDocument())
             m_controller->saveAs(document);
     });
-    QAction *close = addAction(QStringLiteral("actionClose"), tr("&Close"),
-                               QStringLiteral("close"), QKeySequence::Close);
+    QAction *close = addAction(QStringLiteral("actionClose"), tr("&Close"), QStringLiteral("close"),
+                               QKeySequence::Close);
     connect(close, &QAction::triggered, this, [this] {
         if (Document *document = activeDocument())
             m_controller->close(document);
@@ -193,8 +192,8 @@ void MainWindow::createActions()
     redo->setIcon(icon(QStringLiteral("redo")));
     redo->setShortcut(QKeySequence::Redo);
 
-    QAction *about = addAction(QStringLiteral("actionAbout"), tr("&About RT Studio"),
-                               QStringLiteral("about"));
+    QAction *about
+        = addAction(QStringLiteral("actionAbout"), tr("&About RT Studio"), QStringLiteral("about"));
     about->setMenuRole(QAction::AboutRole);
     connect(about, &QAction::triggered, this, [this] { m_prompts->showAbout(); });
 
@@ -205,10 +204,9 @@ void MainWindow::createActions()
     };
     for (const auto &[target, name] : perspectives) {
         const bool builder = target == m_builder;
-        QAction *action = addAction(name, target->title(),
-                                    builder ? QStringLiteral("component")
-                                            : QStringLiteral("system"),
-                                    QKeySequence(Qt::CTRL | (builder ? Qt::Key_1 : Qt::Key_2)));
+        QAction *action = addAction(
+            name, target->title(), builder ? QStringLiteral("component") : QStringLiteral("system"),
+            QKeySequence(Qt::CTRL | (builder ? Qt::Key_1 : Qt::Key_2)));
         action->setCheckable(true);
         action->setToolTip(tr("Switch to the %1 perspective").arg(target->title()));
         m_perspectiveActions->addAction(action);
@@ -219,9 +217,8 @@ void MainWindow::createActions()
 
 void MainWindow::createMenus()
 {
-    const auto action = [this](const char *name) {
-        return findChild<QAction *>(QLatin1String(name));
-    };
+    const auto action
+        = [this](const char *name) { return findChild<QAction *>(QLatin1String(name)); };
     QMenu *file = menuBar()->addMenu(tr("&File"));
     file->addAction(action("actionNewComponent"));
     file->addAction(action("actionNewSystem"));
@@ -308,8 +305,7 @@ void MainWindow::createProblemsDock()
     addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
     m_problemsDock->hide();
     connect(m_problems, &ProblemsPanel::countChanged, this, [this](int count) {
-        m_problemsDock->setWindowTitle(count > 0 ? tr("Problems (%1)").arg(count)
-                                                 : tr("Problems"));
+        m_problemsDock->setWindowTitle(count > 0 ? tr("Problems (%1)").arg(count) : tr("Problems"));
     });
 }
 
@@ -318,8 +314,7 @@ void MainWindow::connectController()
     connect(m_controller, &DocumentController::documentAdded, this, &MainWindow::addDocument);
     connect(m_controller, &DocumentController::activationRequested, this,
             &MainWindow::activateDocument);
-    connect(m_controller, &DocumentController::documentClosing, this,
-            &MainWindow::removeDocument);
+    connect(m_controller, &DocumentController::documentClosing, this, &MainWindow::removeDocument);
     connect(m_controller, &DocumentController::problemsReported, this, &MainWindow::showProblems);
     connect(m_controller, &DocumentController::statusMessage, this,
             [this](const QString &message) { statusBar()->showMessage(message, 5000); });
@@ -330,8 +325,8 @@ void MainWindow::connectController()
 void MainWindow::addDocument(Document *document)
 {
     const Perspective::Id id = document->kind() == Profile::ProfileKind::Rts
-                                   ? Perspective::Id::SystemEditor
-                                   : Perspective::Id::Builder;
+        ? Perspective::Id::SystemEditor
+        : Perspective::Id::Builder;
     m_undoGroup->addStack(document->undoStack());
     connect(document, &Document::modifiedChanged, this, [this, document] {
         if (document == m_activeDocument) {
@@ -386,8 +381,8 @@ void MainWindow::updateActiveDocument()
 void MainWindow::updateTitle()
 {
     const QString application = tr("RT Studio");
-    const QString perspectiveTitle = currentPerspective() ? currentPerspective()->title()
-                                                          : QString();
+    const QString perspectiveTitle
+        = currentPerspective() ? currentPerspective()->title() : QString();
     if (!m_activeDocument) {
         setWindowTitle(QStringLiteral("%1 — %2").arg(perspectiveTitle, application));
         setWindowModified(false);
@@ -415,8 +410,9 @@ void MainWindow::fillRecentFilesMenu()
     for (int i = 0; i < files.size(); ++i) {
         const QString path = files.at(i);
         // Numbered accelerators 1–9 make the first entries quick to pick from the keyboard.
-        const QString text = i < 9 ? QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName())
-                                   : QFileInfo(path).fileName();
+        const QString text = i < 9
+            ? QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName())
+            : QFileInfo(path).fileName();
         QAction *action = m_recentMenu->addAction(text);
         action->setToolTip(path);
         action->setStatusTip(path);
@@ -443,8 +439,8 @@ void MainWindow::readSettings()
     if (!restoreGeometry(settings.value(GeometryKey).toByteArray()))
         resize(1200, 800);
     restoreState(settings.value(StateKey).toByteArray());
-    const bool systemEditor = settings.value(PerspectiveKey).toString()
-                              == QLatin1String("SystemEditor");
+    const bool systemEditor
+        = settings.value(PerspectiveKey).toString() == QLatin1String("SystemEditor");
     showPerspective(systemEditor ? Perspective::Id::SystemEditor : Perspective::Id::Builder);
 }
 
@@ -453,9 +449,10 @@ void MainWindow::writeSettings() const
     QSettings settings;
     settings.setValue(GeometryKey, saveGeometry());
     settings.setValue(StateKey, saveState());
-    settings.setValue(PerspectiveKey, currentPerspective()->id() == Perspective::Id::SystemEditor
-                                          ? QStringLiteral("SystemEditor")
-                                          : QStringLiteral("Builder"));
+    settings.setValue(PerspectiveKey,
+                      currentPerspective()->id() == Perspective::Id::SystemEditor
+                          ? QStringLiteral("SystemEditor")
+                          : QStringLiteral("Builder"));
 }
 
 } // namespace Studio

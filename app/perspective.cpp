@@ -50,7 +50,8 @@ void Perspective::addDocument(Document *document, QWidget *editor)
     m_documentByEditor.insert(editor, document);
     const int index = m_tabs->addTab(editor, QString());
     updateTab(document);
-    connect(document, &Document::displayNameChanged, this, [this, document] { updateTab(document); });
+    connect(document, &Document::displayNameChanged, this,
+            [this, document] { updateTab(document); });
     connect(document, &Document::filePathChanged, this, [this, document] { updateTab(document); });
     connect(document, &Document::modifiedChanged, this, [this, document] { updateTab(document); });
     updateEmptyState();
@@ -123,8 +124,8 @@ void Perspective::updateTab(Document *document)
     // An asterisk marks unsaved changes, as the window title's [*] does for the current one.
     const QString marker = document->isModified() ? QStringLiteral("*") : QString();
     m_tabs->setTabText(index, document->displayName() + marker);
-    m_tabs->setTabToolTip(index, document->isUntitled() ? tr("Not saved yet")
-                                                        : document->filePath());
+    m_tabs->setTabToolTip(index,
+                          document->isUntitled() ? tr("Not saved yet") : document->filePath());
 }
 
 void Perspective::updateEmptyState()

@@ -19,8 +19,7 @@ QString normalised(const QString &path)
 RecentFiles::RecentFiles(const QString &settingsKey, QObject *parent)
     : QObject(parent)
     , m_key(settingsKey)
-{
-}
+{ }
 
 QStringList RecentFiles::files() const
 {

@@ -53,8 +53,7 @@ std::optional<QString> *optionalMember(Profile::RtcBasicInfo &info, Field field)
 RtcDocument::RtcDocument(Profile::RtcProfile profile, QObject *parent)
     : Document(parent)
     , m_profile(std::move(profile))
-{
-}
+{ }
 
 QByteArray RtcDocument::serialize(Profile::FileFormat format) const
 {
@@ -92,13 +91,13 @@ void RtcDocument::setComponentId(const QString &id)
 bool RtcDocument::isOptional(BasicField field)
 {
     return field == Field::Description || field == Field::MaxInstances
-           || field == Field::ExecutionRate;
+        || field == Field::ExecutionRate;
 }
 
 bool RtcDocument::isIdPart(BasicField field)
 {
     return field == Field::Name || field == Field::Vendor || field == Field::Category
-           || field == Field::Version;
+        || field == Field::Version;
 }
 
 QString RtcDocument::fieldLabel(BasicField field)
@@ -134,11 +133,11 @@ QString RtcDocument::idAfterEdit(const Profile::RtcProfile &profile, BasicField 
     if (!isIdPart(field) || profile.id != profile.idFromBasicInfo())
         return profile.id;
     const Profile::RtcBasicInfo &info = profile.basicInfo;
-    Profile::RtcComponentId parts{info.vendor, info.category, info.name, info.version};
-    QString *part = field == Field::Name      ? &parts.name
-                    : field == Field::Vendor  ? &parts.vendor
-                    : field == Field::Category ? &parts.category
-                                               : &parts.version;
+    Profile::RtcComponentId parts {info.vendor, info.category, info.name, info.version};
+    QString *part = field == Field::Name ? &parts.name
+        : field == Field::Vendor         ? &parts.vendor
+        : field == Field::Category       ? &parts.category
+                                         : &parts.version;
     *part = value;
     return parts.toString();
 }

@@ -5,9 +5,8 @@
 
 namespace Studio {
 
-EditSystemInfoCommand::EditSystemInfoCommand(RtsDocument *document,
-                                             RtsDocument::SystemField field, const QString &value,
-                                             QUndoCommand *parent)
+EditSystemInfoCommand::EditSystemInfoCommand(RtsDocument *document, RtsDocument::SystemField field,
+                                             const QString &value, QUndoCommand *parent)
     : QUndoCommand(parent)
     , m_document(document)
     , m_field(field)

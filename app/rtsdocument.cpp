@@ -18,7 +18,7 @@ std::optional<QStringList> idParts(const QString &id)
     const QString vendor = parts.at(1);
     const QString version = parts.last();
     const QString name = parts.mid(2, parts.size() - 3).join(QLatin1Char(':'));
-    return QStringList{vendor, name, version};
+    return QStringList {vendor, name, version};
 }
 
 int partIndex(RtsDocument::SystemField field)
@@ -41,8 +41,7 @@ int partIndex(RtsDocument::SystemField field)
 RtsDocument::RtsDocument(Profile::RtsProfile profile, QObject *parent)
     : Document(parent)
     , m_profile(std::move(profile))
-{
-}
+{ }
 
 QByteArray RtsDocument::serialize(Profile::FileFormat format) const
 {
@@ -83,7 +82,7 @@ QString RtsDocument::idWithField(const QString &id, SystemField field, const QSt
     const int index = partIndex(field);
     if (index < 0)
         return id;
-    QStringList parts = idParts(id).value_or(QStringList{QString(), QString(), QString()});
+    QStringList parts = idParts(id).value_or(QStringList {QString(), QString(), QString()});
     parts[index] = value;
     return QStringLiteral("RTSystem:%1:%2:%3").arg(parts.at(0), parts.at(1), parts.at(2));
 }

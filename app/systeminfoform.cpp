@@ -75,7 +75,8 @@ void SystemInfoForm::addIdRow(QFormLayout *form, RtsDocument::SystemField field,
     auto *edit = new QLineEdit(cell);
     // ':' separates the parts of the system id, so it cannot be part of one; refusing it at the
     // keyboard keeps the id unambiguous.
-    edit->setValidator(new QRegularExpressionValidator(QRegularExpression(QStringLiteral("[^:]*")), edit));
+    edit->setValidator(
+        new QRegularExpressionValidator(QRegularExpression(QStringLiteral("[^:]*")), edit));
     connect(edit, &QLineEdit::textEdited, this,
             [this, field](const QString &text) { userEdited(field, text); });
     auto *message = new QLabel(cell);
@@ -116,13 +117,14 @@ void SystemInfoForm::refresh()
     m_updating = false;
 
     const Profile::RtsProfile &profile = m_document->profile();
-    m_systemId->setText(m_document->hasWellFormedId()
-                            ? profile.id
-                            : tr("%1 (not of the form RTSystem:vendor:name:version)")
-                                  .arg(profile.id));
-    m_dates->setText(tr("created %1, updated %2")
-                         .arg(profile.creationDate.isEmpty() ? tr("(unknown)") : profile.creationDate,
-                              profile.updateDate.isEmpty() ? tr("(unknown)") : profile.updateDate));
+    m_systemId->setText(
+        m_document->hasWellFormedId()
+            ? profile.id
+            : tr("%1 (not of the form RTSystem:vendor:name:version)").arg(profile.id));
+    m_dates->setText(
+        tr("created %1, updated %2")
+            .arg(profile.creationDate.isEmpty() ? tr("(unknown)") : profile.creationDate,
+                 profile.updateDate.isEmpty() ? tr("(unknown)") : profile.updateDate));
 }
 
 void SystemInfoForm::showProblem(RtsDocument::SystemField field, const QString &text)

@@ -188,33 +188,34 @@ void SystemOutlineModel::addConnectors()
     group.details = tr("%n connector(s)", nullptr, count);
     const int groupNode = addNode(RootNode, group);
 
-    const auto addConnector = [&](const Profile::RtsPortConnector &connector, NodeKind kind,
-                                  const QString &details) {
-        Node item(kind);
-        item.name = connector.name.isEmpty() ? connector.connectorId : connector.name;
-        item.details = details;
-        item.toolTip = tr("Connector id: %1").arg(connector.connectorId);
-        item.connectorId = connector.connectorId;
-        const int connectorNode = addNode(groupNode, item);
-        const std::pair<NodeKind, const Profile::RtsTargetPort *> ends[] = {
-            {NodeKind::ConnectorSource, &connector.source},
-            {NodeKind::ConnectorTarget, &connector.target},
-        };
-        for (const auto &[endKind, end] : ends) {
-            Node endItem(endKind);
-            endItem.name = endKind == NodeKind::ConnectorSource ? tr("source") : tr("target");
-            endItem.details = endText(*end);
-            endItem.toolTip = end->componentId;
-            endItem.instanceName = end->instanceName;
-            endItem.portName = end->portName;
-            endItem.connectorId = connector.connectorId;
-            addNode(connectorNode, endItem);
-        }
-    };
+    const auto addConnector
+        = [&](const Profile::RtsPortConnector &connector, NodeKind kind, const QString &details) {
+              Node item(kind);
+              item.name = connector.name.isEmpty() ? connector.connectorId : connector.name;
+              item.details = details;
+              item.toolTip = tr("Connector id: %1").arg(connector.connectorId);
+              item.connectorId = connector.connectorId;
+              const int connectorNode = addNode(groupNode, item);
+              const std::pair<NodeKind, const Profile::RtsTargetPort *> ends[] = {
+                  {NodeKind::ConnectorSource, &connector.source},
+                  {NodeKind::ConnectorTarget, &connector.target},
+              };
+              for (const auto &[endKind, end] : ends) {
+                  Node endItem(endKind);
+                  endItem.name = endKind == NodeKind::ConnectorSource ? tr("source") : tr("target");
+                  endItem.details = endText(*end);
+                  endItem.toolTip = end->componentId;
+                  endItem.instanceName = end->instanceName;
+                  endItem.portName = end->portName;
+                  endItem.connectorId = connector.connectorId;
+                  addNode(connectorNode, endItem);
+              }
+          };
     for (const Profile::RtsDataPortConnector &connector : profile.dataPortConnectors) {
-        addConnector(connector, NodeKind::DataConnector,
-                     tr("data, %1").arg(connector.dataType.isEmpty() ? tr("no data type")
-                                                                      : connector.dataType));
+        addConnector(
+            connector, NodeKind::DataConnector,
+            tr("data, %1")
+                .arg(connector.dataType.isEmpty() ? tr("no data type") : connector.dataType));
     }
     for (const Profile::RtsServicePortConnector &connector : profile.servicePortConnectors)
         addConnector(connector, NodeKind::ServiceConnector, tr("service"));

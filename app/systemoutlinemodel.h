@@ -39,9 +39,9 @@ public:
 
     enum Role {
         NodeKindRole = Qt::UserRole + 1, ///< NodeKind as int
-        InstanceNameRole,                ///< component (or connector end) instance name
-        PortNameRole,                    ///< port name (ports and connector ends)
-        ConnectorIdRole,                 ///< connector id (connectors and their ends)
+        InstanceNameRole, ///< component (or connector end) instance name
+        PortNameRole, ///< port name (ports and connector ends)
+        ConnectorIdRole, ///< connector id (connectors and their ends)
     };
 
     enum Column { NameColumn, DetailsColumn, ColumnCount };
@@ -66,8 +66,7 @@ private:
     {
         explicit Node(NodeKind nodeKind = NodeKind::ComponentGroup)
             : kind(nodeKind)
-        {
-        }
+        { }
 
         NodeKind kind;
         int parent = -1;

@@ -64,11 +64,11 @@ void TestAppRecentFiles::newestFirstWithoutDuplicates()
     recent.add(a);
     recent.add(b);
     recent.add(a);
-    QCOMPARE(recent.files(), (QStringList{a, b}));
+    QCOMPARE(recent.files(), (QStringList {a, b}));
     QCOMPARE(spy.count(), 3);
     // A relative or unclean spelling of the same file is the same entry.
     recent.add(QDir(m_files.path()).filePath(QStringLiteral("./b.yaml")));
-    QCOMPARE(recent.files(), (QStringList{b, a}));
+    QCOMPARE(recent.files(), (QStringList {b, a}));
 }
 
 void TestAppRecentFiles::keepsAtMostTheMaximum()
@@ -94,9 +94,9 @@ void TestAppRecentFiles::prunesMissingFiles()
     recent.add(gone);
     QVERIFY(QFile::remove(gone));
     QSignalSpy spy(&recent, &RecentFiles::changed);
-    QCOMPARE(recent.files(), QStringList{kept});
+    QCOMPARE(recent.files(), QStringList {kept});
     QCOMPARE(spy.count(), 1);
-    QCOMPARE(QSettings().value(QStringLiteral("recentFiles")).toStringList(), QStringList{kept});
+    QCOMPARE(QSettings().value(QStringLiteral("recentFiles")).toStringList(), QStringList {kept});
 }
 
 void TestAppRecentFiles::removeAndClear()
@@ -107,7 +107,7 @@ void TestAppRecentFiles::removeAndClear()
     recent.add(a);
     recent.add(b);
     recent.remove(a);
-    QCOMPARE(recent.files(), QStringList{b});
+    QCOMPARE(recent.files(), QStringList {b});
     recent.clear();
     QVERIFY(recent.files().isEmpty());
 }
@@ -120,7 +120,7 @@ void TestAppRecentFiles::survivesRestart()
         recent.add(a);
     }
     RecentFiles again;
-    QCOMPARE(again.files(), QStringList{a});
+    QCOMPARE(again.files(), QStringList {a});
 }
 
 QTEST_GUILESS_MAIN(TestAppRecentFiles)

@@ -15,8 +15,8 @@ namespace {
 std::unique_ptr<RtsDocument> loadSystem(const QString &name)
 {
     Profile::Diagnostics diagnostics;
-    std::unique_ptr<Document> document =
-        loadDocument(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/app/") + name, &diagnostics);
+    std::unique_ptr<Document> document
+        = loadDocument(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/app/") + name, &diagnostics);
     if (!document || !qobject_cast<RtsDocument *>(document.get()))
         return nullptr;
     return std::unique_ptr<RtsDocument>(static_cast<RtsDocument *>(document.release()));
@@ -88,9 +88,9 @@ void TestAppSystemOutline::listsComponentsWithPorts()
     QVERIFY(!filter.data(Qt::DecorationRole).value<QIcon>().isNull());
 
     QCOMPARE(model.rowCount(filter), 3);
-    const QStringList expectedPorts = {QStringLiteral("RangeFilter0.scan"),
-                                       QStringLiteral("RangeFilter0.filtered"),
-                                       QStringLiteral("RangeFilter0.scanner")};
+    const QStringList expectedPorts
+        = {QStringLiteral("RangeFilter0.scan"), QStringLiteral("RangeFilter0.filtered"),
+           QStringLiteral("RangeFilter0.scanner")};
     const QList<Kind> expectedKinds = {Kind::DataPort, Kind::DataPort, Kind::ServicePort};
     for (int row = 0; row < 3; ++row) {
         const QModelIndex port = model.index(row, 0, filter);

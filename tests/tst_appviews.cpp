@@ -254,19 +254,32 @@ void TestAppViews::fieldRules_data()
     QTest::addColumn<QString>("rule");
     QTest::addColumn<QString>("text");
     QTest::addColumn<bool>("ok");
-    QTest::newRow("name ok") << "name" << "Abc_09-:" << true;
-    QTest::newRow("name empty") << "name" << "" << false;
-    QTest::newRow("name slash") << "name" << "a/b" << false;
-    QTest::newRow("integer absent") << "integer" << "" << true;
-    QTest::newRow("integer zero") << "integer" << "0" << true;
-    QTest::newRow("integer negative") << "integer" << "-3" << false;
-    QTest::newRow("integer fraction") << "integer" << "1.5" << false;
-    QTest::newRow("number ok") << "number" << "1000.0" << true;
-    QTest::newRow("number negative") << "number" << "-0.1" << false;
-    QTest::newRow("number nan") << "number" << "nan" << false;
-    QTest::newRow("required blank") << "required" << "  " << false;
-    QTest::newRow("id part ok") << "idpart" << "jp.go.aist" << true;
-    QTest::newRow("id part colon") << "idpart" << "a:b" << false;
+    QTest::newRow("name ok") << "name"
+                             << "Abc_09-:" << true;
+    QTest::newRow("name empty") << "name"
+                                << "" << false;
+    QTest::newRow("name slash") << "name"
+                                << "a/b" << false;
+    QTest::newRow("integer absent") << "integer"
+                                    << "" << true;
+    QTest::newRow("integer zero") << "integer"
+                                  << "0" << true;
+    QTest::newRow("integer negative") << "integer"
+                                      << "-3" << false;
+    QTest::newRow("integer fraction") << "integer"
+                                      << "1.5" << false;
+    QTest::newRow("number ok") << "number"
+                               << "1000.0" << true;
+    QTest::newRow("number negative") << "number"
+                                     << "-0.1" << false;
+    QTest::newRow("number nan") << "number"
+                                << "nan" << false;
+    QTest::newRow("required blank") << "required"
+                                    << "  " << false;
+    QTest::newRow("id part ok") << "idpart"
+                                << "jp.go.aist" << true;
+    QTest::newRow("id part colon") << "idpart"
+                                   << "a:b" << false;
 }
 
 void TestAppViews::fieldRules()

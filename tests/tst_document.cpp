@@ -51,8 +51,7 @@ std::unique_ptr<Document> load(const QString &path)
 void editName(Document *document, const QString &name)
 {
     if (auto *rtc = qobject_cast<RtcDocument *>(document)) {
-        rtc->undoStack()->push(
-            new SetBasicFieldCommand(rtc, RtcDocument::BasicField::Name, name));
+        rtc->undoStack()->push(new SetBasicFieldCommand(rtc, RtcDocument::BasicField::Name, name));
     } else if (auto *rts = qobject_cast<RtsDocument *>(document)) {
         rts->undoStack()->push(
             new EditSystemInfoCommand(rts, RtsDocument::SystemField::Name, name));
@@ -169,10 +168,14 @@ void TestDocument::saveAsChoosesFormatByExtension_data()
     QTest::addColumn<QString>("file");
     QTest::addColumn<QString>("target");
     QTest::addColumn<Profile::FileFormat>("format");
-    QTest::newRow("rtc xml → yaml") << "component.xml" << "out.yaml" << Profile::FileFormat::Yaml;
-    QTest::newRow("rtc yaml → xml") << "component.yaml" << "RTC.xml" << Profile::FileFormat::Xml;
-    QTest::newRow("rts xml → yml") << "system.xml" << "out.yml" << Profile::FileFormat::Yaml;
-    QTest::newRow("rts yaml → xml") << "system.yaml" << "sys.xml" << Profile::FileFormat::Xml;
+    QTest::newRow("rtc xml → yaml") << "component.xml"
+                                    << "out.yaml" << Profile::FileFormat::Yaml;
+    QTest::newRow("rtc yaml → xml") << "component.yaml"
+                                    << "RTC.xml" << Profile::FileFormat::Xml;
+    QTest::newRow("rts xml → yml") << "system.xml"
+                                   << "out.yml" << Profile::FileFormat::Yaml;
+    QTest::newRow("rts yaml → xml") << "system.yaml"
+                                    << "sys.xml" << Profile::FileFormat::Xml;
 }
 
 void TestDocument::saveAsChoosesFormatByExtension()
@@ -260,8 +263,7 @@ void TestDocument::failedSaveKeepsDocumentModified_data()
     QFile::setPermissions(probeDir.path(), QFile::ReadOwner | QFile::ExeOwner);
     QFile probe(probeDir.filePath(QStringLiteral("probe")));
     const bool readOnlyHolds = !probe.open(QIODevice::WriteOnly);
-    QFile::setPermissions(probeDir.path(),
-                          QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    QFile::setPermissions(probeDir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
     if (readOnlyHolds)
         QTest::newRow("read-only folder") << QStringLiteral("readonly/RTC.xml");
 }

@@ -156,10 +156,12 @@ void TestDocumentCommands::basicFieldOtherFieldDoesNotMerge()
 {
     QObject owner;
     RtcDocument *document = newComponent(&owner);
-    document->undoStack()->push(new SetBasicFieldCommand(document, Field::Name, QStringLiteral("A")));
+    document->undoStack()->push(
+        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("A")));
     document->undoStack()->push(
         new SetBasicFieldCommand(document, Field::Vendor, QStringLiteral("B")));
-    document->undoStack()->push(new SetBasicFieldCommand(document, Field::Name, QStringLiteral("C")));
+    document->undoStack()->push(
+        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("C")));
     QCOMPARE(document->undoStack()->count(), 3);
     document->undoStack()->undo();
     QCOMPARE(document->basicField(Field::Name), QStringLiteral("A"));
@@ -220,7 +222,8 @@ void TestDocumentCommands::basicFieldAnnouncesChanges()
     QCOMPARE(fieldSpy.count(), 1);
     QCOMPARE(fieldSpy.at(0).at(0).value<Field>(), Field::Category);
     QCOMPARE(idSpy.count(), 1);
-    QCOMPARE(idSpy.at(0).at(0).toString(), QStringLiteral("RTC:VenderName:Sensor:ModuleName:1.0.0"));
+    QCOMPARE(idSpy.at(0).at(0).toString(),
+             QStringLiteral("RTC:VenderName:Sensor:ModuleName:1.0.0"));
     QCOMPARE(modifiedSpy.count(), 1);
     QCOMPARE(modifiedSpy.at(0).at(0).toBool(), true);
     document->undoStack()->undo();

@@ -63,7 +63,7 @@ public:
     void showProblems(const QString &title, const QString &text,
                       const Profile::Diagnostics &diagnostics) override
     {
-        shown << Shown{title, text, diagnostics};
+        shown << Shown {title, text, diagnostics};
     }
     void showAbout() override { ++aboutShown; }
 };
@@ -154,9 +154,9 @@ QAction *TestMainWindow::action(const char *name) const
 QLineEdit *TestMainWindow::nameEdit(Document *document) const
 {
     auto *editor = qobject_cast<RtcEditor *>(m_window->perspective(Id::Builder)->editor(document));
-    return editor ? qobject_cast<QLineEdit *>(
-               editor->basicPage()->editor(RtcDocument::BasicField::Name))
-                  : nullptr;
+    return editor
+        ? qobject_cast<QLineEdit *>(editor->basicPage()->editor(RtcDocument::BasicField::Name))
+        : nullptr;
 }
 
 QString TestMainWindow::copyFixture(const QString &name) const
@@ -320,8 +320,8 @@ void TestMainWindow::failedOpenLeavesDocumentsUntouched()
     QTest::keyClicks(nameEdit(document), QStringLiteral("Edit"));
     const QByteArray before = document->serialize(Profile::FileFormat::Xml);
 
-    QVERIFY(!m_window->openFiles({dataPath(QStringLiteral("broken.xml")),
-                                  dataPath(QStringLiteral("not-a-profile.xml"))}));
+    QVERIFY(!m_window->openFiles(
+        {dataPath(QStringLiteral("broken.xml")), dataPath(QStringLiteral("not-a-profile.xml"))}));
     QCOMPARE(m_window->documents()->documents().size(), 1);
     QCOMPARE(m_window->activeDocument(), document);
     QVERIFY(document->isModified());
@@ -388,7 +388,7 @@ void TestMainWindow::closingModifiedTabAsks()
     QVERIFY(closeButton);
     QTest::mouseClick(closeButton, Qt::LeftButton);
 
-    QCOMPARE(m_prompts->askedToSave, QStringList{QStringLiteral("component.xml")});
+    QCOMPARE(m_prompts->askedToSave, QStringList {QStringLiteral("component.xml")});
     QCOMPARE(m_window->perspective(Id::Builder)->documents().isEmpty(), closed);
     QCOMPARE(m_window->documents()->documents().isEmpty(), closed);
     QCOMPARE(readAll(path).contains("RangeFilterZ"), saved);
@@ -471,7 +471,8 @@ void TestMainWindow::restoresPerspectiveAndGeometry()
 
     MainWindow again;
     QCOMPARE(again.currentPerspective()->id(), Id::SystemEditor);
-    QVERIFY(again.findChild<QAction *>(QStringLiteral("actionPerspectiveSystemEditor"))->isChecked());
+    QVERIFY(
+        again.findChild<QAction *>(QStringLiteral("actionPerspectiveSystemEditor"))->isChecked());
     QCOMPARE(again.size(), QSize(900, 640));
 }
 
