@@ -72,8 +72,7 @@ class Parser
 public:
     explicit Parser(const QString &text)
         : m_text(text)
-    {
-    }
+    { }
 
     RtcConstraint parseTop()
     {
@@ -87,7 +86,7 @@ public:
 private:
     [[noreturn]] void fail(const QString &message, int index = -1) const
     {
-        throw SyntaxError{index < 0 ? int(m_pos) : index, message};
+        throw SyntaxError {index < 0 ? int(m_pos) : index, message};
     }
 
     bool atEnd() const { return m_pos >= m_text.size(); }
@@ -263,11 +262,13 @@ private:
 
     std::optional<Op> parseOperator()
     {
-        static const std::pair<const char *, Op> operators[] = {
-            {"<=", Op::LessThanOrEqualTo}, {">=", Op::GreaterThanOrEqualTo},
-            {"==", Op::EqualTo},           {"!=", Op::NotEqualTo},
-            {"<", Op::LessThan},           {">", Op::GreaterThan},
-            {"=", Op::EqualTo}};
+        static const std::pair<const char *, Op> operators[] = {{"<=", Op::LessThanOrEqualTo},
+                                                                {">=", Op::GreaterThanOrEqualTo},
+                                                                {"==", Op::EqualTo},
+                                                                {"!=", Op::NotEqualTo},
+                                                                {"<", Op::LessThan},
+                                                                {">", Op::GreaterThan},
+                                                                {"=", Op::EqualTo}};
         for (const auto &entry : operators) {
             if (accept(entry.first))
                 return entry.second;
@@ -296,8 +297,8 @@ private:
         return RtcConstraint::comparison(*op, second.text);
     }
 
-    RtcConstraint parseRange(const Token &low, Op op1, const Token &variable, Op op2,
-                             int opIndex, int secondOpIndex)
+    RtcConstraint parseRange(const Token &low, Op op1, const Token &variable, Op op2, int opIndex,
+                             int secondOpIndex)
     {
         const Token high = parseValue(false);
         if (!variable.isIdentifier())
@@ -310,8 +311,9 @@ private:
             fail(tr("a range needs two comparisons pointing the same way (lo<=x<hi or hi>x>=lo)"),
                  isLowerBound(first) || isUpperBound(first) ? secondOpIndex : opIndex);
         }
-        return RtcConstraint::logical(Op::And, {RtcConstraint::comparison(first, low.text),
-                                                RtcConstraint::comparison(op2, high.text)});
+        return RtcConstraint::logical(Op::And,
+                                      {RtcConstraint::comparison(first, low.text),
+                                       RtcConstraint::comparison(op2, high.text)});
     }
 
     /// A quoted or bare value; `key` allows what a hash key may contain (not ':').
@@ -370,7 +372,8 @@ private:
 
 QString quoted(const QString &value, bool key)
 {
-    static const QRegularExpression plain(QStringLiteral(R"(^[^,()\[\]{}<>="!\s][^,()\[\]{}<>="]*$)"));
+    static const QRegularExpression plain(
+        QStringLiteral(R"(^[^,()\[\]{}<>="!\s][^,()\[\]{}<>="]*$)"));
     const bool needsQuotes = value.isEmpty() || value.trimmed() != value
         || !plain.match(value).hasMatch() || value.contains(QLatin1String("&&"))
         || value.contains(QLatin1String("!=")) || value.contains(QLatin1String(".."))
@@ -480,8 +483,8 @@ QString conditionText(const RtcConstraint &c)
     case Op::Or:
         return logicalText(c);
     case Op::IsNull:
-        return QStringLiteral("null(") + (c.literal.isEmpty() ? QString() : quoted(c.literal, false))
-            + QLatin1Char(')');
+        return QStringLiteral("null(")
+            + (c.literal.isEmpty() ? QString() : quoted(c.literal, false)) + QLatin1Char(')');
     case Op::Like:
         return likeText(c);
     case Op::Between:
@@ -498,9 +501,9 @@ QString membersText(const std::vector<RtcConstraint> &members, bool withKeys)
     QStringList parts;
     for (const RtcConstraint &member : members) {
         const QString text = itemText(member);
-        parts.append(withKeys ? quoted(member.key.value_or(QString()), true)
-                                    + QLatin1String(": ") + text
-                              : text);
+        parts.append(withKeys
+                         ? quoted(member.key.value_or(QString()), true) + QLatin1String(": ") + text
+                         : text);
     }
     return parts.join(withKeys ? QLatin1String(", ") : QLatin1String(","));
 }
@@ -535,7 +538,7 @@ ConstraintParseResult parseConstraintString(const QString &text)
     try {
         result.constraint = Parser(text).parseTop();
     } catch (const SyntaxError &error) {
-        result.error = ConstraintSyntaxError{error.index + 1, error.message};
+        result.error = ConstraintSyntaxError {error.index + 1, error.message};
     }
     return result;
 }

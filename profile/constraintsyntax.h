@@ -43,7 +43,7 @@ struct ConstraintParseResult
  * | `(x<0,x>10)`              | Or of any conditions                                    |
  * | `!(c)`                    | Not                                                     |
  * | `0..100`                  | propertyIsBetween (inclusive)                           |
- * | `like(pat)` `like(pat,w,s,e)` | propertyIsLike (defaults wildCard `*`, singleChar `?`, escapeChar `\`) |
+ * | `like(p)` `like(p,w,s,e)` | propertyIsLike (by default `*`, `?` and `\` as w, s, e) |
  * | `null(text)`              | propertyIsNull                                          |
  * | `c1,c2,…` or `[c1,c2]`    | array: ConstraintListType of per-element constraints    |
  * | `{k0: c0, k1: c1}`        | hash: ConstraintHashType of keyed conditions            |

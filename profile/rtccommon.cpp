@@ -36,29 +36,29 @@ void setRtcProperty(RtcProperties &properties, const QString &name, const QStrin
 
 const QStringList &rtcComponentTypes()
 {
-    static const QStringList values{QStringLiteral("STATIC"), QStringLiteral("UNIQUE"),
-                                    QStringLiteral("COMMUTATIVE")};
+    static const QStringList values {QStringLiteral("STATIC"), QStringLiteral("UNIQUE"),
+                                     QStringLiteral("COMMUTATIVE")};
     return values;
 }
 
 const QStringList &rtcActivityTypes()
 {
-    static const QStringList values{QStringLiteral("PERIODIC"), QStringLiteral("SPORADIC"),
-                                    QStringLiteral("EVENTDRIVEN")};
+    static const QStringList values {QStringLiteral("PERIODIC"), QStringLiteral("SPORADIC"),
+                                     QStringLiteral("EVENTDRIVEN")};
     return values;
 }
 
 const QStringList &rtcPositions()
 {
-    static const QStringList values{QStringLiteral("LEFT"), QStringLiteral("RIGHT"),
-                                    QStringLiteral("TOP"), QStringLiteral("BOTTOM")};
+    static const QStringList values {QStringLiteral("LEFT"), QStringLiteral("RIGHT"),
+                                     QStringLiteral("TOP"), QStringLiteral("BOTTOM")};
     return values;
 }
 
 const QStringList &rtcPortTypes()
 {
-    static const QStringList values{QStringLiteral("DataInPort"), QStringLiteral("DataOutPort"),
-                                    QStringLiteral("EventPort")};
+    static const QStringList values {QStringLiteral("DataInPort"), QStringLiteral("DataOutPort"),
+                                     QStringLiteral("EventPort")};
     return values;
 }
 
@@ -83,7 +83,7 @@ QString rtcPortTypeText(RtcPortType type)
 
 const QStringList &rtcDirections()
 {
-    static const QStringList values{QStringLiteral("Provided"), QStringLiteral("Required")};
+    static const QStringList values {QStringLiteral("Provided"), QStringLiteral("Required")};
     return values;
 }
 

@@ -15,7 +15,7 @@ struct OperatorName
 };
 
 // The schema's element names; note the odd `propertyIsNullType` wrapper.
-constexpr std::array<OperatorName, 12> operatorNames{{
+constexpr std::array<OperatorName, 12> operatorNames {{
     {RtcConstraintOperator::Not, "Not"},
     {RtcConstraintOperator::And, "And"},
     {RtcConstraintOperator::Or, "Or"},
@@ -118,8 +118,8 @@ RtcConstraint RtcConstraint::hash(std::vector<RtcConstraint> members)
 
 bool RtcConstraint::operator==(const RtcConstraint &other) const
 {
-    return std::tie(kind, members, key, op, literal, upperBoundary, matchCase, wildCard,
-                    singleChar, escapeChar, missing, extras, typeExtras, operatorExtras)
+    return std::tie(kind, members, key, op, literal, upperBoundary, matchCase, wildCard, singleChar,
+                    escapeChar, missing, extras, typeExtras, operatorExtras)
         == std::tie(other.kind, other.members, other.key, other.op, other.literal,
                     other.upperBoundary, other.matchCase, other.wildCard, other.singleChar,
                     other.escapeChar, other.missing, other.extras, other.typeExtras,

@@ -14,26 +14,26 @@ namespace Profile {
 /// Which of the three `rtc:constraint_type` choices an `rtc:Constraint` element holds.
 enum class RtcConstraintKind {
     Empty, ///< `<rtc:Constraint/>` without a choice (kept as it was)
-    Hash,  ///< `rtc:ConstraintHashType`: members with keys, `{k0: c0, k1: c1}`
-    List,  ///< `rtc:ConstraintListType`: per-element constraints of an array, `c0,c1`
-    Unit   ///< `rtc:ConstraintUnitType`: one condition, possibly combined with Not/And/Or
+    Hash, ///< `rtc:ConstraintHashType`: members with keys, `{k0: c0, k1: c1}`
+    List, ///< `rtc:ConstraintListType`: per-element constraints of an array, `c0,c1`
+    Unit ///< `rtc:ConstraintUnitType`: one condition, possibly combined with Not/And/Or
 };
 
 /// The condition inside an `rtc:ConstraintUnitType`.
 enum class RtcConstraintOperator {
-    None,                 ///< an empty ConstraintUnitType
-    Not,                  ///< `rtc:Not` → exactly one operand
-    And,                  ///< `rtc:And` → two or more operands
-    Or,                   ///< `rtc:Or` → two or more operands (an enumeration `(a,b,c)`)
-    IsNull,               ///< `rtc:propertyIsNullType/rtc:propertyIsNull`
-    EqualTo,              ///< `rtc:propertyIsEqualTo`
-    NotEqualTo,           ///< `rtc:propertyIsNotEqualTo`
-    LessThan,             ///< `rtc:propertyIsLessThan`
-    GreaterThan,          ///< `rtc:propertyIsGreaterThan`
-    LessThanOrEqualTo,    ///< `rtc:propertyIsLessThanOrEqualTo`
+    None, ///< an empty ConstraintUnitType
+    Not, ///< `rtc:Not` → exactly one operand
+    And, ///< `rtc:And` → two or more operands
+    Or, ///< `rtc:Or` → two or more operands (an enumeration `(a,b,c)`)
+    IsNull, ///< `rtc:propertyIsNullType/rtc:propertyIsNull`
+    EqualTo, ///< `rtc:propertyIsEqualTo`
+    NotEqualTo, ///< `rtc:propertyIsNotEqualTo`
+    LessThan, ///< `rtc:propertyIsLessThan`
+    GreaterThan, ///< `rtc:propertyIsGreaterThan`
+    LessThanOrEqualTo, ///< `rtc:propertyIsLessThanOrEqualTo`
     GreaterThanOrEqualTo, ///< `rtc:propertyIsGreaterThanOrEqualTo`
-    Like,                 ///< `rtc:propertyIsLike`
-    Between               ///< `rtc:propertyIsBetween`
+    Like, ///< `rtc:propertyIsLike`
+    Between ///< `rtc:propertyIsBetween`
 };
 
 /// The element name of an operator inside ConstraintUnitType (`propertyIsEqualTo`, `And` …);
@@ -68,13 +68,15 @@ struct RtcConstraint
     RtcConstraintOperator op = RtcConstraintOperator::None;
     /// `rtc:Literal` of a comparison or Like; LowerBoundary of Between; the text of propertyIsNull.
     QString literal;
-    QString upperBoundary;               ///< `rtc:UpperBoundary` of Between
-    std::optional<QString> matchCase;    ///< xs:boolean text; required on comparisons
-    std::optional<QString> wildCard;     ///< propertyIsLike
-    std::optional<QString> singleChar;   ///< propertyIsLike
-    std::optional<QString> escapeChar;   ///< propertyIsLike
+    QString upperBoundary; ///< `rtc:UpperBoundary` of Between
+    /// xs:boolean ("true"/"false"; other text as read); required on comparisons.
+    std::optional<QString> matchCase;
+    std::optional<QString> wildCard; ///< propertyIsLike
+    std::optional<QString> singleChar; ///< propertyIsLike
+    std::optional<QString> escapeChar; ///< propertyIsLike
 
-    /// Schema-required parts the source lacked (e.g. "matchCase", "Literal"); see RtcProfile::missing.
+    /// Schema-required parts the source lacked (e.g. "matchCase", "Literal"); see
+    /// RtcProfile::missing.
     QStringList missing;
     XmlExtras extras;
     XmlExtras typeExtras;

@@ -22,8 +22,8 @@ bool RtcEventDoc::operator==(const RtcEventDoc &other) const
 bool RtcEvent::operator==(const RtcEvent &other) const
 {
     return std::tie(name, condition, source, target, type, doc, missing, extras)
-        == std::tie(other.name, other.condition, other.source, other.target, other.type,
-                    other.doc, other.missing, other.extras);
+        == std::tie(other.name, other.condition, other.source, other.target, other.type, other.doc,
+                    other.missing, other.extras);
 }
 
 bool RtcDataPort::operator==(const RtcDataPort &other) const
@@ -47,8 +47,8 @@ bool RtcServiceInterfaceDoc::operator==(const RtcServiceInterfaceDoc &other) con
 
 bool RtcServiceInterface::operator==(const RtcServiceInterface &other) const
 {
-    return std::tie(name, direction, instanceName, idlFile, type, path, doc, variableName,
-                    comment, properties, missing, extras)
+    return std::tie(name, direction, instanceName, idlFile, type, path, doc, variableName, comment,
+                    properties, missing, extras)
         == std::tie(other.name, other.direction, other.instanceName, other.idlFile, other.type,
                     other.path, other.doc, other.variableName, other.comment, other.properties,
                     other.missing, other.extras);

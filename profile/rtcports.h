@@ -64,7 +64,7 @@ struct RtcDataPort
 {
     QString portType; ///< DataInPort | DataOutPort | EventPort (see rtcPortType())
     QString name;
-    QString type;     ///< data type, e.g. `RTC::TimedLong`
+    QString type; ///< data type, e.g. `RTC::TimedLong`
     std::optional<QString> idlFile;
     std::optional<QString> interfaceType;
     std::optional<QString> dataflowType;

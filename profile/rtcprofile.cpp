@@ -16,7 +16,7 @@ struct ActionName
     const char *key;
 };
 
-constexpr std::array<ActionName, RtcActionCount> actionNames{{
+constexpr std::array<ActionName, RtcActionCount> actionNames {{
     {RtcAction::OnInitialize, "OnInitialize", "onInitialize"},
     {RtcAction::OnFinalize, "OnFinalize", "onFinalize"},
     {RtcAction::OnStartup, "OnStartup", "onStartup"},
@@ -55,7 +55,7 @@ QString rtcActionKey(RtcAction action)
 const std::array<RtcAction, RtcActionCount> &rtcAllActions()
 {
     static const std::array<RtcAction, RtcActionCount> all = [] {
-        std::array<RtcAction, RtcActionCount> result{};
+        std::array<RtcAction, RtcActionCount> result {};
         for (std::size_t i = 0; i < result.size(); ++i)
             result[i] = actionNames[i].action;
         return result;
@@ -96,8 +96,8 @@ bool RtcBasicInfo::operator==(const RtcBasicInfo &other) const
         == std::tie(other.name, other.componentType, other.activityType, other.componentKind,
                     other.rtcType, other.category, other.description, other.executionRate,
                     other.executionType, other.maxInstances, other.vendor, other.version,
-                    other.abstractText, other.hardwareProfile, other.creationDate,
-                    other.updateDate, other.doc)
+                    other.abstractText, other.hardwareProfile, other.creationDate, other.updateDate,
+                    other.doc)
         && std::tie(versionUpLogs, properties, comment, saveProject, missing, extras)
         == std::tie(other.versionUpLogs, other.properties, other.comment, other.saveProject,
                     other.missing, other.extras);
@@ -148,8 +148,8 @@ bool RtcActions::operator==(const RtcActions &other) const
 bool RtcConfigurationDoc::operator==(const RtcConfigurationDoc &other) const
 {
     return std::tie(dataname, defaultValue, description, unit, range, constraint, extras)
-        == std::tie(other.dataname, other.defaultValue, other.description, other.unit,
-                    other.range, other.constraint, other.extras);
+        == std::tie(other.dataname, other.defaultValue, other.description, other.unit, other.range,
+                    other.constraint, other.extras);
 }
 
 std::optional<QString> RtcConfiguration::widget() const
@@ -162,8 +162,8 @@ bool RtcConfiguration::operator==(const RtcConfiguration &other) const
     return std::tie(name, type, defaultValue, unit, constraint, doc, variableName, comment,
                     properties, missing, extras)
         == std::tie(other.name, other.type, other.defaultValue, other.unit, other.constraint,
-                    other.doc, other.variableName, other.comment, other.properties,
-                    other.missing, other.extras);
+                    other.doc, other.variableName, other.comment, other.properties, other.missing,
+                    other.extras);
 }
 
 bool RtcLibrary::operator==(const RtcLibrary &o) const
@@ -200,12 +200,13 @@ std::optional<RtcComponentId> RtcComponentId::parse(const QString &id)
         if (part.isEmpty())
             return std::nullopt;
     }
-    return RtcComponentId{parts.at(1), parts.at(2), parts.at(3), parts.at(4)};
+    return RtcComponentId {parts.at(1), parts.at(2), parts.at(3), parts.at(4)};
 }
 
 QString RtcComponentId::toString() const
 {
-    return QStringList{QStringLiteral("RTC"), vendor, category, name, version}.join(QLatin1Char(':'));
+    return QStringList {QStringLiteral("RTC"), vendor, category, name, version}.join(
+        QLatin1Char(':'));
 }
 
 RtcProfile RtcProfile::createDefault()
@@ -237,7 +238,7 @@ RtcProfile RtcProfile::createDefault()
 
 QString RtcProfile::idFromBasicInfo() const
 {
-    return RtcComponentId{basicInfo.vendor, basicInfo.category, basicInfo.name, basicInfo.version}
+    return RtcComponentId {basicInfo.vendor, basicInfo.category, basicInfo.name, basicInfo.version}
         .toString();
 }
 
@@ -271,12 +272,12 @@ const RtcConfiguration *RtcProfile::configuration(const QString &name) const
 bool RtcProfile::operator==(const RtcProfile &other) const
 {
     return std::tie(id, version, basicInfo, actions, configurations, hasConfigurationSet,
-                    configurationSetExtras, dataPorts, servicePorts, parameters, language,
-                    missing, extras)
-        == std::tie(other.id, other.version, other.basicInfo, other.actions,
-                    other.configurations, other.hasConfigurationSet,
-                    other.configurationSetExtras, other.dataPorts, other.servicePorts,
-                    other.parameters, other.language, other.missing, other.extras);
+                    configurationSetExtras, dataPorts, servicePorts, parameters, language, missing,
+                    extras)
+        == std::tie(other.id, other.version, other.basicInfo, other.actions, other.configurations,
+                    other.hasConfigurationSet, other.configurationSetExtras, other.dataPorts,
+                    other.servicePorts, other.parameters, other.language, other.missing,
+                    other.extras);
 }
 
 } // namespace Profile

@@ -31,20 +31,20 @@ struct RtcBasicInfo
 {
     QString name;
     QString componentType; ///< STATIC | UNIQUE | COMMUTATIVE (rtcComponentTypes())
-    QString activityType;  ///< PERIODIC | SPORADIC | EVENTDRIVEN (rtcActivityTypes())
+    QString activityType; ///< PERIODIC | SPORADIC | EVENTDRIVEN (rtcActivityTypes())
     QString componentKind; ///< DataFlowComponent, FiniteStateMachineComponent …
     std::optional<QString> rtcType;
     QString category;
     std::optional<QString> description;
     std::optional<QString> executionRate; ///< xs:double text (Hz)
-    QString executionType;                ///< PeriodicExecutionContext, ExtTrigExecutionContext …
-    std::optional<QString> maxInstances;  ///< xs:integer text; 0 = unlimited
+    QString executionType; ///< PeriodicExecutionContext, ExtTrigExecutionContext …
+    std::optional<QString> maxInstances; ///< xs:integer text; 0 = unlimited
     QString vendor;
     QString version;
     std::optional<QString> abstractText; ///< `rtc:abstract`
     std::optional<QString> hardwareProfile;
     QString creationDate; ///< xs:dateTime text
-    QString updateDate;   ///< xs:dateTime text
+    QString updateDate; ///< xs:dateTime text
     std::optional<RtcBasicDoc> doc;
 
     // rtcExt:basic_info_ext
@@ -109,7 +109,8 @@ struct RtcActionDoc
 /// `rtc:OnXxx @implemented` (+ `rtcDoc:action_status_doc`).
 struct RtcActionStatus
 {
-    QString implemented = QStringLiteral("false"); ///< xs:boolean text as read (true|false|1|0)
+    /// xs:boolean: readers turn 1/0 into true/false and keep any other text as it was.
+    QString implemented = QStringLiteral("false");
     std::optional<RtcActionDoc> doc;
 
     RtcMissing missing;
@@ -132,7 +133,10 @@ struct RtcActions
     XmlExtras extras;
     SourceLocation location;
 
-    std::optional<RtcActionStatus> &operator[](RtcAction action) { return status[std::size_t(action)]; }
+    std::optional<RtcActionStatus> &operator[](RtcAction action)
+    {
+        return status[std::size_t(action)];
+    }
     const std::optional<RtcActionStatus> &operator[](RtcAction action) const
     {
         return status[std::size_t(action)];
@@ -282,7 +286,7 @@ struct RtcProfile
     /// The RTC Profile version this project writes.
     static inline const QString CurrentVersion = QStringLiteral("0.3");
 
-    QString id;      ///< `RTC:vendor:category:name:version`
+    QString id; ///< `RTC:vendor:category:name:version`
     /// The format version the file was read in ("0.3" current, "0.2", older "0.1"/"1.0"); the
     /// writers always write CurrentVersion.
     QString version;

@@ -22,8 +22,7 @@ class Findings
 public:
     explicit Findings(const QString &fileName)
         : m_fileName(fileName)
-    {
-    }
+    { }
 
     void add(Diagnostic::Severity severity, const SourceLocation &at, const QString &object,
              const QString &message)
@@ -60,8 +59,7 @@ public:
     UniqueNames(Findings &findings, const QString &what)
         : m_findings(findings)
         , m_what(what)
-    {
-    }
+    { }
 
     void check(const QString &name, const SourceLocation &at, const QString &object)
     {
@@ -73,11 +71,10 @@ public:
             return;
         }
         m_findings.error(at, object,
-                         previous->isValid()
-                             ? tr("duplicate %1 '%2' (first used at line %3)")
-                                   .arg(m_what, name)
-                                   .arg(previous->line)
-                             : tr("duplicate %1 '%2'").arg(m_what, name));
+                         previous->isValid() ? tr("duplicate %1 '%2' (first used at line %3)")
+                                                   .arg(m_what, name)
+                                                   .arg(previous->line)
+                                             : tr("duplicate %1 '%2'").arg(m_what, name));
     }
 
 private:
@@ -95,8 +92,9 @@ void checkName(Findings &f, const QString &name, const SourceLocation &at, const
         return;
     }
     if (!allowed.match(name).hasMatch()) {
-        f.error(at, object,
-                tr("the %1 '%2' may only contain letters, digits, '_', '-' and ':'").arg(what, name));
+        f.error(
+            at, object,
+            tr("the %1 '%2' may only contain letters, digits, '_', '-' and ':'").arg(what, name));
     }
 }
 
@@ -106,10 +104,10 @@ void checkEnum(Findings &f, const QString &value, const QStringList &allowed,
     if (allowed.contains(value))
         return;
     f.error(at, object,
-            value.isEmpty()
-                ? tr("the %1 is empty (expected one of %2)").arg(what, allowed.join(QLatin1String(", ")))
-                : tr("unknown %1 '%2' (expected one of %3)")
-                      .arg(what, value, allowed.join(QLatin1String(", "))));
+            value.isEmpty() ? tr("the %1 is empty (expected one of %2)")
+                                  .arg(what, allowed.join(QLatin1String(", ")))
+                            : tr("unknown %1 '%2' (expected one of %3)")
+                                  .arg(what, value, allowed.join(QLatin1String(", "))));
 }
 
 void checkBasicInfo(Findings &f, const RtcProfile &profile)
@@ -141,8 +139,9 @@ void checkId(Findings &f, const RtcProfile &profile)
     const QString object = tr("profile id");
     const auto id = RtcComponentId::parse(profile.id);
     if (!id) {
-        f.error(profile.location, object,
-                tr("malformed id '%1' (expected RTC:vendor:category:name:version)").arg(profile.id));
+        f.error(
+            profile.location, object,
+            tr("malformed id '%1' (expected RTC:vendor:category:name:version)").arg(profile.id));
         return;
     }
     if (profile.id != profile.idFromBasicInfo()) {

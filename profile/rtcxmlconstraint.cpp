@@ -62,7 +62,8 @@ void readOperator(const XmlNode &node, RtcConstraint &c, const ReadContext &cont
         break;
     default:
         c.literal = requiredText(reader, Literal, c.missing, context);
-        c.matchCase = reader.attribute(Ns::Rtc, QStringLiteral("matchCase"));
+        if (const auto matchCase = reader.attribute(Ns::Rtc, QStringLiteral("matchCase")))
+            c.matchCase = normalizedBoolean(*matchCase);
         break;
     }
     c.operatorExtras = reader.extras();
@@ -124,11 +125,9 @@ XmlNode operatorToXml(const RtcConstraint &c)
         addRequiredText(node, Upper, c.upperBoundary, c.missing);
         break;
     default:
-        if (c.matchCase) {
-            const auto value = parseBoolean(*c.matchCase);
+        if (c.matchCase)
             node.setAttribute(Ns::Rtc, QStringLiteral("matchCase"),
-                              value ? booleanText(*value) : *c.matchCase);
-        }
+                              normalizedBoolean(*c.matchCase));
         addRequiredText(node, Literal, c.literal, c.missing);
         break;
     }
@@ -163,6 +162,12 @@ QString simpleText(const XmlNode &node, const ReadContext &context)
                 .arg(node.name)));
     }
     return node.text;
+}
+
+QString normalizedBoolean(const QString &value)
+{
+    const auto parsed = parseBoolean(value);
+    return parsed ? booleanText(*parsed) : value;
 }
 
 QString normalizedPosition(const QString &value)
@@ -240,9 +245,9 @@ XmlNode constraintToXml(const RtcConstraint &c)
     XmlNode node(Ns::Rtc, Constraint);
     node.prefix = Ns::preferredPrefix(Ns::Rtc);
     if (c.kind != RtcConstraintKind::Empty) {
-        static const QString typeNames[] = {QString(), QStringLiteral("ConstraintHashType"),
-                                            QStringLiteral("ConstraintListType"),
-                                            QStringLiteral("ConstraintUnitType")};
+        static const QString typeNames[]
+            = {QString(), QStringLiteral("ConstraintHashType"),
+               QStringLiteral("ConstraintListType"), QStringLiteral("ConstraintUnitType")};
         XmlNode &type = node.addChild(Ns::Rtc, typeNames[int(c.kind)]);
         if (c.kind == RtcConstraintKind::Unit) {
             type.setAttribute(Ns::Rtc, QStringLiteral("key"), c.key);

@@ -23,6 +23,8 @@ QString requiredAttribute(NodeReader &reader, const QString &ns, const QString &
 void reportMissingChild(const NodeReader &reader, const QString &name, RtcMissing &missing);
 /// The text of a simple-content element; warns when it carries attributes or children.
 QString simpleText(const XmlNode &node, const ReadContext &context);
+/// An xs:boolean as "true"/"false" when it is one (1 and 0 included); other text as it is.
+QString normalizedBoolean(const QString &value);
 /// An `rtcExt:position` value in the schema's upper case when it is one of the known ones.
 QString normalizedPosition(const QString &value);
 

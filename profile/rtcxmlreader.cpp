@@ -27,8 +27,7 @@ class Reader
 public:
     explicit Reader(const ReadContext &context)
         : m_context(context)
-    {
-    }
+    { }
 
     RtcProfile profile(const XmlNode &root) const;
 
@@ -193,7 +192,7 @@ RtcActionStatus Reader::actionStatus(const XmlNode &node) const
     NodeReader r = reader(node);
     RtcActionStatus a;
     a.location = node.location;
-    a.implemented = requiredAttribute(r, Ns::Rtc, s("implemented"), a.missing);
+    a.implemented = normalizedBoolean(requiredAttribute(r, Ns::Rtc, s("implemented"), a.missing));
     readOptional(r, Ns::RtcDoc, s("Doc"), a.doc, [this](const XmlNode &n) {
         NodeReader dr = reader(n);
         RtcActionDoc d;
@@ -480,11 +479,11 @@ std::optional<RtcProfile> readRtcXml(const QByteArray &data, const QString &file
         return std::nullopt;
     const QString problem = rootProblem(*root);
     if (!problem.isEmpty()) {
-        sink->append(Diagnostic::error(fileName, root->location.line, root->location.column,
-                                       problem));
+        sink->append(
+            Diagnostic::error(fileName, root->location.line, root->location.column, problem));
         return std::nullopt;
     }
-    return Reader(ReadContext{fileName, sink}).profile(*root);
+    return Reader(ReadContext {fileName, sink}).profile(*root);
 }
 
 } // namespace Profile

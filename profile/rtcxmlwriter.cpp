@@ -35,8 +35,7 @@ void addProperties(XmlNode &node, const RtcProperties &properties)
         node.addChild(propertyToXml(property));
 }
 
-template<typename T>
-void addOptional(XmlNode &node, const std::optional<T> &value)
+template<typename T> void addOptional(XmlNode &node, const std::optional<T> &value)
 {
     if (value)
         node.addChild(toXml(*value));
@@ -46,12 +45,6 @@ void addTexts(XmlNode &node, const QString &ns, const QString &name, const QStri
 {
     for (const QString &text : texts)
         node.addChild(textElement(ns, name, text));
-}
-
-QString booleanOrRaw(const QString &text)
-{
-    const auto value = parseBoolean(text);
-    return value ? booleanText(*value) : text;
 }
 
 } // namespace
@@ -111,7 +104,7 @@ XmlNode toXml(const RtcActionDoc &d)
 XmlNode toXml(RtcAction action, const RtcActionStatus &a)
 {
     XmlNode node = typedElement(rtcActionElementName(action), Ns::RtcDoc, "action_status_doc");
-    setRequired(node, Ns::Rtc, s("implemented"), booleanOrRaw(a.implemented), a.missing);
+    setRequired(node, Ns::Rtc, s("implemented"), normalizedBoolean(a.implemented), a.missing);
     addOptional(node, a.doc);
     a.extras.applyTo(node);
     return node;
@@ -348,8 +341,8 @@ XmlNode rtcProfileToXml(const RtcProfile &profile)
     setRequired(root, Ns::Rtc, s("id"), profile.id, profile.missing);
     // Saving upgrades the file to the current format, as RTC Builder does.
     root.setAttribute(Ns::Rtc, s("version"), RtcProfile::CurrentVersion);
-    const bool basicInfoAbsent = profile.missing.contains(s("BasicInfo"))
-        && profile.basicInfo == RtcBasicInfo();
+    const bool basicInfoAbsent
+        = profile.missing.contains(s("BasicInfo")) && profile.basicInfo == RtcBasicInfo();
     if (!basicInfoAbsent)
         root.addChild(toXml(profile.basicInfo));
     if (!profile.missing.contains(s("Actions")) || profile.actions != RtcActions())

@@ -109,9 +109,9 @@ struct Value
     std::vector<std::pair<QString, Value>> entries;
     std::vector<Value> items;
 
-    static Value string(const QString &text);  ///< quoted when it would read as non-string
-    static Value plain(const QString &text);   ///< numbers and booleans as they are
-    static Value number(const QString &text);  ///< plain when numeric, else quoted
+    static Value string(const QString &text); ///< quoted when it would read as non-string
+    static Value plain(const QString &text); ///< numbers and booleans as they are
+    static Value number(const QString &text); ///< plain when numeric, else quoted
     static Value boolean(const QString &text); ///< plain true/false when boolean, else quoted
     static Value sequence(std::vector<Value> items = {});
     static Value stringList(const QStringList &texts);

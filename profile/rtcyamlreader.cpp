@@ -20,8 +20,7 @@ QString tr(const char *text)
 
 /// How many schema children the XML writer gives the element of `value` (which has no extras
 /// yet): unknown YAML keys kept as elements go after them.
-template<typename... T>
-int schemaChildren(const T &...value)
+template<typename... T> int schemaChildren(const T &...value)
 {
     return int(RtcXml::toXml(value...).children.size());
 }
@@ -32,8 +31,7 @@ class Reader
 public:
     explicit Reader(Context &context)
         : m_context(context)
-    {
-    }
+    { }
 
     RtcProfile profile(const YAML::Node &node);
 
@@ -95,7 +93,8 @@ QString Reader::date(MapReader &m, const char *key, RtcMissing &missing)
     const auto node = m.take({key});
     if (!node || node->IsNull()) {
         missing.append(QLatin1String(key));
-        m_context.warn(m.node().Mark(), tr("the required key '%1' is missing").arg(QLatin1String(key)));
+        m_context.warn(m.node().Mark(),
+                       tr("the required key '%1' is missing").arg(QLatin1String(key)));
         return {};
     }
     return readDate(*node, m_context).value_or(QString());
@@ -194,7 +193,8 @@ RtcActionStatus Reader::actionStatus(const YAML::Node &node)
     RtcActionStatus a;
     a.location = m.location();
     // EMF leaves out attributes at their default, so a missing `implemented` means false.
-    a.implemented = m.scalar({"implemented"}).value_or(QStringLiteral("false"));
+    a.implemented
+        = RtcXml::normalizedBoolean(m.scalar({"implemented"}).value_or(QStringLiteral("false")));
     doc(m, a.doc, [](MapReader &d, RtcActionDoc &r) {
         r.description = d.scalar({"description"});
         r.preCondition = d.scalar({"preCondition"});
@@ -211,8 +211,8 @@ void Reader::configurationSet(const YAML::Node &node, RtcProfile &profile)
     for (const YAML::Node &item : m.list({"configuration"}))
         profile.configurations.append(configuration(item));
     profile.hasConfigurationSet = profile.configurations.isEmpty();
-    profile.configurationSetExtras =
-        m.extras(int(RtcXml::configurationSetToXml(profile).children.size()));
+    profile.configurationSetExtras
+        = m.extras(int(RtcXml::configurationSetToXml(profile).children.size()));
 }
 
 RtcConfiguration Reader::configuration(const YAML::Node &node)
@@ -253,7 +253,8 @@ RtcDataPort Reader::dataPort(const YAML::Node &node)
     p.dataflowType = m.scalar({"dataflowType"});
     p.subscriptionType = m.scalar({"subscriptionType", "subscriprionType"});
     p.unit = m.scalar({"unit"});
-    p.position = RtcXml::normalizedPosition(m.required({"rtcExt::position", "position"}, p.missing));
+    p.position
+        = RtcXml::normalizedPosition(m.required({"rtcExt::position", "position"}, p.missing));
     p.variableName = m.scalar({"rtcExt::variableName", "variableName", "varname"});
     p.comment = m.scalar({"rtcExt::comment", "comment"});
     p.constraint = constraint(m, 0);
@@ -301,7 +302,8 @@ RtcServicePort Reader::servicePort(const YAML::Node &node)
     RtcServicePort p;
     p.location = m.location();
     p.name = m.required({"name"}, p.missing);
-    p.position = RtcXml::normalizedPosition(m.required({"rtcExt::position", "position"}, p.missing));
+    p.position
+        = RtcXml::normalizedPosition(m.required({"rtcExt::position", "position"}, p.missing));
     p.comment = m.scalar({"rtcExt::comment", "comment"});
     for (const YAML::Node &item : m.list({"serviceInterface", "serviceInterfaces"}))
         p.interfaces.append(serviceInterface(item));
@@ -469,7 +471,8 @@ void Reader::readOperator(const YAML::Node &node, RtcConstraint &c, int depth)
     default:
         c.literal = m.required({"literal"}, c.missing, "Literal");
         // EMF leaves out attributes at their default: no matchCase means false.
-        c.matchCase = m.scalar({"matchCase"}).value_or(QStringLiteral("false"));
+        c.matchCase
+            = RtcXml::normalizedBoolean(m.scalar({"matchCase"}).value_or(QStringLiteral("false")));
         break;
     }
     RtcConstraint bare = c;
@@ -510,7 +513,8 @@ std::optional<YAML::Node> parse(const QByteArray &data, Context &context)
     } catch (const YAML::Exception &e) {
         context.error(e.mark, tr("YAML syntax error: %1").arg(fromStd(e.msg)));
     } catch (const std::exception &e) {
-        context.error(YAML::Mark::null_mark(), tr("cannot read the YAML text: %1").arg(QString::fromLocal8Bit(e.what())));
+        context.error(YAML::Mark::null_mark(),
+                      tr("cannot read the YAML text: %1").arg(QString::fromLocal8Bit(e.what())));
     }
     return std::nullopt;
 }
@@ -527,8 +531,9 @@ std::optional<RtcProfile> readRtcYaml(const QByteArray &data, const QString &fil
     if (!document)
         return std::nullopt;
     if (!document->IsMap() || !(*document)["rtcProfile"]) {
-        context.error(document->Mark(), tr("not an RTC Profile: expected a top-level "
-                                           "'rtcProfile:' mapping"));
+        // An empty document has no position; the problem is then at its start.
+        const YAML::Mark mark = document->Mark().is_null() ? YAML::Mark() : document->Mark();
+        context.error(mark, tr("not an RTC Profile: expected a top-level 'rtcProfile:' mapping"));
         return std::nullopt;
     }
     try {

@@ -159,14 +159,14 @@ QString localKey(const QString &key)
 
 bool looksTyped(const QString &text)
 {
-    static const QRegularExpression number(
-        QStringLiteral(R"(^[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?$|^0x[0-9a-fA-F]+$|^[-+]?\.(inf|Inf|INF)$|^\.(nan|NaN|NAN)$)"));
+    static const QRegularExpression number(QStringLiteral(
+        R"(^[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?$|^0x[0-9a-fA-F]+$|^[-+]?\.(inf|Inf|INF)$|^\.(nan|NaN|NAN)$)"));
     static const QRegularExpression date(QStringLiteral(R"(^[0-9]{4}-[0-9]{1,2}-[0-9]{1,2})"));
-    static const QStringList words{QStringLiteral("true"), QStringLiteral("false"),
-                                   QStringLiteral("yes"),  QStringLiteral("no"),
-                                   QStringLiteral("on"),   QStringLiteral("off"),
-                                   QStringLiteral("null"), QStringLiteral("~"),
-                                   QStringLiteral("y"),    QStringLiteral("n")};
+    static const QStringList words {QStringLiteral("true"), QStringLiteral("false"),
+                                    QStringLiteral("yes"),  QStringLiteral("no"),
+                                    QStringLiteral("on"),   QStringLiteral("off"),
+                                    QStringLiteral("null"), QStringLiteral("~"),
+                                    QStringLiteral("y"),    QStringLiteral("n")};
     return number.match(text).hasMatch() || date.match(text).hasMatch()
         || words.contains(text.toLower());
 }
@@ -237,8 +237,7 @@ std::string toStd(const QString &text)
 Context::Context(const QString &fileName, Diagnostics *diagnostics)
     : m_fileName(fileName)
     , m_diagnostics(diagnostics)
-{
-}
+{ }
 
 void Context::error(const YAML::Mark &mark, const QString &message)
 {
@@ -262,7 +261,7 @@ SourceLocation locationOf(const YAML::Node &node)
     const YAML::Mark mark = node.Mark();
     if (mark.is_null())
         return {};
-    return SourceLocation{mark.line + 1, mark.column + 1};
+    return SourceLocation {mark.line + 1, mark.column + 1};
 }
 
 MapReader::MapReader(const YAML::Node &node, Context &context)
@@ -280,7 +279,7 @@ MapReader::MapReader(const YAML::Node &node, Context &context)
             context.error(entry.first.Mark(), tr("a mapping key must be a plain value"));
             continue;
         }
-        m_entries.push_back(Entry{fromStd(entry.first.Scalar()), entry.second, false});
+        m_entries.push_back(Entry {fromStd(entry.first.Scalar()), entry.second, false});
     }
 }
 
@@ -310,8 +309,9 @@ std::optional<QString> MapReader::scalar(std::initializer_list<const char *> key
     if (!value || value->IsNull())
         return std::nullopt;
     if (!value->IsScalar()) {
-        m_context.error(value->Mark(), tr("'%1' should be a single value, not a list or mapping")
-                                           .arg(QLatin1String(*keys.begin())));
+        m_context.error(value->Mark(),
+                        tr("'%1' should be a single value, not a list or mapping")
+                            .arg(QLatin1String(*keys.begin())));
         return std::nullopt;
     }
     return fromStd(value->Scalar());
@@ -322,8 +322,8 @@ QString MapReader::required(std::initializer_list<const char *> keys, RtcMissing
 {
     if (auto value = scalar(keys))
         return *value;
-    const QString name = schemaName ? QLatin1String(schemaName)
-                                    : localKey(QLatin1String(*keys.begin()));
+    const QString name
+        = schemaName ? QLatin1String(schemaName) : localKey(QLatin1String(*keys.begin()));
     missing.append(name);
     m_context.warn(m_node.Mark(), tr("the required key '%1' is missing").arg(name));
     return {};
@@ -337,8 +337,9 @@ std::optional<YAML::Node> MapReader::map(std::initializer_list<const char *> key
     if (value->IsNull())
         return YAML::Node(YAML::NodeType::Map);
     if (!value->IsMap()) {
-        m_context.error(value->Mark(), tr("'%1' should be a mapping (key: value lines)")
-                                           .arg(QLatin1String(*keys.begin())));
+        m_context.error(
+            value->Mark(),
+            tr("'%1' should be a mapping (key: value lines)").arg(QLatin1String(*keys.begin())));
         return std::nullopt;
     }
     return value;
@@ -368,8 +369,8 @@ QStringList MapReader::scalarList(std::initializer_list<const char *> keys)
     if (value->IsScalar())
         return {fromStd(value->Scalar())};
     if (!value->IsSequence()) {
-        m_context.error(value->Mark(), tr("'%1' should be a list of values")
-                                           .arg(QLatin1String(*keys.begin())));
+        m_context.error(value->Mark(),
+                        tr("'%1' should be a list of values").arg(QLatin1String(*keys.begin())));
         return result;
     }
     for (const YAML::Node &item : *value) {
@@ -392,16 +393,16 @@ XmlExtras MapReader::extras(int schemaChildCount) const
             continue;
         if (entry.value.IsScalar() || entry.value.IsNull()) {
             const auto [ns, name] = nameOfKey(entry.key);
-            extras.attributes.append(XmlAttribute{
-                ns, Ns::preferredPrefix(ns), name,
-                entry.value.IsNull() ? QString() : fromStd(entry.value.Scalar())});
+            extras.attributes.append(
+                XmlAttribute {ns, Ns::preferredPrefix(ns), name,
+                              entry.value.IsNull() ? QString() : fromStd(entry.value.Scalar())});
         } else {
             appendElements(elements, entry.key, entry.value, 1, m_context);
         }
     }
     int position = schemaChildCount;
     for (XmlNode &element : elements)
-        extras.children.push_back(XmlExtras::Child{position++, std::move(element)});
+        extras.children.push_back(XmlExtras::Child {position++, std::move(element)});
     return extras;
 }
 
@@ -484,8 +485,9 @@ std::optional<QString> readDate(const YAML::Node &node, Context &context)
         if (auto text = dateFromMap(node))
             return text;
     }
-    context.error(node.Mark(), tr("expected a date: xs:dateTime text or a mapping with year, "
-                                  "month, day, hour, minute, second"));
+    context.error(node.Mark(),
+                  tr("expected a date: xs:dateTime text or a mapping with year, "
+                     "month, day, hour, minute, second"));
     return std::nullopt;
 }
 
@@ -514,7 +516,8 @@ Value dateValue(const QString &text)
     if (match.hasCaptured(8)) {
         const QString zone = match.captured(8);
         const int minutes = zone.mid(1, 2).toInt() * 60 + zone.mid(4, 2).toInt();
-        const QString value = QString::number(zone.startsWith(QLatin1Char('-')) ? -minutes : minutes);
+        const QString value
+            = QString::number(zone.startsWith(QLatin1Char('-')) ? -minutes : minutes);
         map.set(QStringLiteral("timezone"), Value::plain(value));
         check["timezone"] = toStd(value);
     }

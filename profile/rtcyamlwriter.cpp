@@ -61,8 +61,8 @@ Value operatorValue(const RtcConstraint &c)
     Value v;
     switch (c.op) {
     case RtcConstraintOperator::Not:
-        v.set(s("constraint"), c.members.size() == 1 ? constraintValue(c.members.front())
-                                                     : membersValue(c.members));
+        v.set(s("constraint"),
+              c.members.size() == 1 ? constraintValue(c.members.front()) : membersValue(c.members));
         break;
     case RtcConstraintOperator::And:
     case RtcConstraintOperator::Or:
@@ -113,8 +113,8 @@ Value constraintValue(const RtcConstraint &c)
     }
     if (c.kind != RtcConstraintKind::Empty) {
         type.addExtras(c.typeExtras);
-        static const char *names[] = {"", "constraintHashType", "constraintListType",
-                                      "constraintUnitType"};
+        static const char *names[]
+            = {"", "constraintHashType", "constraintListType", "constraintUnitType"};
         v.set(s(names[int(c.kind)]), type);
     }
     v.addExtras(c.extras);
