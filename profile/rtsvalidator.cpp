@@ -220,6 +220,19 @@ private:
         }
     }
 
+    /// The RT System Editor's offline list offers `overerite` for the buffer-full policies.
+    void checkConnectorProperties(const RtsPortConnector &c, const QString &object)
+    {
+        for (const RtsProperty &p : c.properties) {
+            if (p.name.endsWith(QLatin1String("full_policy"))
+                && p.value == QLatin1String("overerite")) {
+                warning(p.location, object,
+                        tr("'%1': 'overerite' (RT System Editor's typo) means 'overwrite'")
+                            .arg(p.name));
+            }
+        }
+    }
+
     void checkConnectorCommon(const RtsPortConnector &c, QSet<QString> &ids)
     {
         const QString object = tr("connector %1").arg(c.name);
@@ -230,6 +243,7 @@ private:
         checkConnectorEnd(c.source, object);
         checkConnectorEnd(c.target, object);
         checkBoolean(c.location, object, "visible", c.visible);
+        checkConnectorProperties(c, object);
     }
 
     void checkConnectors()

@@ -126,16 +126,18 @@ void TestRtsValidator::reportsEachProblem_data()
     QTest::newRow("unknown port") << 23 << false << "has no port 'A0.nothing'";
     QTest::newRow("unknown component") << 24 << true << "'Nobody' names no component";
     QTest::newRow("push interval") << 21 << true << "push interval 'often'";
+    QTest::newRow("policy typo") << 25 << false
+                                 << "'overerite' (RT System Editor's typo) means 'overwrite'";
     QTest::newRow("duplicate connector")
-        << 26 << true << "connector id 'dup' is used more than once";
-    QTest::newRow("end id") << 28 << false << "'RTC:V:c:X:1.0' of 'B0' differs";
-    QTest::newRow("sequence") << 31 << true << "sequence 'first'";
-    QTest::newRow("execution context") << 32 << false << "no execution context '9'";
-    QTest::newRow("wait time") << 33 << true << "wait time 'soon'";
-    QTest::newRow("timeout") << 34 << true << "timeout '1.5'";
-    QTest::newRow("sending timing") << 34 << false << "unknown sending timing 'LATER'";
-    QTest::newRow("preceding component") << 35 << true << "'Ghost0' names no component";
-    QTest::newRow("both conditions") << 31 << false << "both a wait time and preceding";
+        << 27 << true << "connector id 'dup' is used more than once";
+    QTest::newRow("end id") << 29 << false << "'RTC:V:c:X:1.0' of 'B0' differs";
+    QTest::newRow("sequence") << 32 << true << "sequence 'first'";
+    QTest::newRow("execution context") << 33 << false << "no execution context '9'";
+    QTest::newRow("wait time") << 34 << true << "wait time 'soon'";
+    QTest::newRow("timeout") << 35 << true << "timeout '1.5'";
+    QTest::newRow("sending timing") << 35 << false << "unknown sending timing 'LATER'";
+    QTest::newRow("preceding component") << 36 << true << "'Ghost0' names no component";
+    QTest::newRow("both conditions") << 32 << false << "both a wait time and preceding";
 }
 
 void TestRtsValidator::reportsEachProblem()
@@ -163,7 +165,7 @@ void TestRtsValidator::reportsNothingElse()
 {
     const QString name = QStringLiteral("rts/invalid.xml");
     const Diagnostics diagnostics = validateRtsProfile(load(name), name);
-    QCOMPARE(diagnostics.size(), 22); // the rows of reportsEachProblem_data()
+    QCOMPARE(diagnostics.size(), 23); // the rows of reportsEachProblem_data()
 }
 
 void TestRtsValidator::checksPortsOnlyWhenListed()
