@@ -36,8 +36,11 @@ QString editorText(const QWidget *editor)
 void setInvalidLook(QWidget *editor, bool invalid)
 {
     QPalette palette = editor->parentWidget()->palette();
-    if (invalid)
+    if (invalid) {
+        // Line edits and editable combos paint Base; non-editable combos paint Button.
         palette.setColor(QPalette::Base, QColor(255, 228, 225));
+        palette.setColor(QPalette::Button, QColor(255, 228, 225));
+    }
     editor->setPalette(palette);
 }
 
@@ -143,6 +146,7 @@ void BasicPage::buildForm()
                 true);
     addLineEdit(execution, Field::ExecutionRate, tr("Execution &rate (Hz):"), tr("(not set)"));
     contentLayout->addStretch(1);
+    alignLabels({component, behaviour, execution});
 
     auto *scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -151,6 +155,23 @@ void BasicPage::buildForm()
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(scroll);
+}
+
+void BasicPage::alignLabels(const QList<QFormLayout *> &forms)
+{
+    // Each group has its own form; equal label widths line the fields up across the groups.
+    QList<QWidget *> labels;
+    int width = 0;
+    for (QFormLayout *form : forms) {
+        for (int row = 0; row < form->rowCount(); ++row) {
+            if (QLayoutItem *item = form->itemAt(row, QFormLayout::LabelRole)) {
+                labels << item->widget();
+                width = qMax(width, item->widget()->sizeHint().width());
+            }
+        }
+    }
+    for (QWidget *label : labels)
+        label->setMinimumWidth(width);
 }
 
 QFormLayout *BasicPage::addSection(const QString &title)

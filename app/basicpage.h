@@ -48,6 +48,7 @@ private:
 
     void buildForm();
     QFormLayout *addSection(const QString &title);
+    void alignLabels(const QList<QFormLayout *> &forms);
     void addLineEdit(QFormLayout *form, RtcDocument::BasicField field, const QString &label,
                      const QString &placeholder);
     void addComboBox(QFormLayout *form, RtcDocument::BasicField field, const QString &label,

@@ -20,7 +20,14 @@ Perspective::Perspective(Id id, const QString &title, QWidget *parent)
 {
     m_emptyHint->setAlignment(Qt::AlignCenter);
     m_emptyHint->setWordWrap(true);
-    m_emptyHint->setEnabled(false); // drawn greyed, as a hint rather than content
+    m_emptyHint->setMargin(24);
+    // Drawn in the placeholder colour: a hint, not content, yet easy to read.
+    QPalette hintPalette = m_emptyHint->palette();
+    hintPalette.setColor(QPalette::WindowText, hintPalette.color(QPalette::PlaceholderText));
+    m_emptyHint->setPalette(hintPalette);
+    QFont hintFont = m_emptyHint->font();
+    hintFont.setPointSizeF(hintFont.pointSizeF() * 1.15);
+    m_emptyHint->setFont(hintFont);
     m_tabs->setDocumentMode(true);
     m_tabs->setTabsClosable(true);
     m_tabs->setMovable(true);
