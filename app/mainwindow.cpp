@@ -405,8 +405,10 @@ void MainWindow::updateActions()
 
 void MainWindow::fillRecentFilesMenu()
 {
-    m_recentMenu->clear();
+    // Reading the list may prune it, which announces a change and refills the menu from within;
+    // clearing only afterwards keeps the entries from appearing twice.
     const QStringList files = m_controller->recentFiles()->files();
+    m_recentMenu->clear();
     for (int i = 0; i < files.size(); ++i) {
         const QString path = files.at(i);
         // Numbered accelerators 1–9 make the first entries quick to pick from the keyboard.

@@ -454,6 +454,7 @@ void TestMainWindow::recentFilesMenuReopensAndPrunes()
             keptEntry = entry;
     }
     QVERIFY(!entries.contains(gone));
+    QCOMPARE(entries.count(kept), 1);
     QVERIFY(keptEntry);
     keptEntry->trigger();
     QCOMPARE(m_window->documents()->documents().size(), 1);
