@@ -144,6 +144,17 @@ QAction *MainWindow::addAction(const QString &objectName, const QString &text,
 
 void MainWindow::createActions()
 {
+    createFileActions();
+    createEditActions();
+    createPerspectiveActions();
+    QAction *about
+        = addAction(QStringLiteral("actionAbout"), tr("&About RT Studio"), QStringLiteral("about"));
+    about->setMenuRole(QAction::AboutRole);
+    connect(about, &QAction::triggered, this, [this] { m_prompts->showAbout(); });
+}
+
+void MainWindow::createFileActions()
+{
     QAction *newComponent = addAction(QStringLiteral("actionNewComponent"), tr("New &Component"),
                                       QStringLiteral("new-component"), QKeySequence::New);
     newComponent->setToolTip(tr("Create a new RT-Component profile in the Builder"));
@@ -160,29 +171,33 @@ void MainWindow::createActions()
     open->setToolTip(tr("Open an RTC or RTS profile (XML or YAML)"));
     connect(open, &QAction::triggered, m_controller, &DocumentController::openWithDialog);
 
-    QAction *save = addAction(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("save"),
-                              QKeySequence::Save);
-    connect(save, &QAction::triggered, this, [this] {
-        if (Document *document = activeDocument())
-            m_controller->save(document);
-    });
-    QAction *saveAs = addAction(QStringLiteral("actionSaveAs"), tr("Save &As…"),
-                                QStringLiteral("save-as"), QKeySequence::SaveAs);
-    connect(saveAs, &QAction::triggered, this, [this] {
-        if (Document *document = activeDocument())
-            m_controller->saveAs(document);
-    });
-    QAction *close = addAction(QStringLiteral("actionClose"), tr("&Close"), QStringLiteral("close"),
-                               QKeySequence::Close);
-    connect(close, &QAction::triggered, this, [this] {
-        if (Document *document = activeDocument())
-            m_controller->close(document);
-    });
+    addDocumentAction(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("save"),
+                      QKeySequence::Save, &DocumentController::save);
+    addDocumentAction(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("save-as"),
+                      QKeySequence::SaveAs, &DocumentController::saveAs);
+    addDocumentAction(QStringLiteral("actionClose"), tr("&Close"), QStringLiteral("close"),
+                      QKeySequence::Close, &DocumentController::close);
+
     QAction *quit = addAction(QStringLiteral("actionQuit"), tr("&Quit"), QStringLiteral("quit"),
                               QKeySequence::Quit);
     quit->setMenuRole(QAction::QuitRole);
     connect(quit, &QAction::triggered, this, &QWidget::close);
+}
 
+void MainWindow::addDocumentAction(const QString &objectName, const QString &text,
+                                   const QString &iconName, const QKeySequence &shortcut,
+                                   bool (DocumentController::*operation)(Document *))
+{
+    QAction *action = addAction(objectName, text, iconName, shortcut);
+    connect(action, &QAction::triggered, this, [this, operation] {
+        if (Document *document = activeDocument())
+            (m_controller->*operation)(document);
+    });
+}
+
+void MainWindow::createEditActions()
+{
+    // The group's actions follow the active stack: enabled state and "Undo <what>" text.
     QAction *undo = m_undoGroup->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("actionUndo"));
     undo->setIcon(icon(QStringLiteral("undo")));
@@ -191,12 +206,10 @@ void MainWindow::createActions()
     redo->setObjectName(QStringLiteral("actionRedo"));
     redo->setIcon(icon(QStringLiteral("redo")));
     redo->setShortcut(QKeySequence::Redo);
+}
 
-    QAction *about
-        = addAction(QStringLiteral("actionAbout"), tr("&About RT Studio"), QStringLiteral("about"));
-    about->setMenuRole(QAction::AboutRole);
-    connect(about, &QAction::triggered, this, [this] { m_prompts->showAbout(); });
-
+void MainWindow::createPerspectiveActions()
+{
     m_perspectiveActions = new QActionGroup(this);
     const std::pair<Perspective *, QString> perspectives[] = {
         {m_builder, QStringLiteral("actionPerspectiveBuilder")},

@@ -65,6 +65,12 @@ private:
     QAction *addAction(const QString &objectName, const QString &text, const QString &icon,
                        const QKeySequence &shortcut = {});
     void createActions();
+    void createFileActions();
+    void addDocumentAction(const QString &objectName, const QString &text, const QString &icon,
+                           const QKeySequence &shortcut,
+                           bool (DocumentController::*operation)(Document *));
+    void createEditActions();
+    void createPerspectiveActions();
     void createMenus();
     void createToolBar();
     void createPerspectives();
