@@ -11,11 +11,13 @@
 #include "userprompts.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
 #include <QFile>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMimeData>
 #include <QSettings>
 #include <QTabBar>
 #include <QTabWidget>
@@ -106,6 +108,7 @@ private slots:
     void recentFilesMenuReopensAndPrunes();
     void restoresPerspectiveAndGeometry();
     void aboutGoesThroughPrompts();
+    void opensDroppedFiles();
 
 private:
     QAction *action(const char *name) const;
@@ -481,6 +484,22 @@ void TestMainWindow::aboutGoesThroughPrompts()
 {
     action("actionAbout")->trigger();
     QCOMPARE(m_prompts->aboutShown, 1);
+}
+
+void TestMainWindow::opensDroppedFiles()
+{
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(dataPath(QStringLiteral("system.xml"))),
+                  QUrl::fromLocalFile(dataPath(QStringLiteral("component.yaml")))});
+    const QPoint centre = m_window->rect().center();
+    QDragEnterEvent enter(centre, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(m_window.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(centre, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(m_window.get(), &drop);
+    QCOMPARE(m_window->perspective(Id::SystemEditor)->documents().size(), 1);
+    QCOMPARE(m_window->perspective(Id::Builder)->documents().size(), 1);
+    QCOMPARE(m_window->activeDocument()->displayName(), QStringLiteral("component.yaml"));
 }
 
 QTEST_MAIN(TestMainWindow)
