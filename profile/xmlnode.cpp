@@ -344,14 +344,16 @@ void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
                const QHash<QString, QString> &prefixes, bool isRoot,
                const QList<QPair<QString, QString>> &declarations)
 {
-    if (node.namespaceUri.isEmpty())
-        writer.writeStartElement(node.name);
-    else
-        writer.writeStartElement(node.namespaceUri, node.name);
+    // Declared before the start tag, the prefixes go onto the root element itself; declared
+    // after it, the writer would first invent a prefix of its own for the root's namespace.
     if (isRoot) {
         for (const auto &d : declarations)
             writer.writeNamespace(d.first, d.second);
     }
+    if (node.namespaceUri.isEmpty())
+        writer.writeStartElement(node.name);
+    else
+        writer.writeStartElement(node.namespaceUri, node.name);
     if (!node.xsiTypeName.isEmpty()) {
         const QString prefix = prefixes.value(node.xsiTypeNamespace);
         writer.writeAttribute(Ns::Xsi, QStringLiteral("type"),

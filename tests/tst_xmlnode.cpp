@@ -71,7 +71,8 @@ void TestXmlNode::roundTripsThroughSerialisation()
     future.text = QStringLiteral("kept");
 
     const QByteArray text = serializeXml(root);
-    QVERIFY(text.contains("xmlns:rts=\"http://www.openrtp.org/namespaces/rts\""));
+    QVERIFY(text.contains("<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\""));
+    QVERIFY(!text.contains("xmlns:n1"));
     QVERIFY(text.contains("xsi:type=\"rtsExt:component_ext\""));
     QVERIFY(text.contains("xmlns:fut=\"urn:future\""));
     Diagnostics diagnostics;
