@@ -7,6 +7,7 @@
 #include <QFileDialog>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -34,12 +35,25 @@ class TestAppDialogPrompts : public QObject
     Q_OBJECT
 
 private slots:
+    void initTestCase();
     void saveChangesButtons_data();
     void saveChangesButtons();
     void saveFileNameGetsFormatExtension_data();
     void saveFileNameGetsFormatExtension();
     void problemsShowDiagnosticsAsDetails();
+
+private:
+    QTemporaryDir m_settingsDir;
 };
+
+void TestAppDialogPrompts::initTestCase()
+{
+    // QFileDialog remembers its state in the user's settings; keep that out of the real ones.
+    QVERIFY(m_settingsDir.isValid());
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_settingsDir.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    QApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
+}
 
 void TestAppDialogPrompts::saveChangesButtons_data()
 {
@@ -85,7 +99,6 @@ void TestAppDialogPrompts::saveFileNameGetsFormatExtension()
     QTemporaryDir dir;
     QWidget parent;
     DialogPrompts prompts(&parent);
-    QApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
     whenModal([&](QWidget *modal) {
         auto *dialog = qobject_cast<QFileDialog *>(modal);
         QVERIFY(dialog);
