@@ -252,20 +252,28 @@ void BasicPage::refresh(RtcDocument::BasicField field)
         if (line->text() != value)
             line->setText(value);
     } else {
+        // Equal text means the user is typing here: touching the combo would break the inline
+        // completion's selection.
         auto *combo = static_cast<QComboBox *>(row.editor);
-        int index = combo->findText(value);
-        // A value outside the list is shown as it is, never replaced by a list entry.
-        if (index < 0 && !combo->isEditable()) {
-            combo->addItem(value);
-            index = combo->count() - 1;
-        }
-        if (index >= 0)
-            combo->setCurrentIndex(index);
-        if (combo->isEditable() && combo->currentText() != value)
-            combo->setEditText(value);
+        if (combo->currentText() != value)
+            showInComboBox(combo, value);
     }
     m_updating = false;
     showProblem(field, problemFor(field, editorText(row.editor)));
+}
+
+void BasicPage::showInComboBox(QComboBox *combo, const QString &value)
+{
+    int index = combo->findText(value);
+    // A value outside the list is shown as it is, never replaced by a list entry.
+    if (index < 0 && !combo->isEditable()) {
+        combo->addItem(value);
+        index = combo->count() - 1;
+    }
+    if (index >= 0)
+        combo->setCurrentIndex(index);
+    else
+        combo->setEditText(value);
 }
 
 void BasicPage::refreshAll()

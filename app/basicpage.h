@@ -58,6 +58,7 @@ private:
 
     void userEdited(RtcDocument::BasicField field, const QString &text);
     void refresh(RtcDocument::BasicField field);
+    void showInComboBox(QComboBox *combo, const QString &value);
     void refreshAll();
     void refreshHeader();
     void showProblem(RtcDocument::BasicField field, const QString &text);

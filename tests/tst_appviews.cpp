@@ -51,6 +51,7 @@ private slots:
     void nameCharsetIsMarkedInline();
     void numbersAreCheckedInline();
     void choosingAComboEntryPushesCommand();
+    void typingIntoEditableComboKeepsTyping();
     void unknownEnumValueIsShownNotReplaced();
     void clearingOptionalFieldRemovesIt();
     void systemInfoEditsTheId();
@@ -162,6 +163,30 @@ void TestAppViews::choosingAComboEntryPushesCommand()
     document.undoStack()->undo();
     QCOMPARE(activity->currentText(), QStringLiteral("PERIODIC"));
     QCOMPARE(category->currentText(), QStringLiteral("Category"));
+}
+
+void TestAppViews::typingIntoEditableComboKeepsTyping()
+{
+    RtcDocument document(Profile::RtcProfile::createDefault());
+    BasicPage page(&document);
+    page.show();
+    QVERIFY(QTest::qWaitForWindowActive(&page));
+    QComboBox *category = comboBox(page, Field::Category);
+    QLineEdit *edit = category->lineEdit();
+    QVERIFY(edit);
+    edit->setFocus();
+    QTRY_VERIFY(edit->hasFocus()); // the completer works on the focused field only
+    edit->selectAll();
+    // "M" and "My" are prefixes the preset list may complete inline; typing goes on regardless.
+    QTest::keyClicks(edit, QStringLiteral("MyCat"));
+    QCOMPARE(edit->text(), QStringLiteral("MyCat"));
+    QCOMPARE(document.basicField(Field::Category), QStringLiteral("MyCat"));
+    QCOMPARE(document.undoStack()->count(), 1);
+
+    edit->selectAll();
+    QTest::keyClicks(edit, QStringLiteral("Vehicle"));
+    QCOMPARE(document.basicField(Field::Category), QStringLiteral("Vehicle"));
+    QCOMPARE(category->currentIndex(), category->findText(QStringLiteral("Vehicle")));
 }
 
 void TestAppViews::unknownEnumValueIsShownNotReplaced()
