@@ -10,6 +10,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QSet>
 #include <QTest>
 
 using namespace Profile;
@@ -37,6 +38,45 @@ QString errorsOf(const Diagnostics &diagnostics)
             lines << d.toString();
     }
     return lines.join(QLatin1Char('\n'));
+}
+
+/// Every element and attribute name the RTC Profile schemas (0.3 and 0.2) declare.
+QSet<QString> schemaNames()
+{
+    QSet<QString> names;
+    const QDir dir(conformanceDir(QStringLiteral("xsd")));
+    for (const QString &file : dir.entryList({QStringLiteral("*RtcProfile_*.xsd")})) {
+        const auto schema = parseXml(readFile(dir.filePath(file)), file, nullptr);
+        if (!schema)
+            continue;
+        std::vector<const XmlNode *> stack {&*schema};
+        while (!stack.empty()) {
+            const XmlNode *node = stack.back();
+            stack.pop_back();
+            if (node->name == QLatin1String("element") || node->name == QLatin1String("attribute"))
+                names.insert(node->attribute(QString(), QStringLiteral("name"))
+                                 ? node->attribute(QString(), QStringLiteral("name"))->value
+                                 : QString());
+            for (const XmlNode &child : node->children)
+                stack.push_back(&child);
+        }
+    }
+    return names;
+}
+
+/// Names in `node` (recursively) that no schema declares: content the reader did not map.
+QStringList unmappedNames(const XmlNode &node, const QSet<QString> &known)
+{
+    QStringList result;
+    if (!known.contains(node.name))
+        result << node.name;
+    for (const XmlAttribute &a : node.attributes) {
+        if (!known.contains(a.name))
+            result << a.name;
+    }
+    for (const XmlNode &child : node.children)
+        result << unmappedNames(child, known);
+    return result;
 }
 
 /// Only the legacy spellings listed in formats.md (and found in the files) are forgiven.
@@ -180,6 +220,15 @@ void TestRtcConformance::yamlFiles()
         = reload(readRtcXml(xml, QStringLiteral("saved.xml"), &xmlDiagnostics), first->version);
     QVERIFY2(fromXml, qPrintable(errorsOf(xmlDiagnostics) + QLatin1Char('\n') + xml));
     QVERIFY2(*fromXml == *first, xml.constData());
+
+    // Every key of RTC Builder's dialect is understood; only the old per-language element of
+    // the EMF sample (`java: library: …`) has no place in the schema and rides along as extras.
+    const QSet<QString> known = schemaNames();
+    QVERIFY(known.contains(QStringLiteral("occerrence")));
+    QStringList unmapped = unmappedNames(rtcProfileToXml(*first), known);
+    unmapped.removeAll(QStringLiteral("java"));
+    unmapped.removeAll(QStringLiteral("library"));
+    QVERIFY2(unmapped.isEmpty(), qPrintable(unmapped.join(QLatin1String(", "))));
 }
 
 void TestRtcConformance::constraintStrings_data()

@@ -70,6 +70,8 @@ private slots:
     void writesDefaultProfile();
     void reportsBrokenFiles_data();
     void reportsBrokenFiles();
+    void rejectsDeepNesting_data();
+    void rejectsDeepNesting();
 };
 
 void TestRtcYaml::readsDialectKeys()
@@ -268,6 +270,29 @@ void TestRtcYaml::reportsBrokenFiles()
     QCOMPARE(first.line, line);
     QVERIFY(first.column > 0);
     QVERIFY2(first.message.contains(message), qPrintable(first.message));
+}
+
+void TestRtcYaml::rejectsDeepNesting_data()
+{
+    QTest::addColumn<int>("depth");
+    QTest::newRow("deeper than the reader follows") << 300;
+    QTest::newRow("deeper than yaml-cpp parses") << 5000;
+}
+
+void TestRtcYaml::rejectsDeepNesting()
+{
+    QFETCH(int, depth);
+    const QByteArray yaml = "rtcProfile:\n  id: \"RTC:V:C:N:1.0\"\n  futureKey: "
+        + QByteArray(depth, '[') + QByteArray(depth, ']') + "\n";
+    Diagnostics diagnostics;
+    QVERIFY(!readRtcYaml(yaml, QStringLiteral("deep.yaml"), &diagnostics));
+    QVERIFY(hasErrors(diagnostics));
+    for (const Diagnostic &d : diagnostics) {
+        if (d.severity == Diagnostic::Severity::Error) {
+            QCOMPARE(d.line, 3);
+            break;
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TestRtcYaml)
