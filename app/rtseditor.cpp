@@ -44,9 +44,9 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
 
     m_splitter->addWidget(m_outlineView);
     m_splitter->addWidget(scroll);
-    m_splitter->setStretchFactor(0, 1);
-    m_splitter->setStretchFactor(1, 2);
-    m_splitter->setSizes({320, 640});
+    m_splitter->setStretchFactor(0, 2);
+    m_splitter->setStretchFactor(1, 3);
+    m_splitter->setSizes({460, 740});
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

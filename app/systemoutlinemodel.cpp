@@ -157,7 +157,8 @@ void SystemOutlineModel::addComponents()
         Node item(NodeKind::Component);
         item.name = component.instanceName;
         item.details = component.id;
-        item.toolTip = component.pathUri;
+        // The id is often cut off in the details column; the tool tip shows it whole.
+        item.toolTip = component.id + QLatin1Char('\n') + component.pathUri;
         item.instanceName = component.instanceName;
         const int componentNode = addNode(groupNode, item);
         for (const Profile::RtsPort &port : component.dataPorts) {

@@ -82,7 +82,9 @@ void TestAppSystemOutline::listsComponentsWithPorts()
     QCOMPARE(kindOf(filter), Kind::Component);
     QCOMPARE(text(model, filter), QStringLiteral("RangeFilter0"));
     QCOMPARE(text(model, filter, 1), QStringLiteral("RTC:ExampleVendor:Sensor:RangeFilter:2.1.0"));
-    QCOMPARE(filter.data(Qt::ToolTipRole).toString(), QStringLiteral("localhost/RangeFilter0.rtc"));
+    QCOMPARE(
+        filter.data(Qt::ToolTipRole).toString(),
+        QStringLiteral("RTC:ExampleVendor:Sensor:RangeFilter:2.1.0\nlocalhost/RangeFilter0.rtc"));
     QCOMPARE(filter.data(SystemOutlineModel::InstanceNameRole).toString(),
              QStringLiteral("RangeFilter0"));
     QVERIFY(!filter.data(Qt::DecorationRole).value<QIcon>().isNull());
