@@ -87,7 +87,7 @@ void TestRtcYaml::readsDialectKeys()
     QVERIFY(p.actions.isImplemented(RtcAction::OnInitialize));
     QVERIFY(p.actions.isImplemented(RtcAction::OnExecute));
     QCOMPARE(p.actions[RtcAction::OnExecute]->doc->description, QStringLiteral("exec"));
-    // An action key without value is listed but not implemented (EMF leaves out defaults).
+    // An action key without a value is listed with implemented false (EMF leaves out defaults).
     QVERIFY(p.actions[RtcAction::OnFinalize]);
     QCOMPARE(p.actions[RtcAction::OnFinalize]->implemented, QStringLiteral("false"));
     QVERIFY(!p.actions[RtcAction::OnStartup]);
