@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <algorithm>
+#include <unordered_map>
 #include <QHash>
 #include <QStringDecoder>
 #include <QXmlStreamReader>
@@ -158,6 +159,33 @@ private:
     std::vector<QHash<QString, QString>> m_scopes;
 };
 
+/// Element and attribute names, namespace URIs and short values repeat thousands of times in a
+/// large system file; sharing one QString per distinct text saves most of the parser's allocations.
+class StringPool
+{
+public:
+    QString intern(QStringView text)
+    {
+        if (text.size() > MaxInternedLength)
+            return text.toString();
+        const auto found = m_strings.find(text);
+        if (found != m_strings.end())
+            return found->second;
+        QString owned = text.toString();
+        // The key views the value's characters, which stay put when the QString is moved.
+        const QStringView key(owned);
+        return m_strings.emplace(key, std::move(owned)).first->second;
+    }
+
+private:
+    static constexpr qsizetype MaxInternedLength = 64;
+    struct Hash
+    {
+        std::size_t operator()(QStringView view) const { return qHash(view); }
+    };
+    std::unordered_map<QStringView, QString, Hash> m_strings;
+};
+
 class Parser
 {
 public:
@@ -228,9 +256,9 @@ private:
             return false;
         }
         m_scopes.push(m_reader.namespaceDeclarations());
-        node.namespaceUri = m_reader.namespaceUri().toString();
-        node.prefix = m_reader.prefix().toString();
-        node.name = m_reader.name().toString();
+        node.namespaceUri = m_pool.intern(m_reader.namespaceUri());
+        node.prefix = m_pool.intern(m_reader.prefix());
+        node.name = m_pool.intern(m_reader.name());
         node.location = startTagLocation();
         const QXmlStreamAttributes attributes = m_reader.attributes();
         node.attributes.reserve(attributes.size());
@@ -243,8 +271,9 @@ private:
                 node.xsiTypeName = colon < 0 ? value : value.mid(colon + 1);
                 continue;
             }
-            node.attributes.append(XmlAttribute{a.namespaceUri().toString(), a.prefix().toString(),
-                                                a.name().toString(), a.value().toString()});
+            node.attributes.append(XmlAttribute{m_pool.intern(a.namespaceUri()),
+                                                m_pool.intern(a.prefix()), m_pool.intern(a.name()),
+                                                m_pool.intern(a.value())});
         }
         QString text;
         while (!m_reader.atEnd()) {
@@ -256,6 +285,9 @@ private:
                 break;
             }
             case QXmlStreamReader::Characters:
+                // Indentation between child elements carries nothing; skip it cheaply.
+                if (!node.children.empty() && m_reader.isWhitespace())
+                    break;
                 text += m_reader.text();
                 break;
             case QXmlStreamReader::EndElement:
@@ -307,6 +339,7 @@ private:
     Diagnostics *m_diagnostics;
     XmlLimits m_limits;
     PrefixScopes m_scopes;
+    StringPool m_pool;
 };
 
 void collectNamespaces(const XmlNode &node, QList<QPair<QString, QString>> &out)
