@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "profileio.h"
 #include "namespaces.h"
+#include "xmlnode.h"
 #include "rtcxml.h"
 #include "rtcyaml.h"
 #include "rtsxml.h"
@@ -51,6 +52,28 @@ ProfileKind kindOfYamlTopKey(const QByteArray &data)
     return match.captured(1) == QLatin1String("rtcProfile") ? ProfileKind::Rtc : ProfileKind::Rts;
 }
 
+/// Says why a file is neither profile kind: its syntax error where it has one, else what its root
+/// element is.
+void reportUnknownKind(const QByteArray &data, FileFormat format, const QString &fileName,
+                       Diagnostics *found)
+{
+    const QString expected = tr("expected an rtc:RtcProfile or rts:RtsProfile root element, or a "
+                                "top-level rtcProfile: or rtsProfile: key");
+    if (format == FileFormat::Yaml) {
+        found->append(Diagnostic::error(fileName, 1, 1,
+                                        tr("not an RTC Profile or RTS Profile (%1)").arg(expected)));
+        return;
+    }
+    const auto root = parseXml(data, fileName, found);
+    if (!root)
+        return;
+    found->append(Diagnostic::error(
+        fileName, root->location.line, root->location.column,
+        tr("the root element <%1> (namespace \"%2\") is not an RTC Profile or RTS Profile (%3)")
+            .arg(root->prefix.isEmpty() ? root->name : root->prefix + QLatin1Char(':') + root->name,
+                 root->namespaceUri, expected)));
+}
+
 } // namespace
 
 FileFormat formatForFileName(const QString &path)
@@ -94,16 +117,7 @@ std::optional<LoadedProfile> loadProfileData(const QByteArray &data, const QStri
         loaded.rts = xml ? readRtsXml(data, fileName, &found) : readRtsYaml(data, fileName, &found);
         break;
     case ProfileKind::Unknown:
-        // Let the reader of the format say what is wrong where it can (syntax errors with a
-        // position); a well-formed file of another kind gets a plain message.
-        if (xml)
-            readRtcXml(data, fileName, &found);
-        if (!hasErrors(found)) {
-            found.append(Diagnostic::error(
-                fileName, 1, 1,
-                tr("not an RTC Profile or RTS Profile (expected an rtc:RtcProfile or "
-                   "rts:RtsProfile root element, or a top-level rtcProfile:/rtsProfile: key)")));
-        }
+        reportUnknownKind(data, loaded.format, fileName, &found);
         break;
     }
     const bool ok = (loaded.rtc || loaded.rts) && !hasErrors(found);

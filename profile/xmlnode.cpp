@@ -307,7 +307,7 @@ private:
     SourceLocation startTagLocation() const
     {
         if (m_lineStarts.empty())
-            return SourceLocation{int(m_reader.lineNumber()), int(m_reader.columnNumber())};
+            return SourceLocation{int(m_reader.lineNumber()), int(m_reader.columnNumber()) + 1};
         const qsizetype end = qMin<qsizetype>(m_reader.characterOffset(), m_text.size());
         const qsizetype lt = m_text.lastIndexOf(QLatin1Char('<'), qMax<qsizetype>(end - 1, 0));
         const qsizetype offset = lt < 0 ? end : lt;
@@ -327,8 +327,9 @@ private:
     void fail(const QString &message)
     {
         if (m_diagnostics) {
+            // The reader counts columns from 0 at the start of a line; people count from 1.
             m_diagnostics->append(Diagnostic::error(m_fileName, int(m_reader.lineNumber()),
-                                                    int(m_reader.columnNumber()), message));
+                                                    int(m_reader.columnNumber()) + 1, message));
         }
     }
 

@@ -116,11 +116,11 @@ void TestRtctl::checkReportsProblemsWithPositions_data()
     QTest::newRow("missing file") << data(QStringLiteral("cli/does-not-exist.xml"))
                                   << data(QStringLiteral("cli/does-not-exist.xml: error: no such file"));
     QTest::newRow("truncated") << data(QStringLiteral("cli/truncated.xml"))
-                               << data(QStringLiteral("cli/truncated.xml:4:"));
+                               << data(QStringLiteral("cli/truncated.xml:5:1: error:"));
     QTest::newRow("duplicate instance") << data(QStringLiteral("cli/duplicate-instance.xml"))
                                         << data(QStringLiteral("cli/duplicate-instance.xml:6:"));
     QTest::newRow("not a profile") << data(QStringLiteral("cli/not-a-profile.xml"))
-                                   << data(QStringLiteral("cli/not-a-profile.xml:1:1: error:"));
+                                   << data(QStringLiteral("cli/not-a-profile.xml:2:1: error: the root element <project>"));
 }
 
 void TestRtctl::checkReportsProblemsWithPositions()
