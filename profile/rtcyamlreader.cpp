@@ -25,6 +25,27 @@ template<typename... T> int schemaChildren(const T &...value)
     return int(RtcXml::toXml(value...).children.size());
 }
 
+/// Records a required part the mapping lacks (under its XML name) and warns about it.
+void missingKey(const MapReader &m, const char *key, const QString &schemaName, RtcMissing &missing)
+{
+    missing.append(schemaName);
+    m.context().warn(m.node().Mark(),
+                     tr("the required key '%1' is missing").arg(QLatin1String(key)));
+}
+
+/// Top-level keys beside `rtcProfile:` have no place in the model; say so instead of dropping
+/// them silently.
+void warnAboutOtherTopLevelKeys(const YAML::Node &document, Context &context)
+{
+    for (const auto &entry : document) {
+        if (entry.first.IsScalar() && entry.first.Scalar() != "rtcProfile") {
+            context.warn(entry.first.Mark(),
+                         tr("the top-level key '%1' is not part of an RTC Profile and is not kept")
+                             .arg(fromStd(entry.first.Scalar())));
+        }
+    }
+}
+
 /// Reads RTC Builder's YAML, one function per model struct.
 class Reader
 {
@@ -110,11 +131,11 @@ RtcProfile Reader::profile(const YAML::Node &node)
     if (const auto info = m.map({"basicInfo"}))
         p.basicInfo = basicInfo(*info);
     else
-        p.missing.append(QStringLiteral("BasicInfo"));
+        missingKey(m, "basicInfo", QStringLiteral("BasicInfo"), p.missing);
     if (const auto actionsNode = m.map({"actions"}))
         p.actions = actions(*actionsNode);
     else
-        p.missing.append(QStringLiteral("Actions"));
+        missingKey(m, "actions", QStringLiteral("Actions"), p.missing);
     if (const auto set = m.map({"configurationSet"}))
         configurationSet(*set, p);
     for (const YAML::Node &item : m.list({"dataPorts"}))
@@ -537,6 +558,7 @@ std::optional<RtcProfile> readRtcYaml(const QByteArray &data, const QString &fil
         return std::nullopt;
     }
     try {
+        warnAboutOtherTopLevelKeys(*document, context);
         RtcProfile profile = Reader(context).profile((*document)["rtcProfile"]);
         if (context.failed())
             return std::nullopt;

@@ -68,6 +68,7 @@ private slots:
     void writesDialect();
     void xmlThroughYamlKeepsEverything();
     void writesDefaultProfile();
+    void warnsAboutMissingAndForeignKeys();
     void reportsBrokenFiles_data();
     void reportsBrokenFiles();
     void rejectsDeepNesting_data();
@@ -232,6 +233,27 @@ void TestRtcYaml::writesDefaultProfile()
     const RtcProfile p = RtcProfile::createDefault();
     const RtcProfile back = loadYaml(writeRtcYaml(p));
     QVERIFY(back == p);
+}
+
+void TestRtcYaml::warnsAboutMissingAndForeignKeys()
+{
+    const QByteArray yaml = "---\n"
+                            "rtcProfile:\n"
+                            "  id: \"RTC:V:C:N:1.0.0\"\n"
+                            "  version: \"0.3\"\n"
+                            "otherTool:\n"
+                            "  setting: 1\n";
+    Diagnostics diagnostics;
+    const auto profile = readRtcYaml(yaml, QStringLiteral("t.yaml"), &diagnostics);
+    QVERIFY(profile);
+    QVERIFY(!hasErrors(diagnostics));
+    QCOMPARE(profile->missing,
+             QStringList({QStringLiteral("BasicInfo"), QStringLiteral("Actions")}));
+    QCOMPARE(diagnostics.size(), 3);
+    QCOMPARE(diagnostics.at(0).line, 5);
+    QVERIFY(diagnostics.at(0).message.contains(QStringLiteral("otherTool")));
+    QCOMPARE(diagnostics.at(1).line, 3);
+    QVERIFY(diagnostics.at(1).message.contains(QStringLiteral("basicInfo")));
 }
 
 void TestRtcYaml::reportsBrokenFiles_data()
