@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "diagnostic.h"
+#include "idlmodel.h"
+
+#include <QStringList>
+
+namespace Codegen {
+
+/// The IDL types the RTC Builder offers: every `.idl` file directly in a set of folders (the OpenRTM
+/// IDL set, the project's idl/, user folders) parsed into one model. The folders are also the include
+/// search path. Files are read in folder order, then by name, so results do not depend on the disk.
+class IdlTypeLibrary
+{
+public:
+    explicit IdlTypeLibrary(const QStringList &directories = {});
+
+    /// Sets the folders and reloads.
+    void setDirectories(const QStringList &directories);
+    QStringList directories() const { return m_directories; }
+
+    /// Parses every `.idl` file again (after files were added, changed or removed).
+    void reload();
+
+    /// Structs usable as data port types, sorted by scoped name; "Timed" ones are flagged.
+    QList<IdlDataType> dataTypes() const { return m_model.dataTypes(); }
+    /// Interfaces usable as service port types (defined ones), sorted by scoped name.
+    QList<IdlInterface> interfaces() const { return m_model.definedInterfaces(); }
+    /// The file that declares `scopedName`, or an empty string.
+    QString fileOf(const QString &scopedName) const;
+
+    const IdlModel &model() const { return m_model; }
+    const Profile::Diagnostics &diagnostics() const { return m_diagnostics; }
+
+private:
+    QStringList m_directories;
+    IdlModel m_model;
+    Profile::Diagnostics m_diagnostics;
+};
+
+} // namespace Codegen
