@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+#include "componentproxy.h"
+
+#include "corbacall.h"
+#include "rtcconversion.h"
+
+namespace Corba {
+
+using namespace Internal;
+
+namespace {
+
+RTC::RTObject_ptr component(const QString &ior, const QString &path)
+{
+    CORBA::Object_var object = toObject(ior, path);
+    return RTC::RTObject::_unchecked_narrow(object.in());
+}
+
+SDOPackage::Configuration_ptr configuration(const QString &ior, const QString &path)
+{
+    RTC::RTObject_var rtc = component(ior, path);
+    return call(path, [&] { return rtc->get_configuration(); });
+}
+
+// The context at rtshell's index: owned contexts first, then participating ones.
+RTC::ExecutionContext_ptr context(RTC::RTObject_ptr rtc, int index, const QString &path)
+{
+    return call(path, [&] {
+        RTC::ExecutionContextList_var owned = rtc->get_owned_contexts();
+        RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
+        const int ownedCount = int(owned->length());
+        if (index >= 0 && index < ownedCount)
+            return RTC::ExecutionContext::_duplicate(owned[CORBA::ULong(index)]);
+        if (index >= ownedCount && index < ownedCount + int(participating->length()))
+            return RTC::ExecutionContext::_duplicate(participating[CORBA::ULong(index - ownedCount)]);
+        throw Error(Error::Kind::NotFound,
+                    QStringLiteral("%1: no execution context with index %2").arg(path).arg(index));
+    });
+}
+
+ExecutionContextInfo contextInfo(RTC::RTObject_ptr rtc, RTC::ExecutionContext_ptr ec, bool owned)
+{
+    ExecutionContextInfo info;
+    info.owned = owned;
+    info.handle = int(rtc->get_context_handle(ec));
+    info.kind = executionKindName(ec->get_kind());
+    info.rate = ec->get_rate();
+    info.running = ec->is_running();
+    info.state = toLifeCycleState(ec->get_component_state(rtc));
+    info.ior = toIor(ec);
+    return info;
+}
+
+} // namespace
+
+ComponentProxy::ComponentProxy(QString ior, QString path)
+    : m_ior(std::move(ior))
+    , m_path(std::move(path))
+{
+}
+
+ComponentInfo ComponentProxy::profile() const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    return call(m_path, [&] {
+        RTC::ComponentProfile_var profile = rtc->get_component_profile();
+        return toComponentInfo(profile.in());
+    });
+}
+
+std::vector<PortInfo> ComponentProxy::ports() const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    return call(m_path, [&] {
+        std::vector<PortInfo> ports;
+        RTC::PortServiceList_var list = rtc->get_ports();
+        for (CORBA::ULong i = 0; i < list->length(); ++i) {
+            RTC::PortProfile_var profile = list[i]->get_port_profile();
+            ports.push_back(toPortInfo(profile.in()));
+        }
+        return ports;
+    });
+}
+
+PortInfo ComponentProxy::port(const QString &name) const
+{
+    for (PortInfo &port : ports()) {
+        if (port.name == name || port.shortName() == name)
+            return port;
+    }
+    throw Error(Error::Kind::NotFound, QStringLiteral("%1: no port named '%2'").arg(m_path, name));
+}
+
+std::vector<ExecutionContextInfo> ComponentProxy::executionContexts() const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    return call(m_path, [&] {
+        std::vector<ExecutionContextInfo> contexts;
+        RTC::ExecutionContextList_var owned = rtc->get_owned_contexts();
+        for (CORBA::ULong i = 0; i < owned->length(); ++i)
+            contexts.push_back(contextInfo(rtc.in(), owned[i].in(), true));
+        RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
+        for (CORBA::ULong i = 0; i < participating->length(); ++i)
+            contexts.push_back(contextInfo(rtc.in(), participating[i].in(), false));
+        return contexts;
+    });
+}
+
+LifeCycleState ComponentProxy::state(int ecIndex) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
+    return call(m_path, [&] { return toLifeCycleState(ec->get_component_state(rtc.in())); });
+}
+
+void ComponentProxy::activate(int ecIndex) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
+    checkReturnCode(call(m_path, [&] { return int(ec->activate_component(rtc.in())); }), m_path,
+                    QStringLiteral("activate"));
+}
+
+void ComponentProxy::deactivate(int ecIndex) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
+    checkReturnCode(call(m_path, [&] { return int(ec->deactivate_component(rtc.in())); }), m_path,
+                    QStringLiteral("deactivate"));
+}
+
+void ComponentProxy::reset(int ecIndex) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
+    checkReturnCode(call(m_path, [&] { return int(ec->reset_component(rtc.in())); }), m_path,
+                    QStringLiteral("reset"));
+}
+
+void ComponentProxy::exit() const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    checkReturnCode(call(m_path, [&] { return int(rtc->exit()); }), m_path, QStringLiteral("exit"));
+}
+
+void ComponentProxy::startContext(int ecIndex) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
+    checkReturnCode(call(m_path, [&] { return int(ec->start()); }), m_path, QStringLiteral("start"));
+}
+
+void ComponentProxy::stopContext(int ecIndex) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
+    checkReturnCode(call(m_path, [&] { return int(ec->stop()); }), m_path, QStringLiteral("stop"));
+}
+
+void ComponentProxy::setRate(double rate, int ecIndex) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
+    checkReturnCode(call(m_path, [&] { return int(ec->set_rate(rate)); }), m_path,
+                    QStringLiteral("set_rate"));
+}
+
+std::vector<ConfigurationSet> ComponentProxy::configurationSets() const
+{
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    return call(m_path, [&] {
+        SDOPackage::ConfigurationSetList_var sets = conf->get_configuration_sets();
+        std::vector<ConfigurationSet> result;
+        for (CORBA::ULong i = 0; i < sets->length(); ++i)
+            result.push_back(toConfigurationSet(sets[i]));
+        return result;
+    });
+}
+
+QString ComponentProxy::activeConfigurationSet() const
+{
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    return call(m_path, [&] {
+        SDOPackage::ConfigurationSet_var set = conf->get_active_configuration_set();
+        return toQString(set->id.in());
+    });
+}
+
+ConfigurationSet ComponentProxy::configurationSet(const QString &id) const
+{
+    for (ConfigurationSet &set : configurationSets()) {
+        if (set.id == id)
+            return set;
+    }
+    throw Error(Error::Kind::NotFound,
+                QStringLiteral("%1: no configuration set '%2'").arg(m_path, id));
+}
+
+void ComponentProxy::addConfigurationSet(const ConfigurationSet &set) const
+{
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    const bool ok = call(m_path, [&] { return conf->add_configuration_set(toSdoConfigurationSet(set)); });
+    if (!ok)
+        throw Error(Error::Kind::Refused,
+                    QStringLiteral("%1: configuration set '%2' was not added").arg(m_path, set.id));
+}
+
+void ComponentProxy::removeConfigurationSet(const QString &id) const
+{
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    const QByteArray utf8 = id.toUtf8();
+    const bool ok = call(m_path, [&] { return conf->remove_configuration_set(utf8.constData()); });
+    if (!ok)
+        throw Error(Error::Kind::Refused,
+                    QStringLiteral("%1: configuration set '%2' was not removed").arg(m_path, id));
+}
+
+void ComponentProxy::activateConfigurationSet(const QString &id) const
+{
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    const QByteArray utf8 = id.toUtf8();
+    const bool ok = call(m_path, [&] { return conf->activate_configuration_set(utf8.constData()); });
+    if (!ok)
+        throw Error(Error::Kind::Refused,
+                    QStringLiteral("%1: configuration set '%2' was not activated").arg(m_path, id));
+}
+
+QString ComponentProxy::parameter(const QString &setId, const QString &name) const
+{
+    const ConfigurationSet set = configurationSet(setId);
+    if (!hasProperty(set.data, name))
+        throw Error(Error::Kind::NotFound, QStringLiteral("%1: no parameter '%2' in set '%3'")
+                                               .arg(m_path, name, setId));
+    return propertyValue(set.data, name);
+}
+
+void ComponentProxy::setParameter(const QString &setId, const QString &name, const QString &value) const
+{
+    ConfigurationSet set = configurationSet(setId);
+    if (!hasProperty(set.data, name))
+        throw Error(Error::Kind::NotFound, QStringLiteral("%1: no parameter '%2' in set '%3'")
+                                               .arg(m_path, name, setId));
+    setProperty(set.data, name, value);
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    const bool ok = call(m_path, [&] {
+        return conf->set_configuration_set_values(toSdoConfigurationSet(set));
+    });
+    if (!ok)
+        throw Error(Error::Kind::Refused,
+                    QStringLiteral("%1: parameter '%2' was not set").arg(m_path, name));
+    if (activeConfigurationSet() == setId)
+        activateConfigurationSet(setId);
+}
+
+} // namespace Corba

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "corbatypes.h"
+
+#include <QString>
+
+#include <vector>
+
+namespace Corba {
+
+/**
+ * A live RT-Component, addressed by its object reference. Holds only strings, so it can be copied
+ * into worker threads; every method is one or more remote calls under the configured timeout and
+ * throws Corba::Error (naming `path`) on failure or when the component refuses.
+ *
+ * Execution contexts are indexed as rtshell does: owned contexts first, then participating ones.
+ */
+class ComponentProxy
+{
+public:
+    ComponentProxy(QString ior, QString path);
+
+    QString ior() const { return m_ior; }
+    QString path() const { return m_path; }
+
+    /// The component profile with every port's profile.
+    ComponentInfo profile() const;
+    /// The current profiles of all ports (from get_ports()), including their connectors.
+    std::vector<PortInfo> ports() const;
+    /// The port named `name` (short `out` or full `Comp0.out`); NotFound when there is none.
+    PortInfo port(const QString &name) const;
+
+    std::vector<ExecutionContextInfo> executionContexts() const;
+    /// The component's state in the context at `ecIndex`.
+    LifeCycleState state(int ecIndex = 0) const;
+    void activate(int ecIndex = 0) const;
+    void deactivate(int ecIndex = 0) const;
+    void reset(int ecIndex = 0) const;
+    /// Asks the component to finalise and leave its contexts (LightweightRTObject::exit).
+    void exit() const;
+    void startContext(int ecIndex = 0) const;
+    void stopContext(int ecIndex = 0) const;
+    void setRate(double rate, int ecIndex = 0) const;
+
+    std::vector<ConfigurationSet> configurationSets() const;
+    QString activeConfigurationSet() const;
+    ConfigurationSet configurationSet(const QString &id) const;
+    void addConfigurationSet(const ConfigurationSet &set) const;
+    void removeConfigurationSet(const QString &id) const;
+    void activateConfigurationSet(const QString &id) const;
+    /// The value of `name` in set `setId`; NotFound when the set or the parameter is missing.
+    QString parameter(const QString &setId, const QString &name) const;
+    /// Writes `name` = `value` into set `setId`; re-activates the set when it is the active one so
+    /// that the component sees the new value (rtconf's behaviour).
+    void setParameter(const QString &setId, const QString &name, const QString &value) const;
+
+private:
+    QString m_ior;
+    QString m_path;
+};
+
+} // namespace Corba

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// Internal to the rtcorba library: the omniORB side of the API. Nothing outside corba/ includes it.
+
+#include "corbaerror.h"
+#include "corbatypes.h"
+
+#include <SDOPackage.hh>
+
+#include <QString>
+
+namespace Corba::Internal {
+
+/// The process's ORB, created on first use.
+CORBA::ORB_ptr orb();
+
+/// Applies the configured call and connect timeouts to the calling thread.
+void applyTimeouts();
+
+/// Translates the exception being handled into an Error naming `target`; call only in a catch.
+[[noreturn]] void rethrowAsError(const QString &target);
+
+/**
+ * The translation boundary: runs `f` (which makes remote calls) with the call timeout in force and
+ * turns any CORBA exception into a Corba::Error about `target`.
+ */
+template<typename F>
+auto call(const QString &target, F &&f) -> decltype(f())
+{
+    applyTimeouts();
+    try {
+        return f();
+    } catch (const Error &) {
+        throw;
+    } catch (...) {
+        rethrowAsError(target);
+    }
+}
+
+/// string_to_object for an IOR, corbaloc or corbaname; BadPath when the text is not a reference.
+CORBA::Object_ptr toObject(const QString &reference, const QString &target);
+QString toIor(CORBA::Object_ptr object);
+
+QString toQString(const char *text);
+/// The text of an `any` holding a string or number, as OpenRTM tools print it.
+QString anyToString(const CORBA::Any &value);
+Properties fromNVList(const SDOPackage::NVList &list);
+SDOPackage::NVList toNVList(const Properties &properties);
+
+/// Throws Refused when a call reported RTC::ReturnCode_t other than RTC_OK (given as its number).
+void checkReturnCode(int code, const QString &target, const QString &operation);
+
+} // namespace Corba::Internal

@@ -1,0 +1,253 @@
+// SPDX-License-Identifier: MIT
+#include "managerproxy.h"
+
+#include "corbacall.h"
+#include "rtcconversion.h"
+
+#include <Manager.hh>
+
+namespace Corba {
+
+using namespace Internal;
+
+namespace {
+
+RTM::Manager_ptr manager(const QString &ior, const QString &path)
+{
+    CORBA::Object_var object = toObject(ior, path);
+    return RTM::Manager::_unchecked_narrow(object.in());
+}
+
+std::vector<Properties> modules(const RTM::ModuleProfileList &list)
+{
+    std::vector<Properties> result;
+    for (CORBA::ULong i = 0; i < list.length(); ++i)
+        result.push_back(fromNVList(list[i].properties));
+    return result;
+}
+
+template<typename List>
+QStringList iors(const List &list)
+{
+    QStringList result;
+    for (CORBA::ULong i = 0; i < list.length(); ++i)
+        result.append(toIor(list[i].in()));
+    return result;
+}
+
+} // namespace
+
+ManagerProxy::ManagerProxy(QString ior, QString path)
+    : m_ior(std::move(ior))
+    , m_path(std::move(path))
+{
+}
+
+void ManagerProxy::loadModule(const QString &pathName, const QString &initFunction) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    const int code = call(m_path, [&] {
+        return int(mgr->load_module(pathName.toUtf8().constData(), initFunction.toUtf8().constData()));
+    });
+    checkReturnCode(code, m_path, QStringLiteral("load_module(%1)").arg(pathName));
+}
+
+void ManagerProxy::unloadModule(const QString &pathName) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    const int code = call(m_path, [&] { return int(mgr->unload_module(pathName.toUtf8().constData())); });
+    checkReturnCode(code, m_path, QStringLiteral("unload_module(%1)").arg(pathName));
+}
+
+std::vector<Properties> ManagerProxy::loadableModules() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTM::ModuleProfileList_var list = mgr->get_loadable_modules();
+        return modules(list.in());
+    });
+}
+
+std::vector<Properties> ManagerProxy::loadedModules() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTM::ModuleProfileList_var list = mgr->get_loaded_modules();
+        return modules(list.in());
+    });
+}
+
+std::vector<Properties> ManagerProxy::factoryProfiles() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTM::ModuleProfileList_var list = mgr->get_factory_profiles();
+        return modules(list.in());
+    });
+}
+
+QString ManagerProxy::createComponent(const QString &moduleName) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    const QString ior = call(m_path, [&] {
+        RTC::RTObject_var rtc = mgr->create_component(moduleName.toUtf8().constData());
+        return toIor(rtc.in());
+    });
+    if (ior.isEmpty())
+        throw Error(Error::Kind::Refused,
+                    QStringLiteral("%1: could not create '%2'").arg(m_path, moduleName));
+    return ior;
+}
+
+void ManagerProxy::deleteComponent(const QString &instanceName) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    const int code = call(m_path, [&] {
+        return int(mgr->delete_component(instanceName.toUtf8().constData()));
+    });
+    checkReturnCode(code, m_path, QStringLiteral("delete_component(%1)").arg(instanceName));
+}
+
+QStringList ManagerProxy::components() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTC::RTCList_var list = mgr->get_components();
+        return iors(list.in());
+    });
+}
+
+std::vector<ComponentInfo> ManagerProxy::componentProfiles() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTC::ComponentProfileList_var list = mgr->get_component_profiles();
+        std::vector<ComponentInfo> result;
+        for (CORBA::ULong i = 0; i < list->length(); ++i)
+            result.push_back(toComponentInfo(list[i]));
+        return result;
+    });
+}
+
+QStringList ManagerProxy::componentsByName(const QString &name) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTC::RTCList_var list = mgr->get_components_by_name(name.toUtf8().constData());
+        return iors(list.in());
+    });
+}
+
+Properties ManagerProxy::profile() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTM::ManagerProfile_var profile = mgr->get_profile();
+        return fromNVList(profile->properties);
+    });
+}
+
+Properties ManagerProxy::configuration() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTM::NVList_var list = mgr->get_configuration();
+        return fromNVList(list.in());
+    });
+}
+
+void ManagerProxy::setConfiguration(const QString &name, const QString &value) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    const int code = call(m_path, [&] {
+        return int(mgr->set_configuration(name.toUtf8().constData(), value.toUtf8().constData()));
+    });
+    checkReturnCode(code, m_path, QStringLiteral("set_configuration(%1)").arg(name));
+}
+
+bool ManagerProxy::isMaster() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] { return bool(mgr->is_master()); });
+}
+
+QStringList ManagerProxy::masterManagers() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTM::ManagerList_var list = mgr->get_master_managers();
+        return iors(list.in());
+    });
+}
+
+void ManagerProxy::addMasterManager(const QString &managerIor) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    RTM::Manager_var other = manager(managerIor, m_path);
+    checkReturnCode(call(m_path, [&] { return int(mgr->add_master_manager(other.in())); }), m_path,
+                    QStringLiteral("add_master_manager"));
+}
+
+void ManagerProxy::removeMasterManager(const QString &managerIor) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    RTM::Manager_var other = manager(managerIor, m_path);
+    checkReturnCode(call(m_path, [&] { return int(mgr->remove_master_manager(other.in())); }),
+                    m_path, QStringLiteral("remove_master_manager"));
+}
+
+QStringList ManagerProxy::slaveManagers() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        RTM::ManagerList_var list = mgr->get_slave_managers();
+        return iors(list.in());
+    });
+}
+
+void ManagerProxy::addSlaveManager(const QString &managerIor) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    RTM::Manager_var other = manager(managerIor, m_path);
+    checkReturnCode(call(m_path, [&] { return int(mgr->add_slave_manager(other.in())); }), m_path,
+                    QStringLiteral("add_slave_manager"));
+}
+
+void ManagerProxy::removeSlaveManager(const QString &managerIor) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    RTM::Manager_var other = manager(managerIor, m_path);
+    checkReturnCode(call(m_path, [&] { return int(mgr->remove_slave_manager(other.in())); }),
+                    m_path, QStringLiteral("remove_slave_manager"));
+}
+
+void ManagerProxy::fork() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    checkReturnCode(call(m_path, [&] { return int(mgr->fork()); }), m_path, QStringLiteral("fork"));
+}
+
+void ManagerProxy::shutdown() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    checkReturnCode(call(m_path, [&] { return int(mgr->shutdown()); }), m_path,
+                    QStringLiteral("shutdown"));
+}
+
+void ManagerProxy::restart() const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    checkReturnCode(call(m_path, [&] { return int(mgr->restart()); }), m_path,
+                    QStringLiteral("restart"));
+}
+
+QString ManagerProxy::service(const QString &name) const
+{
+    RTM::Manager_var mgr = manager(m_ior, m_path);
+    return call(m_path, [&] {
+        CORBA::Object_var object = mgr->get_service(name.toUtf8().constData());
+        return toIor(object.in());
+    });
+}
+
+} // namespace Corba

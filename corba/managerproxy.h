@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "corbatypes.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace Corba {
+
+/**
+ * A live RTM::Manager (OpenRTM-aist 2.x wire interface), addressed by object reference. Every
+ * operation of the IDL is available; objects come back as IOR strings. Calls run under the
+ * configured timeout and throw Corba::Error naming `path`; a ReturnCode_t other than RTC_OK
+ * becomes Error::Kind::Refused.
+ */
+class ManagerProxy
+{
+public:
+    ManagerProxy(QString ior, QString path);
+
+    QString ior() const { return m_ior; }
+    QString path() const { return m_path; }
+
+    void loadModule(const QString &pathName, const QString &initFunction) const;
+    void unloadModule(const QString &pathName) const;
+    std::vector<Properties> loadableModules() const;
+    std::vector<Properties> loadedModules() const;
+    std::vector<Properties> factoryProfiles() const;
+    /// `create_component("Type?k=v&...")`; returns the new component's IOR. Refused when nil.
+    QString createComponent(const QString &moduleName) const;
+    void deleteComponent(const QString &instanceName) const;
+    QStringList components() const;
+    std::vector<ComponentInfo> componentProfiles() const;
+    QStringList componentsByName(const QString &name) const;
+    Properties profile() const;
+    Properties configuration() const;
+    void setConfiguration(const QString &name, const QString &value) const;
+    bool isMaster() const;
+    QStringList masterManagers() const;
+    void addMasterManager(const QString &managerIor) const;
+    void removeMasterManager(const QString &managerIor) const;
+    QStringList slaveManagers() const;
+    void addSlaveManager(const QString &managerIor) const;
+    void removeSlaveManager(const QString &managerIor) const;
+    void fork() const;
+    void shutdown() const;
+    void restart() const;
+    /// get_service(name); an empty string for a nil reference.
+    QString service(const QString &name) const;
+
+private:
+    QString m_ior;
+    QString m_path;
+};
+
+} // namespace Corba

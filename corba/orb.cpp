@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+#include "orb.h"
+
+#include "corbacall.h"
+
+#include <omniORB4/minorCode.h>
+
+#include <QMutex>
+
+#include <atomic>
+#include <mutex>
+#include <vector>
+
+namespace Corba {
+
+namespace {
+
+std::atomic<int> s_callTimeout{Orb::defaultCallTimeout};
+std::atomic<bool> s_initialised{false};
+QMutex s_argumentsMutex;
+QStringList s_arguments;
+std::once_flag s_once;
+CORBA::ORB_var s_orb;
+
+void createOrb()
+{
+    QStringList arguments{QStringLiteral("rtcorba")};
+    {
+        QMutexLocker locker(&s_argumentsMutex);
+        arguments += s_arguments;
+    }
+    std::vector<QByteArray> storage;
+    for (const QString &argument : arguments)
+        storage.push_back(argument.toLocal8Bit());
+    std::vector<char *> argv;
+    for (QByteArray &bytes : storage)
+        argv.push_back(bytes.data());
+    argv.push_back(nullptr);
+    int argc = int(argv.size()) - 1;
+    // omniORB's defaults would print to stderr and retry forever; a tool wants quick, quiet failure.
+    const char *options[][2] = {{"traceLevel", "0"}, {nullptr, nullptr}};
+    s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
+    s_initialised = true;
+}
+
+} // namespace
+
+void Orb::setArguments(const QStringList &arguments)
+{
+    QMutexLocker locker(&s_argumentsMutex);
+    s_arguments = arguments;
+}
+
+void Orb::setCallTimeout(int milliseconds)
+{
+    s_callTimeout = milliseconds > 0 ? milliseconds : defaultCallTimeout;
+}
+
+int Orb::callTimeout()
+{
+    return s_callTimeout;
+}
+
+bool Orb::isInitialised()
+{
+    return s_initialised;
+}
+
+namespace Internal {
+
+CORBA::ORB_ptr orb()
+{
+    std::call_once(s_once, createOrb);
+    return s_orb.in();
+}
+
+void applyTimeouts()
+{
+    orb();
+    const auto timeout = CORBA::ULong(Orb::callTimeout());
+    omniORB::setClientThreadCallTimeout(timeout);
+    omniORB::setClientConnectTimeout(timeout);
+}
+
+namespace {
+
+QString systemExceptionText(const CORBA::SystemException &e)
+{
+    return QStringLiteral("CORBA::%1 (minor %2, %3)")
+        .arg(QLatin1String(e._name()))
+        .arg(e.minor())
+        .arg(e.completed() == CORBA::COMPLETED_YES  ? QStringLiteral("completed")
+             : e.completed() == CORBA::COMPLETED_NO ? QStringLiteral("not completed")
+                                                    : QStringLiteral("maybe completed"));
+}
+
+} // namespace
+
+void rethrowAsError(const QString &target)
+{
+    using Kind = Error::Kind;
+    const auto fail = [&target](Kind kind, const QString &reason) {
+        return Error(kind, QStringLiteral("%1: %2").arg(target, reason));
+    };
+    try {
+        throw;
+    } catch (const CORBA::TIMEOUT &) {
+        throw fail(Kind::Timeout, QStringLiteral("no reply within %1 ms").arg(Orb::callTimeout()));
+    } catch (const CORBA::TRANSIENT &e) {
+        // omniORB reports its own call timeouts as TRANSIENT with a dedicated minor code.
+        if (e.minor() == omni::TRANSIENT_CallTimedout)
+            throw fail(Kind::Timeout, QStringLiteral("no reply within %1 ms").arg(Orb::callTimeout()));
+        throw fail(Kind::Transient, QStringLiteral("unreachable (%1)").arg(systemExceptionText(e)));
+    } catch (const CORBA::COMM_FAILURE &e) {
+        throw fail(Kind::CommFailure, QStringLiteral("connection failed (%1)").arg(systemExceptionText(e)));
+    } catch (const CORBA::OBJECT_NOT_EXIST &) {
+        throw fail(Kind::ObjectNotExist, QStringLiteral("object does not exist"));
+    } catch (const CORBA::SystemException &e) {
+        throw fail(Kind::System, systemExceptionText(e));
+    } catch (const CORBA::UserException &e) {
+        throw fail(Kind::User, QStringLiteral("exception %1").arg(QLatin1String(e._rep_id())));
+    } catch (const CORBA::Exception &e) {
+        throw fail(Kind::System, QStringLiteral("exception %1").arg(QLatin1String(e._name())));
+    } catch (const std::exception &e) {
+        throw fail(Kind::System, QString::fromLocal8Bit(e.what()));
+    } catch (...) {
+        // Falls through to the generic error below.
+    }
+    throw fail(Kind::System, QStringLiteral("unknown exception"));
+}
+
+CORBA::Object_ptr toObject(const QString &reference, const QString &target)
+{
+    return call(target, [&] {
+        try {
+            return orb()->string_to_object(reference.toLatin1().constData());
+        } catch (const CORBA::BAD_PARAM &) {
+            throw Error(Error::Kind::BadPath,
+                        QStringLiteral("%1: not an object reference: %2").arg(target, reference));
+        }
+    });
+}
+
+QString toIor(CORBA::Object_ptr object)
+{
+    if (CORBA::is_nil(object))
+        return QString();
+    CORBA::String_var text = orb()->object_to_string(object);
+    return QString::fromLatin1(text.in());
+}
+
+QString toQString(const char *text)
+{
+    return text ? QString::fromUtf8(text) : QString();
+}
+
+QString anyToString(const CORBA::Any &value)
+{
+    const char *text = nullptr;
+    if (value >>= text)
+        return toQString(text);
+    CORBA::Long l;
+    if (value >>= l)
+        return QString::number(l);
+    CORBA::ULong ul;
+    if (value >>= ul)
+        return QString::number(ul);
+    CORBA::Short s;
+    if (value >>= s)
+        return QString::number(s);
+    CORBA::Double d;
+    if (value >>= d)
+        return QString::number(d);
+    CORBA::Float f;
+    if (value >>= f)
+        return QString::number(double(f));
+    CORBA::Boolean b;
+    if (value >>= CORBA::Any::to_boolean(b))
+        return b ? QStringLiteral("true") : QStringLiteral("false");
+    return QString();
+}
+
+Properties fromNVList(const SDOPackage::NVList &list)
+{
+    Properties properties;
+    properties.reserve(int(list.length()));
+    for (CORBA::ULong i = 0; i < list.length(); ++i)
+        properties.append({toQString(list[i].name.in()), anyToString(list[i].value)});
+    return properties;
+}
+
+SDOPackage::NVList toNVList(const Properties &properties)
+{
+    SDOPackage::NVList list;
+    list.length(CORBA::ULong(properties.size()));
+    for (int i = 0; i < properties.size(); ++i) {
+        list[CORBA::ULong(i)].name = properties.at(i).first.toUtf8().constData();
+        list[CORBA::ULong(i)].value <<= properties.at(i).second.toUtf8().constData();
+    }
+    return list;
+}
+
+void checkReturnCode(int code, const QString &target, const QString &operation)
+{
+    static const char *const names[] = {"RTC_OK",           "RTC_ERROR",
+                                        "BAD_PARAMETER",    "UNSUPPORTED",
+                                        "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET"};
+    if (code == 0)
+        return;
+    const QString name = code > 0 && code < 6 ? QLatin1String(names[code]) : QString::number(code);
+    throw Error(Error::Kind::Refused, QStringLiteral("%1: %2 returned %3").arg(target, operation, name));
+}
+
+} // namespace Internal
+} // namespace Corba

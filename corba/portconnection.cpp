@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+#include "portconnection.h"
+
+#include "corbacall.h"
+
+#include <RTC.hh>
+
+#include <QSet>
+
+#include <algorithm>
+
+namespace Corba {
+
+using namespace Internal;
+
+namespace {
+
+const QString dataportPrefix = QStringLiteral("dataport.");
+
+bool isData(const PortInfo &port)
+{
+    return port.isDataIn() || port.isDataOut();
+}
+
+// OpenRTM lists allowed values comma-separated ("push, pull"); "Any" accepts everything.
+bool allows(const PortInfo &port, const QString &key, const QString &value)
+{
+    if (!hasProperty(port.properties, key))
+        return true;
+    const QStringList allowed = propertyValue(port.properties, key).split(QLatin1Char(','));
+    for (const QString &entry : allowed) {
+        const QString item = entry.trimmed();
+        if (item.compare(QLatin1String("any"), Qt::CaseInsensitive) == 0
+            || item.compare(value, Qt::CaseInsensitive) == 0)
+            return true;
+    }
+    return false;
+}
+
+// rtcon accepts an out port with in ports, or one in port with one out port in either order.
+QString directionProblem(const std::vector<PortInfo> &ports)
+{
+    if (ports.size() == 2 && ports[0].isDataIn() && ports[1].isDataOut())
+        return QString();
+    if (!ports.front().isDataOut())
+        return QStringLiteral("%1 is not an output port").arg(ports.front().name);
+    for (size_t i = 1; i < ports.size(); ++i) {
+        if (!ports[i].isDataIn())
+            return QStringLiteral("%1 is not an input port").arg(ports[i].name);
+    }
+    return QString();
+}
+
+QString dataProblem(const std::vector<PortInfo> &ports, const Properties &properties)
+{
+    const QString direction = directionProblem(ports);
+    if (!direction.isEmpty())
+        return direction;
+    for (const auto &property : properties) {
+        if (!property.first.startsWith(dataportPrefix))
+            continue;
+        for (const PortInfo &port : ports) {
+            if (!allows(port, property.first, property.second))
+                return QStringLiteral("%1 does not allow %2=%3 (allowed: %4)")
+                    .arg(port.name, property.first, property.second,
+                         propertyValue(port.properties, property.first));
+        }
+    }
+    return QString();
+}
+
+QString serviceProblem(const std::vector<PortInfo> &ports)
+{
+    for (size_t i = 1; i < ports.size(); ++i) {
+        if (!ports[i].isService())
+            return QStringLiteral("%1 is not a service port").arg(ports[i].name);
+    }
+    for (const PortInterfaceInfo &interface : ports.front().interfaces) {
+        for (size_t i = 1; i < ports.size(); ++i) {
+            const auto &others = ports[i].interfaces;
+            const bool paired = std::any_of(others.begin(), others.end(), [&](const auto &other) {
+                return other.instanceName == interface.instanceName
+                       && other.provided != interface.provided;
+            });
+            if (!paired)
+                return QStringLiteral("interface '%1' of %2 has no %3 counterpart in %4")
+                    .arg(interface.instanceName, ports.front().name,
+                         interface.provided ? QStringLiteral("required") : QStringLiteral("provided"),
+                         ports[i].name);
+        }
+    }
+    return QString();
+}
+
+QSet<QString> portNames(const QStringList &names)
+{
+    return QSet<QString>(names.begin(), names.end());
+}
+
+QStringList namesOf(const std::vector<PortInfo> &ports)
+{
+    QStringList names;
+    for (const PortInfo &port : ports)
+        names.append(port.name);
+    return names;
+}
+
+RTC::PortService_ptr portService(const PortInfo &port, const QString &path)
+{
+    CORBA::Object_var object = toObject(port.ior, path);
+    return RTC::PortService::_unchecked_narrow(object.in());
+}
+
+} // namespace
+
+Properties PortConnection::effectiveProperties(const std::vector<PortInfo> &ports,
+                                               const Properties &given)
+{
+    Properties properties;
+    if (!ports.empty() && isData(ports.front())) {
+        properties = {{QStringLiteral("dataport.dataflow_type"), QStringLiteral("push")},
+                      {QStringLiteral("dataport.interface_type"), QStringLiteral("corba_cdr")},
+                      {QStringLiteral("dataport.subscription_type"), QStringLiteral("new")}};
+        const PortInfo &source = ports.size() == 2 && ports[1].isDataOut() ? ports[1] : ports[0];
+        const QString dataType = propertyValue(source.properties, QStringLiteral("dataport.data_type"));
+        if (!dataType.isEmpty())
+            properties.append({QStringLiteral("dataport.data_type"), dataType});
+    }
+    for (const auto &property : given)
+        setProperty(properties, property.first, property.second);
+    return properties;
+}
+
+QString PortConnection::problem(const std::vector<PortInfo> &ports, const Properties &properties)
+{
+    if (ports.size() < 2)
+        return QStringLiteral("a connection needs at least two ports");
+    if (isData(ports.front()))
+        return dataProblem(ports, properties);
+    if (ports.front().isService())
+        return serviceProblem(ports);
+    return QStringLiteral("%1 has an unknown port type '%2'")
+        .arg(ports.front().name, ports.front().portType());
+}
+
+QString PortConnection::defaultName(const std::vector<PortInfo> &ports)
+{
+    QStringList names;
+    for (const PortInfo &port : ports)
+        names.append(port.shortName());
+    return names.join(QLatin1Char('_'));
+}
+
+ConnectorInfo PortConnection::connect(const std::vector<PortInfo> &ports,
+                                      const ConnectionRequest &request, const QString &path)
+{
+    const Properties properties = effectiveProperties(ports, request.properties);
+    const QString why = problem(ports, properties);
+    if (!why.isEmpty())
+        throw Error(Error::Kind::Incompatible, QStringLiteral("%1: cannot connect: %2").arg(path, why));
+    if (request.noDuplicates) {
+        const QSet<QString> wanted = portNames(namesOf(ports));
+        for (const ConnectorInfo &connector : ports.front().connectors) {
+            if (portNames(connector.ports) == wanted)
+                throw Error(Error::Kind::Refused, QStringLiteral("%1: already connected (connector %2)")
+                                                      .arg(path, connector.id));
+        }
+    }
+    RTC::ConnectorProfile profile;
+    profile.name = (request.name.isEmpty() ? defaultName(ports) : request.name).toUtf8().constData();
+    profile.connector_id = request.id.toUtf8().constData();
+    profile.properties = toNVList(properties);
+    profile.ports.length(CORBA::ULong(ports.size()));
+    for (size_t i = 0; i < ports.size(); ++i)
+        profile.ports[CORBA::ULong(i)] = portService(ports[i], path);
+    RTC::PortService_var source = portService(ports.front(), path);
+    const int code = call(path, [&] { return int(source->connect(profile)); });
+    checkReturnCode(code, path, QStringLiteral("connect"));
+    ConnectorInfo info{toQString(profile.name.in()), toQString(profile.connector_id.in()),
+                       namesOf(ports), fromNVList(profile.properties)};
+    return info;
+}
+
+void PortConnection::disconnect(const PortInfo &port, const QString &connectorId, const QString &path)
+{
+    RTC::PortService_var service = portService(port, path);
+    const QByteArray id = connectorId.toUtf8();
+    checkReturnCode(call(path, [&] { return int(service->disconnect(id.constData())); }), path,
+                    QStringLiteral("disconnect(%1)").arg(connectorId));
+}
+
+void PortConnection::disconnectAll(const PortInfo &port, const QString &path)
+{
+    RTC::PortService_var service = portService(port, path);
+    checkReturnCode(call(path, [&] { return int(service->disconnect_all()); }), path,
+                    QStringLiteral("disconnect_all"));
+}
+
+} // namespace Corba

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "corbatypes.h"
+
+#include <QString>
+
+#include <vector>
+
+namespace Corba {
+
+/// What `rtcon` asks for: connector name and id (empty = defaults) and extra properties.
+struct ConnectionRequest
+{
+    QString name;
+    QString id;
+    Properties properties;
+    bool noDuplicates = false;
+};
+
+/**
+ * Connecting and disconnecting ports with rtshell's rules. The checks are plain functions of the
+ * ports' profiles, so they can run (and be tested) without a remote call.
+ */
+class PortConnection
+{
+public:
+    /**
+     * The properties a connection of `ports` (source first) would use: for data ports rtcon's
+     * defaults (`dataport.dataflow_type=push`, `interface_type=corba_cdr`, `subscription_type=new`,
+     * `data_type` = the source port's) overlaid by `given`.
+     */
+    static Properties effectiveProperties(const std::vector<PortInfo> &ports, const Properties &given);
+    /**
+     * Why `ports` cannot be connected with `properties` (as returned by effectiveProperties()), or an
+     * empty string when they can. Data ports: one out and the others in, and each `dataport.*` value
+     * must be in each port's allowed list unless that list says `any`. Service ports: each interface
+     * of the first port must find one with the same instance name and opposite polarity.
+     */
+    static QString problem(const std::vector<PortInfo> &ports, const Properties &properties);
+    /// rtcon's default connector name: the ports' short names joined by '_'.
+    static QString defaultName(const std::vector<PortInfo> &ports);
+
+    /**
+     * Connects `ports` (at least two; the first one is called). Throws Incompatible when problem()
+     * says so, Refused when the port refuses or (with noDuplicates) when the ports are already
+     * connected. Returns the connector as the port filled it in (with its id).
+     */
+    static ConnectorInfo connect(const std::vector<PortInfo> &ports, const ConnectionRequest &request,
+                                 const QString &path);
+    /// Disconnects the connector `connectorId` through `port`.
+    static void disconnect(const PortInfo &port, const QString &connectorId, const QString &path);
+    /// Disconnects every connector of `port`.
+    static void disconnectAll(const PortInfo &port, const QString &path);
+};
+
+} // namespace Corba

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace Corba {
+
+/**
+ * A path in rtshell's RTC tree: `/` → name servers (`localhost`, `host:2809`) → naming contexts
+ * (`id.kind`) → objects (`Name0.rtc`, `manager.mgr`), with an optional `:port` suffix on the last
+ * element. A manager may be addressed directly with `corbaloc::host[:2810][/manager]`.
+ */
+struct RtPath
+{
+    QStringList elements; ///< server first; empty for the root
+    QString port;         ///< port name after ':' on the last element, or empty
+    QString corbaloc;     ///< set (normalised, `corbaloc:iiop:host:port/key`) for direct addresses
+
+    bool isRoot() const { return elements.isEmpty() && corbaloc.isEmpty(); }
+    bool isDirect() const { return !corbaloc.isEmpty(); }
+    /// The name-server element (`localhost:2809`), empty for the root.
+    QString server() const { return elements.value(0); }
+    /// `corbaloc:iiop:HOST:PORT/NameService` for the server (port 2809 when not given).
+    QString nameServiceAddress() const;
+    /// The naming-context elements below the server.
+    QStringList names() const { return elements.mid(1); }
+    /// The path without its port suffix.
+    RtPath withoutPort() const;
+    /// `/srv/ctx.kind/Name.rtc:port`, or the corbaloc.
+    QString toString() const;
+
+    /**
+     * Parses `text` relative to `currentDirectory` (itself an absolute path; empty = `/`), resolving
+     * `.` and `..`. Returns std::nullopt and sets `error` for malformed text.
+     */
+    static std::optional<RtPath> parse(const QString &text, const QString &currentDirectory = QString(),
+                                       QString *error = nullptr);
+    /// Normalises `corbaloc::host[:port][/key]` to `corbaloc:iiop:host:port/key` (2810, manager).
+    static std::optional<QString> normaliseCorbaloc(const QString &text, QString *error = nullptr);
+
+    bool operator==(const RtPath &other) const;
+    bool operator!=(const RtPath &other) const { return !(*this == other); }
+};
+
+} // namespace Corba
