@@ -34,6 +34,8 @@ IdlSyntax::IdlSyntax(QList<IdlToken> tokens, const QStringList &files, IdlModel 
     m_tokens.append(end);
     for (const IdlDeclaration &declaration : std::as_const(m_model->declarations))
         m_declared.insert(declaration.scopedName, declaration.kind);
+    // Pseudo-objects that IDL compilers know without a declaration (corbaidl.idl uses them).
+    m_declared.insert(QStringLiteral("CORBA::TypeCode"), IdlDeclaration::Kind::Native);
 }
 
 bool IdlSyntax::parse()
