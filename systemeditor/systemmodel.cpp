@@ -218,6 +218,22 @@ void SystemModel::setSystemInfo(const SystemProfileInfo &info)
     }
 }
 
+void SystemModel::setSystemId(const QString &id)
+{
+    if (m_profile.id == id)
+        return;
+    m_profile.id = id;
+    emit systemInfoChanged();
+}
+
+void SystemModel::setAbstract(const std::optional<QString> &abstract)
+{
+    if (m_profile.abstract == abstract)
+        return;
+    m_profile.abstract = abstract;
+    emit systemInfoChanged();
+}
+
 // ---- components ----------------------------------------------------------------------------
 
 QStringList SystemModel::componentIds() const
@@ -452,6 +468,19 @@ bool SystemModel::setDirection(const QString &instanceName, Direction direction)
     const QString text = directionText(direction);
     if (l.direction != text) {
         l.direction = text;
+        emit componentChanged(instanceName);
+    }
+    return true;
+}
+
+bool SystemModel::setLocation(const QString &instanceName,
+                              const std::optional<RtsLocation> &location)
+{
+    RtsComponent *c = mutableComponent(instanceName);
+    if (!c)
+        return false;
+    if (c->layout != location) {
+        c->layout = location;
         emit componentChanged(instanceName);
     }
     return true;

@@ -147,6 +147,9 @@ public:
     SystemProfileInfo systemInfo() const;
     /// Applies the info: rewrites id, abstract, dates and each component's isRequired.
     void setSystemInfo(const SystemProfileInfo &info);
+    /// Sets the system id text as it is (may be malformed; validation reports it).
+    void setSystemId(const QString &id);
+    void setAbstract(const std::optional<QString> &abstract);
 
     // ---- components --------------------------------------------------------------------------
 
@@ -199,6 +202,9 @@ public:
     bool moveComponent(const QString &instanceName, const QPointF &position);
     bool resizeComponent(const QString &instanceName, const QSizeF &size);
     bool setDirection(const QString &instanceName, Direction direction);
+    /// Sets (or removes) the whole `rtsExt:Location` record; undo uses it to restore exactly.
+    bool setLocation(const QString &instanceName,
+                     const std::optional<Profile::RtsLocation> &location);
     /**
      * Renames an instance. Its `<old>.` port names, the connector ends, group members,
      * composite and EC participants and message-sequence targets follow. False when `newName`
