@@ -10,7 +10,8 @@ namespace Codegen {
 
 /// The IDL types the RTC Builder offers: every `.idl` file directly in a set of folders (the OpenRTM
 /// IDL set, the project's idl/, user folders) parsed into one model. The folders are also the include
-/// search path. Files are read in folder order, then by name, so results do not depend on the disk.
+/// search path. Files are read in folder order, then by name, so results do not depend on the disk. A
+/// file name seen before (directly or through an include) is not read again from a later folder.
 class IdlTypeLibrary
 {
 public:

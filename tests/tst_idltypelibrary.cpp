@@ -49,6 +49,7 @@ private slots:
     void listsDataTypesAndInterfacesSorted();
     void reloadsChangedFolders();
     void keepsGoingPastBrokenFiles();
+    void readsEachFileNameOnceAcrossFolders();
 };
 
 void TestIdlTypeLibrary::listsDataTypesAndInterfacesSorted()
@@ -107,6 +108,26 @@ void TestIdlTypeLibrary::keepsGoingPastBrokenFiles()
     QCOMPARE(library.diagnostics().size(), 1);
     QVERIFY2(library.diagnostics().first().toString().startsWith(dir.filePath("a_broken.idl") + QStringLiteral(":1:35:")),
              qPrintable(library.diagnostics().first().toString()));
+}
+
+void TestIdlTypeLibrary::readsEachFileNameOnceAcrossFolders()
+{
+    // The project folder has a space in its path and a copy of a standard file, as OpenRTP projects do.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString standard = dir.filePath(QStringLiteral("standard idl"));
+    const QString project = dir.filePath(QStringLiteral("my project/idl"));
+    QVERIFY(QDir().mkpath(standard));
+    QVERIFY(QDir().mkpath(project));
+    QVERIFY(QFile::copy(dataDir() + QStringLiteral("/include/BasicDataType.idl"), standard + "/BasicDataType.idl"));
+    QVERIFY(QFile::copy(dataDir() + QStringLiteral("/include/BasicDataType.idl"), project + "/BasicDataType.idl"));
+    QVERIFY(writeFile(project + "/Sensor.idl", "#include <BasicDataType.idl>\n"
+                                               "module Sensor { struct TimedRange { RTC::Time tm; double r; }; };\n"));
+    const IdlTypeLibrary library({standard, project});
+    QVERIFY2(library.diagnostics().isEmpty(), qPrintable(library.diagnostics().value(0).toString()));
+    QVERIFY(dataTypeNames(library, true).contains(QStringLiteral("Sensor::TimedRange")));
+    QVERIFY(library.fileOf(QStringLiteral("RTC::TimedLong")).startsWith(standard));
+    QCOMPARE(library.model().files.size(), 2);
 }
 
 QTEST_GUILESS_MAIN(TestIdlTypeLibrary)
