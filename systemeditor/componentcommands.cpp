@@ -18,7 +18,7 @@ Profile::RtsComponent renamedComponent(RtsComponent component, const QString &ne
     const QString prefix = component.instanceName + QLatin1Char('.');
     const auto rename = [&](QList<RtsPort> &ports) {
         for (RtsPort &port : ports) {
-            if (!component.instanceName.isEmpty() && port.name.startsWith(prefix))
+            if (port.name.startsWith(prefix))
                 port.name = newName + QLatin1Char('.') + port.name.mid(prefix.size());
         }
     };

@@ -200,6 +200,28 @@ void SystemModel::setProfile(RtsProfile profile, QHash<QString, RtcProfile> rtcP
     emit reset();
 }
 
+void SystemModel::adoptSavedProfile(const RtsProfile &saved)
+{
+    // Only the structure this model made can come back; anything else is a full reset.
+    if (componentIds() != SystemModel(saved).componentIds()
+        || connectorIds() != SystemModel(saved).connectorIds()) {
+        setProfile(saved, m_rtcProfiles);
+        return;
+    }
+    const RtsProfile before = std::exchange(m_profile, saved);
+    for (int i = 0; i < m_profile.components.size(); ++i) {
+        if (m_profile.components.at(i) != before.components.at(i))
+            emit componentChanged(m_profile.components.at(i).instanceName);
+    }
+    for (const QString &id : connectorIds()) {
+        if (*m_profile.connector(id) != *before.connector(id))
+            emit connectorChanged(id);
+    }
+    if (SystemProfileInfo::fromProfile(before) != SystemProfileInfo::fromProfile(m_profile)
+        || before.id != m_profile.id)
+        emit systemInfoChanged();
+}
+
 SystemProfileInfo SystemModel::systemInfo() const
 {
     return SystemProfileInfo::fromProfile(m_profile);

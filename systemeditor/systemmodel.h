@@ -143,6 +143,11 @@ public:
     /// Replaces everything (emits reset()). `rtcProfiles` maps instance names to their RTC profile.
     void setProfile(Profile::RtsProfile profile,
                     QHash<QString, Profile::RtcProfile> rtcProfiles = {});
+    /**
+     * Takes the profile as it was just saved (new pathUris, dates); announces what differs.
+     * Not an undoable edit: it records where the files now are.
+     */
+    void adoptSavedProfile(const Profile::RtsProfile &saved);
     /// Vendor, name, version, abstract, dates and required components of the system.
     SystemProfileInfo systemInfo() const;
     /// Applies the info: rewrites id, abstract, dates and each component's isRequired.
