@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+#include "codegenerator.h"
+
+#include "contextbuilder.h"
+#include "rtcxml.h"
+#include "templaterenderer.h"
+#include "templateset.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QSet>
+
+using namespace Profile;
+
+namespace Codegen {
+
+namespace {
+
+Diagnostic generationError(const QString &file, const QString &message)
+{
+    return Diagnostic::error(file, 0, 0, message);
+}
+
+/// The item's keys laid over the context, for `forEach` entries.
+QVariantMap overlay(QVariantMap context, const QVariantMap &item)
+{
+    for (auto it = item.cbegin(); it != item.cend(); ++it)
+        context.insert(it.key(), it.value());
+    return context;
+}
+
+} // namespace
+
+CodeGenerator::CodeGenerator(const RtcProfile &profile, const IdlModel &idl)
+    : m_profile(profile)
+    , m_idl(idl)
+{
+}
+
+bool CodeGenerator::isSafeRelativePath(const QString &path)
+{
+    if (path.isEmpty() || path.startsWith(QLatin1Char('/')) || path.contains(QLatin1Char('\\'))
+        || path.contains(QLatin1Char(':')))
+        return false;
+    const QStringList parts = path.split(QLatin1Char('/'));
+    return std::none_of(parts.cbegin(), parts.cend(), [](const QString &part) {
+        return part.isEmpty() || part == QLatin1String(".") || part == QLatin1String("..");
+    });
+}
+
+std::optional<QList<GeneratedFile>> CodeGenerator::generate(const QList<TargetLanguage> &languages,
+                                                            Diagnostics *diagnostics) const
+{
+    Diagnostics problems;
+    QList<GeneratedFile> files;
+    const ContextBuilder builder(m_profile, m_idl);
+    QStringList languageNames;
+    for (const TargetLanguage language : languages)
+        languageNames << targetLanguageProfileName(language);
+    for (int i = 0; i < languages.size(); ++i) {
+        std::optional<QVariantMap> context = builder.build(languages.at(i), &problems);
+        if (!context)
+            continue;
+        context->insert(QStringLiteral("languages"), languageNames);
+        // The common files describe the whole project; the first language's context is as good
+        // as any for them, since they use only language-neutral keys.
+        if (i == 0)
+            renderSet(QStringLiteral("common"), *context, &files, &problems);
+        renderSet(targetLanguageKey(languages.at(i)), *context, &files, &problems);
+    }
+    if (languages.isEmpty())
+        problems << generationError(QString(), QStringLiteral("no target language chosen"));
+    if (!hasErrors(problems)) {
+        files << GeneratedFile{QStringLiteral("RTC.xml"), writeRtcXml(m_profile)};
+        addIdlCopies(&files, &problems);
+    }
+    QSet<QString> seen;
+    for (const GeneratedFile &file : std::as_const(files)) {
+        if (seen.contains(file.path))
+            problems << generationError(file.path, QStringLiteral("two templates write this file"));
+        seen.insert(file.path);
+    }
+    if (diagnostics)
+        diagnostics->append(problems);
+    if (hasErrors(problems))
+        return std::nullopt;
+    return files;
+}
+
+bool CodeGenerator::renderSet(const QString &key, const QVariantMap &context,
+                              QList<GeneratedFile> *files, Diagnostics *diagnostics) const
+{
+    QString error;
+    const std::optional<TemplateSet> set = TemplateSet::load(key, m_userTemplates, &error);
+    if (!set) {
+        diagnostics->append(generationError(QString(), error));
+        return false;
+    }
+    bool ok = true;
+    for (const TemplateEntry &entry : set->entries()) {
+        QVariantList items{QVariantMap()};
+        if (!entry.forEach.isEmpty())
+            items = context.value(entry.forEach).toList();
+        for (const QVariant &item : std::as_const(items)) {
+            const QVariantMap local = overlay(context, item.toMap());
+            const std::optional<QString> path = renderTemplate(entry.outputPattern, local, &error);
+            const std::optional<QString> body =
+                path ? renderTemplate(set->templateText(entry.templateName), local, &error)
+                     : std::nullopt;
+            const QString origin = set->templateOrigin(entry.templateName);
+            if (!body) {
+                diagnostics->append(generationError(origin, error));
+                ok = false;
+            } else if (!isSafeRelativePath(*path)) {
+                diagnostics->append(generationError(
+                    origin, QStringLiteral("output path '%1' would leave the project folder")
+                                .arg(*path)));
+                ok = false;
+            } else {
+                files->append(GeneratedFile{*path, body->toUtf8()});
+            }
+        }
+    }
+    return ok;
+}
+
+bool CodeGenerator::addIdlCopies(QList<GeneratedFile> *files, Diagnostics *diagnostics) const
+{
+    const ContextBuilder builder(m_profile, m_idl);
+    bool ok = true;
+    for (const QString &source : builder.projectIdlFiles()) {
+        QFile file(source);
+        if (!file.open(QIODevice::ReadOnly)) {
+            diagnostics->append(generationError(
+                source, QStringLiteral("cannot copy IDL file: %1").arg(file.errorString())));
+            ok = false;
+            continue;
+        }
+        files->append(GeneratedFile{QStringLiteral("idl/") + QFileInfo(source).fileName(),
+                                    file.readAll()});
+    }
+    return ok;
+}
+
+} // namespace Codegen

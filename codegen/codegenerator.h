@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "diagnostic.h"
+#include "idlmodel.h"
+#include "rtcprofile.h"
+#include "targetlanguage.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QString>
+
+#include <optional>
+
+namespace Codegen {
+
+/// One file of a generated project, in memory.
+struct GeneratedFile
+{
+    QString path; ///< relative to the project folder, `/`-separated
+    QByteArray content;
+
+    bool operator==(const GeneratedFile &other) const
+    {
+        return path == other.path && content == other.content;
+    }
+    bool operator!=(const GeneratedFile &other) const { return !(*this == other); }
+};
+
+/**
+ * Renders a component project from an RTC Profile: the `common` templates (README.md, rtc.conf,
+ * `<N>.conf`), the templates of each requested language, `RTC.xml` (written by writeRtcXml) and
+ * copies of the non-standard IDL files the profile's types come from (into `idl/`).
+ *
+ * Generation happens in memory and is all-or-nothing: a name that is no identifier of a
+ * language, a service interface type missing from the IDL, a broken template or an output path
+ * that would leave the project folder returns nothing plus errors. Output is deterministic:
+ * the same profile, IDL and templates always give the same bytes.
+ */
+class CodeGenerator
+{
+public:
+    CodeGenerator(const Profile::RtcProfile &profile, const IdlModel &idl);
+
+    /// A folder whose `<language>/` sub-folders override the built-in templates.
+    void setUserTemplateFolder(const QString &folder) { m_userTemplates = folder; }
+
+    std::optional<QList<GeneratedFile>> generate(const QList<TargetLanguage> &languages,
+                                                 Profile::Diagnostics *diagnostics) const;
+
+    /// True when `path` is relative, `/`-separated, and has no empty, `.` or `..` part.
+    static bool isSafeRelativePath(const QString &path);
+
+private:
+    bool renderSet(const QString &key, const QVariantMap &context, QList<GeneratedFile> *files,
+                   Profile::Diagnostics *diagnostics) const;
+    bool addIdlCopies(QList<GeneratedFile> *files, Profile::Diagnostics *diagnostics) const;
+
+    const Profile::RtcProfile &m_profile;
+    const IdlModel &m_idl;
+    QString m_userTemplates;
+};
+
+} // namespace Codegen

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "diagnostic.h"
+#include "idlmodel.h"
+#include "rtcprofile.h"
+#include "targetlanguage.h"
+
+#include <QVariantMap>
+
+#include <optional>
+
+namespace Codegen {
+
+/**
+ * Turns an RTC Profile and the parsed IDL into the render context of one target language.
+ * Everything the templates print is decided here (names, C++/Python/Java types, module spec
+ * lines, escaped literals, which callbacks are implemented); templates only loop and branch.
+ *
+ * Keys of the context (lists of maps unless noted; every list item has `first`/`last` flags):
+ * - scalars: `name`, `nameUpper`, `description`, `version`, `vendor`, `category`, `componentType`,
+ *   `activityType`, `componentKind`, `maxInstances`, `executionType`, `executionRate`,
+ *   `languageKind`, `langType`, `cmakeVersion`, `creator`, `license`, `updateDate`
+ * - `moduleSpec` {key, value, literalKey, literalValue}: the RTC module specification, in order
+ * - `actions` {name, upperName, implemented (bool), description}: the 12 editable callbacks
+ * - `inPorts`, `outPorts` {name, type, variable, nativeType, init, module, idlFile, description}
+ * - `servicePorts` {name, variable, provided, required}; `providedInterfaces`,
+ *   `requiredInterfaces` {portName, name, instanceName, variable, type, nativeType, className,
+ *   idlBaseName, module, poaModule}
+ * - `providedIdls` {idlBaseName, idlFileName, interfaces {name, type, nativeType, className,
+ *   poaClass, module, poaModule, operations {name, returnType, parameters, parameterNames,
+ *   returnStatement, signature, params {name, type, mode}}}}
+ * - `providedInterfaceTypes`: the same interface maps, one per interface type (Java servants)
+ * - `configurations` {name, type, nativeType, variable, defaultValue, literalDefault, init,
+ *   holder, widget, constraint, unit, description}
+ * - `projectIdls` {fileName, baseName}: non-standard IDL files copied into `idl/`
+ * - `pythonModules` (strings): modules the Python code imports
+ * - flags: `hasInPorts`, `hasOutPorts`, `hasDataPorts`, `hasServicePorts`, `hasProvided`,
+ *   `hasRequired`, `hasConfigurations`, `hasProjectIdls`
+ */
+class ContextBuilder
+{
+public:
+    ContextBuilder(const Profile::RtcProfile &profile, const IdlModel &idl);
+
+    /// The context for `language`; nothing (plus errors in `diagnostics`) when a name cannot be
+    /// used in that language or a service interface type is not declared in the IDL.
+    std::optional<QVariantMap> build(TargetLanguage language,
+                                     Profile::Diagnostics *diagnostics) const;
+
+    /// The IDL files (as read by the parser) of the types the profile references that are not
+    /// part of OpenRTM's own IDL set; the generator copies them into `idl/`.
+    QStringList projectIdlFiles() const;
+
+    /// True for the IDL files OpenRTM-aist installs itself (BasicDataType.idl …).
+    static bool isStandardIdl(const QString &fileName);
+
+private:
+    QVariantMap basics(TargetLanguage language) const;
+    QVariantList moduleSpec(TargetLanguage language) const;
+    QVariantList actions() const;
+    QVariantList dataPorts(TargetLanguage language, Profile::RtcPortType kind) const;
+    QVariantList configurations(TargetLanguage language) const;
+    bool checkNames(TargetLanguage language, Profile::Diagnostics *diagnostics) const;
+    bool addServices(TargetLanguage language, QVariantMap &context,
+                     Profile::Diagnostics *diagnostics) const;
+
+    const Profile::RtcProfile &m_profile;
+    const IdlModel &m_idl;
+};
+
+/// `text` as the inside of a C, Java or Python string literal (`"` `\` and control characters
+/// escaped).
+QString escapeStringLiteral(const QString &text);
+
+/// Sets `first` and `last` on every map of the list, so templates can place separators.
+QVariantList markFirstLast(QVariantList items);
+
+} // namespace Codegen
