@@ -5,7 +5,6 @@ namespace Studio {
 
 /// QUndoCommand::id() values; commands with the same id may merge (see mergeWith()).
 enum CommandId : int {
-    RtcBasicFieldCommandId = 1001,
     SystemInfoCommandId = 2001,
 };
 

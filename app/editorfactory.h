@@ -7,7 +7,7 @@ namespace Studio {
 
 class Document;
 
-/// The editor widget for a document of either kind (RtcEditor or RtsEditor).
+/// The editor widget for a document of either kind (Builder::ComponentEditor or RtsEditor).
 QWidget *createEditor(Document *document, QWidget *parent = nullptr);
 
 } // namespace Studio

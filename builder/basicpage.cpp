@@ -2,22 +2,24 @@
 #include "basicpage.h"
 
 #include "fieldrules.h"
-#include "rtccommands.h"
+#include "componentcommands.h"
+#include "componentrules.h"
 
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
-namespace Studio {
+namespace Builder {
 
 namespace {
 
-using Field = RtcDocument::BasicField;
+using Field = BasicField;
 
 constexpr Field AllFields[] = {
     Field::Name,          Field::Description,   Field::Version,      Field::Vendor,
@@ -46,25 +48,29 @@ void setInvalidLook(QWidget *editor, bool invalid)
 
 } // namespace
 
-BasicPage::BasicPage(RtcDocument *document, QWidget *parent)
+BasicPage::BasicPage(ComponentModel *model, QUndoStack *undoStack, QWidget *parent)
     : QWidget(parent)
-    , m_document(document)
+    , m_model(model)
+    , m_undoStack(undoStack)
 {
     buildForm();
     refreshAll();
-    connect(document, &RtcDocument::basicFieldChanged, this, [this](Field field) {
+    connect(model, &ComponentModel::basicFieldChanged, this, [this](Field field) {
         refresh(field);
         refreshHeader();
     });
-    connect(document, &RtcDocument::componentIdChanged, this, &BasicPage::refreshHeader);
+    connect(model, &ComponentModel::componentIdChanged, this, &BasicPage::refreshHeader);
+    connect(model, &ComponentModel::profileReset, this, &BasicPage::refreshAll);
+    // The composite rule depends on the ports, which other pages change.
+    connect(model, &ComponentModel::changed, this, [this] { refresh(Field::Category); });
 }
 
-QWidget *BasicPage::editor(RtcDocument::BasicField field) const
+QWidget *BasicPage::editor(BasicField field) const
 {
     return m_rows.value(int(field)).editor;
 }
 
-QString BasicPage::problem(RtcDocument::BasicField field) const
+QString BasicPage::problem(BasicField field) const
 {
     const QLabel *message = m_rows.value(int(field)).message;
     return message && !message->isHidden() ? message->text() : QString();
@@ -126,6 +132,7 @@ void BasicPage::buildForm()
     m_componentId->setTextInteractionFlags(Qt::TextSelectableByMouse);
     contentLayout->addWidget(m_title);
     contentLayout->addWidget(m_componentId);
+    contentLayout->addWidget(buildButtonRow());
 
     QFormLayout *component = addSection(tr("Component"));
     addLineEdit(component, Field::Name, tr("&Name:"), QString());
@@ -157,6 +164,58 @@ void BasicPage::buildForm()
     layout->addWidget(scroll);
 }
 
+QWidget *BasicPage::buildButtonRow()
+{
+    auto *row = new QWidget(m_content);
+    auto *layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 4, 0, 4);
+    m_generate = new QPushButton(tr("&Generate"), row);
+    m_generate->setToolTip(tr("Generate the component's code from this profile"));
+    auto *restore = new QPushButton(tr("Code &Restore..."), row);
+    restore->setToolTip(tr("Put back generated files from a backup"));
+    auto *clear = new QPushButton(tr("Clear &Backups"), row);
+    clear->setToolTip(tr("Delete the backups made when generating over existing files"));
+    m_generate->setObjectName(QStringLiteral("generateButton"));
+    restore->setObjectName(QStringLiteral("codeRestoreButton"));
+    clear->setObjectName(QStringLiteral("clearBackupsButton"));
+    connect(m_generate, &QPushButton::clicked, this, &BasicPage::generateRequested);
+    connect(restore, &QPushButton::clicked, this, &BasicPage::codeRestoreRequested);
+    connect(clear, &QPushButton::clicked, this, &BasicPage::clearBackupsRequested);
+    layout->addWidget(m_generate);
+    layout->addWidget(restore);
+    layout->addWidget(clear);
+    layout->addStretch(1);
+    auto *box = new QWidget(m_content);
+    auto *boxLayout = new QVBoxLayout(box);
+    boxLayout->setContentsMargins(0, 0, 0, 0);
+    boxLayout->addWidget(row);
+    m_generationProblems = new QLabel(box);
+    m_generationProblems->setObjectName(QStringLiteral("generationProblems"));
+    m_generationProblems->setWordWrap(true);
+    m_generationProblems->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_generationProblems->setStyleSheet(QStringLiteral("color: #b3261e;"));
+    m_generationProblems->hide();
+    boxLayout->addWidget(m_generationProblems);
+    return box;
+}
+
+void BasicPage::showGenerationProblems(const Profile::Diagnostics &problems)
+{
+    QStringList lines;
+    for (const Profile::Diagnostic &d : problems)
+        lines << (d.object.isEmpty() ? d.message : QStringLiteral("%1: %2").arg(d.object, d.message));
+    m_generationProblems->setText(
+        lines.isEmpty() ? QString()
+                        : tr("Cannot generate while these problems remain:\n%1")
+                              .arg(lines.join(QLatin1Char('\n'))));
+    m_generationProblems->setVisible(!lines.isEmpty());
+}
+
+QString BasicPage::generationProblems() const
+{
+    return m_generationProblems->isHidden() ? QString() : m_generationProblems->text();
+}
+
 void BasicPage::alignLabels(const QList<QFormLayout *> &forms)
 {
     // Each group has its own form; equal label widths line the fields up across the groups.
@@ -184,7 +243,7 @@ QFormLayout *BasicPage::addSection(const QString &title)
     return form;
 }
 
-void BasicPage::addLineEdit(QFormLayout *form, RtcDocument::BasicField field, const QString &label,
+void BasicPage::addLineEdit(QFormLayout *form, BasicField field, const QString &label,
                             const QString &placeholder)
 {
     auto *edit = new QLineEdit;
@@ -195,7 +254,7 @@ void BasicPage::addLineEdit(QFormLayout *form, RtcDocument::BasicField field, co
     addRow(form, field, label, edit);
 }
 
-void BasicPage::addComboBox(QFormLayout *form, RtcDocument::BasicField field, const QString &label,
+void BasicPage::addComboBox(QFormLayout *form, BasicField field, const QString &label,
                             const QStringList &items, bool editable)
 {
     auto *combo = new QComboBox;
@@ -210,7 +269,7 @@ void BasicPage::addComboBox(QFormLayout *form, RtcDocument::BasicField field, co
     addRow(form, field, label, combo);
 }
 
-void BasicPage::addRow(QFormLayout *form, RtcDocument::BasicField field, const QString &label,
+void BasicPage::addRow(QFormLayout *form, BasicField field, const QString &label,
                        QWidget *editor)
 {
     // The editor and its problem line share one cell, so the message sits right under it.
@@ -231,22 +290,22 @@ void BasicPage::addRow(QFormLayout *form, RtcDocument::BasicField field, const Q
     m_rows.insert(int(field), Row {editor, message});
 }
 
-void BasicPage::userEdited(RtcDocument::BasicField field, const QString &text)
+void BasicPage::userEdited(BasicField field, const QString &text)
 {
-    if (!m_document || m_document->basicField(field).value_or(QString()) == text)
+    if (!m_model || m_model->basicField(field).value_or(QString()) == text)
         return;
     std::optional<QString> value = text;
-    if (RtcDocument::isOptional(field) && text.isEmpty())
+    if (ComponentModel::isOptional(field) && text.isEmpty())
         value = std::nullopt;
-    m_document->undoStack()->push(new SetBasicFieldCommand(m_document, field, value));
+    m_undoStack->push(new SetBasicFieldCommand(m_model, field, value));
 }
 
-void BasicPage::refresh(RtcDocument::BasicField field)
+void BasicPage::refresh(BasicField field)
 {
     const Row row = m_rows.value(int(field));
-    if (!row.editor || !m_document)
+    if (!row.editor || !m_model)
         return;
-    const QString value = m_document->basicField(field).value_or(QString());
+    const QString value = m_model->basicField(field).value_or(QString());
     m_updating = true;
     if (auto *line = qobject_cast<QLineEdit *>(row.editor)) {
         if (line->text() != value)
@@ -285,14 +344,14 @@ void BasicPage::refreshAll()
 
 void BasicPage::refreshHeader()
 {
-    if (!m_document)
+    if (!m_model)
         return;
-    const QString name = m_document->basicField(Field::Name).value_or(QString());
+    const QString name = m_model->basicField(Field::Name).value_or(QString());
     m_title->setText(name.isEmpty() ? tr("(unnamed component)") : name);
-    m_componentId->setText(tr("Component id: %1").arg(m_document->componentId()));
+    m_componentId->setText(tr("Component id: %1").arg(m_model->componentId()));
 }
 
-void BasicPage::showProblem(RtcDocument::BasicField field, const QString &text)
+void BasicPage::showProblem(BasicField field, const QString &text)
 {
     const Row row = m_rows.value(int(field));
     row.message->setText(text);
@@ -301,14 +360,17 @@ void BasicPage::showProblem(RtcDocument::BasicField field, const QString &text)
     row.editor->setToolTip(text);
 }
 
-QString BasicPage::problemFor(RtcDocument::BasicField field, const QString &text) const
+QString BasicPage::problemFor(BasicField field, const QString &text) const
 {
     switch (field) {
     case Field::Name:
         return FieldRules::componentNameProblem(text);
+    case Field::Category:
+        if (const QString problem = FieldRules::requiredProblem(text); !problem.isEmpty())
+            return problem;
+        return m_model ? compositePortsProblem(m_model->profile()) : QString();
     case Field::Version:
     case Field::Vendor:
-    case Field::Category:
     case Field::ExecutionType:
         return FieldRules::requiredProblem(text);
     case Field::ComponentType:
@@ -325,4 +387,4 @@ QString BasicPage::problemFor(RtcDocument::BasicField field, const QString &text
     return {};
 }
 
-} // namespace Studio
+} // namespace Builder

@@ -3,6 +3,7 @@
 // the views follow the document (also on undo), problems are marked inline.
 #include "basicpage.h"
 #include "fieldrules.h"
+#include "rtcdocument.h"
 #include "systeminfoform.h"
 
 #include <QComboBox>
@@ -12,7 +13,8 @@
 #include <QUndoStack>
 
 using namespace Studio;
-using Field = RtcDocument::BasicField;
+using Builder::BasicPage;
+using Field = Builder::BasicField;
 using SystemField = RtsDocument::SystemField;
 
 namespace {
@@ -64,7 +66,7 @@ private slots:
 void TestAppViews::basicPageShowsDocument()
 {
     RtcDocument document(Profile::RtcProfile::createDefault());
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     QCOMPARE(lineEdit(page, Field::Name)->text(), QStringLiteral("ModuleName"));
     QCOMPARE(lineEdit(page, Field::Description)->text(), QStringLiteral("ModuleDescription"));
     QCOMPARE(lineEdit(page, Field::Version)->text(), QStringLiteral("1.0.0"));
@@ -85,17 +87,17 @@ void TestAppViews::basicPageShowsDocument()
 void TestAppViews::typingIntoNameIsOneUndoStep()
 {
     RtcDocument document(Profile::RtcProfile::createDefault());
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     QLineEdit *name = lineEdit(page, Field::Name);
     name->selectAll();
     QTest::keyClicks(name, QStringLiteral("Scanner"));
-    QCOMPARE(document.basicField(Field::Name), QStringLiteral("Scanner"));
-    QCOMPARE(document.componentId(), QStringLiteral("RTC:VenderName:Category:Scanner:1.0.0"));
+    QCOMPARE(document.model()->basicField(Field::Name), QStringLiteral("Scanner"));
+    QCOMPARE(document.model()->componentId(), QStringLiteral("RTC:VenderName:Category:Scanner:1.0.0"));
     QCOMPARE(document.undoStack()->count(), 1);
 
     document.undoStack()->undo();
     QCOMPARE(name->text(), QStringLiteral("ModuleName"));
-    QCOMPARE(document.basicField(Field::Name), QStringLiteral("ModuleName"));
+    QCOMPARE(document.model()->basicField(Field::Name), QStringLiteral("ModuleName"));
     document.undoStack()->redo();
     QCOMPARE(name->text(), QStringLiteral("Scanner"));
 }
@@ -115,11 +117,11 @@ void TestAppViews::nameCharsetIsMarkedInline()
     QFETCH(QString, name);
     QFETCH(bool, valid);
     RtcDocument document(Profile::RtcProfile::createDefault());
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     QLineEdit *edit = lineEdit(page, Field::Name);
     edit->clear();
     typeText(edit, name);
-    QCOMPARE(document.basicField(Field::Name), name); // the value is kept either way
+    QCOMPARE(document.model()->basicField(Field::Name), name); // the value is kept either way
     QCOMPARE(page.problem(Field::Name).isEmpty(), valid);
     QCOMPARE(edit->toolTip(), page.problem(Field::Name));
 }
@@ -127,7 +129,7 @@ void TestAppViews::nameCharsetIsMarkedInline()
 void TestAppViews::numbersAreCheckedInline()
 {
     RtcDocument document(Profile::RtcProfile::createDefault());
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     QLineEdit *instances = lineEdit(page, Field::MaxInstances);
     instances->selectAll();
     QTest::keyClicks(instances, QStringLiteral("-1"));
@@ -148,16 +150,16 @@ void TestAppViews::numbersAreCheckedInline()
 void TestAppViews::choosingAComboEntryPushesCommand()
 {
     RtcDocument document(Profile::RtcProfile::createDefault());
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     QComboBox *activity = comboBox(page, Field::ActivityType);
     activity->setCurrentIndex(activity->findText(QStringLiteral("SPORADIC")));
-    QCOMPARE(document.basicField(Field::ActivityType), QStringLiteral("SPORADIC"));
+    QCOMPARE(document.model()->basicField(Field::ActivityType), QStringLiteral("SPORADIC"));
     QCOMPARE(document.undoStack()->count(), 1);
 
     QComboBox *category = comboBox(page, Field::Category);
     category->setCurrentIndex(category->findText(QStringLiteral("Vehicle")));
-    QCOMPARE(document.basicField(Field::Category), QStringLiteral("Vehicle"));
-    QCOMPARE(document.componentId(), QStringLiteral("RTC:VenderName:Vehicle:ModuleName:1.0.0"));
+    QCOMPARE(document.model()->basicField(Field::Category), QStringLiteral("Vehicle"));
+    QCOMPARE(document.model()->componentId(), QStringLiteral("RTC:VenderName:Vehicle:ModuleName:1.0.0"));
 
     document.undoStack()->undo();
     document.undoStack()->undo();
@@ -168,7 +170,7 @@ void TestAppViews::choosingAComboEntryPushesCommand()
 void TestAppViews::typingIntoEditableComboKeepsTyping()
 {
     RtcDocument document(Profile::RtcProfile::createDefault());
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     page.show();
     QVERIFY(QTest::qWaitForWindowActive(&page));
     QComboBox *category = comboBox(page, Field::Category);
@@ -180,12 +182,12 @@ void TestAppViews::typingIntoEditableComboKeepsTyping()
     // "M" and "My" are prefixes the preset list may complete inline; typing goes on regardless.
     QTest::keyClicks(edit, QStringLiteral("MyCat"));
     QCOMPARE(edit->text(), QStringLiteral("MyCat"));
-    QCOMPARE(document.basicField(Field::Category), QStringLiteral("MyCat"));
+    QCOMPARE(document.model()->basicField(Field::Category), QStringLiteral("MyCat"));
     QCOMPARE(document.undoStack()->count(), 1);
 
     edit->selectAll();
     QTest::keyClicks(edit, QStringLiteral("Vehicle"));
-    QCOMPARE(document.basicField(Field::Category), QStringLiteral("Vehicle"));
+    QCOMPARE(document.model()->basicField(Field::Category), QStringLiteral("Vehicle"));
     QCOMPARE(category->currentText(), QStringLiteral("Vehicle"));
     QCOMPARE(document.undoStack()->count(), 1); // both typings edit the same field: one step
 }
@@ -195,11 +197,11 @@ void TestAppViews::unknownEnumValueIsShownNotReplaced()
     Profile::RtcProfile profile = Profile::RtcProfile::createDefault();
     profile.basicInfo.componentType = QStringLiteral("static");
     RtcDocument document(profile);
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     QCOMPARE(comboBox(page, Field::ComponentType)->currentText(), QStringLiteral("static"));
     QVERIFY(page.problem(Field::ComponentType).contains(QStringLiteral("STATIC")));
     QCOMPARE(document.undoStack()->count(), 0);
-    QCOMPARE(document.basicField(Field::ComponentType), QStringLiteral("static"));
+    QCOMPARE(document.model()->basicField(Field::ComponentType), QStringLiteral("static"));
 }
 
 void TestAppViews::clearingOptionalFieldRemovesIt()
@@ -207,13 +209,13 @@ void TestAppViews::clearingOptionalFieldRemovesIt()
     Profile::RtcProfile profile = Profile::RtcProfile::createDefault();
     profile.basicInfo.executionRate.reset();
     RtcDocument document(profile);
-    BasicPage page(&document);
+    BasicPage page(document.model(), document.undoStack());
     QLineEdit *rate = lineEdit(page, Field::ExecutionRate);
     QCOMPARE(rate->text(), QString());
     QTest::keyClicks(rate, QStringLiteral("5"));
-    QCOMPARE(document.basicField(Field::ExecutionRate), QStringLiteral("5"));
+    QCOMPARE(document.model()->basicField(Field::ExecutionRate), QStringLiteral("5"));
     QTest::keyClick(rate, Qt::Key_Backspace);
-    QCOMPARE(document.basicField(Field::ExecutionRate), std::nullopt);
+    QCOMPARE(document.model()->basicField(Field::ExecutionRate), std::nullopt);
     QCOMPARE(document.undoStack()->count(), 0);
 }
 

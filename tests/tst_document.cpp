@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The document layer: loading, editing, saving and reloading profiles through the facade.
 #include "documentloader.h"
-#include "rtccommands.h"
+#include "componentcommands.h"
+#include "rtcdocument.h"
 #include "rtscommands.h"
 #include "xmlequivalence.h"
 
@@ -51,7 +52,8 @@ std::unique_ptr<Document> load(const QString &path)
 void editName(Document *document, const QString &name)
 {
     if (auto *rtc = qobject_cast<RtcDocument *>(document)) {
-        rtc->undoStack()->push(new SetBasicFieldCommand(rtc, RtcDocument::BasicField::Name, name));
+        rtc->undoStack()->push(
+            new Builder::SetBasicFieldCommand(rtc->model(), Builder::BasicField::Name, name));
     } else if (auto *rts = qobject_cast<RtsDocument *>(document)) {
         rts->undoStack()->push(
             new EditSystemInfoCommand(rts, RtsDocument::SystemField::Name, name));
@@ -126,7 +128,7 @@ void TestDocument::loadsByContent()
     QCOMPARE(document->displayName(), QStringLiteral("renamed.profile"));
     QVERIFY(!document->isModified());
     if (auto *rtc = qobject_cast<RtcDocument *>(document.get()))
-        QCOMPARE(rtc->basicField(RtcDocument::BasicField::Name), name);
+        QCOMPARE(rtc->model()->basicField(Builder::BasicField::Name), name);
     else
         QCOMPARE(qobject_cast<RtsDocument *>(document.get())
                      ->systemField(RtsDocument::SystemField::Name),
@@ -292,7 +294,9 @@ void TestDocument::failedSaveKeepsDocumentModified()
     QVERIFY(document->isModified());
     QCOMPARE(document->filePath(), original);
     QCOMPARE(document->undoStack()->count(), 1);
-    QCOMPARE(qobject_cast<RtcDocument *>(document.get())->basicField(RtcDocument::BasicField::Name),
+    QCOMPARE(qobject_cast<RtcDocument *>(document.get())
+                 ->model()
+                 ->basicField(Builder::BasicField::Name),
              QStringLiteral("Unsaved"));
     QCOMPARE(readAll(original), originalBytes);
     QFile::setPermissions(dir.filePath(QStringLiteral("readonly")),

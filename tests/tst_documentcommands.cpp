@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The undo commands of the document layer: state A, do → B, undo → A, redo → B, and merging.
-#include "rtccommands.h"
+#include "componentcommands.h"
+#include "rtcdocument.h"
 #include "rtscommands.h"
 
 #include <QSignalSpy>
@@ -8,7 +9,8 @@
 #include <QUndoStack>
 
 using namespace Studio;
-using Field = RtcDocument::BasicField;
+using Field = Builder::BasicField;
+using Builder::SetBasicFieldCommand;
 using SystemField = RtsDocument::SystemField;
 
 Q_DECLARE_METATYPE(std::optional<QString>)
@@ -81,14 +83,14 @@ void TestDocumentCommands::basicFieldDoUndoRedo()
     QObject owner;
     RtcDocument *document = newComponent(&owner);
     const Profile::RtcProfile stateA = document->profile();
-    QVERIFY(document->basicField(field) != value);
+    QVERIFY(document->model()->basicField(field) != value);
 
-    document->undoStack()->push(new SetBasicFieldCommand(document, field, value));
-    QCOMPARE(document->basicField(field), value);
+    document->undoStack()->push(new SetBasicFieldCommand(document->model(), field, value));
+    QCOMPARE(document->model()->basicField(field), value);
     const Profile::RtcProfile stateB = document->profile();
     QVERIFY(stateB != stateA);
     QVERIFY(document->isModified());
-    QVERIFY(document->undoStack()->undoText().contains(RtcDocument::fieldLabel(field)));
+    QVERIFY(document->undoStack()->undoText().contains(Builder::ComponentModel::fieldLabel(field)));
 
     document->undoStack()->undo();
     QVERIFY(document->profile() == stateA);
@@ -101,17 +103,17 @@ void TestDocumentCommands::basicFieldIdFollowsBasicInfo()
 {
     QObject owner;
     RtcDocument *document = newComponent(&owner);
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:VenderName:Category:ModuleName:1.0.0"));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:VenderName:Category:ModuleName:1.0.0"));
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Vendor, QStringLiteral("AIST")));
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:AIST:Category:ModuleName:1.0.0"));
+        new SetBasicFieldCommand(document->model(), Field::Vendor, QStringLiteral("AIST")));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:AIST:Category:ModuleName:1.0.0"));
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("Scanner")));
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:AIST:Category:Scanner:1.0.0"));
+        new SetBasicFieldCommand(document->model(), Field::Name, QStringLiteral("Scanner")));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:AIST:Category:Scanner:1.0.0"));
     document->undoStack()->undo();
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:AIST:Category:ModuleName:1.0.0"));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:AIST:Category:ModuleName:1.0.0"));
     document->undoStack()->undo();
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:VenderName:Category:ModuleName:1.0.0"));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:VenderName:Category:ModuleName:1.0.0"));
 }
 
 void TestDocumentCommands::basicFieldKeepsHandWrittenId()
@@ -123,11 +125,11 @@ void TestDocumentCommands::basicFieldKeepsHandWrittenId()
     QObject owner;
     auto *document = new RtcDocument(profile, &owner);
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("Other")));
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:VenderName:Category:Other:1.0.0"));
+        new SetBasicFieldCommand(document->model(), Field::Name, QStringLiteral("Other")));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:VenderName:Category:Other:1.0.0"));
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Version, QStringLiteral("2.0.0")));
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:VenderName:Category:Other:2.0.0"));
+        new SetBasicFieldCommand(document->model(), Field::Version, QStringLiteral("2.0.0")));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:VenderName:Category:Other:2.0.0"));
     document->undoStack()->undo();
     document->undoStack()->undo();
     QVERIFY(document->profile() == profile);
@@ -140,16 +142,16 @@ void TestDocumentCommands::basicFieldTypingMerges()
     const Profile::RtcProfile stateA = document->profile();
     for (const char *text : {"S", "Sc", "Sca", "Scan"}) {
         document->undoStack()->push(
-            new SetBasicFieldCommand(document, Field::Name, QString::fromLatin1(text)));
+            new SetBasicFieldCommand(document->model(), Field::Name, QString::fromLatin1(text)));
     }
     QCOMPARE(document->undoStack()->count(), 1);
-    QCOMPARE(document->basicField(Field::Name), QStringLiteral("Scan"));
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:VenderName:Category:Scan:1.0.0"));
+    QCOMPARE(document->model()->basicField(Field::Name), QStringLiteral("Scan"));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:VenderName:Category:Scan:1.0.0"));
     document->undoStack()->undo();
     QVERIFY(document->profile() == stateA);
     document->undoStack()->redo();
-    QCOMPARE(document->basicField(Field::Name), QStringLiteral("Scan"));
-    QCOMPARE(document->componentId(), QStringLiteral("RTC:VenderName:Category:Scan:1.0.0"));
+    QCOMPARE(document->model()->basicField(Field::Name), QStringLiteral("Scan"));
+    QCOMPARE(document->model()->componentId(), QStringLiteral("RTC:VenderName:Category:Scan:1.0.0"));
 }
 
 void TestDocumentCommands::basicFieldOtherFieldDoesNotMerge()
@@ -157,15 +159,15 @@ void TestDocumentCommands::basicFieldOtherFieldDoesNotMerge()
     QObject owner;
     RtcDocument *document = newComponent(&owner);
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("A")));
+        new SetBasicFieldCommand(document->model(), Field::Name, QStringLiteral("A")));
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Vendor, QStringLiteral("B")));
+        new SetBasicFieldCommand(document->model(), Field::Vendor, QStringLiteral("B")));
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("C")));
+        new SetBasicFieldCommand(document->model(), Field::Name, QStringLiteral("C")));
     QCOMPARE(document->undoStack()->count(), 3);
     document->undoStack()->undo();
-    QCOMPARE(document->basicField(Field::Name), QStringLiteral("A"));
-    QCOMPARE(document->basicField(Field::Vendor), QStringLiteral("B"));
+    QCOMPARE(document->model()->basicField(Field::Name), QStringLiteral("A"));
+    QCOMPARE(document->model()->basicField(Field::Vendor), QStringLiteral("B"));
 }
 
 void TestDocumentCommands::basicFieldEditBackToStartIsDropped()
@@ -173,10 +175,10 @@ void TestDocumentCommands::basicFieldEditBackToStartIsDropped()
     QObject owner;
     RtcDocument *document = newComponent(&owner);
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("ModuleNameX")));
+        new SetBasicFieldCommand(document->model(), Field::Name, QStringLiteral("ModuleNameX")));
     QCOMPARE(document->undoStack()->count(), 1);
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Name, QStringLiteral("ModuleName")));
+        new SetBasicFieldCommand(document->model(), Field::Name, QStringLiteral("ModuleName")));
     QCOMPARE(document->undoStack()->count(), 0);
     QVERIFY(!document->isModified());
 }
@@ -202,23 +204,23 @@ void TestDocumentCommands::basicFieldClearingOptional()
     auto *document = new RtcDocument(profile, &owner);
     // Typing a character and deleting it again, as a user does in the form.
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Description, QStringLiteral("oldx")));
+        new SetBasicFieldCommand(document->model(), Field::Description, QStringLiteral("oldx")));
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Description, std::nullopt));
-    QCOMPARE(document->basicField(Field::Description), cleared);
+        new SetBasicFieldCommand(document->model(), Field::Description, std::nullopt));
+    QCOMPARE(document->model()->basicField(Field::Description), cleared);
     document->undoStack()->undo();
-    QCOMPARE(document->basicField(Field::Description), original);
+    QCOMPARE(document->model()->basicField(Field::Description), original);
 }
 
 void TestDocumentCommands::basicFieldAnnouncesChanges()
 {
     QObject owner;
     RtcDocument *document = newComponent(&owner);
-    QSignalSpy fieldSpy(document, &RtcDocument::basicFieldChanged);
-    QSignalSpy idSpy(document, &RtcDocument::componentIdChanged);
+    QSignalSpy fieldSpy(document->model(), &Builder::ComponentModel::basicFieldChanged);
+    QSignalSpy idSpy(document->model(), &Builder::ComponentModel::componentIdChanged);
     QSignalSpy modifiedSpy(document, &Document::modifiedChanged);
     document->undoStack()->push(
-        new SetBasicFieldCommand(document, Field::Category, QStringLiteral("Sensor")));
+        new SetBasicFieldCommand(document->model(), Field::Category, QStringLiteral("Sensor")));
     QCOMPARE(fieldSpy.count(), 1);
     QCOMPARE(fieldSpy.at(0).at(0).value<Field>(), Field::Category);
     QCOMPARE(idSpy.count(), 1);

@@ -2,12 +2,12 @@
 // The main window, offscreen: perspectives, actions, opening, undo/redo through the menu, the
 // questions asked on close and quit, failed loads and saves, recent files and settings.
 #include "basicpage.h"
+#include "componenteditor.h"
 #include "document.h"
 #include "documentcontroller.h"
 #include "mainwindow.h"
 #include "problemspanel.h"
 #include "recentfiles.h"
-#include "rtceditor.h"
 #include "userprompts.h"
 
 #include <QAction>
@@ -156,9 +156,9 @@ QAction *TestMainWindow::action(const char *name) const
 
 QLineEdit *TestMainWindow::nameEdit(Document *document) const
 {
-    auto *editor = qobject_cast<RtcEditor *>(m_window->perspective(Id::Builder)->editor(document));
+    auto *editor = qobject_cast<Builder::ComponentEditor *>(m_window->perspective(Id::Builder)->editor(document));
     return editor
-        ? qobject_cast<QLineEdit *>(editor->basicPage()->editor(RtcDocument::BasicField::Name))
+        ? qobject_cast<QLineEdit *>(editor->basicPage()->editor(Builder::BasicField::Name))
         : nullptr;
 }
 

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+#include "componenteditor.h"
+
+#include "basicpage.h"
+#include "componentpreview.h"
+#include "componentrules.h"
+#include "configurationpage.h"
+#include "dataportspage.h"
+#include "typecatalog.h"
+
+#include <QCoreApplication>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+namespace Builder {
+
+ComponentEditor::ComponentEditor(ComponentModel *model, QUndoStack *undoStack, TypeCatalog *types,
+                                 QWidget *parent)
+    : QWidget(parent)
+    , m_model(model)
+    , m_undoStack(undoStack)
+    , m_types(types ? types : sharedTypeCatalog())
+    , m_pages(new QTabWidget(this))
+    , m_basicPage(new BasicPage(model, undoStack))
+    , m_preview(new ComponentPreview(model, this))
+{
+    m_pages->setTabPosition(QTabWidget::South);
+    m_pages->setDocumentMode(true);
+    addPages();
+
+    auto *splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->addWidget(m_pages);
+    splitter->addWidget(m_preview);
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 1);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(splitter);
+
+    connect(m_basicPage, &BasicPage::generateRequested, this, &ComponentEditor::requestGenerate);
+    connect(m_basicPage, &BasicPage::codeRestoreRequested, this,
+            &ComponentEditor::codeRestoreRequested);
+    connect(m_basicPage, &BasicPage::clearBackupsRequested, this,
+            &ComponentEditor::clearBackupsRequested);
+}
+
+void ComponentEditor::addPages()
+{
+    m_pages->addTab(m_basicPage, tr("Basic"));
+    m_pages->addTab(new DataPortsPage(m_model, m_undoStack, m_types), tr("Data Ports"));
+    m_pages->addTab(new ConfigurationPage(m_model, m_undoStack), tr("Configuration"));
+}
+
+QWidget *ComponentEditor::page(const QString &title) const
+{
+    for (int i = 0; i < m_pages->count(); ++i) {
+        if (m_pages->tabText(i) == title)
+            return m_pages->widget(i);
+    }
+    return nullptr;
+}
+
+TypeCatalog *ComponentEditor::sharedTypeCatalog()
+{
+    // One per application, parented to it so it goes away with it; IDL is parsed once.
+    static QPointer<TypeCatalog> catalog;
+    if (!catalog) {
+        catalog = new TypeCatalog(QString(), QCoreApplication::instance());
+        catalog->reload();
+    }
+    return catalog;
+}
+
+void ComponentEditor::requestGenerate()
+{
+    if (!m_model)
+        return;
+    const Profile::Diagnostics problems = generationProblems(m_model->profile());
+    m_basicPage->showGenerationProblems(problems);
+    if (problems.isEmpty())
+        emit generateRequested();
+    else
+        emit generateRefused(problems);
+}
+
+} // namespace Builder

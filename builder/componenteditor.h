@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "componentmodel.h"
+#include "diagnostic.h"
+
+#include <QPointer>
+#include <QWidget>
+
+class QLabel;
+class QTabWidget;
+class QUndoStack;
+
+namespace Builder {
+
+class BasicPage;
+class ComponentPreview;
+class TypeCatalog;
+
+/**
+ * RTC Builder's editor of one component: the pages (Basic, Activity, Data Ports, Service Ports,
+ * Configuration, Documentation, Language/Environment, RTC.xml) as tabs along the bottom, with the
+ * live preview beside them. Every page works on the same model and undo stack, so undo and redo
+ * reach across pages.
+ *
+ * Generate asks generationProblems() first: with errors left, the editor lists them on the Basic
+ * page and refuses (generateRefused()); otherwise it emits generateRequested().
+ */
+class ComponentEditor : public QWidget
+{
+    Q_OBJECT
+
+public:
+    /// `types` null: a catalog shared by all editors, loaded on first use.
+    ComponentEditor(ComponentModel *model, QUndoStack *undoStack, TypeCatalog *types = nullptr,
+                    QWidget *parent = nullptr);
+
+    ComponentModel *model() const { return m_model; }
+    QUndoStack *undoStack() const { return m_undoStack; }
+    QTabWidget *pages() const { return m_pages; }
+    BasicPage *basicPage() const { return m_basicPage; }
+    ComponentPreview *preview() const { return m_preview; }
+    TypeCatalog *typeCatalog() const { return m_types; }
+    /// The page with the given tab title (e.g. "Data Ports"); null when there is none.
+    QWidget *page(const QString &title) const;
+
+    /// The shared catalog of IDL types (bundled IDL plus the user's folders).
+    static TypeCatalog *sharedTypeCatalog();
+
+public slots:
+    /// Checks the component and emits generateRequested() or generateRefused().
+    void requestGenerate();
+
+signals:
+    /// Generation was asked for and the component has no errors.
+    void generateRequested();
+    /// Generation was asked for but these errors remain.
+    void generateRefused(const Profile::Diagnostics &problems);
+    void codeRestoreRequested();
+    void clearBackupsRequested();
+
+private:
+    void addPages();
+
+    QPointer<ComponentModel> m_model;
+    QUndoStack *m_undoStack;
+    TypeCatalog *m_types;
+    QTabWidget *m_pages;
+    BasicPage *m_basicPage;
+    ComponentPreview *m_preview;
+};
+
+} // namespace Builder

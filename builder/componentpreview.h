@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "componentmodel.h"
+
+#include <QPointer>
+#include <QRectF>
+#include <QWidget>
+
+namespace Builder {
+
+/**
+ * The live picture of the component being edited: its box with the name and every data and
+ * service port drawn on the side its position names (LEFT/RIGHT/TOP/BOTTOM). It follows every
+ * change of the model, so typing a port name shows up at once.
+ */
+class ComponentPreview : public QWidget
+{
+    Q_OBJECT
+
+public:
+    /// One port as drawn.
+    struct Port
+    {
+        enum Kind { In, Out, Service };
+        Kind kind = In;
+        QString name;
+        QString type; ///< data type, or the interface types of a service port
+        QString side; ///< LEFT | RIGHT | TOP | BOTTOM (the drawn side)
+        QRectF marker; ///< the port's marker in widget coordinates
+    };
+
+    explicit ComponentPreview(ComponentModel *model, QWidget *parent = nullptr);
+
+    /// The component box in widget coordinates.
+    QRectF box() const { return m_box; }
+    /// The ports as laid out for the current size.
+    QList<Port> ports() const { return m_ports; }
+    /// The name drawn in the box.
+    QString title() const { return m_title; }
+
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+
+private:
+    void relayout();
+    void layoutSide(const QString &side, QList<Port *> ports);
+    void paintPort(QPainter &painter, const Port &port) const;
+
+    QPointer<ComponentModel> m_model;
+    QRectF m_box;
+    QList<Port> m_ports;
+    QString m_title;
+};
+
+} // namespace Builder
