@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "diagnostic.h"
+#include "rtcprofile.h"
+
+#include <QAbstractItemModel>
+
+namespace SystemEditor {
+
+/**
+ * The offline editor's repository: RTC profiles loaded from files and folders, shown as a tree
+ * category → component, dragged onto the editor as `application/x-rtstudio-rtc-profile` mime
+ * data carrying the profile's file path.
+ *
+ * Folders are searched recursively for `*.xml`, `*.yaml` and `*.yml` files holding RTC profiles
+ * (other profiles and other XML are skipped). A file that claims to be an RTC profile but cannot
+ * be read is kept as an error — listed under the "Unreadable files" branch with its
+ * diagnostics as tool tip, and in errors() — so that the user sees why a component is missing.
+ */
+class RtcRepository : public QAbstractItemModel
+{
+    Q_OBJECT
+
+public:
+    static inline const QString MimeType = QStringLiteral("application/x-rtstudio-rtc-profile");
+
+    enum Role {
+        FilePathRole = Qt::UserRole + 1, ///< component and error rows: the file
+        ComponentIdRole, ///< component rows: `RTC:vendor:category:name:version`
+        IsCategoryRole, ///< true on category rows
+        ErrorRole ///< error rows: the diagnostics, one per line
+    };
+
+    /// One profile that was read.
+    struct Entry
+    {
+        QString filePath;
+        Profile::RtcProfile profile;
+    };
+    /// One file that could not be read.
+    struct FileError
+    {
+        QString filePath;
+        Profile::Diagnostics diagnostics;
+    };
+
+    explicit RtcRepository(QObject *parent = nullptr);
+
+    /// Adds a file or a folder (searched recursively) and reads it. False when it does not exist.
+    bool addSource(const QString &path);
+    /// Forgets a source and what came from it.
+    void removeSource(const QString &path);
+    QStringList sources() const { return m_sources; }
+    /// Reads every source again (files changed on disk, new files in folders).
+    void reload();
+    void clear();
+
+    QList<Entry> entries() const { return m_entries; }
+    QList<FileError> errors() const { return m_errors; }
+    /// The profile read from `filePath`, or null.
+    const Profile::RtcProfile *profileForFile(const QString &filePath) const;
+    /// The entry at a component row, or null for other rows.
+    const Entry *entry(const QModelIndex &index) const;
+
+    /// The text shown for errors' branch.
+    static QString errorCategoryName();
+
+    QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
+    QModelIndex parent(const QModelIndex &child) const override;
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    QStringList mimeTypes() const override;
+    QMimeData *mimeData(const QModelIndexList &indexes) const override;
+
+signals:
+    /// The list of unreadable files changed.
+    void errorsChanged();
+
+private:
+    struct Category
+    {
+        QString name;
+        QList<int> rows; ///< indices into m_entries, or into m_errors for the errors branch
+        bool errors = false;
+    };
+
+    void readSource(const QString &path);
+    void readFile(const QString &path, bool explicitlyAdded);
+    void rebuildCategories();
+
+    QStringList m_sources;
+    QList<Entry> m_entries;
+    QList<FileError> m_errors;
+    QList<Category> m_categories;
+};
+
+} // namespace SystemEditor
