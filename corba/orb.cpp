@@ -77,8 +77,10 @@ CORBA::ORB_ptr orb()
 void applyTimeouts()
 {
     orb();
+    // The process-wide timeout, not the per-thread one: omniORB refuses per-thread timeouts in
+    // threads it did not create (std::thread, QThread workers).
     const auto timeout = CORBA::ULong(Orb::callTimeout());
-    omniORB::setClientThreadCallTimeout(timeout);
+    omniORB::setClientCallTimeout(timeout);
     omniORB::setClientConnectTimeout(timeout);
 }
 

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+#include "livesystem.h"
+
+#include <QDeadlineTimer>
+#include <QStandardPaths>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace LiveTest {
+
+namespace {
+
+sockaddr_in loopback(quint16 port)
+{
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(port);
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    return address;
+}
+
+} // namespace
+
+quint16 freePort()
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0)
+        return 0;
+    sockaddr_in address = loopback(0);
+    socklen_t length = sizeof(address);
+    quint16 port = 0;
+    if (::bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof(address)) == 0
+        && ::getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length) == 0)
+        port = ntohs(address.sin_port);
+    ::close(fd);
+    return port;
+}
+
+bool isListening(quint16 port)
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0)
+        return false;
+    sockaddr_in address = loopback(port);
+    const bool connected = ::connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof(address)) == 0;
+    ::close(fd);
+    return connected;
+}
+
+LiveSystem::LiveSystem() = default;
+
+LiveSystem::~LiveSystem()
+{
+    stopAll();
+}
+
+QString LiveSystem::namingServer() const
+{
+    return QStringLiteral("127.0.0.1:%1").arg(m_namingPort);
+}
+
+bool LiveSystem::startNameServer(QString *error)
+{
+    const QString program = QStandardPaths::findExecutable(QStringLiteral("omniNames"));
+    if (program.isEmpty()) {
+        *error = QStringLiteral("omniNames is not installed (package omniorb-nameserver)");
+        return false;
+    }
+    m_dataDir = std::make_unique<QTemporaryDir>();
+    m_namingPort = freePort();
+    const QString port = QString::number(m_namingPort);
+    auto process = std::make_unique<QProcess>();
+    process->setProcessChannelMode(QProcess::MergedChannels);
+    process->start(program, {QStringLiteral("-start"), port, QStringLiteral("-datadir"),
+                             m_dataDir->path(), QStringLiteral("-logdir"), m_dataDir->path(),
+                             QStringLiteral("-ORBendPoint"),
+                             QStringLiteral("giop:tcp:127.0.0.1:%1").arg(port)});
+    if (!process->waitForStarted(10000)) {
+        *error = QStringLiteral("omniNames did not start: %1").arg(process->errorString());
+        return false;
+    }
+    m_nameServer = process.get();
+    m_processes.push_back(std::move(process));
+    // Readiness is "accepts connections"; between attempts wait on the server's own output.
+    const QDeadlineTimer deadline(20000);
+    while (!isListening(m_namingPort)) {
+        if (deadline.hasExpired() || m_nameServer->state() != QProcess::Running) {
+            *error = QStringLiteral("omniNames is not listening on %1: %2")
+                         .arg(port, QString::fromLocal8Bit(m_nameServer->readAll()));
+            return false;
+        }
+        m_nameServer->waitForReadyRead(20);
+    }
+    return true;
+}
+
+QProcess *LiveSystem::startPeer(const QStringList &components, QString *error, quint16 *port,
+                                const QString &host, bool zombies)
+{
+    const quint16 peerPort = freePort();
+    if (port)
+        *port = peerPort;
+    QStringList arguments{QStringLiteral("--naming"), QString::number(m_namingPort),
+                          QStringLiteral("--port"),   QString::number(peerPort),
+                          QStringLiteral("--host"),   host};
+    if (zombies)
+        arguments << QStringLiteral("--zombies");
+    arguments += components;
+    return startProcess(QStringLiteral(RTSTUDIO_LIVEPEER_PATH), arguments, QStringLiteral("ready"),
+                        error);
+}
+
+QProcess *LiveSystem::startProcess(const QString &program, const QStringList &arguments,
+                                   const QString &readyText, QString *error, int timeoutMs)
+{
+    auto process = std::make_unique<QProcess>();
+    process->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    process->start(program, arguments);
+    QProcess *raw = process.get();
+    m_processes.push_back(std::move(process));
+    QByteArray output;
+    const QDeadlineTimer deadline(timeoutMs);
+    while (!output.contains(readyText.toUtf8())) {
+        if (deadline.hasExpired() || raw->state() == QProcess::NotRunning) {
+            *error = QStringLiteral("%1 did not become ready: %2 %3")
+                         .arg(program, raw->errorString(), QString::fromLocal8Bit(output));
+            return nullptr;
+        }
+        if (raw->waitForReadyRead(int(qMax<qint64>(1, deadline.remainingTime()))))
+            output += raw->readAllStandardOutput();
+    }
+    return raw;
+}
+
+void LiveSystem::stop(QProcess *process)
+{
+    if (!process)
+        return;
+    if (process->state() != QProcess::NotRunning) {
+        process->kill();
+        process->waitForFinished(10000);
+    }
+}
+
+void LiveSystem::stopAll()
+{
+    for (auto it = m_processes.rbegin(); it != m_processes.rend(); ++it)
+        stop(it->get());
+    m_processes.clear();
+    m_nameServer = nullptr;
+}
+
+} // namespace LiveTest

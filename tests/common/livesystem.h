@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+#include <QTemporaryDir>
+
+#include <memory>
+#include <vector>
+
+namespace LiveTest {
+
+/// A loopback TCP port that was free a moment ago (bound to port 0 and released).
+quint16 freePort();
+/// True when something accepts TCP connections on 127.0.0.1:`port`.
+bool isListening(quint16 port);
+
+/**
+ * Real peer processes for live tests: omniNames, the test peer (rtstudio_livepeer) or any other
+ * server, each on free loopback ports with its own temporary data folder. Everything started is
+ * killed and reaped in the destructor, also when a test fails halfway.
+ */
+class LiveSystem
+{
+public:
+    LiveSystem();
+    ~LiveSystem();
+    LiveSystem(const LiveSystem &) = delete;
+    LiveSystem &operator=(const LiveSystem &) = delete;
+
+    /// Starts omniNames on a free port and waits until it accepts connections.
+    bool startNameServer(QString *error);
+    quint16 namingPort() const { return m_namingPort; }
+    /// `127.0.0.1:PORT` of the name server, as an rtshell path element.
+    QString namingServer() const;
+
+    /**
+     * Starts rtstudio_livepeer registered in the name server under `host`.host_cxt with the given
+     * components (`Type` or `Type?instance_name=NAME`); `zombies` adds Ghost0.rtc and Stranger0.rtc.
+     * Waits for its "ready" line. The peer's own port is returned in `port`.
+     */
+    QProcess *startPeer(const QStringList &components, QString *error, quint16 *port = nullptr,
+                        const QString &host = QStringLiteral("livehost"), bool zombies = false);
+
+    /// Starts `program` and waits up to `timeoutMs` until its standard output contains `readyText`.
+    QProcess *startProcess(const QString &program, const QStringList &arguments,
+                           const QString &readyText, QString *error, int timeoutMs = 20000);
+    /// Kills and reaps one process started here.
+    void stop(QProcess *process);
+    /// Kills and reaps everything started here.
+    void stopAll();
+
+private:
+    std::vector<std::unique_ptr<QProcess>> m_processes;
+    std::unique_ptr<QTemporaryDir> m_dataDir;
+    quint16 m_namingPort = 0;
+    QProcess *m_nameServer = nullptr;
+};
+
+} // namespace LiveTest
