@@ -259,7 +259,7 @@ QVariantList ContextBuilder::moduleSpec(TargetLanguage language) const
         specLine(QStringLiteral("version"), info.version),
         specLine(QStringLiteral("vendor"), info.vendor),
         specLine(QStringLiteral("category"), info.category),
-        specLine(QStringLiteral("activity_type"), info.componentType),
+        specLine(QStringLiteral("activity_type"), info.activityType),
         specLine(QStringLiteral("kind"), info.componentKind),
         specLine(QStringLiteral("max_instance"), info.maxInstances.value_or(QStringLiteral("1"))),
         specLine(QStringLiteral("language"), targetLanguageProfileName(language)),

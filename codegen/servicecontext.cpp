@@ -108,14 +108,15 @@ QVariantMap operationContext(const IdlModel &idl, const ServedOperation &served,
     if (!op.returnType.isVoid())
         pythonOut << QStringLiteral("result");
     for (const IdlParameter &p : op.parameters) {
+        const QString name = mappedIdlName(language, p.name);
         const QString type = language == TargetLanguage::Java ? javaParameterType(idl, p)
                                                               : cxxParameterType(idl, p);
-        declared << type + QLatin1Char(' ') + p.name;
+        declared << type + QLatin1Char(' ') + name;
         if (p.mode != IdlParameter::Mode::Out)
-            pythonIn << p.name;
+            pythonIn << name;
         if (p.mode != IdlParameter::Mode::In)
-            pythonOut << p.name;
-        params << QVariantMap{{QStringLiteral("name"), p.name},
+            pythonOut << name;
+        params << QVariantMap{{QStringLiteral("name"), name},
                               {QStringLiteral("type"), type},
                               {QStringLiteral("mode"), IdlParameter::modeName(p.mode)}};
     }

@@ -26,6 +26,16 @@ const QSet<QString> &cppReserved()
     return words;
 }
 
+const QSet<QString> &pythonKeywords()
+{
+    static const QSet<QString> words = {
+        "False", "None", "True", "and", "as", "assert", "async", "await", "break", "class",
+        "continue", "def", "del", "elif", "else", "except", "finally", "for", "from", "global",
+        "if", "import", "in", "is", "lambda", "nonlocal", "not", "or", "pass", "raise", "return",
+        "try", "while", "with", "yield", "print", "exec"};
+    return words;
+}
+
 const QSet<QString> &pythonReserved()
 {
     static const QSet<QString> words = {
@@ -113,6 +123,22 @@ std::optional<TargetLanguage> targetLanguageFromString(const QString &text)
     if (key == QLatin1String("java"))
         return TargetLanguage::Java;
     return std::nullopt;
+}
+
+QString mappedIdlName(TargetLanguage language, const QString &name)
+{
+    switch (language) {
+    case TargetLanguage::Cpp:
+        return cppReserved().contains(name) && name.front().isLower()
+            ? QStringLiteral("_cxx_") + name
+            : name;
+    case TargetLanguage::Python:
+        return pythonKeywords().contains(name) ? QLatin1Char('_') + name : name;
+    case TargetLanguage::Java:
+        return javaReserved().contains(name) && name.front().isLower() ? QLatin1Char('_') + name
+                                                                        : name;
+    }
+    return name;
 }
 
 bool isReservedWord(TargetLanguage language, const QString &name)

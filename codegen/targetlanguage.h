@@ -29,6 +29,9 @@ bool isValidIdentifier(TargetLanguage language, const QString &name);
 /// True when `name` is made of ASCII letters, digits and `_` only (possibly starting with a
 /// digit): usable after a prefix such as `m_` or `self._`, in every language.
 bool isIdentifierText(const QString &name);
+/// An IDL identifier as omniidl / idlj spell it in `language`: keywords of the language get
+/// `_cxx_` (C++) or `_` (Python, Java) in front.
+QString mappedIdlName(TargetLanguage language, const QString &name);
 /// True when `name` is a reserved word of `language`.
 bool isReservedWord(TargetLanguage language, const QString &name);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "templaterenderer.h"
 
+#include <QRegularExpression>
 #include <QVariantList>
 
 #include <kainjow/mustache.hpp>
@@ -49,12 +50,24 @@ mustache::data toData(const QVariant &value)
     }
 }
 
+/// Mustache's "standalone" rule done before rendering: a line holding nothing but one section,
+/// inverted-section, end or comment tag disappears with its newline. kainjow applies the rule
+/// itself only in some places and leaves blank lines behind sections nested in lists.
+QString joinStandaloneTags(const QString &text)
+{
+    static const QRegularExpression standalone(
+        QStringLiteral("^[ \\t]*(\\{\\{[#^/!][^}]*\\}\\})[ \\t]*\\r?\\n"),
+        QRegularExpression::MultilineOption);
+    QString result = text;
+    return result.replace(standalone, QStringLiteral("\\1"));
+}
+
 } // namespace
 
 std::optional<QString> renderTemplate(const QString &templateText, const QVariantMap &context,
                                       QString *error)
 {
-    mustache::mustache engine{templateText.toStdString()};
+    mustache::mustache engine{joinStandaloneTags(templateText).toStdString()};
     if (!engine.is_valid()) {
         if (error)
             *error = QString::fromStdString(engine.error_message());

@@ -41,6 +41,7 @@ private slots:
     void contextRefusesBadNames();
     void missingInterfaceTypeFails();
     void rendererInsertsVerbatim();
+    void rendererDropsStandaloneTagLines();
     void rendererReportsBrokenTemplate();
     void userTemplateFolderOverrides();
     void userManifestCannotEscape();
@@ -125,7 +126,7 @@ void TestCodegen::cxxParameterMapping_data()
     QTest::addColumn<QString>("parameter");
     QTest::addColumn<QString>("expected");
     const QList<QStringList> rows = {
-        {"echo", "message", "const char*"},
+        {"say", "message", "const char*"},
         {"numbers", "s", "CORBA::Short"},
         {"numbers", "l", "CORBA::Long_out"},
         {"numbers", "d", "CORBA::Double&"},
@@ -134,7 +135,7 @@ void TestCodegen::cxxParameterMapping_data()
         {"move", "from", "const Sample::Point&"},
         {"move", "to", "Sample::Point_out"},
         {"move", "via", "Sample::Point&"},
-        {"tag", "label", "const Sample::Label&"},
+        {"tag", "item", "const Sample::Label&"},
         {"tag", "copy", "Sample::Label_out"},
         {"tag", "edited", "Sample::Label&"},
         {"names", "filter", "const Sample::NameList&"},
@@ -148,11 +149,11 @@ void TestCodegen::cxxParameterMapping_data()
         {"convert", "value", "const CORBA::Any&"},
         {"convert", "result", "CORBA::Any_out"},
         {"convert", "both", "CORBA::Any&"},
-        {"clock", "other", "Sample::Clock_ptr"},
-        {"clock", "mine", "Sample::Clock_out"},
-        {"clock", "shared", "Sample::Clock_ptr&"},
-        {"count", "c", "Sample::Count"},
-        {"count", "total", "Sample::Count_out"},
+        {"exchange", "other", "Sample::Clock_ptr"},
+        {"exchange", "mine", "Sample::Clock_out"},
+        {"exchange", "shared", "Sample::Clock_ptr&"},
+        {"tally", "c", "Sample::Count"},
+        {"tally", "total", "Sample::Count_out"},
         {"sample", "when", "const RTC::Time&"}};
     for (const QStringList &row : rows)
         QTest::newRow(qPrintable(row[0] + "/" + row[1])) << row[0] << row[1] << row[2];
@@ -174,7 +175,7 @@ void TestCodegen::cxxReturnMapping_data()
     QTest::addColumn<QString>("type");
     QTest::addColumn<QString>("statement");
     const QList<QStringList> rows = {
-        {"echo", "char*", "return CORBA::string_dup(\"\");"},
+        {"say", "char*", "return CORBA::string_dup(\"\");"},
         {"numbers", "CORBA::Boolean", "return false;"},
         {"move", "Sample::Point", "return Sample::Point();"},
         {"tag", "Sample::Label*", "return new Sample::Label();"},
@@ -182,8 +183,8 @@ void TestCodegen::cxxReturnMapping_data()
         {"rotate", "Sample::Matrix_slice*", "return Sample::Matrix_alloc();"},
         {"switchMode", "Sample::Mode", "return Sample::IDLE;"},
         {"convert", "CORBA::Any*", "return new CORBA::Any();"},
-        {"clock", "Sample::Clock_ptr", "return Sample::Clock::_nil();"},
-        {"count", "Sample::Count", "return 0;"},
+        {"exchange", "Sample::Clock_ptr", "return Sample::Clock::_nil();"},
+        {"tally", "Sample::Count", "return 0;"},
         {"notify", "void", ""},
         {"reset", "void", ""}};
     for (const QStringList &row : rows)
@@ -207,7 +208,7 @@ void TestCodegen::javaParameterMapping_data()
     QTest::addColumn<QString>("parameter");
     QTest::addColumn<QString>("expected");
     const QList<QStringList> rows = {
-        {"echo", "message", "String"},
+        {"say", "message", "String"},
         {"numbers", "s", "short"},
         {"numbers", "l", "org.omg.CORBA.IntHolder"},
         {"numbers", "d", "org.omg.CORBA.DoubleHolder"},
@@ -217,9 +218,9 @@ void TestCodegen::javaParameterMapping_data()
         {"names", "points", "Sample.PointListHolder"},
         {"rotate", "m", "double[][]"},
         {"switchMode", "previous", "Sample.ModeHolder"},
-        {"count", "c", "int"},
-        {"count", "total", "org.omg.CORBA.IntHolder"},
-        {"clock", "other", "Sample.Clock"}};
+        {"tally", "c", "int"},
+        {"tally", "total", "org.omg.CORBA.IntHolder"},
+        {"exchange", "other", "Sample.Clock"}};
     for (const QStringList &row : rows)
         QTest::newRow(qPrintable(row[0] + "/" + row[1])) << row[0] << row[1] << row[2];
 }
@@ -248,7 +249,7 @@ void TestCodegen::contextBasicsAndModuleSpec()
     const QStringList expected = {
         "implementation_id=SampleComp", "type_name=SampleComp",
         "description=Sample component with \\\"all\\\" port kinds", "version=1.2.0",
-        "vendor=Example", "category=Test", "activity_type=STATIC", "kind=DataFlowComponent",
+        "vendor=Example", "category=Test", "activity_type=PERIODIC", "kind=DataFlowComponent",
         "max_instance=1", "language=C++", "lang_type=compile", "conf.default.gain_value=10",
         "conf.default.mode=fast", "conf.default.rate=0.5", "conf.__widget__.gain_value=slider.1",
         "conf.__widget__.mode=radio", "conf.__constraints__.gain_value=0<=x<=100",
@@ -313,9 +314,9 @@ void TestCodegen::contextServices()
     const QVariantList operations = provided.value("operations").toList();
     // Inherited and attribute operations come first: version (get), gain (get, set), reset.
     QCOMPARE(operations.value(0).toMap().value("name").toString(), QStringLiteral("version"));
-    const QVariantMap echo = find(operations, "name", "echo");
-    QCOMPARE(echo.value("parameters").toString(), QStringLiteral("const char* message"));
-    QCOMPARE(echo.value("idlSignature").toString(), QStringLiteral("string echo(in string message)"));
+    const QVariantMap say = find(operations, "name", "say");
+    QCOMPARE(say.value("parameters").toString(), QStringLiteral("const char* message"));
+    QCOMPARE(say.value("idlSignature").toString(), QStringLiteral("string say(in string message)"));
     const QVariantMap required = cpp.value("requiredInterfaces").toList().value(0).toMap();
     QCOMPARE(required.value("nativeType").toString(), QStringLiteral("Sample::Clock"));
     QCOMPARE(required.value("variable").toString(), QStringLiteral("clock"));
@@ -330,6 +331,8 @@ void TestCodegen::contextServices()
     QCOMPARE(find(pyOps, "pythonName", "_set_gain").value("pythonParameters").toString(), QStringLiteral("self, value"));
     QCOMPARE(find(pyOps, "name", "numbers").value("pythonParameters").toString(), QStringLiteral("self, s, d, o"));
     QCOMPARE(find(pyOps, "name", "numbers").value("pythonResults").toString(), QStringLiteral("result, l, d, c"));
+    // Python keywords as parameter names get omniidl's leading underscore.
+    QCOMPARE(find(pyOps, "name", "move").value("pythonParameters").toString(), QStringLiteral("self, _from, via"));
     QCOMPARE(python.value("providedInterfaces").toList().value(0).toMap().value("poaClass").toString(),
              QStringLiteral("Sample__POA.Echo"));
 }
@@ -386,6 +389,18 @@ void TestCodegen::rendererInsertsVerbatim()
                               {"flag", false}};
     QCOMPARE(*renderTemplate("{{a}}|{{#list}}{{n}},{{/list}}|{{^flag}}off{{/flag}}", context, &error),
              QStringLiteral("x<y && z>\"w\"|1,2,|off"));
+}
+
+void TestCodegen::rendererDropsStandaloneTagLines()
+{
+    QString error;
+    const QVariantMap a{{"n", "a"}, {"p", true}, {"r", false}};
+    const QVariantMap b{{"n", "b"}, {"p", false}, {"r", true}};
+    const QVariantMap context{{"ports", QVariantList{QVariantMap{{"ifs", QVariantList{a}}},
+                                                     QVariantMap{{"ifs", QVariantList{b}}}}}};
+    const QString text = "S\n{{#ports}}\n  {{#ifs}}\n{{#p}}\n  P {{n}}\n{{/p}}\n{{^p}}\n  R {{n}}\n"
+                         "{{/p}}\n{{/ifs}}\n  add\n{{/ports}}\nE\n";
+    QCOMPARE(*renderTemplate(text, context, &error), QStringLiteral("S\n  P a\n  add\n  R b\n  add\nE\n"));
 }
 
 void TestCodegen::rendererReportsBrokenTemplate()
