@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: MIT
+#include "connectoritem.h"
+
+#include "manhattanroute.h"
+#include "portitem.h"
+
+#include <QGraphicsSceneMouseEvent>
+#include <QPainter>
+#include <QPainterPathStroker>
+#include <QStyleOptionGraphicsItem>
+
+namespace SystemEditor {
+
+namespace {
+
+constexpr qreal HandleRadius = 4;
+
+QColor connectorColor(ConnectorKind kind)
+{
+    return kind == ConnectorKind::Service ? QColor(0, 140, 160) : QColor(40, 40, 40);
+}
+
+} // namespace
+
+ConnectorItem::ConnectorItem(const ConnectorInfo &info, QGraphicsItem *parent)
+    : QGraphicsObject(parent)
+    , m_info(info)
+{
+    setFlags(ItemIsSelectable | ItemIsFocusable);
+    setZValue(-1); // under the components, so ports stay clickable
+    setToolTip(info.name);
+}
+
+void ConnectorItem::setInfo(const ConnectorInfo &info)
+{
+    m_info = info;
+    setToolTip(info.name);
+    updateRoute();
+}
+
+void ConnectorItem::setPorts(PortItem *source, PortItem *target)
+{
+    m_source = source;
+    m_target = target;
+    updateRoute();
+}
+
+void ConnectorItem::updateRoute()
+{
+    if (!m_source || !m_target) {
+        setRoute({});
+        return;
+    }
+    const QList<QPointF> &bends = m_draggedHandle >= 0 ? m_draggedCorners : m_info.bendPoints;
+    setRoute(manhattanRoute(m_source->connectionPoint(), m_source->port().side,
+                            m_target->connectionPoint(), m_target->port().side, bends));
+}
+
+void ConnectorItem::setRoute(const QPolygonF &route)
+{
+    prepareGeometryChange();
+    m_route = route;
+    m_path = QPainterPath();
+    m_path.addPolygon(route);
+    update();
+}
+
+int ConnectorItem::handleAt(const QPointF &scenePos) const
+{
+    const QList<QPointF> corners = routeCorners(m_route);
+    for (int i = 0; i < corners.size(); ++i) {
+        if (QLineF(corners.at(i), scenePos).length() <= HandleRadius + 3)
+            return i;
+    }
+    return -1;
+}
+
+QRectF ConnectorItem::boundingRect() const
+{
+    const qreal margin = HandleRadius + 4;
+    return m_path.boundingRect().adjusted(-margin, -margin, margin, margin);
+}
+
+QPainterPath ConnectorItem::shape() const
+{
+    QPainterPathStroker stroker;
+    stroker.setWidth(8);
+    QPainterPath shape = stroker.createStroke(m_path);
+    if (isSelected()) {
+        for (const QPointF &corner : routeCorners(m_route))
+            shape.addEllipse(corner, HandleRadius + 3, HandleRadius + 3);
+    }
+    return shape;
+}
+
+void ConnectorItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *option, QWidget *)
+{
+    painter->setRenderHint(QPainter::Antialiasing);
+    const bool selected = option->state & QStyle::State_Selected;
+    QPen pen(selected ? QColor(30, 110, 230) : connectorColor(m_info.kind), selected ? 2.5 : 1.6);
+    if (m_info.kind == ConnectorKind::Service)
+        pen.setStyle(Qt::DashLine);
+    painter->setPen(pen);
+    painter->setBrush(Qt::NoBrush);
+    painter->drawPolyline(m_route);
+    if (!selected)
+        return;
+    painter->setPen(QPen(QColor(30, 110, 230), 1));
+    painter->setBrush(Qt::white);
+    for (const QPointF &corner : routeCorners(m_route))
+        painter->drawRect(QRectF(corner - QPointF(HandleRadius, HandleRadius),
+                                 QSizeF(2 * HandleRadius, 2 * HandleRadius)));
+}
+
+void ConnectorItem::mousePressEvent(QGraphicsSceneMouseEvent *event)
+{
+    const int handle = isSelected() ? handleAt(event->scenePos()) : -1;
+    if (event->button() == Qt::LeftButton && handle >= 0) {
+        m_draggedHandle = handle;
+        m_draggedCorners = routeCorners(m_route);
+        event->accept();
+        return;
+    }
+    QGraphicsObject::mousePressEvent(event);
+}
+
+void ConnectorItem::mouseMoveEvent(QGraphicsSceneMouseEvent *event)
+{
+    if (m_draggedHandle < 0) {
+        QGraphicsObject::mouseMoveEvent(event);
+        return;
+    }
+    m_draggedCorners[m_draggedHandle] = event->scenePos();
+    updateRoute();
+}
+
+void ConnectorItem::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
+{
+    if (m_draggedHandle < 0) {
+        QGraphicsObject::mouseReleaseEvent(event);
+        return;
+    }
+    const QList<QPointF> corners = m_draggedCorners;
+    m_draggedHandle = -1;
+    m_draggedCorners.clear();
+    if (corners != m_info.bendPoints)
+        emit bendPointsRequested(m_info.id, corners);
+    updateRoute();
+}
+
+void ConnectorItem::mouseDoubleClickEvent(QGraphicsSceneMouseEvent *event)
+{
+    emit editRequested(m_info.id);
+    event->accept();
+}
+
+} // namespace SystemEditor

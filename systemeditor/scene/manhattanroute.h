@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "systemmodel.h"
+
+#include <QPolygonF>
+
+namespace SystemEditor {
+
+/**
+ * A connector's path made of horizontal and vertical segments only. It leaves `start` and
+ * enters `end` straight out of their sides (a short stub), then passes through `bendPoints` in
+ * order; an elbow is added wherever two consecutive points are not aligned. Without bend points
+ * the middle is routed automatically.
+ */
+QPolygonF manhattanRoute(const QPointF &start, PortSide startSide, const QPointF &end,
+                         PortSide endSide, const QList<QPointF> &bendPoints = {});
+
+/// The points of a route between its ends (its corners): what the user drags as bend points.
+QList<QPointF> routeCorners(const QPolygonF &route);
+
+/// Length of the straight piece leaving a port before the route turns.
+inline constexpr qreal RouteStub = 16.0;
+
+} // namespace SystemEditor

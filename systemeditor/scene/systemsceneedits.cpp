@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: MIT
+// The edits a user makes on the canvas; each becomes one step on the undo stack.
+#include "systemscene.h"
+
+#include "componentfactory.h"
+#include "componentitem.h"
+#include "connectorcommands.h"
+#include "connectoritem.h"
+#include "pastecommand.h"
+#include "portitem.h"
+
+#include <QUndoStack>
+
+namespace SystemEditor {
+
+namespace {
+
+/// What Copy took, shared by all canvases of the application so that components can be
+/// pasted into another system too.
+ComponentClipboard &sharedClipboard()
+{
+    static ComponentClipboard clipboard;
+    return clipboard;
+}
+
+constexpr qreal PasteOffset = 40;
+
+} // namespace
+
+void SystemScene::push(QUndoCommand *command)
+{
+    if (m_undoStack) {
+        m_undoStack->push(command);
+        return;
+    }
+    // A scene without undo stack still applies what it is asked to.
+    command->redo();
+    delete command;
+}
+
+void SystemScene::deleteSelection()
+{
+    const QStringList components = selectedComponents();
+    QStringList connectors;
+    for (const QString &id : selectedConnectors()) {
+        const std::optional<ConnectorInfo> info = m_model->connector(id);
+        // Connectors of deleted components go with them.
+        if (info && !components.contains(info->source.instanceName)
+            && !components.contains(info->target.instanceName))
+            connectors.append(id);
+    }
+    if (components.isEmpty() && connectors.isEmpty())
+        return;
+    auto *macro = new QUndoCommand(tr("Delete"));
+    for (const QString &id : std::as_const(connectors))
+        new DisconnectCommand(m_model, id, macro);
+    if (!components.isEmpty())
+        new RemoveComponentsCommand(m_model, components, macro);
+    push(macro);
+}
+
+void SystemScene::copySelection()
+{
+    const QStringList components = selectedComponents();
+    if (components.isEmpty())
+        return;
+    sharedClipboard() = ComponentClipboard::copy(*m_model, components);
+    m_pasteCount = 0;
+}
+
+bool SystemScene::canPaste()
+{
+    return !sharedClipboard().isEmpty();
+}
+
+bool SystemScene::paste()
+{
+    if (sharedClipboard().isEmpty())
+        return false;
+    ++m_pasteCount;
+    auto *command = new PasteComponentsCommand(m_model, sharedClipboard(),
+                                               QPointF(PasteOffset, PasteOffset) * m_pasteCount);
+    const QStringList names = command->pastedNames();
+    push(command);
+    selectComponents(names);
+    return true;
+}
+
+void SystemScene::setDirectionOfSelection(Direction direction)
+{
+    QStringList names;
+    for (const QString &name : selectedComponents()) {
+        if (m_model->layout(name).direction != direction)
+            names.append(name);
+    }
+    if (names.isEmpty())
+        return;
+    if (names.size() == 1) {
+        push(new SetDirectionCommand(m_model, names.first(), direction));
+        return;
+    }
+    auto *macro = new QUndoCommand(tr("Turn Components"));
+    for (const QString &name : std::as_const(names))
+        new SetDirectionCommand(m_model, name, direction, macro);
+    push(macro);
+}
+
+void SystemScene::alignSelection(Alignment alignment)
+{
+    if (MoveComponentsCommand *command
+        = alignComponentsCommand(m_model, selectedComponents(), alignment))
+        push(command);
+}
+
+bool SystemScene::renameComponent(const QString &oldName, const QString &newName)
+{
+    const QString name = newName.trimmed();
+    if (name == oldName)
+        return true;
+    if (name.isEmpty() || m_model->hasComponent(name) || !m_model->hasComponent(oldName)) {
+        const QString reason = name.isEmpty()
+            ? tr("An instance name cannot be empty.")
+            : tr("There is already a component called \"%1\".").arg(name);
+        emit statusMessage(reason);
+        return false;
+    }
+    push(new RenameComponentCommand(m_model, oldName, name));
+    return true;
+}
+
+QString SystemScene::addComponent(const Profile::RtcProfile &rtc, const QString &pathUri,
+                                  const QPointF &position)
+{
+    const QString name = m_model->uniqueInstanceName(componentTypeName({}, &rtc));
+    const Profile::RtsComponent component = componentFromRtcProfile(rtc, name, pathUri, position);
+    auto *command = new AddComponentCommand(m_model, component, rtc);
+    push(command);
+    return m_model->hasComponent(name) ? name : QString();
+}
+
+void SystemScene::connectPorts(const ConnectionCheck &check, const ConnectorSettings &settings)
+{
+    if (!check.allowed || check.kind != ConnectorKind::Data)
+        return;
+    push(new ConnectCommand(m_model,
+                            makeDataConnector(*m_model, check.source, check.target, settings)));
+}
+
+void SystemScene::connectServicePorts(const ConnectionCheck &check, const QString &name)
+{
+    if (!check.allowed || check.kind != ConnectorKind::Service)
+        return;
+    push(new ConnectCommand(m_model,
+                            makeServiceConnector(*m_model, check.source, check.target, name)));
+}
+
+void SystemScene::editConnector(const QString &connectorId, const ConnectorSettings &settings)
+{
+    if (EditConnectorCommand *command
+        = EditConnectorCommand::fromSettings(m_model, connectorId, settings))
+        push(command);
+}
+
+void SystemScene::commitMoves()
+{
+    QHash<QString, QPointF> positions;
+    for (auto it = m_components.cbegin(); it != m_components.cend(); ++it) {
+        if (it.value()->pos() != m_model->layout(it.key()).position)
+            positions.insert(it.key(), it.value()->pos());
+    }
+    if (!positions.isEmpty())
+        push(new MoveComponentsCommand(m_model, positions));
+}
+
+} // namespace SystemEditor
