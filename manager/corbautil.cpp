@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+#include "corbautil.h"
+
+#include <cstdio>
+#include <random>
+
+namespace Runtime {
+
+void nvSet(SDOPackage::NVList &list, const std::string &name, const std::string &value)
+{
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        if (name == static_cast<const char *>(list[i].name)) {
+            list[i].value <<= value.c_str();
+            return;
+        }
+    }
+    const CORBA::ULong n = list.length();
+    list.length(n + 1);
+    list[n].name = name.c_str();
+    list[n].value <<= value.c_str();
+}
+
+std::string nvString(const SDOPackage::NVList &list, const std::string &name)
+{
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        if (name != static_cast<const char *>(list[i].name))
+            continue;
+        const char *text = nullptr;
+        if (list[i].value >>= text)
+            return text;
+        return {};
+    }
+    return {};
+}
+
+bool nvContains(const SDOPackage::NVList &list, const std::string &name)
+{
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        if (name == static_cast<const char *>(list[i].name))
+            return true;
+    }
+    return false;
+}
+
+Properties nvToProperties(const SDOPackage::NVList &list)
+{
+    Properties result;
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        const char *text = nullptr;
+        if (list[i].value >>= text)
+            result.set(static_cast<const char *>(list[i].name), text);
+    }
+    return result;
+}
+
+SDOPackage::NVList propertiesToNv(const Properties &properties)
+{
+    SDOPackage::NVList list;
+    list.length(CORBA::ULong(properties.entries().size()));
+    CORBA::ULong i = 0;
+    for (const auto &[key, value] : properties.entries()) {
+        list[i].name = key.c_str();
+        list[i].value <<= value.c_str();
+        ++i;
+    }
+    return list;
+}
+
+std::string newUuid()
+{
+    static thread_local std::mt19937_64 engine{std::random_device{}()};
+    const uint64_t high = engine();
+    const uint64_t low = engine();
+    char text[40];
+    std::snprintf(text, sizeof text, "%08x-%04x-4%03x-%04x-%012llx", unsigned(high >> 32),
+                  unsigned((high >> 16) & 0xffff), unsigned(high & 0x0fff),
+                  unsigned(((low >> 48) & 0x3fff) | 0x8000), (unsigned long long)(low & 0xffffffffffffULL));
+    return text;
+}
+
+void releaseServant(PortableServer::POA_ptr poa, PortableServer::ServantBase *servant)
+{
+    if (!servant)
+        return;
+    try {
+        PortableServer::ObjectId_var id = poa->servant_to_id(servant);
+        poa->deactivate_object(id);
+    } catch (const CORBA::Exception &) {
+        // Never activated or already gone: only our own reference remains to drop.
+    }
+    servant->_remove_ref();
+}
+
+CORBA::ORB_var theOrb()
+{
+    // ORB_init hands back the ORB already initialised in this process.
+    int argc = 0;
+    return CORBA::ORB_init(argc, nullptr);
+}
+
+std::string describeException(const CORBA::Exception &e)
+{
+    std::string text = e._name();
+    if (const auto *system = CORBA::SystemException::_downcast(&e)) {
+        const char *minor = system->NP_minorString();
+        if (minor)
+            text += std::string(" (") + minor + ')';
+    }
+    return text;
+}
+
+} // namespace Runtime

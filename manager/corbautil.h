@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "properties.h"
+
+#include <SDOPackage.hh>
+
+#include <string>
+
+namespace Runtime {
+
+/// Appends (or replaces) @p name = string @p value in @p list.
+void nvSet(SDOPackage::NVList &list, const std::string &name, const std::string &value);
+/// The string value of @p name in @p list; empty when absent or not a string.
+std::string nvString(const SDOPackage::NVList &list, const std::string &name);
+/// True when @p list has an entry @p name.
+bool nvContains(const SDOPackage::NVList &list, const std::string &name);
+/// Every string entry of @p list as properties (non-string values are skipped).
+Properties nvToProperties(const SDOPackage::NVList &list);
+/// Properties as an NVList of strings.
+SDOPackage::NVList propertiesToNv(const Properties &properties);
+
+/// A new universally unique id (random, RFC 4122 version 4 text form).
+std::string newUuid();
+
+/**
+ * Deactivates @p servant in @p poa (the POA drops its reference once in-flight calls finish) and
+ * drops the creator's reference. Never throws.
+ */
+void releaseServant(PortableServer::POA_ptr poa, PortableServer::ServantBase *servant);
+
+/// The process's ORB (initialised earlier by the runtime's owner).
+CORBA::ORB_var theOrb();
+
+/// One-line text of a CORBA exception for error messages.
+std::string describeException(const CORBA::Exception &e);
+
+} // namespace Runtime

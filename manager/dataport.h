@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "portbase.h"
+#include "ringbuffer.h"
+
+// The standard data types come first: repositoryId<T>() finds their Any operators by ordinary lookup.
+#include <BasicDataType.hh>
+#include <ExtendedDataTypes.hh>
+#include <InterfaceDataTypes.hh>
+#include <RTC.hh>
+
+#include <string>
+
+namespace Runtime {
+
+/**
+ * What data ports share: the OpenRTM port profile properties and the check of a connector profile
+ * (`dataport.interface_type` corba_cdr, `dataflow_type` push|pull, `subscription_type`, `data_type`).
+ */
+class DataPortBase : public PortBase
+{
+public:
+    /// @p portType is DataInPort or DataOutPort; @p dataType the repository id of the sample type.
+    DataPortBase(const std::string &name, const std::string &portType, const std::string &dataType);
+    const std::string &dataType() const { return m_dataType; }
+
+protected:
+    /// Empty when the profile fits this port; else why not. @p pull tells the data flow.
+    std::string checkProfile(const Properties &connectorProperties, bool *pull) const;
+
+private:
+    std::string m_dataType;
+};
+
+/// Marshals @p value as CDR in the given byte order.
+template <typename T>
+CdrBytes marshal(const T &value, bool littleEndian)
+{
+    cdrMemoryStream stream;
+    stream.setByteSwapFlag(littleEndian);
+    value >>= stream;
+    const auto *begin = static_cast<const unsigned char *>(stream.bufPtr());
+    return CdrBytes(begin, begin + stream.bufSize());
+}
+
+/// Unmarshals @p data into @p value; false when the bytes do not hold a T.
+template <typename T>
+bool unmarshal(const CdrBytes &data, bool littleEndian, T *value)
+{
+    try {
+        cdrMemoryStream stream(const_cast<unsigned char *>(data.data()), data.size());
+        stream.setByteSwapFlag(littleEndian);
+        *value <<= stream;
+        return true;
+    } catch (const CORBA::Exception &) {
+        return false;
+    }
+}
+
+/// Repository id of an IDL type, taken from its TypeCode (declare its Any operators before this header for user types).
+template <typename T>
+std::string repositoryId()
+{
+    CORBA::Any any;
+    any <<= T();
+    CORBA::TypeCode_var type = any.type();
+    return type->id();
+}
+
+} // namespace Runtime

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+#include "inport.h"
+
+#include "corbautil.h"
+
+#include <algorithm>
+
+namespace Runtime {
+
+InPortBase::InPortBase(const std::string &name, const std::string &dataType, PortableServer::POA_ptr poa)
+    : DataPortBase(name, "DataInPort", dataType)
+    , m_poa(PortableServer::POA::_duplicate(poa))
+{
+}
+
+InPortBase::~InPortBase() = default;
+
+std::vector<std::shared_ptr<InPortConnector>> InPortBase::connectors()
+{
+    std::lock_guard lock(m_mutex);
+    return m_connectors;
+}
+
+bool InPortBase::isNew()
+{
+    for (const auto &connector : connectors()) {
+        if (connector->hasNew())
+            return true;
+    }
+    return false;
+}
+
+bool InPortBase::readMarshalled(CdrBytes *data, bool *littleEndian)
+{
+    const auto all = connectors();
+    for (const auto &connector : all) {
+        if (connector->hasNew() && connector->read(data)) {
+            *littleEndian = connector->littleEndian();
+            return true;
+        }
+    }
+    for (const auto &connector : all) {
+        if (dynamic_cast<InPortPullConnector *>(connector.get()) && connector->read(data)) {
+            *littleEndian = connector->littleEndian();
+            return true;
+        }
+    }
+    return false;
+}
+
+void InPortBase::setReceiveListener(ReceiveListener listener)
+{
+    std::lock_guard lock(m_mutex);
+    m_listener = std::move(listener);
+}
+
+void InPortBase::notifyReceived(const CdrBytes &data, bool littleEndian)
+{
+    ReceiveListener listener;
+    {
+        std::lock_guard lock(m_mutex);
+        listener = m_listener;
+    }
+    if (listener)
+        listener(data, littleEndian);
+}
+
+size_t InPortBase::connectorCount()
+{
+    std::lock_guard lock(m_mutex);
+    return m_connectors.size();
+}
+
+RTC::ReturnCode_t InPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
+{
+    const Properties p = nvToProperties(profile.properties);
+    bool pull = false;
+    if (!checkProfile(p, &pull).empty())
+        return RTC::BAD_PARAMETER;
+    if (pull)
+        return RTC::RTC_OK;
+    auto connector = std::make_shared<InPortPushConnector>(
+        std::string(profile.connector_id), p, m_poa,
+        [this](const CdrBytes &data, bool littleEndian) { notifyReceived(data, littleEndian); });
+    OpenRTM::InPortCdr_var ref = connector->reference();
+    CORBA::String_var ior = theOrb()->object_to_string(ref);
+    nvSet(profile.properties, "dataport.corba_cdr.inport_ior", std::string(ior.in()));
+    const CORBA::ULong n = profile.properties.length();
+    profile.properties.length(n + 1);
+    profile.properties[n].name = "dataport.corba_cdr.inport_ref";
+    profile.properties[n].value <<= ref.in();
+    std::lock_guard lock(m_mutex);
+    m_connectors.push_back(connector);
+    return RTC::RTC_OK;
+}
+
+RTC::ReturnCode_t InPortBase::subscribeInterfaces(const RTC::ConnectorProfile &profile)
+{
+    const Properties p = nvToProperties(profile.properties);
+    bool pull = false;
+    if (!checkProfile(p, &pull).empty())
+        return RTC::BAD_PARAMETER;
+    if (!pull)
+        return RTC::RTC_OK;
+    const std::string ior = p.value("dataport.corba_cdr.outport_ior");
+    if (ior.empty())
+        return RTC::BAD_PARAMETER;
+    try {
+        CORBA::Object_var object = theOrb()->string_to_object(ior.c_str());
+        OpenRTM::OutPortCdr_var peer = OpenRTM::OutPortCdr::_unchecked_narrow(object);
+        auto connector = std::make_shared<InPortPullConnector>(
+            std::string(profile.connector_id), p, peer,
+            [this](const CdrBytes &data, bool littleEndian) { notifyReceived(data, littleEndian); });
+        std::lock_guard lock(m_mutex);
+        m_connectors.push_back(connector);
+    } catch (const CORBA::Exception &) {
+        return RTC::BAD_PARAMETER;
+    }
+    return RTC::RTC_OK;
+}
+
+void InPortBase::unsubscribeInterfaces(const RTC::ConnectorProfile &profile)
+{
+    const std::string id(profile.connector_id);
+    std::lock_guard lock(m_mutex);
+    m_connectors.erase(std::remove_if(m_connectors.begin(), m_connectors.end(),
+                                      [&id](const auto &c) { return c->id() == id; }),
+                       m_connectors.end());
+}
+
+} // namespace Runtime

@@ -1,0 +1,390 @@
+// SPDX-License-Identifier: MIT
+#include "manager.h"
+
+#include "corbautil.h"
+#include "managerdetail.h"
+#include "managerservant.h"
+
+#include <omniORB4/omniORB.h>
+
+#include <algorithm>
+#include <iostream>
+#include <unistd.h>
+
+namespace Runtime {
+
+Manager::Manager(const Properties &config)
+    : m_config(config)
+{
+    m_isMaster = m_config.isYes("manager.is_master");
+    std::string name = m_config.value("manager.instance_name", "manager");
+    const size_t pid = name.find("%p");
+    if (pid != std::string::npos)
+        name.replace(pid, 2, std::to_string(getpid()));
+    m_instanceName = name;
+    m_config.set("manager.instance_name", name);
+}
+
+Manager::~Manager()
+{
+    if (m_shutdownThread.joinable())
+        m_shutdownThread.join();
+    if (m_watchdog.joinable())
+        m_watchdog.join();
+    if (!CORBA::is_nil(m_orb)) {
+        try {
+            m_orb->destroy();
+        } catch (const CORBA::Exception &) {
+        }
+    }
+}
+
+bool Manager::initOrb(std::string *error)
+{
+    // The listening port: corba.endpoints, else (master) the port of corba.master_manager.
+    std::string endpoint = split(m_config.value("corba.endpoints"), ',').empty()
+                               ? std::string()
+                               : split(m_config.value("corba.endpoints"), ',').front();
+    if (endpoint.empty() && m_isMaster)
+        endpoint = m_config.value("corba.master_manager", "localhost:2810");
+    std::string host;
+    int port = 0;
+    if (!endpoint.empty()) {
+        const size_t colon = endpoint.rfind(':');
+        host = colon == std::string::npos ? endpoint : endpoint.substr(0, colon);
+        const std::string portText = colon == std::string::npos ? std::string() : endpoint.substr(colon + 1);
+        if (!portText.empty() && !parseHostPort("h:" + portText, &endpoint, &port, error))
+            return false;
+    }
+    if (host == "localhost")
+        host = "127.0.0.1";
+    const std::string giop = "giop:tcp:" + host + ':' + (port ? std::to_string(port) : std::string());
+    std::vector<std::string> args = {"rtmanager", "-ORBendPoint", giop};
+    std::vector<char *> argv;
+    for (std::string &arg : args)
+        argv.push_back(arg.data());
+    int argc = int(argv.size());
+    try {
+        m_orb = CORBA::ORB_init(argc, argv.data());
+        CORBA::Object_var object = m_orb->resolve_initial_references("RootPOA");
+        m_poa = PortableServer::POA::_narrow(object);
+    } catch (const CORBA::Exception &e) {
+        *error = "cannot start the ORB on " + giop + ": " + describeException(e);
+        return false;
+    }
+    // No remote call may block forever: every outgoing call and connect is bounded.
+    omniORB::setClientCallTimeout(CORBA::ULong(std::stoul(m_config.value("corba.call_timeout", "5000"))));
+    omniORB::setClientConnectTimeout(CORBA::ULong(std::stoul(m_config.value("corba.connect_timeout", "2000"))));
+    m_address = (host.empty() || host == "0.0.0.0" ? std::string("127.0.0.1") : host) + ':' + std::to_string(port);
+    return true;
+}
+
+bool Manager::start(std::string *error)
+{
+    try {
+        if (!initOrb(error))
+            return false;
+        m_servant = new ManagerServant(*this);
+        CORBA::Object_var object = m_orb->resolve_initial_references("omniINSPOA");
+        PortableServer::POA_var ins = PortableServer::POA::_narrow(object);
+        PortableServer::ObjectId_var id = PortableServer::string_to_ObjectId("manager");
+        ins->activate_object_with_id(id, m_servant);
+        CORBA::Object_var ref = ins->id_to_reference(id);
+        m_self = RTM::Manager::_narrow(ref);
+        PortableServer::POAManager_var pm = m_poa->the_POAManager();
+        pm->activate();
+        PortableServer::POAManager_var insManager = ins->the_POAManager();
+        insManager->activate();
+    } catch (const CORBA::Exception &e) {
+        *error = "cannot serve the manager on " + m_address + ": " + describeException(e);
+        return false;
+    }
+    m_naming = std::make_unique<NamingRegistrar>(
+        m_config.isYes("naming.enable", true) ? split(m_config.value("corba.nameservers", "localhost"), ',')
+                                               : std::vector<std::string>());
+    Properties values = m_config;
+    values.set("instance_name", m_instanceName);
+    values.set("manager_name", m_config.value("manager.name", "manager"));
+    std::vector<std::string> errors;
+    for (const std::string &path :
+         NamingRegistrar::expand(m_config.value("manager.naming_formats", "%h.host_cxt/%n.mgr"), values)) {
+        if (m_naming->bind(path, m_self, &errors))
+            m_ownNames.push_back(path);
+    }
+    for (const std::string &message : errors)
+        std::cerr << "rtmanager: " << message << std::endl;
+    if (m_isMaster)
+        m_watchdog = std::thread([this] { watchSlaves(); });
+    else
+        joinMaster();
+    return true;
+}
+
+void Manager::run()
+{
+    m_orb->run();
+}
+
+void Manager::shutdown()
+{
+    std::lock_guard lock(m_mutex);
+    if (m_stopping)
+        return;
+    m_stopping = true;
+    m_slavesChanged.notify_all();
+    // orb->shutdown(true) may not run in an ORB thread, and the caller may be one.
+    m_shutdownThread = std::thread([this] {
+        cleanup();
+        m_orb->shutdown(true);
+    });
+}
+
+void Manager::cleanup()
+{
+    std::vector<std::unique_ptr<Component>> components;
+    {
+        std::lock_guard lock(m_mutex);
+        components.swap(m_components);
+    }
+    for (auto &component : components) {
+        component->servant->setExitHandler({});
+        component->servant->shutdownComponent();
+        for (const std::string &path : component->names)
+            m_naming->unbind(path);
+        releaseServant(m_poa, component->servant);
+    }
+    for (const std::string &path : m_ownNames)
+        m_naming->unbind(path);
+    if (m_isMaster) {
+        RTM::ManagerList all = slaves();
+        for (CORBA::ULong i = 0; i < all.length(); ++i) {
+            try {
+                all[i]->shutdown();
+            } catch (const CORBA::Exception &) {
+                // A slave that is already gone needs no shutdown.
+            }
+        }
+    } else {
+        leaveMaster();
+    }
+}
+
+void Manager::registerFactory(ComponentFactory factory)
+{
+    std::lock_guard lock(m_mutex);
+    const std::string id = factory.implementationId();
+    m_factories.erase(std::remove_if(m_factories.begin(), m_factories.end(),
+                                     [&id](const ComponentFactory &f) { return f.implementationId() == id; }),
+                      m_factories.end());
+    m_factories.push_back(std::move(factory));
+}
+
+bool Manager::fail(const std::string &message, std::string *error)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_lastError = message;
+    }
+    std::cerr << "rtmanager: " << message << std::endl;
+    if (error)
+        *error = message;
+    return false;
+}
+
+std::string Manager::lastError()
+{
+    std::lock_guard lock(m_mutex);
+    return m_lastError;
+}
+
+RTC::RTObject_ptr Manager::createComponent(const std::string &text, std::string *error)
+{
+    std::string message;
+    const std::optional<CreateRequest> request = CreateRequest::parse(text, &message);
+    if (!request) {
+        fail("create_component: " + message, error);
+        return RTC::RTObject::_nil();
+    }
+    if (request->managerAddress || request->managerName)
+        return createRemote(*request, error);
+    return createLocal(*request, error);
+}
+
+const ComponentFactory *Manager::findFactory(const CreateRequest &request)
+{
+    for (const ComponentFactory &factory : m_factories) {
+        const Properties &p = factory.profile;
+        if (factory.implementationId() == request.implementationId
+            && (request.vendor.empty() || p.value("vendor") == request.vendor)
+            && (request.category.empty() || p.value("category") == request.category)
+            && (request.version.empty() || p.value("version") == request.version))
+            return &factory;
+    }
+    return nullptr;
+}
+
+std::string Manager::uniqueInstanceName(const std::string &typeName)
+{
+    for (int n = 0;; ++n) {
+        const std::string name = typeName + std::to_string(n);
+        if (std::none_of(m_components.begin(), m_components.end(),
+                         [&name](const auto &c) { return c->instanceName == name; }))
+            return name;
+    }
+}
+
+RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string *error)
+{
+    std::unique_lock lock(m_mutex);
+    const ComponentFactory *factory = findFactory(request);
+    if (!factory) {
+        lock.unlock();
+        fail("create_component: unknown component type '" + request.implementationId + "'", error);
+        return RTC::RTObject::_nil();
+    }
+    Properties properties = factory->profile;
+    for (const char *key : {"exec_cxt.periodic.rate", "exec_cxt.periodic.type", "exec_cxt.transition_timeout"}) {
+        if (m_config.contains(key))
+            properties.set(key, m_config.value(key));
+    }
+    properties.merge(request.properties);
+    std::string instance = properties.value("instance_name");
+    if (instance.empty())
+        instance = uniqueInstanceName(properties.value("type_name", request.implementationId));
+    else if (std::any_of(m_components.begin(), m_components.end(),
+                         [&instance](const auto &c) { return c->instanceName == instance; })) {
+        lock.unlock();
+        fail("create_component: instance name '" + instance + "' is already in use", error);
+        return RTC::RTObject::_nil();
+    }
+    properties.set("instance_name", instance);
+    auto component = std::make_unique<Component>();
+    component->instanceName = instance;
+    component->servant = factory->create(m_poa);
+    // Reserve the name before initialising outside the lock.
+    Component *record = component.get();
+    m_components.push_back(std::move(component));
+    lock.unlock();
+
+    record->servant->setProperties(properties);
+    record->reference = record->servant->reference();
+    const RTC::ReturnCode_t result = record->servant->initialize();
+    if (result != RTC::RTC_OK) {
+        forget(record->servant);
+        fail("create_component: " + instance + " failed to initialize", error);
+        return RTC::RTObject::_nil();
+    }
+    record->servant->setExitHandler([this](RtObject *servant) { forget(servant); });
+    registerNames(*record);
+    return RTC::RTObject::_duplicate(record->reference);
+}
+
+void Manager::registerNames(Component &component)
+{
+    Properties values = component.servant->properties();
+    values.set("manager_name", m_instanceName);
+    std::vector<std::string> errors;
+    for (const std::string &path :
+         NamingRegistrar::expand(m_config.value("naming.formats", "%h.host_cxt/%n.rtc"), values)) {
+        if (m_naming->bind(path, component.reference, &errors))
+            component.names.push_back(path);
+    }
+    for (const std::string &message : errors)
+        std::cerr << "rtmanager: " << message << std::endl;
+}
+
+void Manager::forget(RtObject *servant)
+{
+    std::unique_ptr<Component> removed;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = std::find_if(m_components.begin(), m_components.end(),
+                               [servant](const auto &c) { return c->servant == servant; });
+        if (it == m_components.end())
+            return;
+        removed = std::move(*it);
+        m_components.erase(it);
+    }
+    for (const std::string &path : removed->names)
+        m_naming->unbind(path);
+    releaseServant(m_poa, removed->servant);
+}
+
+bool Manager::deleteComponent(const std::string &instanceName, std::string *error)
+{
+    RtObject *servant = nullptr;
+    {
+        std::lock_guard lock(m_mutex);
+        for (const auto &component : m_components) {
+            if (component->instanceName == instanceName)
+                servant = component->servant;
+        }
+    }
+    if (!servant)
+        return fail("delete_component: no component named '" + instanceName + "'", error);
+    if (servant->exit() != RTC::RTC_OK)
+        forget(servant);
+    return true;
+}
+
+RTC::RTCList Manager::components()
+{
+    std::lock_guard lock(m_mutex);
+    RTC::RTCList list;
+    for (const auto &component : m_components) {
+        if (CORBA::is_nil(component->reference))
+            continue;
+        const CORBA::ULong n = list.length();
+        list.length(n + 1);
+        list[n] = RTC::RTObject::_duplicate(component->reference);
+    }
+    return list;
+}
+
+RTC::RTCList Manager::componentsByName(const std::string &name)
+{
+    std::lock_guard lock(m_mutex);
+    RTC::RTCList list;
+    for (const auto &component : m_components) {
+        if (component->instanceName != name || CORBA::is_nil(component->reference))
+            continue;
+        const CORBA::ULong n = list.length();
+        list.length(n + 1);
+        list[n] = RTC::RTObject::_duplicate(component->reference);
+    }
+    return list;
+}
+
+Properties Manager::configuration()
+{
+    std::lock_guard lock(m_mutex);
+    return m_config;
+}
+
+bool Manager::setConfiguration(const std::string &key, const std::string &value)
+{
+    std::lock_guard lock(m_mutex);
+    if (key.empty())
+        return false;
+    m_config.set(key, value);
+    return true;
+}
+
+Properties Manager::profile()
+{
+    Properties p = configuration();
+    p.set("instance_name", m_instanceName);
+    p.set("name", m_config.value("manager.name", "manager"));
+    p.set("pid", std::to_string(getpid()));
+    p.set("address", m_address);
+    p.set("is_master", m_isMaster ? "YES" : "NO");
+    p.set("last_error", lastError());
+    return p;
+}
+
+RTM::Manager_ptr Manager::reference()
+{
+    return RTM::Manager::_duplicate(m_self);
+}
+
+} // namespace Runtime

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "componentfactory.h"
+#include "createrequest.h"
+#include "namingregistrar.h"
+#include "properties.h"
+
+#include <Manager.hh>
+
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <sys/types.h>
+#include <thread>
+#include <vector>
+
+namespace Runtime {
+
+class ManagerServant;
+class RtObject;
+
+/**
+ * An OpenRTM-compatible manager: owns the ORB, creates and deletes components from registered
+ * factories (built-ins and loaded modules), registers them and itself in the naming services,
+ * serves RTM::Manager at `corbaloc:iiop:<host>:<port>/manager`, and as master spawns and drives
+ * slave managers (the same executable in slave mode). Every request that fails records a message
+ * naming the problem (lastError(), also in the profile as `last_error`).
+ */
+class Manager
+{
+public:
+    /// @p config: OpenRTM's rtc.conf keys (see manager.md) already merged with command-line overrides.
+    explicit Manager(const Properties &config);
+    ~Manager();
+    Manager(const Manager &) = delete;
+    Manager &operator=(const Manager &) = delete;
+
+    /// Initialises the ORB on the configured endpoint and starts serving; false with @p error on failure.
+    bool start(std::string *error);
+    /// Serves until shutdown() finishes.
+    void run();
+    /// Deletes components, unregisters names, leaves the master, stops the ORB. Returns at once.
+    void shutdown();
+
+    void registerFactory(ComponentFactory factory);
+    /// Creates per `Type?k=v&…` (locally or on a slave); nil and @p error when it fails.
+    RTC::RTObject_ptr createComponent(const std::string &request, std::string *error);
+    bool deleteComponent(const std::string &instanceName, std::string *error);
+    RTC::RTCList components();
+    RTC::RTCList componentsByName(const std::string &name);
+
+    bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
+    bool unloadModule(const std::string &path, std::string *error);
+    std::vector<Properties> loadableModules();
+    std::vector<Properties> loadedModules();
+    std::vector<Properties> factoryProfiles();
+
+    bool isMaster() const { return m_isMaster; }
+    RTM::ManagerList masters();
+    RTM::ManagerList slaves();
+    bool addMaster(RTM::Manager_ptr manager);
+    bool removeMaster(RTM::Manager_ptr manager);
+    bool addSlave(RTM::Manager_ptr manager);
+    bool removeSlave(RTM::Manager_ptr manager);
+
+    Properties configuration();
+    bool setConfiguration(const std::string &key, const std::string &value);
+    /// Configuration plus `instance_name`, `pid`, `address`, `is_master`, `last_error`.
+    Properties profile();
+    std::string lastError();
+    /// Records @p message as the last error (and prints it) and returns false.
+    bool fail(const std::string &message, std::string *error);
+    /// `host:port` this manager listens on.
+    std::string address() const { return m_address; }
+    RTM::Manager_ptr reference();
+
+private:
+    struct Component;
+    struct Slave;
+    struct Module;
+
+    // manager.cpp
+    bool initOrb(std::string *error);
+    RTC::RTObject_ptr createLocal(const CreateRequest &request, std::string *error);
+    const ComponentFactory *findFactory(const CreateRequest &request);
+    std::string uniqueInstanceName(const std::string &typeName);
+    void forget(RtObject *component);
+    void registerNames(Component &component);
+    void cleanup();
+
+    // managerslaves.cpp
+    RTC::RTObject_ptr createRemote(const CreateRequest &request, std::string *error);
+    RTM::Manager_ptr slaveFor(const CreateRequest &request, bool *remoteOnly, std::string *error);
+    RTM::Manager_ptr spawnSlave(const std::string &host, int port, const std::string &name, std::string *error);
+    RTM::Manager_ptr waitForSlave(pid_t pid, const std::string &address);
+    void dropSlave(RTM::Manager_ptr manager);
+    void joinMaster();
+    void leaveMaster();
+    void watchSlaves();
+    bool isLocalHost(const std::string &host) const;
+
+    Properties m_config;
+    bool m_isMaster = false;
+    std::string m_address;
+    std::string m_instanceName;
+    CORBA::ORB_var m_orb;
+    PortableServer::POA_var m_poa;
+    ManagerServant *m_servant = nullptr;
+    RTM::Manager_var m_self;
+    std::unique_ptr<NamingRegistrar> m_naming;
+    std::vector<std::string> m_ownNames;
+
+    std::mutex m_mutex;
+    std::condition_variable m_slavesChanged;
+    std::vector<ComponentFactory> m_factories;
+    std::vector<std::unique_ptr<Component>> m_components;
+    std::vector<std::unique_ptr<Slave>> m_slaves;
+    std::vector<std::unique_ptr<Module>> m_modules;
+    RTM::ManagerList m_masters;
+    std::string m_lastError;
+    bool m_stopping = false;
+    std::thread m_shutdownThread;
+    std::thread m_watchdog;
+};
+
+} // namespace Runtime

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// Records the Manager keeps about its components, slaves and modules (private to manager/*.cpp).
+#pragma once
+
+#include "manager.h"
+#include "rtobject.h"
+
+namespace Runtime {
+
+struct Manager::Component
+{
+    RtObject *servant = nullptr;
+    RTC::RTObject_var reference;
+    std::string instanceName;
+    std::vector<std::string> names; ///< Naming paths it was bound under.
+};
+
+struct Manager::Slave
+{
+    RTM::Manager_var reference;
+    std::string name;    ///< manager.instance_name of the slave.
+    std::string address; ///< host:port it serves on.
+    pid_t pid = 0;       ///< Its process id (from its profile).
+};
+
+struct Manager::Module
+{
+    std::string path;
+    std::string initFunction;
+    void *handle = nullptr;
+};
+
+} // namespace Runtime

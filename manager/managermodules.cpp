@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: MIT
+// Loadable modules: shared libraries written against this runtime whose init function
+// (`extern "C" void <Name>Init(Runtime::Manager *)`) registers component factories.
+#include "managerdetail.h"
+
+#include <algorithm>
+#include <dirent.h>
+#include <dlfcn.h>
+#include <sys/stat.h>
+
+namespace Runtime {
+
+namespace {
+
+bool isFile(const std::string &path)
+{
+    struct stat info{};
+    return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+std::string baseName(const std::string &path)
+{
+    std::string name = path.substr(path.rfind('/') + 1);
+    const size_t dot = name.find('.');
+    if (dot != std::string::npos)
+        name = name.substr(0, dot);
+    if (name.compare(0, 3, "lib") == 0 && name.size() > 3)
+        name = name.substr(3);
+    return name;
+}
+
+} // namespace
+
+/// Module functions have this signature (OpenRTM's `void XInit(RTC::Manager*)` with our manager).
+using ModuleInit = void (*)(Manager *);
+
+bool Manager::loadModule(const std::string &requested, const std::string &initFunction, std::string *error)
+{
+    if (requested.empty())
+        return fail("load_module: no module path given", error);
+    // Relative names are looked up in manager.modules.load_path, with or without ".so".
+    std::vector<std::string> candidates;
+    for (const std::string &name : {requested, requested + ".so"}) {
+        if (name.front() == '/')
+            candidates.push_back(name);
+        for (const std::string &dir : split(m_config.value("manager.modules.load_path", "."), ','))
+            candidates.push_back(dir + '/' + name);
+    }
+    auto found = std::find_if(candidates.begin(), candidates.end(), isFile);
+    if (found == candidates.end())
+        return fail("load_module: no module file '" + requested + "'", error);
+    const std::string path = *found;
+    {
+        std::lock_guard lock(m_mutex);
+        for (const auto &module : m_modules) {
+            if (module->path == path)
+                return fail("load_module: '" + path + "' is already loaded", error);
+        }
+    }
+    void *handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle)
+        return fail(std::string("load_module: '") + path + "' is not a loadable module: " + dlerror(), error);
+    const std::string function = initFunction.empty() ? baseName(path) + "Init" : initFunction;
+    auto init = reinterpret_cast<ModuleInit>(dlsym(handle, function.c_str()));
+    if (!init) {
+        dlclose(handle);
+        return fail("load_module: '" + path + "' has no init function '" + function + "'", error);
+    }
+    const size_t before = m_factories.size();
+    init(this);
+    std::lock_guard lock(m_mutex);
+    for (size_t i = before; i < m_factories.size(); ++i)
+        m_factories[i].modulePath = path;
+    m_modules.push_back(std::make_unique<Module>(Module{path, function, handle}));
+    return true;
+}
+
+bool Manager::unloadModule(const std::string &path, std::string *error)
+{
+    std::lock_guard lock(m_mutex);
+    auto it = std::find_if(m_modules.begin(), m_modules.end(), [&path](const auto &m) {
+        return m->path == path || baseName(m->path) == baseName(path);
+    });
+    if (it == m_modules.end()) {
+        m_lastError = "unload_module: '" + path + "' is not loaded";
+        if (error)
+            *error = m_lastError;
+        return false;
+    }
+    const std::string modulePath = (*it)->path;
+    // Components made from the module may still run its code: the library stays mapped, but
+    // its types can no longer be created and it is no longer listed.
+    m_factories.erase(std::remove_if(m_factories.begin(), m_factories.end(),
+                                     [&modulePath](const ComponentFactory &f) { return f.modulePath == modulePath; }),
+                      m_factories.end());
+    m_modules.erase(it);
+    return true;
+}
+
+std::vector<Properties> Manager::loadableModules()
+{
+    std::vector<Properties> result;
+    for (const std::string &dir : split(m_config.value("manager.modules.load_path", "."), ',')) {
+        DIR *d = opendir(dir.c_str());
+        if (!d)
+            continue;
+        while (dirent *entry = readdir(d)) {
+            const std::string name = entry->d_name;
+            if (name.size() < 4 || name.compare(name.size() - 3, 3, ".so") != 0)
+                continue;
+            Properties p;
+            p.set("module_file_name", name);
+            p.set("module_file_path", dir + '/' + name);
+            p.set("language", "C++");
+            result.push_back(p);
+        }
+        closedir(d);
+    }
+    return result;
+}
+
+std::vector<Properties> Manager::loadedModules()
+{
+    std::lock_guard lock(m_mutex);
+    std::vector<Properties> result;
+    for (const auto &module : m_modules) {
+        Properties p;
+        p.set("file_path", module->path);
+        p.set("module_file_path", module->path);
+        p.set("init_function", module->initFunction);
+        p.set("language", "C++");
+        result.push_back(p);
+    }
+    return result;
+}
+
+std::vector<Properties> Manager::factoryProfiles()
+{
+    std::lock_guard lock(m_mutex);
+    std::vector<Properties> result;
+    for (const ComponentFactory &factory : m_factories) {
+        Properties p = factory.profile;
+        if (!factory.modulePath.empty())
+            p.set("module_file_path", factory.modulePath);
+        result.push_back(p);
+    }
+    return result;
+}
+
+} // namespace Runtime

@@ -1,0 +1,337 @@
+// SPDX-License-Identifier: MIT
+// Master/slave side of the Manager: spawning slave processes, finding them by address or name,
+// forwarding create requests, joining the master and dropping slaves that died.
+#include "corbautil.h"
+#include "managerdetail.h"
+
+#include <omniORB4/omniORB.h>
+
+#include <algorithm>
+#include <csignal>
+#include <iostream>
+#include <netinet/in.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace Runtime {
+
+namespace {
+
+// A port nobody listens on right now, for a slave we start ourselves.
+int freePort()
+{
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    int port = 0;
+    if (fd >= 0 && bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0
+        && getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length) == 0)
+        port = ntohs(address.sin_port);
+    if (fd >= 0)
+        close(fd);
+    return port;
+}
+
+std::string normalizedHost(const std::string &host)
+{
+    return host == "localhost" || host == "0.0.0.0" ? std::string("127.0.0.1") : host;
+}
+
+bool unreachable(const CORBA::Exception &e)
+{
+    return CORBA::TRANSIENT::_downcast(&e) || CORBA::COMM_FAILURE::_downcast(&e)
+           || CORBA::OBJECT_NOT_EXIST::_downcast(&e) || CORBA::TIMEOUT::_downcast(&e);
+}
+
+} // namespace
+
+bool Manager::isLocalHost(const std::string &host) const
+{
+    const std::string h = normalizedHost(host);
+    return h == "127.0.0.1" || h == hostName() || h == m_address.substr(0, m_address.rfind(':'));
+}
+
+RTC::RTObject_ptr Manager::createRemote(const CreateRequest &request, std::string *error)
+{
+    const std::string forwarded = request.toStringWithoutManager();
+    // One retry: a slave found dead on the first call is dropped and (if ours to start) restarted.
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        bool remoteOnly = false;
+        RTM::Manager_var target = slaveFor(request, &remoteOnly, error);
+        if (CORBA::is_nil(target)) {
+            if (error && error->empty())
+                fail("create_component: no manager for the request", error);
+            return RTC::RTObject::_nil();
+        }
+        if (target->_is_equivalent(m_self))
+            return createLocal(request, error);
+        try {
+            RTC::RTObject_var created = target->create_component(forwarded.c_str());
+            if (!CORBA::is_nil(created))
+                return created._retn();
+            RTM::ManagerProfile_var profile = target->get_profile();
+            fail("create_component on " + nvString(profile->properties, "address") + ": "
+                     + nvString(profile->properties, "last_error"),
+                 error);
+            return RTC::RTObject::_nil();
+        } catch (const CORBA::Exception &e) {
+            if (remoteOnly || !unreachable(e) || attempt == 1) {
+                fail("create_component: manager unreachable: " + describeException(e), error);
+                return RTC::RTObject::_nil();
+            }
+            dropSlave(target);
+        }
+    }
+    return RTC::RTObject::_nil();
+}
+
+RTM::Manager_ptr Manager::slaveFor(const CreateRequest &request, bool *remoteOnly, std::string *error)
+{
+    if (request.managerAddress) {
+        std::string host;
+        int port = 0;
+        std::string message;
+        if (!parseHostPort(*request.managerAddress, &host, &port, &message)) {
+            fail("create_component: " + message, error);
+            return RTM::Manager::_nil();
+        }
+        const std::string address = normalizedHost(host) + ':' + std::to_string(port);
+        if (address == m_address)
+            return RTM::Manager::_duplicate(m_self);
+        {
+            std::lock_guard lock(m_mutex);
+            for (const auto &slave : m_slaves) {
+                if (slave->address == address)
+                    return RTM::Manager::_duplicate(slave->reference);
+            }
+        }
+        if (isLocalHost(host))
+            return spawnSlave(normalizedHost(host), port, "manager_%p", error);
+        // Someone else's manager on another host: use it directly, without making it our slave.
+        *remoteOnly = true;
+        CORBA::Object_var object = m_orb->string_to_object(("corbaloc:iiop:" + address + "/manager").c_str());
+        return RTM::Manager::_unchecked_narrow(object);
+    }
+    const std::string name = *request.managerName;
+    if (name == m_instanceName)
+        return RTM::Manager::_duplicate(m_self);
+    if (name != "manager_%p") {
+        std::lock_guard lock(m_mutex);
+        for (const auto &slave : m_slaves) {
+            if (slave->name == name)
+                return RTM::Manager::_duplicate(slave->reference);
+        }
+    }
+    return spawnSlave("127.0.0.1", freePort(), name, error);
+}
+
+RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const std::string &name, std::string *error)
+{
+    if (!m_isMaster) {
+        fail("create_component: only a master manager starts slaves", error);
+        return RTM::Manager::_nil();
+    }
+    const std::string address = host + ':' + std::to_string(port);
+    std::vector<std::string> args = {"rtmanager"};
+    for (const auto &[key, value] : configuration().entries()) {
+        if (key == "manager.is_master" || key == "corba.endpoints" || key == "corba.master_manager"
+            || key == "manager.instance_name")
+            continue;
+        args.insert(args.end(), {"-o", key + '=' + value});
+    }
+    args.insert(args.end(), {"-o", "manager.is_master=NO", "-o", "corba.master_manager=" + m_address, "-o",
+                             "corba.endpoints=" + address, "-o", "manager.instance_name=" + name});
+    std::vector<char *> argv;
+    for (std::string &arg : args)
+        argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        // The slave goes down with its master, so no process outlives a killed master.
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        execv("/proc/self/exe", argv.data());
+        _exit(127);
+    }
+    if (pid < 0) {
+        fail("create_component: cannot start a slave manager", error);
+        return RTM::Manager::_nil();
+    }
+    RTM::Manager_var slave = waitForSlave(pid, address);
+    if (CORBA::is_nil(slave))
+        fail("create_component: slave manager at " + address + " did not start", error);
+    return slave._retn();
+}
+
+RTM::Manager_ptr Manager::waitForSlave(pid_t pid, const std::string &address)
+{
+    const auto deadline = std::chrono::steady_clock::now()
+                          + std::chrono::milliseconds(std::stol(m_config.value("manager.slave_start_timeout", "10000")));
+    std::unique_lock lock(m_mutex);
+    while (!m_stopping) {
+        for (const auto &slave : m_slaves) {
+            if (slave->address == address || slave->pid == pid)
+                return RTM::Manager::_duplicate(slave->reference);
+        }
+        // Woken by add_slave_manager; the short bound notices a child that died on start.
+        if (m_slavesChanged.wait_for(lock, std::chrono::milliseconds(100)) == std::cv_status::timeout) {
+            if (kill(pid, 0) != 0 || waitpid(pid, nullptr, WNOHANG) == pid
+                || std::chrono::steady_clock::now() > deadline)
+                return RTM::Manager::_nil();
+        }
+    }
+    return RTM::Manager::_nil();
+}
+
+bool Manager::addSlave(RTM::Manager_ptr manager)
+{
+    if (CORBA::is_nil(manager))
+        return false;
+    auto slave = std::make_unique<Slave>();
+    slave->reference = RTM::Manager::_duplicate(manager);
+    omniORB::setClientCallTimeout(slave->reference, 2000);
+    try {
+        RTM::ManagerProfile_var profile = manager->get_profile();
+        slave->name = nvString(profile->properties, "instance_name");
+        slave->address = nvString(profile->properties, "address");
+        slave->pid = pid_t(std::stol("0" + nvString(profile->properties, "pid")));
+    } catch (const CORBA::Exception &) {
+        return false;
+    }
+    std::lock_guard lock(m_mutex);
+    for (const auto &existing : m_slaves) {
+        if (existing->address == slave->address)
+            return true;
+    }
+    m_slaves.push_back(std::move(slave));
+    m_slavesChanged.notify_all();
+    return true;
+}
+
+bool Manager::removeSlave(RTM::Manager_ptr manager)
+{
+    if (CORBA::is_nil(manager))
+        return false;
+    dropSlave(manager);
+    return true;
+}
+
+void Manager::dropSlave(RTM::Manager_ptr manager)
+{
+    std::lock_guard lock(m_mutex);
+    m_slaves.erase(std::remove_if(m_slaves.begin(), m_slaves.end(),
+                                  [manager](const auto &slave) {
+                                      try {
+                                          return bool(slave->reference->_is_equivalent(manager));
+                                      } catch (const CORBA::Exception &) {
+                                          return false;
+                                      }
+                                  }),
+                   m_slaves.end());
+    m_slavesChanged.notify_all();
+}
+
+RTM::ManagerList Manager::slaves()
+{
+    std::lock_guard lock(m_mutex);
+    RTM::ManagerList list;
+    list.length(CORBA::ULong(m_slaves.size()));
+    for (CORBA::ULong i = 0; i < list.length(); ++i)
+        list[i] = RTM::Manager::_duplicate(m_slaves[i]->reference);
+    return list;
+}
+
+RTM::ManagerList Manager::masters()
+{
+    std::lock_guard lock(m_mutex);
+    return m_masters;
+}
+
+bool Manager::addMaster(RTM::Manager_ptr manager)
+{
+    if (CORBA::is_nil(manager))
+        return false;
+    std::lock_guard lock(m_mutex);
+    const CORBA::ULong n = m_masters.length();
+    m_masters.length(n + 1);
+    m_masters[n] = RTM::Manager::_duplicate(manager);
+    return true;
+}
+
+bool Manager::removeMaster(RTM::Manager_ptr manager)
+{
+    std::lock_guard lock(m_mutex);
+    RTM::ManagerList kept;
+    for (CORBA::ULong i = 0; i < m_masters.length(); ++i) {
+        if (m_masters[i]->_is_equivalent(manager))
+            continue;
+        const CORBA::ULong n = kept.length();
+        kept.length(n + 1);
+        kept[n] = m_masters[i];
+    }
+    const bool removed = kept.length() != m_masters.length();
+    m_masters = kept;
+    return removed;
+}
+
+void Manager::joinMaster()
+{
+    const std::string master = m_config.value("corba.master_manager");
+    if (master.empty())
+        return;
+    try {
+        CORBA::Object_var object = m_orb->string_to_object(("corbaloc:iiop:" + master + "/manager").c_str());
+        RTM::Manager_var manager = RTM::Manager::_narrow(object);
+        if (CORBA::is_nil(manager))
+            return;
+        addMaster(manager);
+        manager->add_slave_manager(m_self);
+    } catch (const CORBA::Exception &e) {
+        std::cerr << "rtmanager: cannot join master " << master << ": " << describeException(e) << std::endl;
+    }
+}
+
+void Manager::leaveMaster()
+{
+    RTM::ManagerList all = masters();
+    for (CORBA::ULong i = 0; i < all.length(); ++i) {
+        try {
+            all[i]->remove_slave_manager(m_self);
+        } catch (const CORBA::Exception &) {
+            // The master is gone already.
+        }
+    }
+}
+
+void Manager::watchSlaves()
+{
+    const auto period = std::chrono::milliseconds(std::stol(m_config.value("manager.slave_check_interval", "500")));
+    std::unique_lock lock(m_mutex);
+    while (!m_stopping) {
+        m_slavesChanged.wait_for(lock, period);
+        if (m_stopping)
+            return;
+        std::vector<RTM::Manager_var> refs;
+        for (const auto &slave : m_slaves)
+            refs.push_back(RTM::Manager::_duplicate(slave->reference));
+        lock.unlock();
+        while (waitpid(-1, nullptr, WNOHANG) > 0) {
+        }
+        for (RTM::Manager_var &ref : refs) {
+            bool dead = false;
+            try {
+                dead = ref->_non_existent();
+            } catch (const CORBA::Exception &) {
+                dead = true;
+            }
+            if (dead)
+                dropSlave(ref);
+        }
+        lock.lock();
+    }
+}
+
+} // namespace Runtime

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "properties.h"
+
+#include <omniORB4/CORBA.h>
+
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace Runtime {
+
+/**
+ * Binds objects in CORBA naming services under OpenRTM-style paths (`host.host_cxt/Name0.rtc`),
+ * creating the contexts on the way, and unbinds them again. Servers are `host[:port]` (2809 by
+ * default). A server that cannot be reached is reported, never waited on beyond the ORB's timeouts.
+ */
+class NamingRegistrar
+{
+public:
+    explicit NamingRegistrar(const std::vector<std::string> &servers);
+
+    /// Binds @p object at @p path on every server; errors name the server and the problem.
+    bool bind(const std::string &path, CORBA::Object_ptr object, std::vector<std::string> *errors);
+    /// Unbinds @p path everywhere (missing names are fine).
+    void unbind(const std::string &path);
+
+    /**
+     * Expands an OpenRTM naming format: %h host, %n instance name, %p pid, %M manager name,
+     * %c category, %t type name, %v vendor, %% a percent sign. Several formats are comma-separated.
+     */
+    static std::vector<std::string> expand(const std::string &formats, const Properties &values);
+
+private:
+    std::vector<std::string> m_servers;
+};
+
+/// This machine's host name.
+std::string hostName();
+
+} // namespace Runtime

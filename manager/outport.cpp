@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#include "outport.h"
+
+#include "corbautil.h"
+
+#include <algorithm>
+
+namespace Runtime {
+
+OutPortBase::OutPortBase(const std::string &name, const std::string &dataType, PortableServer::POA_ptr poa)
+    : DataPortBase(name, "DataOutPort", dataType)
+    , m_poa(PortableServer::POA::_duplicate(poa))
+{
+}
+
+OutPortBase::~OutPortBase() = default;
+
+void OutPortBase::writeMarshalled(const std::function<CdrBytes(bool littleEndian)> &marshalIn)
+{
+    std::vector<std::shared_ptr<OutPortConnector>> connectors;
+    {
+        std::lock_guard lock(m_mutex);
+        connectors = m_connectors;
+    }
+    CdrBytes little;
+    CdrBytes big;
+    bool haveLittle = false;
+    bool haveBig = false;
+    for (const auto &connector : connectors) {
+        // Marshal once per byte order in use, not once per connection.
+        if (connector->littleEndian()) {
+            if (!haveLittle)
+                little = marshalIn(true), haveLittle = true;
+            connector->write(little);
+        } else {
+            if (!haveBig)
+                big = marshalIn(false), haveBig = true;
+            connector->write(big);
+        }
+    }
+}
+
+size_t OutPortBase::connectorCount()
+{
+    std::lock_guard lock(m_mutex);
+    return m_connectors.size();
+}
+
+RTC::ReturnCode_t OutPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
+{
+    const Properties p = nvToProperties(profile.properties);
+    bool pull = false;
+    if (!checkProfile(p, &pull).empty())
+        return RTC::BAD_PARAMETER;
+    if (!pull)
+        return RTC::RTC_OK;
+    auto connector = std::make_shared<OutPortPullConnector>(std::string(profile.connector_id), p, m_poa);
+    OpenRTM::OutPortCdr_var ref = connector->reference();
+    CORBA::String_var ior = theOrb()->object_to_string(ref);
+    nvSet(profile.properties, "dataport.corba_cdr.outport_ior", std::string(ior.in()));
+    // OpenRTM also passes the reference itself as an Any.
+    const CORBA::ULong n = profile.properties.length();
+    profile.properties.length(n + 1);
+    profile.properties[n].name = "dataport.corba_cdr.outport_ref";
+    profile.properties[n].value <<= ref.in();
+    std::lock_guard lock(m_mutex);
+    m_connectors.push_back(connector);
+    return RTC::RTC_OK;
+}
+
+RTC::ReturnCode_t OutPortBase::subscribeInterfaces(const RTC::ConnectorProfile &profile)
+{
+    const Properties p = nvToProperties(profile.properties);
+    bool pull = false;
+    if (!checkProfile(p, &pull).empty())
+        return RTC::BAD_PARAMETER;
+    if (pull)
+        return RTC::RTC_OK;
+    const std::string ior = p.value("dataport.corba_cdr.inport_ior");
+    if (ior.empty())
+        return RTC::BAD_PARAMETER;
+    try {
+        CORBA::Object_var object = theOrb()->string_to_object(ior.c_str());
+        OpenRTM::InPortCdr_var peer = OpenRTM::InPortCdr::_unchecked_narrow(object);
+        if (CORBA::is_nil(peer))
+            return RTC::BAD_PARAMETER;
+        auto connector = std::make_shared<OutPortPushConnector>(std::string(profile.connector_id), p, peer);
+        std::lock_guard lock(m_mutex);
+        m_connectors.push_back(connector);
+    } catch (const CORBA::Exception &) {
+        return RTC::BAD_PARAMETER;
+    }
+    return RTC::RTC_OK;
+}
+
+void OutPortBase::unsubscribeInterfaces(const RTC::ConnectorProfile &profile)
+{
+    const std::string id(profile.connector_id);
+    std::shared_ptr<OutPortConnector> removed;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = std::find_if(m_connectors.begin(), m_connectors.end(),
+                               [&id](const auto &c) { return c->id() == id; });
+        if (it == m_connectors.end())
+            return;
+        removed = *it;
+        m_connectors.erase(it);
+    }
+    // The connector's threads are joined here, outside the lock.
+    removed.reset();
+}
+
+} // namespace Runtime

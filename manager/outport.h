@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "dataport.h"
+#include "outportconnector.h"
+
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace Runtime {
+
+/// Untyped data OutPort: hands marshalled samples to every connection.
+class OutPortBase : public DataPortBase
+{
+public:
+    OutPortBase(const std::string &name, const std::string &dataType, PortableServer::POA_ptr poa);
+    ~OutPortBase() override;
+
+    /// Sends one sample; @p marshalIn produces its bytes in the requested byte order (called at most twice).
+    void writeMarshalled(const std::function<CdrBytes(bool littleEndian)> &marshalIn);
+    size_t connectorCount();
+
+protected:
+    RTC::ReturnCode_t publishInterfaces(RTC::ConnectorProfile &profile) override;
+    RTC::ReturnCode_t subscribeInterfaces(const RTC::ConnectorProfile &profile) override;
+    void unsubscribeInterfaces(const RTC::ConnectorProfile &profile) override;
+
+private:
+    PortableServer::POA_var m_poa;
+    std::mutex m_mutex;
+    std::vector<std::shared_ptr<OutPortConnector>> m_connectors;
+};
+
+/// Typed OutPort (`OutPort<RTC::TimedLong>`), as OpenRTM's OutPort<T>.
+template <typename T>
+class OutPort : public OutPortBase
+{
+public:
+    OutPort(const std::string &name, PortableServer::POA_ptr poa)
+        : OutPortBase(name, repositoryId<T>(), poa)
+    {
+    }
+    void write(const T &value)
+    {
+        writeMarshalled([&value](bool littleEndian) { return marshal(value, littleEndian); });
+    }
+};
+
+} // namespace Runtime

@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+#include "outportconnector.h"
+
+#include "corbautil.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace Runtime {
+
+Properties bufferProperties(const Properties &connectorProperties, const std::string &side)
+{
+    Properties result = connectorProperties.subtree("dataport.buffer");
+    result.merge(connectorProperties.subtree("dataport." + side + ".buffer"));
+    return result;
+}
+
+OutPortConnector::OutPortConnector(const std::string &id, const Properties &p)
+    : m_id(id)
+    , m_littleEndian(p.value("dataport.serializer.cdr.endian", "little").find("big") != 0)
+{
+}
+
+bool OutPortPushConnector::parseMode(const std::string &text, Mode *mode)
+{
+    std::string t = trimmed(text);
+    std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (t == "flush" || t.empty())
+        *mode = Mode::Flush;
+    else if (t == "new")
+        *mode = Mode::New;
+    else if (t == "periodic")
+        *mode = Mode::Periodic;
+    else
+        return false;
+    return true;
+}
+
+OutPortPushConnector::OutPortPushConnector(const std::string &id, const Properties &p,
+                                           OpenRTM::InPortCdr_ptr peer)
+    : OutPortConnector(id, p)
+    , m_peer(OpenRTM::InPortCdr::_duplicate(peer))
+    , m_buffer(bufferProperties(p, "outport"))
+{
+    parseMode(p.value("dataport.subscription_type", "flush"), &m_mode);
+    try {
+        m_pushRate = std::max(0.001, std::stod(p.value("dataport.publisher.push_rate", "100")));
+        m_skip = std::max(0, std::stoi(p.value("dataport.publisher.push_skip", "0")));
+    } catch (...) {
+        // Unreadable numbers keep OpenRTM's defaults.
+    }
+    m_pushPolicy = p.value("dataport.publisher.push_policy", "new");
+    if (m_mode == Mode::New)
+        m_thread = std::thread([this] { runNew(); });
+    else if (m_mode == Mode::Periodic)
+        m_thread = std::thread([this] { runPeriodic(); });
+}
+
+OutPortPushConnector::~OutPortPushConnector()
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_stopping = true;
+    }
+    m_wake.notify_all();
+    m_buffer.close();
+    if (m_thread.joinable())
+        m_thread.join();
+}
+
+void OutPortPushConnector::write(const CdrBytes &data)
+{
+    switch (m_mode) {
+    case Mode::Flush:
+        send(data);
+        break;
+    case Mode::New: {
+        std::lock_guard lock(m_mutex);
+        m_newest = data;
+        m_hasNewest = true;
+        m_wake.notify_all();
+        break;
+    }
+    case Mode::Periodic:
+        m_buffer.write(data);
+        break;
+    }
+}
+
+void OutPortPushConnector::send(const CdrBytes &data)
+{
+    OpenRTM::CdrData cdr(CORBA::ULong(data.size()));
+    cdr.length(CORBA::ULong(data.size()));
+    std::copy(data.begin(), data.end(), cdr.get_buffer());
+    try {
+        m_peer->put(cdr);
+    } catch (const CORBA::Exception &) {
+        // The peer is gone or slow; the sample is lost as with OpenRTM's CONNECTION_LOST.
+    }
+}
+
+void OutPortPushConnector::runNew()
+{
+    std::unique_lock lock(m_mutex);
+    for (;;) {
+        m_wake.wait(lock, [this] { return m_stopping || m_hasNewest; });
+        if (m_stopping)
+            return;
+        CdrBytes data = std::move(m_newest);
+        m_hasNewest = false;
+        lock.unlock();
+        send(data);
+        lock.lock();
+    }
+}
+
+void OutPortPushConnector::pushBuffered()
+{
+    CdrBytes data;
+    if (m_pushPolicy == "all") {
+        while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
+            send(data);
+    } else if (m_pushPolicy == "fifo") {
+        if (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
+            send(data);
+    } else if (m_pushPolicy == "skip") {
+        while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok) {
+            if (m_skipped++ % (m_skip + 1) == 0)
+                send(data);
+        }
+    } else { // "new": only the newest of what piled up
+        bool any = false;
+        while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
+            any = true;
+        if (any)
+            send(data);
+    }
+}
+
+void OutPortPushConnector::runPeriodic()
+{
+    const auto period = std::chrono::duration<double>(1.0 / m_pushRate);
+    auto next = std::chrono::steady_clock::now();
+    std::unique_lock lock(m_mutex);
+    while (!m_stopping) {
+        lock.unlock();
+        pushBuffered();
+        lock.lock();
+        next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+        m_wake.wait_until(lock, next, [this] { return m_stopping; });
+    }
+}
+
+OpenRTM::PortStatus OutPortCdrServant::get(OpenRTM::CdrData_out data)
+{
+    CdrBytes bytes;
+    const RingBuffer::Status status = m_buffer->read(&bytes);
+    data = new OpenRTM::CdrData(CORBA::ULong(bytes.size()));
+    data->length(CORBA::ULong(bytes.size()));
+    std::copy(bytes.begin(), bytes.end(), data->get_buffer());
+    switch (status) {
+    case RingBuffer::Status::Ok:
+        return OpenRTM::PORT_OK;
+    case RingBuffer::Status::Empty:
+        return OpenRTM::BUFFER_EMPTY;
+    case RingBuffer::Status::Timeout:
+        return OpenRTM::BUFFER_TIMEOUT;
+    case RingBuffer::Status::Full:
+        break;
+    }
+    return OpenRTM::PORT_ERROR;
+}
+
+OutPortPullConnector::OutPortPullConnector(const std::string &id, const Properties &p,
+                                           PortableServer::POA_ptr poa)
+    : OutPortConnector(id, p)
+    , m_buffer(std::make_shared<RingBuffer>(bufferProperties(p, "outport")))
+    , m_poa(PortableServer::POA::_duplicate(poa))
+    , m_servant(new OutPortCdrServant(m_buffer))
+{
+}
+
+OutPortPullConnector::~OutPortPullConnector()
+{
+    m_buffer->close();
+    releaseServant(m_poa, m_servant);
+}
+
+void OutPortPullConnector::write(const CdrBytes &data)
+{
+    m_buffer->write(data);
+}
+
+OpenRTM::OutPortCdr_ptr OutPortPullConnector::reference()
+{
+    return m_servant->_this();
+}
+
+} // namespace Runtime

@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: MIT
+#include "portbase.h"
+
+#include "corbautil.h"
+
+namespace Runtime {
+
+namespace {
+
+// "IDL:RTC/TimedLong:1.0" → "RTC::TimedLong"; "RTC::TimedLong" and "TimedLong" stay as they are.
+std::string canonicalType(const std::string &name)
+{
+    std::string type = name;
+    if (type.compare(0, 4, "IDL:") == 0) {
+        type = type.substr(4);
+        const size_t colon = type.rfind(':');
+        if (colon != std::string::npos)
+            type = type.substr(0, colon);
+        std::string scoped;
+        for (char c : type)
+            scoped += c == '/' ? std::string("::") : std::string(1, c);
+        type = scoped;
+    }
+    return type;
+}
+
+std::string lastSegment(const std::string &scoped)
+{
+    const size_t pos = scoped.rfind("::");
+    return pos == std::string::npos ? scoped : scoped.substr(pos + 2);
+}
+
+} // namespace
+
+bool sameDataType(const std::string &a, const std::string &b)
+{
+    const std::string ca = canonicalType(a);
+    const std::string cb = canonicalType(b);
+    if (ca == cb)
+        return true;
+    // A bare name (OpenRTM 1.x style "TimedLong") matches any module's type of that name.
+    const bool aBare = ca.find("::") == std::string::npos;
+    const bool bBare = cb.find("::") == std::string::npos;
+    return (aBare || bBare) && lastSegment(ca) == lastSegment(cb);
+}
+
+PortBase::PortBase(const std::string &name)
+    : m_name(name)
+{
+    m_profile.name = name.c_str();
+}
+
+PortBase::~PortBase() = default;
+
+void PortBase::setOwner(RTC::RTObject_ptr owner, const std::string &instanceName)
+{
+    std::lock_guard lock(m_mutex);
+    m_profile.owner = RTC::RTObject::_duplicate(owner);
+    m_profile.name = (instanceName + '.' + m_name).c_str();
+}
+
+void PortBase::setProperty(const std::string &key, const std::string &value)
+{
+    std::lock_guard lock(m_mutex);
+    nvSet(m_profile.properties, key, value);
+}
+
+RTC::PortService_ptr PortBase::reference()
+{
+    std::lock_guard lock(m_mutex);
+    if (CORBA::is_nil(m_self)) {
+        m_self = _this();
+        m_profile.port_ref = RTC::PortService::_duplicate(m_self);
+    }
+    return RTC::PortService::_duplicate(m_self);
+}
+
+size_t PortBase::connectionCount()
+{
+    std::lock_guard lock(m_mutex);
+    return m_profile.connector_profiles.length();
+}
+
+Properties PortBase::portProperties()
+{
+    std::lock_guard lock(m_mutex);
+    return nvToProperties(m_profile.properties);
+}
+
+std::string PortBase::profileName()
+{
+    std::lock_guard lock(m_mutex);
+    return std::string(m_profile.name);
+}
+
+void PortBase::addInterfaceProfile(const std::string &instanceName, const std::string &typeName, bool provided)
+{
+    std::lock_guard lock(m_mutex);
+    const CORBA::ULong n = m_profile.interfaces.length();
+    m_profile.interfaces.length(n + 1);
+    m_profile.interfaces[n].instance_name = instanceName.c_str();
+    m_profile.interfaces[n].type_name = typeName.c_str();
+    m_profile.interfaces[n].polarity = provided ? RTC::PROVIDED : RTC::REQUIRED;
+}
+
+RTC::PortProfile *PortBase::get_port_profile()
+{
+    RTC::PortService_var self = reference();
+    std::lock_guard lock(m_mutex);
+    return new RTC::PortProfile(m_profile);
+}
+
+RTC::ConnectorProfileList *PortBase::get_connector_profiles()
+{
+    std::lock_guard lock(m_mutex);
+    return new RTC::ConnectorProfileList(m_profile.connector_profiles);
+}
+
+RTC::ConnectorProfile *PortBase::get_connector_profile(const char *connector_id)
+{
+    RTC::ConnectorProfile profile;
+    if (!findProfile(connector_id ? connector_id : "", &profile))
+        return new RTC::ConnectorProfile;
+    return new RTC::ConnectorProfile(profile);
+}
+
+RTC::ReturnCode_t PortBase::connect(RTC::ConnectorProfile &connector_profile)
+{
+    if (connector_profile.ports.length() == 0)
+        return RTC::BAD_PARAMETER;
+    std::string id(connector_profile.connector_id);
+    if (id.empty()) {
+        id = newUuid();
+        connector_profile.connector_id = id.c_str();
+    } else {
+        RTC::ConnectorProfile existing;
+        if (findProfile(id, &existing))
+            return RTC::BAD_PARAMETER;
+    }
+    try {
+        const RTC::ReturnCode_t result = connector_profile.ports[0]->notify_connect(connector_profile);
+        if (result != RTC::RTC_OK)
+            disconnect(id.c_str());
+        return result;
+    } catch (const CORBA::Exception &) {
+        disconnect(id.c_str());
+        return RTC::RTC_ERROR;
+    }
+}
+
+RTC::ReturnCode_t PortBase::disconnect(const char *connector_id)
+{
+    RTC::ConnectorProfile profile;
+    if (!connector_id || !findProfile(connector_id, &profile))
+        return RTC::BAD_PARAMETER;
+    if (profile.ports.length() == 0)
+        return notify_disconnect(connector_id);
+    try {
+        return profile.ports[0]->notify_disconnect(connector_id);
+    } catch (const CORBA::Exception &) {
+        // The first port's process is gone: disconnect our side anyway.
+        return notify_disconnect(connector_id);
+    }
+}
+
+RTC::ReturnCode_t PortBase::disconnect_all()
+{
+    RTC::ConnectorProfileList profiles;
+    {
+        std::lock_guard lock(m_mutex);
+        profiles = m_profile.connector_profiles;
+    }
+    RTC::ReturnCode_t result = RTC::RTC_OK;
+    for (CORBA::ULong i = 0; i < profiles.length(); ++i) {
+        if (disconnect(profiles[i].connector_id) != RTC::RTC_OK)
+            result = RTC::RTC_ERROR;
+    }
+    return result;
+}
+
+RTC::ReturnCode_t PortBase::notify_connect(RTC::ConnectorProfile &connector_profile)
+{
+    RTC::ReturnCode_t result = publishInterfaces(connector_profile);
+    if (result != RTC::RTC_OK)
+        return result;
+    const int index = ownIndex(connector_profile);
+    if (index >= 0 && CORBA::ULong(index + 1) < connector_profile.ports.length()) {
+        try {
+            result = connector_profile.ports[index + 1]->notify_connect(connector_profile);
+        } catch (const CORBA::Exception &) {
+            result = RTC::RTC_ERROR;
+        }
+    }
+    if (result == RTC::RTC_OK)
+        result = subscribeInterfaces(connector_profile);
+    if (result != RTC::RTC_OK) {
+        unsubscribeInterfaces(connector_profile);
+        return result;
+    }
+    storeProfile(connector_profile);
+    return RTC::RTC_OK;
+}
+
+RTC::ReturnCode_t PortBase::notify_disconnect(const char *connector_id)
+{
+    RTC::ConnectorProfile profile;
+    if (!connector_id || !findProfile(connector_id, &profile))
+        return RTC::BAD_PARAMETER;
+    unsubscribeInterfaces(profile);
+    eraseProfile(connector_id);
+    // Pass it on; a dead port in the chain is skipped so the others still disconnect.
+    const int index = ownIndex(profile);
+    for (CORBA::ULong next = CORBA::ULong(index + 1); index >= 0 && next < profile.ports.length(); ++next) {
+        try {
+            profile.ports[next]->notify_disconnect(connector_id);
+            break;
+        } catch (const CORBA::Exception &) {
+        }
+    }
+    return RTC::RTC_OK;
+}
+
+int PortBase::ownIndex(const RTC::ConnectorProfile &profile)
+{
+    RTC::PortService_var self = reference();
+    for (CORBA::ULong i = 0; i < profile.ports.length(); ++i) {
+        try {
+            if (self->_is_equivalent(profile.ports[i]))
+                return int(i);
+        } catch (const CORBA::Exception &) {
+        }
+    }
+    return -1;
+}
+
+bool PortBase::findProfile(const std::string &id, RTC::ConnectorProfile *profile)
+{
+    std::lock_guard lock(m_mutex);
+    for (CORBA::ULong i = 0; i < m_profile.connector_profiles.length(); ++i) {
+        if (id == static_cast<const char *>(m_profile.connector_profiles[i].connector_id)) {
+            *profile = m_profile.connector_profiles[i];
+            return true;
+        }
+    }
+    return false;
+}
+
+void PortBase::storeProfile(const RTC::ConnectorProfile &profile)
+{
+    const std::string id(profile.connector_id);
+    eraseProfile(id);
+    std::lock_guard lock(m_mutex);
+    const CORBA::ULong n = m_profile.connector_profiles.length();
+    m_profile.connector_profiles.length(n + 1);
+    m_profile.connector_profiles[n] = profile;
+}
+
+void PortBase::eraseProfile(const std::string &id)
+{
+    std::lock_guard lock(m_mutex);
+    RTC::ConnectorProfileList kept;
+    for (CORBA::ULong i = 0; i < m_profile.connector_profiles.length(); ++i) {
+        if (id == static_cast<const char *>(m_profile.connector_profiles[i].connector_id))
+            continue;
+        const CORBA::ULong n = kept.length();
+        kept.length(n + 1);
+        kept[n] = m_profile.connector_profiles[i];
+    }
+    m_profile.connector_profiles = kept;
+}
+
+} // namespace Runtime

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "properties.h"
+
+#include <RTC.hh>
+
+#include <mutex>
+#include <string>
+
+namespace Runtime {
+
+/**
+ * RTC::PortService as OpenRTM-aist implements it. connect() gives the profile an id and starts the
+ * notify_connect chain at ports[0]; each port publishes its interfaces (adds IOR keys), passes the
+ * profile on to the next port, then subscribes to what the later ports published and stores the
+ * profile. Subclasses say what they publish and subscribe.
+ */
+class PortBase : public virtual POA_RTC::PortService
+{
+public:
+    explicit PortBase(const std::string &name);
+    ~PortBase() override;
+
+    /// Short name (`out`); the profile name is `<instance>.<name>`.
+    const std::string &name() const { return m_name; }
+    /// Sets the owner and the profile name; called when the component adds the port.
+    void setOwner(RTC::RTObject_ptr owner, const std::string &instanceName);
+    /// Port profile properties (`port.port_type`, `dataport.*`).
+    void setProperty(const std::string &key, const std::string &value);
+    /// This port's object reference (activates the servant in the root POA on first use).
+    RTC::PortService_ptr reference();
+    /// Number of stored connections.
+    size_t connectionCount();
+
+    RTC::PortProfile *get_port_profile() override;
+    RTC::ConnectorProfileList *get_connector_profiles() override;
+    RTC::ConnectorProfile *get_connector_profile(const char *connector_id) override;
+    RTC::ReturnCode_t connect(RTC::ConnectorProfile &connector_profile) override;
+    RTC::ReturnCode_t disconnect(const char *connector_id) override;
+    RTC::ReturnCode_t disconnect_all() override;
+    RTC::ReturnCode_t notify_connect(RTC::ConnectorProfile &connector_profile) override;
+    RTC::ReturnCode_t notify_disconnect(const char *connector_id) override;
+
+protected:
+    /// Adds this port's own interface keys to @p profile.
+    virtual RTC::ReturnCode_t publishInterfaces(RTC::ConnectorProfile &profile) = 0;
+    /// Connects to what the other ports published in @p profile.
+    virtual RTC::ReturnCode_t subscribeInterfaces(const RTC::ConnectorProfile &profile) = 0;
+    /// Drops what publish/subscribe set up for the connector.
+    virtual void unsubscribeInterfaces(const RTC::ConnectorProfile &profile) = 0;
+    /// Adds an interface entry to the port profile (service ports).
+    void addInterfaceProfile(const std::string &instanceName, const std::string &typeName, bool provided);
+    /// Port profile properties as given so far.
+    Properties portProperties();
+    /// Profile name `<instance>.<port>`.
+    std::string profileName();
+
+private:
+    int ownIndex(const RTC::ConnectorProfile &profile);
+    bool findProfile(const std::string &id, RTC::ConnectorProfile *profile);
+    void storeProfile(const RTC::ConnectorProfile &profile);
+    void eraseProfile(const std::string &id);
+
+    std::string m_name;
+    std::mutex m_mutex;
+    RTC::PortProfile m_profile;
+    RTC::PortService_var m_self;
+};
+
+/// True when two data type names denote the same type (`IDL:RTC/TimedLong:1.0`, `RTC::TimedLong`, `TimedLong`).
+bool sameDataType(const std::string &a, const std::string &b);
+
+} // namespace Runtime

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace Runtime {
+
+/**
+ * Flat OpenRTM-style key/value properties ("a.b.c" → "value"), as read from rtc.conf, passed to
+ * create_component and kept by components and managers. Keys keep their text; order is by key.
+ */
+class Properties
+{
+public:
+    /// Value of @p key, or @p fallback when the key is absent.
+    std::string value(const std::string &key, const std::string &fallback = {}) const;
+    bool contains(const std::string &key) const;
+    void set(const std::string &key, const std::string &value);
+    void remove(const std::string &key);
+    /// Copies every entry of @p other over this one.
+    void merge(const Properties &other);
+    /// Entries below "prefix." with the prefix taken off.
+    Properties subtree(const std::string &prefix) const;
+    /// True when the value of @p key is YES/TRUE/1/ON (any case); @p fallback when absent.
+    bool isYes(const std::string &key, bool fallback = false) const;
+    const std::map<std::string, std::string> &entries() const { return m_entries; }
+
+    /**
+     * Reads rtc.conf text: `key: value` or `key = value` lines, `#` comments, a trailing backslash
+     * continues a line. Malformed lines are reported in @p errors ("LINE: message").
+     */
+    static Properties parseConf(const std::string &text, std::vector<std::string> *errors = nullptr);
+
+private:
+    std::map<std::string, std::string> m_entries;
+};
+
+/// Trims ASCII white space at both ends.
+std::string trimmed(const std::string &text);
+/// Splits at @p separator; with @p skipEmpty, trimmed empty parts are dropped.
+std::vector<std::string> split(const std::string &text, char separator, bool skipEmpty = true);
+
+} // namespace Runtime

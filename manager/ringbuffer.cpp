@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+#include "ringbuffer.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace Runtime {
+
+namespace {
+
+std::string lower(std::string text)
+{
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+}
+
+std::chrono::milliseconds seconds(const std::string &text, std::chrono::milliseconds fallback)
+{
+    try {
+        return std::chrono::milliseconds(long(std::stod(text) * 1000.0));
+    } catch (...) {
+        return fallback;
+    }
+}
+
+} // namespace
+
+RingBuffer::RingBuffer(const Properties &p)
+{
+    try {
+        const long length = std::stol(p.value("length", "8"));
+        m_length = size_t(std::max(1L, length));
+    } catch (...) {
+        m_length = 8;
+    }
+    const std::string full = lower(p.value("write.full_policy", "overwrite"));
+    m_fullPolicy = full == "block" ? FullPolicy::Block
+                   : full == "do_nothing" ? FullPolicy::DoNothing
+                                           : FullPolicy::Overwrite;
+    const std::string empty = lower(p.value("read.empty_policy", "readback"));
+    m_emptyPolicy = empty == "block" ? EmptyPolicy::Block
+                    : empty == "do_nothing" ? EmptyPolicy::DoNothing
+                                             : EmptyPolicy::Readback;
+    m_writeTimeout = seconds(p.value("write.timeout", "1.0"), m_writeTimeout);
+    m_readTimeout = seconds(p.value("read.timeout", "1.0"), m_readTimeout);
+}
+
+RingBuffer::Status RingBuffer::write(const CdrBytes &data)
+{
+    std::unique_lock lock(m_mutex);
+    if (m_samples.size() >= m_length) {
+        switch (m_fullPolicy) {
+        case FullPolicy::Overwrite:
+            m_samples.pop_front();
+            break;
+        case FullPolicy::DoNothing:
+            return Status::Full;
+        case FullPolicy::Block:
+            if (!m_changed.wait_for(lock, m_writeTimeout,
+                                    [this] { return m_closed || m_samples.size() < m_length; })
+                || m_closed)
+                return Status::Timeout;
+            break;
+        }
+    }
+    m_samples.push_back(data);
+    m_changed.notify_all();
+    return Status::Ok;
+}
+
+RingBuffer::Status RingBuffer::read(CdrBytes *data)
+{
+    std::unique_lock lock(m_mutex);
+    if (m_samples.empty()) {
+        switch (m_emptyPolicy) {
+        case EmptyPolicy::Readback:
+            if (!m_hasLast)
+                return Status::Empty;
+            *data = m_last;
+            return Status::Ok;
+        case EmptyPolicy::DoNothing:
+            return Status::Empty;
+        case EmptyPolicy::Block:
+            if (!m_changed.wait_for(lock, m_readTimeout, [this] { return m_closed || !m_samples.empty(); })
+                || m_samples.empty())
+                return Status::Timeout;
+            break;
+        }
+    }
+    *data = std::move(m_samples.front());
+    m_samples.pop_front();
+    m_last = *data;
+    m_hasLast = true;
+    m_changed.notify_all();
+    return Status::Ok;
+}
+
+size_t RingBuffer::readable() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_samples.size();
+}
+
+void RingBuffer::close()
+{
+    std::lock_guard lock(m_mutex);
+    m_closed = true;
+    m_changed.notify_all();
+}
+
+} // namespace Runtime

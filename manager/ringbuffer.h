@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "properties.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <vector>
+
+namespace Runtime {
+
+/// Marshalled data as it travels between ports.
+using CdrBytes = std::vector<unsigned char>;
+
+/**
+ * A bounded buffer of marshalled samples with OpenRTM's policies, configured from connector
+ * properties below `buffer.` (`length`, `write.full_policy` overwrite|do_nothing|block,
+ * `write.timeout`, `read.empty_policy` readback|do_nothing|block, `read.timeout`; timeouts in seconds).
+ * Thread-safe.
+ */
+class RingBuffer
+{
+public:
+    enum class Status { Ok, Full, Empty, Timeout };
+
+    explicit RingBuffer(const Properties &bufferProperties = {});
+
+    /// Stores @p data according to the write policy.
+    Status write(const CdrBytes &data);
+    /// Takes the oldest sample according to the read policy ("readback" repeats the last one).
+    Status read(CdrBytes *data);
+    /// Unread samples.
+    size_t readable() const;
+    size_t length() const { return m_length; }
+    /// Wakes blocked readers/writers; they return Timeout.
+    void close();
+
+private:
+    enum class FullPolicy { Overwrite, DoNothing, Block };
+    enum class EmptyPolicy { Readback, DoNothing, Block };
+
+    mutable std::mutex m_mutex;
+    std::condition_variable m_changed;
+    std::deque<CdrBytes> m_samples;
+    CdrBytes m_last;
+    bool m_hasLast = false;
+    bool m_closed = false;
+    size_t m_length = 8;
+    FullPolicy m_fullPolicy = FullPolicy::Overwrite;
+    EmptyPolicy m_emptyPolicy = EmptyPolicy::Readback;
+    std::chrono::milliseconds m_writeTimeout{1000};
+    std::chrono::milliseconds m_readTimeout{1000};
+};
+
+} // namespace Runtime

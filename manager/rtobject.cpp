@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: MIT
+#include "rtobject.h"
+
+#include "corbautil.h"
+#include "executioncontext.h"
+#include "sdoconfiguration.h"
+
+namespace Runtime {
+
+RtObject::RtObject(PortableServer::POA_ptr poa)
+    : m_poa(PortableServer::POA::_duplicate(poa))
+{
+}
+
+RtObject::~RtObject() = default;
+
+void RtObject::setProperties(const Properties &properties)
+{
+    std::lock_guard lock(m_mutex);
+    m_properties.merge(properties);
+}
+
+Properties RtObject::properties()
+{
+    std::lock_guard lock(m_mutex);
+    return m_properties;
+}
+
+std::string RtObject::instanceName()
+{
+    std::lock_guard lock(m_mutex);
+    return m_properties.value("instance_name");
+}
+
+RTC::RTObject_ptr RtObject::reference()
+{
+    std::lock_guard lock(m_mutex);
+    if (CORBA::is_nil(m_self)) {
+        PortableServer::ObjectId_var id = m_poa->activate_object(this);
+        CORBA::Object_var object = m_poa->id_to_reference(id);
+        m_self = RTC::RTObject::_narrow(object);
+    }
+    return RTC::RTObject::_duplicate(m_self);
+}
+
+void RtObject::setExitHandler(std::function<void(RtObject *)> handler)
+{
+    std::lock_guard lock(m_mutex);
+    m_exitHandler = std::move(handler);
+}
+
+void RtObject::setStatus(const std::string &name, const std::string &value)
+{
+    std::lock_guard lock(m_mutex);
+    m_status[name] = value;
+}
+
+std::string RtObject::status(const std::string &name)
+{
+    std::lock_guard lock(m_mutex);
+    auto it = m_status.find(name);
+    return it == m_status.end() ? std::string() : it->second;
+}
+
+void RtObject::addPort(PortBase *port)
+{
+    RTC::RTObject_var self = reference();
+    port->setOwner(self, instanceName());
+    RTC::PortService_var activated = port->reference();
+    std::lock_guard lock(m_mutex);
+    m_ports.push_back(port);
+}
+
+ServicePort *RtObject::addServicePort(const std::string &name)
+{
+    auto *port = new ServicePort(name, m_poa);
+    addPort(port);
+    return port;
+}
+
+std::vector<PortBase *> RtObject::portList()
+{
+    std::lock_guard lock(m_mutex);
+    return m_ports;
+}
+
+// --- ComponentAction: the CORBA callbacks run the user hooks, as RTObject_impl does. ---
+
+RTC::ReturnCode_t RtObject::on_initialize() { return onInitialize(); }
+RTC::ReturnCode_t RtObject::on_finalize() { return onFinalize(); }
+RTC::ReturnCode_t RtObject::on_startup(RTC::ExecutionContextHandle_t h) { return onStartup(h); }
+RTC::ReturnCode_t RtObject::on_shutdown(RTC::ExecutionContextHandle_t h) { return onShutdown(h); }
+RTC::ReturnCode_t RtObject::on_deactivated(RTC::ExecutionContextHandle_t h) { return onDeactivated(h); }
+RTC::ReturnCode_t RtObject::on_aborting(RTC::ExecutionContextHandle_t h) { return onAborting(h); }
+RTC::ReturnCode_t RtObject::on_error(RTC::ExecutionContextHandle_t h) { return onError(h); }
+RTC::ReturnCode_t RtObject::on_reset(RTC::ExecutionContextHandle_t h) { return onReset(h); }
+RTC::ReturnCode_t RtObject::on_execute(RTC::ExecutionContextHandle_t h) { return onExecute(h); }
+RTC::ReturnCode_t RtObject::on_rate_changed(RTC::ExecutionContextHandle_t h) { return onRateChanged(h); }
+
+RTC::ReturnCode_t RtObject::on_activated(RTC::ExecutionContextHandle_t h)
+{
+    // Configuration changes reach the variables in the EC thread, as in OpenRTM.
+    m_config.update();
+    return onActivated(h);
+}
+
+RTC::ReturnCode_t RtObject::on_state_update(RTC::ExecutionContextHandle_t h)
+{
+    const RTC::ReturnCode_t result = onStateUpdate(h);
+    m_config.update();
+    return result;
+}
+
+// --- LightweightRTObject ---
+
+RTC::ReturnCode_t RtObject::initialize()
+{
+    {
+        std::lock_guard lock(m_mutex);
+        if (!m_created)
+            return RTC::PRECONDITION_NOT_MET;
+    }
+    m_config.applyProperties(properties());
+    if (m_sdoConfig == nullptr) {
+        m_sdoConfig = new SdoConfiguration(m_config);
+        PortableServer::ObjectId_var id = m_poa->activate_object(m_sdoConfig);
+    }
+    const RTC::ReturnCode_t result = onInitialize();
+    if (result != RTC::RTC_OK)
+        return result;
+    m_config.update();
+    startOwnedContext();
+    std::lock_guard lock(m_mutex);
+    m_created = false;
+    return RTC::RTC_OK;
+}
+
+void RtObject::startOwnedContext()
+{
+    double rate = 1000.0;
+    double timeout = 0.5;
+    try {
+        rate = std::stod(properties().value("exec_cxt.periodic.rate", "1000"));
+        timeout = std::stod(properties().value("exec_cxt.transition_timeout", "0.5"));
+    } catch (...) {
+        // An unreadable rate keeps OpenRTM's default of 1000 Hz.
+    }
+    auto *context = new PeriodicExecutionContext(rate, timeout);
+    PortableServer::ObjectId_var id = m_poa->activate_object(context);
+    RTC::RTObject_var self = reference();
+    context->addOwner(self, 0);
+    {
+        std::lock_guard lock(m_mutex);
+        m_ownedContexts.push_back(context);
+    }
+    context->start();
+}
+
+RTC::ReturnCode_t RtObject::finalize()
+{
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_created)
+            return RTC::PRECONDITION_NOT_MET;
+        // The OMG spec forbids finalizing while still attached to someone else's context.
+        if (!m_participating.empty())
+            return RTC::PRECONDITION_NOT_MET;
+        if (m_finalized)
+            return RTC::RTC_OK;
+    }
+    releaseAll();
+    return RTC::RTC_OK;
+}
+
+void RtObject::releaseAll()
+{
+    std::vector<PeriodicExecutionContext *> contexts;
+    std::vector<PortBase *> ports;
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_finalized)
+            return;
+        m_finalized = true;
+        contexts.swap(m_ownedContexts);
+        ports.swap(m_ports);
+    }
+    for (PeriodicExecutionContext *context : contexts)
+        context->halt(false);
+    for (PortBase *port : ports)
+        port->disconnect_all();
+    onFinalize();
+    for (PeriodicExecutionContext *context : contexts)
+        releaseServant(m_poa, context);
+    for (PortBase *port : ports)
+        releaseServant(m_poa, port);
+    releaseServant(m_poa, m_sdoConfig);
+    m_sdoConfig = nullptr;
+}
+
+CORBA::Boolean RtObject::is_alive(RTC::ExecutionContext_ptr exec_context)
+{
+    return get_context_handle(exec_context) >= 0;
+}
+
+RTC::ReturnCode_t RtObject::exit()
+{
+    std::map<RTC::ExecutionContextHandle_t, RTC::ExecutionContext_var> participating;
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_created)
+            return RTC::PRECONDITION_NOT_MET;
+        participating.swap(m_participating);
+    }
+    RTC::RTObject_var self = reference();
+    for (auto &[handle, context] : participating) {
+        try {
+            context->deactivate_component(self);
+            context->remove_component(self);
+        } catch (const CORBA::Exception &) {
+            // A context that went away no longer holds us.
+        }
+    }
+    shutdownComponent();
+    std::function<void(RtObject *)> handler;
+    {
+        std::lock_guard lock(m_mutex);
+        handler.swap(m_exitHandler);
+    }
+    if (handler)
+        handler(this);
+    return RTC::RTC_OK;
+}
+
+void RtObject::shutdownComponent()
+{
+    releaseAll();
+}
+
+RTC::ExecutionContextHandle_t RtObject::attach_context(RTC::ExecutionContext_ptr exec_context)
+{
+    std::lock_guard lock(m_mutex);
+    const RTC::ExecutionContextHandle_t handle = m_nextParticipatingHandle++;
+    m_participating[handle] = RTC::ExecutionContext::_duplicate(exec_context);
+    return handle;
+}
+
+RTC::ReturnCode_t RtObject::detach_context(RTC::ExecutionContextHandle_t exec_handle)
+{
+    std::lock_guard lock(m_mutex);
+    return m_participating.erase(exec_handle) ? RTC::RTC_OK : RTC::BAD_PARAMETER;
+}
+
+RTC::ExecutionContext_ptr RtObject::get_context(RTC::ExecutionContextHandle_t exec_handle)
+{
+    std::lock_guard lock(m_mutex);
+    if (exec_handle >= 0 && size_t(exec_handle) < m_ownedContexts.size())
+        return m_ownedContexts[size_t(exec_handle)]->_this();
+    auto it = m_participating.find(exec_handle);
+    return it == m_participating.end() ? RTC::ExecutionContext::_nil()
+                                       : RTC::ExecutionContext::_duplicate(it->second);
+}
+
+RTC::ExecutionContextList *RtObject::get_owned_contexts()
+{
+    std::lock_guard lock(m_mutex);
+    auto *list = new RTC::ExecutionContextList;
+    list->length(CORBA::ULong(m_ownedContexts.size()));
+    for (CORBA::ULong i = 0; i < list->length(); ++i)
+        (*list)[i] = m_ownedContexts[i]->_this();
+    return list;
+}
+
+RTC::ExecutionContextList *RtObject::get_participating_contexts()
+{
+    std::lock_guard lock(m_mutex);
+    auto *list = new RTC::ExecutionContextList;
+    for (const auto &entry : m_participating) {
+        const CORBA::ULong n = list->length();
+        list->length(n + 1);
+        (*list)[n] = RTC::ExecutionContext::_duplicate(entry.second);
+    }
+    return list;
+}
+
+RTC::ExecutionContextHandle_t RtObject::get_context_handle(RTC::ExecutionContext_ptr cxt)
+{
+    if (CORBA::is_nil(cxt))
+        return -1;
+    std::lock_guard lock(m_mutex);
+    for (size_t i = 0; i < m_ownedContexts.size(); ++i) {
+        RTC::ExecutionContextService_var own = m_ownedContexts[i]->_this();
+        if (own->_is_equivalent(cxt))
+            return RTC::ExecutionContextHandle_t(i);
+    }
+    for (const auto &entry : m_participating) {
+        if (entry.second->_is_equivalent(cxt))
+            return entry.first;
+    }
+    return -1;
+}
+
+} // namespace Runtime

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#include "serviceport.h"
+
+#include "corbautil.h"
+
+namespace Runtime {
+
+CORBA::Object_ptr ConsumerSlot::object()
+{
+    std::lock_guard lock(m_mutex);
+    return CORBA::Object::_duplicate(m_object);
+}
+
+void ConsumerSlot::set(CORBA::Object_ptr object)
+{
+    std::lock_guard lock(m_mutex);
+    m_object = CORBA::Object::_duplicate(object);
+}
+
+ServicePort::ServicePort(const std::string &name, PortableServer::POA_ptr poa)
+    : PortBase(name)
+    , m_poa(PortableServer::POA::_duplicate(poa))
+{
+    setProperty("port.port_type", "CorbaPort");
+}
+
+ServicePort::~ServicePort()
+{
+    for (Provider &provider : m_providers)
+        releaseServant(m_poa, provider.servant);
+}
+
+void ServicePort::registerProvider(const std::string &instanceName, const std::string &typeName,
+                                   PortableServer::ServantBase *servant)
+{
+    PortableServer::ObjectId_var id = m_poa->activate_object(servant);
+    CORBA::Object_var ref = m_poa->id_to_reference(id);
+    CORBA::String_var ior = theOrb()->object_to_string(ref);
+    {
+        std::lock_guard lock(m_mutex);
+        m_providers.push_back({instanceName, typeName, servant, std::string(ior.in())});
+    }
+    addInterfaceProfile(instanceName, typeName, true);
+}
+
+std::shared_ptr<ConsumerSlot> ServicePort::registerConsumer(const std::string &instanceName,
+                                                            const std::string &typeName)
+{
+    auto slot = std::make_shared<ConsumerSlot>();
+    {
+        std::lock_guard lock(m_mutex);
+        m_consumers.push_back({instanceName, typeName, slot, {}});
+    }
+    addInterfaceProfile(instanceName, typeName, false);
+    return slot;
+}
+
+RTC::ReturnCode_t ServicePort::publishInterfaces(RTC::ConnectorProfile &profile)
+{
+    const std::string portName = profileName();
+    std::lock_guard lock(m_mutex);
+    for (const Provider &provider : m_providers) {
+        nvSet(profile.properties, "port." + provider.typeName + '.' + provider.instanceName, provider.ior);
+        // OpenRTM 1.1+ also publishes the fully qualified provider key.
+        nvSet(profile.properties,
+              portName + ".port." + provider.typeName + ".provided." + provider.instanceName, provider.ior);
+    }
+    return RTC::RTC_OK;
+}
+
+RTC::ReturnCode_t ServicePort::subscribeInterfaces(const RTC::ConnectorProfile &profile)
+{
+    const Properties p = nvToProperties(profile.properties);
+    CORBA::ORB_var orb = theOrb();
+    std::lock_guard lock(m_mutex);
+    for (Consumer &consumer : m_consumers) {
+        std::string ior = p.value("port." + consumer.typeName + '.' + consumer.instanceName);
+        if (ior.empty()) {
+            const Properties ofType = p.subtree("port." + consumer.typeName);
+            if (ofType.entries().size() == 1)
+                ior = ofType.entries().begin()->second;
+        }
+        if (ior.empty())
+            continue; // OpenRTM leaves an unmatched consumer unconnected without failing
+        try {
+            CORBA::Object_var object = orb->string_to_object(ior.c_str());
+            consumer.slot->set(object);
+            consumer.connectorId = std::string(profile.connector_id);
+        } catch (const CORBA::Exception &) {
+            return RTC::BAD_PARAMETER;
+        }
+    }
+    return RTC::RTC_OK;
+}
+
+void ServicePort::unsubscribeInterfaces(const RTC::ConnectorProfile &profile)
+{
+    const std::string id(profile.connector_id);
+    std::lock_guard lock(m_mutex);
+    for (Consumer &consumer : m_consumers) {
+        if (consumer.connectorId == id) {
+            consumer.slot->set(CORBA::Object::_nil());
+            consumer.connectorId.clear();
+        }
+    }
+}
+
+} // namespace Runtime

@@ -1,0 +1,635 @@
+// SPDX-License-Identifier: MIT
+// The component runtime in one process: properties and create strings, buffers, the execution
+// context's state machine, configuration sets, data ports (push flush/new/periodic, pull, both
+// byte orders) and service ports, driven through their CORBA interfaces as tools would.
+#include "builtins.h"
+#include "createrequest.h"
+#include "rtobject.h"
+#include "ringbuffer.h"
+
+#include <QtTest>
+
+#include <omniORB4/omniORB.h>
+
+using namespace Runtime;
+
+namespace {
+
+/// A component whose callbacks fail on demand, to drive the EC into ERROR and back.
+class Faulty : public RtObject
+{
+public:
+    using RtObject::RtObject;
+    std::atomic<bool> failExecute{false};
+    std::atomic<bool> failReset{false};
+    std::atomic<int> activations{0};
+    std::atomic<int> executions{0};
+
+protected:
+    RTC::ReturnCode_t onActivated(RTC::ExecutionContextHandle_t) override
+    {
+        ++activations;
+        return RTC::RTC_OK;
+    }
+    RTC::ReturnCode_t onExecute(RTC::ExecutionContextHandle_t) override
+    {
+        ++executions;
+        return failExecute ? RTC::RTC_ERROR : RTC::RTC_OK;
+    }
+    RTC::ReturnCode_t onReset(RTC::ExecutionContextHandle_t) override
+    {
+        return failReset ? RTC::RTC_ERROR : RTC::RTC_OK;
+    }
+};
+
+QString statusOf(RTC::RTObject_ptr rtc, const char *name)
+{
+    SDOPackage::NVList_var list = rtc->get_status_list();
+    for (CORBA::ULong i = 0; i < list->length(); ++i) {
+        const char *text = nullptr;
+        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
+            return QString::fromUtf8(text);
+    }
+    return {};
+}
+
+long statusNumber(RTC::RTObject_ptr rtc, const char *name)
+{
+    return statusOf(rtc, name).toLong();
+}
+
+void setNv(SDOPackage::NVList &list, const char *name, const char *value)
+{
+    const CORBA::ULong n = list.length();
+    list.length(n + 1);
+    list[n].name = name;
+    list[n].value <<= value;
+}
+
+QString nv(const SDOPackage::NVList &list, const char *name)
+{
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        const char *text = nullptr;
+        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
+            return QString::fromUtf8(text);
+    }
+    return {};
+}
+
+} // namespace
+
+class TestManagerRuntime : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanup();
+    void cleanupTestCase();
+
+    void confParsing();
+    void createRequest_data();
+    void createRequest();
+    void createRequestErrors_data();
+    void createRequestErrors();
+    void ringBufferPolicies();
+    void cdrLayout();
+
+    void stateMachine();
+    void errorAndReset();
+    void rateAndProfile();
+    void configurationSets();
+    void componentProfile();
+    void dataFlow_data();
+    void dataFlow();
+    void disconnectStopsFlow();
+    void connectRejectsMismatch_data();
+    void connectRejectsMismatch();
+    void servicePort();
+
+private:
+    RtObject *create(const QString &type, const QString &instance, const Properties &extra = {});
+    RTC::ExecutionContext_ptr ownedContext(RTC::RTObject_ptr rtc);
+    RTC::ReturnCode_t connect(RTC::PortService_ptr a, RTC::PortService_ptr b, const Properties &p,
+                              RTC::ConnectorProfile *result = nullptr);
+    RTC::PortService_ptr port(RTC::RTObject_ptr rtc, const char *shortName);
+
+    CORBA::ORB_var m_orb;
+    PortableServer::POA_var m_poa;
+    std::vector<RtObject *> m_components;
+};
+
+void TestManagerRuntime::initTestCase()
+{
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
+    CORBA::Object_var object = m_orb->resolve_initial_references("RootPOA");
+    m_poa = PortableServer::POA::_narrow(object);
+    PortableServer::POAManager_var manager = m_poa->the_POAManager();
+    manager->activate();
+}
+
+void TestManagerRuntime::cleanup()
+{
+    for (RtObject *component : m_components) {
+        component->shutdownComponent();
+        PortableServer::ObjectId_var id = m_poa->servant_to_id(component);
+        m_poa->deactivate_object(id);
+        component->_remove_ref();
+    }
+    m_components.clear();
+}
+
+void TestManagerRuntime::cleanupTestCase()
+{
+    m_orb->destroy();
+}
+
+RtObject *TestManagerRuntime::create(const QString &type, const QString &instance, const Properties &extra)
+{
+    RtObject *servant = nullptr;
+    Properties properties;
+    if (type == QLatin1String("Faulty")) {
+        servant = new Faulty(m_poa);
+    } else {
+        for (const ComponentFactory &factory : builtinFactories()) {
+            if (factory.implementationId() == type.toStdString()) {
+                servant = factory.create(m_poa);
+                properties = factory.profile;
+            }
+        }
+    }
+    if (!servant)
+        return nullptr;
+    properties.set("instance_name", instance.toStdString());
+    properties.set("exec_cxt.periodic.rate", "500");
+    properties.merge(extra);
+    servant->setProperties(properties);
+    RTC::RTObject_var ref = servant->reference();
+    if (servant->initialize() != RTC::RTC_OK)
+        return nullptr;
+    m_components.push_back(servant);
+    return servant;
+}
+
+RTC::ExecutionContext_ptr TestManagerRuntime::ownedContext(RTC::RTObject_ptr rtc)
+{
+    RTC::ExecutionContextList_var list = rtc->get_owned_contexts();
+    return list->length() ? RTC::ExecutionContext::_duplicate(list[0]) : RTC::ExecutionContext::_nil();
+}
+
+RTC::PortService_ptr TestManagerRuntime::port(RTC::RTObject_ptr rtc, const char *shortName)
+{
+    RTC::PortServiceList_var ports = rtc->get_ports();
+    for (CORBA::ULong i = 0; i < ports->length(); ++i) {
+        RTC::PortProfile_var profile = ports[i]->get_port_profile();
+        const QByteArray name(profile->name);
+        if (name.endsWith(QByteArray(".") + shortName))
+            return RTC::PortService::_duplicate(ports[i]);
+    }
+    return RTC::PortService::_nil();
+}
+
+RTC::ReturnCode_t TestManagerRuntime::connect(RTC::PortService_ptr a, RTC::PortService_ptr b, const Properties &p,
+                                              RTC::ConnectorProfile *result)
+{
+    RTC::ConnectorProfile profile;
+    profile.name = "test";
+    profile.connector_id = "";
+    profile.ports.length(2);
+    profile.ports[0] = RTC::PortService::_duplicate(a);
+    profile.ports[1] = RTC::PortService::_duplicate(b);
+    for (const auto &[key, value] : p.entries())
+        setNv(profile.properties, key.c_str(), value.c_str());
+    const RTC::ReturnCode_t code = a->connect(profile);
+    if (result)
+        *result = profile;
+    return code;
+}
+
+void TestManagerRuntime::confParsing()
+{
+    std::vector<std::string> errors;
+    const Properties p = Properties::parseConf("# comment\ncorba.nameservers: localhost:2809\n"
+                                               "naming.formats = %h.host_cxt/%n.rtc\n"
+                                               "manager.modules.load_path: a,\\\n b\n"
+                                               "no separator here\n",
+                                               &errors);
+    QCOMPARE(p.value("corba.nameservers"), std::string("localhost:2809"));
+    QCOMPARE(p.value("naming.formats"), std::string("%h.host_cxt/%n.rtc"));
+    QCOMPARE(p.value("manager.modules.load_path"), std::string("a, b"));
+    QCOMPARE(errors.size(), size_t(1));
+    QVERIFY(QString::fromStdString(errors[0]).startsWith("6:"));
+    QCOMPARE(p.subtree("naming").value("formats"), std::string("%h.host_cxt/%n.rtc"));
+}
+
+void TestManagerRuntime::createRequest_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("type");
+    QTest::addColumn<QString>("address");
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("instance");
+    QTest::addColumn<QString>("forwarded");
+
+    QTest::newRow("plain") << "ConsoleIn" << "ConsoleIn" << "" << "" << "" << "ConsoleIn";
+    QTest::newRow("name last") << "ConsoleIn?instance_name=a&manager_name=s1" << "ConsoleIn" << "" << "s1" << "a"
+                               << "ConsoleIn?instance_name=a";
+    QTest::newRow("name first") << "ConsoleIn?manager_name=s1&instance_name=a" << "ConsoleIn" << "" << "s1"
+                                << "a" << "ConsoleIn?instance_name=a";
+    QTest::newRow("address middle") << "ConsoleOut?exec_cxt.periodic.rate=10&manager_address=127.0.0.1:5000&"
+                                       "instance_name=b"
+                                    << "ConsoleOut" << "127.0.0.1:5000" << "" << "b"
+                                    << "ConsoleOut?exec_cxt.periodic.rate=10&instance_name=b";
+    QTest::newRow("full id") << "RTC:AIST:example:ConsoleIn:C++:2.0.0?instance_name=c" << "ConsoleIn" << "" << ""
+                             << "c" << "RTC:AIST:example:ConsoleIn:C++:2.0.0?instance_name=c";
+}
+
+void TestManagerRuntime::createRequest()
+{
+    QFETCH(QString, text);
+    std::string error;
+    const auto request = CreateRequest::parse(text.toStdString(), &error);
+    QVERIFY2(request, error.c_str());
+    QTEST(QString::fromStdString(request->implementationId), "type");
+    QTEST(QString::fromStdString(request->managerAddress.value_or("")), "address");
+    QTEST(QString::fromStdString(request->managerName.value_or("")), "name");
+    QTEST(QString::fromStdString(request->properties.value("instance_name")), "instance");
+    QTEST(QString::fromStdString(request->toStringWithoutManager()), "forwarded");
+}
+
+void TestManagerRuntime::createRequestErrors_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("two ?") << "ConsoleIn?a=1?b=2" << "more than one '?'";
+    QTest::newRow("empty") << "?a=1" << "no component type";
+    QTest::newRow("pair") << "ConsoleIn?novalue" << "malformed parameter 'novalue'";
+    QTest::newRow("bad id") << "RTC:AIST:ConsoleIn" << "malformed component id";
+    QTest::newRow("both") << "ConsoleIn?manager_name=a&manager_address=h:1" << "both manager_address";
+}
+
+void TestManagerRuntime::createRequestErrors()
+{
+    QFETCH(QString, text);
+    QFETCH(QString, message);
+    std::string error;
+    QVERIFY(!CreateRequest::parse(text.toStdString(), &error));
+    QVERIFY2(QString::fromStdString(error).contains(message), error.c_str());
+
+    std::string host;
+    int port = 0;
+    QVERIFY(!parseHostPort("nohostport", &host, &port, &error));
+    QVERIFY(!parseHostPort("h:99999", &host, &port, &error));
+    QVERIFY(!parseHostPort("h:12x", &host, &port, &error));
+    QVERIFY(parseHostPort("h:2810", &host, &port, &error));
+    QCOMPARE(port, 2810);
+}
+
+void TestManagerRuntime::ringBufferPolicies()
+{
+    Properties p;
+    p.set("length", "2");
+    p.set("write.full_policy", "do_nothing");
+    p.set("read.empty_policy", "do_nothing");
+    RingBuffer strict(p);
+    QCOMPARE(strict.write({1}), RingBuffer::Status::Ok);
+    QCOMPARE(strict.write({2}), RingBuffer::Status::Ok);
+    QCOMPARE(strict.write({3}), RingBuffer::Status::Full);
+    CdrBytes out;
+    QCOMPARE(strict.read(&out), RingBuffer::Status::Ok);
+    QCOMPARE(out, CdrBytes{1});
+    QCOMPARE(strict.read(&out), RingBuffer::Status::Ok);
+    QCOMPARE(strict.read(&out), RingBuffer::Status::Empty);
+
+    RingBuffer overwrite(Properties::parseConf("length: 2\n"));
+    overwrite.write({1});
+    overwrite.write({2});
+    overwrite.write({3});
+    QCOMPARE(overwrite.read(&out), RingBuffer::Status::Ok);
+    QCOMPARE(out, CdrBytes{2});
+    overwrite.read(&out);
+    // readback repeats the last sample when empty
+    QCOMPARE(overwrite.read(&out), RingBuffer::Status::Ok);
+    QCOMPARE(out, CdrBytes{3});
+
+    RingBuffer blocking(Properties::parseConf("length: 1\nwrite.full_policy: block\nwrite.timeout: 0.05\n"
+                                              "read.empty_policy: block\nread.timeout: 0.05\n"));
+    QCOMPARE(blocking.read(&out), RingBuffer::Status::Timeout);
+    QCOMPARE(blocking.write({7}), RingBuffer::Status::Ok);
+    QCOMPARE(blocking.write({8}), RingBuffer::Status::Timeout);
+}
+
+void TestManagerRuntime::cdrLayout()
+{
+    // OpenRTM marshals RTC::TimedLong as tm.sec, tm.nsec, data: 3 x 4 bytes in the chosen order.
+    RTC::TimedLong sample;
+    sample.tm.sec = 1;
+    sample.tm.nsec = 2;
+    sample.data = 0x01020304;
+    const CdrBytes little = marshal(sample, true);
+    QCOMPARE(little, CdrBytes({1, 0, 0, 0, 2, 0, 0, 0, 4, 3, 2, 1}));
+    const CdrBytes big = marshal(sample, false);
+    QCOMPARE(big, CdrBytes({0, 0, 0, 1, 0, 0, 0, 2, 1, 2, 3, 4}));
+    RTC::TimedLong back;
+    QVERIFY(unmarshal(big, false, &back));
+    QCOMPARE(back.data, CORBA::Long(0x01020304));
+    QVERIFY(!unmarshal(CdrBytes{1, 2}, true, &back));
+    QCOMPARE(QString::fromStdString(repositoryId<RTC::TimedLong>()), QString("IDL:RTC/TimedLong:1.0"));
+}
+
+void TestManagerRuntime::stateMachine()
+{
+    auto *faulty = static_cast<Faulty *>(create("Faulty", "F0"));
+    QVERIFY(faulty);
+    RTC::RTObject_var rtc = faulty->reference();
+    RTC::ExecutionContext_var ec = ownedContext(rtc);
+    QVERIFY(!CORBA::is_nil(ec));
+    QVERIFY(ec->is_running());
+    QVERIFY(rtc->is_alive(ec));
+    QCOMPARE(rtc->get_context_handle(ec), 0);
+    QCOMPARE(ec->get_component_state(rtc), RTC::INACTIVE_STATE);
+    QCOMPARE(ec->deactivate_component(rtc), RTC::PRECONDITION_NOT_MET);
+    QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(rtc), RTC::ACTIVE_STATE);
+    QCOMPARE(faulty->activations.load(), 1);
+    QTRY_VERIFY(faulty->executions.load() > 5);
+    QCOMPARE(ec->activate_component(rtc), RTC::PRECONDITION_NOT_MET);
+    QCOMPARE(ec->deactivate_component(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(rtc), RTC::INACTIVE_STATE);
+    // Stopped contexts change states at once in the caller's thread.
+    QCOMPARE(ec->stop(), RTC::RTC_OK);
+    QVERIFY(!ec->is_running());
+    QCOMPARE(ec->stop(), RTC::PRECONDITION_NOT_MET);
+    QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(rtc), RTC::ACTIVE_STATE);
+    QCOMPARE(ec->start(), RTC::RTC_OK);
+    QCOMPARE(ec->get_kind(), RTC::PERIODIC);
+
+    RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
+    QCOMPARE(participating->length(), CORBA::ULong(0));
+    QCOMPARE(rtc->initialize(), RTC::PRECONDITION_NOT_MET);
+}
+
+void TestManagerRuntime::errorAndReset()
+{
+    auto *faulty = static_cast<Faulty *>(create("Faulty", "F1"));
+    QVERIFY(faulty);
+    RTC::RTObject_var rtc = faulty->reference();
+    RTC::ExecutionContext_var ec = ownedContext(rtc);
+    QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    faulty->failExecute = true;
+    QTRY_COMPARE(ec->get_component_state(rtc), RTC::ERROR_STATE);
+    faulty->failReset = true;
+    QCOMPARE(ec->reset_component(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(rtc), RTC::ERROR_STATE);
+    faulty->failReset = false;
+    faulty->failExecute = false;
+    QCOMPARE(ec->reset_component(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(rtc), RTC::INACTIVE_STATE);
+    QCOMPARE(ec->reset_component(rtc), RTC::PRECONDITION_NOT_MET);
+}
+
+void TestManagerRuntime::rateAndProfile()
+{
+    RtObject *component = create("ConsoleIn", "CI9");
+    QVERIFY(component);
+    RTC::RTObject_var rtc = component->reference();
+    RTC::ExecutionContext_var ec = ownedContext(rtc);
+    QCOMPARE(ec->get_rate(), 500.0);
+    QCOMPARE(ec->set_rate(0.0), RTC::BAD_PARAMETER);
+    QCOMPARE(ec->set_rate(20.0), RTC::RTC_OK);
+    RTC::ExecutionContextService_var service = RTC::ExecutionContextService::_narrow(ec);
+    RTC::ExecutionContextProfile_var profile = service->get_profile();
+    QCOMPARE(profile->rate, 20.0);
+    QCOMPARE(profile->kind, RTC::PERIODIC);
+    QVERIFY(profile->owner->_is_equivalent(rtc));
+    QCOMPARE(profile->participants.length(), CORBA::ULong(1));
+
+    // A second component joins the first one's context as participant.
+    RtObject *other = create("ConsoleOut", "CO9");
+    RTC::RTObject_var otherRef = other->reference();
+    QCOMPARE(ec->add_component(otherRef), RTC::RTC_OK);
+    QCOMPARE(ec->add_component(otherRef), RTC::PRECONDITION_NOT_MET);
+    RTC::ExecutionContextList_var joined = otherRef->get_participating_contexts();
+    QCOMPARE(joined->length(), CORBA::ULong(1));
+    QVERIFY(otherRef->get_context_handle(ec) >= 1000);
+    QCOMPARE(otherRef->finalize(), RTC::PRECONDITION_NOT_MET);
+    QCOMPARE(ec->remove_component(otherRef), RTC::RTC_OK);
+    joined = otherRef->get_participating_contexts();
+    QCOMPARE(joined->length(), CORBA::ULong(0));
+}
+
+void TestManagerRuntime::configurationSets()
+{
+    RtObject *component = create("ConfigSample", "CS0", Properties::parseConf("conf.default.int_param1: 77\n"));
+    QVERIFY(component);
+    RTC::RTObject_var rtc = component->reference();
+    SDOPackage::Configuration_var config = rtc->get_configuration();
+    SDOPackage::ConfigurationSetList_var sets = config->get_configuration_sets();
+    QStringList ids;
+    for (CORBA::ULong i = 0; i < sets->length(); ++i)
+        ids << QString::fromUtf8(sets[i].id.in());
+    QCOMPARE(ids, QStringList({"__constraints__", "__widget__", "default", "mode0", "mode1"}));
+    SDOPackage::ConfigurationSet_var active = config->get_active_configuration_set();
+    QCOMPARE(QByteArray(active->id), QByteArray("default"));
+    QCOMPARE(nv(active->configuration_data, "int_param1"), QString("77"));
+    QCOMPARE(statusOf(rtc, "int_param1"), QString("77"));
+    SDOPackage::ConfigurationSet_var widget = config->get_configuration_set("__widget__");
+    QCOMPARE(nv(widget->configuration_data, "int_param0"), QString("slider.1"));
+
+    // Activation reaches the variables in the EC thread once the component runs.
+    RTC::ExecutionContext_var ec = ownedContext(rtc);
+    QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    QVERIFY(config->activate_configuration_set("mode0"));
+    QTRY_COMPARE(statusOf(rtc, "int_param0"), QString("12345"));
+    QCOMPARE(statusOf(rtc, "str_param0"), QString("mode0"));
+
+    SDOPackage::ConfigurationSet edit;
+    edit.id = "mode0";
+    edit.description = "";
+    setNv(edit.configuration_data, "int_param0", "42");
+    QVERIFY(config->set_configuration_set_values(edit));
+    QTRY_COMPARE(statusOf(rtc, "int_param0"), QString("42"));
+
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, config->activate_configuration_set("__widget__"));
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, config->activate_configuration_set("nope"));
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, config->remove_configuration_set("mode0"));
+    SDOPackage::ConfigurationSet added;
+    added.id = "mine";
+    added.description = "";
+    setNv(added.configuration_data, "int_param0", "5");
+    QVERIFY(config->add_configuration_set(added));
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, config->add_configuration_set(added));
+    QVERIFY(config->remove_configuration_set("mine"));
+}
+
+void TestManagerRuntime::componentProfile()
+{
+    RtObject *component = create("SeqIn", "SI0");
+    QVERIFY(component);
+    RTC::RTObject_var rtc = component->reference();
+    RTC::ComponentProfile_var profile = rtc->get_component_profile();
+    QCOMPARE(QByteArray(profile->instance_name), QByteArray("SI0"));
+    QCOMPARE(QByteArray(profile->type_name), QByteArray("SeqIn"));
+    QCOMPARE(QByteArray(profile->vendor), QByteArray("AIST"));
+    QCOMPARE(QByteArray(profile->category), QByteArray("example"));
+    QCOMPARE(profile->port_profiles.length(), CORBA::ULong(10));
+    QCOMPARE(QByteArray(profile->port_profiles[2].name), QByteArray("SI0.Long"));
+    QCOMPARE(nv(profile->port_profiles[2].properties, "dataport.data_type"), QString("IDL:RTC/TimedLong:1.0"));
+    QCOMPARE(nv(profile->port_profiles[2].properties, "port.port_type"), QString("DataInPort"));
+    QVERIFY(profile->port_profiles[2].owner->_is_equivalent(rtc));
+    CORBA::String_var id = rtc->get_sdo_id();
+    QCOMPARE(QByteArray(id.in()), QByteArray("SI0"));
+    QVERIFY(rtc->_is_a("IDL:openrtm.aist.go.jp/OpenRTM/DataFlowComponent:1.0"));
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::InterfaceNotImplemented, rtc->get_monitoring());
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, rtc->get_status("nothing"));
+}
+
+void TestManagerRuntime::dataFlow_data()
+{
+    QTest::addColumn<QString>("flow");
+    QTest::addColumn<QString>("subscription");
+    QTest::addColumn<QString>("endian");
+    QTest::addColumn<bool>("inFirst");
+    QTest::newRow("push flush") << "push" << "flush" << "little" << false;
+    QTest::newRow("push new") << "push" << "new" << "little" << false;
+    QTest::newRow("push periodic") << "push" << "periodic" << "little" << false;
+    QTest::newRow("push flush big endian") << "push" << "flush" << "big" << false;
+    QTest::newRow("push flush, inport first") << "push" << "flush" << "little" << true;
+    QTest::newRow("pull") << "pull" << "" << "little" << false;
+    QTest::newRow("pull, inport first") << "pull" << "" << "big" << true;
+}
+
+void TestManagerRuntime::dataFlow()
+{
+    QFETCH(QString, flow);
+    QFETCH(QString, subscription);
+    QFETCH(QString, endian);
+    QFETCH(bool, inFirst);
+    RtObject *source = create("ConsoleIn", "CI0");
+    RtObject *sink = create("ConsoleOut", "CO0");
+    RTC::RTObject_var in = source->reference();
+    RTC::RTObject_var out = sink->reference();
+    RTC::PortService_var outPort = port(in, "out");
+    RTC::PortService_var inPort = port(out, "in");
+    Properties p;
+    p.set("dataport.interface_type", "corba_cdr");
+    p.set("dataport.dataflow_type", flow.toStdString());
+    if (!subscription.isEmpty())
+        p.set("dataport.subscription_type", subscription.toStdString());
+    p.set("dataport.data_type", "IDL:RTC/TimedLong:1.0");
+    p.set("dataport.serializer.cdr.endian", endian.toStdString());
+    p.set("dataport.publisher.push_rate", "200");
+    RTC::ConnectorProfile profile;
+    QCOMPARE(inFirst ? connect(inPort, outPort, p, &profile) : connect(outPort, inPort, p, &profile), RTC::RTC_OK);
+    QVERIFY(!QByteArray(profile.connector_id).isEmpty());
+    const char *iorKey = flow == "push" ? "dataport.corba_cdr.inport_ior" : "dataport.corba_cdr.outport_ior";
+    QVERIFY(nv(profile.properties, iorKey).startsWith("IOR:"));
+    RTC::ConnectorProfileList_var onOut = outPort->get_connector_profiles();
+    RTC::ConnectorProfileList_var onIn = inPort->get_connector_profiles();
+    QCOMPARE(onOut->length(), CORBA::ULong(1));
+    QCOMPARE(onIn->length(), CORBA::ULong(1));
+    QCOMPARE(QByteArray(onOut[0].connector_id), QByteArray(profile.connector_id));
+
+    RTC::ExecutionContext_var sourceEc = ownedContext(in);
+    RTC::ExecutionContext_var sinkEc = ownedContext(out);
+    QCOMPARE(sinkEc->activate_component(out), RTC::RTC_OK);
+    QCOMPARE(sourceEc->activate_component(in), RTC::RTC_OK);
+    QTRY_VERIFY(statusNumber(out, "received_count") > 20);
+    // What arrives is the counter itself, in increasing order, whatever the byte order.
+    const QStringList values = statusOf(out, "received_values").split(',');
+    QVERIFY(values.size() >= 2);
+    QVERIFY(values.last().toLong() > 0);
+    QVERIFY(values.last().toLong() <= statusNumber(in, "sent_count"));
+    QVERIFY(values.first().toLong() <= values.last().toLong());
+}
+
+void TestManagerRuntime::disconnectStopsFlow()
+{
+    RtObject *source = create("ConsoleIn", "CI1");
+    RtObject *sink = create("ConsoleOut", "CO1");
+    RTC::RTObject_var in = source->reference();
+    RTC::RTObject_var out = sink->reference();
+    RTC::PortService_var outPort = port(in, "out");
+    RTC::PortService_var inPort = port(out, "in");
+    RTC::ConnectorProfile profile;
+    QCOMPARE(connect(outPort, inPort, Properties::parseConf("dataport.dataflow_type: push\n"), &profile),
+             RTC::RTC_OK);
+    // The same id twice is refused.
+    RTC::ConnectorProfile again = profile;
+    QCOMPARE(outPort->connect(again), RTC::BAD_PARAMETER);
+    RTC::ExecutionContext_var sourceEc = ownedContext(in);
+    RTC::ExecutionContext_var sinkEc = ownedContext(out);
+    sinkEc->activate_component(out);
+    sourceEc->activate_component(in);
+    QTRY_VERIFY(statusNumber(out, "received_count") > 5);
+    QCOMPARE(inPort->disconnect(profile.connector_id), RTC::RTC_OK);
+    RTC::ConnectorProfileList_var onOut = outPort->get_connector_profiles();
+    RTC::ConnectorProfileList_var onIn = inPort->get_connector_profiles();
+    QCOMPARE(onOut->length(), CORBA::ULong(0));
+    QCOMPARE(onIn->length(), CORBA::ULong(0));
+    QCOMPARE(inPort->disconnect(profile.connector_id), RTC::BAD_PARAMETER);
+    const long sent = statusNumber(in, "sent_count");
+    QTRY_VERIFY(statusNumber(in, "sent_count") > sent + 20);
+    const long received = statusNumber(out, "received_count");
+    QTRY_VERIFY(statusNumber(in, "sent_count") > sent + 40);
+    QCOMPARE(statusNumber(out, "received_count"), received);
+}
+
+void TestManagerRuntime::connectRejectsMismatch_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("value");
+    QTest::newRow("data type") << "dataport.data_type" << "IDL:RTC/TimedDouble:1.0";
+    QTest::newRow("interface") << "dataport.interface_type" << "shared_memory";
+    QTest::newRow("flow") << "dataport.dataflow_type" << "sideways";
+    QTest::newRow("subscription") << "dataport.subscription_type" << "sometimes";
+}
+
+void TestManagerRuntime::connectRejectsMismatch()
+{
+    QFETCH(QString, key);
+    QFETCH(QString, value);
+    RtObject *source = create("ConsoleIn", "CI2");
+    RtObject *sink = create("ConsoleOut", "CO2");
+    RTC::RTObject_var in = source->reference();
+    RTC::RTObject_var out = sink->reference();
+    RTC::PortService_var outPort = port(in, "out");
+    RTC::PortService_var inPort = port(out, "in");
+    Properties p;
+    p.set(key.toStdString(), value.toStdString());
+    QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
+    RTC::ConnectorProfileList_var onOut = outPort->get_connector_profiles();
+    RTC::ConnectorProfileList_var onIn = inPort->get_connector_profiles();
+    QCOMPARE(onOut->length(), CORBA::ULong(0));
+    QCOMPARE(onIn->length(), CORBA::ULong(0));
+    // A bare OpenRTM 1.x type name still matches.
+    p = Properties();
+    p.set("dataport.data_type", "TimedLong");
+    QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
+}
+
+void TestManagerRuntime::servicePort()
+{
+    RtObject *provider = create("MyServiceProvider", "P0");
+    RtObject *consumer = create("MyServiceConsumer", "C0", Properties::parseConf("conf.default.interval: 5\n"));
+    RTC::RTObject_var p = provider->reference();
+    RTC::RTObject_var c = consumer->reference();
+    RTC::PortService_var pPort = port(p, "MyService");
+    RTC::PortService_var cPort = port(c, "MyService");
+    RTC::PortProfile_var profile = pPort->get_port_profile();
+    QCOMPARE(profile->interfaces.length(), CORBA::ULong(1));
+    QCOMPARE(QByteArray(profile->interfaces[0].type_name), QByteArray("SimpleService::MyService"));
+    QCOMPARE(profile->interfaces[0].polarity, RTC::PROVIDED);
+    RTC::ConnectorProfile connected;
+    QCOMPARE(connect(cPort, pPort, {}, &connected), RTC::RTC_OK);
+    QVERIFY(nv(connected.properties, "port.SimpleService::MyService.myservice0").startsWith("IOR:"));
+    RTC::ExecutionContext_var ec = ownedContext(c);
+    QCOMPARE(ec->activate_component(c), RTC::RTC_OK);
+    QTRY_VERIFY(statusNumber(c, "echo_count") >= 3);
+    QVERIFY(statusOf(c, "last_reply").startsWith("echo "));
+}
+
+QTEST_GUILESS_MAIN(TestManagerRuntime)
+#include "tst_managerruntime.moc"
