@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "commandline.h"
+#include "gencommand.h"
 #include "profilecommand.h"
 
 namespace Cli {
@@ -68,6 +69,7 @@ std::unique_ptr<CommandLine> createCommandLine()
 {
     auto commandLine = std::make_unique<CommandLine>();
     commandLine->addCommand(std::make_unique<ProfileCommand>());
+    commandLine->addCommand(std::make_unique<GenCommand>());
     return commandLine;
 }
 
