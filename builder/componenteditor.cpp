@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "componenteditor.h"
 
+#include "activitypage.h"
 #include "basicpage.h"
 #include "componentpreview.h"
 #include "componentrules.h"
 #include "configurationpage.h"
 #include "dataportspage.h"
+#include "documentationpage.h"
+#include "languagepage.h"
+#include "rtcxmlpage.h"
+#include "serviceportspage.h"
 #include "typecatalog.h"
 
 #include <QCoreApplication>
@@ -48,8 +53,13 @@ ComponentEditor::ComponentEditor(ComponentModel *model, QUndoStack *undoStack, T
 void ComponentEditor::addPages()
 {
     m_pages->addTab(m_basicPage, tr("Basic"));
+    m_pages->addTab(new ActivityPage(m_model, m_undoStack), tr("Activity"));
     m_pages->addTab(new DataPortsPage(m_model, m_undoStack, m_types), tr("Data Ports"));
+    m_pages->addTab(new ServicePortsPage(m_model, m_undoStack, m_types), tr("Service Ports"));
     m_pages->addTab(new ConfigurationPage(m_model, m_undoStack), tr("Configuration"));
+    m_pages->addTab(new DocumentationPage(m_model, m_undoStack), tr("Documentation"));
+    m_pages->addTab(new LanguagePage(m_model, m_undoStack), tr("Language/Environment"));
+    m_pages->addTab(new RtcXmlPage(m_model, m_undoStack), tr("RTC.xml"));
 }
 
 QWidget *ComponentEditor::page(const QString &title) const

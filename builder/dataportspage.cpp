@@ -2,6 +2,7 @@
 #include "dataportspage.h"
 
 #include "componentrules.h"
+#include "idlsettingsdialog.h"
 #include "itemform.h"
 #include "itemtablemodel.h"
 #include "listeditor.h"
@@ -58,6 +59,7 @@ DataPortsPage::DataPortsPage(ComponentModel *model, QUndoStack *undoStack, TypeC
     auto *tables = new QWidget(this);
     auto *tablesLayout = new QVBoxLayout(tables);
     tablesLayout->setContentsMargins(0, 0, 0, 0);
+    tablesLayout->addWidget(createTypeCatalogButtons(types, tables));
     tablesLayout->addWidget(m_composite);
     tablesLayout->addWidget(m_inPorts);
     tablesLayout->addWidget(m_outPorts);

@@ -21,6 +21,8 @@ ItemTableModel::ItemTableModel(ComponentModel *model, QUndoStack *undoStack, Par
     rebuild();
     connect(model, &ComponentModel::itemInserted, this,
             [this](Part p, int index) { onInserted(p, index); });
+    connect(model, &ComponentModel::itemAboutToBeRemoved, this,
+            [this](Part p, int index) { onAboutToBeRemoved(p, index); });
     connect(model, &ComponentModel::itemRemoved, this,
             [this](Part p, int index) { onRemoved(p, index); });
     connect(model, &ComponentModel::itemChanged, this,
@@ -159,20 +161,25 @@ void ItemTableModel::onInserted(Part part, int index)
     endInsertRows();
 }
 
+void ItemTableModel::onAboutToBeRemoved(Part part, int index)
+{
+    // Views read the rows being removed while the element is still there.
+    m_removingRow = part == m_part ? int(m_rows.indexOf(index)) : -1;
+    if (m_removingRow >= 0)
+        beginRemoveRows({}, m_removingRow, m_removingRow);
+}
+
 void ItemTableModel::onRemoved(Part part, int index)
 {
     if (part != m_part)
         return;
-    // The cache is what rowCount() reports, so it may lag behind the profile until here.
-    const int row = int(m_rows.indexOf(index));
-    if (row >= 0) {
-        beginRemoveRows({}, row, row);
+    const int row = m_removingRow;
+    m_removingRow = -1;
+    if (row >= 0)
         m_rows.removeAt(row);
-        shift(index + 1, -1);
+    shift(index + 1, -1);
+    if (row >= 0)
         endRemoveRows();
-    } else {
-        shift(index + 1, -1);
-    }
 }
 
 void ItemTableModel::onChanged(Part part, int index)

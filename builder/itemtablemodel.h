@@ -46,6 +46,7 @@ public:
 private:
     void rebuild();
     void onInserted(Part part, int index);
+    void onAboutToBeRemoved(Part part, int index);
     void onRemoved(Part part, int index);
     void onChanged(Part part, int index);
     void onMovedOrReset();
@@ -58,6 +59,7 @@ private:
     QList<ItemField> m_columns;
     Filter m_filter;
     QList<int> m_rows; ///< positions in the profile's list, in list order
+    int m_removingRow = -1; ///< the row between itemAboutToBeRemoved and itemRemoved
 };
 
 } // namespace Builder
