@@ -2,6 +2,14 @@
 #include "commandline.h"
 #include "gencommand.h"
 #include "profilecommand.h"
+#include "rtcatcommand.h"
+#include "rtconfcommand.h"
+#include "rtconnectcommand.h"
+#include "rtcwdcommand.h"
+#include "rtfindcommand.h"
+#include "rtlscommand.h"
+#include "rtmgrcommand.h"
+#include "rtstatecommand.h"
 
 namespace Cli {
 
@@ -70,6 +78,18 @@ std::unique_ptr<CommandLine> createCommandLine()
     auto commandLine = std::make_unique<CommandLine>();
     commandLine->addCommand(std::make_unique<ProfileCommand>());
     commandLine->addCommand(std::make_unique<GenCommand>());
+    commandLine->addCommand(std::make_unique<RtLsCommand>());
+    commandLine->addCommand(std::make_unique<RtCatCommand>());
+    commandLine->addCommand(std::make_unique<RtFindCommand>());
+    commandLine->addCommand(std::make_unique<RtCwdCommand>(false));
+    commandLine->addCommand(std::make_unique<RtCwdCommand>(true));
+    using State = RtStateCommand::Action;
+    for (State action : {State::Activate, State::Deactivate, State::Reset, State::Exit})
+        commandLine->addCommand(std::make_unique<RtStateCommand>(action));
+    commandLine->addCommand(std::make_unique<RtConnectCommand>(true));
+    commandLine->addCommand(std::make_unique<RtConnectCommand>(false));
+    commandLine->addCommand(std::make_unique<RtConfCommand>());
+    commandLine->addCommand(std::make_unique<RtMgrCommand>());
     return commandLine;
 }
 

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+#include "rtmgrcommand.h"
+
+#include "componentproxy.h"
+#include "corbaerror.h"
+#include "managerproxy.h"
+#include "rtjson.h"
+
+#include <QFileInfo>
+
+namespace Cli {
+
+using namespace Corba;
+
+namespace {
+
+// rtshell's flags, mapped onto the action words.
+QString actionOfFlag(const QString &flag)
+{
+    if (flag == QLatin1String("-l"))
+        return QStringLiteral("load");
+    if (flag == QLatin1String("-u"))
+        return QStringLiteral("unload");
+    if (flag == QLatin1String("-c"))
+        return QStringLiteral("create");
+    return QStringLiteral("delete");
+}
+
+} // namespace
+
+QString RtMgrCommand::summary() const
+{
+    return QStringLiteral("load modules, create and delete components through a manager");
+}
+
+QString RtMgrCommand::usage() const
+{
+    return QStringLiteral(
+        "Usage: rtctl mgr [--json] [--timeout MS] PATH|corbaloc::HOST[:PORT] ACTION...\n\n"
+        "Drives an RTC manager (rtshell's rtmgr), given as a tree path (…/manager.mgr) or\n"
+        "directly (corbaloc::host, port 2810 and key 'manager' by default). Actions run in order:\n"
+        "  load FILE[:INIT]     load a module (INIT defaults to <basename>Init)\n"
+        "  unload FILE          unload a module\n"
+        "  create 'Type?k=v&…'  create a component; prints its instance name\n"
+        "  delete NAME          delete the component with that instance name\n"
+        "  list                 components, loaded modules and factories (--json: one object)\n"
+        "rtshell's -l FILE:INIT, -u FILE, -c MODULE, -d NAME are accepted too (run before words).\n");
+}
+
+QStringList RtMgrCommand::optionNames() const
+{
+    return {QStringLiteral("-l"), QStringLiteral("-u"), QStringLiteral("-c"), QStringLiteral("-d")};
+}
+
+void RtMgrCommand::list(const ManagerProxy &manager, bool json, Streams streams) const
+{
+    QJsonArray components, loaded, factories;
+    for (const ComponentInfo &component : manager.componentProfiles())
+        components.append(QJsonObject{{"instanceName", component.instanceName},
+                                      {"typeName", component.typeName}});
+    for (const Properties &module : manager.loadedModules())
+        loaded.append(propertiesToJson(module));
+    for (const Properties &factory : manager.factoryProfiles())
+        factories.append(propertyValue(factory, QStringLiteral("implementation_id")));
+    if (json) {
+        streams.out << jsonText(QJsonObject{{"components", components},
+                                            {"loadedModules", loaded},
+                                            {"factories", factories}});
+        return;
+    }
+    streams.out << "Components:\n";
+    for (const QJsonValue &c : std::as_const(components))
+        streams.out << "  " << c[QStringLiteral("instanceName")].toString() << "  "
+                    << c[QStringLiteral("typeName")].toString() << '\n';
+    streams.out << "Loaded modules:\n";
+    for (const QJsonValue &m : std::as_const(loaded)) {
+        const QJsonObject module = m.toObject();
+        streams.out << "  " << module.value(QStringLiteral("file_path")).toString() << '\n';
+    }
+    streams.out << "Factories:\n";
+    for (const QJsonValue &f : std::as_const(factories))
+        streams.out << "  " << f.toString() << '\n';
+}
+
+void RtMgrCommand::run(const ManagerProxy &manager, const QString &action, const QString &argument,
+                       bool json, Streams streams) const
+{
+    if (action == QLatin1String("list")) {
+        list(manager, json, streams);
+    } else if (action == QLatin1String("load")) {
+        const int colon = argument.lastIndexOf(QLatin1Char(':'));
+        const QString file = colon < 0 ? argument : argument.left(colon);
+        const QString init = colon < 0 ? QFileInfo(file).baseName() + QStringLiteral("Init")
+                                       : argument.mid(colon + 1);
+        manager.loadModule(file, init);
+    } else if (action == QLatin1String("unload")) {
+        manager.unloadModule(argument);
+    } else if (action == QLatin1String("create")) {
+        const QString ior = manager.createComponent(argument);
+        streams.out << ComponentProxy(ior, manager.path()).profile().instanceName << '\n';
+    } else {
+        manager.deleteComponent(argument);
+    }
+}
+
+int RtMgrCommand::execute(const RtOptions &options, Streams streams)
+{
+    if (options.positionals.isEmpty())
+        return usageError(QStringLiteral("missing manager PATH or corbaloc"), streams);
+    QList<QPair<QString, QString>> actions;
+    for (const auto &flag : options.sequence)
+        actions.append({actionOfFlag(flag.first), flag.second});
+    const QStringList words = options.positionals.mid(1);
+    for (int i = 0; i < words.size(); ++i) {
+        const QString &word = words.at(i);
+        if (word == QLatin1String("list")) {
+            actions.append({word, QString()});
+        } else if (QStringList{"load", "unload", "create", "delete"}.contains(word)) {
+            if (i + 1 >= words.size())
+                return usageError(QStringLiteral("'%1' needs an argument").arg(word), streams);
+            actions.append({word, words.at(++i)});
+        } else {
+            return usageError(QStringLiteral("unknown action '%1'").arg(word), streams);
+        }
+    }
+    if (actions.isEmpty())
+        actions.append({QStringLiteral("list"), QString()});
+    const RtPath target = path(options.positionals.first());
+    const NamingNode node = NamingBrowser::node(target);
+    if (node.type != NodeType::Manager)
+        throw Error(Error::Kind::WrongType, node.reason.isEmpty()
+                                                ? QStringLiteral("%1: not a manager (%2)")
+                                                      .arg(node.path, nodeTypeName(node.type))
+                                                : node.reason);
+    const ManagerProxy manager(node.ior, node.path);
+    for (const auto &action : actions)
+        run(manager, action.first, action.second, options.has(QStringLiteral("--json")), streams);
+    return ExitOk;
+}
+
+} // namespace Cli

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "rtcommand.h"
+
+namespace Corba {
+class ManagerProxy;
+}
+
+namespace Cli {
+
+/**
+ * `rtctl mgr PATH|corbaloc [load FILE:INIT] [unload FILE] [create "Type?k=v"] [delete NAME]
+ * [list] [--json]` (rtshell's rtmgr); actions run in command-line order.
+ */
+class RtMgrCommand : public RtCommand
+{
+public:
+    QString name() const override { return QStringLiteral("mgr"); }
+    QString summary() const override;
+    QString usage() const override;
+
+protected:
+    QStringList flagNames() const override { return {QStringLiteral("--json")}; }
+    QStringList optionNames() const override;
+    int execute(const RtOptions &options, Streams streams) override;
+
+private:
+    void run(const Corba::ManagerProxy &manager, const QString &action, const QString &argument,
+             bool json, Streams streams) const;
+    void list(const Corba::ManagerProxy &manager, bool json, Streams streams) const;
+};
+
+} // namespace Cli

@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: MIT
+#include "livesystem.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTest>
+
+// rtctl's rtshell commands run as a user would, against omniNames and a live peer process.
+class TestRtctlRt : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void lsListsTheTree();
+    void lsLongFormAndJson();
+    void lsRecursiveAndRoot();
+    void catShowsComponentsPortsAndManagers();
+    void findFiltersByNameAndType();
+    void pwdAndCd();
+    void stateCommands();
+    void connectAndDisconnect();
+    void configuration();
+    void manager();
+    void exitRemovesAComponent();
+    void usageErrors_data();
+    void usageErrors();
+    void unreachableServerIsAFailure();
+
+private:
+    struct Result
+    {
+        int code = -1;
+        QString out;
+        QString err;
+        QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
+        QJsonDocument json() const { return QJsonDocument::fromJson(out.toUtf8()); }
+    };
+    Result rtctl(const QStringList &arguments, const QString &cwd = QString(),
+                 const QString &servers = QString());
+    QString host() const { return QStringLiteral("/%1/rthost.host_cxt").arg(m_live.namingServer()); }
+
+    LiveTest::LiveSystem m_live;
+    quint16 m_peerPort = 0;
+};
+
+TestRtctlRt::Result TestRtctlRt::rtctl(const QStringList &arguments, const QString &cwd,
+                                       const QString &servers)
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("RTCSH_CWD"), cwd.isNull() ? host() : cwd);
+    environment.insert(QStringLiteral("RTCTREE_NAMESERVERS"), servers);
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(RTCTL_PATH), arguments);
+    Result result;
+    if (!process.waitForFinished(60000)) {
+        process.kill();
+        process.waitForFinished();
+        return result;
+    }
+    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    result.out = QString::fromUtf8(process.readAllStandardOutput());
+    result.err = QString::fromUtf8(process.readAllStandardError());
+    return result;
+}
+
+void TestRtctlRt::initTestCase()
+{
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    QVERIFY2(m_live.startPeer({"ConsoleIn?instance_name=ConsoleIn0", "ConsoleOut?instance_name=ConsoleOut0",
+                               "MyServiceProvider?instance_name=Provider0",
+                               "ConfigSample?instance_name=ConfigSample0"},
+                              &error, &m_peerPort, "rthost", true),
+             qPrintable(error));
+}
+
+void TestRtctlRt::lsListsTheTree()
+{
+    const Result r = rtctl({"ls"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.lines(), QStringList({"manager.mgr", "ConsoleIn0.rtc", "ConsoleOut0.rtc", "Provider0.rtc",
+                                     "ConfigSample0.rtc", "*Ghost0.rtc", "*Stranger0.rtc"}));
+    const Result server = rtctl({"ls", "/" + m_live.namingServer()});
+    QCOMPARE(server.lines(), QStringList({"rthost.host_cxt"}));
+    QCOMPARE(rtctl({"ls", ".."}, host() + "/manager.mgr").lines(), r.lines());
+}
+
+void TestRtctlRt::lsLongFormAndJson()
+{
+    const Result r = rtctl({"ls", "-l", "ConsoleIn0.rtc", "Ghost0.rtc"});
+    QCOMPARE(r.code, 0);
+    const QStringList lines = r.lines();
+    QCOMPARE(lines.size(), 2);
+    QCOMPARE(lines[0].simplified(), QString("Inactive 1/0 0/0 1/0 0/0 ConsoleIn0.rtc"));
+    QCOMPARE(lines[1].simplified(), QString("- - - - - *Ghost0.rtc"));
+
+    const Result json = rtctl({"ls", "-l", "--json"});
+    QCOMPARE(json.code, 0);
+    const QJsonArray entries = json.json().array();
+    QCOMPARE(entries.size(), 7);
+    QCOMPARE(entries[1]["name"].toString(), QString("ConsoleIn0.rtc"));
+    QCOMPARE(entries[1]["type"].toString(), QString("component"));
+    QCOMPARE(entries[1]["state"].toString(), QString("Inactive"));
+    QCOMPARE(entries[1]["ports"]["out"].toInt(), 1);
+    QCOMPARE(entries[5]["type"].toString(), QString("zombie"));
+    QVERIFY(entries[5]["reason"].toString().contains("Ghost0.rtc"));
+}
+
+void TestRtctlRt::lsRecursiveAndRoot()
+{
+    const Result r = rtctl({"ls", "-R", "/" + m_live.namingServer()});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains(host() + "/manager.mgr:\nConsoleIn0.rtc\n"), qPrintable(r.out));
+    const Result root = rtctl({"ls", "/"}, "/", m_live.namingServer());
+    QCOMPARE(root.lines(), QStringList({m_live.namingServer()}));
+    const Result tree = rtctl({"ls", "-R", "--json", "/"}, "/", m_live.namingServer());
+    const QJsonArray servers = tree.json().array();
+    QCOMPARE(servers.size(), 1);
+    QCOMPARE(servers[0]["children"][0]["name"].toString(), QString("rthost.host_cxt"));
+    QCOMPARE(servers[0]["children"][0]["children"].toArray().size(), 7);
+}
+
+void TestRtctlRt::catShowsComponentsPortsAndManagers()
+{
+    const Result r = rtctl({"cat", "ConsoleIn0.rtc"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.lines().at(0).startsWith("ConsoleIn0.rtc  Inactive"));
+    QVERIFY(r.lines().contains("  Type name      ConsoleIn"));
+    QVERIFY(r.lines().contains("  DataOutPort: out"));
+    QVERIFY(!r.out.contains("dataport.data_type"));
+    QVERIFY(rtctl({"cat", "-l", "ConsoleIn0.rtc"}).out.contains("dataport.data_type = IDL:RTC/TimedLong:1.0"));
+
+    const Result port = rtctl({"cat", "Provider0.rtc:MyService"});
+    QCOMPARE(port.code, 0);
+    QCOMPARE(port.lines(), QStringList({"  CorbaPort: MyService",
+                                        "    Interface  myservice0  SimpleService::MyService  Provided"}));
+    const Result json = rtctl({"cat", "--json", "ConsoleIn0.rtc"});
+    QCOMPARE(json.json().object()["typeName"].toString(), QString("ConsoleIn"));
+    QCOMPARE(json.json().object()["executionContexts"][0]["kind"].toString(), QString("PERIODIC"));
+    QCOMPARE(json.json().object()["ports"][0]["type"].toString(), QString("DataOutPort"));
+
+    const Result missing = rtctl({"cat", "ConsoleIn0.rtc:nothere"});
+    QCOMPARE(missing.code, 1);
+    QVERIFY2(missing.err.contains(host() + "/ConsoleIn0.rtc: no port named 'nothere'"), qPrintable(missing.err));
+    const Result manager = rtctl({"cat", "manager.mgr"});
+    QCOMPARE(manager.code, 0);
+    QVERIFY(manager.lines().contains("  Component  ConfigSample0  ConfigSample"));
+}
+
+void TestRtctlRt::findFiltersByNameAndType()
+{
+    const Result zombies = rtctl({"find", host(), "-t", "z"});
+    QCOMPARE(zombies.code, 0);
+    QCOMPARE(zombies.lines(), QStringList({host() + "/Ghost0.rtc", host() + "/Stranger0.rtc"}));
+    const Result named = rtctl({"find", host(), "-i", "console*", "-m", "1"});
+    QCOMPARE(named.lines(), QStringList({host() + "/ConsoleIn0.rtc", host() + "/ConsoleOut0.rtc"}));
+    QVERIFY(rtctl({"find", host(), "-n", "console*"}).lines().isEmpty());
+    const Result json = rtctl({"find", "--json", host(), "-t", "m"});
+    QCOMPARE(json.json().array().at(0)["path"].toString(), host() + "/manager.mgr");
+}
+
+void TestRtctlRt::pwdAndCd()
+{
+    QCOMPARE(rtctl({"pwd"}).out, host() + "\n");
+    QCOMPARE(rtctl({"pwd"}, "").out, QString("/\n"));
+    const Result cd = rtctl({"cd", ".."});
+    QCOMPARE(cd.code, 0);
+    QCOMPARE(cd.out, QStringLiteral("export RTCSH_CWD='/%1'\n").arg(m_live.namingServer()));
+    QCOMPARE(rtctl({"cd", "manager.mgr"}).code, 0);
+    const Result notDir = rtctl({"cd", "ConsoleIn0.rtc"});
+    QCOMPARE(notDir.code, 1);
+    QVERIFY(notDir.err.contains("ConsoleIn0.rtc: not a directory"));
+    QCOMPARE(rtctl({"cd", "Nothing.host_cxt"}).code, 1);
+}
+
+void TestRtctlRt::stateCommands()
+{
+    QCOMPARE(rtctl({"act", "ConsoleOut0.rtc"}).code, 0);
+    QVERIFY(rtctl({"ls", "-l", "ConsoleOut0.rtc"}).out.startsWith("Active"));
+    const Result again = rtctl({"act", "-e", "0", "ConsoleOut0.rtc"});
+    QCOMPARE(again.code, 1);
+    QVERIFY2(again.err.contains("ConsoleOut0.rtc: activate returned PRECONDITION_NOT_MET"), qPrintable(again.err));
+    QCOMPARE(rtctl({"reset", "ConsoleOut0.rtc"}).code, 1);
+    QCOMPARE(rtctl({"act", "-e", "3", "ConsoleIn0.rtc"}).code, 1);
+    QCOMPARE(rtctl({"deact", "ConsoleOut0.rtc"}).code, 0);
+    QVERIFY(rtctl({"ls", "-l", "ConsoleOut0.rtc"}).out.startsWith("Inactive"));
+    // Several paths: the good one is done, the zombie is reported, the exit code says failure.
+    const Result mixed = rtctl({"act", "ConsoleIn0.rtc", "Ghost0.rtc"});
+    QCOMPARE(mixed.code, 1);
+    QVERIFY(mixed.err.contains("Ghost0.rtc: unreachable"));
+    QVERIFY(rtctl({"ls", "-l", "ConsoleIn0.rtc"}).out.startsWith("Active"));
+    QCOMPARE(rtctl({"deact", "ConsoleIn0.rtc"}).code, 0);
+    QCOMPARE(rtctl({"act", "manager.mgr"}).code, 1);
+}
+
+void TestRtctlRt::connectAndDisconnect()
+{
+    const Result con = rtctl({"con", "-n", "link", "-p", "dataport.subscription_type=flush",
+                              "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"});
+    QCOMPARE(con.code, 0);
+    const QString id = con.out.trimmed();
+    QVERIFY(!id.isEmpty());
+    const QJsonObject port = rtctl({"cat", "--json", "ConsoleOut0.rtc:in"}).json().object();
+    QCOMPARE(port["connectors"][0]["id"].toString(), id);
+    QCOMPARE(port["connectors"][0]["name"].toString(), QString("link"));
+    QCOMPARE(port["connectors"][0]["properties"]["dataport.subscription_type"].toString(), QString("flush"));
+
+    const Result duplicate = rtctl({"con", "--no-duplicates", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"});
+    QCOMPARE(duplicate.code, 1);
+    QVERIFY(duplicate.err.contains("already connected"));
+    const Result illegal = rtctl({"con", "ConsoleOut0.rtc:in", "ConsoleOut0.rtc:in"});
+    QCOMPARE(illegal.code, 1);
+    QVERIFY2(illegal.err.contains("cannot connect: ConsoleOut0.in is not an output port"), qPrintable(illegal.err));
+    const Result badFlow = rtctl({"con", "-p", "dataport.dataflow_type=duplex", "ConsoleIn0.rtc:out",
+                                  "ConsoleOut0.rtc:in"});
+    QCOMPARE(badFlow.code, 1);
+    QVERIFY(badFlow.err.contains("does not allow dataport.dataflow_type=duplex"));
+    QCOMPARE(rtctl({"con", "ConsoleIn0.rtc:out", "Provider0.rtc:MyService"}).code, 1);
+
+    QCOMPARE(rtctl({"dis", "-i", "wrong", "ConsoleIn0.rtc:out"}).code, 1);
+    QCOMPARE(rtctl({"dis", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).code, 0);
+    QVERIFY(rtctl({"cat", "--json", "ConsoleOut0.rtc:in"}).json().object()["connectors"].toArray().isEmpty());
+    QCOMPARE(rtctl({"dis", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).code, 1);
+    // By id, then all of a component.
+    const QString second = rtctl({"con", "-i", "my-id", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).out.trimmed();
+    QCOMPARE(second, QString("my-id"));
+    QCOMPARE(rtctl({"dis", "-i", "my-id", "ConsoleOut0.rtc:in"}).code, 0);
+    QCOMPARE(rtctl({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).code, 0);
+    QCOMPARE(rtctl({"dis", "ConsoleOut0.rtc"}).code, 0);
+    QVERIFY(rtctl({"ls", "-l", "ConsoleIn0.rtc"}).out.simplified().startsWith("Inactive 1/0"));
+}
+
+void TestRtctlRt::configuration()
+{
+    const Result list = rtctl({"conf", "ConfigSample0.rtc"});
+    QCOMPARE(list.code, 0);
+    QVERIFY(list.lines().contains("* default"));
+    QVERIFY(list.lines().contains("  mode0"));
+    QVERIFY(!list.out.contains("__widget__"));
+    QVERIFY(rtctl({"conf", "-a", "ConfigSample0.rtc"}).out.contains("  __widget__"));
+
+    QCOMPARE(rtctl({"conf", "ConfigSample0.rtc", "set", "int_param0", "77"}).code, 0);
+    QCOMPARE(rtctl({"conf", "ConfigSample0.rtc", "get", "int_param0"}).out, QString("77\n"));
+    QCOMPARE(rtctl({"conf", "-s", "mode0", "ConfigSample0.rtc", "get", "str_param0"}).out, QString("foo\n"));
+    const Result missing = rtctl({"conf", "ConfigSample0.rtc", "get", "nothing"});
+    QCOMPARE(missing.code, 1);
+    QVERIFY(missing.err.contains("no parameter 'nothing' in set 'default'"));
+
+    QCOMPARE(rtctl({"conf", "-s", "mode0", "ConfigSample0.rtc", "act"}).code, 0);
+    const QJsonObject json = rtctl({"conf", "--json", "ConfigSample0.rtc"}).json().object();
+    QCOMPARE(json["active"].toString(), QString("mode0"));
+    QCOMPARE(json["sets"][0]["parameters"]["int_param0"].toString(), QString("77"));
+    QCOMPARE(rtctl({"conf", "-s", "default", "ConfigSample0.rtc", "act"}).code, 0);
+    QCOMPARE(rtctl({"conf", "-s", "nothing", "ConfigSample0.rtc", "act"}).code, 1);
+}
+
+void TestRtctlRt::manager()
+{
+    const Result created = rtctl({"mgr", "manager.mgr", "create", "ConsoleOut?instance_name=Made0",
+                                  "load", "mods/Foo.so:FooInit", "list"});
+    QCOMPARE(created.code, 0);
+    QCOMPARE(created.lines().at(0), QString("Made0"));
+    QVERIFY(created.lines().contains("  Made0  ConsoleOut"));
+    QVERIFY(created.lines().contains("  mods/Foo.so"));
+    QVERIFY(rtctl({"ls"}).lines().contains("Made0.rtc"));
+
+    const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_peerPort);
+    const Result json = rtctl({"mgr", "--json", direct, "list"});
+    QCOMPARE(json.code, 0);
+    QCOMPARE(json.json().object()["components"].toArray().size(), 5);
+    QCOMPARE(rtctl({"mgr", direct, "delete", "Made0", "unload", "mods/Foo.so"}).code, 0);
+    QVERIFY(!rtctl({"ls"}).lines().contains("Made0.rtc"));
+    const Result again = rtctl({"mgr", direct, "-d", "Made0"});
+    QCOMPARE(again.code, 1);
+    QVERIFY(again.err.contains("delete_component(Made0) returned BAD_PARAMETER"));
+    QCOMPARE(rtctl({"mgr", "ConsoleIn0.rtc", "list"}).code, 1);
+}
+
+void TestRtctlRt::exitRemovesAComponent()
+{
+    QString error;
+    QVERIFY2(m_live.startPeer({"ConsoleIn?instance_name=Bye0"}, &error, nullptr, "byehost"), qPrintable(error));
+    const QString path = QStringLiteral("/%1/byehost.host_cxt/Bye0.rtc").arg(m_live.namingServer());
+    QCOMPARE(rtctl({"exit", path}).code, 0);
+    const Result gone = rtctl({"cat", path});
+    QCOMPARE(gone.code, 1);
+    QVERIFY2(gone.err.contains(path + ": no such name"), qPrintable(gone.err));
+}
+
+void TestRtctlRt::usageErrors_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::newRow("act without path") << QStringList{"act"};
+    QTest::newRow("unknown flag") << QStringList{"ls", "-x"};
+    QTest::newRow("bad timeout") << QStringList{"ls", "--timeout", "soon"};
+    QTest::newRow("bad ec index") << QStringList{"act", "-e", "first", "ConsoleIn0.rtc"};
+    QTest::newRow("con one port") << QStringList{"con", "ConsoleIn0.rtc:out"};
+    QTest::newRow("con bad property") << QStringList{"con", "-p", "novalue", "a.rtc:x", "b.rtc:y"};
+    QTest::newRow("conf unknown") << QStringList{"conf", "ConfigSample0.rtc", "frob"};
+    QTest::newRow("conf act without set") << QStringList{"conf", "ConfigSample0.rtc", "act"};
+    QTest::newRow("mgr unknown action") << QStringList{"mgr", "manager.mgr", "explode"};
+    QTest::newRow("mgr missing argument") << QStringList{"mgr", "manager.mgr", "create"};
+    QTest::newRow("find bad type") << QStringList{"find", "/", "-t", "q"};
+    QTest::newRow("pwd with argument") << QStringList{"pwd", "x"};
+}
+
+void TestRtctlRt::usageErrors()
+{
+    QFETCH(QStringList, arguments);
+    const Result r = rtctl(arguments);
+    QCOMPARE(r.code, 2);
+    QVERIFY(r.err.contains("Usage:"));
+}
+
+void TestRtctlRt::unreachableServerIsAFailure()
+{
+    const QString nowhere = QStringLiteral("/127.0.0.1:%1").arg(LiveTest::freePort());
+    const Result r = rtctl({"ls", "--timeout", "1000", nowhere});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(nowhere + ": unreachable"), qPrintable(r.err));
+    const Result bad = rtctl({"cat", "/127.0.0.1:x/a.rtc"});
+    QCOMPARE(bad.code, 1);
+    QVERIFY(bad.err.contains("bad name server address"));
+}
+
+QTEST_GUILESS_MAIN(TestRtctlRt)
+#include "tst_rtctlrt.moc"
