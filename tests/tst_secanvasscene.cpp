@@ -60,6 +60,7 @@ private slots:
     void bendPointsShapeTheRoute();
     void routesAreManhattan_data();
     void routesAreManhattan();
+    void routeGoesRoundBodiesFacingAway();
 
 private:
     std::unique_ptr<SystemModel> m_model;
@@ -307,6 +308,10 @@ void TestSeCanvasScene::routesAreManhattan_data()
                             << PortSide::Left << QList<QPointF>();
     QTest::newRow("backwards") << QPointF(200, 0) << PortSide::Right << QPointF(0, 80)
                                << PortSide::Left << QList<QPointF>();
+    QTest::newRow("facing away") << QPointF(0, 0) << PortSide::Right << QPointF(300, 0)
+                                 << PortSide::Right << QList<QPointF>();
+    QTest::newRow("perpendicular") << QPointF(0, 0) << PortSide::Right << QPointF(200, 100)
+                                   << PortSide::Top << QList<QPointF>();
     QTest::newRow("top to bottom") << QPointF(0, 0) << PortSide::Bottom << QPointF(50, 200)
                                    << PortSide::Top << QList<QPointF>();
     QTest::newRow("bends") << QPointF(0, 0) << PortSide::Right << QPointF(300, 10)
@@ -336,6 +341,23 @@ void TestSeCanvasScene::routesAreManhattan()
     QVERIFY(QPointF::dotProduct(last, outwardNormal(endSide)) > 0);
     for (const QPointF &bend : bends)
         QVERIFY(route.contains(bend));
+}
+
+void TestSeCanvasScene::routeGoesRoundBodiesFacingAway()
+{
+    // Filter0 faces LEFT, so its InPort is on its far side from Sensor0's OutPort.
+    const QPolygonF route = m_scene->connectorItem(QStringLiteral("c-sensor-filter"))->route();
+    const QRectF filterBody = m_scene->componentItem(QStringLiteral("Filter0"))
+                                  ->mapRectToScene(m_scene->componentItem(QStringLiteral("Filter0"))
+                                                       ->bodyRect());
+    for (int i = 1; i < route.size(); ++i) {
+        const QRectF segment = QRectF(route.at(i - 1), route.at(i)).normalized().adjusted(-0.5, -0.5,
+                                                                                          0.5, 0.5);
+        QVERIFY2(!segment.intersects(filterBody.adjusted(1, 1, -1, -1)),
+                 qPrintable(QStringLiteral("segment %1 crosses the body").arg(i)));
+    }
+    QCOMPARE(route.last(), m_scene->portItem({QStringLiteral("Filter0"), QStringLiteral("Filter0.in")})
+                               ->connectionPoint());
 }
 
 QTEST_MAIN(TestSeCanvasScene)

@@ -45,21 +45,44 @@ std::array<int, 4> portsPerSide(const ComponentAppearance &component)
     return counts;
 }
 
-QPointF placeOnSide(const QRectF &body, PortSide side, int index, int count)
+/// The rows of a body from top to bottom: labels of top ports, titles, the side ports' area,
+/// labels of bottom ports.
+struct Rows
 {
-    const qreal fraction = qreal(index + 1) / qreal(count + 1);
+    qreal top = 0;
+    qreal title = 0;
+    qreal bottom = 0;
+};
+
+Rows rowsFor(const std::array<int, 4> &counts, const ComponentTextSizes &text)
+{
+    Rows rows;
+    rows.top = counts[int(PortSide::Top)] > 0 ? text.labelHeight + 6 : 2;
+    rows.title = text.titleHeight + 8;
+    rows.bottom = counts[int(PortSide::Bottom)] > 0 ? text.labelHeight + 6 : 4;
+    return rows;
+}
+
+/// Ports on the left and right share the area below the titles; ports on the top and bottom
+/// spread over the whole width.
+QPointF placeOnSide(const QRectF &body, const Rows &rows, PortSide side, int index, int count)
+{
+    const qreal areaTop = body.top() + rows.top + rows.title;
+    const qreal areaHeight = body.bottom() - rows.bottom - areaTop;
+    const qreal y = areaTop + areaHeight * (index + 0.5) / count;
+    const qreal x = body.left() + body.width() * qreal(index + 1) / qreal(count + 1);
     const QPointF out = outwardNormal(side) * PortHalfSize;
     switch (side) {
     case PortSide::Left:
-        return QPointF(body.left(), body.top() + body.height() * fraction) + out;
+        return QPointF(body.left(), y) + out;
     case PortSide::Right:
-        return QPointF(body.right(), body.top() + body.height() * fraction) + out;
+        return QPointF(body.right(), y) + out;
     case PortSide::Top:
-        return QPointF(body.left() + body.width() * fraction, body.top()) + out;
+        return QPointF(x, body.top()) + out;
     case PortSide::Bottom:
         break;
     }
-    return QPointF(body.left() + body.width() * fraction, body.bottom()) + out;
+    return QPointF(x, body.bottom()) + out;
 }
 
 } // namespace
@@ -70,16 +93,13 @@ QSizeF ComponentGeometry::minimumBodySize(const ComponentAppearance &component,
     const std::array<int, 4> counts = portsPerSide(component);
     const int vertical = std::max(counts[int(PortSide::Left)], counts[int(PortSide::Right)]);
     const int horizontal = std::max(counts[int(PortSide::Top)], counts[int(PortSide::Bottom)]);
-    // Labels of left and right ports sit inside the body on either side of the centre; labels of
-    // top and bottom ports need their own rows above and below the title.
+    // Labels of left and right ports share a row when both sides have ports.
     const qreal sideLabels = (counts[int(PortSide::Left)] > 0 ? text.widestLabel : 0)
         + (counts[int(PortSide::Right)] > 0 ? text.widestLabel : 0);
     const qreal width = std::max({text.titleWidth + 24, sideLabels + 24, 100.0,
                                   (horizontal + 1) * std::max(PortPitch, text.widestLabel + 8)});
-    qreal height = text.titleHeight + 24;
-    if (horizontal > 0)
-        height += 2 * (text.labelHeight + 6);
-    height = std::max({height, 60.0, (vertical + 1) * PortPitch});
+    const Rows rows = rowsFor(counts, text);
+    const qreal height = std::max(rows.top + rows.title + vertical * PortPitch + rows.bottom, 60.0);
     // Whole numbers: the system file stores sizes as integers.
     return {std::ceil(width), std::ceil(height)};
 }
@@ -95,10 +115,17 @@ ComponentGeometry ComponentGeometry::layout(const ComponentAppearance &component
     ComponentGeometry geometry;
     geometry.body = QRectF(QPointF(0, 0), size);
     const std::array<int, 4> counts = portsPerSide(component);
+    const Rows rows = rowsFor(counts, text);
+    // Without side ports the titles sit in the middle.
+    const bool sidePorts = counts[int(PortSide::Left)] + counts[int(PortSide::Right)] > 0;
+    const qreal titleTop = sidePorts ? rows.top + 4
+                                     : rows.top + (size.height() - rows.top - rows.bottom
+                                                   - text.titleHeight) / 2;
+    geometry.title = QRectF(0, titleTop, size.width(), text.titleHeight);
     std::array<int, 4> placed {0, 0, 0, 0};
     for (const PortInfo &port : component.ports) {
         const int side = int(port.side);
-        geometry.portCenters.append(placeOnSide(geometry.body, port.side, placed[side]++,
+        geometry.portCenters.append(placeOnSide(geometry.body, rows, port.side, placed[side]++,
                                                 counts[side]));
     }
     return geometry;

@@ -42,6 +42,7 @@ struct ComponentTextSizes
 struct ComponentGeometry
 {
     QRectF body;
+    QRectF title; ///< where instance and type names go: below the top ports' labels
     QList<QPointF> portCenters; ///< in the order of ComponentAppearance::ports, outside the body
 
     /// The smallest body the content fits in (ports spread evenly, titles and labels readable).

@@ -153,9 +153,8 @@ void ComponentItem::paintTitles(QPainter *painter) const
 {
     const QFontMetricsF title(titleFont());
     const QFontMetricsF type(typeFont());
-    const qreal height = title.height() + type.height();
     const QRectF body = m_geometry.body;
-    const qreal top = body.center().y() - height / 2;
+    const qreal top = m_geometry.title.top();
     painter->setPen(QColor(20, 20, 20));
     painter->setFont(titleFont());
     painter->drawText(QRectF(body.left(), top, body.width(), title.height()), Qt::AlignCenter,
@@ -176,16 +175,16 @@ void ComponentItem::paintPortLabels(QPainter *painter) const
     for (int i = 0; i < m_appearance.ports.size(); ++i) {
         const PortInfo &port = m_appearance.ports.at(i);
         const QPointF at = m_geometry.portCenters.at(i);
-        const qreal halfWidth = body.width() / 2 - LabelMargin;
+        const qreal innerWidth = body.width() - 2 * LabelMargin;
         QRectF rect;
         Qt::Alignment align = Qt::AlignVCenter;
         switch (port.side) {
         case PortSide::Left:
-            rect = QRectF(body.left() + LabelMargin, at.y() - h / 2, halfWidth, h);
+            rect = QRectF(body.left() + LabelMargin, at.y() - h / 2, innerWidth, h);
             align |= Qt::AlignLeft;
             break;
         case PortSide::Right:
-            rect = QRectF(body.center().x(), at.y() - h / 2, halfWidth, h);
+            rect = QRectF(body.left() + LabelMargin, at.y() - h / 2, innerWidth, h);
             align |= Qt::AlignRight;
             break;
         case PortSide::Top:

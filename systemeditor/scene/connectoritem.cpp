@@ -52,8 +52,12 @@ void ConnectorItem::updateRoute()
         return;
     }
     const QList<QPointF> &bends = m_draggedHandle >= 0 ? m_draggedCorners : m_info.bendPoints;
+    const auto bodyOf = [](const PortItem *port) {
+        return port->parentItem() ? port->parentItem()->sceneBoundingRect() : QRectF();
+    };
+    const QRectF bodies = bodyOf(m_source).united(bodyOf(m_target));
     setRoute(manhattanRoute(m_source->connectionPoint(), m_source->port().side,
-                            m_target->connectionPoint(), m_target->port().side, bends));
+                            m_target->connectionPoint(), m_target->port().side, bends, bodies));
 }
 
 void ConnectorItem::setRoute(const QPolygonF &route)

@@ -3,6 +3,8 @@
 
 #include "portgeometry.h"
 
+#include <cmath>
+
 namespace SystemEditor {
 
 namespace {
@@ -37,21 +39,47 @@ void appendOrthogonal(QPolygonF &route, const QPointF &to)
     appendPoint(route, to);
 }
 
-/// Automatic middle between the two stub ends. When the end lies ahead of the start, the route
-/// turns halfway between them; when it lies behind, it runs across between the two ports.
-void appendAutomaticMiddle(QPolygonF &route, const QPointF &to, PortSide startSide)
+/// The coordinate of a detour lane beside both bodies (above/below for horizontal sides,
+/// left/right for vertical ones), on the side that makes the shorter detour.
+qreal detourLane(const QPointF &from, const QPointF &to, bool horizontalSides,
+                 const QRectF &bodies)
+{
+    const auto along = [horizontalSides](const QPointF &p) {
+        return horizontalSides ? p.y() : p.x();
+    };
+    const qreal low = bodies.isEmpty() ? std::min(along(from), along(to)) - 2 * RouteStub
+                                       : (horizontalSides ? bodies.top() : bodies.left())
+            - RouteStub * 1.5;
+    const qreal high = bodies.isEmpty() ? std::max(along(from), along(to)) + 2 * RouteStub
+                                        : (horizontalSides ? bodies.bottom() : bodies.right())
+            + RouteStub * 1.5;
+    const qreal viaLow = std::abs(along(from) - low) + std::abs(along(to) - low);
+    const qreal viaHigh = std::abs(along(from) - high) + std::abs(along(to) - high);
+    return viaLow <= viaHigh ? low : high;
+}
+
+/// Automatic middle between the two stub ends. Ports facing each other meet halfway; ports
+/// facing away run along a lane beside both bodies; perpendicular ones turn once.
+void appendAutomaticMiddle(QPolygonF &route, const QPointF &to, PortSide startSide,
+                           PortSide endSide, const QRectF &bodies)
 {
     const QPointF from = route.last();
-    const QPointF normal = outwardNormal(startSide);
-    const bool ahead = QPointF::dotProduct(to - from, normal) >= 0;
-    if (isHorizontal(startSide) == ahead) {
-        const qreal midX = (from.x() + to.x()) / 2;
-        appendPoint(route, QPointF(midX, from.y()));
-        appendPoint(route, QPointF(midX, to.y()));
+    const bool horizontal = isHorizontal(startSide);
+    if (horizontal != isHorizontal(endSide)) {
+        appendPoint(route, horizontal ? QPointF(to.x(), from.y()) : QPointF(from.x(), to.y()));
+        appendPoint(route, to);
+        return;
+    }
+    const bool startAhead = QPointF::dotProduct(to - from, outwardNormal(startSide)) >= 0;
+    const bool endAhead = QPointF::dotProduct(from - to, outwardNormal(endSide)) >= 0;
+    if (startAhead && endAhead) {
+        const QPointF mid = (from + to) / 2;
+        appendPoint(route, horizontal ? QPointF(mid.x(), from.y()) : QPointF(from.x(), mid.y()));
+        appendPoint(route, horizontal ? QPointF(mid.x(), to.y()) : QPointF(to.x(), mid.y()));
     } else {
-        const qreal midY = (from.y() + to.y()) / 2;
-        appendPoint(route, QPointF(from.x(), midY));
-        appendPoint(route, QPointF(to.x(), midY));
+        const qreal lane = detourLane(from, to, horizontal, bodies);
+        appendPoint(route, horizontal ? QPointF(from.x(), lane) : QPointF(lane, from.y()));
+        appendPoint(route, horizontal ? QPointF(to.x(), lane) : QPointF(lane, to.y()));
     }
     appendPoint(route, to);
 }
@@ -84,13 +112,14 @@ QPolygonF simplified(const QPolygonF &route, const QList<QPointF> &keep)
 } // namespace
 
 QPolygonF manhattanRoute(const QPointF &start, PortSide startSide, const QPointF &end,
-                         PortSide endSide, const QList<QPointF> &bendPoints)
+                         PortSide endSide, const QList<QPointF> &bendPoints,
+                         const QRectF &bodies)
 {
     const QPointF startStub = start + outwardNormal(startSide) * RouteStub;
     const QPointF endStub = end + outwardNormal(endSide) * RouteStub;
     QPolygonF route {start, startStub};
     if (bendPoints.isEmpty()) {
-        appendAutomaticMiddle(route, endStub, startSide);
+        appendAutomaticMiddle(route, endStub, startSide, endSide, bodies);
     } else {
         for (const QPointF &bend : bendPoints)
             appendOrthogonal(route, bend);

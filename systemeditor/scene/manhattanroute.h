@@ -11,10 +11,12 @@ namespace SystemEditor {
  * A connector's path made of horizontal and vertical segments only. It leaves `start` and
  * enters `end` straight out of their sides (a short stub), then passes through `bendPoints` in
  * order; an elbow is added wherever two consecutive points are not aligned. Without bend points
- * the middle is routed automatically.
+ * the middle is routed automatically: ports facing each other meet halfway, ports facing away
+ * go round `bodies` (the united rectangles of the two components, if known).
  */
 QPolygonF manhattanRoute(const QPointF &start, PortSide startSide, const QPointF &end,
-                         PortSide endSide, const QList<QPointF> &bendPoints = {});
+                         PortSide endSide, const QList<QPointF> &bendPoints = {},
+                         const QRectF &bodies = {});
 
 /// The points of a route between its ends (its corners): what the user drags as bend points.
 QList<QPointF> routeCorners(const QPolygonF &route);

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+#include "diagramexport.h"
+
+#include "systemfile.h"
+#include "systemmodel.h"
+#include "systemscene.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QImageWriter>
+#include <QPainter>
+#include <QSvgGenerator>
+
+namespace SystemEditor {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("SystemEditor::DiagramExport", text);
+}
+
+/// The area to draw; an empty system still gives a small blank page.
+QRectF sourceRect(const SystemScene &scene)
+{
+    const QRectF rect = scene.diagramRect();
+    return rect.isEmpty() ? QRectF(0, 0, 200, 100) : rect;
+}
+
+void paintScene(SystemScene &scene, QPainter &painter, const QRectF &target)
+{
+    painter.setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing);
+    painter.fillRect(target, Qt::white);
+    scene.render(&painter, target, sourceRect(scene));
+}
+
+bool writeSvg(SystemScene &scene, const QString &path, QString *error)
+{
+    const QRectF source = sourceRect(scene);
+    QSvgGenerator generator;
+    generator.setFileName(path);
+    generator.setSize(source.size().toSize());
+    generator.setViewBox(QRectF(QPointF(0, 0), source.size()));
+    generator.setTitle(tr("RT System diagram"));
+    QPainter painter;
+    if (!painter.begin(&generator)) {
+        *error = tr("Cannot write \"%1\".").arg(path);
+        return false;
+    }
+    paintScene(scene, painter, QRectF(QPointF(0, 0), source.size()));
+    painter.end();
+    if (!QFileInfo::exists(path)) {
+        *error = tr("Cannot write \"%1\".").arg(path);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+QImage DiagramExport::renderImage(SystemModel &model, qreal scale)
+{
+    SystemScene scene(&model, nullptr);
+    scene.setGridVisible(false);
+    const QRectF source = sourceRect(scene);
+    QImage image((source.size() * scale).toSize(), QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    paintScene(scene, painter, QRectF(QPointF(0, 0), source.size() * scale));
+    painter.end();
+    return image;
+}
+
+bool DiagramExport::exportToFile(SystemModel &model, const QString &outputPath, QString *error)
+{
+    QString ignored;
+    QString &message = error ? *error : ignored;
+    const QString suffix = QFileInfo(outputPath).suffix().toLower();
+    if (suffix == QLatin1String("svg")) {
+        SystemScene scene(&model, nullptr);
+        scene.setGridVisible(false);
+        return writeSvg(scene, outputPath, &message);
+    }
+    if (!QImageWriter::supportedImageFormats().contains(suffix.toLatin1())) {
+        message = tr("Unknown image format \"%1\": use .svg or .png.").arg(suffix);
+        return false;
+    }
+    QImageWriter writer(outputPath, suffix.toLatin1());
+    if (!writer.write(renderImage(model))) {
+        message = tr("Cannot write \"%1\": %2").arg(outputPath, writer.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool DiagramExport::exportSystemFile(const QString &systemPath, const QString &outputPath,
+                                     QString *error)
+{
+    Profile::Diagnostics diagnostics;
+    std::optional<LoadedSystem> loaded = loadSystemFile(systemPath, &diagnostics);
+    if (!loaded) {
+        QStringList lines;
+        for (const Profile::Diagnostic &diagnostic : std::as_const(diagnostics))
+            lines << diagnostic.toString();
+        if (error)
+            *error = lines.isEmpty() ? tr("Cannot read \"%1\".").arg(systemPath)
+                                     : lines.join(QLatin1Char('\n'));
+        return false;
+    }
+    SystemModel model;
+    model.setProfile(loaded->profile, loaded->rtcProfiles);
+    return exportToFile(model, outputPath, error);
+}
+
+} // namespace SystemEditor
