@@ -28,6 +28,7 @@ private slots:
     void usageErrors_data();
     void usageErrors();
     void unreachableServerIsAFailure();
+    void drivesTheRealManager();
 
 private:
     struct Result
@@ -325,6 +326,37 @@ void TestRtctlRt::unreachableServerIsAFailure()
     const Result bad = rtctl({"cat", "/127.0.0.1:x/a.rtc"});
     QCOMPARE(bad.code, 1);
     QVERIFY(bad.err.contains("bad name server address"));
+}
+
+// The same commands against the project's rtmanager process instead of the test peer.
+void TestRtctlRt::drivesTheRealManager()
+{
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QVERIFY2(m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+                                 {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
+                                  "-o", "corba.nameservers=" + m_live.namingServer(),
+                                  "-o", "naming.formats=realhost.host_cxt/%n.rtc",
+                                  "-o", "manager.naming_formats=realhost.host_cxt/%n.mgr",
+                                  "-o", "manager.components.precreate=ConsoleIn,ConsoleOut"},
+                                 "rtmanager ready", &error),
+             qPrintable(error));
+    const QString dir = QStringLiteral("/%1/realhost.host_cxt").arg(m_live.namingServer());
+    const Result ls = rtctl({"ls"}, dir);
+    QCOMPARE(ls.code, 0);
+    QCOMPARE(ls.lines().size(), 3);
+    QVERIFY(ls.lines().contains("ConsoleIn0.rtc"));
+    QCOMPARE(rtctl({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}, dir).code, 0);
+    QCOMPARE(rtctl({"act", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}, dir).code, 0);
+    QTRY_VERIFY(rtctl({"ls", "-l", "ConsoleOut0.rtc"}, dir).out.simplified().startsWith("Active 1/1 1/1"));
+    QCOMPARE(rtctl({"deact", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}, dir).code, 0);
+    QCOMPARE(rtctl({"dis", "ConsoleIn0.rtc"}, dir).code, 0);
+    const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(port);
+    const Result created = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Late0", "list"}, dir);
+    QCOMPARE(created.code, 0);
+    QCOMPARE(created.lines().at(0), QString("Late0"));
+    QVERIFY(rtctl({"ls"}, dir).lines().contains("Late0.rtc"));
+    QCOMPARE(rtctl({"mgr", direct, "delete", "Late0"}, dir).code, 0);
 }
 
 QTEST_GUILESS_MAIN(TestRtctlRt)

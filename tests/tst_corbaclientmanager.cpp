@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: MIT
+#include "componentproxy.h"
+#include "corbaerror.h"
+#include "livesystem.h"
+#include "managerproxy.h"
+#include "namingbrowser.h"
+#include "orb.h"
+#include "portconnection.h"
+
+#include <QTest>
+
+using namespace Corba;
+
+// The client library against the project's real rtmanager (manager/) and omniNames.
+class TestCorbaClientManager : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void browsesTheManagersNames();
+    void readsProfilesAndPorts();
+    void activatesInTheRealExecutionContext();
+    void connectsDataPortsWithNegotiation();
+    void connectsServicePorts();
+    void editsConfiguration();
+    void createsAndDeletesComponents();
+
+private:
+    RtPath path(const QString &name) const;
+    ComponentProxy component(const QString &instance) const;
+
+    LiveTest::LiveSystem m_live;
+    quint16 m_port = 0;
+};
+
+static Error::Kind kindOf(const std::function<void()> &action)
+{
+    try {
+        action();
+    } catch (const Error &e) {
+        return e.kind();
+    }
+    return Error::Kind(-1);
+}
+
+RtPath TestCorbaClientManager::path(const QString &name) const
+{
+    return *RtPath::parse(QStringLiteral("/%1/rtmhost.host_cxt/%2").arg(m_live.namingServer(), name));
+}
+
+ComponentProxy TestCorbaClientManager::component(const QString &instance) const
+{
+    const RtPath p = path(instance + QStringLiteral(".rtc"));
+    return ComponentProxy(NamingBrowser::resolve(p), p.toString());
+}
+
+void TestCorbaClientManager::initTestCase()
+{
+    Orb::setCallTimeout(3000);
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    m_port = LiveTest::freePort();
+    const QStringList arguments{
+        "-d",
+        "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_port),
+        "-o", "corba.nameservers=" + m_live.namingServer(),
+        "-o", "naming.formats=rtmhost.host_cxt/%n.rtc",
+        "-o", "manager.naming_formats=rtmhost.host_cxt/%n.mgr",
+        "-o", "manager.components.precreate=ConsoleIn,ConsoleOut,ConfigSample,MyServiceProvider,"
+              "MyServiceConsumer"};
+    QVERIFY2(m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+             qPrintable(error));
+}
+
+void TestCorbaClientManager::browsesTheManagersNames()
+{
+    QStringList names;
+    for (const NamingNode &node : NamingBrowser::list(path(QString()))) {
+        QVERIFY2(node.type == NodeType::Component || node.type == NodeType::Manager, qPrintable(node.name));
+        names.append(node.name);
+    }
+    names.sort();
+    QCOMPARE(names, QStringList({"ConfigSample0.rtc", "ConsoleIn0.rtc", "ConsoleOut0.rtc",
+                                 "MyServiceConsumer0.rtc", "MyServiceProvider0.rtc", "manager.mgr"}));
+    const auto direct = RtPath::parse(QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_port));
+    QCOMPARE(NamingBrowser::node(*direct).type, NodeType::Manager);
+    QCOMPARE(NamingBrowser::list(*direct).size(), size_t(5));
+}
+
+void TestCorbaClientManager::readsProfilesAndPorts()
+{
+    const ComponentInfo info = component("ConsoleIn0").profile();
+    QCOMPARE(info.instanceName, QString("ConsoleIn0"));
+    QCOMPARE(info.typeName, QString("ConsoleIn"));
+    const PortInfo out = component("ConsoleIn0").port("out");
+    QCOMPARE(out.name, QString("ConsoleIn0.out"));
+    QVERIFY(out.isDataOut());
+    QVERIFY2(propertyValue(out.properties, "dataport.data_type").contains("TimedLong"),
+             qPrintable(propertyValue(out.properties, "dataport.data_type")));
+    const PortInfo service = component("MyServiceProvider0").port("MyService");
+    QVERIFY(service.isService());
+    QCOMPARE(service.interfaces.at(0).instanceName, QString("myservice0"));
+    const auto contexts = component("ConsoleIn0").executionContexts();
+    QVERIFY(!contexts.empty());
+    QVERIFY(contexts[0].owned);
+    QCOMPARE(contexts[0].kind, QString("PERIODIC"));
+}
+
+void TestCorbaClientManager::activatesInTheRealExecutionContext()
+{
+    const ComponentProxy rtc = component("ConsoleOut0");
+    QCOMPARE(rtc.state(), LifeCycleState::Inactive);
+    rtc.activate();
+    QTRY_COMPARE(rtc.state(), LifeCycleState::Active);
+    rtc.deactivate();
+    QTRY_COMPARE(rtc.state(), LifeCycleState::Inactive);
+    rtc.setRate(200);
+    QCOMPARE(rtc.executionContexts().at(0).rate, 200.0);
+}
+
+void TestCorbaClientManager::connectsDataPortsWithNegotiation()
+{
+    const ComponentProxy source = component("ConsoleIn0");
+    const ComponentProxy sink = component("ConsoleOut0");
+    ConnectionRequest request;
+    request.properties = {{"dataport.subscription_type", "flush"}};
+    const ConnectorInfo made = PortConnection::connect({source.port("out"), sink.port("in")}, request, "src");
+    QVERIFY(!made.id.isEmpty());
+    const PortInfo in = sink.port("in");
+    QCOMPARE(in.connectors.size(), size_t(1));
+    QCOMPARE(in.connectors[0].id, made.id);
+    QCOMPARE(in.connectors[0].ports, QStringList({"ConsoleIn0.out", "ConsoleOut0.in"}));
+    // The push connection carried the inport's IOR through the negotiation.
+    QVERIFY(hasProperty(made.properties, "dataport.corba_cdr.inport_ior"));
+    PortConnection::disconnect(source.port("out"), made.id, "src");
+    QVERIFY(sink.port("in").connectors.empty());
+    QCOMPARE(kindOf([&] { PortConnection::connect({sink.port("in"), sink.port("in")}, {}, "x"); }),
+             Error::Kind::Incompatible);
+}
+
+void TestCorbaClientManager::connectsServicePorts()
+{
+    const PortInfo consumer = component("MyServiceConsumer0").port("MyService");
+    const PortInfo provider = component("MyServiceProvider0").port("MyService");
+    const ConnectorInfo made = PortConnection::connect({consumer, provider}, {}, "svc");
+    QCOMPARE(component("MyServiceProvider0").port("MyService").connectors.at(0).id, made.id);
+    PortConnection::disconnectAll(consumer, "svc");
+    QVERIFY(component("MyServiceConsumer0").port("MyService").connectors.empty());
+}
+
+void TestCorbaClientManager::editsConfiguration()
+{
+    const ComponentProxy rtc = component("ConfigSample0");
+    QStringList ids;
+    for (const ConfigurationSet &set : rtc.configurationSets())
+        ids.append(set.id);
+    QVERIFY2(ids.contains("default") && ids.contains("mode0"), qPrintable(ids.join(',')));
+    QCOMPARE(rtc.activeConfigurationSet(), QString("default"));
+    rtc.setParameter("default", "int_param0", "321");
+    QCOMPARE(rtc.parameter("default", "int_param0"), QString("321"));
+    rtc.activateConfigurationSet("mode0");
+    QCOMPARE(rtc.activeConfigurationSet(), QString("mode0"));
+    rtc.activateConfigurationSet("default");
+}
+
+void TestCorbaClientManager::createsAndDeletesComponents()
+{
+    const RtPath mgrPath = path("manager.mgr");
+    const ManagerProxy manager(NamingBrowser::resolve(mgrPath), mgrPath.toString());
+    QVERIFY(manager.isMaster());
+    QStringList factories;
+    for (const Properties &factory : manager.factoryProfiles())
+        factories.append(propertyValue(factory, "implementation_id"));
+    QVERIFY2(factories.contains("ConsoleIn"), qPrintable(factories.join(',')));
+    const int before = manager.components().size();
+    const QString ior = manager.createComponent("ConsoleOut?instance_name=Extra0");
+    QCOMPARE(ComponentProxy(ior, "Extra0").profile().instanceName, QString("Extra0"));
+    QCOMPARE(manager.components().size(), before + 1);
+    QCOMPARE(manager.componentsByName("Extra0").size(), 1);
+    QCOMPARE(kindOf([&] { manager.createComponent("ConsoleOut?instance_name=Extra0"); }), Error::Kind::Refused);
+    manager.deleteComponent("Extra0");
+    QCOMPARE(manager.components().size(), before);
+    QVERIFY(!manager.profile().isEmpty());
+    QVERIFY(!manager.configuration().isEmpty());
+}
+
+QTEST_GUILESS_MAIN(TestCorbaClientManager)
+#include "tst_corbaclientmanager.moc"
