@@ -85,10 +85,16 @@ bool Document::writeTo(const QString &path, Profile::FileFormat format,
 {
     // Serialising first and writing atomically means a failed save leaves both the old file
     // and the document (still modified) as they were.
-    if (!Profile::writeFileAtomically(path, serialize(format), diagnostics))
+    if (!writeFiles(path, format, diagnostics))
         return false;
     m_undoStack->setClean();
     return true;
+}
+
+bool Document::writeFiles(const QString &path, Profile::FileFormat format,
+                          Profile::Diagnostics *diagnostics)
+{
+    return Profile::writeFileAtomically(path, serialize(format), diagnostics);
 }
 
 } // namespace Studio

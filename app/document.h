@@ -71,6 +71,13 @@ signals:
 protected:
     explicit Document(QObject *parent = nullptr);
 
+    /**
+     * Writes the document to `path` in `format`; the default writes serialize() atomically.
+     * Documents that write more than one file (a system with its RTC profiles) override it.
+     */
+    virtual bool writeFiles(const QString &path, Profile::FileFormat format,
+                            Profile::Diagnostics *diagnostics);
+
 private:
     void setFile(const QString &path, Profile::FileFormat format);
     bool writeTo(const QString &path, Profile::FileFormat format,

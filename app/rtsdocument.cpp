@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "rtsdocument.h"
 
+#include "systemfile.h"
+#include "systemmodel.h"
+
 #include <QCoreApplication>
+#include <QUndoStack>
 
 namespace Studio {
 
@@ -40,41 +44,73 @@ int partIndex(RtsDocument::SystemField field)
 
 RtsDocument::RtsDocument(Profile::RtsProfile profile, QObject *parent)
     : Document(parent)
-    , m_profile(std::move(profile))
-{ }
+    , m_model(new SystemEditor::SystemModel(std::move(profile), this))
+{
+    using SystemEditor::SystemModel;
+    connect(m_model, &SystemModel::systemInfoChanged, this, &RtsDocument::systemInfoChanged);
+    for (auto signal : {&SystemModel::componentAdded, &SystemModel::componentRemoved,
+                        &SystemModel::componentChanged, &SystemModel::connectorAdded,
+                        &SystemModel::connectorRemoved, &SystemModel::connectorChanged})
+        connect(m_model, signal, this, &RtsDocument::systemChanged);
+    connect(m_model, &SystemModel::componentRenamed, this, &RtsDocument::systemChanged);
+    connect(m_model, &SystemModel::reset, this, &RtsDocument::systemChanged);
+    // Relative pathUris mean something only once the document knows its file.
+    connect(this, &Document::filePathChanged, this, &RtsDocument::resolveComponentProfiles);
+}
+
+const Profile::RtsProfile &RtsDocument::profile() const
+{
+    return m_model->profile();
+}
 
 QByteArray RtsDocument::serialize(Profile::FileFormat format) const
 {
-    return Profile::serializeRtsProfile(m_profile, format);
+    return Profile::serializeRtsProfile(profile(), format);
 }
 
 void RtsDocument::setSystemId(const QString &id)
 {
-    if (m_profile.id == id)
-        return;
-    m_profile.id = id;
-    emit systemInfoChanged();
+    m_model->setSystemId(id);
 }
 
 void RtsDocument::setAbstract(const std::optional<QString> &abstract)
 {
-    if (m_profile.abstract == abstract)
-        return;
-    m_profile.abstract = abstract;
-    emit systemInfoChanged();
+    m_model->setAbstract(abstract);
+}
+
+bool RtsDocument::writeFiles(const QString &path, Profile::FileFormat format,
+                             Profile::Diagnostics *diagnostics)
+{
+    SystemEditor::SaveOptions options;
+    options.format = format;
+    // An unedited system saves as it was read, dates included.
+    options.stampDates = isModified();
+    return SystemEditor::saveSystemFile(*m_model, path, diagnostics, options);
+}
+
+void RtsDocument::resolveComponentProfiles()
+{
+    // Components whose RTC profile is already known (e.g. dropped from the repository) keep it.
+    Profile::Diagnostics warnings;
+    const QHash<QString, Profile::RtcProfile> found =
+        SystemEditor::resolveRtcProfiles(profile(), filePath(), &warnings);
+    for (auto it = found.cbegin(); it != found.cend(); ++it) {
+        if (!m_model->rtcProfile(it.key()))
+            m_model->setRtcProfile(it.key(), it.value());
+    }
 }
 
 QString RtsDocument::systemField(SystemField field) const
 {
     if (field == SystemField::Abstract)
-        return m_profile.abstract.value_or(QString());
-    const std::optional<QStringList> parts = idParts(m_profile.id);
+        return profile().abstract.value_or(QString());
+    const std::optional<QStringList> parts = idParts(profile().id);
     return parts ? parts->at(partIndex(field)) : QString();
 }
 
 bool RtsDocument::hasWellFormedId() const
 {
-    return idParts(m_profile.id).has_value();
+    return idParts(profile().id).has_value();
 }
 
 QString RtsDocument::idWithField(const QString &id, SystemField field, const QString &value)

@@ -26,6 +26,14 @@ SystemOutlineModel::SystemOutlineModel(RtsDocument *document, QObject *parent)
     , m_connectorIcon(Resources::iconPath(QStringLiteral("connector")))
 {
     build();
+    // The outline is small; rebuilding it on every change of the system keeps it simple and right.
+    if (document) {
+        connect(document, &RtsDocument::systemChanged, this, [this] {
+            beginResetModel();
+            build();
+            endResetModel();
+        });
+    }
 }
 
 QModelIndex SystemOutlineModel::index(int row, int column, const QModelIndex &parent) const

@@ -165,7 +165,8 @@ bool saveSystemFile(SystemModel &model, const QString &path, Diagnostics *diagno
                 return false;
         }
     }
-    if (!saveRtsProfileFile(profile, path, diagnostics))
+    const FileFormat format = options.format.value_or(formatForFileName(path));
+    if (!writeFileAtomically(path, serializeRtsProfile(profile, format), diagnostics))
         return false;
     model.adoptSavedProfile(profile);
     return true;

@@ -49,6 +49,8 @@ struct SaveOptions
     bool copyRtcProfiles = true;
     /// Set updateDate to now (and creationDate when empty).
     bool stampDates = true;
+    /// The format to write; by default the one the file name's extension names.
+    std::optional<Profile::FileFormat> format;
 };
 
 /// The profile as saveSystemFile() writes it (dates, pathUris `RTCs/<instance>.xml`, relative

@@ -183,8 +183,9 @@ void TestSeSave::failedSaveKeepsTheOldFile()
     // Writing the system file itself fails (its path is a folder): nothing changes either.
     QDir().mkpath(m_dir->filePath("folder.xml"));
     diagnostics.clear();
-    QVERIFY(!saveSystemFile(*m_model, m_dir->filePath("folder.xml"), &diagnostics,
-                            SaveOptions {false, true}));
+    SaveOptions noCopies;
+    noCopies.copyRtcProfiles = false;
+    QVERIFY(!saveSystemFile(*m_model, m_dir->filePath("folder.xml"), &diagnostics, noCopies));
     QVERIFY(!diagnostics.isEmpty());
     QCOMPARE(m_model->profile(), before);
 }
