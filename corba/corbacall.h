@@ -15,8 +15,8 @@ namespace Corba::Internal {
 /// The process's ORB, created on first use.
 CORBA::ORB_ptr orb();
 
-/// Applies the configured call and connect timeouts to the calling thread.
-void applyTimeouts();
+/// Creates the ORB on first use; the configured timeouts are in force from then on.
+void ensureOrb();
 
 /// Translates the exception being handled into an Error naming `target`; call only in a catch.
 [[noreturn]] void rethrowAsError(const QString &target);
@@ -28,7 +28,7 @@ void applyTimeouts();
 template<typename F>
 auto call(const QString &target, F &&f) -> decltype(f())
 {
-    applyTimeouts();
+    ensureOrb();
     try {
         return f();
     } catch (const Error &) {

@@ -22,6 +22,14 @@ QStringList s_arguments;
 std::once_flag s_once;
 CORBA::ORB_var s_orb;
 
+// The process-wide timeouts, not per-thread ones: omniORB refuses per-thread timeouts in threads
+// it did not create (std::thread, QThread workers).
+void applyTimeout(int milliseconds)
+{
+    omniORB::setClientCallTimeout(CORBA::ULong(milliseconds));
+    omniORB::setClientConnectTimeout(CORBA::ULong(milliseconds));
+}
+
 void createOrb()
 {
     QStringList arguments{QStringLiteral("rtcorba")};
@@ -41,6 +49,7 @@ void createOrb()
     const char *options[][2] = {{"traceLevel", "0"}, {nullptr, nullptr}};
     s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
     s_initialised = true;
+    applyTimeout(s_callTimeout);
 }
 
 } // namespace
@@ -54,6 +63,8 @@ void Orb::setArguments(const QStringList &arguments)
 void Orb::setCallTimeout(int milliseconds)
 {
     s_callTimeout = milliseconds > 0 ? milliseconds : defaultCallTimeout;
+    if (s_initialised)
+        applyTimeout(s_callTimeout);
 }
 
 int Orb::callTimeout()
@@ -74,14 +85,9 @@ CORBA::ORB_ptr orb()
     return s_orb.in();
 }
 
-void applyTimeouts()
+void ensureOrb()
 {
     orb();
-    // The process-wide timeout, not the per-thread one: omniORB refuses per-thread timeouts in
-    // threads it did not create (std::thread, QThread workers).
-    const auto timeout = CORBA::ULong(Orb::callTimeout());
-    omniORB::setClientCallTimeout(timeout);
-    omniORB::setClientConnectTimeout(timeout);
 }
 
 namespace {
@@ -112,7 +118,9 @@ void rethrowAsError(const QString &target)
         // omniORB reports its own call timeouts as TRANSIENT with a dedicated minor code.
         if (e.minor() == omni::TRANSIENT_CallTimedout)
             throw fail(Kind::Timeout, QStringLiteral("no reply within %1 ms").arg(Orb::callTimeout()));
-        throw fail(Kind::Transient, QStringLiteral("unreachable (%1)").arg(systemExceptionText(e)));
+        const QString why = e.minor() == omni::TRANSIENT_ConnectFailed ? QStringLiteral("cannot connect")
+                                                                        : systemExceptionText(e);
+        throw fail(Kind::Transient, QStringLiteral("unreachable (%1)").arg(why));
     } catch (const CORBA::COMM_FAILURE &e) {
         throw fail(Kind::CommFailure, QStringLiteral("connection failed (%1)").arg(systemExceptionText(e)));
     } catch (const CORBA::OBJECT_NOT_EXIST &) {
