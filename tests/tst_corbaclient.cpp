@@ -39,6 +39,8 @@ private slots:
     void drivesTheManager();
     void managerReachableByCorbaloc();
     void exitedComponentIsGone();
+    void bindsAndUnbindsNames();
+    void shutsTheManagerDown();
     void unreachablePeersGiveTypedErrors();
     void stoppedPeerTimesOut();
     void callsFromWorkerThreads();
@@ -361,6 +363,40 @@ void TestCorbaClient::exitedComponentIsGone()
     QCOMPARE(kindOf([&] { leaving.profile(); }), Error::Kind::ObjectNotExist);
     const QString message = messageOf([&] { leaving.profile(); });
     QVERIFY2(message.startsWith(p->toString() + ": object does not exist"), qPrintable(message));
+}
+
+void TestCorbaClient::bindsAndUnbindsNames()
+{
+    // An object bound under a new name, then the zombie cleared the way "kill zombies" does.
+    const QString ior = NamingBrowser::resolve(path("ConsoleIn0.rtc"));
+    NamingBrowser::bind(path("Alias0.rtc"), ior);
+    QCOMPARE(NamingBrowser::node(path("Alias0.rtc")).type, NodeType::Component);
+    QCOMPARE(ComponentProxy(NamingBrowser::resolve(path("Alias0.rtc")), "alias").profile().instanceName,
+             QString("ConsoleIn0"));
+    NamingBrowser::unbind(path("Alias0.rtc"));
+    QCOMPARE(kindOf([&] { NamingBrowser::node(path("Alias0.rtc")); }), Error::Kind::NotFound);
+    QCOMPARE(kindOf([&] { NamingBrowser::unbind(path("Alias0.rtc")); }), Error::Kind::NotFound);
+    const auto nowhere = RtPath::parse(QStringLiteral("/%1/none.host_cxt/X.rtc").arg(m_live.namingServer()));
+    QCOMPARE(kindOf([&] { NamingBrowser::bind(*nowhere, ior); }), Error::Kind::NotFound);
+}
+
+void TestCorbaClient::shutsTheManagerDown()
+{
+    QString error;
+    quint16 port = 0;
+    QProcess *peer = m_live.startPeer({"ConsoleIn"}, &error, &port, "downhost");
+    QVERIFY2(peer, qPrintable(error));
+    const auto direct = RtPath::parse(QStringLiteral("corbaloc::127.0.0.1:%1").arg(port));
+    const ManagerProxy manager(NamingBrowser::resolve(*direct), direct->toString());
+    manager.shutdown();
+    QVERIFY(peer->waitForFinished(10000));
+    QCOMPARE(peer->exitCode(), 0);
+    // Depending on whether the old connection is noticed as closed first, the peer is gone either way.
+    const Error::Kind gone = kindOf([&] { manager.isMaster(); });
+    QVERIFY2(gone == Error::Kind::Transient || gone == Error::Kind::CommFailure,
+             qPrintable(Error::kindName(gone)));
+    const auto context = RtPath::parse(QStringLiteral("/%1/downhost.host_cxt").arg(m_live.namingServer()));
+    QVERIFY(NamingBrowser::list(*context).empty());
 }
 
 void TestCorbaClient::unreachablePeersGiveTypedErrors()

@@ -12,6 +12,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace LivePeer {
@@ -28,6 +29,7 @@ struct Context
     std::string host;
     std::recursive_mutex mutex;
     Manager *manager = nullptr;
+    std::thread shutdownThread; ///< stops the ORB after Manager::shutdown() replied; joined by main
 
     /// Binds `object` at `<host>.host_cxt/<id>.<kind>`.
     void bind(const std::string &id, const std::string &kind, CORBA::Object_ptr object);

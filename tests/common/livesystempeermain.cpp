@@ -100,7 +100,13 @@ int main(int argc, char **argv)
         bindZombies(context);
     std::printf("ready\n");
     std::fflush(stdout);
-    context.orb->run();
-    context.orb->destroy();
+    // run() may report BAD_INV_ORDER when the shutdown thread has already torn the ORB down; the
+    // process leaves anyway, and the ORB is left to process exit.
+    try {
+        context.orb->run();
+    } catch (const CORBA::BAD_INV_ORDER &) {
+    }
+    if (context.shutdownThread.joinable())
+        context.shutdownThread.join();
     return 0;
 }

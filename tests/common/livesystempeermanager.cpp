@@ -2,6 +2,7 @@
 #include "livesystempeer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 #include <thread>
 
@@ -500,8 +501,17 @@ RTC::ReturnCode_t Manager::shutdown()
         m_components.clear();
         m_context.unbind("manager", "mgr");
     }
-    CORBA::ORB_var orb = CORBA::ORB::_duplicate(m_context.orb.in());
-    std::thread([orb] { orb->shutdown(true); }).detach();
+    std::lock_guard<std::recursive_mutex> lock(m_context.mutex);
+    if (!m_context.shutdownThread.joinable()) {
+        CORBA::ORB_var orb = CORBA::ORB::_duplicate(m_context.orb.in());
+        m_context.shutdownThread = std::thread([orb] {
+            try {
+                orb->shutdown(true);
+            } catch (const CORBA::Exception &e) {
+                std::fprintf(stderr, "rtstudio_livepeer: %s in shutdown\n", e._name());
+            }
+        });
+    }
     return RTC::RTC_OK;
 }
 
