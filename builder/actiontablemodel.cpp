@@ -26,9 +26,9 @@ ActionTableModel::ActionTableModel(ComponentModel *model, QUndoStack *undoStack,
 const QList<RtcAction> &ActionTableModel::editedActions()
 {
     static const QList<RtcAction> actions {
-        RtcAction::OnInitialize, RtcAction::OnFinalize,  RtcAction::OnStartup,
-        RtcAction::OnShutdown,   RtcAction::OnActivated, RtcAction::OnDeactivated,
-        RtcAction::OnAborting,   RtcAction::OnError,     RtcAction::OnReset,
+        RtcAction::OnInitialize, RtcAction::OnFinalize,    RtcAction::OnStartup,
+        RtcAction::OnShutdown,   RtcAction::OnActivated,   RtcAction::OnDeactivated,
+        RtcAction::OnAborting,   RtcAction::OnError,       RtcAction::OnReset,
         RtcAction::OnExecute,    RtcAction::OnStateUpdate, RtcAction::OnRateChanged,
     };
     return actions;

@@ -62,7 +62,8 @@ ActivityPage::ActivityPage(ComponentModel *model, QUndoStack *undoStack, QWidget
     m_view->setColumnWidth(ActionTableModel::CallbackColumn,
                            m_view->columnWidth(ActionTableModel::CallbackColumn) + 40);
 
-    auto *group = new QGroupBox(tr("Selected callback"), this);
+    auto *group = new QGroupBox(this);
+    m_group = group;
     auto *form = new QFormLayout(group);
     const QList<QPair<DocField, QString>> fields {
         {DocField::Description, tr("&Description:")},
@@ -106,10 +107,14 @@ void ActivityPage::refreshForm()
 {
     if (!m_model)
         return;
-    const auto status = m_model->action(ActionTableModel::action(m_row));
-    for (DocField field : {DocField::Description, DocField::PreCondition, DocField::PostCondition}) {
-        const QString text = status && status->doc ? ((*status->doc).*member(field)).value_or(QString())
-                                                    : QString();
+    const Profile::RtcAction action = ActionTableModel::action(m_row);
+    m_group->setTitle(tr("Callback %1").arg(Profile::rtcActionKey(action)));
+    const auto status = m_model->action(action);
+    for (DocField field :
+         {DocField::Description, DocField::PreCondition, DocField::PostCondition}) {
+        const QString text = status && status->doc
+            ? ((*status->doc).*member(field)).value_or(QString())
+            : QString();
         QLineEdit *edit = docEditor(field);
         if (edit->text() != text)
             edit->setText(text);
@@ -126,7 +131,8 @@ void ActivityPage::userEdited(DocField field, const QString &text)
     (*edited.doc).*member(field) = text;
     if (edited == status)
         return;
-    m_undoStack->push(new SetActionCommand(m_model, action, edited, QLatin1String(mergeKey(field))));
+    m_undoStack->push(
+        new SetActionCommand(m_model, action, edited, QLatin1String(mergeKey(field))));
 }
 
 } // namespace Builder

@@ -6,6 +6,7 @@
 #include <QPointer>
 #include <QWidget>
 
+class QGroupBox;
 class QLineEdit;
 class QTableView;
 class QUndoStack;
@@ -42,6 +43,7 @@ private:
     ActionTableModel *m_table;
     QTableView *m_view;
     QList<QLineEdit *> m_docEditors;
+    QGroupBox *m_group = nullptr;
     int m_row = 0;
 };
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "basicpage.h"
 
-#include "fieldrules.h"
 #include "componentcommands.h"
 #include "componentrules.h"
+#include "fieldrules.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -203,11 +203,12 @@ void BasicPage::showGenerationProblems(const Profile::Diagnostics &problems)
 {
     QStringList lines;
     for (const Profile::Diagnostic &d : problems)
-        lines << (d.object.isEmpty() ? d.message : QStringLiteral("%1: %2").arg(d.object, d.message));
-    m_generationProblems->setText(
-        lines.isEmpty() ? QString()
-                        : tr("Cannot generate while these problems remain:\n%1")
-                              .arg(lines.join(QLatin1Char('\n'))));
+        lines << (d.object.isEmpty() ? d.message
+                                     : QStringLiteral("%1: %2").arg(d.object, d.message));
+    m_generationProblems->setText(lines.isEmpty()
+                                      ? QString()
+                                      : tr("Cannot generate while these problems remain:\n%1")
+                                            .arg(lines.join(QLatin1Char('\n'))));
     m_generationProblems->setVisible(!lines.isEmpty());
 }
 
@@ -269,8 +270,7 @@ void BasicPage::addComboBox(QFormLayout *form, BasicField field, const QString &
     addRow(form, field, label, combo);
 }
 
-void BasicPage::addRow(QFormLayout *form, BasicField field, const QString &label,
-                       QWidget *editor)
+void BasicPage::addRow(QFormLayout *form, BasicField field, const QString &label, QWidget *editor)
 {
     // The editor and its problem line share one cell, so the message sits right under it.
     auto *cell = new QWidget;

@@ -71,8 +71,7 @@ private:
                      const QString &placeholder);
     void addComboBox(QFormLayout *form, BasicField field, const QString &label,
                      const QStringList &items, bool editable);
-    void addRow(QFormLayout *form, BasicField field, const QString &label,
-                QWidget *editor);
+    void addRow(QFormLayout *form, BasicField field, const QString &label, QWidget *editor);
 
     void userEdited(BasicField field, const QString &text);
     void refresh(BasicField field);

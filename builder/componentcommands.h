@@ -71,7 +71,8 @@ private:
     std::optional<Profile::RtcActionStatus> m_after;
 };
 
-/// Sets the component's documentation (`rtcDoc:Doc` of the basic info); merges like SetActionCommand.
+/// Sets the component's documentation (`rtcDoc:Doc` of the basic info); merges like
+/// SetActionCommand.
 class SetComponentDocCommand : public QUndoCommand
 {
     Q_DECLARE_TR_FUNCTIONS(SetComponentDocCommand)

@@ -39,6 +39,7 @@ ComponentEditor::ComponentEditor(ComponentModel *model, QUndoStack *undoStack, T
     splitter->addWidget(m_preview);
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 1);
+    splitter->setSizes({900, qMax(380, m_preview->sizeHint().width())});
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(splitter);
@@ -86,7 +87,21 @@ void ComponentEditor::requestGenerate()
 {
     if (!m_model)
         return;
-    const Profile::Diagnostics problems = generationProblems(m_model->profile());
+    Profile::Diagnostics problems = generationProblems(m_model->profile());
+    // The generator needs every interface's IDL; an empty list means no IDL could be read.
+    const QStringList known = m_types->interfaceTypes();
+    for (const Profile::RtcServicePort &port : m_model->profile().servicePorts) {
+        for (const Profile::RtcServiceInterface &interface : port.interfaces) {
+            if (known.isEmpty() || interface.type.isEmpty() || known.contains(interface.type))
+                continue;
+            Profile::Diagnostic d = Profile::Diagnostic::error(
+                QString(), 0, 0,
+                tr("The interface type '%1' is not declared in any parsed IDL file.")
+                    .arg(interface.type));
+            d.object = tr("interface %1 of %2").arg(interface.name, port.name);
+            problems.append(d);
+        }
+    }
     m_basicPage->showGenerationProblems(problems);
     if (problems.isEmpty())
         emit generateRequested();

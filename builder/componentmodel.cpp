@@ -56,27 +56,22 @@ std::optional<QString> *optionalMember(RtcBasicInfo &info, BasicField field)
 }
 
 /// The profile's list behind a part, as the element type T.
-template<typename T>
-QList<T> &listOf(Profile::RtcProfile &profile);
-template<>
-QList<Profile::RtcDataPort> &listOf(Profile::RtcProfile &profile)
+template<typename T> QList<T> &listOf(Profile::RtcProfile &profile);
+template<> QList<Profile::RtcDataPort> &listOf(Profile::RtcProfile &profile)
 {
     return profile.dataPorts;
 }
-template<>
-QList<Profile::RtcServicePort> &listOf(Profile::RtcProfile &profile)
+template<> QList<Profile::RtcServicePort> &listOf(Profile::RtcProfile &profile)
 {
     return profile.servicePorts;
 }
-template<>
-QList<Profile::RtcConfiguration> &listOf(Profile::RtcProfile &profile)
+template<> QList<Profile::RtcConfiguration> &listOf(Profile::RtcProfile &profile)
 {
     return profile.configurations;
 }
 
 /// Calls `f(list)` with the profile's list of `part`.
-template<typename F>
-auto withList(Profile::RtcProfile &profile, Part part, F &&f)
+template<typename F> auto withList(Profile::RtcProfile &profile, Part part, F &&f)
 {
     switch (part) {
     case Part::DataPort:
@@ -89,8 +84,7 @@ auto withList(Profile::RtcProfile &profile, Part part, F &&f)
     return f(listOf<Profile::RtcConfiguration>(profile));
 }
 
-template<typename T>
-using Element = typename std::decay_t<T>::value_type;
+template<typename T> using Element = typename std::decay_t<T>::value_type;
 
 } // namespace
 
@@ -147,8 +141,8 @@ bool ComponentModel::isOptional(BasicField field)
 
 bool ComponentModel::isIdPart(BasicField field)
 {
-    return field == BasicField::Name || field == BasicField::Vendor
-        || field == BasicField::Category || field == BasicField::Version;
+    return field == BasicField::Name || field == BasicField::Vendor || field == BasicField::Category
+        || field == BasicField::Version;
 }
 
 QString ComponentModel::fieldLabel(BasicField field)

@@ -27,8 +27,8 @@ enum class BasicField {
 enum class Part { DataPort, ServicePort, Configuration };
 
 /// One element of a Part's list.
-using PartItem = std::variant<Profile::RtcDataPort, Profile::RtcServicePort,
-                              Profile::RtcConfiguration>;
+using PartItem
+    = std::variant<Profile::RtcDataPort, Profile::RtcServicePort, Profile::RtcConfiguration>;
 
 /**
  * The editing model of one component (RTC Builder's editor): holds the RtcProfile value and is
@@ -76,7 +76,8 @@ public:
     // ---- actions, documentation, language
     /// The entry of an action; nothing when the file has none.
     std::optional<Profile::RtcActionStatus> action(Profile::RtcAction action) const;
-    void setAction(Profile::RtcAction action, const std::optional<Profile::RtcActionStatus> &status);
+    void setAction(Profile::RtcAction action,
+                   const std::optional<Profile::RtcActionStatus> &status);
     /// `rtcDoc:Doc` of the basic information (Documentation page).
     void setComponentDoc(const std::optional<Profile::RtcBasicDoc> &doc);
     /// `rtc:Language` with its targets and libraries (Language/Environment page).

@@ -34,6 +34,7 @@ ComponentPreview::ComponentPreview(ComponentModel *model, QWidget *parent)
     setObjectName(QStringLiteral("componentPreview"));
     connect(model, &ComponentModel::changed, this, [this] {
         relayout();
+        updateGeometry();
         update();
     });
     relayout();
@@ -41,7 +42,7 @@ ComponentPreview::ComponentPreview(ComponentModel *model, QWidget *parent)
 
 QSize ComponentPreview::sizeHint() const
 {
-    return {360, 320};
+    return QSize(qMax(360, int(m_extent.width()) + 16), qMax(320, int(m_extent.height()) + 16));
 }
 
 QSize ComponentPreview::minimumSizeHint() const
@@ -70,20 +71,42 @@ void ComponentPreview::relayout()
         QStringList types;
         for (const Profile::RtcServiceInterface &i : p.interfaces)
             types << i.type;
-        m_ports.append({Port::Service, p.name, types.join(QStringLiteral(", ")),
-                        sideOf(p.position, Port::Service), {}});
+        m_ports.append({Port::Service,
+                        p.name,
+                        types.join(QStringLiteral(", ")),
+                        sideOf(p.position, Port::Service),
+                        {}});
     }
     QHash<QString, QList<Port *>> bySide;
     for (Port &port : m_ports)
         bySide[port.side].append(&port);
-    const qreal width = qMax<qreal>(
-        140, TopPitch * qMax(bySide.value(QStringLiteral("TOP")).size(),
-                             bySide.value(QStringLiteral("BOTTOM")).size()));
-    const qreal height = qMax<qreal>(
-        90, SidePitch * qMax(bySide.value(QStringLiteral("LEFT")).size(),
-                             bySide.value(QStringLiteral("RIGHT")).size()));
+    const qreal width = qMax<qreal>(140,
+                                    TopPitch
+                                        * qMax(bySide.value(QStringLiteral("TOP")).size(),
+                                               bySide.value(QStringLiteral("BOTTOM")).size()));
+    const qreal height = qMax<qreal>(90,
+                                     SidePitch
+                                         * qMax(bySide.value(QStringLiteral("LEFT")).size(),
+                                                bySide.value(QStringLiteral("RIGHT")).size()));
+    // Labels sit outside the box: keep room for the widest on each side, then centre.
+    const QFontMetricsF metrics(font());
+    const auto labelWidth = [&](const QString &side) {
+        qreal widest = 0;
+        for (const Port *port : bySide.value(side))
+            widest = qMax(widest,
+                          qMax(metrics.horizontalAdvance(port->name),
+                               metrics.horizontalAdvance(port->type) * 0.85));
+        return widest > 0 ? widest + Marker + 8 : Marker;
+    };
+    const qreal left = labelWidth(QStringLiteral("LEFT"));
+    const qreal right = labelWidth(QStringLiteral("RIGHT"));
+    const qreal above = Marker + 4 + metrics.height();
     m_box = QRectF(0, 0, width, height);
     m_box.moveCenter(QRectF(rect()).center());
+    const qreal spare = rect().width() - left - right - width;
+    m_box.moveLeft(left + qMax<qreal>(0, spare / 2));
+    m_box.moveTop(qMax(above, m_box.top()));
+    m_extent = QSizeF(left + width + right, 2 * above + height);
     for (const QString &side : Profile::rtcPositions())
         layoutSide(side, bySide.value(side));
 }

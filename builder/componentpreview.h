@@ -53,6 +53,7 @@ private:
 
     QPointer<ComponentModel> m_model;
     QRectF m_box;
+    QSizeF m_extent; ///< box plus labels, for sizeHint()
     QList<Port> m_ports;
     QString m_title;
 };

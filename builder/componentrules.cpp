@@ -61,7 +61,8 @@ QString duplicatePortName(const RtcProfile &profile, Part part, int index)
     }
     if (uses.isEmpty())
         return {};
-    return tr("The port name '%1' is already used by %2.").arg(name, describe(profile, uses.first()));
+    return tr("The port name '%1' is already used by %2.")
+        .arg(name, describe(profile, uses.first()));
 }
 
 /// Variable names of ports, interfaces and parameters become members of one class.

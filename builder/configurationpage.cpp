@@ -53,14 +53,16 @@ ItemField constraintField()
         const Profile::ConstraintParseResult parsed = Profile::parseConstraintString(text);
         auto &constraint = configuration(item).constraint;
         // Text that means the tree already there keeps the tree (and what only the file has).
-        if (parsed.ok() && Profile::constraintToString(constraint)
+        if (parsed.ok()
+            && Profile::constraintToString(constraint)
                 != Profile::constraintToString(parsed.constraint))
             constraint = parsed.constraint;
     };
     field.check = [](const QString &text) {
         const Profile::ConstraintParseResult parsed = Profile::parseConstraintString(text);
-        return parsed.ok() ? QString()
-                           : ConfigurationPage::tr("Constraint syntax: %1").arg(parsed.error->toString());
+        return parsed.ok()
+            ? QString()
+            : ConfigurationPage::tr("Constraint syntax: %1").arg(parsed.error->toString());
     };
     return field;
 }
@@ -107,8 +109,8 @@ QStringList ConfigurationPage::typePresets()
 
 QList<ItemField> ConfigurationPage::columns()
 {
-    ItemField type = textField<RtcConfiguration>(QStringLiteral("type"), tr("Type"),
-                                                 &RtcConfiguration::type);
+    ItemField type
+        = textField<RtcConfiguration>(QStringLiteral("type"), tr("Type"), &RtcConfiguration::type);
     type.choices = [] { return typePresets(); };
     return {
         textField<RtcConfiguration>(QStringLiteral("name"), tr("Name"), &RtcConfiguration::name),

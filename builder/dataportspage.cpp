@@ -10,8 +10,8 @@
 
 #include <QLabel>
 #include <QScrollArea>
-#include <QTableView>
 #include <QSplitter>
+#include <QTableView>
 #include <QVBoxLayout>
 
 namespace Builder {
@@ -26,12 +26,13 @@ QList<ItemField> tableColumns(TypeCatalog *types)
     ItemField type = textField<RtcDataPort>(QStringLiteral("type"), DataPortsPage::tr("Data type"),
                                             &RtcDataPort::type);
     type.choices = [types] { return types->dataTypes(); };
-    ItemField position = textField<RtcDataPort>(QStringLiteral("position"),
-                                                DataPortsPage::tr("Position"), &RtcDataPort::position);
+    ItemField position = textField<RtcDataPort>(
+        QStringLiteral("position"), DataPortsPage::tr("Position"), &RtcDataPort::position);
     position.choices = [] { return Profile::rtcPositions(); };
     position.editableChoices = false;
     return {
-        textField<RtcDataPort>(QStringLiteral("name"), DataPortsPage::tr("Name"), &RtcDataPort::name),
+        textField<RtcDataPort>(QStringLiteral("name"), DataPortsPage::tr("Name"),
+                               &RtcDataPort::name),
         type,
         optionalTextField<RtcDataPort>(QStringLiteral("variableName"),
                                        DataPortsPage::tr("Variable name"),
@@ -83,11 +84,10 @@ DataPortsPage::DataPortsPage(ComponentModel *model, QUndoStack *undoStack, TypeC
 
 ListEditor *DataPortsPage::makeList(Profile::RtcPortType type, const QString &title)
 {
-    const auto filter = [type](const PartItem &item) {
-        return std::get<RtcDataPort>(item).kind() == type;
-    };
-    auto *table = new ItemTableModel(m_model, m_undoStack, Part::DataPort, tableColumns(m_types),
-                                     filter);
+    const auto filter
+        = [type](const PartItem &item) { return std::get<RtcDataPort>(item).kind() == type; };
+    auto *table
+        = new ItemTableModel(m_model, m_undoStack, Part::DataPort, tableColumns(m_types), filter);
     const auto factory = [this, type]() -> PartItem {
         RtcDataPort port;
         port.portType = Profile::rtcPortTypeText(type);

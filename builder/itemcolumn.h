@@ -33,28 +33,33 @@ template<typename T>
 ItemField optionalTextField(const QString &key, const QString &label,
                             std::optional<QString> T::*member)
 {
-    return {key, label,
-            [member](const PartItem &item) {
-                return (std::get<T>(item).*member).value_or(QString());
-            },
-            [member](PartItem &item, const QString &text) {
-                auto &value = std::get<T>(item).*member;
-                // Clearing a field that was absent leaves it absent; one that existed stays empty.
-                if (text.isEmpty() && !value)
-                    return;
-                value = text;
-            },
-            {}, true, {}};
+    return {
+        key,
+        label,
+        [member](const PartItem &item) { return (std::get<T>(item).*member).value_or(QString()); },
+        [member](PartItem &item, const QString &text) {
+            auto &value = std::get<T>(item).*member;
+            // Clearing a field that was absent leaves it absent; one that existed stays empty.
+            if (text.isEmpty() && !value)
+                return;
+            value = text;
+        },
+        {},
+        true,
+        {}};
 }
 
 /// Shorthand for a field of element type T held in a QString member.
 template<typename T>
 ItemField textField(const QString &key, const QString &label, QString T::*member)
 {
-    return {key, label,
+    return {key,
+            label,
             [member](const PartItem &item) { return std::get<T>(item).*member; },
             [member](PartItem &item, const QString &text) { std::get<T>(item).*member = text; },
-            {}, true, {}};
+            {},
+            true,
+            {}};
 }
 
 /// Shorthand for a text of an optional documentation struct D held in member `doc` of T; the
@@ -63,7 +68,8 @@ template<typename T, typename D>
 ItemField docField(const QString &key, const QString &label, std::optional<D> T::*doc,
                    std::optional<QString> D::*member)
 {
-    return {key, label,
+    return {key,
+            label,
             [doc, member](const PartItem &item) {
                 const auto &d = std::get<T>(item).*doc;
                 return d ? ((*d).*member).value_or(QString()) : QString();
@@ -76,7 +82,9 @@ ItemField docField(const QString &key, const QString &label, std::optional<D> T:
                     d = D();
                 (*d).*member = text;
             },
-            {}, true, {}};
+            {},
+            true,
+            {}};
 }
 
 } // namespace Builder

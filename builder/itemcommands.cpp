@@ -74,9 +74,8 @@ void MoveItemCommand::redo()
         m_model->moveItem(m_part, m_from, m_to);
 }
 
-EditItemCommand::EditItemCommand(ComponentModel *model, Part part, int index,
-                                 const PartItem &item, const QString &mergeKey,
-                                 const QString &text, QUndoCommand *parent)
+EditItemCommand::EditItemCommand(ComponentModel *model, Part part, int index, const PartItem &item,
+                                 const QString &mergeKey, const QString &text, QUndoCommand *parent)
     : QUndoCommand(parent)
     , m_model(model)
     , m_part(part)

@@ -25,7 +25,6 @@ void setInvalidLook(QWidget *editor, bool invalid)
     editor->setPalette(palette);
 }
 
-
 } // namespace
 
 ItemForm::ItemForm(ComponentModel *model, QUndoStack *undoStack, Part part, QWidget *parent)
@@ -89,16 +88,20 @@ QWidget *ItemForm::addField(const ItemField &field)
         auto *combo = new QComboBox(cell);
         combo->setEditable(field.editableChoices);
         combo->setInsertPolicy(QComboBox::NoInsert);
+        // Long IDL names must not widen the form beyond its pane.
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(12);
         combo->addItems(field.choices());
         if (field.editableChoices) {
             // Long IDL type lists: match anywhere in the name while typing.
             combo->completer()->setFilterMode(Qt::MatchContains);
             combo->completer()->setCompletionMode(QCompleter::PopupCompletion);
         }
-        connect(combo, &QComboBox::currentTextChanged, this, [this, key = field.key](const QString &t) {
-            if (!m_updating)
-                userEdited(key, t);
-        });
+        connect(combo, &QComboBox::currentTextChanged, this,
+                [this, key = field.key](const QString &t) {
+                    if (!m_updating)
+                        userEdited(key, t);
+                });
         editor = combo;
     } else {
         auto *line = new QLineEdit(cell);
@@ -233,7 +236,8 @@ void ItemForm::userEdited(const QString &key, const QString &text)
         m_editingKey = key;
         m_undoStack->push(new EditItemCommand(
             m_model, m_part, m_index, edited, m_mergePrefix + key,
-            tr("Change %1 of %2").arg(row.field.label.toLower(), m_model->itemName(m_part, m_index))));
+            tr("Change %1 of %2")
+                .arg(row.field.label.toLower(), m_model->itemName(m_part, m_index))));
         m_editingKey.clear();
         return;
     }

@@ -154,8 +154,8 @@ void ItemTableModel::onInserted(Part part, int index)
     shift(index, 1);
     if (!accepts(index))
         return;
-    const int row = int(std::count_if(m_rows.cbegin(), m_rows.cend(),
-                                      [index](int r) { return r < index; }));
+    const int row
+        = int(std::count_if(m_rows.cbegin(), m_rows.cend(), [index](int r) { return r < index; }));
     beginInsertRows({}, row, row);
     m_rows.insert(row, index);
     endInsertRows();
@@ -195,8 +195,8 @@ void ItemTableModel::onChanged(Part part, int index)
         m_rows.removeAt(row);
         endRemoveRows();
     } else if (shown) {
-        const int at = int(std::count_if(m_rows.cbegin(), m_rows.cend(),
-                                         [index](int r) { return r < index; }));
+        const int at = int(
+            std::count_if(m_rows.cbegin(), m_rows.cend(), [index](int r) { return r < index; }));
         beginInsertRows({}, at, at);
         m_rows.insert(at, index);
         endInsertRows();

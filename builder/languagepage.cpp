@@ -81,12 +81,10 @@ LanguagePage::LanguagePage(ComponentModel *model, QUndoStack *undoStack, QWidget
     m_libraries->horizontalHeader()->setStretchLastSection(true);
     auto *add = new QPushButton(tr("Add Library"), environment);
     auto *remove = new QPushButton(tr("Remove Library"), environment);
-    connect(add, &QPushButton::clicked, this, [this] {
-        m_libraryTable->addLibrary(tr("library"));
-    });
-    connect(remove, &QPushButton::clicked, this, [this] {
-        m_libraryTable->removeLibrary(m_libraries->currentIndex().row());
-    });
+    connect(add, &QPushButton::clicked, this,
+            [this] { m_libraryTable->addLibrary(tr("library")); });
+    connect(remove, &QPushButton::clicked, this,
+            [this] { m_libraryTable->removeLibrary(m_libraries->currentIndex().row()); });
     auto *buttonRow = new QWidget(environment);
     auto *buttons = new QHBoxLayout(buttonRow);
     buttons->setContentsMargins(0, 0, 0, 0);

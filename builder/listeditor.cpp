@@ -4,15 +4,73 @@
 #include "itemcommands.h"
 #include "itemtablemodel.h"
 
+#include <QComboBox>
+#include <QCompleter>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
 namespace Builder {
+
+namespace {
+
+/// Cells of a field with choices are edited with a combo box (editable when the choices are
+/// suggestions), like the form beside the table.
+class ChoiceDelegate : public QStyledItemDelegate
+{
+public:
+    ChoiceDelegate(ItemTableModel *table, QObject *parent)
+        : QStyledItemDelegate(parent)
+        , m_table(table)
+    { }
+
+    QWidget *createEditor(QWidget *parent, const QStyleOptionViewItem &option,
+                          const QModelIndex &index) const override
+    {
+        const ItemField &field = m_table->column(index.column());
+        if (!field.choices)
+            return QStyledItemDelegate::createEditor(parent, option, index);
+        auto *combo = new QComboBox(parent);
+        combo->setEditable(field.editableChoices);
+        combo->setInsertPolicy(QComboBox::NoInsert);
+        combo->addItems(field.choices());
+        if (field.editableChoices)
+            combo->completer()->setFilterMode(Qt::MatchContains);
+        return combo;
+    }
+
+    void setEditorData(QWidget *editor, const QModelIndex &index) const override
+    {
+        auto *combo = qobject_cast<QComboBox *>(editor);
+        if (!combo)
+            return QStyledItemDelegate::setEditorData(editor, index);
+        const QString value = index.data(Qt::EditRole).toString();
+        const int found = combo->findText(value);
+        if (found >= 0)
+            combo->setCurrentIndex(found);
+        else if (combo->isEditable())
+            combo->setEditText(value);
+    }
+
+    void setModelData(QWidget *editor, QAbstractItemModel *model,
+                      const QModelIndex &index) const override
+    {
+        if (auto *combo = qobject_cast<QComboBox *>(editor))
+            model->setData(index, combo->currentText(), Qt::EditRole);
+        else
+            QStyledItemDelegate::setModelData(editor, model, index);
+    }
+
+private:
+    ItemTableModel *m_table;
+};
+
+} // namespace
 
 ListEditor::ListEditor(ComponentModel *model, QUndoStack *undoStack, ItemTableModel *table,
                        const QString &title, Factory factory, QWidget *parent)
@@ -30,7 +88,10 @@ ListEditor::ListEditor(ComponentModel *model, QUndoStack *undoStack, ItemTableMo
     m_view->setModel(table);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_view->setItemDelegate(new ChoiceDelegate(table, m_view));
     m_view->horizontalHeader()->setStretchLastSection(true);
+    if (table->columnCount() <= 4)
+        m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 8);
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
                             | QAbstractItemView::AnyKeyPressed);
@@ -88,7 +149,8 @@ void ListEditor::addItem()
 {
     // New elements go after the last one shown in this table (InPorts stay together).
     const int rows = m_table->rowCount();
-    const int at = rows > 0 ? m_table->itemIndex(rows - 1) + 1 : m_model->itemCount(m_table->part());
+    const int at
+        = rows > 0 ? m_table->itemIndex(rows - 1) + 1 : m_model->itemCount(m_table->part());
     m_undoStack->push(new InsertItemCommand(m_model, m_table->part(), at, m_factory()));
     selectItem(at);
 }

@@ -47,8 +47,9 @@ void actionChanges(const RtcProfile &before, const RtcProfile &after, QStringLis
         const bool onA = a && a->isImplemented();
         const bool onB = b && b->isImplemented();
         if (onA != onB)
-            lines << tr("%1: %2 → %3").arg(rtcActionKey(action), onA ? tr("on") : tr("off"),
-                                           onB ? tr("on") : tr("off"));
+            lines << tr("%1: %2 → %3")
+                         .arg(rtcActionKey(action), onA ? tr("on") : tr("off"),
+                              onB ? tr("on") : tr("off"));
         else
             lines << tr("%1 changed").arg(rtcActionKey(action));
     }

@@ -37,6 +37,7 @@ RtcXmlPage::RtcXmlPage(ComponentModel *model, QUndoStack *undoStack, QWidget *pa
     m_text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_text->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_problems->setObjectName(QStringLiteral("problems"));
+    m_problems->setMaximumHeight(m_problems->fontMetrics().lineSpacing() * 6 + 8);
     m_problems->hide();
     connect(m_problems, &QListWidget::itemActivated, this, [this](QListWidgetItem *item) {
         jumpTo(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());

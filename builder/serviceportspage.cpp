@@ -75,8 +75,8 @@ optionalAccess(std::optional<QString> T::*member,
 
 } // namespace
 
-ServicePortsPage::ServicePortsPage(ComponentModel *model, QUndoStack *undoStack,
-                                   TypeCatalog *types, QWidget *parent)
+ServicePortsPage::ServicePortsPage(ComponentModel *model, QUndoStack *undoStack, TypeCatalog *types,
+                                   QWidget *parent)
     : QWidget(parent)
     , m_model(model)
     , m_undoStack(undoStack)
@@ -137,8 +137,8 @@ void ServicePortsPage::buildPortForm()
 {
     m_portForm = new ItemForm(m_model, m_undoStack, Part::ServicePort);
     m_portForm->addSection(tr("Service port"));
-    m_portForm->addField(textField<RtcServicePort>(QStringLiteral("name"), tr("Port name"),
-                                                   &RtcServicePort::name));
+    m_portForm->addField(
+        textField<RtcServicePort>(QStringLiteral("name"), tr("Port name"), &RtcServicePort::name));
     ItemField position = textField<RtcServicePort>(QStringLiteral("position"), tr("Position"),
                                                    &RtcServicePort::position);
     position.choices = [] { return Profile::rtcPositions(); };

@@ -65,7 +65,8 @@ void ServicePortTreeModel::onItemChanged(Part part, int index)
 {
     if (part != Part::ServicePort)
         return;
-    if (m_model->profile().servicePorts.at(index).interfaces.size() != m_interfaceCounts.value(index)) {
+    if (m_model->profile().servicePorts.at(index).interfaces.size()
+        != m_interfaceCounts.value(index)) {
         beginResetModel();
         rememberShape();
         endResetModel();
@@ -116,7 +117,8 @@ QVariant ServicePortTreeModel::data(const QModelIndex &index, int role) const
     // All problems of the row, the name's first, in a stable order.
     QStringList keys = problems.keys();
     std::sort(keys.begin(), keys.end(), [](const QString &a, const QString &b) {
-        return std::make_pair(a != QLatin1String("name"), a) < std::make_pair(b != QLatin1String("name"), b);
+        return std::make_pair(a != QLatin1String("name"), a)
+            < std::make_pair(b != QLatin1String("name"), b);
     });
     QStringList messages;
     for (const QString &key : std::as_const(keys))
@@ -132,8 +134,7 @@ QVariant ServicePortTreeModel::data(const QModelIndex &index, int role) const
     if (interface < 0)
         return index.column() == NameColumn ? p.name : p.position;
     const Profile::RtcServiceInterface &i = p.interfaces.at(interface);
-    return index.column() == NameColumn ? i.name
-                                        : QStringLiteral("%1 %2").arg(i.direction, i.type);
+    return index.column() == NameColumn ? i.name : QStringLiteral("%1 %2").arg(i.direction, i.type);
 }
 
 QVariant ServicePortTreeModel::headerData(int section, Qt::Orientation orientation, int role) const

@@ -33,8 +33,7 @@ Profile::RtcProfile fixture()
     return *profile;
 }
 
-template<typename T>
-T itemAt(ComponentModel *model, Part part, int index)
+template<typename T> T itemAt(ComponentModel *model, Part part, int index)
 {
     return std::get<T>(model->item(part, index));
 }
@@ -96,12 +95,10 @@ void TestBuilderCommands::doUndoRedo_data()
         port.portType = QStringLiteral("DataOutPort");
         return new InsertItemCommand(m, Part::DataPort, 1, port);
     });
-    row("remove data port", "Remove data port ranges", [](ComponentModel *m) {
-        return new RemoveItemCommand(m, Part::DataPort, 1);
-    });
-    row("move data port", "Move data port trigger", [](ComponentModel *m) {
-        return new MoveItemCommand(m, Part::DataPort, 0, 2);
-    });
+    row("remove data port", "Remove data port ranges",
+        [](ComponentModel *m) { return new RemoveItemCommand(m, Part::DataPort, 1); });
+    row("move data port", "Move data port trigger",
+        [](ComponentModel *m) { return new MoveItemCommand(m, Part::DataPort, 0, 2); });
     row("rename data port", "Change name of trigger", [](ComponentModel *m) {
         auto port = itemAt<Profile::RtcDataPort>(m, Part::DataPort, 0);
         port.name = QStringLiteral("start");
@@ -113,18 +110,16 @@ void TestBuilderCommands::doUndoRedo_data()
         port.name = QStringLiteral("status");
         return new InsertItemCommand(m, Part::ServicePort, 1, port);
     });
-    row("remove service port", "Remove service port control", [](ComponentModel *m) {
-        return new RemoveItemCommand(m, Part::ServicePort, 0);
-    });
+    row("remove service port", "Remove service port control",
+        [](ComponentModel *m) { return new RemoveItemCommand(m, Part::ServicePort, 0); });
     row("add interface", "Add interface status0 to control", [](ComponentModel *m) {
         Profile::RtcServiceInterface interface;
         interface.name = QStringLiteral("status0");
         interface.direction = QStringLiteral("Provided");
         return makeAddInterfaceCommand(m, 0, interface);
     });
-    row("remove interface", "Remove interface client0 from control", [](ComponentModel *m) {
-        return makeRemoveInterfaceCommand(m, 0, 1);
-    });
+    row("remove interface", "Remove interface client0 from control",
+        [](ComponentModel *m) { return makeRemoveInterfaceCommand(m, 0, 1); });
     row("edit interface", "Change interface service1", [](ComponentModel *m) {
         auto interface = itemAt<Profile::RtcServicePort>(m, Part::ServicePort, 0).interfaces.at(0);
         interface.name = QStringLiteral("service1");
@@ -135,9 +130,8 @@ void TestBuilderCommands::doUndoRedo_data()
         c.name = QStringLiteral("threshold");
         return new InsertItemCommand(m, Part::Configuration, 2, c);
     });
-    row("remove configuration", "Remove configuration parameter gain", [](ComponentModel *m) {
-        return new RemoveItemCommand(m, Part::Configuration, 0);
-    });
+    row("remove configuration", "Remove configuration parameter gain",
+        [](ComponentModel *m) { return new RemoveItemCommand(m, Part::Configuration, 0); });
     row("edit configuration constraint", "Change constraint", [](ComponentModel *m) {
         auto c = itemAt<Profile::RtcConfiguration>(m, Part::Configuration, 0);
         c.constraint.reset();
@@ -281,8 +275,9 @@ void TestBuilderCommands::removeAnnouncesBeforeAndAfter()
                      .arg(model.itemCount(Part::DataPort));
     });
     model.removeItem(Part::DataPort, 1);
-    QCOMPARE(order, QStringList({QStringLiteral("about 1 ranges 3"),
-                                 QStringLiteral("removed 1 ranges 2")}));
+    QCOMPARE(
+        order,
+        QStringList({QStringLiteral("about 1 ranges 3"), QStringLiteral("removed 1 ranges 2")}));
     model.removeItem(Part::DataPort, 7); // out of range: nothing
     QCOMPARE(order.size(), 2);
 }
@@ -295,8 +290,9 @@ void TestBuilderCommands::moveKeepsEveryElement()
     stack.push(new MoveItemCommand(&model, Part::DataPort, 2, 0));
     const QStringList names = {model.itemName(Part::DataPort, 0), model.itemName(Part::DataPort, 1),
                                model.itemName(Part::DataPort, 2)};
-    QCOMPARE(names, QStringList({QStringLiteral("speed"), QStringLiteral("trigger"),
-                                 QStringLiteral("ranges")}));
+    QCOMPARE(names,
+             QStringList(
+                 {QStringLiteral("speed"), QStringLiteral("trigger"), QStringLiteral("ranges")}));
     QCOMPARE(moved.count(), 1);
     QCOMPARE(moved.at(0).at(3).toString(), QStringLiteral("speed"));
     stack.undo();

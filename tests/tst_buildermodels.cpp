@@ -35,8 +35,9 @@ Profile::RtcProfile fixture()
 
 QList<ItemField> portColumns()
 {
-    return {textField<RtcDataPort>(QStringLiteral("name"), QStringLiteral("Name"), &RtcDataPort::name),
-            textField<RtcDataPort>(QStringLiteral("type"), QStringLiteral("Type"), &RtcDataPort::type)};
+    return {
+        textField<RtcDataPort>(QStringLiteral("name"), QStringLiteral("Name"), &RtcDataPort::name),
+        textField<RtcDataPort>(QStringLiteral("type"), QStringLiteral("Type"), &RtcDataPort::type)};
 }
 
 ItemTableModel::Filter inPorts()
@@ -107,15 +108,17 @@ void TestBuilderModels::inPortTableFollowsInsertRemoveMoveAndReset()
     QAbstractItemModelTester tester(&table, QAbstractItemModelTester::FailureReportingMode::QtTest);
     stack.push(new InsertItemCommand(&model, Part::DataPort, 2,
                                      port(QStringLiteral("in2"), QStringLiteral("DataInPort"))));
-    QCOMPARE(column(table, 0), QStringList({QStringLiteral("trigger"), QStringLiteral("in2"),
-                                            QStringLiteral("speed")}));
+    QCOMPARE(
+        column(table, 0),
+        QStringList({QStringLiteral("trigger"), QStringLiteral("in2"), QStringLiteral("speed")}));
     stack.push(new InsertItemCommand(&model, Part::DataPort, 0,
                                      port(QStringLiteral("out2"), QStringLiteral("DataOutPort"))));
     QCOMPARE(table.rowCount(), 3);
     QCOMPARE(table.itemIndex(0), 1); // positions shifted by the OutPort in front
     stack.push(new MoveItemCommand(&model, Part::DataPort, 4, 1));
-    QCOMPARE(column(table, 0), QStringList({QStringLiteral("speed"), QStringLiteral("trigger"),
-                                            QStringLiteral("in2")}));
+    QCOMPARE(
+        column(table, 0),
+        QStringList({QStringLiteral("speed"), QStringLiteral("trigger"), QStringLiteral("in2")}));
     stack.push(new RemoveItemCommand(&model, Part::DataPort, 2));
     QCOMPARE(column(table, 0), QStringList({QStringLiteral("speed"), QStringLiteral("in2")}));
     stack.push(new ReplaceProfileCommand(&model, Profile::RtcProfile::createDefault()));
@@ -134,8 +137,9 @@ void TestBuilderModels::changingThePortTypeMovesTheRow()
     auto ranges = std::get<RtcDataPort>(model.item(Part::DataPort, 1));
     ranges.portType = QStringLiteral("DataInPort");
     stack.push(new EditItemCommand(&model, Part::DataPort, 1, ranges, QString(), QString()));
-    QCOMPARE(column(in, 0), QStringList({QStringLiteral("trigger"), QStringLiteral("ranges"),
-                                         QStringLiteral("speed")}));
+    QCOMPARE(column(in, 0),
+             QStringList(
+                 {QStringLiteral("trigger"), QStringLiteral("ranges"), QStringLiteral("speed")}));
     stack.undo();
     QCOMPARE(column(in, 0), QStringList({QStringLiteral("trigger"), QStringLiteral("speed")}));
 }
@@ -167,7 +171,8 @@ void TestBuilderModels::duplicateNameIsMarkedWithReason()
     QVERIFY(table.setData(table.index(1, 0), QStringLiteral("control"), Qt::EditRole));
     QCOMPARE(table.index(1, 0).data(ItemTableModel::ProblemRole).toString(),
              QStringLiteral("The port name 'control' is already used by service port #1."));
-    QCOMPARE(table.index(1, 0).data(Qt::ToolTipRole), table.index(1, 0).data(ItemTableModel::ProblemRole));
+    QCOMPARE(table.index(1, 0).data(Qt::ToolTipRole),
+             table.index(1, 0).data(ItemTableModel::ProblemRole));
     QVERIFY(table.index(1, 0).data(Qt::BackgroundRole).isValid());
     QVERIFY(table.index(1, 1).data(Qt::BackgroundRole).isNull()); // only the name cell
     QVERIFY(table.setData(table.index(1, 0), QStringLiteral("trigger"), Qt::EditRole));
@@ -186,9 +191,10 @@ void TestBuilderModels::configurationConstraintAndWidget()
     const int constraint = table.columnOf(QStringLiteral("constraint"));
     const int widget = table.columnOf(QStringLiteral("widget"));
     const int step = table.columnOf(QStringLiteral("step"));
-    QCOMPARE(column(table, constraint), QStringList({QStringLiteral("0..10"),
-                                                     QStringLiteral("(fast,slow)")}));
-    QCOMPARE(column(table, widget), QStringList({QStringLiteral("slider"), QStringLiteral("radio")}));
+    QCOMPARE(column(table, constraint),
+             QStringList({QStringLiteral("0..10"), QStringLiteral("(fast,slow)")}));
+    QCOMPARE(column(table, widget),
+             QStringList({QStringLiteral("slider"), QStringLiteral("radio")}));
     QCOMPARE(table.index(0, step).data().toString(), QStringLiteral("0.5"));
 
     // A syntax error is not stored; a valid string is.
@@ -203,8 +209,10 @@ void TestBuilderModels::configurationConstraintAndWidget()
     // A radio needs an enumeration.
     QVERIFY(table.index(1, widget).data(ItemTableModel::ProblemRole).isNull());
     QVERIFY(table.setData(table.index(1, constraint), QStringLiteral("x>0"), Qt::EditRole));
-    QVERIFY(table.index(1, widget).data(ItemTableModel::ProblemRole).toString().contains(
-        QStringLiteral("enumeration")));
+    QVERIFY(table.index(1, widget)
+                .data(ItemTableModel::ProblemRole)
+                .toString()
+                .contains(QStringLiteral("enumeration")));
     // No widget at all removes the property.
     QVERIFY(table.setData(table.index(1, widget), QString(), Qt::EditRole));
     QVERIFY(!model.profile().configurations.at(1).widget());
@@ -224,14 +232,17 @@ void TestBuilderModels::actionTableChecksCallbacks()
     QCOMPARE(column(table, 0).last(), QStringLiteral("onRateChanged"));
     QVERIFY(!table.flags(table.index(0, 0)).testFlag(Qt::ItemIsUserCheckable));
     QVERIFY(!table.setData(table.index(0, 0), Qt::Unchecked, Qt::CheckStateRole));
-    const int startup = int(ActionTableModel::editedActions().indexOf(Profile::RtcAction::OnStartup));
+    const int startup
+        = int(ActionTableModel::editedActions().indexOf(Profile::RtcAction::OnStartup));
     QCOMPARE(table.index(startup, 0).data(Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
     QVERIFY(table.setData(table.index(startup, 0), Qt::Checked, Qt::CheckStateRole));
     QCOMPARE(table.index(startup, 0).data(Qt::CheckStateRole).toInt(), int(Qt::Checked));
     QVERIFY(model.profile().actions.isImplemented(Profile::RtcAction::OnStartup));
-    const int execute = int(ActionTableModel::editedActions().indexOf(Profile::RtcAction::OnExecute));
+    const int execute
+        = int(ActionTableModel::editedActions().indexOf(Profile::RtcAction::OnExecute));
     QCOMPARE(table.index(execute, 1).data().toString(), QStringLiteral("Reads one scan"));
-    QVERIFY(table.setData(table.index(execute, 1), QStringLiteral("Reads two scans"), Qt::EditRole));
+    QVERIFY(
+        table.setData(table.index(execute, 1), QStringLiteral("Reads two scans"), Qt::EditRole));
     QCOMPARE(stack.count(), 2);
     stack.undo();
     stack.undo();
@@ -258,7 +269,10 @@ void TestBuilderModels::servicePortTreeFollowsInterfaces()
     interface.direction = QStringLiteral("Provided");
     stack.push(makeAddInterfaceCommand(&model, 0, interface));
     QCOMPARE(tree.rowCount(tree.index(0, 0)), 3);
-    QVERIFY(tree.indexFor(0, 2).data(Qt::ToolTipRole).toString().contains(QStringLiteral("already used")));
+    QVERIFY(tree.indexFor(0, 2)
+                .data(Qt::ToolTipRole)
+                .toString()
+                .contains(QStringLiteral("already used")));
     Profile::RtcServicePort port;
     port.name = QStringLiteral("status");
     port.position = QStringLiteral("LEFT");
@@ -296,13 +310,29 @@ void TestBuilderModels::itemRules_data()
     QTest::addColumn<QString>("value");
     QTest::addColumn<QString>("problemKey");
     QTest::addColumn<QString>("problemPart");
-    QTest::newRow("name charset") << "name" << "my port" << "name" << "' '";
-    QTest::newRow("name empty") << "name" << "" << "name" << "required";
-    QTest::newRow("type empty") << "type" << "" << "type" << "required";
-    QTest::newRow("bad position") << "position" << "left" << "position" << "LEFT";
-    QTest::newRow("variable not an identifier") << "variableName" << "1x" << "variableName"
+    QTest::newRow("name charset") << "name"
+                                  << "my port"
+                                  << "name"
+                                  << "' '";
+    QTest::newRow("name empty") << "name"
+                                << ""
+                                << "name"
+                                << "required";
+    QTest::newRow("type empty") << "type"
+                                << ""
+                                << "type"
+                                << "required";
+    QTest::newRow("bad position") << "position"
+                                  << "left"
+                                  << "position"
+                                  << "LEFT";
+    QTest::newRow("variable not an identifier") << "variableName"
+                                                << "1x"
+                                                << "variableName"
                                                 << "letter";
-    QTest::newRow("variable used by a parameter") << "variableName" << "gain" << "variableName"
+    QTest::newRow("variable used by a parameter") << "variableName"
+                                                  << "gain"
+                                                  << "variableName"
                                                   << "configuration parameter gain";
 }
 
@@ -324,7 +354,8 @@ void TestBuilderModels::itemRules()
     else
         p.variableName = value;
     const FieldProblems problems = itemProblems(profile, Part::DataPort, 0);
-    QVERIFY2(problems.value(problemKey).contains(problemPart), qPrintable(problems.value(problemKey)));
+    QVERIFY2(problems.value(problemKey).contains(problemPart),
+             qPrintable(problems.value(problemKey)));
     QVERIFY(!generationProblems(profile).isEmpty());
 }
 

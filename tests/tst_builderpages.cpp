@@ -56,8 +56,7 @@ struct Editor
     TypeCatalog types {QStringLiteral(RTSTUDIO_IDL_DIR)};
     ComponentEditor editor {&model, &stack, &types};
 
-    template<typename Page>
-    Page *page(const char *title)
+    template<typename Page> Page *page(const char *title)
     {
         auto *page = qobject_cast<Page *>(editor.page(QString::fromLatin1(title)));
         editor.pages()->setCurrentWidget(page);
@@ -126,9 +125,9 @@ void TestBuilderPages::editorHasEveryPage()
     QStringList titles;
     for (int i = 0; i < e.editor.pages()->count(); ++i)
         titles << e.editor.pages()->tabText(i);
-    QCOMPARE(titles, QStringList({"Basic", "Activity", "Data Ports", "Service Ports",
-                                  "Configuration", "Documentation", "Language/Environment",
-                                  "RTC.xml"}));
+    QCOMPARE(titles,
+             QStringList({"Basic", "Activity", "Data Ports", "Service Ports", "Configuration",
+                          "Documentation", "Language/Environment", "RTC.xml"}));
     QCOMPARE(e.stack.count(), 0); // showing pushes nothing
     QVERIFY(e.model.profile() == fixture());
 }
@@ -245,7 +244,8 @@ void TestBuilderPages::undoReachesAcrossPages()
                       Qt::LeftButton);
     auto *configuration = e.page<ConfigurationPage>("Configuration");
     clickRow(configuration->list()->view(), 0);
-    auto *value = qobject_cast<QLineEdit *>(configuration->form()->editor(QStringLiteral("defaultValue")));
+    auto *value
+        = qobject_cast<QLineEdit *>(configuration->form()->editor(QStringLiteral("defaultValue")));
     value->selectAll();
     QTest::keyClicks(value, QStringLiteral("2.5"));
     QCOMPARE(e.stack.count(), 3);
@@ -285,7 +285,8 @@ void TestBuilderPages::activityCheckAndDescription()
     QCOMPARE(view->model()->index(row, 1).data().toString(), QStringLiteral("Scans"));
     // The check box of onExecute switches it off.
     const QRect cell = view->visualRect(view->model()->index(row, 0));
-    const QPoint checkBox(cell.left() + view->style()->pixelMetric(QStyle::PM_IndicatorWidth) / 2 + 4,
+    const QPoint checkBox(cell.left() + view->style()->pixelMetric(QStyle::PM_IndicatorWidth) / 2
+                              + 4,
                           cell.center().y());
     QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, checkBox);
     QTRY_VERIFY(!e.model.profile().actions.isImplemented(Profile::RtcAction::OnExecute));
@@ -303,7 +304,8 @@ void TestBuilderPages::configurationConstraintErrorIsShownNotStored()
     QVERIFY(QTest::qWaitForWindowExposed(&e.editor));
     auto *page = e.page<ConfigurationPage>("Configuration");
     clickRow(page->list()->view(), 1); // "mode", radio with (fast,slow)
-    auto *constraint = qobject_cast<QLineEdit *>(page->form()->editor(QStringLiteral("constraint")));
+    auto *constraint
+        = qobject_cast<QLineEdit *>(page->form()->editor(QStringLiteral("constraint")));
     QCOMPARE(constraint->text(), QStringLiteral("(fast,slow)"));
     constraint->selectAll();
     QTest::keyClicks(constraint, QStringLiteral("(fast,"));
@@ -316,7 +318,8 @@ void TestBuilderPages::configurationConstraintErrorIsShownNotStored()
     // A range is no enumeration: the radio widget is marked.
     constraint->selectAll();
     QTest::keyClicks(constraint, QStringLiteral("x>0"));
-    QVERIFY(page->form()->problem(QStringLiteral("widget")).contains(QStringLiteral("enumeration")));
+    QVERIFY(
+        page->form()->problem(QStringLiteral("widget")).contains(QStringLiteral("enumeration")));
 }
 
 void TestBuilderPages::servicePortsAddInterfaceAndEditType()
@@ -334,7 +337,9 @@ void TestBuilderPages::servicePortsAddInterfaceAndEditType()
     QCOMPARE(name->text(), QStringLiteral("interface"));
     name->selectAll();
     QTest::keyClicks(name, QStringLiteral("service0"));
-    QVERIFY(page->interfaceForm()->problem(QStringLiteral("name")).contains(QStringLiteral("already used")));
+    QVERIFY(page->interfaceForm()
+                ->problem(QStringLiteral("name"))
+                .contains(QStringLiteral("already used")));
     QTest::keyClick(name, Qt::Key_9);
     QCOMPARE(page->interfaceForm()->problem(QStringLiteral("name")), QString());
     auto *type = qobject_cast<QComboBox *>(page->interfaceForm()->editor(QStringLiteral("type")));
@@ -468,9 +473,25 @@ void TestBuilderPages::generateIsRefusedWhileErrorsRemain()
     QCOMPARE(requested.count(), 1);
     QCOMPARE(refused.count(), 1);
     QVERIFY(e.editor.basicPage()->generationProblems().contains(QStringLiteral("my port")));
-    QTest::mouseClick(e.editor.basicPage()->findChild<QPushButton *>(QStringLiteral("codeRestoreButton")),
-                      Qt::LeftButton);
+    QTest::mouseClick(
+        e.editor.basicPage()->findChild<QPushButton *>(QStringLiteral("codeRestoreButton")),
+        Qt::LeftButton);
     QCOMPARE(restore.count(), 1);
+
+    // An interface type no parsed IDL declares refuses generation too.
+    port.name = QStringLiteral("trigger");
+    e.model.setItem(Part::DataPort, 0, port);
+    e.types.reload();
+    QTest::mouseClick(e.editor.basicPage()->generateButton(), Qt::LeftButton);
+    QCOMPARE(requested.count(), 2);
+    auto service = std::get<Profile::RtcServicePort>(e.model.item(Part::ServicePort, 0));
+    service.interfaces[0].type = QStringLiteral("Missing::Service");
+    e.model.setItem(Part::ServicePort, 0, service);
+    QTest::mouseClick(e.editor.basicPage()->generateButton(), Qt::LeftButton);
+    QCOMPARE(requested.count(), 2);
+    QCOMPARE(refused.count(), 2);
+    QVERIFY(
+        e.editor.basicPage()->generationProblems().contains(QStringLiteral("Missing::Service")));
 }
 
 void TestBuilderPages::typeListsComeFromIdl()
@@ -483,7 +504,8 @@ void TestBuilderPages::typeListsComeFromIdl()
     QVERIFY(catalog.dataTypes().contains(QStringLiteral("RTC::TimedLong")));
     QVERIFY(catalog.dataTypes().contains(QStringLiteral("RTC::TimedPose2D")));
     QVERIFY(catalog.interfaceTypes().contains(QStringLiteral("SimpleService::MyService")));
-    QVERIFY(catalog.fileOf(QStringLiteral("RTC::TimedLong")).endsWith(QStringLiteral("BasicDataType.idl")));
+    QVERIFY(catalog.fileOf(QStringLiteral("RTC::TimedLong"))
+                .endsWith(QStringLiteral("BasicDataType.idl")));
 
     Editor e;
     e.types.reload();
