@@ -88,8 +88,8 @@ void RtCatCommand::printComponent(const ComponentProxy &rtc, const QString &port
         return;
     }
     const auto contexts = rtc.executionContexts();
-    const QString state = contexts.empty() ? stateName(LifeCycleState::Unknown)
-                                           : stateName(contexts.front().state);
+    const QString state
+        = contexts.empty() ? stateName(LifeCycleState::Unknown) : stateName(contexts.front().state);
     out << info.instanceName << ".rtc  " << state << '\n';
     printField(QStringLiteral("Category"), info.category, out);
     printField(QStringLiteral("Description"), info.description, out);
@@ -111,9 +111,11 @@ void RtCatCommand::printManager(const QString &ior, const QString &path, Streams
     streams.out << path << '\n';
     printProperties(manager.profile(), QStringLiteral("  "), streams.out);
     for (const ComponentInfo &component : manager.componentProfiles())
-        streams.out << "  Component  " << component.instanceName << "  " << component.typeName << '\n';
+        streams.out << "  Component  " << component.instanceName << "  " << component.typeName
+                    << '\n';
     for (const Properties &module : manager.loadedModules())
-        streams.out << "  Loaded module  " << propertyValue(module, QStringLiteral("file_path")) << '\n';
+        streams.out << "  Loaded module  " << propertyValue(module, QStringLiteral("file_path"))
+                    << '\n';
 }
 
 QJsonObject RtCatCommand::componentJson(const ComponentProxy &rtc, const QString &port) const
@@ -137,21 +139,25 @@ int RtCatCommand::execute(const RtOptions &options, Streams streams)
         return usageError(QStringLiteral("missing PATH"), streams);
     const bool json = options.has(QStringLiteral("--json"));
     QJsonArray objects;
-    const int code = forEachPath(options.positionals, streams, [&](const QString &text) {
-        const RtPath target = path(text);
-        const NamingNode node = NamingBrowser::node(target);
-        if (node.type == NodeType::Manager && !json) {
-            printManager(node.ior, node.path, streams);
-            return;
-        }
-        const ComponentProxy rtc = component(target);
-        if (json)
-            objects.append(componentJson(rtc, target.port));
-        else
-            printComponent(rtc, target.port, options.count(QStringLiteral("-l")), streams);
-    }, name());
+    const int code = forEachPath(
+        options.positionals, streams,
+        [&](const QString &text) {
+            const RtPath target = path(text);
+            const NamingNode node = NamingBrowser::node(target);
+            if (node.type == NodeType::Manager && !json) {
+                printManager(node.ior, node.path, streams);
+                return;
+            }
+            const ComponentProxy rtc = component(target);
+            if (json)
+                objects.append(componentJson(rtc, target.port));
+            else
+                printComponent(rtc, target.port, options.count(QStringLiteral("-l")), streams);
+        },
+        name());
     if (json)
-        streams.out << jsonText(objects.size() == 1 ? QJsonValue(objects.first()) : QJsonValue(objects));
+        streams.out << jsonText(objects.size() == 1 ? QJsonValue(objects.first())
+                                                    : QJsonValue(objects));
     return code;
 }
 

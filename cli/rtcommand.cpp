@@ -38,7 +38,8 @@ RtOptions parseOptions(const QStringList &arguments, const QStringList &flags,
     bool onlyPositionals = false;
     for (int i = 0; i < arguments.size(); ++i) {
         const QString argument = arguments.at(i);
-        if (onlyPositionals || !argument.startsWith(QLatin1Char('-')) || argument == QLatin1String("-")) {
+        if (onlyPositionals || !argument.startsWith(QLatin1Char('-'))
+            || argument == QLatin1String("-")) {
             parsed.positionals.append(argument);
             continue;
         }
@@ -71,14 +72,15 @@ RtOptions parseOptions(const QStringList &arguments, const QStringList &flags,
 int RtCommand::run(const QStringList &arguments, Streams streams)
 {
     RtOptions options = parseOptions(arguments, flagNames(),
-                                     optionNames() + QStringList{QStringLiteral("--timeout")});
+                                     optionNames() + QStringList {QStringLiteral("--timeout")});
     if (!options.error.isEmpty())
         return usageError(options.error, streams);
     if (options.values.contains(QStringLiteral("--timeout"))) {
         bool ok = false;
         const int timeout = options.value(QStringLiteral("--timeout")).toInt(&ok);
         if (!ok || timeout <= 0)
-            return usageError(QStringLiteral("--timeout needs a positive number of milliseconds"), streams);
+            return usageError(QStringLiteral("--timeout needs a positive number of milliseconds"),
+                              streams);
         Orb::setCallTimeout(timeout);
     }
     try {
@@ -108,12 +110,12 @@ ComponentProxy RtCommand::component(const RtPath &path) const
 {
     const NamingNode node = NamingBrowser::node(path);
     if (node.type == NodeType::Zombie)
-        throw Error(Error::Kind::WrongType, node.reason.isEmpty()
-                                                ? node.path + QStringLiteral(": zombie")
-                                                : node.reason);
-    if (node.type != NodeType::Component)
         throw Error(Error::Kind::WrongType,
-                    QStringLiteral("%1: not a component (%2)").arg(node.path, nodeTypeName(node.type)));
+                    node.reason.isEmpty() ? node.path + QStringLiteral(": zombie") : node.reason);
+    if (node.type != NodeType::Component)
+        throw Error(
+            Error::Kind::WrongType,
+            QStringLiteral("%1: not a component (%2)").arg(node.path, nodeTypeName(node.type)));
     return ComponentProxy(node.ior, node.path);
 }
 
@@ -125,8 +127,8 @@ void RtCommand::report(const QString &message, Streams streams) const
 
 QString RtCommand::jsonText(const QJsonValue &value)
 {
-    const QJsonDocument document = value.isArray() ? QJsonDocument(value.toArray())
-                                                   : QJsonDocument(value.toObject());
+    const QJsonDocument document
+        = value.isArray() ? QJsonDocument(value.toArray()) : QJsonDocument(value.toObject());
     return QString::fromUtf8(document.toJson(QJsonDocument::Indented));
 }
 

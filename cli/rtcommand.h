@@ -19,8 +19,8 @@ namespace Cli {
 /// Command-line options of one rtshell-style command, parsed by RtCommand::parse().
 struct RtOptions
 {
-    QMap<QString, int> flags;            ///< flag → how often given (`-l -l` or `-ll` = 2)
-    QMap<QString, QStringList> values;   ///< option → values in order (`-p a=1 -p b=2`)
+    QMap<QString, int> flags; ///< flag → how often given (`-l -l` or `-ll` = 2)
+    QMap<QString, QStringList> values; ///< option → values in order (`-p a=1 -p b=2`)
     QStringList positionals;
     QList<QPair<QString, QString>> sequence; ///< options with values, in command-line order
     QString error;

@@ -56,10 +56,10 @@ int RtConfCommand::list(const ComponentProxy &rtc, const RtOptions &options, Str
         if ((!only.isEmpty() && set.id != only)
             || (only.isEmpty() && isHidden(set.id) && !options.has(QStringLiteral("-a"))))
             continue;
-        sets.append(QJsonObject{{"id", set.id},
-                                {"description", set.description},
-                                {"active", set.id == active},
-                                {"parameters", propertiesToJson(set.data)}});
+        sets.append(QJsonObject {{"id", set.id},
+                                 {"description", set.description},
+                                 {"active", set.id == active},
+                                 {"parameters", propertiesToJson(set.data)}});
         if (options.has(QStringLiteral("--json")))
             continue;
         streams.out << (set.id == active ? "* " : "  ") << set.id << '\n';
@@ -67,7 +67,7 @@ int RtConfCommand::list(const ComponentProxy &rtc, const RtOptions &options, Str
             streams.out << "    " << parameter.first << "  " << parameter.second << '\n';
     }
     if (options.has(QStringLiteral("--json")))
-        streams.out << jsonText(QJsonObject{{"active", active}, {"sets", sets}});
+        streams.out << jsonText(QJsonObject {{"active", active}, {"sets", sets}});
     return ExitOk;
 }
 
@@ -77,11 +77,14 @@ int RtConfCommand::execute(const RtOptions &options, Streams streams)
         return usageError(QStringLiteral("missing PATH"), streams);
     const QStringList words = options.positionals.mid(1);
     const QString command = words.value(0, QStringLiteral("list"));
-    const int expected = command == QLatin1String("set") ? 3 : command == QLatin1String("get") ? 2 : 1;
-    if (!QStringList{"list", "set", "get", "act"}.contains(command))
+    const int expected = command == QLatin1String("set") ? 3
+        : command == QLatin1String("get")                ? 2
+                                                         : 1;
+    if (!QStringList {"list", "set", "get", "act"}.contains(command))
         return usageError(QStringLiteral("unknown conf command '%1'").arg(command), streams);
     if (words.size() > expected || (words.size() < expected && command != QLatin1String("list")))
-        return usageError(QStringLiteral("wrong number of arguments for '%1'").arg(command), streams);
+        return usageError(QStringLiteral("wrong number of arguments for '%1'").arg(command),
+                          streams);
     const QString set = options.value(QStringLiteral("-s"));
     if (command == QLatin1String("act") && set.isEmpty())
         return usageError(QStringLiteral("act needs -s SET"), streams);

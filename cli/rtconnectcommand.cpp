@@ -19,13 +19,17 @@ QString RtConnectCommand::usage() const
 {
     if (m_connect)
         return QStringLiteral(
-            "Usage: rtctl con [-n NAME] [-i ID] [-p KEY=VALUE]... [--no-duplicates] [--timeout MS]\n"
+            "Usage: rtctl con [-n NAME] [-i ID] [-p KEY=VALUE]... [--no-duplicates] [--timeout "
+            "MS]\n"
             "                 SRC:PORT DST:PORT [DST:PORT...]\n\n"
             "Connects ports (rtshell's rtcon) and prints the connector id.\n"
             "Data ports connect out to in only; defaults dataport.dataflow_type=push,\n"
-            "dataport.interface_type=corba_cdr, dataport.subscription_type=new and dataport.data_type\n"
-            "of the output port; every dataport.* value must be allowed by each port unless the port\n"
-            "says 'any'. Service ports: each interface must meet one with the same instance name and\n"
+            "dataport.interface_type=corba_cdr, dataport.subscription_type=new and "
+            "dataport.data_type\n"
+            "of the output port; every dataport.* value must be allowed by each port unless the "
+            "port\n"
+            "says 'any'. Service ports: each interface must meet one with the same instance name "
+            "and\n"
             "the opposite polarity. Refused pairs are reported with the reason (exit code 1).\n"
             "  -n NAME          connector name (default: the ports' short names joined by '_')\n"
             "  -i ID            connector id (default: chosen by the port)\n"
@@ -40,7 +44,7 @@ QString RtConnectCommand::usage() const
 
 QStringList RtConnectCommand::flagNames() const
 {
-    return m_connect ? QStringList{QStringLiteral("--no-duplicates")} : QStringList();
+    return m_connect ? QStringList {QStringLiteral("--no-duplicates")} : QStringList();
 }
 
 QStringList RtConnectCommand::optionNames() const
@@ -61,7 +65,8 @@ std::vector<PortInfo> RtConnectCommand::ports(const QStringList &texts) const
     for (const QString &text : texts) {
         const RtPath target = path(text);
         if (target.port.isEmpty())
-            throw Error(Error::Kind::BadPath, target.toString() + QStringLiteral(": no :PORT given"));
+            throw Error(Error::Kind::BadPath,
+                        target.toString() + QStringLiteral(": no :PORT given"));
         result.push_back(component(target).port(target.port));
     }
     return result;
@@ -70,7 +75,8 @@ std::vector<PortInfo> RtConnectCommand::ports(const QStringList &texts) const
 int RtConnectCommand::connect(const RtOptions &options, Streams streams)
 {
     if (options.positionals.size() < 2)
-        return usageError(QStringLiteral("con needs a source and at least one destination port"), streams);
+        return usageError(QStringLiteral("con needs a source and at least one destination port"),
+                          streams);
     ConnectionRequest request;
     request.name = options.value(QStringLiteral("-n"));
     request.id = options.value(QStringLiteral("-i"));
@@ -78,12 +84,13 @@ int RtConnectCommand::connect(const RtOptions &options, Streams streams)
     for (const QString &property : options.values.value(QStringLiteral("-p"))) {
         const int equals = property.indexOf(QLatin1Char('='));
         if (equals <= 0)
-            return usageError(QStringLiteral("-p needs KEY=VALUE, got '%1'").arg(property), streams);
+            return usageError(QStringLiteral("-p needs KEY=VALUE, got '%1'").arg(property),
+                              streams);
         request.properties.append({property.left(equals), property.mid(equals + 1)});
     }
     const std::vector<PortInfo> portList = ports(options.positionals);
-    const ConnectorInfo made = PortConnection::connect(portList, request,
-                                                       path(options.positionals.first()).toString());
+    const ConnectorInfo made
+        = PortConnection::connect(portList, request, path(options.positionals.first()).toString());
     streams.out << made.id << '\n';
     return ExitOk;
 }
@@ -98,7 +105,8 @@ int RtConnectCommand::disconnect(const RtOptions &options, Streams streams)
         if (!id.isEmpty())
             return usageError(QStringLiteral("-i needs a PATH:PORT"), streams);
         for (const PortInfo &port : component(first).ports())
-            PortConnection::disconnectAll(port, first.toString() + QLatin1Char(':') + port.shortName());
+            PortConnection::disconnectAll(port,
+                                          first.toString() + QLatin1Char(':') + port.shortName());
         return ExitOk;
     }
     const std::vector<PortInfo> portList = ports(options.positionals);
@@ -119,8 +127,9 @@ int RtConnectCommand::disconnect(const RtOptions &options, Streams streams)
     }
     if (disconnected == 0)
         throw Error(Error::Kind::NotFound,
-                    first.toString() + (id.isEmpty() ? QStringLiteral(": no such connection")
-                                                     : QStringLiteral(": no connector '%1'").arg(id)));
+                    first.toString()
+                        + (id.isEmpty() ? QStringLiteral(": no such connection")
+                                        : QStringLiteral(": no connector '%1'").arg(id)));
     return ExitOk;
 }
 

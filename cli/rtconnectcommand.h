@@ -12,9 +12,14 @@ namespace Cli {
 class RtConnectCommand : public RtCommand
 {
 public:
-    explicit RtConnectCommand(bool connect) : m_connect(connect) {}
+    explicit RtConnectCommand(bool connect)
+        : m_connect(connect)
+    { }
 
-    QString name() const override { return m_connect ? QStringLiteral("con") : QStringLiteral("dis"); }
+    QString name() const override
+    {
+        return m_connect ? QStringLiteral("con") : QStringLiteral("dis");
+    }
     QString summary() const override;
     QString usage() const override;
 

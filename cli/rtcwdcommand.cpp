@@ -37,13 +37,15 @@ int RtCwdCommand::execute(const RtOptions &options, Streams streams)
         return usageError(QStringLiteral("cd takes one PATH"), streams);
     const RtPath target = path(options.positionals.value(0, QStringLiteral("/")));
     if (target.isDirect() || !target.port.isEmpty())
-        throw Error(Error::Kind::WrongType, target.toString() + QStringLiteral(": not a directory"));
+        throw Error(Error::Kind::WrongType,
+                    target.toString() + QStringLiteral(": not a directory"));
     if (!target.isRoot()) {
         const NamingNode node = NamingBrowser::node(target);
         if (node.type != NodeType::Server && node.type != NodeType::Context
             && node.type != NodeType::Manager)
-            throw Error(Error::Kind::WrongType,
-                        QStringLiteral("%1: not a directory (%2)").arg(node.path, nodeTypeName(node.type)));
+            throw Error(
+                Error::Kind::WrongType,
+                QStringLiteral("%1: not a directory (%2)").arg(node.path, nodeTypeName(node.type)));
     }
     QString quoted = target.toString();
     quoted.replace(QLatin1Char('\''), QStringLiteral("'\\''"));

@@ -13,9 +13,14 @@ namespace Cli {
 class RtCwdCommand : public RtCommand
 {
 public:
-    explicit RtCwdCommand(bool change) : m_change(change) {}
+    explicit RtCwdCommand(bool change)
+        : m_change(change)
+    { }
 
-    QString name() const override { return m_change ? QStringLiteral("cd") : QStringLiteral("pwd"); }
+    QString name() const override
+    {
+        return m_change ? QStringLiteral("cd") : QStringLiteral("pwd");
+    }
     QString summary() const override;
     QString usage() const override;
 

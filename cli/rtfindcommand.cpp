@@ -14,12 +14,18 @@ namespace {
 QChar typeLetter(NodeType type)
 {
     switch (type) {
-    case NodeType::Component: return QLatin1Char('c');
-    case NodeType::Context: return QLatin1Char('d');
-    case NodeType::Manager: return QLatin1Char('m');
-    case NodeType::Server: return QLatin1Char('n');
-    case NodeType::Zombie: return QLatin1Char('z');
-    default: break;
+    case NodeType::Component:
+        return QLatin1Char('c');
+    case NodeType::Context:
+        return QLatin1Char('d');
+    case NodeType::Manager:
+        return QLatin1Char('m');
+    case NodeType::Server:
+        return QLatin1Char('n');
+    case NodeType::Zombie:
+        return QLatin1Char('z');
+    default:
+        break;
     }
     return QLatin1Char('o');
 }
@@ -85,8 +91,8 @@ int RtFindCommand::execute(const RtOptions &options, Streams streams)
     if (filter.types.contains(QRegularExpression(QStringLiteral("[^cdmnz]"))))
         return usageError(QStringLiteral("-t takes the letters c, d, m, n, z"), streams);
     const bool insensitive = options.values.contains(QStringLiteral("-i"));
-    const QString glob = insensitive ? options.value(QStringLiteral("-i"))
-                                     : options.value(QStringLiteral("-n"));
+    const QString glob
+        = insensitive ? options.value(QStringLiteral("-i")) : options.value(QStringLiteral("-n"));
     if (!glob.isEmpty()) {
         filter.name.setPattern(QRegularExpression::wildcardToRegularExpression(
             glob, QRegularExpression::UnanchoredWildcardConversion));
@@ -101,8 +107,8 @@ int RtFindCommand::execute(const RtOptions &options, Streams streams)
     QJsonArray json;
     for (const NamingNode *node : found) {
         if (options.has(QStringLiteral("--json")))
-            json.append(QJsonObject{{"name", node->name}, {"path", node->path},
-                                    {"type", nodeTypeName(node->type)}});
+            json.append(QJsonObject {
+                {"name", node->name}, {"path", node->path}, {"type", nodeTypeName(node->type)}});
         else
             streams.out << node->path << '\n';
     }

@@ -25,26 +25,23 @@ QJsonObject portToJson(const PortInfo &port)
 {
     QJsonArray interfaces;
     for (const PortInterfaceInfo &interface : port.interfaces) {
-        interfaces.append(QJsonObject{{"instanceName", interface.instanceName},
-                                      {"typeName", interface.typeName},
-                                      {"polarity", interface.provided ? "provided" : "required"}});
+        interfaces.append(QJsonObject {{"instanceName", interface.instanceName},
+                                       {"typeName", interface.typeName},
+                                       {"polarity", interface.provided ? "provided" : "required"}});
     }
     QJsonArray connectors;
     for (const ConnectorInfo &connector : port.connectors)
         connectors.append(connectorToJson(connector));
-    return {{"name", port.shortName()},
-            {"fullName", port.name},
-            {"type", port.portType()},
-            {"interfaces", interfaces},
-            {"connectors", connectors},
-            {"properties", propertiesToJson(port.properties)}};
+    return {{"name", port.shortName()}, {"fullName", port.name},
+            {"type", port.portType()},  {"interfaces", interfaces},
+            {"connectors", connectors}, {"properties", propertiesToJson(port.properties)}};
 }
 
 QJsonObject contextToJson(const ExecutionContextInfo &context)
 {
-    return {{"handle", context.handle},       {"owned", context.owned},
-            {"kind", context.kind},           {"rate", context.rate},
-            {"running", context.running},     {"state", stateName(context.state)}};
+    return {{"handle", context.handle},   {"owned", context.owned},
+            {"kind", context.kind},       {"rate", context.rate},
+            {"running", context.running}, {"state", stateName(context.state)}};
 }
 
 QJsonObject componentToJson(const ComponentInfo &component)
@@ -64,7 +61,8 @@ QJsonObject componentToJson(const ComponentInfo &component)
 
 QJsonObject nodeToJson(const NamingNode &node)
 {
-    QJsonObject object{{"name", node.name}, {"path", node.path}, {"type", nodeTypeName(node.type)}};
+    QJsonObject object {
+        {"name", node.name}, {"path", node.path}, {"type", nodeTypeName(node.type)}};
     if (!node.reason.isEmpty())
         object.insert("reason", node.reason);
     if (!node.children.empty()) {

@@ -14,7 +14,7 @@ namespace {
 bool isDirectory(const NamingNode &node)
 {
     return node.type == NodeType::Root || node.type == NodeType::Server
-           || node.type == NodeType::Context || node.type == NodeType::Manager;
+        || node.type == NodeType::Context || node.type == NodeType::Manager;
 }
 
 QString pair(int total, int connected)
@@ -48,24 +48,30 @@ QStringList RtLsCommand::flagNames() const
 
 QString RtLsCommand::row(const NamingNode &node, bool longForm) const
 {
-    const QString name = (node.type == NodeType::Zombie ? QStringLiteral("*") : QString()) + node.name;
+    const QString name
+        = (node.type == NodeType::Zombie ? QStringLiteral("*") : QString()) + node.name;
     if (!longForm)
         return name;
-    QStringList columns{QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("-"),
-                        QStringLiteral("-"), QStringLiteral("-")};
+    QStringList columns {QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("-"),
+                         QStringLiteral("-"), QStringLiteral("-")};
     if (node.type == NodeType::Component && !node.ior.isEmpty()) {
         try {
             const ComponentProxy rtc(node.ior, node.path);
             const PortCounts c = countPorts(rtc.ports());
-            columns = {stateName(rtc.state()), pair(c.total, c.connected), pair(c.in, c.inConnected),
-                       pair(c.out, c.outConnected), pair(c.service, c.serviceConnected)};
+            columns
+                = {stateName(rtc.state()), pair(c.total, c.connected), pair(c.in, c.inConnected),
+                   pair(c.out, c.outConnected), pair(c.service, c.serviceConnected)};
         } catch (const Error &) {
             columns[0] = stateName(LifeCycleState::Unknown);
         }
     }
     return QStringLiteral("%1 %2 %3 %4 %5 %6")
-        .arg(columns[0], -9).arg(columns[1], -5).arg(columns[2], -5).arg(columns[3], -5)
-        .arg(columns[4], -5).arg(name);
+        .arg(columns[0], -9)
+        .arg(columns[1], -5)
+        .arg(columns[2], -5)
+        .arg(columns[3], -5)
+        .arg(columns[4], -5)
+        .arg(name);
 }
 
 void RtLsCommand::printListing(const NamingNode &directory, bool longForm, bool recursive,
@@ -98,8 +104,12 @@ QJsonObject RtLsCommand::detailedJson(const NamingNode &node, bool longForm) con
             const ComponentProxy rtc(node.ior, node.path);
             const PortCounts c = countPorts(rtc.ports());
             object.insert("state", stateName(rtc.state()));
-            object.insert("ports", QJsonObject{{"total", c.total}, {"connected", c.connected},
-                                               {"in", c.in}, {"out", c.out}, {"service", c.service}});
+            object.insert("ports",
+                          QJsonObject {{"total", c.total},
+                                       {"connected", c.connected},
+                                       {"in", c.in},
+                                       {"out", c.out},
+                                       {"service", c.service}});
         } catch (const Error &e) {
             object.insert("state", stateName(LifeCycleState::Unknown));
             object.insert("reason", e.message());
@@ -118,8 +128,8 @@ int RtLsCommand::execute(const RtOptions &options, Streams streams)
 {
     const bool longForm = options.has(QStringLiteral("-l"));
     const bool recursive = options.has(QStringLiteral("-R"));
-    const QStringList texts = options.positionals.isEmpty() ? QStringList{currentDirectory()}
-                                                            : options.positionals;
+    const QStringList texts
+        = options.positionals.isEmpty() ? QStringList {currentDirectory()} : options.positionals;
     const QStringList servers = NamingBrowser::serversFromEnvironment();
     QJsonArray json;
     int code = ExitOk;

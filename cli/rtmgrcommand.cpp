@@ -44,7 +44,8 @@ QString RtMgrCommand::usage() const
         "  create 'Type?k=v&…'  create a component; prints its instance name\n"
         "  delete NAME          delete the component with that instance name\n"
         "  list                 components, loaded modules and factories (--json: one object)\n"
-        "rtshell's -l FILE:INIT, -u FILE, -c MODULE, -d NAME are accepted too (run before words).\n");
+        "rtshell's -l FILE:INIT, -u FILE, -c MODULE, -d NAME are accepted too (run before "
+        "words).\n");
 }
 
 QStringList RtMgrCommand::optionNames() const
@@ -56,16 +57,15 @@ void RtMgrCommand::list(const ManagerProxy &manager, bool json, Streams streams)
 {
     QJsonArray components, loaded, factories;
     for (const ComponentInfo &component : manager.componentProfiles())
-        components.append(QJsonObject{{"instanceName", component.instanceName},
-                                      {"typeName", component.typeName}});
+        components.append(QJsonObject {{"instanceName", component.instanceName},
+                                       {"typeName", component.typeName}});
     for (const Properties &module : manager.loadedModules())
         loaded.append(propertiesToJson(module));
     for (const Properties &factory : manager.factoryProfiles())
         factories.append(propertyValue(factory, QStringLiteral("implementation_id")));
     if (json) {
-        streams.out << jsonText(QJsonObject{{"components", components},
-                                            {"loadedModules", loaded},
-                                            {"factories", factories}});
+        streams.out << jsonText(QJsonObject {
+            {"components", components}, {"loadedModules", loaded}, {"factories", factories}});
         return;
     }
     streams.out << "Components:\n";
@@ -115,7 +115,7 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
         const QString &word = words.at(i);
         if (word == QLatin1String("list")) {
             actions.append({word, QString()});
-        } else if (QStringList{"load", "unload", "create", "delete"}.contains(word)) {
+        } else if (QStringList {"load", "unload", "create", "delete"}.contains(word)) {
             if (i + 1 >= words.size())
                 return usageError(QStringLiteral("'%1' needs an argument").arg(word), streams);
             actions.append({word, words.at(++i)});
@@ -128,10 +128,11 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
     const RtPath target = path(options.positionals.first());
     const NamingNode node = NamingBrowser::node(target);
     if (node.type != NodeType::Manager)
-        throw Error(Error::Kind::WrongType, node.reason.isEmpty()
-                                                ? QStringLiteral("%1: not a manager (%2)")
-                                                      .arg(node.path, nodeTypeName(node.type))
-                                                : node.reason);
+        throw Error(
+            Error::Kind::WrongType,
+            node.reason.isEmpty()
+                ? QStringLiteral("%1: not a manager (%2)").arg(node.path, nodeTypeName(node.type))
+                : node.reason);
     const ManagerProxy manager(node.ior, node.path);
     for (const auto &action : actions)
         run(manager, action.first, action.second, options.has(QStringLiteral("--json")), streams);

@@ -10,7 +10,9 @@ class RtStateCommand : public RtCommand
 {
 public:
     enum class Action { Activate, Deactivate, Reset, Exit };
-    explicit RtStateCommand(Action action) : m_action(action) {}
+    explicit RtStateCommand(Action action)
+        : m_action(action)
+    { }
 
     QString name() const override;
     QString summary() const override;

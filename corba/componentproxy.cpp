@@ -32,7 +32,8 @@ RTC::ExecutionContext_ptr context(RTC::RTObject_ptr rtc, int index, const QStrin
         if (index >= 0 && index < ownedCount)
             return RTC::ExecutionContext::_duplicate(owned[CORBA::ULong(index)]);
         if (index >= ownedCount && index < ownedCount + int(participating->length()))
-            return RTC::ExecutionContext::_duplicate(participating[CORBA::ULong(index - ownedCount)]);
+            return RTC::ExecutionContext::_duplicate(
+                participating[CORBA::ULong(index - ownedCount)]);
         throw Error(Error::Kind::NotFound,
                     QStringLiteral("%1: no execution context with index %2").arg(path).arg(index));
     });
@@ -56,8 +57,7 @@ ExecutionContextInfo contextInfo(RTC::RTObject_ptr rtc, RTC::ExecutionContext_pt
 ComponentProxy::ComponentProxy(QString ior, QString path)
     : m_ior(std::move(ior))
     , m_path(std::move(path))
-{
-}
+{ }
 
 ComponentInfo ComponentProxy::profile() const
 {
@@ -147,7 +147,8 @@ void ComponentProxy::startContext(int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    checkReturnCode(call(m_path, [&] { return int(ec->start()); }), m_path, QStringLiteral("start"));
+    checkReturnCode(call(m_path, [&] { return int(ec->start()); }), m_path,
+                    QStringLiteral("start"));
 }
 
 void ComponentProxy::stopContext(int ecIndex) const
@@ -199,7 +200,8 @@ ConfigurationSet ComponentProxy::configurationSet(const QString &id) const
 void ComponentProxy::addConfigurationSet(const ConfigurationSet &set) const
 {
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    const bool ok = call(m_path, [&] { return conf->add_configuration_set(toSdoConfigurationSet(set)); });
+    const bool ok
+        = call(m_path, [&] { return conf->add_configuration_set(toSdoConfigurationSet(set)); });
     if (!ok)
         throw Error(Error::Kind::Refused,
                     QStringLiteral("%1: configuration set '%2' was not added").arg(m_path, set.id));
@@ -219,7 +221,8 @@ void ComponentProxy::activateConfigurationSet(const QString &id) const
 {
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
     const QByteArray utf8 = id.toUtf8();
-    const bool ok = call(m_path, [&] { return conf->activate_configuration_set(utf8.constData()); });
+    const bool ok
+        = call(m_path, [&] { return conf->activate_configuration_set(utf8.constData()); });
     if (!ok)
         throw Error(Error::Kind::Refused,
                     QStringLiteral("%1: configuration set '%2' was not activated").arg(m_path, id));
@@ -229,22 +232,22 @@ QString ComponentProxy::parameter(const QString &setId, const QString &name) con
 {
     const ConfigurationSet set = configurationSet(setId);
     if (!hasProperty(set.data, name))
-        throw Error(Error::Kind::NotFound, QStringLiteral("%1: no parameter '%2' in set '%3'")
-                                               .arg(m_path, name, setId));
+        throw Error(Error::Kind::NotFound,
+                    QStringLiteral("%1: no parameter '%2' in set '%3'").arg(m_path, name, setId));
     return propertyValue(set.data, name);
 }
 
-void ComponentProxy::setParameter(const QString &setId, const QString &name, const QString &value) const
+void ComponentProxy::setParameter(const QString &setId, const QString &name,
+                                  const QString &value) const
 {
     ConfigurationSet set = configurationSet(setId);
     if (!hasProperty(set.data, name))
-        throw Error(Error::Kind::NotFound, QStringLiteral("%1: no parameter '%2' in set '%3'")
-                                               .arg(m_path, name, setId));
+        throw Error(Error::Kind::NotFound,
+                    QStringLiteral("%1: no parameter '%2' in set '%3'").arg(m_path, name, setId));
     setProperty(set.data, name, value);
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    const bool ok = call(m_path, [&] {
-        return conf->set_configuration_set_values(toSdoConfigurationSet(set));
-    });
+    const bool ok = call(
+        m_path, [&] { return conf->set_configuration_set_values(toSdoConfigurationSet(set)); });
     if (!ok)
         throw Error(Error::Kind::Refused,
                     QStringLiteral("%1: parameter '%2' was not set").arg(m_path, name));

@@ -25,8 +25,7 @@ void ensureOrb();
  * The translation boundary: runs `f` (which makes remote calls) with the call timeout in force and
  * turns any CORBA exception into a Corba::Error about `target`.
  */
-template<typename F>
-auto call(const QString &target, F &&f) -> decltype(f())
+template<typename F> auto call(const QString &target, F &&f) -> decltype(f())
 {
     ensureOrb();
     try {

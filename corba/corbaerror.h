@@ -16,17 +16,17 @@ class Error : public std::exception
 {
 public:
     enum class Kind {
-        Transient,      ///< peer unreachable (connection refused, no route, not yet started)
-        CommFailure,    ///< connection broke during the call
+        Transient, ///< peer unreachable (connection refused, no route, not yet started)
+        CommFailure, ///< connection broke during the call
         ObjectNotExist, ///< the peer answered: no such object (stale reference)
-        Timeout,        ///< no reply within the call timeout
-        System,         ///< any other CORBA system exception
-        User,           ///< a user exception declared by the IDL
-        Refused,        ///< the call returned a failure code (RTC::ReturnCode_t, false)
-        NotFound,       ///< a name, port, set or parameter that does not exist
-        BadPath,        ///< a path or address that cannot be parsed
-        WrongType,      ///< the object is not of the expected interface
-        Incompatible    ///< ports that cannot be connected (rtcon checks)
+        Timeout, ///< no reply within the call timeout
+        System, ///< any other CORBA system exception
+        User, ///< a user exception declared by the IDL
+        Refused, ///< the call returned a failure code (RTC::ReturnCode_t, false)
+        NotFound, ///< a name, port, set or parameter that does not exist
+        BadPath, ///< a path or address that cannot be parsed
+        WrongType, ///< the object is not of the expected interface
+        Incompatible ///< ports that cannot be connected (rtcon checks)
     };
 
     Error(Kind kind, QString message);

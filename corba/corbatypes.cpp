@@ -35,11 +35,16 @@ void setProperty(Properties &properties, const QString &key, const QString &valu
 QString stateName(LifeCycleState state)
 {
     switch (state) {
-    case LifeCycleState::Created: return QStringLiteral("Created");
-    case LifeCycleState::Inactive: return QStringLiteral("Inactive");
-    case LifeCycleState::Active: return QStringLiteral("Active");
-    case LifeCycleState::Error: return QStringLiteral("Error");
-    case LifeCycleState::Unknown: break;
+    case LifeCycleState::Created:
+        return QStringLiteral("Created");
+    case LifeCycleState::Inactive:
+        return QStringLiteral("Inactive");
+    case LifeCycleState::Active:
+        return QStringLiteral("Active");
+    case LifeCycleState::Error:
+        return QStringLiteral("Error");
+    case LifeCycleState::Unknown:
+        break;
     }
     return QStringLiteral("Unknown");
 }

@@ -79,7 +79,7 @@ struct ExecutionContextInfo
 {
     int handle = -1; ///< the component's handle for this context
     bool owned = true;
-    QString kind;    ///< PERIODIC, EVENT_DRIVEN, OTHER
+    QString kind; ///< PERIODIC, EVENT_DRIVEN, OTHER
     double rate = 0;
     bool running = false;
     LifeCycleState state = LifeCycleState::Unknown; ///< the component's state in this context

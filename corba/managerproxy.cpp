@@ -26,8 +26,7 @@ std::vector<Properties> modules(const RTM::ModuleProfileList &list)
     return result;
 }
 
-template<typename List>
-QStringList iors(const List &list)
+template<typename List> QStringList iors(const List &list)
 {
     QStringList result;
     for (CORBA::ULong i = 0; i < list.length(); ++i)
@@ -40,14 +39,14 @@ QStringList iors(const List &list)
 ManagerProxy::ManagerProxy(QString ior, QString path)
     : m_ior(std::move(ior))
     , m_path(std::move(path))
-{
-}
+{ }
 
 void ManagerProxy::loadModule(const QString &pathName, const QString &initFunction) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
     const int code = call(m_path, [&] {
-        return int(mgr->load_module(pathName.toUtf8().constData(), initFunction.toUtf8().constData()));
+        return int(
+            mgr->load_module(pathName.toUtf8().constData(), initFunction.toUtf8().constData()));
     });
     checkReturnCode(code, m_path, QStringLiteral("load_module(%1)").arg(pathName));
 }
@@ -55,7 +54,8 @@ void ManagerProxy::loadModule(const QString &pathName, const QString &initFuncti
 void ManagerProxy::unloadModule(const QString &pathName) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    const int code = call(m_path, [&] { return int(mgr->unload_module(pathName.toUtf8().constData())); });
+    const int code
+        = call(m_path, [&] { return int(mgr->unload_module(pathName.toUtf8().constData())); });
     checkReturnCode(code, m_path, QStringLiteral("unload_module(%1)").arg(pathName));
 }
 
@@ -102,9 +102,8 @@ QString ManagerProxy::createComponent(const QString &moduleName) const
 void ManagerProxy::deleteComponent(const QString &instanceName) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    const int code = call(m_path, [&] {
-        return int(mgr->delete_component(instanceName.toUtf8().constData()));
-    });
+    const int code = call(
+        m_path, [&] { return int(mgr->delete_component(instanceName.toUtf8().constData())); });
     checkReturnCode(code, m_path, QStringLiteral("delete_component(%1)").arg(instanceName));
 }
 

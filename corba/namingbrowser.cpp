@@ -17,13 +17,20 @@ using namespace Internal;
 QString nodeTypeName(NodeType type)
 {
     switch (type) {
-    case NodeType::Root: return QStringLiteral("root");
-    case NodeType::Server: return QStringLiteral("server");
-    case NodeType::Context: return QStringLiteral("context");
-    case NodeType::Component: return QStringLiteral("component");
-    case NodeType::Manager: return QStringLiteral("manager");
-    case NodeType::Object: return QStringLiteral("object");
-    case NodeType::Zombie: return QStringLiteral("zombie");
+    case NodeType::Root:
+        return QStringLiteral("root");
+    case NodeType::Server:
+        return QStringLiteral("server");
+    case NodeType::Context:
+        return QStringLiteral("context");
+    case NodeType::Component:
+        return QStringLiteral("component");
+    case NodeType::Manager:
+        return QStringLiteral("manager");
+    case NodeType::Object:
+        return QStringLiteral("object");
+    case NodeType::Zombie:
+        return QStringLiteral("zombie");
     }
     return QString();
 }
@@ -96,8 +103,10 @@ NodeType classify(CORBA::Object_ptr object, const QString &kind, const QString &
                 const bool rtc = kind == QLatin1String("rtc");
                 if (object->_is_a(rtc ? rtObjectId : managerId))
                     return rtc ? NodeType::Component : NodeType::Manager;
-                *reason = QStringLiteral("%1: not an %2").arg(path, rtc ? QStringLiteral("RTObject")
-                                                                        : QStringLiteral("RTM::Manager"));
+                *reason
+                    = QStringLiteral("%1: not an %2")
+                          .arg(path,
+                               rtc ? QStringLiteral("RTObject") : QStringLiteral("RTM::Manager"));
                 return NodeType::Zombie;
             }
             return object->_non_existent() ? NodeType::Zombie : NodeType::Object;
@@ -131,8 +140,8 @@ std::vector<NamingNode> listContext(CosNaming::NamingContext_ptr context, const 
         if (!more)
             break;
         const QString name = elementName(binding->binding_name[0]);
-        const QString childPath = path.endsWith(QLatin1Char('/')) ? path + name
-                                                                  : path + QLatin1Char('/') + name;
+        const QString childPath
+            = path.endsWith(QLatin1Char('/')) ? path + name : path + QLatin1Char('/') + name;
         if (binding->binding_type == CosNaming::ncontext) {
             nodes.push_back({name, NodeType::Context, childPath, {}, {}, {}});
             continue;
@@ -176,7 +185,8 @@ std::vector<NamingNode> listManager(const QString &ior, const QString &path)
 
 QStringList NamingBrowser::serversFromEnvironment()
 {
-    QString value = QProcessEnvironment::systemEnvironment().value(QStringLiteral("RTCTREE_NAMESERVERS"));
+    QString value
+        = QProcessEnvironment::systemEnvironment().value(QStringLiteral("RTCTREE_NAMESERVERS"));
     value.replace(QLatin1Char(','), QLatin1Char(';'));
     QStringList servers;
     for (const QString &server : value.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
@@ -203,9 +213,8 @@ std::vector<NamingNode> NamingBrowser::list(const RtPath &path, const QStringLis
     if (path.names().isEmpty())
         return listContext(root.in(), self.path);
     CORBA::Object_var object = resolveName(path);
-    CosNaming::NamingContext_var context = call(self.path, [&] {
-        return CosNaming::NamingContext::_narrow(object.in());
-    });
+    CosNaming::NamingContext_var context
+        = call(self.path, [&] { return CosNaming::NamingContext::_narrow(object.in()); });
     return listContext(context.in(), self.path);
 }
 
@@ -250,7 +259,7 @@ NamingNode NamingBrowser::tree(const RtPath &path, int maxDepth, const QStringLi
             // A manager's own children are not bound in the name server; only named nodes recurse.
             const bool named = root.type != NodeType::Manager;
             const bool container = child.type == NodeType::Context || child.type == NodeType::Server
-                                   || child.type == NodeType::Manager;
+                || child.type == NodeType::Manager;
             const auto childPath = RtPath::parse(child.path);
             if (named && container && childPath) {
                 try {
@@ -268,8 +277,8 @@ NamingNode NamingBrowser::tree(const RtPath &path, int maxDepth, const QStringLi
 
 QString NamingBrowser::resolve(const RtPath &path)
 {
-    CORBA::Object_var object = path.isDirect() ? toObject(path.corbaloc, path.corbaloc)
-                                               : resolveName(path);
+    CORBA::Object_var object
+        = path.isDirect() ? toObject(path.corbaloc, path.corbaloc) : resolveName(path);
     return toIor(object.in());
 }
 

@@ -12,13 +12,13 @@ namespace Corba {
 
 /// What a node of the RTC tree is.
 enum class NodeType {
-    Root,      ///< `/`
-    Server,    ///< a name server
-    Context,   ///< a naming context (`myhost.host_cxt`)
+    Root, ///< `/`
+    Server, ///< a name server
+    Context, ///< a naming context (`myhost.host_cxt`)
     Component, ///< an RT-Component (`Name0.rtc`, or a manager's component)
-    Manager,   ///< an RTM::Manager (`manager.mgr`)
-    Object,    ///< another live object
-    Zombie     ///< a name whose object does not answer or is not of the expected type
+    Manager, ///< an RTM::Manager (`manager.mgr`)
+    Object, ///< another live object
+    Zombie ///< a name whose object does not answer or is not of the expected type
 };
 
 /// "server", "context", "component", "manager", "object", "zombie".
@@ -30,7 +30,7 @@ struct NamingNode
     QString name; ///< `id.kind`, or the server address
     NodeType type = NodeType::Object;
     QString path; ///< absolute rtshell path
-    QString ior;  ///< the object reference of objects and components
+    QString ior; ///< the object reference of objects and components
     QString reason; ///< why the node is a zombie
     std::vector<NamingNode> children;
 };
@@ -46,14 +46,15 @@ public:
     static QStringList serversFromEnvironment();
 
     /**
-     * The children of `path`: the servers (for `/`, from `rootServers`), the bindings of a server or
-     * context (objects checked for liveness and type), or a manager's components and slaves.
+     * The children of `path`: the servers (for `/`, from `rootServers`), the bindings of a server
+     * or context (objects checked for liveness and type), or a manager's components and slaves.
      */
     static std::vector<NamingNode> list(const RtPath &path, const QStringList &rootServers = {});
     /// The node at `path` itself, checked; NotFound when the name is not bound.
     static NamingNode node(const RtPath &path);
     /// `path` and everything below it up to `maxDepth` levels (negative: no limit).
-    static NamingNode tree(const RtPath &path, int maxDepth = -1, const QStringList &rootServers = {});
+    static NamingNode tree(const RtPath &path, int maxDepth = -1,
+                           const QStringList &rootServers = {});
     /// The object reference (IOR) bound at `path` (or at its corbaloc).
     static QString resolve(const RtPath &path);
     /// Binds `ior` at `path` (its naming context must exist).

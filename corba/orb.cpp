@@ -15,8 +15,8 @@ namespace Corba {
 
 namespace {
 
-std::atomic<int> s_callTimeout{Orb::defaultCallTimeout};
-std::atomic<bool> s_initialised{false};
+std::atomic<int> s_callTimeout {Orb::defaultCallTimeout};
+std::atomic<bool> s_initialised {false};
 QMutex s_argumentsMutex;
 QStringList s_arguments;
 std::once_flag s_once;
@@ -32,7 +32,7 @@ void applyTimeout(int milliseconds)
 
 void createOrb()
 {
-    QStringList arguments{QStringLiteral("rtcorba")};
+    QStringList arguments {QStringLiteral("rtcorba")};
     {
         QMutexLocker locker(&s_argumentsMutex);
         arguments += s_arguments;
@@ -45,7 +45,8 @@ void createOrb()
         argv.push_back(bytes.data());
     argv.push_back(nullptr);
     int argc = int(argv.size()) - 1;
-    // omniORB's defaults would print to stderr and retry forever; a tool wants quick, quiet failure.
+    // omniORB's defaults would print to stderr and retry forever; a tool wants quick, quiet
+    // failure.
     const char *options[][2] = {{"traceLevel", "0"}, {nullptr, nullptr}};
     s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
     s_initialised = true;
@@ -97,9 +98,9 @@ QString systemExceptionText(const CORBA::SystemException &e)
     return QStringLiteral("CORBA::%1 (minor %2, %3)")
         .arg(QLatin1String(e._name()))
         .arg(e.minor())
-        .arg(e.completed() == CORBA::COMPLETED_YES  ? QStringLiteral("completed")
-             : e.completed() == CORBA::COMPLETED_NO ? QStringLiteral("not completed")
-                                                    : QStringLiteral("maybe completed"));
+        .arg(e.completed() == CORBA::COMPLETED_YES      ? QStringLiteral("completed")
+                 : e.completed() == CORBA::COMPLETED_NO ? QStringLiteral("not completed")
+                                                        : QStringLiteral("maybe completed"));
 }
 
 } // namespace
@@ -117,12 +118,15 @@ void rethrowAsError(const QString &target)
     } catch (const CORBA::TRANSIENT &e) {
         // omniORB reports its own call timeouts as TRANSIENT with a dedicated minor code.
         if (e.minor() == omni::TRANSIENT_CallTimedout)
-            throw fail(Kind::Timeout, QStringLiteral("no reply within %1 ms").arg(Orb::callTimeout()));
-        const QString why = e.minor() == omni::TRANSIENT_ConnectFailed ? QStringLiteral("cannot connect")
-                                                                        : systemExceptionText(e);
+            throw fail(Kind::Timeout,
+                       QStringLiteral("no reply within %1 ms").arg(Orb::callTimeout()));
+        const QString why = e.minor() == omni::TRANSIENT_ConnectFailed
+            ? QStringLiteral("cannot connect")
+            : systemExceptionText(e);
         throw fail(Kind::Transient, QStringLiteral("unreachable (%1)").arg(why));
     } catch (const CORBA::COMM_FAILURE &e) {
-        throw fail(Kind::CommFailure, QStringLiteral("connection failed (%1)").arg(systemExceptionText(e)));
+        throw fail(Kind::CommFailure,
+                   QStringLiteral("connection failed (%1)").arg(systemExceptionText(e)));
     } catch (const CORBA::OBJECT_NOT_EXIST &) {
         throw fail(Kind::ObjectNotExist, QStringLiteral("object does not exist"));
     } catch (const CORBA::SystemException &e) {
@@ -212,13 +216,13 @@ SDOPackage::NVList toNVList(const Properties &properties)
 
 void checkReturnCode(int code, const QString &target, const QString &operation)
 {
-    static const char *const names[] = {"RTC_OK",           "RTC_ERROR",
-                                        "BAD_PARAMETER",    "UNSUPPORTED",
-                                        "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET"};
+    static const char *const names[] = {"RTC_OK",      "RTC_ERROR",        "BAD_PARAMETER",
+                                        "UNSUPPORTED", "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET"};
     if (code == 0)
         return;
     const QString name = code > 0 && code < 6 ? QLatin1String(names[code]) : QString::number(code);
-    throw Error(Error::Kind::Refused, QStringLiteral("%1: %2 returned %3").arg(target, operation, name));
+    throw Error(Error::Kind::Refused,
+                QStringLiteral("%1: %2 returned %3").arg(target, operation, name));
 }
 
 } // namespace Internal

@@ -80,12 +80,13 @@ QString serviceProblem(const std::vector<PortInfo> &ports)
             const auto &others = ports[i].interfaces;
             const bool paired = std::any_of(others.begin(), others.end(), [&](const auto &other) {
                 return other.instanceName == interface.instanceName
-                       && other.provided != interface.provided;
+                    && other.provided != interface.provided;
             });
             if (!paired)
                 return QStringLiteral("interface '%1' of %2 has no %3 counterpart in %4")
                     .arg(interface.instanceName, ports.front().name,
-                         interface.provided ? QStringLiteral("required") : QStringLiteral("provided"),
+                         interface.provided ? QStringLiteral("required")
+                                            : QStringLiteral("provided"),
                          ports[i].name);
         }
     }
@@ -122,7 +123,8 @@ Properties PortConnection::effectiveProperties(const std::vector<PortInfo> &port
                       {QStringLiteral("dataport.interface_type"), QStringLiteral("corba_cdr")},
                       {QStringLiteral("dataport.subscription_type"), QStringLiteral("new")}};
         const PortInfo &source = ports.size() == 2 && ports[1].isDataOut() ? ports[1] : ports[0];
-        const QString dataType = propertyValue(source.properties, QStringLiteral("dataport.data_type"));
+        const QString dataType
+            = propertyValue(source.properties, QStringLiteral("dataport.data_type"));
         if (!dataType.isEmpty())
             properties.append({QStringLiteral("dataport.data_type"), dataType});
     }
@@ -157,17 +159,20 @@ ConnectorInfo PortConnection::connect(const std::vector<PortInfo> &ports,
     const Properties properties = effectiveProperties(ports, request.properties);
     const QString why = problem(ports, properties);
     if (!why.isEmpty())
-        throw Error(Error::Kind::Incompatible, QStringLiteral("%1: cannot connect: %2").arg(path, why));
+        throw Error(Error::Kind::Incompatible,
+                    QStringLiteral("%1: cannot connect: %2").arg(path, why));
     if (request.noDuplicates) {
         const QSet<QString> wanted = portNames(namesOf(ports));
         for (const ConnectorInfo &connector : ports.front().connectors) {
             if (portNames(connector.ports) == wanted)
-                throw Error(Error::Kind::Refused, QStringLiteral("%1: already connected (connector %2)")
-                                                      .arg(path, connector.id));
+                throw Error(
+                    Error::Kind::Refused,
+                    QStringLiteral("%1: already connected (connector %2)").arg(path, connector.id));
         }
     }
     RTC::ConnectorProfile profile;
-    profile.name = (request.name.isEmpty() ? defaultName(ports) : request.name).toUtf8().constData();
+    profile.name
+        = (request.name.isEmpty() ? defaultName(ports) : request.name).toUtf8().constData();
     profile.connector_id = request.id.toUtf8().constData();
     profile.properties = toNVList(properties);
     profile.ports.length(CORBA::ULong(ports.size()));
@@ -176,12 +181,13 @@ ConnectorInfo PortConnection::connect(const std::vector<PortInfo> &ports,
     RTC::PortService_var source = portService(ports.front(), path);
     const int code = call(path, [&] { return int(source->connect(profile)); });
     checkReturnCode(code, path, QStringLiteral("connect"));
-    ConnectorInfo info{toQString(profile.name.in()), toQString(profile.connector_id.in()),
-                       namesOf(ports), fromNVList(profile.properties)};
+    ConnectorInfo info {toQString(profile.name.in()), toQString(profile.connector_id.in()),
+                        namesOf(ports), fromNVList(profile.properties)};
     return info;
 }
 
-void PortConnection::disconnect(const PortInfo &port, const QString &connectorId, const QString &path)
+void PortConnection::disconnect(const PortInfo &port, const QString &connectorId,
+                                const QString &path)
 {
     RTC::PortService_var service = portService(port, path);
     const QByteArray id = connectorId.toUtf8();

@@ -30,12 +30,13 @@ public:
      * defaults (`dataport.dataflow_type=push`, `interface_type=corba_cdr`, `subscription_type=new`,
      * `data_type` = the source port's) overlaid by `given`.
      */
-    static Properties effectiveProperties(const std::vector<PortInfo> &ports, const Properties &given);
+    static Properties effectiveProperties(const std::vector<PortInfo> &ports,
+                                          const Properties &given);
     /**
-     * Why `ports` cannot be connected with `properties` (as returned by effectiveProperties()), or an
-     * empty string when they can. Data ports: one out and the others in, and each `dataport.*` value
-     * must be in each port's allowed list unless that list says `any`. Service ports: each interface
-     * of the first port must find one with the same instance name and opposite polarity.
+     * Why `ports` cannot be connected with `properties` (as returned by effectiveProperties()), or
+     * an empty string when they can. Data ports: one out and the others in, and each `dataport.*`
+     * value must be in each port's allowed list unless that list says `any`. Service ports: each
+     * interface of the first port must find one with the same instance name and opposite polarity.
      */
     static QString problem(const std::vector<PortInfo> &ports, const Properties &properties);
     /// rtcon's default connector name: the ports' short names joined by '_'.
@@ -46,8 +47,8 @@ public:
      * says so, Refused when the port refuses or (with noDuplicates) when the ports are already
      * connected. Returns the connector as the port filled it in (with its id).
      */
-    static ConnectorInfo connect(const std::vector<PortInfo> &ports, const ConnectionRequest &request,
-                                 const QString &path);
+    static ConnectorInfo connect(const std::vector<PortInfo> &ports,
+                                 const ConnectionRequest &request, const QString &path);
     /// Disconnects the connector `connectorId` through `port`.
     static void disconnect(const PortInfo &port, const QString &connectorId, const QString &path);
     /// Disconnects every connector of `port`.

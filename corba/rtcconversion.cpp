@@ -68,11 +68,16 @@ ComponentInfo toComponentInfo(const RTC::ComponentProfile &profile)
 LifeCycleState toLifeCycleState(RTC::LifeCycleState state)
 {
     switch (state) {
-    case RTC::CREATED_STATE: return LifeCycleState::Created;
-    case RTC::INACTIVE_STATE: return LifeCycleState::Inactive;
-    case RTC::ACTIVE_STATE: return LifeCycleState::Active;
-    case RTC::ERROR_STATE: return LifeCycleState::Error;
-    default: break;
+    case RTC::CREATED_STATE:
+        return LifeCycleState::Created;
+    case RTC::INACTIVE_STATE:
+        return LifeCycleState::Inactive;
+    case RTC::ACTIVE_STATE:
+        return LifeCycleState::Active;
+    case RTC::ERROR_STATE:
+        return LifeCycleState::Error;
+    default:
+        break;
     }
     return LifeCycleState::Unknown;
 }
@@ -80,9 +85,12 @@ LifeCycleState toLifeCycleState(RTC::LifeCycleState state)
 QString executionKindName(RTC::ExecutionKind kind)
 {
     switch (kind) {
-    case RTC::PERIODIC: return QStringLiteral("PERIODIC");
-    case RTC::EVENT_DRIVEN: return QStringLiteral("EVENT_DRIVEN");
-    default: break;
+    case RTC::PERIODIC:
+        return QStringLiteral("PERIODIC");
+    case RTC::EVENT_DRIVEN:
+        return QStringLiteral("EVENT_DRIVEN");
+    default:
+        break;
     }
     return QStringLiteral("OTHER");
 }

@@ -103,8 +103,8 @@ std::optional<QString> RtPath::normaliseCorbaloc(const QString &text, QString *e
     }
     const int slash = rest.indexOf(QLatin1Char('/'));
     QString address = slash < 0 ? rest : rest.left(slash);
-    const QString key = slash < 0 || slash == rest.size() - 1 ? QStringLiteral("manager")
-                                                              : rest.mid(slash + 1);
+    const QString key
+        = slash < 0 || slash == rest.size() - 1 ? QStringLiteral("manager") : rest.mid(slash + 1);
     if (!address.contains(QLatin1Char(':')))
         address += QStringLiteral(":2810");
     if (!validHostPort(address)) {

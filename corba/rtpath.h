@@ -16,8 +16,8 @@ namespace Corba {
 struct RtPath
 {
     QStringList elements; ///< server first; empty for the root
-    QString port;         ///< port name after ':' on the last element, or empty
-    QString corbaloc;     ///< set (normalised, `corbaloc:iiop:host:port/key`) for direct addresses
+    QString port; ///< port name after ':' on the last element, or empty
+    QString corbaloc; ///< set (normalised, `corbaloc:iiop:host:port/key`) for direct addresses
 
     bool isRoot() const { return elements.isEmpty() && corbaloc.isEmpty(); }
     bool isDirect() const { return !corbaloc.isEmpty(); }
@@ -33,10 +33,12 @@ struct RtPath
     QString toString() const;
 
     /**
-     * Parses `text` relative to `currentDirectory` (itself an absolute path; empty = `/`), resolving
+     * Parses `text` relative to `currentDirectory` (itself an absolute path; empty = `/`),
+     * resolving
      * `.` and `..`. Returns std::nullopt and sets `error` for malformed text.
      */
-    static std::optional<RtPath> parse(const QString &text, const QString &currentDirectory = QString(),
+    static std::optional<RtPath> parse(const QString &text,
+                                       const QString &currentDirectory = QString(),
                                        QString *error = nullptr);
     /// Normalises `corbaloc::host[:port][/key]` to `corbaloc:iiop:host:port/key` (2810, manager).
     static std::optional<QString> normaliseCorbaloc(const QString &text, QString *error = nullptr);

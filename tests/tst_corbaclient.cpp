@@ -11,8 +11,8 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
-#include <QThread>
 #include <QTest>
+#include <QThread>
 
 #include <signal.h>
 
@@ -75,7 +75,8 @@ static QString messageOf(const std::function<void()> &action)
 
 RtPath TestCorbaClient::path(const QString &relative) const
 {
-    const QString text = QStringLiteral("/%1/livehost.host_cxt/%2").arg(m_live.namingServer(), relative);
+    const QString text
+        = QStringLiteral("/%1/livehost.host_cxt/%2").arg(m_live.namingServer(), relative);
     const auto parsed = RtPath::parse(text);
     return parsed ? *parsed : RtPath();
 }
@@ -91,14 +92,15 @@ void TestCorbaClient::initTestCase()
     Orb::setCallTimeout(2000);
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
-    const QStringList components{"ConsoleIn?instance_name=ConsoleIn0",
-                                 "ConsoleOut?instance_name=ConsoleOut0",
-                                 "ConsoleOut?instance_name=ConsoleOut1",
-                                 "SeqIn?instance_name=SeqIn0",
-                                 "MyServiceProvider?instance_name=MyServiceProvider0",
-                                 "MyServiceConsumer?instance_name=MyServiceConsumer0",
-                                 "ConfigSample?instance_name=ConfigSample0"};
-    QVERIFY2(m_live.startPeer(components, &error, &m_peerPort, "livehost", true), qPrintable(error));
+    const QStringList components {"ConsoleIn?instance_name=ConsoleIn0",
+                                  "ConsoleOut?instance_name=ConsoleOut0",
+                                  "ConsoleOut?instance_name=ConsoleOut1",
+                                  "SeqIn?instance_name=SeqIn0",
+                                  "MyServiceProvider?instance_name=MyServiceProvider0",
+                                  "MyServiceConsumer?instance_name=MyServiceConsumer0",
+                                  "ConfigSample?instance_name=ConfigSample0"};
+    QVERIFY2(m_live.startPeer(components, &error, &m_peerPort, "livehost", true),
+             qPrintable(error));
 }
 
 void TestCorbaClient::browsesNamingTreeWithZombies()
@@ -185,7 +187,8 @@ void TestCorbaClient::changesStatesInExecutionContexts()
     QCOMPARE(rtc.state(), LifeCycleState::Active);
     QCOMPARE(kindOf([&] { rtc.activate(); }), Error::Kind::Refused);
     const QString refused = messageOf([&] { rtc.reset(); });
-    QVERIFY2(refused.contains("ConsoleOut1.rtc: reset returned PRECONDITION_NOT_MET"), qPrintable(refused));
+    QVERIFY2(refused.contains("ConsoleOut1.rtc: reset returned PRECONDITION_NOT_MET"),
+             qPrintable(refused));
     rtc.deactivate();
     QCOMPARE(rtc.state(), LifeCycleState::Inactive);
     QCOMPARE(kindOf([&] { rtc.state(1); }), Error::Kind::NotFound);
@@ -239,8 +242,8 @@ void TestCorbaClient::connectsAndDisconnectsDataPorts()
     const ComponentProxy sink = component("ConsoleOut0");
     ConnectionRequest request;
     request.properties = {{"dataport.subscription_type", "flush"}};
-    const ConnectorInfo made = PortConnection::connect({source.port("out"), sink.port("in")}, request,
-                                                       "ConsoleIn0.rtc:out");
+    const ConnectorInfo made = PortConnection::connect({source.port("out"), sink.port("in")},
+                                                       request, "ConsoleIn0.rtc:out");
     QVERIFY(!made.id.isEmpty());
     QCOMPARE(made.name, QString("out_in"));
 
@@ -251,11 +254,13 @@ void TestCorbaClient::connectsAndDisconnectsDataPorts()
     QCOMPARE(seen.ports, QStringList({"ConsoleIn0.out", "ConsoleOut0.in"}));
     QCOMPARE(propertyValue(seen.properties, "dataport.subscription_type"), QString("flush"));
     QCOMPARE(propertyValue(seen.properties, "dataport.dataflow_type"), QString("push"));
-    QCOMPARE(propertyValue(seen.properties, "dataport.data_type"), QString("IDL:RTC/TimedLong:1.0"));
+    QCOMPARE(propertyValue(seen.properties, "dataport.data_type"),
+             QString("IDL:RTC/TimedLong:1.0"));
 
     request.noDuplicates = true;
     const QString duplicate = messageOf([&] {
-        PortConnection::connect({source.port("out"), sink.port("in")}, request, "ConsoleIn0.rtc:out");
+        PortConnection::connect({source.port("out"), sink.port("in")}, request,
+                                "ConsoleIn0.rtc:out");
     });
     QVERIFY2(duplicate.contains("already connected (connector " + made.id), qPrintable(duplicate));
 
@@ -275,10 +280,12 @@ void TestCorbaClient::connectsAndDisconnectsDataPorts()
 
     // The wrong data type is refused with the reason, and nothing gets connected.
     const QString mismatch = messageOf([&] {
-        PortConnection::connect({source.port("out"), component("SeqIn0").port("Double")}, {}, "src");
+        PortConnection::connect({source.port("out"), component("SeqIn0").port("Double")}, {},
+                                "src");
     });
-    QVERIFY2(mismatch.contains("SeqIn0.Double does not allow dataport.data_type=IDL:RTC/TimedLong:1.0"),
-             qPrintable(mismatch));
+    QVERIFY2(
+        mismatch.contains("SeqIn0.Double does not allow dataport.data_type=IDL:RTC/TimedLong:1.0"),
+        qPrintable(mismatch));
     QVERIFY(source.port("out").connectors.empty());
 }
 
@@ -291,9 +298,13 @@ void TestCorbaClient::connectsServicePortsAndRefusesIllegalPairs()
     QVERIFY(!hasProperty(made.properties, "dataport.dataflow_type"));
     PortConnection::disconnect(consumer, made.id, "consumer");
 
-    QCOMPARE(kindOf([&] { PortConnection::connect({provider, provider}, {}, "p"); }),
+    QCOMPARE(kindOf([&] {
+                 PortConnection::connect({provider, provider}, {}, "p");
+             }),
              Error::Kind::Incompatible);
-    QCOMPARE(kindOf([&] { PortConnection::connect({provider, component("ConsoleOut0").port("in")}, {}, "p"); }),
+    QCOMPARE(kindOf([&] {
+                 PortConnection::connect({provider, component("ConsoleOut0").port("in")}, {}, "p");
+             }),
              Error::Kind::Incompatible);
     QVERIFY(component("MyServiceProvider0").port("MyService").connectors.empty());
 }
@@ -316,10 +327,12 @@ void TestCorbaClient::drivesTheManager()
     QVERIFY(manager.loadedModules().empty());
     QCOMPARE(kindOf([&] { manager.unloadModule("Motor.so"); }), Error::Kind::Refused);
 
-    const QString ior = manager.createComponent("Motor?exec_cxt.periodic.rate=10&instance_name=Motor7");
+    const QString ior
+        = manager.createComponent("Motor?exec_cxt.periodic.rate=10&instance_name=Motor7");
     QCOMPARE(ComponentProxy(ior, "Motor7").profile().instanceName, QString("Motor7"));
     QCOMPARE(NamingBrowser::node(path("Motor7.rtc")).type, NodeType::Component);
-    QCOMPARE(kindOf([&] { manager.createComponent("Motor?instance_name=Motor7"); }), Error::Kind::Refused);
+    QCOMPARE(kindOf([&] { manager.createComponent("Motor?instance_name=Motor7"); }),
+             Error::Kind::Refused);
     QCOMPARE(kindOf([&] { manager.createComponent("NoSuchType"); }), Error::Kind::Refused);
     manager.deleteComponent("Motor7");
     QCOMPARE(kindOf([&] { NamingBrowser::node(path("Motor7.rtc")); }), Error::Kind::NotFound);
@@ -357,7 +370,8 @@ void TestCorbaClient::exitedComponentIsGone()
     QString error;
     QVERIFY2(m_live.startPeer({"ConsoleIn?instance_name=Leaving0"}, &error, nullptr, "exithost"),
              qPrintable(error));
-    const auto p = RtPath::parse(QStringLiteral("/%1/exithost.host_cxt/Leaving0.rtc").arg(m_live.namingServer()));
+    const auto p = RtPath::parse(
+        QStringLiteral("/%1/exithost.host_cxt/Leaving0.rtc").arg(m_live.namingServer()));
     const ComponentProxy leaving(NamingBrowser::resolve(*p), p->toString());
     leaving.exit();
     QCOMPARE(kindOf([&] { leaving.profile(); }), Error::Kind::ObjectNotExist);
@@ -371,12 +385,14 @@ void TestCorbaClient::bindsAndUnbindsNames()
     const QString ior = NamingBrowser::resolve(path("ConsoleIn0.rtc"));
     NamingBrowser::bind(path("Alias0.rtc"), ior);
     QCOMPARE(NamingBrowser::node(path("Alias0.rtc")).type, NodeType::Component);
-    QCOMPARE(ComponentProxy(NamingBrowser::resolve(path("Alias0.rtc")), "alias").profile().instanceName,
-             QString("ConsoleIn0"));
+    QCOMPARE(
+        ComponentProxy(NamingBrowser::resolve(path("Alias0.rtc")), "alias").profile().instanceName,
+        QString("ConsoleIn0"));
     NamingBrowser::unbind(path("Alias0.rtc"));
     QCOMPARE(kindOf([&] { NamingBrowser::node(path("Alias0.rtc")); }), Error::Kind::NotFound);
     QCOMPARE(kindOf([&] { NamingBrowser::unbind(path("Alias0.rtc")); }), Error::Kind::NotFound);
-    const auto nowhere = RtPath::parse(QStringLiteral("/%1/none.host_cxt/X.rtc").arg(m_live.namingServer()));
+    const auto nowhere
+        = RtPath::parse(QStringLiteral("/%1/none.host_cxt/X.rtc").arg(m_live.namingServer()));
     QCOMPARE(kindOf([&] { NamingBrowser::bind(*nowhere, ior); }), Error::Kind::NotFound);
 }
 
@@ -391,11 +407,13 @@ void TestCorbaClient::shutsTheManagerDown()
     manager.shutdown();
     QVERIFY(peer->waitForFinished(10000));
     QCOMPARE(peer->exitCode(), 0);
-    // Depending on whether the old connection is noticed as closed first, the peer is gone either way.
+    // Depending on whether the old connection is noticed as closed first, the peer is gone either
+    // way.
     const Error::Kind gone = kindOf([&] { manager.isMaster(); });
     QVERIFY2(gone == Error::Kind::Transient || gone == Error::Kind::CommFailure,
              qPrintable(Error::kindName(gone)));
-    const auto context = RtPath::parse(QStringLiteral("/%1/downhost.host_cxt").arg(m_live.namingServer()));
+    const auto context
+        = RtPath::parse(QStringLiteral("/%1/downhost.host_cxt").arg(m_live.namingServer()));
     QVERIFY(NamingBrowser::list(*context).empty());
 }
 
@@ -412,8 +430,8 @@ void TestCorbaClient::unreachablePeersGiveTypedErrors()
     QCOMPARE(kindOf([&] { manager.isMaster(); }), Error::Kind::Transient);
     QCOMPARE(kindOf([&] { ComponentProxy("not an ior", "bad").profile(); }), Error::Kind::BadPath);
     // Unreachable servers listed at the root show up as zombies instead of failing the listing.
-    const NamingNode root = NamingBrowser::tree(*RtPath::parse("/"), 2,
-                                                {QStringLiteral("127.0.0.1:%1").arg(nobody)});
+    const NamingNode root
+        = NamingBrowser::tree(*RtPath::parse("/"), 2, {QStringLiteral("127.0.0.1:%1").arg(nobody)});
     QCOMPARE(root.children.at(0).type, NodeType::Zombie);
 }
 
@@ -430,7 +448,8 @@ static bool waitUntilStopped(pid_t pid)
                 continue;
             const QByteArray text = stat.readAll();
             const int close = text.lastIndexOf(')');
-            allStopped = allStopped && close > 0 && text.size() > close + 2 && text.at(close + 2) == 'T';
+            allStopped
+                = allStopped && close > 0 && text.size() > close + 2 && text.at(close + 2) == 'T';
         }
         if (allStopped)
             return true;
@@ -442,9 +461,11 @@ static bool waitUntilStopped(pid_t pid)
 void TestCorbaClient::stoppedPeerTimesOut()
 {
     QString error;
-    QProcess *peer = m_live.startPeer({"ConsoleIn?instance_name=Frozen0"}, &error, nullptr, "frozenhost");
+    QProcess *peer
+        = m_live.startPeer({"ConsoleIn?instance_name=Frozen0"}, &error, nullptr, "frozenhost");
     QVERIFY2(peer, qPrintable(error));
-    const auto p = RtPath::parse(QStringLiteral("/%1/frozenhost.host_cxt/Frozen0.rtc").arg(m_live.namingServer()));
+    const auto p = RtPath::parse(
+        QStringLiteral("/%1/frozenhost.host_cxt/Frozen0.rtc").arg(m_live.namingServer()));
     const ComponentProxy frozen(NamingBrowser::resolve(*p), p->toString());
     QCOMPARE(frozen.state(), LifeCycleState::Inactive); // the connection is open before the stop
 
@@ -459,14 +480,15 @@ void TestCorbaClient::stoppedPeerTimesOut()
     ::kill(pid_t(peer->processId()), SIGCONT);
     Orb::setCallTimeout(2000);
     QCOMPARE(kind, Error::Kind::Timeout);
-    QVERIFY2(elapsed >= timeout - 50 && elapsed < timeout + 1500, qPrintable(QString::number(elapsed)));
+    QVERIFY2(elapsed >= timeout - 50 && elapsed < timeout + 1500,
+             qPrintable(QString::number(elapsed)));
     // A zombie check of the same name does not hang either: it is reported and the peer recovers.
     QCOMPARE(frozen.state(), LifeCycleState::Inactive);
 }
 
 void TestCorbaClient::callsFromWorkerThreads()
 {
-    std::atomic<int> good{0};
+    std::atomic<int> good {0};
     std::vector<std::thread> threads;
     const QString ior = NamingBrowser::resolve(path("ConsoleIn0.rtc"));
     for (int i = 0; i < 4; ++i) {

@@ -54,9 +54,9 @@ PortInfo service(const QString &name, std::vector<PortInterfaceInfo> interfaces)
     return port;
 }
 
-const PortInterfaceInfo provided{"myservice0", "SimpleService::MyService", true};
-const PortInterfaceInfo required{"myservice0", "SimpleService::MyService", false};
-const PortInterfaceInfo otherRequired{"other0", "SimpleService::MyService", false};
+const PortInterfaceInfo provided {"myservice0", "SimpleService::MyService", true};
+const PortInterfaceInfo required {"myservice0", "SimpleService::MyService", false};
+const PortInterfaceInfo otherRequired {"other0", "SimpleService::MyService", false};
 
 } // namespace
 
@@ -64,7 +64,8 @@ Q_DECLARE_METATYPE(std::vector<Corba::PortInfo>)
 
 void TestCorbaClientConnect::defaultsFollowTheSourcePort()
 {
-    const Properties properties = PortConnection::effectiveProperties({out("A0.out"), in("B0.in")}, {});
+    const Properties properties
+        = PortConnection::effectiveProperties({out("A0.out"), in("B0.in")}, {});
     QCOMPARE(propertyValue(properties, "dataport.dataflow_type"), QString("push"));
     QCOMPARE(propertyValue(properties, "dataport.interface_type"), QString("corba_cdr"));
     QCOMPARE(propertyValue(properties, "dataport.subscription_type"), QString("new"));
@@ -74,15 +75,15 @@ void TestCorbaClientConnect::defaultsFollowTheSourcePort()
         {in("B0.in", "IDL:RTC/TimedDouble:1.0"), out("A0.out")}, {});
     QCOMPARE(propertyValue(reversed, "dataport.data_type"), QString("IDL:RTC/TimedLong:1.0"));
     // Service ports get no dataport defaults.
-    QVERIFY(PortConnection::effectiveProperties({service("P0.s", {provided}), service("C0.s", {required})}, {})
+    QVERIFY(PortConnection::effectiveProperties(
+                {service("P0.s", {provided}), service("C0.s", {required})}, {})
                 .isEmpty());
 }
 
 void TestCorbaClientConnect::givenPropertiesOverrideDefaults()
 {
     const Properties properties = PortConnection::effectiveProperties(
-        {out("A0.out"), in("B0.in")},
-        {{"dataport.subscription_type", "flush"}, {"user.key", "v"}});
+        {out("A0.out"), in("B0.in")}, {{"dataport.subscription_type", "flush"}, {"user.key", "v"}});
     QCOMPARE(propertyValue(properties, "dataport.subscription_type"), QString("flush"));
     QCOMPARE(propertyValue(properties, "user.key"), QString("v"));
     QCOMPARE(properties.size(), 5);
@@ -95,48 +96,52 @@ void TestCorbaClientConnect::checks_data()
     QTest::addColumn<QString>("problem");
 
     const Properties none;
-    QTest::newRow("out to in") << std::vector<PortInfo>{out("A0.out"), in("B0.in")} << none << "";
-    QTest::newRow("in to out") << std::vector<PortInfo>{in("B0.in"), out("A0.out")} << none << "";
-    QTest::newRow("out to two ins") << std::vector<PortInfo>{out("A0.out"), in("B0.in"), in("C0.in")}
-                                    << none << "";
-    QTest::newRow("out to out") << std::vector<PortInfo>{out("A0.out"), out("B0.out")} << none
+    QTest::newRow("out to in") << std::vector<PortInfo> {out("A0.out"), in("B0.in")} << none << "";
+    QTest::newRow("in to out") << std::vector<PortInfo> {in("B0.in"), out("A0.out")} << none << "";
+    QTest::newRow("out to two ins")
+        << std::vector<PortInfo> {out("A0.out"), in("B0.in"), in("C0.in")} << none << "";
+    QTest::newRow("out to out") << std::vector<PortInfo> {out("A0.out"), out("B0.out")} << none
                                 << "B0.out is not an input port";
-    QTest::newRow("in to in") << std::vector<PortInfo>{in("A0.in"), in("B0.in")} << none
+    QTest::newRow("in to in") << std::vector<PortInfo> {in("A0.in"), in("B0.in")} << none
                               << "A0.in is not an output port";
-    QTest::newRow("one port") << std::vector<PortInfo>{out("A0.out")} << none << "a connection needs at least two";
+    QTest::newRow("one port") << std::vector<PortInfo> {out("A0.out")} << none
+                              << "a connection needs at least two";
     QTest::newRow("data type mismatch")
-        << std::vector<PortInfo>{out("A0.out"), in("B0.in", "IDL:RTC/TimedDouble:1.0")} << none
+        << std::vector<PortInfo> {out("A0.out"), in("B0.in", "IDL:RTC/TimedDouble:1.0")} << none
         << "B0.in does not allow dataport.data_type=IDL:RTC/TimedLong:1.0";
     QTest::newRow("flow not offered")
-        << std::vector<PortInfo>{out("A0.out"), dataPort("B0.in", "DataInPort", "IDL:RTC/TimedLong:1.0", "push")}
-        << Properties{{"dataport.dataflow_type", "pull"}}
+        << std::vector<PortInfo> {out("A0.out"),
+                                  dataPort("B0.in", "DataInPort", "IDL:RTC/TimedLong:1.0", "push")}
+        << Properties {{"dataport.dataflow_type", "pull"}}
         << "B0.in does not allow dataport.dataflow_type=pull (allowed: push)";
     QTest::newRow("any accepts everything")
-        << std::vector<PortInfo>{dataPort("A0.out", "DataOutPort", "IDL:RTC/TimedLong:1.0", "Any"),
-                                 dataPort("B0.in", "DataInPort", "IDL:RTC/TimedLong:1.0", "push, Any")}
-        << Properties{{"dataport.dataflow_type", "duplex"}} << "";
+        << std::vector<PortInfo> {dataPort("A0.out", "DataOutPort", "IDL:RTC/TimedLong:1.0", "Any"),
+                                  dataPort("B0.in", "DataInPort", "IDL:RTC/TimedLong:1.0",
+                                           "push, Any")}
+        << Properties {{"dataport.dataflow_type", "duplex"}} << "";
     QTest::newRow("case of values ignored")
-        << std::vector<PortInfo>{out("A0.out"), in("B0.in")}
-        << Properties{{"dataport.dataflow_type", "PUSH"}} << "";
+        << std::vector<PortInfo> {out("A0.out"), in("B0.in")}
+        << Properties {{"dataport.dataflow_type", "PUSH"}} << "";
     QTest::newRow("unknown subscription")
-        << std::vector<PortInfo>{out("A0.out"), in("B0.in")}
-        << Properties{{"dataport.subscription_type", "sometimes"}}
+        << std::vector<PortInfo> {out("A0.out"), in("B0.in")}
+        << Properties {{"dataport.subscription_type", "sometimes"}}
         << "A0.out does not allow dataport.subscription_type=sometimes";
     QTest::newRow("other keys unchecked")
-        << std::vector<PortInfo>{out("A0.out"), in("B0.in")} << Properties{{"x.y", "z"}} << "";
+        << std::vector<PortInfo> {out("A0.out"), in("B0.in")} << Properties {{"x.y", "z"}} << "";
     QTest::newRow("data to service")
-        << std::vector<PortInfo>{out("A0.out"), service("C0.s", {required})} << none
+        << std::vector<PortInfo> {out("A0.out"), service("C0.s", {required})} << none
         << "C0.s is not an input port";
-    QTest::newRow("service pair") << std::vector<PortInfo>{service("P0.s", {provided}), service("C0.s", {required})}
+    QTest::newRow("service pair") << std::vector<PortInfo> {service("P0.s", {provided}),
+                                                            service("C0.s", {required})}
                                   << none << "";
     QTest::newRow("service same polarity")
-        << std::vector<PortInfo>{service("P0.s", {provided}), service("Q0.s", {provided})} << none
+        << std::vector<PortInfo> {service("P0.s", {provided}), service("Q0.s", {provided})} << none
         << "interface 'myservice0' of P0.s has no required counterpart in Q0.s";
     QTest::newRow("service instance names differ")
-        << std::vector<PortInfo>{service("C0.s", {required}), service("D0.s", {otherRequired})} << none
-        << "interface 'myservice0' of C0.s has no provided counterpart in D0.s";
+        << std::vector<PortInfo> {service("C0.s", {required}), service("D0.s", {otherRequired})}
+        << none << "interface 'myservice0' of C0.s has no provided counterpart in D0.s";
     QTest::newRow("service to data")
-        << std::vector<PortInfo>{service("P0.s", {provided}), in("B0.in")} << none
+        << std::vector<PortInfo> {service("P0.s", {provided}), in("B0.in")} << none
         << "B0.in is not a service port";
 }
 
@@ -145,7 +150,8 @@ void TestCorbaClientConnect::checks()
     QFETCH(std::vector<PortInfo>, ports);
     QFETCH(Properties, given);
     QFETCH(QString, problem);
-    const QString found = PortConnection::problem(ports, PortConnection::effectiveProperties(ports, given));
+    const QString found
+        = PortConnection::problem(ports, PortConnection::effectiveProperties(ports, given));
     if (problem.isEmpty())
         QVERIFY2(found.isEmpty(), qPrintable(found));
     else

@@ -46,7 +46,8 @@ static Error::Kind kindOf(const std::function<void()> &action)
 
 RtPath TestCorbaClientManager::path(const QString &name) const
 {
-    return *RtPath::parse(QStringLiteral("/%1/rtmhost.host_cxt/%2").arg(m_live.namingServer(), name));
+    return *RtPath::parse(
+        QStringLiteral("/%1/rtmhost.host_cxt/%2").arg(m_live.namingServer(), name));
 }
 
 ComponentProxy TestCorbaClientManager::component(const QString &instance) const
@@ -61,28 +62,36 @@ void TestCorbaClientManager::initTestCase()
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     m_port = LiveTest::freePort();
-    const QStringList arguments{
+    const QStringList arguments {
         "-d",
-        "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_port),
-        "-o", "corba.nameservers=" + m_live.namingServer(),
-        "-o", "naming.formats=rtmhost.host_cxt/%n.rtc",
-        "-o", "manager.naming_formats=rtmhost.host_cxt/%n.mgr",
-        "-o", "manager.components.precreate=ConsoleIn,ConsoleOut,ConfigSample,MyServiceProvider,"
-              "MyServiceConsumer"};
-    QVERIFY2(m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
-             qPrintable(error));
+        "-o",
+        QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_port),
+        "-o",
+        "corba.nameservers=" + m_live.namingServer(),
+        "-o",
+        "naming.formats=rtmhost.host_cxt/%n.rtc",
+        "-o",
+        "manager.naming_formats=rtmhost.host_cxt/%n.mgr",
+        "-o",
+        "manager.components.precreate=ConsoleIn,ConsoleOut,ConfigSample,MyServiceProvider,"
+        "MyServiceConsumer"};
+    QVERIFY2(
+        m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+        qPrintable(error));
 }
 
 void TestCorbaClientManager::browsesTheManagersNames()
 {
     QStringList names;
     for (const NamingNode &node : NamingBrowser::list(path(QString()))) {
-        QVERIFY2(node.type == NodeType::Component || node.type == NodeType::Manager, qPrintable(node.name));
+        QVERIFY2(node.type == NodeType::Component || node.type == NodeType::Manager,
+                 qPrintable(node.name));
         names.append(node.name);
     }
     names.sort();
-    QCOMPARE(names, QStringList({"ConfigSample0.rtc", "ConsoleIn0.rtc", "ConsoleOut0.rtc",
-                                 "MyServiceConsumer0.rtc", "MyServiceProvider0.rtc", "manager.mgr"}));
+    QCOMPARE(names,
+             QStringList({"ConfigSample0.rtc", "ConsoleIn0.rtc", "ConsoleOut0.rtc",
+                          "MyServiceConsumer0.rtc", "MyServiceProvider0.rtc", "manager.mgr"}));
     const auto direct = RtPath::parse(QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_port));
     QCOMPARE(NamingBrowser::node(*direct).type, NodeType::Manager);
     QCOMPARE(NamingBrowser::list(*direct).size(), size_t(5));
@@ -125,7 +134,8 @@ void TestCorbaClientManager::connectsDataPortsWithNegotiation()
     const ComponentProxy sink = component("ConsoleOut0");
     ConnectionRequest request;
     request.properties = {{"dataport.subscription_type", "flush"}};
-    const ConnectorInfo made = PortConnection::connect({source.port("out"), sink.port("in")}, request, "src");
+    const ConnectorInfo made
+        = PortConnection::connect({source.port("out"), sink.port("in")}, request, "src");
     QVERIFY(!made.id.isEmpty());
     const PortInfo in = sink.port("in");
     QCOMPARE(in.connectors.size(), size_t(1));
@@ -135,7 +145,9 @@ void TestCorbaClientManager::connectsDataPortsWithNegotiation()
     QVERIFY(hasProperty(made.properties, "dataport.corba_cdr.inport_ior"));
     PortConnection::disconnect(source.port("out"), made.id, "src");
     QVERIFY(sink.port("in").connectors.empty());
-    QCOMPARE(kindOf([&] { PortConnection::connect({sink.port("in"), sink.port("in")}, {}, "x"); }),
+    QCOMPARE(kindOf([&] {
+                 PortConnection::connect({sink.port("in"), sink.port("in")}, {}, "x");
+             }),
              Error::Kind::Incompatible);
 }
 
@@ -178,7 +190,8 @@ void TestCorbaClientManager::createsAndDeletesComponents()
     QCOMPARE(ComponentProxy(ior, "Extra0").profile().instanceName, QString("Extra0"));
     QCOMPARE(manager.components().size(), before + 1);
     QCOMPARE(manager.componentsByName("Extra0").size(), 1);
-    QCOMPARE(kindOf([&] { manager.createComponent("ConsoleOut?instance_name=Extra0"); }), Error::Kind::Refused);
+    QCOMPARE(kindOf([&] { manager.createComponent("ConsoleOut?instance_name=Extra0"); }),
+             Error::Kind::Refused);
     manager.deleteComponent("Extra0");
     QCOMPARE(manager.components().size(), before);
     QVERIFY(!manager.profile().isEmpty());

@@ -30,46 +30,49 @@ void TestCorbaClientPath::parses_data()
 
     const QString none;
     QTest::newRow("root") << "/" << none << QStringList() << none << none << "/";
-    QTest::newRow("server") << "/localhost" << none << QStringList{"localhost"} << none << none
+    QTest::newRow("server") << "/localhost" << none << QStringList {"localhost"} << none << none
                             << "/localhost";
     QTest::newRow("server with port is no port suffix")
-        << "/localhost:2809" << none << QStringList{"localhost:2809"} << none << none
+        << "/localhost:2809" << none << QStringList {"localhost:2809"} << none << none
         << "/localhost:2809";
     QTest::newRow("component") << "/localhost/myhost.host_cxt/ConsoleIn0.rtc" << none
-                               << QStringList{"localhost", "myhost.host_cxt", "ConsoleIn0.rtc"}
+                               << QStringList {"localhost", "myhost.host_cxt", "ConsoleIn0.rtc"}
                                << none << none << "/localhost/myhost.host_cxt/ConsoleIn0.rtc";
     QTest::newRow("port") << "/localhost:2809/h.host_cxt/ConsoleIn0.rtc:out" << none
-                          << QStringList{"localhost:2809", "h.host_cxt", "ConsoleIn0.rtc"} << "out"
+                          << QStringList {"localhost:2809", "h.host_cxt", "ConsoleIn0.rtc"} << "out"
                           << none << "/localhost:2809/h.host_cxt/ConsoleIn0.rtc:out";
-    QTest::newRow("trailing slash") << "/localhost/h.host_cxt/" << none
-                                    << QStringList{"localhost", "h.host_cxt"} << none << none
-                                    << "/localhost/h.host_cxt";
+    QTest::newRow("trailing slash")
+        << "/localhost/h.host_cxt/" << none << QStringList {"localhost", "h.host_cxt"} << none
+        << none << "/localhost/h.host_cxt";
     QTest::newRow("double slash") << "//localhost//h.host_cxt" << none
-                                  << QStringList{"localhost", "h.host_cxt"} << none << none
+                                  << QStringList {"localhost", "h.host_cxt"} << none << none
                                   << "/localhost/h.host_cxt";
     QTest::newRow("dot") << "/localhost/./h.host_cxt/." << none
-                         << QStringList{"localhost", "h.host_cxt"} << none << none
+                         << QStringList {"localhost", "h.host_cxt"} << none << none
                          << "/localhost/h.host_cxt";
     QTest::newRow("dotdot") << "/localhost/h.host_cxt/../other.host_cxt" << none
-                            << QStringList{"localhost", "other.host_cxt"} << none << none
+                            << QStringList {"localhost", "other.host_cxt"} << none << none
                             << "/localhost/other.host_cxt";
-    QTest::newRow("dotdot above root stays at root") << "/../.." << none << QStringList() << none
-                                                     << none << "/";
-    QTest::newRow("relative") << "C0.rtc:in" << "/localhost/h.host_cxt"
-                              << QStringList{"localhost", "h.host_cxt", "C0.rtc"} << "in" << none
+    QTest::newRow("dotdot above root stays at root")
+        << "/../.." << none << QStringList() << none << none << "/";
+    QTest::newRow("relative") << "C0.rtc:in"
+                              << "/localhost/h.host_cxt"
+                              << QStringList {"localhost", "h.host_cxt", "C0.rtc"} << "in" << none
                               << "/localhost/h.host_cxt/C0.rtc:in";
-    QTest::newRow("relative dotdot") << "../x.host_cxt/C0.rtc" << "/localhost/h.host_cxt"
-                                     << QStringList{"localhost", "x.host_cxt", "C0.rtc"} << none
-                                     << none << "/localhost/x.host_cxt/C0.rtc";
-    QTest::newRow("relative from root") << "localhost" << none << QStringList{"localhost"} << none
-                                        << none << "/localhost";
-    QTest::newRow("dot is the cwd") << "." << "/localhost/h.host_cxt"
-                                    << QStringList{"localhost", "h.host_cxt"} << none << none
-                                    << "/localhost/h.host_cxt";
-    QTest::newRow("absolute ignores cwd") << "/a" << "/b/c" << QStringList{"a"} << none << none
-                                          << "/a";
+    QTest::newRow("relative dotdot")
+        << "../x.host_cxt/C0.rtc"
+        << "/localhost/h.host_cxt" << QStringList {"localhost", "x.host_cxt", "C0.rtc"} << none
+        << none << "/localhost/x.host_cxt/C0.rtc";
+    QTest::newRow("relative from root")
+        << "localhost" << none << QStringList {"localhost"} << none << none << "/localhost";
+    QTest::newRow("dot is the cwd")
+        << "."
+        << "/localhost/h.host_cxt" << QStringList {"localhost", "h.host_cxt"} << none << none
+        << "/localhost/h.host_cxt";
+    QTest::newRow("absolute ignores cwd") << "/a"
+                                          << "/b/c" << QStringList {"a"} << none << none << "/a";
     QTest::newRow("manager in tree") << "/localhost/h.host_cxt/manager.mgr" << none
-                                     << QStringList{"localhost", "h.host_cxt", "manager.mgr"}
+                                     << QStringList {"localhost", "h.host_cxt", "manager.mgr"}
                                      << none << none << "/localhost/h.host_cxt/manager.mgr";
     QTest::newRow("corbaloc short") << "corbaloc::myhost" << none << QStringList() << none
                                     << "corbaloc:iiop:myhost:2810/manager"
@@ -80,8 +83,9 @@ void TestCorbaClientPath::parses_data()
     QTest::newRow("corbaloc full") << "corbaloc:iiop:h:2810/manager" << none << QStringList()
                                    << none << "corbaloc:iiop:h:2810/manager"
                                    << "corbaloc:iiop:h:2810/manager";
-    QTest::newRow("corbaloc other key") << "corbaloc::h:1/other" << none << QStringList() << none
-                                        << "corbaloc:iiop:h:1/other" << "corbaloc:iiop:h:1/other";
+    QTest::newRow("corbaloc other key")
+        << "corbaloc::h:1/other" << none << QStringList() << none << "corbaloc:iiop:h:1/other"
+        << "corbaloc:iiop:h:1/other";
 }
 
 void TestCorbaClientPath::parses()
@@ -115,7 +119,9 @@ void TestCorbaClientPath::rejects_data()
     QTest::newRow("empty object") << "/localhost/h.host_cxt/:out" << QString() << "empty";
     QTest::newRow("bad server port") << "/localhost:abc/x" << QString() << "name server";
     QTest::newRow("server port out of range") << "/localhost:70000" << QString() << "name server";
-    QTest::newRow("relative cwd") << "x" << "relative/cwd" << "not absolute";
+    QTest::newRow("relative cwd") << "x"
+                                  << "relative/cwd"
+                                  << "not absolute";
     QTest::newRow("corbaloc protocol") << "corbaloc:rir:/NameService" << QString() << "protocol";
     QTest::newRow("corbaloc port") << "corbaloc::h:zz/manager" << QString() << "bad host";
     QTest::newRow("corbaloc host") << "corbaloc:::2810" << QString() << "bad host";
@@ -136,8 +142,10 @@ void TestCorbaClientPath::nameServiceAddress_data()
 {
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("address");
-    QTest::newRow("default port") << "/localhost/x" << "corbaloc:iiop:localhost:2809/NameService";
-    QTest::newRow("given port") << "/127.0.0.1:5005" << "corbaloc:iiop:127.0.0.1:5005/NameService";
+    QTest::newRow("default port") << "/localhost/x"
+                                  << "corbaloc:iiop:localhost:2809/NameService";
+    QTest::newRow("given port") << "/127.0.0.1:5005"
+                                << "corbaloc:iiop:127.0.0.1:5005/NameService";
 }
 
 void TestCorbaClientPath::nameServiceAddress()

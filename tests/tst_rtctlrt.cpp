@@ -41,7 +41,10 @@ private:
     };
     Result rtctl(const QStringList &arguments, const QString &cwd = QString(),
                  const QString &servers = QString());
-    QString host() const { return QStringLiteral("/%1/rthost.host_cxt").arg(m_live.namingServer()); }
+    QString host() const
+    {
+        return QStringLiteral("/%1/rthost.host_cxt").arg(m_live.namingServer());
+    }
 
     LiveTest::LiveSystem m_live;
     quint16 m_peerPort = 0;
@@ -72,7 +75,8 @@ void TestRtctlRt::initTestCase()
 {
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
-    QVERIFY2(m_live.startPeer({"ConsoleIn?instance_name=ConsoleIn0", "ConsoleOut?instance_name=ConsoleOut0",
+    QVERIFY2(m_live.startPeer({"ConsoleIn?instance_name=ConsoleIn0",
+                               "ConsoleOut?instance_name=ConsoleOut0",
                                "MyServiceProvider?instance_name=Provider0",
                                "ConfigSample?instance_name=ConfigSample0"},
                               &error, &m_peerPort, "rthost", true),
@@ -83,8 +87,9 @@ void TestRtctlRt::lsListsTheTree()
 {
     const Result r = rtctl({"ls"});
     QCOMPARE(r.code, 0);
-    QCOMPARE(r.lines(), QStringList({"manager.mgr", "ConsoleIn0.rtc", "ConsoleOut0.rtc", "Provider0.rtc",
-                                     "ConfigSample0.rtc", "*Ghost0.rtc", "*Stranger0.rtc"}));
+    QCOMPARE(r.lines(),
+             QStringList({"manager.mgr", "ConsoleIn0.rtc", "ConsoleOut0.rtc", "Provider0.rtc",
+                          "ConfigSample0.rtc", "*Ghost0.rtc", "*Stranger0.rtc"}));
     const Result server = rtctl({"ls", "/" + m_live.namingServer()});
     QCOMPARE(server.lines(), QStringList({"rthost.host_cxt"}));
     QCOMPARE(rtctl({"ls", ".."}, host() + "/manager.mgr").lines(), r.lines());
@@ -133,12 +138,14 @@ void TestRtctlRt::catShowsComponentsPortsAndManagers()
     QVERIFY(r.lines().contains("  Type name      ConsoleIn"));
     QVERIFY(r.lines().contains("  DataOutPort: out"));
     QVERIFY(!r.out.contains("dataport.data_type"));
-    QVERIFY(rtctl({"cat", "-l", "ConsoleIn0.rtc"}).out.contains("dataport.data_type = IDL:RTC/TimedLong:1.0"));
+    QVERIFY(rtctl({"cat", "-l", "ConsoleIn0.rtc"})
+                .out.contains("dataport.data_type = IDL:RTC/TimedLong:1.0"));
 
     const Result port = rtctl({"cat", "Provider0.rtc:MyService"});
     QCOMPARE(port.code, 0);
-    QCOMPARE(port.lines(), QStringList({"  CorbaPort: MyService",
-                                        "    Interface  myservice0  SimpleService::MyService  Provided"}));
+    QCOMPARE(port.lines(),
+             QStringList({"  CorbaPort: MyService",
+                          "    Interface  myservice0  SimpleService::MyService  Provided"}));
     const Result json = rtctl({"cat", "--json", "ConsoleIn0.rtc"});
     QCOMPARE(json.json().object()["typeName"].toString(), QString("ConsoleIn"));
     QCOMPARE(json.json().object()["executionContexts"][0]["kind"].toString(), QString("PERIODIC"));
@@ -146,7 +153,8 @@ void TestRtctlRt::catShowsComponentsPortsAndManagers()
 
     const Result missing = rtctl({"cat", "ConsoleIn0.rtc:nothere"});
     QCOMPARE(missing.code, 1);
-    QVERIFY2(missing.err.contains(host() + "/ConsoleIn0.rtc: no port named 'nothere'"), qPrintable(missing.err));
+    QVERIFY2(missing.err.contains(host() + "/ConsoleIn0.rtc: no port named 'nothere'"),
+             qPrintable(missing.err));
     const Result manager = rtctl({"cat", "manager.mgr"});
     QCOMPARE(manager.code, 0);
     QVERIFY(manager.lines().contains("  Component  ConfigSample0  ConfigSample"));
@@ -184,7 +192,8 @@ void TestRtctlRt::stateCommands()
     QVERIFY(rtctl({"ls", "-l", "ConsoleOut0.rtc"}).out.startsWith("Active"));
     const Result again = rtctl({"act", "-e", "0", "ConsoleOut0.rtc"});
     QCOMPARE(again.code, 1);
-    QVERIFY2(again.err.contains("ConsoleOut0.rtc: activate returned PRECONDITION_NOT_MET"), qPrintable(again.err));
+    QVERIFY2(again.err.contains("ConsoleOut0.rtc: activate returned PRECONDITION_NOT_MET"),
+             qPrintable(again.err));
     QCOMPARE(rtctl({"reset", "ConsoleOut0.rtc"}).code, 1);
     QCOMPARE(rtctl({"act", "-e", "3", "ConsoleIn0.rtc"}).code, 1);
     QCOMPARE(rtctl({"deact", "ConsoleOut0.rtc"}).code, 0);
@@ -208,26 +217,34 @@ void TestRtctlRt::connectAndDisconnect()
     const QJsonObject port = rtctl({"cat", "--json", "ConsoleOut0.rtc:in"}).json().object();
     QCOMPARE(port["connectors"][0]["id"].toString(), id);
     QCOMPARE(port["connectors"][0]["name"].toString(), QString("link"));
-    QCOMPARE(port["connectors"][0]["properties"]["dataport.subscription_type"].toString(), QString("flush"));
+    QCOMPARE(port["connectors"][0]["properties"]["dataport.subscription_type"].toString(),
+             QString("flush"));
 
-    const Result duplicate = rtctl({"con", "--no-duplicates", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"});
+    const Result duplicate
+        = rtctl({"con", "--no-duplicates", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"});
     QCOMPARE(duplicate.code, 1);
     QVERIFY(duplicate.err.contains("already connected"));
     const Result illegal = rtctl({"con", "ConsoleOut0.rtc:in", "ConsoleOut0.rtc:in"});
     QCOMPARE(illegal.code, 1);
-    QVERIFY2(illegal.err.contains("cannot connect: ConsoleOut0.in is not an output port"), qPrintable(illegal.err));
-    const Result badFlow = rtctl({"con", "-p", "dataport.dataflow_type=duplex", "ConsoleIn0.rtc:out",
-                                  "ConsoleOut0.rtc:in"});
+    QVERIFY2(illegal.err.contains("cannot connect: ConsoleOut0.in is not an output port"),
+             qPrintable(illegal.err));
+    const Result badFlow = rtctl(
+        {"con", "-p", "dataport.dataflow_type=duplex", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"});
     QCOMPARE(badFlow.code, 1);
     QVERIFY(badFlow.err.contains("does not allow dataport.dataflow_type=duplex"));
     QCOMPARE(rtctl({"con", "ConsoleIn0.rtc:out", "Provider0.rtc:MyService"}).code, 1);
 
     QCOMPARE(rtctl({"dis", "-i", "wrong", "ConsoleIn0.rtc:out"}).code, 1);
     QCOMPARE(rtctl({"dis", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).code, 0);
-    QVERIFY(rtctl({"cat", "--json", "ConsoleOut0.rtc:in"}).json().object()["connectors"].toArray().isEmpty());
+    QVERIFY(rtctl({"cat", "--json", "ConsoleOut0.rtc:in"})
+                .json()
+                .object()["connectors"]
+                .toArray()
+                .isEmpty());
     QCOMPARE(rtctl({"dis", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).code, 1);
     // By id, then all of a component.
-    const QString second = rtctl({"con", "-i", "my-id", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).out.trimmed();
+    const QString second
+        = rtctl({"con", "-i", "my-id", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).out.trimmed();
     QCOMPARE(second, QString("my-id"));
     QCOMPARE(rtctl({"dis", "-i", "my-id", "ConsoleOut0.rtc:in"}).code, 0);
     QCOMPARE(rtctl({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}).code, 0);
@@ -246,7 +263,8 @@ void TestRtctlRt::configuration()
 
     QCOMPARE(rtctl({"conf", "ConfigSample0.rtc", "set", "int_param0", "77"}).code, 0);
     QCOMPARE(rtctl({"conf", "ConfigSample0.rtc", "get", "int_param0"}).out, QString("77\n"));
-    QCOMPARE(rtctl({"conf", "-s", "mode0", "ConfigSample0.rtc", "get", "str_param0"}).out, QString("foo\n"));
+    QCOMPARE(rtctl({"conf", "-s", "mode0", "ConfigSample0.rtc", "get", "str_param0"}).out,
+             QString("foo\n"));
     const Result missing = rtctl({"conf", "ConfigSample0.rtc", "get", "nothing"});
     QCOMPARE(missing.code, 1);
     QVERIFY(missing.err.contains("no parameter 'nothing' in set 'default'"));
@@ -284,7 +302,8 @@ void TestRtctlRt::manager()
 void TestRtctlRt::exitRemovesAComponent()
 {
     QString error;
-    QVERIFY2(m_live.startPeer({"ConsoleIn?instance_name=Bye0"}, &error, nullptr, "byehost"), qPrintable(error));
+    QVERIFY2(m_live.startPeer({"ConsoleIn?instance_name=Bye0"}, &error, nullptr, "byehost"),
+             qPrintable(error));
     const QString path = QStringLiteral("/%1/byehost.host_cxt/Bye0.rtc").arg(m_live.namingServer());
     QCOMPARE(rtctl({"exit", path}).code, 0);
     const Result gone = rtctl({"cat", path});
@@ -295,18 +314,18 @@ void TestRtctlRt::exitRemovesAComponent()
 void TestRtctlRt::usageErrors_data()
 {
     QTest::addColumn<QStringList>("arguments");
-    QTest::newRow("act without path") << QStringList{"act"};
-    QTest::newRow("unknown flag") << QStringList{"ls", "-x"};
-    QTest::newRow("bad timeout") << QStringList{"ls", "--timeout", "soon"};
-    QTest::newRow("bad ec index") << QStringList{"act", "-e", "first", "ConsoleIn0.rtc"};
-    QTest::newRow("con one port") << QStringList{"con", "ConsoleIn0.rtc:out"};
-    QTest::newRow("con bad property") << QStringList{"con", "-p", "novalue", "a.rtc:x", "b.rtc:y"};
-    QTest::newRow("conf unknown") << QStringList{"conf", "ConfigSample0.rtc", "frob"};
-    QTest::newRow("conf act without set") << QStringList{"conf", "ConfigSample0.rtc", "act"};
-    QTest::newRow("mgr unknown action") << QStringList{"mgr", "manager.mgr", "explode"};
-    QTest::newRow("mgr missing argument") << QStringList{"mgr", "manager.mgr", "create"};
-    QTest::newRow("find bad type") << QStringList{"find", "/", "-t", "q"};
-    QTest::newRow("pwd with argument") << QStringList{"pwd", "x"};
+    QTest::newRow("act without path") << QStringList {"act"};
+    QTest::newRow("unknown flag") << QStringList {"ls", "-x"};
+    QTest::newRow("bad timeout") << QStringList {"ls", "--timeout", "soon"};
+    QTest::newRow("bad ec index") << QStringList {"act", "-e", "first", "ConsoleIn0.rtc"};
+    QTest::newRow("con one port") << QStringList {"con", "ConsoleIn0.rtc:out"};
+    QTest::newRow("con bad property") << QStringList {"con", "-p", "novalue", "a.rtc:x", "b.rtc:y"};
+    QTest::newRow("conf unknown") << QStringList {"conf", "ConfigSample0.rtc", "frob"};
+    QTest::newRow("conf act without set") << QStringList {"conf", "ConfigSample0.rtc", "act"};
+    QTest::newRow("mgr unknown action") << QStringList {"mgr", "manager.mgr", "explode"};
+    QTest::newRow("mgr missing argument") << QStringList {"mgr", "manager.mgr", "create"};
+    QTest::newRow("find bad type") << QStringList {"find", "/", "-t", "q"};
+    QTest::newRow("pwd with argument") << QStringList {"pwd", "x"};
 }
 
 void TestRtctlRt::usageErrors()
@@ -333,14 +352,15 @@ void TestRtctlRt::drivesTheRealManager()
 {
     const quint16 port = LiveTest::freePort();
     QString error;
-    QVERIFY2(m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
-                                 {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
-                                  "-o", "corba.nameservers=" + m_live.namingServer(),
-                                  "-o", "naming.formats=realhost.host_cxt/%n.rtc",
-                                  "-o", "manager.naming_formats=realhost.host_cxt/%n.mgr",
-                                  "-o", "manager.components.precreate=ConsoleIn,ConsoleOut"},
-                                 "rtmanager ready", &error),
-             qPrintable(error));
+    QVERIFY2(
+        m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+                            {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
+                             "-o", "corba.nameservers=" + m_live.namingServer(), "-o",
+                             "naming.formats=realhost.host_cxt/%n.rtc", "-o",
+                             "manager.naming_formats=realhost.host_cxt/%n.mgr", "-o",
+                             "manager.components.precreate=ConsoleIn,ConsoleOut"},
+                            "rtmanager ready", &error),
+        qPrintable(error));
     const QString dir = QStringLiteral("/%1/realhost.host_cxt").arg(m_live.namingServer());
     const Result ls = rtctl({"ls"}, dir);
     QCOMPARE(ls.code, 0);
@@ -348,11 +368,13 @@ void TestRtctlRt::drivesTheRealManager()
     QVERIFY(ls.lines().contains("ConsoleIn0.rtc"));
     QCOMPARE(rtctl({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}, dir).code, 0);
     QCOMPARE(rtctl({"act", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}, dir).code, 0);
-    QTRY_VERIFY(rtctl({"ls", "-l", "ConsoleOut0.rtc"}, dir).out.simplified().startsWith("Active 1/1 1/1"));
+    QTRY_VERIFY(
+        rtctl({"ls", "-l", "ConsoleOut0.rtc"}, dir).out.simplified().startsWith("Active 1/1 1/1"));
     QCOMPARE(rtctl({"deact", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}, dir).code, 0);
     QCOMPARE(rtctl({"dis", "ConsoleIn0.rtc"}, dir).code, 0);
     const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(port);
-    const Result created = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Late0", "list"}, dir);
+    const Result created
+        = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Late0", "list"}, dir);
     QCOMPARE(created.code, 0);
     QCOMPARE(created.lines().at(0), QString("Late0"));
     QVERIFY(rtctl({"ls"}, dir).lines().contains("Late0.rtc"));

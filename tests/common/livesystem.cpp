@@ -15,7 +15,7 @@ namespace {
 
 sockaddr_in loopback(quint16 port)
 {
-    sockaddr_in address{};
+    sockaddr_in address {};
     address.sin_family = AF_INET;
     address.sin_port = htons(port);
     address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
@@ -45,7 +45,8 @@ bool isListening(quint16 port)
     if (fd < 0)
         return false;
     sockaddr_in address = loopback(port);
-    const bool connected = ::connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof(address)) == 0;
+    const bool connected
+        = ::connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof(address)) == 0;
     ::close(fd);
     return connected;
 }
@@ -74,10 +75,10 @@ bool LiveSystem::startNameServer(QString *error)
     const QString port = QString::number(m_namingPort);
     auto process = std::make_unique<QProcess>();
     process->setProcessChannelMode(QProcess::MergedChannels);
-    process->start(program, {QStringLiteral("-start"), port, QStringLiteral("-datadir"),
-                             m_dataDir->path(), QStringLiteral("-logdir"), m_dataDir->path(),
-                             QStringLiteral("-ORBendPoint"),
-                             QStringLiteral("giop:tcp:127.0.0.1:%1").arg(port)});
+    process->start(program,
+                   {QStringLiteral("-start"), port, QStringLiteral("-datadir"), m_dataDir->path(),
+                    QStringLiteral("-logdir"), m_dataDir->path(), QStringLiteral("-ORBendPoint"),
+                    QStringLiteral("giop:tcp:127.0.0.1:%1").arg(port)});
     if (!process->waitForStarted(10000)) {
         *error = QStringLiteral("omniNames did not start: %1").arg(process->errorString());
         return false;
@@ -103,9 +104,9 @@ QProcess *LiveSystem::startPeer(const QStringList &components, QString *error, q
     const quint16 peerPort = freePort();
     if (port)
         *port = peerPort;
-    QStringList arguments{QStringLiteral("--naming"), QString::number(m_namingPort),
-                          QStringLiteral("--port"),   QString::number(peerPort),
-                          QStringLiteral("--host"),   host};
+    QStringList arguments {QStringLiteral("--naming"), QString::number(m_namingPort),
+                           QStringLiteral("--port"),   QString::number(peerPort),
+                           QStringLiteral("--host"),   host};
     if (zombies)
         arguments << QStringLiteral("--zombies");
     arguments += components;

@@ -37,8 +37,8 @@ public:
 
     /**
      * Starts rtstudio_livepeer registered in the name server under `host`.host_cxt with the given
-     * components (`Type` or `Type?instance_name=NAME`); `zombies` adds Ghost0.rtc and Stranger0.rtc.
-     * Waits for its "ready" line. The peer's own port is returned in `port`.
+     * components (`Type` or `Type?instance_name=NAME`); `zombies` adds Ghost0.rtc and
+     * Stranger0.rtc. Waits for its "ready" line. The peer's own port is returned in `port`.
      */
     QProcess *startPeer(const QStringList &components, QString *error, quint16 *port = nullptr,
                         const QString &host = QStringLiteral("livehost"), bool zombies = false);

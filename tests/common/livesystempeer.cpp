@@ -40,7 +40,7 @@ CosNaming::Name hostName(const std::string &host)
     return name;
 }
 
-std::atomic<int> s_connectorCounter{0};
+std::atomic<int> s_connectorCounter {0};
 
 } // namespace
 
@@ -161,7 +161,8 @@ RTC::ExecutionContextProfile *ExecutionContext::get_profile()
     auto *profile = new RTC::ExecutionContextProfile;
     profile->kind = RTC::PERIODIC;
     profile->rate = m_rate;
-    profile->owner = m_owner ? RTC::RTObject::_duplicate(m_owner->reference()) : RTC::RTObject::_nil();
+    profile->owner
+        = m_owner ? RTC::RTObject::_duplicate(m_owner->reference()) : RTC::RTObject::_nil();
     return profile;
 }
 
@@ -199,12 +200,13 @@ RTC::ConnectorProfile *Port::get_connector_profile(const char *connector_id)
 RTC::ReturnCode_t Port::connect(RTC::ConnectorProfile &connector_profile)
 {
     if (std::string(connector_profile.connector_id.in()).empty()) {
-        const std::string id = "connector" + std::to_string(++s_connectorCounter) + "-"
-                               + m_context.host;
+        const std::string id
+            = "connector" + std::to_string(++s_connectorCounter) + "-" + m_context.host;
         connector_profile.connector_id = id.c_str();
     }
     for (CORBA::ULong i = 0; i < connector_profile.ports.length(); ++i) {
-        const RTC::ReturnCode_t code = connector_profile.ports[i]->notify_connect(connector_profile);
+        const RTC::ReturnCode_t code
+            = connector_profile.ports[i]->notify_connect(connector_profile);
         if (code != RTC::RTC_OK)
             return code;
     }
@@ -371,8 +373,9 @@ CORBA::Boolean Configuration::remove_configuration_set(const char *config_id)
     Lock lock(m_context.mutex);
     if (m_active == config_id)
         return false;
-    const auto it = std::find_if(m_sets.begin(), m_sets.end(),
-                                 [&](const auto &set) { return std::string(config_id) == set.id.in(); });
+    const auto it = std::find_if(m_sets.begin(), m_sets.end(), [&](const auto &set) {
+        return std::string(config_id) == set.id.in();
+    });
     if (it == m_sets.end())
         return false;
     m_sets.erase(it);

@@ -40,7 +40,9 @@ struct Context
 class ExecutionContext : public POA_RTC::ExecutionContextService
 {
 public:
-    explicit ExecutionContext(Context &context) : m_context(context) {}
+    explicit ExecutionContext(Context &context)
+        : m_context(context)
+    { }
     void setOwner(Component *owner) { m_owner = owner; }
 
     CORBA::Boolean is_running() override;
@@ -73,7 +75,10 @@ private:
 class Port : public POA_RTC::PortService
 {
 public:
-    Port(Context &context, RTC::PortProfile profile) : m_context(context), m_profile(std::move(profile)) {}
+    Port(Context &context, RTC::PortProfile profile)
+        : m_context(context)
+        , m_profile(std::move(profile))
+    { }
     void setReference(RTC::PortService_ptr self, RTC::RTObject_ptr owner);
 
     RTC::PortProfile *get_port_profile() override;
@@ -94,12 +99,18 @@ private:
 class Configuration : public POA_SDOPackage::Configuration
 {
 public:
-    explicit Configuration(Context &context) : m_context(context) {}
-    void addSet(const std::string &id, const std::vector<std::pair<std::string, std::string>> &values);
+    explicit Configuration(Context &context)
+        : m_context(context)
+    { }
+    void addSet(const std::string &id,
+                const std::vector<std::pair<std::string, std::string>> &values);
     void setActive(const std::string &id) { m_active = id; }
 
     CORBA::Boolean set_device_profile(const SDOPackage::DeviceProfile &) override { return false; }
-    CORBA::Boolean add_service_profile(const SDOPackage::ServiceProfile &) override { return false; }
+    CORBA::Boolean add_service_profile(const SDOPackage::ServiceProfile &) override
+    {
+        return false;
+    }
     CORBA::Boolean add_organization(SDOPackage::Organization_ptr) override { return false; }
     CORBA::Boolean remove_service_profile(const char *) override { return false; }
     CORBA::Boolean remove_organization(const char *) override { return false; }
@@ -128,7 +139,8 @@ class Component : public POA_OpenRTM::DataFlowComponent
 {
 public:
     /// Creates, activates and binds a component; nullptr for an unknown type.
-    static Component *create(Context &context, const std::string &type, const std::string &instance);
+    static Component *create(Context &context, const std::string &type,
+                             const std::string &instance);
 
     std::string instanceName() const { return m_instance; }
     RTC::RTObject_ptr reference() const { return m_self.in(); }
@@ -140,7 +152,10 @@ public:
     CORBA::Boolean is_alive(RTC::ExecutionContext_ptr) override { return !m_destroyed; }
     RTC::ReturnCode_t exit() override;
     RTC::ExecutionContextHandle_t attach_context(RTC::ExecutionContext_ptr) override { return -1; }
-    RTC::ReturnCode_t detach_context(RTC::ExecutionContextHandle_t) override { return RTC::BAD_PARAMETER; }
+    RTC::ReturnCode_t detach_context(RTC::ExecutionContextHandle_t) override
+    {
+        return RTC::BAD_PARAMETER;
+    }
     RTC::ExecutionContext_ptr get_context(RTC::ExecutionContextHandle_t handle) override;
     RTC::ExecutionContextList *get_owned_contexts() override;
     RTC::ExecutionContextList *get_participating_contexts() override;
@@ -155,8 +170,14 @@ public:
     RTC::ReturnCode_t on_error(RTC::ExecutionContextHandle_t) override { return RTC::RTC_OK; }
     RTC::ReturnCode_t on_reset(RTC::ExecutionContextHandle_t) override { return RTC::RTC_OK; }
     RTC::ReturnCode_t on_execute(RTC::ExecutionContextHandle_t) override { return RTC::RTC_OK; }
-    RTC::ReturnCode_t on_state_update(RTC::ExecutionContextHandle_t) override { return RTC::RTC_OK; }
-    RTC::ReturnCode_t on_rate_changed(RTC::ExecutionContextHandle_t) override { return RTC::RTC_OK; }
+    RTC::ReturnCode_t on_state_update(RTC::ExecutionContextHandle_t) override
+    {
+        return RTC::RTC_OK;
+    }
+    RTC::ReturnCode_t on_rate_changed(RTC::ExecutionContextHandle_t) override
+    {
+        return RTC::RTC_OK;
+    }
     SDOPackage::OrganizationList *get_owned_organizations() override;
     char *get_sdo_id() override { return CORBA::string_dup(m_instance.c_str()); }
     char *get_sdo_type() override { return CORBA::string_dup(m_type.c_str()); }
@@ -190,7 +211,9 @@ private:
 class Manager : public POA_RTM::Manager
 {
 public:
-    explicit Manager(Context &context) : m_context(context) {}
+    explicit Manager(Context &context)
+        : m_context(context)
+    { }
     void add(Component *component) { m_components.push_back(component); }
     void remove(Component *component);
     /// Creates a component from `Type[?instance_name=NAME&...]`; nullptr on failure.
@@ -225,7 +248,7 @@ private:
     Context &m_context;
     std::vector<Component *> m_components;
     std::vector<std::string> m_loaded;
-    std::vector<std::pair<std::string, std::string>> m_configuration{{"manager.name", "manager"},
+    std::vector<std::pair<std::string, std::string>> m_configuration {{"manager.name", "manager"},
                                                                       {"manager.is_master", "YES"}};
     std::vector<RTM::Manager_var> m_masters;
     std::vector<RTM::Manager_var> m_slaves;

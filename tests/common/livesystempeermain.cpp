@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // rtstudio_livepeer: a small OpenRTM-compatible process for live tests of CORBA clients.
 //
-//   rtstudio_livepeer --naming PORT --port PORT [--host NAME] [--zombies] [Type[?instance_name=N]]...
+//   rtstudio_livepeer --naming PORT --port PORT [--host NAME] [--zombies]
+//   [Type[?instance_name=N]]...
 //
 // Listens on 127.0.0.1:PORT (manager at corbaloc:iiop:127.0.0.1:PORT/manager), registers
 // NAME.host_cxt/manager.mgr and each created component as NAME.host_cxt/<instance>.rtc in the
@@ -51,7 +52,8 @@ bool parse(int argc, char **argv, Options &options)
 
 void bindZombies(LivePeer::Context &context)
 {
-    CORBA::Object_var unreachable = context.orb->string_to_object("corbaloc:iiop:127.0.0.1:1/Ghost");
+    CORBA::Object_var unreachable
+        = context.orb->string_to_object("corbaloc:iiop:127.0.0.1:1/Ghost");
     context.bind("Ghost0", "rtc", unreachable.in());
     context.bind("Stranger0", "rtc", context.naming.in());
 }
@@ -62,8 +64,9 @@ int main(int argc, char **argv)
 {
     Options options;
     if (!parse(argc, argv, options)) {
-        std::fprintf(stderr, "usage: rtstudio_livepeer --naming PORT --port PORT [--host NAME] "
-                             "[--zombies] [Type[?instance_name=N]]...\n");
+        std::fprintf(stderr,
+                     "usage: rtstudio_livepeer --naming PORT --port PORT [--host NAME] "
+                     "[--zombies] [Type[?instance_name=N]]...\n");
         return 2;
     }
     const std::string endpoint = "giop:tcp:127.0.0.1:" + options.port;
@@ -74,7 +77,8 @@ int main(int argc, char **argv)
     context.orb = CORBA::ORB_init(orbArgc, nullptr, "omniORB4", orbOptions);
     CORBA::Object_var rootPoa = context.orb->resolve_initial_references("RootPOA");
     context.poa = PortableServer::POA::_narrow(rootPoa.in());
-    const std::string namingAddress = "corbaloc:iiop:127.0.0.1:" + options.namingPort + "/NameService";
+    const std::string namingAddress
+        = "corbaloc:iiop:127.0.0.1:" + options.namingPort + "/NameService";
     CORBA::Object_var naming = context.orb->string_to_object(namingAddress.c_str());
     context.naming = CosNaming::NamingContext::_narrow(naming.in());
 
@@ -104,8 +108,7 @@ int main(int argc, char **argv)
     // process leaves anyway, and the ORB is left to process exit.
     try {
         context.orb->run();
-    } catch (const CORBA::BAD_INV_ORDER &) {
-    }
+    } catch (const CORBA::BAD_INV_ORDER &) { }
     if (context.shutdownThread.joinable())
         context.shutdownThread.join();
     return 0;

@@ -44,8 +44,9 @@ RTC::PortProfile servicePort(bool provided)
 
 const char *const timedLong = "IDL:RTC/TimedLong:1.0";
 const char *const timedDouble = "IDL:RTC/TimedDouble:1.0";
-const std::set<std::string> knownTypes{"ConsoleIn",         "ConsoleOut",   "SeqIn", "Motor",
-                                       "MyServiceProvider", "MyServiceConsumer", "ConfigSample"};
+const std::set<std::string> knownTypes {"ConsoleIn",   "ConsoleOut",        "SeqIn",
+                                        "Motor",       "MyServiceProvider", "MyServiceConsumer",
+                                        "ConfigSample"};
 
 void deactivate(Context &context, PortableServer::Servant servant)
 {
@@ -65,8 +66,7 @@ Component::Component(Context &context, std::string type, std::string instance)
     : m_context(context)
     , m_type(std::move(type))
     , m_instance(std::move(instance))
-{
-}
+{ }
 
 void Component::addPort(const std::string &name, RTC::PortProfile profile)
 {
@@ -104,10 +104,10 @@ Component *Component::create(Context &context, const std::string &type, const st
         configuration->addSet("default", {{"motor_id", "0"}});
     if (type == "ConfigSample") {
         configuration = new Configuration(context);
-        configuration->addSet("default", {{"int_param0", "0"}, {"double_param0", "0.11"},
-                                          {"str_param0", "hoge"}});
-        configuration->addSet("mode0", {{"int_param0", "12345"}, {"double_param0", "3.14"},
-                                        {"str_param0", "foo"}});
+        configuration->addSet(
+            "default", {{"int_param0", "0"}, {"double_param0", "0.11"}, {"str_param0", "hoge"}});
+        configuration->addSet(
+            "mode0", {{"int_param0", "12345"}, {"double_param0", "3.14"}, {"str_param0", "foo"}});
         configuration->addSet("__widget__", {{"int_param0", "slider.1"}});
     }
     configuration->setActive("default");
@@ -129,7 +129,8 @@ void Component::destroy()
             servant->_remove_ref();
         }
     }
-    for (CORBA::Object_ptr object : {CORBA::Object_ptr(m_ec.in()), CORBA::Object_ptr(m_configuration.in())}) {
+    for (CORBA::Object_ptr object :
+         {CORBA::Object_ptr(m_ec.in()), CORBA::Object_ptr(m_configuration.in())}) {
         if (PortableServer::ServantBase *servant = m_context.poa->reference_to_servant(object)) {
             deactivate(m_context, servant);
             servant->_remove_ref();
@@ -149,7 +150,8 @@ RTC::ReturnCode_t Component::exit()
 
 RTC::ExecutionContext_ptr Component::get_context(RTC::ExecutionContextHandle_t handle)
 {
-    return handle == 0 ? RTC::ExecutionContext::_duplicate(m_ec.in()) : RTC::ExecutionContext::_nil();
+    return handle == 0 ? RTC::ExecutionContext::_duplicate(m_ec.in())
+                       : RTC::ExecutionContext::_nil();
 }
 
 RTC::ExecutionContextList *Component::get_owned_contexts()
@@ -280,8 +282,9 @@ Component *Manager::createFromArgument(const std::string &argument)
     }
     for (int n = 0; instance.empty(); ++n) {
         const std::string candidate = type + std::to_string(n);
-        const bool taken = std::any_of(m_components.begin(), m_components.end(),
-                                       [&](Component *c) { return c->instanceName() == candidate; });
+        const bool taken = std::any_of(m_components.begin(), m_components.end(), [&](Component *c) {
+            return c->instanceName() == candidate;
+        });
         if (!taken)
             instance = candidate;
     }
