@@ -118,6 +118,20 @@ void RtCatCommand::printManager(const QString &ior, const QString &path, Streams
                     << '\n';
 }
 
+QJsonObject RtCatCommand::managerJson(const QString &ior, const QString &path) const
+{
+    const ManagerProxy manager(ior, path);
+    QJsonArray components, loaded;
+    for (const ComponentInfo &component : manager.componentProfiles())
+        components.append(component.instanceName);
+    for (const Properties &module : manager.loadedModules())
+        loaded.append(propertiesToJson(module));
+    return {{"path", path},
+            {"profile", propertiesToJson(manager.profile())},
+            {"components", components},
+            {"loadedModules", loaded}};
+}
+
 QJsonObject RtCatCommand::componentJson(const ComponentProxy &rtc, const QString &port) const
 {
     if (!port.isEmpty())
@@ -144,7 +158,11 @@ int RtCatCommand::execute(const RtOptions &options, Streams streams)
         [&](const QString &text) {
             const RtPath target = path(text);
             const NamingNode node = NamingBrowser::node(target);
-            if (node.type == NodeType::Manager && !json) {
+            if (node.type == NodeType::Manager && json) {
+                objects.append(managerJson(node.ior, node.path));
+                return;
+            }
+            if (node.type == NodeType::Manager) {
                 printManager(node.ior, node.path, streams);
                 return;
             }

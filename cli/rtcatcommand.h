@@ -21,6 +21,7 @@ private:
     void printComponent(const Corba::ComponentProxy &rtc, const QString &port, int detail,
                         Streams streams) const;
     void printManager(const QString &ior, const QString &path, Streams streams) const;
+    QJsonObject managerJson(const QString &ior, const QString &path) const;
     QJsonObject componentJson(const Corba::ComponentProxy &rtc, const QString &port) const;
 };
 

@@ -158,6 +158,9 @@ void TestRtctlRt::catShowsComponentsPortsAndManagers()
     const Result manager = rtctl({"cat", "manager.mgr"});
     QCOMPARE(manager.code, 0);
     QVERIFY(manager.lines().contains("  Component  ConfigSample0  ConfigSample"));
+    const QJsonObject managerJson = rtctl({"cat", "--json", "manager.mgr"}).json().object();
+    QCOMPARE(managerJson["profile"]["instance_name"].toString(), QString("manager"));
+    QVERIFY(managerJson["components"].toArray().contains(QJsonValue("ConsoleIn0")));
 }
 
 void TestRtctlRt::findFiltersByNameAndType()
