@@ -63,10 +63,6 @@ public:
     /// Opens the connector dialog for an existing connector; edits it when accepted.
     void editConnector(const QString &connectorId);
 
-    /// What the repository view drags: RTC profile files, one path per line.
-    static inline const QString RtcProfileMimeType
-        = QStringLiteral("application/x-rtstudio-rtc-profile");
-
     static constexpr qreal MinimumZoom = 0.1;
     static constexpr qreal MaximumZoom = 4.0;
 

@@ -7,6 +7,7 @@
 #include "systemscene.h"
 
 #include "profileio.h"
+#include "rtcrepository.h"
 
 #include <QDragEnterEvent>
 #include <QFileInfo>
@@ -80,8 +81,8 @@ QStringList intersect(const QStringList &all, const QStringList &a, const QStrin
 QList<QPair<Profile::RtcProfile, QString>> droppedProfiles(const QMimeData *mime)
 {
     QStringList paths;
-    if (mime->hasFormat(SystemView::RtcProfileMimeType)) {
-        const QByteArray data = mime->data(SystemView::RtcProfileMimeType);
+    if (mime->hasFormat(RtcRepository::MimeType)) {
+        const QByteArray data = mime->data(RtcRepository::MimeType);
         Profile::Diagnostics diagnostics;
         const std::optional<Profile::LoadedProfile> inline_
             = Profile::loadProfileData(data, QString(), &diagnostics);
@@ -106,7 +107,7 @@ QList<QPair<Profile::RtcProfile, QString>> droppedProfiles(const QMimeData *mime
 
 bool carriesProfiles(const QMimeData *mime)
 {
-    return mime->hasFormat(SystemView::RtcProfileMimeType) || mime->hasUrls();
+    return mime->hasFormat(RtcRepository::MimeType) || mime->hasUrls();
 }
 
 } // namespace

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+#include "repositoryview.h"
+
+#include "rtcrepository.h"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QHeaderView>
+#include <QToolBar>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+namespace SystemEditor {
+
+RepositoryView::RepositoryView(RtcRepository *repository, QWidget *parent)
+    : QWidget(parent)
+    , m_repository(repository)
+    , m_tree(new QTreeView)
+{
+    m_tree->setObjectName(QStringLiteral("repositoryTree"));
+    m_tree->setModel(repository);
+    m_tree->setDragEnabled(true);
+    m_tree->setDragDropMode(QAbstractItemView::DragOnly);
+    m_tree->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_tree->setUniformRowHeights(true);
+    m_tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_tree->expandAll();
+    // New categories arrive expanded, so that their components can be dragged at once.
+    connect(repository, &QAbstractItemModel::modelReset, m_tree, &QTreeView::expandAll);
+    connect(repository, &QAbstractItemModel::rowsInserted, m_tree, &QTreeView::expandAll);
+
+    auto *toolBar = new QToolBar;
+    toolBar->setIconSize(QSize(16, 16));
+    m_addFiles = toolBar->addAction(tr("Add Files…"), this, &RepositoryView::chooseFiles);
+    m_addFolder = toolBar->addAction(tr("Add Folder…"), this, &RepositoryView::chooseFolder);
+    m_reload = toolBar->addAction(tr("Reload"), repository, &RtcRepository::reload);
+    m_addFiles->setObjectName(QStringLiteral("actionRepositoryAddFiles"));
+    m_addFolder->setObjectName(QStringLiteral("actionRepositoryAddFolder"));
+    m_reload->setObjectName(QStringLiteral("actionRepositoryReload"));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(toolBar);
+    layout->addWidget(m_tree, 1);
+}
+
+void RepositoryView::addSources(const QStringList &paths)
+{
+    for (const QString &path : paths) {
+        if (!m_repository->addSource(path))
+            emit statusMessage(tr("\"%1\" does not exist.").arg(path));
+    }
+    m_tree->expandAll();
+}
+
+void RepositoryView::chooseFiles()
+{
+    addSources(QFileDialog::getOpenFileNames(this, tr("Add RTC Profiles"), QString(),
+                                             tr("RTC profiles (*.xml *.yaml *.yml)")));
+}
+
+void RepositoryView::chooseFolder()
+{
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Add Folder of RTC Profiles"));
+    if (!folder.isEmpty())
+        addSources({folder});
+}
+
+} // namespace SystemEditor
