@@ -269,19 +269,23 @@ RenameComponentCommand::RenameComponentCommand(SystemModel *model, const QString
     , m_model(model)
     , m_old(oldName)
     , m_new(newName)
+    , m_topLevel(parent == nullptr)
 {
     setText(tr("Rename %1 to %2").arg(oldName, newName));
 }
 
 void RenameComponentCommand::redo()
 {
-    if (m_model)
-        m_model->renameComponent(m_old, m_new);
+    m_applied = m_model && m_model->renameComponent(m_old, m_new);
+    // QUndoStack::push() drops a command that turned out obsolete, so a refused rename leaves
+    // no step behind.
+    if (m_topLevel)
+        setObsolete(!m_applied);
 }
 
 void RenameComponentCommand::undo()
 {
-    if (m_model)
+    if (m_model && m_applied)
         m_model->renameComponent(m_new, m_old);
 }
 

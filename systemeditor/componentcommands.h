@@ -123,6 +123,8 @@ private:
     QPointer<SystemModel> m_model;
     QString m_old;
     QString m_new;
+    bool m_applied = false; ///< a refused rename (name taken) must not be "undone"
+    bool m_topLevel = true; ///< only a top-level command may be dropped by the stack
 };
 
 /// Turns a component (Location direction).

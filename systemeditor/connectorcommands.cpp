@@ -73,6 +73,7 @@ ConnectCommand::ConnectCommand(SystemModel *model, const RtsDataPortConnector &c
     , m_model(model)
     , m_id(connector.connectorId)
     , m_data(connector)
+    , m_topLevel(parent == nullptr)
 {
     setText(tr("Connect %1").arg(connector.name));
 }
@@ -83,23 +84,25 @@ ConnectCommand::ConnectCommand(SystemModel *model, const RtsServicePortConnector
     , m_model(model)
     , m_id(connector.connectorId)
     , m_service(connector)
+    , m_topLevel(parent == nullptr)
 {
     setText(tr("Connect %1").arg(connector.name));
 }
 
 void ConnectCommand::redo()
 {
-    if (!m_model)
-        return;
-    if (m_data)
-        m_model->addDataConnector(*m_data);
-    else if (m_service)
-        m_model->addServiceConnector(*m_service);
+    m_applied = m_model
+        && (m_data ? m_model->addDataConnector(*m_data)
+                   : m_service && m_model->addServiceConnector(*m_service));
+    // A refused top-level connect is dropped by QUndoStack::push(); inside a macro it just does
+    // nothing.
+    if (m_topLevel)
+        setObsolete(!m_applied);
 }
 
 void ConnectCommand::undo()
 {
-    if (m_model)
+    if (m_model && m_applied)
         m_model->removeConnector(m_id);
 }
 

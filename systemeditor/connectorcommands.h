@@ -49,6 +49,8 @@ private:
     QString m_id;
     std::optional<Profile::RtsDataPortConnector> m_data;
     std::optional<Profile::RtsServicePortConnector> m_service;
+    bool m_applied = false; ///< an id that was taken must not remove the other connector on undo
+    bool m_topLevel = true; ///< only a top-level command may be dropped by the stack
 };
 
 /// Removes a connector; undo puts it back at the same place in its list.

@@ -45,6 +45,7 @@ private slots:
     void alignLeftAndTop();
     void resize();
     void rename();
+    void refusedEditsLeaveNoStep();
     void direction();
     void pasteKeepsInnerConnectors();
     void connectData();
@@ -184,6 +185,19 @@ void TestSeCommands::rename()
         QCOMPARE(m_model->connector("c-1")->target,
                  (ConnectorEnd {"Display", "Display.in"}));
     });
+}
+
+void TestSeCommands::refusedEditsLeaveNoStep()
+{
+    const RtsProfile before = m_model->profile();
+    m_stack->push(new RenameComponentCommand(m_model.get(), "ConsoleIn0", "ConsoleOut0"));
+    QCOMPARE(m_stack->count(), 0);
+    QCOMPARE(m_model->profile(), before);
+    RtsDataPortConnector duplicate = *m_model->dataConnector("c-1");
+    duplicate.name = "other";
+    m_stack->push(new ConnectCommand(m_model.get(), duplicate));
+    QCOMPARE(m_stack->count(), 0);
+    QCOMPARE(m_model->dataConnector("c-1")->name, QStringLiteral("out_in"));
 }
 
 void TestSeCommands::direction()
