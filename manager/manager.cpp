@@ -113,10 +113,14 @@ bool Manager::start(std::string *error)
     }
     for (const std::string &message : errors)
         std::cerr << "rtmanager: " << message << std::endl;
-    if (m_isMaster)
+    if (m_isMaster) {
         m_watchdog = std::thread([this] { watchSlaves(); });
-    else
+    } else {
         joinMaster();
+        const pid_t parent = pid_t(std::stol("0" + m_config.value("manager.spawned_by")));
+        if (parent > 0)
+            m_watchdog = std::thread([this, parent] { watchParent(parent); });
+    }
     return true;
 }
 

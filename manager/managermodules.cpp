@@ -50,13 +50,14 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
     if (found == candidates.end())
         return fail("load_module: no module file '" + requested + "'", error);
     const std::string path = *found;
+    bool loaded = false;
     {
         std::lock_guard lock(m_mutex);
-        for (const auto &module : m_modules) {
-            if (module->path == path)
-                return fail("load_module: '" + path + "' is already loaded", error);
-        }
+        for (const auto &module : m_modules)
+            loaded = loaded || module->path == path;
     }
+    if (loaded)
+        return fail("load_module: '" + path + "' is already loaded", error);
     void *handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle)
         return fail(std::string("load_module: '") + path + "' is not a loadable module: " + dlerror(), error);

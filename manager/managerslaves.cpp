@@ -10,7 +10,6 @@
 #include <csignal>
 #include <iostream>
 #include <netinet/in.h>
-#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -137,22 +136,22 @@ RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const st
     }
     const std::string address = host + ':' + std::to_string(port);
     std::vector<std::string> args = {"rtmanager"};
-    for (const auto &[key, value] : configuration().entries()) {
+    const Properties config = configuration();
+    for (const auto &[key, value] : config.entries()) {
         if (key == "manager.is_master" || key == "corba.endpoints" || key == "corba.master_manager"
             || key == "manager.instance_name")
             continue;
         args.insert(args.end(), {"-o", key + '=' + value});
     }
     args.insert(args.end(), {"-o", "manager.is_master=NO", "-o", "corba.master_manager=" + m_address, "-o",
-                             "corba.endpoints=" + address, "-o", "manager.instance_name=" + name});
+                             "corba.endpoints=" + address, "-o", "manager.instance_name=" + name, "-o",
+                             "manager.spawned_by=" + std::to_string(getpid())});
     std::vector<char *> argv;
     for (std::string &arg : args)
         argv.push_back(arg.data());
     argv.push_back(nullptr);
     const pid_t pid = fork();
     if (pid == 0) {
-        // The slave goes down with its master, so no process outlives a killed master.
-        prctl(PR_SET_PDEATHSIG, SIGTERM);
         execv("/proc/self/exe", argv.data());
         _exit(127);
     }
@@ -331,6 +330,25 @@ void Manager::watchSlaves()
                 dropSlave(ref);
         }
         lock.lock();
+    }
+}
+
+} // namespace Runtime
+
+namespace Runtime {
+
+void Manager::watchParent(pid_t parent)
+{
+    // A slave we spawned goes down with its master (reparenting shows the master is gone), so no
+    // process outlives a killed master. (PR_SET_PDEATHSIG would follow the forking ORB thread.)
+    std::unique_lock lock(m_mutex);
+    while (!m_stopping) {
+        m_slavesChanged.wait_for(lock, std::chrono::milliseconds(200));
+        if (!m_stopping && getppid() != parent) {
+            lock.unlock();
+            shutdown();
+            return;
+        }
     }
 }
 

@@ -1,0 +1,510 @@
+// SPDX-License-Identifier: MIT
+// rtmanager as a real process next to a real omniNames (free loopback ports, always stopped):
+// naming, create with parameters, data flow in one process and across slaves, slaves that die,
+// bad requests, loadable modules and shutdown.
+#include "livesystem.h"
+
+#include <Manager.hh>
+#include <omniORB4/Naming.hh>
+#include <omniORB4/omniORB.h>
+
+#include <QtTest>
+
+#include <csignal>
+#include <unistd.h>
+
+namespace {
+
+QString localHost()
+{
+    char name[256] = {};
+    gethostname(name, sizeof name - 1);
+    return QString::fromLocal8Bit(name);
+}
+
+QString nv(const SDOPackage::NVList &list, const char *name)
+{
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        const char *text = nullptr;
+        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
+            return QString::fromUtf8(text);
+    }
+    return {};
+}
+
+void setNv(SDOPackage::NVList &list, const char *name, const QString &value)
+{
+    const CORBA::ULong n = list.length();
+    list.length(n + 1);
+    list[n].name = name;
+    list[n].value <<= value.toUtf8().constData();
+}
+
+/// False once the process has exited (also while it waits, a zombie, for its new parent to reap it).
+bool processRuns(qint64 pid)
+{
+    QFile stat(QString("/proc/%1/stat").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly))
+        return false;
+    const QByteArray text = stat.readAll();
+    const int close = text.lastIndexOf(')');
+    return close > 0 && text.mid(close + 2, 1) != "Z";
+}
+
+long status(RTC::RTObject_ptr rtc, const char *name)
+{
+    try {
+        SDOPackage::NVList_var list = rtc->get_status_list();
+        return nv(list.in(), name).toLong();
+    } catch (const CORBA::Exception &) {
+        return -1;
+    }
+}
+
+QString statusText(RTC::RTObject_ptr rtc, const char *name)
+{
+    SDOPackage::NVList_var list = rtc->get_status_list();
+    return nv(list.in(), name);
+}
+
+RTC::PortService_ptr port(RTC::RTObject_ptr rtc, const char *shortName)
+{
+    RTC::PortServiceList_var ports = rtc->get_ports();
+    for (CORBA::ULong i = 0; i < ports->length(); ++i) {
+        RTC::PortProfile_var profile = ports[i]->get_port_profile();
+        if (QByteArray(profile->name).endsWith(QByteArray(".") + shortName))
+            return RTC::PortService::_duplicate(ports[i]);
+    }
+    return RTC::PortService::_nil();
+}
+
+RTC::ReturnCode_t activate(RTC::RTObject_ptr rtc)
+{
+    RTC::ExecutionContextList_var ecs = rtc->get_owned_contexts();
+    return ecs->length() ? ecs[0]->activate_component(rtc) : RTC::BAD_PARAMETER;
+}
+
+} // namespace
+
+class TestManagerLive : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void cleanupTestCase();
+
+    void masterServesAndRegisters();
+    void dataFlow_data();
+    void dataFlow();
+    void createParametersInAnyOrder();
+    void configurationThroughManager();
+    void deleteComponent();
+    void badRequests_data();
+    void badRequests();
+    void killedSlaveLeavesOthersWorking();
+    void loadModule();
+    void shutdownUnregisters();
+    void slavesFollowKilledMaster();
+
+private:
+    RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr);
+    RTC::RTObject_ptr create(const QString &request);
+    QString lastError(RTM::Manager_ptr manager);
+    CORBA::Object_ptr resolve(const QString &path);
+    void connect(RTC::PortService_ptr out, RTC::PortService_ptr in, const QString &flow, const QString &subscription);
+    qint64 slavePid(const QString &name);
+
+    CORBA::ORB_var m_orb;
+    std::unique_ptr<LiveTest::LiveSystem> m_live;
+    RTM::Manager_var m_master;
+    QProcess *m_masterProcess = nullptr;
+    quint16 m_masterPort = 0;
+};
+
+void TestManagerLive::initTestCase()
+{
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
+    // Creating on a new slave starts a process: allow for it, but never wait forever.
+    omniORB::setClientCallTimeout(20000);
+    omniORB::setClientConnectTimeout(3000);
+}
+
+void TestManagerLive::init()
+{
+    m_live = std::make_unique<LiveTest::LiveSystem>();
+    QString error;
+    QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
+    m_master = startMaster(&error, &m_masterProcess);
+    QVERIFY2(!CORBA::is_nil(m_master), qPrintable(error));
+}
+
+void TestManagerLive::cleanup()
+{
+    m_master = RTM::Manager::_nil();
+    m_live.reset(); // kills rtmanager (its slaves follow it) and omniNames
+}
+
+void TestManagerLive::cleanupTestCase()
+{
+    m_orb->destroy();
+}
+
+RTM::Manager_ptr TestManagerLive::startMaster(QString *error, QProcess **process)
+{
+    m_masterPort = LiveTest::freePort();
+    const QStringList args = {"-f", QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/rtc.conf"),
+                              "-o", QString("corba.endpoints=127.0.0.1:%1").arg(m_masterPort),
+                              "-o", "corba.nameservers=" + m_live->namingServer(),
+                              "-o", QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR)};
+    QProcess *started = m_live->startProcess(QStringLiteral(RTMANAGER_PATH), args, "rtmanager ready", error);
+    if (!started)
+        return RTM::Manager::_nil();
+    if (process)
+        *process = started;
+    CORBA::Object_var object =
+        m_orb->string_to_object(QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(m_masterPort).toUtf8().constData());
+    return RTM::Manager::_narrow(object);
+}
+
+RTC::RTObject_ptr TestManagerLive::create(const QString &request)
+{
+    return m_master->create_component(request.toUtf8().constData());
+}
+
+QString TestManagerLive::lastError(RTM::Manager_ptr manager)
+{
+    RTM::ManagerProfile_var profile = manager->get_profile();
+    return nv(profile->properties, "last_error");
+}
+
+CORBA::Object_ptr TestManagerLive::resolve(const QString &path)
+{
+    CORBA::Object_var object = m_orb->string_to_object(
+        QString("corbaloc:iiop:%1/NameService").arg(m_live->namingServer()).toUtf8().constData());
+    CosNaming::NamingContext_var root = CosNaming::NamingContext::_narrow(object);
+    const QStringList parts = path.split('/');
+    CosNaming::Name name;
+    name.length(CORBA::ULong(parts.size()));
+    for (int i = 0; i < parts.size(); ++i) {
+        const int dot = parts[i].lastIndexOf('.');
+        name[CORBA::ULong(i)].id = parts[i].left(dot).toUtf8().constData();
+        name[CORBA::ULong(i)].kind = parts[i].mid(dot + 1).toUtf8().constData();
+    }
+    try {
+        return root->resolve(name);
+    } catch (const CosNaming::NamingContext::NotFound &) {
+        return CORBA::Object::_nil();
+    }
+}
+
+void TestManagerLive::connect(RTC::PortService_ptr out, RTC::PortService_ptr in, const QString &flow,
+                              const QString &subscription)
+{
+    RTC::ConnectorProfile profile;
+    profile.name = "live";
+    profile.connector_id = "";
+    profile.ports.length(2);
+    profile.ports[0] = RTC::PortService::_duplicate(out);
+    profile.ports[1] = RTC::PortService::_duplicate(in);
+    setNv(profile.properties, "dataport.interface_type", "corba_cdr");
+    setNv(profile.properties, "dataport.dataflow_type", flow);
+    setNv(profile.properties, "dataport.subscription_type", subscription);
+    setNv(profile.properties, "dataport.data_type", "IDL:RTC/TimedLong:1.0");
+    setNv(profile.properties, "dataport.publisher.push_rate", "100");
+    QCOMPARE(out->connect(profile), RTC::RTC_OK);
+}
+
+qint64 TestManagerLive::slavePid(const QString &name)
+{
+    RTM::ManagerList_var slaves = m_master->get_slave_managers();
+    for (CORBA::ULong i = 0; i < slaves->length(); ++i) {
+        RTM::ManagerProfile_var profile = slaves[i]->get_profile();
+        if (nv(profile->properties, "instance_name") == name)
+            return nv(profile->properties, "pid").toLongLong();
+    }
+    return 0;
+}
+
+void TestManagerLive::masterServesAndRegisters()
+{
+    QVERIFY(m_master->is_master());
+    RTM::ManagerProfile_var profile = m_master->get_profile();
+    QCOMPARE(nv(profile->properties, "address"), QString("127.0.0.1:%1").arg(m_masterPort));
+    RTM::NVList_var config = m_master->get_configuration();
+    QCOMPARE(nv(config.in(), "exec_cxt.periodic.rate"), QString("200")); // from the rtc.conf file
+    QCOMPARE(m_master->set_configuration("user.key", "v"), RTC::RTC_OK);
+    config = m_master->get_configuration();
+    QCOMPARE(nv(config.in(), "user.key"), QString("v"));
+    const QString host = localHost();
+    CORBA::Object_var named = resolve(host + ".host_cxt/manager.mgr");
+    QVERIFY(!CORBA::is_nil(named));
+    QVERIFY(named->_is_equivalent(m_master));
+    RTM::ModuleProfileList_var factories = m_master->get_factory_profiles();
+    QStringList types;
+    for (CORBA::ULong i = 0; i < factories->length(); ++i)
+        types << nv(factories[i].properties, "implementation_id");
+    for (const char *type : {"ConsoleIn", "ConsoleOut", "Sensor", "Controller", "Motor", "SeqOut", "SeqIn",
+                             "MyServiceProvider", "MyServiceConsumer", "ConfigSample"})
+        QVERIFY2(types.contains(type), type);
+}
+
+void TestManagerLive::dataFlow_data()
+{
+    QTest::addColumn<QString>("flow");
+    QTest::addColumn<QString>("subscription");
+    QTest::addColumn<bool>("slaves");
+    for (bool slaves : {false, true}) {
+        const char *where = slaves ? "two slaves" : "one process";
+        for (const char *subscription : {"flush", "new", "periodic"})
+            QTest::addRow("%s, push %s", where, subscription) << "push" << subscription << slaves;
+        QTest::addRow("%s, pull", where) << "pull" << "" << slaves;
+    }
+}
+
+void TestManagerLive::dataFlow()
+{
+    QFETCH(QString, flow);
+    QFETCH(QString, subscription);
+    QFETCH(bool, slaves);
+    RTC::RTObject_var source = create(slaves ? "ConsoleIn?manager_name=slaveA" : "ConsoleIn");
+    QVERIFY2(!CORBA::is_nil(source), qPrintable(lastError(m_master)));
+    RTC::RTObject_var sink = create(slaves ? "ConsoleOut?manager_name=slaveB" : "ConsoleOut");
+    QVERIFY2(!CORBA::is_nil(sink), qPrintable(lastError(m_master)));
+    RTM::ManagerList_var slaveList = m_master->get_slave_managers();
+    QCOMPARE(slaveList->length(), CORBA::ULong(slaves ? 2 : 0));
+
+    RTC::PortService_var out = port(source, "out");
+    RTC::PortService_var in = port(sink, "in");
+    connect(out, in, flow, subscription);
+    QCOMPARE(activate(sink), RTC::RTC_OK);
+    QCOMPARE(activate(source), RTC::RTC_OK);
+    QTRY_VERIFY_WITH_TIMEOUT(status(sink, "received_count") > 20, 10000);
+    const long last = statusText(sink, "last_value").toLong();
+    QVERIFY(last > 0);
+    QVERIFY(last <= status(source, "sent_count"));
+
+    // Components live where they were asked to.
+    const QString host = localHost();
+    CORBA::Object_var named = resolve(host + ".host_cxt/ConsoleOut0.rtc");
+    QVERIFY(!CORBA::is_nil(named));
+    RTC::RTCList_var local = m_master->get_components();
+    QCOMPARE(local->length(), CORBA::ULong(slaves ? 0 : 2));
+}
+
+void TestManagerLive::createParametersInAnyOrder()
+{
+    RTC::RTObject_var first =
+        create("ConsoleIn?instance_name=early&exec_cxt.periodic.rate=50&manager_name=slaveP");
+    QVERIFY2(!CORBA::is_nil(first), qPrintable(lastError(m_master)));
+    RTC::RTObject_var second =
+        create("ConsoleIn?manager_name=slaveP&exec_cxt.periodic.rate=25&instance_name=late");
+    QVERIFY2(!CORBA::is_nil(second), qPrintable(lastError(m_master)));
+    RTC::RTObject_var third = create("ConsoleIn?exec_cxt.periodic.rate=40&manager_name=slaveP&instance_name=mid");
+    QVERIFY2(!CORBA::is_nil(third), qPrintable(lastError(m_master)));
+    // All three went to the one slave named slaveP.
+    RTM::ManagerList_var slaves = m_master->get_slave_managers();
+    QCOMPARE(slaves->length(), CORBA::ULong(1));
+    RTC::RTCList_var onSlave = slaves[0]->get_components();
+    QCOMPARE(onSlave->length(), CORBA::ULong(3));
+    RTC::ComponentProfile_var profile = first->get_component_profile();
+    QCOMPARE(QByteArray(profile->instance_name), QByteArray("early"));
+    profile = second->get_component_profile();
+    QCOMPARE(QByteArray(profile->instance_name), QByteArray("late"));
+    RTC::ExecutionContextList_var ecs = second->get_owned_contexts();
+    QCOMPARE(ecs[0]->get_rate(), 25.0);
+    ecs = third->get_owned_contexts();
+    QCOMPARE(ecs[0]->get_rate(), 40.0);
+    RTC::RTCList_var byName = slaves[0]->get_components_by_name("mid");
+    QCOMPARE(byName->length(), CORBA::ULong(1));
+
+    // The same via manager_address, the key first and last; a new slave starts on that port.
+    const quint16 port = LiveTest::freePort();
+    RTC::RTObject_var viaAddress =
+        create(QString("ConsoleOut?manager_address=127.0.0.1:%1&instance_name=addr1").arg(port));
+    QVERIFY2(!CORBA::is_nil(viaAddress), qPrintable(lastError(m_master)));
+    RTC::RTObject_var viaAddressLast =
+        create(QString("ConsoleOut?instance_name=addr2&manager_address=localhost:%1").arg(port));
+    QVERIFY2(!CORBA::is_nil(viaAddressLast), qPrintable(lastError(m_master)));
+    slaves = m_master->get_slave_managers();
+    QCOMPARE(slaves->length(), CORBA::ULong(2));
+    QVERIFY(LiveTest::isListening(port));
+    // Instance names stay unique per manager.
+    RTC::RTObject_var duplicate = create("ConsoleIn?instance_name=early&manager_name=slaveP");
+    QVERIFY(CORBA::is_nil(duplicate));
+    QVERIFY2(lastError(m_master).contains("already in use"), qPrintable(lastError(m_master)));
+}
+
+void TestManagerLive::configurationThroughManager()
+{
+    RTC::RTObject_var sample = create("ConfigSample?conf.default.int_param0=7&conf.mode0.str_param1=given");
+    QVERIFY2(!CORBA::is_nil(sample), qPrintable(lastError(m_master)));
+    QCOMPARE(statusText(sample, "int_param0"), QString("7"));
+    SDOPackage::Configuration_var config = sample->get_configuration();
+    SDOPackage::ConfigurationSet_var mode0 = config->get_configuration_set("mode0");
+    QCOMPARE(nv(mode0->configuration_data, "str_param1"), QString("given"));
+    QCOMPARE(activate(sample), RTC::RTC_OK);
+    QVERIFY(config->activate_configuration_set("mode1"));
+    QTRY_COMPARE(statusText(sample, "str_param0"), QString("mode1"));
+    SDOPackage::ConfigurationSet_var active = config->get_active_configuration_set();
+    QCOMPARE(QByteArray(active->id), QByteArray("mode1"));
+
+    RTC::RTObject_var motor = create("Motor?conf.default.motor_id=3&manager_name=slaveM");
+    QVERIFY2(!CORBA::is_nil(motor), qPrintable(lastError(m_master)));
+    SDOPackage::Configuration_var motorConfig = motor->get_configuration();
+    SDOPackage::ConfigurationSet_var defaults = motorConfig->get_configuration_set("default");
+    QCOMPARE(nv(defaults->configuration_data, "motor_id"), QString("3"));
+}
+
+void TestManagerLive::deleteComponent()
+{
+    RTC::RTObject_var a = create("ConsoleIn");
+    RTC::RTObject_var b = create("ConsoleOut?instance_name=sink");
+    QVERIFY(!CORBA::is_nil(a) && !CORBA::is_nil(b));
+    const QString host = localHost();
+    CORBA::Object_var named = resolve(host + ".host_cxt/sink.rtc");
+    QVERIFY(!CORBA::is_nil(named));
+    QCOMPARE(m_master->delete_component("sink"), RTC::RTC_OK);
+    RTC::RTCList_var left = m_master->get_components();
+    QCOMPARE(left->length(), CORBA::ULong(1));
+    named = resolve(host + ".host_cxt/sink.rtc");
+    QVERIFY(CORBA::is_nil(named));
+    RTC::ComponentProfileList_var profiles = m_master->get_component_profiles();
+    QCOMPARE(profiles->length(), CORBA::ULong(1));
+    QCOMPARE(QByteArray(profiles[0].instance_name), QByteArray("ConsoleIn0"));
+    // exit() on the component itself also removes it from its manager.
+    QCOMPARE(a->exit(), RTC::RTC_OK);
+    QTRY_COMPARE(RTC::RTCList_var(m_master->get_components())->length(), CORBA::ULong(0));
+}
+
+void TestManagerLive::badRequests_data()
+{
+    QTest::addColumn<QString>("request");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("two ?") << "ConsoleIn?a=1?b=2" << "more than one '?'";
+    QTest::newRow("unknown type") << "NoSuchType" << "unknown component type 'NoSuchType'";
+    QTest::newRow("malformed address") << "ConsoleIn?manager_address=nohost" << "malformed manager address";
+    QTest::newRow("bad port") << "ConsoleIn?manager_address=127.0.0.1:70000" << "port out of range";
+    QTest::newRow("unreachable address") << "ConsoleIn?manager_address=192.0.2.1:9" << "unreachable";
+    QTest::newRow("unknown type on slave") << "NoSuchType?manager_name=slaveX" << "unknown component type";
+    QTest::newRow("delete unknown") << "delete:ghost" << "no component named 'ghost'";
+    QTest::newRow("load text file") << "load:notamodule.so" << "is not a loadable module";
+    QTest::newRow("load missing") << "load:missing.so" << "no module file 'missing.so'";
+}
+
+void TestManagerLive::badRequests()
+{
+    QFETCH(QString, request);
+    QFETCH(QString, message);
+    if (request.startsWith("delete:")) {
+        QCOMPARE(m_master->delete_component(request.mid(7).toUtf8().constData()), RTC::BAD_PARAMETER);
+    } else if (request.startsWith("load:")) {
+        const QString file = request.mid(5) == "notamodule.so"
+                                 ? QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/notamodule.so")
+                                 : request.mid(5);
+        QCOMPARE(m_master->load_module(file.toUtf8().constData(), ""), RTC::BAD_PARAMETER);
+    } else {
+        QDeadlineTimer bound(10000);
+        RTC::RTObject_var result = create(request);
+        QVERIFY(CORBA::is_nil(result));
+        QVERIFY(!bound.hasExpired());
+    }
+    QVERIFY2(lastError(m_master).contains(message), qPrintable(lastError(m_master)));
+    // The manager keeps serving.
+    RTC::RTObject_var fine = create("ConsoleIn");
+    QVERIFY2(!CORBA::is_nil(fine), qPrintable(lastError(m_master)));
+}
+
+void TestManagerLive::killedSlaveLeavesOthersWorking()
+{
+    RTC::RTObject_var doomed = create("ConsoleIn?manager_name=slaveK");
+    RTC::RTObject_var source = create("ConsoleIn?manager_name=slaveL");
+    RTC::RTObject_var sink = create("ConsoleOut?manager_name=slaveL");
+    QVERIFY(!CORBA::is_nil(doomed) && !CORBA::is_nil(source) && !CORBA::is_nil(sink));
+    const qint64 pid = slavePid("slaveK");
+    QVERIFY(pid > 0);
+    QCOMPARE(::kill(pid_t(pid), SIGKILL), 0);
+    QTRY_COMPARE_WITH_TIMEOUT(RTM::ManagerList_var(m_master->get_slave_managers())->length(), CORBA::ULong(1),
+                              10000);
+    QCOMPARE(slavePid("slaveK"), 0);
+    // The other slave still hosts working components.
+    connect(port(source, "out"), port(sink, "in"), "push", "flush");
+    QCOMPARE(activate(sink), RTC::RTC_OK);
+    QCOMPARE(activate(source), RTC::RTC_OK);
+    QTRY_VERIFY_WITH_TIMEOUT(status(sink, "received_count") > 10, 10000);
+    // And the master still creates, also on a new slave of the dead one's name.
+    RTC::RTObject_var local = create("ConsoleIn");
+    QVERIFY(!CORBA::is_nil(local));
+    RTC::RTObject_var reborn = create("ConsoleIn?manager_name=slaveK");
+    QVERIFY2(!CORBA::is_nil(reborn), qPrintable(lastError(m_master)));
+    QVERIFY(slavePid("slaveK") != pid);
+}
+
+void TestManagerLive::loadModule()
+{
+    RTM::ModuleProfileList_var loadable = m_master->get_loadable_modules();
+    bool listed = false;
+    for (CORBA::ULong i = 0; i < loadable->length(); ++i)
+        listed = listed || nv(loadable[i].properties, "module_file_name") == "ManagerTestModule.so";
+    QVERIFY(listed);
+    QCOMPARE(m_master->load_module("ManagerTestModule", ""), RTC::RTC_OK);
+    RTM::ModuleProfileList_var loaded = m_master->get_loaded_modules();
+    QCOMPARE(loaded->length(), CORBA::ULong(1));
+    QVERIFY(nv(loaded[0].properties, "file_path").endsWith("ManagerTestModule.so"));
+    QCOMPARE(nv(loaded[0].properties, "init_function"), QString("ManagerTestModuleInit"));
+    QCOMPARE(m_master->load_module("ManagerTestModule", ""), RTC::BAD_PARAMETER);
+    QVERIFY(lastError(m_master).contains("already loaded"));
+
+    RTC::RTObject_var counter = create("RTC:RTStudioTests:example:ModuleCounter:C++:2.0.0");
+    QVERIFY2(!CORBA::is_nil(counter), qPrintable(lastError(m_master)));
+    QCOMPARE(activate(counter), RTC::RTC_OK);
+    QTRY_VERIFY(status(counter, "sent_count") > 3);
+
+    QCOMPARE(m_master->unload_module(QStringLiteral(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so").toUtf8().constData()),
+             RTC::RTC_OK);
+    loaded = m_master->get_loaded_modules();
+    QCOMPARE(loaded->length(), CORBA::ULong(0));
+    RTC::RTObject_var gone = create("ModuleCounter");
+    QVERIFY(CORBA::is_nil(gone));
+    QCOMPARE(m_master->load_module(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", "NoSuchInit"),
+             RTC::BAD_PARAMETER);
+    QVERIFY(lastError(m_master).contains("no init function 'NoSuchInit'"));
+}
+
+void TestManagerLive::shutdownUnregisters()
+{
+    RTC::RTObject_var local = create("ConsoleIn?instance_name=bye");
+    RTC::RTObject_var remote = create("ConsoleIn?instance_name=far&manager_name=slaveS");
+    QVERIFY(!CORBA::is_nil(local) && !CORBA::is_nil(remote));
+    const qint64 slave = slavePid("slaveS");
+    QVERIFY(slave > 0);
+    const QString host = localHost();
+    QCOMPARE(m_master->shutdown(), RTC::RTC_OK);
+    QVERIFY(m_masterProcess->waitForFinished(10000));
+    QCOMPARE(m_masterProcess->exitStatus(), QProcess::NormalExit);
+    QCOMPARE(m_masterProcess->exitCode(), 0);
+    CORBA::Object_var named = resolve(host + ".host_cxt/bye.rtc");
+    QVERIFY(CORBA::is_nil(named));
+    named = resolve(host + ".host_cxt/manager.mgr");
+    QVERIFY(CORBA::is_nil(named));
+    // The slave was shut down with its master and took its names along.
+    QTRY_VERIFY_WITH_TIMEOUT(!processRuns(slave), 10000);
+    named = resolve(host + ".host_cxt/far.rtc");
+    QVERIFY(CORBA::is_nil(named));
+}
+
+void TestManagerLive::slavesFollowKilledMaster()
+{
+    RTC::RTObject_var remote = create("ConsoleIn?manager_name=slaveZ");
+    QVERIFY(!CORBA::is_nil(remote));
+    const qint64 slave = slavePid("slaveZ");
+    QVERIFY(processRuns(slave));
+    m_live->stop(m_masterProcess); // SIGKILL: no chance to shut its slaves down
+    QTRY_VERIFY_WITH_TIMEOUT(!processRuns(slave), 10000);
+}
+
+QTEST_GUILESS_MAIN(TestManagerLive)
+#include "tst_managerlive.moc"
