@@ -283,7 +283,8 @@ void Manager::joinMaster()
         return;
     try {
         CORBA::Object_var object = m_orb->string_to_object(("corbaloc:iiop:" + master + "/manager").c_str());
-        RTM::Manager_var manager = RTM::Manager::_narrow(object);
+        // Unchecked: the first real call tells whether it is there, without an extra round trip.
+        RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
         if (CORBA::is_nil(manager))
             return;
         addMaster(manager);
