@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "builderfieldrules.h"
+
 #include <QString>
-#include <QStringList>
 
 namespace Studio::FieldRules {
 
@@ -10,19 +11,17 @@ namespace Studio::FieldRules {
  * Checks of single form fields, shown inline next to the field. Each returns an empty string
  * when the text is acceptable, else a short sentence saying what is wrong. The document keeps any
  * text regardless (a bad value is never lost); these only tell the user.
+ *
+ * The rules the Builder defines (names, required fields, numbers, enumerations) are used as they
+ * are; the system id rule is the application's own.
  */
+using Builder::FieldRules::componentNameProblem;
+using Builder::FieldRules::enumerationProblem;
+using Builder::FieldRules::nonNegativeIntegerProblem;
+using Builder::FieldRules::nonNegativeNumberProblem;
+using Builder::FieldRules::requiredProblem;
 
-/// A component name: required, characters `[0-9A-Za-z_\-:]` only (RTC Builder's rule).
-QString componentNameProblem(const QString &text);
-/// A required text field.
-QString requiredProblem(const QString &text);
 /// A part of a system id (vendor, name, version): required and free of ':'.
 QString systemIdPartProblem(const QString &text);
-/// Empty (absent) or an integer ≥ 0.
-QString nonNegativeIntegerProblem(const QString &text);
-/// Empty (absent) or a number ≥ 0.
-QString nonNegativeNumberProblem(const QString &text);
-/// One of `allowed` (exact spelling).
-QString enumerationProblem(const QString &text, const QStringList &allowed);
 
 } // namespace Studio::FieldRules

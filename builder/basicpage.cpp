@@ -3,7 +3,7 @@
 
 #include "componentcommands.h"
 #include "componentrules.h"
-#include "fieldrules.h"
+#include "builderfieldrules.h"
 
 #include <QComboBox>
 #include <QFormLayout>

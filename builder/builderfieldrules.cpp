@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "fieldrules.h"
+#include "builderfieldrules.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

@@ -2,7 +2,7 @@
 #include "componentrules.h"
 
 #include "constraintsyntax.h"
-#include "fieldrules.h"
+#include "builderfieldrules.h"
 #include "rtcvalidator.h"
 
 #include <QCoreApplication>

@@ -47,7 +47,10 @@ DocumentationPage::DocumentationPage(ComponentModel *model, QUndoStack *undoStac
     , m_undoStack(undoStack)
 {
     auto *content = new QWidget;
-    auto *form = new QFormLayout(content);
+    auto *contentLayout = new QVBoxLayout(content);
+    auto *form = new QFormLayout;
+    contentLayout->addLayout(form);
+    contentLayout->addStretch(1);
     for (const FieldInfo &info : Fields) {
         auto *edit = new QPlainTextEdit(content);
         edit->setTabChangesFocus(true);
