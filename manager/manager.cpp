@@ -118,8 +118,8 @@ bool Manager::start(std::string *error)
     } else {
         joinMaster();
         const pid_t parent = pid_t(std::stol("0" + m_config.value("manager.spawned_by")));
-        if (parent > 0)
-            m_watchdog = std::thread([this, parent] { watchParent(parent); });
+        if (parent > 0 || m_config.isYes("manager.shutdown_auto"))
+            m_watchdog = std::thread([this, parent] { watchAsSlave(parent); });
     }
     return true;
 }
@@ -328,6 +328,9 @@ bool Manager::deleteComponent(const std::string &instanceName, std::string *erro
         return fail("delete_component: no component named '" + instanceName + "'", error);
     if (servant->exit() != RTC::RTC_OK)
         forget(servant);
+    // OpenRTM's manager.shutdown_on_nortcs: the last deleted component takes the manager along.
+    if (m_config.isYes("manager.shutdown_on_nortcs") && components().length() == 0)
+        shutdown();
     return true;
 }
 

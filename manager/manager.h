@@ -99,7 +99,7 @@ private:
     void joinMaster();
     void leaveMaster();
     void watchSlaves();
-    void watchParent(pid_t parent);
+    void watchAsSlave(pid_t parent);
     bool isLocalHost(const std::string &host) const;
 
     Properties m_config;

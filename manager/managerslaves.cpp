@@ -338,14 +338,31 @@ void Manager::watchSlaves()
 
 namespace Runtime {
 
-void Manager::watchParent(pid_t parent)
+void Manager::watchAsSlave(pid_t parent)
 {
     // A slave we spawned goes down with its master (reparenting shows the master is gone), so no
     // process outlives a killed master. (PR_SET_PDEATHSIG would follow the forking ORB thread.)
+    // With manager.shutdown_auto, a manager left without components goes after
+    // manager.auto_shutdown_duration seconds, as OpenRTM's slaves do.
+    const bool autoShutdown = m_config.isYes("manager.shutdown_auto");
+    double idleLimit = 10.0;
+    try {
+        idleLimit = std::stod(m_config.value("manager.auto_shutdown_duration", "10.0"));
+    } catch (...) {
+        // Keep OpenRTM's default.
+    }
+    auto idleSince = std::chrono::steady_clock::now();
     std::unique_lock lock(m_mutex);
     while (!m_stopping) {
-        m_slavesChanged.wait_for(lock, std::chrono::milliseconds(200));
-        if (!m_stopping && getppid() != parent) {
+        m_slavesChanged.wait_for(lock, std::chrono::milliseconds(100));
+        if (m_stopping)
+            return;
+        if (!m_components.empty())
+            idleSince = std::chrono::steady_clock::now();
+        const bool orphaned = parent > 0 && getppid() != parent;
+        const bool idle = autoShutdown
+                          && std::chrono::steady_clock::now() - idleSince > std::chrono::duration<double>(idleLimit);
+        if (orphaned || idle) {
             lock.unlock();
             shutdown();
             return;

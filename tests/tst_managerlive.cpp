@@ -108,9 +108,12 @@ private slots:
     void loadModule();
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
+    void startupKeys();
+    void shutdownWithoutComponents_data();
+    void shutdownWithoutComponents();
 
 private:
-    RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr);
+    RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
     RTC::RTObject_ptr create(const QString &request);
     QString lastError(RTM::Manager_ptr manager);
     CORBA::Object_ptr resolve(const QString &path);
@@ -153,10 +156,10 @@ void TestManagerLive::cleanupTestCase()
     m_orb->destroy();
 }
 
-RTM::Manager_ptr TestManagerLive::startMaster(QString *error, QProcess **process)
+RTM::Manager_ptr TestManagerLive::startMaster(QString *error, QProcess **process, const QStringList &extra)
 {
     m_masterPort = LiveTest::freePort();
-    const QStringList args = {"-f", QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/rtc.conf"),
+    const QStringList args = extra + QStringList{"-f", QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/rtc.conf"),
                               "-o", QString("corba.endpoints=127.0.0.1:%1").arg(m_masterPort),
                               "-o", "corba.nameservers=" + m_live->namingServer(),
                               "-o", QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR)};
@@ -504,6 +507,61 @@ void TestManagerLive::slavesFollowKilledMaster()
     QVERIFY(processRuns(slave));
     m_live->stop(m_masterProcess); // SIGKILL: no chance to shut its slaves down
     QTRY_VERIFY_WITH_TIMEOUT(!processRuns(slave), 10000);
+}
+
+void TestManagerLive::startupKeys()
+{
+    QString error;
+    RTM::Manager_var other = startMaster(&error, nullptr,
+                                         {"-o", "manager.preload.modules=ManagerTestModule",
+                                          "-o", "manager.components.precreate=ConsoleIn,ModuleCounter?instance_name=pre",
+                                          "-o", "manager.instance_name=other"});
+    QVERIFY2(!CORBA::is_nil(other), qPrintable(error));
+    RTM::ModuleProfileList_var loaded = other->get_loaded_modules();
+    QCOMPARE(loaded->length(), CORBA::ULong(1));
+    RTC::RTCList_var components = other->get_components();
+    QCOMPARE(components->length(), CORBA::ULong(2));
+    RTC::RTCList_var pre = other->get_components_by_name("pre");
+    QCOMPARE(pre->length(), CORBA::ULong(1));
+    CORBA::Object_var named = resolve(localHost() + ".host_cxt/other.mgr");
+    QVERIFY(!CORBA::is_nil(named));
+}
+
+void TestManagerLive::shutdownWithoutComponents_data()
+{
+    QTest::addColumn<QStringList>("options");
+    QTest::addColumn<bool>("deleteLast");
+    QTest::newRow("shutdown_auto") << QStringList{"-o", "manager.shutdown_auto=YES", "-o",
+                                                  "manager.auto_shutdown_duration=0.3"}
+                                   << false;
+    QTest::newRow("shutdown_on_nortcs") << QStringList{"-o", "manager.shutdown_on_nortcs=YES"} << true;
+}
+
+void TestManagerLive::shutdownWithoutComponents()
+{
+    QFETCH(QStringList, options);
+    QFETCH(bool, deleteLast);
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QStringList args = options;
+    args << "-o" << QString("corba.endpoints=127.0.0.1:%1").arg(port) << "-o"
+         << "corba.nameservers=" + m_live->namingServer() << "-o" << "manager.instance_name=lonely"
+         << "-o" << "corba.master_manager="; // a manager of its own, joining no master
+    if (deleteLast)
+        args << "-o" << "manager.components.precreate=ConsoleIn";
+    QProcess *process = m_live->startProcess(QStringLiteral(RTMANAGER_PATH), args, "rtmanager ready", &error);
+    QVERIFY2(process, qPrintable(error));
+    if (deleteLast) {
+        CORBA::Object_var object =
+            m_orb->string_to_object(QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8().constData());
+        RTM::Manager_var lonely = RTM::Manager::_narrow(object);
+        QVERIFY(process->state() == QProcess::Running);
+        QCOMPARE(lonely->delete_component("ConsoleIn0"), RTC::RTC_OK);
+    }
+    QVERIFY(process->waitForFinished(10000));
+    QCOMPARE(process->exitCode(), 0);
+    CORBA::Object_var named = resolve(localHost() + ".host_cxt/lonely.mgr");
+    QVERIFY(CORBA::is_nil(named));
 }
 
 QTEST_GUILESS_MAIN(TestManagerLive)

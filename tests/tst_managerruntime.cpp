@@ -103,6 +103,7 @@ private slots:
     void dataFlow_data();
     void dataFlow();
     void disconnectStopsFlow();
+    void connectorBufferPolicy();
     void connectRejectsMismatch_data();
     void connectRejectsMismatch();
     void servicePort();
@@ -575,6 +576,34 @@ void TestManagerRuntime::disconnectStopsFlow()
     const long received = statusNumber(out, "received_count");
     QTRY_VERIFY(statusNumber(in, "sent_count") > sent + 40);
     QCOMPARE(statusNumber(out, "received_count"), received);
+}
+
+void TestManagerRuntime::connectorBufferPolicy()
+{
+    RtObject *source = create("ConsoleIn", "CI3");
+    RtObject *sink = create("ConsoleOut", "CO3");
+    RTC::RTObject_var in = source->reference();
+    RTC::RTObject_var out = sink->reference();
+    RTC::PortService_var outPort = port(in, "out");
+    RTC::PortService_var inPort = port(out, "in");
+    RTC::ConnectorProfile profile;
+    QCOMPARE(connect(outPort, inPort,
+                     Properties::parseConf("dataport.dataflow_type: push\n"
+                                           "dataport.inport.buffer.length: 2\n"
+                                           "dataport.buffer.write.full_policy: do_nothing\n"),
+                     &profile),
+             RTC::RTC_OK);
+    // Nobody reads (the sink is inactive): the third sample finds the buffer full.
+    CORBA::Object_var object = m_orb->string_to_object(nv(profile.properties, "dataport.corba_cdr.inport_ior").toUtf8());
+    OpenRTM::InPortCdr_var inCdr = OpenRTM::InPortCdr::_narrow(object);
+    QVERIFY(!CORBA::is_nil(inCdr));
+    RTC::TimedLong sample{};
+    const CdrBytes bytes = marshal(sample, true);
+    OpenRTM::CdrData data(CORBA::ULong(bytes.size()), CORBA::ULong(bytes.size()),
+                          const_cast<CORBA::Octet *>(bytes.data()), false);
+    QCOMPARE(inCdr->put(data), OpenRTM::PORT_OK);
+    QCOMPARE(inCdr->put(data), OpenRTM::PORT_OK);
+    QCOMPARE(inCdr->put(data), OpenRTM::BUFFER_FULL);
 }
 
 void TestManagerRuntime::connectRejectsMismatch_data()
