@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "corbatypes.h"
+#include "namingbrowser.h"
+
+#include <QHash>
+#include <QMetaType>
+#include <QString>
+
+namespace SystemEditor {
+
+/// One name server as the worker saw it: its tree and the state of every component in it.
+struct ServerSnapshot
+{
+    QString server;
+    Corba::NamingNode tree;
+    QHash<QString, Corba::LifeCycleState> states; ///< by component path
+};
+
+/// What a user can ask of a live component or manager from the online views.
+enum class RemoteAction { Activate, Deactivate, Reset, Exit, Shutdown, Restart, Unbind };
+
+/**
+ * Remote calls of the online views. Each function blocks on the network and throws Corba::Error,
+ * so it must only run inside an OnlineService (worker thread), never in the GUI thread.
+ */
+namespace OnlineCalls {
+
+/// The tree below `server` (`host:port`) with component states (a component that does not
+/// answer is Unknown).
+ServerSnapshot fetchServer(const QString &server);
+/// The states of the given components (path → IOR); Unknown for those that do not answer.
+QHash<QString, Corba::LifeCycleState> fetchStates(const QHash<QString, QString> &iorsByPath);
+/// Performs `action` on the object at `path` with reference `ior`.
+void perform(RemoteAction action, const QString &path, const QString &ior);
+
+} // namespace OnlineCalls
+
+} // namespace SystemEditor
+
+Q_DECLARE_METATYPE(SystemEditor::ServerSnapshot)

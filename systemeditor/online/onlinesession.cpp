@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "onlinesession.h"
+
+#include "orb.h"
+
+#include <QThread>
+
+namespace SystemEditor {
+
+OnlineSession::OnlineSession(QObject *parent)
+    : QObject(parent)
+{
+    qRegisterMetaType<OnlineResult>();
+}
+
+OnlineSession::~OnlineSession()
+{
+    // A worker may be inside a call to a hung peer; that call ends with the client timeout, so the
+    // wait is bounded.
+    for (Worker &w : m_workers) {
+        w.thread->quit();
+        w.thread->wait(Corba::Orb::callTimeout() * 2 + 1000);
+        delete w.service;
+        delete w.thread;
+    }
+}
+
+OnlineSession::Worker &OnlineSession::worker(const QString &host)
+{
+    auto it = m_workers.find(host);
+    if (it != m_workers.end())
+        return *it;
+    Worker w;
+    w.thread = new QThread;
+    w.thread->setObjectName(QStringLiteral("online:") + host);
+    w.service = new OnlineService(host);
+    w.service->moveToThread(w.thread);
+    connect(w.service, &OnlineService::finished, this, &OnlineSession::deliver,
+            Qt::QueuedConnection);
+    connect(w.service, &OnlineService::hostReachabilityChanged, this,
+            &OnlineSession::updateReachability, Qt::QueuedConnection);
+    w.thread->start();
+    return *m_workers.insert(host, w);
+}
+
+void OnlineSession::submit(const QString &host, const OnlineService::Call &call, QObject *context,
+                           const Callback &done)
+{
+    const quint64 ticket = m_nextTicket++;
+    m_callbacks.insert(ticket, {QPointer<QObject>(context), done});
+    OnlineService *service = worker(host).service;
+    QMetaObject::invokeMethod(
+        service, [service, ticket, call] { service->run(ticket, call); }, Qt::QueuedConnection);
+}
+
+void OnlineSession::deliver(quint64 ticket, const OnlineResult &result)
+{
+    const Pending pending = m_callbacks.take(ticket);
+    if (pending.context && pending.done)
+        pending.done(result);
+    if (m_callbacks.isEmpty())
+        emit idle();
+}
+
+void OnlineSession::updateReachability(const QString &host, bool reachable, const QString &message)
+{
+    if (reachable)
+        m_unreachable.remove(host);
+    else
+        m_unreachable.insert(host);
+    emit hostReachabilityChanged(host, reachable, message);
+}
+
+} // namespace SystemEditor

@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: MIT
+#include "iorendpoint.h"
+#include "livesystem.h"
+#include "nameservicemodel.h"
+#include "nameserviceview.h"
+#include "onlinesession.h"
+#include "orb.h"
+
+#include <QAbstractItemModelTester>
+#include <QAction>
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QMimeData>
+#include <QPlainTextEdit>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSortFilterProxyModel>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QTreeView>
+
+#include <csignal>
+
+using namespace SystemEditor;
+using Corba::LifeCycleState;
+using Corba::NodeType;
+
+// The Name Service view and its worker layer against real omniNames and rtmanager processes.
+class TestOnlineNameService : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void normalisesServerAddresses_data();
+    void normalisesServerAddresses();
+    void readsEndpointsFromIors();
+    void showsTheLiveTree();
+    void remembersServers();
+    void activatesThroughTheContextMenu();
+    void filtersAndShowsIor();
+    void deletesZombies();
+    void unreachableServerIsReportedOnce();
+    void stoppedManagerNeverBlocksTheGui();
+
+private:
+    QString componentPath(const QString &instance) const;
+    void refreshAndWait(NameServiceView &view);
+
+    LiveTest::LiveSystem m_live;
+    QProcess *m_manager = nullptr;
+    quint16 m_managerPort = 0;
+    QTemporaryDir m_dir;
+};
+
+void TestOnlineNameService::initTestCase()
+{
+    Corba::Orb::setCallTimeout(2000);
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    m_managerPort = LiveTest::freePort();
+    const QStringList arguments {"-d",
+                                 "-o",
+                                 QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_managerPort),
+                                 "-o",
+                                 "corba.nameservers=" + m_live.namingServer(),
+                                 "-o",
+                                 "naming.formats=rtmhost.host_cxt/%n.rtc",
+                                 "-o",
+                                 "manager.naming_formats=rtmhost.host_cxt/%n.mgr",
+                                 "-o",
+                                 "manager.components.precreate=ConsoleIn,ConsoleOut"};
+    m_manager
+        = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    QVERIFY2(m_manager, qPrintable(error));
+}
+
+QString TestOnlineNameService::componentPath(const QString &instance) const
+{
+    return QStringLiteral("/%1/rtmhost.host_cxt/%2.rtc").arg(m_live.namingServer(), instance);
+}
+
+void TestOnlineNameService::refreshAndWait(NameServiceView &view)
+{
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    view.refresh();
+    QVERIFY(refreshed.wait(15000));
+}
+
+void TestOnlineNameService::normalisesServerAddresses_data()
+{
+    QTest::addColumn<QString>("address");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("host only") << "localhost"
+                               << "localhost:2809";
+    QTest::newRow("host and port") << "10.0.0.2:2999"
+                                   << "10.0.0.2:2999";
+    QTest::newRow("spaces") << "  myhost:1234 "
+                            << "myhost:1234";
+    QTest::newRow("bad port") << "host:abc"
+                              << "";
+    QTest::newRow("port out of range") << "host:70000"
+                                       << "";
+    QTest::newRow("no host") << ":2809"
+                             << "";
+    QTest::newRow("a path") << "host/ctx"
+                            << "";
+    QTest::newRow("empty") << ""
+                           << "";
+}
+
+void TestOnlineNameService::normalisesServerAddresses()
+{
+    QFETCH(QString, address);
+    QFETCH(QString, expected);
+    QCOMPARE(NameServiceModel::normaliseServer(address), expected);
+}
+
+void TestOnlineNameService::readsEndpointsFromIors()
+{
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    QVERIFY(view.addServer(m_live.namingServer()));
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    QVERIFY(refreshed.wait(15000));
+    const QModelIndex index = view.model()->indexOfPath(componentPath("ConsoleIn0"));
+    QVERIFY(index.isValid());
+    const QString ior = index.data(NameServiceModel::IorRole).toString();
+    QCOMPARE(iorEndpoint(ior), QStringLiteral("127.0.0.1:%1").arg(m_managerPort));
+    QCOMPARE(iorEndpoint(QStringLiteral("IOR:0102")), QString());
+    QCOMPARE(iorEndpoint(QStringLiteral("corbaloc::host:1/x")), QString());
+    QCOMPARE(iorEndpoint(ior.left(60)), QString());
+}
+
+void TestOnlineNameService::showsTheLiveTree()
+{
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    QAbstractItemModelTester tester(view.model(),
+                                    QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester filterTester(view.filterModel(),
+                                          QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QVERIFY(view.addServer(m_live.namingServer()));
+    QVERIFY(!view.addServer(m_live.namingServer())); // duplicates refused
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    QVERIFY(refreshed.wait(15000));
+    refreshAndWait(view); // a second refresh replaces the subtree in place
+
+    NameServiceModel *model = view.model();
+    QCOMPARE(model->rowCount(), 1);
+    const QModelIndex context
+        = model->indexOfPath(QStringLiteral("/%1/rtmhost.host_cxt").arg(m_live.namingServer()));
+    QVERIFY(context.isValid());
+    QCOMPARE(NodeType(context.data(NameServiceModel::TypeRole).toInt()), NodeType::Context);
+    const QModelIndex in = model->indexOfPath(componentPath("ConsoleIn0"));
+    QVERIFY(in.isValid());
+    QCOMPARE(in.parent(), context);
+    QCOMPARE(NodeType(in.data(NameServiceModel::TypeRole).toInt()), NodeType::Component);
+    QCOMPARE(in.siblingAtColumn(1).data().toString(), QStringLiteral("Inactive"));
+    QVERIFY(in.data(NameServiceModel::IorRole).toString().startsWith("IOR:"));
+    QVERIFY(!in.data(Qt::DecorationRole).value<QIcon>().isNull());
+    QVERIFY(model->flags(in) & Qt::ItemIsDragEnabled);
+    const QModelIndex manager = model->indexOfPath(
+        QStringLiteral("/%1/rtmhost.host_cxt/manager.mgr").arg(m_live.namingServer()));
+    QVERIFY(manager.isValid());
+    QCOMPARE(NodeType(manager.data(NameServiceModel::TypeRole).toInt()), NodeType::Manager);
+    QVERIFY(model->zombiePaths().isEmpty());
+
+    std::unique_ptr<QMimeData> mime(model->mimeData({in}));
+    QVERIFY(mime);
+    QVERIFY(QString::fromUtf8(mime->data(NameServiceModel::componentMimeType()))
+                .startsWith(componentPath("ConsoleIn0") + '\t' + "IOR:"));
+}
+
+void TestOnlineNameService::remembersServers()
+{
+    QSettings settings(m_dir.filePath("settings.ini"), QSettings::IniFormat);
+    OnlineSession session;
+    {
+        NameServiceView view(&session, &settings);
+        QVERIFY(view.addServer("otherhost"));
+        QVERIFY(view.addServer("127.0.0.1:1"));
+        view.removeServer("127.0.0.1:1");
+    }
+    NameServiceView again(&session, &settings);
+    QCOMPARE(again.model()->servers(), QStringList {"otherhost:2809"});
+}
+
+void TestOnlineNameService::activatesThroughTheContextMenu()
+{
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    view.addServer(m_live.namingServer());
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    QVERIFY(refreshed.wait(15000));
+    const QString path = componentPath("ConsoleOut0");
+    QModelIndex index = view.model()->indexOfPath(path);
+    const QList<QAction *> actions = view.contextActions(index);
+    QStringList names;
+    for (QAction *action : actions)
+        names.append(action->objectName());
+    QCOMPARE(names,
+             (QStringList {"actionActivate", "actionDeactivate", "actionReset", "actionExit",
+                           "actionShowIor", "actionRefresh"}));
+    QSignalSpy finished(&view, &NameServiceView::actionFinished);
+    actions.at(0)->trigger();
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(0).at(0).toString(), path);
+    QCOMPARE(finished.at(0).at(1).toString(), QString());
+    QTRY_COMPARE_WITH_TIMEOUT(
+        view.model()->indexOfPath(path).data(NameServiceModel::StateRole).toInt(),
+        int(LifeCycleState::Active), 10000);
+    QCOMPARE(view.model()->indexOfPath(path).siblingAtColumn(1).data().toString(),
+             QStringLiteral("Active"));
+
+    index = view.model()->indexOfPath(path);
+    view.perform(RemoteAction::Deactivate, index);
+    QTRY_COMPARE_WITH_TIMEOUT(
+        view.model()->indexOfPath(path).data(NameServiceModel::StateRole).toInt(),
+        int(LifeCycleState::Inactive), 10000);
+    qDeleteAll(actions);
+
+    const QModelIndex manager = view.model()->indexOfPath(
+        QStringLiteral("/%1/rtmhost.host_cxt/manager.mgr").arg(m_live.namingServer()));
+    const QList<QAction *> managerActions = view.contextActions(manager);
+    QCOMPARE(managerActions.at(0)->objectName(), QStringLiteral("actionShutdown"));
+    QCOMPARE(managerActions.at(1)->objectName(), QStringLiteral("actionRestart"));
+    qDeleteAll(managerActions);
+}
+
+void TestOnlineNameService::filtersAndShowsIor()
+{
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    view.addServer(m_live.namingServer());
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    QVERIFY(refreshed.wait(15000));
+    view.setFilterText("consolein");
+    QSortFilterProxyModel *filter = view.filterModel();
+    const QModelIndex server = filter->index(0, 0);
+    const QModelIndex context = filter->index(0, 0, server);
+    QStringList shown;
+    for (int row = 0; row < filter->rowCount(context); ++row)
+        shown.append(filter->index(row, 0, context).data().toString());
+    // The manager stays because it lists ConsoleIn0 below itself.
+    QCOMPARE(shown, (QStringList {"ConsoleIn0.rtc", "manager.mgr"}));
+    view.setFilterText(QString());
+    QVERIFY(filter->rowCount(filter->index(0, 0, filter->index(0, 0))) >= 3);
+
+    const QModelIndex in = view.model()->indexOfPath(componentPath("ConsoleIn0"));
+    QWidget *dialog = view.showIor(in);
+    auto *text = dialog->findChild<QPlainTextEdit *>("iorText");
+    QVERIFY(text);
+    QCOMPARE(text->toPlainText(), in.data(NameServiceModel::IorRole).toString());
+    dialog->close();
+}
+
+void TestOnlineNameService::deletesZombies()
+{
+    QString error;
+    QVERIFY2(
+        m_live.startPeer({"ConsoleIn?instance_name=Alive0"}, &error, nullptr, "zombiehost", true),
+        qPrintable(error));
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    view.addServer(m_live.namingServer());
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    QVERIFY(refreshed.wait(15000));
+    const QStringList zombies = view.model()->zombiePaths(m_live.namingServer());
+    QCOMPARE(zombies.size(), 2);
+    QVERIFY(zombies.join(' ').contains("Ghost0.rtc"));
+    const QModelIndex ghost = view.model()->indexOfPath(zombies.first());
+    QVERIFY(!ghost.data(NameServiceModel::ReasonRole).toString().isEmpty());
+    const QList<QAction *> actions = view.contextActions(ghost);
+    QCOMPARE(actions.first()->objectName(), QStringLiteral("actionDeleteZombie"));
+    qDeleteAll(actions);
+
+    QSignalSpy finished(&view, &NameServiceView::actionFinished);
+    view.deleteZombies();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(view.model()->zombiePaths().isEmpty(), 10000);
+    QVERIFY(view.model()
+                ->indexOfPath(
+                    QStringLiteral("/%1/zombiehost.host_cxt/Alive0.rtc").arg(m_live.namingServer()))
+                .isValid());
+}
+
+void TestOnlineNameService::unreachableServerIsReportedOnce()
+{
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    QSignalSpy problems(&view, &NameServiceView::problemReported);
+    const QString dead = QStringLiteral("127.0.0.1:%1").arg(LiveTest::freePort());
+    view.addServer(dead);
+    QTRY_COMPARE_WITH_TIMEOUT(problems.size(), 1, 10000);
+    view.refresh();
+    view.refresh();
+    QTRY_COMPARE_WITH_TIMEOUT(session.pendingCalls(), 0, 10000);
+    QCOMPARE(problems.size(), 1);
+    QVERIFY(problems.at(0).at(0).toString().contains(dead));
+    const QModelIndex server = view.model()->index(0, 0);
+    QVERIFY(view.model()->isUnreachable(server));
+    QVERIFY(!(view.model()->flags(server) & Qt::ItemIsEnabled));
+    QCOMPARE(server.siblingAtColumn(1).data().toString(), QStringLiteral("unreachable"));
+}
+
+void TestOnlineNameService::stoppedManagerNeverBlocksTheGui()
+{
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    view.addServer(m_live.namingServer());
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    QVERIFY(refreshed.wait(15000));
+    const QString path = componentPath("ConsoleIn0");
+    const QModelIndex in = view.model()->indexOfPath(path);
+    const QString endpoint = in.data(NameServiceModel::EndpointRole).toString();
+    QVERIFY(!endpoint.isEmpty());
+
+    Corba::Orb::setCallTimeout(600);
+    const pid_t pid = pid_t(m_manager->processId());
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    struct Resume
+    {
+        pid_t pid;
+        ~Resume()
+        {
+            ::kill(pid, SIGCONT);
+            Corba::Orb::setCallTimeout(2000);
+        }
+    } resume {pid};
+
+    QSignalSpy problems(&view, &NameServiceView::problemReported);
+    QSignalSpy finished(&view, &NameServiceView::actionFinished);
+    QElapsedTimer clock;
+    clock.start();
+    qint64 last = 0;
+    qint64 worstGap = 0;
+    QTimer ticker;
+    ticker.setInterval(10);
+    connect(&ticker, &QTimer::timeout, this, [&] {
+        const qint64 now = clock.elapsed();
+        worstGap = std::max(worstGap, now - last);
+        last = now;
+    });
+    ticker.start();
+    view.perform(RemoteAction::Activate, in);
+    view.perform(RemoteAction::Reset, view.model()->indexOfPath(path));
+    view.refresh();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 15000);
+    QTRY_COMPARE_WITH_TIMEOUT(session.pendingCalls(), 0, 30000);
+    ticker.stop();
+    QVERIFY2(worstGap < 100, qPrintable(QString::number(worstGap)));
+    QVERIFY(clock.elapsed() >= 1000); // the calls did wait for their timeouts, off the GUI thread
+    QVERIFY(!finished.at(0).at(1).toString().isEmpty());
+    QCOMPARE(problems.size(), 1); // two failed calls, one report
+    QVERIFY(problems.at(0).at(0).toString().contains(endpoint));
+    QVERIFY(!view.model()->isHostReachable(endpoint));
+    const QModelIndex greyed = view.model()->indexOfPath(path);
+    QVERIFY(greyed.isValid());
+    QVERIFY(!(view.model()->flags(greyed) & Qt::ItemIsEnabled));
+    QCOMPARE(greyed.data(NameServiceModel::StateRole).toInt(), int(LifeCycleState::Unknown));
+}
+
+QTEST_MAIN(TestOnlineNameService)
+#include "tst_onlinenameservice.moc"
