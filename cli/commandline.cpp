@@ -5,11 +5,13 @@
 #include "rtcatcommand.h"
 #include "rtconfcommand.h"
 #include "rtconnectcommand.h"
+#include "rtcryocommand.h"
 #include "rtcwdcommand.h"
 #include "rtfindcommand.h"
 #include "rtlscommand.h"
 #include "rtmgrcommand.h"
 #include "rtstatecommand.h"
+#include "rtsystemcommand.h"
 
 namespace Cli {
 
@@ -90,6 +92,11 @@ std::unique_ptr<CommandLine> createCommandLine()
     commandLine->addCommand(std::make_unique<RtConnectCommand>(false));
     commandLine->addCommand(std::make_unique<RtConfCommand>());
     commandLine->addCommand(std::make_unique<RtMgrCommand>());
+    using System = RtSystemCommand::Action;
+    for (System action :
+         {System::Resurrect, System::Teardown, System::Start, System::Stop, System::Diff})
+        commandLine->addCommand(std::make_unique<RtSystemCommand>(action));
+    commandLine->addCommand(std::make_unique<RtCryoCommand>());
     return commandLine;
 }
 

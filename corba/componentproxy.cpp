@@ -207,6 +207,16 @@ void ComponentProxy::addConfigurationSet(const ConfigurationSet &set) const
                     QStringLiteral("%1: configuration set '%2' was not added").arg(m_path, set.id));
 }
 
+void ComponentProxy::setConfigurationSetValues(const ConfigurationSet &set) const
+{
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    const bool ok = call(
+        m_path, [&] { return conf->set_configuration_set_values(toSdoConfigurationSet(set)); });
+    if (!ok)
+        throw Error(Error::Kind::Refused,
+                    QStringLiteral("%1: configuration set '%2' was not written").arg(m_path, set.id));
+}
+
 void ComponentProxy::removeConfigurationSet(const QString &id) const
 {
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);

@@ -47,6 +47,9 @@ public:
     QString activeConfigurationSet() const;
     ConfigurationSet configurationSet(const QString &id) const;
     void addConfigurationSet(const ConfigurationSet &set) const;
+    /// Writes the values of `set` into the existing set `set.id` in one call (parameters not yet in
+    /// the set are added); does not re-activate it.
+    void setConfigurationSetValues(const ConfigurationSet &set) const;
     void removeConfigurationSet(const QString &id) const;
     void activateConfigurationSet(const QString &id) const;
     /// The value of `name` in set `setId`; NotFound when the set or the parameter is missing.

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: MIT
+#include "rtsystemcommand.h"
+
+#include "drift.h"
+#include "profileio.h"
+#include "restorer.h"
+#include "sequencerunner.h"
+
+namespace Cli {
+
+using Deploy::DeployReport;
+using Deploy::DeployStep;
+using Deploy::StepStatus;
+
+namespace {
+
+// Streams each finished step as it happens, so a long start shows its progress.
+Deploy::DeployControl printingControl(Streams streams)
+{
+    Deploy::DeployControl control;
+    control.progress = [streams](const DeployStep &step) {
+        if (step.status == StepStatus::Running)
+            return;
+        streams.out << step.toString() << '\n';
+        streams.out.flush();
+    };
+    return control;
+}
+
+int finish(const DeployReport &report, const QString &command, Streams streams)
+{
+    // Rolled-back steps were printed as done before the failure; say what became of them.
+    for (const DeployStep &step : report.steps) {
+        if (step.status == StepStatus::RolledBack)
+            streams.out << step.toString() << '\n';
+    }
+    streams.out.flush();
+    if (report.ok)
+        return ExitOk;
+    streams.err << "rtctl " << command << ": " << report.error << '\n';
+    streams.err.flush();
+    return ExitProblems;
+}
+
+std::optional<Profile::RtsProfile> loadSystem(const QString &file, const QString &command,
+                                              Streams streams)
+{
+    Profile::Diagnostics diagnostics;
+    const auto loaded = Profile::loadProfileFile(file, &diagnostics);
+    for (const auto &diagnostic : diagnostics) {
+        if (diagnostic.severity == Profile::Diagnostic::Severity::Error)
+            streams.err << diagnostic.toString() << '\n';
+    }
+    if (loaded && loaded->rts)
+        return loaded->rts;
+    if (loaded)
+        streams.err << "rtctl " << command << ": " << file << ": not an RTS profile\n";
+    streams.err.flush();
+    return std::nullopt;
+}
+
+} // namespace
+
+QString RtSystemCommand::name() const
+{
+    switch (m_action) {
+    case Action::Resurrect:
+        return QStringLiteral("resurrect");
+    case Action::Teardown:
+        return QStringLiteral("teardown");
+    case Action::Start:
+        return QStringLiteral("start");
+    case Action::Stop:
+        return QStringLiteral("stop");
+    case Action::Diff:
+        break;
+    }
+    return QStringLiteral("diff");
+}
+
+QString RtSystemCommand::summary() const
+{
+    switch (m_action) {
+    case Action::Resurrect:
+        return QStringLiteral("restore a saved system onto the live components");
+    case Action::Teardown:
+        return QStringLiteral("disconnect the connectors of a saved system");
+    case Action::Start:
+        return QStringLiteral("activate a system in its declared order");
+    case Action::Stop:
+        return QStringLiteral("deactivate a system in its declared order");
+    case Action::Diff:
+        break;
+    }
+    return QStringLiteral("list how the live system differs from a saved one");
+}
+
+QString RtSystemCommand::usage() const
+{
+    const QString extra
+        = m_action == Action::Resurrect ? QStringLiteral("[--create] [--dry-run] ") : QString();
+    QString text = QStringLiteral("Usage: rtctl %1 [--timeout MS] [-s SERVER]... [-m MANAGER] "
+                                  "[--host-manager HOST=ADDRESS]... %2FILE\n\n%3.\n")
+                       .arg(name(), extra, summary().left(1).toUpper() + summary().mid(1));
+    text += QStringLiteral(
+        "Components are found at their saved pathUri when it is a live path, else by instance\n"
+        "name under the name servers (-s, else RTCTREE_NAMESERVERS, else localhost).\n"
+        "-s SERVER      name server host[:port] to search (repeatable)\n"
+        "-m MANAGER     manager path or corbaloc::host[:port] that creates missing components\n"
+        "--host-manager HOST=ADDRESS  components saved under HOST.host_cxt are created with\n"
+        "               manager_address=ADDRESS\n");
+    if (m_action == Action::Resurrect)
+        text += QStringLiteral(
+            "--create       create missing components through the manager\n"
+            "--dry-run      print the plan and change nothing\n"
+            "A failed required step undoes what this run created and connected.\n");
+    if (m_action == Action::Start || m_action == Action::Stop)
+        text += QStringLiteral("Follows the file's Activation/Deactivation (and StartUp/ShutDown) "
+                               "blocks: order, WaitTime, Preceding SYNC with timeout.\n");
+    return text
+        + QStringLiteral("Exit codes: 0 done%1, 1 a required step failed%2, 2 usage error.\n")
+              .arg(m_action == Action::Diff ? QStringLiteral(" (no differences)") : QString(),
+                   m_action == Action::Diff ? QStringLiteral(" or differences found") : QString());
+}
+
+QStringList RtSystemCommand::flagNames() const
+{
+    if (m_action == Action::Resurrect)
+        return {QStringLiteral("--create"), QStringLiteral("--dry-run")};
+    return {};
+}
+
+QStringList RtSystemCommand::optionNames() const
+{
+    return {QStringLiteral("-s"), QStringLiteral("-m"), QStringLiteral("--host-manager")};
+}
+
+bool RtSystemCommand::targetOptions(const RtOptions &options, Deploy::TargetOptions *target,
+                                    Streams streams) const
+{
+    target->nameServers = options.values.value(QStringLiteral("-s"));
+    target->manager = options.value(QStringLiteral("-m"));
+    target->create = options.has(QStringLiteral("--create"));
+    for (const QString &pair : options.values.value(QStringLiteral("--host-manager"))) {
+        const int eq = pair.indexOf(QLatin1Char('='));
+        if (eq <= 0) {
+            usageError(QStringLiteral("--host-manager needs HOST=ADDRESS"), streams);
+            return false;
+        }
+        target->hostManagers.insert(pair.left(eq), pair.mid(eq + 1));
+    }
+    if (target->create && target->manager.isEmpty()) {
+        usageError(QStringLiteral("--create needs -m MANAGER"), streams);
+        return false;
+    }
+    return true;
+}
+
+int RtSystemCommand::execute(const RtOptions &options, Streams streams)
+{
+    if (options.positionals.size() != 1)
+        return usageError(QStringLiteral("expected one FILE"), streams);
+    Deploy::TargetOptions target;
+    if (!targetOptions(options, &target, streams))
+        return ExitUsage;
+    const auto profile = loadSystem(options.positionals.first(), name(), streams);
+    if (!profile)
+        return ExitProblems;
+    const Deploy::RestorePlan plan = Deploy::planRestore(*profile, target);
+    const Deploy::DeployControl control = printingControl(streams);
+    switch (m_action) {
+    case Action::Resurrect:
+        if (options.has(QStringLiteral("--dry-run"))) {
+            streams.out << plan.toText();
+            return plan.missingRequired().isEmpty() ? ExitOk : ExitProblems;
+        }
+        return finish(Deploy::restoreSystem(*profile, plan, target, control), name(), streams);
+    case Action::Teardown:
+        return finish(Deploy::teardownSystem(plan, control), name(), streams);
+    case Action::Start:
+        return finish(Deploy::startSystem(*profile, plan, control), name(), streams);
+    case Action::Stop:
+        return finish(Deploy::stopSystem(*profile, plan, control), name(), streams);
+    case Action::Diff:
+        break;
+    }
+    const QList<Deploy::DriftItem> drift = Deploy::diffSystem(*profile, plan);
+    for (const Deploy::DriftItem &item : drift)
+        streams.out << item.toString() << '\n';
+    streams.out.flush();
+    return drift.isEmpty() ? ExitOk : ExitProblems;
+}
+
+} // namespace Cli

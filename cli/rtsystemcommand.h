@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "rtcommand.h"
+
+namespace Deploy {
+struct TargetOptions;
+}
+
+namespace Cli {
+
+/**
+ * The commands that apply a saved system file to the live system through the deployment engine
+ * (rtsshell's rtresurrect, rtteardown, rtstart, rtstop, and a drift check):
+ * `rtctl resurrect [--create] [--dry-run] FILE`, `teardown FILE`, `start FILE`, `stop FILE`,
+ * `diff FILE`, each with `-s SERVER`, `-m MANAGER` and `--host-manager HOST=ADDRESS`.
+ */
+class RtSystemCommand : public RtCommand
+{
+public:
+    enum class Action { Resurrect, Teardown, Start, Stop, Diff };
+    explicit RtSystemCommand(Action action)
+        : m_action(action)
+    { }
+
+    QString name() const override;
+    QString summary() const override;
+    QString usage() const override;
+
+protected:
+    QStringList flagNames() const override;
+    QStringList optionNames() const override;
+    int execute(const RtOptions &options, Streams streams) override;
+
+private:
+    bool targetOptions(const RtOptions &options, Deploy::TargetOptions *target,
+                       Streams streams) const;
+
+    Action m_action;
+};
+
+} // namespace Cli

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: MIT
+#include "componentmapper.h"
+
+#include "componentproxy.h"
+#include "corbaerror.h"
+#include "namingbrowser.h"
+#include "rtsprofile.h"
+
+#include <QProcessEnvironment>
+
+namespace Deploy {
+
+using Corba::Error;
+using Corba::NamingBrowser;
+using Corba::NamingNode;
+using Corba::NodeType;
+using Corba::RtPath;
+
+namespace {
+
+// Deep enough for `server/host_cxt/sub_cxt/Name.rtc` and a manager's components, shallow enough
+// that a big name server is walked quickly.
+constexpr int searchDepth = 4;
+
+void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::LiveEntry> &found)
+{
+    if (node.type == NodeType::Component && node.name.endsWith(QLatin1String(".rtc"))) {
+        const QString instance = node.name.chopped(4);
+        const auto existing = found.constFind(instance);
+        // The naming-context binding is the path users know; a manager's listing is the fallback.
+        if (existing == found.constEnd()
+            || (existing->path.contains(QLatin1String(".mgr"))
+                && !node.path.contains(QLatin1String(".mgr"))))
+            found.insert(instance, {node.path, node.ior});
+    }
+    for (const NamingNode &child : node.children)
+        collectComponents(child, found);
+}
+
+QString firstRate(const Profile::RtsComponent &component)
+{
+    for (const auto &ec : component.executionContexts) {
+        if (ec.rateValue())
+            return QString::number(*ec.rateValue());
+    }
+    return QString();
+}
+
+// `hostB` for a pathUri `ns/hostB.host_cxt/X.rtc`.
+QString savedHost(const QString &pathUri)
+{
+    for (const QString &element : pathUri.split(QLatin1Char('/'), Qt::SkipEmptyParts)) {
+        if (element.endsWith(QLatin1String(".host_cxt")))
+            return element.chopped(int(qstrlen(".host_cxt")));
+    }
+    return QString();
+}
+
+} // namespace
+
+QString mappingKindName(MappingKind kind)
+{
+    switch (kind) {
+    case MappingKind::Existing:
+        return QStringLiteral("existing");
+    case MappingKind::Create:
+        return QStringLiteral("create");
+    case MappingKind::Missing:
+        break;
+    }
+    return QStringLiteral("missing");
+}
+
+ComponentMapper::ComponentMapper(TargetOptions options)
+    : m_options(std::move(options))
+{ }
+
+QString ComponentMapper::typeNameOf(const QString &componentId)
+{
+    const QStringList parts = componentId.split(QLatin1Char(':'));
+    return parts.size() >= 5 && parts.first() == QLatin1String("RTC") ? parts.at(3) : componentId;
+}
+
+bool ComponentMapper::isLivePath(const QString &pathUri)
+{
+    const QString lower = pathUri.toLower();
+    if (lower.isEmpty() || lower.startsWith(QLatin1String("file:"))
+        || lower.endsWith(QLatin1String(".xml")) || lower.endsWith(QLatin1String(".yaml"))
+        || lower.endsWith(QLatin1String(".yml")))
+        return false;
+    return lower.contains(QLatin1String(".rtc"));
+}
+
+QString ComponentMapper::resolveManager(const QString &address)
+{
+    QString error;
+    const auto path = RtPath::parse(address, QStringLiteral("/"), &error);
+    if (!path)
+        throw Error(Error::Kind::BadPath, QStringLiteral("%1: %2").arg(address, error));
+    return NamingBrowser::resolve(*path);
+}
+
+QString ComponentMapper::createArgument(const Profile::RtsComponent &component) const
+{
+    QString argument
+        = typeNameOf(component.id) + QStringLiteral("?instance_name=") + component.instanceName;
+    const QString rate = firstRate(component);
+    if (!rate.isEmpty())
+        argument += QStringLiteral("&exec_cxt.periodic.rate=") + rate;
+    const QString address = m_options.hostManagers.value(savedHost(component.pathUri));
+    if (!address.isEmpty())
+        argument += QStringLiteral("&manager_address=") + address;
+    return argument;
+}
+
+void ComponentMapper::indexServers(const Profile::RtsProfile &profile)
+{
+    QStringList servers = m_options.nameServers;
+    if (servers.isEmpty()) {
+        for (const auto &component : profile.components) {
+            const auto path = RtPath::parse(QLatin1Char('/') + component.pathUri);
+            if (isLivePath(component.pathUri) && path && !path->isDirect()
+                && !servers.contains(path->server()))
+                servers.append(path->server());
+        }
+    }
+    if (servers.isEmpty())
+        servers = NamingBrowser::serversFromEnvironment();
+    if (servers.isEmpty())
+        servers.append(QStringLiteral("localhost"));
+    QStringList paths;
+    for (const QString &server : servers)
+        paths.append(QLatin1Char('/') + server);
+    m_byInstance = liveComponents(paths, &m_problems);
+}
+
+QHash<QString, ComponentMapper::LiveEntry> ComponentMapper::liveComponents(const QStringList &paths,
+                                                                           QStringList *problems)
+{
+    QHash<QString, LiveEntry> found;
+    for (const QString &text : paths) {
+        try {
+            QString error;
+            const auto path = RtPath::parse(text, QStringLiteral("/"), &error);
+            if (!path)
+                throw Error(Error::Kind::BadPath, QStringLiteral("%1: %2").arg(text, error));
+            collectComponents(NamingBrowser::tree(*path, searchDepth), found);
+        } catch (const Error &e) {
+            if (problems)
+                problems->append(e.message());
+        }
+    }
+    return found;
+}
+
+bool ComponentMapper::checkLive(ComponentMapping &mapping, const LiveEntry &entry) const
+{
+    try {
+        const Corba::ComponentInfo info = Corba::ComponentProxy(entry.ior, entry.path).profile();
+        if (info.typeName != mapping.typeName) {
+            mapping.message = QStringLiteral("%1 is a %2, the system wants a %3")
+                                  .arg(entry.path, info.typeName, mapping.typeName);
+            return false;
+        }
+        mapping.path = entry.path;
+        mapping.ior = entry.ior;
+        mapping.kind = MappingKind::Existing;
+        mapping.message.clear();
+        return true;
+    } catch (const Error &e) {
+        mapping.message = e.message();
+        return false;
+    }
+}
+
+ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
+{
+    ComponentMapping mapping;
+    mapping.instanceName = component.instanceName;
+    mapping.typeName = typeNameOf(component.id);
+    mapping.required = component.isRequiredValue();
+    mapping.createArgument = createArgument(component);
+    if (isLivePath(component.pathUri)) {
+        try {
+            const auto path = RtPath::parse(QLatin1Char('/') + component.pathUri);
+            if (path && checkLive(mapping, {path->toString(), NamingBrowser::resolve(*path)}))
+                return mapping;
+        } catch (const Error &e) {
+            mapping.message = e.message();
+        }
+    }
+    const auto live = m_byInstance.constFind(component.instanceName);
+    if (live != m_byInstance.constEnd() && checkLive(mapping, *live))
+        return mapping;
+    if (mapping.message.isEmpty())
+        mapping.message = QStringLiteral("no live component named %1").arg(component.instanceName);
+    if (m_options.create) {
+        mapping.kind = MappingKind::Create;
+        mapping.path = m_options.manager + QLatin1Char('/') + component.instanceName
+            + QStringLiteral(".rtc");
+    }
+    return mapping;
+}
+
+QList<ComponentMapping> ComponentMapper::map(const Profile::RtsProfile &profile)
+{
+    m_byInstance.clear();
+    m_problems.clear();
+    indexServers(profile);
+    QList<ComponentMapping> result;
+    for (const auto &component : profile.components)
+        result.append(mapOne(component));
+    return result;
+}
+
+} // namespace Deploy

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QList>
+#include <QString>
+
+#include <atomic>
+#include <functional>
+
+namespace Deploy {
+
+/// What became of one step of a deployment operation.
+enum class StepStatus {
+    Planned, ///< dry run: would be done
+    Running, ///< about to be sent (reported before the remote call)
+    Done, ///< succeeded
+    Skipped, ///< nothing to do (already there) or not required
+    Failed, ///< failed; `message` says why
+    RolledBack ///< was done, then undone because a later required step failed
+};
+
+/// "planned", "running", "done", "skipped", "failed", "rolled back".
+QString stepStatusName(StepStatus status);
+
+/// One step: an action on one subject (a component instance, a connector id, a set).
+struct DeployStep
+{
+    QString action; ///< e.g. "create", "connect", "activate", "wait"
+    QString subject; ///< instance name, connector id, `Instance.set`
+    StepStatus status = StepStatus::Planned;
+    QString message; ///< reason of a failure, or a detail of what was done
+    bool required = true; ///< a failure of a required step fails the operation
+    qint64 elapsedMs = 0; ///< since the operation began, when the status was set
+
+    /// `STATUS action subject: message`, one line as rtctl prints it.
+    QString toString() const;
+};
+
+/**
+ * The result of a deployment operation: every step in the order it happened, and whether the
+ * operation as a whole succeeded. A plain value, safe to hand from a worker thread to the GUI.
+ */
+struct DeployReport
+{
+    QList<DeployStep> steps;
+    bool ok = true;
+    bool cancelled = false;
+    QString error; ///< the first required failure (empty when ok)
+
+    /// The steps with `status`.
+    QList<DeployStep> stepsWith(StepStatus status) const;
+    /// One line per step, then a summary line.
+    QString toText() const;
+};
+
+/**
+ * How a caller follows and steers an operation that may run in a worker thread: `progress` is
+ * called (in the worker thread) for every step as its status changes; `cancel` is polled between
+ * remote calls and during waits, and makes the operation stop (a restore then rolls back).
+ */
+struct DeployControl
+{
+    std::function<void(const DeployStep &)> progress;
+    const std::atomic_bool *cancel = nullptr;
+
+    bool cancelled() const { return cancel && cancel->load(); }
+};
+
+} // namespace Deploy

@@ -1,0 +1,351 @@
+// SPDX-License-Identifier: MIT
+#include "restorer.h"
+
+#include "componentproxy.h"
+#include "corbaerror.h"
+#include "liveports.h"
+#include "managerproxy.h"
+#include "portconnection.h"
+#include "rtsprofile.h"
+#include "steprecorder.h"
+
+#include <QHash>
+
+#include <cmath>
+#include <functional>
+#include <optional>
+
+namespace Deploy {
+
+using Corba::ComponentProxy;
+using Corba::Error;
+
+namespace {
+
+struct Undo
+{
+    int step;
+    std::function<void()> action;
+};
+
+// One run of restoreSystem(): the live proxies, cached port lists and what to undo.
+class RestoreRun
+{
+public:
+    RestoreRun(const Profile::RtsProfile &profile, const RestorePlan &plan,
+               const TargetOptions &options, const DeployControl &control)
+        : m_profile(profile)
+        , m_plan(plan)
+        , m_options(options)
+        , m_steps(control)
+    { }
+
+    DeployReport run()
+    {
+        if (checkMissing() && findComponents() && connectAll() && configureAll() && setRates())
+            return m_steps.report();
+        rollback();
+        return m_steps.report();
+    }
+
+private:
+    // Only called for instances known to be in m_live.
+    const ComponentProxy &proxy(const QString &instance) const
+    {
+        return *m_live.constFind(instance);
+    }
+
+    bool proceed() { return m_steps.ok() && !m_steps.checkCancelled(); }
+
+    bool checkMissing()
+    {
+        for (const ComponentMapping &c : m_plan.components) {
+            if (c.kind != MappingKind::Missing)
+                continue;
+            if (c.required)
+                m_steps.fail(m_steps.begin(QStringLiteral("find"), c.instanceName), c.message);
+            else
+                m_steps.add(QStringLiteral("find"), c.instanceName, StepStatus::Skipped, c.message,
+                            false);
+        }
+        return proceed();
+    }
+
+    bool findComponents()
+    {
+        for (const ComponentMapping &c : m_plan.components) {
+            if (!proceed())
+                return false;
+            if (c.kind == MappingKind::Existing)
+                m_live.insert(c.instanceName, ComponentProxy(c.ior, c.path));
+            else if (c.kind == MappingKind::Create)
+                create(c);
+        }
+        return proceed();
+    }
+
+    void create(const ComponentMapping &c)
+    {
+        const int step = m_steps.begin(QStringLiteral("create"), c.instanceName, c.required);
+        try {
+            if (!m_manager) {
+                if (m_options.manager.isEmpty())
+                    throw Error(Error::Kind::BadPath, QStringLiteral("no manager given"));
+                m_manager.emplace(ComponentMapper::resolveManager(m_options.manager),
+                                  m_options.manager);
+            }
+            const QString ior = m_manager->createComponent(c.createArgument);
+            const ComponentProxy proxy(ior, c.path);
+            m_live.insert(c.instanceName, proxy);
+            m_undo.append({step, [proxy] { proxy.exit(); }});
+            m_steps.finish(step, StepStatus::Done, c.createArgument);
+        } catch (const Error &e) {
+            m_steps.fail(step, e.message());
+        }
+    }
+
+    std::vector<Corba::PortInfo> ports(const QString &instance)
+    {
+        auto cached = m_ports.constFind(instance);
+        if (cached == m_ports.constEnd())
+            cached = m_ports.insert(instance, proxy(instance).ports());
+        return *cached;
+    }
+
+    bool connectAll()
+    {
+        for (const ConnectorPlan &c : m_plan.connectors) {
+            if (!proceed())
+                return false;
+            if (!c.connect) {
+                m_steps.add(QStringLiteral("connect"), c.connectorId, StepStatus::Skipped,
+                            QStringLiteral("not selected"), c.required);
+                continue;
+            }
+            const int step = m_steps.begin(QStringLiteral("connect"), c.connectorId, c.required);
+            try {
+                connect(c, step);
+            } catch (const Error &e) {
+                m_steps.fail(step, e.message());
+            }
+        }
+        return proceed();
+    }
+
+    void connect(const ConnectorPlan &c, int step)
+    {
+        if (!m_live.contains(c.sourceInstance) || !m_live.contains(c.targetInstance))
+            throw Error(
+                Error::Kind::NotFound,
+                QStringLiteral("%1 or %2 is not there").arg(c.sourceInstance, c.targetInstance));
+        const auto sourcePorts = ports(c.sourceInstance);
+        const auto targetPorts = ports(c.targetInstance);
+        const Corba::PortInfo *source = findPort(sourcePorts, c.sourcePort, c.sourceInstance);
+        const Corba::PortInfo *target = findPort(targetPorts, c.targetPort, c.targetInstance);
+        if (!source || !target)
+            throw Error(Error::Kind::NotFound,
+                        QStringLiteral("no port %1").arg(source ? c.targetPort : c.sourcePort));
+        if (const Corba::ConnectorInfo *existing = findConnector(*source, c.connectorId)) {
+            if (existing->ports.contains(target->name)) {
+                m_steps.finish(step, StepStatus::Skipped, QStringLiteral("already connected"));
+                return;
+            }
+        }
+        Corba::ConnectionRequest request;
+        request.id = c.connectorId;
+        request.name = c.name;
+        request.properties = adaptedProperties(c.properties, *source);
+        const Corba::PortInfo sourcePort = *source;
+        const QString path = proxy(c.sourceInstance).path();
+        Corba::PortConnection::connect({*source, *target}, request, path);
+        m_undo.append({step, [sourcePort, c, path] {
+                           Corba::PortConnection::disconnect(sourcePort, c.connectorId, path);
+                       }});
+        m_steps.finish(step, StepStatus::Done,
+                       QStringLiteral("%1 -> %2").arg(source->name, target->name));
+    }
+
+    // Files name data types either way (`IDL:RTC/TimedLong:1.0`, `RTC::TimedLong`); the port's
+    // spelling is what its allowed list and its peer compare against.
+    static Corba::Properties adaptedProperties(Corba::Properties properties,
+                                               const Corba::PortInfo &source)
+    {
+        const QString key = QStringLiteral("dataport.data_type");
+        const QString portType = Corba::propertyValue(source.properties, key);
+        const QString saved = Corba::propertyValue(properties, key);
+        if (!portType.isEmpty() && !saved.isEmpty() && !portType.contains(QLatin1Char(','))
+            && sameDataType(saved, portType))
+            Corba::setProperty(properties, key, portType);
+        return properties;
+    }
+
+    bool configureAll()
+    {
+        for (const auto &component : m_profile.components) {
+            if (!proceed())
+                return false;
+            if (!m_live.contains(component.instanceName))
+                continue;
+            const bool hasValues = !component.configurationSets.isEmpty();
+            if (!hasValues && !component.activeConfigurationSet)
+                continue;
+            const int step = m_steps.begin(QStringLiteral("configure"), component.instanceName,
+                                           component.isRequiredValue());
+            try {
+                configure(component, proxy(component.instanceName));
+                m_steps.finish(step, StepStatus::Done,
+                               component.activeConfigurationSet.value_or(QString()));
+            } catch (const Error &e) {
+                m_steps.fail(step, e.message());
+            }
+        }
+        return proceed();
+    }
+
+    static void configure(const Profile::RtsComponent &component, const ComponentProxy &proxy)
+    {
+        const std::vector<Corba::ConfigurationSet> live = proxy.configurationSets();
+        for (const auto &saved : component.configurationSets) {
+            Corba::ConfigurationSet set;
+            set.id = saved.id;
+            for (const auto &data : saved.data)
+                set.data.append({data.name, data.data.value_or(QString())});
+            const auto existing = std::find_if(live.begin(), live.end(),
+                                               [&](const auto &s) { return s.id == saved.id; });
+            if (existing == live.end())
+                proxy.addConfigurationSet(set);
+            else if (!set.data.isEmpty() && differs(*existing, set))
+                proxy.setConfigurationSetValues(set);
+        }
+        if (component.activeConfigurationSet && !component.activeConfigurationSet->isEmpty())
+            proxy.activateConfigurationSet(*component.activeConfigurationSet);
+    }
+
+    static bool differs(const Corba::ConfigurationSet &live, const Corba::ConfigurationSet &saved)
+    {
+        for (const auto &value : saved.data) {
+            if (!Corba::hasProperty(live.data, value.first)
+                || Corba::propertyValue(live.data, value.first) != value.second)
+                return true;
+        }
+        return false;
+    }
+
+    bool setRates()
+    {
+        for (const auto &component : m_profile.components) {
+            if (!proceed())
+                return false;
+            if (m_live.contains(component.instanceName))
+                setRates(component, proxy(component.instanceName));
+        }
+        return proceed();
+    }
+
+    void setRates(const Profile::RtsComponent &component, const ComponentProxy &proxy)
+    {
+        std::optional<std::vector<Corba::ExecutionContextInfo>> live;
+        for (const auto &ec : component.executionContexts) {
+            if (!ec.rateValue())
+                continue;
+            const QString subject = component.instanceName + QLatin1Char('.') + ec.id;
+            try {
+                if (!live)
+                    live = proxy.executionContexts();
+                const int index = ownedIndex(*live, ec.id);
+                if (index < 0 || std::abs(live->at(size_t(index)).rate - *ec.rateValue()) < 1e-9)
+                    continue;
+                const int step
+                    = m_steps.begin(QStringLiteral("rate"), subject, component.isRequiredValue());
+                try {
+                    proxy.setRate(*ec.rateValue(), index);
+                    m_steps.finish(step, StepStatus::Done, *ec.rate);
+                } catch (const Error &e) {
+                    m_steps.fail(step, e.message());
+                }
+            } catch (const Error &e) {
+                m_steps.fail(
+                    m_steps.begin(QStringLiteral("rate"), subject, component.isRequiredValue()),
+                    e.message());
+            }
+        }
+    }
+
+    // The saved EC id is the owner's handle; a non-numeric id means the only owned context.
+    static int ownedIndex(const std::vector<Corba::ExecutionContextInfo> &ecs, const QString &id)
+    {
+        bool numeric = false;
+        const int handle = id.toInt(&numeric);
+        int owned = 0;
+        for (size_t i = 0; i < ecs.size(); ++i) {
+            if (!ecs[i].owned)
+                continue;
+            ++owned;
+            if (numeric && ecs[i].handle == handle)
+                return int(i);
+        }
+        return owned == 1 && !ecs.empty() && ecs.front().owned ? 0 : -1;
+    }
+
+    void rollback()
+    {
+        for (auto it = m_undo.crbegin(); it != m_undo.crend(); ++it) {
+            try {
+                it->action();
+                m_steps.finish(it->step, StepStatus::RolledBack, QStringLiteral("undone"));
+            } catch (const Error &e) {
+                m_steps.finish(it->step, StepStatus::RolledBack,
+                               QStringLiteral("undo failed: ") + e.message());
+            }
+        }
+        m_undo.clear();
+    }
+
+    const Profile::RtsProfile &m_profile;
+    const RestorePlan &m_plan;
+    const TargetOptions &m_options;
+    StepRecorder m_steps;
+    std::optional<Corba::ManagerProxy> m_manager;
+    QHash<QString, ComponentProxy> m_live;
+    QHash<QString, std::vector<Corba::PortInfo>> m_ports;
+    QList<Undo> m_undo;
+};
+
+} // namespace
+
+DeployReport restoreSystem(const Profile::RtsProfile &profile, const RestorePlan &plan,
+                           const TargetOptions &options, const DeployControl &control)
+{
+    return RestoreRun(profile, plan, options, control).run();
+}
+
+DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &control)
+{
+    StepRecorder steps(control);
+    for (const ConnectorPlan &c : plan.connectors) {
+        if (steps.checkCancelled())
+            break;
+        const ComponentMapping *source = plan.component(c.sourceInstance);
+        if (!source || source->kind != MappingKind::Existing) {
+            steps.add(QStringLiteral("disconnect"), c.connectorId, StepStatus::Skipped,
+                      QStringLiteral("%1 is not there").arg(c.sourceInstance), false);
+            continue;
+        }
+        const int step = steps.begin(QStringLiteral("disconnect"), c.connectorId, c.required);
+        try {
+            const ComponentProxy proxy(source->ior, source->path);
+            const Corba::PortInfo port = proxy.port(shortPortName(c.sourcePort, c.sourceInstance));
+            if (!findConnector(port, c.connectorId)) {
+                steps.finish(step, StepStatus::Skipped, QStringLiteral("not connected"));
+                continue;
+            }
+            Corba::PortConnection::disconnect(port, c.connectorId, proxy.path());
+            steps.finish(step, StepStatus::Done);
+        } catch (const Error &e) {
+            steps.fail(step, e.message());
+        }
+    }
+    return steps.report();
+}
+
+} // namespace Deploy

@@ -1,0 +1,455 @@
+// SPDX-License-Identifier: MIT
+// The deployment engine against real omniNames and rtmanager processes: restore (mapping by
+// instance name, --create, rollback), teardown, start/stop order, cryo round trip and drift.
+#include "componentproxy.h"
+#include "cryo.h"
+#include "drift.h"
+#include "livesystem.h"
+#include "managerproxy.h"
+#include "namingbrowser.h"
+#include "orb.h"
+#include "profileio.h"
+#include "restorer.h"
+#include "rtsprofile.h"
+#include "sequencerunner.h"
+
+#include <QtTest>
+
+#include <memory>
+
+using namespace Deploy;
+
+namespace {
+
+Profile::RtsProfile loadSystem(const QString &file)
+{
+    Profile::Diagnostics diagnostics;
+    const auto loaded = Profile::loadProfileFile(file, &diagnostics);
+    if (!loaded || !loaded->rts)
+        qFatal("cannot read %s", qPrintable(file));
+    return *loaded->rts;
+}
+
+QString dataFile(const QString &name)
+{
+    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/") + name;
+}
+
+QStringList doneSubjects(const DeployReport &report, const QString &action)
+{
+    QStringList subjects;
+    for (const DeployStep &step : report.steps) {
+        if (step.action == action && step.status == StepStatus::Done)
+            subjects.append(step.subject);
+    }
+    return subjects;
+}
+
+const DeployStep *findStep(const DeployReport &report, const QString &action,
+                           const QString &subject)
+{
+    for (const DeployStep &step : report.steps) {
+        if (step.action == action && step.subject == subject)
+            return &step;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+class TestDeploy : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void restoresBundledExamples_data();
+    void restoresBundledExamples();
+    void dryRunPlanChangesNothing();
+    void restoreCreatesFromNothing();
+    void configurationAndRates();
+    void failedRestoreRollsBack();
+    void cancelledRestoreRollsBack();
+    void startAndStopFollowDeclaredOrder();
+    void syncTimeoutCancelsThePlan();
+    void cryoRestoreCryoGivesTheSameSystem();
+    void diffListsDrift();
+
+private:
+    TargetOptions target(bool create) const;
+    Corba::ComponentProxy live(const QString &instance) const;
+    QStringList liveInstances() const;
+    DeployReport restore(const Profile::RtsProfile &profile, bool create);
+
+    std::unique_ptr<LiveTest::LiveSystem> m_live;
+    quint16 m_managerPort = 0;
+};
+
+void TestDeploy::initTestCase()
+{
+    // Creating a component on a new slave starts a process: allow for it.
+    Corba::Orb::setCallTimeout(20000);
+}
+
+void TestDeploy::init()
+{
+    m_live = std::make_unique<LiveTest::LiveSystem>();
+    QString error;
+    QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
+    m_managerPort = LiveTest::freePort();
+    QVERIFY2(m_live->startProcess(
+                 QStringLiteral(RTMANAGER_PATH),
+                 {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_managerPort),
+                  "-o", "corba.nameservers=" + m_live->namingServer(), "-o",
+                  "naming.formats=deployhost.host_cxt/%n.rtc", "-o",
+                  "manager.naming_formats=deployhost.host_cxt/%n.mgr", "-o",
+                  "exec_cxt.periodic.rate=200"},
+                 "rtmanager ready", &error),
+             qPrintable(error));
+}
+
+void TestDeploy::cleanup()
+{
+    m_live.reset();
+}
+
+TargetOptions TestDeploy::target(bool create) const
+{
+    TargetOptions options;
+    options.nameServers = {m_live->namingServer()};
+    options.manager = QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_managerPort);
+    options.create = create;
+    return options;
+}
+
+Corba::ComponentProxy TestDeploy::live(const QString &instance) const
+{
+    const auto path = Corba::RtPath::parse(
+        QStringLiteral("/%1/deployhost.host_cxt/%2.rtc").arg(m_live->namingServer(), instance));
+    return Corba::ComponentProxy(Corba::NamingBrowser::resolve(*path), path->toString());
+}
+
+QStringList TestDeploy::liveInstances() const
+{
+    const auto found = ComponentMapper::liveComponents({"/" + m_live->namingServer()}, nullptr);
+    QStringList names = found.keys();
+    names.sort();
+    return names;
+}
+
+DeployReport TestDeploy::restore(const Profile::RtsProfile &profile, bool create)
+{
+    const TargetOptions options = target(create);
+    return restoreSystem(profile, planRestore(profile, options), options);
+}
+
+void TestDeploy::restoresBundledExamples_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::newRow("ConsoleInOut") << "ConsoleInOut/ConsoleInOut.xml";
+    QTest::newRow("SeqIO") << "SeqIO/SeqIO.xml";
+}
+
+// The examples' pathUri values are offline RTCs/x.xml files: components are found by instance name.
+void TestDeploy::restoresBundledExamples()
+{
+    QFETCH(QString, file);
+    const Profile::RtsProfile profile
+        = loadSystem(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/") + file);
+    const Corba::ManagerProxy manager(ComponentMapper::resolveManager(target(false).manager),
+                                      QStringLiteral("manager"));
+    for (const auto &component : profile.components)
+        manager.createComponent(ComponentMapper::typeNameOf(component.id)
+                                + QStringLiteral("?instance_name=") + component.instanceName);
+
+    const RestorePlan plan = planRestore(profile, target(false));
+    for (const ComponentMapping &mapping : plan.components)
+        QCOMPARE(mapping.kind, MappingKind::Existing);
+    const DeployReport report = restoreSystem(profile, plan, target(false));
+    QVERIFY2(report.ok, qPrintable(report.toText()));
+    QCOMPARE(doneSubjects(report, "connect").size(), profile.dataPortConnectors.size());
+    for (const auto &connector : profile.dataPortConnectors) {
+        const Corba::PortInfo port
+            = live(connector.source.instanceName).port(connector.source.portName.section('.', 1));
+        QCOMPARE(port.connectors.size(), size_t(1));
+        QCOMPARE(port.connectors.front().id, connector.connectorId);
+        QCOMPARE(
+            Corba::propertyValue(port.connectors.front().properties, "dataport.subscription_type"),
+            connector.subscriptionType.value_or("new"));
+        QVERIFY(!Corba::propertyValue(port.connectors.front().properties,
+                                      "dataport.corba_cdr.inport_ior")
+                     .startsWith("IOR:0000stale"));
+    }
+    // A second restore finds everything done.
+    const DeployReport again
+        = restoreSystem(profile, planRestore(profile, target(false)), target(false));
+    QVERIFY2(again.ok, qPrintable(again.toText()));
+    QVERIFY(doneSubjects(again, "connect").isEmpty());
+
+    const DeployReport teardown = teardownSystem(planRestore(profile, target(false)));
+    QVERIFY2(teardown.ok, qPrintable(teardown.toText()));
+    QCOMPARE(doneSubjects(teardown, "disconnect").size(), profile.dataPortConnectors.size());
+    for (const auto &connector : profile.dataPortConnectors)
+        QVERIFY(live(connector.source.instanceName)
+                    .port(connector.source.portName.section('.', 1))
+                    .connectors.empty());
+}
+
+void TestDeploy::dryRunPlanChangesNothing()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("ordered.xml"));
+    const RestorePlan missing = planRestore(profile, target(false));
+    QCOMPARE(missing.missingRequired().size(), 3);
+    const RestorePlan plan = planRestore(profile, target(true));
+    QVERIFY(plan.missingRequired().isEmpty());
+    const QString text = plan.toText();
+    QVERIFY2(text.contains("component Src0 create (ConsoleIn?instance_name=Src0"
+                           "&exec_cxt.periodic.rate=200)"),
+             qPrintable(text));
+    QVERIFY2(text.contains("connect conn-src-mid Src0.out -> Mid0.in"), qPrintable(text));
+    QVERIFY(liveInstances().isEmpty());
+    // Without --create a missing required component fails before anything is done.
+    const DeployReport report = restoreSystem(profile, missing, target(false));
+    QVERIFY(!report.ok);
+    QVERIFY2(report.error.startsWith("find Src0"), qPrintable(report.error));
+    QVERIFY(doneSubjects(report, "connect").isEmpty());
+}
+
+void TestDeploy::restoreCreatesFromNothing()
+{
+    const Profile::RtsProfile profile
+        = loadSystem(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/"
+                                                        "ConsoleInOut.xml"));
+    QList<DeployStep> progress;
+    DeployControl control;
+    control.progress = [&](const DeployStep &step) { progress.append(step); };
+    const TargetOptions options = target(true);
+    const DeployReport report
+        = restoreSystem(profile, planRestore(profile, options), options, control);
+    QVERIFY2(report.ok, qPrintable(report.toText()));
+    QCOMPARE(doneSubjects(report, "create"), QStringList({"ConsoleIn0", "ConsoleOut0"}));
+    QCOMPARE(liveInstances(), QStringList({"ConsoleIn0", "ConsoleOut0"}));
+    // Every step was announced running, then finished.
+    QCOMPARE(progress.first().status, StepStatus::Running);
+    QCOMPARE(progress.size(), report.steps.size() * 2);
+    const auto ecs = live("ConsoleIn0").executionContexts();
+    QCOMPARE(ecs.front().rate, 1000.0);
+    QCOMPARE(live("ConsoleIn0").port("out").connectors.front().id,
+             profile.dataPortConnectors.front().connectorId);
+}
+
+void TestDeploy::configurationAndRates()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("configured.xml"));
+    const DeployReport report = restore(profile, true);
+    QVERIFY2(report.ok, qPrintable(report.toText()));
+    // The optional component of an unknown type fails without failing the restore.
+    const DeployStep *optional = findStep(report, "create", "Opt0");
+    QVERIFY(optional);
+    QCOMPARE(optional->status, StepStatus::Failed);
+    const Corba::ComponentProxy conf = live("Conf0");
+    QCOMPARE(conf.activeConfigurationSet(), QString("mode0"));
+    QCOMPARE(conf.parameter("default", "int_param0"), QString("7"));
+    QCOMPARE(conf.parameter("mode0", "str_param0"), QString("restored"));
+    QCOMPARE(conf.parameter("mode0", "int_param1"), QString("-12345"));
+    QCOMPARE(conf.parameter("extra", "int_param0"), QString("42"));
+    QCOMPARE(conf.executionContexts().front().rate, 50.0);
+
+    // A rate changed afterwards is set back by the next restore.
+    conf.setRate(20.0);
+    const DeployReport again = restore(profile, false);
+    QVERIFY2(again.ok, qPrintable(again.toText()));
+    QCOMPARE(doneSubjects(again, "rate"), QStringList({"Conf0.0"}));
+    QCOMPARE(conf.executionContexts().front().rate, 50.0);
+}
+
+void TestDeploy::failedRestoreRollsBack()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("broken.xml"));
+    const DeployReport report = restore(profile, true);
+    QVERIFY(!report.ok);
+    QVERIFY2(report.error.startsWith("connect conn-bad"), qPrintable(report.error));
+    QVERIFY2(report.error.contains("nosuchport"), qPrintable(report.error));
+    const QList<DeployStep> undone = report.stepsWith(StepStatus::RolledBack);
+    QStringList subjects;
+    for (const DeployStep &step : undone)
+        subjects.append(step.action + ' ' + step.subject);
+    QCOMPARE(subjects, QStringList({"create Src0", "create Sink0", "connect conn-good"}));
+    QTRY_VERIFY(liveInstances().isEmpty());
+}
+
+void TestDeploy::cancelledRestoreRollsBack()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("ordered.xml"));
+    std::atomic_bool cancel {false};
+    DeployControl control;
+    control.cancel = &cancel;
+    // Cancel as soon as the connection is made: the restore must undo it and the creations.
+    control.progress = [&](const DeployStep &step) {
+        if (step.action == "connect" && step.status == StepStatus::Done)
+            cancel = true;
+    };
+    const TargetOptions options = target(true);
+    const DeployReport report
+        = restoreSystem(profile, planRestore(profile, options), options, control);
+    QVERIFY(!report.ok);
+    QVERIFY(report.cancelled);
+    QCOMPARE(report.stepsWith(StepStatus::RolledBack).size(), 4);
+    QTRY_VERIFY(liveInstances().isEmpty());
+}
+
+void TestDeploy::startAndStopFollowDeclaredOrder()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("ordered.xml"));
+    QVERIFY2(restore(profile, true).ok, "restore");
+    const RestorePlan plan = planRestore(profile, target(false));
+    // When Mid0 (SYNC on Src0) is sent, Src0 must already be active.
+    Corba::LifeCycleState srcWhenMidSent = Corba::LifeCycleState::Unknown;
+    DeployControl control;
+    control.progress = [&](const DeployStep &step) {
+        if (step.action == "activate" && step.subject == "Mid0.0"
+            && step.status == StepStatus::Running)
+            srcWhenMidSent = live("Src0").state();
+    };
+    const DeployReport started = startSystem(profile, plan, control);
+    QVERIFY2(started.ok, qPrintable(started.toText()));
+    QCOMPARE(doneSubjects(started, "activate"), QStringList({"Sink0.0", "Src0.0", "Mid0.0"}));
+    QCOMPARE(srcWhenMidSent, Corba::LifeCycleState::Active);
+    const DeployStep *sink = findStep(started, "activate", "Sink0.0");
+    const DeployStep *src = findStep(started, "activate", "Src0.0");
+    const DeployStep *wait = findStep(started, "wait", "Src0");
+    QVERIFY(sink && src && wait);
+    QVERIFY2(src->elapsedMs - sink->elapsedMs >= 300, qPrintable(started.toText()));
+    for (const char *name : {"Src0", "Mid0", "Sink0"})
+        QCOMPARE(live(name).state(), Corba::LifeCycleState::Active);
+    // Starting again finds everything active.
+    const DeployReport again = startSystem(profile, plan);
+    QVERIFY(again.ok);
+    QCOMPARE(again.stepsWith(StepStatus::Skipped).size(), 3);
+
+    const DeployReport stopped = stopSystem(profile, plan);
+    QVERIFY2(stopped.ok, qPrintable(stopped.toText()));
+    QCOMPARE(doneSubjects(stopped, "deactivate"), QStringList({"Src0.0", "Mid0.0", "Sink0.0"}));
+    const DeployStep *mid = findStep(stopped, "deactivate", "Mid0.0");
+    const DeployStep *last = findStep(stopped, "deactivate", "Sink0.0");
+    QVERIFY(last->elapsedMs - mid->elapsedMs >= 100);
+    for (const char *name : {"Src0", "Mid0", "Sink0"})
+        QCOMPARE(live(name).state(), Corba::LifeCycleState::Inactive);
+}
+
+void TestDeploy::syncTimeoutCancelsThePlan()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("synctimeout.xml"));
+    QVERIFY2(restore(profile, true).ok, "restore");
+    QElapsedTimer timer;
+    timer.start();
+    const DeployReport report = startSystem(profile, planRestore(profile, target(false)));
+    QVERIFY(!report.ok);
+    QVERIFY2(report.error.contains("Src0 did not activate within 200 ms"),
+             qPrintable(report.toText()));
+    QVERIFY(timer.elapsed() >= 200);
+    QVERIFY(doneSubjects(report, "activate").isEmpty());
+    QCOMPARE(live("Src0").state(), Corba::LifeCycleState::Inactive);
+    QCOMPARE(live("Mid0").state(), Corba::LifeCycleState::Inactive);
+}
+
+void TestDeploy::cryoRestoreCryoGivesTheSameSystem()
+{
+    QVERIFY(restore(loadSystem(dataFile("ordered.xml")), true).ok);
+    QVERIFY(restore(loadSystem(dataFile("configured.xml")), true).ok);
+    CryoOptions options;
+    options.name = "Frozen";
+    options.vendor = "Test";
+    options.paths = {"/" + m_live->namingServer()};
+    DeployReport report;
+    Profile::RtsProfile first = cryoSystem(options, &report);
+    QVERIFY2(report.ok, qPrintable(report.toText()));
+    QCOMPARE(first.id, QString("RTSystem:Test:Frozen:1.0"));
+    QCOMPARE(first.components.size(), 4);
+    QCOMPARE(first.dataPortConnectors.size(), 1);
+    const auto &connector = first.dataPortConnectors.front();
+    QCOMPARE(connector.connectorId, QString("conn-src-mid"));
+    QCOMPARE(connector.source.instanceName, QString("Src0"));
+    QCOMPARE(Profile::rtsPropertyValue(connector.properties, "dataport.inport.buffer.length"),
+             std::optional<QString>("16"));
+    for (const auto &property : connector.properties)
+        QVERIFY2(!isIorKey(property.name), qPrintable(property.name));
+    const Profile::RtsComponent *conf = first.component("Conf0");
+    QVERIFY(conf);
+    QCOMPARE(conf->activeConfigurationSet, std::optional<QString>("mode0"));
+    QVERIFY(std::any_of(conf->configurationSets.begin(), conf->configurationSets.end(),
+                        [](const auto &set) { return set.id == "__widget__"; }));
+
+    // Written and read back, then restored onto a fresh system and saved again: the same.
+    Profile::Diagnostics diagnostics;
+    const auto reread = Profile::loadProfileData(
+        Profile::serializeRtsProfile(first, Profile::FileFormat::Xml), "frozen.xml", &diagnostics);
+    QVERIFY(reread && reread->rts);
+    const QString firstServer = m_live->namingServer();
+    cleanup();
+    init();
+    QVERIFY(liveInstances().isEmpty());
+    options.paths = {"/" + m_live->namingServer()};
+    const DeployReport restored = restore(*reread->rts, true);
+    QVERIFY2(restored.ok, qPrintable(restored.toText()));
+    Profile::RtsProfile second = cryoSystem(options, &report);
+    QVERIFY2(report.ok, qPrintable(report.toText()));
+    // What may differ: dates, the IORs and the name server's address of each run.
+    auto normalise = [](Profile::RtsProfile &profile, const QString &server) {
+        profile.creationDate.clear();
+        profile.updateDate.clear();
+        for (auto &component : profile.components) {
+            component.properties.clear();
+            component.pathUri.replace(server, "NS");
+        }
+        for (auto &connector : profile.dataPortConnectors) {
+            for (auto *end : {&connector.source, &connector.target}) {
+                for (auto &property : end->properties)
+                    property.value = property.value->replace(server, "NS");
+            }
+        }
+    };
+    normalise(first, firstServer);
+    normalise(second, m_live->namingServer());
+    QCOMPARE(second.components.size(), first.components.size());
+    for (int i = 0; i < first.components.size(); ++i)
+        QVERIFY2(first.components.at(i) == second.components.at(i),
+                 qPrintable(first.components.at(i).instanceName));
+    QVERIFY(first.dataPortConnectors == second.dataPortConnectors);
+    QVERIFY(first == second);
+}
+
+void TestDeploy::diffListsDrift()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("ordered.xml"));
+    const Profile::RtsProfile configured = loadSystem(dataFile("configured.xml"));
+    QVERIFY(restore(profile, true).ok);
+    QVERIFY(restore(configured, true).ok);
+    QVERIFY(diffSystem(profile, planRestore(profile, target(false))).isEmpty());
+    QVERIFY(teardownSystem(planRestore(profile, target(false))).ok);
+    live("Sink0").exit();
+    QTRY_VERIFY(!liveInstances().contains("Sink0"));
+    QStringList lines;
+    for (const DriftItem &item : diffSystem(profile, planRestore(profile, target(false))))
+        lines.append(item.toString());
+    QCOMPARE(lines.size(), 2);
+    QVERIFY2(lines.at(0).startsWith("missing component Sink0"), qPrintable(lines.at(0)));
+    QCOMPARE(lines.at(1), QString("missing connector conn-src-mid: saved 'Src0.out -> Mid0.in'"));
+
+    live("Conf0").setParameter("default", "int_param0", "8");
+    live("Conf0").activateConfigurationSet("default");
+    lines.clear();
+    for (const DriftItem &item : diffSystem(configured, planRestore(configured, target(false))))
+        lines.append(item.toString());
+    QCOMPARE(lines,
+             QStringList({"configuration Conf0.default.int_param0: saved '7', live '8'",
+                          "active set Conf0: saved 'mode0', live 'default'",
+                          "missing component Opt0: saved 'RTC:AIST:example:NoSuchType:2.0.0', "
+                          "live 'no live component named Opt0'"}));
+}
+
+QTEST_GUILESS_MAIN(TestDeploy)
+#include "tst_deploy.moc"

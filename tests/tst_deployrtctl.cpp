@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+// rtctl resurrect / start / stop / diff / cryo / teardown run as a user would, against omniNames
+// and rtmanager, with the bundled ConsoleInOut example.
+#include "livesystem.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+class TestDeployRtctl : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void wholeLifeCycle();
+    void usageErrors_data();
+    void usageErrors();
+    void failedResurrectRollsBack();
+
+private:
+    struct Result
+    {
+        int code = -1;
+        QString out;
+        QString err;
+        QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
+    };
+    Result rtctl(const QStringList &arguments);
+    QString manager() const { return QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_managerPort); }
+
+    LiveTest::LiveSystem m_live;
+    quint16 m_managerPort = 0;
+    const QString m_example
+        = QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml");
+};
+
+TestDeployRtctl::Result TestDeployRtctl::rtctl(const QStringList &arguments)
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("RTCTREE_NAMESERVERS"), m_live.namingServer());
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(RTCTL_PATH), arguments);
+    Result result;
+    if (!process.waitForFinished(60000)) {
+        process.kill();
+        process.waitForFinished();
+        return result;
+    }
+    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    result.out = QString::fromUtf8(process.readAllStandardOutput());
+    result.err = QString::fromUtf8(process.readAllStandardError());
+    return result;
+}
+
+void TestDeployRtctl::initTestCase()
+{
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    m_managerPort = LiveTest::freePort();
+    QVERIFY2(m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+                                 {"-d", "-o",
+                                  QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_managerPort),
+                                  "-o", "corba.nameservers=" + m_live.namingServer(), "-o",
+                                  "naming.formats=clihost.host_cxt/%n.rtc", "-o",
+                                  "manager.naming_formats=clihost.host_cxt/%n.mgr"},
+                                 "rtmanager ready", &error),
+             qPrintable(error));
+}
+
+void TestDeployRtctl::wholeLifeCycle()
+{
+    const Result plan = rtctl({"resurrect", "--create", "--dry-run", "-m", manager(), m_example});
+    QCOMPARE(plan.code, 0);
+    QVERIFY2(plan.out.contains("component ConsoleIn0 create (ConsoleIn?instance_name=ConsoleIn0"),
+             qPrintable(plan.out));
+    const Result noCreate = rtctl({"resurrect", "--dry-run", m_example});
+    QCOMPARE(noCreate.code, 1);
+    QVERIFY(noCreate.out.contains("component ConsoleIn0 missing"));
+
+    const Result created = rtctl({"resurrect", "--create", "-m", manager(), m_example});
+    QVERIFY2(created.code == 0, qPrintable(created.out + created.err));
+    QVERIFY(created.lines().contains("done create ConsoleIn0: ConsoleIn?instance_name=ConsoleIn0"
+                                     "&exec_cxt.periodic.rate=1000"));
+    QVERIFY(created.out.contains("done connect 6aa42771-908e-5b82-99ff-f41ebf13c242"));
+    QCOMPARE(rtctl({"diff", m_example}).code, 0);
+
+    const Result started = rtctl({"start", m_example});
+    QVERIFY2(started.code == 0, qPrintable(started.out + started.err));
+    QCOMPARE(started.lines(),
+             QStringList({"done activate ConsoleOut0.0", "done activate ConsoleIn0.0"}));
+    const Result stopped = rtctl({"stop", m_example});
+    QCOMPARE(stopped.lines(),
+             QStringList({"done deactivate ConsoleIn0.0", "done deactivate ConsoleOut0.0"}));
+
+    QTemporaryDir dir;
+    const QString frozen = dir.filePath("frozen.rtsys.xml");
+    const Result cryo = rtctl({"cryo", "-n", "Frozen", "-e", "Test", "-o", frozen});
+    QVERIFY2(cryo.code == 0, qPrintable(cryo.err));
+    QFile file(frozen);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray xml = file.readAll();
+    QVERIFY(xml.contains("rts:id=\"RTSystem:Test:Frozen:1.0\""));
+    QVERIFY(xml.contains("rts:connectorId=\"6aa42771-908e-5b82-99ff-f41ebf13c242\""));
+    QVERIFY(!xml.contains("inport_ior"));
+    QCOMPARE(rtctl({"diff", frozen}).code, 0);
+
+    const Result teardown = rtctl({"teardown", m_example});
+    QCOMPARE(teardown.code, 0);
+    QCOMPARE(teardown.lines(),
+             QStringList({"done disconnect 6aa42771-908e-5b82-99ff-f41ebf13c242"}));
+    const Result drift = rtctl({"diff", m_example});
+    QCOMPARE(drift.code, 1);
+    QCOMPARE(drift.lines(),
+             QStringList({"missing connector 6aa42771-908e-5b82-99ff-f41ebf13c242:"
+                          " saved 'ConsoleIn0.out -> ConsoleOut0.in'"}));
+    // Restoring again (without --create) finds the components and connects again.
+    const Result again = rtctl({"resurrect", m_example});
+    QVERIFY2(again.code == 0, qPrintable(again.out + again.err));
+    QCOMPARE(rtctl({"diff", m_example}).code, 0);
+    QCOMPARE(rtctl({"teardown", m_example}).code, 0);
+}
+
+void TestDeployRtctl::usageErrors_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no file") << QStringList {"resurrect"} << "expected one FILE";
+    QTest::newRow("create without manager")
+        << QStringList {"resurrect", "--create", "x.xml"} << "--create needs -m MANAGER";
+    QTest::newRow("bad host manager")
+        << QStringList {"start", "--host-manager", "nohost", "x.xml"} << "HOST=ADDRESS";
+    QTest::newRow("dry run is resurrect's")
+        << QStringList {"stop", "--dry-run", "x.xml"} << "unknown option --dry-run";
+}
+
+void TestDeployRtctl::usageErrors()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    const Result result = rtctl(arguments);
+    QCOMPARE(result.code, 2);
+    QVERIFY2(result.err.contains(message), qPrintable(result.err));
+}
+
+void TestDeployRtctl::failedResurrectRollsBack()
+{
+    const Result result = rtctl({"resurrect", "--create", "-m", manager(),
+                                 QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/broken.xml")});
+    QCOMPARE(result.code, 1);
+    QVERIFY2(result.err.contains("rtctl resurrect: connect conn-bad:"), qPrintable(result.err));
+    QVERIFY(result.lines().contains("rolled back connect conn-good: undone"));
+    QVERIFY(result.lines().contains("rolled back create Src0: undone"));
+    // The created components are gone again (their manager unbinds them as they exit).
+    QTRY_VERIFY(rtctl({"resurrect", "--dry-run",
+                       QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/broken.xml")})
+                    .out.contains("component Src0 missing"));
+}
+
+QTEST_GUILESS_MAIN(TestDeployRtctl)
+#include "tst_deployrtctl.moc"
