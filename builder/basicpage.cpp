@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "basicpage.h"
 
+#include "builderfieldrules.h"
 #include "componentcommands.h"
 #include "componentrules.h"
-#include "builderfieldrules.h"
 
 #include <QComboBox>
 #include <QFormLayout>

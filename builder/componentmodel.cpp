@@ -252,6 +252,7 @@ int ComponentModel::indexOf(Part part, const QString &name) const
 void ComponentModel::insertItem(Part part, int index, const PartItem &item)
 {
     const int at = qBound(0, index, itemCount(part));
+    emit itemAboutToBeInserted(part, at);
     withList(m_profile, part, [&](auto &list) {
         list.insert(at, std::get<Element<decltype(list)>>(item));
         return 0;
@@ -292,6 +293,7 @@ void ComponentModel::moveItem(Part part, int from, int to)
     const int count = itemCount(part);
     if (from == to || from < 0 || to < 0 || from >= count || to >= count)
         return;
+    emit itemAboutToBeMoved(part, from, to);
     withList(m_profile, part, [from, to](auto &list) {
         list.move(from, to);
         return 0;

@@ -104,10 +104,14 @@ signals:
     void componentDocChanged();
     void languageChanged();
 
+    /// Before an element is inserted at `index` (views that address elements by position
+    /// adjust here, before any other view reacts to the insertion).
+    void itemAboutToBeInserted(Builder::Part part, int index);
     void itemInserted(Builder::Part part, int index, const QString &name);
     void itemAboutToBeRemoved(Builder::Part part, int index, const QString &name);
     void itemRemoved(Builder::Part part, int index, const QString &name);
     void itemChanged(Builder::Part part, int index, const QString &oldName, const QString &name);
+    void itemAboutToBeMoved(Builder::Part part, int from, int to);
     void itemMoved(Builder::Part part, int from, int to, const QString &name);
 
     void profileAboutToBeReset();

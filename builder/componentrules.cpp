@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "componentrules.h"
 
-#include "constraintsyntax.h"
 #include "builderfieldrules.h"
+#include "constraintsyntax.h"
 #include "rtcvalidator.h"
 
 #include <QCoreApplication>

@@ -45,12 +45,14 @@ ItemForm::ItemForm(ComponentModel *model, QUndoStack *undoStack, Part part, QWid
 
 void ItemForm::followListChanges()
 {
-    // The form addresses its element by position: keep pointing at the same one.
-    connect(m_model, &ComponentModel::itemInserted, this, [this](Part part, int index) {
+    // The form addresses its element by position: keep pointing at the same one. This happens
+    // before the change, so a list view that makes another element current afterwards passes
+    // positions that are already right.
+    connect(m_model, &ComponentModel::itemAboutToBeInserted, this, [this](Part part, int index) {
         if (part == m_part && m_index >= 0 && index <= m_index)
             ++m_index;
     });
-    connect(m_model, &ComponentModel::itemRemoved, this, [this](Part part, int index) {
+    connect(m_model, &ComponentModel::itemAboutToBeRemoved, this, [this](Part part, int index) {
         if (part != m_part || m_index < 0)
             return;
         if (index == m_index)
@@ -58,16 +60,17 @@ void ItemForm::followListChanges()
         else if (index < m_index)
             --m_index;
     });
-    connect(m_model, &ComponentModel::itemMoved, this, [this](Part part, int from, int to) {
-        if (part != m_part || m_index < 0)
-            return;
-        if (m_index == from)
-            m_index = to;
-        else if (from < m_index && to >= m_index)
-            --m_index;
-        else if (from > m_index && to <= m_index)
-            ++m_index;
-    });
+    connect(m_model, &ComponentModel::itemAboutToBeMoved, this,
+            [this](Part part, int from, int to) {
+                if (part != m_part || m_index < 0)
+                    return;
+                if (m_index == from)
+                    m_index = to;
+                else if (from < m_index && to >= m_index)
+                    --m_index;
+                else if (from > m_index && to <= m_index)
+                    ++m_index;
+            });
     connect(m_model, &ComponentModel::profileReset, this, [this] { m_index = -1; });
 }
 

@@ -27,10 +27,8 @@ ItemTableModel::ItemTableModel(ComponentModel *model, QUndoStack *undoStack, Par
             [this](Part p, int index) { onRemoved(p, index); });
     connect(model, &ComponentModel::itemChanged, this,
             [this](Part p, int index) { onChanged(p, index); });
-    connect(model, &ComponentModel::itemMoved, this, [this](Part p) {
-        if (p == m_part)
-            onMovedOrReset();
-    });
+    connect(model, &ComponentModel::itemMoved, this,
+            [this](Part p, int from, int to) { onMoved(p, from, to); });
     connect(model, &ComponentModel::profileAboutToBeReset, this, [this] { beginResetModel(); });
     connect(model, &ComponentModel::profileReset, this, [this] {
         rebuild();
@@ -203,11 +201,33 @@ void ItemTableModel::onChanged(Part part, int index)
     }
 }
 
-void ItemTableModel::onMovedOrReset()
+void ItemTableModel::onMoved(Part part, int from, int to)
 {
-    beginResetModel();
+    if (part != m_part)
+        return;
+    // A layout change, not a reset, so that selections and the current row follow the element.
+    const auto moved = [from, to](int position) {
+        if (position == from)
+            return to;
+        if (from < position && position <= to)
+            return position - 1;
+        if (to <= position && position < from)
+            return position + 1;
+        return position;
+    };
+    emit layoutAboutToBeChanged();
+    const QModelIndexList before = persistentIndexList();
+    QList<int> items;
+    for (const QModelIndex &index : before)
+        items << m_rows.value(index.row(), -1);
     rebuild();
-    endResetModel();
+    QModelIndexList after;
+    for (int i = 0; i < before.size(); ++i) {
+        const int row = int(m_rows.indexOf(moved(items.at(i))));
+        after << (row >= 0 ? index(row, before.at(i).column()) : QModelIndex());
+    }
+    changePersistentIndexList(before, after);
+    emit layoutChanged();
 }
 
 } // namespace Builder

@@ -49,7 +49,7 @@ private:
     void onAboutToBeRemoved(Part part, int index);
     void onRemoved(Part part, int index);
     void onChanged(Part part, int index);
-    void onMovedOrReset();
+    void onMoved(Part part, int from, int to);
     void shift(int from, int delta);
     bool accepts(int index) const;
 

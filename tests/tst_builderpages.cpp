@@ -92,6 +92,7 @@ private slots:
     void duplicatePortNameIsMarkedWithReason();
     void previewPutsPortsOnTheirSides();
     void addingAPortSelectsIt();
+    void formKeepsItsPortWhenOthersComeAndGo();
     void undoReachesAcrossPages();
     void activityCheckAndDescription();
     void configurationConstraintErrorIsShownNotStored();
@@ -228,6 +229,37 @@ void TestBuilderPages::addingAPortSelectsIt()
     QCOMPARE(page->outPorts()->table()->rowCount(), 2);
     QCOMPARE(e.stack.count(), 3);
     QCOMPARE(e.stack.undoText(), QStringLiteral("Remove data port out1"));
+}
+
+void TestBuilderPages::formKeepsItsPortWhenOthersComeAndGo()
+{
+    Editor e;
+    auto *page = e.page<DataPortsPage>("Data Ports");
+    page->inPorts()->selectItem(2); // "speed"
+    QCOMPARE(page->form()->currentIndex(), 2);
+    auto *name = qobject_cast<QLineEdit *>(page->form()->editor(QStringLiteral("name")));
+    Profile::RtcDataPort out;
+    out.name = QStringLiteral("first");
+    out.portType = QStringLiteral("DataOutPort");
+    e.model.insertItem(Part::DataPort, 0, out); // not in this table
+    QCOMPARE(page->form()->currentIndex(), 3);
+    QCOMPARE(name->text(), QStringLiteral("speed"));
+    Profile::RtcDataPort in = out;
+    in.name = QStringLiteral("early");
+    in.portType = QStringLiteral("DataInPort");
+    e.model.insertItem(Part::DataPort, 0, in); // a row of this table, in front
+    QCOMPARE(page->form()->currentIndex(), 4);
+    QCOMPARE(page->inPorts()->currentItem(), 4);
+    QCOMPARE(name->text(), QStringLiteral("speed"));
+    e.model.moveItem(Part::DataPort, 4, 0);
+    QCOMPARE(page->form()->currentIndex(), 0);
+    QCOMPARE(page->inPorts()->currentItem(), 0);
+    QCOMPARE(name->text(), QStringLiteral("speed"));
+    // Removing it makes the table's next row current, and the form shows that one.
+    e.model.removeItem(Part::DataPort, 0);
+    QCOMPARE(page->inPorts()->currentItem(), 0);
+    QCOMPARE(page->form()->currentIndex(), 0);
+    QCOMPARE(name->text(), QStringLiteral("early"));
 }
 
 void TestBuilderPages::undoReachesAcrossPages()
