@@ -15,6 +15,8 @@
 
 #include <QtTest>
 
+#include <csignal>
+
 #include <memory>
 
 using namespace Deploy;
@@ -73,6 +75,7 @@ private slots:
     void configurationAndRates();
     void failedRestoreRollsBack();
     void cancelledRestoreRollsBack();
+    void slaveKilledMidRestoreRollsBack();
     void startAndStopFollowDeclaredOrder();
     void syncTimeoutCancelsThePlan();
     void cryoRestoreCryoGivesTheSameSystem();
@@ -298,6 +301,47 @@ void TestDeploy::cancelledRestoreRollsBack()
     QVERIFY(!report.ok);
     QVERIFY(report.cancelled);
     QCOMPARE(report.stepsWith(StepStatus::RolledBack).size(), 4);
+    QTRY_VERIFY(liveInstances().isEmpty());
+}
+
+// Mid0 and Sink0 are saved under another host, whose manager the master starts as a slave; the
+// slave dies just before the connection is made.
+void TestDeploy::slaveKilledMidRestoreRollsBack()
+{
+    Profile::RtsProfile profile = loadSystem(dataFile("ordered.xml"));
+    for (const char *name : {"Mid0", "Sink0"})
+        profile.component(name)->pathUri
+            = QStringLiteral("%1/hostB.host_cxt/%2.rtc").arg(m_live->namingServer(), name);
+    TargetOptions options = target(true);
+    options.hostManagers.insert("hostB", QStringLiteral("127.0.0.1:%1").arg(LiveTest::freePort()));
+    const RestorePlan plan = planRestore(profile, options);
+    QVERIFY2(plan.component("Mid0")->createArgument.contains("&manager_address=127.0.0.1:"),
+             qPrintable(plan.toText()));
+    const Corba::ManagerProxy master(ComponentMapper::resolveManager(options.manager), "master");
+    qint64 killed = 0;
+    DeployControl control;
+    control.progress = [&](const DeployStep &step) {
+        if (step.action != "connect" || step.status != StepStatus::Running)
+            return;
+        const QStringList slaves = master.slaveManagers();
+        if (slaves.size() != 1)
+            return;
+        killed = Corba::propertyValue(Corba::ManagerProxy(slaves.first(), "slave").profile(), "pid")
+                     .toLongLong();
+        if (killed > 0)
+            ::kill(pid_t(killed), SIGKILL);
+    };
+    const DeployReport report = restoreSystem(profile, plan, options, control);
+    QVERIFY(killed > 0);
+    QVERIFY(!report.ok);
+    QVERIFY2(report.error.startsWith("connect conn-src-mid"), qPrintable(report.toText()));
+    const QList<DeployStep> undone = report.stepsWith(StepStatus::RolledBack);
+    QCOMPARE(undone.size(), 3);
+    // The master's component is undone; the slave's died with it and say so.
+    const DeployStep *src = findStep(report, "create", "Src0");
+    QCOMPARE(src->message, QString("undone"));
+    QVERIFY2(findStep(report, "create", "Mid0")->message.startsWith("undo failed"),
+             qPrintable(report.toText()));
     QTRY_VERIFY(liveInstances().isEmpty());
 }
 
