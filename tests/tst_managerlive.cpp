@@ -109,6 +109,7 @@ private slots:
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
     void startupKeys();
+    void commandLine();
     void shutdownWithoutComponents_data();
     void shutdownWithoutComponents();
 
@@ -525,6 +526,30 @@ void TestManagerLive::startupKeys()
     QCOMPARE(pre->length(), CORBA::ULong(1));
     CORBA::Object_var named = resolve(localHost() + ".host_cxt/other.mgr");
     QVERIFY(!CORBA::is_nil(named));
+}
+
+void TestManagerLive::commandLine()
+{
+    // -d makes a master, -p picks its port; unknown arguments and unreadable files are refused.
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QProcess *master = m_live->startProcess(QStringLiteral(RTMANAGER_PATH),
+                                            {"-d", "-p", QString::number(port), "-o", "naming.enable=NO"},
+                                            QString("rtmanager ready on 127.0.0.1:%1").arg(port), &error);
+    QVERIFY2(master, qPrintable(error));
+    CORBA::Object_var object =
+        m_orb->string_to_object(QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8().constData());
+    RTM::Manager_var manager = RTM::Manager::_narrow(object);
+    QVERIFY(manager->is_master());
+
+    for (const QStringList &bad : {QStringList{"--bogus"}, QStringList{"-f", "/nonexistent/rtc.conf"},
+                                   QStringList{"-o", "novalue"}}) {
+        QProcess refused;
+        refused.start(QStringLiteral(RTMANAGER_PATH), bad);
+        QVERIFY(refused.waitForFinished(10000));
+        QCOMPARE(refused.exitCode(), 2);
+        QVERIFY(!refused.readAllStandardError().isEmpty());
+    }
 }
 
 void TestManagerLive::shutdownWithoutComponents_data()
