@@ -76,6 +76,8 @@ private slots:
     void failedRestoreRollsBack();
     void cancelledRestoreRollsBack();
     void slaveKilledMidRestoreRollsBack();
+    void conformanceSystemsFailCleanly_data();
+    void conformanceSystemsFailCleanly();
     void startAndStopFollowDeclaredOrder();
     void syncTimeoutCancelsThePlan();
     void cryoRestoreCryoGivesTheSameSystem();
@@ -342,6 +344,39 @@ void TestDeploy::slaveKilledMidRestoreRollsBack()
     QCOMPARE(src->message, QString("undone"));
     QVERIFY2(findStep(report, "create", "Mid0")->message.startsWith("undo failed"),
              qPrintable(report.toText()));
+    QTRY_VERIFY(liveInstances().isEmpty());
+}
+
+void TestDeploy::conformanceSystemsFailCleanly_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::newRow("openrtp") << "openrtp_test.xml";
+    QTest::newRow("rtsprofile xml") << "rtsprofile_rtsystem.xml";
+    QTest::newRow("rtsprofile yaml") << "rtsprofile_rtsystem.yaml";
+}
+
+// The OpenRTP/rtsprofile samples use component types no manager here provides: the plan says so,
+// and a restore with --create fails on the first required creation, leaving nothing behind.
+void TestDeploy::conformanceSystemsFailCleanly()
+{
+    QFETCH(QString, file);
+    const QString path = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/rts/") + file;
+    if (!QFileInfo::exists(path))
+        QSKIP("conformance folder absent");
+    const Profile::RtsProfile profile = loadSystem(path);
+    const RestorePlan plan = planRestore(profile, target(false));
+    QCOMPARE(plan.components.size(), profile.components.size());
+    for (const ComponentMapping &mapping : plan.components)
+        QCOMPARE(mapping.kind, MappingKind::Missing);
+    const bool anyRequired = std::any_of(profile.components.begin(), profile.components.end(),
+                                         [](const auto &c) { return c.isRequiredValue(); });
+    const DeployReport report = restore(profile, true);
+    // Optional components' failures are reported but not fatal.
+    QCOMPARE(report.ok, !anyRequired);
+    QVERIFY(!report.stepsWith(StepStatus::Failed).isEmpty());
+    if (anyRequired)
+        QVERIFY2(report.error.startsWith("create "), qPrintable(report.toText()));
+    QVERIFY(doneSubjects(report, "connect").isEmpty());
     QTRY_VERIFY(liveInstances().isEmpty());
 }
 
