@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "diagramexport.h"
 #include "mainwindow.h"
 #include "rtstudioresources.h"
 
@@ -6,8 +7,45 @@
 #include <QCommandLineParser>
 #include <QIcon>
 
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+/// True when the command line asks for a headless export, which must not need a display.
+bool wantsHeadlessExport(int argc, char *argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        if (std::strncmp(argv[i], "--export-diagram", 16) == 0)
+            return true;
+    }
+    return false;
+}
+
+/// `--export-diagram SYSTEM --output OUT`: 0 on success, 1 with a message on failure.
+int exportDiagram(const QCommandLineParser &parser, const QCommandLineOption &output)
+{
+    const QString system = parser.value(QStringLiteral("export-diagram"));
+    if (!parser.isSet(output)) {
+        std::fprintf(stderr, "%s\n",
+                     qPrintable(QApplication::translate(
+                         "main", "--export-diagram needs --output OUT.png or OUT.svg")));
+        return 1;
+    }
+    QString error;
+    if (!SystemEditor::DiagramExport::exportSystemFile(system, parser.value(output), &error)) {
+        std::fprintf(stderr, "%s\n", qPrintable(error));
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
 int main(int argc, char *argv[])
 {
+    if (wantsHeadlessExport(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RtStudio"));
     QApplication::setApplicationName(QStringLiteral("rtstudio"));
@@ -20,11 +58,23 @@ int main(int argc, char *argv[])
         QApplication::translate("main", "IDE for OpenRTM-aist RT-Components and RT Systems."));
     parser.addHelpOption();
     parser.addVersionOption();
+    const QCommandLineOption exportOption(
+        QStringLiteral("export-diagram"),
+        QApplication::translate("main", "Render the diagram of a system file without a window."),
+        QStringLiteral("SYSTEM"));
+    const QCommandLineOption outputOption(
+        QStringLiteral("output"),
+        QApplication::translate("main", "Where --export-diagram writes (.png or .svg)."),
+        QStringLiteral("OUT"));
+    parser.addOption(exportOption);
+    parser.addOption(outputOption);
     parser.addPositionalArgument(
         QStringLiteral("files"),
         QApplication::translate("main", "RTC or RTS profiles to open (XML or YAML)."),
         QStringLiteral("[FILE…]"));
     parser.process(app);
+    if (parser.isSet(exportOption))
+        return exportDiagram(parser, outputOption);
 
     Studio::MainWindow window;
     window.show();

@@ -1,18 +1,71 @@
 // SPDX-License-Identifier: MIT
 #include "rtseditor.h"
 
+#include "propertiespanel.h"
+#include "repositoryview.h"
+#include "rtcrepository.h"
 #include "rtsdocument.h"
+#include "systemcanvas.h"
 #include "systeminfoform.h"
 #include "systemoutlinemodel.h"
+#include "systemview.h"
 
-#include <QGroupBox>
+#include <QCoreApplication>
+#include <QDir>
 #include <QHeaderView>
+#include <QLabel>
+#include <QPointer>
 #include <QScrollArea>
+#include <QSettings>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTreeView>
 #include <QVBoxLayout>
 
 namespace Studio {
+
+namespace {
+
+const QString RepositorySourcesKey = QStringLiteral("systemEditor/repositorySources");
+
+/// The RTCs folders of the examples shipped beside the executable (installed or in the build
+/// tree's source), so that a first start has components to drag.
+QStringList bundledExampleSources()
+{
+    QStringList sources;
+    const QDir app(QCoreApplication::applicationDirPath());
+    for (const QString &relative :
+         {QStringLiteral("../share/rtstudio/examples"), QStringLiteral("../../resources/examples"),
+          QStringLiteral("../resources/examples")}) {
+        const QDir examples(app.filePath(relative));
+        if (!examples.exists())
+            continue;
+        for (const QString &system : examples.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+            const QString rtcs = examples.filePath(system + QStringLiteral("/RTCs"));
+            if (QDir(rtcs).exists())
+                sources << QDir::cleanPath(rtcs);
+        }
+        break;
+    }
+    return sources;
+}
+
+} // namespace
+
+SystemEditor::RtcRepository *RtsEditor::sharedRepository()
+{
+    static QPointer<SystemEditor::RtcRepository> repository;
+    if (!repository) {
+        repository = new SystemEditor::RtcRepository(QCoreApplication::instance());
+        QSettings settings;
+        const QStringList sources = settings.contains(RepositorySourcesKey)
+            ? settings.value(RepositorySourcesKey).toStringList()
+            : bundledExampleSources();
+        for (const QString &source : sources)
+            repository->addSource(source);
+    }
+    return repository;
+}
 
 RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     : QWidget(parent)
@@ -20,7 +73,51 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     , m_outlineModel(new SystemOutlineModel(document, this))
     , m_outlineView(new QTreeView)
     , m_systemInfo(new SystemInfoForm(document))
+    , m_canvas(new SystemEditor::SystemCanvas(document->model(), document->undoStack()))
+    , m_properties(new SystemEditor::PropertiesPanel(document->model(), document->undoStack()))
+    , m_repositoryView(new SystemEditor::RepositoryView(sharedRepository()))
+    , m_status(new QLabel)
     , m_splitter(new QSplitter(Qt::Horizontal, this))
+{
+    m_properties->followScene(m_canvas->scene());
+    m_status->setObjectName(QStringLiteral("canvasStatus"));
+    m_status->setContentsMargins(6, 2, 6, 2);
+    connect(m_canvas, &SystemEditor::SystemCanvas::statusMessage, m_status, &QLabel::setText);
+    connect(m_repositoryView, &SystemEditor::RepositoryView::statusMessage, m_status,
+            &QLabel::setText);
+
+    auto *centre = new QWidget;
+    auto *centreLayout = new QVBoxLayout(centre);
+    centreLayout->setContentsMargins(0, 0, 0, 0);
+    centreLayout->setSpacing(0);
+    centreLayout->addWidget(m_canvas, 1);
+    centreLayout->addWidget(m_status);
+
+    m_splitter->addWidget(buildLeftSide());
+    m_splitter->addWidget(centre);
+    m_splitter->addWidget(buildRightSide());
+    m_splitter->setStretchFactor(0, 1);
+    m_splitter->setStretchFactor(1, 4);
+    m_splitter->setStretchFactor(2, 1);
+    m_splitter->setSizes({240, 760, 320});
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_splitter);
+}
+
+RtsEditor::~RtsEditor()
+{
+    // Remember where the repository's profiles come from for the next start.
+    QSettings().setValue(RepositorySourcesKey, sharedRepository()->sources());
+}
+
+QString RtsEditor::statusText() const
+{
+    return m_status->text();
+}
+
+QWidget *RtsEditor::buildLeftSide()
 {
     m_outlineView->setModel(m_outlineModel);
     m_outlineView->setUniformRowHeights(true);
@@ -28,29 +125,28 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     m_outlineView->header()->setSectionResizeMode(SystemOutlineModel::NameColumn,
                                                   QHeaderView::ResizeToContents);
     m_outlineView->expandAll();
+    auto *tabs = new QTabWidget;
+    tabs->setObjectName(QStringLiteral("systemEditorLeftTabs"));
+    tabs->addTab(m_repositoryView, tr("Repository"));
+    tabs->addTab(m_outlineView, tr("Outline"));
+    return tabs;
+}
 
-    auto *systemBox = new QGroupBox(tr("System"));
-    auto *boxLayout = new QVBoxLayout(systemBox);
-    boxLayout->addWidget(m_systemInfo);
-    systemBox->setMaximumWidth(720);
-    auto *right = new QWidget;
-    auto *rightLayout = new QVBoxLayout(right);
-    rightLayout->addWidget(systemBox);
-    rightLayout->addStretch(1);
+QWidget *RtsEditor::buildRightSide()
+{
+    auto *systemPage = new QWidget;
+    auto *systemLayout = new QVBoxLayout(systemPage);
+    systemLayout->addWidget(m_systemInfo);
+    systemLayout->addStretch(1);
     auto *scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(right);
-
-    m_splitter->addWidget(m_outlineView);
-    m_splitter->addWidget(scroll);
-    m_splitter->setStretchFactor(0, 2);
-    m_splitter->setStretchFactor(1, 3);
-    m_splitter->setSizes({460, 740});
-
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_splitter);
+    scroll->setWidget(systemPage);
+    auto *tabs = new QTabWidget;
+    tabs->setObjectName(QStringLiteral("systemEditorRightTabs"));
+    tabs->addTab(m_properties, tr("Properties"));
+    tabs->addTab(scroll, tr("System"));
+    return tabs;
 }
 
 } // namespace Studio

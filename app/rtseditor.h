@@ -3,8 +3,17 @@
 
 #include <QWidget>
 
+class QLabel;
 class QSplitter;
+class QTabWidget;
 class QTreeView;
+
+namespace SystemEditor {
+class PropertiesPanel;
+class RepositoryView;
+class RtcRepository;
+class SystemCanvas;
+} // namespace SystemEditor
 
 namespace Studio {
 
@@ -13,9 +22,10 @@ class SystemInfoForm;
 class SystemOutlineModel;
 
 /**
- * The System Editor's editor of one system: the outline of its components and connectors on
- * the left, the system info form on the right. Both only listen to the RtsDocument; edits go
- * through its undo stack.
+ * The System Editor's editor of one system: the canvas in the middle; the repository of RTC
+ * profiles (drag one onto the canvas to add an instance) and the outline on the left; the
+ * properties of the selection and the system info on the right. Everything listens to the
+ * document's SystemModel; edits go through the document's undo stack.
  */
 class RtsEditor : public QWidget
 {
@@ -23,17 +33,36 @@ class RtsEditor : public QWidget
 
 public:
     explicit RtsEditor(RtsDocument *document, QWidget *parent = nullptr);
+    ~RtsEditor() override;
 
     RtsDocument *document() const { return m_document; }
     SystemOutlineModel *outlineModel() const { return m_outlineModel; }
     QTreeView *outlineView() const { return m_outlineView; }
     SystemInfoForm *systemInfoForm() const { return m_systemInfo; }
+    SystemEditor::SystemCanvas *canvas() const { return m_canvas; }
+    SystemEditor::PropertiesPanel *propertiesPanel() const { return m_properties; }
+    SystemEditor::RepositoryView *repositoryView() const { return m_repositoryView; }
+    /// The last message the canvas gave (why a connection was refused, …).
+    QString statusText() const;
+
+    /**
+     * The repository all system editors share. Its sources are remembered in the settings; the
+     * first time, it holds the RTC profiles of the bundled examples when they can be found.
+     */
+    static SystemEditor::RtcRepository *sharedRepository();
 
 private:
+    QWidget *buildLeftSide();
+    QWidget *buildRightSide();
+
     RtsDocument *m_document;
     SystemOutlineModel *m_outlineModel;
     QTreeView *m_outlineView;
     SystemInfoForm *m_systemInfo;
+    SystemEditor::SystemCanvas *m_canvas;
+    SystemEditor::PropertiesPanel *m_properties;
+    SystemEditor::RepositoryView *m_repositoryView;
+    QLabel *m_status;
     QSplitter *m_splitter;
 };
 

@@ -2,6 +2,7 @@
 #include "systemscene.h"
 
 #include "componentappearance.h"
+#include "componentcommands.h"
 #include "componentitem.h"
 #include "connectorcommands.h"
 #include "connectoritem.h"

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "componentcommands.h"
 #include "connectionrules.h"
 #include "connectorsettings.h"
 #include "systemmodel.h"
@@ -9,12 +8,15 @@
 #include <QGraphicsScene>
 #include <QHash>
 #include <QPointer>
+#include <QUndoStack>
 
 class QUndoCommand;
-class QUndoStack;
 
 namespace SystemEditor {
 
+// From componentcommands.h, which is not included here: the RTC Builder has a header of that
+// name too, and users of the canvas may see both include folders.
+enum class Alignment;
 class ComponentItem;
 class ConnectorItem;
 class PortItem;

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// The System Editor in the application: the system editor tab shows the canvas, repository and
+// properties over the document's model and undo stack; `rtstudio --export-diagram` renders a
+// system headless with exit code 0, and fails with 1 and a message.
+#include "documentloader.h"
+#include "propertiespanel.h"
+#include "repositoryview.h"
+#include "rtcrepository.h"
+#include "rtsdocument.h"
+#include "rtseditor.h"
+#include "systemcanvas.h"
+#include "systemmodel.h"
+#include "systemscene.h"
+
+#include <QFile>
+#include <QProcess>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace Studio;
+
+class TestSeCanvasApp : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void editorShowsCanvasOverTheDocument();
+    void repositoryRemembersItsSources();
+    void exportFromCommandLine_data();
+    void exportFromCommandLine();
+    void exportFailuresExitWithOne_data();
+    void exportFailuresExitWithOne();
+
+private:
+    QTemporaryDir m_settingsDir;
+};
+
+void TestSeCanvasApp::initTestCase()
+{
+    // Keep the user's settings out of the test.
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    QCoreApplication::setOrganizationName(QStringLiteral("RtStudioCanvasTest"));
+    QSettings().clear();
+}
+
+void TestSeCanvasApp::editorShowsCanvasOverTheDocument()
+{
+    Profile::Diagnostics diagnostics;
+    std::unique_ptr<Document> loaded
+        = loadDocument(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/secanvas/system.xml"), &diagnostics);
+    auto *document = qobject_cast<RtsDocument *>(loaded.get());
+    QVERIFY(document);
+    RtsEditor editor(document);
+    editor.resize(1300, 700);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    SystemEditor::SystemScene *scene = editor.canvas()->scene();
+    QCOMPARE(scene->model(), document->model());
+    QCOMPARE(scene->undoStack(), document->undoStack());
+    QCOMPARE(scene->componentItemCount(), 3);
+    // The document's RTC profiles (resolved from pathUri) give the ports their kinds.
+    QCOMPARE(document->model()->port(QStringLiteral("Filter0"), QStringLiteral("Filter0.in"))->kind,
+             SystemEditor::PortKind::DataIn);
+    // Selecting shows the properties; edits land on the document's undo stack.
+    scene->selectComponents({QStringLiteral("Filter0")});
+    QCOMPARE(editor.propertiesPanel()->shownComponent(), QStringLiteral("Filter0"));
+    QVERIFY(!document->isModified());
+    scene->deleteSelection();
+    QCOMPARE(document->undoStack()->count(), 1);
+    QVERIFY(document->isModified());
+    QVERIFY(editor.propertiesPanel()->shownComponent().isEmpty());
+    document->undoStack()->undo();
+    QVERIFY(!document->isModified());
+    QCOMPARE(scene->componentItemCount(), 3);
+    QCOMPARE(editor.repositoryView()->repository(), RtsEditor::sharedRepository());
+}
+
+void TestSeCanvasApp::repositoryRemembersItsSources()
+{
+    SystemEditor::RtcRepository *repository = RtsEditor::sharedRepository();
+    const QString folder = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/secanvas/RTCs");
+    QVERIFY(repository->addSource(folder));
+    {
+        RtsDocument document(Profile::RtsProfile::createNew(QStringLiteral("V"),
+                                                            QStringLiteral("S"),
+                                                            QStringLiteral("1")));
+        RtsEditor editor(&document);
+    }
+    const QStringList saved = QSettings().value(QStringLiteral("systemEditor/repositorySources"))
+                                  .toStringList();
+    QVERIFY2(saved.contains(folder) || saved.contains(QDir::cleanPath(folder)),
+             qPrintable(saved.join(QLatin1Char(','))));
+}
+
+void TestSeCanvasApp::exportFromCommandLine_data()
+{
+    QTest::addColumn<QString>("output");
+    QTest::newRow("png") << QStringLiteral("diagram.png");
+    QTest::newRow("svg") << QStringLiteral("diagram.svg");
+}
+
+void TestSeCanvasApp::exportFromCommandLine()
+{
+    QFETCH(QString, output);
+    QTemporaryDir dir;
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    // Headless: no display and no platform given.
+    environment.remove(QStringLiteral("DISPLAY"));
+    environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(RTSTUDIO_PATH),
+                  {QStringLiteral("--export-diagram"),
+                   QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
+                   QStringLiteral("--output"), dir.filePath(output)});
+    QVERIFY(process.waitForFinished(60000));
+    QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(process.exitCode(), 0);
+    QFile file(dir.filePath(output));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.size() > 1000);
+    if (output.endsWith(QLatin1String(".svg")))
+        QVERIFY(file.readAll().contains("ConsoleOut0"));
+}
+
+void TestSeCanvasApp::exportFailuresExitWithOne_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("missing file") << QStringList {QStringLiteral("--export-diagram"),
+                                                  QStringLiteral("no-such-system.xml"),
+                                                  QStringLiteral("--output"),
+                                                  QStringLiteral("out.png")}
+                                  << QStringLiteral("no-such-system.xml");
+    QTest::newRow("no output") << QStringList {QStringLiteral("--export-diagram"),
+                                               QStringLiteral("system.xml")}
+                               << QStringLiteral("--output");
+}
+
+void TestSeCanvasApp::exportFailuresExitWithOne()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    QProcess process;
+    process.setWorkingDirectory(dir.path());
+    process.start(QStringLiteral(RTSTUDIO_PATH), arguments);
+    QVERIFY(process.waitForFinished(60000));
+    QCOMPARE(process.exitCode(), 1);
+    QVERIFY2(QString::fromUtf8(process.readAllStandardError()).contains(message),
+             qPrintable(message));
+    QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("out.png"))));
+}
+
+QTEST_MAIN(TestSeCanvasApp)
+#include "tst_secanvasapp.moc"
