@@ -126,7 +126,11 @@ bool Manager::start(std::string *error)
 
 void Manager::run()
 {
-    m_orb->run();
+    try {
+        m_orb->run();
+    } catch (const CORBA::BAD_INV_ORDER &) {
+        // A shutdown request came in before run() was reached: the ORB is down already.
+    }
 }
 
 void Manager::shutdown()
@@ -139,7 +143,11 @@ void Manager::shutdown()
     // orb->shutdown(true) may not run in an ORB thread, and the caller may be one.
     m_shutdownThread = std::thread([this] {
         cleanup();
-        m_orb->shutdown(true);
+        try {
+            m_orb->shutdown(true);
+        } catch (const CORBA::Exception &) {
+            // Already shut down.
+        }
     });
 }
 
