@@ -8,6 +8,8 @@
 #include <omniORB4/omniORB.h>
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <unistd.h>
 
@@ -229,7 +231,8 @@ const ComponentFactory *Manager::findFactory(const CreateRequest &request)
         if (factory.implementationId() == request.implementationId
             && (request.vendor.empty() || p.value("vendor") == request.vendor)
             && (request.category.empty() || p.value("category") == request.category)
-            && (request.version.empty() || p.value("version") == request.version))
+            && (request.version.empty() || p.value("version") == request.version)
+            && (request.language.empty() || p.value("language") == request.language))
             return &factory;
     }
     return nullptr;
@@ -258,6 +261,18 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     for (const char *key : {"exec_cxt.periodic.rate", "exec_cxt.periodic.type", "exec_cxt.transition_timeout"}) {
         if (m_config.contains(key))
             properties.set(key, m_config.value(key));
+    }
+    if (request.properties.contains("config_file")) {
+        // OpenRTM's per-component configuration file: its keys, then the request's own, apply.
+        std::ifstream file(request.properties.value("config_file"));
+        if (!file) {
+            lock.unlock();
+            fail("create_component: cannot read config_file '" + request.properties.value("config_file") + "'", error);
+            return RTC::RTObject::_nil();
+        }
+        std::stringstream text;
+        text << file.rdbuf();
+        properties.merge(Properties::parseConf(text.str()));
     }
     properties.merge(request.properties);
     std::string instance = properties.value("instance_name");

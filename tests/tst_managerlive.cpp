@@ -356,6 +356,18 @@ void TestManagerLive::configurationThroughManager()
     SDOPackage::ConfigurationSet_var active = config->get_active_configuration_set();
     QCOMPARE(QByteArray(active->id), QByteArray("mode1"));
 
+    // A component configuration file as OpenRTM's config_file key names it; the request still wins.
+    RTC::RTObject_var fromFile = create(QStringLiteral("ConfigSample?config_file=" RTSTUDIO_TEST_DATA_DIR
+                                                       "/manager/configsample.conf&conf.default.int_param1=5"));
+    QVERIFY2(!CORBA::is_nil(fromFile), qPrintable(lastError(m_master)));
+    QCOMPARE(statusText(fromFile, "int_param0"), QString("99"));
+    QCOMPARE(statusText(fromFile, "int_param1"), QString("5"));
+    RTC::ExecutionContextList_var fileEcs = fromFile->get_owned_contexts();
+    QCOMPARE(fileEcs[0]->get_rate(), 20.0);
+    RTC::RTObject_var noFile = create("ConfigSample?config_file=/nonexistent.conf");
+    QVERIFY(CORBA::is_nil(noFile));
+    QVERIFY(lastError(m_master).contains("cannot read config_file"));
+
     RTC::RTObject_var motor = create("Motor?conf.default.motor_id=3&manager_name=slaveM");
     QVERIFY2(!CORBA::is_nil(motor), qPrintable(lastError(m_master)));
     SDOPackage::Configuration_var motorConfig = motor->get_configuration();
