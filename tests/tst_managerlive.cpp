@@ -322,6 +322,10 @@ void TestManagerLive::createParametersInAnyOrder()
     QCOMPARE(ecs[0]->get_rate(), 25.0);
     ecs = third->get_owned_contexts();
     QCOMPARE(ecs[0]->get_rate(), 40.0);
+    QVERIFY(!slaves[0]->is_master());
+    RTM::ManagerList_var masters = slaves[0]->get_master_managers();
+    QCOMPARE(masters->length(), CORBA::ULong(1));
+    QVERIFY(masters[0]->_is_equivalent(m_master));
     RTC::RTCList_var byName = slaves[0]->get_components_by_name("mid");
     QCOMPARE(byName->length(), CORBA::ULong(1));
 
