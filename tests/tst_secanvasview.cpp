@@ -13,6 +13,7 @@
 
 #include <QApplication>
 #include <QLineEdit>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -39,6 +40,10 @@ private slots:
     void findComponent();
     void copyPaste();
     void arrowKeysNudge();
+    void resizeHandleResizes();
+    void draggingACornerSavesBendPoints();
+    void middleButtonPans();
+    void alignLinesUpSelection();
 
 private:
     QPoint viewPos(const QPointF &scenePos) const { return m_view->mapFromScene(scenePos); }
@@ -342,6 +347,85 @@ void TestSeCanvasView::arrowKeysNudge()
     QCOMPARE(m_stack->count(), 1);
     m_stack->undo();
     QCOMPARE(m_model->layout(QStringLiteral("Sink0")).position, QPointF(600, 60));
+}
+
+void TestSeCanvasView::resizeHandleResizes()
+{
+    ComponentItem *sink = m_scene->componentItem(QStringLiteral("Sink0"));
+    const QSizeF before = sink->bodyRect().size();
+    m_scene->selectComponents({QStringLiteral("Sink0")});
+    const QPoint handle = viewPos(sink->mapToScene(sink->resizeHandleRect().center()));
+    dragOnViewport(handle, handle + QPoint(60, 40));
+    QCOMPARE(m_stack->count(), 1);
+    QCOMPARE(m_model->layout(QStringLiteral("Sink0")).size, before + QSizeF(60, 40));
+    QCOMPARE(sink->bodyRect().size(), before + QSizeF(60, 40));
+    // Its port stays centred on the (new) top edge.
+    const PortItem *in = sink->portItem(QStringLiteral("Sink0.in"));
+    QCOMPARE(in->pos().x(), sink->bodyRect().center().x());
+    // Resizing did not move it.
+    QCOMPARE(sink->pos(), QPointF(600, 60));
+    m_stack->undo();
+    QCOMPARE(sink->bodyRect().size(), before);
+}
+
+void TestSeCanvasView::draggingACornerSavesBendPoints()
+{
+    ConnectorItem *connector = m_scene->connectorItem(QStringLiteral("c-sensor-filter"));
+    connector->setSelected(true);
+    const QPolygonF route = connector->route();
+    QVERIFY(route.size() > 3);
+    const QPointF corner = route.at(2);
+    QCOMPARE(connector->handleAt(corner), 1);
+    dragOnViewport(viewPos(corner), viewPos(corner + QPointF(0, 60)));
+    QCOMPARE(m_stack->count(), 1);
+    const std::optional<ConnectorInfo> info = m_model->connector(QStringLiteral("c-sensor-filter"));
+    QVERIFY(!info->bendPoints.isEmpty());
+    QVERIFY(info->bendPoints.contains(corner + QPointF(0, 60)));
+    QVERIFY(Profile::rtsPropertyValue(
+        m_model->dataConnector(QStringLiteral("c-sensor-filter"))->properties,
+        SystemModel::BendPointProperty));
+    QVERIFY(connector->route().contains(corner + QPointF(0, 60)));
+    // Nothing else moved.
+    QCOMPARE(m_scene->componentItem(QStringLiteral("Filter0"))->pos(), QPointF(320, 60));
+    m_stack->undo();
+    QVERIFY(m_model->connector(QStringLiteral("c-sensor-filter"))->bendPoints.isEmpty());
+    QCOMPARE(connector->route(), route);
+}
+
+void TestSeCanvasView::middleButtonPans()
+{
+    m_view->setZoomFactor(3.0);
+    m_view->centerOn(m_scene->diagramRect().center());
+    QScrollBar *horizontal = m_view->horizontalScrollBar();
+    QScrollBar *vertical = m_view->verticalScrollBar();
+    // Room to scroll both ways.
+    QVERIFY(horizontal->maximum() - horizontal->value() > 100);
+    QVERIFY(vertical->maximum() - vertical->value() > 50);
+    const QPoint before(horizontal->value(), vertical->value());
+    QWidget *viewport = m_view->viewport();
+    const QPoint from = viewport->rect().center();
+    QTest::mousePress(viewport, Qt::MiddleButton, {}, from);
+    for (int step = 1; step <= 3; ++step)
+        QTest::mouseMove(viewport, from - QPoint(30, 15) * step);
+    QTest::mouseRelease(viewport, Qt::MiddleButton, {}, from - QPoint(90, 45));
+    // Dragging the canvas left and up shows what lies right and below.
+    QCOMPARE(QPoint(horizontal->value(), vertical->value()) - before, QPoint(90, 45));
+    QCOMPARE(m_stack->count(), 0);
+    QVERIFY(m_scene->selectedComponents().isEmpty());
+}
+
+void TestSeCanvasView::alignLinesUpSelection()
+{
+    m_stack->push(new MoveComponentsCommand(m_model.get(),
+                                            {{QStringLiteral("Sink0"), QPointF(600, 200)}}));
+    m_scene->selectComponents({QStringLiteral("Sensor0"), QStringLiteral("Sink0")});
+    m_scene->alignSelection(Alignment::Top);
+    QCOMPARE(m_model->layout(QStringLiteral("Sink0")).position.y(),
+             m_model->layout(QStringLiteral("Sensor0")).position.y());
+    QCOMPARE(m_scene->componentItem(QStringLiteral("Sink0"))->pos().y(), 60.0);
+    QCOMPARE(m_stack->count(), 2);
+    m_stack->undo();
+    QCOMPARE(m_scene->componentItem(QStringLiteral("Sink0"))->pos().y(), 200.0);
 }
 
 QTEST_MAIN(TestSeCanvasView)

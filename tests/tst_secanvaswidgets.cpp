@@ -379,11 +379,13 @@ void TestSeCanvasWidgets::overviewShowsWhenDiagramIsLarge()
     canvas.view()->resetZoom();
     QTRY_VERIFY(canvas.overview()->isVisible());
     // Clicking in the map moves the view there.
-    const QPointF target = canvas.overview()->visibleFrame().center() + QPointF(60, 40);
-    QTest::mouseClick(canvas.overview(), Qt::LeftButton, {}, target.toPoint());
+    const QPoint target = (canvas.overview()->visibleFrame().center() + QPointF(60, 40)).toPoint();
+    const QPointF wanted = canvas.overview()->sceneAt(target);
+    QTest::mouseClick(canvas.overview(), Qt::LeftButton, {}, target);
     const QPointF centre
         = canvas.view()->mapToScene(canvas.view()->viewport()->rect().center());
-    QVERIFY(QLineF(centre, canvas.overview()->sceneAt(target)).length() < 60);
+    QVERIFY2(QLineF(centre, wanted).length() < 60,
+             qPrintable(QStringLiteral("%1 away").arg(QLineF(centre, wanted).length())));
 }
 
 QTEST_MAIN(TestSeCanvasWidgets)

@@ -51,6 +51,17 @@ SystemView::SystemView(SystemScene *scene, QWidget *parent)
     connect(scene, &SystemScene::connectionRefused, this, &SystemView::showRefusal);
     connect(scene, &SystemScene::connectorEditRequested, this, &SystemView::editConnector);
     connect(scene, &SystemScene::statusMessage, this, &SystemView::statusMessage);
+    connect(scene, &QGraphicsScene::changed, this, &SystemView::growSceneRect);
+    growSceneRect();
+}
+
+void SystemView::growSceneRect()
+{
+    // Room around the diagram to pan into and drop on; it only grows, so that the view does not
+    // jump while something is dragged.
+    const QRectF wanted = m_scene->diagramRect().adjusted(-800, -600, 800, 600);
+    if (!sceneRect().contains(wanted))
+        setSceneRect(sceneRect().united(wanted));
 }
 
 qreal SystemView::zoomFactor() const
@@ -87,6 +98,7 @@ void SystemView::fitToDiagram()
     const QRectF diagram = m_scene->diagramRect();
     if (diagram.isEmpty())
         return;
+    growSceneRect();
     const QRectF viewport = this->viewport()->rect();
     const qreal factor = std::min(viewport.width() / diagram.width(),
                                   viewport.height() / diagram.height());
@@ -104,6 +116,7 @@ bool SystemView::findComponent(const QString &text)
             continue;
         m_scene->selectComponents({name});
         ComponentItem *item = m_scene->componentItem(name);
+        growSceneRect();
         centerOn(item);
         item->setFocus();
         return true;

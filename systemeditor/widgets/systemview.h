@@ -83,6 +83,7 @@ protected:
     void dropEvent(QDropEvent *event) override;
 
 private:
+    void growSceneRect();
     void showRefusal(const QString &reason);
     void nudgeSelection(const QPointF &delta);
     void finishRename(bool commit);
