@@ -32,6 +32,7 @@ private slots:
     void dragHighlightsLegalTargetsOnly();
     void illegalDropSaysWhy();
     void cancelledDialogConnectsNothing();
+    void serviceDragAsksNameAndConnects();
     void doubleClickEditsConnector();
     void mouseMoveIsOneUndoStep();
     void rubberBandSelectDeleteUndo();
@@ -192,6 +193,32 @@ void TestSeCanvasView::cancelledDialogConnectsNothing()
     QCOMPARE(m_asked.size(), 1);
     QCOMPARE(m_model->connectorIds().size(), 1);
     QCOMPARE(m_stack->count(), 0);
+}
+
+void TestSeCanvasView::serviceDragAsksNameAndConnects()
+{
+    QStringList proposed;
+    QList<QList<InterfaceInfo>> shown;
+    m_view->setServiceConnectorEditor([&](const QString &name, const QList<InterfaceInfo> &source,
+                                          const QList<InterfaceInfo> &target) {
+        proposed << name;
+        shown << source << target;
+        return std::optional<QString>(QStringLiteral("control_link"));
+    });
+    dragOnViewport(portPos(QStringLiteral("Filter0"), QStringLiteral("Filter0.control")),
+                   portPos(QStringLiteral("Sensor0"), QStringLiteral("Sensor0.control")));
+    QCOMPARE(proposed, QStringList {QStringLiteral("control_control")});
+    QCOMPARE(shown.size(), 2);
+    QCOMPARE(shown.at(0).size(), 1);
+    QVERIFY(m_asked.isEmpty());
+    QCOMPARE(m_model->connectorIds().size(), 2);
+    const std::optional<ConnectorInfo> made = m_model->connector(m_model->connectorIds().last());
+    QCOMPARE(made->kind, ConnectorKind::Service);
+    QCOMPARE(made->name, QStringLiteral("control_link"));
+    QVERIFY(m_scene->portItem({QStringLiteral("Sensor0"), QStringLiteral("Sensor0.control")})
+                ->isConnected());
+    m_stack->undo();
+    QCOMPARE(m_model->connectorIds().size(), 1);
 }
 
 void TestSeCanvasView::doubleClickEditsConnector()

@@ -10,6 +10,7 @@
 #include "connectoritem.h"
 #include "overviewwidget.h"
 #include "propertiespanel.h"
+#include "serviceconnectordialog.h"
 #include "repositoryview.h"
 #include "rtcrepository.h"
 #include "systemcanvas.h"
@@ -68,6 +69,7 @@ private slots:
     void dialogValidation();
     void dialogRoundTripsSettings();
     void dialogOffersGivenChoices();
+    void serviceDialogMapsAndWarns();
     void propertiesEditConfigurationThroughUndo();
     void propertiesActivateCopyDeleteSets();
     void propertiesShowConnector();
@@ -196,6 +198,42 @@ void TestSeCanvasWidgets::dialogOffersGivenChoices()
     QComboBox *dataflow = combo(dialog, "dataflowType");
     QCOMPARE(dataflow->count(), 1);
     QCOMPARE(dataflow->itemText(0), QStringLiteral("pull"));
+}
+
+void TestSeCanvasWidgets::serviceDialogMapsAndWarns()
+{
+    const auto interface = [](const char *name, const char *type, const char *instance,
+                              Profile::RtcDirection polarity) {
+        InterfaceInfo info;
+        info.name = QLatin1String(name);
+        info.type = QLatin1String(type);
+        info.instanceName = QLatin1String(instance);
+        info.polarity = polarity;
+        return info;
+    };
+    using Profile::RtcDirection;
+    const QList<InterfaceInfo> provider {interface("ctrl", "Demo::Control", "control",
+                                                   RtcDirection::Provided),
+                                         interface("log", "Demo::Log", "log",
+                                                   RtcDirection::Provided)};
+    const QList<InterfaceInfo> consumer {interface("ctrl", "Demo::OldControl", "control",
+                                                   RtcDirection::Required)};
+    ServiceConnectorDialog dialog(QStringLiteral("a_b"), provider, consumer);
+    QCOMPARE(dialog.mappingTable()->rowCount(), 1);
+    // The consumer column holds the required side whichever port came first.
+    QVERIFY(dialog.mappingTable()->item(0, 0)->text().contains(QStringLiteral("OldControl")));
+    const QString warnings = dialog.warnings().join(QLatin1Char('\n'));
+    QVERIFY2(warnings.contains(QStringLiteral("Demo::OldControl")), qPrintable(warnings));
+    QVERIFY2(warnings.contains(QStringLiteral("\"log\"")), qPrintable(warnings));
+    QCOMPARE(dialog.warnings().size(), 2);
+    QPushButton *ok = dialog.findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
+    QVERIFY(ok->isEnabled());
+    dialog.setName(QString());
+    QVERIFY(!ok->isEnabled());
+    dialog.setName(QStringLiteral("link"));
+    dialog.accept();
+    QCOMPARE(dialog.result(), int(QDialog::Accepted));
+    QCOMPARE(dialog.name(), QStringLiteral("link"));
 }
 
 void TestSeCanvasWidgets::propertiesEditConfigurationThroughUndo()

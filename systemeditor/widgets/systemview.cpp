@@ -4,6 +4,7 @@
 #include "componentitem.h"
 #include "componentcommands.h"
 #include "connectionrules.h"
+#include "serviceconnectordialog.h"
 #include "systemscene.h"
 
 #include <QKeyEvent>
@@ -30,6 +31,22 @@ std::optional<ConnectorSettings> askWithDialog(QWidget *parent, const ConnectorS
     return dialog.settings();
 }
 
+std::optional<QString> askServiceWithDialog(QWidget *parent, const QString &name,
+                                            const QList<InterfaceInfo> &source,
+                                            const QList<InterfaceInfo> &target)
+{
+    ServiceConnectorDialog dialog(name, source, target, parent);
+    if (dialog.exec() != QDialog::Accepted)
+        return std::nullopt;
+    return dialog.name();
+}
+
+/// `Instance0.port` → `port`.
+QString shortName(const std::optional<PortInfo> &port, const QString &fallback)
+{
+    return port ? port->profileName : fallback.section(QLatin1Char('.'), -1);
+}
+
 } // namespace
 
 SystemView::SystemView(SystemScene *scene, QWidget *parent)
@@ -46,6 +63,10 @@ SystemView::SystemView(SystemScene *scene, QWidget *parent)
     m_connectorEditor = [this](const ConnectorSettings &proposed,
                                const ConnectorDialog::Choices &choices) {
         return askWithDialog(this, proposed, choices);
+    };
+    m_serviceConnectorEditor = [this](const QString &name, const QList<InterfaceInfo> &source,
+                                      const QList<InterfaceInfo> &target) {
+        return askServiceWithDialog(this, name, source, target);
     };
     connect(scene, &SystemScene::connectRequested, this, &SystemView::requestConnection);
     connect(scene, &SystemScene::connectionRefused, this, &SystemView::showRefusal);
@@ -128,7 +149,7 @@ bool SystemView::findComponent(const QString &text)
 void SystemView::requestConnection(const ConnectionCheck &check)
 {
     if (check.kind == ConnectorKind::Service) {
-        m_scene->connectServicePorts(check, QString());
+        requestServiceConnection(check);
         return;
     }
     const std::optional<PortInfo> out = m_scene->model()->port(check.source.instanceName,
@@ -149,6 +170,21 @@ void SystemView::requestConnection(const ConnectionCheck &check)
         proposed.subscriptionType = choices.subscriptionTypes.value(0);
     if (const std::optional<ConnectorSettings> settings = m_connectorEditor(proposed, choices))
         m_scene->connectPorts(check, *settings);
+}
+
+void SystemView::requestServiceConnection(const ConnectionCheck &check)
+{
+    const std::optional<PortInfo> source = m_scene->model()->port(check.source.instanceName,
+                                                                 check.source.portName);
+    const std::optional<PortInfo> target = m_scene->model()->port(check.target.instanceName,
+                                                                 check.target.portName);
+    const QString proposed = shortName(source, check.source.portName) + QLatin1Char('_')
+        + shortName(target, check.target.portName);
+    const std::optional<QString> name = m_serviceConnectorEditor(
+        proposed, source ? source->interfaces : QList<InterfaceInfo>(),
+        target ? target->interfaces : QList<InterfaceInfo>());
+    if (name)
+        m_scene->connectServicePorts(check, *name);
 }
 
 void SystemView::editConnector(const QString &connectorId)

@@ -3,6 +3,7 @@
 
 #include "connectorsettings.h"
 #include "connectordialog.h"
+#include "systemmodel.h"
 
 #include <QGraphicsView>
 
@@ -37,10 +38,22 @@ public:
     using ConnectorEditor = std::function<std::optional<ConnectorSettings>(
         const ConnectorSettings &proposed, const ConnectorDialog::Choices &choices)>;
 
+    /**
+     * Asks for a service connector's name, showing how the two ports' interfaces pair up;
+     * returns the name or nothing when cancelled. The default shows a ServiceConnectorDialog.
+     */
+    using ServiceConnectorEditor = std::function<std::optional<QString>(
+        const QString &proposedName, const QList<InterfaceInfo> &source,
+        const QList<InterfaceInfo> &target)>;
+
     explicit SystemView(SystemScene *scene, QWidget *parent = nullptr);
 
     SystemScene *systemScene() const { return m_scene; }
     void setConnectorEditor(ConnectorEditor editor) { m_connectorEditor = std::move(editor); }
+    void setServiceConnectorEditor(ServiceConnectorEditor editor)
+    {
+        m_serviceConnectorEditor = std::move(editor);
+    }
 
     /// The current scale (1 = 100 %).
     qreal zoomFactor() const;
@@ -88,9 +101,11 @@ private:
     void nudgeSelection(const QPointF &delta);
     void finishRename(bool commit);
     ConnectorDialog::Choices choicesFor(const ConnectionCheck &check) const;
+    void requestServiceConnection(const ConnectionCheck &check);
 
     SystemScene *m_scene;
     ConnectorEditor m_connectorEditor;
+    ServiceConnectorEditor m_serviceConnectorEditor;
     QLineEdit *m_renameEditor = nullptr;
     QString m_renamedInstance;
     bool m_spaceHeld = false;
