@@ -80,6 +80,8 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     , m_splitter(new QSplitter(Qt::Horizontal, this))
 {
     m_properties->followScene(m_canvas->scene());
+    connect(m_properties, &SystemEditor::PropertiesPanel::editConnectorRequested, m_canvas->view(),
+            &SystemEditor::SystemView::editConnector);
     m_status->setObjectName(QStringLiteral("canvasStatus"));
     m_status->setContentsMargins(6, 2, 6, 2);
     connect(m_canvas, &SystemEditor::SystemCanvas::statusMessage, m_status, &QLabel::setText);

@@ -44,6 +44,7 @@ private slots:
     void resizeHandleResizes();
     void draggingACornerSavesBendPoints();
     void middleButtonPans();
+    void spaceDragPans();
     void alignLinesUpSelection();
 
 private:
@@ -439,6 +440,27 @@ void TestSeCanvasView::middleButtonPans()
     QCOMPARE(QPoint(horizontal->value(), vertical->value()) - before, QPoint(90, 45));
     QCOMPARE(m_stack->count(), 0);
     QVERIFY(m_scene->selectedComponents().isEmpty());
+}
+
+void TestSeCanvasView::spaceDragPans()
+{
+    m_view->setZoomFactor(3.0);
+    m_view->centerOn(m_scene->diagramRect().center());
+    QScrollBar *horizontal = m_view->horizontalScrollBar();
+    const int before = horizontal->value();
+    QWidget *viewport = m_view->viewport();
+    // Over a component: with space held the drag pans instead of moving it.
+    const QPoint from = viewPos(m_scene->componentItem(QStringLiteral("Filter0"))->sceneBoundingRect()
+                                    .center());
+    m_view->setFocus();
+    QTest::keyPress(m_view.get(), Qt::Key_Space);
+    QTest::mousePress(viewport, Qt::LeftButton, {}, from);
+    QTest::mouseMove(viewport, from + QPoint(40, 0));
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, from + QPoint(40, 0));
+    QTest::keyRelease(m_view.get(), Qt::Key_Space);
+    QCOMPARE(horizontal->value(), before - 40);
+    QCOMPARE(m_stack->count(), 0);
+    QCOMPARE(m_scene->componentItem(QStringLiteral("Filter0"))->pos(), QPointF(320, 60));
 }
 
 void TestSeCanvasView::alignLinesUpSelection()

@@ -25,6 +25,7 @@
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTableWidget>
 #include <QTreeView>
 #include <QUndoStack>
@@ -319,6 +320,10 @@ void TestSeCanvasWidgets::propertiesShowConnector()
         = panel.connectorTable()->findItems(QStringLiteral("dataport.dataflow_type"),
                                             Qt::MatchExactly);
     QCOMPARE(rows.size(), 1);
+    QSignalSpy edit(&panel, &PropertiesPanel::editConnectorRequested);
+    panel.findChild<QPushButton *>(QStringLiteral("editConnector"))->click();
+    QCOMPARE(edit.size(), 1);
+    QCOMPARE(edit.first().first().toString(), QStringLiteral("c-sensor-filter"));
     // Deleting what is shown empties the panel.
     scene.deleteSelection();
     QVERIFY(panel.shownConnector().isEmpty());

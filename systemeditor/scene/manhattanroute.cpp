@@ -47,18 +47,18 @@ qreal detourLane(const QPointF &from, const QPointF &to, bool horizontalSides,
     const auto along = [horizontalSides](const QPointF &p) {
         return horizontalSides ? p.y() : p.x();
     };
-    const qreal low = bodies.isEmpty() ? std::min(along(from), along(to)) - 2 * RouteStub
+    const qreal low = bodies.isEmpty() ? std::min(along(from), along(to)) - 2 * RouteLead
                                        : (horizontalSides ? bodies.top() : bodies.left())
-            - RouteStub * 1.5;
-    const qreal high = bodies.isEmpty() ? std::max(along(from), along(to)) + 2 * RouteStub
+            - RouteLead * 1.5;
+    const qreal high = bodies.isEmpty() ? std::max(along(from), along(to)) + 2 * RouteLead
                                         : (horizontalSides ? bodies.bottom() : bodies.right())
-            + RouteStub * 1.5;
+            + RouteLead * 1.5;
     const qreal viaLow = std::abs(along(from) - low) + std::abs(along(to) - low);
     const qreal viaHigh = std::abs(along(from) - high) + std::abs(along(to) - high);
     return viaLow <= viaHigh ? low : high;
 }
 
-/// Automatic middle between the two stub ends. Ports facing each other meet halfway; ports
+/// Automatic middle between the ends of the two leads. Ports facing each other meet halfway; ports
 /// facing away run along a lane beside both bodies; perpendicular ones turn once.
 void appendAutomaticMiddle(QPolygonF &route, const QPointF &to, PortSide startSide,
                            PortSide endSide, const QRectF &bodies)
@@ -115,15 +115,15 @@ QPolygonF manhattanRoute(const QPointF &start, PortSide startSide, const QPointF
                          PortSide endSide, const QList<QPointF> &bendPoints,
                          const QRectF &bodies)
 {
-    const QPointF startStub = start + outwardNormal(startSide) * RouteStub;
-    const QPointF endStub = end + outwardNormal(endSide) * RouteStub;
-    QPolygonF route {start, startStub};
+    const QPointF startLead = start + outwardNormal(startSide) * RouteLead;
+    const QPointF endLead = end + outwardNormal(endSide) * RouteLead;
+    QPolygonF route {start, startLead};
     if (bendPoints.isEmpty()) {
-        appendAutomaticMiddle(route, endStub, startSide, endSide, bodies);
+        appendAutomaticMiddle(route, endLead, startSide, endSide, bodies);
     } else {
         for (const QPointF &bend : bendPoints)
             appendOrthogonal(route, bend);
-        appendOrthogonal(route, endStub);
+        appendOrthogonal(route, endLead);
     }
     appendPoint(route, end);
     return simplified(route, bendPoints);

@@ -9,7 +9,7 @@ namespace SystemEditor {
 
 /**
  * A connector's path made of horizontal and vertical segments only. It leaves `start` and
- * enters `end` straight out of their sides (a short stub), then passes through `bendPoints` in
+ * enters `end` straight out of their sides (a short lead), then passes through `bendPoints` in
  * order; an elbow is added wherever two consecutive points are not aligned. Without bend points
  * the middle is routed automatically: ports facing each other meet halfway, ports facing away
  * go round `bodies` (the united rectangles of the two components, if known).
@@ -22,6 +22,6 @@ QPolygonF manhattanRoute(const QPointF &start, PortSide startSide, const QPointF
 QList<QPointF> routeCorners(const QPolygonF &route);
 
 /// Length of the straight piece leaving a port before the route turns.
-inline constexpr qreal RouteStub = 16.0;
+inline constexpr qreal RouteLead = 16.0;
 
 } // namespace SystemEditor

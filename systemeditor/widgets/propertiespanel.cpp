@@ -147,8 +147,14 @@ QWidget *PropertiesPanel::buildConnectorPage()
     auto *layout = new QVBoxLayout(page);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(form);
-    layout->addWidget(new QLabel(tr("Double-click the connector to edit it.")));
+    auto *edit = new QPushButton(tr("Edit Connector…"));
+    edit->setObjectName(QStringLiteral("editConnector"));
+    connect(edit, &QPushButton::clicked, this, [this] {
+        if (!m_connector.isEmpty())
+            emit editConnectorRequested(m_connector);
+    });
     layout->addWidget(m_connectorProperties, 1);
+    layout->addWidget(edit, 0, Qt::AlignRight);
     return page;
 }
 

@@ -55,6 +55,10 @@ public:
     QTableWidget *valueTable() const { return m_values; }
     QTableWidget *connectorTable() const { return m_connectorProperties; }
 
+signals:
+    /// The user asked to edit the shown connector (its dialog belongs to the canvas view).
+    void editConnectorRequested(const QString &connectorId);
+
 private:
     QWidget *buildComponentPage();
     QWidget *buildConnectorPage();
