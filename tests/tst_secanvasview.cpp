@@ -58,6 +58,7 @@ private:
     std::unique_ptr<SystemScene> m_scene;
     std::unique_ptr<SystemView> m_view;
     QList<ConnectorSettings> m_asked;
+    QList<ConnectorDialog::Choices> m_choices;
     std::optional<ConnectorSettings> m_answer;
 };
 
@@ -71,9 +72,11 @@ void TestSeCanvasView::init()
     m_asked.clear();
     m_answer.reset();
     // The dialog, answered by the test: record what was proposed, answer m_answer.
+    m_choices.clear();
     m_view->setConnectorEditor([this](const ConnectorSettings &proposed,
-                                      const ConnectorDialog::Choices &) {
+                                      const ConnectorDialog::Choices &choices) {
         m_asked.append(proposed);
+        m_choices.append(choices);
         return m_answer;
     });
     m_view->resize(1100, 600);
@@ -234,6 +237,10 @@ void TestSeCanvasView::doubleClickEditsConnector()
     QTest::mouseDClick(m_view->viewport(), Qt::LeftButton, {}, onLine);
     QCOMPARE(m_asked.size(), 1);
     QCOMPARE(m_asked.first().name, QStringLiteral("out_in"));
+    // The choices are what both ports' RTC profiles offer (push,pull; flush,new,periodic).
+    QCOMPARE(m_choices.first().dataflowTypes,
+             (QStringList {QStringLiteral("push"), QStringLiteral("pull")}));
+    QCOMPARE(m_choices.first().interfaceTypes, QStringList {QStringLiteral("corba_cdr")});
     QCOMPARE(m_model->connector(QStringLiteral("c-sensor-filter"))->name, QStringLiteral("renamed"));
     m_stack->undo();
     QCOMPARE(m_model->connector(QStringLiteral("c-sensor-filter"))->name, QStringLiteral("out_in"));

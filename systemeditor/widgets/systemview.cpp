@@ -193,8 +193,12 @@ void SystemView::editConnector(const QString &connectorId)
     if (!connector)
         return;
     const ConnectorSettings current = ConnectorSettings::fromConnector(*connector);
+    // The same choices as when it was made: what both ports offer.
+    ConnectionCheck ends;
+    ends.source = {connector->source.instanceName, connector->source.portName};
+    ends.target = {connector->target.instanceName, connector->target.portName};
     const std::optional<ConnectorSettings> settings
-        = m_connectorEditor(current, ConnectorDialog::Choices());
+        = m_connectorEditor(current, choicesFor(ends));
     if (settings && *settings != current)
         m_scene->editConnector(connectorId, *settings);
 }
