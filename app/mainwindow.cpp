@@ -5,6 +5,7 @@
 #include "document.h"
 #include "documentcontroller.h"
 #include "editorfactory.h"
+#include "onlinedocks.h"
 #include "problemspanel.h"
 #include "recentfiles.h"
 #include "rtstudioresources.h"
@@ -49,6 +50,7 @@ MainWindow::MainWindow(QWidget *parent)
     setAcceptDrops(true);
     createPerspectives();
     createProblemsDock();
+    m_online = new OnlineDocks(this, new QSettings(this));
     createActions();
     createMenus();
     createToolBar();
@@ -84,6 +86,7 @@ void MainWindow::showPerspective(Perspective::Id id)
 {
     Perspective *target = perspective(id);
     m_perspectives->setCurrentWidget(target);
+    m_online->setPerspectiveActive(id == Perspective::Id::SystemEditor);
     const QString actionName = id == Perspective::Id::Builder
         ? QStringLiteral("actionPerspectiveBuilder")
         : QStringLiteral("actionPerspectiveSystemEditor");
@@ -255,6 +258,7 @@ void MainWindow::createMenus()
     view->addActions(m_perspectiveActions->actions());
     view->addSeparator();
     view->addAction(m_problemsDock->toggleViewAction());
+    view->addActions(m_online->toggleActions());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action("actionAbout"));

@@ -19,6 +19,7 @@ namespace Studio {
 
 class Document;
 class DocumentController;
+class OnlineDocks;
 class ProblemsPanel;
 class UserPrompts;
 
@@ -46,6 +47,8 @@ public:
     QUndoGroup *undoGroup() const { return m_undoGroup; }
     ProblemsPanel *problemsPanel() const { return m_problems; }
     QDockWidget *problemsDock() const { return m_problemsDock; }
+    /// The online System Editor views (Name Service, Configuration, Execution Contexts).
+    OnlineDocks *onlineDocks() const { return m_online; }
 
     Perspective *perspective(Perspective::Id id) const;
     Perspective *currentPerspective() const;
@@ -98,6 +101,7 @@ private:
     QActionGroup *m_perspectiveActions = nullptr;
     ProblemsPanel *m_problems = nullptr;
     QDockWidget *m_problemsDock = nullptr;
+    OnlineDocks *m_online = nullptr;
     QMenu *m_recentMenu = nullptr;
     Document *m_activeDocument = nullptr;
 };

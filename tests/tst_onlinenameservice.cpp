@@ -166,6 +166,13 @@ void TestOnlineNameService::showsTheLiveTree()
     QVERIFY(manager.isValid());
     QCOMPARE(NodeType(manager.data(NameServiceModel::TypeRole).toInt()), NodeType::Manager);
     QVERIFY(model->zombiePaths().isEmpty());
+    // The manager lists its components again, with the same state.
+    const QModelIndex managed
+        = model->indexOfPath(QStringLiteral("/%1/rtmhost.host_cxt/manager.mgr/ConsoleIn0.rtc")
+                                 .arg(m_live.namingServer()));
+    QVERIFY(managed.isValid());
+    QCOMPARE(managed.parent(), manager);
+    QCOMPARE(managed.siblingAtColumn(1).data().toString(), QStringLiteral("Inactive"));
 
     std::unique_ptr<QMimeData> mime(model->mimeData({in}));
     QVERIFY(mime);

@@ -348,7 +348,8 @@ Qt::ItemFlags NameServiceModel::flags(const QModelIndex &index) const
     Qt::ItemFlags result = Qt::ItemIsSelectable;
     if (!unreachable(item))
         result |= Qt::ItemIsEnabled;
-    if (item->node.type == NodeType::Component && (result & Qt::ItemIsEnabled))
+    if (item->node.type == NodeType::Component && !item->node.ior.isEmpty()
+        && (result & Qt::ItemIsEnabled))
         result |= Qt::ItemIsDragEnabled;
     return result;
 }

@@ -195,6 +195,9 @@ QList<QAction *> NameServiceView::contextActions(const QModelIndex &index)
     const auto type = NodeType(index.data(NameServiceModel::TypeRole).toInt());
     switch (type) {
     case NodeType::Component:
+        // Components listed below a manager come without a reference: nothing to call.
+        if (index.data(NameServiceModel::IorRole).toString().isEmpty())
+            break;
         remote(tr("Activate"), QStringLiteral("actionActivate"), RemoteAction::Activate);
         remote(tr("Deactivate"), QStringLiteral("actionDeactivate"), RemoteAction::Deactivate);
         remote(tr("Reset"), QStringLiteral("actionReset"), RemoteAction::Reset);

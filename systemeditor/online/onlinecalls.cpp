@@ -13,22 +13,46 @@ using Corba::NodeType;
 
 namespace {
 
-void collectStates(const NamingNode &node, QHash<QString, LifeCycleState> &states)
+// States by path; a component listed twice (in its naming context and below its manager) is
+// asked once, by its object reference.
+void collectStates(const NamingNode &node, QHash<QString, LifeCycleState> &states,
+                   QHash<QString, LifeCycleState> &byIor)
 {
-    if (node.type == NodeType::Component) {
-        try {
-            states.insert(node.path, Corba::ComponentProxy(node.ior, node.path).state());
-        } catch (const Corba::Error &) {
-            // One silent component must not hide the rest of the tree.
-            states.insert(node.path, LifeCycleState::Unknown);
+    // A manager lists its components by profile, without references: their states are taken
+    // from the same instance bound in the naming tree (see fillManagedStates()).
+    if (node.type == NodeType::Component && !node.ior.isEmpty()) {
+        auto known = byIor.find(node.ior);
+        if (known == byIor.end()) {
+            LifeCycleState state = LifeCycleState::Unknown;
+            try {
+                state = Corba::ComponentProxy(node.ior, node.path).state();
+            } catch (const Corba::Error &) {
+                // One silent component must not hide the rest of the tree.
+            }
+            known = byIor.insert(node.ior, state);
         }
+        states.insert(node.path, *known);
     }
-    // A manager lists its components again below itself; their states are taken where they are
-    // bound in the naming tree.
-    if (node.type == NodeType::Manager)
-        return;
     for (const NamingNode &child : node.children)
-        collectStates(child, states);
+        collectStates(child, states, byIor);
+}
+
+void fillManagedStates(const NamingNode &node, QHash<QString, LifeCycleState> &states,
+                       const QHash<QString, LifeCycleState> &byName)
+{
+    if (node.type == NodeType::Component && node.ior.isEmpty())
+        states.insert(node.path, byName.value(node.name, LifeCycleState::Unknown));
+    for (const NamingNode &child : node.children)
+        fillManagedStates(child, states, byName);
+}
+
+void collectNamedStates(const NamingNode &node, const QHash<QString, LifeCycleState> &states,
+                        QHash<QString, LifeCycleState> &byName)
+{
+    if (node.type == NodeType::Component && !node.ior.isEmpty())
+        byName.insert(node.name, states.value(node.path, LifeCycleState::Unknown));
+    for (const NamingNode &child : node.children)
+        collectNamedStates(child, states, byName);
 }
 
 } // namespace
@@ -42,7 +66,11 @@ ServerSnapshot fetchServer(const QString &server)
     ServerSnapshot snapshot;
     snapshot.server = server;
     snapshot.tree = Corba::NamingBrowser::tree(*path);
-    collectStates(snapshot.tree, snapshot.states);
+    QHash<QString, LifeCycleState> byIor;
+    collectStates(snapshot.tree, snapshot.states, byIor);
+    QHash<QString, LifeCycleState> byName;
+    collectNamedStates(snapshot.tree, snapshot.states, byName);
+    fillManagedStates(snapshot.tree, snapshot.states, byName);
     return snapshot;
 }
 

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+#include "onlinedocks.h"
+
+#include "configurationview.h"
+#include "executioncontextview.h"
+#include "nameservicemodel.h"
+#include "nameserviceview.h"
+#include "onlinesession.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QItemSelectionModel>
+#include <QMainWindow>
+#include <QSortFilterProxyModel>
+#include <QTreeView>
+
+namespace Studio {
+
+using SystemEditor::NameServiceModel;
+
+OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
+    : QObject(window)
+    , m_session(new SystemEditor::OnlineSession(this))
+    , m_nameService(new SystemEditor::NameServiceView(m_session, settings))
+    , m_configuration(new SystemEditor::ConfigurationView(m_session))
+    , m_contexts(new SystemEditor::ExecutionContextView(m_session))
+{
+    addDock(window, m_nameService, tr("Name Service"), QStringLiteral("nameServiceDock"),
+            Qt::LeftDockWidgetArea);
+    QDockWidget *configuration
+        = addDock(window, m_configuration, tr("Configuration"), QStringLiteral("configurationDock"),
+                  Qt::BottomDockWidgetArea);
+    QDockWidget *contexts
+        = addDock(window, m_contexts, tr("Execution Contexts"),
+                  QStringLiteral("executionContextDock"), Qt::BottomDockWidgetArea);
+    window->tabifyDockWidget(configuration, contexts);
+    configuration->raise();
+    connect(m_nameService->treeView()->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex &current) {
+                showComponent(m_nameService->filterModel()->mapToSource(current));
+            });
+}
+
+QDockWidget *OnlineDocks::addDock(QMainWindow *window, QWidget *view, const QString &title,
+                                  const QString &name, Qt::DockWidgetArea area)
+{
+    auto *dock = new QDockWidget(title, window);
+    dock->setObjectName(name);
+    dock->setWidget(view);
+    window->addDockWidget(area, dock);
+    dock->hide();
+    m_docks.append(dock);
+    return dock;
+}
+
+QList<QAction *> OnlineDocks::toggleActions() const
+{
+    QList<QAction *> actions;
+    for (QDockWidget *dock : m_docks)
+        actions.append(dock->toggleViewAction());
+    return actions;
+}
+
+void OnlineDocks::setPerspectiveActive(bool systemEditor)
+{
+    // The first switch to the System Editor opens the Name Service; later the user's choice holds.
+    if (systemEditor && !m_shownOnce) {
+        m_shownOnce = true;
+        m_docks.first()->show();
+        return;
+    }
+    if (!systemEditor) {
+        for (QDockWidget *dock : m_docks)
+            dock->hide();
+    }
+}
+
+void OnlineDocks::showComponent(const QModelIndex &index)
+{
+    const auto type = Corba::NodeType(index.data(NameServiceModel::TypeRole).toInt());
+    if (!index.isValid() || type != Corba::NodeType::Component)
+        return;
+    const QString path = index.data(NameServiceModel::PathRole).toString();
+    const QString ior = index.data(NameServiceModel::IorRole).toString();
+    m_configuration->setComponent(path, ior);
+    m_contexts->setComponent(path, ior);
+    for (QDockWidget *dock : m_docks.mid(1))
+        dock->show();
+}
+
+} // namespace Studio

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QList>
+#include <QObject>
+
+class QAction;
+class QDockWidget;
+class QMainWindow;
+class QSettings;
+
+namespace SystemEditor {
+class ConfigurationView;
+class ExecutionContextView;
+class NameServiceView;
+class OnlineSession;
+} // namespace SystemEditor
+
+namespace Studio {
+
+/**
+ * The online views of the System Editor as docks of the main window: Name Service (left),
+ * Configuration and Execution Contexts (bottom, tabbed). Choosing a component in the Name Service
+ * tree shows it in the other two. One OnlineSession runs the remote calls of all of them.
+ */
+class OnlineDocks : public QObject
+{
+    Q_OBJECT
+
+public:
+    /// Creates the docks in `window`, hidden; `settings` keeps the name-server list.
+    OnlineDocks(QMainWindow *window, QSettings *settings);
+
+    SystemEditor::OnlineSession *session() const { return m_session; }
+    SystemEditor::NameServiceView *nameService() const { return m_nameService; }
+    SystemEditor::ConfigurationView *configuration() const { return m_configuration; }
+    SystemEditor::ExecutionContextView *executionContexts() const { return m_contexts; }
+    QList<QDockWidget *> docks() const { return m_docks; }
+    /// The docks' show/hide actions, for the View menu.
+    QList<QAction *> toggleActions() const;
+    /// Shows the docks with the System Editor perspective and hides them with the Builder.
+    void setPerspectiveActive(bool systemEditor);
+
+private:
+    QDockWidget *addDock(QMainWindow *window, QWidget *view, const QString &title,
+                         const QString &name, Qt::DockWidgetArea area);
+    void showComponent(const QModelIndex &index);
+
+    SystemEditor::OnlineSession *m_session;
+    SystemEditor::NameServiceView *m_nameService;
+    SystemEditor::ConfigurationView *m_configuration;
+    SystemEditor::ExecutionContextView *m_contexts;
+    QList<QDockWidget *> m_docks;
+    bool m_shownOnce = false;
+};
+
+} // namespace Studio

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+#include "configurationview.h"
+#include "executioncontextmodel.h"
+#include "executioncontextview.h"
+#include "livesystem.h"
+#include "mainwindow.h"
+#include "nameservicemodel.h"
+#include "nameserviceview.h"
+#include "onlinedocks.h"
+#include "orb.h"
+
+#include <QDockWidget>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSortFilterProxyModel>
+#include <QStandardPaths>
+#include <QTest>
+#include <QTreeView>
+
+using namespace Studio;
+
+// The online views as docks of the main window, driven against a real rtmanager.
+class TestOnlineDocks : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void docksFollowThePerspective();
+    void choosingAComponentShowsItsConfigurationAndContexts();
+
+private:
+    LiveTest::LiveSystem m_live;
+};
+
+void TestOnlineDocks::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("rtstudio-tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_onlinedocks"));
+    QSettings().clear();
+    Corba::Orb::setCallTimeout(3000);
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    const QStringList arguments {
+        "-d",
+        "-o",
+        QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(LiveTest::freePort()),
+        "-o",
+        "corba.nameservers=" + m_live.namingServer(),
+        "-o",
+        "naming.formats=dockhost.host_cxt/%n.rtc",
+        "-o",
+        "manager.naming_formats=dockhost.host_cxt/%n.mgr",
+        "-o",
+        "manager.components.precreate=ConfigSample,ConsoleIn"};
+    QVERIFY2(
+        m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+        qPrintable(error));
+}
+
+void TestOnlineDocks::docksFollowThePerspective()
+{
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *nameService = window.findChild<QDockWidget *>("nameServiceDock");
+    QVERIFY(nameService);
+    QVERIFY(window.findChild<QDockWidget *>("configurationDock"));
+    QVERIFY(window.findChild<QDockWidget *>("executionContextDock"));
+    window.showPerspective(Perspective::Id::Builder);
+    QVERIFY(!nameService->isVisible());
+    window.showPerspective(Perspective::Id::SystemEditor);
+    QVERIFY(nameService->isVisible());
+    window.showPerspective(Perspective::Id::Builder);
+    QVERIFY(!nameService->isVisible());
+}
+
+void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
+{
+    MainWindow window;
+    window.resize(1300, 850);
+    window.show();
+    window.showPerspective(Perspective::Id::SystemEditor);
+    SystemEditor::NameServiceView *view = window.onlineDocks()->nameService();
+    QSignalSpy refreshed(view, &SystemEditor::NameServiceView::serverRefreshed);
+    QVERIFY(view->addServer(m_live.namingServer()));
+    QVERIFY(refreshed.wait(15000));
+
+    const QString path
+        = QStringLiteral("/%1/dockhost.host_cxt/ConfigSample0.rtc").arg(m_live.namingServer());
+    const QModelIndex source = view->model()->indexOfPath(path);
+    QVERIFY(source.isValid());
+    QSignalSpy configurationLoaded(window.onlineDocks()->configuration(),
+                                   &SystemEditor::ConfigurationView::loaded);
+    QSignalSpy contextsLoaded(window.onlineDocks()->executionContexts(),
+                              &SystemEditor::ExecutionContextView::loaded);
+    QTreeView *tree = view->treeView();
+    const QModelIndex shown = view->filterModel()->mapFromSource(source);
+    tree->scrollTo(shown);
+    QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, tree->visualRect(shown).center());
+    QVERIFY(configurationLoaded.wait(10000));
+    QTRY_VERIFY_WITH_TIMEOUT(!contextsLoaded.isEmpty(), 10000);
+    QCOMPARE(window.onlineDocks()->configuration()->componentPath(), path);
+    QVERIFY(window.onlineDocks()->configuration()->shownSets().contains("mode0"));
+    QCOMPARE(window.onlineDocks()->executionContexts()->model()->rowCount(), 1);
+    QVERIFY(window.findChild<QDockWidget *>("configurationDock")->isVisible());
+
+    auto *editor = window.onlineDocks()->configuration()->findChild<QWidget *>("editor_int_param0");
+    QVERIFY(editor);
+    QTRY_VERIFY(editor->isVisible()); // layouts show new rows on the next event-loop turn
+    const QString shot = qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT");
+    if (!shot.isEmpty())
+        window.grab().save(shot);
+}
+
+QTEST_MAIN(TestOnlineDocks)
+#include "tst_onlinedocks.moc"
