@@ -2,6 +2,7 @@
 #include "gencommand.h"
 
 #include "codegenerator.h"
+#include "idlsearchpath.h"
 #include "idltypelibrary.h"
 #include "profileio.h"
 #include "projectwriter.h"
@@ -31,36 +32,6 @@ void print(const Diagnostics &diagnostics, QTextStream &stream)
 {
     for (const Diagnostic &d : diagnostics)
         stream << d.toString() << '\n';
-}
-
-/// The folders IDL is looked up in: the bundled OpenRTM set, the profile's folder and its idl/,
-/// the folders of IDL files the profile names, then the user's.
-QStringList idlSearchDirs(const GenOptions &options, const RtcProfile &profile)
-{
-    const QDir profileDir = QFileInfo(options.profile).absoluteDir();
-    QStringList dirs{QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR), profileDir.path(),
-                     profileDir.filePath(QStringLiteral("idl"))};
-    auto addFileDir = [&](const std::optional<QString> &idlFile) {
-        if (!idlFile || idlFile->isEmpty())
-            return;
-        const QFileInfo info(profileDir, *idlFile);
-        if (info.exists())
-            dirs << info.absolutePath();
-    };
-    for (const RtcDataPort &port : profile.dataPorts)
-        addFileDir(port.idlFile);
-    for (const RtcServicePort &port : profile.servicePorts) {
-        for (const RtcServiceInterface &iface : port.interfaces)
-            addFileDir(iface.idlFile);
-    }
-    dirs << options.idlDirs;
-    QStringList unique;
-    for (const QString &dir : std::as_const(dirs)) {
-        const QString clean = QDir::cleanPath(QDir(dir).absolutePath());
-        if (QFileInfo(clean).isDir() && !unique.contains(clean))
-            unique << clean;
-    }
-    return unique;
 }
 
 void printReport(const WriteReport &report, QTextStream &out)
@@ -172,7 +143,9 @@ int GenCommand::run(const QStringList &arguments, Streams streams)
         print(diagnostics, streams.err);
         return ExitProblems;
     }
-    const IdlTypeLibrary library(idlSearchDirs(options, *loaded->rtc));
+    const IdlTypeLibrary library(
+        idlSearchDirs(*loaded->rtc, QFileInfo(options.profile).absolutePath(),
+                      {QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR)}, options.idlDirs));
     CodeGenerator generator(*loaded->rtc, library.model());
     generator.setUserTemplateFolder(options.templates);
     Diagnostics problems;
