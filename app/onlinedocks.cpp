@@ -3,6 +3,7 @@
 
 #include "configurationview.h"
 #include "executioncontextview.h"
+#include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
 #include "onlinesession.h"
@@ -24,6 +25,7 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     , m_nameService(new SystemEditor::NameServiceView(m_session, settings))
     , m_configuration(new SystemEditor::ConfigurationView(m_session))
     , m_contexts(new SystemEditor::ExecutionContextView(m_session))
+    , m_manager(new SystemEditor::ManagerView(m_session))
 {
     addDock(window, m_nameService, tr("Name Service"), QStringLiteral("nameServiceDock"),
             Qt::LeftDockWidgetArea);
@@ -33,11 +35,14 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     QDockWidget *contexts
         = addDock(window, m_contexts, tr("Execution Contexts"),
                   QStringLiteral("executionContextDock"), Qt::BottomDockWidgetArea);
+    QDockWidget *manager = addDock(window, m_manager, tr("Manager"), QStringLiteral("managerDock"),
+                                   Qt::BottomDockWidgetArea);
     window->tabifyDockWidget(configuration, contexts);
+    window->tabifyDockWidget(contexts, manager);
     configuration->raise();
     connect(m_nameService->treeView()->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) {
-                showComponent(m_nameService->filterModel()->mapToSource(current));
+                showItem(m_nameService->filterModel()->mapToSource(current));
             });
 }
 
@@ -75,17 +80,26 @@ void OnlineDocks::setPerspectiveActive(bool systemEditor)
     }
 }
 
-void OnlineDocks::showComponent(const QModelIndex &index)
+void OnlineDocks::showItem(const QModelIndex &index)
 {
-    const auto type = Corba::NodeType(index.data(NameServiceModel::TypeRole).toInt());
-    if (!index.isValid() || type != Corba::NodeType::Component)
+    if (!index.isValid())
         return;
+    const auto type = Corba::NodeType(index.data(NameServiceModel::TypeRole).toInt());
     const QString path = index.data(NameServiceModel::PathRole).toString();
     const QString ior = index.data(NameServiceModel::IorRole).toString();
-    m_configuration->setComponent(path, ior);
-    m_contexts->setComponent(path, ior);
-    for (QDockWidget *dock : m_docks.mid(1))
-        dock->show();
+    if (ior.isEmpty())
+        return;
+    if (type == Corba::NodeType::Component) {
+        m_configuration->setComponent(path, ior);
+        m_contexts->setComponent(path, ior);
+        m_docks.at(1)->show();
+        m_docks.at(2)->show();
+        m_docks.at(1)->raise();
+    } else if (type == Corba::NodeType::Manager) {
+        m_manager->setManager(path, ior);
+        m_docks.at(3)->show();
+        m_docks.at(3)->raise();
+    }
 }
 
 } // namespace Studio

@@ -12,6 +12,7 @@ class QSettings;
 namespace SystemEditor {
 class ConfigurationView;
 class ExecutionContextView;
+class ManagerView;
 class NameServiceView;
 class OnlineSession;
 } // namespace SystemEditor
@@ -20,8 +21,9 @@ namespace Studio {
 
 /**
  * The online views of the System Editor as docks of the main window: Name Service (left),
- * Configuration and Execution Contexts (bottom, tabbed). Choosing a component in the Name Service
- * tree shows it in the other two. One OnlineSession runs the remote calls of all of them.
+ * Configuration, Execution Contexts and Manager (bottom, tabbed). Choosing a component in the Name
+ * Service tree shows it in the first two, choosing a manager in the Manager view. One OnlineSession
+ * runs the remote calls of all of them.
  */
 class OnlineDocks : public QObject
 {
@@ -35,6 +37,7 @@ public:
     SystemEditor::NameServiceView *nameService() const { return m_nameService; }
     SystemEditor::ConfigurationView *configuration() const { return m_configuration; }
     SystemEditor::ExecutionContextView *executionContexts() const { return m_contexts; }
+    SystemEditor::ManagerView *manager() const { return m_manager; }
     QList<QDockWidget *> docks() const { return m_docks; }
     /// The docks' show/hide actions, for the View menu.
     QList<QAction *> toggleActions() const;
@@ -44,12 +47,13 @@ public:
 private:
     QDockWidget *addDock(QMainWindow *window, QWidget *view, const QString &title,
                          const QString &name, Qt::DockWidgetArea area);
-    void showComponent(const QModelIndex &index);
+    void showItem(const QModelIndex &index);
 
     SystemEditor::OnlineSession *m_session;
     SystemEditor::NameServiceView *m_nameService;
     SystemEditor::ConfigurationView *m_configuration;
     SystemEditor::ExecutionContextView *m_contexts;
+    SystemEditor::ManagerView *m_manager;
     QList<QDockWidget *> m_docks;
     bool m_shownOnce = false;
 };

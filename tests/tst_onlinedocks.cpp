@@ -4,6 +4,7 @@
 #include "executioncontextview.h"
 #include "livesystem.h"
 #include "mainwindow.h"
+#include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
 #include "onlinedocks.h"
@@ -68,6 +69,7 @@ void TestOnlineDocks::docksFollowThePerspective()
     QVERIFY(nameService);
     QVERIFY(window.findChild<QDockWidget *>("configurationDock"));
     QVERIFY(window.findChild<QDockWidget *>("executionContextDock"));
+    QVERIFY(window.findChild<QDockWidget *>("managerDock"));
     window.showPerspective(Perspective::Id::Builder);
     QVERIFY(!nameService->isVisible());
     window.showPerspective(Perspective::Id::SystemEditor);
@@ -105,6 +107,20 @@ void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
     QVERIFY(window.onlineDocks()->configuration()->shownSets().contains("mode0"));
     QCOMPARE(window.onlineDocks()->executionContexts()->model()->rowCount(), 1);
     QVERIFY(window.findChild<QDockWidget *>("configurationDock")->isVisible());
+
+    // Choosing the manager shows it in the Manager dock.
+    const QModelIndex managerIndex = view->filterModel()->mapFromSource(view->model()->indexOfPath(
+        QStringLiteral("/%1/dockhost.host_cxt/manager.mgr").arg(m_live.namingServer())));
+    QVERIFY(managerIndex.isValid());
+    QSignalSpy managerLoaded(window.onlineDocks()->manager(), &SystemEditor::ManagerView::loaded);
+    tree->setCurrentIndex(managerIndex);
+    QVERIFY(managerLoaded.wait(10000));
+    QVERIFY(window.onlineDocks()->manager()->types().contains("ConfigSample"));
+    QVERIFY(window.findChild<QDockWidget *>("managerDock")->isVisible());
+    if (!qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT").isEmpty())
+        window.grab().save(qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT") + ".manager.png");
+    tree->setCurrentIndex(shown);
+    window.findChild<QDockWidget *>("configurationDock")->raise();
 
     auto *editor = window.onlineDocks()->configuration()->findChild<QWidget *>("editor_int_param0");
     QVERIFY(editor);
