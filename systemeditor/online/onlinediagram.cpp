@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: MIT
+#include "onlinediagram.h"
+
+#include "componentitem.h"
+#include "componentproxy.h"
+#include "iorendpoint.h"
+#include "livesystembuilder.h"
+#include "nameservicemodel.h"
+#include "onlineicons.h"
+#include "onlinesession.h"
+#include "systemmodel.h"
+#include "systemscene.h"
+
+#include <QDragEnterEvent>
+#include <QGraphicsView>
+#include <QLabel>
+#include <QMenu>
+#include <QMimeData>
+#include <QSettings>
+#include <QTimer>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+Q_DECLARE_METATYPE(Corba::ComponentInfo)
+
+namespace SystemEditor {
+
+namespace {
+
+const QString PollIntervalKey = QStringLiteral("online/pollInterval");
+
+void run(const Corba::ComponentProxy &proxy, OnlineDiagram::Action action)
+{
+    using A = OnlineDiagram::Action;
+    switch (action) {
+    case A::Activate:
+        return proxy.activate();
+    case A::Deactivate:
+        return proxy.deactivate();
+    case A::Reset:
+        return proxy.reset();
+    case A::Exit:
+        return proxy.exit();
+    case A::Start:
+        return proxy.startContext();
+    case A::Stop:
+        return proxy.stopContext();
+    }
+}
+
+} // namespace
+
+OnlineDiagram::OnlineDiagram(OnlineSession *session, QWidget *parent)
+    : QWidget(parent)
+    , m_session(session)
+    , m_undoStack(new QUndoStack(this))
+    , m_model(new SystemModel(this))
+    , m_scene(new SystemScene(m_model, m_undoStack, this))
+    , m_timer(new QTimer(this))
+{
+    qRegisterMetaType<LiveComponentPoll>();
+    buildUi();
+    m_timer->setInterval(QSettings().value(PollIntervalKey, 1000).toInt());
+    connect(m_timer, &QTimer::timeout, this, &OnlineDiagram::poll);
+    m_timer->start();
+    // The scene rebuilds items from the model; the state colours go back on afterwards.
+    connect(m_model, &SystemModel::componentChanged, this, &OnlineDiagram::applyColours,
+            Qt::QueuedConnection);
+    connect(m_model, &SystemModel::componentAdded, this, &OnlineDiagram::applyColours,
+            Qt::QueuedConnection);
+}
+
+OnlineDiagram::~OnlineDiagram() = default;
+
+void OnlineDiagram::buildUi()
+{
+    m_view = new QGraphicsView(m_scene, this);
+    m_view->setObjectName(QStringLiteral("onlineView"));
+    m_view->setRenderHint(QPainter::Antialiasing);
+    m_view->setAcceptDrops(true);
+    m_view->viewport()->installEventFilter(this);
+    m_view->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_view, &QGraphicsView::customContextMenuRequested, this,
+            &OnlineDiagram::showContextMenu);
+    auto *toolbar = new QToolBar(this);
+    const std::pair<const char *, Action> all[]
+        = {{QT_TR_NOOP("Activate All"), Action::Activate},
+           {QT_TR_NOOP("Deactivate All"), Action::Deactivate},
+           {QT_TR_NOOP("Reset All"), Action::Reset},
+           {QT_TR_NOOP("Start All"), Action::Start},
+           {QT_TR_NOOP("Stop All"), Action::Stop},
+           {QT_TR_NOOP("Exit All"), Action::Exit}};
+    for (const auto &[text, action] : all) {
+        const Action what = action;
+        QAction *a = toolbar->addAction(tr(text), this, [this, what] { performAll(what); });
+        a->setObjectName(QStringLiteral("action")
+                         + QString::fromLatin1(text).remove(QLatin1Char(' ')));
+    }
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("statusLabel"));
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(toolbar);
+    layout->addWidget(m_view, 1);
+    layout->addWidget(m_status);
+}
+
+QString OnlineDiagram::hostOf(const Live &live) const
+{
+    const QString endpoint = iorEndpoint(live.ior);
+    return endpoint.isEmpty() ? live.path : endpoint;
+}
+
+void OnlineDiagram::addComponent(const QString &path, const QString &ior, const QPointF &position)
+{
+    const Corba::ComponentProxy proxy(ior, path);
+    Live probe {path, ior, {}, {}};
+    m_session->submit(
+        hostOf(probe), [proxy] { return QVariant::fromValue(proxy.profile()); }, this,
+        [this, path, ior, position](const OnlineResult &result) {
+            if (!result.ok) {
+                m_status->setText(result.error);
+                return;
+            }
+            const auto info = result.value.value<Corba::ComponentInfo>();
+            if (m_model->hasComponent(info.instanceName))
+                return;
+            LiveComponentRecord record = LiveSystemBuilder::component(info, path, ior);
+            Profile::RtsLocation location;
+            location.x = QString::number(int(position.x()));
+            location.y = QString::number(int(position.y()));
+            location.width = location.height = QStringLiteral("-1");
+            location.direction = QStringLiteral("RIGHT");
+            record.component.layout = location;
+            m_live.insert(info.instanceName,
+                          {path, ior, Corba::LifeCycleState::Unknown, info.ports});
+            m_model->addComponent(record.component, record.rtc);
+            emit componentAdded(info.instanceName);
+            poll();
+        });
+}
+
+Corba::LifeCycleState OnlineDiagram::state(const QString &instanceName) const
+{
+    return m_live.value(instanceName).state;
+}
+
+QColor OnlineDiagram::bodyColor(const QString &instanceName) const
+{
+    const ComponentItem *item = m_scene->componentItem(instanceName);
+    return item ? item->appearance().bodyColor : QColor();
+}
+
+void OnlineDiagram::setPollInterval(int milliseconds)
+{
+    m_timer->setInterval(std::max(50, milliseconds));
+    QSettings().setValue(PollIntervalKey, m_timer->interval());
+}
+
+int OnlineDiagram::pollInterval() const
+{
+    return m_timer->interval();
+}
+
+void OnlineDiagram::poll()
+{
+    if (m_pendingPolls > 0 || m_live.isEmpty())
+        return;
+    for (auto it = m_live.begin(); it != m_live.end(); ++it) {
+        const QString instance = it.key();
+        const Corba::ComponentProxy proxy(it->ior, it->path);
+        ++m_pendingPolls;
+        m_session->submit(
+            hostOf(*it),
+            [proxy] {
+                LiveComponentPoll result;
+                result.state = proxy.state();
+                result.ports = proxy.ports();
+                return QVariant::fromValue(result);
+            },
+            this,
+            [this, instance](const OnlineResult &result) {
+                auto live = m_live.find(instance);
+                if (live != m_live.end()) {
+                    // A component that does not answer is drawn as Unknown, never reported as an
+                    // error.
+                    const auto polled = result.value.value<LiveComponentPoll>();
+                    live->state = result.ok ? polled.state : Corba::LifeCycleState::Unknown;
+                    if (result.ok)
+                        live->ports = polled.ports;
+                }
+                if (--m_pendingPolls == 0)
+                    finishRound();
+            });
+    }
+}
+
+void OnlineDiagram::finishRound()
+{
+    syncConnectors();
+    applyColours();
+    emit polled();
+}
+
+void OnlineDiagram::syncConnectors()
+{
+    std::vector<Corba::PortInfo> ports;
+    for (const Live &live : std::as_const(m_live))
+        ports.insert(ports.end(), live.ports.begin(), live.ports.end());
+    const QStringList instances = m_live.keys();
+    QSet<QString> liveIds;
+    for (const auto &c : LiveSystemBuilder::dataConnectors(ports, instances)) {
+        liveIds.insert(c.connectorId);
+        if (!m_model->connector(c.connectorId))
+            m_model->addDataConnector(c);
+    }
+    for (const auto &c : LiveSystemBuilder::serviceConnectors(ports, instances)) {
+        liveIds.insert(c.connectorId);
+        if (!m_model->connector(c.connectorId))
+            m_model->addServiceConnector(c);
+    }
+    // Connectors that no port reports any more were disconnected elsewhere.
+    for (const QString &id : m_model->connectorIds()) {
+        if (!liveIds.contains(id))
+            m_model->removeConnector(id);
+    }
+}
+
+void OnlineDiagram::applyColours()
+{
+    for (auto it = m_live.cbegin(); it != m_live.cend(); ++it) {
+        ComponentItem *item = m_scene->componentItem(it.key());
+        if (!item)
+            continue;
+        ComponentAppearance appearance = item->appearance();
+        const QColor colour = OnlineIcons::stateColor(it->state);
+        if (appearance.bodyColor == colour)
+            continue;
+        appearance.bodyColor = colour;
+        item->setAppearance(appearance);
+    }
+}
+
+void OnlineDiagram::perform(Action action, const QString &instanceName)
+{
+    const auto live = m_live.constFind(instanceName);
+    if (live == m_live.cend())
+        return;
+    const Corba::ComponentProxy proxy(live->ior, live->path);
+    m_session->submit(
+        hostOf(*live),
+        [proxy, action] {
+            run(proxy, action);
+            return QVariant();
+        },
+        this,
+        [this, instanceName](const OnlineResult &result) {
+            if (!result.ok)
+                m_status->setText(result.error);
+            emit actionFinished(instanceName, result.ok ? QString() : result.error);
+            poll();
+        });
+}
+
+void OnlineDiagram::performAll(Action action)
+{
+    for (const QString &instance : m_live.keys())
+        perform(action, instance);
+}
+
+void OnlineDiagram::showContextMenu(const QPoint &position)
+{
+    QGraphicsItem *hit = m_view->itemAt(position);
+    while (hit && hit->type() != ComponentItem::Type)
+        hit = hit->parentItem();
+    if (!hit)
+        return;
+    const QString instance = static_cast<ComponentItem *>(hit)->instanceName();
+    QMenu menu(this);
+    const std::pair<QString, Action> actions[]
+        = {{tr("Activate"), Action::Activate}, {tr("Deactivate"), Action::Deactivate},
+           {tr("Reset"), Action::Reset},       {tr("Start"), Action::Start},
+           {tr("Stop"), Action::Stop},         {tr("Exit"), Action::Exit}};
+    for (const auto &[text, action] : actions) {
+        const Action what = action;
+        menu.addAction(text, this, [this, what, instance] { perform(what, instance); });
+    }
+    menu.exec(m_view->viewport()->mapToGlobal(position));
+}
+
+bool OnlineDiagram::dropComponents(const QByteArray &data, const QPointF &scenePos)
+{
+    QPointF position = scenePos;
+    for (const QString &line :
+         QString::fromUtf8(data).split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        const QString path = line.section(QLatin1Char('\t'), 0, 0);
+        const QString ior = line.section(QLatin1Char('\t'), 1);
+        if (ior.isEmpty())
+            continue;
+        addComponent(path, ior, position);
+        position += QPointF(40, 160);
+    }
+    return true;
+}
+
+bool OnlineDiagram::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched != m_view->viewport())
+        return QWidget::eventFilter(watched, event);
+    const QString mime = NameServiceModel::componentMimeType();
+    switch (event->type()) {
+    case QEvent::DragEnter:
+    case QEvent::DragMove: {
+        auto *drag = static_cast<QDragMoveEvent *>(event);
+        if (!drag->mimeData()->hasFormat(mime))
+            return false;
+        drag->acceptProposedAction();
+        return true;
+    }
+    case QEvent::Drop: {
+        auto *drop = static_cast<QDropEvent *>(event);
+        if (!drop->mimeData()->hasFormat(mime))
+            return false;
+        dropComponents(drop->mimeData()->data(mime),
+                       m_view->mapToScene(drop->position().toPoint()));
+        drop->acceptProposedAction();
+        return true;
+    }
+    default:
+        return QWidget::eventFilter(watched, event);
+    }
+}
+
+} // namespace SystemEditor

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "corbatypes.h"
+
+#include <QHash>
+#include <QMetaType>
+#include <QPointF>
+#include <QWidget>
+
+class QGraphicsView;
+class QLabel;
+class QTimer;
+class QUndoStack;
+
+namespace SystemEditor {
+
+class OnlineSession;
+class SystemModel;
+class SystemScene;
+
+/// What one poll of a live component returned.
+struct LiveComponentPoll
+{
+    Corba::LifeCycleState state = Corba::LifeCycleState::Unknown;
+    std::vector<Corba::PortInfo> ports;
+};
+
+/**
+ * The online diagram: live components dropped from the Name Service view, drawn by the offline
+ * canvas over a System Editor model built from their profiles, filled with their state colour
+ * (Created white, Inactive blue, Active green, Error red, Unknown/unreachable black) and joined
+ * by the connectors their ports report. A background poller (interval in QSettings
+ * `online/pollInterval`, default 1000 ms) refreshes states and connectors through the worker
+ * layer; components that stop answering turn black instead of raising errors.
+ */
+class OnlineDiagram : public QWidget
+{
+    Q_OBJECT
+
+public:
+    enum class Action { Activate, Deactivate, Reset, Exit, Start, Stop };
+
+    explicit OnlineDiagram(OnlineSession *session, QWidget *parent = nullptr);
+    ~OnlineDiagram() override;
+
+    SystemModel *model() const { return m_model; }
+    SystemScene *scene() const { return m_scene; }
+    QGraphicsView *view() const { return m_view; }
+
+    /// Reads the component's profile and adds it at `position` (scene coordinates).
+    void addComponent(const QString &path, const QString &ior, const QPointF &position);
+    Corba::LifeCycleState state(const QString &instanceName) const;
+    /// The body colour the canvas currently draws for the component.
+    QColor bodyColor(const QString &instanceName) const;
+
+    void setPollInterval(int milliseconds);
+    int pollInterval() const;
+    /// Starts one poll round now (skipped while the previous one is still running).
+    void poll();
+
+    void perform(Action action, const QString &instanceName);
+    void performAll(Action action);
+
+signals:
+    void componentAdded(const QString &instanceName);
+    /// A poll round finished and states and connectors are up to date.
+    void polled();
+    void actionFinished(const QString &instanceName, const QString &error);
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    struct Live
+    {
+        QString path;
+        QString ior;
+        Corba::LifeCycleState state = Corba::LifeCycleState::Unknown;
+        std::vector<Corba::PortInfo> ports;
+    };
+
+    void buildUi();
+    QString hostOf(const Live &live) const;
+    void finishRound();
+    void syncConnectors();
+    void applyColours();
+    void showContextMenu(const QPoint &position);
+    bool dropComponents(const QByteArray &data, const QPointF &scenePos);
+
+    OnlineSession *m_session;
+    QUndoStack *m_undoStack;
+    SystemModel *m_model;
+    SystemScene *m_scene;
+    QGraphicsView *m_view = nullptr;
+    QLabel *m_status = nullptr;
+    QTimer *m_timer;
+    QHash<QString, Live> m_live; ///< by instance name
+    int m_pendingPolls = 0;
+};
+
+} // namespace SystemEditor
+
+Q_DECLARE_METATYPE(SystemEditor::LiveComponentPoll)

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: MIT
+#include "componentproxy.h"
+#include "livesystem.h"
+#include "nameservicemodel.h"
+#include "namingbrowser.h"
+#include "onlinediagram.h"
+#include "onlineicons.h"
+#include "onlinesession.h"
+#include "orb.h"
+#include "portconnection.h"
+#include "systemmodel.h"
+#include "systemscene.h"
+
+#include <QDropEvent>
+#include <QElapsedTimer>
+#include <QGraphicsView>
+#include <QMimeData>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+#include <QTimer>
+
+#include <csignal>
+
+using namespace SystemEditor;
+using Corba::LifeCycleState;
+
+// The online diagram against components running in a real rtmanager.
+class TestOnlineDiagram : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void dropsLiveComponentsWithStateColours();
+    void activateTurnsTheComponentGreen();
+    void drawsLiveConnectors();
+    void stoppedManagerTurnsBlackWithoutStallingTheGui();
+
+private:
+    Corba::ComponentProxy component(const QString &instance) const;
+    void dropOnto(OnlineDiagram &diagram, const QStringList &instances);
+    void waitForPoll(OnlineDiagram &diagram);
+
+    LiveTest::LiveSystem m_live;
+    QProcess *m_manager = nullptr;
+};
+
+void TestOnlineDiagram::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("rtstudio-tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_onlinediagram"));
+    QSettings().clear();
+    Corba::Orb::setCallTimeout(3000);
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    const QStringList arguments {
+        "-d",
+        "-o",
+        QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(LiveTest::freePort()),
+        "-o",
+        "corba.nameservers=" + m_live.namingServer(),
+        "-o",
+        "naming.formats=diahost.host_cxt/%n.rtc",
+        "-o",
+        "manager.naming_formats=diahost.host_cxt/%n.mgr",
+        "-o",
+        "manager.components.precreate=ConsoleIn,ConsoleOut"};
+    m_manager
+        = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    QVERIFY2(m_manager, qPrintable(error));
+}
+
+Corba::ComponentProxy TestOnlineDiagram::component(const QString &instance) const
+{
+    const auto path = Corba::RtPath::parse(
+        QStringLiteral("/%1/diahost.host_cxt/%2.rtc").arg(m_live.namingServer(), instance));
+    return Corba::ComponentProxy(Corba::NamingBrowser::resolve(*path), path->toString());
+}
+
+void TestOnlineDiagram::dropOnto(OnlineDiagram &diagram, const QStringList &instances)
+{
+    QStringList lines;
+    for (const QString &instance : instances) {
+        const Corba::ComponentProxy proxy = component(instance);
+        lines.append(proxy.path() + '\t' + proxy.ior());
+    }
+    QMimeData mime;
+    mime.setData(NameServiceModel::componentMimeType(), lines.join('\n').toUtf8());
+    QWidget *viewport = diagram.view()->viewport();
+    const QPointF at(60, 60);
+    QDragEnterEvent enter(at.toPoint(), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(viewport, &enter);
+    QVERIFY(enter.isAccepted());
+    QSignalSpy added(&diagram, &OnlineDiagram::componentAdded);
+    QDropEvent drop(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(viewport, &drop);
+    QVERIFY(drop.isAccepted());
+    QTRY_COMPARE_WITH_TIMEOUT(added.size(), instances.size(), 10000);
+}
+
+void TestOnlineDiagram::waitForPoll(OnlineDiagram &diagram)
+{
+    QSignalSpy polled(&diagram, &OnlineDiagram::polled);
+    diagram.poll();
+    QVERIFY(polled.wait(10000));
+}
+
+void TestOnlineDiagram::dropsLiveComponentsWithStateColours()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    QCOMPARE(diagram.pollInterval(), 1000);
+    dropOnto(diagram, {"ConsoleIn0", "ConsoleOut0"});
+    QCOMPARE(diagram.model()->componentIds().size(), 2);
+    QCOMPARE(diagram.scene()->componentItemCount(), 2);
+    QTRY_COMPARE_WITH_TIMEOUT(int(diagram.state("ConsoleIn0")), int(LifeCycleState::Inactive),
+                              10000);
+    QTRY_COMPARE(diagram.bodyColor("ConsoleIn0"),
+                 OnlineIcons::stateColor(LifeCycleState::Inactive));
+    QVERIFY(diagram.model()->port("ConsoleIn0", "ConsoleIn0.out").has_value());
+    QCOMPARE(diagram.model()->port("ConsoleIn0", "ConsoleIn0.out")->kind, PortKind::DataOut);
+    const Corba::ComponentProxy again0 = component("ConsoleIn0");
+    diagram.addComponent(again0.path(), again0.ior(), {300, 300}); // dropped again: not added twice
+    QTRY_COMPARE_WITH_TIMEOUT(session.pendingCalls(), 0, 10000);
+    QCOMPARE(diagram.model()->componentIds().size(), 2);
+
+    diagram.setPollInterval(250);
+    QCOMPARE(diagram.pollInterval(), 250);
+    OnlineDiagram again(&session);
+    QCOMPARE(again.pollInterval(), 250); // remembered
+    again.setPollInterval(1000);
+}
+
+void TestOnlineDiagram::activateTurnsTheComponentGreen()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    dropOnto(diagram, {"ConsoleOut0"});
+    QSignalSpy finished(&diagram, &OnlineDiagram::actionFinished);
+    diagram.perform(OnlineDiagram::Action::Activate, "ConsoleOut0");
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(0).at(1).toString(), QString());
+    QTRY_COMPARE_WITH_TIMEOUT(diagram.bodyColor("ConsoleOut0"),
+                              OnlineIcons::stateColor(LifeCycleState::Active), 10000);
+    QCOMPARE(component("ConsoleOut0").state(), LifeCycleState::Active);
+    diagram.performAll(OnlineDiagram::Action::Deactivate);
+    QTRY_COMPARE_WITH_TIMEOUT(diagram.bodyColor("ConsoleOut0"),
+                              OnlineIcons::stateColor(LifeCycleState::Inactive), 10000);
+}
+
+void TestOnlineDiagram::drawsLiveConnectors()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    dropOnto(diagram, {"ConsoleIn0", "ConsoleOut0"});
+    const Corba::PortInfo out = component("ConsoleIn0").port("out");
+    const Corba::PortInfo in = component("ConsoleOut0").port("in");
+    Corba::ConnectionRequest request;
+    request.id = QStringLiteral("live-connector-1");
+    const Corba::ConnectorInfo made = Corba::PortConnection::connect({out, in}, request, "test");
+    waitForPoll(diagram);
+    QCOMPARE(diagram.model()->connectorIds(), QStringList {made.id});
+    QCOMPARE(diagram.scene()->connectorItemCount(), 1);
+    const auto connector = diagram.model()->connector(made.id);
+    QVERIFY(connector.has_value());
+    Corba::PortConnection::disconnect(out, made.id, "test");
+    waitForPoll(diagram);
+    QVERIFY(diagram.model()->connectorIds().isEmpty());
+    QCOMPARE(diagram.scene()->connectorItemCount(), 0);
+}
+
+void TestOnlineDiagram::stoppedManagerTurnsBlackWithoutStallingTheGui()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    dropOnto(diagram, {"ConsoleIn0"});
+    waitForPoll(diagram);
+    QCOMPARE(diagram.bodyColor("ConsoleIn0"), OnlineIcons::stateColor(LifeCycleState::Inactive));
+
+    Corba::Orb::setCallTimeout(500);
+    const pid_t pid = pid_t(m_manager->processId());
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    struct Resume
+    {
+        pid_t pid;
+        ~Resume()
+        {
+            ::kill(pid, SIGCONT);
+            Corba::Orb::setCallTimeout(3000);
+        }
+    } resume {pid};
+    QElapsedTimer clock;
+    clock.start();
+    qint64 last = 0;
+    qint64 worstGap = 0;
+    QTimer ticker;
+    ticker.setInterval(10);
+    connect(&ticker, &QTimer::timeout, this, [&] {
+        worstGap = std::max(worstGap, clock.elapsed() - last);
+        last = clock.elapsed();
+    });
+    ticker.start();
+    QSignalSpy polled(&diagram, &OnlineDiagram::polled);
+    diagram.poll();
+    QVERIFY(polled.wait(10000));
+    ticker.stop();
+    QVERIFY2(worstGap < 100, qPrintable(QString::number(worstGap)));
+    QCOMPARE(diagram.state("ConsoleIn0"), LifeCycleState::Unknown);
+    QCOMPARE(diagram.bodyColor("ConsoleIn0"), OnlineIcons::stateColor(LifeCycleState::Unknown));
+}
+
+QTEST_MAIN(TestOnlineDiagram)
+#include "tst_onlinediagram.moc"
