@@ -8,15 +8,26 @@ namespace Codegen {
 
 namespace {
 
+// A marker counts only on a line of its own, optionally inside a comment (`//`, `#`, `<!-- -->`,
+// `/* */` …): text that merely mentions a marker, such as the generated README explaining them,
+// must not open a block.
+QRegularExpression markerLine(const QString &marker)
+{
+    return QRegularExpression(QStringLiteral("^\\s*(?:(?://+|#+|<!--|/\\*+|\\*|--|;+|%+)\\s*)?")
+                              + marker + QStringLiteral("\\s*(?:-->|\\*/)?\\s*$"));
+}
+
 const QRegularExpression &openMarker()
 {
-    static const QRegularExpression re(QStringLiteral("<rtc-template\\s+block\\s*=\\s*\"([^\"]*)\"\\s*>"));
+    static const QRegularExpression re
+        = markerLine(QStringLiteral("<rtc-template\\s+block\\s*=\\s*\"([^\"]*)\"\\s*>"));
     return re;
 }
 
 bool isCloseMarker(const QString &line)
 {
-    return line.contains(QLatin1String("</rtc-template>"));
+    static const QRegularExpression re = markerLine(QStringLiteral("</rtc-template>"));
+    return re.match(line).hasMatch();
 }
 
 struct Block
