@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "generateprompts.h"
+
+#include <QPointer>
+#include <QWidget>
+
+#include <functional>
+
+namespace Builder {
+
+class ComponentEditor;
+class GenerateController;
+
+/// GeneratePrompts answered by the user through modal dialogs over `parent`.
+class GenerateDialogPrompts : public GeneratePrompts
+{
+public:
+    explicit GenerateDialogPrompts(QWidget *parent);
+
+    std::optional<GenerateOptions> askGenerateOptions(const GenerateOptions &current) override;
+    FileChoice askFileDecision(const QString &relativePath, const QByteArray &existing,
+                               const QByteArray &fresh) override;
+    QString askRestoreStamp(const QString &projectDir, const QStringList &stamps) override;
+    bool confirmClearBackups(const QString &projectDir, int count) override;
+    void showSummary(const QString &title, const QString &text,
+                     const Profile::Diagnostics &problems) override;
+
+private:
+    QPointer<QWidget> m_parent;
+};
+
+/**
+ * Gives `editor` its Generate, Code restore and Clear backups: a GenerateController (a child of
+ * the editor) asking through dialogs over it. `profilePath` tells where the profile is saved
+ * (for IDL next to it); it may be empty.
+ */
+GenerateController *installGenerateController(ComponentEditor *editor,
+                                              std::function<QString()> profilePath);
+
+} // namespace Builder
