@@ -6,7 +6,9 @@
 #include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
+#include "onlinediagram.h"
 #include "onlinesession.h"
+#include "systemmodel.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -26,6 +28,7 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     , m_configuration(new SystemEditor::ConfigurationView(m_session))
     , m_contexts(new SystemEditor::ExecutionContextView(m_session))
     , m_manager(new SystemEditor::ManagerView(m_session))
+    , m_diagram(new SystemEditor::OnlineDiagram(m_session))
 {
     addDock(window, m_nameService, tr("Name Service"), QStringLiteral("nameServiceDock"),
             Qt::LeftDockWidgetArea);
@@ -37,12 +40,18 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
                   QStringLiteral("executionContextDock"), Qt::BottomDockWidgetArea);
     QDockWidget *manager = addDock(window, m_manager, tr("Manager"), QStringLiteral("managerDock"),
                                    Qt::BottomDockWidgetArea);
+    addDock(window, m_diagram, tr("Online Diagram"), QStringLiteral("onlineDiagramDock"),
+            Qt::RightDockWidgetArea);
     window->tabifyDockWidget(configuration, contexts);
     window->tabifyDockWidget(contexts, manager);
     configuration->raise();
     connect(m_nameService->treeView()->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) {
                 showItem(m_nameService->filterModel()->mapToSource(current));
+            });
+    connect(m_nameService->treeView(), &QTreeView::doubleClicked, this,
+            [this](const QModelIndex &index) {
+                addToDiagram(m_nameService->filterModel()->mapToSource(index));
             });
 }
 
@@ -100,6 +109,19 @@ void OnlineDocks::showItem(const QModelIndex &index)
         m_docks.at(3)->show();
         m_docks.at(3)->raise();
     }
+}
+
+void OnlineDocks::addToDiagram(const QModelIndex &index)
+{
+    const auto type = Corba::NodeType(index.data(NameServiceModel::TypeRole).toInt());
+    const QString ior = index.data(NameServiceModel::IorRole).toString();
+    if (type != Corba::NodeType::Component || ior.isEmpty())
+        return;
+    // New components go below each other, left of the data flow they will join.
+    const int count = int(m_diagram->model()->componentIds().size());
+    m_diagram->addComponent(index.data(NameServiceModel::PathRole).toString(), ior,
+                            QPointF(40 + 260 * (count % 3), 40 + 180 * (count / 3)));
+    m_docks.at(4)->show();
 }
 
 } // namespace Studio

@@ -7,8 +7,11 @@
 #include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
+#include "onlinediagram.h"
 #include "onlinedocks.h"
+#include "onlineicons.h"
 #include "orb.h"
+#include "systemmodel.h"
 
 #include <QDockWidget>
 #include <QSettings>
@@ -70,6 +73,7 @@ void TestOnlineDocks::docksFollowThePerspective()
     QVERIFY(window.findChild<QDockWidget *>("configurationDock"));
     QVERIFY(window.findChild<QDockWidget *>("executionContextDock"));
     QVERIFY(window.findChild<QDockWidget *>("managerDock"));
+    QVERIFY(window.findChild<QDockWidget *>("onlineDiagramDock"));
     window.showPerspective(Perspective::Id::Builder);
     QVERIFY(!nameService->isVisible());
     window.showPerspective(Perspective::Id::SystemEditor);
@@ -121,6 +125,26 @@ void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
         window.grab().save(qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT") + ".manager.png");
     tree->setCurrentIndex(shown);
     window.findChild<QDockWidget *>("configurationDock")->raise();
+
+    // Double-clicking components puts them on the online diagram.
+    SystemEditor::OnlineDiagram *diagram = window.onlineDocks()->diagram();
+    for (const char *name : {"ConsoleIn0", "ConfigSample0"}) {
+        const QModelIndex index = view->filterModel()->mapFromSource(view->model()->indexOfPath(
+            QStringLiteral("/%1/dockhost.host_cxt/%2.rtc").arg(m_live.namingServer(), name)));
+        QSignalSpy added(diagram, &SystemEditor::OnlineDiagram::componentAdded);
+        tree->scrollTo(index);
+        const QPoint at = tree->visualRect(index).center();
+        QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, at);
+        QTest::mouseDClick(tree->viewport(), Qt::LeftButton, {}, at);
+        QVERIFY(added.wait(10000));
+    }
+    QVERIFY(window.findChild<QDockWidget *>("onlineDiagramDock")->isVisible());
+    QCOMPARE(diagram->model()->componentIds().size(), 2);
+    diagram->perform(SystemEditor::OnlineDiagram::Action::Activate, "ConsoleIn0");
+    QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor("ConsoleIn0"),
+                              SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active),
+                              10000);
+    tree->setCurrentIndex(shown);
 
     auto *editor = window.onlineDocks()->configuration()->findChild<QWidget *>("editor_int_param0");
     QVERIFY(editor);

@@ -16,7 +16,8 @@ QColor stateColor(LifeCycleState state)
     case LifeCycleState::Created:
         return Qt::white;
     case LifeCycleState::Inactive:
-        return QColor(0, 0, 255);
+        // A light blue keeps the canvas' black titles readable.
+        return QColor(90, 140, 255);
     case LifeCycleState::Active:
         return QColor(0, 200, 0);
     case LifeCycleState::Error:
