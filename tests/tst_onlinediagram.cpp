@@ -8,6 +8,7 @@
 #include "onlinesession.h"
 #include "orb.h"
 #include "portconnection.h"
+#include "portitem.h"
 #include "systemmodel.h"
 #include "systemscene.h"
 
@@ -36,6 +37,7 @@ private slots:
     void dropsLiveComponentsWithStateColours();
     void activateTurnsTheComponentGreen();
     void drawsLiveConnectors();
+    void connectsLiveByDraggingThroughTheDialog();
     void stoppedManagerTurnsBlackWithoutStallingTheGui();
 
 private:
@@ -170,6 +172,66 @@ void TestOnlineDiagram::drawsLiveConnectors()
     waitForPoll(diagram);
     QVERIFY(diagram.model()->connectorIds().isEmpty());
     QCOMPARE(diagram.scene()->connectorItemCount(), 0);
+}
+
+void TestOnlineDiagram::connectsLiveByDraggingThroughTheDialog()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    diagram.resize(900, 600);
+    diagram.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&diagram));
+    dropOnto(diagram, {"ConsoleIn0", "ConsoleOut0"});
+    waitForPoll(diagram);
+    // Place them apart so that the drag from out to in is unambiguous.
+    diagram.model()->moveComponent("ConsoleIn0", {0, 0});
+    diagram.model()->moveComponent("ConsoleOut0", {400, 0});
+    QTRY_VERIFY(diagram.scene()->portItem({"ConsoleOut0", "ConsoleOut0.in"}) != nullptr);
+
+    const ConnectorDialog::Choices choices = diagram.choicesFor("ConsoleIn0.out", "ConsoleOut0.in");
+    QVERIFY(choices.interfaceTypes.contains("corba_cdr"));
+    QVERIFY(choices.dataflowTypes.contains("push"));
+    ConnectorSettings asked;
+    diagram.setConnectorEditor(
+        [&](const ConnectorSettings &proposed, const ConnectorDialog::Choices &) {
+            asked = proposed;
+            ConnectorSettings chosen = proposed;
+            chosen.subscriptionType = QStringLiteral("new");
+            return std::optional<ConnectorSettings>(chosen);
+        });
+    QGraphicsView *view = diagram.view();
+    auto centre = [&](const ConnectorEnd &end) {
+        const PortItem *item = diagram.scene()->portItem(end);
+        return view->mapFromScene(item->sceneBoundingRect().center());
+    };
+    const QPoint from = centre({"ConsoleIn0", "ConsoleIn0.out"});
+    const QPoint to = centre({"ConsoleOut0", "ConsoleOut0.in"});
+    QSignalSpy finished(&diagram, &OnlineDiagram::connectionFinished);
+    QTest::mousePress(view->viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(view->viewport(), (from + to) / 2);
+    QTest::mouseMove(view->viewport(), to);
+    QTest::mouseRelease(view->viewport(), Qt::LeftButton, {}, to);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(0).at(0).toString(), QString());
+    // The dialog is pre-filled with the live port's own data type spelling.
+    QCOMPARE(
+        asked.dataType,
+        Corba::propertyValue(component("ConsoleIn0").port("out").properties, "dataport.data_type"));
+    QVERIFY(asked.dataType.contains("TimedLong"));
+    waitForPoll(diagram);
+    QCOMPARE(diagram.model()->connectorIds().size(), 1);
+    const std::vector<Corba::ConnectorInfo> live = component("ConsoleIn0").port("out").connectors;
+    QCOMPARE(int(live.size()), 1);
+    QCOMPARE(Corba::propertyValue(live.front().properties, "dataport.subscription_type"),
+             QStringLiteral("new"));
+
+    QSignalSpy disconnected(&diagram, &OnlineDiagram::connectionFinished);
+    diagram.disconnectLive(diagram.model()->connectorIds().first());
+    QVERIFY(disconnected.wait(10000));
+    QCOMPARE(disconnected.at(0).at(0).toString(), QString());
+    waitForPoll(diagram);
+    QVERIFY(diagram.model()->connectorIds().isEmpty());
+    QVERIFY(component("ConsoleIn0").port("out").connectors.empty());
 }
 
 void TestOnlineDiagram::stoppedManagerTurnsBlackWithoutStallingTheGui()

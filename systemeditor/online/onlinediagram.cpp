@@ -3,6 +3,8 @@
 
 #include "componentitem.h"
 #include "componentproxy.h"
+#include "connectionrules.h"
+#include "connectoritem.h"
 #include "iorendpoint.h"
 #include "livesystembuilder.h"
 #include "nameservicemodel.h"
@@ -63,6 +65,8 @@ OnlineDiagram::OnlineDiagram(OnlineSession *session, QWidget *parent)
     buildUi();
     m_timer->setInterval(QSettings().value(PollIntervalKey, 1000).toInt());
     connect(m_timer, &QTimer::timeout, this, &OnlineDiagram::poll);
+    // Dragging from port to port connects live (after the dialog), never only in the model.
+    connect(m_scene, &SystemScene::connectRequested, this, &OnlineDiagram::requestConnection);
     m_timer->start();
     // The scene rebuilds items from the model; the state colours go back on afterwards.
     connect(m_model, &SystemModel::componentChanged, this, &OnlineDiagram::applyColours,
@@ -272,12 +276,18 @@ void OnlineDiagram::performAll(Action action)
 void OnlineDiagram::showContextMenu(const QPoint &position)
 {
     QGraphicsItem *hit = m_view->itemAt(position);
-    while (hit && hit->type() != ComponentItem::Type)
+    while (hit && hit->type() != ComponentItem::Type && hit->type() != ConnectorItem::Type)
         hit = hit->parentItem();
     if (!hit)
         return;
-    const QString instance = static_cast<ComponentItem *>(hit)->instanceName();
     QMenu menu(this);
+    if (hit->type() == ConnectorItem::Type) {
+        const QString id = static_cast<ConnectorItem *>(hit)->connectorId();
+        menu.addAction(tr("Disconnect"), this, [this, id] { disconnectLive(id); });
+        menu.exec(m_view->viewport()->mapToGlobal(position));
+        return;
+    }
+    const QString instance = static_cast<ComponentItem *>(hit)->instanceName();
     const std::pair<QString, Action> actions[]
         = {{tr("Activate"), Action::Activate}, {tr("Deactivate"), Action::Deactivate},
            {tr("Reset"), Action::Reset},       {tr("Start"), Action::Start},

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "connectordialog.h"
+#include "connectorsettings.h"
 #include "corbatypes.h"
+
+#include <functional>
+#include <optional>
 
 #include <QHash>
 #include <QMetaType>
@@ -18,6 +23,7 @@ namespace SystemEditor {
 class OnlineSession;
 class SystemModel;
 class SystemScene;
+struct ConnectionCheck;
 
 /// What one poll of a live component returned.
 struct LiveComponentPoll
@@ -62,11 +68,26 @@ public:
     void perform(Action action, const QString &instanceName);
     void performAll(Action action);
 
+    /// Asks for the settings of a new data connector (default: the ConnectorDialog, modal).
+    using ConnectorEditor = std::function<std::optional<ConnectorSettings>(
+        const ConnectorSettings &proposed, const ConnectorDialog::Choices &choices)>;
+    void setConnectorEditor(const ConnectorEditor &editor) { m_connectorEditor = editor; }
+    /// What both live ports allow (interface, dataflow and subscription types), for the dialog.
+    ConnectorDialog::Choices choicesFor(const QString &outPort, const QString &inPort) const;
+    /// Connects two live ports (full names `Instance.port`, output first for data ports) with
+    /// `settings` (data) or the name in `settings` (service).
+    void connectLive(const QString &sourcePort, const QString &targetPort,
+                     const ConnectorSettings &settings);
+    /// Disconnects the live connector `connectorId`.
+    void disconnectLive(const QString &connectorId);
+
 signals:
     void componentAdded(const QString &instanceName);
     /// A poll round finished and states and connectors are up to date.
     void polled();
     void actionFinished(const QString &instanceName, const QString &error);
+    /// A live connect or disconnect finished; `error` is empty on success.
+    void connectionFinished(const QString &error);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -87,6 +108,9 @@ private:
     void applyColours();
     void showContextMenu(const QPoint &position);
     bool dropComponents(const QByteArray &data, const QPointF &scenePos);
+    void requestConnection(const ConnectionCheck &check);
+    std::optional<Corba::PortInfo> livePort(const QString &portName) const;
+    void submitConnection(const QString &host, const std::function<void()> &call);
 
     OnlineSession *m_session;
     QUndoStack *m_undoStack;
@@ -97,6 +121,7 @@ private:
     QTimer *m_timer;
     QHash<QString, Live> m_live; ///< by instance name
     int m_pendingPolls = 0;
+    ConnectorEditor m_connectorEditor;
 };
 
 } // namespace SystemEditor
