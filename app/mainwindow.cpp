@@ -8,6 +8,7 @@
 #include "onlinedocks.h"
 #include "problemspanel.h"
 #include "recentfiles.h"
+#include "rtsdocument.h"
 #include "rtstudioresources.h"
 
 #include <QActionGroup>
@@ -259,6 +260,16 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(m_problemsDock->toggleViewAction());
     view->addActions(m_online->toggleActions());
+
+    QMenu *online = menuBar()->addMenu(tr("&Online"));
+    QAction *restore = online->addAction(tr("&Restore System on Live Managers…"));
+    restore->setObjectName(QStringLiteral("actionRestoreSystem"));
+    connect(restore, &QAction::triggered, this, [this] {
+        if (const auto *system = qobject_cast<RtsDocument *>(activeDocument()))
+            m_online->openRestore(system->profile());
+        else
+            statusBar()->showMessage(tr("Open a system to restore it."), 5000);
+    });
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action("actionAbout"));

@@ -8,6 +8,7 @@
 #include "nameserviceview.h"
 #include "onlinediagram.h"
 #include "onlinesession.h"
+#include "restoredialog.h"
 #include "systemmodel.h"
 
 #include <QAction>
@@ -109,6 +110,19 @@ void OnlineDocks::showItem(const QModelIndex &index)
         m_docks.at(3)->show();
         m_docks.at(3)->raise();
     }
+}
+
+SystemEditor::RestoreDialog *OnlineDocks::openRestore(const Profile::RtsProfile &profile)
+{
+    Deploy::TargetOptions options;
+    options.nameServers = m_nameService->model()->servers();
+    auto *dialog
+        = new SystemEditor::RestoreDialog(m_session, profile, options, m_nameService->window());
+    dialog->setObjectName(QStringLiteral("restoreDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    dialog->plan();
+    return dialog;
 }
 
 void OnlineDocks::addToDiagram(const QModelIndex &index)

@@ -9,11 +9,16 @@ class QDockWidget;
 class QMainWindow;
 class QSettings;
 
+namespace Profile {
+struct RtsProfile;
+}
+
 namespace SystemEditor {
 class ConfigurationView;
 class ExecutionContextView;
 class ManagerView;
 class OnlineDiagram;
+class RestoreDialog;
 class NameServiceView;
 class OnlineSession;
 } // namespace SystemEditor
@@ -44,6 +49,11 @@ public:
     QList<QDockWidget *> docks() const { return m_docks; }
     /// The docks' show/hide actions, for the View menu.
     QList<QAction *> toggleActions() const;
+    /**
+     * Opens the Restore dialog for `profile` (non-modal, deleted on close), mapping it onto the
+     * name servers of the Name Service view, and starts planning.
+     */
+    SystemEditor::RestoreDialog *openRestore(const Profile::RtsProfile &profile);
     /// Shows the docks with the System Editor perspective and hides them with the Builder.
     void setPerspectiveActive(bool systemEditor);
 

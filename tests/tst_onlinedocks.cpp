@@ -11,13 +11,17 @@
 #include "onlinedocks.h"
 #include "onlineicons.h"
 #include "orb.h"
+#include "restoredialog.h"
 #include "systemmodel.h"
 
+#include <QAction>
 #include <QDockWidget>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
 #include <QStandardPaths>
+#include <QStatusBar>
+#include <QTableWidget>
 #include <QTest>
 #include <QTreeView>
 
@@ -32,6 +36,7 @@ private slots:
     void initTestCase();
     void docksFollowThePerspective();
     void choosingAComponentShowsItsConfigurationAndContexts();
+    void restoresASystemThroughTheOnlineMenu();
 
 private:
     LiveTest::LiveSystem m_live;
@@ -152,6 +157,31 @@ void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
     const QString shot = qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT");
     if (!shot.isEmpty())
         window.grab().save(shot);
+}
+
+void TestOnlineDocks::restoresASystemThroughTheOnlineMenu()
+{
+    MainWindow window;
+    window.show();
+    auto *restore = window.findChild<QAction *>("actionRestoreSystem");
+    QVERIFY(restore);
+    restore->trigger(); // no system open: says so instead of opening a dialog
+    QVERIFY(!window.statusBar()->currentMessage().isEmpty());
+    QVERIFY(!window.findChild<SystemEditor::RestoreDialog *>("restoreDialog"));
+
+    window.onlineDocks()->nameService()->addServer(m_live.namingServer());
+    Profile::RtsProfile profile;
+    Profile::RtsComponent in;
+    in.id = QStringLiteral("RTC:AIST:example:ConsoleIn:1.0");
+    in.instanceName = QStringLiteral("ConsoleIn0");
+    profile.components.append(in);
+    SystemEditor::RestoreDialog *dialog = window.onlineDocks()->openRestore(profile);
+    QSignalSpy planned(dialog, &SystemEditor::RestoreDialog::planned);
+    QVERIFY(planned.wait(15000));
+    QCOMPARE(dialog->componentTable()->rowCount(), 1);
+    QCOMPARE(dialog->componentTable()->item(0, 2)->text(), QStringLiteral("existing"));
+    QVERIFY(dialog->componentTable()->item(0, 3)->text().contains("dockhost.host_cxt"));
+    dialog->close();
 }
 
 QTEST_MAIN(TestOnlineDocks)
