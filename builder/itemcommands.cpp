@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "itemcommands.h"
 
-#include "commandids.h"
+#include "buildercommandids.h"
 
 namespace Builder {
 

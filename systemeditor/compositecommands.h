@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 
 namespace SystemEditor {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "connectorcommands.h"
 
-#include "commandids.h"
+#include "systemcommandids.h"
 
 #include <QUuid>
 

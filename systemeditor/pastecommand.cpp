@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "pastecommand.h"
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentfactory.h"
 #include "connectorcommands.h"
 

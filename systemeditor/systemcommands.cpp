@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systemcommands.h"
 
-#include "commandids.h"
+#include "systemcommandids.h"
 
 namespace SystemEditor {
 

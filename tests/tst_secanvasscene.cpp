@@ -3,7 +3,7 @@
 // tool tips, resizing, routes.
 #include "tst_secanvassupport.h"
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentitem.h"
 #include "componentfactory.h"
 #include "connectorcommands.h"

@@ -4,7 +4,7 @@
 // delete, zoom and fit, inline rename, find, copy and paste.
 #include "tst_secanvassupport.h"
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentitem.h"
 #include "connectoritem.h"
 #include "portitem.h"

@@ -4,7 +4,7 @@
 // canvas actions, find bar and overview.
 #include "tst_secanvassupport.h"
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentitem.h"
 #include "connectordialog.h"
 #include "connectoritem.h"

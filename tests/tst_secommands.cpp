@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentfactory.h"
 #include "compositecommands.h"
 #include "connectorcommands.h"

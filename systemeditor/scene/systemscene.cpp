@@ -2,7 +2,7 @@
 #include "systemscene.h"
 
 #include "componentappearance.h"
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentitem.h"
 #include "connectorcommands.h"
 #include "connectoritem.h"

@@ -14,9 +14,7 @@ class QUndoCommand;
 
 namespace SystemEditor {
 
-// From componentcommands.h, which is not included here: the RTC Builder has a header of that
-// name too, and users of the canvas may see both include folders.
-enum class Alignment;
+enum class Alignment; // instancecommands.h
 class ComponentItem;
 class ConnectorItem;
 class PortItem;

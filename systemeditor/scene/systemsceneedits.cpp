@@ -2,7 +2,7 @@
 // The edits a user makes on the canvas; each becomes one step on the undo stack.
 #include "systemscene.h"
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentfactory.h"
 #include "componentitem.h"
 #include "connectorcommands.h"

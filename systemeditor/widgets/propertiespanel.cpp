@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "propertiespanel.h"
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "componentfactory.h"
 #include "systemmodel.h"
 #include "systemscene.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systemcanvas.h"
 
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "overviewwidget.h"
 #include "systemscene.h"
 #include "systemview.h"

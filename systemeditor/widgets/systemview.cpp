@@ -2,7 +2,7 @@
 #include "systemview.h"
 
 #include "componentitem.h"
-#include "componentcommands.h"
+#include "instancecommands.h"
 #include "connectionrules.h"
 #include "serviceconnectordialog.h"
 #include "systemscene.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "componentcommands.h"
+#include "instancecommands.h"
 
-#include "commandids.h"
+#include "systemcommandids.h"
 #include "componentfactory.h"
 #include "connectorcommands.h"
 
