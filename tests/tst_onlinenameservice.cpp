@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "componentproxy.h"
 #include "iorendpoint.h"
 #include "livesystem.h"
 #include "nameservicemodel.h"
@@ -40,6 +41,7 @@ private slots:
     void remembersServers();
     void activatesThroughTheContextMenu();
     void filtersAndShowsIor();
+    void pollsStatesInTheBackground();
     void deletesZombies();
     void unreachableServerIsReportedOnce();
     void stoppedManagerNeverBlocksTheGui();
@@ -261,6 +263,32 @@ void TestOnlineNameService::filtersAndShowsIor()
     QVERIFY(text);
     QCOMPARE(text->toPlainText(), in.data(NameServiceModel::IorRole).toString());
     dialog->close();
+}
+
+void TestOnlineNameService::pollsStatesInTheBackground()
+{
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    QCOMPARE(view.pollInterval(), 1000);
+    view.addServer(m_live.namingServer());
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    QVERIFY(refreshed.wait(15000));
+    const QString path = componentPath("ConsoleIn0");
+    QCOMPARE(view.model()->indexOfPath(path).data(NameServiceModel::StateRole).toInt(),
+             int(LifeCycleState::Inactive));
+    const QModelIndex in = view.model()->indexOfPath(path);
+    const Corba::ComponentProxy proxy(in.data(NameServiceModel::IorRole).toString(), path);
+    proxy.activate(); // from outside the view
+    QSignalSpy polled(&view, &NameServiceView::statesPolled);
+    view.pollStates();
+    QVERIFY(polled.wait(10000));
+    QCOMPARE(view.model()->indexOfPath(path).data(NameServiceModel::StateRole).toInt(),
+             int(LifeCycleState::Active));
+    const QModelIndex managed = view.model()->indexOfPath(
+        QStringLiteral("/%1/rtmhost.host_cxt/manager.mgr/ConsoleIn0.rtc")
+            .arg(m_live.namingServer()));
+    QCOMPARE(managed.data(NameServiceModel::StateRole).toInt(), int(LifeCycleState::Active));
+    proxy.deactivate();
 }
 
 void TestOnlineNameService::deletesZombies()

@@ -15,6 +15,7 @@
 #include <QPlainTextEdit>
 #include <QSettings>
 #include <QSortFilterProxyModel>
+#include <QTimer>
 #include <QToolButton>
 #include <QTreeView>
 #include <QVBoxLayout>
@@ -64,6 +65,74 @@ NameServiceView::NameServiceView(OnlineSession *session, QSettings *settings, QW
         for (const QString &server : m_settings->value(ServersKey).toStringList())
             m_model->addServer(server);
     }
+    m_pollTimer = new QTimer(this);
+    m_pollTimer->setInterval(
+        QSettings().value(QStringLiteral("online/pollInterval"), 1000).toInt());
+    connect(m_pollTimer, &QTimer::timeout, this, [this] {
+        if (isVisible())
+            pollStates();
+    });
+    m_pollTimer->start();
+}
+
+int NameServiceView::pollInterval() const
+{
+    return m_pollTimer->interval();
+}
+
+void NameServiceView::pollStates()
+{
+    QHash<QString, QHash<QString, QString>> byEndpoint; // endpoint → path → IOR
+    std::function<void(const QModelIndex &)> collect = [&](const QModelIndex &parent) {
+        for (int row = 0; row < m_model->rowCount(parent); ++row) {
+            const QModelIndex index = m_model->index(row, 0, parent);
+            const QString ior = index.data(NameServiceModel::IorRole).toString();
+            if (NodeType(index.data(NameServiceModel::TypeRole).toInt()) == NodeType::Component
+                && !ior.isEmpty()) {
+                byEndpoint[hostOf(index)].insert(index.data(NameServiceModel::PathRole).toString(),
+                                                 ior);
+            }
+            collect(index);
+        }
+    };
+    collect({});
+    for (auto it = byEndpoint.begin(); it != byEndpoint.end(); ++it) {
+        const QString endpoint = it.key();
+        if (m_polling.contains(endpoint))
+            continue;
+        m_polling.insert(endpoint);
+        const QHash<QString, QString> iors = it.value();
+        m_session->submit(
+            endpoint, [iors] { return QVariant::fromValue(OnlineCalls::fetchStates(iors)); }, this,
+            [this, endpoint](const OnlineResult &result) {
+                m_polling.remove(endpoint);
+                if (result.ok)
+                    applyPolledStates(result.value.value<ComponentStates>());
+            });
+    }
+}
+
+void NameServiceView::applyPolledStates(const QHash<QString, Corba::LifeCycleState> &states)
+{
+    // Components listed below their manager carry no reference; they follow the same name.
+    QHash<QString, Corba::LifeCycleState> all = states;
+    QHash<QString, Corba::LifeCycleState> byName;
+    for (auto it = states.begin(); it != states.end(); ++it)
+        byName.insert(it.key().section(QLatin1Char('/'), -1), it.value());
+    std::function<void(const QModelIndex &)> follow = [&](const QModelIndex &parent) {
+        for (int row = 0; row < m_model->rowCount(parent); ++row) {
+            const QModelIndex index = m_model->index(row, 0, parent);
+            const QString name = index.data().toString();
+            if (NodeType(index.data(NameServiceModel::TypeRole).toInt()) == NodeType::Component
+                && index.data(NameServiceModel::IorRole).toString().isEmpty()
+                && byName.contains(name))
+                all.insert(index.data(NameServiceModel::PathRole).toString(), byName.value(name));
+            follow(index);
+        }
+    };
+    follow({});
+    m_model->setStates(all);
+    emit statesPolled();
 }
 
 void NameServiceView::buildUi()

@@ -3,6 +3,7 @@
 
 #include "onlinecalls.h"
 
+#include <QSet>
 #include <QWidget>
 
 class QLabel;
@@ -10,6 +11,7 @@ class QLineEdit;
 class QMenu;
 class QSettings;
 class QSortFilterProxyModel;
+class QTimer;
 class QTreeView;
 
 namespace SystemEditor {
@@ -53,8 +55,15 @@ public:
     QWidget *showIor(const QModelIndex &sourceIndex);
     /// The last message shown in the status line.
     QString statusText() const;
+    /// Interval of the background state poll (QSettings `online/pollInterval`, default 1000 ms).
+    int pollInterval() const;
+    /// Asks every component in the tree for its state now (grouped by serving process; a process
+    /// whose previous poll has not answered yet is skipped).
+    void pollStates();
 
 signals:
+    /// A background state poll answered and the model was updated.
+    void statesPolled();
     /// A server was read and the model updated.
     void serverRefreshed(const QString &server);
     /// A remote action finished; `error` is empty on success.
@@ -69,6 +78,7 @@ private:
     void onReachability(const QString &host, bool reachable, const QString &message);
     void report(const QString &message);
     QModelIndex currentSourceIndex() const;
+    void applyPolledStates(const QHash<QString, Corba::LifeCycleState> &states);
 
     OnlineSession *m_session;
     QSettings *m_settings;
@@ -78,6 +88,8 @@ private:
     QLineEdit *m_serverEdit = nullptr;
     QLineEdit *m_filterEdit = nullptr;
     QLabel *m_status = nullptr;
+    QTimer *m_pollTimer = nullptr;
+    QSet<QString> m_polling; ///< endpoints with a state poll under way
 };
 
 } // namespace SystemEditor

@@ -10,6 +10,9 @@
 
 namespace SystemEditor {
 
+/// Component states by path.
+using ComponentStates = QHash<QString, Corba::LifeCycleState>;
+
 /// One name server as the worker saw it: its tree and the state of every component in it.
 struct ServerSnapshot
 {
@@ -40,3 +43,4 @@ void perform(RemoteAction action, const QString &path, const QString &ior);
 } // namespace SystemEditor
 
 Q_DECLARE_METATYPE(SystemEditor::ServerSnapshot)
+Q_DECLARE_METATYPE(SystemEditor::ComponentStates)
