@@ -39,7 +39,7 @@ QPixmap canvas()
     return pixmap;
 }
 
-// A rounded block with two port stubs: the component glyph.
+// A rounded block with a port on each side: the component glyph.
 QIcon drawComponent(const QColor &fill)
 {
     QPixmap pixmap = canvas();
