@@ -6,6 +6,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -24,7 +25,10 @@ GenerateOptionsDialog::GenerateOptionsDialog(const GenerateOptions &current, QWi
     connect(browse, &QPushButton::clicked, this, &GenerateOptionsDialog::browse);
     folderRow->addWidget(m_folder, 1);
     folderRow->addWidget(browse);
-    form->addRow(tr("&Output folder:"), folderRow);
+    // A row holding a layout gets no buddy by itself, which would show the '&'.
+    auto *folderLabel = new QLabel(tr("&Output folder:"), this);
+    folderLabel->setBuddy(m_folder);
+    form->addRow(folderLabel, folderRow);
     m_backups->setRange(0, 99);
     m_backups->setValue(current.backupsKept);
     m_backups->setToolTip(tr("Merged and overwritten files are backed up as "
