@@ -58,8 +58,7 @@ GenerateController::GenerateController(ComponentModel *model, TypeCatalog *types
     , m_prompts(prompts)
     , m_profilePath([] { return QString(); })
     , m_clock([] { return QDateTime::currentDateTime(); })
-{
-}
+{ }
 
 GenerateController::GenerateController(ComponentModel *model, TypeCatalog *types,
                                        std::unique_ptr<GeneratePrompts> prompts, QObject *parent)
@@ -73,8 +72,7 @@ GenerateController::~GenerateController() = default;
 void GenerateController::connectEditor(ComponentEditor *editor)
 {
     connect(editor, &ComponentEditor::generateRequested, this, &GenerateController::generate);
-    connect(editor, &ComponentEditor::codeRestoreRequested, this,
-            &GenerateController::restoreCode);
+    connect(editor, &ComponentEditor::codeRestoreRequested, this, &GenerateController::restoreCode);
     connect(editor, &ComponentEditor::clearBackupsRequested, this,
             &GenerateController::clearBackups);
 }
@@ -211,8 +209,8 @@ bool GenerateController::generate()
     setBackupsKept(options->backupsKept);
 
     const QString profilePath = m_profilePath();
-    const QStringList leading = m_types ? m_types->directories()
-                                        : QStringList{QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR)};
+    const QStringList leading
+        = m_types ? m_types->directories() : QStringList {QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR)};
     const IdlTypeLibrary library(idlSearchDirs(
         profile, profilePath.isEmpty() ? QString() : QFileInfo(profilePath).absolutePath(),
         leading));
@@ -231,8 +229,7 @@ bool GenerateController::generate()
     writer.setClock(m_clock);
     const std::optional<WriteReport> report = writer.write(*files, &problems);
     if (!report) {
-        fail(tr("Generate"), tr("Nothing was written to %1.").arg(options->outputFolder),
-             problems);
+        fail(tr("Generate"), tr("Nothing was written to %1.").arg(options->outputFolder), problems);
         return false;
     }
     emit generated(*report);
@@ -306,7 +303,8 @@ bool GenerateController::clearBackups()
     const int removed = Backups::clear(folder);
     Diagnostics problems;
     if (removed < count)
-        problems << problem(folder, tr("%1 backup files could not be deleted").arg(count - removed));
+        problems << problem(folder,
+                            tr("%1 backup files could not be deleted").arg(count - removed));
     m_prompts->showSummary(tr("Clear Backups"), tr("Deleted %1 backup files.").arg(removed),
                            problems);
     if (!problems.isEmpty())

@@ -86,8 +86,8 @@ private:
     QString settingsKey() const;
     QString suggestedFolder() const;
     QString folderForBackups();
-    Codegen::ProjectWriter::DecisionCallback decisionCallback(
-        const QString &folder, const QList<Codegen::GeneratedFile> &files) const;
+    Codegen::ProjectWriter::DecisionCallback
+    decisionCallback(const QString &folder, const QList<Codegen::GeneratedFile> &files) const;
     void fail(const QString &title, const QString &text, const Profile::Diagnostics &problems);
 
     QPointer<ComponentModel> m_model;

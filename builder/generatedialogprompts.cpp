@@ -14,11 +14,10 @@ namespace Builder {
 
 GenerateDialogPrompts::GenerateDialogPrompts(QWidget *parent)
     : m_parent(parent)
-{
-}
+{ }
 
-std::optional<GenerateOptions> GenerateDialogPrompts::askGenerateOptions(
-    const GenerateOptions &current)
+std::optional<GenerateOptions>
+GenerateDialogPrompts::askGenerateOptions(const GenerateOptions &current)
 {
     GenerateOptionsDialog dialog(current, m_parent);
     if (dialog.exec() != QDialog::Accepted)
@@ -35,8 +34,7 @@ FileChoice GenerateDialogPrompts::askFileDecision(const QString &relativePath,
     return dialog.choice();
 }
 
-QString GenerateDialogPrompts::askRestoreStamp(const QString &projectDir,
-                                               const QStringList &stamps)
+QString GenerateDialogPrompts::askRestoreStamp(const QString &projectDir, const QStringList &stamps)
 {
     CodeRestoreDialog dialog(projectDir, stamps, m_parent);
     return dialog.exec() == QDialog::Accepted ? dialog.selectedStamp() : QString();
@@ -75,9 +73,9 @@ void GenerateDialogPrompts::showSummary(const QString &title, const QString &tex
 GenerateController *installGenerateController(ComponentEditor *editor,
                                               std::function<QString()> profilePath)
 {
-    auto *controller = new GenerateController(editor->model(), editor->typeCatalog(),
-                                              std::make_unique<GenerateDialogPrompts>(editor),
-                                              editor);
+    auto *controller
+        = new GenerateController(editor->model(), editor->typeCatalog(),
+                                 std::make_unique<GenerateDialogPrompts>(editor), editor);
     controller->setProfilePathProvider(std::move(profilePath));
     controller->connectEditor(editor);
     return controller;

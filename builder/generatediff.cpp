@@ -18,7 +18,7 @@ using Kind = DiffLine::Kind;
 void appendRange(QList<DiffLine> *out, Kind kind, const QStringList &lines, int from, int to)
 {
     for (int i = from; i < to; ++i) {
-        DiffLine line{kind, lines.at(i), 0, 0};
+        DiffLine line {kind, lines.at(i), 0, 0};
         if (kind == Kind::Removed)
             line.oldLine = i + 1;
         else

@@ -53,8 +53,8 @@ GenerateOptions GenerateOptionsDialog::options() const
 
 void GenerateOptionsDialog::browse()
 {
-    const QString folder = QFileDialog::getExistingDirectory(this, tr("Output Folder"),
-                                                             m_folder->text());
+    const QString folder
+        = QFileDialog::getExistingDirectory(this, tr("Output Folder"), m_folder->text());
     if (!folder.isEmpty())
         m_folder->setText(QDir::toNativeSeparators(folder));
 }

@@ -68,9 +68,8 @@ void writeAll(const QString &path, const QByteArray &data)
 struct ScriptedPrompts : GeneratePrompts
 {
     std::optional<GenerateOptions> options;
-    std::function<FileChoice(const QString &)> decide = [](const QString &) {
-        return FileChoice{};
-    };
+    std::function<FileChoice(const QString &)> decide
+        = [](const QString &) { return FileChoice {}; };
     QString restoreAnswer;
     bool clearAnswer = true;
 
@@ -121,14 +120,14 @@ struct ScriptedPrompts : GeneratePrompts
 struct Setup
 {
     QTemporaryDir dir;
-    ComponentModel model{fixture()};
+    ComponentModel model {fixture()};
     ScriptedPrompts prompts;
-    GenerateController controller{&model, nullptr, &prompts};
-    QDateTime now{QDate(2024, 5, 6), QTime(7, 8, 0)};
+    GenerateController controller {&model, nullptr, &prompts};
+    QDateTime now {QDate(2024, 5, 6), QTime(7, 8, 0)};
 
     Setup()
     {
-        prompts.options = GenerateOptions{dir.path(), 3};
+        prompts.options = GenerateOptions {dir.path(), 3};
         controller.setClock([this] {
             now = now.addSecs(60);
             return now;
@@ -197,19 +196,19 @@ void TestBuilderGenerate::languagesComeFromTheProfile_data()
     QTest::addColumn<bool>("hasLanguage");
     QTest::addColumn<QList<TargetLanguage>>("languages");
     QTest::addColumn<QStringList>("unknown");
-    QTest::newRow("C++") << "C++" << true << QList{TargetLanguage::Cpp} << QStringList();
-    QTest::newRow("Python") << "Python" << true << QList{TargetLanguage::Python} << QStringList();
-    QTest::newRow("Java") << "Java" << true << QList{TargetLanguage::Java} << QStringList();
+    QTest::newRow("C++") << "C++" << true << QList {TargetLanguage::Cpp} << QStringList();
+    QTest::newRow("Python") << "Python" << true << QList {TargetLanguage::Python} << QStringList();
+    QTest::newRow("Java") << "Java" << true << QList {TargetLanguage::Java} << QStringList();
     QTest::newRow("several") << "Python, C++;Java" << true
-                             << QList{TargetLanguage::Python, TargetLanguage::Cpp,
-                                      TargetLanguage::Java}
+                             << QList {TargetLanguage::Python, TargetLanguage::Cpp,
+                                       TargetLanguage::Java}
                              << QStringList();
-    QTest::newRow("repeated") << "C++,cpp" << true << QList{TargetLanguage::Cpp} << QStringList();
-    QTest::newRow("empty kind") << "" << true << QList{TargetLanguage::Cpp} << QStringList();
-    QTest::newRow("no language") << "" << false << QList{TargetLanguage::Cpp} << QStringList();
-    QTest::newRow("unknown") << "Ruby" << true << QList<TargetLanguage>() << QStringList{"Ruby"};
+    QTest::newRow("repeated") << "C++,cpp" << true << QList {TargetLanguage::Cpp} << QStringList();
+    QTest::newRow("empty kind") << "" << true << QList {TargetLanguage::Cpp} << QStringList();
+    QTest::newRow("no language") << "" << false << QList {TargetLanguage::Cpp} << QStringList();
+    QTest::newRow("unknown") << "Ruby" << true << QList<TargetLanguage>() << QStringList {"Ruby"};
     QTest::newRow("unknown beside known")
-        << "C++,Ruby" << true << QList{TargetLanguage::Cpp} << QStringList{"Ruby"};
+        << "C++,Ruby" << true << QList {TargetLanguage::Cpp} << QStringList {"Ruby"};
 }
 
 void TestBuilderGenerate::languagesComeFromTheProfile()
@@ -258,13 +257,13 @@ void TestBuilderGenerate::generateRemembersTheFolderPerComponent()
 {
     Setup s;
     QCOMPARE(s.controller.outputFolder(), QString());
-    s.prompts.options = GenerateOptions{s.dir.path(), 5};
+    s.prompts.options = GenerateOptions {s.dir.path(), 5};
     QVERIFY(s.controller.generate());
     QCOMPARE(s.controller.outputFolder(), s.dir.path());
     QCOMPARE(GenerateController::backupsKept(), 5);
     // The next Generate offers what was chosen.
     QVERIFY(s.controller.generate());
-    QCOMPARE(s.prompts.offeredOptions, (GenerateOptions{s.dir.path(), 5}));
+    QCOMPARE(s.prompts.offeredOptions, (GenerateOptions {s.dir.path(), 5}));
     // Another component has its own folder.
     Profile::RtcProfile other = fixture();
     other.id = QStringLiteral("RTC:Example:Test:Other:1.0.0");
@@ -308,7 +307,7 @@ void TestBuilderGenerate::mergeKeepsTheUsersLinesAndBacksUp()
     const QByteArray edited = readAll(script) + UserLine;
     writeAll(script, edited);
     s.model.setProfile(fixtureWithExtraPort());
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Merge, false}; };
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Merge, false}; };
     QVERIFY2(s.controller.generate(), qPrintable(s.prompts.summaryProblems.value(0).toString()));
 
     QVERIFY(s.prompts.askedFiles.contains("Counter.py"));
@@ -335,7 +334,7 @@ void TestBuilderGenerate::mergeSkipsMarkersMentionedInText()
     const Codegen::RegionMergeResult merged = Codegen::mergeTemplateRegions(existing, fresh);
     QVERIFY2(merged.text, qPrintable(merged.error));
     QCOMPARE(*merged.text, QString(existing).replace("old", "new"));
-    QCOMPARE(Codegen::templateRegionNames(existing), QStringList{"list"});
+    QCOMPARE(Codegen::templateRegionNames(existing), QStringList {"list"});
 }
 
 void TestBuilderGenerate::keepLeavesTheFile()
@@ -346,7 +345,7 @@ void TestBuilderGenerate::keepLeavesTheFile()
     const QByteArray edited = readAll(script) + UserLine;
     writeAll(script, edited);
     s.model.setProfile(fixtureWithExtraPort());
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Keep, false}; };
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Keep, false}; };
     QSignalSpy generated(&s.controller, &GenerateController::generated);
     QVERIFY(s.controller.generate());
     QCOMPARE(readAll(script), edited);
@@ -363,10 +362,10 @@ void TestBuilderGenerate::overwriteReplacesAndBacksUp()
     const QString script = s.path("Counter.py");
     const QByteArray edited = readAll(script) + UserLine;
     writeAll(script, edited);
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Overwrite, false}; };
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Overwrite, false}; };
     QVERIFY(s.controller.generate());
     // Only the edited file differed, so only it was asked about.
-    QCOMPARE(s.prompts.askedFiles, QStringList{"Counter.py"});
+    QCOMPARE(s.prompts.askedFiles, QStringList {"Counter.py"});
     QByteArray fresh;
     for (const Codegen::GeneratedFile &file : Setup::expected(fixture())) {
         if (file.path == QLatin1String("Counter.py"))
@@ -384,7 +383,7 @@ void TestBuilderGenerate::applyToAllAsksOnce()
     Setup s;
     QVERIFY(s.controller.generate());
     s.model.setProfile(fixtureWithExtraPort());
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Overwrite, true}; };
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Overwrite, true}; };
     QSignalSpy generated(&s.controller, &GenerateController::generated);
     QVERIFY(s.controller.generate());
     QCOMPARE(s.prompts.askedFiles.size(), 1);
@@ -397,8 +396,8 @@ void TestBuilderGenerate::applyToAllAsksOnce()
 void TestBuilderGenerate::backupsAreRotated()
 {
     Setup s;
-    s.prompts.options = GenerateOptions{s.dir.path(), 2};
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Overwrite, true}; };
+    s.prompts.options = GenerateOptions {s.dir.path(), 2};
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Overwrite, true}; };
     QVERIFY(s.controller.generate());
     const QString script = s.path("Counter.py");
     QStringList stamps;
@@ -422,7 +421,7 @@ void TestBuilderGenerate::codeRestoreBringsTheOldSetBack()
     const QString script = s.path("Counter.py");
     const QByteArray edited = readAll(script) + UserLine;
     writeAll(script, edited);
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Overwrite, true}; };
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Overwrite, true}; };
     QVERIFY(s.controller.generate());
     const QByteArray regenerated = readAll(script);
     QVERIFY(regenerated != edited);
@@ -449,7 +448,7 @@ void TestBuilderGenerate::codeRestoreCancelledChangesNothing()
     const QString script = s.path("Counter.py");
     const QByteArray edited = readAll(script) + UserLine;
     writeAll(script, edited);
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Overwrite, true}; };
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Overwrite, true}; };
     QVERIFY(s.controller.generate());
     const QByteArray regenerated = readAll(script);
     s.prompts.restoreAnswer.clear();
@@ -462,7 +461,7 @@ void TestBuilderGenerate::clearBackupsAsksThenRemoves()
 {
     Setup s;
     QVERIFY(s.controller.generate());
-    s.prompts.decide = [](const QString &) { return FileChoice{FileDecision::Overwrite, true}; };
+    s.prompts.decide = [](const QString &) { return FileChoice {FileDecision::Overwrite, true}; };
     s.model.setProfile(fixtureWithExtraPort());
     QVERIFY(s.controller.generate());
     const QString stamp = Codegen::Backups::stamps(s.dir.path()).value(0);

@@ -17,9 +17,9 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QTextBlock>
 #include <QTextDocument>
-#include <QTest>
 
 using namespace Builder;
 using Codegen::FileDecision;
@@ -82,10 +82,10 @@ void TestBuilderGenerateDiff::splitsLines_data()
     QTest::addColumn<QString>("text");
     QTest::addColumn<QStringList>("lines");
     QTest::newRow("empty") << "" << QStringList();
-    QTest::newRow("one without break") << "a" << QStringList{"a"};
-    QTest::newRow("final break adds nothing") << "a\nb\n" << QStringList{"a", "b"};
-    QTest::newRow("crlf and cr") << "a\r\nb\rc" << QStringList{"a", "b", "c"};
-    QTest::newRow("empty lines kept") << "a\n\nb\n\n" << QStringList{"a", "", "b", ""};
+    QTest::newRow("one without break") << "a" << QStringList {"a"};
+    QTest::newRow("final break adds nothing") << "a\nb\n" << QStringList {"a", "b"};
+    QTest::newRow("crlf and cr") << "a\r\nb\rc" << QStringList {"a", "b", "c"};
+    QTest::newRow("empty lines kept") << "a\n\nb\n\n" << QStringList {"a", "", "b", ""};
 }
 
 void TestBuilderGenerateDiff::splitsLines()
@@ -101,19 +101,27 @@ void TestBuilderGenerateDiff::lineDiff_data()
     QTest::addColumn<QString>("oldText");
     QTest::addColumn<QString>("newText");
     QTest::addColumn<QStringList>("diff");
-    QTest::newRow("same") << "abc" << "abc" << QStringList{" a", " b", " c"};
-    QTest::newRow("both empty") << "" << "" << QStringList();
-    QTest::newRow("all added") << "" << "ab" << QStringList{"+a", "+b"};
-    QTest::newRow("all removed") << "ab" << "" << QStringList{"-a", "-b"};
-    QTest::newRow("changed middle") << "abc" << "axc" << QStringList{" a", "-b", "+x", " c"};
-    QTest::newRow("inserted") << "ac" << "abc" << QStringList{" a", "+b", " c"};
-    QTest::newRow("deleted at end") << "abc" << "ab" << QStringList{" a", " b", "-c"};
-    QTest::newRow("inserted at start") << "bc" << "abc" << QStringList{"+a", " b", " c"};
+    QTest::newRow("same") << "abc"
+                          << "abc" << QStringList {" a", " b", " c"};
+    QTest::newRow("both empty") << ""
+                                << "" << QStringList();
+    QTest::newRow("all added") << ""
+                               << "ab" << QStringList {"+a", "+b"};
+    QTest::newRow("all removed") << "ab"
+                                 << "" << QStringList {"-a", "-b"};
+    QTest::newRow("changed middle") << "abc"
+                                    << "axc" << QStringList {" a", "-b", "+x", " c"};
+    QTest::newRow("inserted") << "ac"
+                              << "abc" << QStringList {" a", "+b", " c"};
+    QTest::newRow("deleted at end") << "abc"
+                                    << "ab" << QStringList {" a", " b", "-c"};
+    QTest::newRow("inserted at start") << "bc"
+                                       << "abc" << QStringList {"+a", " b", " c"};
     QTest::newRow("lcs not greedy")
-        << "abcabba" << "cbabac"
-        << QStringList{"-a", "+c", " b", "-c", " a", " b", "-b", " a", "+c"};
-    QTest::newRow("replaced block")
-        << "axyb" << "apqb" << QStringList{" a", "-x", "-y", "+p", "+q", " b"};
+        << "abcabba"
+        << "cbabac" << QStringList {"-a", "+c", " b", "-c", " a", " b", "-b", " a", "+c"};
+    QTest::newRow("replaced block") << "axyb"
+                                    << "apqb" << QStringList {" a", "-x", "-y", "+p", "+q", " b"};
 }
 
 void TestBuilderGenerateDiff::lineDiff()
@@ -138,11 +146,11 @@ void TestBuilderGenerateDiff::lineDiff()
 void TestBuilderGenerateDiff::lineDiffNumbersLines()
 {
     const QList<DiffLine> lines = Builder::lineDiff({"a", "b", "c"}, {"a", "x", "c", "d"});
-    const QList<DiffLine> expected{{DiffLine::Kind::Same, "a", 1, 1},
-                                   {DiffLine::Kind::Removed, "b", 2, 0},
-                                   {DiffLine::Kind::Added, "x", 0, 2},
-                                   {DiffLine::Kind::Same, "c", 3, 3},
-                                   {DiffLine::Kind::Added, "d", 0, 4}};
+    const QList<DiffLine> expected {{DiffLine::Kind::Same, "a", 1, 1},
+                                    {DiffLine::Kind::Removed, "b", 2, 0},
+                                    {DiffLine::Kind::Added, "x", 0, 2},
+                                    {DiffLine::Kind::Same, "c", 3, 3},
+                                    {DiffLine::Kind::Added, "d", 0, 4}};
     QCOMPARE(lines, expected);
 }
 
@@ -153,23 +161,31 @@ void TestBuilderGenerateDiff::unifiedDiff_data()
     QTest::addColumn<int>("context");
     QTest::addColumn<QString>("diff");
     const QString head = QStringLiteral("--- old\n+++ new\n");
-    QTest::newRow("identical") << "a\nb\n" << "a\nb\n" << 3 << QString();
-    QTest::newRow("only the last line break differs") << "a\nb" << "a\nb\n" << 3 << QString();
-    QTest::newRow("one change, context 1")
-        << "1\n2\n3\n4\n5\n" << "1\n2\nX\n4\n5\n" << 1
-        << head + "@@ -2,3 +2,3 @@\n 2\n-3\n+X\n 4\n";
-    QTest::newRow("into an empty file")
-        << "" << "a\nb\n" << 3 << head + "@@ -0,0 +1,2 @@\n+a\n+b\n";
-    QTest::newRow("everything removed")
-        << "a\n" << "" << 3 << head + "@@ -1 +0,0 @@\n-a\n";
-    QTest::newRow("insertion without context")
-        << "a\nb\n" << "a\nX\nb\n" << 0 << head + "@@ -1,0 +2 @@\n+X\n";
+    QTest::newRow("identical") << "a\nb\n"
+                               << "a\nb\n"
+                               << 3 << QString();
+    QTest::newRow("only the last line break differs") << "a\nb"
+                                                      << "a\nb\n"
+                                                      << 3 << QString();
+    QTest::newRow("one change, context 1") << "1\n2\n3\n4\n5\n"
+                                           << "1\n2\nX\n4\n5\n"
+                                           << 1 << head + "@@ -2,3 +2,3 @@\n 2\n-3\n+X\n 4\n";
+    QTest::newRow("into an empty file") << ""
+                                        << "a\nb\n"
+                                        << 3 << head + "@@ -0,0 +1,2 @@\n+a\n+b\n";
+    QTest::newRow("everything removed") << "a\n"
+                                        << "" << 3 << head + "@@ -1 +0,0 @@\n-a\n";
+    QTest::newRow("insertion without context") << "a\nb\n"
+                                               << "a\nX\nb\n"
+                                               << 0 << head + "@@ -1,0 +2 @@\n+X\n";
     QTest::newRow("distant changes, two hunks")
-        << "1\n2\n3\n4\n5\n6\n7\n8\n" << "X\n2\n3\n4\n5\n6\n7\nY\n" << 1
-        << head + "@@ -1,2 +1,2 @@\n-1\n+X\n 2\n@@ -7,2 +7,2 @@\n 7\n-8\n+Y\n";
+        << "1\n2\n3\n4\n5\n6\n7\n8\n"
+        << "X\n2\n3\n4\n5\n6\n7\nY\n"
+        << 1 << head + "@@ -1,2 +1,2 @@\n-1\n+X\n 2\n@@ -7,2 +7,2 @@\n 7\n-8\n+Y\n";
     QTest::newRow("close changes, one hunk")
-        << "1\n2\n3\n4\n5\n" << "X\n2\n3\nY\n5\n" << 1
-        << head + "@@ -1,5 +1,5 @@\n-1\n+X\n 2\n 3\n-4\n+Y\n 5\n";
+        << "1\n2\n3\n4\n5\n"
+        << "X\n2\n3\nY\n5\n"
+        << 1 << head + "@@ -1,5 +1,5 @@\n-1\n+X\n 2\n 3\n-4\n+Y\n 5\n";
 }
 
 void TestBuilderGenerateDiff::unifiedDiff()
@@ -244,25 +260,25 @@ void TestBuilderGenerateDiff::codeRestoreDialogListsSetsAndFiles()
     touch(Codegen::Backups::backupPath(a, "20240102100000"), "newer a");
     touch(Codegen::Backups::backupPath(b, "20240102100000"), "newer b");
     const QStringList stamps = Codegen::Backups::stamps(dir.path());
-    QCOMPARE(stamps, (QStringList{"20240102100000", "20240101100000"}));
+    QCOMPARE(stamps, (QStringList {"20240102100000", "20240101100000"}));
 
     CodeRestoreDialog dialog(dir.path(), stamps);
     QCOMPARE(dialog.setList()->count(), 2);
     QCOMPARE(dialog.setList()->item(0)->text(), QStringLiteral("2024-01-02 10:00:00"));
     QCOMPARE(dialog.selectedStamp(), QStringLiteral("20240102100000")); // newest preselected
-    QCOMPARE(dialog.listedFiles(), (QStringList{"a.py", "src/b.cpp"}));
+    QCOMPARE(dialog.listedFiles(), (QStringList {"a.py", "src/b.cpp"}));
     dialog.setList()->setCurrentRow(1);
     QCOMPARE(dialog.selectedStamp(), QStringLiteral("20240101100000"));
-    QCOMPARE(dialog.listedFiles(), QStringList{"a.py"});
+    QCOMPARE(dialog.listedFiles(), QStringList {"a.py"});
 }
 
 void TestBuilderGenerateDiff::optionsDialogRoundTrips()
 {
     GenerateOptionsDialog dialog({QStringLiteral("/tmp/out"), 4});
-    QCOMPARE(dialog.options(), (GenerateOptions{QStringLiteral("/tmp/out"), 4}));
+    QCOMPARE(dialog.options(), (GenerateOptions {QStringLiteral("/tmp/out"), 4}));
     dialog.backupsBox()->setValue(7);
     dialog.folderEdit()->setText(QStringLiteral("  /tmp/other  "));
-    QCOMPARE(dialog.options(), (GenerateOptions{QStringLiteral("/tmp/other"), 7}));
+    QCOMPARE(dialog.options(), (GenerateOptions {QStringLiteral("/tmp/other"), 7}));
     QPushButton *generate = nullptr;
     for (QPushButton *button : dialog.findChildren<QPushButton *>()) {
         if (button->text() == QLatin1String("&Generate"))
