@@ -132,6 +132,28 @@ RTSTUDIO_EXPECT_OP(_objref_Manager, ReturnCode_t, shutdown, ());
 RTSTUDIO_EXPECT_OP(_objref_Manager, ReturnCode_t, restart, ());
 RTSTUDIO_EXPECT_OP(_objref_Manager, CORBA::Object_ptr, get_service, (const char *));
 
+// Device data members whose C++ type follows from their IDL type: a changed
+// integer width or a lost typedef would make these fail to compile.
+#define RTSTUDIO_EXPECT_MEMBER(Struct, Member, Type)                               \
+    static_assert(std::is_same_v<decltype(Struct::Member), Type>,                \
+                  #Struct "::" #Member " has an unexpected type")
+
+RTSTUDIO_EXPECT_MEMBER(RTC::ActArrayActuatorPos, index, CORBA::UShort);
+RTSTUDIO_EXPECT_MEMBER(RTC::Actuator, status, RTC::ActArrayActuatorStatus);
+RTSTUDIO_EXPECT_MEMBER(RTC::ActArrayState, actuators, RTC::ActuatorList);
+RTSTUDIO_EXPECT_MEMBER(RTC::FiducialInfo, id, CORBA::ULong);
+RTSTUDIO_EXPECT_MEMBER(RTC::GPSTime, msec, CORBA::ULong);
+RTSTUDIO_EXPECT_MEMBER(RTC::GPSData, numSatellites, CORBA::UShort);
+RTSTUDIO_EXPECT_MEMBER(RTC::GPSData, fixType, RTC::GPSFixType);
+RTSTUDIO_EXPECT_MEMBER(RTC::LimbState, oapMatrix, RTC::OAP);
+RTSTUDIO_EXPECT_MEMBER(RTC::Hypothesis3D, covariance, RTC::Covariance3D);
+RTSTUDIO_EXPECT_MEMBER(RTC::OGMapTile, cells, RTC::OGMapCells);
+RTSTUDIO_EXPECT_MEMBER(RTC::LineFeature, covariance, RTC::PointCovariance2D);
+RTSTUDIO_EXPECT_MEMBER(RTC::Waypoint3D, timeLimit, RTC::Time);
+RTSTUDIO_EXPECT_MEMBER(RTC::RangeData, ranges, RTC::RangeList);
+RTSTUDIO_EXPECT_MEMBER(RTC::IntensityData, intensities, RTC::IntensityList);
+RTSTUDIO_EXPECT_MEMBER(RTC::TimedQuaternion, data, RTC::Quaternion);
+
 QStringList memberNames(CORBA::TypeCode_ptr tc)
 {
     QStringList names;
@@ -139,6 +161,57 @@ QStringList memberNames(CORBA::TypeCode_ptr tc)
     for (CORBA::ULong i = 0; i < count; ++i)
         names << QString::fromLatin1(tc->member_name(i));
     return names;
+}
+
+// Spells each member's type as IDL would: named types (structs, enums,
+// typedefs) by repository id, anonymous sequences by element, basic types by
+// keyword. Two structs with the same names but other member types differ here.
+QString typeName(CORBA::TypeCode_ptr tc)
+{
+    switch (tc->kind()) {
+    case CORBA::tk_struct:
+    case CORBA::tk_enum:
+    case CORBA::tk_alias:
+    case CORBA::tk_objref:
+        return QString::fromLatin1(tc->id());
+    case CORBA::tk_sequence: {
+        CORBA::TypeCode_var element = tc->content_type();
+        return QStringLiteral("sequence<%1>").arg(typeName(element));
+    }
+    case CORBA::tk_double:
+        return QStringLiteral("double");
+    case CORBA::tk_ulong:
+        return QStringLiteral("unsigned long");
+    case CORBA::tk_ushort:
+        return QStringLiteral("unsigned short");
+    case CORBA::tk_long:
+        return QStringLiteral("long");
+    case CORBA::tk_boolean:
+        return QStringLiteral("boolean");
+    case CORBA::tk_octet:
+        return QStringLiteral("octet");
+    case CORBA::tk_string:
+        return QStringLiteral("string");
+    default:
+        return QStringLiteral("kind %1").arg(int(tc->kind()));
+    }
+}
+
+QStringList memberTypes(CORBA::TypeCode_ptr tc)
+{
+    QStringList types;
+    const CORBA::ULong count = tc->member_count();
+    for (CORBA::ULong i = 0; i < count; ++i) {
+        CORBA::TypeCode_var member = tc->member_type(i);
+        types << typeName(member);
+    }
+    return types;
+}
+
+QString aliasedType(CORBA::TypeCode_ptr alias)
+{
+    CORBA::TypeCode_var content = alias->content_type();
+    return typeName(content);
 }
 
 QByteArray marshal(const RTC::TimedLong &value)
@@ -166,6 +239,10 @@ private slots:
     void enumOrder();
     void structMemberOrder_data();
     void structMemberOrder();
+    void deviceMemberTypes_data();
+    void deviceMemberTypes();
+    void deviceTypedefs_data();
+    void deviceTypedefs();
     void enumWireValues();
     void timedLongCdrLayout();
     void idlFolderHoldsEveryFile();
@@ -283,6 +360,49 @@ void TestCorbaIdl::typeRepositoryIds_data()
     row("IDL:RTC/CameraImage:1.0", RTC::_tc_CameraImage);
     row("IDL:RTC/StatusKind:1.0", RTC::_tc_StatusKind);
     row("IDL:SimpleService/EchoList:1.0", SimpleService::_tc_EchoList);
+    row("IDL:RTC/Acceleration2D:1.0", RTC::_tc_Acceleration2D);
+    row("IDL:RTC/Covariance2D:1.0", RTC::_tc_Covariance2D);
+    row("IDL:RTC/PointCovariance2D:1.0", RTC::_tc_PointCovariance2D);
+    row("IDL:RTC/Covariance3D:1.0", RTC::_tc_Covariance3D);
+    row("IDL:RTC/TimedAcceleration2D:1.0", RTC::_tc_TimedAcceleration2D);
+    row("IDL:RTC/TimedCovariance2D:1.0", RTC::_tc_TimedCovariance2D);
+    row("IDL:RTC/TimedPointCovariance2D:1.0", RTC::_tc_TimedPointCovariance2D);
+    row("IDL:RTC/TimedCovariance3D:1.0", RTC::_tc_TimedCovariance3D);
+    row("IDL:RTC/Quaternion:1.0", RTC::_tc_Quaternion);
+    row("IDL:RTC/TimedQuaternion:1.0", RTC::_tc_TimedQuaternion);
+    row("IDL:RTC/ActArrayActuatorPos:1.0", RTC::_tc_ActArrayActuatorPos);
+    row("IDL:RTC/ActArrayActuatorStatus:1.0", RTC::_tc_ActArrayActuatorStatus);
+    row("IDL:RTC/ActuatorList:1.0", RTC::_tc_ActuatorList);
+    row("IDL:RTC/ActArrayState:1.0", RTC::_tc_ActArrayState);
+    row("IDL:RTC/ActArrayGeometry:1.0", RTC::_tc_ActArrayGeometry);
+    row("IDL:RTC/BumperArrayGeometry:1.0", RTC::_tc_BumperArrayGeometry);
+    row("IDL:RTC/CameraInfo:1.0", RTC::_tc_CameraInfo);
+    row("IDL:RTC/Fiducials:1.0", RTC::_tc_Fiducials);
+    row("IDL:RTC/FiducialFOV:1.0", RTC::_tc_FiducialFOV);
+    row("IDL:RTC/GPSFixType:1.0", RTC::_tc_GPSFixType);
+    row("IDL:RTC/GPSData:1.0", RTC::_tc_GPSData);
+    row("IDL:RTC/GripperState:1.0", RTC::_tc_GripperState);
+    row("IDL:RTC/GripperGeometry:1.0", RTC::_tc_GripperGeometry);
+    row("IDL:RTC/INSData:1.0", RTC::_tc_INSData);
+    row("IDL:RTC/LimbState:1.0", RTC::_tc_LimbState);
+    row("IDL:RTC/Hypotheses2D:1.0", RTC::_tc_Hypotheses2D);
+    row("IDL:RTC/Hypotheses3D:1.0", RTC::_tc_Hypotheses3D);
+    row("IDL:RTC/OGMapConfig:1.0", RTC::_tc_OGMapConfig);
+    row("IDL:RTC/OGMapTile:1.0", RTC::_tc_OGMapTile);
+    row("IDL:RTC/Features:1.0", RTC::_tc_Features);
+    row("IDL:RTC/MultiCameraImages:1.0", RTC::_tc_MultiCameraImages);
+    row("IDL:RTC/MulticameraInfoList:1.0", RTC::_tc_MulticameraInfoList);
+    row("IDL:RTC/MulticameraGeometry:1.0", RTC::_tc_MulticameraGeometry);
+    row("IDL:RTC/Path2D:1.0", RTC::_tc_Path2D);
+    row("IDL:RTC/Path3D:1.0", RTC::_tc_Path3D);
+    row("IDL:RTC/PointCloud:1.0", RTC::_tc_PointCloud);
+    row("IDL:RTC/PanTiltAngles:1.0", RTC::_tc_PanTiltAngles);
+    row("IDL:RTC/PanTiltState:1.0", RTC::_tc_PanTiltState);
+    row("IDL:RTC/RangerGeometry:1.0", RTC::_tc_RangerGeometry);
+    row("IDL:RTC/RangerConfig:1.0", RTC::_tc_RangerConfig);
+    row("IDL:RTC/RangeData:1.0", RTC::_tc_RangeData);
+    row("IDL:RTC/IntensityData:1.0", RTC::_tc_IntensityData);
+    row("IDL:RTC/RFIDTagData:1.0", RTC::_tc_RFIDTagData);
     row("IDL:SimpleService/ValueList:1.0", SimpleService::_tc_ValueList);
 }
 
@@ -314,6 +434,23 @@ void TestCorbaIdl::enumOrder_data()
                        "UNKNOWN_ERROR"};
     QTest::newRow("DependencyType") << memberNames(SDOPackage::_tc_DependencyType)
                                     << QStringList{"OWN", "OWNED", "NO_DEPENDENCY"};
+    QTest::newRow("ActArrayActuatorStatus")
+        << memberNames(RTC::_tc_ActArrayActuatorStatus)
+        << QStringList{"ACTUATOR_STATUS_IDLE", "ACTUATOR_STATUS_MOVING", "ACTUATOR_STATUS_BRAKED",
+                       "ACTUATOR_STATUS_STALLED"};
+    QTest::newRow("ActArrayActuatorType")
+        << memberNames(RTC::_tc_ActArrayActuatorType)
+        << QStringList{"ACTARRAY_ACTUATORTYPE_LINEAR", "ACTARRAY_ACTUATORTYPE_ROTARY"};
+    QTest::newRow("GPSFixType") << memberNames(RTC::_tc_GPSFixType)
+                                << QStringList{"GPS_FIX_NONE", "GPS_FIX_NORMAL", "GPS_FIX_DGPS"};
+    QTest::newRow("GripperStatus")
+        << memberNames(RTC::_tc_GripperStatus)
+        << QStringList{"GRIPPER_STATE_OPEN", "GRIPPER_STATE_CLOSED", "GRIPPER_STATE_MOVING",
+                       "GRIPPER_STATE_UNKNOWN"};
+    QTest::newRow("LimbStatus")
+        << memberNames(RTC::_tc_LimbStatus)
+        << QStringList{"LIMB_STATUS_IDLE", "LIMB_STATUS_BRAKED", "LIMB_STATUS_MOVING",
+                       "LIMB_STATUS_OOR", "LIMB_STATUS_COLLISION"};
 }
 
 void TestCorbaIdl::enumOrder()
@@ -358,12 +495,179 @@ void TestCorbaIdl::structMemberOrder_data()
                                   << QStringList{"tm", "data"};
     QTest::newRow("Pose2D") << memberNames(RTC::_tc_Pose2D)
                             << QStringList{"position", "heading"};
+    QTest::newRow("Acceleration2D") << memberNames(RTC::_tc_Acceleration2D)
+                                    << QStringList{"ax", "ay"};
+    QTest::newRow("Covariance2D") << memberNames(RTC::_tc_Covariance2D)
+                                  << QStringList{"xx", "xy", "xt", "yy", "yt", "tt"};
+    QTest::newRow("PointCovariance2D") << memberNames(RTC::_tc_PointCovariance2D)
+                                       << QStringList{"xx", "xy", "yy"};
+    QTest::newRow("Covariance3D")
+        << memberNames(RTC::_tc_Covariance3D)
+        << QStringList{"xx", "xy", "xz", "xr", "xp", "xa", "yy", "yz", "yr", "yp", "ya",
+                       "zz", "zr", "zp", "za", "rr", "rp", "ra", "pp", "pa", "aa"};
+    QTest::newRow("Quaternion") << memberNames(RTC::_tc_Quaternion)
+                                << QStringList{"x", "y", "z", "w"};
+    QTest::newRow("TimedCovariance3D") << memberNames(RTC::_tc_TimedCovariance3D)
+                                       << QStringList{"tm", "data"};
+    QTest::newRow("Actuator") << memberNames(RTC::_tc_Actuator)
+                              << QStringList{"position", "speed", "accel", "current", "status"};
+    QTest::newRow("ActArrayActuatorGeometry")
+        << memberNames(RTC::_tc_ActArrayActuatorGeometry)
+        << QStringList{"type",     "length",   "orientation",  "axis",     "minRange",
+                       "centre",   "maxRange", "homePosition", "hasBrakes"};
+    QTest::newRow("CameraImage")
+        << memberNames(RTC::_tc_CameraImage)
+        << QStringList{"tm", "width", "height", "bpp", "format", "fDiv", "pixels"};
+    QTest::newRow("CameraInfo")
+        << memberNames(RTC::_tc_CameraInfo)
+        << QStringList{"focalLength", "principalPoint", "k1", "k2", "p1", "p2"};
+    QTest::newRow("FiducialInfo")
+        << memberNames(RTC::_tc_FiducialInfo)
+        << QStringList{"id", "pose", "poseUncertainty", "size", "sizeUncertainty"};
+    QTest::newRow("GPSData")
+        << memberNames(RTC::_tc_GPSData)
+        << QStringList{"tm",           "timeFromGPS",     "latitude",        "longitude",
+                       "altitude",     "horizontalError", "verticalError",   "heading",
+                       "horizontalSpeed", "verticalSpeed", "numSatellites", "fixType"};
+    QTest::newRow("INSData")
+        << memberNames(RTC::_tc_INSData)
+        << QStringList{"tm",         "latitude",    "longitude",  "altitude",
+                       "heightAMSL", "velocityENU", "orientation"};
+    QTest::newRow("LineFeature")
+        << memberNames(RTC::_tc_LineFeature)
+        << QStringList{"probability", "rho", "alpha",        "covariance",
+                       "start",       "end", "startSighted", "endSighted"};
+    QTest::newRow("OGMapTile") << memberNames(RTC::_tc_OGMapTile)
+                               << QStringList{"column", "row", "width", "height", "cells"};
+    QTest::newRow("Waypoint2D")
+        << memberNames(RTC::_tc_Waypoint2D)
+        << QStringList{"target", "distanceTolerance", "headingTolerance", "timeLimit",
+                       "maxSpeed"};
+    QTest::newRow("PanTiltState") << memberNames(RTC::_tc_PanTiltState)
+                                  << QStringList{"tm", "angles", "panSpeed", "tiltSpeed"};
+    QTest::newRow("RangerConfig")
+        << memberNames(RTC::_tc_RangerConfig)
+        << QStringList{"minAngle", "maxAngle", "angularRes", "minRange", "maxRange", "rangeRes",
+                       "frequency"};
+    QTest::newRow("RangeData") << memberNames(RTC::_tc_RangeData)
+                               << QStringList{"tm", "ranges", "geometry", "config"};
+    QTest::newRow("IntensityData") << memberNames(RTC::_tc_IntensityData)
+                                   << QStringList{"tm", "intensities", "geometry", "config"};
 }
 
 void TestCorbaIdl::structMemberOrder()
 {
     QFETCH(QStringList, actual);
     QFETCH(QStringList, expected);
+    QCOMPARE(actual, expected);
+}
+
+void TestCorbaIdl::deviceMemberTypes_data()
+{
+    QTest::addColumn<QStringList>("actual");
+    QTest::addColumn<QStringList>("expected");
+    QTest::newRow("ActArrayActuatorPos")
+        << memberTypes(RTC::_tc_ActArrayActuatorPos)
+        << QStringList{"IDL:RTC/Time:1.0", "unsigned short", "double"};
+    QTest::newRow("ActArrayActuatorGeometry")
+        << memberTypes(RTC::_tc_ActArrayActuatorGeometry)
+        << QStringList{"IDL:RTC/ActArrayActuatorType:1.0", "double",
+                       "IDL:RTC/Orientation3D:1.0",        "IDL:RTC/Vector3D:1.0",
+                       "double",                           "double",
+                       "double",                           "double",
+                       "boolean"};
+    QTest::newRow("CameraImage")
+        << memberTypes(RTC::_tc_CameraImage)
+        << QStringList{"IDL:RTC/Time:1.0", "unsigned short", "unsigned short", "unsigned short",
+                       "string",           "double",         "sequence<octet>"};
+    QTest::newRow("FiducialInfo")
+        << memberTypes(RTC::_tc_FiducialInfo)
+        << QStringList{"unsigned long", "IDL:RTC/Pose3D:1.0", "IDL:RTC/Pose3D:1.0",
+                       "IDL:RTC/Size3D:1.0", "IDL:RTC/Size3D:1.0"};
+    QTest::newRow("GPSTime") << memberTypes(RTC::_tc_GPSTime)
+                             << QStringList{"unsigned long", "unsigned long"};
+    QTest::newRow("GPSData")
+        << memberTypes(RTC::_tc_GPSData)
+        << QStringList{"IDL:RTC/Time:1.0", "IDL:RTC/GPSTime:1.0", "double", "double",
+                       "double",           "double",              "double", "double",
+                       "double",           "double",              "unsigned short",
+                       "IDL:RTC/GPSFixType:1.0"};
+    QTest::newRow("Hypothesis3D")
+        << memberTypes(RTC::_tc_Hypothesis3D)
+        << QStringList{"IDL:RTC/Pose3D:1.0", "IDL:RTC/Covariance3D:1.0", "double"};
+    QTest::newRow("OGMapConfig")
+        << memberTypes(RTC::_tc_OGMapConfig)
+        << QStringList{"double", "double", "unsigned long", "unsigned long",
+                       "IDL:RTC/Pose2D:1.0"};
+    QTest::newRow("PoseFeature")
+        << memberTypes(RTC::_tc_PoseFeature)
+        << QStringList{"double", "IDL:RTC/Pose2D:1.0", "IDL:RTC/Covariance2D:1.0"};
+    QTest::newRow("Features")
+        << memberTypes(RTC::_tc_Features)
+        << QStringList{"IDL:RTC/Time:1.0", "IDL:RTC/PointFeatureList:1.0",
+                       "IDL:RTC/PoseFeatureList:1.0", "IDL:RTC/LineFeatureList:1.0"};
+    QTest::newRow("MultiCameraImages")
+        << memberTypes(RTC::_tc_MultiCameraImages)
+        << QStringList{"IDL:RTC/Time:1.0", "IDL:RTC/MulticameraImageList:1.0"};
+    QTest::newRow("Waypoint3D")
+        << memberTypes(RTC::_tc_Waypoint3D)
+        << QStringList{"IDL:RTC/Pose3D:1.0", "double", "double", "IDL:RTC/Time:1.0",
+                       "IDL:RTC/Velocity3D:1.0"};
+    QTest::newRow("PointCloudPoint")
+        << memberTypes(RTC::_tc_PointCloudPoint)
+        << QStringList{"IDL:RTC/Point3D:1.0", "IDL:RTC/RGBColour:1.0"};
+    QTest::newRow("RangerGeometry")
+        << memberTypes(RTC::_tc_RangerGeometry)
+        << QStringList{"IDL:RTC/Geometry3D:1.0", "IDL:RTC/ElementGeometryList:1.0"};
+    QTest::newRow("IntensityData")
+        << memberTypes(RTC::_tc_IntensityData)
+        << QStringList{"IDL:RTC/Time:1.0", "IDL:RTC/IntensityList:1.0",
+                       "IDL:RTC/RangerGeometry:1.0", "IDL:RTC/RangerConfig:1.0"};
+    QTest::newRow("TimedPointCovariance2D")
+        << memberTypes(RTC::_tc_TimedPointCovariance2D)
+        << QStringList{"IDL:RTC/Time:1.0", "IDL:RTC/PointCovariance2D:1.0"};
+}
+
+void TestCorbaIdl::deviceMemberTypes()
+{
+    QFETCH(QStringList, actual);
+    QFETCH(QStringList, expected);
+    QCOMPARE(actual, expected);
+}
+
+void TestCorbaIdl::deviceTypedefs_data()
+{
+    // A typedef is part of the TypeCode a peer compares, so what it stands
+    // for matters as much as its name.
+    QTest::addColumn<QString>("actual");
+    QTest::addColumn<QString>("expected");
+    const auto row = [](const char *name, CORBA::TypeCode_ptr tc, const char *expected) {
+        QTest::newRow(name) << aliasedType(tc) << QString::fromLatin1(expected);
+    };
+    row("ActuatorList", RTC::_tc_ActuatorList, "sequence<IDL:RTC/Actuator:1.0>");
+    row("ActArrayActuatorGeometryList", RTC::_tc_ActArrayActuatorGeometryList,
+        "sequence<IDL:RTC/ActArrayActuatorGeometry:1.0>");
+    row("BumperGeometryList", RTC::_tc_BumperGeometryList,
+        "sequence<IDL:RTC/BumperGeometry:1.0>");
+    row("FiducialInfoList", RTC::_tc_FiducialInfoList, "sequence<IDL:RTC/FiducialInfo:1.0>");
+    row("OGMapCells", RTC::_tc_OGMapCells, "sequence<octet>");
+    row("MulticameraImageList", RTC::_tc_MulticameraImageList,
+        "sequence<IDL:RTC/CameraImage:1.0>");
+    row("MulticameraInfoList", RTC::_tc_MulticameraInfoList,
+        "sequence<IDL:RTC/CameraInfo:1.0>");
+    row("MulticameraGeometryList", RTC::_tc_MulticameraGeometryList,
+        "sequence<IDL:RTC/Geometry3D:1.0>");
+    row("Waypoint2DList", RTC::_tc_Waypoint2DList, "sequence<IDL:RTC/Waypoint2D:1.0>");
+    row("ElementGeometryList", RTC::_tc_ElementGeometryList, "sequence<IDL:RTC/Geometry3D:1.0>");
+    row("RangeList", RTC::_tc_RangeList, "sequence<double>");
+    row("IntensityList", RTC::_tc_IntensityList, "sequence<double>");
+    row("RFIDTagData", RTC::_tc_RFIDTagData, "sequence<octet>");
+}
+
+void TestCorbaIdl::deviceTypedefs()
+{
+    QFETCH(QString, actual);
+    QFETCH(QString, expected);
     QCOMPARE(actual, expected);
 }
 
