@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "dialogprompts.h"
 
+#include "saveprofiledialog.h"
+
 #include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -93,6 +95,28 @@ void DialogPrompts::showAbout()
            "<p>Reads and writes RTC and RTS profiles (XML and YAML) as OpenRTP does.</p>"
            "<p>Licensed under the MIT license.</p>")
             .arg(QCoreApplication::applicationVersion()));
+}
+
+std::optional<SystemEditor::SystemProfileInfo>
+DialogPrompts::askSystemProfileInfo(const SystemEditor::SystemProfileInfo &current,
+                                    const QStringList &components)
+{
+    SystemEditor::SaveProfileDialog dialog(current, components, m_parent);
+    if (dialog.exec() != QDialog::Accepted)
+        return std::nullopt;
+    return dialog.info();
+}
+
+QString DialogPrompts::askExportFileName(const QString &suggestedPath)
+{
+    const QString png = tr("PNG image (*.png)");
+    const QString svg = tr("SVG drawing (*.svg)");
+    QString selected = suggestedPath.endsWith(QLatin1String(".svg")) ? svg : png;
+    QString path = QFileDialog::getSaveFileName(m_parent, tr("Export Diagram"), suggestedPath,
+                                                png + QStringLiteral(";;") + svg, &selected);
+    if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty())
+        path += selected == svg ? QStringLiteral(".svg") : QStringLiteral(".png");
+    return path;
 }
 
 } // namespace Studio

@@ -20,6 +20,10 @@ public:
     void showProblems(const QString &title, const QString &text,
                       const Profile::Diagnostics &diagnostics) override;
     void showAbout() override;
+    std::optional<SystemEditor::SystemProfileInfo>
+    askSystemProfileInfo(const SystemEditor::SystemProfileInfo &current,
+                         const QStringList &components) override;
+    QString askExportFileName(const QString &suggestedPath) override;
 
 private:
     QWidget *m_parent;

@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
 #include "documentcontroller.h"
 
+#include "diagramexport.h"
 #include "documentloader.h"
 #include "recentfiles.h"
 #include "rtcdocument.h"
 #include "rtsdocument.h"
+#include "saveprofiledialog.h"
+#include "systemmodel.h"
 #include "userprompts.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QSettings>
+#include <QUndoStack>
 
 namespace Studio {
 
@@ -122,6 +126,30 @@ bool DocumentController::saveAs(Document *document, const QString &path)
     return saveTo(document, path, false);
 }
 
+bool DocumentController::exportDiagram(Document *document)
+{
+    auto *system = qobject_cast<RtsDocument *>(document);
+    if (!system || !m_prompts)
+        return false;
+    const QString base = document->isUntitled() ? suggestedSavePath(document) : document->filePath();
+    const QString suggested = QFileInfo(base).dir().filePath(QFileInfo(base).completeBaseName()
+                                                             + QStringLiteral(".png"));
+    const QString path = m_prompts->askExportFileName(suggested);
+    if (path.isEmpty())
+        return false;
+    QString error;
+    if (!SystemEditor::DiagramExport::exportLaidOut(*system->model(), path, &error)) {
+        const Profile::Diagnostics diagnostics {Profile::Diagnostic::error(path, 0, 0, error)};
+        const QString summary = tr("Could not export the diagram to %1.")
+                                    .arg(QFileInfo(path).fileName());
+        emit problemsReported(summary, diagnostics);
+        m_prompts->showProblems(tr("Export Failed"), summary, diagnostics);
+        return false;
+    }
+    emit statusMessage(tr("Exported the diagram to %1").arg(path));
+    return true;
+}
+
 bool DocumentController::close(Document *document)
 {
     if (!m_documents.contains(document) || !confirmClose(document))
@@ -185,6 +213,8 @@ void DocumentController::addDocument(Document *document)
 
 bool DocumentController::saveTo(Document *document, const QString &path, bool keepFormat)
 {
+    if (!confirmSystemProfile(document))
+        return false;
     Profile::Diagnostics diagnostics;
     const bool saved
         = keepFormat ? document->save(&diagnostics) : document->saveAs(path, &diagnostics);
@@ -204,6 +234,22 @@ bool DocumentController::saveTo(Document *document, const QString &path, bool ke
     m_recentFiles->add(document->filePath());
     rememberDirectory(document->filePath());
     emit statusMessage(tr("Saved %1").arg(document->filePath()));
+    return true;
+}
+
+bool DocumentController::confirmSystemProfile(Document *document)
+{
+    auto *system = qobject_cast<RtsDocument *>(document);
+    if (!system || !m_prompts)
+        return true;
+    SystemEditor::SystemModel *model = system->model();
+    const std::optional<SystemEditor::SystemProfileInfo> info
+        = m_prompts->askSystemProfileInfo(model->systemInfo(), model->componentIds());
+    if (!info)
+        return false;
+    // The answer is an edit like any other: one undo step, and the save stamps the new date.
+    if (QUndoCommand *command = SystemEditor::SaveProfileDialog::applyCommand(model, *info))
+        system->undoStack()->push(command);
     return true;
 }
 

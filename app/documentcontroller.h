@@ -59,6 +59,13 @@ public:
     /// Saves to `path` (format by extension); on failure the document stays as it was.
     bool saveAs(Document *document, const QString &path);
 
+    /**
+     * For a system: asks where to export its diagram (.png or .svg) and writes it; a system
+     * without saved positions is drawn auto-laid-out, the document unchanged. False on cancel,
+     * failure (reported) or for a component.
+     */
+    bool exportDiagram(Document *document);
+
     /// Closes a document, asking about unsaved changes. False when the user cancelled or the
     /// requested save failed; the document is then still open.
     bool close(Document *document);
@@ -82,6 +89,8 @@ private:
     Document *openOne(const QString &path, Profile::Diagnostics *failures);
     void addDocument(Document *document);
     bool saveTo(Document *document, const QString &path, bool keepFormat);
+    /// For a system: asks its profile information and applies it; false when cancelled.
+    bool confirmSystemProfile(Document *document);
     bool confirmClose(Document *document);
     void discard(Document *document);
     void rememberDirectory(const QString &filePath);

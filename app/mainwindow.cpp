@@ -181,6 +181,8 @@ void MainWindow::createFileActions()
                       QKeySequence::SaveAs, &DocumentController::saveAs);
     addDocumentAction(QStringLiteral("actionClose"), tr("&Close"), QStringLiteral("close"),
                       QKeySequence::Close, &DocumentController::close);
+    addDocumentAction(QStringLiteral("actionExportDiagram"), tr("&Export Diagram…"), QString(),
+                      {}, &DocumentController::exportDiagram);
 
     QAction *quit = addAction(QStringLiteral("actionQuit"), tr("&Quit"), QStringLiteral("quit"),
                               QKeySequence::Quit);
@@ -248,6 +250,8 @@ void MainWindow::createMenus()
     file->addAction(action("actionSave"));
     file->addAction(action("actionSaveAs"));
     file->addAction(action("actionClose"));
+    file->addSeparator();
+    file->addAction(action("actionExportDiagram"));
     file->addSeparator();
     file->addAction(action("actionQuit"));
 
@@ -429,6 +433,8 @@ void MainWindow::updateActions()
         ->setEnabled(document && (document->isModified() || document->isUntitled()));
     findChild<QAction *>(QStringLiteral("actionSaveAs"))->setEnabled(document != nullptr);
     findChild<QAction *>(QStringLiteral("actionClose"))->setEnabled(document != nullptr);
+    findChild<QAction *>(QStringLiteral("actionExportDiagram"))
+        ->setEnabled(qobject_cast<RtsDocument *>(document) != nullptr);
 }
 
 void MainWindow::fillRecentFilesMenu()

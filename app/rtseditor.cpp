@@ -19,6 +19,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QTabWidget>
+#include <QToolBar>
 #include <QTreeView>
 #include <QVBoxLayout>
 
@@ -92,6 +93,7 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     auto *centreLayout = new QVBoxLayout(centre);
     centreLayout->setContentsMargins(0, 0, 0, 0);
     centreLayout->setSpacing(0);
+    centreLayout->addWidget(buildToolBar());
     centreLayout->addWidget(m_canvas, 1);
     centreLayout->addWidget(m_status);
 
@@ -117,6 +119,16 @@ RtsEditor::~RtsEditor()
 QString RtsEditor::statusText() const
 {
     return m_status->text();
+}
+
+QWidget *RtsEditor::buildToolBar()
+{
+    auto *toolBar = new QToolBar;
+    toolBar->setObjectName(QStringLiteral("systemEditorToolBar"));
+    toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    for (const char *name : {"actionAutoLayout", "actionZoomFit"})
+        toolBar->addAction(m_canvas->action(QLatin1String(name)));
+    return toolBar;
 }
 
 QWidget *RtsEditor::buildLeftSide()

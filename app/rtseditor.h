@@ -52,6 +52,7 @@ public:
     static SystemEditor::RtcRepository *sharedRepository();
 
 private:
+    QWidget *buildToolBar();
     QWidget *buildLeftSide();
     QWidget *buildRightSide();
 

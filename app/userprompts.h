@@ -3,6 +3,7 @@
 
 #include "diagnostic.h"
 #include "profileio.h"
+#include "systemprofileinfo.h"
 
 #include <QString>
 #include <QStringList>
@@ -36,6 +37,25 @@ public:
         = 0;
     /// Shows the About box.
     virtual void showAbout() = 0;
+    /**
+     * Asks a system's profile information before it is saved: vendor, name, version, abstract
+     * and which of `components` are required. Nothing means cancelled (nothing is saved). Without
+     * anyone to ask, the current information is kept.
+     */
+    virtual std::optional<SystemEditor::SystemProfileInfo>
+    askSystemProfileInfo(const SystemEditor::SystemProfileInfo &current,
+                         const QStringList &components)
+    {
+        Q_UNUSED(components)
+        return current;
+    }
+    /// Asks where to export a diagram (.png or .svg); an empty string means cancelled. Without
+    /// anyone to ask, nothing is exported.
+    virtual QString askExportFileName(const QString &suggestedPath)
+    {
+        Q_UNUSED(suggestedPath)
+        return {};
+    }
 };
 
 } // namespace Studio

@@ -99,7 +99,8 @@ QHash<QString, QPointF> computeAutoLayout(const SystemModel &model,
     for (const QString &name : names) {
         QByteArray id = name.toUtf8();
         Agnode_t *node = agnode(graph, id.data(), 1);
-        const QSizeF size = componentSize(model, name);
+        const QSizeF size = options.sizes.contains(name) ? options.sizes.value(name)
+                                                         : componentSize(model, name);
         setAttribute(node, "shape", "box");
         setAttribute(node, "fixedsize", "true");
         setAttribute(node, "width", inches(size.width()));

@@ -5,6 +5,7 @@
 
 #include <QHash>
 #include <QPointF>
+#include <QSizeF>
 
 class QUndoCommand;
 
@@ -16,6 +17,9 @@ struct AutoLayoutOptions
     qreal rankSeparation = 80; ///< between columns (data flows left to right)
     qreal nodeSeparation = 40; ///< between components in one column
     QPointF origin {20, 20}; ///< the top-left of the laid-out system
+    /// Sizes of the components as drawn (labels widen them), by instance name; componentSize()
+    /// for those not listed.
+    QHash<QString, QSizeF> sizes;
 };
 
 /**

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "diagramexport.h"
 
+#include "componentitem.h"
 #include "systemfile.h"
 #include "systemmodel.h"
 #include "systemscene.h"
@@ -10,6 +11,8 @@
 #include <QImageWriter>
 #include <QPainter>
 #include <QSvgGenerator>
+
+#include <algorithm>
 
 namespace SystemEditor {
 
@@ -93,6 +96,40 @@ bool DiagramExport::exportToFile(SystemModel &model, const QString &outputPath, 
     return true;
 }
 
+AutoLayoutOptions DiagramExport::drawnLayoutOptions(const SystemScene &scene)
+{
+    AutoLayoutOptions options;
+    for (const QString &name : scene.model()->componentIds()) {
+        if (const ComponentItem *item = scene.componentItem(name))
+            options.sizes.insert(name, item->bodyRect().size());
+    }
+    return options;
+}
+
+bool DiagramExport::hasPositions(const SystemModel &model)
+{
+    const QList<Profile::RtsComponent> &components = model.profile().components;
+    return std::any_of(components.cbegin(), components.cend(),
+                       [](const Profile::RtsComponent &c) { return c.layout.has_value(); });
+}
+
+bool DiagramExport::exportLaidOut(SystemModel &model, const QString &outputPath, QString *error)
+{
+    if (hasPositions(model) || model.profile().components.isEmpty())
+        return exportToFile(model, outputPath, error);
+    SystemModel copy;
+    copy.setProfile(model.profile(), model.rtcProfiles());
+    AutoLayoutOptions options;
+    {
+        const SystemScene measuring(&copy, nullptr);
+        options = drawnLayoutOptions(measuring);
+    }
+    const QHash<QString, QPointF> positions = computeAutoLayout(copy, options);
+    for (auto it = positions.cbegin(); it != positions.cend(); ++it)
+        copy.moveComponent(it.key(), it.value());
+    return exportToFile(copy, outputPath, error);
+}
+
 bool DiagramExport::exportSystemFile(const QString &systemPath, const QString &outputPath,
                                      QString *error)
 {
@@ -109,7 +146,7 @@ bool DiagramExport::exportSystemFile(const QString &systemPath, const QString &o
     }
     SystemModel model;
     model.setProfile(loaded->profile, loaded->rtcProfiles);
-    return exportToFile(model, outputPath, error);
+    return exportLaidOut(model, outputPath, error);
 }
 
 } // namespace SystemEditor

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "systemcanvas.h"
 
+#include "autolayout.h"
+#include "diagramexport.h"
 #include "instancecommands.h"
 #include "overviewwidget.h"
 #include "systemscene.h"
@@ -13,6 +15,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QToolButton>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 namespace SystemEditor {
@@ -154,6 +157,8 @@ void SystemCanvas::createArrangeActions()
         connect(addCanvasAction(QStringLiteral("actionAlign%1").arg(index++), text),
                 &QAction::triggered, this, [this, a] { m_scene->alignSelection(a); });
     }
+    connect(addCanvasAction(QStringLiteral("actionAutoLayout"), tr("Auto &Layout")),
+            &QAction::triggered, this, &SystemCanvas::autoLayout);
 }
 
 void SystemCanvas::updateActions()
@@ -194,9 +199,25 @@ void SystemCanvas::showContextMenu(const QPoint &pos)
             align->addAction(a);
     }
     menu.addSeparator();
-    for (const char *name : {"actionSelectAll", "actionZoomFit", "actionSnapToGrid"})
+    for (const char *name : {"actionSelectAll", "actionAutoLayout", "actionZoomFit",
+                             "actionSnapToGrid"})
         menu.addAction(action(QLatin1String(name)));
     menu.exec(m_view->viewport()->mapToGlobal(pos));
+}
+
+void SystemCanvas::autoLayout()
+{
+    QUndoStack *stack = m_scene->undoStack();
+    QUndoCommand *command = stack ? autoLayoutCommand(m_scene->model(),
+                                                      DiagramExport::drawnLayoutOptions(*m_scene))
+                                  : nullptr;
+    if (!command) {
+        emit statusMessage(tr("Nothing to lay out."));
+        return;
+    }
+    stack->push(command);
+    emit statusMessage(tr("Laid out %n component(s).", nullptr,
+                          int(m_scene->model()->componentIds().size())));
 }
 
 void SystemCanvas::resizeEvent(QResizeEvent *event)

@@ -38,6 +38,8 @@ public:
     QAction *action(const QString &objectName) const;
     /// Opens the find bar.
     void showFind();
+    /// Lays every component out with autoLayoutCommand() as one undo step (`actionAutoLayout`).
+    void autoLayout();
 
 signals:
     void statusMessage(const QString &message);
