@@ -1,19 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Load/save/validate times of a large generated RTS profile (1,000 components, 1,500 connectors).
 // Target: each of load and save within 100 ms on a 2-core machine (Release build).
+#include "benchsystem.h"
 #include "profileio.h"
 #include "rtsvalidator.h"
 #include "rtsxml.h"
 #include "rtsyaml.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
-#include <QFile>
 #include <QTextStream>
 
-#include <algorithm>
 #include <functional>
-#include <vector>
 
 using namespace Profile;
 
@@ -23,86 +20,19 @@ constexpr int Components = 1000;
 constexpr int Connectors = 1500;
 constexpr int Runs = 7;
 
-QString componentId(int i)
+double medianMs(const std::function<void()> &work)
 {
-    return QStringLiteral("RTC:Bench:example:Type%1:1.0.0").arg(i % 20);
-}
-
-/// Each component has an InPort `in` and OutPorts `out0`/`out1`; connector k joins
-/// out(k%2) of component k/2... so that 1,500 connectors spread over the system.
-QByteArray generateSystem()
-{
-    QString xml;
-    QTextStream s(&xml);
-    s << R"(<?xml version="1.0" encoding="UTF-8" standalone="yes"?>
-<rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rts:id="RTSystem:Bench:Large:1.0" rts:version="0.2" rts:creationDate="2026-11-21T09:00:00" rts:updateDate="2026-11-21T09:00:00">
-)";
-    for (int i = 0; i < Components; ++i) {
-        const QString name = QStringLiteral("Comp%1").arg(i);
-        s << "<rts:Components xsi:type=\"rtsExt:component_ext\" rts:id=\"" << componentId(i)
-          << "\" rts:pathUri=\"localhost/" << name << ".rtc\" rts:instanceName=\"" << name
-          << "\" rts:activeConfigurationSet=\"default\" rts:compositeType=\"None\" rts:isRequired=\"true\">\n";
-        for (const char *port : {"in", "out0", "out1"}) {
-            s << "  <rts:DataPorts xsi:type=\"rtsExt:dataport_ext\" rts:name=\"" << name << '.'
-              << port << "\"/>\n";
-        }
-        s << "  <rts:ConfigurationSets rts:id=\"default\"><rts:ConfigurationData rts:name=\"gain\" "
-             "rts:data=\"1.5\"/><rts:ConfigurationData rts:name=\"mode\" rts:data=\"fast\"/>"
-             "</rts:ConfigurationSets>\n";
-        s << "  <rts:ExecutionContexts xsi:type=\"rtsExt:execution_context_ext\" rts:id=\"0\" "
-             "rts:kind=\"PeriodicExecutionContext\" rts:rate=\"1000.0\"/>\n";
-        s << "  <rtsExt:Location rtsExt:x=\"" << (i % 40) * 200 << "\" rtsExt:y=\"" << (i / 40) * 150
-          << "\" rtsExt:height=\"-1\" rtsExt:width=\"-1\" rtsExt:direction=\"RIGHT\"/>\n";
-        s << "  <rtsExt:Properties rtsExt:name=\"COMPONENT_PATH_ID\" rtsExt:value=\"localhost/" << name
-          << ".rtc\"/>\n</rts:Components>\n";
-    }
-    for (int k = 0; k < Connectors; ++k) {
-        const int from = k % Components;
-        const int to = (k * 7 + 1) % Components;
-        const QString source = QStringLiteral("Comp%1").arg(from);
-        const QString target = QStringLiteral("Comp%1").arg(to);
-        const QString port = QStringLiteral("out%1").arg(k / Components);
-        s << "<rts:DataPortConnectors xsi:type=\"rtsExt:dataport_connector_ext\" rts:connectorId=\"conn"
-          << k << "\" rts:name=\"" << port << "_in\" rts:dataType=\"IDL:RTC/TimedLong:1.0\" "
-          << "rts:interfaceType=\"corba_cdr\" rts:dataflowType=\"push\" rts:subscriptionType=\"flush\">\n"
-          << "  <rts:sourceDataPort xsi:type=\"rtsExt:target_port_ext\" rts:componentId=\""
-          << componentId(from) << "\" rts:instanceName=\"" << source << "\" rts:portName=\"" << source
-          << '.' << port << "\"/>\n"
-          << "  <rts:targetDataPort xsi:type=\"rtsExt:target_port_ext\" rts:componentId=\""
-          << componentId(to) << "\" rts:instanceName=\"" << target << "\" rts:portName=\"" << target
-          << ".in\"/>\n"
-          << "  <rtsExt:Properties rtsExt:name=\"dataport.outport.buffer.length\" rtsExt:value=\"8\"/>\n"
-          << "</rts:DataPortConnectors>\n";
-    }
-    s << "</rts:RtsProfile>\n";
-    s.flush();
-    return xml.toUtf8();
-}
-
-/// Median wall time of `runs` calls, in milliseconds.
-double medianMs(const std::function<void()> &work, int runs = Runs)
-{
-    std::vector<double> times;
-    for (int i = 0; i < runs; ++i) {
-        QElapsedTimer timer;
-        timer.start();
-        work();
-        times.push_back(double(timer.nsecsElapsed()) / 1e6);
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
+    return Bench::medianMs(work, Runs);
 }
 
 long peakRssKiB()
 {
-    QFile status(QStringLiteral("/proc/self/status"));
-    if (!status.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray &line : status.readAll().split('\n')) {
-        if (line.startsWith("VmHWM:"))
-            return line.mid(6).trimmed().split(' ').first().toLong();
-    }
-    return -1;
+    return Bench::peakRssKiB();
+}
+
+QByteArray generateSystem()
+{
+    return Bench::generateSystem(Components, Connectors);
 }
 
 } // namespace
