@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include "rtctlrunner.h"
+
 // rtctl resurrect / start / stop / diff / cryo / teardown run as a user would, against omniNames
 // and rtmanager, with the bundled ConsoleInOut example.
 #include "livesystem.h"
 
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -19,13 +20,7 @@ private slots:
     void failedResurrectRollsBack();
 
 private:
-    struct Result
-    {
-        int code = -1;
-        QString out;
-        QString err;
-        QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
-    };
+    using Result = RtctlResult;
     Result rtctl(const QStringList &arguments);
     QString manager() const { return QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_managerPort); }
 
@@ -37,21 +32,7 @@ private:
 
 TestDeployRtctl::Result TestDeployRtctl::rtctl(const QStringList &arguments)
 {
-    QProcess process;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(QStringLiteral("RTCTREE_NAMESERVERS"), m_live.namingServer());
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(RTCTL_PATH), arguments);
-    Result result;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return result;
-    }
-    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    result.out = QString::fromUtf8(process.readAllStandardOutput());
-    result.err = QString::fromUtf8(process.readAllStandardError());
-    return result;
+    return runRtctl(arguments, {{QStringLiteral("RTCTREE_NAMESERVERS"), m_live.namingServer()}});
 }
 
 void TestDeployRtctl::initTestCase()

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
+#include "rtctlrunner.h"
+
 #include <QDir>
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -23,12 +24,7 @@ private slots:
     void convertFailureLeavesTargetUntouched();
 
 private:
-    struct Result
-    {
-        int code = -1;
-        QString out;
-        QString err;
-    };
+    using Result = RtctlResult;
     Result rtctl(const QStringList &arguments);
 };
 
@@ -44,18 +40,7 @@ static QString data(const QString &relative)
 
 TestRtctl::Result TestRtctl::rtctl(const QStringList &arguments)
 {
-    QProcess process;
-    process.start(QStringLiteral(RTCTL_PATH), arguments);
-    Result result;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return result;
-    }
-    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    result.out = QString::fromUtf8(process.readAllStandardOutput());
-    result.err = QString::fromUtf8(process.readAllStandardError());
-    return result;
+    return runRtctl(arguments);
 }
 
 void TestRtctl::helpAndVersion()

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
+#include "rtctlrunner.h"
+
 #include <QDir>
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -19,12 +20,7 @@ private slots:
     void missingInterfaceTypeIsAProblem();
 
 private:
-    struct Result
-    {
-        int code = -1;
-        QString out;
-        QString err;
-    };
+    using Result = RtctlResult;
     Result rtctl(const QStringList &arguments);
 };
 
@@ -52,18 +48,7 @@ static bool writeAll(const QString &path, const QByteArray &data)
 
 TestRtctlGen::Result TestRtctlGen::rtctl(const QStringList &arguments)
 {
-    QProcess process;
-    process.start(QStringLiteral(RTCTL_PATH), arguments);
-    Result result;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return result;
-    }
-    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    result.out = QString::fromUtf8(process.readAllStandardOutput());
-    result.err = QString::fromUtf8(process.readAllStandardError());
-    return result;
+    return runRtctl(arguments);
 }
 
 void TestRtctlGen::usageErrors_data()

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
+#include "rtctlrunner.h"
+
 #include "livesystem.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTest>
 
 // rtctl's rtshell commands run as a user would, against omniNames and a live peer process.
@@ -31,14 +32,7 @@ private slots:
     void drivesTheRealManager();
 
 private:
-    struct Result
-    {
-        int code = -1;
-        QString out;
-        QString err;
-        QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
-        QJsonDocument json() const { return QJsonDocument::fromJson(out.toUtf8()); }
-    };
+    using Result = RtctlResult;
     Result rtctl(const QStringList &arguments, const QString &cwd = QString(),
                  const QString &servers = QString());
     QString host() const
@@ -53,22 +47,9 @@ private:
 TestRtctlRt::Result TestRtctlRt::rtctl(const QStringList &arguments, const QString &cwd,
                                        const QString &servers)
 {
-    QProcess process;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(QStringLiteral("RTCSH_CWD"), cwd.isNull() ? host() : cwd);
-    environment.insert(QStringLiteral("RTCTREE_NAMESERVERS"), servers);
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(RTCTL_PATH), arguments);
-    Result result;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return result;
-    }
-    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    result.out = QString::fromUtf8(process.readAllStandardOutput());
-    result.err = QString::fromUtf8(process.readAllStandardError());
-    return result;
+    return runRtctl(arguments,
+                    {{QStringLiteral("RTCSH_CWD"), cwd.isNull() ? host() : cwd},
+                     {QStringLiteral("RTCTREE_NAMESERVERS"), servers}});
 }
 
 void TestRtctlRt::initTestCase()

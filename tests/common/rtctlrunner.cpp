@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+#include "rtctlrunner.h"
+
+#include <QProcess>
+#include <QProcessEnvironment>
+
+RtctlResult runRtctl(const QStringList &arguments, const QHash<QString, QString> &environment)
+{
+    QProcess process;
+    QProcessEnvironment processEnvironment = QProcessEnvironment::systemEnvironment();
+    for (auto it = environment.cbegin(); it != environment.cend(); ++it)
+        processEnvironment.insert(it.key(), it.value());
+    process.setProcessEnvironment(processEnvironment);
+    process.start(QStringLiteral(RTCTL_PATH), arguments);
+    RtctlResult result;
+    if (!process.waitForFinished(60000)) {
+        process.kill();
+        process.waitForFinished();
+        return result;
+    }
+    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    result.out = QString::fromUtf8(process.readAllStandardOutput());
+    result.err = QString::fromUtf8(process.readAllStandardError());
+    return result;
+}

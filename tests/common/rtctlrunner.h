@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QHash>
+#include <QJsonDocument>
+#include <QString>
+#include <QStringList>
+
+/// What one run of the real rtctl binary gave: exit code (-1: did not finish, -2: crashed) and
+/// its two output streams.
+struct RtctlResult
+{
+    int code = -1;
+    QString out;
+    QString err;
+
+    QStringList lines() const { return out.split(QLatin1Char('\n'), Qt::SkipEmptyParts); }
+    QJsonDocument json() const { return QJsonDocument::fromJson(out.toUtf8()); }
+};
+
+/**
+ * Runs the rtctl binary the tests were built with (RTCTL_PATH), as a user or a script would,
+ * with extra environment variables set. Gives up after a minute and kills the process.
+ */
+RtctlResult runRtctl(const QStringList &arguments,
+                     const QHash<QString, QString> &environment = {});
