@@ -40,6 +40,11 @@ SystemScene::~SystemScene()
         item->disconnect(this);
     for (ConnectorItem *item : std::as_const(m_connectors))
         item->disconnect(this);
+    // Deleting a selected item announces a selection change; nobody may look at half-deleted
+    // items through this scene any more.
+    blockSignals(true);
+    m_components.clear();
+    m_connectors.clear();
     clear();
 }
 

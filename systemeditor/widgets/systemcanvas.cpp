@@ -63,7 +63,9 @@ SystemCanvas::SystemCanvas(SystemModel *model, QUndoStack *undoStack, QWidget *p
 
 SystemCanvas::~SystemCanvas()
 {
-    // The view (and the overview on it) go before the scene they watch.
+    // The scene (a child, deleted after this destructor) must not call back into a canvas that
+    // is already gone; the view (and the overview on it) go before the scene they watch.
+    m_scene->disconnect(this);
     delete m_view;
 }
 
