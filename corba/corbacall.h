@@ -18,6 +18,22 @@ CORBA::ORB_ptr orb();
 /// Creates the ORB on first use; the configured timeouts are in force from then on.
 void ensureOrb();
 
+/**
+ * Puts the calling thread's call timeout (Orb::callTimeout()) in force for the remote calls made
+ * while it lives, in any thread: omniORB keeps per-thread timeouts only for omni_threads, so a
+ * thread it did not create (QThread, std::thread) gets a stand-in omni_thread for the duration.
+ */
+class CallTimeoutScope
+{
+public:
+    CallTimeoutScope();
+    CallTimeoutScope(const CallTimeoutScope &) = delete;
+    CallTimeoutScope &operator=(const CallTimeoutScope &) = delete;
+
+private:
+    omni_thread::ensure_self m_self;
+};
+
 /// Translates the exception being handled into an Error naming `target`; call only in a catch.
 [[noreturn]] void rethrowAsError(const QString &target);
 
@@ -28,6 +44,7 @@ void ensureOrb();
 template<typename F> auto call(const QString &target, F &&f) -> decltype(f())
 {
     ensureOrb();
+    const CallTimeoutScope timeout;
     try {
         return f();
     } catch (const Error &) {

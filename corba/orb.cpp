@@ -22,12 +22,15 @@ QStringList s_arguments;
 std::once_flag s_once;
 CORBA::ORB_var s_orb;
 
-// The process-wide timeouts, not per-thread ones: omniORB refuses per-thread timeouts in threads
-// it did not create (std::thread, QThread workers).
-void applyTimeout(int milliseconds)
+thread_local int t_threadTimeout = 0;
+
+// The default also bounds remote calls the ORB makes outside Internal::call (narrowing, locate
+// requests). No separate connect timeout: omniORB would stretch a shorter per-call deadline to it,
+// while without one connection set-up is bounded by the call's own deadline.
+void applyDefaultTimeout(int milliseconds)
 {
     omniORB::setClientCallTimeout(CORBA::ULong(milliseconds));
-    omniORB::setClientConnectTimeout(CORBA::ULong(milliseconds));
+    omniORB::setClientConnectTimeout(0);
 }
 
 void createOrb()
@@ -46,11 +49,12 @@ void createOrb()
     argv.push_back(nullptr);
     int argc = int(argv.size()) - 1;
     // omniORB's defaults would print to stderr and retry forever; a tool wants quick, quiet
-    // failure.
-    const char *options[][2] = {{"traceLevel", "0"}, {nullptr, nullptr}};
+    // failure. Per-thread timeouts are off unless asked for (CallTimeoutScope relies on them).
+    const char *options[][2]
+        = {{"traceLevel", "0"}, {"supportPerThreadTimeOut", "1"}, {nullptr, nullptr}};
     s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
     s_initialised = true;
-    applyTimeout(s_callTimeout);
+    applyDefaultTimeout(s_callTimeout);
 }
 
 } // namespace
@@ -65,12 +69,23 @@ void Orb::setCallTimeout(int milliseconds)
 {
     s_callTimeout = milliseconds > 0 ? milliseconds : defaultCallTimeout;
     if (s_initialised)
-        applyTimeout(s_callTimeout);
+        applyDefaultTimeout(s_callTimeout);
 }
 
 int Orb::callTimeout()
 {
-    return s_callTimeout;
+    return t_threadTimeout > 0 ? t_threadTimeout : s_callTimeout.load();
+}
+
+ThreadCallTimeout::ThreadCallTimeout(int milliseconds)
+    : m_previous(t_threadTimeout)
+{
+    t_threadTimeout = milliseconds > 0 ? milliseconds : m_previous;
+}
+
+ThreadCallTimeout::~ThreadCallTimeout()
+{
+    t_threadTimeout = m_previous;
 }
 
 bool Orb::isInitialised()
@@ -89,6 +104,12 @@ CORBA::ORB_ptr orb()
 void ensureOrb()
 {
     orb();
+}
+
+CallTimeoutScope::CallTimeoutScope()
+{
+    // A per-thread timeout overrides the process-wide one for this thread's calls only.
+    omniORB::setClientThreadCallTimeout(CORBA::ULong(Orb::callTimeout()));
 }
 
 namespace {

@@ -9,19 +9,40 @@ namespace Corba {
  * Process-wide settings of the one ORB the client library uses. The ORB is created on first use
  * (thread-safe, exactly once); every proxy call in any thread then uses it. Arguments given after
  * the ORB exists have no effect.
+ *
+ * Every remote call carries its own timeout (connection set-up included): the calling thread's
+ * ThreadCallTimeout if one is in force, else the process default set here.
  */
 class Orb
 {
 public:
     /// Extra ORB_init options (e.g. `-ORBendPoint giop:tcp:127.0.0.1:0`), before first use.
     static void setArguments(const QStringList &arguments);
-    /// Timeout in milliseconds applied to every remote call and connection attempt (default 3000).
+    /// The default timeout in milliseconds of every remote call (default 3000); <= 0 restores it.
     static void setCallTimeout(int milliseconds);
+    /// The timeout that applies to a call made now by the calling thread.
     static int callTimeout();
     /// True once the ORB has been created.
     static bool isInitialised();
 
     static constexpr int defaultCallTimeout = 3000;
+};
+
+/**
+ * Overrides the call timeout for the calling thread while it exists (scopes nest; the innermost
+ * wins), e.g. a poller that must give up quickly while other threads keep the default. Calls made
+ * by other threads are unaffected.
+ */
+class ThreadCallTimeout
+{
+public:
+    explicit ThreadCallTimeout(int milliseconds);
+    ~ThreadCallTimeout();
+    ThreadCallTimeout(const ThreadCallTimeout &) = delete;
+    ThreadCallTimeout &operator=(const ThreadCallTimeout &) = delete;
+
+private:
+    int m_previous;
 };
 
 } // namespace Corba

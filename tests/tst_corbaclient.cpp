@@ -435,29 +435,6 @@ void TestCorbaClient::unreachablePeersGiveTypedErrors()
     QCOMPARE(root.children.at(0).type, NodeType::Zombie);
 }
 
-// SIGSTOP takes effect asynchronously: wait (bounded) until every thread of `pid` is stopped.
-static bool waitUntilStopped(pid_t pid)
-{
-    const QDeadlineTimer deadline(5000);
-    while (!deadline.hasExpired()) {
-        const QDir tasks(QStringLiteral("/proc/%1/task").arg(pid));
-        bool allStopped = true;
-        for (const QString &task : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
-            QFile stat(tasks.filePath(task) + QStringLiteral("/stat"));
-            if (!stat.open(QIODevice::ReadOnly))
-                continue;
-            const QByteArray text = stat.readAll();
-            const int close = text.lastIndexOf(')');
-            allStopped
-                = allStopped && close > 0 && text.size() > close + 2 && text.at(close + 2) == 'T';
-        }
-        if (allStopped)
-            return true;
-        QThread::yieldCurrentThread();
-    }
-    return false;
-}
-
 void TestCorbaClient::stoppedPeerTimesOut()
 {
     QString error;
@@ -472,7 +449,7 @@ void TestCorbaClient::stoppedPeerTimesOut()
     const int timeout = 700;
     Orb::setCallTimeout(timeout);
     QCOMPARE(::kill(pid_t(peer->processId()), SIGSTOP), 0);
-    QVERIFY2(waitUntilStopped(pid_t(peer->processId())), "the peer did not stop");
+    QVERIFY2(LiveTest::waitUntilStopped(peer->processId()), "the peer did not stop");
     QElapsedTimer timer;
     timer.start();
     const Error::Kind kind = kindOf([&] { frozen.state(); });

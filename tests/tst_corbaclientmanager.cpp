@@ -7,7 +7,12 @@
 #include "orb.h"
 #include "portconnection.h"
 
+#include <QElapsedTimer>
 #include <QTest>
+
+#include <atomic>
+#include <csignal>
+#include <thread>
 
 using namespace Corba;
 
@@ -25,6 +30,7 @@ private slots:
     void connectsServicePorts();
     void editsConfiguration();
     void createsAndDeletesComponents();
+    void timeoutsArePerThread();
 
 private:
     RtPath path(const QString &name) const;
@@ -196,6 +202,90 @@ void TestCorbaClientManager::createsAndDeletesComponents()
     QCOMPARE(manager.components().size(), before);
     QVERIFY(!manager.profile().isEmpty());
     QVERIFY(!manager.configuration().isEmpty());
+}
+
+namespace {
+
+struct TimedCall
+{
+    Error::Kind kind = Error::Kind(-1);
+    qint64 elapsed = -1;
+};
+
+// One call of `manager` under `timeout` ms in a thread of its own (a plain std::thread, which
+// omniORB did not create).
+TimedCall timedCall(const ManagerProxy &manager, int timeout)
+{
+    const ThreadCallTimeout scope(timeout);
+    TimedCall result;
+    QElapsedTimer timer;
+    timer.start();
+    result.kind = kindOf([&] { manager.components(); });
+    result.elapsed = timer.elapsed();
+    return result;
+}
+
+} // namespace
+
+void TestCorbaClientManager::timeoutsArePerThread()
+{
+    QString error;
+    const quint16 frozenPort = LiveTest::freePort();
+    QProcess *frozen = m_live.startProcess(
+        QStringLiteral(RTMANAGER_PATH),
+        {"-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(frozenPort), "-o",
+         "naming.enable=NO", "-o", "corba.master_manager=", "-o",
+         "manager.components.precreate=ConsoleIn"},
+        "rtmanager ready", &error);
+    QVERIFY2(frozen, qPrintable(error));
+    const ManagerProxy stopped(QStringLiteral("corbaloc:iiop:127.0.0.1:%1/manager").arg(frozenPort),
+                               "frozen");
+    const ManagerProxy healthy(QStringLiteral("corbaloc:iiop:127.0.0.1:%1/manager").arg(m_port),
+                               "healthy");
+    QCOMPARE(stopped.components().size(), 1); // connection open before the stop
+    QCOMPARE(::kill(pid_t(frozen->processId()), SIGSTOP), 0);
+    QVERIFY2(LiveTest::waitUntilStopped(frozen->processId()), "the manager did not stop");
+
+    // Two threads wait on the stopped manager with different timeouts; the quicker one then uses
+    // the healthy manager while the other still waits. Each call keeps its own bound.
+    const int longTimeout = 2000;
+    const int shortTimeout = 400;
+    TimedCall slow;
+    TimedCall quick;
+    std::atomic<int> healthyCalls {0};
+    std::atomic<bool> healthyFailed {false};
+    std::atomic<bool> slowDone {false};
+    std::thread slowThread([&] {
+        slow = timedCall(stopped, longTimeout);
+        slowDone = true;
+    });
+    std::thread quickThread([&] {
+        quick = timedCall(stopped, shortTimeout);
+        const ThreadCallTimeout scope(shortTimeout);
+        for (int n = 0; n < 20 && !slowDone; ++n) {
+            try {
+                if (healthy.components().size() == 5 && !slowDone)
+                    ++healthyCalls;
+            } catch (const Error &) {
+                healthyFailed = true;
+            }
+        }
+    });
+    slowThread.join();
+    quickThread.join();
+    ::kill(pid_t(frozen->processId()), SIGCONT);
+
+    QCOMPARE(slow.kind, Error::Kind::Timeout);
+    QCOMPARE(quick.kind, Error::Kind::Timeout);
+    QVERIFY2(slow.elapsed >= longTimeout - 50 && slow.elapsed < longTimeout + 1000,
+             qPrintable(QString::number(slow.elapsed)));
+    QVERIFY2(quick.elapsed >= shortTimeout - 50 && quick.elapsed < shortTimeout + 1000,
+             qPrintable(QString::number(quick.elapsed)));
+    QVERIFY(!healthyFailed);
+    QVERIFY2(healthyCalls > 0, "no call to the healthy manager finished meanwhile");
+    // The process default is untouched by the threads' overrides.
+    QCOMPARE(Orb::callTimeout(), 3000);
+    QCOMPARE(stopped.components().size(), 1);
 }
 
 QTEST_GUILESS_MAIN(TestCorbaClientManager)

@@ -2,7 +2,10 @@
 #include "livesystem.h"
 
 #include <QDeadlineTimer>
+#include <QDir>
+#include <QFile>
 #include <QStandardPaths>
+#include <QThread>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -49,6 +52,28 @@ bool isListening(quint16 port)
         = ::connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof(address)) == 0;
     ::close(fd);
     return connected;
+}
+
+bool waitUntilStopped(qint64 pid, int timeoutMs)
+{
+    const QDeadlineTimer deadline(timeoutMs);
+    while (!deadline.hasExpired()) {
+        const QDir tasks(QStringLiteral("/proc/%1/task").arg(pid));
+        bool allStopped = true;
+        for (const QString &task : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+            QFile stat(tasks.filePath(task) + QStringLiteral("/stat"));
+            if (!stat.open(QIODevice::ReadOnly))
+                continue;
+            const QByteArray text = stat.readAll();
+            const int close = text.lastIndexOf(')');
+            allStopped
+                = allStopped && close > 0 && text.size() > close + 2 && text.at(close + 2) == 'T';
+        }
+        if (allStopped)
+            return true;
+        QThread::yieldCurrentThread();
+    }
+    return false;
 }
 
 LiveSystem::LiveSystem() = default;

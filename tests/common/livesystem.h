@@ -15,6 +15,8 @@ namespace LiveTest {
 quint16 freePort();
 /// True when something accepts TCP connections on 127.0.0.1:`port`.
 bool isListening(quint16 port);
+/// SIGSTOP takes effect asynchronously: waits (bounded) until every thread of `pid` is stopped.
+bool waitUntilStopped(qint64 pid, int timeoutMs = 5000);
 
 /**
  * Real peer processes for live tests: omniNames, the test peer (rtstudio_livepeer) or any other
