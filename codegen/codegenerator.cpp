@@ -34,8 +34,7 @@ QVariantMap overlay(QVariantMap context, const QVariantMap &item)
 CodeGenerator::CodeGenerator(const RtcProfile &profile, const IdlModel &idl)
     : m_profile(profile)
     , m_idl(idl)
-{
-}
+{ }
 
 bool CodeGenerator::isSafeRelativePath(const QString &path)
 {
@@ -65,14 +64,16 @@ std::optional<QList<GeneratedFile>> CodeGenerator::generate(const QList<TargetLa
         // The common files describe the whole project; the first language's context is as good
         // as any for them, since they use only language-neutral keys.
         if (i == 0)
-            renderSet(QStringLiteral("common"), *context, &files, &problems);
-        renderSet(targetLanguageKey(languages.at(i)), *context, &files, &problems);
+            renderSet(QStringLiteral("common"), *context, QString(), &files, &problems);
+        renderSet(targetLanguageKey(languages.at(i)), *context, QString(), &files, &problems);
     }
+    if (m_testComponent && languages.contains(TargetLanguage::Cpp) && !hasErrors(problems))
+        addTestComponent(languageNames, &files, &problems);
     if (languages.isEmpty())
         problems << generationError(QString(), QStringLiteral("no target language chosen"));
     if (!hasErrors(problems)) {
-        files << GeneratedFile{QStringLiteral("RTC.xml"), writeRtcXml(m_profile)};
-        addIdlCopies(&files, &problems);
+        files << GeneratedFile {QStringLiteral("RTC.xml"), writeRtcXml(m_profile)};
+        addIdlCopies(QString(), &files, &problems);
     }
     QSet<QString> seen;
     for (const GeneratedFile &file : std::as_const(files)) {
@@ -87,8 +88,43 @@ std::optional<QList<GeneratedFile>> CodeGenerator::generate(const QList<TargetLa
     return files;
 }
 
+RtcProfile CodeGenerator::testComponentProfile(const RtcProfile &profile)
+{
+    RtcProfile test = profile;
+    test.basicInfo.name += QStringLiteral("Test");
+    for (RtcDataPort &port : test.dataPorts) {
+        if (port.kind() == RtcPortType::DataIn)
+            port.portType = QStringLiteral("DataOutPort");
+        else if (port.kind() == RtcPortType::DataOut)
+            port.portType = QStringLiteral("DataInPort");
+    }
+    for (RtcServicePort &port : test.servicePorts) {
+        for (RtcServiceInterface &iface : port.interfaces)
+            iface.direction = iface.kind() == RtcDirection::Provided ? QStringLiteral("Required")
+                                                                     : QStringLiteral("Provided");
+    }
+    return test;
+}
+
+void CodeGenerator::addTestComponent(const QStringList &languageNames, QList<GeneratedFile> *files,
+                                     Diagnostics *diagnostics) const
+{
+    // The test component is a project of its own under test/, with its own copies of the IDL,
+    // so that it configures and builds without the component's tree.
+    const RtcProfile test = testComponentProfile(m_profile);
+    const QString prefix = QStringLiteral("test/");
+    std::optional<QVariantMap> context
+        = ContextBuilder(test, m_idl).build(TargetLanguage::Cpp, diagnostics);
+    if (!context)
+        return;
+    context->insert(QStringLiteral("languages"), languageNames);
+    renderSet(QStringLiteral("cpp"), *context, prefix, files, diagnostics);
+    addIdlCopies(prefix, files, diagnostics);
+}
+
 bool CodeGenerator::renderSet(const QString &key, const QVariantMap &context,
-                              QList<GeneratedFile> *files, Diagnostics *diagnostics) const
+                              const QString &pathPrefix, QList<GeneratedFile> *files,
+                              Diagnostics *diagnostics) const
 {
     QString error;
     const std::optional<TemplateSet> set = TemplateSet::load(key, m_userTemplates, &error);
@@ -98,33 +134,34 @@ bool CodeGenerator::renderSet(const QString &key, const QVariantMap &context,
     }
     bool ok = true;
     for (const TemplateEntry &entry : set->entries()) {
-        QVariantList items{QVariantMap()};
+        QVariantList items {QVariantMap()};
         if (!entry.forEach.isEmpty())
             items = context.value(entry.forEach).toList();
         for (const QVariant &item : std::as_const(items)) {
             const QVariantMap local = overlay(context, item.toMap());
             const std::optional<QString> path = renderTemplate(entry.outputPattern, local, &error);
-            const std::optional<QString> body =
-                path ? renderTemplate(set->templateText(entry.templateName), local, &error)
-                     : std::nullopt;
+            const std::optional<QString> body = path
+                ? renderTemplate(set->templateText(entry.templateName), local, &error)
+                : std::nullopt;
             const QString origin = set->templateOrigin(entry.templateName);
             if (!body) {
                 diagnostics->append(generationError(origin, error));
                 ok = false;
             } else if (!isSafeRelativePath(*path)) {
                 diagnostics->append(generationError(
-                    origin, QStringLiteral("output path '%1' would leave the project folder")
-                                .arg(*path)));
+                    origin,
+                    QStringLiteral("output path '%1' would leave the project folder").arg(*path)));
                 ok = false;
             } else {
-                files->append(GeneratedFile{*path, body->toUtf8()});
+                files->append(GeneratedFile {pathPrefix + *path, body->toUtf8()});
             }
         }
     }
     return ok;
 }
 
-bool CodeGenerator::addIdlCopies(QList<GeneratedFile> *files, Diagnostics *diagnostics) const
+bool CodeGenerator::addIdlCopies(const QString &pathPrefix, QList<GeneratedFile> *files,
+                                 Diagnostics *diagnostics) const
 {
     const ContextBuilder builder(m_profile, m_idl);
     bool ok = true;
@@ -136,8 +173,8 @@ bool CodeGenerator::addIdlCopies(QList<GeneratedFile> *files, Diagnostics *diagn
             ok = false;
             continue;
         }
-        files->append(GeneratedFile{QStringLiteral("idl/") + QFileInfo(source).fileName(),
-                                    file.readAll()});
+        files->append(GeneratedFile {
+            pathPrefix + QStringLiteral("idl/") + QFileInfo(source).fileName(), file.readAll()});
     }
     return ok;
 }

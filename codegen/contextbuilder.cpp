@@ -17,11 +17,11 @@ namespace {
 // only kept from files.
 const QList<RtcAction> &editableActions()
 {
-    static const QList<RtcAction> list = {
-        RtcAction::OnInitialize, RtcAction::OnFinalize,    RtcAction::OnStartup,
-        RtcAction::OnShutdown,   RtcAction::OnActivated,   RtcAction::OnDeactivated,
-        RtcAction::OnAborting,   RtcAction::OnError,       RtcAction::OnReset,
-        RtcAction::OnExecute,    RtcAction::OnStateUpdate, RtcAction::OnRateChanged};
+    static const QList<RtcAction> list
+        = {RtcAction::OnInitialize, RtcAction::OnFinalize,    RtcAction::OnStartup,
+           RtcAction::OnShutdown,   RtcAction::OnActivated,   RtcAction::OnDeactivated,
+           RtcAction::OnAborting,   RtcAction::OnError,       RtcAction::OnReset,
+           RtcAction::OnExecute,    RtcAction::OnStateUpdate, RtcAction::OnRateChanged};
     return list;
 }
 
@@ -30,6 +30,30 @@ QString commentText(const std::optional<QString> &text)
 {
     QString line = text.value_or(QString()).simplified();
     return line.replace(QLatin1String("*/"), QLatin1String("* /"));
+}
+
+QStringList dataPortDocLines(const RtcDataPort &port)
+{
+    QStringList lines;
+    if (!port.doc)
+        return lines;
+    appendDocLine(lines, QStringLiteral("- Type"), port.doc->type);
+    appendDocLine(lines, QStringLiteral("- Number"), port.doc->number);
+    appendDocLine(lines, QStringLiteral("- Semantics"), port.doc->semantics);
+    appendDocLine(lines, QStringLiteral("- Unit"), port.doc->unit);
+    appendDocLine(lines, QStringLiteral("- Frequency"), port.doc->occerrence);
+    appendDocLine(lines, QStringLiteral("- Operation Cycle"), port.doc->operation);
+    return lines;
+}
+
+QStringList configurationDocLines(const RtcConfiguration &config)
+{
+    QStringList lines;
+    const RtcConfigurationDoc doc = config.doc.value_or(RtcConfigurationDoc());
+    appendDocLine(lines, QStringLiteral("- Unit"),
+                  config.unit && !config.unit->isEmpty() ? config.unit : doc.unit);
+    appendDocLine(lines, QStringLiteral("- Range"), doc.range);
+    return lines;
 }
 
 QString dataVariable(const RtcDataPort &port)
@@ -45,8 +69,21 @@ QString configVariable(const RtcConfiguration &config)
                                                                   : config.name;
 }
 
+/// The element type of `vector<T>` / `std::vector<T>` configuration types, or nothing.
+std::optional<QString> vectorElementType(const QString &type)
+{
+    static const QRegularExpression vector(QStringLiteral("^(?:std::)?vector\\s*<\\s*(.+?)\\s*>$"));
+    const QRegularExpressionMatch match = vector.match(type.trimmed());
+    if (!match.hasMatch())
+        return std::nullopt;
+    return match.captured(1);
+}
+
 QString cxxConfigType(const QString &type)
 {
+    // RTC Builder users write `vector<double>`; OpenRTM binds std::vector parameters.
+    if (const std::optional<QString> element = vectorElementType(type))
+        return QStringLiteral("std::vector<%1>").arg(cxxConfigType(*element));
     return type == QLatin1String("string") ? QStringLiteral("std::string") : type;
 }
 
@@ -63,6 +100,10 @@ bool isFloatType(const QString &type)
 
 QString pythonConfigInit(const QString &type)
 {
+    // OpenRTM_aist.stringTo converts a list parameter element by element to the type of the
+    // first element of the initial value: `[[0.0]]` binds a list of floats.
+    if (const std::optional<QString> element = vectorElementType(type))
+        return QStringLiteral("[%1]").arg(pythonConfigInit(*element));
     if (isIntegerType(type))
         return QStringLiteral("[0]");
     if (isFloatType(type))
@@ -72,12 +113,12 @@ QString pythonConfigInit(const QString &type)
 
 QString javaConfigHolder(const QString &type)
 {
-    static const QHash<QString, QString> holders = {
-        {QStringLiteral("short"), QStringLiteral("ShortHolder")},
-        {QStringLiteral("int"), QStringLiteral("IntegerHolder")},
-        {QStringLiteral("long"), QStringLiteral("LongHolder")},
-        {QStringLiteral("float"), QStringLiteral("FloatHolder")},
-        {QStringLiteral("double"), QStringLiteral("DoubleHolder")}};
+    static const QHash<QString, QString> holders
+        = {{QStringLiteral("short"), QStringLiteral("ShortHolder")},
+           {QStringLiteral("int"), QStringLiteral("IntegerHolder")},
+           {QStringLiteral("long"), QStringLiteral("LongHolder")},
+           {QStringLiteral("float"), QStringLiteral("FloatHolder")},
+           {QStringLiteral("double"), QStringLiteral("DoubleHolder")}};
     return holders.value(type, QStringLiteral("StringHolder"));
 }
 
@@ -105,6 +146,16 @@ QString javaStructInit(const IdlModel &idl, const QString &scopedName, int depth
     for (const IdlMember &member : it->members)
         arguments << javaMemberInit(idl, member.type, depth);
     return QStringLiteral("new %1(%2)").arg(javaName, arguments.join(QStringLiteral(", ")));
+}
+
+QStringList componentDocLines(const RtcBasicDoc &doc)
+{
+    QStringList lines;
+    appendDocLine(lines, QString(), doc.description);
+    appendDocLine(lines, QStringLiteral("In/Out"), doc.inout);
+    appendDocLine(lines, QStringLiteral("Algorithm"), doc.algorithm);
+    appendDocLine(lines, QStringLiteral("Reference"), doc.reference);
+    return lines;
 }
 
 QString firstModule(const QString &scopedName)
@@ -142,6 +193,13 @@ Diagnostic nameError(const QString &what, const QString &name, TargetLanguage la
 }
 
 } // namespace
+
+void appendDocLine(QStringList &lines, const QString &label, const std::optional<QString> &text)
+{
+    const QString line = commentText(text);
+    if (!line.isEmpty())
+        lines << (label.isEmpty() ? line : label + QStringLiteral(": ") + line);
+}
 
 QString escapeStringLiteral(const QString &text)
 {
@@ -188,8 +246,7 @@ QVariantList markFirstLast(QVariantList items)
 ContextBuilder::ContextBuilder(const RtcProfile &profile, const IdlModel &idl)
     : m_profile(profile)
     , m_idl(idl)
-{
-}
+{ }
 
 std::optional<QVariantMap> ContextBuilder::build(TargetLanguage language,
                                                  Diagnostics *diagnostics) const
@@ -225,28 +282,29 @@ QVariantMap ContextBuilder::basics(TargetLanguage language) const
 {
     const RtcBasicInfo &info = m_profile.basicInfo;
     const RtcBasicDoc doc = info.doc.value_or(RtcBasicDoc());
-    return {{QStringLiteral("name"), info.name},
-            {QStringLiteral("nameUpper"), info.name.toUpper()},
-            {QStringLiteral("nameLower"), info.name.toLower()},
-            {QStringLiteral("componentName"), info.name},
-            {QStringLiteral("description"), commentText(info.description)},
-            {QStringLiteral("version"), info.version},
-            {QStringLiteral("vendor"), info.vendor},
-            {QStringLiteral("category"), info.category},
-            {QStringLiteral("componentType"), info.componentType},
-            {QStringLiteral("activityType"), info.activityType},
-            {QStringLiteral("componentKind"), info.componentKind},
-            {QStringLiteral("maxInstances"), info.maxInstances.value_or(QStringLiteral("1"))},
-            {QStringLiteral("executionType"), info.executionType},
-            {QStringLiteral("executionRate"), info.executionRate.value_or(QStringLiteral("1000.0"))},
-            {QStringLiteral("languageKind"), targetLanguageProfileName(language)},
-            {QStringLiteral("langType"), language == TargetLanguage::Python
-                                             ? QStringLiteral("SCRIPT")
-                                             : QStringLiteral("compile")},
-            {QStringLiteral("cmakeVersion"), cmakeVersion(info.version)},
-            {QStringLiteral("creator"), commentText(doc.creator)},
-            {QStringLiteral("license"), commentText(doc.license)},
-            {QStringLiteral("updateDate"), info.updateDate}};
+    return {
+        {QStringLiteral("name"), info.name},
+        {QStringLiteral("nameUpper"), info.name.toUpper()},
+        {QStringLiteral("nameLower"), info.name.toLower()},
+        {QStringLiteral("componentName"), info.name},
+        {QStringLiteral("description"), commentText(info.description)},
+        {QStringLiteral("version"), info.version},
+        {QStringLiteral("vendor"), info.vendor},
+        {QStringLiteral("category"), info.category},
+        {QStringLiteral("componentType"), info.componentType},
+        {QStringLiteral("activityType"), info.activityType},
+        {QStringLiteral("componentKind"), info.componentKind},
+        {QStringLiteral("maxInstances"), info.maxInstances.value_or(QStringLiteral("1"))},
+        {QStringLiteral("executionType"), info.executionType},
+        {QStringLiteral("executionRate"), info.executionRate.value_or(QStringLiteral("1000.0"))},
+        {QStringLiteral("languageKind"), targetLanguageProfileName(language)},
+        {QStringLiteral("langType"),
+         language == TargetLanguage::Python ? QStringLiteral("SCRIPT") : QStringLiteral("compile")},
+        {QStringLiteral("cmakeVersion"), cmakeVersion(info.version)},
+        {QStringLiteral("creator"), commentText(doc.creator)},
+        {QStringLiteral("docLines"), componentDocLines(doc)},
+        {QStringLiteral("license"), commentText(doc.license)},
+        {QStringLiteral("updateDate"), info.updateDate}};
 }
 
 QVariantList ContextBuilder::moduleSpec(TargetLanguage language) const
@@ -263,9 +321,9 @@ QVariantList ContextBuilder::moduleSpec(TargetLanguage language) const
         specLine(QStringLiteral("kind"), info.componentKind),
         specLine(QStringLiteral("max_instance"), info.maxInstances.value_or(QStringLiteral("1"))),
         specLine(QStringLiteral("language"), targetLanguageProfileName(language)),
-        specLine(QStringLiteral("lang_type"), language == TargetLanguage::Python
-                                                  ? QStringLiteral("SCRIPT")
-                                                  : QStringLiteral("compile"))};
+        specLine(QStringLiteral("lang_type"),
+                 language == TargetLanguage::Python ? QStringLiteral("SCRIPT")
+                                                    : QStringLiteral("compile"))};
     // All defaults first, then widgets, constraints and types, as OpenRTM's tools read them.
     for (const RtcConfiguration &c : m_profile.configurations)
         lines << specLine(QStringLiteral("conf.default.") + c.name, c.defaultValue);
@@ -288,27 +346,30 @@ QVariantList ContextBuilder::actions() const
     QVariantList list;
     for (const RtcAction action : editableActions()) {
         const std::optional<RtcActionStatus> &status = m_profile.actions[action];
-        const bool implemented =
-            action == RtcAction::OnInitialize || (status && status->isImplemented());
-        const std::optional<QString> description =
-            status && status->doc ? status->doc->description : std::nullopt;
+        const bool implemented
+            = action == RtcAction::OnInitialize || (status && status->isImplemented());
+        const RtcActionDoc doc = status && status->doc ? *status->doc : RtcActionDoc();
+        const std::optional<QString> description = doc.description;
+        QStringList docLines;
+        appendDocLine(docLines, QStringLiteral("@pre"), doc.preCondition);
+        appendDocLine(docLines, QStringLiteral("@post"), doc.postCondition);
         // onInitialize and onFinalize are the only callbacks without an execution context id.
         const bool withEc = action != RtcAction::OnInitialize && action != RtcAction::OnFinalize;
-        list << QVariantMap{{QStringLiteral("name"), rtcActionKey(action)},
-                            {QStringLiteral("upperName"), rtcActionElementName(action)},
-                            {QStringLiteral("implemented"), implemented},
-                            {QStringLiteral("isInitialize"), action == RtcAction::OnInitialize},
-                            {QStringLiteral("cxxParameters"),
-                             withEc ? QStringLiteral("RTC::UniqueId ec_id") : QString()},
-                            {QStringLiteral("cxxDefinitionParameters"),
-                             withEc ? QStringLiteral("RTC::UniqueId /*ec_id*/") : QString()},
-                            {QStringLiteral("pythonParameters"),
-                             withEc ? QStringLiteral("self, ec_id") : QStringLiteral("self")},
-                            {QStringLiteral("javaParameters"),
-                             withEc ? QStringLiteral("int ec_id") : QString()},
-                            {QStringLiteral("javaArguments"),
-                             withEc ? QStringLiteral("ec_id") : QString()},
-                            {QStringLiteral("description"), commentText(description)}};
+        list << QVariantMap {
+            {QStringLiteral("name"), rtcActionKey(action)},
+            {QStringLiteral("upperName"), rtcActionElementName(action)},
+            {QStringLiteral("implemented"), implemented},
+            {QStringLiteral("isInitialize"), action == RtcAction::OnInitialize},
+            {QStringLiteral("cxxParameters"),
+             withEc ? QStringLiteral("RTC::UniqueId ec_id") : QString()},
+            {QStringLiteral("cxxDefinitionParameters"),
+             withEc ? QStringLiteral("RTC::UniqueId /*ec_id*/") : QString()},
+            {QStringLiteral("pythonParameters"),
+             withEc ? QStringLiteral("self, ec_id") : QStringLiteral("self")},
+            {QStringLiteral("javaParameters"), withEc ? QStringLiteral("int ec_id") : QString()},
+            {QStringLiteral("javaArguments"), withEc ? QStringLiteral("ec_id") : QString()},
+            {QStringLiteral("description"), commentText(description)},
+            {QStringLiteral("docLines"), docLines}};
     }
     return list;
 }
@@ -328,17 +389,17 @@ QVariantList ContextBuilder::dataPorts(TargetLanguage language, RtcPortType kind
             native = javaTypeName(m_idl, IdlType::named(port.type));
             init = javaStructInit(m_idl, port.type, 0);
         }
-        const std::optional<QString> description =
-            port.doc ? port.doc->description : std::nullopt;
-        list << QVariantMap{{QStringLiteral("name"), port.name},
-                            {QStringLiteral("literalName"), escapeStringLiteral(port.name)},
-                            {QStringLiteral("type"), port.type},
-                            {QStringLiteral("variable"), dataVariable(port)},
-                            {QStringLiteral("nativeType"), native},
-                            {QStringLiteral("init"), init},
-                            {QStringLiteral("module"), firstModule(port.type)},
-                            {QStringLiteral("idlFile"), port.idlFile.value_or(QString())},
-                            {QStringLiteral("description"), commentText(description)}};
+        const std::optional<QString> description = port.doc ? port.doc->description : std::nullopt;
+        list << QVariantMap {{QStringLiteral("name"), port.name},
+                             {QStringLiteral("literalName"), escapeStringLiteral(port.name)},
+                             {QStringLiteral("type"), port.type},
+                             {QStringLiteral("variable"), dataVariable(port)},
+                             {QStringLiteral("nativeType"), native},
+                             {QStringLiteral("init"), init},
+                             {QStringLiteral("module"), firstModule(port.type)},
+                             {QStringLiteral("idlFile"), port.idlFile.value_or(QString())},
+                             {QStringLiteral("docLines"), dataPortDocLines(port)},
+                             {QStringLiteral("description"), commentText(description)}};
     }
     return markFirstLast(list);
 }
@@ -351,22 +412,23 @@ QVariantList ContextBuilder::configurations(TargetLanguage language) const
             : language == TargetLanguage::Java                 ? javaConfigHolder(c.type)
                                                                : c.type;
         const std::optional<QString> description = c.doc ? c.doc->description : std::nullopt;
-        list << QVariantMap{{QStringLiteral("name"), c.name},
-                            {QStringLiteral("literalName"), escapeStringLiteral(c.name)},
-                            {QStringLiteral("type"), c.type},
-                            {QStringLiteral("nativeType"), native},
-                            {QStringLiteral("variable"), configVariable(c)},
-                            {QStringLiteral("defaultValue"), c.defaultValue},
-                            {QStringLiteral("literalDefault"), escapeStringLiteral(c.defaultValue)},
-                            {QStringLiteral("init"), pythonConfigInit(c.type)},
-                            {QStringLiteral("holder"), javaConfigHolder(c.type)},
-                            {QStringLiteral("widget"), c.widget().value_or(QStringLiteral("text"))},
-                            {QStringLiteral("constraint"), constraintToString(c.constraint)},
-                            {QStringLiteral("hasConstraint"),
-                             !constraintToString(c.constraint).isEmpty()},
-                            {QStringLiteral("hasWidget"), c.widget().has_value()},
-                            {QStringLiteral("unit"), commentText(c.unit)},
-                            {QStringLiteral("description"), commentText(description)}};
+        list << QVariantMap {
+            {QStringLiteral("name"), c.name},
+            {QStringLiteral("literalName"), escapeStringLiteral(c.name)},
+            {QStringLiteral("type"), c.type},
+            {QStringLiteral("nativeType"), native},
+            {QStringLiteral("variable"), configVariable(c)},
+            {QStringLiteral("defaultValue"), c.defaultValue},
+            {QStringLiteral("literalDefault"), escapeStringLiteral(c.defaultValue)},
+            {QStringLiteral("init"), pythonConfigInit(c.type)},
+            {QStringLiteral("holder"), javaConfigHolder(c.type)},
+            {QStringLiteral("widget"), c.widget().value_or(QStringLiteral("text"))},
+            {QStringLiteral("constraint"), constraintToString(c.constraint)},
+            {QStringLiteral("hasConstraint"), !constraintToString(c.constraint).isEmpty()},
+            {QStringLiteral("hasWidget"), c.widget().has_value()},
+            {QStringLiteral("unit"), commentText(c.unit)},
+            {QStringLiteral("docLines"), configurationDocLines(c)},
+            {QStringLiteral("description"), commentText(description)}};
     }
     return markFirstLast(list);
 }
@@ -382,8 +444,8 @@ bool ContextBuilder::checkNames(TargetLanguage language, Diagnostics *diagnostic
             diagnostics->append(nameError(what, name, language));
     };
     if (!isValidIdentifier(language, m_profile.basicInfo.name))
-        diagnostics->append(nameError(QStringLiteral("Component name"), m_profile.basicInfo.name,
-                                      language));
+        diagnostics->append(
+            nameError(QStringLiteral("Component name"), m_profile.basicInfo.name, language));
     for (const RtcDataPort &port : m_profile.dataPorts)
         check(QStringLiteral("Data port variable"), dataVariable(port));
     for (const RtcServicePort &port : m_profile.servicePorts) {

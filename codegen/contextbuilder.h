@@ -22,7 +22,9 @@ namespace Codegen {
  *   `activityType`, `componentKind`, `maxInstances`, `executionType`, `executionRate`,
  *   `languageKind`, `langType`, `cmakeVersion`, `creator`, `license`, `updateDate`
  * - `moduleSpec` {key, value, literalKey, literalValue}: the RTC module specification, in order
- * - `actions` {name, upperName, implemented (bool), description}: the 12 editable callbacks
+ * - `actions` {name, upperName, implemented (bool), description, docLines}: the 12 editable
+ *   callbacks; `docLines` (strings) are the documentation comment lines of components, ports,
+ *   interfaces, callbacks and configuration parameters (only the fields that are set)
  * - `inPorts`, `outPorts` {name, type, variable, nativeType, init, module, idlFile, description}
  * - `servicePorts` {name, variable, provided, required}; `providedInterfaces`,
  *   `requiredInterfaces` {portName, name, instanceName, variable, type, nativeType, className,
@@ -68,6 +70,10 @@ private:
     const Profile::RtcProfile &m_profile;
     const IdlModel &m_idl;
 };
+
+/// Appends `label: text` (just `text` when `label` is empty) to `lines` when `text` is not blank,
+/// as one line that is safe inside `//`, `#` and `/* */` comments.
+void appendDocLine(QStringList &lines, const QString &label, const std::optional<QString> &text);
 
 /// `text` as the inside of a C, Java or Python string literal (`"` `\` and control characters
 /// escaped).

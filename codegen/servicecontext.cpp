@@ -28,8 +28,7 @@ QString stripScope(QString type)
 const IdlInterface *findInterface(const IdlModel &idl, const QString &profileType)
 {
     const QString type = stripScope(profileType);
-    if (const auto it = idl.interfaces.constFind(type);
-        it != idl.interfaces.cend() && it->defined)
+    if (const auto it = idl.interfaces.constFind(type); it != idl.interfaces.cend() && it->defined)
         return &*it;
     const IdlInterface *found = nullptr;
     for (const IdlInterface &candidate : idl.interfaces) {
@@ -79,6 +78,21 @@ QString interfaceVariable(const RtcServiceInterface &iface)
     return iface.variableName && !iface.variableName->isEmpty() ? *iface.variableName : iface.name;
 }
 
+/// The interface's documentation as comment lines (one line per field that is set).
+QStringList interfaceDocLines(const RtcServiceInterface &iface)
+{
+    QStringList lines;
+    if (!iface.doc)
+        return lines;
+    appendDocLine(lines, QString(), iface.doc->description);
+    appendDocLine(lines, QStringLiteral("- Argument"), iface.doc->docArgument);
+    appendDocLine(lines, QStringLiteral("- Return"), iface.doc->docReturn);
+    appendDocLine(lines, QStringLiteral("- Exception"), iface.doc->docException);
+    appendDocLine(lines, QStringLiteral("- PreCondition"), iface.doc->docPreCondition);
+    appendDocLine(lines, QStringLiteral("- PostCondition"), iface.doc->docPostCondition);
+    return lines;
+}
+
 /// `string echo(in string msg)`: the IDL declaration, for comments above generated bodies.
 QString idlSignature(const IdlOperation &op)
 {
@@ -86,8 +100,8 @@ QString idlSignature(const IdlOperation &op)
     for (const IdlParameter &p : op.parameters)
         params << IdlParameter::modeName(p.mode) + QLatin1Char(' ') + p.type.toString()
                 + QLatin1Char(' ') + p.name;
-    return QStringLiteral("%1 %2(%3)").arg(op.returnType.toString(), op.name,
-                                            params.join(QStringLiteral(", ")));
+    return QStringLiteral("%1 %2(%3)")
+        .arg(op.returnType.toString(), op.name, params.join(QStringLiteral(", ")));
 }
 
 /// An operation a servant implements; attributes give `_get_x`/`_set_x` in Python.
@@ -116,17 +130,18 @@ QVariantMap operationContext(const IdlModel &idl, const ServedOperation &served,
             pythonIn << name;
         if (p.mode != IdlParameter::Mode::In)
             pythonOut << name;
-        params << QVariantMap{{QStringLiteral("name"), name},
-                              {QStringLiteral("type"), type},
-                              {QStringLiteral("mode"), IdlParameter::modeName(p.mode)}};
+        params << QVariantMap {{QStringLiteral("name"), name},
+                               {QStringLiteral("type"), type},
+                               {QStringLiteral("mode"), IdlParameter::modeName(p.mode)}};
     }
     QString returnType;
     QString returnStatement;
     if (language == TargetLanguage::Java) {
-        returnType = op.returnType.isVoid() ? QStringLiteral("void")
-                                            : javaTypeName(idl, op.returnType);
+        returnType
+            = op.returnType.isVoid() ? QStringLiteral("void") : javaTypeName(idl, op.returnType);
         if (!op.returnType.isVoid())
-            returnStatement = QStringLiteral("return %1;").arg(javaDefaultValue(idl, op.returnType));
+            returnStatement
+                = QStringLiteral("return %1;").arg(javaDefaultValue(idl, op.returnType));
     } else {
         returnType = cxxReturnType(idl, op.returnType);
         returnStatement = cxxReturnStatement(idl, op.returnType);
@@ -139,7 +154,7 @@ QVariantMap operationContext(const IdlModel &idl, const ServedOperation &served,
             {QStringLiteral("hasReturnStatement"), !returnStatement.isEmpty()},
             {QStringLiteral("parameters"), declared.join(QStringLiteral(", "))},
             {QStringLiteral("pythonParameters"),
-             (QStringList{QStringLiteral("self")} + pythonIn).join(QStringLiteral(", "))},
+             (QStringList {QStringLiteral("self")} + pythonIn).join(QStringLiteral(", "))},
             {QStringLiteral("pythonResults"), pythonOut.join(QStringLiteral(", "))},
             {QStringLiteral("hasPythonResults"), !pythonOut.isEmpty()},
             {QStringLiteral("params"), markFirstLast(params)}};
@@ -153,7 +168,7 @@ QList<ServedOperation> servedOperations(const IdlModel &idl, const QString &scop
         IdlOperation getter;
         getter.name = attribute.name;
         getter.returnType = attribute.type;
-        operations << ServedOperation{getter, QStringLiteral("_get_") + attribute.name};
+        operations << ServedOperation {getter, QStringLiteral("_get_") + attribute.name};
         if (attribute.readonly)
             continue;
         IdlOperation setter;
@@ -163,10 +178,10 @@ QList<ServedOperation> servedOperations(const IdlModel &idl, const QString &scop
         value.type = attribute.type;
         value.name = QStringLiteral("value");
         setter.parameters << value;
-        operations << ServedOperation{setter, QStringLiteral("_set_") + attribute.name};
+        operations << ServedOperation {setter, QStringLiteral("_set_") + attribute.name};
     }
     for (const IdlOperation &op : idl.allOperations(scopedName))
-        operations << ServedOperation{op, op.name};
+        operations << ServedOperation {op, op.name};
     return operations;
 }
 
@@ -231,17 +246,24 @@ void appendUnique(QStringList &list, const QString &value)
 
 bool ContextBuilder::isStandardIdl(const QString &fileName)
 {
-    static const QSet<QString> names = {
-        QStringLiteral("BasicDataType.idl"), QStringLiteral("ExtendedDataTypes.idl"),
-        QStringLiteral("InterfaceDataTypes.idl"), QStringLiteral("CameraCommonInterface.idl"),
-        QStringLiteral("ManipulatorCommonInterface_Common.idl"),
-        QStringLiteral("ManipulatorCommonInterface_DataTypes.idl"),
-        QStringLiteral("ManipulatorCommonInterface_Middle.idl"), QStringLiteral("RTC.idl"),
-        QStringLiteral("SDOPackage.idl"), QStringLiteral("OpenRTM.idl"),
-        QStringLiteral("DataPort.idl"), QStringLiteral("DataPort_OpenRTM.idl"),
-        QStringLiteral("Manager.idl"), QStringLiteral("ComponentObserver.idl"),
-        QStringLiteral("ExtendedFsmService.idl"), QStringLiteral("Logger.idl"),
-        QStringLiteral("SharedMemory.idl"), QStringLiteral("IORProfile.idl")};
+    static const QSet<QString> names = {QStringLiteral("BasicDataType.idl"),
+                                        QStringLiteral("ExtendedDataTypes.idl"),
+                                        QStringLiteral("InterfaceDataTypes.idl"),
+                                        QStringLiteral("CameraCommonInterface.idl"),
+                                        QStringLiteral("ManipulatorCommonInterface_Common.idl"),
+                                        QStringLiteral("ManipulatorCommonInterface_DataTypes.idl"),
+                                        QStringLiteral("ManipulatorCommonInterface_Middle.idl"),
+                                        QStringLiteral("RTC.idl"),
+                                        QStringLiteral("SDOPackage.idl"),
+                                        QStringLiteral("OpenRTM.idl"),
+                                        QStringLiteral("DataPort.idl"),
+                                        QStringLiteral("DataPort_OpenRTM.idl"),
+                                        QStringLiteral("Manager.idl"),
+                                        QStringLiteral("ComponentObserver.idl"),
+                                        QStringLiteral("ExtendedFsmService.idl"),
+                                        QStringLiteral("Logger.idl"),
+                                        QStringLiteral("SharedMemory.idl"),
+                                        QStringLiteral("IORProfile.idl")};
     return names.contains(QFileInfo(fileName).fileName());
 }
 
@@ -270,9 +292,10 @@ bool ContextBuilder::addServices(TargetLanguage language, QVariantMap &context,
     QStringList includes, pythonModules, seenTypes;
     for (const RtcDataPort &port : m_profile.dataPorts) {
         const QString file = declaringFile(m_idl, port.type);
-        appendUnique(includes, cxxStubInclude(file.isEmpty() ? port.idlFile.value_or(
-                                                   QStringLiteral("BasicDataType.idl"))
-                                                             : file));
+        appendUnique(includes,
+                     cxxStubInclude(file.isEmpty()
+                                        ? port.idlFile.value_or(QStringLiteral("BasicDataType.idl"))
+                                        : file));
         appendUnique(pythonModules, stripScope(port.type).section(QLatin1String("::"), 0, 0));
     }
     for (const RtcServicePort &port : m_profile.servicePorts) {
@@ -298,6 +321,7 @@ bool ContextBuilder::addServices(TargetLanguage language, QVariantMap &context,
                                                 ? *iface.instanceName
                                                 : iface.name));
             item.insert(QStringLiteral("variable"), interfaceVariable(iface));
+            item.insert(QStringLiteral("docLines"), interfaceDocLines(iface));
             item.insert(QStringLiteral("provided"), isProvided);
             item.insert(QStringLiteral("required"), !isProvided);
             portInterfaces << item;
@@ -319,32 +343,40 @@ bool ContextBuilder::addServices(TargetLanguage language, QVariantMap &context,
                 return g.toMap().value(QStringLiteral("idlBaseName")) == base;
             });
             if (group == idlGroups.end()) {
-                idlGroups << QVariantMap{{QStringLiteral("idlBaseName"), base},
-                                         {QStringLiteral("idlGuard"), base.toUpper()},
-                                         {QStringLiteral("idlFileName"), item.value(QStringLiteral("idlFileName"))},
-                                         {QStringLiteral("interfaces"), QVariantList{}}};
+                idlGroups << QVariantMap {
+                    {QStringLiteral("idlBaseName"), base},
+                    {QStringLiteral("idlGuard"), base.toUpper()},
+                    {QStringLiteral("idlFileName"), item.value(QStringLiteral("idlFileName"))},
+                    {QStringLiteral("interfaces"), QVariantList {}}};
                 group = idlGroups.end() - 1;
             }
             QVariantMap g = group->toMap();
-            g[QStringLiteral("interfaces")] = g.value(QStringLiteral("interfaces")).toList() << item;
+            g[QStringLiteral("interfaces")] = g.value(QStringLiteral("interfaces")).toList()
+                << item;
             *group = g;
         }
-        ports << QVariantMap{{QStringLiteral("name"), port.name},
-                             {QStringLiteral("literalName"), escapeStringLiteral(port.name)},
-                             {QStringLiteral("interfaces"), markFirstLast(portInterfaces)}};
+        const RtcServicePortDoc portDoc = port.doc.value_or(RtcServicePortDoc());
+        QStringList portDocLines;
+        appendDocLine(portDocLines, QString(), portDoc.description);
+        appendDocLine(portDocLines, QStringLiteral("Interface"), portDoc.ifdescription);
+        ports << QVariantMap {{QStringLiteral("docLines"), portDocLines},
+                              {QStringLiteral("name"), port.name},
+                              {QStringLiteral("literalName"), escapeStringLiteral(port.name)},
+                              {QStringLiteral("interfaces"), markFirstLast(portInterfaces)}};
     }
     if (hasErrors(*diagnostics))
         return false;
     QVariantList providedIncludes;
     for (const QVariant &g : std::as_const(idlGroups)) {
         QVariantMap map = g.toMap();
-        map[QStringLiteral("interfaces")] = markFirstLast(map.value(QStringLiteral("interfaces")).toList());
+        map[QStringLiteral("interfaces")]
+            = markFirstLast(map.value(QStringLiteral("interfaces")).toList());
         providedIncludes << map;
     }
     QVariantList projectIdls;
     for (const QString &file : projectIdlFiles())
-        projectIdls << QVariantMap{{QStringLiteral("fileName"), QFileInfo(file).fileName()},
-                                   {QStringLiteral("baseName"), baseNameOf(file)}};
+        projectIdls << QVariantMap {{QStringLiteral("fileName"), QFileInfo(file).fileName()},
+                                    {QStringLiteral("baseName"), baseNameOf(file)}};
     pythonModules.removeAll(QString());
     pythonModules.sort();
     context.insert(QStringLiteral("servicePorts"), markFirstLast(ports));

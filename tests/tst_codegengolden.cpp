@@ -8,165 +8,326 @@
 #include <QDirIterator>
 #include <QFile>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <map>
+#include <memory>
+
 using namespace Codegen;
 using namespace Profile;
 
-// The generated project of the fixture component, byte for byte, and checks with the real
-// tools: Python's compiler, and omniidl + the C++ compiler for the servant code.
-// Set RTSTUDIO_UPDATE_GOLDEN=1 to rewrite the golden files after an intended change.
+// The generated projects of the fixture components (tests/data/codegen/<Name>.xml), byte for
+// byte against tests/data/codegen/golden/<Name>/, and checks with the real tools: Python's
+// compiler on every .py file, omniidl + the C++ compiler on the servants, and CMake configuring
+// every generated C++ tree against a stand-in OpenRTMConfig.cmake.
+//
+// To refresh the golden files after an intended change, run the test once with
+// RTSTUDIO_UPDATE_GOLDEN=1 in the environment and review the diff; the test never rewrites
+// them otherwise (and fails on any difference).
 class TestCodegenGolden : public QObject
 {
     Q_OBJECT
 
 private slots:
     void initTestCase();
+    void matchesGoldenFiles_data();
     void matchesGoldenFiles();
+    void deterministic_data();
     void deterministic();
+    void pythonCompiles_data();
     void pythonCompiles();
-    void servantCompilesAgainstOmniidlStubs();
+    void servantsCompileAgainstOmniidlSkeletons_data();
+    void servantsCompileAgainstOmniidlSkeletons();
+    void cmakeConfigures_data();
+    void cmakeConfigures();
 
 private:
-    bool run(const QString &program, const QStringList &arguments, const QString &dir,
-             QString *output);
-    QList<GeneratedFile> m_files;
-    QTemporaryDir m_project;
+    void addFixtureRows();
+    QString projectDir(const QString &fixture) const;
+    void compileServants(const QString &root, const QString &component, int *compiled);
+    std::map<QString, QList<GeneratedFile>> m_files;
+    std::map<QString, std::unique_ptr<QTemporaryDir>> m_projects;
 };
 
-static QString data(const QString &relative)
+namespace {
+
+// Each fixture covers one part of the generator: every kind of parameter mapping (SampleComp),
+// data ports of many types, services from a multi-module IDL with inheritance, every
+// configuration widget and constraint kind, and every documentation field.
+const QStringList &fixtures()
+{
+    static const QStringList names = {QStringLiteral("SampleComp"), QStringLiteral("DataPortsComp"),
+                                      QStringLiteral("ServicesComp"), QStringLiteral("ConfigComp"),
+                                      QStringLiteral("DocumentedComp")};
+    return names;
+}
+
+QString data(const QString &relative)
 {
     return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/") + relative;
 }
 
-static std::optional<QList<GeneratedFile>> generateFixture()
+std::optional<QList<GeneratedFile>> generateFixture(const QString &fixture, QString *problems)
 {
     Diagnostics diagnostics;
-    const std::optional<LoadedProfile> loaded = loadProfileFile(data("SampleComp.xml"), &diagnostics);
-    if (!loaded || !loaded->rtc)
-        return std::nullopt;
-    IdlTypeLibrary library({QStringLiteral(RTSTUDIO_IDL_DIR), data("idl")});
-    return CodeGenerator(*loaded->rtc, library.model())
-        .generate({TargetLanguage::Cpp, TargetLanguage::Python, TargetLanguage::Java}, &diagnostics);
-}
-
-void TestCodegenGolden::initTestCase()
-{
-    const auto files = generateFixture();
-    QVERIFY(files);
-    m_files = *files;
-    QVERIFY(m_project.isValid());
-    Diagnostics diagnostics;
-    QVERIFY(ProjectWriter(m_project.path()).write(m_files, &diagnostics));
-}
-
-void TestCodegenGolden::matchesGoldenFiles()
-{
-    const QDir golden(data("golden/SampleComp"));
-    const bool update = qEnvironmentVariableIntValue("RTSTUDIO_UPDATE_GOLDEN") == 1;
-    if (update)
-        QVERIFY(ProjectWriter(golden.path()).write(m_files, nullptr) || true);
-    QStringList generated;
-    for (const GeneratedFile &file : std::as_const(m_files)) {
-        generated << file.path;
-        QFile expected(golden.filePath(file.path));
-        if (update) {
-            QDir().mkpath(QFileInfo(expected.fileName()).absolutePath());
-            QVERIFY(expected.open(QIODevice::WriteOnly | QIODevice::Truncate));
-            expected.write(file.content);
-            continue;
-        }
-        QVERIFY2(expected.open(QIODevice::ReadOnly), qPrintable(file.path + " has no golden file"));
-        const QList<QByteArray> want = expected.readAll().split('\n');
-        const QList<QByteArray> got = file.content.split('\n');
-        for (int i = 0; i < std::min(want.size(), got.size()); ++i)
-            QVERIFY2(want.at(i) == got.at(i),
-                     qPrintable(QStringLiteral("%1:%2: expected '%3', generated '%4'")
-                                    .arg(file.path).arg(i + 1)
-                                    .arg(QString::fromUtf8(want.at(i)), QString::fromUtf8(got.at(i)))));
-        QCOMPARE(got.size(), want.size());
+    const std::optional<LoadedProfile> loaded
+        = loadProfileFile(data(fixture + QStringLiteral(".xml")), &diagnostics);
+    std::optional<QList<GeneratedFile>> files;
+    if (loaded && loaded->rtc) {
+        IdlTypeLibrary library({QStringLiteral(RTSTUDIO_IDL_DIR), data(QStringLiteral("idl"))});
+        CodeGenerator generator(*loaded->rtc, library.model());
+        generator.setTestComponent(true);
+        files = generator.generate(allTargetLanguages(), &diagnostics);
     }
-    // No golden file may be left over from files the generator no longer writes.
-    QStringList expectedFiles;
-    QDirIterator it(golden.path(), QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext())
-        expectedFiles << golden.relativeFilePath(it.next());
-    expectedFiles.sort();
-    generated.sort();
-    QCOMPARE(generated, expectedFiles);
-    QVERIFY(generated.contains(QStringLiteral("include/SampleComp/SampleServiceSVC_impl.h")));
-    QVERIFY(generated.contains(QStringLiteral("src/EchoSVC_impl.java")));
-    QVERIFY(generated.contains(QStringLiteral("SampleService_idl_example.py")));
-    QVERIFY(generated.contains(QStringLiteral("idl/SampleService.idl")));
+    for (const Diagnostic &d : std::as_const(diagnostics))
+        *problems += d.toString() + QLatin1Char('\n');
+    return files;
 }
 
-void TestCodegenGolden::deterministic()
-{
-    const auto again = generateFixture();
-    QVERIFY(again);
-    QCOMPARE(*again, m_files);
-}
-
-bool TestCodegenGolden::run(const QString &program, const QStringList &arguments,
-                            const QString &dir, QString *output)
+bool run(const QString &program, const QStringList &arguments, const QString &dir, QString *output)
 {
     QProcess process;
     process.setWorkingDirectory(dir);
     process.setProcessChannelMode(QProcess::MergedChannels);
     process.start(program, arguments);
-    const bool finished = process.waitForFinished(120000);
+    const bool finished = process.waitForFinished(180000);
     *output = QString::fromLocal8Bit(process.readAll());
     return finished && process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
 }
 
+QStringList filesUnder(const QString &dir, const QStringList &nameFilters)
+{
+    QStringList found;
+    QDirIterator it(dir, nameFilters, QDir::Files, QDirIterator::Subdirectories);
+    while (it.hasNext())
+        found << QDir(dir).relativeFilePath(it.next());
+    found.sort();
+    return found;
+}
+
+void writeGolden(const QString &goldenDir, const QList<GeneratedFile> &files)
+{
+    QDir(goldenDir).removeRecursively();
+    for (const GeneratedFile &file : files) {
+        const QString path = QDir(goldenDir).filePath(file.path);
+        QDir().mkpath(QFileInfo(path).absolutePath());
+        QFile out(path);
+        if (out.open(QIODevice::WriteOnly | QIODevice::Truncate))
+            out.write(file.content);
+        // Scripts are committed executable, as the project writer makes them.
+        if (file.path.endsWith(QLatin1String(".sh")))
+            out.setPermissions(out.permissions() | QFileDevice::ExeOwner | QFileDevice::ExeGroup
+                               | QFileDevice::ExeOther);
+    }
+}
+
+} // namespace
+
+void TestCodegenGolden::initTestCase()
+{
+    for (const QString &fixture : fixtures()) {
+        QString problems;
+        const auto files = generateFixture(fixture, &problems);
+        QVERIFY2(files, qPrintable(fixture + ": " + problems));
+        m_files[fixture] = *files;
+        auto dir = std::make_unique<QTemporaryDir>();
+        QVERIFY(dir->isValid());
+        Diagnostics diagnostics;
+        QVERIFY(ProjectWriter(dir->path()).write(*files, &diagnostics));
+        m_projects[fixture] = std::move(dir);
+    }
+}
+
+void TestCodegenGolden::addFixtureRows()
+{
+    QTest::addColumn<QString>("fixture");
+    for (const QString &fixture : fixtures())
+        QTest::newRow(qPrintable(fixture)) << fixture;
+}
+
+QString TestCodegenGolden::projectDir(const QString &fixture) const
+{
+    return m_projects.at(fixture)->path();
+}
+
+void TestCodegenGolden::matchesGoldenFiles_data()
+{
+    addFixtureRows();
+}
+
+void TestCodegenGolden::matchesGoldenFiles()
+{
+    QFETCH(QString, fixture);
+    const QList<GeneratedFile> &files = m_files.at(fixture);
+    const QDir golden(data(QStringLiteral("golden/") + fixture));
+    if (qEnvironmentVariableIntValue("RTSTUDIO_UPDATE_GOLDEN") == 1)
+        writeGolden(golden.path(), files);
+    QStringList generated;
+    for (const GeneratedFile &file : files) {
+        generated << file.path;
+        QFile expected(golden.filePath(file.path));
+        QVERIFY2(expected.open(QIODevice::ReadOnly), qPrintable(file.path + " has no golden file"));
+        const QList<QByteArray> want = expected.readAll().split('\n');
+        const QList<QByteArray> got = file.content.split('\n');
+        for (int i = 0; i < std::min(want.size(), got.size()); ++i)
+            QVERIFY2(
+                want.at(i) == got.at(i),
+                qPrintable(QStringLiteral("%1:%2: expected '%3', generated '%4'")
+                               .arg(file.path)
+                               .arg(i + 1)
+                               .arg(QString::fromUtf8(want.at(i)), QString::fromUtf8(got.at(i)))));
+        QCOMPARE(got.size(), want.size());
+    }
+    // No golden file may be left over from files the generator no longer writes.
+    generated.sort();
+    QCOMPARE(generated, filesUnder(golden.path(), {}));
+}
+
+void TestCodegenGolden::deterministic_data()
+{
+    addFixtureRows();
+}
+
+void TestCodegenGolden::deterministic()
+{
+    QFETCH(QString, fixture);
+    QString problems;
+    const auto again = generateFixture(fixture, &problems);
+    QVERIFY2(again, qPrintable(problems));
+    QCOMPARE(*again, m_files.at(fixture));
+}
+
+void TestCodegenGolden::pythonCompiles_data()
+{
+    addFixtureRows();
+}
+
 void TestCodegenGolden::pythonCompiles()
 {
+    QFETCH(QString, fixture);
     const QString python = QStandardPaths::findExecutable(QStringLiteral("python3"));
     if (python.isEmpty())
         QSKIP("python3 is not installed; the generated Python is not compiled");
-    const QStringList scripts = QDir(m_project.path()).entryList({QStringLiteral("*.py")});
-    QCOMPARE(scripts.size(), 2);
+    const QStringList scripts = filesUnder(projectDir(fixture), {QStringLiteral("*.py")});
+    QVERIFY(scripts.contains(fixture + QStringLiteral(".py")));
     for (const QString &script : scripts) {
         QString output;
-        QVERIFY2(run(python, {"-m", "py_compile", script}, m_project.path(), &output),
+        QVERIFY2(run(python, {"-m", "py_compile", script}, projectDir(fixture), &output),
                  qPrintable(script + ": " + output));
     }
 }
 
-void TestCodegenGolden::servantCompilesAgainstOmniidlStubs()
+void TestCodegenGolden::servantsCompileAgainstOmniidlSkeletons_data()
 {
+    addFixtureRows();
+}
+
+void TestCodegenGolden::servantsCompileAgainstOmniidlSkeletons()
+{
+    QFETCH(QString, fixture);
     const QString omniidl = QStandardPaths::findExecutable(QStringLiteral("omniidl"));
     const QString compiler = QStandardPaths::findExecutable(QStringLiteral("c++"));
     if (omniidl.isEmpty() || compiler.isEmpty())
         QSKIP("omniidl or c++ is not installed; the generated servants are not compiled");
-    QTemporaryDir stubs;
+    // The component's tree and the test component's, each a project of its own.
+    int compiled = 0;
+    const QDir project(projectDir(fixture));
+    compileServants(project.path(), fixture, &compiled);
+    if (QTest::currentTestFailed())
+        return;
+    if (project.exists(QStringLiteral("test")))
+        compileServants(project.filePath("test"), fixture + QStringLiteral("Test"), &compiled);
+    if (compiled == 0 && !QTest::currentTestFailed())
+        QSKIP("neither this fixture nor its test component provides a service interface");
+}
+
+void TestCodegenGolden::compileServants(const QString &root, const QString &component,
+                                        int *compiled)
+{
+    const QDir tree(root);
+    QStringList sources = filesUnder(tree.filePath("src"), {QStringLiteral("*SVC_impl.cpp")});
+    if (sources.isEmpty())
+        return;
+    QTemporaryDir skeletons;
     QString output;
-    // The project's IDL copy plus the OpenRTM data types it includes, as the generated
+    // The project's IDL copies plus the OpenRTM data types they include, as the generated
     // idl/CMakeLists.txt compiles them.
-    for (const QString &idl : {QDir(m_project.path()).filePath("idl/SampleService.idl"),
-                               QStringLiteral(RTSTUDIO_IDL_DIR "/BasicDataType.idl")}) {
-        QVERIFY2(run(omniidl, {"-bcxx", "-Wba", "-Wbh=.hh", "-Wbs=SK.cc", "-Wbd=DynSK.cc",
-                               "-I" RTSTUDIO_IDL_DIR, idl},
-                     stubs.path(), &output),
+    QStringList idls {QStringLiteral(RTSTUDIO_IDL_DIR "/BasicDataType.idl")};
+    for (const QString &idl : filesUnder(tree.filePath("idl"), {QStringLiteral("*.idl")}))
+        idls << tree.filePath(QStringLiteral("idl/") + idl);
+    for (const QString &idl : std::as_const(idls))
+        QVERIFY2(run(QStringLiteral("omniidl"),
+                     {"-bcxx", "-Wba", "-Wbh=.hh", "-Wbs=SK.cc", "-Wbd=DynSK.cc",
+                      "-I" RTSTUDIO_IDL_DIR, idl},
+                     skeletons.path(), &output),
                  qPrintable(output));
+    // A translation unit that creates every servant: instantiating one fails to compile unless
+    // every operation of its interface (and all its bases) is implemented with the signature
+    // omniidl's skeleton declares.
+    const QString include = tree.filePath(QStringLiteral("include/") + component);
+    QByteArray driver;
+    QByteArray body;
+    static const QRegularExpression classLine(QStringLiteral("^class (\\w+SVC_impl)$"),
+                                              QRegularExpression::MultilineOption);
+    for (const QString &header : filesUnder(include, {QStringLiteral("*SVC_impl.h")})) {
+        QFile file(QDir(include).filePath(header));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        driver += "#include \"" + header.toUtf8() + "\"\n";
+        auto it = classLine.globalMatch(QString::fromUtf8(file.readAll()));
+        while (it.hasNext()) {
+            const QByteArray name = it.next().captured(1).toUtf8();
+            body += "  { " + name + " *s = new " + name + "(); s->_remove_ref(); }\n";
+        }
     }
-    // A translation unit that creates the servant: instantiating it fails to compile unless
-    // every operation of the interface (and its bases) is implemented with the right signature.
-    const QString driver = stubs.filePath("instantiate.cpp");
-    QFile file(driver);
+    QVERIFY2(!body.isEmpty(), qPrintable(include + " declares no servant class"));
+    QFile file(skeletons.filePath("instantiate.cpp"));
     QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write("#include \"SampleServiceSVC_impl.h\"\n"
-               "int main() { EchoSVC_impl *servant = new EchoSVC_impl(); servant->_remove_ref(); }\n");
+    file.write(driver + "int main()\n{\n" + body + "}\n");
     file.close();
-    const QString include = QDir(m_project.path()).filePath("include/SampleComp");
-    for (const QString &source : {QDir(m_project.path()).filePath("src/SampleServiceSVC_impl.cpp"), driver}) {
-        QVERIFY2(run(compiler, {"-std=c++11", "-fsyntax-only", "-Wall", "-Wextra",
-                                "-Wno-unused-parameter", "-Werror", "-I" + stubs.path(),
-                                "-I" + include, source},
-                     stubs.path(), &output),
-                 qPrintable(source + ":\n" + output));
+    for (QString &source : sources)
+        source = tree.filePath(QStringLiteral("src/") + source);
+    sources << file.fileName();
+    for (const QString &unit : std::as_const(sources))
+        QVERIFY2(run(QStringLiteral("c++"),
+                     {"-std=c++11", "-fsyntax-only", "-Wall", "-Wextra", "-Wno-unused-parameter",
+                      "-Werror", "-I" + skeletons.path(), "-I" + include, unit},
+                     skeletons.path(), &output),
+                 qPrintable(unit + ":\n" + output));
+    *compiled += int(sources.size());
+}
+
+void TestCodegenGolden::cmakeConfigures_data()
+{
+    addFixtureRows();
+}
+
+void TestCodegenGolden::cmakeConfigures()
+{
+    QFETCH(QString, fixture);
+    const QString cmake = QStandardPaths::findExecutable(QStringLiteral("cmake"));
+    if (cmake.isEmpty())
+        QSKIP("cmake is not installed; the generated CMake projects are not configured");
+    // The component project and, when generated, the test component's project beside it.
+    QStringList trees {projectDir(fixture)};
+    if (QFileInfo::exists(QDir(projectDir(fixture)).filePath("test/CMakeLists.txt")))
+        trees << QDir(projectDir(fixture)).filePath("test");
+    for (const QString &tree : std::as_const(trees)) {
+        QTemporaryDir build;
+        QString output;
+        // Configure only: this parses every generated CMakeLists.txt and evaluates it against
+        // the variables OpenRTM-aist's config defines, without needing OpenRTM-aist itself.
+        QVERIFY2(
+            run(cmake,
+                {"-S", tree, "-B", build.path(), "-G", "Unix Makefiles",
+                 "-DOpenRTM_DIR=" + data(QStringLiteral("openrtm")),
+                 "-DOPENRTM_FIXTURE_PREFIX=" + build.path(), "--warn-uninitialized", "-Werror=dev"},
+                build.path(), &output),
+            qPrintable(tree + ":\n" + output));
+        QVERIFY2(!output.contains(QLatin1String("CMake Warning")), qPrintable(output));
+        QVERIFY(QFileInfo::exists(QDir(build.path()).filePath("Makefile")));
     }
 }
 

@@ -1,0 +1,33 @@
+// -*- C++ -*-
+/*!
+ * @file ConfigCompComp.cpp
+ * @brief Standalone program that runs one ConfigComp component.
+ */
+
+#include <rtm/Manager.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "ConfigComp.h"
+
+void MyModuleInit(RTC::Manager* manager)
+{
+  ConfigCompInit(manager);
+  RTC::RtcBase* comp = manager->createComponent("ConfigComp");
+  if (comp == nullptr)
+    {
+      std::cerr << "Component create failed." << std::endl;
+      std::abort();
+    }
+}
+
+int main(int argc, char** argv)
+{
+  RTC::Manager* manager = RTC::Manager::init(argc, argv);
+  manager->setModuleInitProc(MyModuleInit);
+  manager->activateManager();
+  manager->runManager();
+  return 0;
+}

@@ -1,0 +1,210 @@
+// -*- Java -*-
+// <rtc-template block="description">
+/*!
+ * @file  ConfigCompImpl.java
+ * @brief Configuration with every widget and constraint
+ */
+// </rtc-template>
+
+import RTC.ReturnCode_t;
+import jp.go.aist.rtm.RTC.DataFlowComponentBase;
+import jp.go.aist.rtm.RTC.Manager;
+import jp.go.aist.rtm.RTC.port.CorbaConsumer;
+import jp.go.aist.rtm.RTC.port.CorbaPort;
+import jp.go.aist.rtm.RTC.port.InPort;
+import jp.go.aist.rtm.RTC.port.OutPort;
+import jp.go.aist.rtm.RTC.util.*;
+
+/*!
+ * @class ConfigCompImpl
+ * @brief Configuration with every widget and constraint
+ */
+public class ConfigCompImpl extends DataFlowComponentBase {
+
+    public ConfigCompImpl(Manager manager) {
+        super(manager);
+        // <rtc-template block="initializer">
+        m_in_val = new RTC.TimedDouble(new RTC.Time(0, 0), 0.0);
+        m_in = new DataRef<RTC.TimedDouble>(m_in_val);
+        m_inIn = new InPort<RTC.TimedDouble>("in", m_in);
+        m_out_val = new RTC.TimedDouble(new RTC.Time(0, 0), 0.0);
+        m_out = new DataRef<RTC.TimedDouble>(m_out_val);
+        m_outOut = new OutPort<RTC.TimedDouble>("out", m_out);
+        // </rtc-template>
+    }
+
+    @Override
+    protected ReturnCode_t onInitialize() {
+        // Registration: InPort/OutPort/Service
+        // <rtc-template block="registration">
+        addInPort("in", m_inIn);
+        addOutPort("out", m_outOut);
+        // </rtc-template>
+
+        // <rtc-template block="bind_config">
+        bindParameter("label", m_label, "hello world");
+        bindParameter("gain", m_gainValue, "1.5");
+        bindParameter("count", m_count, "3");
+        bindParameter("threshold", m_threshold, "10");
+        bindParameter("limit", m_limit, "5");
+        bindParameter("mode", m_mode, "fast");
+        bindParameter("features", m_features, "camera,lidar");
+        bindParameter("order", m_order, "first,second");
+        bindParameter("weights", m_weights, "0.5,1.5");
+        bindParameter("scale", m_scale, "0.25");
+        bindParameter("target", m_target, "42");
+        // </rtc-template>
+        return super.onInitialize();
+    }
+
+//    @Override
+//    protected ReturnCode_t onFinalize() {
+//        return super.onFinalize();
+//    }
+
+//    @Override
+//    protected ReturnCode_t onStartup(int ec_id) {
+//        return super.onStartup(ec_id);
+//    }
+
+//    @Override
+//    protected ReturnCode_t onShutdown(int ec_id) {
+//        return super.onShutdown(ec_id);
+//    }
+
+//    @Override
+//    protected ReturnCode_t onActivated(int ec_id) {
+//        return super.onActivated(ec_id);
+//    }
+
+//    @Override
+//    protected ReturnCode_t onDeactivated(int ec_id) {
+//        return super.onDeactivated(ec_id);
+//    }
+
+//    @Override
+//    protected ReturnCode_t onAborting(int ec_id) {
+//        return super.onAborting(ec_id);
+//    }
+
+//    @Override
+//    protected ReturnCode_t onError(int ec_id) {
+//        return super.onError(ec_id);
+//    }
+
+//    @Override
+//    protected ReturnCode_t onReset(int ec_id) {
+//        return super.onReset(ec_id);
+//    }
+
+    @Override
+    protected ReturnCode_t onExecute(int ec_id) {
+        return super.onExecute(ec_id);
+    }
+
+//    @Override
+//    protected ReturnCode_t onStateUpdate(int ec_id) {
+//        return super.onStateUpdate(ec_id);
+//    }
+
+//    @Override
+//    protected ReturnCode_t onRateChanged(int ec_id) {
+//        return super.onRateChanged(ec_id);
+//    }
+
+    // Configuration variables
+    // <rtc-template block="config_declare">
+    /*!
+     * 
+     * - Name: label
+     * - DefaultValue: hello world
+     */
+    protected StringHolder m_label = new StringHolder();
+    /*!
+     * 
+     * - Name: gain
+     * - DefaultValue: 1.5
+     */
+    protected DoubleHolder m_gainValue = new DoubleHolder();
+    /*!
+     * 
+     * - Name: count
+     * - DefaultValue: 3
+     */
+    protected IntegerHolder m_count = new IntegerHolder();
+    /*!
+     * 
+     * - Name: threshold
+     * - DefaultValue: 10
+     */
+    protected LongHolder m_threshold = new LongHolder();
+    /*!
+     * 
+     * - Name: limit
+     * - DefaultValue: 5
+     */
+    protected ShortHolder m_limit = new ShortHolder();
+    /*!
+     * 
+     * - Name: mode
+     * - DefaultValue: fast
+     */
+    protected StringHolder m_mode = new StringHolder();
+    /*!
+     * 
+     * - Name: features
+     * - DefaultValue: camera,lidar
+     */
+    protected StringHolder m_features = new StringHolder();
+    /*!
+     * 
+     * - Name: order
+     * - DefaultValue: first,second
+     */
+    protected StringHolder m_order = new StringHolder();
+    /*!
+     * 
+     * - Name: weights
+     * - DefaultValue: 0.5,1.5
+     */
+    protected StringHolder m_weights = new StringHolder();
+    /*!
+     * 
+     * - Name: scale
+     * - DefaultValue: 0.25
+     */
+    protected FloatHolder m_scale = new FloatHolder();
+    /*!
+     * 
+     * - Name: target
+     * - DefaultValue: 42
+     */
+    protected LongHolder m_target = new LongHolder();
+    // </rtc-template>
+
+    // DataInPort declaration
+    // <rtc-template block="inport_declare">
+    protected RTC.TimedDouble m_in_val;
+    protected DataRef<RTC.TimedDouble> m_in;
+    protected InPort<RTC.TimedDouble> m_inIn;
+    // </rtc-template>
+
+    // DataOutPort declaration
+    // <rtc-template block="outport_declare">
+    protected RTC.TimedDouble m_out_val;
+    protected DataRef<RTC.TimedDouble> m_out;
+    protected OutPort<RTC.TimedDouble> m_outOut;
+    // </rtc-template>
+
+    // CORBA Port declaration
+    // <rtc-template block="corbaport_declare">
+    // </rtc-template>
+
+    // Service declaration
+    // <rtc-template block="service_declare">
+    // </rtc-template>
+
+    // Consumer declaration
+    // <rtc-template block="consumer_declare">
+    // </rtc-template>
+}

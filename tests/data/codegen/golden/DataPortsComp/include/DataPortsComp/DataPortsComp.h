@@ -1,0 +1,165 @@
+// -*- C++ -*-
+// <rtc-template block="description">
+/*!
+ * @file  DataPortsComp.h
+ * @brief Data ports of many types
+ */
+// </rtc-template>
+
+#ifndef DATAPORTSCOMP_H
+#define DATAPORTSCOMP_H
+
+#include <rtm/idl/BasicDataTypeSkel.h>
+#include <rtm/idl/ExtendedDataTypesSkel.h>
+#include <rtm/idl/InterfaceDataTypesSkel.h>
+
+// Service implementation headers
+// <rtc-template block="service_impl_h">
+// </rtc-template>
+
+// Data type and service consumer stub headers
+// <rtc-template block="consumer_stub_h">
+#include <rtm/idl/BasicDataTypeSkel.h>
+#include <rtm/idl/ExtendedDataTypesSkel.h>
+#include <rtm/idl/InterfaceDataTypesSkel.h>
+// </rtc-template>
+
+#include <rtm/Manager.h>
+#include <rtm/DataFlowComponentBase.h>
+#include <rtm/CorbaPort.h>
+#include <rtm/DataInPort.h>
+#include <rtm/DataOutPort.h>
+
+/*!
+ * @class DataPortsComp
+ * @brief Data ports of many types
+ */
+class DataPortsComp
+  : public RTC::DataFlowComponentBase
+{
+ public:
+  explicit DataPortsComp(RTC::Manager* manager);
+  ~DataPortsComp() override;
+
+  // <rtc-template block="public_attribute">
+  // </rtc-template>
+
+  // <rtc-template block="public_operation">
+  // </rtc-template>
+
+  // Callbacks: the ones switched off in the profile stay commented out.
+  // <rtc-template block="activity_declare">
+  RTC::ReturnCode_t onInitialize() override;
+  // RTC::ReturnCode_t onFinalize() override;
+  // RTC::ReturnCode_t onStartup(RTC::UniqueId ec_id) override;
+  // RTC::ReturnCode_t onShutdown(RTC::UniqueId ec_id) override;
+  RTC::ReturnCode_t onActivated(RTC::UniqueId ec_id) override;
+  RTC::ReturnCode_t onDeactivated(RTC::UniqueId ec_id) override;
+  // RTC::ReturnCode_t onAborting(RTC::UniqueId ec_id) override;
+  // RTC::ReturnCode_t onError(RTC::UniqueId ec_id) override;
+  // RTC::ReturnCode_t onReset(RTC::UniqueId ec_id) override;
+  RTC::ReturnCode_t onExecute(RTC::UniqueId ec_id) override;
+  // RTC::ReturnCode_t onStateUpdate(RTC::UniqueId ec_id) override;
+  // RTC::ReturnCode_t onRateChanged(RTC::UniqueId ec_id) override;
+  // </rtc-template>
+
+ protected:
+  // <rtc-template block="protected_attribute">
+  // </rtc-template>
+
+  // <rtc-template block="protected_operation">
+  // </rtc-template>
+
+  // Configuration variables
+  // <rtc-template block="config_declare">
+  // </rtc-template>
+
+  // DataInPort declaration
+  // <rtc-template block="inport_declare">
+  RTC::TimedLong m_in_long;
+  /*!
+   * 
+   */
+  RTC::InPort<RTC::TimedLong> m_in_longIn;
+  RTC::TimedDoubleSeq m_doubles;
+  /*!
+   * 
+   */
+  RTC::InPort<RTC::TimedDoubleSeq> m_doublesIn;
+  RTC::TimedString m_in_text;
+  /*!
+   * 
+   */
+  RTC::InPort<RTC::TimedString> m_in_textIn;
+  RTC::TimedPose2D m_in_pose;
+  /*!
+   * 
+   */
+  RTC::InPort<RTC::TimedPose2D> m_in_poseIn;
+  RTC::CameraImage m_image;
+  /*!
+   * 
+   */
+  RTC::InPort<RTC::CameraImage> m_imageIn;
+  // </rtc-template>
+
+  // DataOutPort declaration
+  // <rtc-template block="outport_declare">
+  RTC::TimedWString m_out_wide;
+  /*!
+   * 
+   */
+  RTC::OutPort<RTC::TimedWString> m_out_wideOut;
+  RTC::TimedOctetSeq m_out_octets;
+  /*!
+   * 
+   */
+  RTC::OutPort<RTC::TimedOctetSeq> m_out_octetsOut;
+  RTC::TimedBooleanSeq m_out_flags;
+  /*!
+   * 
+   */
+  RTC::OutPort<RTC::TimedBooleanSeq> m_out_flagsOut;
+  RTC::TimedVector3D m_out_vector;
+  /*!
+   * 
+   */
+  RTC::OutPort<RTC::TimedVector3D> m_out_vectorOut;
+  RTC::RangeData m_ranges;
+  /*!
+   * 
+   */
+  RTC::OutPort<RTC::RangeData> m_rangesOut;
+  RTC::PointCloud m_out_cloud;
+  /*!
+   * 
+   */
+  RTC::OutPort<RTC::PointCloud> m_out_cloudOut;
+  // </rtc-template>
+
+  // CORBA Port declaration
+  // <rtc-template block="corbaport_declare">
+  // </rtc-template>
+
+  // Service declaration
+  // <rtc-template block="service_declare">
+  // </rtc-template>
+
+  // Consumer declaration
+  // <rtc-template block="consumer_declare">
+  // </rtc-template>
+
+ private:
+  // <rtc-template block="private_attribute">
+  // </rtc-template>
+
+  // <rtc-template block="private_operation">
+  // </rtc-template>
+};
+
+extern "C"
+{
+  DLL_EXPORT void DataPortsCompInit(RTC::Manager* manager);
+}
+
+#endif // DATAPORTSCOMP_H

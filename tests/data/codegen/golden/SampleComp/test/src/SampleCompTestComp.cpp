@@ -1,0 +1,33 @@
+// -*- C++ -*-
+/*!
+ * @file SampleCompTestComp.cpp
+ * @brief Standalone program that runs one SampleCompTest component.
+ */
+
+#include <rtm/Manager.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "SampleCompTest.h"
+
+void MyModuleInit(RTC::Manager* manager)
+{
+  SampleCompTestInit(manager);
+  RTC::RtcBase* comp = manager->createComponent("SampleCompTest");
+  if (comp == nullptr)
+    {
+      std::cerr << "Component create failed." << std::endl;
+      std::abort();
+    }
+}
+
+int main(int argc, char** argv)
+{
+  RTC::Manager* manager = RTC::Manager::init(argc, argv);
+  manager->setModuleInitProc(MyModuleInit);
+  manager->activateManager();
+  manager->runManager();
+  return 0;
+}

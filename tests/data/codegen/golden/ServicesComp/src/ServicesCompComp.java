@@ -1,0 +1,31 @@
+// -*- Java -*-
+/*!
+ * @file ServicesCompComp.java
+ * @brief Standalone program that runs one ServicesComp component.
+ */
+
+import jp.go.aist.rtm.RTC.Manager;
+import jp.go.aist.rtm.RTC.ModuleInitProc;
+import jp.go.aist.rtm.RTC.RTObject_impl;
+import jp.go.aist.rtm.RTC.util.Properties;
+
+public class ServicesCompComp implements ModuleInitProc {
+
+    public void myModuleInit(Manager mgr) {
+        Properties prop = new Properties(ServicesComp.component_conf);
+        mgr.registerFactory(prop, new ServicesComp(), new ServicesComp());
+        RTObject_impl comp = mgr.createComponent("ServicesComp");
+        if (comp == null) {
+            System.err.println("Component create failed.");
+            System.exit(1);
+        }
+    }
+
+    public static void main(String[] args) {
+        ServicesCompComp init = new ServicesCompComp();
+        final Manager manager = Manager.init(args);
+        manager.setModuleInitProc(init);
+        manager.activateManager();
+        manager.runManager();
+    }
+}
