@@ -2,6 +2,9 @@
 #include "corbautil.h"
 
 #include <cstdio>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 #include <random>
 
 namespace Runtime {
@@ -96,6 +99,23 @@ CORBA::ORB_var theOrb()
     // ORB_init hands back the ORB already initialised in this process.
     int argc = 0;
     return CORBA::ORB_init(argc, nullptr);
+}
+
+// A port nobody listens on right now, for a slave we start ourselves.
+int freeLoopbackPort()
+{
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    int port = 0;
+    if (fd >= 0 && bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0
+        && getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length) == 0)
+        port = ntohs(address.sin_port);
+    if (fd >= 0)
+        close(fd);
+    return port;
 }
 
 std::string describeException(const CORBA::Exception &e)

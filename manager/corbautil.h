@@ -20,6 +20,15 @@ Properties nvToProperties(const SDOPackage::NVList &list);
 /// Properties as an NVList of strings.
 SDOPackage::NVList propertiesToNv(const Properties &properties);
 
+/// Appends the elements of @p part to @p into (CORBA sequences; references are duplicated).
+template<typename Sequence> void appendSequence(Sequence &into, const Sequence &part)
+{
+    const CORBA::ULong n = into.length();
+    into.length(n + part.length());
+    for (CORBA::ULong i = 0; i < part.length(); ++i)
+        into[n + i] = part[i];
+}
+
 /// A new universally unique id (random, RFC 4122 version 4 text form).
 std::string newUuid();
 
@@ -31,6 +40,9 @@ void releaseServant(PortableServer::POA_ptr poa, PortableServer::ServantBase *se
 
 /// The process's ORB (initialised earlier by the runtime's owner).
 CORBA::ORB_var theOrb();
+
+/// A loopback TCP port nobody listens on right now (for a manager process we start ourselves).
+int freeLoopbackPort();
 
 /// One-line text of a CORBA exception for error messages.
 std::string describeException(const CORBA::Exception &e);

@@ -5,11 +5,14 @@
 #include "builtins.h"
 #include "manager.h"
 
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <thread>
+#include <unistd.h>
 
 namespace {
 
@@ -114,5 +117,11 @@ int main(int argc, char **argv)
         manager.shutdown();
     }).detach();
     manager.run();
+    if (manager.restartRequested()) {
+        // restart(): the same program with the same arguments, hence the same endpoint and setup.
+        execv("/proc/self/exe", argv);
+        std::cerr << "rtmanager: cannot restart: " << std::strerror(errno) << std::endl;
+        return 1;
+    }
     return 0;
 }

@@ -29,6 +29,11 @@ Manager::Manager(const Properties &config)
 
 Manager::~Manager()
 {
+    destroyOrb();
+}
+
+void Manager::destroyOrb()
+{
     if (m_shutdownThread.joinable())
         m_shutdownThread.join();
     if (m_watchdog.joinable())
@@ -38,6 +43,7 @@ Manager::~Manager()
             m_orb->destroy();
         } catch (const CORBA::Exception &) {
         }
+        m_orb = CORBA::ORB::_nil();
     }
 }
 
@@ -133,6 +139,9 @@ void Manager::run()
     } catch (const CORBA::BAD_INV_ORDER &) {
         // A shutdown request came in before run() was reached: the ORB is down already.
     }
+    // The new run of the process must find the endpoint free.
+    if (m_restart)
+        destroyOrb();
 }
 
 void Manager::shutdown()

@@ -39,7 +39,7 @@ public:
 
     /// Initialises the ORB on the configured endpoint and starts serving; false with @p error on failure.
     bool start(std::string *error);
-    /// Serves until shutdown() finishes.
+    /// Serves until shutdown() finishes; after restart() also releases the ORB and its endpoint.
     void run();
     /// Deletes components, unregisters names, leaves the master, stops the ORB. Returns at once.
     void shutdown();
@@ -48,8 +48,33 @@ public:
     /// Creates per `Type?k=v&…` (locally or on a slave); nil and @p error when it fails.
     RTC::RTObject_ptr createComponent(const std::string &request, std::string *error);
     bool deleteComponent(const std::string &instanceName, std::string *error);
+    /// This process's components.
     RTC::RTCList components();
     RTC::RTCList componentsByName(const std::string &name);
+
+    /**
+     * What the live slaves report (a master's part of get_components() and its relatives): each
+     * slave is asked in parallel, bounded by manager.slave_call_timeout (ms, default 2000); a slave
+     * that fails or does not answer in time is skipped.
+     */
+    RTC::RTCList slaveComponents();
+    RTC::RTCList slaveComponentsByName(const std::string &name);
+    RTC::ComponentProfileList slaveComponentProfiles();
+
+    /**
+     * Finalises the components like shutdown(), then lets run() return with restartRequested()
+     * set, so that the process runs again with the same command line (and endpoint).
+     */
+    void restart();
+    bool restartRequested() const { return m_restart; }
+    /// Starts a new slave manager process registered with the master (this one when it is the
+    /// master); false with @p error when it does not start.
+    bool forkSlave(std::string *error);
+    /**
+     * A well-known object of this manager: `NameService` (its first name server), `manager`
+     * (itself), `master` (its master; itself for a master). Nil for other names.
+     */
+    CORBA::Object_ptr service(const std::string &name);
 
     bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
     bool unloadModule(const std::string &path, std::string *error);
@@ -83,6 +108,7 @@ private:
 
     // manager.cpp
     bool initOrb(std::string *error);
+    void destroyOrb();
     RTC::RTObject_ptr createLocal(const CreateRequest &request, std::string *error);
     const ComponentFactory *findFactory(const CreateRequest &request);
     std::string uniqueInstanceName(const std::string &typeName);
@@ -94,6 +120,7 @@ private:
     RTC::RTObject_ptr createRemote(const CreateRequest &request, std::string *error);
     RTM::Manager_ptr slaveFor(const CreateRequest &request, bool *remoteOnly, std::string *error);
     RTM::Manager_ptr spawnSlave(const std::string &host, int port, const std::string &name, std::string *error);
+    pid_t startSlaveProcess(const std::string &address, const std::string &name, const std::string &master);
     RTM::Manager_ptr waitForSlave(pid_t pid, const std::string &address);
     void dropSlave(RTM::Manager_ptr manager);
     void joinMaster();
@@ -122,6 +149,7 @@ private:
     RTM::ManagerList m_masters;
     std::string m_lastError;
     bool m_stopping = false;
+    bool m_restart = false;
     std::thread m_shutdownThread;
     std::thread m_watchdog;
 };

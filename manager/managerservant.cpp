@@ -64,9 +64,13 @@ RTC::ReturnCode_t ManagerServant::delete_component(const char *instance_name)
     return code(m_manager.deleteComponent(instance_name ? instance_name : "", nullptr));
 }
 
+// A master answers for its slaves too, as OpenRTM-aist's ManagerServant does.
 RTC::RTCList *ManagerServant::get_components()
 {
-    return new RTC::RTCList(m_manager.components());
+    auto *list = new RTC::RTCList(m_manager.components());
+    if (m_manager.isMaster())
+        appendSequence(*list, m_manager.slaveComponents());
+    return list;
 }
 
 RTC::ComponentProfileList *ManagerServant::get_component_profiles()
@@ -83,12 +87,18 @@ RTC::ComponentProfileList *ManagerServant::get_component_profiles()
             // A component going away while we list is left out.
         }
     }
+    if (m_manager.isMaster())
+        appendSequence(*list, m_manager.slaveComponentProfiles());
     return list;
 }
 
 RTC::RTCList *ManagerServant::get_components_by_name(const char *name)
 {
-    return new RTC::RTCList(m_manager.componentsByName(name ? name : ""));
+    const std::string wanted = name ? name : "";
+    auto *list = new RTC::RTCList(m_manager.componentsByName(wanted));
+    if (m_manager.isMaster())
+        appendSequence(*list, m_manager.slaveComponentsByName(wanted));
+    return list;
 }
 
 RTM::ManagerProfile *ManagerServant::get_profile()
@@ -145,9 +155,7 @@ RTC::ReturnCode_t ManagerServant::remove_slave_manager(RTM::Manager_ptr mgr)
 
 RTC::ReturnCode_t ManagerServant::fork()
 {
-    // Duplicating a process with a running ORB is unsafe; new processes come from slave spawning.
-    m_manager.fail("fork: not offered; create with manager_name=manager_%p for a new process", nullptr);
-    return RTC::UNSUPPORTED;
+    return code(m_manager.forkSlave(nullptr));
 }
 
 RTC::ReturnCode_t ManagerServant::shutdown()
@@ -158,13 +166,14 @@ RTC::ReturnCode_t ManagerServant::shutdown()
 
 RTC::ReturnCode_t ManagerServant::restart()
 {
-    m_manager.fail("restart: not offered; shut down and start the manager again", nullptr);
-    return RTC::UNSUPPORTED;
+    // Replies first: the components are finalised and the process runs again after this returns.
+    m_manager.restart();
+    return RTC::RTC_OK;
 }
 
-CORBA::Object_ptr ManagerServant::get_service(const char *)
+CORBA::Object_ptr ManagerServant::get_service(const char *name)
 {
-    return CORBA::Object::_nil();
+    return m_manager.service(name ? name : "");
 }
 
 } // namespace Runtime

@@ -9,31 +9,12 @@
 #include <algorithm>
 #include <csignal>
 #include <iostream>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 namespace Runtime {
 
 namespace {
-
-// A port nobody listens on right now, for a slave we start ourselves.
-int freePort()
-{
-    const int fd = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    int port = 0;
-    if (fd >= 0 && bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0
-        && getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length) == 0)
-        port = ntohs(address.sin_port);
-    if (fd >= 0)
-        close(fd);
-    return port;
-}
 
 std::string normalizedHost(const std::string &host)
 {
@@ -125,7 +106,7 @@ RTM::Manager_ptr Manager::slaveFor(const CreateRequest &request, bool *remoteOnl
                 return RTM::Manager::_duplicate(slave->reference);
         }
     }
-    return spawnSlave("127.0.0.1", freePort(), name, error);
+    return spawnSlave("127.0.0.1", freeLoopbackPort(), name, error);
 }
 
 RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const std::string &name, std::string *error)
@@ -135,15 +116,30 @@ RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const st
         return RTM::Manager::_nil();
     }
     const std::string address = host + ':' + std::to_string(port);
+    const pid_t pid = startSlaveProcess(address, name, m_address);
+    if (pid < 0) {
+        fail("create_component: cannot start a slave manager", error);
+        return RTM::Manager::_nil();
+    }
+    RTM::Manager_var slave = waitForSlave(pid, address);
+    if (CORBA::is_nil(slave))
+        fail("create_component: slave manager at " + address + " did not start", error);
+    return slave._retn();
+}
+
+pid_t Manager::startSlaveProcess(const std::string &address, const std::string &name, const std::string &master)
+{
     std::vector<std::string> args = {"rtmanager"};
     const Properties config = configuration();
     for (const auto &[key, value] : config.entries()) {
+        // A slave makes only what it is asked for: the master's precreated components stay single.
         if (key == "manager.is_master" || key == "corba.endpoints" || key == "corba.master_manager"
-            || key == "manager.instance_name")
+            || key == "manager.instance_name" || key == "manager.spawned_by"
+            || key == "manager.components.precreate")
             continue;
         args.insert(args.end(), {"-o", key + '=' + value});
     }
-    args.insert(args.end(), {"-o", "manager.is_master=NO", "-o", "corba.master_manager=" + m_address, "-o",
+    args.insert(args.end(), {"-o", "manager.is_master=NO", "-o", "corba.master_manager=" + master, "-o",
                              "corba.endpoints=" + address, "-o", "manager.instance_name=" + name, "-o",
                              "manager.spawned_by=" + std::to_string(getpid())});
     std::vector<char *> argv;
@@ -155,14 +151,7 @@ RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const st
         execv("/proc/self/exe", argv.data());
         _exit(127);
     }
-    if (pid < 0) {
-        fail("create_component: cannot start a slave manager", error);
-        return RTM::Manager::_nil();
-    }
-    RTM::Manager_var slave = waitForSlave(pid, address);
-    if (CORBA::is_nil(slave))
-        fail("create_component: slave manager at " + address + " did not start", error);
-    return slave._retn();
+    return pid;
 }
 
 RTM::Manager_ptr Manager::waitForSlave(pid_t pid, const std::string &address)
@@ -191,7 +180,9 @@ bool Manager::addSlave(RTM::Manager_ptr manager)
         return false;
     auto slave = std::make_unique<Slave>();
     slave->reference = RTM::Manager::_duplicate(manager);
-    omniORB::setClientCallTimeout(slave->reference, 2000);
+    // Calls to a slave (create, aggregation, watchdog) never wait longer than this.
+    omniORB::setClientCallTimeout(slave->reference,
+                                  CORBA::ULong(std::stoul("0" + m_config.value("manager.slave_call_timeout", "2000"))));
     try {
         RTM::ManagerProfile_var profile = manager->get_profile();
         slave->name = nvString(profile->properties, "instance_name");
