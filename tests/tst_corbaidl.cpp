@@ -302,7 +302,7 @@ void TestCorbaIdl::interfaceRepositoryIds_data()
     row("IDL:OpenRTM/InPortCdr:1.0", OpenRTM::InPortCdr::_PD_repoId);
     row("IDL:OpenRTM/OutPortCdr:1.0", OpenRTM::OutPortCdr::_PD_repoId);
     row("IDL:RTM/Manager:1.0", RTM::Manager::_PD_repoId);
-    row("IDL:RTC/ComponentObserver:1.0", RTC::ComponentObserver::_PD_repoId);
+    row("IDL:omg.org/RTC/ComponentObserver:1.0", RTC::ComponentObserver::_PD_repoId);
     row("IDL:SimpleService/MyService:1.0", SimpleService::MyService::_PD_repoId);
 }
 
@@ -358,7 +358,7 @@ void TestCorbaIdl::typeRepositoryIds_data()
     row("IDL:RTC/TimedDoubleSeq:1.0", RTC::_tc_TimedDoubleSeq);
     row("IDL:RTC/TimedPose2D:1.0", RTC::_tc_TimedPose2D);
     row("IDL:RTC/CameraImage:1.0", RTC::_tc_CameraImage);
-    row("IDL:RTC/StatusKind:1.0", RTC::_tc_StatusKind);
+    row("IDL:omg.org/RTC/StatusKind:1.0", RTC::_tc_StatusKind);
     row("IDL:SimpleService/EchoList:1.0", SimpleService::_tc_EchoList);
     row("IDL:RTC/Acceleration2D:1.0", RTC::_tc_Acceleration2D);
     row("IDL:RTC/Covariance2D:1.0", RTC::_tc_Covariance2D);
@@ -432,6 +432,11 @@ void TestCorbaIdl::enumOrder_data()
         << memberNames(OpenRTM::_tc_PortStatus)
         << QStringList{"PORT_OK", "PORT_ERROR", "BUFFER_FULL", "BUFFER_EMPTY", "BUFFER_TIMEOUT",
                        "UNKNOWN_ERROR"};
+    QTest::newRow("StatusKind")
+        << memberNames(RTC::_tc_StatusKind)
+        << QStringList{"COMPONENT_PROFILE", "RTC_STATUS",    "EC_STATUS",   "PORT_PROFILE",
+                       "CONFIGURATION",     "RTC_HEARTBEAT", "EC_HEARTBEAT", "FSM_PROFILE",
+                       "FSM_STATUS",        "FSM_STRUCTURE", "USER_DEFINED", "STATUS_KIND_NUM"};
     QTest::newRow("DependencyType") << memberNames(SDOPackage::_tc_DependencyType)
                                     << QStringList{"OWN", "OWNED", "NO_DEPENDENCY"};
     QTest::newRow("ActArrayActuatorStatus")
