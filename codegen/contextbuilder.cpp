@@ -390,16 +390,18 @@ QVariantList ContextBuilder::dataPorts(TargetLanguage language, RtcPortType kind
             init = javaStructInit(m_idl, port.type, 0);
         }
         const std::optional<QString> description = port.doc ? port.doc->description : std::nullopt;
-        list << QVariantMap {{QStringLiteral("name"), port.name},
-                             {QStringLiteral("literalName"), escapeStringLiteral(port.name)},
-                             {QStringLiteral("type"), port.type},
-                             {QStringLiteral("variable"), dataVariable(port)},
-                             {QStringLiteral("nativeType"), native},
-                             {QStringLiteral("init"), init},
-                             {QStringLiteral("module"), firstModule(port.type)},
-                             {QStringLiteral("idlFile"), port.idlFile.value_or(QString())},
-                             {QStringLiteral("docLines"), dataPortDocLines(port)},
-                             {QStringLiteral("description"), commentText(description)}};
+        list << QVariantMap {
+            {QStringLiteral("name"), port.name},
+            {QStringLiteral("literalName"), escapeStringLiteral(port.name)},
+            {QStringLiteral("type"), port.type},
+            {QStringLiteral("variable"), dataVariable(port)},
+            {QStringLiteral("nativeType"), native},
+            {QStringLiteral("init"), init},
+            {QStringLiteral("module"), firstModule(port.type)},
+            {QStringLiteral("idlFile"), port.idlFile.value_or(QString())},
+            {QStringLiteral("docLines"), dataPortDocLines(port)},
+            {QStringLiteral("hasDescription"), !commentText(description).isEmpty()},
+            {QStringLiteral("description"), commentText(description)}};
     }
     return markFirstLast(list);
 }
@@ -428,6 +430,7 @@ QVariantList ContextBuilder::configurations(TargetLanguage language) const
             {QStringLiteral("hasWidget"), c.widget().has_value()},
             {QStringLiteral("unit"), commentText(c.unit)},
             {QStringLiteral("docLines"), configurationDocLines(c)},
+            {QStringLiteral("hasDescription"), !commentText(description).isEmpty()},
             {QStringLiteral("description"), commentText(description)}};
     }
     return markFirstLast(list);

@@ -78,27 +78,22 @@ class DataPortsComp
   // <rtc-template block="inport_declare">
   RTC::TimedLong m_in_long;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedLong> m_in_longIn;
   RTC::TimedDoubleSeq m_doubles;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedDoubleSeq> m_doublesIn;
   RTC::TimedString m_in_text;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedString> m_in_textIn;
   RTC::TimedPose2D m_in_pose;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedPose2D> m_in_poseIn;
   RTC::CameraImage m_image;
   /*!
-   * 
    */
   RTC::InPort<RTC::CameraImage> m_imageIn;
   // </rtc-template>
@@ -107,32 +102,26 @@ class DataPortsComp
   // <rtc-template block="outport_declare">
   RTC::TimedWString m_out_wide;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedWString> m_out_wideOut;
   RTC::TimedOctetSeq m_out_octets;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedOctetSeq> m_out_octetsOut;
   RTC::TimedBooleanSeq m_out_flags;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedBooleanSeq> m_out_flagsOut;
   RTC::TimedVector3D m_out_vector;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedVector3D> m_out_vectorOut;
   RTC::RangeData m_ranges;
   /*!
-   * 
    */
   RTC::OutPort<RTC::RangeData> m_rangesOut;
   RTC::PointCloud m_out_cloud;
   /*!
-   * 
    */
   RTC::OutPort<RTC::PointCloud> m_out_cloudOut;
   // </rtc-template>

@@ -80,14 +80,12 @@ class SampleComp
    */
   int m_gain;
   /*!
-   * 
    * - Name: mode
    * - DefaultValue: fast
    * - Constraint: (fast,slow)
    */
   std::string m_mode;
   /*!
-   * 
    * - Name: rate
    * - DefaultValue: 0.5
    */
@@ -107,7 +105,6 @@ class SampleComp
   // <rtc-template block="outport_declare">
   RTC::TimedDouble m_result;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedDouble> m_resultOut;
   // </rtc-template>

@@ -71,13 +71,11 @@ class ConfigCompTest
   // Configuration variables
   // <rtc-template block="config_declare">
   /*!
-   * 
    * - Name: label
    * - DefaultValue: hello world
    */
   std::string m_label;
   /*!
-   * 
    * - Name: gain
    * - DefaultValue: 1.5
    * - Unit: dB
@@ -85,63 +83,54 @@ class ConfigCompTest
    */
   double m_gainValue;
   /*!
-   * 
    * - Name: count
    * - DefaultValue: 3
    * - Constraint: 0<=x<=100
    */
   int m_count;
   /*!
-   * 
    * - Name: threshold
    * - DefaultValue: 10
    * - Constraint: x>0
    */
   long m_threshold;
   /*!
-   * 
    * - Name: limit
    * - DefaultValue: 5
    * - Constraint: x<8
    */
   short m_limit;
   /*!
-   * 
    * - Name: mode
    * - DefaultValue: fast
    * - Constraint: (fast,slow,idle)
    */
   std::string m_mode;
   /*!
-   * 
    * - Name: features
    * - DefaultValue: camera,lidar
    * - Constraint: (camera,lidar,sonar)
    */
   std::string m_features;
   /*!
-   * 
    * - Name: order
    * - DefaultValue: first,second
    * - Constraint: (first,second,third)
    */
   std::vector<std::string> m_order;
   /*!
-   * 
    * - Name: weights
    * - DefaultValue: 0.5,1.5
    * - Constraint: 0<=x<=1,0<=x<=2
    */
   std::vector<double> m_weights;
   /*!
-   * 
    * - Name: scale
    * - DefaultValue: 0.25
    * - Constraint: x>=0
    */
   float m_scale;
   /*!
-   * 
    * - Name: target
    * - DefaultValue: 42
    * - Constraint: 42
@@ -153,7 +142,6 @@ class ConfigCompTest
   // <rtc-template block="inport_declare">
   RTC::TimedDouble m_out;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedDouble> m_outIn;
   // </rtc-template>
@@ -162,7 +150,6 @@ class ConfigCompTest
   // <rtc-template block="outport_declare">
   RTC::TimedDouble m_in;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedDouble> m_inOut;
   // </rtc-template>

@@ -78,32 +78,26 @@ class DataPortsCompTest
   // <rtc-template block="inport_declare">
   RTC::TimedWString m_out_wide;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedWString> m_out_wideIn;
   RTC::TimedOctetSeq m_out_octets;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedOctetSeq> m_out_octetsIn;
   RTC::TimedBooleanSeq m_out_flags;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedBooleanSeq> m_out_flagsIn;
   RTC::TimedVector3D m_out_vector;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedVector3D> m_out_vectorIn;
   RTC::RangeData m_ranges;
   /*!
-   * 
    */
   RTC::InPort<RTC::RangeData> m_rangesIn;
   RTC::PointCloud m_out_cloud;
   /*!
-   * 
    */
   RTC::InPort<RTC::PointCloud> m_out_cloudIn;
   // </rtc-template>
@@ -112,27 +106,22 @@ class DataPortsCompTest
   // <rtc-template block="outport_declare">
   RTC::TimedLong m_in_long;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedLong> m_in_longOut;
   RTC::TimedDoubleSeq m_doubles;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedDoubleSeq> m_doublesOut;
   RTC::TimedString m_in_text;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedString> m_in_textOut;
   RTC::TimedPose2D m_in_pose;
   /*!
-   * 
    */
   RTC::OutPort<RTC::TimedPose2D> m_in_poseOut;
   RTC::CameraImage m_image;
   /*!
-   * 
    */
   RTC::OutPort<RTC::CameraImage> m_imageOut;
   // </rtc-template>

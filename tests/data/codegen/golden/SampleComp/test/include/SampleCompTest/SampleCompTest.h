@@ -80,14 +80,12 @@ class SampleCompTest
    */
   int m_gain;
   /*!
-   * 
    * - Name: mode
    * - DefaultValue: fast
    * - Constraint: (fast,slow)
    */
   std::string m_mode;
   /*!
-   * 
    * - Name: rate
    * - DefaultValue: 0.5
    */
@@ -98,7 +96,6 @@ class SampleCompTest
   // <rtc-template block="inport_declare">
   RTC::TimedDouble m_result;
   /*!
-   * 
    */
   RTC::InPort<RTC::TimedDouble> m_resultIn;
   // </rtc-template>
