@@ -26,6 +26,7 @@ struct GenOptions
     QString templates;
     FileDecision decision = FileDecision::Keep;
     int backups = 3;
+    bool testComponent = false;
 };
 
 void print(const Diagnostics &diagnostics, QTextStream &stream)
@@ -85,6 +86,8 @@ QString parseArguments(const QStringList &arguments, GenOptions *options)
             options->decision = FileDecision::Merge;
         } else if (arg == QLatin1String("--overwrite")) {
             options->decision = FileDecision::Overwrite;
+        } else if (arg == QLatin1String("--test-component")) {
+            options->testComponent = true;
         } else if (arg.startsWith(QLatin1Char('-'))) {
             return QStringLiteral("unknown option '%1'").arg(arg);
         } else if (options->profile.isEmpty()) {
@@ -123,7 +126,9 @@ QString GenCommand::usage() const
         "  --merge           refresh only the <rtc-template> regions of existing files\n"
         "  --overwrite       replace existing files that differ\n"
         "  --templates DIR   user template folder overriding the built-in templates\n"
-        "  --backups N       backups kept per file (default 3)\n\n"
+        "  --backups N       backups kept per file (default 3)\n"
+        "  --test-component  with --lang cpp, also write test/: the project of <N>Test, whose\n"
+        "                    ports mirror the component's, to exercise it by connecting the two\n\n"
         "Merged and overwritten files are first renamed to <file>YYYYMMDDHHMMSS.\n"
         "Exit codes: 0 generated, 1 problems (nothing written), 2 usage error.\n");
 }
@@ -148,6 +153,7 @@ int GenCommand::run(const QStringList &arguments, Streams streams)
                       {QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR)}, options.idlDirs));
     CodeGenerator generator(*loaded->rtc, library.model());
     generator.setUserTemplateFolder(options.templates);
+    generator.setTestComponent(options.testComponent);
     Diagnostics problems;
     const std::optional<QList<GeneratedFile>> files = generator.generate(options.languages, &problems);
     if (!files) {

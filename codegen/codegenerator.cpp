@@ -67,8 +67,15 @@ std::optional<QList<GeneratedFile>> CodeGenerator::generate(const QList<TargetLa
             renderSet(QStringLiteral("common"), *context, QString(), &files, &problems);
         renderSet(targetLanguageKey(languages.at(i)), *context, QString(), &files, &problems);
     }
-    if (m_testComponent && languages.contains(TargetLanguage::Cpp) && !hasErrors(problems))
+    if (m_testComponent && languages.contains(TargetLanguage::Cpp) && !hasErrors(problems)) {
         addTestComponent(languageNames, &files, &problems);
+    } else if (m_testComponent && !languages.contains(TargetLanguage::Cpp)) {
+        // Asking for it without C++ is no reason to refuse the project, but the user should
+        // learn why test/ stayed empty.
+        problems << Diagnostic::warning(
+            QString(), 0, 0,
+            QStringLiteral("the test component is generated for C++ only; no test/ written"));
+    }
     if (languages.isEmpty())
         problems << generationError(QString(), QStringLiteral("no target language chosen"));
     if (!hasErrors(problems)) {

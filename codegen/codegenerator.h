@@ -50,7 +50,8 @@ public:
     /// A folder whose `<language>/` sub-folders override the built-in templates.
     void setUserTemplateFolder(const QString &folder) { m_userTemplates = folder; }
 
-    /// Also generate the C++ test component under `test/` (off by default).
+    /// Also generate the C++ test component under `test/` (off by default). Without C++ among
+    /// the languages nothing is added and generate() reports a warning.
     void setTestComponent(bool on) { m_testComponent = on; }
 
     /// The profile of the test component of `profile`: named `<N>Test`, with every data port

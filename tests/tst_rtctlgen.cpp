@@ -2,6 +2,7 @@
 #include "rtctlrunner.h"
 
 #include <QDir>
+#include <QDirIterator>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
@@ -15,6 +16,8 @@ private slots:
     void usageErrors_data();
     void usageErrors();
     void generatesProject();
+    void testComponentWritesTestTree();
+    void testComponentNeedsCpp();
     void keepMergeOverwrite();
     void refusesBadNameWritingNothing();
     void missingInterfaceTypeIsAProblem();
@@ -83,11 +86,43 @@ void TestRtctlGen::generatesProject()
                              "idl/SampleService.idl"})
         QVERIFY2(QFile::exists(QDir(dir.path()).filePath(path)), path);
     QVERIFY(!QFile::exists(QDir(dir.path()).filePath("src/SampleComp.java")));
+    QVERIFY(!QFile::exists(QDir(dir.path()).filePath("test"))); // only on request
     QVERIFY(result.out.contains(QStringLiteral("created src/SampleComp.cpp")));
     QVERIFY(QFileInfo(QDir(dir.path()).filePath("idlcompile.sh")).isExecutable());
     // The RTC.xml written with the project reads back.
     const Result check = rtctl({"profile", "check", QDir(dir.path()).filePath("RTC.xml")});
     QCOMPARE(check.code, 0);
+}
+
+void TestRtctlGen::testComponentWritesTestTree()
+{
+    QTemporaryDir dir;
+    const Result result = rtctl({"gen", fixture(), "--lang", "cpp", "-o", dir.path(), "--idl-dir",
+                                 idlDir(), "--test-component"});
+    QVERIFY2(result.code == 0, qPrintable(result.err));
+    QVERIFY(result.out.contains(QStringLiteral("created test/src/SampleCompTest.cpp")));
+    // The test tree is the one the golden files hold, file for file.
+    const QDir golden(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/golden/SampleComp/test"));
+    QDirIterator it(golden.path(), QDir::Files, QDirIterator::Subdirectories);
+    int compared = 0;
+    while (it.hasNext()) {
+        const QString relative = golden.relativeFilePath(it.next());
+        QCOMPARE(readAll(QDir(dir.path()).filePath("test/" + relative)), readAll(it.filePath()));
+        ++compared;
+    }
+    QCOMPARE(compared, 9);
+    QVERIFY(QFile::exists(QDir(dir.path()).filePath("src/SampleComp.cpp")));
+}
+
+void TestRtctlGen::testComponentNeedsCpp()
+{
+    QTemporaryDir dir;
+    const Result result = rtctl({"gen", fixture(), "--lang", "python", "-o", dir.path(),
+                                 "--idl-dir", idlDir(), "--test-component"});
+    QCOMPARE(result.code, 0);
+    QVERIFY2(result.err.contains(QStringLiteral("C++ only")), qPrintable(result.err));
+    QVERIFY(QFile::exists(QDir(dir.path()).filePath("SampleComp.py")));
+    QVERIFY(!QFile::exists(QDir(dir.path()).filePath("test")));
 }
 
 void TestRtctlGen::keepMergeOverwrite()
