@@ -8,6 +8,7 @@
 
 #include <Manager.hh>
 
+#include <chrono>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -122,6 +123,8 @@ private:
     RTM::Manager_ptr spawnSlave(const std::string &host, int port, const std::string &name, std::string *error);
     pid_t startSlaveProcess(const std::string &address, const std::string &name, const std::string &master);
     RTM::Manager_ptr waitForSlave(pid_t pid, const std::string &address);
+    bool joinConfirmed(RTM::Manager_ptr slave, std::chrono::steady_clock::time_point deadline);
+    std::string requestJoin(RTM::Manager_ptr master, bool *retry);
     void dropSlave(RTM::Manager_ptr manager);
     void joinMaster();
     void leaveMaster();

@@ -7,9 +7,11 @@
 #include <omniORB4/omniORB.h>
 
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <iostream>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 namespace Runtime {
@@ -160,9 +162,16 @@ RTM::Manager_ptr Manager::waitForSlave(pid_t pid, const std::string &address)
                           + std::chrono::milliseconds(std::stol(m_config.value("manager.slave_start_timeout", "10000")));
     std::unique_lock lock(m_mutex);
     while (!m_stopping) {
+        RTM::Manager_var found;
         for (const auto &slave : m_slaves) {
             if (slave->address == address || slave->pid == pid)
-                return RTM::Manager::_duplicate(slave->reference);
+                found = RTM::Manager::_duplicate(slave->reference);
+        }
+        if (!CORBA::is_nil(found)) {
+            lock.unlock();
+            if (joinConfirmed(found, deadline))
+                return found._retn();
+            return RTM::Manager::_nil();
         }
         // Woken by add_slave_manager; the short bound notices a child that died on start.
         if (m_slavesChanged.wait_for(lock, std::chrono::milliseconds(100)) == std::cv_status::timeout) {
@@ -172,6 +181,25 @@ RTM::Manager_ptr Manager::waitForSlave(pid_t pid, const std::string &address)
         }
     }
     return RTM::Manager::_nil();
+}
+
+bool Manager::joinConfirmed(RTM::Manager_ptr slave, std::chrono::steady_clock::time_point deadline)
+{
+    // add_slave_manager registers the slave before its reply is on the way back. Until the slave
+    // has that reply it does not know it joined, and a master going down in between (a test or a
+    // benchmark ending right after create_component) left it reporting a failed join. The slave
+    // lists its master only once the reply arrived, so wait for that.
+    while (std::chrono::steady_clock::now() < deadline) {
+        try {
+            RTM::ManagerList_var masters = slave->get_master_managers();
+            if (masters->length() > 0)
+                return true;
+        } catch (const CORBA::Exception &) {
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
 }
 
 bool Manager::addSlave(RTM::Manager_ptr manager)
@@ -184,7 +212,7 @@ bool Manager::addSlave(RTM::Manager_ptr manager)
     omniORB::setClientCallTimeout(slave->reference,
                                   CORBA::ULong(std::stoul("0" + m_config.value("manager.slave_call_timeout", "2000"))));
     try {
-        RTM::ManagerProfile_var profile = manager->get_profile();
+        RTM::ManagerProfile_var profile = slave->reference->get_profile();
         slave->name = nvString(profile->properties, "instance_name");
         slave->address = nvString(profile->properties, "address");
         slave->pid = pid_t(std::stol("0" + nvString(profile->properties, "pid")));
@@ -272,16 +300,49 @@ void Manager::joinMaster()
     const std::string master = m_config.value("corba.master_manager");
     if (master.empty())
         return;
+    RTM::Manager_var manager;
     try {
         CORBA::Object_var object = m_orb->string_to_object(("corbaloc:iiop:" + master + "/manager").c_str());
         // Unchecked: the first real call tells whether it is there, without an extra round trip.
-        RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
-        if (CORBA::is_nil(manager))
-            return;
-        addMaster(manager);
-        manager->add_slave_manager(m_self);
+        manager = RTM::Manager::_unchecked_narrow(object);
     } catch (const CORBA::Exception &e) {
         std::cerr << "rtmanager: cannot join master " << master << ": " << describeException(e) << std::endl;
+        return;
+    }
+    // A slave we were started for is awaited by its master, which may be busy (many slaves joining
+    // at once, slow callbacks under load): keep asking while it lives, within the start timeout.
+    const pid_t parent = pid_t(std::stol("0" + m_config.value("manager.spawned_by")));
+    const auto deadline = std::chrono::steady_clock::now()
+                          + std::chrono::milliseconds(std::stol(m_config.value("manager.slave_start_timeout", "10000")));
+    std::string problem;
+    for (;;) {
+        bool retry = false;
+        problem = requestJoin(manager, &retry);
+        if (problem.empty()) {
+            // Only now is this manager the master's slave: waitForSlave() on the master watches for it.
+            addMaster(manager);
+            return;
+        }
+        const bool parentAlive = parent > 0 && getppid() == parent;
+        if (!(retry || parentAlive) || std::chrono::steady_clock::now() > deadline)
+            break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    std::cerr << "rtmanager: cannot join master " << master << ": " << problem << std::endl;
+}
+
+std::string Manager::requestJoin(RTM::Manager_ptr master, bool *retry)
+{
+    try {
+        if (master->add_slave_manager(m_self) == RTC::RTC_OK)
+            return {};
+        // The master could not call this manager back in time; it may manage on a second try.
+        *retry = true;
+        return "the master could not reach this manager back";
+    } catch (const CORBA::Exception &e) {
+        // Nobody listening means no master; a timeout or a broken connection means a busy one.
+        *retry = CORBA::TIMEOUT::_downcast(&e) || CORBA::COMM_FAILURE::_downcast(&e);
+        return describeException(e);
     }
 }
 
