@@ -36,6 +36,8 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     QDockWidget *configuration
         = addDock(window, m_configuration, tr("Configuration"), QStringLiteral("configurationDock"),
                   Qt::BottomDockWidgetArea);
+    // Attach targets and participants' paths: the components the Name Service view knows.
+    m_contexts->setComponentSource(m_nameService->model());
     QDockWidget *contexts
         = addDock(window, m_contexts, tr("Execution Contexts"),
                   QStringLiteral("executionContextDock"), Qt::BottomDockWidgetArea);

@@ -52,6 +52,69 @@ ExecutionContextInfo contextInfo(RTC::RTObject_ptr rtc, RTC::ExecutionContext_pt
     return info;
 }
 
+RTC::ExecutionContext_ptr contextAt(const QString &contextIor, const QString &path)
+{
+    CORBA::Object_var object = toObject(contextIor, path);
+    if (CORBA::is_nil(object))
+        throw Error(Error::Kind::BadPath,
+                    QStringLiteral("%1: no execution context reference given").arg(path));
+    return RTC::ExecutionContext::_unchecked_narrow(object.in());
+}
+
+bool listed(const RTC::ExecutionContextList &list, RTC::ExecutionContext_ptr ec)
+{
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        if (list[i]->_is_equivalent(ec))
+            return true;
+    }
+    return false;
+}
+
+bool owns(RTC::RTObject_ptr rtc, RTC::ExecutionContext_ptr ec)
+{
+    RTC::ExecutionContextList_var owned = rtc->get_owned_contexts();
+    return listed(owned.in(), ec);
+}
+
+bool participates(RTC::RTObject_ptr rtc, RTC::ExecutionContext_ptr ec)
+{
+    RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
+    return listed(participating.in(), ec);
+}
+
+// A member that does not answer is still listed, by reference, so the view can say so.
+ContextMember member(RTC::RTObject_ptr rtc)
+{
+    ContextMember result;
+    if (CORBA::is_nil(rtc))
+        return result;
+    result.ior = toIor(rtc);
+    try {
+        RTC::ComponentProfile_var profile = rtc->get_component_profile();
+        result.name = toQString(profile->instance_name.in());
+    } catch (const CORBA::Exception &) {
+        // Left unnamed: the view shows it as not answering.
+    }
+    return result;
+}
+
+// Owner and participants come from ExecutionContextService::get_profile; a plain
+// ExecutionContext has no profile and leaves both empty.
+void readMembers(ExecutionContextInfo &info, RTC::ExecutionContext_ptr ec)
+{
+    RTC::ExecutionContextService_var service = RTC::ExecutionContextService::_narrow(ec);
+    if (CORBA::is_nil(service))
+        return;
+    RTC::ExecutionContextProfile_var profile = service->get_profile();
+    info.owner = member(profile->owner.in());
+    for (CORBA::ULong i = 0; i < profile->participants.length(); ++i) {
+        RTC::RTObject_ptr participant = profile->participants[i].in();
+        if (!CORBA::is_nil(profile->owner.in()) && participant->_is_equivalent(profile->owner.in()))
+            continue;
+        info.participants.push_back(member(participant));
+    }
+}
+
 } // namespace
 
 ComponentProxy::ComponentProxy(QString ior, QString path)
@@ -91,18 +154,71 @@ PortInfo ComponentProxy::port(const QString &name) const
     throw Error(Error::Kind::NotFound, QStringLiteral("%1: no port named '%2'").arg(m_path, name));
 }
 
-std::vector<ExecutionContextInfo> ComponentProxy::executionContexts() const
+std::vector<ExecutionContextInfo> ComponentProxy::executionContexts(ContextDetail detail) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     return call(m_path, [&] {
         std::vector<ExecutionContextInfo> contexts;
+        const auto add = [&](RTC::ExecutionContext_ptr ec, bool owned) {
+            contexts.push_back(contextInfo(rtc.in(), ec, owned));
+            if (detail == ContextDetail::Members)
+                readMembers(contexts.back(), ec);
+        };
         RTC::ExecutionContextList_var owned = rtc->get_owned_contexts();
         for (CORBA::ULong i = 0; i < owned->length(); ++i)
-            contexts.push_back(contextInfo(rtc.in(), owned[i].in(), true));
+            add(owned[i].in(), true);
         RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
         for (CORBA::ULong i = 0; i < participating->length(); ++i)
-            contexts.push_back(contextInfo(rtc.in(), participating[i].in(), false));
+            add(participating[i].in(), false);
         return contexts;
+    });
+}
+
+void ComponentProxy::attachContext(const QString &contextIor) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = contextAt(contextIor, m_path);
+    call(m_path, [&] {
+        if (owns(rtc.in(), ec.in()))
+            throw Error(Error::Kind::Refused,
+                        QStringLiteral("%1: owns this execution context already").arg(m_path));
+        if (participates(rtc.in(), ec.in()))
+            throw Error(
+                Error::Kind::Refused,
+                QStringLiteral("%1: takes part in this execution context already").arg(m_path));
+    });
+    checkReturnCode(call(m_path, [&] { return int(ec->add_component(rtc.in())); }), m_path,
+                    QStringLiteral("add_component"));
+    // OpenRTM-aist's contexts call attach_context from add_component; others leave it to the
+    // tool, and without it the component would not list the context.
+    call(m_path, [&] {
+        if (!participates(rtc.in(), ec.in()))
+            rtc->attach_context(ec.in());
+    });
+}
+
+void ComponentProxy::detachContext(const QString &contextIor) const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    RTC::ExecutionContext_var ec = contextAt(contextIor, m_path);
+    call(m_path, [&] {
+        if (owns(rtc.in(), ec.in()))
+            throw Error(
+                Error::Kind::Refused,
+                QStringLiteral("%1: cannot leave the execution context it owns").arg(m_path));
+        if (!participates(rtc.in(), ec.in()))
+            throw Error(
+                Error::Kind::NotFound,
+                QStringLiteral("%1: does not take part in this execution context").arg(m_path));
+    });
+    checkReturnCode(call(m_path, [&] { return int(ec->remove_component(rtc.in())); }), m_path,
+                    QStringLiteral("remove_component"));
+    // As with attaching: a context that did not call detach_context leaves it to the tool.
+    call(m_path, [&] {
+        if (!participates(rtc.in(), ec.in()))
+            return;
+        checkReturnCode(int(rtc->detach_context(rtc->get_context_handle(ec.in()))), m_path,
+                        QStringLiteral("detach_context"));
     });
 }
 
@@ -213,8 +329,9 @@ void ComponentProxy::setConfigurationSetValues(const ConfigurationSet &set) cons
     const bool ok = call(
         m_path, [&] { return conf->set_configuration_set_values(toSdoConfigurationSet(set)); });
     if (!ok)
-        throw Error(Error::Kind::Refused,
-                    QStringLiteral("%1: configuration set '%2' was not written").arg(m_path, set.id));
+        throw Error(
+            Error::Kind::Refused,
+            QStringLiteral("%1: configuration set '%2' was not written").arg(m_path, set.id));
 }
 
 void ComponentProxy::removeConfigurationSet(const QString &id) const

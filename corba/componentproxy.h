@@ -31,7 +31,24 @@ public:
     /// The port named `name` (short `out` or full `Comp0.out`); NotFound when there is none.
     PortInfo port(const QString &name) const;
 
-    std::vector<ExecutionContextInfo> executionContexts() const;
+    /// How much executionContexts() reads: Members adds each context's owner and participants
+    /// (one more call per context and one per member, so the pollers stay with Basic).
+    enum class ContextDetail { Basic, Members };
+    std::vector<ExecutionContextInfo> executionContexts(ContextDetail detail
+                                                        = ContextDetail::Basic) const;
+    /**
+     * Makes this component take part in the execution context `contextIor` (usually owned by
+     * another component): ExecutionContext::add_component, then the component's attach_context
+     * when the context did not attach it itself (OpenRTM-aist's contexts do). Refused when the
+     * component owns the context or already takes part in it.
+     */
+    void attachContext(const QString &contextIor) const;
+    /**
+     * Takes this component out of the execution context `contextIor`: remove_component, then
+     * detach_context when the component still lists it. Refused for an owned context and by the
+     * context while the component is active in it; NotFound when the component is not taking part.
+     */
+    void detachContext(const QString &contextIor) const;
     /// The component's state in the context at `ecIndex`.
     LifeCycleState state(int ecIndex = 0) const;
     void activate(int ecIndex = 0) const;

@@ -74,6 +74,13 @@ struct ComponentInfo
     std::vector<PortInfo> ports;
 };
 
+/// A component taking part in an execution context, as its ExecutionContextProfile names it.
+struct ContextMember
+{
+    QString name; ///< instance name; empty when the component did not answer
+    QString ior;
+};
+
 /// One execution context as seen from one component: owned ones first, then participating.
 struct ExecutionContextInfo
 {
@@ -84,6 +91,10 @@ struct ExecutionContextInfo
     bool running = false;
     LifeCycleState state = LifeCycleState::Unknown; ///< the component's state in this context
     QString ior;
+    /// The owning component and the others taking part (owner not repeated); filled only when
+    /// asked for (ComponentProxy::ContextDetail::Members) and the context has a profile.
+    ContextMember owner;
+    std::vector<ContextMember> participants;
 };
 
 /// SDOPackage::ConfigurationSet with string values.

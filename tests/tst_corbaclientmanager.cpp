@@ -26,6 +26,7 @@ private slots:
     void browsesTheManagersNames();
     void readsProfilesAndPorts();
     void activatesInTheRealExecutionContext();
+    void attachesToAnotherComponentsContext();
     void connectsDataPortsWithNegotiation();
     void connectsServicePorts();
     void editsConfiguration();
@@ -132,6 +133,54 @@ void TestCorbaClientManager::activatesInTheRealExecutionContext()
     QTRY_COMPARE(rtc.state(), LifeCycleState::Inactive);
     rtc.setRate(200);
     QCOMPARE(rtc.executionContexts().at(0).rate, 200.0);
+}
+
+static QStringList memberNames(const std::vector<ContextMember> &members)
+{
+    QStringList names;
+    for (const ContextMember &member : members)
+        names.append(member.name);
+    return names;
+}
+
+void TestCorbaClientManager::attachesToAnotherComponentsContext()
+{
+    const ComponentProxy owner = component("ConsoleIn0");
+    const ComponentProxy guest = component("ConsoleOut0");
+    const QString context = owner.executionContexts().at(0).ior;
+    guest.attachContext(context);
+
+    const auto guestContexts = guest.executionContexts(ComponentProxy::ContextDetail::Members);
+    QCOMPARE(guestContexts.size(), size_t(2));
+    QVERIFY(!guestContexts[1].owned);
+    QCOMPARE(guestContexts[1].owner.name, QString("ConsoleIn0"));
+    QCOMPARE(memberNames(guestContexts[1].participants), QStringList {"ConsoleOut0"});
+    QCOMPARE(guestContexts[0].owner.name, QString("ConsoleOut0"));
+    QVERIFY(guestContexts[0].participants.empty());
+    const auto ownerContexts = owner.executionContexts(ComponentProxy::ContextDetail::Members);
+    QCOMPARE(ownerContexts.at(0).owner.name, QString("ConsoleIn0"));
+    QCOMPARE(ownerContexts.at(0).owner.ior, owner.ior());
+    QCOMPARE(memberNames(ownerContexts.at(0).participants), QStringList {"ConsoleOut0"});
+    QCOMPARE(ownerContexts.at(0).participants.at(0).ior, guest.ior());
+    QVERIFY(guest.executionContexts().at(1).owner.ior.isEmpty()); // Basic reads no members
+
+    guest.activate(1);
+    QTRY_COMPARE(guest.state(1), LifeCycleState::Active);
+    QCOMPARE(guest.state(0), LifeCycleState::Inactive);
+    QCOMPARE(kindOf([&] { guest.detachContext(context); }), Error::Kind::Refused);
+    guest.deactivate(1);
+    QTRY_COMPARE(guest.state(1), LifeCycleState::Inactive);
+    QCOMPARE(kindOf([&] { guest.attachContext(context); }), Error::Kind::Refused);
+    QCOMPARE(kindOf([&] { owner.attachContext(context); }), Error::Kind::Refused);
+    QCOMPARE(kindOf([&] { owner.detachContext(context); }), Error::Kind::Refused);
+
+    guest.detachContext(context);
+    QCOMPARE(guest.executionContexts().size(), size_t(1));
+    QVERIFY(owner.executionContexts(ComponentProxy::ContextDetail::Members)
+                .at(0)
+                .participants.empty());
+    QCOMPARE(kindOf([&] { guest.detachContext(context); }), Error::Kind::NotFound);
+    QCOMPARE(kindOf([&] { guest.attachContext("no reference"); }), Error::Kind::BadPath);
 }
 
 void TestCorbaClientManager::connectsDataPortsWithNegotiation()

@@ -26,7 +26,7 @@ int ExecutionContextModel::rowCount(const QModelIndex &parent) const
 
 int ExecutionContextModel::columnCount(const QModelIndex &parent) const
 {
-    return parent.isValid() ? 0 : StateColumn + 1;
+    return parent.isValid() ? 0 : ParticipantsColumn + 1;
 }
 
 QVariant ExecutionContextModel::data(const QModelIndex &index, int role) const
@@ -51,8 +51,21 @@ QVariant ExecutionContextModel::data(const QModelIndex &index, int role) const
         return ec.rate;
     case StateColumn:
         return Corba::stateName(ec.state);
+    case OwnerColumn:
+        return ec.owner.ior.isEmpty() ? QString() : memberName(ec.owner);
+    case ParticipantsColumn: {
+        QStringList names;
+        for (const Corba::ContextMember &member : ec.participants)
+            names.append(memberName(member));
+        return names.join(QLatin1String(", "));
+    }
     }
     return {};
+}
+
+QString ExecutionContextModel::memberName(const Corba::ContextMember &member)
+{
+    return member.name.isEmpty() ? tr("(not answering)") : member.name;
 }
 
 QVariant ExecutionContextModel::headerData(int section, Qt::Orientation orientation, int role) const
@@ -60,9 +73,10 @@ QVariant ExecutionContextModel::headerData(int section, Qt::Orientation orientat
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
         return {};
     static const char *const titles[]
-        = {QT_TR_NOOP("Id"),      QT_TR_NOOP("Relation"),  QT_TR_NOOP("Kind"),
-           QT_TR_NOOP("Running"), QT_TR_NOOP("Rate (Hz)"), QT_TR_NOOP("Component State")};
-    return section >= 0 && section <= StateColumn ? tr(titles[section]) : QVariant();
+        = {QT_TR_NOOP("Id"),      QT_TR_NOOP("Relation"),    QT_TR_NOOP("Kind"),
+           QT_TR_NOOP("Running"), QT_TR_NOOP("Rate (Hz)"),   QT_TR_NOOP("Component State"),
+           QT_TR_NOOP("Owner"),   QT_TR_NOOP("Participants")};
+    return section >= 0 && section <= ParticipantsColumn ? tr(titles[section]) : QVariant();
 }
 
 } // namespace SystemEditor

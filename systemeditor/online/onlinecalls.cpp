@@ -113,4 +113,20 @@ void perform(RemoteAction action, const QString &path, const QString &ior)
     }
 }
 
+ExecutionContexts fetchContexts(const QString &path, const QString &ior)
+{
+    return Corba::ComponentProxy(ior, path).executionContexts(
+        Corba::ComponentProxy::ContextDetail::Members);
+}
+
+void attachContext(const QString &path, const QString &ior, const QString &contextIor)
+{
+    Corba::ComponentProxy(ior, path).attachContext(contextIor);
+}
+
+void detachContext(const QString &path, const QString &ior, const QString &contextIor)
+{
+    Corba::ComponentProxy(ior, path).detachContext(contextIor);
+}
+
 } // namespace SystemEditor::OnlineCalls

@@ -8,10 +8,14 @@
 #include <QMetaType>
 #include <QString>
 
+#include <vector>
+
 namespace SystemEditor {
 
 /// Component states by path.
 using ComponentStates = QHash<QString, Corba::LifeCycleState>;
+/// The execution contexts of one component, owned ones first.
+using ExecutionContexts = std::vector<Corba::ExecutionContextInfo>;
 
 /// One name server as the worker saw it: its tree and the state of every component in it.
 struct ServerSnapshot
@@ -37,6 +41,12 @@ ServerSnapshot fetchServer(const QString &server);
 QHash<QString, Corba::LifeCycleState> fetchStates(const QHash<QString, QString> &iorsByPath);
 /// Performs `action` on the object at `path` with reference `ior`.
 void perform(RemoteAction action, const QString &path, const QString &ior);
+/// The execution contexts of the component at `path` with their owners and participants.
+ExecutionContexts fetchContexts(const QString &path, const QString &ior);
+/// Makes the component at `path` take part in the execution context `contextIor`.
+void attachContext(const QString &path, const QString &ior, const QString &contextIor);
+/// Takes the component at `path` out of the execution context `contextIor`.
+void detachContext(const QString &path, const QString &ior, const QString &contextIor);
 
 } // namespace OnlineCalls
 
@@ -44,3 +54,4 @@ void perform(RemoteAction action, const QString &path, const QString &ior);
 
 Q_DECLARE_METATYPE(SystemEditor::ServerSnapshot)
 Q_DECLARE_METATYPE(SystemEditor::ComponentStates)
+Q_DECLARE_METATYPE(SystemEditor::ExecutionContexts)
