@@ -47,7 +47,7 @@ RtsDataPortConnector makeDataConnector(const SystemModel &model, const Connector
     connector.source = targetPort(model, source);
     connector.target = targetPort(model, target);
     connector.visible = QStringLiteral("true");
-    settings.applyTo(connector);
+    settings.applyTo(connector, &model);
     return connector;
 }
 
@@ -62,6 +62,15 @@ RtsServicePortConnector makeServiceConnector(const SystemModel &model, const Con
     connector.source = targetPort(model, source);
     connector.target = targetPort(model, target);
     connector.visible = QStringLiteral("true");
+    return connector;
+}
+
+RtsServicePortConnector makeServiceConnector(const SystemModel &model, const ConnectorEnd &source,
+                                             const ConnectorEnd &target,
+                                             const ServiceConnectorSettings &settings)
+{
+    RtsServicePortConnector connector = makeServiceConnector(model, source, target, settings.name);
+    settings.applyTo(connector);
     return connector;
 }
 
@@ -172,6 +181,18 @@ EditConnectorCommand *EditConnectorCommand::fromSettings(SystemModel *model,
     if (!current)
         return nullptr;
     RtsDataPortConnector after = *current;
+    settings.applyTo(after, model);
+    return new EditConnectorCommand(model, after);
+}
+
+EditConnectorCommand *EditConnectorCommand::fromSettings(SystemModel *model,
+                                                         const QString &connectorId,
+                                                         const ServiceConnectorSettings &settings)
+{
+    const RtsServicePortConnector *current = model->serviceConnector(connectorId);
+    if (!current)
+        return nullptr;
+    RtsServicePortConnector after = *current;
     settings.applyTo(after);
     return new EditConnectorCommand(model, after);
 }

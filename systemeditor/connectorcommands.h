@@ -2,6 +2,7 @@
 #pragma once
 
 #include "connectorsettings.h"
+#include "serviceconnectorsettings.h"
 #include "systemmodel.h"
 
 #include <QCoreApplication>
@@ -16,7 +17,7 @@ QString newConnectorId();
 /**
  * A data-port connector from `source` (OutPort) to `target` (InPort) of the model, with a new
  * id, the port ends (portName and instanceName; componentId from the components) and
- * `settings` applied.
+ * `settings` applied (an InToOut connect direction makes the InPort the source end).
  */
 Profile::RtsDataPortConnector makeDataConnector(const SystemModel &model,
                                                 const ConnectorEnd &source,
@@ -28,6 +29,11 @@ Profile::RtsServicePortConnector makeServiceConnector(const SystemModel &model,
                                                       const ConnectorEnd &source,
                                                       const ConnectorEnd &target,
                                                       const QString &name = {});
+/// A service-port connector with a new id and `settings` (name, interface mapping) applied.
+Profile::RtsServicePortConnector makeServiceConnector(const SystemModel &model,
+                                                      const ConnectorEnd &source,
+                                                      const ConnectorEnd &target,
+                                                      const ServiceConnectorSettings &settings);
 
 /// Adds a data or service connector (the connector is made by the functions above).
 class ConnectCommand : public QUndoCommand
@@ -86,6 +92,9 @@ public:
     /// Applies `settings` to the data connector `connectorId`.
     static EditConnectorCommand *fromSettings(SystemModel *model, const QString &connectorId,
                                               const ConnectorSettings &settings);
+    /// Applies `settings` to the service connector `connectorId`; null when there is none.
+    static EditConnectorCommand *fromSettings(SystemModel *model, const QString &connectorId,
+                                              const ServiceConnectorSettings &settings);
 
     void redo() override;
     void undo() override;

@@ -5,6 +5,8 @@
 
 #include <QSet>
 
+#include <algorithm>
+
 #include <tuple>
 
 namespace SystemEditor {
@@ -85,6 +87,18 @@ QString shortPortName(const QString &portName)
     return dot < 0 ? portName : portName.mid(dot + 1);
 }
 
+/// Turns the connector around: the other port becomes the source; the route is kept.
+void swapEnds(RtsDataPortConnector &connector)
+{
+    std::swap(connector.source, connector.target);
+    const QString bends = property(connector.properties, SystemModel::BendPointProperty);
+    if (std::optional<QList<QPointF>> points = bendPointsFromText(bends); points && !bends.isEmpty()) {
+        std::reverse(points->begin(), points->end());
+        setRtsProperty(connector.properties, SystemModel::BendPointProperty,
+                       bendPointsToText(*points));
+    }
+}
+
 } // namespace
 
 bool BufferSettings::operator==(const BufferSettings &other) const
@@ -110,7 +124,30 @@ ConnectorSettings ConnectorSettings::defaults(const QString &outPort, const QStr
     return s;
 }
 
-ConnectorSettings ConnectorSettings::fromConnector(const RtsDataPortConnector &connector)
+ConnectDirection ConnectorSettings::directionOf(const RtsDataPortConnector &connector,
+                                               const SystemModel *model)
+{
+    if (!model)
+        return ConnectDirection::OutToIn;
+    const auto kindOf = [model](const RtsTargetPort &end) {
+        const std::optional<PortInfo> port = model->port(end.instanceName, end.portName);
+        return port ? port->kind : PortKind::Unknown;
+    };
+    // Either end tells: a port of unknown kind leaves the decision to the other one.
+    const bool reversed = kindOf(connector.source) == PortKind::DataIn
+        || kindOf(connector.target) == PortKind::DataOut;
+    return reversed ? ConnectDirection::InToOut : ConnectDirection::OutToIn;
+}
+
+QString ConnectorSettings::directionText(ConnectDirection direction)
+{
+    return direction == ConnectDirection::OutToIn
+        ? tr("OutPort \u2192 InPort (the OutPort connects)")
+        : tr("InPort \u2192 OutPort (the InPort connects)");
+}
+
+ConnectorSettings ConnectorSettings::fromConnector(const RtsDataPortConnector &connector,
+                                                   const SystemModel *model)
 {
     const RtsProperties &p = connector.properties;
     ConnectorSettings s;
@@ -125,6 +162,7 @@ ConnectorSettings ConnectorSettings::fromConnector(const RtsDataPortConnector &c
     s.pushPolicy = property(p, PushPolicyKey);
     s.skipCount = property(p, SkipCountKey);
     s.timestampPolicy = property(p, TimestampPolicyKey);
+    s.connectDirection = directionOf(connector, model);
     s.marshalingType = property(p, OutMarshalingKey);
     if (s.marshalingType.isEmpty())
         s.marshalingType = property(p, InMarshalingKey);
@@ -138,8 +176,10 @@ ConnectorSettings ConnectorSettings::fromConnector(const RtsDataPortConnector &c
     return s;
 }
 
-void ConnectorSettings::applyTo(RtsDataPortConnector &connector) const
+void ConnectorSettings::applyTo(RtsDataPortConnector &connector, const SystemModel *model) const
 {
+    if (directionOf(connector, model) != connectDirection)
+        swapEnds(connector);
     connector.name = name;
     connector.dataType = dataType;
     connector.interfaceType = interfaceType;
@@ -302,12 +342,12 @@ QStringList ConnectorSettings::emptyPolicies()
 bool ConnectorSettings::operator==(const ConnectorSettings &other) const
 {
     return std::tie(name, dataType, interfaceType, marshalingType, dataflowType, subscriptionType,
-                    pushRate, pushPolicy, skipCount, timestampPolicy, outBuffer, inBuffer,
-                    freeProperties)
+                    pushRate, pushPolicy, skipCount, timestampPolicy, connectDirection, outBuffer,
+                    inBuffer, freeProperties)
         == std::tie(other.name, other.dataType, other.interfaceType, other.marshalingType,
                     other.dataflowType, other.subscriptionType, other.pushRate, other.pushPolicy,
-                    other.skipCount, other.timestampPolicy, other.outBuffer, other.inBuffer,
-                    other.freeProperties);
+                    other.skipCount, other.timestampPolicy, other.connectDirection,
+                    other.outBuffer, other.inBuffer, other.freeProperties);
 }
 
 } // namespace SystemEditor

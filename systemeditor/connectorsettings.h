@@ -10,6 +10,15 @@
 
 namespace SystemEditor {
 
+class SystemModel;
+
+/**
+ * Which port of a data connector calls `connect()`. A system file records it as the connector's
+ * source end (rtshell's rtresurrect and the restore engine connect from the source port), so
+ * InToOut means the InPort is `sourceDataPort` and the OutPort `targetDataPort`.
+ */
+enum class ConnectDirection { OutToIn, InToOut };
+
 /// The buffer settings of one side (`dataport.outport.buffer.*` or `dataport.inport.buffer.*`).
 /// Empty text means "not set" (the component's default applies; nothing is written).
 struct BufferSettings
@@ -51,6 +60,7 @@ public:
     QString pushPolicy; ///< new/periodic only: all | fifo | skip | new
     QString skipCount; ///< push policy skip: integer ≥ 0
     QString timestampPolicy; ///< on_write | on_send | on_received | on_read
+    ConnectDirection connectDirection = ConnectDirection::OutToIn;
     BufferSettings outBuffer;
     BufferSettings inBuffer;
     QList<QPair<QString, QString>> freeProperties; ///< name/value, names unique
@@ -60,9 +70,20 @@ public:
     /// 1000 Hz, all, skip 0, on_write; buffers unset.
     static ConnectorSettings defaults(const QString &outPort, const QString &inPort,
                                       const QString &dataType);
-    static ConnectorSettings fromConnector(const Profile::RtsDataPortConnector &connector);
-    /// Writes the settings into `connector` (ends, id and unrelated content untouched).
-    void applyTo(Profile::RtsDataPortConnector &connector) const;
+    /// Reads a connector; the connect direction needs `model` to tell the InPort end (without
+    /// one the ends are taken as out → in).
+    static ConnectorSettings fromConnector(const Profile::RtsDataPortConnector &connector,
+                                           const SystemModel *model = nullptr);
+    /**
+     * Writes the settings into `connector` (id and unrelated content untouched). When the connect
+     * direction differs from the connector's (judged with `model` as in fromConnector()), the
+     * ends swap and the bend points reverse so that the drawn route stays the same.
+     */
+    void applyTo(Profile::RtsDataPortConnector &connector,
+                 const SystemModel *model = nullptr) const;
+    /// The direction the connector's ends record (see fromConnector()).
+    static ConnectDirection directionOf(const Profile::RtsDataPortConnector &connector,
+                                        const SystemModel *model);
 
     // The reference's enabling rules.
     bool isSubscriptionTypeEnabled() const;
@@ -83,6 +104,8 @@ public:
     static QStringList timestampPolicies();
     static QStringList fullPolicies();
     static QStringList emptyPolicies();
+    /// A short text for a direction ("OutPort → InPort").
+    static QString directionText(ConnectDirection direction);
 
     bool operator==(const ConnectorSettings &other) const;
     bool operator!=(const ConnectorSettings &other) const { return !(*this == other); }

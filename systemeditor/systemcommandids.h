@@ -9,6 +9,7 @@ enum CommandId : int {
     ResizeComponentCommandId,
     BendPointsCommandId,
     SystemInfoCommandId,
+    ConfigurationValueCommandId,
 };
 
 } // namespace SystemEditor

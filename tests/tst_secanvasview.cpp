@@ -203,11 +203,14 @@ void TestSeCanvasView::serviceDragAsksNameAndConnects()
 {
     QStringList proposed;
     QList<QList<InterfaceInfo>> shown;
-    m_view->setServiceConnectorEditor([&](const QString &name, const QList<InterfaceInfo> &source,
-                                          const QList<InterfaceInfo> &target) {
-        proposed << name;
-        shown << source << target;
-        return std::optional<QString>(QStringLiteral("control_link"));
+    m_view->setServiceConnectorEditor([&](const ServiceConnectorSettings &settings,
+                                          const ServicePortSide &source,
+                                          const ServicePortSide &target) {
+        proposed << settings.name;
+        shown << source.interfaces << target.interfaces;
+        ServiceConnectorSettings answer = settings;
+        answer.name = QStringLiteral("control_link");
+        return std::optional<ServiceConnectorSettings>(answer);
     });
     dragOnViewport(portPos(QStringLiteral("Filter0"), QStringLiteral("Filter0.control")),
                    portPos(QStringLiteral("Sensor0"), QStringLiteral("Sensor0.control")));

@@ -6,9 +6,11 @@
 
 #include "instancecommands.h"
 #include "componentitem.h"
+#include "configurationseteditor.h"
 #include "connectordialog.h"
 #include "connectoritem.h"
 #include "overviewwidget.h"
+#include "parametereditor.h"
 #include "propertiespanel.h"
 #include "serviceconnectordialog.h"
 #include "repositoryview.h"
@@ -248,26 +250,30 @@ void TestSeCanvasWidgets::propertiesEditConfigurationThroughUndo()
     QCOMPARE(panel.field(QStringLiteral("componentId"))->text(),
              QStringLiteral("RTC:Test:canvas:Filter:1.0.0"));
     QCOMPARE(panel.shownSet(), QStringLiteral("default"));
-    QTableWidget *table = panel.valueTable();
-    QCOMPARE(table->rowCount(), 2);
-    QCOMPARE(table->item(0, 0)->text(), QStringLiteral("gain"));
-    QCOMPARE(table->item(0, 1)->text(), QStringLiteral("1.0"));
     const auto gain = [&] {
         return model->component(QStringLiteral("Filter0"))->configurationSets.at(0).data.at(0).data;
     };
-    // Edited in the table as a user does.
-    table->item(0, 1)->setText(QStringLiteral("2.5"));
+    const auto shownGain = [&] {
+        return panel.configurationEditor()->parameterEditor(QStringLiteral("gain"))->value();
+    };
+    QCOMPARE(shownGain(), QStringLiteral("1.0"));
+    // Edited in the value's widget as a user does (no profile constraint: plain text).
+    auto *edit = qobject_cast<QLineEdit *>(
+        panel.configurationEditor()->parameterEditor(QStringLiteral("gain"))->input());
+    QVERIFY(edit);
+    edit->selectAll();
+    QTest::keyClicks(edit, QStringLiteral("2.5"));
     QCOMPARE(gain(), QStringLiteral("2.5"));
     QCOMPARE(stack.count(), 1);
     stack.undo();
     QCOMPARE(gain(), QStringLiteral("1.0"));
-    QCOMPARE(panel.valueTable()->item(0, 1)->text(), QStringLiteral("1.0"));
+    QCOMPARE(shownGain(), QStringLiteral("1.0"));
     stack.redo();
     QCOMPARE(gain(), QStringLiteral("2.5"));
-    QCOMPARE(panel.valueTable()->item(0, 1)->text(), QStringLiteral("2.5"));
+    QCOMPARE(shownGain(), QStringLiteral("2.5"));
     // The other set shows its own values.
     panel.setShownSet(QStringLiteral("precise"));
-    QCOMPARE(panel.valueTable()->item(0, 1)->text(), QStringLiteral("0.5"));
+    QCOMPARE(shownGain(), QStringLiteral("0.5"));
 }
 
 void TestSeCanvasWidgets::propertiesActivateCopyDeleteSets()

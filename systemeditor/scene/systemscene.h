@@ -3,6 +3,7 @@
 
 #include "connectionrules.h"
 #include "connectorsettings.h"
+#include "serviceconnectorsettings.h"
 #include "systemmodel.h"
 
 #include <QGraphicsScene>
@@ -82,7 +83,8 @@ public:
     /// Adds the data connector `check` describes with `settings`.
     void connectPorts(const ConnectionCheck &check, const ConnectorSettings &settings);
     /// Adds a service connector between the ends `check` describes.
-    void connectServicePorts(const ConnectionCheck &check, const QString &name);
+    void connectServicePorts(const ConnectionCheck &check,
+                             const ServiceConnectorSettings &settings);
     /// Applies dialog settings to an existing data connector.
     void editConnector(const QString &connectorId, const ConnectorSettings &settings);
 
@@ -98,6 +100,9 @@ signals:
     void connectionRefused(const QString &reason);
     /// Double-click on a connector.
     void connectorEditRequested(const QString &connectorId);
+    /// Edits a service connector's name and interface mapping (one undo step).
+    void editServiceConnector(const QString &connectorId,
+                              const ServiceConnectorSettings &settings);
     /// Double-click on a component.
     void componentActivated(const QString &instanceName);
     /// A short message for the status bar.

@@ -147,12 +147,13 @@ void SystemScene::connectPorts(const ConnectionCheck &check, const ConnectorSett
                             makeDataConnector(*m_model, check.source, check.target, settings)));
 }
 
-void SystemScene::connectServicePorts(const ConnectionCheck &check, const QString &name)
+void SystemScene::connectServicePorts(const ConnectionCheck &check,
+                                      const ServiceConnectorSettings &settings)
 {
     if (!check.allowed || check.kind != ConnectorKind::Service)
         return;
     push(new ConnectCommand(m_model,
-                            makeServiceConnector(*m_model, check.source, check.target, name)));
+                            makeServiceConnector(*m_model, check.source, check.target, settings)));
 }
 
 void SystemScene::editConnector(const QString &connectorId, const ConnectorSettings &settings)
@@ -174,3 +175,11 @@ void SystemScene::commitMoves()
 }
 
 } // namespace SystemEditor
+void SystemScene::editServiceConnector(const QString &connectorId,
+                                       const ServiceConnectorSettings &settings)
+{
+    if (EditConnectorCommand *command
+        = EditConnectorCommand::fromSettings(m_model, connectorId, settings))
+        push(command);
+}
+

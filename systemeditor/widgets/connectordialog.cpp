@@ -65,6 +65,15 @@ void ConnectorDialog::buildForm(const Choices &choices)
     m_dataType->setReadOnly(true);
     general->addRow(tr("&Name:"), m_name);
     general->addRow(tr("Data type:"), m_dataType);
+    m_connectDirection = new QComboBox;
+    m_connectDirection->setObjectName(QStringLiteral("connectDirection"));
+    for (ConnectDirection direction : choices.connectDirections)
+        m_connectDirection->addItem(ConnectorSettings::directionText(direction),
+                                    int(direction));
+    m_directionChoices = int(choices.connectDirections.size());
+    m_connectDirection->setToolTip(
+        tr("Which port calls connect(); the system file records it as the connector's source."));
+    general->addRow(tr("Connect &direction:"), m_connectDirection);
 
     auto *buffers = new QHBoxLayout;
     buffers->addWidget(buildBufferGroup(tr("OutPort buffer"), QStringLiteral("out"), m_outBuffer));
@@ -90,6 +99,7 @@ void ConnectorDialog::buildForm(const Choices &choices)
         connect(edit, &QLineEdit::textChanged, this, &ConnectorDialog::refresh);
     for (QComboBox *box : findChildren<QComboBox *>())
         connect(box, &QComboBox::currentTextChanged, this, &ConnectorDialog::refresh);
+    connect(m_connectDirection, &QComboBox::currentIndexChanged, this, &ConnectorDialog::refresh);
 }
 
 QWidget *ConnectorDialog::buildDataflowGroup(const Choices &choices)
@@ -175,6 +185,7 @@ void ConnectorDialog::setSettings(const ConnectorSettings &settings)
     setChoice(m_pushPolicy, settings.pushPolicy);
     m_skipCount->setText(settings.skipCount);
     setChoice(m_timestampPolicy, settings.timestampPolicy);
+    setDirection(settings.connectDirection);
     setBuffer(m_outBuffer, settings.outBuffer);
     setBuffer(m_inBuffer, settings.inBuffer);
     m_properties->setRowCount(0);
@@ -197,10 +208,25 @@ ConnectorSettings ConnectorDialog::settings() const
     s.pushPolicy = m_pushPolicy->currentText().trimmed();
     s.skipCount = m_skipCount->text().trimmed();
     s.timestampPolicy = m_timestampPolicy->currentText().trimmed();
+    s.connectDirection = m_connectDirection->currentIndex() < 0
+        ? m_fixedDirection
+        : ConnectDirection(m_connectDirection->currentData().toInt());
     s.outBuffer = buffer(m_outBuffer);
     s.inBuffer = buffer(m_inBuffer);
     s.freeProperties = freeProperties();
     return s;
+}
+
+void ConnectorDialog::setDirection(ConnectDirection direction)
+{
+    // A direction that is not offered is kept as it is (shown, not changeable).
+    m_fixedDirection = direction;
+    int index = m_connectDirection->findData(int(direction));
+    if (index < 0) {
+        m_connectDirection->addItem(ConnectorSettings::directionText(direction), int(direction));
+        index = m_connectDirection->count() - 1;
+    }
+    m_connectDirection->setCurrentIndex(index);
 }
 
 void ConnectorDialog::setBuffer(const BufferWidgets &widgets, const BufferSettings &buffer)
@@ -266,6 +292,7 @@ void ConnectorDialog::refresh()
     m_pushRate->setEnabled(s.isPushRateEnabled());
     m_pushPolicy->setEnabled(s.isPushPolicyEnabled());
     m_skipCount->setEnabled(s.isSkipCountEnabled());
+    m_connectDirection->setEnabled(m_directionChoices > 1);
     const QStringList list = problems();
     m_problems->setText(list.join(QLatin1Char('\n')));
     m_problems->setVisible(!list.isEmpty());

@@ -17,8 +17,9 @@ namespace SystemEditor {
 /**
  * The data connector dialog: every field of the reference's dialog (ConnectorSettings), with
  * its enabling rules (subscription type only for push, push rate only for periodic, push policy
- * only for new/periodic, skip count only for the skip policy) and its validation shown live; OK
- * stays disabled while there is a problem.
+ * only for new/periodic, skip count only for the skip policy, connect direction only when both
+ * directions are offered) and its validation shown live; OK stays disabled while there is a
+ * problem.
  *
  * Used both for a new connector (filled with ConnectorSettings::defaults()) and for editing an
  * existing one. Widgets carry object names (`name`, `dataflowType`, `pushRate`, …) so that tests
@@ -36,6 +37,10 @@ public:
         QStringList dataflowTypes = ConnectorSettings::dataflowTypes();
         QStringList subscriptionTypes = ConnectorSettings::subscriptionTypes();
         QStringList marshalingTypes {QStringLiteral("cdr")};
+        /// Who may call connect(); the field is enabled only when there is a choice (a live
+        /// connection that exists already cannot turn around).
+        QList<ConnectDirection> connectDirections {ConnectDirection::OutToIn,
+                                                   ConnectDirection::InToOut};
     };
 
     explicit ConnectorDialog(const ConnectorSettings &settings, QWidget *parent = nullptr);
@@ -69,6 +74,7 @@ private:
     QGroupBox *buildBufferGroup(const QString &title, const QString &prefix,
                                 BufferWidgets &widgets);
     QWidget *buildFreeProperties();
+    void setDirection(ConnectDirection direction);
     void setBuffer(const BufferWidgets &widgets, const BufferSettings &buffer);
     BufferSettings buffer(const BufferWidgets &widgets) const;
     QList<QPair<QString, QString>> freeProperties() const;
@@ -84,6 +90,9 @@ private:
     QComboBox *m_pushPolicy = nullptr;
     QLineEdit *m_skipCount = nullptr;
     QComboBox *m_timestampPolicy = nullptr;
+    QComboBox *m_connectDirection = nullptr;
+    ConnectDirection m_fixedDirection = ConnectDirection::OutToIn;
+    int m_directionChoices = 0;
     BufferWidgets m_outBuffer {};
     BufferWidgets m_inBuffer {};
     QTableWidget *m_properties = nullptr;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "propertiespanel.h"
 
-#include "instancecommands.h"
 #include "componentfactory.h"
+#include "configurationseteditor.h"
 #include "systemmodel.h"
 #include "systemscene.h"
 
@@ -104,31 +104,12 @@ QWidget *PropertiesPanel::buildComponentPage()
     addField(form, QStringLiteral("typeName"), tr("Type name:"));
     addField(form, QStringLiteral("componentId"), tr("Id:"));
     addField(form, QStringLiteral("pathUri"), tr("Path URI:"));
-    m_sets = new QComboBox;
-    m_sets->setObjectName(QStringLiteral("configurationSet"));
-    connect(m_sets, &QComboBox::currentIndexChanged, this, [this] {
-        if (!m_filling)
-            fillValues();
-    });
-    m_activate = new QPushButton(tr("Activate"));
-    auto *copy = new QPushButton(tr("Copy"));
-    m_delete = new QPushButton(tr("Delete"));
-    connect(m_activate, &QPushButton::clicked, this, &PropertiesPanel::activateShownSet);
-    connect(copy, &QPushButton::clicked, this, &PropertiesPanel::addSetCopy);
-    connect(m_delete, &QPushButton::clicked, this, &PropertiesPanel::deleteShownSet);
-    auto *setRow = new QHBoxLayout;
-    setRow->addWidget(m_sets, 1);
-    setRow->addWidget(m_activate);
-    setRow->addWidget(copy);
-    setRow->addWidget(m_delete);
-    m_values = twoColumnTable(QStringLiteral("configurationValues"), {tr("Name"), tr("Value")});
-    connect(m_values, &QTableWidget::cellChanged, this, &PropertiesPanel::onValueEdited);
+    m_configuration = new ConfigurationSetEditor(m_model, m_undoStack);
     auto *layout = new QVBoxLayout(page);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(form);
     layout->addWidget(new QLabel(tr("<b>Configuration sets</b>")));
-    layout->addLayout(setRow);
-    layout->addWidget(m_values, 1);
+    layout->addWidget(m_configuration, 1);
     return page;
 }
 
@@ -181,8 +162,6 @@ void PropertiesPanel::followSelection()
 
 void PropertiesPanel::showComponent(const QString &instanceName)
 {
-    if (instanceName != m_component)
-        m_sets->clear();
     m_component = instanceName;
     m_connector.clear();
     refresh();
@@ -223,136 +202,42 @@ void PropertiesPanel::fillComponent()
         componentTypeName(c, m_model->rtcProfile(m_component)));
     field(QStringLiteral("componentId"))->setText(c.id);
     field(QStringLiteral("pathUri"))->setText(c.pathUri);
-    m_filling = true;
-    const QString shown = shownSet().isEmpty() ? c.activeConfigurationSet.value_or(QString())
-                                               : shownSet();
-    m_sets->clear();
-    for (const Profile::RtsConfigurationSet &set : c.configurationSets) {
-        const bool active = set.id == c.activeConfigurationSet;
-        m_sets->addItem(active ? tr("%1 (active)").arg(set.id) : set.id, set.id);
-    }
-    m_sets->setCurrentIndex(std::max(0, m_sets->findData(shown)));
-    m_filling = false;
-    fillValues();
+    m_configuration->setComponent(m_component);
 }
 
 QString PropertiesPanel::shownSet() const
 {
-    return m_sets->currentData().toString();
+    return m_configuration->shownSet();
 }
 
 void PropertiesPanel::setShownSet(const QString &setId)
 {
-    m_sets->setCurrentIndex(m_sets->findData(setId));
+    m_configuration->setShownSet(setId);
 }
 
-void PropertiesPanel::fillValues()
+QComboBox *PropertiesPanel::setCombo() const
 {
-    m_filling = true;
-    m_values->setRowCount(0);
-    const Profile::RtsComponent *c = m_model ? m_model->component(m_component) : nullptr;
-    const QString setId = shownSet();
-    if (c) {
-        for (const Profile::RtsConfigurationSet &set : c->configurationSets) {
-            if (set.id != setId)
-                continue;
-            for (const Profile::RtsConfigurationData &data : set.data) {
-                const int row = m_values->rowCount();
-                m_values->insertRow(row);
-                m_values->setItem(row, 0, readOnlyItem(data.name));
-                m_values->setItem(row, 1, new QTableWidgetItem(data.data.value_or(QString())));
-            }
-        }
-    }
-    m_activate->setEnabled(c && !setId.isEmpty() && c->activeConfigurationSet != setId);
-    m_delete->setEnabled(!setId.isEmpty());
-    m_filling = false;
+    return m_configuration->setCombo();
 }
 
-void PropertiesPanel::onValueEdited(int row, int column)
+bool PropertiesPanel::setValue(const QString &parameter, const QString &value)
 {
-    if (m_filling || column != 1)
-        return;
-    setValue(m_values->item(row, 0)->text(), m_values->item(row, 1)->text());
-}
-
-void PropertiesPanel::setValue(const QString &parameter, const QString &value)
-{
-    const Profile::RtsComponent *c = m_model->component(m_component);
-    if (!c)
-        return;
-    QList<Profile::RtsConfigurationSet> sets = c->configurationSets;
-    for (Profile::RtsConfigurationSet &set : sets) {
-        if (set.id != shownSet())
-            continue;
-        for (Profile::RtsConfigurationData &data : set.data) {
-            if (data.name == parameter)
-                data.data = value;
-        }
-    }
-    pushSets(sets, c->activeConfigurationSet);
+    return m_configuration->setValue(parameter, value);
 }
 
 void PropertiesPanel::activateShownSet()
 {
-    if (const Profile::RtsComponent *c = m_model->component(m_component))
-        pushSets(c->configurationSets, shownSet());
+    m_configuration->activateShownSet();
 }
 
 void PropertiesPanel::addSetCopy()
 {
-    const Profile::RtsComponent *c = m_model->component(m_component);
-    if (!c)
-        return;
-    QList<Profile::RtsConfigurationSet> sets = c->configurationSets;
-    Profile::RtsConfigurationSet copy;
-    for (const Profile::RtsConfigurationSet &set : sets) {
-        if (set.id == shownSet())
-            copy = set;
-    }
-    const QString base = copy.id.isEmpty() ? QStringLiteral("set") : copy.id + QStringLiteral("_copy");
-    QStringList ids;
-    for (const Profile::RtsConfigurationSet &set : sets)
-        ids << set.id;
-    copy.id = base;
-    for (int n = 2; ids.contains(copy.id); ++n)
-        copy.id = base + QString::number(n);
-    sets.append(copy);
-    pushSets(sets, c->activeConfigurationSet);
-    setShownSet(copy.id);
+    m_configuration->addSetCopy();
 }
 
 void PropertiesPanel::deleteShownSet()
 {
-    const Profile::RtsComponent *c = m_model->component(m_component);
-    if (!c)
-        return;
-    QList<Profile::RtsConfigurationSet> sets = c->configurationSets;
-    const QString removed = shownSet();
-    sets.erase(std::remove_if(sets.begin(), sets.end(),
-                              [&](const Profile::RtsConfigurationSet &s) { return s.id == removed; }),
-               sets.end());
-    // The active set moves to the first one left when it was the deleted one.
-    std::optional<QString> active = c->activeConfigurationSet;
-    if (active == removed)
-        active = sets.isEmpty() ? std::nullopt : std::optional(sets.first().id);
-    m_sets->setCurrentIndex(-1);
-    pushSets(sets, active);
-}
-
-void PropertiesPanel::pushSets(const QList<Profile::RtsConfigurationSet> &sets,
-                               const std::optional<QString> &active)
-{
-    const Profile::RtsComponent *c = m_model->component(m_component);
-    if (!c || (c->configurationSets == sets && c->activeConfigurationSet == active))
-        return;
-    auto *command = new SetConfigurationSetsCommand(m_model, m_component, sets, active);
-    if (m_undoStack) {
-        m_undoStack->push(command);
-    } else {
-        command->redo();
-        delete command;
-    }
+    m_configuration->deleteShownSet();
 }
 
 void PropertiesPanel::fillConnector()

@@ -1,30 +1,27 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "rtscomponent.h"
-
 #include <QPointer>
 #include <QWidget>
 
 class QComboBox;
 class QFormLayout;
 class QLabel;
-class QPushButton;
 class QStackedWidget;
 class QTableWidget;
 class QUndoStack;
 
 namespace SystemEditor {
 
+class ConfigurationSetEditor;
 class SystemModel;
 class SystemScene;
 
 /**
  * The Properties view of the canvas selection. For a component: instance name, type id, path
- * URI, type name, and its configuration sets edited offline (choose a set, edit values, make a
- * set active, add a copy, delete a set); for a connector: name, ends, data type and every
- * property. Configuration edits go through SetConfigurationSetsCommand on the undo stack; the
- * panel follows model changes (undo included).
+ * URI, type name, and its configuration sets edited offline with the widgets and constraints of
+ * its RTC profile (ConfigurationSetEditor); for a connector: name, ends, data type and every
+ * property. Every edit is an undo command; the panel follows model changes (undo included).
  */
 class PropertiesPanel : public QWidget
 {
@@ -41,18 +38,19 @@ public:
 
     QString shownComponent() const { return m_component; }
     QString shownConnector() const { return m_connector; }
-    /// The configuration set shown in the table.
+    /// The configuration set shown.
     QString shownSet() const;
     void setShownSet(const QString &setId);
-    /// Configuration editing, as the buttons do it (each one undo step).
-    void setValue(const QString &parameter, const QString &value);
+    /// Configuration editing, as the buttons and value widgets do it (each one undo step; a
+    /// value that breaks its constraint is refused).
+    bool setValue(const QString &parameter, const QString &value);
     void activateShownSet();
     void addSetCopy();
     void deleteShownSet();
 
     QLabel *field(const QString &name) const;
-    QComboBox *setCombo() const { return m_sets; }
-    QTableWidget *valueTable() const { return m_values; }
+    QComboBox *setCombo() const;
+    ConfigurationSetEditor *configurationEditor() const { return m_configuration; }
     QTableWidget *connectorTable() const { return m_connectorProperties; }
 
 signals:
@@ -65,11 +63,7 @@ private:
     QLabel *addField(QFormLayout *form, const QString &name, const QString &label);
     void refresh();
     void fillComponent();
-    void fillValues();
     void fillConnector();
-    void onValueEdited(int row, int column);
-    void pushSets(const QList<Profile::RtsConfigurationSet> &sets,
-                  const std::optional<QString> &active);
     void followSelection();
 
     QPointer<SystemModel> m_model;
@@ -78,12 +72,8 @@ private:
     QString m_component;
     QString m_connector;
     QStackedWidget *m_pages;
-    QComboBox *m_sets = nullptr;
-    QTableWidget *m_values = nullptr;
-    QPushButton *m_activate = nullptr;
-    QPushButton *m_delete = nullptr;
+    ConfigurationSetEditor *m_configuration = nullptr;
     QTableWidget *m_connectorProperties = nullptr;
-    bool m_filling = false;
 };
 
 } // namespace SystemEditor

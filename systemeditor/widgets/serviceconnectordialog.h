@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "systemmodel.h"
+#include "connectorsettings.h"
+#include "serviceconnectorsettings.h"
 
 #include <QDialog>
 
+class QComboBox;
 class QDialogButtonBox;
 class QLabel;
 class QLineEdit;
@@ -13,31 +15,53 @@ class QTableWidget;
 namespace SystemEditor {
 
 /**
- * The service connector dialog: the connector's name and the table that maps each required
- * (consumer) interface to the provided one it will use, paired by instance name and polarity
- * (ConnectionRules::matchingInterfaces). It warns about interfaces left without a counterpart and
- * about pairs whose types differ; only an empty or too long name keeps OK disabled.
+ * The service connector dialog: the connector's name and the interface mapping, one row per
+ * required (consumer) interface of either port. Each row chooses its provider among the provided
+ * interfaces of the other port (the only polarity that fits), by instance name, or leaves it
+ * "automatic": paired by instance name when connecting, nothing written. A chosen provider is
+ * saved as the reference's mapping property (ServiceConnectorSettings). The dialog warns about
+ * interfaces left without a counterpart and about pairs whose types or instance names differ;
+ * only an empty or too long name keeps OK disabled.
  */
 class ServiceConnectorDialog : public QDialog
 {
     Q_OBJECT
 
 public:
+    ServiceConnectorDialog(const ServiceConnectorSettings &settings, const ServicePortSide &source,
+                           const ServicePortSide &target, QWidget *parent = nullptr);
+    /// A dialog for a new connector between ports known only by their interfaces.
     ServiceConnectorDialog(const QString &name, const QList<InterfaceInfo> &source,
                            const QList<InterfaceInfo> &target, QWidget *parent = nullptr);
 
     QString name() const;
     void setName(const QString &name);
+    /// The fields as they are now.
+    ServiceConnectorSettings settings() const;
     /// What the user should know before connecting (unpaired interfaces, differing types).
     QStringList warnings() const { return m_warnings; }
     QTableWidget *mappingTable() const { return m_mapping; }
+    /// The provider choice of mapping row `row` (item 0 is "automatic").
+    QComboBox *providerChoice(int row) const;
 
     void accept() override;
 
 private:
-    void fillMapping(const QList<InterfaceInfo> &source, const QList<InterfaceInfo> &target);
+    struct Consumer
+    {
+        int side; ///< 0 source, 1 target
+        InterfaceInfo interface;
+    };
+
+    void fillMapping(const ServiceConnectorSettings &settings);
+    /// The provider choices of `consumer`, set to its entry in m_unmatched (which it takes).
+    QComboBox *providerBox(const Consumer &consumer);
+    const InterfaceInfo *providerOf(int row) const;
     void refresh();
 
+    ServicePortSide m_sides[2];
+    QList<Consumer> m_consumers;
+    QList<QPair<QString, QString>> m_unmatched; ///< mapping entries no row names (kept)
     QLineEdit *m_name;
     QTableWidget *m_mapping;
     QLabel *m_warningLabel;

@@ -31,14 +31,14 @@ std::optional<ConnectorSettings> askWithDialog(QWidget *parent, const ConnectorS
     return dialog.settings();
 }
 
-std::optional<QString> askServiceWithDialog(QWidget *parent, const QString &name,
-                                            const QList<InterfaceInfo> &source,
-                                            const QList<InterfaceInfo> &target)
+std::optional<ServiceConnectorSettings> askServiceWithDialog(
+    QWidget *parent, const ServiceConnectorSettings &proposed, const ServicePortSide &source,
+    const ServicePortSide &target)
 {
-    ServiceConnectorDialog dialog(name, source, target, parent);
+    ServiceConnectorDialog dialog(proposed, source, target, parent);
     if (dialog.exec() != QDialog::Accepted)
         return std::nullopt;
-    return dialog.name();
+    return dialog.settings();
 }
 
 /// `Instance0.port` → `port`.
@@ -64,9 +64,10 @@ SystemView::SystemView(SystemScene *scene, QWidget *parent)
                                const ConnectorDialog::Choices &choices) {
         return askWithDialog(this, proposed, choices);
     };
-    m_serviceConnectorEditor = [this](const QString &name, const QList<InterfaceInfo> &source,
-                                      const QList<InterfaceInfo> &target) {
-        return askServiceWithDialog(this, name, source, target);
+    m_serviceConnectorEditor = [this](const ServiceConnectorSettings &proposed,
+                                      const ServicePortSide &source,
+                                      const ServicePortSide &target) {
+        return askServiceWithDialog(this, proposed, source, target);
     };
     connect(scene, &SystemScene::connectRequested, this, &SystemView::requestConnection);
     connect(scene, &SystemScene::connectionRefused, this, &SystemView::showRefusal);
@@ -174,25 +175,45 @@ void SystemView::requestConnection(const ConnectionCheck &check)
 
 void SystemView::requestServiceConnection(const ConnectionCheck &check)
 {
-    const std::optional<PortInfo> source = m_scene->model()->port(check.source.instanceName,
-                                                                 check.source.portName);
-    const std::optional<PortInfo> target = m_scene->model()->port(check.target.instanceName,
-                                                                 check.target.portName);
-    const QString proposed = shortName(source, check.source.portName) + QLatin1Char('_')
-        + shortName(target, check.target.portName);
-    const std::optional<QString> name = m_serviceConnectorEditor(
-        proposed, source ? source->interfaces : QList<InterfaceInfo>(),
-        target ? target->interfaces : QList<InterfaceInfo>());
-    if (name)
-        m_scene->connectServicePorts(check, *name);
+    const ServicePortSide source = serviceSide(check.source);
+    const ServicePortSide target = serviceSide(check.target);
+    ServiceConnectorSettings proposed;
+    proposed.name = source.portName + QLatin1Char('_') + target.portName;
+    if (const std::optional<ServiceConnectorSettings> settings
+        = m_serviceConnectorEditor(proposed, source, target))
+        m_scene->connectServicePorts(check, *settings);
+}
+
+ServicePortSide SystemView::serviceSide(const ConnectorEnd &end) const
+{
+    const std::optional<PortInfo> port = m_scene->model()->port(end.instanceName, end.portName);
+    return {end.instanceName, shortName(port, end.portName),
+            port ? port->interfaces : QList<InterfaceInfo>()};
+}
+
+void SystemView::editServiceConnector(const QString &connectorId)
+{
+    const Profile::RtsServicePortConnector *connector
+        = m_scene->model()->serviceConnector(connectorId);
+    if (!connector)
+        return;
+    const ServiceConnectorSettings current = ServiceConnectorSettings::fromConnector(*connector);
+    const std::optional<ServiceConnectorSettings> settings = m_serviceConnectorEditor(
+        current, serviceSide({connector->source.instanceName, connector->source.portName}),
+        serviceSide({connector->target.instanceName, connector->target.portName}));
+    if (settings && *settings != current)
+        m_scene->editServiceConnector(connectorId, *settings);
 }
 
 void SystemView::editConnector(const QString &connectorId)
 {
     const Profile::RtsDataPortConnector *connector = m_scene->model()->dataConnector(connectorId);
-    if (!connector)
+    if (!connector) {
+        editServiceConnector(connectorId);
         return;
-    const ConnectorSettings current = ConnectorSettings::fromConnector(*connector);
+    }
+    const ConnectorSettings current
+        = ConnectorSettings::fromConnector(*connector, m_scene->model());
     // The same choices as when it was made: what both ports offer.
     ConnectionCheck ends;
     ends.source = {connector->source.instanceName, connector->source.portName};

@@ -3,6 +3,7 @@
 
 #include "connectorsettings.h"
 #include "connectordialog.h"
+#include "serviceconnectorsettings.h"
 #include "systemmodel.h"
 
 #include <QGraphicsView>
@@ -39,12 +40,13 @@ public:
         const ConnectorSettings &proposed, const ConnectorDialog::Choices &choices)>;
 
     /**
-     * Asks for a service connector's name, showing how the two ports' interfaces pair up;
-     * returns the name or nothing when cancelled. The default shows a ServiceConnectorDialog.
+     * Asks for a service connector's settings (name, interface mapping), showing how the two
+     * ports' interfaces pair up; returns them or nothing when cancelled. The default shows a
+     * ServiceConnectorDialog.
      */
-    using ServiceConnectorEditor = std::function<std::optional<QString>(
-        const QString &proposedName, const QList<InterfaceInfo> &source,
-        const QList<InterfaceInfo> &target)>;
+    using ServiceConnectorEditor = std::function<std::optional<ServiceConnectorSettings>(
+        const ServiceConnectorSettings &proposed, const ServicePortSide &source,
+        const ServicePortSide &target)>;
 
     explicit SystemView(SystemScene *scene, QWidget *parent = nullptr);
 
@@ -102,6 +104,8 @@ private:
     void finishRename(bool commit);
     ConnectorDialog::Choices choicesFor(const ConnectionCheck &check) const;
     void requestServiceConnection(const ConnectionCheck &check);
+    void editServiceConnector(const QString &connectorId);
+    ServicePortSide serviceSide(const ConnectorEnd &end) const;
 
     SystemScene *m_scene;
     ConnectorEditor m_connectorEditor;

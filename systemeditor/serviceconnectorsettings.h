@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "rtsconnector.h"
+#include "systemmodel.h"
+
+#include <QCoreApplication>
+#include <QList>
+#include <QPair>
+#include <QStringList>
+
+#include <optional>
+
+namespace SystemEditor {
+
+/// One end of a service connection as the service connector dialog shows it.
+struct ServicePortSide
+{
+    QString instanceName; ///< the component instance (`ConsoleIn0`)
+    QString portName; ///< the port's name without the instance prefix (`control`)
+    QList<InterfaceInfo> interfaces;
+};
+
+/**
+ * CorbaPort's interface descriptor `<instance>.port.<port>.<required|provided>.<type>.<name>`,
+ * the form the reference's service connector dialog writes as a connector property
+ * (consumer descriptor = provider descriptor). OpenRTM's newer key `port.<type>.<name>` names a
+ * required interface by type and instance name only; parse() reads it with empty component and
+ * port.
+ */
+struct InterfaceDescriptor
+{
+    QString componentName;
+    QString portName;
+    bool required = true;
+    QString type;
+    QString instanceName;
+
+    static InterfaceDescriptor of(const ServicePortSide &side, const InterfaceInfo &interface);
+    /// Either form, or nothing when `text` is not a descriptor.
+    static std::optional<InterfaceDescriptor> parse(const QString &text);
+    QString toString() const;
+    /// Whether this descriptor names `interface` of `side` (a short form matches by type and name).
+    bool names(const ServicePortSide &side, const InterfaceInfo &interface) const;
+};
+
+/**
+ * The fields of the service connector dialog, as a value: the name and the explicit interface
+ * mapping (consumer descriptor → provider descriptor, written as connector properties).
+ * Interfaces without an entry pair up by instance name when connecting, as OpenRTM does.
+ */
+struct ServiceConnectorSettings
+{
+    Q_DECLARE_TR_FUNCTIONS(ServiceConnectorSettings)
+
+public:
+    QString name;
+    QList<QPair<QString, QString>> mapping; ///< consumer descriptor, provider descriptor
+
+    static ServiceConnectorSettings fromConnector(const Profile::RtsServicePortConnector &connector);
+    /// Writes the name and replaces the connector's mapping properties by `mapping`.
+    void applyTo(Profile::RtsServicePortConnector &connector) const;
+    /// True for a property key that is an interface mapping (either descriptor form).
+    static bool isMappingKey(const QString &key);
+    /// Problems that keep the settings from being applied (the name).
+    QStringList validate() const;
+
+    bool operator==(const ServiceConnectorSettings &other) const;
+    bool operator!=(const ServiceConnectorSettings &other) const { return !(*this == other); }
+};
+
+} // namespace SystemEditor

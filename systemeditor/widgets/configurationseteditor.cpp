@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: MIT
+#include "configurationseteditor.h"
+
+#include "configurationcommands.h"
+#include "constraintsyntax.h"
+#include "instancecommands.h"
+#include "parametereditor.h"
+#include "systemmodel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace SystemEditor {
+
+using namespace Profile;
+
+namespace {
+
+const QString WidgetSet = QStringLiteral("__widget__");
+const QString ConstraintsSet = QStringLiteral("__constraints__");
+
+QString valueIn(const RtsComponent &c, const QString &setId, const QString &parameter)
+{
+    for (const RtsConfigurationSet &set : c.configurationSets) {
+        if (set.id != setId)
+            continue;
+        for (const RtsConfigurationData &data : set.data) {
+            if (data.name == parameter)
+                return data.data.value_or(QString());
+        }
+    }
+    return {};
+}
+
+QPushButton *button(const QString &text, const QString &objectName)
+{
+    auto *b = new QPushButton(text);
+    b->setObjectName(objectName);
+    return b;
+}
+
+} // namespace
+
+ConfigurationSetEditor::ConfigurationSetEditor(SystemModel *model, QUndoStack *undoStack,
+                                               QWidget *parent)
+    : QWidget(parent)
+    , m_model(model)
+    , m_undoStack(undoStack)
+    , m_sets(new QComboBox)
+    , m_showHidden(new QCheckBox(tr("Show hidden sets")))
+    , m_activate(button(tr("Activate"), QStringLiteral("activateSet")))
+    , m_delete(button(tr("Delete"), QStringLiteral("deleteSet")))
+    , m_valuesArea(new QWidget)
+    , m_valuesForm(new QFormLayout(m_valuesArea))
+{
+    m_sets->setObjectName(QStringLiteral("configurationSet"));
+    m_showHidden->setObjectName(QStringLiteral("showHiddenSets"));
+    QPushButton *add = button(tr("Add"), QStringLiteral("addSet"));
+    QPushButton *copy = button(tr("Copy"), QStringLiteral("copySet"));
+    connect(m_sets, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_filling)
+            fillValues();
+    });
+    connect(m_showHidden, &QCheckBox::toggled, this, &ConfigurationSetEditor::refresh);
+    connect(m_activate, &QPushButton::clicked, this, &ConfigurationSetEditor::activateShownSet);
+    connect(add, &QPushButton::clicked, this, &ConfigurationSetEditor::addSet);
+    connect(copy, &QPushButton::clicked, this, &ConfigurationSetEditor::addSetCopy);
+    connect(m_delete, &QPushButton::clicked, this, &ConfigurationSetEditor::deleteShownSet);
+    auto *setRow = new QHBoxLayout;
+    setRow->addWidget(m_sets, 1);
+    for (QPushButton *b : {m_activate, add, copy, m_delete})
+        setRow->addWidget(b);
+    m_valuesForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    auto *scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(m_valuesArea);
+    scroll->setFrameShape(QFrame::StyledPanel);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(setRow);
+    layout->addWidget(m_showHidden);
+    layout->addWidget(scroll, 1);
+    connect(model, &SystemModel::componentChanged, this, [this](const QString &name) {
+        if (name == m_component)
+            refresh();
+    });
+}
+
+const RtsComponent *ConfigurationSetEditor::current() const
+{
+    return m_model ? m_model->component(m_component) : nullptr;
+}
+
+bool ConfigurationSetEditor::isHidden(const QString &setId)
+{
+    return setId.startsWith(QLatin1String("__")) && setId.endsWith(QLatin1String("__"));
+}
+
+void ConfigurationSetEditor::setComponent(const QString &instanceName)
+{
+    if (instanceName != m_component) {
+        m_component = instanceName;
+        m_sets->clear();
+        m_editorsSet.clear();
+    }
+    refresh();
+}
+
+void ConfigurationSetEditor::setShowHidden(bool show)
+{
+    m_showHidden->setChecked(show);
+}
+
+void ConfigurationSetEditor::refresh()
+{
+    fillSets();
+    fillValues();
+}
+
+void ConfigurationSetEditor::fillSets()
+{
+    const RtsComponent *c = current();
+    m_filling = true;
+    const QString shown = !shownSet().isEmpty()
+        ? shownSet()
+        : (c ? c->activeConfigurationSet.value_or(QString()) : QString());
+    m_sets->clear();
+    if (c) {
+        for (const RtsConfigurationSet &set : c->configurationSets) {
+            if (isHidden(set.id) && !m_showHidden->isChecked())
+                continue;
+            const bool active = set.id == c->activeConfigurationSet;
+            m_sets->addItem(active ? tr("%1 (active)").arg(set.id) : set.id, set.id);
+        }
+    }
+    m_sets->setCurrentIndex(std::max(0, m_sets->findData(shown)));
+    m_filling = false;
+}
+
+QString ConfigurationSetEditor::shownSet() const
+{
+    return m_sets->currentData().toString();
+}
+
+void ConfigurationSetEditor::setShownSet(const QString &setId)
+{
+    m_sets->setCurrentIndex(m_sets->findData(setId));
+}
+
+ParameterRule ConfigurationSetEditor::ruleFor(const QString &parameter) const
+{
+    const RtsComponent *c = current();
+    if (!c || isHidden(shownSet()))
+        return {}; // hidden sets are metadata, edited as text
+    if (const RtcProfile *rtc = m_model->rtcProfile(m_component)) {
+        for (const RtcConfiguration &configuration : rtc->configurations) {
+            if (configuration.name == parameter)
+                return ParameterRule::from(configuration.widget().value_or(QString()),
+                                           constraintToString(configuration.constraint));
+        }
+    }
+    // Without a profile, a system saved online may still carry the hidden sets.
+    return ParameterRule::from(valueIn(*c, WidgetSet, parameter),
+                               valueIn(*c, ConstraintsSet, parameter));
+}
+
+ParameterEditor *ConfigurationSetEditor::parameterEditor(const QString &parameter) const
+{
+    for (ParameterEditor *editor : m_editors) {
+        if (editor->name() == parameter)
+            return editor;
+    }
+    return nullptr;
+}
+
+void ConfigurationSetEditor::fillValues()
+{
+    const RtsComponent *c = current();
+    const QString setId = shownSet();
+    const RtsConfigurationSet *set = nullptr;
+    if (c) {
+        for (const RtsConfigurationSet &s : c->configurationSets) {
+            if (s.id == setId)
+                set = &s;
+        }
+    }
+    m_activate->setEnabled(c && set && c->activeConfigurationSet != setId);
+    m_delete->setEnabled(set != nullptr);
+    QStringList names;
+    if (set) {
+        for (const RtsConfigurationData &data : set->data)
+            names << data.name;
+    }
+    QStringList shownNames;
+    for (ParameterEditor *editor : m_editors)
+        shownNames << editor->name();
+    // The same parameters of the same set: only values change, so that an editor the user is
+    // typing in is kept.
+    if (set && setId == m_editorsSet && names == shownNames) {
+        updateValues(*set);
+        return;
+    }
+    while (m_valuesForm->rowCount() > 0)
+        m_valuesForm->removeRow(0);
+    m_editors.clear();
+    m_editorsSet = setId;
+    if (!set)
+        return;
+    for (const RtsConfigurationData &data : set->data) {
+        auto *editor = new ParameterEditor(data.name, ruleFor(data.name));
+        m_filling = true;
+        editor->setValue(data.data.value_or(QString()));
+        m_filling = false;
+        connect(editor, &ParameterEditor::valueChanged, this, [this, editor] { onEdited(editor); });
+        m_editors << editor;
+        m_valuesForm->addRow(data.name + QLatin1Char(':'), editor);
+    }
+}
+
+void ConfigurationSetEditor::updateValues(const RtsConfigurationSet &set)
+{
+    m_filling = true;
+    for (int i = 0; i < set.data.size(); ++i) {
+        const QString value = set.data.at(i).data.value_or(QString());
+        if (m_editors.at(i)->value() != value)
+            m_editors.at(i)->setValue(value);
+    }
+    m_filling = false;
+}
+
+void ConfigurationSetEditor::onEdited(ParameterEditor *editor)
+{
+    if (m_filling)
+        return;
+    setValue(editor->name(), editor->value());
+}
+
+bool ConfigurationSetEditor::setValue(const QString &parameter, const QString &value)
+{
+    const RtsComponent *c = current();
+    if (!c || !ruleFor(parameter).check(value).isEmpty())
+        return false;
+    if (valueIn(*c, shownSet(), parameter) == value)
+        return true;
+    auto *command
+        = new SetConfigurationValueCommand(m_model, m_component, shownSet(), parameter, value);
+    if (m_undoStack) {
+        m_undoStack->push(command);
+    } else {
+        command->redo();
+        delete command;
+    }
+    return true;
+}
+
+void ConfigurationSetEditor::activateShownSet()
+{
+    if (const RtsComponent *c = current())
+        pushSets(c->configurationSets, shownSet());
+}
+
+void ConfigurationSetEditor::addSet()
+{
+    const RtsComponent *c = current();
+    if (!c)
+        return;
+    QList<RtsConfigurationSet> sets = c->configurationSets;
+    RtsConfigurationSet set;
+    set.id = uniqueSetId(sets, QStringLiteral("new_set"));
+    // A new set starts from the profile's defaults; without a profile, from the shown set's names.
+    if (const RtcProfile *rtc = m_model->rtcProfile(m_component)) {
+        for (const RtcConfiguration &configuration : rtc->configurations) {
+            RtsConfigurationData data;
+            data.name = configuration.name;
+            data.data = configuration.defaultValue;
+            set.data << data;
+        }
+    } else {
+        for (ParameterEditor *editor : m_editors) {
+            RtsConfigurationData data;
+            data.name = editor->name();
+            data.data = QString();
+            set.data << data;
+        }
+    }
+    sets.append(set);
+    pushSets(sets, c->activeConfigurationSet.value_or(QString()).isEmpty()
+                 ? std::optional<QString>(set.id)
+                 : c->activeConfigurationSet);
+    setShownSet(set.id);
+}
+
+void ConfigurationSetEditor::addSetCopy()
+{
+    const RtsComponent *c = current();
+    if (!c)
+        return;
+    QList<RtsConfigurationSet> sets = c->configurationSets;
+    RtsConfigurationSet copy;
+    for (const RtsConfigurationSet &set : sets) {
+        if (set.id == shownSet())
+            copy = set;
+    }
+    copy.id = uniqueSetId(sets, copy.id.isEmpty() ? QStringLiteral("set")
+                                                  : copy.id + QStringLiteral("_copy"));
+    sets.append(copy);
+    pushSets(sets, c->activeConfigurationSet);
+    setShownSet(copy.id);
+}
+
+void ConfigurationSetEditor::deleteShownSet()
+{
+    const RtsComponent *c = current();
+    if (!c)
+        return;
+    QList<RtsConfigurationSet> sets = c->configurationSets;
+    const QString removed = shownSet();
+    sets.removeIf([&](const RtsConfigurationSet &s) { return s.id == removed; });
+    // The active set moves to the first one left when it was the deleted one.
+    std::optional<QString> active = c->activeConfigurationSet;
+    if (active == removed)
+        active = sets.isEmpty() ? std::nullopt : std::optional(sets.first().id);
+    m_sets->setCurrentIndex(-1);
+    pushSets(sets, active);
+}
+
+void ConfigurationSetEditor::pushSets(const QList<RtsConfigurationSet> &sets,
+                                      const std::optional<QString> &active)
+{
+    const RtsComponent *c = current();
+    if (!c || (c->configurationSets == sets && c->activeConfigurationSet == active))
+        return;
+    auto *command = new SetConfigurationSetsCommand(m_model, m_component, sets, active);
+    if (m_undoStack) {
+        m_undoStack->push(command);
+    } else {
+        command->redo();
+        delete command;
+    }
+}
+
+} // namespace SystemEditor

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// Offline System Editor dialogs and properties: the data connector's connect direction, the
+// service connector's editable interface mapping, and configuration editing with the widgets and
+// constraints of the RTC profile — each through undo, saved and read back.
+#include "configurationseteditor.h"
+#include "connectorcommands.h"
+#include "connectordialog.h"
+#include "parametereditor.h"
+#include "propertiespanel.h"
+#include "serviceconnectordialog.h"
+#include "systemfile.h"
+
+#include <QComboBox>
+#include <QLineEdit>
+#include <QRadioButton>
+#include <QSlider>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace SystemEditor;
+
+namespace {
+
+std::unique_ptr<SystemModel> loadModel(const QString &path
+                                       = QStringLiteral(RTSTUDIO_TEST_DATA_DIR
+                                                        "/seprops/system.xml"))
+{
+    Profile::Diagnostics diagnostics;
+    std::optional<LoadedSystem> loaded = loadSystemFile(path, &diagnostics);
+    if (!loaded)
+        return nullptr;
+    auto model = std::make_unique<SystemModel>();
+    model->setProfile(loaded->profile, loaded->rtcProfiles);
+    return model;
+}
+
+/// Saves the model into a temporary folder and loads it back.
+std::unique_ptr<SystemModel> reopened(SystemModel &model, QTemporaryDir &dir)
+{
+    Profile::Diagnostics diagnostics;
+    const QString path = dir.filePath(QStringLiteral("system.xml"));
+    if (!saveSystemFile(model, path, &diagnostics))
+        return nullptr;
+    return loadModel(path);
+}
+
+ServicePortSide sideOf(const SystemModel &model, const QString &instance, const QString &port)
+{
+    const std::optional<PortInfo> info = model.port(instance, port);
+    return {instance, info->profileName, info->interfaces};
+}
+
+const QString SensorFilter = QStringLiteral("c-sensor-filter");
+const QString Control = QStringLiteral("s-control");
+
+} // namespace
+
+class TestSeProps : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void connectDirectionEditedThroughUndo();
+    void connectDirectionFixedWhenOnlyOneOffered();
+    void serviceMappingEditedThroughUndoAndSaved();
+    void configurationWidgetsFollowTheProfile();
+    void configurationRejectsBrokenConstraint();
+    void configurationTextFallbackAndSets();
+};
+
+void TestSeProps::connectDirectionEditedThroughUndo()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    const ConnectorSettings before
+        = ConnectorSettings::fromConnector(*model->dataConnector(SensorFilter), model.get());
+    QCOMPARE(before.connectDirection, ConnectDirection::OutToIn);
+    ConnectorDialog dialog(before);
+    auto *direction = dialog.findChild<QComboBox *>(QStringLiteral("connectDirection"));
+    QVERIFY(direction->isEnabled());
+    QCOMPARE(direction->count(), 2);
+    QTest::keyClick(direction, Qt::Key_Down);
+    const ConnectorSettings after = dialog.settings();
+    QCOMPARE(after.connectDirection, ConnectDirection::InToOut);
+
+    QUndoStack stack;
+    stack.push(EditConnectorCommand::fromSettings(model.get(), SensorFilter, after));
+    const auto source = [&] { return model->dataConnector(SensorFilter)->source.portName; };
+    QCOMPARE(source(), QStringLiteral("Filter0.in"));
+    QCOMPARE(model->dataConnector(SensorFilter)->target.portName, QStringLiteral("Sensor0.out"));
+    stack.undo();
+    QCOMPARE(source(), QStringLiteral("Sensor0.out"));
+    stack.redo();
+    QCOMPARE(source(), QStringLiteral("Filter0.in"));
+
+    // Saved as the source end, read back, shown again by the dialog.
+    QTemporaryDir dir;
+    std::unique_ptr<SystemModel> again = reopened(*model, dir);
+    QVERIFY(again);
+    const ConnectorSettings read
+        = ConnectorSettings::fromConnector(*again->dataConnector(SensorFilter), again.get());
+    QCOMPARE(read.connectDirection, ConnectDirection::InToOut);
+    ConnectorDialog shown(read);
+    QCOMPARE(shown.findChild<QComboBox *>(QStringLiteral("connectDirection"))->currentData(),
+             QVariant(int(ConnectDirection::InToOut)));
+    QCOMPARE(shown.settings(), read);
+}
+
+void TestSeProps::connectDirectionFixedWhenOnlyOneOffered()
+{
+    ConnectorDialog::Choices choices;
+    choices.connectDirections = {ConnectDirection::OutToIn};
+    ConnectorSettings settings = ConnectorSettings::defaults(QStringLiteral("a.out"),
+                                                             QStringLiteral("b.in"),
+                                                             QStringLiteral("RTC::TimedLong"));
+    settings.connectDirection = ConnectDirection::InToOut;
+    ConnectorDialog dialog(settings, choices);
+    auto *direction = dialog.findChild<QComboBox *>(QStringLiteral("connectDirection"));
+    QVERIFY(!direction->isEnabled());
+    QCOMPARE(dialog.settings().connectDirection, ConnectDirection::InToOut);
+}
+
+void TestSeProps::serviceMappingEditedThroughUndoAndSaved()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    const ServiceConnectorSettings before
+        = ServiceConnectorSettings::fromConnector(*model->serviceConnector(Control));
+    QVERIFY(before.mapping.isEmpty());
+    const ServicePortSide filter = sideOf(*model, "Filter0", "Filter0.control");
+    const ServicePortSide sensor = sideOf(*model, "Sensor0", "Sensor0.control");
+    ServiceConnectorDialog dialog(before, filter, sensor);
+    QCOMPARE(dialog.mappingTable()->rowCount(), 1); // Filter0's one required interface
+    QComboBox *provider = dialog.providerChoice(0);
+    QCOMPARE(provider->count(), 3); // automatic, control, backup: only provided interfaces
+    QCOMPARE(dialog.warnings().size(), 1); // Sensor0's "spare" is left over
+    QTest::keyClick(provider, Qt::Key_Down);
+    QTest::keyClick(provider, Qt::Key_Down);
+    QVERIFY(provider->currentText().startsWith(QStringLiteral("backup")));
+    const QString warnings = dialog.warnings().join(QLatin1Char('\n'));
+    QVERIFY2(warnings.contains(QStringLiteral("another instance name")), qPrintable(warnings));
+    const ServiceConnectorSettings after = dialog.settings();
+    const QString key = QStringLiteral("Filter0.port.control.required.Demo::Control.control");
+    const QString value = QStringLiteral("Sensor0.port.control.provided.Demo::Control.backup");
+    QCOMPARE(after.mapping, (QList<QPair<QString, QString>> {{key, value}}));
+
+    QUndoStack stack;
+    stack.push(EditConnectorCommand::fromSettings(model.get(), Control, after));
+    const auto mapped = [&] {
+        return Profile::rtsPropertyValue(model->serviceConnector(Control)->properties, key);
+    };
+    QCOMPARE(mapped(), std::optional<QString>(value));
+    stack.undo();
+    QCOMPARE(mapped(), std::nullopt);
+    stack.redo();
+    QCOMPARE(mapped(), std::optional<QString>(value));
+
+    QTemporaryDir dir;
+    std::unique_ptr<SystemModel> again = reopened(*model, dir);
+    QVERIFY(again);
+    const ServiceConnectorSettings read
+        = ServiceConnectorSettings::fromConnector(*again->serviceConnector(Control));
+    QCOMPARE(read, after);
+    // Other properties stay; reopening the dialog shows the saved choice.
+    QVERIFY(Profile::rtsPropertyValue(again->serviceConnector(Control)->properties,
+                                      QStringLiteral("port.port_type")));
+    ServiceConnectorDialog shown(read, filter, sensor);
+    QCOMPARE(shown.providerChoice(0)->currentIndex(), 2);
+    QCOMPARE(shown.settings(), read);
+}
+
+void TestSeProps::configurationWidgetsFollowTheProfile()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    QUndoStack stack;
+    PropertiesPanel panel(model.get(), &stack);
+    panel.showComponent(QStringLiteral("Filter0"));
+    ConfigurationSetEditor *editor = panel.configurationEditor();
+    auto *slider = qobject_cast<QSlider *>(editor->parameterEditor("gain")->input());
+    QVERIFY(slider);
+    QCOMPARE(slider->maximum(), 20); // 0..10 by 0.5
+    QCOMPARE(slider->value(), 2);
+    const auto value = [&](int set, int index) {
+        return model->component(QStringLiteral("Filter0"))
+            ->configurationSets.at(set)
+            .data.at(index)
+            .data.value_or(QString());
+    };
+    QTest::keyClick(slider, Qt::Key_Right);
+    QCOMPARE(value(0, 0), QStringLiteral("1.5"));
+    auto *slow = editor->parameterEditor("mode")->findChild<QRadioButton *>("choice_slow");
+    QVERIFY(slow);
+    QTest::mouseClick(slow, Qt::LeftButton);
+    QCOMPARE(value(0, 1), QStringLiteral("slow"));
+    QCOMPARE(stack.count(), 2);
+    stack.undo();
+    QCOMPARE(value(0, 1), QStringLiteral("fast"));
+    QVERIFY(editor->parameterEditor("mode")->findChild<QRadioButton *>("choice_fast")->isChecked());
+    stack.undo();
+    QCOMPARE(value(0, 0), QStringLiteral("1.0"));
+    QCOMPARE(slider->value(), 2);
+    stack.redo();
+    stack.redo();
+    QCOMPARE(value(0, 0), QStringLiteral("1.5"));
+    QCOMPARE(value(0, 1), QStringLiteral("slow"));
+}
+
+void TestSeProps::configurationRejectsBrokenConstraint()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    QUndoStack stack;
+    PropertiesPanel panel(model.get(), &stack);
+    panel.showComponent(QStringLiteral("Filter0"));
+    QVERIFY(!panel.setValue(QStringLiteral("gain"), QStringLiteral("42")));
+    QVERIFY(!panel.setValue(QStringLiteral("mode"), QStringLiteral("turbo")));
+    QCOMPARE(stack.count(), 0);
+    ParameterEditor *gain = panel.configurationEditor()->parameterEditor("gain");
+    gain->setValue(QStringLiteral("42")); // as a pasted value: shown, refused, explained
+    QVERIFY(!gain->error().isEmpty());
+    QCOMPARE(stack.count(), 0);
+    QVERIFY(panel.setValue(QStringLiteral("gain"), QStringLiteral("9.5")));
+    QCOMPARE(stack.count(), 1);
+}
+
+void TestSeProps::configurationTextFallbackAndSets()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    QUndoStack stack;
+    PropertiesPanel panel(model.get(), &stack);
+    panel.showComponent(QStringLiteral("Sink0")); // its profile lists no parameters
+    ConfigurationSetEditor *editor = panel.configurationEditor();
+    auto *text = qobject_cast<QLineEdit *>(editor->parameterEditor("label")->input());
+    QVERIFY(text);
+    text->selectAll();
+    QTest::keyClicks(text, QStringLiteral("end"));
+    const auto sink = [&] { return model->component(QStringLiteral("Sink0")); };
+    QCOMPARE(sink()->configurationSets.at(0).data.at(0).data, QStringLiteral("end"));
+    QCOMPARE(stack.count(), 1); // typing merges into one step
+    stack.undo();
+    QCOMPARE(sink()->configurationSets.at(0).data.at(0).data, QStringLiteral("sink"));
+    stack.redo();
+
+    panel.showComponent(QStringLiteral("Filter0"));
+    editor->addSet();
+    QCOMPARE(model->component("Filter0")->configurationSets.size(), 3);
+    QCOMPARE(model->component("Filter0")->configurationSets.last().id, QStringLiteral("new_set"));
+    QCOMPARE(model->component("Filter0")->configurationSets.last().data.at(1).data,
+             QStringLiteral("fast")); // the profile's default
+    QCOMPARE(editor->shownSet(), QStringLiteral("new_set"));
+    editor->activateShownSet();
+    QCOMPARE(model->component("Filter0")->activeConfigurationSet, QStringLiteral("new_set"));
+
+    QTemporaryDir dir;
+    std::unique_ptr<SystemModel> again = reopened(*model, dir);
+    QVERIFY(again);
+    QCOMPARE(again->component("Filter0")->configurationSets.size(), 3);
+    QCOMPARE(again->component("Filter0")->activeConfigurationSet, QStringLiteral("new_set"));
+    QCOMPARE(again->component("Sink0")->configurationSets.at(0).data.at(0).data,
+             QStringLiteral("end"));
+    stack.undo();
+    stack.undo();
+    QCOMPARE(model->component("Filter0")->configurationSets.size(), 2);
+}
+
+QTEST_MAIN(TestSeProps)
+#include "tst_seprops.moc"
