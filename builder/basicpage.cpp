@@ -4,12 +4,19 @@
 #include "builderfieldrules.h"
 #include "componentcommands.h"
 #include "componentrules.h"
+#include "kindchoices.h"
+#include "profiletransfer.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QUndoStack>
@@ -22,16 +29,37 @@ namespace {
 using Field = BasicField;
 
 constexpr Field AllFields[] = {
-    Field::Name,          Field::Description,   Field::Version,      Field::Vendor,
-    Field::Category,      Field::ComponentType, Field::ActivityType, Field::MaxInstances,
-    Field::ExecutionType, Field::ExecutionRate,
+    Field::Name,          Field::Description,   Field::Version,       Field::Vendor,
+    Field::Category,      Field::ComponentType, Field::ActivityType,  Field::MaxInstances,
+    Field::ExecutionType, Field::ExecutionRate, Field::ComponentKind, Field::Abstract,
+    Field::RtcType,
 };
 
-QString editorText(const QWidget *editor)
+/// The text an editor shows; `modelValue` for the check box group, which shows no text.
+QString editorText(const QWidget *editor, const QString &modelValue)
 {
     if (const auto *line = qobject_cast<const QLineEdit *>(editor))
         return line->text();
-    return static_cast<const QComboBox *>(editor)->currentText();
+    if (const auto *combo = qobject_cast<const QComboBox *>(editor))
+        return combo->currentText();
+    if (const auto *text = qobject_cast<const QPlainTextEdit *>(editor))
+        return text->toPlainText();
+    return modelValue;
+}
+
+/// The language kind the page shows: RTC Builder's C++ when the profile names none.
+QString languageKind(const Profile::RtcProfile &profile)
+{
+    return profile.language ? profile.language->kind : QStringLiteral("C++");
+}
+
+QLabel *problemLabel(QWidget *parent)
+{
+    auto *message = new QLabel(parent);
+    message->setWordWrap(true);
+    message->setStyleSheet(QStringLiteral("color: #b3261e;"));
+    message->hide();
+    return message;
 }
 
 /// Marks an editor holding a problem with a reddish background, the usual inline cue.
@@ -61,6 +89,7 @@ BasicPage::BasicPage(ComponentModel *model, QUndoStack *undoStack, QWidget *pare
     });
     connect(model, &ComponentModel::componentIdChanged, this, &BasicPage::refreshHeader);
     connect(model, &ComponentModel::profileReset, this, &BasicPage::refreshAll);
+    connect(model, &ComponentModel::languageChanged, this, &BasicPage::refreshLanguages);
     // The composite rule depends on the ports, which other pages change.
     connect(model, &ComponentModel::changed, this, [this] { refresh(Field::Category); });
 }
@@ -68,6 +97,21 @@ BasicPage::BasicPage(ComponentModel *model, QUndoStack *undoStack, QWidget *pare
 QWidget *BasicPage::editor(BasicField field) const
 {
     return m_rows.value(int(field)).editor;
+}
+
+QCheckBox *BasicPage::componentKindBox(const QString &part) const
+{
+    return m_kindBoxes.value(part);
+}
+
+QCheckBox *BasicPage::languageBox(const QString &language) const
+{
+    return m_languageBoxes.value(language);
+}
+
+QString BasicPage::languageProblem() const
+{
+    return m_languageMessage->isHidden() ? QString() : m_languageMessage->text();
 }
 
 QString BasicPage::problem(BasicField field) const
@@ -140,20 +184,25 @@ void BasicPage::buildForm()
     addLineEdit(component, Field::Version, tr("&Version:"), QString());
     addLineEdit(component, Field::Vendor, tr("V&endor:"), QString());
     addComboBox(component, Field::Category, tr("&Category:"), categoryPresets(), true);
+    addAbstractEdit(component);
+    addLineEdit(component, Field::RtcType, tr("RTC t&ype:"), tr("(not set)"));
 
     QFormLayout *behaviour = addSection(tr("Behaviour"));
     addComboBox(behaviour, Field::ComponentType, tr("Component &type:"),
                 Profile::rtcComponentTypes(), false);
     addComboBox(behaviour, Field::ActivityType, tr("&Activity type:"), Profile::rtcActivityTypes(),
                 false);
+    addKindBoxes(behaviour);
     addLineEdit(behaviour, Field::MaxInstances, tr("&Max instances:"), tr("(not set)"));
 
     QFormLayout *execution = addSection(tr("Execution Context"));
     addComboBox(execution, Field::ExecutionType, tr("E&xecution type:"), executionTypePresets(),
                 true);
     addLineEdit(execution, Field::ExecutionRate, tr("Execution &rate (Hz):"), tr("(not set)"));
+    QFormLayout *language = addSection(tr("Language"));
+    addLanguageBoxes(language);
     contentLayout->addStretch(1);
-    alignLabels({component, behaviour, execution});
+    alignLabels({component, behaviour, execution, language});
 
     auto *scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -185,6 +234,7 @@ QWidget *BasicPage::buildButtonRow()
     layout->addWidget(restore);
     layout->addWidget(clear);
     layout->addStretch(1);
+    layout->addWidget(buildTransferButtons(row));
     auto *box = new QWidget(m_content);
     auto *boxLayout = new QVBoxLayout(box);
     boxLayout->setContentsMargins(0, 0, 0, 0);
@@ -196,7 +246,107 @@ QWidget *BasicPage::buildButtonRow()
     m_generationProblems->setStyleSheet(QStringLiteral("color: #b3261e;"));
     m_generationProblems->hide();
     boxLayout->addWidget(m_generationProblems);
+    m_transferMessage = new QLabel(box);
+    m_transferMessage->setObjectName(QStringLiteral("transferMessage"));
+    m_transferMessage->setWordWrap(true);
+    m_transferMessage->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_transferMessage->hide();
+    boxLayout->addWidget(m_transferMessage);
     return box;
+}
+
+QWidget *BasicPage::buildTransferButtons(QWidget *parent)
+{
+    auto *buttons = new QWidget(parent);
+    auto *layout = new QHBoxLayout(buttons);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto *import = new QPushButton(tr("&Import..."), buttons);
+    import->setToolTip(tr("Replace this component by the profile of an RTC.xml or YAML file"));
+    import->setObjectName(QStringLiteral("importButton"));
+    auto *exportButton = new QPushButton(tr("E&xport..."), buttons);
+    exportButton->setToolTip(tr("Write this component's profile to an XML or YAML file"));
+    exportButton->setObjectName(QStringLiteral("exportButton"));
+    connect(import, &QPushButton::clicked, this, [this] { askTransferFile(true); });
+    connect(exportButton, &QPushButton::clicked, this, [this] { askTransferFile(false); });
+    layout->addWidget(import);
+    layout->addWidget(exportButton);
+    return buttons;
+}
+
+void BasicPage::askTransferFile(bool import)
+{
+    // A window-modal dialog that is not run by exec(): the event loop stays the application's.
+    auto *dialog = new QFileDialog(this, import ? tr("Import Profile") : tr("Export Profile"));
+    dialog->setObjectName(QStringLiteral("transferDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setOption(QFileDialog::DontUseNativeDialog);
+    dialog->setNameFilter(ProfileTransfer::fileFilter());
+    dialog->setAcceptMode(import ? QFileDialog::AcceptOpen : QFileDialog::AcceptSave);
+    dialog->setFileMode(import ? QFileDialog::ExistingFile : QFileDialog::AnyFile);
+    if (!import) {
+        dialog->setDefaultSuffix(QStringLiteral("xml"));
+        dialog->selectFile(QStringLiteral("RTC.xml"));
+    }
+    connect(dialog, &QFileDialog::fileSelected, this, [this, import](const QString &path) {
+        if (import)
+            importProfile(path);
+        else
+            exportProfile(path);
+    });
+    dialog->setWindowModality(Qt::WindowModal);
+    dialog->show();
+}
+
+bool BasicPage::importProfile(const QString &path)
+{
+    if (!m_model)
+        return false;
+    Profile::Diagnostics problems;
+    QUndoCommand *command = ProfileTransfer::importCommand(m_model, path, &problems);
+    const QString name = QFileInfo(path).fileName();
+    if (!command) {
+        const bool failed = Profile::hasErrors(problems);
+        showTransferResult(failed ? tr("Nothing was imported from %1:").arg(name)
+                                  : tr("%1 holds the same component; nothing changed.").arg(name),
+                           problems);
+        if (failed)
+            emit transferFailed(problems);
+        return false;
+    }
+    m_undoStack->push(command);
+    showTransferResult(tr("Imported %1 (Undo puts the previous component back).").arg(name),
+                       problems);
+    return true;
+}
+
+bool BasicPage::exportProfile(const QString &path)
+{
+    if (!m_model)
+        return false;
+    Profile::Diagnostics problems;
+    if (!ProfileTransfer::exportProfile(m_model->profile(), path, &problems)) {
+        showTransferResult(tr("Nothing was exported:"), problems);
+        emit transferFailed(problems);
+        return false;
+    }
+    showTransferResult(tr("Exported to %1.").arg(QDir::toNativeSeparators(path)), problems);
+    return true;
+}
+
+QString BasicPage::transferMessage() const
+{
+    return m_transferMessage->isHidden() ? QString() : m_transferMessage->text();
+}
+
+void BasicPage::showTransferResult(const QString &text, const Profile::Diagnostics &problems)
+{
+    QStringList lines {text};
+    for (const Profile::Diagnostic &d : problems)
+        lines << d.toString();
+    m_transferMessage->setText(lines.join(QLatin1Char('\n')));
+    m_transferMessage->setStyleSheet(
+        Profile::hasErrors(problems) ? QStringLiteral("color: #b3261e;") : QString());
+    m_transferMessage->show();
 }
 
 void BasicPage::showGenerationProblems(const Profile::Diagnostics &problems)
@@ -277,10 +427,7 @@ void BasicPage::addRow(QFormLayout *form, BasicField field, const QString &label
     auto *cellLayout = new QVBoxLayout(cell);
     cellLayout->setContentsMargins(0, 0, 0, 0);
     cellLayout->setSpacing(2);
-    auto *message = new QLabel(cell);
-    message->setWordWrap(true);
-    message->setStyleSheet(QStringLiteral("color: #b3261e;"));
-    message->hide();
+    QLabel *message = problemLabel(cell);
     editor->setParent(cell);
     cellLayout->addWidget(editor);
     cellLayout->addWidget(message);
@@ -288,6 +435,101 @@ void BasicPage::addRow(QFormLayout *form, BasicField field, const QString &label
     if (auto *buddy = qobject_cast<QLabel *>(form->labelForField(cell)))
         buddy->setBuddy(editor);
     m_rows.insert(int(field), Row {editor, message});
+}
+
+void BasicPage::addAbstractEdit(QFormLayout *form)
+{
+    auto *edit = new QPlainTextEdit;
+    edit->setPlaceholderText(tr("(none)"));
+    edit->setTabChangesFocus(true);
+    // About four lines: room for a paragraph without pushing the other fields away.
+    edit->setFixedHeight(edit->fontMetrics().lineSpacing() * 4 + 12);
+    connect(edit, &QPlainTextEdit::textChanged, this, [this, edit] {
+        if (!m_updating)
+            userEdited(Field::Abstract, edit->toPlainText());
+    });
+    addRow(form, Field::Abstract, tr("A&bstract:"), edit);
+}
+
+QWidget *BasicPage::addCheckBoxes(const QStringList &names, const QStringList &labels,
+                                  QHash<QString, QCheckBox *> *boxes,
+                                  const std::function<void(const QString &, bool)> &toggled)
+{
+    auto *group = new QWidget;
+    auto *layout = new QHBoxLayout(group);
+    layout->setContentsMargins(0, 0, 0, 0);
+    for (int i = 0; i < names.size(); ++i) {
+        auto *box = new QCheckBox(labels.at(i), group);
+        box->setObjectName(names.at(i));
+        // clicked fires for the user only, never for refreshes from the model.
+        connect(box, &QCheckBox::clicked, this,
+                [toggled, name = names.at(i)](bool on) { toggled(name, on); });
+        layout->addWidget(box);
+        boxes->insert(names.at(i), box);
+    }
+    layout->addStretch(1);
+    return group;
+}
+
+void BasicPage::addKindBoxes(QFormLayout *form)
+{
+    QWidget *group = addCheckBoxes(KindChoices::componentKindParts(),
+                                   {tr("DataFlow"), tr("FSM"), tr("MultiMode")}, &m_kindBoxes,
+                                   [this](const QString &part, bool on) { toggleKind(part, on); });
+    addRow(form, Field::ComponentKind, tr("Component &kind:"), group);
+}
+
+void BasicPage::addLanguageBoxes(QFormLayout *form)
+{
+    const QStringList &names = KindChoices::languages();
+    QWidget *group
+        = addCheckBoxes(names, names, &m_languageBoxes,
+                        [this](const QString &language, bool on) { toggleLanguage(language, on); });
+    auto *cell = new QWidget;
+    auto *cellLayout = new QVBoxLayout(cell);
+    cellLayout->setContentsMargins(0, 0, 0, 0);
+    cellLayout->setSpacing(2);
+    group->setParent(cell);
+    cellLayout->addWidget(group);
+    m_languageMessage = problemLabel(cell);
+    cellLayout->addWidget(m_languageMessage);
+    form->addRow(tr("Generate for:"), cell);
+}
+
+void BasicPage::toggleKind(const QString &part, bool on)
+{
+    if (!m_model)
+        return;
+    const QString kind = m_model->basicField(Field::ComponentKind).value_or(QString());
+    const QString changed = KindChoices::withComponentKind(kind, part, on);
+    if (changed != kind)
+        m_undoStack->push(new SetBasicFieldCommand(m_model, Field::ComponentKind, changed));
+    else
+        refresh(Field::ComponentKind); // a box the model does not follow goes back
+}
+
+void BasicPage::toggleLanguage(const QString &language, bool on)
+{
+    if (!m_model)
+        return;
+    const Profile::RtcProfile &profile = m_model->profile();
+    Profile::RtcLanguage edited = profile.language.value_or(Profile::RtcLanguage());
+    edited.kind = KindChoices::withLanguage(languageKind(profile), language, on);
+    // No merge key: every click is its own undo step.
+    if (edited != profile.language)
+        m_undoStack->push(new SetLanguageCommand(m_model, edited));
+}
+
+void BasicPage::refreshLanguages()
+{
+    if (!m_model)
+        return;
+    const QString kind = languageKind(m_model->profile());
+    for (auto it = m_languageBoxes.cbegin(); it != m_languageBoxes.cend(); ++it)
+        it.value()->setChecked(KindChoices::hasLanguage(kind, it.key()));
+    const QString problem = KindChoices::languageProblem(kind);
+    m_languageMessage->setText(problem);
+    m_languageMessage->setVisible(!problem.isEmpty());
 }
 
 void BasicPage::userEdited(BasicField field, const QString &text)
@@ -307,18 +549,29 @@ void BasicPage::refresh(BasicField field)
         return;
     const QString value = m_model->basicField(field).value_or(QString());
     m_updating = true;
-    if (auto *line = qobject_cast<QLineEdit *>(row.editor)) {
+    showInEditor(row.editor, value);
+    m_updating = false;
+    showProblem(field, problemFor(field, editorText(row.editor, value)));
+}
+
+void BasicPage::showInEditor(QWidget *editor, const QString &value)
+{
+    if (auto *line = qobject_cast<QLineEdit *>(editor)) {
         if (line->text() != value)
             line->setText(value);
-    } else {
+    } else if (auto *combo = qobject_cast<QComboBox *>(editor)) {
         // Equal text means the user is typing here: touching the combo would break the inline
         // completion's selection.
-        auto *combo = static_cast<QComboBox *>(row.editor);
         if (combo->currentText() != value)
             showInComboBox(combo, value);
+    } else if (auto *text = qobject_cast<QPlainTextEdit *>(editor)) {
+        // Setting equal text would move the cursor of the user typing here.
+        if (text->toPlainText() != value)
+            text->setPlainText(value);
+    } else {
+        for (auto it = m_kindBoxes.cbegin(); it != m_kindBoxes.cend(); ++it)
+            it.value()->setChecked(KindChoices::hasComponentKind(value, it.key()));
     }
-    m_updating = false;
-    showProblem(field, problemFor(field, editorText(row.editor)));
 }
 
 void BasicPage::showInComboBox(QComboBox *combo, const QString &value)
@@ -339,6 +592,7 @@ void BasicPage::refreshAll()
 {
     for (Field field : AllFields)
         refresh(field);
+    refreshLanguages();
     refreshHeader();
 }
 
@@ -381,7 +635,11 @@ QString BasicPage::problemFor(BasicField field, const QString &text) const
         return FieldRules::nonNegativeIntegerProblem(text);
     case Field::ExecutionRate:
         return FieldRules::nonNegativeNumberProblem(text);
+    case Field::ComponentKind:
+        return KindChoices::componentKindProblem(text);
     case Field::Description:
+    case Field::Abstract:
+    case Field::RtcType:
         break;
     }
     return {};

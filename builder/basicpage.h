@@ -8,6 +8,9 @@
 #include <QPointer>
 #include <QWidget>
 
+#include <functional>
+
+class QCheckBox;
 class QComboBox;
 class QFormLayout;
 class QLabel;
@@ -17,13 +20,16 @@ class QUndoStack;
 namespace Builder {
 
 /**
- * The Builder's "Basic" page: name, description, version, vendor, category, component and
- * activity type, max instances, execution type and rate of a component, and the button row
- * that starts code generation.
+ * The Builder's "Basic" page: name, description, version, vendor, category, abstract, RTC type,
+ * component type, activity type, component kind (DataFlow / FSM / MultiMode check boxes), max
+ * instances, execution type and rate of a component, the languages to generate (C++ / Python /
+ * Java check boxes over the same field as the Language page's language), and the buttons
+ * Generate, Code Restore, Clear Backups, Import and Export.
  *
- * Every change the user makes is pushed as a SetBasicFieldCommand onto the undo stack; the page
- * itself only shows what the model says (it refreshes on the model's signals, including after
- * undo). Problems (e.g. a character the name rule forbids) are marked inline under the field.
+ * Every change the user makes is pushed as an undo command (SetBasicFieldCommand,
+ * SetLanguageCommand, one ReplaceProfileCommand per import); the page itself only shows what the
+ * model says (it refreshes on the model's signals, including after undo). Problems (e.g. a
+ * character the name rule forbids, no component kind chosen) are marked inline under the field.
  */
 class BasicPage : public QWidget
 {
@@ -32,8 +38,15 @@ class BasicPage : public QWidget
 public:
     BasicPage(ComponentModel *model, QUndoStack *undoStack, QWidget *parent = nullptr);
 
-    /// The editor of a field: a QLineEdit, or a QComboBox for the choice fields.
+    /// The editor of a field: a QLineEdit, a QComboBox for the choice fields, a QPlainTextEdit
+    /// for the abstract, the box holding the check boxes for the component kind.
     QWidget *editor(BasicField field) const;
+    /// The check box of a component kind part (KindChoices::componentKindParts()).
+    QCheckBox *componentKindBox(const QString &part) const;
+    /// The check box of a language (KindChoices::languages()).
+    QCheckBox *languageBox(const QString &language) const;
+    /// The problem marked under the languages; empty when there is none.
+    QString languageProblem() const;
     /// The problem marked under a field; empty when there is none.
     QString problem(BasicField field) const;
 
@@ -48,6 +61,16 @@ public:
     /// The text of that list; empty when hidden.
     QString generationProblems() const;
 
+    /**
+     * Replaces the component by the profile in `path` (RTC.xml or YAML) as one undo step.
+     * False when nothing was imported; the reason is shown under the buttons.
+     */
+    bool importProfile(const QString &path);
+    /// Writes the profile to `path` (XML or YAML by extension); false with the reason shown.
+    bool exportProfile(const QString &path);
+    /// What the last import or export said (success or the problems); empty before any.
+    QString transferMessage() const;
+
 signals:
     /// The user asked to generate code (the Generate button).
     void generateRequested();
@@ -55,6 +78,8 @@ signals:
     void codeRestoreRequested();
     /// The user asked to delete the backups of generated files (Clear backups).
     void clearBackupsRequested();
+    /// An import or export failed with these problems (also shown on the page).
+    void transferFailed(const Profile::Diagnostics &problems);
 
 private:
     struct Row
@@ -65,6 +90,9 @@ private:
 
     void buildForm();
     QWidget *buildButtonRow();
+    QWidget *buildTransferButtons(QWidget *parent);
+    void askTransferFile(bool import);
+    void showTransferResult(const QString &text, const Profile::Diagnostics &problems);
     QFormLayout *addSection(const QString &title);
     void alignLabels(const QList<QFormLayout *> &forms);
     void addLineEdit(QFormLayout *form, BasicField field, const QString &label,
@@ -72,9 +100,19 @@ private:
     void addComboBox(QFormLayout *form, BasicField field, const QString &label,
                      const QStringList &items, bool editable);
     void addRow(QFormLayout *form, BasicField field, const QString &label, QWidget *editor);
+    void addAbstractEdit(QFormLayout *form);
+    void addKindBoxes(QFormLayout *form);
+    void addLanguageBoxes(QFormLayout *form);
+    QWidget *addCheckBoxes(const QStringList &names, const QStringList &labels,
+                           QHash<QString, QCheckBox *> *boxes,
+                           const std::function<void(const QString &, bool)> &toggled);
+    void toggleKind(const QString &part, bool on);
+    void toggleLanguage(const QString &language, bool on);
+    void refreshLanguages();
 
     void userEdited(BasicField field, const QString &text);
     void refresh(BasicField field);
+    void showInEditor(QWidget *editor, const QString &value);
     void showInComboBox(QComboBox *combo, const QString &value);
     void refreshAll();
     void refreshHeader();
@@ -84,6 +122,10 @@ private:
     QPointer<ComponentModel> m_model;
     QUndoStack *m_undoStack;
     QHash<int, Row> m_rows;
+    QHash<QString, QCheckBox *> m_kindBoxes;
+    QHash<QString, QCheckBox *> m_languageBoxes;
+    QLabel *m_languageMessage = nullptr;
+    QLabel *m_transferMessage = nullptr;
     QLabel *m_title = nullptr;
     QLabel *m_componentId = nullptr;
     QWidget *m_content = nullptr;

@@ -37,7 +37,9 @@ int SetBasicFieldCommand::id() const
 bool SetBasicFieldCommand::mergeWith(const QUndoCommand *other)
 {
     const auto *edit = static_cast<const SetBasicFieldCommand *>(other);
-    if (edit->m_model != m_model || edit->m_field != m_field)
+    // Component kind changes are clicks on check boxes: each click is its own step.
+    if (edit->m_model != m_model || edit->m_field != m_field
+        || m_field == BasicField::ComponentKind)
         return false;
     m_after = normalized(edit->m_after);
     m_idAfter = edit->m_idAfter;

@@ -16,7 +16,8 @@ namespace Builder {
  * Clearing an optional field (absent value or empty text) keeps an empty attribute when the
  * field had one before the edit and leaves it absent otherwise, so that typing and deleting
  * changes nothing in the file. Consecutive edits of the same field merge (typing a word is one
- * undo step); an edit that ends where it started disappears from the stack.
+ * undo step; the component kind, set by check boxes, never merges); an edit that ends where it
+ * started disappears from the stack.
  */
 class SetBasicFieldCommand : public QUndoCommand
 {

@@ -32,9 +32,13 @@ QString *requiredMember(RtcBasicInfo &info, BasicField field)
         return &info.activityType;
     case BasicField::ExecutionType:
         return &info.executionType;
+    case BasicField::ComponentKind:
+        return &info.componentKind;
     case BasicField::Description:
     case BasicField::MaxInstances:
     case BasicField::ExecutionRate:
+    case BasicField::Abstract:
+    case BasicField::RtcType:
         break;
     }
     return nullptr;
@@ -49,6 +53,10 @@ std::optional<QString> *optionalMember(RtcBasicInfo &info, BasicField field)
         return &info.maxInstances;
     case BasicField::ExecutionRate:
         return &info.executionRate;
+    case BasicField::Abstract:
+        return &info.abstractText;
+    case BasicField::RtcType:
+        return &info.rtcType;
     default:
         break;
     }
@@ -136,7 +144,8 @@ void ComponentModel::setComponentId(const QString &id)
 bool ComponentModel::isOptional(BasicField field)
 {
     return field == BasicField::Description || field == BasicField::MaxInstances
-        || field == BasicField::ExecutionRate;
+        || field == BasicField::ExecutionRate || field == BasicField::Abstract
+        || field == BasicField::RtcType;
 }
 
 bool ComponentModel::isIdPart(BasicField field)
@@ -166,6 +175,12 @@ QString ComponentModel::fieldLabel(BasicField field)
         return tr("max instances");
     case BasicField::ExecutionType:
         return tr("execution type");
+    case BasicField::ComponentKind:
+        return tr("component kind");
+    case BasicField::Abstract:
+        return tr("abstract");
+    case BasicField::RtcType:
+        return tr("RTC type");
     case BasicField::ExecutionRate:
         break;
     }

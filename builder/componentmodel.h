@@ -21,6 +21,9 @@ enum class BasicField {
     MaxInstances,
     ExecutionType,
     ExecutionRate,
+    ComponentKind, ///< `rtc:componentKind`, e.g. DataFlowComponent (check boxes on the page)
+    Abstract, ///< `rtc:abstract`, a longer description
+    RtcType, ///< `rtc:rtcType`, free text
 };
 
 /// The lists of a component that the editor shows as tables.
@@ -62,7 +65,7 @@ public:
     QString componentId() const { return m_profile.id; }
     void setComponentId(const QString &id);
 
-    /// Optional in the schema (description, max instances, execution rate).
+    /// Optional in the schema (description, max instances, execution rate, abstract, RTC type).
     static bool isOptional(BasicField field);
     /// Part of the component id (name, vendor, category, version).
     static bool isIdPart(BasicField field);

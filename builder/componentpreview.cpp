@@ -20,6 +20,15 @@ QString sideOf(const QString &position, ComponentPreview::Port::Kind kind)
     return kind == ComponentPreview::Port::Out ? QStringLiteral("RIGHT") : QStringLiteral("LEFT");
 }
 
+/// "e1, e2" or "no events": what an EventPort shows under its name.
+QString eventsText(const Profile::RtcDataPort &port)
+{
+    QStringList names;
+    for (const Profile::RtcEvent &event : port.events)
+        names << event.name;
+    return names.isEmpty() ? ComponentPreview::tr("no events") : names.join(QStringLiteral(", "));
+}
+
 bool vertical(const QString &side)
 {
     return side == QLatin1String("LEFT") || side == QLatin1String("RIGHT");
@@ -64,6 +73,11 @@ void ComponentPreview::relayout()
     const Profile::RtcProfile &profile = m_model->profile();
     m_title = profile.basicInfo.name;
     for (const Profile::RtcDataPort &p : profile.dataPorts) {
+        if (p.kind() == Profile::RtcPortType::Event) {
+            m_ports.append(
+                {Port::Event, p.name, eventsText(p), sideOf(p.position, Port::Event), {}});
+            continue;
+        }
         const Port::Kind kind = p.kind() == Profile::RtcPortType::DataOut ? Port::Out : Port::In;
         m_ports.append({kind, p.name, p.type, sideOf(p.position, kind), {}});
     }
@@ -158,6 +172,12 @@ void ComponentPreview::paintPort(QPainter &painter, const Port &port) const
     if (port.kind == Port::Service) {
         painter.setBrush(QColor(250, 210, 120));
         painter.drawRect(r);
+    } else if (port.kind == Port::Event) {
+        const QPolygonF diamond(
+            {QPointF(r.center().x(), r.top()), QPointF(r.right(), r.center().y()),
+             QPointF(r.center().x(), r.bottom()), QPointF(r.left(), r.center().y())});
+        painter.setBrush(QColor(196, 160, 230));
+        painter.drawPolygon(diamond);
     } else {
         // Triangles point into the box for InPorts and out of it for OutPorts.
         const bool in = port.kind == Port::In;

@@ -10,8 +10,9 @@
 namespace Builder {
 
 /**
- * The live picture of the component being edited: its box with the name and every data and
- * service port drawn on the side its position names (LEFT/RIGHT/TOP/BOTTOM). It follows every
+ * The live picture of the component being edited: its box with the name and every data, event
+ * and service port drawn on the side its position names (LEFT/RIGHT/TOP/BOTTOM); EventPorts are
+ * diamonds labelled with their events. It follows every
  * change of the model, so typing a port name shows up at once.
  */
 class ComponentPreview : public QWidget
@@ -22,10 +23,10 @@ public:
     /// One port as drawn.
     struct Port
     {
-        enum Kind { In, Out, Service };
+        enum Kind { In, Out, Service, Event };
         Kind kind = In;
         QString name;
-        QString type; ///< data type, or the interface types of a service port
+        QString type; ///< data type, the interface types of a service port, an EventPort's events
         QString side; ///< LEFT | RIGHT | TOP | BOTTOM (the drawn side)
         QRectF marker; ///< the port's marker in widget coordinates
     };

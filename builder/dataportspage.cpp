@@ -2,13 +2,18 @@
 #include "dataportspage.h"
 
 #include "componentrules.h"
+#include "eventtablemodel.h"
 #include "idlsettingsdialog.h"
 #include "itemform.h"
 #include "itemtablemodel.h"
 #include "listeditor.h"
 #include "typecatalog.h"
 
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QTableView>
@@ -55,6 +60,7 @@ DataPortsPage::DataPortsPage(ComponentModel *model, QUndoStack *undoStack, TypeC
     m_composite->setWordWrap(true);
     m_inPorts = makeList(Profile::RtcPortType::DataIn, tr("InPorts"));
     m_outPorts = makeList(Profile::RtcPortType::DataOut, tr("OutPorts"));
+    m_eventPorts = makeList(Profile::RtcPortType::Event, tr("EventPorts (FSM)"));
     buildForm();
 
     auto *tables = new QWidget(this);
@@ -64,6 +70,8 @@ DataPortsPage::DataPortsPage(ComponentModel *model, QUndoStack *undoStack, TypeC
     tablesLayout->addWidget(m_composite);
     tablesLayout->addWidget(m_inPorts);
     tablesLayout->addWidget(m_outPorts);
+    tablesLayout->addWidget(m_eventPorts);
+    tablesLayout->addWidget(buildEventsBox());
     auto *scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setWidget(m_form);
@@ -77,6 +85,7 @@ DataPortsPage::DataPortsPage(ComponentModel *model, QUndoStack *undoStack, TypeC
 
     connect(m_inPorts, &ListEditor::currentItemChanged, this, &DataPortsPage::showPort);
     connect(m_outPorts, &ListEditor::currentItemChanged, this, &DataPortsPage::showPort);
+    connect(m_eventPorts, &ListEditor::currentItemChanged, this, &DataPortsPage::showPort);
     connect(types, &TypeCatalog::typesChanged, m_form, &ItemForm::reloadChoices);
     connect(model, &ComponentModel::changed, this, &DataPortsPage::refreshComposite);
     refreshComposite();
@@ -91,17 +100,52 @@ ListEditor *DataPortsPage::makeList(Profile::RtcPortType type, const QString &ti
     const auto factory = [this, type]() -> PartItem {
         RtcDataPort port;
         port.portType = Profile::rtcPortTypeText(type);
-        const bool in = type == Profile::RtcPortType::DataIn;
-        port.name = uniqueName(in ? QStringLiteral("in") : QStringLiteral("out"),
-                               portNames(m_model->profile()));
-        port.type = QStringLiteral("RTC::TimedLong");
-        port.position = in ? QStringLiteral("LEFT") : QStringLiteral("RIGHT");
+        const bool out = type == Profile::RtcPortType::DataOut;
+        const bool event = type == Profile::RtcPortType::Event;
+        const QString base = event ? QStringLiteral("event")
+            : out                  ? QStringLiteral("out")
+                                   : QStringLiteral("in");
+        port.name = uniqueName(base, portNames(m_model->profile()));
+        // RTC Builder gives an EventPort the data type Any: events carry their own types.
+        port.type = event ? QStringLiteral("Any") : QStringLiteral("RTC::TimedLong");
+        port.position = out ? QStringLiteral("RIGHT") : QStringLiteral("LEFT");
         return port;
     };
     auto *list = new ListEditor(m_model, m_undoStack, table, title, factory, this);
-    list->setObjectName(type == Profile::RtcPortType::DataIn ? QStringLiteral("inPorts")
-                                                             : QStringLiteral("outPorts"));
+    list->setObjectName(type == Profile::RtcPortType::DataIn        ? QStringLiteral("inPorts")
+                            : type == Profile::RtcPortType::DataOut ? QStringLiteral("outPorts")
+                                                                    : QStringLiteral("eventPorts"));
     return list;
+}
+
+QGroupBox *DataPortsPage::buildEventsBox()
+{
+    m_eventsBox = new QGroupBox(tr("Events of the selected EventPort"), this);
+    m_eventsBox->setObjectName(QStringLiteral("eventsBox"));
+    m_eventTable = new EventTableModel(m_model, m_undoStack, this);
+    m_events = new QTableView(m_eventsBox);
+    m_events->setModel(m_eventTable);
+    m_events->horizontalHeader()->setStretchLastSection(true);
+    m_events->verticalHeader()->hide();
+    auto *add = new QPushButton(tr("Add Event"), m_eventsBox);
+    add->setObjectName(QStringLiteral("addEvent"));
+    auto *remove = new QPushButton(tr("Remove Event"), m_eventsBox);
+    remove->setObjectName(QStringLiteral("removeEvent"));
+    connect(add, &QPushButton::clicked, this, [this] {
+        if (m_eventTable->addEvent())
+            m_events->setCurrentIndex(m_eventTable->index(m_eventTable->rowCount() - 1, 0));
+    });
+    connect(remove, &QPushButton::clicked, this,
+            [this] { m_eventTable->removeEvent(m_events->currentIndex().row()); });
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(add);
+    buttons->addWidget(remove);
+    buttons->addStretch(1);
+    auto *layout = new QVBoxLayout(m_eventsBox);
+    layout->addWidget(m_events);
+    layout->addLayout(buttons);
+    m_eventsBox->setEnabled(false);
+    return m_eventsBox;
 }
 
 void DataPortsPage::buildForm()
@@ -129,16 +173,25 @@ void DataPortsPage::buildForm()
 
 void DataPortsPage::showPort(int itemIndex)
 {
-    // One form for both tables: selecting in one clears the other.
+    // One form for all tables: selecting in one clears the others.
     auto *source = static_cast<ListEditor *>(sender());
-    ListEditor *other = source == m_inPorts ? m_outPorts : m_inPorts;
-    if (itemIndex >= 0) {
-        const QSignalBlocker blocker(other);
-        other->view()->setCurrentIndex({});
-        m_form->setCurrentIndex(itemIndex);
-    } else if (other->currentItem() < 0) {
-        m_form->setCurrentIndex(-1);
+    bool othersEmpty = true;
+    for (ListEditor *other : {m_inPorts, m_outPorts, m_eventPorts}) {
+        if (other == source)
+            continue;
+        if (itemIndex >= 0) {
+            const QSignalBlocker blocker(other);
+            other->view()->setCurrentIndex({});
+        }
+        othersEmpty = othersEmpty && other->currentItem() < 0;
     }
+    if (itemIndex >= 0)
+        m_form->setCurrentIndex(itemIndex);
+    else if (othersEmpty)
+        m_form->setCurrentIndex(-1);
+    const int eventPort = m_eventPorts->currentItem();
+    m_eventTable->setPortIndex(eventPort);
+    m_eventsBox->setEnabled(eventPort >= 0);
 }
 
 void DataPortsPage::refreshComposite()

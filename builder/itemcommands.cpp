@@ -122,6 +122,11 @@ Profile::RtcServicePort servicePort(ComponentModel *model, int portIndex)
     return std::get<Profile::RtcServicePort>(model->item(Part::ServicePort, portIndex));
 }
 
+Profile::RtcDataPort dataPort(ComponentModel *model, int portIndex)
+{
+    return std::get<Profile::RtcDataPort>(model->item(Part::DataPort, portIndex));
+}
+
 } // namespace
 
 QUndoCommand *makeAddInterfaceCommand(ComponentModel *model, int portIndex,
@@ -157,6 +162,39 @@ QUndoCommand *makeEditInterfaceCommand(ComponentModel *model, int portIndex, int
         QStringLiteral("interface%1.%2").arg(interfaceIndex).arg(mergeKey),
         QCoreApplication::translate("Builder::EditItemCommand", "Change interface %1")
             .arg(interface.name));
+}
+
+QUndoCommand *makeAddEventCommand(ComponentModel *model, int portIndex,
+                                  const Profile::RtcEvent &event)
+{
+    Profile::RtcDataPort port = dataPort(model, portIndex);
+    port.events.append(event);
+    return new EditItemCommand(
+        model, Part::DataPort, portIndex, port, QString(),
+        QCoreApplication::translate("Builder::EditItemCommand", "Add event %1 to %2")
+            .arg(event.name, port.name));
+}
+
+QUndoCommand *makeRemoveEventCommand(ComponentModel *model, int portIndex, int eventIndex)
+{
+    Profile::RtcDataPort port = dataPort(model, portIndex);
+    const QString name = port.events.value(eventIndex).name;
+    port.events.removeAt(eventIndex);
+    return new EditItemCommand(
+        model, Part::DataPort, portIndex, port, QString(),
+        QCoreApplication::translate("Builder::EditItemCommand", "Remove event %1 from %2")
+            .arg(name, port.name));
+}
+
+QUndoCommand *makeEditEventCommand(ComponentModel *model, int portIndex, int eventIndex,
+                                   const Profile::RtcEvent &event, const QString &mergeKey)
+{
+    Profile::RtcDataPort port = dataPort(model, portIndex);
+    port.events[eventIndex] = event;
+    return new EditItemCommand(
+        model, Part::DataPort, portIndex, port,
+        QStringLiteral("event%1.%2").arg(eventIndex).arg(mergeKey),
+        QCoreApplication::translate("Builder::EditItemCommand", "Change event %1").arg(event.name));
 }
 
 } // namespace Builder

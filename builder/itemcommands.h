@@ -102,4 +102,14 @@ QUndoCommand *makeEditInterfaceCommand(ComponentModel *model, int portIndex, int
                                        const Profile::RtcServiceInterface &interface,
                                        const QString &mergeKey);
 
+/// A command that appends `event` to the events of the EventPort at `portIndex`.
+QUndoCommand *makeAddEventCommand(ComponentModel *model, int portIndex,
+                                  const Profile::RtcEvent &event);
+/// A command that removes event `eventIndex` of the EventPort at `portIndex`.
+QUndoCommand *makeRemoveEventCommand(ComponentModel *model, int portIndex, int eventIndex);
+/// A command that replaces event `eventIndex` of the EventPort at `portIndex`; consecutive edits
+/// of the same event and `mergeKey` merge.
+QUndoCommand *makeEditEventCommand(ComponentModel *model, int portIndex, int eventIndex,
+                                   const Profile::RtcEvent &event, const QString &mergeKey);
+
 } // namespace Builder
