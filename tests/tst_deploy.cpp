@@ -12,6 +12,7 @@
 #include "restorer.h"
 #include "rtsprofile.h"
 #include "sequencerunner.h"
+#include "tst_deploysupport.h"
 
 #include <QtTest>
 
@@ -20,44 +21,7 @@
 #include <memory>
 
 using namespace Deploy;
-
-namespace {
-
-Profile::RtsProfile loadSystem(const QString &file)
-{
-    Profile::Diagnostics diagnostics;
-    const auto loaded = Profile::loadProfileFile(file, &diagnostics);
-    if (!loaded || !loaded->rts)
-        qFatal("cannot read %s", qPrintable(file));
-    return *loaded->rts;
-}
-
-QString dataFile(const QString &name)
-{
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/") + name;
-}
-
-QStringList doneSubjects(const DeployReport &report, const QString &action)
-{
-    QStringList subjects;
-    for (const DeployStep &step : report.steps) {
-        if (step.action == action && step.status == StepStatus::Done)
-            subjects.append(step.subject);
-    }
-    return subjects;
-}
-
-const DeployStep *findStep(const DeployReport &report, const QString &action,
-                           const QString &subject)
-{
-    for (const DeployStep &step : report.steps) {
-        if (step.action == action && step.subject == subject)
-            return &step;
-    }
-    return nullptr;
-}
-
-} // namespace
+using namespace DeployTest;
 
 class TestDeploy : public QObject
 {
