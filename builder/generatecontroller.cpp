@@ -25,6 +25,7 @@ namespace Builder {
 namespace {
 
 const char BackupsKeptKey[] = "builder/generate/backupsKept";
+const char TestComponentKey[] = "builder/generate/testComponent";
 const char OutputFoldersGroup[] = "builder/generate/outputFolders/";
 
 Diagnostic problem(const QString &file, const QString &message)
@@ -112,6 +113,16 @@ int GenerateController::backupsKept()
 void GenerateController::setBackupsKept(int count)
 {
     QSettings().setValue(QLatin1String(BackupsKeptKey), std::max(count, 0));
+}
+
+bool GenerateController::testComponent()
+{
+    return QSettings().value(QLatin1String(TestComponentKey), false).toBool();
+}
+
+void GenerateController::setTestComponent(bool on)
+{
+    QSettings().setValue(QLatin1String(TestComponentKey), on);
 }
 
 QList<TargetLanguage> GenerateController::languagesOf(const RtcProfile &profile,
@@ -202,11 +213,12 @@ bool GenerateController::generate()
         return false;
     }
     const std::optional<GenerateOptions> options
-        = m_prompts->askGenerateOptions({suggestedFolder(), backupsKept()});
+        = m_prompts->askGenerateOptions({suggestedFolder(), backupsKept(), testComponent()});
     if (!options || options->outputFolder.isEmpty())
         return false;
     setOutputFolder(options->outputFolder);
     setBackupsKept(options->backupsKept);
+    setTestComponent(options->testComponent);
 
     const QString profilePath = m_profilePath();
     const QStringList leading
@@ -215,6 +227,7 @@ bool GenerateController::generate()
         profile, profilePath.isEmpty() ? QString() : QFileInfo(profilePath).absolutePath(),
         leading));
     CodeGenerator generator(profile, library.model());
+    generator.setTestComponent(options->testComponent);
     Diagnostics problems;
     const std::optional<QList<GeneratedFile>> files = generator.generate(languages, &problems);
     if (!files) {
@@ -246,11 +259,12 @@ QString GenerateController::folderForBackups()
     if (!remembered.isEmpty())
         return remembered;
     const std::optional<GenerateOptions> options
-        = m_prompts->askGenerateOptions({suggestedFolder(), backupsKept()});
+        = m_prompts->askGenerateOptions({suggestedFolder(), backupsKept(), testComponent()});
     if (!options || options->outputFolder.isEmpty())
         return {};
     setOutputFolder(options->outputFolder);
     setBackupsKept(options->backupsKept);
+    setTestComponent(options->testComponent);
     return options->outputFolder;
 }
 

@@ -57,6 +57,10 @@ public:
     /// Backups kept per generated file (a setting shared by all components, default 3).
     static int backupsKept();
     static void setBackupsKept(int count);
+    /// Whether Generate also writes the C++ test component (shared by all components, default
+    /// off).
+    static bool testComponent();
+    static void setTestComponent(bool on);
 
     /**
      * The languages named by the profile's `rtc:Language @kind` (several may be separated by

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "generateoptionsdialog.h"
 
+#include <QCheckBox>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileDialog>
@@ -17,6 +18,7 @@ GenerateOptionsDialog::GenerateOptionsDialog(const GenerateOptions &current, QWi
     : QDialog(parent)
     , m_folder(new QLineEdit(QDir::toNativeSeparators(current.outputFolder), this))
     , m_backups(new QSpinBox(this))
+    , m_testComponent(new QCheckBox(tr("Also generate a &test component (C++)"), this))
 {
     setWindowTitle(tr("Generate"));
     auto *form = new QFormLayout(this);
@@ -35,6 +37,11 @@ GenerateOptionsDialog::GenerateOptionsDialog(const GenerateOptions &current, QWi
                              "<file>YYYYMMDDHHMMSS; older backups beyond this number are "
                              "deleted."));
     form->addRow(tr("&Backups kept per file:"), m_backups);
+    m_testComponent->setChecked(current.testComponent);
+    m_testComponent->setToolTip(tr("Writes test/: a C++ project of the component <N>Test, whose "
+                                   "ports mirror this component's, to exercise it by connecting "
+                                   "the two."));
+    form->addRow(QString(), m_testComponent);
     auto *box = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
     QPushButton *ok = box->addButton(tr("&Generate"), QDialogButtonBox::AcceptRole);
     connect(box, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -48,7 +55,8 @@ GenerateOptionsDialog::GenerateOptionsDialog(const GenerateOptions &current, QWi
 
 GenerateOptions GenerateOptionsDialog::options() const
 {
-    return {QDir::fromNativeSeparators(m_folder->text().trimmed()), m_backups->value()};
+    return {QDir::fromNativeSeparators(m_folder->text().trimmed()), m_backups->value(),
+            m_testComponent->isChecked()};
 }
 
 void GenerateOptionsDialog::browse()

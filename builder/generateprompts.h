@@ -17,10 +17,12 @@ struct GenerateOptions
 {
     QString outputFolder; ///< the component's project folder
     int backupsKept = 3; ///< backups kept per generated file
+    bool testComponent = false; ///< also write the C++ test component under `test/`
 
     bool operator==(const GenerateOptions &other) const
     {
-        return outputFolder == other.outputFolder && backupsKept == other.backupsKept;
+        return outputFolder == other.outputFolder && backupsKept == other.backupsKept
+            && testComponent == other.testComponent;
     }
     bool operator!=(const GenerateOptions &other) const { return !(*this == other); }
 };
@@ -42,7 +44,7 @@ class GeneratePrompts
 public:
     virtual ~GeneratePrompts() = default;
 
-    /// Asks for the output folder and the backups kept; nothing means cancelled.
+    /// Asks for the output folder, the backups kept and the test component; nothing: cancelled.
     virtual std::optional<GenerateOptions> askGenerateOptions(const GenerateOptions &current) = 0;
     /// Asks what to do with `relativePath`, whose `existing` content differs from `fresh`.
     virtual FileChoice askFileDecision(const QString &relativePath, const QByteArray &existing,

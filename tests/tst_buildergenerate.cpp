@@ -9,13 +9,16 @@
 #include "componenteditor.h"
 #include "componentmodel.h"
 #include "generatecontroller.h"
+#include "generateoptionsdialog.h"
 #include "idltypelibrary.h"
 #include "regionmerge.h"
 #include "rtcxml.h"
 #include "typecatalog.h"
 
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -171,6 +174,7 @@ private slots:
     void codeRestoreCancelledChangesNothing();
     void clearBackupsAsksThenRemoves();
     void editorButtonsReachTheController();
+    void testComponentBoxWritesTheTestProject();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -498,6 +502,62 @@ void TestBuilderGenerate::editorButtonsReachTheController()
     s.prompts.summaryTitle.clear();
     emit editor.codeRestoreRequested();
     QCOMPARE(s.prompts.summaryTitle, QStringLiteral("Code Restore"));
+}
+
+/// Answers the options question with the real dialog: ticks the test component box, as the user
+/// would, and presses Generate.
+struct TickingPrompts : ScriptedPrompts
+{
+    bool tick = true;
+
+    std::optional<GenerateOptions> askGenerateOptions(const GenerateOptions &current) override
+    {
+        ++optionsAsked;
+        offeredOptions = current;
+        GenerateOptionsDialog dialog(current);
+        dialog.show();
+        if (!QTest::qWaitForWindowExposed(&dialog))
+            return std::nullopt;
+        if (tick)
+            QTest::mouseClick(dialog.testComponentBox(), Qt::LeftButton, {},
+                              dialog.testComponentBox()->rect().center());
+        dialog.folderEdit()->setText(options->outputFolder);
+        for (QPushButton *button : dialog.findChildren<QPushButton *>()) {
+            if (button->text() == QLatin1String("&Generate"))
+                QTest::mouseClick(button, Qt::LeftButton);
+        }
+        if (dialog.result() != QDialog::Accepted)
+            return std::nullopt;
+        return dialog.options();
+    }
+};
+
+void TestBuilderGenerate::testComponentBoxWritesTheTestProject()
+{
+    QTemporaryDir dir;
+    Profile::RtcProfile profile = fixture();
+    profile.language->kind = QStringLiteral("C++");
+    ComponentModel model(profile);
+    TickingPrompts prompts;
+    prompts.options = GenerateOptions {dir.path(), 3};
+    GenerateController controller(&model, nullptr, &prompts);
+    QVERIFY(controller.generate());
+    QVERIFY(!prompts.offeredOptions.testComponent); // off until asked for
+    QVERIFY2(prompts.summaryProblems.isEmpty(),
+             qPrintable(prompts.summaryProblems.value(0).toString()));
+    const QDir out(dir.path());
+    for (const char *path : {"src/Counter.cpp", "test/CMakeLists.txt", "test/src/CounterTest.cpp",
+                             "test/include/CounterTest/CounterTest.h"})
+        QVERIFY2(out.exists(path), path);
+    QVERIFY(readAll(out.filePath("test/src/CounterTest.cpp")).contains("CounterTest::"));
+    // The choice is remembered and offered, ticked, next time; unticking it is remembered too.
+    QVERIFY(GenerateController::testComponent());
+    QVERIFY(controller.generate());
+    QVERIFY(prompts.offeredOptions.testComponent);
+    QVERIFY(!GenerateController::testComponent());
+    prompts.tick = false;
+    QVERIFY(controller.generate());
+    QVERIFY(!prompts.offeredOptions.testComponent);
 }
 
 QTEST_MAIN(TestBuilderGenerate)

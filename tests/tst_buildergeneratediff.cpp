@@ -279,6 +279,11 @@ void TestBuilderGenerateDiff::optionsDialogRoundTrips()
     dialog.backupsBox()->setValue(7);
     dialog.folderEdit()->setText(QStringLiteral("  /tmp/other  "));
     QCOMPARE(dialog.options(), (GenerateOptions {QStringLiteral("/tmp/other"), 7}));
+    QVERIFY(!dialog.testComponentBox()->isChecked());
+    dialog.testComponentBox()->setChecked(true);
+    QCOMPARE(dialog.options(), (GenerateOptions {QStringLiteral("/tmp/other"), 7, true}));
+    GenerateOptionsDialog again({QStringLiteral("/tmp/out"), 4, true});
+    QVERIFY(again.testComponentBox()->isChecked());
     QPushButton *generate = nullptr;
     for (QPushButton *button : dialog.findChildren<QPushButton *>()) {
         if (button->text() == QLatin1String("&Generate"))
