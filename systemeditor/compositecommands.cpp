@@ -49,7 +49,8 @@ std::pair<RtsComponent, RtcProfile> makeComposite(const SystemModel &model,
                                                   const QString &instanceName,
                                                   const QString &compositeType,
                                                   const QStringList &members,
-                                                  const QList<ConnectorEnd> &exportedPorts)
+                                                  const QList<ConnectorEnd> &exportedPorts,
+                                                  const QRectF &membersBounds)
 {
     // OpenRTM-aist's composite factories: vendor jp.go.aist, category composite.<type>.
     RtcProfile rtc;
@@ -76,6 +77,8 @@ std::pair<RtsComponent, RtcProfile> makeComposite(const SystemModel &model,
         composite.participants << participant;
         bounds |= QRectF(model.layout(member).position, componentSize(model, member));
     }
+    if (membersBounds.isValid())
+        bounds = membersBounds;
     for (const ConnectorEnd &end : exportedPorts)
         exportPort(model, end, composite, rtc);
     RtsLocation location;
@@ -91,13 +94,15 @@ std::pair<RtsComponent, RtcProfile> makeComposite(const SystemModel &model,
 CreateCompositeCommand::CreateCompositeCommand(SystemModel *model, const QString &compositeType,
                                                const QStringList &members,
                                                const QList<ConnectorEnd> &exportedPorts,
-                                               const QString &instanceName, QUndoCommand *parent)
+                                               const QString &instanceName, QUndoCommand *parent,
+                                               const QRectF &membersBounds)
     : QUndoCommand(parent)
 {
     m_name = instanceName.isEmpty() || model->hasComponent(instanceName)
         ? model->uniqueInstanceName(compositeType)
         : instanceName;
-    auto [composite, rtc] = makeComposite(*model, m_name, compositeType, members, exportedPorts);
+    auto [composite, rtc] = makeComposite(*model, m_name, compositeType, members, exportedPorts,
+                                            membersBounds);
     new AddComponentCommand(model, composite, rtc, this);
     setText(tr("Create composite %1").arg(m_name));
 }

@@ -3,6 +3,8 @@
 
 #include "instancecommands.h"
 
+#include <QRectF>
+
 namespace SystemEditor {
 
 /// The composite kinds the editor creates (RtsComponent::compositeType).
@@ -11,12 +13,14 @@ QStringList compositeKinds(); ///< PeriodicECShared, PeriodicStateShared, Groupi
 /**
  * A composite component record and the RTC profile describing its exported ports: type
  * `compositeType`, members as participants, one port per exported member port (named as the
- * member's port, e.g. `ConsoleIn0.out`, with the member's kind and data type), placed above
- * and left of its members.
+ * member's port, e.g. `ConsoleIn0.out`, with the member's kind and data type), placed around
+ * its members: around `membersBounds` when given (the canvas knows the drawn sizes), else around
+ * the members' saved positions and sizes.
  */
 std::pair<Profile::RtsComponent, Profile::RtcProfile>
 makeComposite(const SystemModel &model, const QString &instanceName, const QString &compositeType,
-              const QStringList &members, const QList<ConnectorEnd> &exportedPorts);
+              const QStringList &members, const QList<ConnectorEnd> &exportedPorts,
+              const QRectF &membersBounds = {});
 
 /// Groups components into a new composite component (members stay in the system).
 class CreateCompositeCommand : public QUndoCommand
@@ -27,7 +31,8 @@ public:
     /// An empty `instanceName` becomes the first free `<compositeType>N`.
     CreateCompositeCommand(SystemModel *model, const QString &compositeType,
                            const QStringList &members, const QList<ConnectorEnd> &exportedPorts,
-                           const QString &instanceName = {}, QUndoCommand *parent = nullptr);
+                           const QString &instanceName = {}, QUndoCommand *parent = nullptr,
+                           const QRectF &membersBounds = {});
 
     QString instanceName() const { return m_name; }
 

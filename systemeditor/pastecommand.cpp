@@ -5,6 +5,13 @@
 #include "componentfactory.h"
 #include "connectorcommands.h"
 
+#include "profileio.h"
+#include "rtcxml.h"
+#include "rtsxml.h"
+
+#include <QDataStream>
+#include <QIODevice>
+#include <QMimeData>
 #include <QSet>
 
 namespace SystemEditor {
@@ -60,6 +67,87 @@ ComponentClipboard ComponentClipboard::copy(const SystemModel &model,
     }
     clipboard.dataConnectors = innerConnectors(model.profile().dataPortConnectors, copied);
     clipboard.serviceConnectors = innerConnectors(model.profile().servicePortConnectors, copied);
+    return clipboard;
+}
+
+QMimeData *ComponentClipboard::toMimeData() const
+{
+    RtsProfile fragment;
+    fragment.id = QStringLiteral("RTSystem:RTStudio:Clipboard:1.0");
+    fragment.version = RtsProfile::CurrentVersion;
+    fragment.creationDate = fragment.updateDate = QStringLiteral("2000-01-01T00:00:00");
+    fragment.components = components;
+    fragment.dataPortConnectors = dataConnectors;
+    fragment.servicePortConnectors = serviceConnectors;
+    const QByteArray xml = writeRtsXml(fragment);
+    QByteArray rtcs;
+    QDataStream stream(&rtcs, QIODevice::WriteOnly);
+    for (auto it = rtcProfiles.cbegin(); it != rtcProfiles.cend(); ++it)
+        stream << it.key() << writeRtcXml(it.value());
+    auto *mime = new QMimeData;
+    mime->setData(MimeType, xml);
+    mime->setData(RtcMimeType, rtcs);
+    mime->setText(QString::fromUtf8(xml));
+    return mime;
+}
+
+bool ComponentClipboard::canRead(const QMimeData *mime)
+{
+    return mime && mime->hasFormat(MimeType);
+}
+
+namespace {
+
+/// The RTC profiles written by toMimeData(); unreadable entries are left out (their
+/// components paste without port kinds, as when their RTC.xml is missing).
+QHash<QString, RtcProfile> readRtcProfiles(const QByteArray &data)
+{
+    QHash<QString, RtcProfile> profiles;
+    QDataStream stream(data);
+    while (!stream.atEnd()) {
+        QString instance;
+        QByteArray xml;
+        stream >> instance >> xml;
+        if (stream.status() != QDataStream::Ok)
+            break;
+        Diagnostics diagnostics;
+        if (std::optional<RtcProfile> rtc = readRtcXml(xml, QString(), &diagnostics))
+            profiles.insert(instance, *rtc);
+    }
+    return profiles;
+}
+
+} // namespace
+
+std::optional<ComponentClipboard> ComponentClipboard::fromMimeData(const QMimeData *mime,
+                                                                   QString *error)
+{
+    if (!canRead(mime)) {
+        *error = QCoreApplication::translate("SystemEditor::ComponentClipboard",
+                                             "The clipboard holds no components.");
+        return std::nullopt;
+    }
+    Diagnostics diagnostics;
+    const std::optional<RtsProfile> fragment
+        = readRtsXml(mime->data(MimeType), QStringLiteral("clipboard"), &diagnostics);
+    if (!fragment || fragment->components.isEmpty()) {
+        const QString detail = diagnostics.isEmpty() ? QString() : diagnostics.first().toString();
+        *error = QCoreApplication::translate("SystemEditor::ComponentClipboard",
+                                             "The clipboard's components cannot be read: %1")
+                     .arg(detail.isEmpty() ? QStringLiteral("no components") : detail);
+        return std::nullopt;
+    }
+    ComponentClipboard clipboard;
+    clipboard.components = fragment->components;
+    clipboard.dataConnectors = fragment->dataPortConnectors;
+    clipboard.serviceConnectors = fragment->servicePortConnectors;
+    clipboard.rtcProfiles = readRtcProfiles(mime->data(RtcMimeType));
+    QStringList names;
+    for (const RtsComponent &component : std::as_const(clipboard.components))
+        names << component.instanceName;
+    // Connectors whose ends were not copied along would point at nothing once pasted.
+    clipboard.dataConnectors = innerConnectors(clipboard.dataConnectors, names);
+    clipboard.serviceConnectors = innerConnectors(clipboard.serviceConnectors, names);
     return clipboard;
 }
 

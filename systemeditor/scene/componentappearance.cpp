@@ -18,6 +18,9 @@ ComponentAppearance ComponentAppearance::fromModel(const SystemModel &model,
         const std::optional<Profile::RtsComponentTypeId> type
             = Profile::RtsComponentTypeId::parse(component->id);
         appearance.typeName = type ? type->name : component->id;
+        const QString composite = component->compositeType.value_or(QString());
+        if (!composite.isEmpty() && composite != QLatin1String("None"))
+            appearance.compositeType = composite;
     }
     appearance.size = model.layout(instanceName).size;
     appearance.ports = model.ports(instanceName);
@@ -32,7 +35,7 @@ bool ComponentAppearance::operator==(const ComponentAppearance &other) const
 {
     return instanceName == other.instanceName && typeName == other.typeName
         && size == other.size && bodyColor == other.bodyColor && ports == other.ports
-        && connectedPorts == other.connectedPorts;
+        && connectedPorts == other.connectedPorts && compositeType == other.compositeType;
 }
 
 namespace {

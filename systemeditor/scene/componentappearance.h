@@ -21,6 +21,11 @@ struct ComponentAppearance
     QColor bodyColor = QColor(255, 255, 238);
     QList<PortInfo> ports; ///< PortInfo::side already turned by the component's direction
     QSet<QString> connectedPorts; ///< names of ports with at least one connector
+    /// The composite kind (`PeriodicECShared`, …) of a composite component; empty otherwise.
+    /// A composite is drawn as a frame around its members with the exported ports on it.
+    QString compositeType;
+
+    bool isComposite() const { return !compositeType.isEmpty(); }
 
     /// The appearance of one component of `model`.
     static ComponentAppearance fromModel(const SystemModel &model, const QString &instanceName);

@@ -18,27 +18,65 @@ namespace {
 constexpr qreal HandleSize = 10;
 constexpr qreal LabelMargin = 4;
 
-QFont titleFont()
+// The fonts and their metrics are made once: building a QFont and measuring with it on every
+// paint of a thousand components costs more than drawing them.
+const QFont &titleFont()
 {
-    QFont font;
-    font.setBold(true);
+    static const QFont font = [] {
+        QFont f;
+        f.setBold(true);
+        return f;
+    }();
     return font;
 }
 
-QFont typeFont()
+const QFont &typeFont()
 {
-    QFont font;
-    font.setItalic(true);
-    font.setPointSizeF(font.pointSizeF() * 0.85);
+    static const QFont font = [] {
+        QFont f;
+        f.setItalic(true);
+        f.setPointSizeF(f.pointSizeF() * 0.85);
+        return f;
+    }();
     return font;
 }
 
-QFont labelFont()
+const QFont &labelFont()
 {
-    QFont font;
-    font.setPointSizeF(font.pointSizeF() * 0.8);
+    static const QFont font = [] {
+        QFont f;
+        f.setPointSizeF(f.pointSizeF() * 0.8);
+        return f;
+    }();
     return font;
 }
+
+const QFontMetricsF &titleMetrics()
+{
+    static const QFontMetricsF metrics(titleFont());
+    return metrics;
+}
+
+const QFontMetricsF &typeMetrics()
+{
+    static const QFontMetricsF metrics(typeFont());
+    return metrics;
+}
+
+const QFontMetricsF &labelMetrics()
+{
+    static const QFontMetricsF metrics(labelFont());
+    return metrics;
+}
+
+constexpr qreal CompositeZ = -2; // under connectors (-1) and components (0)
+constexpr qreal FrameWidth = 8;
+
+/// Below this scale the port labels are a few pixels high and cannot be read; leaving them out
+/// keeps a zoomed-out view of a large system fast.
+constexpr qreal LabelDetailLimit = 0.45;
+/// Below this scale the type line is left out too; the instance name stays.
+constexpr qreal TypeDetailLimit = 0.3;
 
 } // namespace
 
@@ -48,6 +86,8 @@ ComponentItem::ComponentItem(const ComponentAppearance &appearance, QGraphicsIte
 {
     setFlags(ItemIsMovable | ItemIsSelectable | ItemIsFocusable | ItemSendsGeometryChanges);
     setAcceptHoverEvents(true);
+    // A composite's frame lies under its members and their connectors.
+    setZValue(appearance.isComposite() ? CompositeZ : 0);
     relayout();
     rebuildPorts();
 }
@@ -57,6 +97,7 @@ void ComponentItem::setAppearance(const ComponentAppearance &appearance)
     if (appearance == m_appearance)
         return;
     m_appearance = appearance;
+    setZValue(appearance.isComposite() ? CompositeZ : 0);
     prepareGeometryChange();
     relayout();
     rebuildPorts();
@@ -89,14 +130,24 @@ QPainterPath ComponentItem::shape() const
 {
     QPainterPath path;
     path.addRect(m_geometry.body);
+    if (m_appearance.isComposite()) {
+        // Only the frame and the title band: clicks inside reach the members.
+        path.addRect(m_geometry.body.adjusted(FrameWidth, compositeBandHeight(), -FrameWidth,
+                                              -FrameWidth));
+    }
     return path;
+}
+
+qreal ComponentItem::compositeBandHeight()
+{
+    return titleMetrics().height() + typeMetrics().height() + 8;
 }
 
 ComponentTextSizes ComponentItem::measureText() const
 {
-    const QFontMetricsF title(titleFont());
-    const QFontMetricsF type(typeFont());
-    const QFontMetricsF label(labelFont());
+    const QFontMetricsF &title = titleMetrics();
+    const QFontMetricsF &type = typeMetrics();
+    const QFontMetricsF &label = labelMetrics();
     ComponentTextSizes sizes;
     sizes.titleWidth = std::max(title.horizontalAdvance(m_appearance.instanceName),
                                 type.horizontalAdvance(m_appearance.typeName));
@@ -111,6 +162,43 @@ ComponentTextSizes ComponentItem::measureText() const
 void ComponentItem::relayout()
 {
     m_geometry = ComponentGeometry::layout(m_appearance, measureText());
+    layoutPortLabels();
+}
+
+void ComponentItem::layoutPortLabels()
+{
+    // Placed and elided once per layout, not on every paint.
+    m_labels.clear();
+    const QFontMetricsF &metrics = labelMetrics();
+    const qreal h = metrics.height();
+    const QRectF body = m_geometry.body;
+    const qreal innerWidth = body.width() - 2 * LabelMargin;
+    for (int i = 0; i < m_appearance.ports.size(); ++i) {
+        const PortInfo &port = m_appearance.ports.at(i);
+        const QPointF at = m_geometry.portCenters.at(i);
+        PortLabel label;
+        label.align = Qt::AlignVCenter;
+        switch (port.side) {
+        case PortSide::Left:
+            label.rect = QRectF(body.left() + LabelMargin, at.y() - h / 2, innerWidth, h);
+            label.align |= Qt::AlignLeft;
+            break;
+        case PortSide::Right:
+            label.rect = QRectF(body.left() + LabelMargin, at.y() - h / 2, innerWidth, h);
+            label.align |= Qt::AlignRight;
+            break;
+        case PortSide::Top:
+            label.rect = QRectF(at.x() - PortPitch * 2, body.top() + 2, PortPitch * 4, h);
+            label.align |= Qt::AlignHCenter;
+            break;
+        case PortSide::Bottom:
+            label.rect = QRectF(at.x() - PortPitch * 2, body.bottom() - 2 - h, PortPitch * 4, h);
+            label.align |= Qt::AlignHCenter;
+            break;
+        }
+        label.text = metrics.elidedText(port.profileName, Qt::ElideRight, label.rect.width());
+        m_labels.append(label);
+    }
 }
 
 void ComponentItem::rebuildPorts()
@@ -131,11 +219,18 @@ void ComponentItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *opt
 {
     painter->setRenderHint(QPainter::Antialiasing);
     const bool selected = option->state & QStyle::State_Selected;
-    painter->setPen(selected ? QPen(QColor(30, 110, 230), 2.5) : QPen(QColor(60, 60, 60), 1.2));
-    painter->setBrush(m_appearance.bodyColor);
-    painter->drawRoundedRect(m_geometry.body, 4, 4);
-    paintTitles(painter);
-    paintPortLabels(painter);
+    const qreal detail = option->levelOfDetailFromTransform(painter->worldTransform());
+    if (m_appearance.isComposite()) {
+        paintComposite(painter, selected, detail >= TypeDetailLimit);
+    } else {
+        painter->setPen(selected ? QPen(QColor(30, 110, 230), 2.5)
+                                 : QPen(QColor(60, 60, 60), 1.2));
+        painter->setBrush(m_appearance.bodyColor);
+        painter->drawRoundedRect(m_geometry.body, 4, 4);
+        paintTitles(painter, detail >= TypeDetailLimit);
+    }
+    if (detail >= LabelDetailLimit)
+        paintPortLabels(painter);
     if (selected) {
         painter->setPen(Qt::NoPen);
         painter->setBrush(QColor(30, 110, 230));
@@ -149,56 +244,52 @@ void ComponentItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *opt
     }
 }
 
-void ComponentItem::paintTitles(QPainter *painter) const
+void ComponentItem::paintTitles(QPainter *painter, bool withType) const
 {
-    const QFontMetricsF title(titleFont());
-    const QFontMetricsF type(typeFont());
     const QRectF body = m_geometry.body;
     const qreal top = m_geometry.title.top();
+    const qreal titleHeight = titleMetrics().height();
     painter->setPen(QColor(20, 20, 20));
     painter->setFont(titleFont());
-    painter->drawText(QRectF(body.left(), top, body.width(), title.height()), Qt::AlignCenter,
+    painter->drawText(QRectF(body.left(), top, body.width(), titleHeight), Qt::AlignCenter,
                       m_appearance.instanceName);
+    if (!withType)
+        return;
     painter->setPen(QColor(90, 90, 90));
     painter->setFont(typeFont());
-    painter->drawText(QRectF(body.left(), top + title.height(), body.width(), type.height()),
+    painter->drawText(QRectF(body.left(), top + titleHeight, body.width(), typeMetrics().height()),
                       Qt::AlignCenter, m_appearance.typeName);
+}
+
+void ComponentItem::paintComposite(QPainter *painter, bool selected, bool withType) const
+{
+    QPen frame(selected ? QColor(30, 110, 230) : QColor(80, 80, 130), selected ? 2.5 : 1.5);
+    frame.setStyle(Qt::DashLine);
+    painter->setPen(frame);
+    painter->setBrush(QColor(228, 232, 250, 110));
+    painter->drawRoundedRect(m_geometry.body, 8, 8);
+    const QRectF band = m_geometry.body.adjusted(FrameWidth, 4, -FrameWidth, 0);
+    const qreal titleHeight = titleMetrics().height();
+    painter->setPen(QColor(20, 20, 20));
+    painter->setFont(titleFont());
+    painter->drawText(QRectF(band.left(), band.top(), band.width(), titleHeight),
+                      Qt::AlignLeft | Qt::AlignVCenter, m_appearance.instanceName);
+    if (!withType)
+        return;
+    painter->setPen(QColor(90, 90, 90));
+    painter->setFont(typeFont());
+    painter->drawText(QRectF(band.left(), band.top() + titleHeight, band.width(),
+                             typeMetrics().height()),
+                      Qt::AlignLeft | Qt::AlignVCenter,
+                      tr("Composite (%1)").arg(m_appearance.compositeType));
 }
 
 void ComponentItem::paintPortLabels(QPainter *painter) const
 {
     painter->setFont(labelFont());
     painter->setPen(QColor(50, 50, 80));
-    const QFontMetricsF metrics(labelFont());
-    const qreal h = metrics.height();
-    const QRectF body = m_geometry.body;
-    for (int i = 0; i < m_appearance.ports.size(); ++i) {
-        const PortInfo &port = m_appearance.ports.at(i);
-        const QPointF at = m_geometry.portCenters.at(i);
-        const qreal innerWidth = body.width() - 2 * LabelMargin;
-        QRectF rect;
-        Qt::Alignment align = Qt::AlignVCenter;
-        switch (port.side) {
-        case PortSide::Left:
-            rect = QRectF(body.left() + LabelMargin, at.y() - h / 2, innerWidth, h);
-            align |= Qt::AlignLeft;
-            break;
-        case PortSide::Right:
-            rect = QRectF(body.left() + LabelMargin, at.y() - h / 2, innerWidth, h);
-            align |= Qt::AlignRight;
-            break;
-        case PortSide::Top:
-            rect = QRectF(at.x() - PortPitch * 2, body.top() + 2, PortPitch * 4, h);
-            align |= Qt::AlignHCenter;
-            break;
-        case PortSide::Bottom:
-            rect = QRectF(at.x() - PortPitch * 2, body.bottom() - 2 - h, PortPitch * 4, h);
-            align |= Qt::AlignHCenter;
-            break;
-        }
-        painter->drawText(rect, int(align),
-                          metrics.elidedText(port.profileName, Qt::ElideRight, rect.width()));
-    }
+    for (const PortLabel &label : m_labels)
+        painter->drawText(label.rect, label.align, label.text);
 }
 
 QVariant ComponentItem::itemChange(GraphicsItemChange change, const QVariant &value)

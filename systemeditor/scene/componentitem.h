@@ -16,6 +16,9 @@ class PortItem;
  * direction. Drawn from a ComponentAppearance only; the scene refreshes it when the model
  * changes.
  *
+ * A composite component is drawn as a dashed frame under its members, with its kind in the
+ * title band and its exported ports on the frame; only the frame and the band take clicks.
+ *
  * The user moves it (the scene turns the move into an undo command when the mouse is released)
  * and resizes it with the handle at the bottom-right corner of a selected item, which emits
  * resizeRequested().
@@ -65,12 +68,24 @@ protected:
 private:
     ComponentTextSizes measureText() const;
     void relayout();
+    void layoutPortLabels();
     void rebuildPorts();
-    void paintTitles(QPainter *painter) const;
+    void paintTitles(QPainter *painter, bool withType) const;
     void paintPortLabels(QPainter *painter) const;
+    void paintComposite(QPainter *painter, bool selected, bool withType) const;
+    static qreal compositeBandHeight();
+
+    /// A port's name as drawn inside the body: placed and elided at layout time.
+    struct PortLabel
+    {
+        QRectF rect;
+        int align = 0;
+        QString text;
+    };
 
     ComponentAppearance m_appearance;
     ComponentGeometry m_geometry;
+    QList<PortLabel> m_labels;
     QHash<QString, PortItem *> m_ports;
     qreal m_snapGrid = 0;
     bool m_resizing = false;

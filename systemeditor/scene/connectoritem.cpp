@@ -9,6 +9,8 @@
 #include <QPainterPathStroker>
 #include <QStyleOptionGraphicsItem>
 
+#include <algorithm>
+
 namespace SystemEditor {
 
 namespace {
@@ -106,7 +108,11 @@ void ConnectorItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *opt
         pen.setStyle(Qt::DashLine);
     painter->setPen(pen);
     painter->setBrush(Qt::NoBrush);
-    painter->drawPolyline(m_route);
+    // Dashes keep their phase only when the whole route is drawn.
+    if (m_info.kind == ConnectorKind::Service)
+        painter->drawPolyline(m_route);
+    else
+        drawVisibleRoute(painter, pen.widthF());
     if (!selected)
         return;
     painter->setPen(QPen(QColor(30, 110, 230), 1));
@@ -114,6 +120,68 @@ void ConnectorItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *opt
     for (const QPointF &corner : routeCorners(m_route))
         painter->drawRect(QRectF(corner - QPointF(HandleRadius, HandleRadius),
                                  QSizeF(2 * HandleRadius, 2 * HandleRadius)));
+}
+
+namespace {
+
+/// The part of the view the painter can reach, in the painter's (item) coordinates.
+QRectF paintableArea(const QPainter *painter)
+{
+    const QPaintDevice *device = painter->device();
+    QRectF area = painter->worldTransform().inverted().mapRect(
+        QRectF(0, 0, device->width(), device->height()));
+    if (painter->hasClipping())
+        area &= painter->clipBoundingRect();
+    return area;
+}
+
+/// `segment` (axis-parallel) cut to `area`.
+QLineF clipped(const QLineF &segment, const QRectF &area)
+{
+    const auto clamp = [&area](const QPointF &p) {
+        return QPointF(std::clamp(p.x(), area.left(), area.right()),
+                       std::clamp(p.y(), area.top(), area.bottom()));
+    };
+    return QLineF(clamp(segment.p1()), clamp(segment.p2()));
+}
+
+} // namespace
+
+void ConnectorItem::drawVisibleRoute(QPainter *painter, qreal penWidth) const
+{
+    // Connectors of a large system cross the whole diagram: their bounding rectangles cover
+    // any view, so most of them are asked to paint although little or nothing of them shows.
+    // Stroking only the runs of segments that reach the view (cut a pen's width outside it, so
+    // caps stay invisible and corners keep their joins) keeps pan and zoom fast.
+    const QRectF area = paintableArea(painter).adjusted(-4 * penWidth, -4 * penWidth,
+                                                        4 * penWidth, 4 * penWidth);
+    if (!area.isValid() || area.contains(m_path.boundingRect())) {
+        painter->drawPolyline(m_route);
+        return;
+    }
+    QPolygonF run;
+    for (int i = 0; i + 1 < m_route.size(); ++i) {
+        const QLineF segment(m_route.at(i), m_route.at(i + 1));
+        const QRectF box = QRectF(segment.p1(), segment.p2()).normalized();
+        if (!box.adjusted(-0.5, -0.5, 0.5, 0.5).intersects(area)) {
+            if (run.size() > 1)
+                painter->drawPolyline(run);
+            run.clear();
+            continue;
+        }
+        const QLineF cut = clipped(segment, area);
+        if (!run.isEmpty() && run.last() != cut.p1()) {
+            // The route left the area at the corner and comes back: a new run.
+            if (run.size() > 1)
+                painter->drawPolyline(run);
+            run.clear();
+        }
+        if (run.isEmpty())
+            run << cut.p1();
+        run << cut.p2();
+    }
+    if (run.size() > 1)
+        painter->drawPolyline(run);
 }
 
 void ConnectorItem::mousePressEvent(QGraphicsSceneMouseEvent *event)

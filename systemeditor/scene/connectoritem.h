@@ -55,6 +55,7 @@ protected:
 
 private:
     void setRoute(const QPolygonF &route);
+    void drawVisibleRoute(QPainter *painter, qreal penWidth) const;
 
     ConnectorInfo m_info;
     PortItem *m_source = nullptr;

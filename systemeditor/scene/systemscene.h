@@ -67,12 +67,25 @@ public:
 
     /// Deletes the selected components (with their connectors) and connectors.
     void deleteSelection();
-    /// Copies the selected components and the connectors between them (an application-wide
-    /// clipboard, so that they can be pasted into another system too).
+    /// Copies the selected components and the connectors between them to the system clipboard
+    /// (ComponentClipboard::toMimeData()), so that they can be pasted into another system, in
+    /// this or another window.
     void copySelection();
-    /// Pastes what was copied last, offset further on each paste, renamed where taken.
+    /// Pastes the clipboard's components, offset further on each paste, renamed where taken;
+    /// false with a statusMessage() when the clipboard holds nothing readable.
     bool paste();
     static bool canPaste();
+    /**
+     * Groups the selected components into a new composite component of `compositeType`
+     * (PeriodicECShared, PeriodicStateShared, Grouping) exporting `exportedPorts` of its
+     * members; one undo step. Returns the composite's instance name, empty when nothing is
+     * selected.
+     */
+    QString groupSelection(const QString &compositeType, const QList<ConnectorEnd> &exportedPorts);
+    /// The selected composite components, in model order.
+    QStringList selectedComposites() const;
+    /// Dissolves the selected composites (their members stay); false when none is selected.
+    bool decomposeSelection();
     void setDirectionOfSelection(Direction direction);
     void alignSelection(Alignment alignment);
     /// Renames an instance; false (and connectionRefused-like message) when the name is taken.
@@ -87,6 +100,9 @@ public:
                              const ServiceConnectorSettings &settings);
     /// Applies dialog settings to an existing data connector.
     void editConnector(const QString &connectorId, const ConnectorSettings &settings);
+    /// Edits a service connector's name and interface mapping (one undo step).
+    void editServiceConnector(const QString &connectorId,
+                              const ServiceConnectorSettings &settings);
 
     /// The reason the last connect attempt was refused (empty after a legal one).
     QString lastRefusal() const { return m_lastRefusal; }
@@ -100,9 +116,6 @@ signals:
     void connectionRefused(const QString &reason);
     /// Double-click on a connector.
     void connectorEditRequested(const QString &connectorId);
-    /// Edits a service connector's name and interface mapping (one undo step).
-    void editServiceConnector(const QString &connectorId,
-                              const ServiceConnectorSettings &settings);
     /// Double-click on a component.
     void componentActivated(const QString &instanceName);
     /// A short message for the status bar.

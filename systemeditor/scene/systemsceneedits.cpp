@@ -4,25 +4,21 @@
 
 #include "instancecommands.h"
 #include "componentfactory.h"
+#include "compositecommands.h"
 #include "componentitem.h"
 #include "connectorcommands.h"
 #include "connectoritem.h"
 #include "pastecommand.h"
 #include "portitem.h"
 
+#include <QClipboard>
+#include <QGuiApplication>
+#include <QMimeData>
 #include <QUndoStack>
 
 namespace SystemEditor {
 
 namespace {
-
-/// What Copy took, shared by all canvases of the application so that components can be
-/// pasted into another system too.
-ComponentClipboard &sharedClipboard()
-{
-    static ComponentClipboard clipboard;
-    return clipboard;
-}
 
 constexpr qreal PasteOffset = 40;
 
@@ -65,25 +61,78 @@ void SystemScene::copySelection()
     const QStringList components = selectedComponents();
     if (components.isEmpty())
         return;
-    sharedClipboard() = ComponentClipboard::copy(*m_model, components);
+    // The system clipboard, so that another window or another rtstudio can paste them.
+    QGuiApplication::clipboard()->setMimeData(
+        ComponentClipboard::copy(*m_model, components).toMimeData());
     m_pasteCount = 0;
 }
 
 bool SystemScene::canPaste()
 {
-    return !sharedClipboard().isEmpty();
+    return ComponentClipboard::canRead(QGuiApplication::clipboard()->mimeData());
 }
 
 bool SystemScene::paste()
 {
-    if (sharedClipboard().isEmpty())
+    QString error;
+    const std::optional<ComponentClipboard> clipboard
+        = ComponentClipboard::fromMimeData(QGuiApplication::clipboard()->mimeData(), &error);
+    if (!clipboard) {
+        emit statusMessage(error);
         return false;
+    }
     ++m_pasteCount;
-    auto *command = new PasteComponentsCommand(m_model, sharedClipboard(),
+    auto *command = new PasteComponentsCommand(m_model, *clipboard,
                                                QPointF(PasteOffset, PasteOffset) * m_pasteCount);
     const QStringList names = command->pastedNames();
     push(command);
     selectComponents(names);
+    return true;
+}
+
+QString SystemScene::groupSelection(const QString &compositeType,
+                                    const QList<ConnectorEnd> &exportedPorts)
+{
+    const QStringList members = selectedComponents();
+    if (members.isEmpty())
+        return {};
+    // Around the members as drawn (with their labels), not only as saved.
+    QRectF bounds;
+    for (const QString &member : members) {
+        const ComponentItem *item = m_components.value(member);
+        bounds |= item->mapRectToScene(item->bodyRect());
+    }
+    auto *command = new CreateCompositeCommand(m_model, compositeType, members, exportedPorts, {},
+                                               nullptr, bounds);
+    const QString name = command->instanceName();
+    push(command);
+    selectComponents({name});
+    return name;
+}
+
+QStringList SystemScene::selectedComposites() const
+{
+    QStringList names;
+    for (const QString &name : selectedComponents()) {
+        if (m_components.value(name)->appearance().isComposite())
+            names.append(name);
+    }
+    return names;
+}
+
+bool SystemScene::decomposeSelection()
+{
+    const QStringList composites = selectedComposites();
+    if (composites.isEmpty())
+        return false;
+    if (composites.size() == 1) {
+        push(new DecomposeCommand(m_model, composites.first()));
+        return true;
+    }
+    auto *macro = new QUndoCommand(tr("Decompose %n composites", nullptr, int(composites.size())));
+    for (const QString &name : composites)
+        new DecomposeCommand(m_model, name, macro);
+    push(macro);
     return true;
 }
 
@@ -163,6 +212,14 @@ void SystemScene::editConnector(const QString &connectorId, const ConnectorSetti
         push(command);
 }
 
+void SystemScene::editServiceConnector(const QString &connectorId,
+                                       const ServiceConnectorSettings &settings)
+{
+    if (EditConnectorCommand *command
+        = EditConnectorCommand::fromSettings(m_model, connectorId, settings))
+        push(command);
+}
+
 void SystemScene::commitMoves()
 {
     QHash<QString, QPointF> positions;
@@ -175,11 +232,3 @@ void SystemScene::commitMoves()
 }
 
 } // namespace SystemEditor
-void SystemScene::editServiceConnector(const QString &connectorId,
-                                       const ServiceConnectorSettings &settings)
-{
-    if (EditConnectorCommand *command
-        = EditConnectorCommand::fromSettings(m_model, connectorId, settings))
-        push(command);
-}
-

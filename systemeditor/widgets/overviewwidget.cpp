@@ -20,6 +20,7 @@ OverviewWidget::OverviewWidget(SystemScene *scene, QGraphicsView *view, QWidget 
     setCursor(Qt::PointingHandCursor);
     setToolTip(tr("Overview: click to show that part of the diagram"));
     connect(scene, &QGraphicsScene::changed, this, [this] {
+        m_map = QPixmap();
         updateVisibility();
         update();
     });
@@ -77,10 +78,29 @@ void OverviewWidget::paintEvent(QPaintEvent *)
     if (area.isEmpty())
         return;
     const QTransform transform = sceneToWidget();
-    m_scene->render(&painter, transform.mapRect(area), area);
+    const QRect target = transform.mapRect(area).toAlignedRect();
+    painter.drawPixmap(target.topLeft(), diagramPixmap(area, target));
     painter.setPen(QPen(QColor(30, 110, 230), 1.5));
     painter.setBrush(QColor(30, 110, 230, 30));
     painter.drawRect(visibleFrame());
+}
+
+const QPixmap &OverviewWidget::diagramPixmap(const QRectF &area, const QRect &target)
+{
+    // Scrolling repaints the frame only; rendering a thousand components on every scroll step
+    // would make panning a large diagram slow.
+    if (!m_map.isNull() && area == m_mapArea && target == m_mapTarget)
+        return m_map;
+    const qreal ratio = devicePixelRatioF();
+    m_map = QPixmap(target.size() * ratio);
+    m_map.setDevicePixelRatio(ratio);
+    m_map.fill(Qt::transparent);
+    QPainter painter(&m_map);
+    painter.setRenderHint(QPainter::Antialiasing);
+    m_scene->render(&painter, QRectF(QPointF(0, 0), QSizeF(target.size())), area);
+    m_mapArea = area;
+    m_mapTarget = target;
+    return m_map;
 }
 
 void OverviewWidget::mousePressEvent(QMouseEvent *event)

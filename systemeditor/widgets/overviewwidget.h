@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QPixmap>
 #include <QWidget>
 
 class QGraphicsView;
@@ -36,9 +37,13 @@ protected:
 private:
     QRectF diagramArea() const;
     QTransform sceneToWidget() const;
+    const QPixmap &diagramPixmap(const QRectF &area, const QRect &target);
 
     SystemScene *m_scene;
     QGraphicsView *m_view;
+    QPixmap m_map; ///< the scaled-down diagram, drawn again only when the scene changes
+    QRectF m_mapArea;
+    QRect m_mapTarget;
 };
 
 } // namespace SystemEditor

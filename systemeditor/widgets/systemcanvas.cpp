@@ -9,11 +9,15 @@
 #include "systemview.h"
 
 #include <QAction>
+#include <QClipboard>
+#include <QGuiApplication>
+#include <QEvent>
 #include <QGraphicsItem>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QScrollBar>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -52,6 +56,13 @@ SystemCanvas::SystemCanvas(SystemModel *model, QUndoStack *undoStack, QWidget *p
     createEditActions();
     createViewActions();
     createArrangeActions();
+    m_compositeEditor = [this](const SystemModel &model, const QStringList &members)
+        -> std::optional<CompositeDialog::Choice> {
+        CompositeDialog dialog(model, members, this);
+        if (dialog.exec() != QDialog::Accepted)
+            return std::nullopt;
+        return dialog.choice();
+    };
     m_view->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_view, &QWidget::customContextMenuRequested, this, &SystemCanvas::showContextMenu);
     connect(m_view, &SystemView::statusMessage, this, &SystemCanvas::statusMessage);
@@ -59,6 +70,10 @@ SystemCanvas::SystemCanvas(SystemModel *model, QUndoStack *undoStack, QWidget *p
     connect(m_scene, &SystemScene::componentActivated, this, [this] { m_view->startRename(); });
     updateActions();
     m_overview->updateVisibility();
+    connect(QGuiApplication::clipboard(), &QClipboard::dataChanged, this,
+            &SystemCanvas::updateActions);
+    m_view->viewport()->installEventFilter(this);
+    m_view->installEventFilter(this);
 }
 
 SystemCanvas::~SystemCanvas()
@@ -108,6 +123,13 @@ void SystemCanvas::createEditActions()
     connect(addCanvasAction(QStringLiteral("actionRename"), tr("&Rename Instance"),
                             QKeySequence(Qt::Key_F2)),
             &QAction::triggered, m_view, &SystemView::startRename);
+    connect(addCanvasAction(QStringLiteral("actionGroupComposite"), tr("&Group as Composite…")),
+            &QAction::triggered, this, &SystemCanvas::groupSelection);
+    connect(addCanvasAction(QStringLiteral("actionDecompose"), tr("D&ecompose")),
+            &QAction::triggered, this, [this] {
+                m_scene->decomposeSelection();
+                updateActions();
+            });
     connect(addCanvasAction(QStringLiteral("actionFind"), tr("&Find Component…"),
                             QKeySequence::Find),
             &QAction::triggered, this, &SystemCanvas::showFind);
@@ -115,6 +137,13 @@ void SystemCanvas::createEditActions()
 
 void SystemCanvas::createViewActions()
 {
+    // Any zoom the user asks for, or a scroll bar grabbed, ends the fitting of a fresh diagram.
+    connect(m_view, &SystemView::zoomChanged, this, [this] {
+        if (!m_fitting)
+            m_keepFitted = false;
+    });
+    for (QScrollBar *bar : {m_view->horizontalScrollBar(), m_view->verticalScrollBar()})
+        connect(bar, &QScrollBar::sliderPressed, this, [this] { m_keepFitted = false; });
     connect(addCanvasAction(QStringLiteral("actionZoomIn"), tr("Zoom &In"), QKeySequence::ZoomIn),
             &QAction::triggered, m_view, &SystemView::zoomIn);
     connect(addCanvasAction(QStringLiteral("actionZoomOut"), tr("Zoom &Out"),
@@ -171,6 +200,8 @@ void SystemCanvas::updateActions()
     action(QStringLiteral("actionCopy"))->setEnabled(components > 0);
     action(QStringLiteral("actionPaste"))->setEnabled(SystemScene::canPaste());
     action(QStringLiteral("actionRename"))->setEnabled(components == 1);
+    action(QStringLiteral("actionGroupComposite"))->setEnabled(components > 0);
+    action(QStringLiteral("actionDecompose"))->setEnabled(!m_scene->selectedComposites().isEmpty());
     for (QAction *a : actions()) {
         if (a->objectName().startsWith(QLatin1String("actionDirection")))
             a->setEnabled(components > 0);
@@ -192,6 +223,9 @@ void SystemCanvas::showContextMenu(const QPoint &pos)
     QMenu menu(this);
     for (const char *name : {"actionRename", "actionDelete", "actionCopy", "actionPaste"})
         menu.addAction(action(QLatin1String(name)));
+    menu.addSeparator();
+    for (const char *name : {"actionGroupComposite", "actionDecompose"})
+        menu.addAction(action(QLatin1String(name)));
     QMenu *turn = menu.addMenu(tr("&Direction"));
     QMenu *align = menu.addMenu(tr("A&lign"));
     for (QAction *a : actions()) {
@@ -205,6 +239,31 @@ void SystemCanvas::showContextMenu(const QPoint &pos)
                              "actionSnapToGrid"})
         menu.addAction(action(QLatin1String(name)));
     menu.exec(m_view->viewport()->mapToGlobal(pos));
+}
+
+void SystemCanvas::groupSelection()
+{
+    const QStringList members = m_scene->selectedComponents();
+    if (members.isEmpty() || !m_scene->undoStack())
+        return;
+    const std::optional<CompositeDialog::Choice> choice
+        = m_compositeEditor(*m_scene->model(), members);
+    if (!choice)
+        return;
+    const QString name = m_scene->groupSelection(choice->compositeType, choice->exportedPorts);
+    emit statusMessage(tr("Grouped %n component(s) as %1.", nullptr, int(members.size()))
+                           .arg(name));
+    updateActions();
+}
+
+QList<QAction *> SystemCanvas::editActions() const
+{
+    QList<QAction *> list;
+    for (const char *name : {"actionDelete", "actionCopy", "actionPaste", "actionSelectAll",
+                             "actionRename", "actionGroupComposite", "actionDecompose",
+                             "actionFind"})
+        list.append(action(QLatin1String(name)));
+    return list;
 }
 
 void SystemCanvas::autoLayout()
@@ -225,7 +284,39 @@ void SystemCanvas::autoLayout()
 void SystemCanvas::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
+    if (m_keepFitted && isVisible())
+        fitFreshDiagram();
     placeOverview();
+}
+
+void SystemCanvas::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (m_keepFitted) {
+        fitFreshDiagram();
+        placeOverview();
+    }
+}
+
+void SystemCanvas::fitFreshDiagram()
+{
+    m_fitting = true;
+    m_view->fitToDiagram();
+    m_fitting = false;
+}
+
+bool SystemCanvas::eventFilter(QObject *watched, QEvent *event)
+{
+    switch (event->type()) {
+    case QEvent::Wheel:
+    case QEvent::MouseButtonPress:
+    case QEvent::KeyPress:
+        m_keepFitted = false; // the user navigates now; never move the view under them
+        break;
+    default:
+        break;
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void SystemCanvas::placeOverview()

@@ -54,6 +54,8 @@ SystemView::SystemView(SystemScene *scene, QWidget *parent)
     , m_scene(scene)
 {
     setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing);
+    // The dotted grid is drawn once per view size and scrolled with the contents.
+    setCacheMode(CacheBackground);
     setDragMode(RubberBandDrag);
     setRubberBandSelectionMode(Qt::IntersectsItemShape);
     setTransformationAnchor(AnchorUnderMouse);
