@@ -87,18 +87,6 @@ QString shortPortName(const QString &portName)
     return dot < 0 ? portName : portName.mid(dot + 1);
 }
 
-/// Turns the connector around: the other port becomes the source; the route is kept.
-void swapEnds(RtsDataPortConnector &connector)
-{
-    std::swap(connector.source, connector.target);
-    const QString bends = property(connector.properties, SystemModel::BendPointProperty);
-    if (std::optional<QList<QPointF>> points = bendPointsFromText(bends); points && !bends.isEmpty()) {
-        std::reverse(points->begin(), points->end());
-        setRtsProperty(connector.properties, SystemModel::BendPointProperty,
-                       bendPointsToText(*points));
-    }
-}
-
 } // namespace
 
 bool BufferSettings::operator==(const BufferSettings &other) const
@@ -122,6 +110,18 @@ ConnectorSettings ConnectorSettings::defaults(const QString &outPort, const QStr
     s.skipCount = QStringLiteral("0");
     s.timestampPolicy = QStringLiteral("on_write");
     return s;
+}
+
+void reverseConnectorEnds(RtsPortConnector &connector)
+{
+    std::swap(connector.source, connector.target);
+    const QString bends = property(connector.properties, SystemModel::BendPointProperty);
+    if (std::optional<QList<QPointF>> points = bendPointsFromText(bends);
+        points && !bends.isEmpty()) {
+        std::reverse(points->begin(), points->end());
+        setRtsProperty(connector.properties, SystemModel::BendPointProperty,
+                       bendPointsToText(*points));
+    }
 }
 
 ConnectDirection ConnectorSettings::directionOf(const RtsDataPortConnector &connector,
@@ -179,7 +179,7 @@ ConnectorSettings ConnectorSettings::fromConnector(const RtsDataPortConnector &c
 void ConnectorSettings::applyTo(RtsDataPortConnector &connector, const SystemModel *model) const
 {
     if (directionOf(connector, model) != connectDirection)
-        swapEnds(connector);
+        reverseConnectorEnds(connector);
     connector.name = name;
     connector.dataType = dataType;
     connector.interfaceType = interfaceType;

@@ -111,4 +111,8 @@ public:
     bool operator!=(const ConnectorSettings &other) const { return !(*this == other); }
 };
 
+/// Turns a connector around (its target becomes the source end), keeping the drawn route: the
+/// bend points reverse with the ends.
+void reverseConnectorEnds(Profile::RtsPortConnector &connector);
+
 } // namespace SystemEditor

@@ -75,6 +75,7 @@ ServiceConnectorSettings::fromConnector(const RtsServicePortConnector &connector
 {
     ServiceConnectorSettings s;
     s.name = connector.name;
+    s.connectingPort = {connector.source.instanceName, connector.source.portName};
     for (const RtsProperty &property : connector.properties) {
         if (isMappingKey(property.name))
             s.mapping.append({property.name, property.value.value_or(QString())});
@@ -87,11 +88,26 @@ ServiceConnectorSettings::fromConnector(const RtsServicePortConnector &connector
 void ServiceConnectorSettings::applyTo(RtsServicePortConnector &connector) const
 {
     connector.name = name;
+    if (isSamePort(connector.target, connectingPort)
+        && !isSamePort(connector.source, connectingPort))
+        reverseConnectorEnds(connector);
     // As the reference: every mapping property goes, the dialog's entries come back.
     connector.properties.removeIf(
         [](const RtsProperty &property) { return isMappingKey(property.name); });
     for (const auto &[consumer, provider] : mapping)
         setRtsProperty(connector.properties, consumer, provider);
+}
+
+bool ServiceConnectorSettings::isSamePort(const RtsTargetPort &end, const ConnectorEnd &port)
+{
+    if (port.instanceName.isEmpty() || end.instanceName != port.instanceName)
+        return false;
+    // OpenRTM names ports `<instance>.<port>`; the dialog knows them without the prefix.
+    const QString prefix = port.instanceName + QLatin1Char('.');
+    const auto bare = [&prefix](const QString &name) {
+        return name.startsWith(prefix) ? name.mid(prefix.size()) : name;
+    };
+    return bare(end.portName) == bare(port.portName);
 }
 
 bool ServiceConnectorSettings::isMappingKey(const QString &key)
@@ -111,7 +127,8 @@ QStringList ServiceConnectorSettings::validate() const
 
 bool ServiceConnectorSettings::operator==(const ServiceConnectorSettings &other) const
 {
-    return std::tie(name, mapping) == std::tie(other.name, other.mapping);
+    return std::tie(name, mapping, connectingPort)
+        == std::tie(other.name, other.mapping, other.connectingPort);
 }
 
 } // namespace SystemEditor

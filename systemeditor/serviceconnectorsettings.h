@@ -45,9 +45,14 @@ struct InterfaceDescriptor
 };
 
 /**
- * The fields of the service connector dialog, as a value: the name and the explicit interface
- * mapping (consumer descriptor → provider descriptor, written as connector properties).
- * Interfaces without an entry pair up by instance name when connecting, as OpenRTM does.
+ * The fields of the service connector dialog, as a value: the name, the connect direction and
+ * the explicit interface mapping (consumer descriptor → provider descriptor, written as
+ * connector properties). Interfaces without an entry pair up by instance name when connecting,
+ * as OpenRTM does.
+ *
+ * The connect direction is the port that calls `connect()`. As for data connectors, a system
+ * file records it as the connector's source end (rtshell and the restore engine connect from the
+ * source port), so choosing the other port turns the connector around.
  */
 struct ServiceConnectorSettings
 {
@@ -56,10 +61,18 @@ struct ServiceConnectorSettings
 public:
     QString name;
     QList<QPair<QString, QString>> mapping; ///< consumer descriptor, provider descriptor
+    /// The port that calls connect(): component instance and port name, with or without the
+    /// `instance.` prefix. Empty leaves the connector's ends as they are.
+    ConnectorEnd connectingPort;
 
     static ServiceConnectorSettings fromConnector(const Profile::RtsServicePortConnector &connector);
-    /// Writes the name and replaces the connector's mapping properties by `mapping`.
+    /**
+     * Writes the name, replaces the connector's mapping properties by `mapping` and, when
+     * `connectingPort` is the connector's target end, swaps the ends (the route is kept).
+     */
     void applyTo(Profile::RtsServicePortConnector &connector) const;
+    /// Whether `end` is the port `port` names (port names compared with or without the prefix).
+    static bool isSamePort(const Profile::RtsTargetPort &end, const ConnectorEnd &port);
     /// True for a property key that is an interface mapping (either descriptor form).
     static bool isMappingKey(const QString &key);
     /// Problems that keep the settings from being applied (the name).

@@ -65,6 +65,9 @@ private slots:
     void connectDirectionEditedThroughUndo();
     void connectDirectionFixedWhenOnlyOneOffered();
     void serviceMappingEditedThroughUndoAndSaved();
+    void serviceDirectionEditedThroughUndoAndSaved();
+    void serviceDirectionOfNewConnector();
+    void serviceDirectionFixed();
     void configurationWidgetsFollowTheProfile();
     void configurationRejectsBrokenConstraint();
     void configurationTextFallbackAndSets();
@@ -169,6 +172,105 @@ void TestSeProps::serviceMappingEditedThroughUndoAndSaved()
     ServiceConnectorDialog shown(read, filter, sensor);
     QCOMPARE(shown.providerChoice(0)->currentIndex(), 2);
     QCOMPARE(shown.settings(), read);
+}
+
+void TestSeProps::serviceDirectionEditedThroughUndoAndSaved()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    const auto connector = [&] { return model->serviceConnector(Control); };
+    const ServiceConnectorSettings before = ServiceConnectorSettings::fromConnector(*connector());
+    const ServicePortSide filter = sideOf(*model, "Filter0", "Filter0.control");
+    const ServicePortSide sensor = sideOf(*model, "Sensor0", "Sensor0.control");
+    ServiceConnectorDialog dialog(before, filter, sensor);
+    QComboBox *direction = dialog.directionChoice();
+    QVERIFY(direction->isEnabled());
+    QCOMPARE(direction->count(), 2);
+    QCOMPARE(direction->currentIndex(), 0);
+    QVERIFY2(direction->currentText().startsWith(QStringLiteral("Filter0.control")),
+             qPrintable(direction->currentText()));
+    QCOMPARE(dialog.settings(), before); // untouched: nothing to apply
+    QTest::keyClick(direction, Qt::Key_Down);
+    const ServiceConnectorSettings after = dialog.settings();
+    QCOMPARE(after.connectingPort.instanceName, QStringLiteral("Sensor0"));
+    QVERIFY(after != before);
+    // The drawn route stays: the bend points reverse with the ends.
+    Profile::RtsServicePortConnector routed = *connector();
+    Profile::setRtsProperty(routed.properties, SystemModel::BendPointProperty,
+                            bendPointsToText({{10, 20}, {30, 40}}));
+    after.applyTo(routed);
+    QCOMPARE(bendPointsFromText(*Profile::rtsPropertyValue(routed.properties,
+                                                           SystemModel::BendPointProperty)),
+             (QList<QPointF> {{30, 40}, {10, 20}}));
+
+    const Profile::RtsServicePortConnector original = *connector();
+    QUndoStack stack;
+    stack.push(EditConnectorCommand::fromSettings(model.get(), Control, after));
+    QCOMPARE(connector()->source.portName, QStringLiteral("Sensor0.control"));
+    QCOMPARE(connector()->target.portName, QStringLiteral("Filter0.control"));
+    stack.undo();
+    QCOMPARE(*connector(), original);
+    stack.redo();
+    QCOMPARE(connector()->source.portName, QStringLiteral("Sensor0.control"));
+
+    // Saved as the source end; the dialog shows the saved direction whichever side comes first.
+    QTemporaryDir dir;
+    std::unique_ptr<SystemModel> again = reopened(*model, dir);
+    QVERIFY(again);
+    const ServiceConnectorSettings read
+        = ServiceConnectorSettings::fromConnector(*again->serviceConnector(Control));
+    QCOMPARE(read.connectingPort, (ConnectorEnd {"Sensor0", "Sensor0.control"}));
+    ServiceConnectorDialog shown(read, filter, sensor);
+    QCOMPARE(shown.directionChoice()->currentIndex(), 1);
+    QVERIFY(shown.directionChoice()->currentText().startsWith(QStringLiteral("Sensor0.control")));
+    QCOMPARE(shown.settings(), read);
+    ServiceConnectorDialog asDrawn(read, sensor, filter);
+    QCOMPARE(asDrawn.directionChoice()->currentIndex(), 0);
+    QCOMPARE(asDrawn.settings(), read);
+}
+
+void TestSeProps::serviceDirectionOfNewConnector()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    const ConnectorEnd filter {"Filter0", "Filter0.control"};
+    const ConnectorEnd sensor {"Sensor0", "Sensor0.control"};
+    ServiceConnectorDialog dialog(ServiceConnectorSettings {"link", {}, {}},
+                                  sideOf(*model, "Filter0", "Filter0.control"),
+                                  sideOf(*model, "Sensor0", "Sensor0.control"));
+    // A new connector starts with the port the drag began at.
+    QCOMPARE(dialog.directionChoice()->currentIndex(), 0);
+    QCOMPARE(makeServiceConnector(*model, filter, sensor, dialog.settings()).source.instanceName,
+             QStringLiteral("Filter0"));
+    dialog.directionChoice()->setCurrentIndex(1);
+    const Profile::RtsServicePortConnector made
+        = makeServiceConnector(*model, filter, sensor, dialog.settings());
+    QCOMPARE(made.source.portName, QStringLiteral("Sensor0.control"));
+    QCOMPARE(made.target.portName, QStringLiteral("Filter0.control"));
+    QCOMPARE(made.name, QStringLiteral("link"));
+}
+
+void TestSeProps::serviceDirectionFixed()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    const ServiceConnectorSettings settings
+        = ServiceConnectorSettings::fromConnector(*model->serviceConnector(Control));
+    ServiceConnectorDialog dialog(settings, sideOf(*model, "Sensor0", "Sensor0.control"),
+                                  sideOf(*model, "Filter0", "Filter0.control"));
+    QVERIFY(dialog.directionChoice()->isEnabled());
+    QCOMPARE(dialog.directionChoice()->currentIndex(), 1);
+    dialog.setDirectionChangeable(false);
+    QVERIFY(!dialog.directionChoice()->isEnabled());
+    QCOMPARE(dialog.settings().connectingPort, settings.connectingPort);
+
+    // Ports known only by their interfaces: nothing names a direction.
+    ServiceConnectorDialog unnamed(QStringLiteral("a_b"), {}, {});
+    QVERIFY(!unnamed.directionChoice()->isEnabled());
+    QVERIFY(unnamed.settings().connectingPort.instanceName.isEmpty());
+    Profile::RtsServicePortConnector connector = *model->serviceConnector(Control);
+    unnamed.settings().applyTo(connector);
+    QCOMPARE(connector.source.instanceName, QStringLiteral("Filter0"));
 }
 
 void TestSeProps::configurationWidgetsFollowTheProfile()

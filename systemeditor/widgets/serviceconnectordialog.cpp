@@ -50,7 +50,7 @@ ServiceConnectorDialog::ServiceConnectorDialog(const QString &name,
                                                const QList<InterfaceInfo> &source,
                                                const QList<InterfaceInfo> &target,
                                                QWidget *parent)
-    : ServiceConnectorDialog(ServiceConnectorSettings {name, {}}, {{}, {}, source},
+    : ServiceConnectorDialog(ServiceConnectorSettings {name, {}, {}}, {{}, {}, source},
                              {{}, {}, target}, parent)
 { }
 
@@ -60,6 +60,7 @@ ServiceConnectorDialog::ServiceConnectorDialog(const ServiceConnectorSettings &s
     : QDialog(parent)
     , m_sides {source, target}
     , m_name(new QLineEdit(settings.name))
+    , m_direction(buildDirection(settings.connectingPort))
     , m_mapping(new QTableWidget(0, 2))
     , m_warningLabel(new QLabel)
     , m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel))
@@ -76,6 +77,7 @@ ServiceConnectorDialog::ServiceConnectorDialog(const ServiceConnectorSettings &s
     m_warningLabel->setStyleSheet(QStringLiteral("color: #8a5a00;"));
     auto *form = new QFormLayout;
     form->addRow(tr("&Name:"), m_name);
+    form->addRow(tr("Connect &direction:"), m_direction);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(new QLabel(tr("Interface mapping (automatic pairs by instance name):")));
@@ -88,6 +90,36 @@ ServiceConnectorDialog::ServiceConnectorDialog(const ServiceConnectorSettings &s
     fillMapping(settings);
     resize(std::max(sizeHint().width(), 560), sizeHint().height());
     refresh();
+}
+
+QComboBox *ServiceConnectorDialog::buildDirection(const ConnectorEnd &connectingPort)
+{
+    auto *box = new QComboBox;
+    box->setObjectName(QStringLiteral("connectDirection"));
+    box->setToolTip(
+        tr("Which port calls connect(); the system file records it as the connector's source."));
+    QString labels[2];
+    int chosen = 0;
+    for (int side = 0; side < 2; ++side) {
+        const ServicePortSide &port = m_sides[side];
+        labels[side] = port.instanceName.isEmpty()
+            ? (side == 0 ? tr("first port") : tr("second port"))
+            : port.instanceName + QLatin1Char('.') + port.portName;
+        m_ends[side] = {port.instanceName, port.portName};
+        // The settings' own spelling of the connecting port, so that an unchanged dialog gives
+        // back equal settings.
+        Profile::RtsTargetPort end;
+        end.instanceName = port.instanceName;
+        end.portName = port.portName;
+        if (ServiceConnectorSettings::isSamePort(end, connectingPort)) {
+            m_ends[side] = connectingPort;
+            chosen = side;
+        }
+    }
+    for (int side = 0; side < 2; ++side)
+        box->addItem(tr("%1 \u2192 %2 (%1 connects)").arg(labels[side], labels[1 - side]), side);
+    box->setCurrentIndex(chosen);
+    return box;
 }
 
 void ServiceConnectorDialog::fillMapping(const ServiceConnectorSettings &settings)
@@ -174,10 +206,17 @@ void ServiceConnectorDialog::setName(const QString &name)
     m_name->setText(name);
 }
 
+void ServiceConnectorDialog::setDirectionChangeable(bool changeable)
+{
+    m_directionChangeable = changeable;
+    refresh();
+}
+
 ServiceConnectorSettings ServiceConnectorDialog::settings() const
 {
     ServiceConnectorSettings s;
     s.name = name();
+    s.connectingPort = m_ends[m_direction->currentIndex() == 1 ? 1 : 0];
     s.mapping = m_unmatched;
     for (int row = 0; row < m_consumers.size(); ++row) {
         const QString provider = providerChoice(row)->currentData(DescriptorRole).toString();
@@ -226,6 +265,9 @@ void ServiceConnectorDialog::refresh()
     m_warningLabel->setText(lines.join(QLatin1Char('\n')));
     m_warningLabel->setVisible(!lines.isEmpty());
     m_buttons->button(QDialogButtonBox::Ok)->setEnabled(problems.isEmpty());
+    // Without names for both ports there is nothing to record the direction with.
+    m_direction->setEnabled(m_directionChangeable && !m_sides[0].instanceName.isEmpty()
+                            && !m_sides[1].instanceName.isEmpty());
 }
 
 void ServiceConnectorDialog::accept()
