@@ -111,8 +111,39 @@ QString pythonConfigInit(const QString &type)
     return QStringLiteral("['']");
 }
 
+/// The element of a `vector<T>` configuration type as Java holds it: the boxed class and the
+/// expression turning one comma-separated `item` into one.
+struct JavaVectorElement
+{
+    QString boxed;
+    QString parse;
+};
+
+std::optional<JavaVectorElement> javaVectorElement(const QString &type)
+{
+    const std::optional<QString> element = vectorElementType(type);
+    static const QHash<QString, QString> boxes
+        = {{QStringLiteral("short"), QStringLiteral("Short")},
+           {QStringLiteral("int"), QStringLiteral("Integer")},
+           {QStringLiteral("long"), QStringLiteral("Long")},
+           {QStringLiteral("float"), QStringLiteral("Float")},
+           {QStringLiteral("double"), QStringLiteral("Double")},
+           {QStringLiteral("string"), QStringLiteral("String")}};
+    if (!element || !boxes.contains(*element))
+        return std::nullopt;
+    const QString boxed = boxes.value(*element);
+    // OpenRTM's C++ stringTo splits vectors at ',' and trims the items; Java does the same.
+    return JavaVectorElement {boxed, boxed == QLatin1String("String")
+                                  ? QStringLiteral("item.trim()")
+                                  : QStringLiteral("%1.valueOf(item.trim())").arg(boxed)};
+}
+
 QString javaConfigHolder(const QString &type)
 {
+    // OpenRTM-aist Java's jp.go.aist.rtm.RTC.util has holders of single values only, so a
+    // vector parameter gets a holder class generated with the project.
+    if (const std::optional<JavaVectorElement> element = javaVectorElement(type))
+        return element->boxed + QStringLiteral("VectorHolder");
     static const QHash<QString, QString> holders
         = {{QStringLiteral("short"), QStringLiteral("ShortHolder")},
            {QStringLiteral("int"), QStringLiteral("IntegerHolder")},
@@ -270,6 +301,8 @@ std::optional<QVariantMap> ContextBuilder::build(TargetLanguage language,
     const QVariantList configs = configurations(language);
     context.insert(QStringLiteral("configurations"), configs);
     context.insert(QStringLiteral("hasConfigurations"), !configs.isEmpty());
+    if (language == TargetLanguage::Java)
+        context.insert(QStringLiteral("javaVectorHolders"), javaVectorHolders());
     if (!addServices(language, context, &problems)) {
         if (diagnostics)
             diagnostics->append(problems);
@@ -434,6 +467,24 @@ QVariantList ContextBuilder::configurations(TargetLanguage language) const
             {QStringLiteral("description"), commentText(description)}};
     }
     return markFirstLast(list);
+}
+
+QVariantList ContextBuilder::javaVectorHolders() const
+{
+    QVariantList list;
+    QStringList seen;
+    for (const RtcConfiguration &c : m_profile.configurations) {
+        const std::optional<JavaVectorElement> element = javaVectorElement(c.type);
+        const QString holder = javaConfigHolder(c.type);
+        if (!element || seen.contains(holder))
+            continue;
+        seen << holder;
+        list << QVariantMap {{QStringLiteral("holderName"), holder},
+                             {QStringLiteral("configType"), c.type},
+                             {QStringLiteral("boxed"), element->boxed},
+                             {QStringLiteral("parse"), element->parse}};
+    }
+    return list;
 }
 
 bool ContextBuilder::checkNames(TargetLanguage language, Diagnostics *diagnostics) const

@@ -63,6 +63,8 @@ private:
     QVariantList actions() const;
     QVariantList dataPorts(TargetLanguage language, Profile::RtcPortType kind) const;
     QVariantList configurations(TargetLanguage language) const;
+    /// One entry per Java holder class the `vector<T>` configuration parameters need.
+    QVariantList javaVectorHolders() const;
     bool checkNames(TargetLanguage language, Profile::Diagnostics *diagnostics) const;
     bool addServices(TargetLanguage language, QVariantMap &context,
                      Profile::Diagnostics *diagnostics) const;

@@ -43,6 +43,7 @@ private slots:
     void servantsCompileAgainstOmniidlSkeletons();
     void cmakeConfigures_data();
     void cmakeConfigures();
+    void javaVectorHoldersParse();
 
 private:
     void addFixtureRows();
@@ -329,6 +330,30 @@ void TestCodegenGolden::cmakeConfigures()
         QVERIFY2(!output.contains(QLatin1String("CMake Warning")), qPrintable(output));
         QVERIFY(QFileInfo::exists(QDir(build.path()).filePath("Makefile")));
     }
+}
+
+void TestCodegenGolden::javaVectorHoldersParse()
+{
+    const QString javac = QStandardPaths::findExecutable(QStringLiteral("javac"));
+    const QString java = QStandardPaths::findExecutable(QStringLiteral("java"));
+    if (javac.isEmpty() || java.isEmpty())
+        QSKIP("no Java development kit; the generated vector holders are not compiled");
+    const QDir project(projectDir(QStringLiteral("ConfigComp")));
+    const QString standIns = data(QStringLiteral("openrtm/java"));
+    QTemporaryDir classes;
+    QString output;
+    QVERIFY2(run(javac,
+                 {"-d", classes.path(), project.filePath("src/DoubleVectorHolder.java"),
+                  project.filePath("src/StringVectorHolder.java"),
+                  standIns + "/jp/go/aist/rtm/RTC/util/ValueHolder.java",
+                  standIns + "/VectorHolderCheck.java"},
+                 classes.path(), &output),
+             qPrintable(output));
+    QVERIFY2(run(java, {"-cp", classes.path(), "VectorHolderCheck"}, classes.path(), &output),
+             qPrintable(output));
+    // A bad item leaves the parameter as it was, as OpenRTM keeps a value it cannot convert.
+    QCOMPARE(output.trimmed().split(QLatin1Char('\n')),
+             (QStringList {"3:0.5,1.5,2.0|second|0", "refused, kept 0.5,1.5,2.0"}));
 }
 
 QTEST_GUILESS_MAIN(TestCodegenGolden)

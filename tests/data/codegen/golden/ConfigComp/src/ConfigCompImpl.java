@@ -161,13 +161,13 @@ public class ConfigCompImpl extends DataFlowComponentBase {
      * - Name: order
      * - DefaultValue: first,second
      */
-    protected StringHolder m_order = new StringHolder();
+    protected StringVectorHolder m_order = new StringVectorHolder();
     /*!
      * 
      * - Name: weights
      * - DefaultValue: 0.5,1.5
      */
-    protected StringHolder m_weights = new StringHolder();
+    protected DoubleVectorHolder m_weights = new DoubleVectorHolder();
     /*!
      * 
      * - Name: scale
