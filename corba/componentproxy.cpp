@@ -22,18 +22,22 @@ SDOPackage::Configuration_ptr configuration(const QString &ior, const QString &p
     return call(path, [&] { return rtc->get_configuration(); });
 }
 
-// The context at rtshell's index: owned contexts first, then participating ones.
+// The context at rtshell's index: owned contexts first, then participating ones. The participating
+// list is asked only for an index past the owned ones: the pollers read states in context 0 of
+// every component every second, and this keeps that at two calls per component.
 RTC::ExecutionContext_ptr context(RTC::RTObject_ptr rtc, int index, const QString &path)
 {
     return call(path, [&] {
         RTC::ExecutionContextList_var owned = rtc->get_owned_contexts();
-        RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
         const int ownedCount = int(owned->length());
         if (index >= 0 && index < ownedCount)
             return RTC::ExecutionContext::_duplicate(owned[CORBA::ULong(index)]);
-        if (index >= ownedCount && index < ownedCount + int(participating->length()))
-            return RTC::ExecutionContext::_duplicate(
-                participating[CORBA::ULong(index - ownedCount)]);
+        if (index >= ownedCount) {
+            RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
+            if (index < ownedCount + int(participating->length()))
+                return RTC::ExecutionContext::_duplicate(
+                    participating[CORBA::ULong(index - ownedCount)]);
+        }
         throw Error(Error::Kind::NotFound,
                     QStringLiteral("%1: no execution context with index %2").arg(path).arg(index));
     });
