@@ -26,6 +26,26 @@ QString actionOfFlag(const QString &flag)
     return QStringLiteral("delete");
 }
 
+// A refused fork or restart reports only its return code; the manager's last_error says why.
+template<typename Action> void withManagerReason(const ManagerProxy &manager, Action action)
+{
+    try {
+        action();
+    } catch (const Error &e) {
+        if (e.kind() != Error::Kind::Refused)
+            throw;
+        QString reason;
+        try {
+            reason = propertyValue(manager.profile(), QStringLiteral("last_error"));
+        } catch (const Error &) {
+            // The refusal itself is the message then.
+        }
+        throw Error(e.kind(),
+                    reason.isEmpty() ? e.message()
+                                     : e.message() + QStringLiteral(" (") + reason + ')');
+    }
+}
+
 } // namespace
 
 QString RtMgrCommand::summary() const
@@ -44,6 +64,8 @@ QString RtMgrCommand::usage() const
         "  create 'Type?k=v&…'  create a component; prints its instance name\n"
         "  delete NAME          delete the component with that instance name\n"
         "  list                 components, loaded modules and factories (--json: one object)\n"
+        "  fork                 start a new slave manager process registered with the master\n"
+        "  restart              finalise the components and run the manager process again\n"
         "rtshell's -l FILE:INIT, -u FILE, -c MODULE, -d NAME are accepted too (run before "
         "words).\n");
 }
@@ -87,6 +109,10 @@ void RtMgrCommand::run(const ManagerProxy &manager, const QString &action, const
 {
     if (action == QLatin1String("list")) {
         list(manager, json, streams);
+    } else if (action == QLatin1String("fork")) {
+        withManagerReason(manager, [&manager] { manager.fork(); });
+    } else if (action == QLatin1String("restart")) {
+        withManagerReason(manager, [&manager] { manager.restart(); });
     } else if (action == QLatin1String("load")) {
         const int colon = argument.lastIndexOf(QLatin1Char(':'));
         const QString file = colon < 0 ? argument : argument.left(colon);
@@ -113,7 +139,7 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
     const QStringList words = options.positionals.mid(1);
     for (int i = 0; i < words.size(); ++i) {
         const QString &word = words.at(i);
-        if (word == QLatin1String("list")) {
+        if (QStringList {"list", "fork", "restart"}.contains(word)) {
             actions.append({word, QString()});
         } else if (QStringList {"load", "unload", "create", "delete"}.contains(word)) {
             if (i + 1 >= words.size())

@@ -11,7 +11,8 @@ namespace Cli {
 
 /**
  * `rtctl mgr PATH|corbaloc [load FILE:INIT] [unload FILE] [create "Type?k=v"] [delete NAME]
- * [list] [--json]` (rtshell's rtmgr); actions run in command-line order.
+ * [list] [fork] [restart] [--json]` (rtshell's rtmgr); actions run in command-line order, silent
+ * on success like rtshell's (create prints the new instance name); the first failure ends the run.
  */
 class RtMgrCommand : public RtCommand
 {

@@ -45,8 +45,7 @@ public:
     explicit Hammer(RTM::Manager_ptr manager)
         : m_manager(RTM::Manager::_duplicate(manager))
         , m_thread([this] { run(); })
-    {
-    }
+    { }
     ~Hammer()
     {
         m_stop = true;
@@ -197,9 +196,9 @@ void TestManagerJoin::spawnedSlavesHaveJoinedWhenCreateReturns()
     const quint16 port = LiveTest::freePort();
     const QString errFile = m_dir->filePath("master.err");
     master.setStandardErrorFile(errFile);
-    master.start(QStringLiteral(RTMANAGER_PATH),
-                 {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o",
-                  "naming.enable=NO"});
+    master.start(
+        QStringLiteral(RTMANAGER_PATH),
+        {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o", "naming.enable=NO"});
     QVERIFY(master.waitForStarted(10000));
     CORBA::Object_var object = m_orb->string_to_object(
         QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8().constData());
@@ -231,7 +230,8 @@ void TestManagerJoin::spawnedSlavesHaveJoinedWhenCreateReturns()
     for (CORBA::ULong i = 0; i < slaves->length(); ++i) {
         RTM::ManagerList_var masters = slaves[i]->get_master_managers();
         QCOMPARE(masters->length(), CORBA::ULong(1));
-        pids.push_back(pid_t(nv(RTM::ManagerProfile_var(slaves[i]->get_profile())->properties, "pid").toInt()));
+        pids.push_back(pid_t(
+            nv(RTM::ManagerProfile_var(slaves[i]->get_profile())->properties, "pid").toInt()));
     }
     // The master goes down right away; its slaves follow it without having reported a failed join.
     master.kill();

@@ -30,6 +30,7 @@ private slots:
     void usageErrors();
     void unreachableServerIsAFailure();
     void drivesTheRealManager();
+    void forkAndRestartTheRealManager();
 
 private:
     using Result = RtctlResult;
@@ -363,6 +364,53 @@ void TestRtctlRt::drivesTheRealManager()
     QCOMPARE(created.lines().at(0), QString("Late0"));
     QVERIFY(rtctl({"ls"}, dir).lines().contains("Late0.rtc"));
     QCOMPARE(rtctl({"mgr", direct, "delete", "Late0"}, dir).code, 0);
+}
+
+// rtshell's style: silent on success; on a refusal exit code 1 and the manager's own reason.
+void TestRtctlRt::forkAndRestartTheRealManager()
+{
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QVERIFY2(
+        m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+                            {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
+                             "-o", "corba.nameservers=" + m_live.namingServer(), "-o",
+                             "naming.formats=forkhost.host_cxt/%n.rtc", "-o",
+                             "manager.naming_formats=forkhost.host_cxt/%n.mgr", "-o",
+                             "manager.components.precreate=ConsoleIn"},
+                            "rtmanager ready", &error),
+        qPrintable(error));
+    const QString dir = QStringLiteral("/%1/forkhost.host_cxt").arg(m_live.namingServer());
+    const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(port);
+    const Result forked = rtctl({"mgr", direct, "fork"}, dir);
+    QCOMPARE(forked.code, 0);
+    QCOMPARE(forked.out, QString());
+    QCOMPARE(forked.err, QString());
+    // fork returns once the new slave has joined: it is listed under the master at once.
+    QCOMPARE(rtctl({"ls", "manager.mgr"}, dir).lines(),
+             QStringList({"ConsoleIn0.rtc", "slave0.mgr"}));
+
+    QCOMPARE(rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Gone0"}, dir).code, 0);
+    const Result restarted = rtctl({"mgr", direct, "restart"}, dir);
+    QCOMPARE(restarted.code, 0);
+    QCOMPARE(restarted.out, QString());
+    // The same endpoint answers again, fresh: the precreated component only, its slave gone.
+    QTRY_COMPARE_WITH_TIMEOUT(rtctl({"ls", "manager.mgr"}, dir).lines(),
+                              QStringList({"ConsoleIn0.rtc"}), 15000);
+
+    // A manager with neither master role nor master to register a sibling with refuses to fork.
+    const quint16 lonePort = LiveTest::freePort();
+    QVERIFY2(
+        m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+                            {"-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(lonePort),
+                             "-o", "corba.master_manager=", "-o", "naming.enable=NO"},
+                            "rtmanager ready", &error),
+        qPrintable(error));
+    const Result refused
+        = rtctl({"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(lonePort), "fork"}, dir);
+    QCOMPARE(refused.code, 1);
+    QVERIFY2(refused.err.contains("fork returned BAD_PARAMETER (fork: this manager has no master"),
+             qPrintable(refused.err));
 }
 
 QTEST_GUILESS_MAIN(TestRtctlRt)
