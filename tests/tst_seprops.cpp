@@ -11,6 +11,7 @@
 #include "systemfile.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QRadioButton>
 #include <QSlider>
@@ -284,6 +285,11 @@ void TestSeProps::configurationWidgetsFollowTheProfile()
     auto *slider = qobject_cast<QSlider *>(editor->parameterEditor("gain")->input());
     QVERIFY(slider);
     QCOMPARE(slider->maximum(), 20); // 0..10 by 0.5
+    auto *label = editor->findChild<QLabel *>(QStringLiteral("label_gain"));
+    QCOMPARE(label->text(), QStringLiteral("gain (dB):"));
+    QCOMPARE(label->toolTip(), QStringLiteral("Type: double"));
+    QCOMPARE(editor->findChild<QLabel *>(QStringLiteral("label_mode"))->text(),
+             QStringLiteral("mode:"));
     QCOMPARE(slider->value(), 2);
     const auto value = [&](int set, int index) {
         return model->component(QStringLiteral("Filter0"))

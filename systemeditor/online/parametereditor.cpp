@@ -54,6 +54,7 @@ ParameterEditor::ParameterEditor(const QString &name, const ParameterRule &rule,
     m_error = new QLabel(this);
     m_error->setObjectName(QStringLiteral("error_") + name);
     m_error->setStyleSheet(QStringLiteral("color: #c00000;"));
+    m_error->setWordWrap(true); // the reason quotes the constraint; a narrow panel must show it all
     m_error->hide();
     layout->addWidget(m_error);
 }

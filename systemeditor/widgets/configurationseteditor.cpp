@@ -25,6 +25,7 @@ namespace {
 
 const QString WidgetSet = QStringLiteral("__widget__");
 const QString ConstraintsSet = QStringLiteral("__constraints__");
+constexpr int MinimumEditorWidth = 170;
 
 QString valueIn(const RtsComponent &c, const QString &setId, const QString &parameter)
 {
@@ -58,7 +59,7 @@ ConfigurationSetEditor::ConfigurationSetEditor(SystemModel *model, QUndoStack *u
     , m_activate(button(tr("Activate"), QStringLiteral("activateSet")))
     , m_delete(button(tr("Delete"), QStringLiteral("deleteSet")))
     , m_valuesArea(new QWidget)
-    , m_valuesForm(new QFormLayout(m_valuesArea))
+    , m_valuesForm(new QFormLayout)
 {
     m_sets->setObjectName(QStringLiteral("configurationSet"));
     m_showHidden->setObjectName(QStringLiteral("showHiddenSets"));
@@ -73,11 +74,22 @@ ConfigurationSetEditor::ConfigurationSetEditor(SystemModel *model, QUndoStack *u
     connect(add, &QPushButton::clicked, this, &ConfigurationSetEditor::addSet);
     connect(copy, &QPushButton::clicked, this, &ConfigurationSetEditor::addSetCopy);
     connect(m_delete, &QPushButton::clicked, this, &ConfigurationSetEditor::deleteShownSet);
+    // Two rows keep the panel usable in a narrow dock (one row needed ~480 px).
     auto *setRow = new QHBoxLayout;
     setRow->addWidget(m_sets, 1);
+    setRow->addWidget(m_showHidden);
+    auto *buttonRow = new QHBoxLayout;
     for (QPushButton *b : {m_activate, add, copy, m_delete})
-        setRow->addWidget(b);
+        buttonRow->addWidget(b);
+    buttonRow->addStretch(1);
     m_valuesForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_valuesForm->setLabelAlignment(Qt::AlignLeft | Qt::AlignTop);
+    // A long name (with its unit) puts its widget on the next line rather than squeezing it.
+    m_valuesForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    // Spare height goes below the rows, not into tall widgets (an ordered list floated in it).
+    auto *valuesLayout = new QVBoxLayout(m_valuesArea);
+    valuesLayout->addLayout(m_valuesForm);
+    valuesLayout->addStretch(1);
     auto *scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setWidget(m_valuesArea);
@@ -85,7 +97,7 @@ ConfigurationSetEditor::ConfigurationSetEditor(SystemModel *model, QUndoStack *u
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(setRow);
-    layout->addWidget(m_showHidden);
+    layout->addLayout(buttonRow);
     layout->addWidget(scroll, 1);
     connect(model, &SystemModel::componentChanged, this, [this](const QString &name) {
         if (name == m_component)
@@ -159,16 +171,45 @@ ParameterRule ConfigurationSetEditor::ruleFor(const QString &parameter) const
     const RtsComponent *c = current();
     if (!c || isHidden(shownSet()))
         return {}; // hidden sets are metadata, edited as text
-    if (const RtcProfile *rtc = m_model->rtcProfile(m_component)) {
-        for (const RtcConfiguration &configuration : rtc->configurations) {
-            if (configuration.name == parameter)
-                return ParameterRule::from(configuration.widget().value_or(QString()),
-                                           constraintToString(configuration.constraint));
-        }
-    }
+    if (const RtcConfiguration *configuration = profileConfiguration(parameter))
+        return ParameterRule::from(configuration->widget().value_or(QString()),
+                                   constraintToString(configuration->constraint));
     // Without a profile, a system saved online may still carry the hidden sets.
     return ParameterRule::from(valueIn(*c, WidgetSet, parameter),
                                valueIn(*c, ConstraintsSet, parameter));
+}
+
+QLabel *ConfigurationSetEditor::parameterLabel(const QString &parameter) const
+{
+    // The unit belongs next to the name (the widgets show bare numbers); the description and the
+    // type go to the tooltip.
+    const RtcConfiguration *configuration = profileConfiguration(parameter);
+    QString unit;
+    QStringList tip;
+    if (configuration) {
+        const std::optional<RtcConfigurationDoc> &doc = configuration->doc;
+        unit = configuration->unit.value_or(doc ? doc->unit.value_or(QString()) : QString());
+        tip << tr("Type: %1").arg(configuration->type);
+        if (doc && doc->description && !doc->description->isEmpty())
+            tip << *doc->description;
+    }
+    auto *label = new QLabel(unit.isEmpty() ? tr("%1:").arg(parameter)
+                                            : tr("%1 (%2):").arg(parameter, unit));
+    label->setObjectName(QStringLiteral("label_") + parameter);
+    label->setToolTip(tip.join(QLatin1Char('\n')));
+    return label;
+}
+
+const RtcConfiguration *ConfigurationSetEditor::profileConfiguration(const QString &parameter) const
+{
+    const RtcProfile *rtc = m_model ? m_model->rtcProfile(m_component) : nullptr;
+    if (!rtc)
+        return nullptr;
+    for (const RtcConfiguration &configuration : rtc->configurations) {
+        if (configuration.name == parameter)
+            return &configuration;
+    }
+    return nullptr;
 }
 
 ParameterEditor *ConfigurationSetEditor::parameterEditor(const QString &parameter) const
@@ -215,12 +256,14 @@ void ConfigurationSetEditor::fillValues()
         return;
     for (const RtsConfigurationData &data : set->data) {
         auto *editor = new ParameterEditor(data.name, ruleFor(data.name));
+        // Wide enough for a usable slider; a long label then wraps its widget below it.
+        editor->setMinimumWidth(MinimumEditorWidth);
         m_filling = true;
         editor->setValue(data.data.value_or(QString()));
         m_filling = false;
         connect(editor, &ParameterEditor::valueChanged, this, [this, editor] { onEdited(editor); });
         m_editors << editor;
-        m_valuesForm->addRow(data.name + QLatin1Char(':'), editor);
+        m_valuesForm->addRow(parameterLabel(data.name), editor);
     }
 }
 

@@ -10,8 +10,13 @@
 class QCheckBox;
 class QComboBox;
 class QFormLayout;
+class QLabel;
 class QPushButton;
 class QUndoStack;
+
+namespace Profile {
+struct RtcConfiguration;
+}
 
 namespace SystemEditor {
 
@@ -62,6 +67,8 @@ private:
     void fillValues();
     void updateValues(const Profile::RtsConfigurationSet &set);
     void onEdited(ParameterEditor *editor);
+    const Profile::RtcConfiguration *profileConfiguration(const QString &parameter) const;
+    QLabel *parameterLabel(const QString &parameter) const;
     void pushSets(const QList<Profile::RtsConfigurationSet> &sets,
                   const std::optional<QString> &active);
     static bool isHidden(const QString &setId);
