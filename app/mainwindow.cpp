@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "mainwindow.h"
 
+#include "componenteditor.h"
 #include "dialogprompts.h"
 #include "document.h"
 #include "documentcontroller.h"
@@ -336,6 +337,8 @@ void MainWindow::createProblemsDock()
     m_problemsDock->setWidget(m_problems);
     addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
     m_problemsDock->hide();
+    connect(m_problems, &ProblemsPanel::profileRequested, this,
+            [this](const QString &path) { openFiles({path}); });
     connect(m_problems, &ProblemsPanel::countChanged, this, [this](int count) {
         m_problemsDock->setWindowTitle(count > 0 ? tr("Problems (%1)").arg(count) : tr("Problems"));
     });
@@ -377,7 +380,12 @@ void MainWindow::addDocument(Document *document)
         if (document == m_activeDocument)
             updateTitle();
     });
-    perspective(id)->addDocument(document, createEditor(document));
+    QWidget *editor = createEditor(document);
+    // The Builder's Generate reports into the Problems panel and the status bar, not a dialog.
+    if (auto *component = qobject_cast<Builder::ComponentEditor *>(editor))
+        connect(component, &Builder::ComponentEditor::generationReported, this,
+                &MainWindow::showGenerateOutcome);
+    perspective(id)->addDocument(document, editor);
     showPerspective(id);
 }
 
@@ -460,6 +468,15 @@ void MainWindow::fillRecentFilesMenu()
         connect(clear, &QAction::triggered, m_controller->recentFiles(), &RecentFiles::clear);
     }
     m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::showGenerateOutcome(const Builder::GenerateOutcome &outcome)
+{
+    m_problems->setGenerateOutcome(outcome);
+    statusBar()->showMessage(outcome.summary, 10000);
+    // Success lists the files quietly; only problems bring the panel up.
+    if (outcome.needsAttention())
+        m_problemsDock->show();
 }
 
 void MainWindow::showProblems(const QString &summary, const Profile::Diagnostics &diagnostics)

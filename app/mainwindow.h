@@ -2,6 +2,7 @@
 #pragma once
 
 #include "diagnostic.h"
+#include "generateoutcome.h"
 #include "perspective.h"
 
 #include <QMainWindow>
@@ -88,6 +89,7 @@ private:
     void updateActions();
     void fillRecentFilesMenu();
     void showProblems(const QString &summary, const Profile::Diagnostics &diagnostics);
+    void showGenerateOutcome(const Builder::GenerateOutcome &outcome);
 
     void readSettings();
     void writeSettings() const;

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "problemspanel.h"
 
+#include "profileio.h"
+
+#include <QDesktopServices>
+#include <QFile>
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
 #include <QStyle>
 #include <QTreeWidget>
+#include <QUrl>
 #include <QVBoxLayout>
 
 namespace Studio {
@@ -27,6 +32,9 @@ QIcon severityIcon(const QStyle *style, Profile::Diagnostic::Severity severity)
 
 QString locationText(const Profile::Diagnostic &diagnostic)
 {
+    // Rules of the component being edited name the element instead of a file.
+    if (diagnostic.file.isEmpty())
+        return diagnostic.object;
     QString text = QFileInfo(diagnostic.file).fileName();
     if (diagnostic.line > 0)
         text += QStringLiteral(":%1").arg(diagnostic.line);
@@ -51,6 +59,10 @@ ProblemsPanel::ProblemsPanel(QWidget *parent)
     m_list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_list->header()->setStretchLastSection(true);
 
+    m_list->setObjectName(QStringLiteral("problemsList"));
+    connect(m_list, &QTreeWidget::itemActivated, this,
+            [this](QTreeWidgetItem *item) { activate(m_list->indexOfTopLevelItem(item)); });
+
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_summary);
@@ -71,6 +83,36 @@ void ProblemsPanel::setDiagnostics(const QString &summary, const Profile::Diagno
         item->setToolTip(1, diagnostic.toString());
     }
     emit countChanged(count());
+}
+
+void ProblemsPanel::setGenerateOutcome(const Builder::GenerateOutcome &outcome)
+{
+    setDiagnostics(outcome.summary, outcome.diagnostics);
+}
+
+void ProblemsPanel::activate(int row)
+{
+    if (row < 0 || row >= m_diagnostics.size())
+        return;
+    const Profile::Diagnostic diagnostic = m_diagnostics.at(row);
+    const QFileInfo info(diagnostic.file);
+    if (info.isFile()) {
+        QFile file(diagnostic.file);
+        // Reading the start of the file is enough to tell a profile (see detectProfileKind()).
+        const bool profile = file.open(QIODevice::ReadOnly)
+            && Profile::detectProfileKind(file.read(4096)) != Profile::ProfileKind::Unknown;
+        if (profile)
+            emit profileRequested(diagnostic.file);
+        else
+            QDesktopServices::openUrl(QUrl::fromLocalFile(info.absoluteFilePath()));
+    }
+    emit diagnosticActivated(diagnostic);
+}
+
+QString ProblemsPanel::location(int row) const
+{
+    const QTreeWidgetItem *item = m_list->topLevelItem(row);
+    return item ? item->text(0) : QString();
 }
 
 void ProblemsPanel::clear()

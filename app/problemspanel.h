@@ -2,6 +2,7 @@
 #pragma once
 
 #include "diagnostic.h"
+#include "generateoutcome.h"
 
 #include <QWidget>
 
@@ -12,7 +13,11 @@ namespace Studio {
 
 /**
  * Lists the diagnostics of the last file operation (a failed load or save, or the warnings of a
- * successful load): one row per diagnostic with severity, location and message.
+ * successful load) or of the last Generate: one row per diagnostic with severity, location (file
+ * and line, or the element it is about) and message.
+ *
+ * Double-clicking a row that names a file opens it: profiles (RTC.xml, RTS files) through
+ * profileRequested(), anything else (generated sources, IDL) with the desktop's editor.
  */
 class ProblemsPanel : public QWidget
 {
@@ -23,15 +28,25 @@ public:
 
     /// Replaces the list; `summary` says what they are about (e.g. "Could not open x.xml").
     void setDiagnostics(const QString &summary, const Profile::Diagnostics &diagnostics);
+    /// Shows what a Generate ended with (its summary and rows).
+    void setGenerateOutcome(const Builder::GenerateOutcome &outcome);
     void clear();
+    /// Does what double-clicking row `row` does.
+    void activate(int row);
 
     int count() const;
     QString summary() const;
     /// Row `row` as `FILE:LINE:COL: severity: message`.
     QString text(int row) const;
+    /// The location column of row `row` (file name and line, or the element).
+    QString location(int row) const;
 
 signals:
     void countChanged(int count);
+    /// A row naming a profile file was activated: the application opens it.
+    void profileRequested(const QString &path);
+    /// A row was activated (after the panel did what it could with it).
+    void diagnosticActivated(const Profile::Diagnostic &diagnostic);
 
 private:
     QLabel *m_summary;

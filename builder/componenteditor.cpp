@@ -14,6 +14,7 @@
 #include "typecatalog.h"
 
 #include <QCoreApplication>
+#include <QMetaMethod>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QVBoxLayout>
@@ -103,10 +104,22 @@ void ComponentEditor::requestGenerate()
         }
     }
     m_basicPage->showGenerationProblems(problems);
-    if (problems.isEmpty())
+    if (problems.isEmpty()) {
         emit generateRequested();
-    else
-        emit generateRefused(problems);
+        return;
+    }
+    emit generateRefused(problems);
+    emit generationReported(GenerateOutcome::refused(problems));
+}
+
+void ComponentEditor::reportGeneration(const GenerateOutcome &outcome)
+{
+    emit generationReported(outcome);
+}
+
+bool ComponentEditor::reportsGeneration() const
+{
+    return isSignalConnected(QMetaMethod::fromSignal(&ComponentEditor::generationReported));
 }
 
 } // namespace Builder

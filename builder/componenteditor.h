@@ -3,6 +3,7 @@
 
 #include "componentmodel.h"
 #include "diagnostic.h"
+#include "generateoutcome.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -24,7 +25,9 @@ class TypeCatalog;
  * reach across pages.
  *
  * Generate asks generationProblems() first: with errors left, the editor lists them on the Basic
- * page and refuses (generateRefused()); otherwise it emits generateRequested().
+ * page and refuses (generateRefused()); otherwise it emits generateRequested(). Every outcome of
+ * Generate (refused, failed, written) is announced as generationReported(), so that the
+ * application can list it (the editor itself never depends on the application).
  */
 class ComponentEditor : public QWidget
 {
@@ -44,18 +47,25 @@ public:
     /// The page with the given tab title (e.g. "Data Ports"); null when there is none.
     QWidget *page(const QString &title) const;
 
+    /// True when something listens to generationReported() (then no summary dialog is needed).
+    bool reportsGeneration() const;
+
     /// The shared catalog of IDL types (bundled IDL plus the user's folders).
     static TypeCatalog *sharedTypeCatalog();
 
 public slots:
     /// Checks the component and emits generateRequested() or generateRefused().
     void requestGenerate();
+    /// Announces an outcome of Generate (called by the GenerateController of this editor).
+    void reportGeneration(const Builder::GenerateOutcome &outcome);
 
 signals:
     /// Generation was asked for and the component has no errors.
     void generateRequested();
     /// Generation was asked for but these errors remain.
     void generateRefused(const Profile::Diagnostics &problems);
+    /// What a Generate ended with: refused, failed, or the files written.
+    void generationReported(const Builder::GenerateOutcome &outcome);
     void codeRestoreRequested();
     void clearBackupsRequested();
 

@@ -54,6 +54,8 @@ bool GenerateDialogPrompts::confirmClearBackups(const QString &projectDir, int c
 void GenerateDialogPrompts::showSummary(const QString &title, const QString &text,
                                         const Profile::Diagnostics &problems)
 {
+    if (m_quiet && m_quiet() && title == GenerateController::tr("Generate"))
+        return;
     QMessageBox box(problems.isEmpty() ? QMessageBox::Information : QMessageBox::Warning, title,
                     text.section(QLatin1Char('\n'), 0, 0), QMessageBox::Ok, m_parent);
     QStringList details;
@@ -73,11 +75,22 @@ void GenerateDialogPrompts::showSummary(const QString &title, const QString &tex
 GenerateController *installGenerateController(ComponentEditor *editor,
                                               std::function<QString()> profilePath)
 {
-    auto *controller
-        = new GenerateController(editor->model(), editor->typeCatalog(),
-                                 std::make_unique<GenerateDialogPrompts>(editor), editor);
+    auto prompts = std::make_unique<GenerateDialogPrompts>(editor);
+    const QPointer<ComponentEditor> target(editor);
+    prompts->setGenerateSummaryQuiet([target] { return target && target->reportsGeneration(); });
+    auto *controller = new GenerateController(editor->model(), editor->typeCatalog(),
+                                              std::move(prompts), editor);
     controller->setProfilePathProvider(std::move(profilePath));
     controller->connectEditor(editor);
+    QObject::connect(controller, &GenerateController::generated, editor,
+                     [editor, controller](const Codegen::WriteReport &report) {
+                         editor->reportGeneration(
+                             GenerateOutcome::fromReport(controller->outputFolder(), report));
+                     });
+    QObject::connect(controller, &GenerateController::problemsFound, editor,
+                     [editor](const Profile::Diagnostics &problems) {
+                         editor->reportGeneration(GenerateOutcome::failed(problems));
+                     });
     return controller;
 }
 

@@ -26,15 +26,19 @@ public:
     bool confirmClearBackups(const QString &projectDir, int count) override;
     void showSummary(const QString &title, const QString &text,
                      const Profile::Diagnostics &problems) override;
+    /// Generate's summary is shown elsewhere while `quiet` says so (no modal box then).
+    void setGenerateSummaryQuiet(std::function<bool()> quiet) { m_quiet = std::move(quiet); }
 
 private:
     QPointer<QWidget> m_parent;
+    std::function<bool()> m_quiet;
 };
 
 /**
  * Gives `editor` its Generate, Code restore and Clear backups: a GenerateController (a child of
  * the editor) asking through dialogs over it. `profilePath` tells where the profile is saved
- * (for IDL next to it); it may be empty.
+ * (for IDL next to it); it may be empty. Outcomes go to ComponentEditor::reportGeneration();
+ * while something listens there, Generate shows no summary box.
  */
 GenerateController *installGenerateController(ComponentEditor *editor,
                                               std::function<QString()> profilePath);
