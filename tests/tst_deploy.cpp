@@ -67,16 +67,8 @@ void TestDeploy::init()
 {
     m_live = std::make_unique<LiveTest::LiveSystem>();
     QString error;
-    QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
-    m_managerPort = LiveTest::freePort();
-    QVERIFY2(m_live->startProcess(
-                 QStringLiteral(RTMANAGER_PATH),
-                 {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_managerPort),
-                  "-o", "corba.nameservers=" + m_live->namingServer(), "-o",
-                  "naming.formats=deployhost.host_cxt/%n.rtc", "-o",
-                  "manager.naming_formats=deployhost.host_cxt/%n.mgr", "-o",
-                  "exec_cxt.periodic.rate=200"},
-                 "rtmanager ready", &error),
+    QVERIFY2(startManager(*m_live, "deployhost.host_cxt/%n.rtc", "deployhost.host_cxt/%n.mgr",
+                          &m_managerPort, &error),
              qPrintable(error));
 }
 
@@ -103,10 +95,7 @@ Corba::ComponentProxy TestDeploy::live(const QString &instance) const
 
 QStringList TestDeploy::liveInstances() const
 {
-    const auto found = ComponentMapper::liveComponents({"/" + m_live->namingServer()}, nullptr);
-    QStringList names = found.keys();
-    names.sort();
-    return names;
+    return DeployTest::liveInstances(m_live->namingServer());
 }
 
 DeployReport TestDeploy::restore(const Profile::RtsProfile &profile, bool create)

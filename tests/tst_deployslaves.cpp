@@ -63,17 +63,9 @@ void TestDeploySlaves::init()
 {
     m_live = std::make_unique<LiveTest::LiveSystem>();
     QString error;
-    QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
-    m_managerPort = LiveTest::freePort();
-    QVERIFY2(
-        m_live->startProcess(
-            QStringLiteral(RTMANAGER_PATH),
-            {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_managerPort), "-o",
-             "corba.nameservers=" + m_live->namingServer(), "-o",
-             "naming.formats=%M.host_cxt/%n.rtc", "-o",
-             "manager.naming_formats=managers.host_cxt/%n.mgr", "-o", "exec_cxt.periodic.rate=200"},
-            "rtmanager ready", &error),
-        qPrintable(error));
+    QVERIFY2(startManager(*m_live, "%M.host_cxt/%n.rtc", "managers.host_cxt/%n.mgr", &m_managerPort,
+                          &error),
+             qPrintable(error));
 }
 
 void TestDeploySlaves::cleanup()
@@ -120,10 +112,7 @@ QHash<QString, QString> TestDeploySlaves::hostingManagers() const
 
 QStringList TestDeploySlaves::liveInstances() const
 {
-    QStringList names
-        = ComponentMapper::liveComponents({"/" + m_live->namingServer()}, nullptr).keys();
-    names.sort();
-    return names;
+    return DeployTest::liveInstances(m_live->namingServer());
 }
 
 Corba::ComponentProxy TestDeploySlaves::live(const QString &instance) const

@@ -4,6 +4,8 @@
 // Shared by the live deployment tests (tst_deploy, tst_deployslaves): test systems and report
 // queries.
 
+#include "componentmapper.h"
+#include "livesystem.h"
 #include "profileio.h"
 #include "restorer.h"
 #include "rtsprofile.h"
@@ -50,6 +52,41 @@ inline const Deploy::DeployStep *findStep(const Deploy::DeployReport &report, co
             return &step;
     }
     return nullptr;
+}
+
+/**
+ * Starts omniNames and a master rtmanager (RTMANAGER_PATH) on free loopback ports in `live`, its
+ * components named by `namingFormat` and itself by `managerFormat`, contexts at 200 Hz. The
+ * manager's port goes to `managerPort`; false with `error` set when either did not start.
+ */
+inline bool startManager(LiveTest::LiveSystem &live, const QString &namingFormat,
+                         const QString &managerFormat, quint16 *managerPort, QString *error)
+{
+    if (!live.startNameServer(error))
+        return false;
+    *managerPort = LiveTest::freePort();
+    const QStringList arguments {"-d",
+                                 "-o",
+                                 QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(*managerPort),
+                                 "-o",
+                                 "corba.nameservers=" + live.namingServer(),
+                                 "-o",
+                                 "naming.formats=" + namingFormat,
+                                 "-o",
+                                 "manager.naming_formats=" + managerFormat,
+                                 "-o",
+                                 "exec_cxt.periodic.rate=200"};
+    return live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", error)
+        != nullptr;
+}
+
+/// Instance names of the live components below `namingServer`, sorted.
+inline QStringList liveInstances(const QString &namingServer)
+{
+    QStringList names
+        = Deploy::ComponentMapper::liveComponents({"/" + namingServer}, nullptr).keys();
+    names.sort();
+    return names;
 }
 
 /// The message of the step `action` on `subject`, or says that the report has no such step.
