@@ -27,6 +27,8 @@ public:
     void undo() override;
     int id() const override;
     bool mergeWith(const QUndoCommand *other) override;
+    /// False keeps this edit a step of its own (neither merging nor merged into).
+    void setMergeable(bool mergeable) { m_mergeable = mergeable; }
 
 private:
     void apply(const QList<Profile::RtsConfigurationSet> &sets);
@@ -36,6 +38,7 @@ private:
     QString m_setId;
     QString m_parameter;
     QList<Profile::RtsConfigurationSet> m_before, m_after;
+    bool m_mergeable = true;
 };
 
 /// `sets` with `parameter` of set `setId` set to `value` (appended when the set lacks it).

@@ -3,19 +3,23 @@
 // service connector's editable interface mapping, and configuration editing with the widgets and
 // constraints of the RTC profile — each through undo, saved and read back.
 #include "configurationseteditor.h"
+#include "elementlisteditor.h"
 #include "connectorcommands.h"
 #include "connectordialog.h"
 #include "parametereditor.h"
 #include "propertiespanel.h"
+#include "rtcprofile.h"
 #include "serviceconnectordialog.h"
 #include "systemfile.h"
 
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QRadioButton>
 #include <QSlider>
 #include <QTableWidget>
+#include <QToolButton>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -72,6 +76,8 @@ private slots:
     void configurationWidgetsFollowTheProfile();
     void configurationRejectsBrokenConstraint();
     void configurationTextFallbackAndSets();
+    void configurationArrayEditedPerElement();
+    void elementRulesFromTheProfile();
 };
 
 void TestSeProps::connectDirectionEditedThroughUndo()
@@ -373,6 +379,85 @@ void TestSeProps::configurationTextFallbackAndSets()
     stack.undo();
     stack.undo();
     QCOMPARE(model->component("Filter0")->configurationSets.size(), 2);
+}
+
+void TestSeProps::configurationArrayEditedPerElement()
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QVERIFY(model);
+    QUndoStack stack;
+    PropertiesPanel panel(model.get(), &stack);
+    panel.showComponent(QStringLiteral("Filter0"));
+    ConfigurationSetEditor *editor = panel.configurationEditor();
+    QVERIFY(!editor->parameterEditor(QStringLiteral("weights")));
+    ElementListEditor *weights = editor->elementEditor(QStringLiteral("weights"));
+    QVERIFY(weights);
+    QVERIFY(!editor->elementEditor(QStringLiteral("gain"))); // a scalar stays one widget
+    QCOMPARE(weights->count(), 2);
+    const auto stored = [&] {
+        return model->component(QStringLiteral("Filter0"))
+            ->configurationSets.at(0)
+            .data.at(2)
+            .data.value_or(QString());
+    };
+    const auto typeInto = [](ParameterEditor *element, const QString &text) {
+        auto *edit = qobject_cast<QLineEdit *>(element->input());
+        edit->selectAll();
+        QTest::keyClicks(edit, text);
+    };
+
+    // Each element is checked on its own: 2 breaks 0<=x<=1 and is refused with the reason.
+    typeInto(weights->element(1), QStringLiteral("2"));
+    QVERIFY(!weights->element(1)->error().isEmpty());
+    QVERIFY(weights->element(0)->error().isEmpty());
+    QCOMPARE(stored(), QStringLiteral("0.25,0.75"));
+    QCOMPARE(stack.count(), 0);
+    QVERIFY(!panel.setValue(QStringLiteral("weights"), QStringLiteral("0.1,2")));
+    typeInto(weights->element(1), QStringLiteral("0.5"));
+    QCOMPARE(stored(), QStringLiteral("0.25,0.5"));
+    QCOMPARE(stack.count(), 1);
+
+    // Add and remove are steps of their own.
+    QTest::mouseClick(weights->findChild<QPushButton *>(QStringLiteral("addElement_weights")),
+                      Qt::LeftButton);
+    QCOMPARE(weights->count(), 3);
+    QCOMPARE(stored(), QStringLiteral("0.25,0.5,0.5"));
+    QCOMPARE(stack.count(), 2);
+    typeInto(weights->element(2), QStringLiteral("1"));
+    QCOMPARE(stored(), QStringLiteral("0.25,0.5,1"));
+    QCOMPARE(stack.count(), 3);
+    QTest::mouseClick(weights->findChild<QToolButton *>(QStringLiteral("removeElement_0")),
+                      Qt::LeftButton);
+    QCOMPARE(stored(), QStringLiteral("0.5,1"));
+    QCOMPARE(stack.count(), 4);
+    QCOMPARE(weights->count(), 2);
+
+    stack.undo();
+    QCOMPARE(stored(), QStringLiteral("0.25,0.5,1"));
+    QCOMPARE(weights->count(), 3);
+    QCOMPARE(weights->element(0)->value(), QStringLiteral("0.25"));
+    stack.undo();
+    stack.undo();
+    QCOMPARE(stored(), QStringLiteral("0.25,0.5"));
+    QCOMPARE(weights->value(), QStringLiteral("0.25,0.5"));
+    stack.redo();
+    QCOMPARE(stored(), QStringLiteral("0.25,0.5,0.5"));
+}
+
+void TestSeProps::elementRulesFromTheProfile()
+{
+    Profile::RtcConfiguration vector;
+    vector.type = QStringLiteral("vector<int>");
+    QVERIFY(ElementRules::appliesTo(vector));
+    Profile::RtcConfiguration scalar;
+    scalar.type = QStringLiteral("int");
+    QVERIFY(!ElementRules::appliesTo(scalar));
+    // A list constraint checks element i against member i; later elements are free.
+    ElementRules rules;
+    rules.memberTexts = {QStringLiteral("0<=x<=1"), QStringLiteral("x<10")};
+    QVERIFY(rules.check(QStringLiteral("0.5,9,100")).isEmpty());
+    QVERIFY(rules.check(QStringLiteral("0.5,11")).startsWith(QStringLiteral("Element 2")));
+    QVERIFY(!rules.check(QStringLiteral("2")).isEmpty());
 }
 
 QTEST_MAIN(TestSeProps)

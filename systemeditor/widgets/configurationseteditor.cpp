@@ -3,6 +3,7 @@
 
 #include "configurationcommands.h"
 #include "constraintsyntax.h"
+#include "elementlisteditor.h"
 #include "instancecommands.h"
 #include "parametereditor.h"
 #include "systemmodel.h"
@@ -212,6 +213,23 @@ const RtcConfiguration *ConfigurationSetEditor::profileConfiguration(const QStri
     return nullptr;
 }
 
+std::optional<ElementRules> ConfigurationSetEditor::elementRulesFor(const QString &parameter) const
+{
+    const RtcConfiguration *configuration = profileConfiguration(parameter);
+    if (isHidden(shownSet()) || !configuration || !ElementRules::appliesTo(*configuration))
+        return std::nullopt;
+    return ElementRules::of(*configuration);
+}
+
+ElementListEditor *ConfigurationSetEditor::elementEditor(const QString &parameter) const
+{
+    for (ElementListEditor *editor : m_lists) {
+        if (editor->name() == parameter)
+            return editor;
+    }
+    return nullptr;
+}
+
 ParameterEditor *ConfigurationSetEditor::parameterEditor(const QString &parameter) const
 {
     for (ParameterEditor *editor : m_editors) {
@@ -239,22 +257,25 @@ void ConfigurationSetEditor::fillValues()
         for (const RtsConfigurationData &data : set->data)
             names << data.name;
     }
-    QStringList shownNames;
-    for (ParameterEditor *editor : m_editors)
-        shownNames << editor->name();
     // The same parameters of the same set: only values change, so that an editor the user is
     // typing in is kept.
-    if (set && setId == m_editorsSet && names == shownNames) {
+    if (set && setId == m_editorsSet && names == m_shownNames) {
         updateValues(*set);
         return;
     }
     while (m_valuesForm->rowCount() > 0)
         m_valuesForm->removeRow(0);
     m_editors.clear();
+    m_lists.clear();
+    m_shownNames = names;
     m_editorsSet = setId;
     if (!set)
         return;
     for (const RtsConfigurationData &data : set->data) {
+        if (const std::optional<ElementRules> rules = elementRulesFor(data.name)) {
+            addElementList(data.name, *rules, data.data.value_or(QString()));
+            continue;
+        }
         auto *editor = new ParameterEditor(data.name, ruleFor(data.name));
         // Wide enough for a usable slider; a long label then wraps its widget below it.
         editor->setMinimumWidth(MinimumEditorWidth);
@@ -267,13 +288,30 @@ void ConfigurationSetEditor::fillValues()
     }
 }
 
+void ConfigurationSetEditor::addElementList(const QString &parameter, const ElementRules &rules,
+                                            const QString &value)
+{
+    auto *editor = new ElementListEditor(parameter, rules);
+    editor->setMinimumWidth(MinimumEditorWidth);
+    editor->setValue(value);
+    connect(editor, &ElementListEditor::valueChanged, this,
+            [this, editor](const QString &text, bool structural) {
+                if (!m_filling)
+                    setValue(editor->name(), text, structural);
+            });
+    m_lists << editor;
+    m_valuesForm->addRow(parameterLabel(parameter), editor);
+}
+
 void ConfigurationSetEditor::updateValues(const RtsConfigurationSet &set)
 {
     m_filling = true;
-    for (int i = 0; i < set.data.size(); ++i) {
-        const QString value = set.data.at(i).data.value_or(QString());
-        if (m_editors.at(i)->value() != value)
-            m_editors.at(i)->setValue(value);
+    for (const RtsConfigurationData &data : set.data) {
+        const QString value = data.data.value_or(QString());
+        if (ParameterEditor *editor = parameterEditor(data.name); editor && editor->value() != value)
+            editor->setValue(value);
+        if (ElementListEditor *list = elementEditor(data.name); list && list->value() != value)
+            list->setValue(value);
     }
     m_filling = false;
 }
@@ -285,15 +323,20 @@ void ConfigurationSetEditor::onEdited(ParameterEditor *editor)
     setValue(editor->name(), editor->value());
 }
 
-bool ConfigurationSetEditor::setValue(const QString &parameter, const QString &value)
+bool ConfigurationSetEditor::setValue(const QString &parameter, const QString &value,
+                                      bool structural)
 {
     const RtsComponent *c = current();
-    if (!c || !ruleFor(parameter).check(value).isEmpty())
+    const std::optional<ElementRules> elements = elementRulesFor(parameter);
+    const QString problem = elements ? elements->check(value) : ruleFor(parameter).check(value);
+    if (!c || !problem.isEmpty())
         return false;
     if (valueIn(*c, shownSet(), parameter) == value)
         return true;
     auto *command
         = new SetConfigurationValueCommand(m_model, m_component, shownSet(), parameter, value);
+    // Adding or removing an element is a step of its own, not merged with typing.
+    command->setMergeable(!structural);
     if (m_undoStack) {
         m_undoStack->push(command);
     } else {

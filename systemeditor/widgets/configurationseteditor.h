@@ -4,7 +4,10 @@
 #include "parameterrule.h"
 #include "rtscomponent.h"
 
+#include <optional>
+
 #include <QPointer>
+#include <QStringList>
 #include <QWidget>
 
 class QCheckBox;
@@ -20,7 +23,9 @@ struct RtcConfiguration;
 
 namespace SystemEditor {
 
+class ElementListEditor;
 class ParameterEditor;
+struct ElementRules;
 class SystemModel;
 
 /**
@@ -48,13 +53,17 @@ public:
     void setShowHidden(bool show);
     /// The editor of `parameter` in the shown set, or null.
     ParameterEditor *parameterEditor(const QString &parameter) const;
+    /// The per-element editor of array parameter `parameter` (a `vector<T>` type or a list
+    /// constraint in the RTC profile) in the shown set, or null.
+    ElementListEditor *elementEditor(const QString &parameter) const;
     /// How `parameter` of the shown component is edited.
     ParameterRule ruleFor(const QString &parameter) const;
     QComboBox *setCombo() const { return m_sets; }
 
-    /// Editing as the widgets do it (each one undo step; a value breaking its constraint is
-    /// refused and false returned).
-    bool setValue(const QString &parameter, const QString &value);
+    /// Editing as the widgets do it (each one undo step; a value breaking its constraint, for
+    /// an array any element breaking its own, is refused and false returned). Edits of one
+    /// value merge (typing) unless `structural` (elements added or removed).
+    bool setValue(const QString &parameter, const QString &value, bool structural = false);
     void activateShownSet();
     void addSet();
     void addSetCopy();
@@ -67,6 +76,8 @@ private:
     void fillValues();
     void updateValues(const Profile::RtsConfigurationSet &set);
     void onEdited(ParameterEditor *editor);
+    std::optional<ElementRules> elementRulesFor(const QString &parameter) const;
+    void addElementList(const QString &parameter, const ElementRules &rules, const QString &value);
     const Profile::RtcConfiguration *profileConfiguration(const QString &parameter) const;
     QLabel *parameterLabel(const QString &parameter) const;
     void pushSets(const QList<Profile::RtsConfigurationSet> &sets,
@@ -83,6 +94,8 @@ private:
     QWidget *m_valuesArea;
     QFormLayout *m_valuesForm;
     QList<ParameterEditor *> m_editors;
+    QList<ElementListEditor *> m_lists;
+    QStringList m_shownNames; ///< the parameters the editors show, in order
     QString m_editorsSet; ///< the set the editors show
     bool m_filling = false;
 };
