@@ -85,7 +85,8 @@ int SetConfigurationValueCommand::id() const
 bool SetConfigurationValueCommand::mergeWith(const QUndoCommand *other)
 {
     const auto *next = static_cast<const SetConfigurationValueCommand *>(other);
-    if (!m_mergeable || !next->m_mergeable || next->m_model != m_model || next->m_instance != m_instance || next->m_setId != m_setId
+    if (!m_mergeable || !next->m_mergeable || next->m_model != m_model
+        || next->m_instance != m_instance || next->m_setId != m_setId
         || next->m_parameter != m_parameter)
         return false;
     m_after = next->m_after;

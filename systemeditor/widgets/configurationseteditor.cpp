@@ -308,7 +308,8 @@ void ConfigurationSetEditor::updateValues(const RtsConfigurationSet &set)
     m_filling = true;
     for (const RtsConfigurationData &data : set.data) {
         const QString value = data.data.value_or(QString());
-        if (ParameterEditor *editor = parameterEditor(data.name); editor && editor->value() != value)
+        ParameterEditor *editor = parameterEditor(data.name);
+        if (editor && editor->value() != value)
             editor->setValue(value);
         if (ElementListEditor *list = elementEditor(data.name); list && list->value() != value)
             list->setValue(value);
