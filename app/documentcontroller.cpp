@@ -3,6 +3,7 @@
 
 #include "diagramexport.h"
 #include "documentloader.h"
+#include "onlinedocument.h"
 #include "recentfiles.h"
 #include "rtcdocument.h"
 #include "rtsdocument.h"
@@ -72,6 +73,35 @@ RtsDocument *DocumentController::newSystem()
     return document;
 }
 
+OnlineDocument *DocumentController::newOnlineDiagram(SystemEditor::OnlineSession *session)
+{
+    auto *document = new OnlineDocument(session, this);
+    document->setUntitledName(tr("Online Diagram %1").arg(++m_newOnlineDiagrams));
+    connect(document, &OnlineDocument::liveSaved, this, &DocumentController::reportLiveSave);
+    addDocument(document);
+    return document;
+}
+
+void DocumentController::reportLiveSave(const QString &path, const QString &error,
+                                        const QStringList &warnings)
+{
+    if (error.isEmpty()) {
+        m_recentFiles->add(path);
+        rememberDirectory(path);
+        emit statusMessage(warnings.isEmpty()
+                               ? tr("Saved the live system to %1").arg(path)
+                               : tr("Saved the live system to %1 without %n component(s)",
+                                    nullptr, int(warnings.size()))
+                                     .arg(path));
+        return;
+    }
+    const QString summary = tr("Could not save the live system to %1.").arg(path);
+    const Profile::Diagnostics diagnostics {Profile::Diagnostic::error(path, 0, 0, error)};
+    emit problemsReported(summary, diagnostics);
+    if (m_prompts)
+        m_prompts->showProblems(tr("Save Failed"), summary, diagnostics);
+}
+
 QList<Document *> DocumentController::openFiles(const QStringList &paths)
 {
     QList<Document *> opened;
@@ -123,6 +153,8 @@ bool DocumentController::saveAs(Document *document)
 
 bool DocumentController::saveAs(Document *document, const QString &path)
 {
+    if (auto *online = qobject_cast<OnlineDocument *>(document))
+        return online->saveLive(path);
     return saveTo(document, path, false);
 }
 
@@ -286,7 +318,9 @@ QString DocumentController::suggestedSavePath(const Document *document) const
 {
     if (!document->isUntitled())
         return document->filePath();
-    QString fileName = QStringLiteral("RTC.xml");
+    QString fileName = qobject_cast<const OnlineDocument *>(document)
+        ? QStringLiteral("LiveSystem.xml")
+        : QStringLiteral("RTC.xml");
     if (const auto *system = qobject_cast<const RtsDocument *>(document)) {
         const QString name = system->systemField(RtsDocument::SystemField::Name);
         fileName = (name.isEmpty() ? QStringLiteral("System") : name) + QStringLiteral(".xml");

@@ -7,9 +7,14 @@
 #include <QObject>
 #include <QStringList>
 
+namespace SystemEditor {
+class OnlineSession;
+}
+
 namespace Studio {
 
 class Document;
+class OnlineDocument;
 class RecentFiles;
 class RtcDocument;
 class RtsDocument;
@@ -42,6 +47,8 @@ public:
     RtcDocument *newComponent();
     /// A new empty system, untitled and unmodified.
     RtsDocument *newSystem();
+    /// A new, empty online diagram whose remote calls go through `session`.
+    OnlineDocument *newOnlineDiagram(SystemEditor::OnlineSession *session);
 
     /**
      * Opens the files; a file that is open already is not read again, its document is returned.
@@ -56,7 +63,8 @@ public:
     bool save(Document *document);
     /// Asks for a file name and saves there (format by extension).
     bool saveAs(Document *document);
-    /// Saves to `path` (format by extension); on failure the document stays as it was.
+    /// Saves to `path` (format by extension); on failure the document stays as it was. An
+    /// online diagram saves its live system there, asynchronously (the result is reported).
     bool saveAs(Document *document, const QString &path);
 
     /**
@@ -88,6 +96,7 @@ signals:
 private:
     Document *openOne(const QString &path, Profile::Diagnostics *failures);
     void addDocument(Document *document);
+    void reportLiveSave(const QString &path, const QString &error, const QStringList &warnings);
     bool saveTo(Document *document, const QString &path, bool keepFormat);
     /// For a system: asks its profile information and applies it; false when cancelled.
     bool confirmSystemProfile(Document *document);
@@ -101,6 +110,7 @@ private:
     QList<Document *> m_documents;
     int m_newComponents = 0;
     int m_newSystems = 0;
+    int m_newOnlineDiagrams = 0;
 };
 
 } // namespace Studio

@@ -3,6 +3,8 @@
 
 #include "componenteditor.h"
 #include "generatedialogprompts.h"
+#include "onlinediagram.h"
+#include "onlinedocument.h"
 #include "rtcdocument.h"
 #include "rtsdocument.h"
 #include "rtseditor.h"
@@ -20,6 +22,11 @@ QWidget *createEditor(Document *document, QWidget *parent)
         Builder::installGenerateController(
             editor, [source] { return source ? source->filePath() : QString(); });
         return editor;
+    }
+    if (auto *online = qobject_cast<OnlineDocument *>(document)) {
+        auto *diagram = new SystemEditor::OnlineDiagram(online->session(), parent);
+        online->setDiagram(diagram);
+        return diagram;
     }
     if (auto *rts = qobject_cast<RtsDocument *>(document))
         return new RtsEditor(rts, parent);

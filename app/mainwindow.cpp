@@ -53,6 +53,11 @@ MainWindow::MainWindow(QWidget *parent)
     createPerspectives();
     createProblemsDock();
     m_online = new OnlineDocks(this, new QSettings(this));
+    m_online->attach(
+        m_controller, [this] { return activeDocument(); },
+        [this] { return m_prompts->askOpenFileNames(m_controller->lastDirectory()).value(0); });
+    connect(m_online, &OnlineDocks::statusMessage, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 5000); });
     createActions();
     createMenus();
     createToolBar();
@@ -275,6 +280,7 @@ void MainWindow::createMenus()
         else
             statusBar()->showMessage(tr("Open a system to restore it."), 5000);
     });
+    m_online->fillMenu(online);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action("actionAbout"));

@@ -2,25 +2,37 @@
 #include "onlinedocks.h"
 
 #include "configurationview.h"
+#include "documentcontroller.h"
+#include "driftview.h"
 #include "executioncontextview.h"
 #include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
 #include "onlinediagram.h"
+#include "onlinedocument.h"
 #include "onlinesession.h"
+#include "profileio.h"
 #include "restoredialog.h"
+#include "restoreplan.h"
+#include "rtsdocument.h"
 #include "systemmodel.h"
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QItemSelectionModel>
 #include <QMainWindow>
+#include <QMenu>
+#include <QPointer>
 #include <QSortFilterProxyModel>
 #include <QTreeView>
+
+Q_DECLARE_METATYPE(Deploy::RestorePlan)
 
 namespace Studio {
 
 using SystemEditor::NameServiceModel;
+using SystemEditor::OnlineDiagram;
 
 OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     : QObject(window)
@@ -29,8 +41,8 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     , m_configuration(new SystemEditor::ConfigurationView(m_session))
     , m_contexts(new SystemEditor::ExecutionContextView(m_session))
     , m_manager(new SystemEditor::ManagerView(m_session))
-    , m_diagram(new SystemEditor::OnlineDiagram(m_session))
 {
+    qRegisterMetaType<Deploy::RestorePlan>();
     addDock(window, m_nameService, tr("Name Service"), QStringLiteral("nameServiceDock"),
             Qt::LeftDockWidgetArea);
     QDockWidget *configuration
@@ -43,8 +55,6 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
                   QStringLiteral("executionContextDock"), Qt::BottomDockWidgetArea);
     QDockWidget *manager = addDock(window, m_manager, tr("Manager"), QStringLiteral("managerDock"),
                                    Qt::BottomDockWidgetArea);
-    addDock(window, m_diagram, tr("Online Diagram"), QStringLiteral("onlineDiagramDock"),
-            Qt::RightDockWidgetArea);
     window->tabifyDockWidget(configuration, contexts);
     window->tabifyDockWidget(contexts, manager);
     configuration->raise();
@@ -56,6 +66,15 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
             [this](const QModelIndex &index) {
                 addToDiagram(m_nameService->filterModel()->mapToSource(index));
             });
+}
+
+void OnlineDocks::attach(DocumentController *documents,
+                         const std::function<Document *()> &activeDocument,
+                         const FileQuestion &askFile)
+{
+    m_documents = documents;
+    m_activeDocument = activeDocument;
+    m_askFile = askFile;
 }
 
 QDockWidget *OnlineDocks::addDock(QMainWindow *window, QWidget *view, const QString &title,
@@ -76,6 +95,71 @@ QList<QAction *> OnlineDocks::toggleActions() const
     for (QDockWidget *dock : m_docks)
         actions.append(dock->toggleViewAction());
     return actions;
+}
+
+void OnlineDocks::fillMenu(QMenu *menu)
+{
+    const auto add = [this, menu](const char *name, const QString &text, auto slot) {
+        QAction *action = menu->addAction(text, this, slot);
+        action->setObjectName(QLatin1String(name));
+        return action;
+    };
+    add("actionNewOnlineDiagram", tr("&New Online Diagram"), [this] { newDiagram(); });
+    add("actionOpenOnline", tr("&Open System Online"), [this] {
+        const auto *system = qobject_cast<RtsDocument *>(m_activeDocument());
+        if (system)
+            openOnline(system->profile());
+        else
+            emit statusMessage(tr("Open a system to show it online."));
+    });
+    add("actionSaveLiveSystem", tr("&Save Live System As…"), [this] {
+        if (OnlineDocument *online = currentDiagram())
+            m_documents->saveAs(online);
+        else
+            emit statusMessage(tr("Open an online diagram to save its live system."));
+    });
+    add("actionCompareWithFile", tr("&Compare with File…"), [this] {
+        const QString path = m_askFile ? m_askFile() : QString();
+        if (!path.isEmpty())
+            compareWithFile(path);
+    });
+    menu->addSeparator();
+    const std::pair<const char *, OnlineDiagram::Action> all[]
+        = {{QT_TR_NOOP("Activate All"), OnlineDiagram::Action::Activate},
+           {QT_TR_NOOP("Deactivate All"), OnlineDiagram::Action::Deactivate},
+           {QT_TR_NOOP("Reset All"), OnlineDiagram::Action::Reset},
+           {QT_TR_NOOP("Start All"), OnlineDiagram::Action::Start},
+           {QT_TR_NOOP("Stop All"), OnlineDiagram::Action::Stop},
+           {QT_TR_NOOP("Exit All"), OnlineDiagram::Action::Exit}};
+    for (const auto &[text, action] : all) {
+        const OnlineDiagram::Action what = action;
+        QAction *a = menu->addAction(tr(text), this, [this, what] {
+            if (OnlineDocument *online = currentDiagram(); online && online->diagram())
+                online->diagram()->performAll(what);
+        });
+        a->setObjectName(QStringLiteral("menuAction")
+                         + QString::fromLatin1(text).remove(QLatin1Char(' ')));
+    }
+}
+
+OnlineDocument *OnlineDocks::newDiagram()
+{
+    return m_documents ? m_documents->newOnlineDiagram(m_session) : nullptr;
+}
+
+OnlineDocument *OnlineDocks::currentDiagram() const
+{
+    if (auto *current
+        = qobject_cast<OnlineDocument *>(m_activeDocument ? m_activeDocument() : nullptr))
+        return current;
+    if (!m_documents)
+        return nullptr;
+    const QList<Document *> documents = m_documents->documents();
+    for (auto it = documents.crbegin(); it != documents.crend(); ++it) {
+        if (auto *online = qobject_cast<OnlineDocument *>(*it))
+            return online;
+    }
+    return nullptr;
 }
 
 void OnlineDocks::setPerspectiveActive(bool systemEditor)
@@ -114,17 +198,67 @@ void OnlineDocks::showItem(const QModelIndex &index)
     }
 }
 
-SystemEditor::RestoreDialog *OnlineDocks::openRestore(const Profile::RtsProfile &profile)
+Deploy::TargetOptions OnlineDocks::targetOptions() const
 {
     Deploy::TargetOptions options;
     options.nameServers = m_nameService->model()->servers();
-    auto *dialog
-        = new SystemEditor::RestoreDialog(m_session, profile, options, m_nameService->window());
+    return options;
+}
+
+SystemEditor::RestoreDialog *OnlineDocks::openRestore(const Profile::RtsProfile &profile)
+{
+    auto *dialog = new SystemEditor::RestoreDialog(m_session, profile, targetOptions(),
+                                                   m_nameService->window());
     dialog->setObjectName(QStringLiteral("restoreDialog"));
     dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setManagers(knownManagers());
     dialog->show();
     dialog->plan();
     return dialog;
+}
+
+QStringList OnlineDocks::knownManagers() const
+{
+    // The managers the Name Service tree has found so far, in tree order.
+    QStringList managers;
+    const NameServiceModel *model = m_nameService->model();
+    QList<QModelIndex> pending {QModelIndex()};
+    while (!pending.isEmpty()) {
+        const QModelIndex parent = pending.takeFirst();
+        for (int row = 0; row < model->rowCount(parent); ++row) {
+            const QModelIndex child = model->index(row, 0, parent);
+            if (Corba::NodeType(child.data(NameServiceModel::TypeRole).toInt())
+                == Corba::NodeType::Manager)
+                managers.append(child.data(NameServiceModel::PathRole).toString());
+            pending.append(child);
+        }
+    }
+    return managers;
+}
+
+SystemEditor::DriftView *OnlineDocks::compareWithFile(const QString &path)
+{
+    Profile::Diagnostics diagnostics;
+    const auto loaded = Profile::loadProfileFile(path, &diagnostics);
+    if (!loaded || !loaded->rts) {
+        emit statusMessage(diagnostics.isEmpty()
+                               ? tr("%1 is not a system profile.").arg(QFileInfo(path).fileName())
+                               : diagnostics.first().toString());
+        return nullptr;
+    }
+    auto *view = new SystemEditor::DriftView(m_session, *loaded->rts, targetOptions(),
+                                             QFileInfo(path).fileName(), m_nameService->window());
+    view->setObjectName(QStringLiteral("driftView"));
+    view->setAttribute(Qt::WA_DeleteOnClose);
+    view->show();
+    view->refresh();
+    return view;
+}
+
+QPointF OnlineDocks::nextPosition(int count)
+{
+    // New components go below each other, left of the data flow they will join.
+    return QPointF(40 + 260 * (count % 3), 40 + 180 * (count / 3));
 }
 
 void OnlineDocks::addToDiagram(const QModelIndex &index)
@@ -133,11 +267,60 @@ void OnlineDocks::addToDiagram(const QModelIndex &index)
     const QString ior = index.data(NameServiceModel::IorRole).toString();
     if (type != Corba::NodeType::Component || ior.isEmpty())
         return;
-    // New components go below each other, left of the data flow they will join.
-    const int count = int(m_diagram->model()->componentIds().size());
-    m_diagram->addComponent(index.data(NameServiceModel::PathRole).toString(), ior,
-                            QPointF(40 + 260 * (count % 3), 40 + 180 * (count / 3)));
-    m_docks.at(4)->show();
+    OnlineDocument *online = currentDiagram();
+    if (!online)
+        online = newDiagram();
+    if (!online || !online->diagram())
+        return;
+    OnlineDiagram *diagram = online->diagram();
+    diagram->addComponent(index.data(NameServiceModel::PathRole).toString(), ior,
+                          nextPosition(int(diagram->model()->componentIds().size())));
+    emit m_documents->activationRequested(online);
+}
+
+OnlineDocument *OnlineDocks::openOnline(const Profile::RtsProfile &profile)
+{
+    OnlineDocument *online = newDiagram();
+    if (!online || !online->diagram())
+        return online;
+    const QPointer<OnlineDiagram> diagram(online->diagram());
+    const Deploy::TargetOptions options = targetOptions();
+    m_session->submit(
+        SystemEditor::OnlineSession::deploymentHost(),
+        [profile, options] { return QVariant::fromValue(Deploy::planRestore(profile, options)); },
+        diagram,
+        [this, diagram, profile](const SystemEditor::OnlineResult &result) {
+            if (!result.ok)
+                emit statusMessage(result.error);
+            else if (diagram)
+                placeMapped(diagram, profile, result.value);
+        });
+    return online;
+}
+
+void OnlineDocks::placeMapped(OnlineDiagram *diagram, const Profile::RtsProfile &profile,
+                              const QVariant &plan)
+{
+    QStringList missing;
+    int count = 0;
+    for (const Deploy::ComponentMapping &c : plan.value<Deploy::RestorePlan>().components) {
+        if (c.kind != Deploy::MappingKind::Existing) {
+            missing.append(c.instanceName);
+            continue;
+        }
+        QPointF position = nextPosition(count++);
+        for (const Profile::RtsComponent &saved : profile.components) {
+            if (saved.instanceName != c.instanceName || !saved.layout)
+                continue;
+            const auto x = Profile::RtsLocation::toInt(saved.layout->x);
+            const auto y = Profile::RtsLocation::toInt(saved.layout->y);
+            if (x && y)
+                position = QPointF(*x, *y);
+        }
+        diagram->addComponent(c.path, c.ior, position);
+    }
+    if (!missing.isEmpty())
+        emit statusMessage(tr("Not running: %1").arg(missing.join(QStringLiteral(", "))));
 }
 
 } // namespace Studio

@@ -3,18 +3,27 @@
 
 #include <QList>
 #include <QObject>
+#include <QPointF>
+
+#include <functional>
 
 class QAction;
 class QDockWidget;
 class QMainWindow;
+class QMenu;
 class QSettings;
 
 namespace Profile {
 struct RtsProfile;
 }
 
+namespace Deploy {
+struct TargetOptions;
+}
+
 namespace SystemEditor {
 class ConfigurationView;
+class DriftView;
 class ExecutionContextView;
 class ManagerView;
 class OnlineDiagram;
@@ -25,12 +34,16 @@ class OnlineSession;
 
 namespace Studio {
 
+class Document;
+class DocumentController;
+class OnlineDocument;
+
 /**
- * The online views of the System Editor as docks of the main window: Name Service (left),
- * Configuration, Execution Contexts and Manager (bottom, tabbed). Choosing a component in the Name
- * Service tree shows it in the first two, choosing a manager in the Manager view; double-clicking
- * a component (or dragging it) puts it on the Online Diagram dock. One OnlineSession
- * runs the remote calls of all of them.
+ * The online views of the System Editor: Name Service (left), Configuration, Execution Contexts
+ * and Manager (bottom, tabbed) as docks of the main window, and online diagrams as System Editor
+ * tabs (OnlineDocument). Choosing a component in the Name Service tree shows it in the first two,
+ * choosing a manager in the Manager view; double-clicking a component (or dragging it onto a tab)
+ * puts it on the current online diagram. One OnlineSession runs the remote calls of all of them.
  */
 class OnlineDocks : public QObject
 {
@@ -40,36 +53,72 @@ public:
     /// Creates the docks in `window`, hidden; `settings` keeps the name-server list.
     OnlineDocks(QMainWindow *window, QSettings *settings);
 
+    /// Asks for a system file to compare with; an empty string means cancelled.
+    using FileQuestion = std::function<QString()>;
+    /**
+     * Lets the online views open online diagram tabs through `documents` and find the document
+     * of the current tab through `activeDocument`; `askFile` asks for Compare with File.
+     */
+    void attach(DocumentController *documents, const std::function<Document *()> &activeDocument,
+                const FileQuestion &askFile);
+
     SystemEditor::OnlineSession *session() const { return m_session; }
     SystemEditor::NameServiceView *nameService() const { return m_nameService; }
     SystemEditor::ConfigurationView *configuration() const { return m_configuration; }
     SystemEditor::ExecutionContextView *executionContexts() const { return m_contexts; }
     SystemEditor::ManagerView *manager() const { return m_manager; }
-    SystemEditor::OnlineDiagram *diagram() const { return m_diagram; }
     QList<QDockWidget *> docks() const { return m_docks; }
     /// The docks' show/hide actions, for the View menu.
     QList<QAction *> toggleActions() const;
+    /// Adds New Online Diagram, Open System Online, Save Live System, Compare with File and the
+    /// whole-diagram actions to the Online menu.
+    void fillMenu(QMenu *menu);
+
+    /// Opens a new, empty online diagram tab.
+    OnlineDocument *newDiagram();
+    /// The online diagram of the current tab, else the last one opened; null when there is none.
+    OnlineDocument *currentDiagram() const;
+    /**
+     * Opens `profile` online: a new online diagram tab showing the live components the system's
+     * components map onto, at their saved positions. Components not found are listed in the
+     * diagram's status line.
+     */
+    OnlineDocument *openOnline(const Profile::RtsProfile &profile);
     /**
      * Opens the Restore dialog for `profile` (non-modal, deleted on close), mapping it onto the
      * name servers of the Name Service view, and starts planning.
      */
     SystemEditor::RestoreDialog *openRestore(const Profile::RtsProfile &profile);
+    /// Opens the drift of the system file `path` against the live system; null (and a message
+    /// on the status line) when it cannot be read as a system.
+    SystemEditor::DriftView *compareWithFile(const QString &path);
     /// Shows the docks with the System Editor perspective and hides them with the Builder.
     void setPerspectiveActive(bool systemEditor);
+
+signals:
+    /// A one-line message for the status bar.
+    void statusMessage(const QString &message);
 
 private:
     QDockWidget *addDock(QMainWindow *window, QWidget *view, const QString &title,
                          const QString &name, Qt::DockWidgetArea area);
     void showItem(const QModelIndex &index);
     void addToDiagram(const QModelIndex &index);
+    Deploy::TargetOptions targetOptions() const;
+    QStringList knownManagers() const;
+    void placeMapped(SystemEditor::OnlineDiagram *diagram, const Profile::RtsProfile &profile,
+                     const QVariant &plan);
+    static QPointF nextPosition(int count);
 
     SystemEditor::OnlineSession *m_session;
     SystemEditor::NameServiceView *m_nameService;
     SystemEditor::ConfigurationView *m_configuration;
     SystemEditor::ExecutionContextView *m_contexts;
     SystemEditor::ManagerView *m_manager;
-    SystemEditor::OnlineDiagram *m_diagram;
     QList<QDockWidget *> m_docks;
+    DocumentController *m_documents = nullptr;
+    std::function<Document *()> m_activeDocument;
+    FileQuestion m_askFile;
     bool m_shownOnce = false;
 };
 

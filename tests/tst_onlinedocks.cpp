@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "configurationview.h"
+#include "documentcontroller.h"
 #include "executioncontextmodel.h"
 #include "executioncontextview.h"
 #include "livesystem.h"
@@ -9,13 +10,23 @@
 #include "nameserviceview.h"
 #include "onlinediagram.h"
 #include "onlinedocks.h"
+#include "onlinedocument.h"
 #include "onlineicons.h"
 #include "orb.h"
+#include "perspective.h"
+#include "portconnection.h"
+#include "profileio.h"
 #include "restoredialog.h"
+#include "rtsdocument.h"
 #include "systemmodel.h"
 
 #include <QAction>
 #include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QGraphicsView>
+#include <QMimeData>
+#include <QTemporaryDir>
+
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
@@ -24,6 +35,7 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QTreeView>
+#include <memory>
 
 using namespace Studio;
 
@@ -37,6 +49,7 @@ private slots:
     void docksFollowThePerspective();
     void choosingAComponentShowsItsConfigurationAndContexts();
     void restoresASystemThroughTheOnlineMenu();
+    void dragOntoTheTabActivateAndSaveTheLiveSystem();
 
 private:
     LiveTest::LiveSystem m_live;
@@ -62,7 +75,7 @@ void TestOnlineDocks::initTestCase()
         "-o",
         "manager.naming_formats=dockhost.host_cxt/%n.mgr",
         "-o",
-        "manager.components.precreate=ConfigSample,ConsoleIn"};
+        "manager.components.precreate=ConfigSample,ConsoleIn,ConsoleOut"};
     QVERIFY2(
         m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
         qPrintable(error));
@@ -78,7 +91,7 @@ void TestOnlineDocks::docksFollowThePerspective()
     QVERIFY(window.findChild<QDockWidget *>("configurationDock"));
     QVERIFY(window.findChild<QDockWidget *>("executionContextDock"));
     QVERIFY(window.findChild<QDockWidget *>("managerDock"));
-    QVERIFY(window.findChild<QDockWidget *>("onlineDiagramDock"));
+    QVERIFY(!window.findChild<QDockWidget *>("onlineDiagramDock")); // a tab now
     window.showPerspective(Perspective::Id::Builder);
     QVERIFY(!nameService->isVisible());
     window.showPerspective(Perspective::Id::SystemEditor);
@@ -131,8 +144,14 @@ void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
     tree->setCurrentIndex(shown);
     window.findChild<QDockWidget *>("configurationDock")->raise();
 
-    // Double-clicking components puts them on the online diagram.
-    SystemEditor::OnlineDiagram *diagram = window.onlineDocks()->diagram();
+    // Double-clicking components puts them on an online diagram tab of the System Editor.
+    window.findChild<QAction *>("actionNewOnlineDiagram")->trigger();
+    auto *online = qobject_cast<OnlineDocument *>(window.activeDocument());
+    QVERIFY(online);
+    SystemEditor::OnlineDiagram *diagram = online->diagram();
+    QVERIFY(diagram);
+    QCOMPARE(window.perspective(Perspective::Id::SystemEditor)->editor(online),
+             static_cast<QWidget *>(diagram));
     for (const char *name : {"ConsoleIn0", "ConfigSample0"}) {
         const QModelIndex index = view->filterModel()->mapFromSource(view->model()->indexOfPath(
             QStringLiteral("/%1/dockhost.host_cxt/%2.rtc").arg(m_live.namingServer(), name)));
@@ -143,12 +162,12 @@ void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
         QTest::mouseDClick(tree->viewport(), Qt::LeftButton, {}, at);
         QVERIFY(added.wait(10000));
     }
-    QVERIFY(window.findChild<QDockWidget *>("onlineDiagramDock")->isVisible());
     QCOMPARE(diagram->model()->componentIds().size(), 2);
     diagram->perform(SystemEditor::OnlineDiagram::Action::Activate, "ConsoleIn0");
     QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor("ConsoleIn0"),
                               SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active),
                               10000);
+    diagram->perform(SystemEditor::OnlineDiagram::Action::Deactivate, "ConsoleIn0");
     tree->setCurrentIndex(shown);
 
     auto *editor = window.onlineDocks()->configuration()->findChild<QWidget *>("editor_int_param0");
@@ -182,6 +201,104 @@ void TestOnlineDocks::restoresASystemThroughTheOnlineMenu()
     QCOMPARE(dialog->componentTable()->item(0, 2)->text(), QStringLiteral("existing"));
     QVERIFY(dialog->componentTable()->item(0, 3)->text().contains("dockhost.host_cxt"));
     dialog->close();
+}
+
+void TestOnlineDocks::dragOntoTheTabActivateAndSaveTheLiveSystem()
+{
+    MainWindow window;
+    window.resize(1400, 900);
+    window.show();
+    window.showPerspective(Perspective::Id::SystemEditor);
+    SystemEditor::NameServiceView *view = window.onlineDocks()->nameService();
+    QSignalSpy refreshed(view, &SystemEditor::NameServiceView::serverRefreshed);
+    QVERIFY(view->addServer(m_live.namingServer()));
+    QVERIFY(refreshed.wait(15000));
+    window.findChild<QAction *>("actionNewOnlineDiagram")->trigger();
+    auto *online = qobject_cast<OnlineDocument *>(window.activeDocument());
+    QVERIFY(online);
+    SystemEditor::OnlineDiagram *diagram = online->diagram();
+
+    // Drag both components from the tree (its own drag data) onto the tab.
+    QModelIndexList dragged;
+    for (const char *name : {"ConsoleIn0", "ConsoleOut0"})
+        dragged.append(view->model()->indexOfPath(
+            QStringLiteral("/%1/dockhost.host_cxt/%2.rtc").arg(m_live.namingServer(), name)));
+    std::unique_ptr<QMimeData> mime(view->model()->mimeData(dragged));
+    QVERIFY(mime);
+    QWidget *viewport = diagram->view()->viewport();
+    const QPoint at(80, 80);
+    QDragEnterEvent enter(at, Qt::CopyAction, mime.get(), Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(viewport, &enter);
+    QVERIFY(enter.isAccepted());
+    QSignalSpy added(diagram, &SystemEditor::OnlineDiagram::componentAdded);
+    QDropEvent drop(at, Qt::CopyAction, mime.get(), Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(viewport, &drop);
+    QTRY_COMPARE_WITH_TIMEOUT(added.size(), 2, 10000);
+
+    // Activate All from the Online menu acts on the tab.
+    const QColor active = SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active);
+    window.findChild<QAction *>("menuActionActivateAll")->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor("ConsoleOut0"), active, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor("ConsoleIn0"), active, 10000);
+
+    // Connected live, moved on the diagram, then saved: the file has both.
+    QSignalSpy connected(diagram, &SystemEditor::OnlineDiagram::connectionFinished);
+    diagram->connectLive("ConsoleIn0.out", "ConsoleOut0.in",
+                         SystemEditor::ConnectorSettings::defaults("out", "in", "RTC::TimedLong"));
+    QVERIFY(connected.wait(10000));
+    QVERIFY2(connected.at(0).at(0).toString().isEmpty(),
+             qPrintable(connected.at(0).at(0).toString()));
+    QTRY_COMPARE_WITH_TIMEOUT(diagram->model()->connectorIds().size(), 1, 10000);
+    diagram->model()->moveComponent("ConsoleOut0", QPointF(520, 240));
+    const QString shot = qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT");
+    if (!shot.isEmpty())
+        window.grab().save(shot + ".tab.png");
+    QTemporaryDir dir;
+    const QString path = dir.filePath("Live.xml");
+    QSignalSpy saved(online, &OnlineDocument::liveSaved);
+    QVERIFY(window.documents()->saveAs(online, path));
+    QVERIFY(saved.wait(15000));
+    QVERIFY2(saved.at(0).at(1).toString().isEmpty(), qPrintable(saved.at(0).at(1).toString()));
+
+    Profile::Diagnostics diagnostics;
+    const auto loaded = Profile::loadProfileFile(path, &diagnostics);
+    QVERIFY(loaded && loaded->rts);
+    const Profile::RtsProfile &file = *loaded->rts;
+    QCOMPARE(file.components.size(), 2);
+    for (const Profile::RtsComponent &c : file.components) {
+        const Profile::RtsComponent *drawn = diagram->model()->component(c.instanceName);
+        QVERIFY(drawn && drawn->layout && c.layout);
+        QCOMPARE(c.layout->x, drawn->layout->x);
+        QCOMPARE(c.layout->y, drawn->layout->y);
+    }
+    QCOMPARE(file.dataPortConnectors.size(), 1);
+    QCOMPARE(file.dataPortConnectors.first().connectorId, diagram->model()->connectorIds().first());
+    QCOMPARE(file.dataPortConnectors.first().source.portName, QStringLiteral("ConsoleIn0.out"));
+    window.findChild<QAction *>("menuActionDeactivateAll")->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(diagram->bodyColor("ConsoleIn0") != active, 10000);
+
+    // Reopened offline, the system shows the same positions.
+    QVERIFY(window.openFiles({path}));
+    auto *system = qobject_cast<RtsDocument *>(window.documents()->findByPath(path));
+    QVERIFY(system);
+    const Profile::RtsComponent *reopened = system->model()->component("ConsoleOut0");
+    QVERIFY(reopened && reopened->layout);
+    QCOMPARE(reopened->layout->x, QStringLiteral("520"));
+    QCOMPARE(reopened->layout->y, QStringLiteral("240"));
+    QCOMPARE(system->model()->connectorIds(), diagram->model()->connectorIds());
+
+    // Open System Online shows the saved system's live components where the file puts them.
+    QCOMPARE(window.activeDocument(), static_cast<Document *>(system));
+    window.findChild<QAction *>("actionOpenOnline")->trigger();
+    auto *again = qobject_cast<OnlineDocument *>(window.activeDocument());
+    QVERIFY(again && again != online && again->diagram());
+    QTRY_COMPARE_WITH_TIMEOUT(again->diagram()->model()->componentIds().size(), 2, 15000);
+    const Profile::RtsComponent *placed = again->diagram()->model()->component("ConsoleOut0");
+    QVERIFY(placed && placed->layout);
+    QCOMPARE(placed->layout->x, QStringLiteral("520"));
+    QTRY_COMPARE_WITH_TIMEOUT(again->diagram()->model()->connectorIds().size(), 1, 10000);
+    diagram->disconnectLive(diagram->model()->connectorIds().first());
+    QTRY_COMPARE_WITH_TIMEOUT(diagram->model()->connectorIds().size(), 0, 10000);
 }
 
 QTEST_MAIN(TestOnlineDocks)

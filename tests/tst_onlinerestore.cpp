@@ -1,18 +1,22 @@
 // SPDX-License-Identifier: MIT
 #include "componentproxy.h"
+#include "driftview.h"
 #include "livesystem.h"
 #include "namingbrowser.h"
 #include "onlinesession.h"
 #include "orb.h"
 #include "portconnection.h"
+#include "profileio.h"
 #include "restoredialog.h"
 
+#include <QCheckBox>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTest>
+#include <QTreeWidget>
 
 using namespace SystemEditor;
 
@@ -26,6 +30,8 @@ private slots:
     void showsTheMappingAndRestores();
     void untickedConnectorsAreNotConnected();
     void missingComponentsBlockTheRestore();
+    void createsTheExampleFromNothing();
+    void driftShowsAChangedConfigurationValue();
 
 private:
     Profile::RtsProfile system(const QString &outInstance) const;
@@ -51,7 +57,7 @@ void TestOnlineRestore::initTestCase()
         "-o",
         "manager.naming_formats=rsthost.host_cxt/%n.mgr",
         "-o",
-        "manager.components.precreate=ConsoleIn,ConsoleOut"};
+        "manager.components.precreate=ConsoleIn,ConsoleOut,ConfigSample"};
     QVERIFY2(
         m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
         qPrintable(error));
@@ -156,6 +162,126 @@ void TestOnlineRestore::missingComponentsBlockTheRestore()
     QCOMPARE(dialog.componentTable()->item(1, 2)->text(), QStringLiteral("missing"));
     QVERIFY(!dialog.findChild<QPushButton *>("restoreButton")->isEnabled());
     QVERIFY(dialog.findChild<QLabel *>("summaryLabel")->text().contains("Absent0"));
+}
+
+void TestOnlineRestore::createsTheExampleFromNothing()
+{
+    // A name server and manager of its own, so that nothing of the example runs yet.
+    LiveTest::LiveSystem fresh;
+    QString error;
+    QVERIFY2(fresh.startNameServer(&error), qPrintable(error));
+    const quint16 managerPort = LiveTest::freePort();
+    QVERIFY2(fresh.startProcess(QStringLiteral(RTMANAGER_PATH),
+                                {"-d", "-o",
+                                 QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(managerPort),
+                                 "-o", "corba.nameservers=" + fresh.namingServer(), "-o",
+                                 "naming.formats=newhost.host_cxt/%n.rtc", "-o",
+                                 "manager.naming_formats=newhost.host_cxt/%n.mgr"},
+                                "rtmanager ready", &error),
+             qPrintable(error));
+    Profile::Diagnostics diagnostics;
+    const auto loaded = Profile::loadProfileFile(
+        QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
+        &diagnostics);
+    QVERIFY(loaded && loaded->rts);
+    Deploy::TargetOptions target;
+    target.nameServers = {fresh.namingServer()};
+    OnlineSession session;
+    RestoreDialog dialog(&session, *loaded->rts, target);
+    QSignalSpy planned(&dialog, &RestoreDialog::planned);
+    dialog.plan();
+    QVERIFY(planned.wait(15000));
+    QTableWidget *components = dialog.componentTable();
+    QCOMPARE(components->item(0, RestoreDialog::MappingColumn)->text(), QStringLiteral("missing"));
+    auto *restoreButton = dialog.findChild<QPushButton *>("restoreButton");
+    QVERIFY(!restoreButton->isEnabled());
+
+    // Ticking "create missing" with the manager plans both components as created.
+    const QString manager = QStringLiteral("corbaloc::127.0.0.1:%1").arg(managerPort);
+    dialog.setManagers({manager});
+    dialog.findChild<QCheckBox *>("createCheck")->setChecked(true);
+    QVERIFY(planned.wait(15000));
+    QCOMPARE(components->item(0, RestoreDialog::MappingColumn)->text(), QStringLiteral("create"));
+    QCOMPARE(components->item(1, RestoreDialog::MappingColumn)->text(), QStringLiteral("create"));
+    QVERIFY(components->item(0, RestoreDialog::ManagerColumn)->flags() & Qt::ItemIsEditable);
+    QVERIFY(restoreButton->isEnabled());
+
+    QTest::mouseClick(dialog.findChild<QPushButton *>("dryRunButton"), Qt::LeftButton);
+    QVERIFY(!dialog.progressList()
+                 ->findItems("component ConsoleIn0 create", Qt::MatchContains)
+                 .isEmpty());
+
+    QSignalSpy restored(&dialog, &RestoreDialog::restored);
+    QTest::mouseClick(restoreButton, Qt::LeftButton);
+    QVERIFY(restored.wait(20000));
+    QVERIFY2(restored.at(0).at(0).toBool(), qPrintable(dialog.report().toText()));
+    QVERIFY(!dialog.progressList()->findItems("create ConsoleIn0", Qt::MatchContains).isEmpty());
+    for (const char *instance : {"ConsoleIn0", "ConsoleOut0"}) {
+        const auto path = Corba::RtPath::parse(
+            QStringLiteral("/%1/newhost.host_cxt/%2.rtc").arg(fresh.namingServer(), instance));
+        const Corba::ComponentProxy proxy(Corba::NamingBrowser::resolve(*path), path->toString());
+        QCOMPARE(proxy.profile().instanceName, QString::fromLatin1(instance));
+    }
+    if (!qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT").isEmpty()) {
+        dialog.resize(1000, 640);
+        dialog.grab().save(qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT") + ".restore.png");
+    }
+
+    // Planned again, the created components are found running.
+    dialog.setCreateMissing(true, manager);
+    QVERIFY(planned.wait(15000));
+    QCOMPARE(components->item(0, RestoreDialog::MappingColumn)->text(), QStringLiteral("existing"));
+}
+
+void TestOnlineRestore::driftShowsAChangedConfigurationValue()
+{
+    Profile::RtsProfile profile = system("ConsoleOut0");
+    const Corba::ComponentProxy in = component("ConsoleIn0");
+    OnlineSession session;
+    DriftView view(&session, profile, options(), QStringLiteral("system.xml"));
+    QSignalSpy refreshed(&view, &DriftView::refreshed);
+    view.refresh();
+    QVERIFY(refreshed.wait(15000));
+    // Not connected live: the saved connector is missing.
+    bool missingConnector = false;
+    for (const Deploy::DriftItem &item : view.items())
+        missingConnector = missingConnector
+            || (item.kind == Deploy::DriftItem::Kind::MissingConnector
+                && item.subject == QStringLiteral("restored-connector"));
+    QVERIFY(missingConnector);
+    QVERIFY(view.tree()->topLevelItemCount() > 0);
+
+    // The file holds the live value of a parameter; then the live value changes.
+    const Corba::ComponentProxy sample = component("ConfigSample0");
+    const QString before = sample.parameter("default", "int_param0");
+    Profile::RtsComponent saved;
+    saved.id = QStringLiteral("RTC:AIST:example:ConfigSample:1.0");
+    saved.instanceName = QStringLiteral("ConfigSample0");
+    Profile::RtsConfigurationSet set;
+    set.id = QStringLiteral("default");
+    Profile::RtsConfigurationData data;
+    data.name = QStringLiteral("int_param0");
+    data.data = before;
+    set.data.append(data);
+    saved.configurationSets.append(set);
+    profile.components.append(saved);
+    DriftView changed(&session, profile, options(), QStringLiteral("system.xml"));
+    QSignalSpy changedRefreshed(&changed, &DriftView::refreshed);
+    changed.refresh();
+    QVERIFY(changedRefreshed.wait(15000));
+    const QString subject = QStringLiteral("ConfigSample0.default.int_param0");
+    QVERIFY(changed.tree()->findItems(subject, Qt::MatchRecursive).isEmpty());
+
+    const QString after = before == QStringLiteral("5") ? QStringLiteral("6") : QStringLiteral("5");
+    sample.setParameter("default", "int_param0", after);
+    QTest::mouseClick(changed.findChild<QPushButton *>("refreshButton"), Qt::LeftButton);
+    QVERIFY(changedRefreshed.wait(15000));
+    const auto found = changed.tree()->findItems(subject, Qt::MatchRecursive);
+    QCOMPARE(found.size(), 1);
+    QCOMPARE(found.first()->text(1), before);
+    QCOMPARE(found.first()->text(2), after);
+    QVERIFY(changed.summary().contains("difference"));
+    sample.setParameter("default", "int_param0", before);
 }
 
 QTEST_MAIN(TestOnlineRestore)

@@ -119,7 +119,7 @@ QString OnlineDiagram::hostOf(const Live &live) const
 void OnlineDiagram::addComponent(const QString &path, const QString &ior, const QPointF &position)
 {
     const Corba::ComponentProxy proxy(ior, path);
-    Live probe {path, ior, {}, {}};
+    Live probe {path, ior, {}, {}, true};
     m_session->submit(
         hostOf(probe), [proxy] { return QVariant::fromValue(proxy.profile()); }, this,
         [this, path, ior, position](const OnlineResult &result) {
@@ -138,7 +138,7 @@ void OnlineDiagram::addComponent(const QString &path, const QString &ior, const 
             location.direction = QStringLiteral("RIGHT");
             record.component.layout = location;
             m_live.insert(info.instanceName,
-                          {path, ior, Corba::LifeCycleState::Unknown, info.ports});
+                          {path, ior, Corba::LifeCycleState::Unknown, info.ports, true});
             m_model->addComponent(record.component, record.rtc);
             emit componentAdded(info.instanceName);
             poll();
@@ -191,6 +191,7 @@ void OnlineDiagram::poll()
                     // error.
                     const auto polled = result.value.value<LiveComponentPoll>();
                     live->state = result.ok ? polled.state : Corba::LifeCycleState::Unknown;
+                    live->reachable = result.ok;
                     if (result.ok)
                         live->ports = polled.ports;
                 }
@@ -204,7 +205,23 @@ void OnlineDiagram::finishRound()
 {
     syncConnectors();
     applyColours();
+    const QStringList unreachable = unreachableComponents();
+    if (!unreachable.isEmpty())
+        m_status->setText(tr("Unreachable: %1").arg(unreachable.join(QStringLiteral(", "))));
+    else if (m_status->text().startsWith(tr("Unreachable: ")))
+        m_status->clear();
     emit polled();
+}
+
+QStringList OnlineDiagram::unreachableComponents() const
+{
+    QStringList names;
+    for (auto it = m_live.cbegin(); it != m_live.cend(); ++it) {
+        if (!it->reachable)
+            names.append(it.key());
+    }
+    names.sort();
+    return names;
 }
 
 void OnlineDiagram::syncConnectors()

@@ -4,6 +4,7 @@
 #include "connectordialog.h"
 #include "connectorsettings.h"
 #include "corbatypes.h"
+#include "rtsprofile.h"
 
 #include <functional>
 #include <optional>
@@ -21,6 +22,7 @@ class QUndoStack;
 namespace SystemEditor {
 
 class OnlineSession;
+struct OnlineResult;
 class SystemModel;
 class SystemScene;
 struct ConnectionCheck;
@@ -60,6 +62,9 @@ public:
     /// The body colour the canvas currently draws for the component.
     QColor bodyColor(const QString &instanceName) const;
 
+    /// The components whose last poll went unanswered (drawn black), sorted.
+    QStringList unreachableComponents() const;
+
     void setPollInterval(int milliseconds);
     int pollInterval() const;
     /// Starts one poll round now (skipped while the previous one is still running).
@@ -81,6 +86,18 @@ public:
     /// Disconnects the live connector `connectorId`.
     void disconnectLive(const QString &connectorId);
 
+    /// The rtshell paths of the live components on the diagram, by instance name.
+    QHash<QString, QString> livePaths() const;
+    /**
+     * Saves the live components on the diagram as an RTS profile at `path` (format by extension):
+     * rtcryo reads them off the GUI thread (ids, paths, every configuration set, active set,
+     * owned contexts, ports, connectors minus IOR keys), then the diagram adds where it draws
+     * them (`rtsExt:Location`). liveSystemSaved() follows.
+     */
+    void saveLiveSystem(const QString &path);
+    /// `saved` with the location the diagram draws each of its components at.
+    Profile::RtsProfile withDiagramLayout(Profile::RtsProfile saved) const;
+
 signals:
     void componentAdded(const QString &instanceName);
     /// A poll round finished and states and connectors are up to date.
@@ -88,6 +105,9 @@ signals:
     void actionFinished(const QString &instanceName, const QString &error);
     /// A live connect or disconnect finished; `error` is empty on success.
     void connectionFinished(const QString &error);
+    /// saveLiveSystem() finished: `error` is empty when the file was written; `warnings` name
+    /// components that could not be read and were left out.
+    void liveSystemSaved(const QString &path, const QString &error, const QStringList &warnings);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -99,6 +119,7 @@ private:
         QString ior;
         Corba::LifeCycleState state = Corba::LifeCycleState::Unknown;
         std::vector<Corba::PortInfo> ports;
+        bool reachable = true; ///< the last poll was answered
     };
 
     void buildUi();
@@ -111,6 +132,7 @@ private:
     void requestConnection(const ConnectionCheck &check);
     std::optional<Corba::PortInfo> livePort(const QString &portName) const;
     void submitConnection(const QString &host, const std::function<void()> &call);
+    void writeLiveSystem(const QString &path, const OnlineResult &result);
 
     OnlineSession *m_session;
     QUndoStack *m_undoStack;

@@ -31,6 +31,10 @@ public:
     void submit(const QString &host, const OnlineService::Call &call, QObject *context,
                 const Callback &done);
 
+    /// The worker of the deployment engine's calls (restore, cryo, drift): they talk to many
+    /// hosts, so they share one worker of their own.
+    static QString deploymentHost() { return QStringLiteral("deployment"); }
+
     /// Hosts whose last call failed because they did not answer.
     QSet<QString> unreachableHosts() const { return m_unreachable; }
     bool isReachable(const QString &host) const { return !m_unreachable.contains(host); }

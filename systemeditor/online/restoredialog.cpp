@@ -4,10 +4,14 @@
 #include "onlinesession.h"
 #include "restorer.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPointer>
 #include <QPushButton>
@@ -21,9 +25,6 @@ Q_DECLARE_METATYPE(Deploy::DeployReport)
 namespace SystemEditor {
 
 namespace {
-
-// The deployment engine talks to many hosts; its calls share one worker of their own.
-const QString DeployHost = QStringLiteral("deployment");
 
 QTableWidgetItem *checkItem(bool checked)
 {
@@ -39,6 +40,33 @@ QTableWidgetItem *textItem(const QString &text)
     item->setFlags(Qt::ItemIsEnabled);
     item->setToolTip(text);
     return item;
+}
+
+const QString ManagerAddressKey = QStringLiteral("manager_address=");
+
+// `Type?instance_name=X&manager_address=host:port` → `host:port`.
+QString managerAddress(const QString &createArgument)
+{
+    for (const QString &option :
+         createArgument.section(QLatin1Char('?'), 1).split(QLatin1Char('&')))
+        if (option.startsWith(ManagerAddressKey))
+            return option.mid(ManagerAddressKey.size());
+    return {};
+}
+
+// The create argument with its `manager_address` option replaced (removed when `address` is
+// empty): the master manager creates the component in the manager at that address.
+QString withManagerAddress(const QString &createArgument, const QString &address)
+{
+    const QString type = createArgument.section(QLatin1Char('?'), 0, 0);
+    QStringList options;
+    for (const QString &option :
+         createArgument.section(QLatin1Char('?'), 1).split(QLatin1Char('&'), Qt::SkipEmptyParts))
+        if (!option.startsWith(ManagerAddressKey))
+            options.append(option);
+    if (!address.trimmed().isEmpty())
+        options.append(ManagerAddressKey + address.trimmed());
+    return options.isEmpty() ? type : type + QLatin1Char('?') + options.join(QLatin1Char('&'));
 }
 
 } // namespace
@@ -63,10 +91,11 @@ RestoreDialog::~RestoreDialog()
 
 void RestoreDialog::buildUi()
 {
-    m_components = new QTableWidget(0, 5, this);
+    m_components = new QTableWidget(0, 7, this);
     m_components->setObjectName(QStringLiteral("componentTable"));
-    m_components->setHorizontalHeaderLabels(
-        {tr("Component"), tr("Type"), tr("Mapping"), tr("Live path / note"), tr("Activate")});
+    m_components->setHorizontalHeaderLabels({tr("Component"), tr("Type"), tr("Mapping"),
+                                             tr("Live path / note"), tr("Target manager"),
+                                             tr("Restore"), tr("Activate")});
     m_connectors = new QTableWidget(0, 4, this);
     m_connectors->setObjectName(QStringLiteral("connectorTable"));
     m_connectors->setHorizontalHeaderLabels({tr("Connector"), tr("From"), tr("To"), tr("Connect")});
@@ -75,12 +104,20 @@ void RestoreDialog::buildUi()
         table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
         table->horizontalHeader()->setStretchLastSection(true);
     }
+    // The live path is the long text; the check boxes keep their width.
+    m_components->horizontalHeader()->setStretchLastSection(false);
+    m_components->horizontalHeader()->setSectionResizeMode(PathColumn, QHeaderView::Stretch);
     m_progress = new QListWidget(this);
     m_progress->setObjectName(QStringLiteral("progressList"));
     m_summary = new QLabel(tr("Mapping the live system…"), this);
     m_summary->setObjectName(QStringLiteral("summaryLabel"));
     m_summary->setWordWrap(true);
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    m_dryRun = buttons->addButton(tr("Dry Run"), QDialogButtonBox::ActionRole);
+    m_dryRun->setObjectName(QStringLiteral("dryRunButton"));
+    m_dryRun->setEnabled(false);
+    connect(m_dryRun, &QPushButton::clicked, this, &RestoreDialog::dryRun);
     m_restore = buttons->addButton(tr("Restore"), QDialogButtonBox::AcceptRole);
     m_restore->setObjectName(QStringLiteral("restoreButton"));
     m_restore->setEnabled(false);
@@ -90,15 +127,65 @@ void RestoreDialog::buildUi()
         reject();
     });
 
+    m_create = new QCheckBox(tr("Create missing components through a manager:"), this);
+    m_create->setObjectName(QStringLiteral("createCheck"));
+    m_create->setChecked(m_options.create);
+    m_manager = new QComboBox(this);
+    m_manager->setObjectName(QStringLiteral("managerCombo"));
+    m_manager->setEditable(true);
+    m_manager->setMinimumContentsLength(40);
+    m_manager->setEditText(m_options.manager);
+    m_manager->setToolTip(tr("An rtshell path (/host:2809/host.host_cxt/manager.mgr) or a "
+                             "corbaloc (corbaloc::host:2810)"));
+    connect(m_create, &QCheckBox::toggled, this, &RestoreDialog::createChanged);
+    connect(m_manager->lineEdit(), &QLineEdit::editingFinished, this, [this] {
+        if (m_create->isChecked())
+            createChanged();
+    });
+    connect(m_manager, &QComboBox::activated, this, [this] {
+        if (m_create->isChecked())
+            createChanged();
+    });
+    auto *createRow = new QHBoxLayout;
+    createRow->addWidget(m_create);
+    createRow->addWidget(m_manager, 1);
+
     auto *splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_components);
     splitter->addWidget(m_connectors);
     splitter->addWidget(m_progress);
     auto *layout = new QVBoxLayout(this);
+    layout->addLayout(createRow);
     layout->addWidget(splitter, 1);
     layout->addWidget(m_summary);
     layout->addWidget(buttons);
-    resize(820, 560);
+    resize(980, 620);
+}
+
+void RestoreDialog::setManagers(const QStringList &managers)
+{
+    const QString current = m_manager->currentText();
+    m_manager->clear();
+    m_manager->addItems(managers);
+    m_manager->setEditText(current.isEmpty() ? managers.value(0) : current);
+}
+
+void RestoreDialog::setCreateMissing(bool create, const QString &manager)
+{
+    const QSignalBlocker blocker(m_create);
+    m_create->setChecked(create);
+    m_manager->setEditText(manager);
+    createChanged();
+}
+
+void RestoreDialog::createChanged()
+{
+    m_options.create = m_create->isChecked();
+    m_options.manager = m_manager->currentText().trimmed();
+    m_restore->setEnabled(false);
+    m_dryRun->setEnabled(false);
+    m_summary->setText(tr("Mapping the live system…"));
+    plan();
 }
 
 void RestoreDialog::plan()
@@ -106,7 +193,7 @@ void RestoreDialog::plan()
     const Profile::RtsProfile profile = m_profile;
     const Deploy::TargetOptions options = m_options;
     m_session->submit(
-        DeployHost,
+        OnlineSession::deploymentHost(),
         [profile, options] { return QVariant::fromValue(Deploy::planRestore(profile, options)); },
         this,
         [this](const OnlineResult &result) {
@@ -126,11 +213,21 @@ void RestoreDialog::showPlan()
     for (const Deploy::ComponentMapping &c : m_plan.components) {
         const int row = m_components->rowCount();
         m_components->insertRow(row);
-        m_components->setItem(row, 0, textItem(c.instanceName));
-        m_components->setItem(row, 1, textItem(c.typeName));
-        m_components->setItem(row, 2, textItem(Deploy::mappingKindName(c.kind)));
-        m_components->setItem(row, 3, textItem(c.message.isEmpty() ? c.path : c.message));
-        m_components->setItem(row, 4, checkItem(c.activate));
+        m_components->setItem(row, NameColumn, textItem(c.instanceName));
+        m_components->setItem(row, TypeColumn, textItem(c.typeName));
+        m_components->setItem(row, MappingColumn, textItem(Deploy::mappingKindName(c.kind)));
+        m_components->setItem(row, PathColumn, textItem(c.message.isEmpty() ? c.path : c.message));
+        // Only a component still to be created has a manager to choose.
+        QTableWidgetItem *manager = textItem(managerAddress(c.createArgument));
+        if (c.kind == Deploy::MappingKind::Create) {
+            manager->setFlags(Qt::ItemIsEnabled | Qt::ItemIsEditable);
+            manager->setToolTip(
+                tr("host:port of the manager that runs it; empty: %1").arg(m_options.manager));
+        }
+        m_components->setItem(row, ManagerColumn, manager);
+        m_components->setItem(row, RestoreColumn,
+                              checkItem(c.kind != Deploy::MappingKind::Missing || c.required));
+        m_components->setItem(row, ActivateColumn, checkItem(c.activate));
     }
     m_connectors->setRowCount(0);
     for (const Deploy::ConnectorPlan &c : m_plan.connectors) {
@@ -145,18 +242,57 @@ void RestoreDialog::showPlan()
     const auto missing = m_plan.missingRequired();
     for (const Deploy::ComponentMapping &c : missing)
         notes.append(tr("%1 is required but not found").arg(c.instanceName));
+    if (!missing.isEmpty() && !m_create->isChecked())
+        notes.append(tr("Tick \"Create missing components\" to create them through a manager."));
+    bool creates = false;
+    for (const Deploy::ComponentMapping &c : std::as_const(m_plan.components))
+        creates = creates || c.kind == Deploy::MappingKind::Create;
+    const bool noManager = creates && m_options.manager.isEmpty();
+    if (noManager)
+        notes.append(tr("Choose the manager that creates the missing components."));
     m_summary->setText(notes.isEmpty() ? tr("Ready to restore.") : notes.join(QLatin1Char('\n')));
-    m_restore->setEnabled(missing.isEmpty());
+    m_restore->setEnabled(missing.isEmpty() && !noManager);
+    m_dryRun->setEnabled(true);
 }
 
 Deploy::RestorePlan RestoreDialog::chosenPlan() const
 {
     Deploy::RestorePlan plan = m_plan;
-    for (int row = 0; row < plan.components.size(); ++row)
-        plan.components[row].activate = m_components->item(row, 4)->checkState() == Qt::Checked;
-    for (int row = 0; row < plan.connectors.size(); ++row)
-        plan.connectors[row].connect = m_connectors->item(row, 3)->checkState() == Qt::Checked;
+    QStringList skipped;
+    for (int row = 0; row < plan.components.size(); ++row) {
+        Deploy::ComponentMapping &c = plan.components[row];
+        c.activate = m_components->item(row, ActivateColumn)->checkState() == Qt::Checked;
+        if (c.kind == Deploy::MappingKind::Create)
+            c.createArgument = withManagerAddress(c.createArgument,
+                                                  m_components->item(row, ManagerColumn)->text());
+        if (m_components->item(row, RestoreColumn)->checkState() == Qt::Unchecked) {
+            // Left out on purpose: neither created nor required, and nothing connects to it.
+            c.kind = Deploy::MappingKind::Missing;
+            c.required = false;
+            c.message = tr("not selected");
+            skipped.append(c.instanceName);
+        }
+    }
+    for (int row = 0; row < plan.connectors.size(); ++row) {
+        Deploy::ConnectorPlan &c = plan.connectors[row];
+        c.connect = m_connectors->item(row, 3)->checkState() == Qt::Checked
+            && !skipped.contains(c.sourceInstance) && !skipped.contains(c.targetInstance);
+    }
     return plan;
+}
+
+void RestoreDialog::dryRun()
+{
+    m_progress->clear();
+    const Deploy::RestorePlan plan = chosenPlan();
+    for (const QString &line : plan.toText().split(QLatin1Char('\n'), Qt::SkipEmptyParts))
+        new QListWidgetItem(tr("planned: %1").arg(line), m_progress);
+    for (const Deploy::ConnectorPlan &c : plan.connectors) {
+        if (!c.connect)
+            new QListWidgetItem(tr("skipped: connect %1 (not selected)").arg(c.connectorId),
+                                m_progress);
+    }
+    m_summary->setText(tr("Dry run: nothing was changed."));
 }
 
 void RestoreDialog::restore()
@@ -183,7 +319,7 @@ void RestoreDialog::restore()
     };
     m_summary->setText(tr("Restoring…"));
     m_session->submit(
-        DeployHost,
+        OnlineSession::deploymentHost(),
         [profile, plan, options, control, cancel] {
             return QVariant::fromValue(Deploy::restoreSystem(profile, plan, options, control));
         },
@@ -196,12 +332,27 @@ void RestoreDialog::restore()
             } else {
                 m_report = result.value.value<Deploy::DeployReport>();
             }
-            m_summary->setText(
-                m_report.ok ? tr("Restored.")
-                            : tr("Restore failed and was rolled back: %1").arg(m_report.error));
+            showReport();
             m_restore->setEnabled(true);
             emit restored(m_report.ok);
         });
+}
+
+void RestoreDialog::showReport()
+{
+    if (m_report.ok) {
+        m_summary->setText(tr("Restored."));
+        return;
+    }
+    QStringList lines {tr("Restore failed: %1").arg(m_report.error)};
+    for (const Deploy::DeployStep &step : m_report.stepsWith(Deploy::StepStatus::Failed))
+        lines.append(tr("Failed: %1 %2: %3").arg(step.action, step.subject, step.message));
+    QStringList undone;
+    for (const Deploy::DeployStep &step : m_report.stepsWith(Deploy::StepStatus::RolledBack))
+        undone.append(QStringLiteral("%1 %2").arg(step.action, step.subject));
+    lines.append(undone.isEmpty() ? tr("Nothing had to be rolled back.")
+                                  : tr("Rolled back: %1").arg(undone.join(QStringLiteral(", "))));
+    m_summary->setText(lines.join(QLatin1Char('\n')));
 }
 
 void RestoreDialog::cancelRestore()

@@ -11,6 +11,8 @@
 #include <atomic>
 #include <memory>
 
+class QCheckBox;
+class QComboBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
@@ -23,9 +25,12 @@ class OnlineSession;
 /**
  * The Restore dialog of the System Editor: plans the restore of a saved system with the
  * deployment engine (off the GUI thread), shows the mapping (per component: found / create /
- * missing, live path, activate; per connector: connect) for the user to adjust, then restores
- * with a progress list and the engine's final report. A failed restore is rolled back by the
- * engine; the report says what failed and why.
+ * missing, live path, target manager, restore, activate; per connector: connect) for the user
+ * to adjust, shows the chosen plan as a dry run, then restores with a progress list and the
+ * engine's final report. "Create missing components through a manager" plans the components
+ * that are not running as created through the chosen manager (the engine's create path). A
+ * failed restore is rolled back by the engine; the report says what failed and what was rolled
+ * back.
  */
 class RestoreDialog : public QDialog
 {
@@ -36,8 +41,26 @@ public:
                   Deploy::TargetOptions options, QWidget *parent = nullptr);
     ~RestoreDialog() override;
 
+    /// Columns of componentTable().
+    enum ComponentColumn {
+        NameColumn,
+        TypeColumn,
+        MappingColumn,
+        PathColumn,
+        ManagerColumn, ///< `manager_address` a created component is placed at (editable)
+        RestoreColumn,
+        ActivateColumn
+    };
+
     /// Maps the live system (asynchronously; planned() follows).
     void plan();
+    /// Offers `managers` (rtshell paths or corbalocs) for creating missing components.
+    void setManagers(const QStringList &managers);
+    /// Plans missing components as created through `manager` (or not, with `create` false) and
+    /// maps again.
+    void setCreateMissing(bool create, const QString &manager);
+    /// Lists what the restore would do with the choices made, without doing it.
+    void dryRun();
     const Deploy::RestorePlan &currentPlan() const { return m_plan; }
     QTableWidget *componentTable() const { return m_components; }
     QTableWidget *connectorTable() const { return m_connectors; }
@@ -57,6 +80,8 @@ private:
     void showPlan();
     Deploy::RestorePlan chosenPlan() const;
     void addProgress(const Deploy::DeployStep &step);
+    void showReport();
+    void createChanged();
 
     OnlineSession *m_session;
     Profile::RtsProfile m_profile;
@@ -69,6 +94,9 @@ private:
     QListWidget *m_progress = nullptr;
     QLabel *m_summary = nullptr;
     QPushButton *m_restore = nullptr;
+    QPushButton *m_dryRun = nullptr;
+    QCheckBox *m_create = nullptr;
+    QComboBox *m_manager = nullptr;
 };
 
 } // namespace SystemEditor
