@@ -10,7 +10,9 @@
 #include "problemspanel.h"
 #include "recentfiles.h"
 #include "rtsdocument.h"
+#include "rtseditor.h"
 #include "rtstudioresources.h"
+#include "systemcanvas.h"
 
 #include <QActionGroup>
 #include <QCloseEvent>
@@ -262,8 +264,21 @@ void MainWindow::createMenus()
     file->addAction(action("actionQuit"));
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    edit->setObjectName(QStringLiteral("menuEdit"));
     edit->addAction(action("actionUndo"));
     edit->addAction(action("actionRedo"));
+    // The open system's canvas edits (copy, paste, group as composite, …) follow undo/redo;
+    // they stay the canvas's actions, so their enabled state follows its selection.
+    connect(edit, &QMenu::aboutToShow, this, [this, edit, action] {
+        edit->clear();
+        edit->addAction(action("actionUndo"));
+        edit->addAction(action("actionRedo"));
+        if (const auto *editor
+            = qobject_cast<RtsEditor *>(currentPerspective()->editor(activeDocument()))) {
+            edit->addSeparator();
+            edit->addActions(editor->canvas()->editActions());
+        }
+    });
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addActions(m_perspectiveActions->actions());

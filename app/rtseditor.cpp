@@ -18,6 +18,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QToolBar>
 #include <QTreeView>
@@ -49,6 +50,16 @@ QStringList bundledExampleSources()
         break;
     }
     return sources;
+}
+
+/// Tabs that show their whole titles side by side instead of squeezing or eliding them.
+void makeReadable(QTabWidget *tabs)
+{
+    tabs->setDocumentMode(true);
+    tabs->setUsesScrollButtons(false);
+    tabs->tabBar()->setElideMode(Qt::ElideNone);
+    tabs->tabBar()->setExpanding(false);
+    tabs->setMinimumWidth(tabs->tabBar()->sizeHint().width());
 }
 
 } // namespace
@@ -97,13 +108,21 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     centreLayout->addWidget(m_canvas, 1);
     centreLayout->addWidget(m_status);
 
-    m_splitter->addWidget(buildLeftSide());
+    // The canvas gets the room: the window's left edge belongs to the Name Service dock, so
+    // the repository, outline and properties share one column on the right.
+    auto *side = new QSplitter(Qt::Vertical);
+    side->setObjectName(QStringLiteral("systemEditorSide"));
+    side->setChildrenCollapsible(false);
+    side->addWidget(buildBrowserTabs());
+    side->addWidget(buildDetailTabs());
+    side->setStretchFactor(0, 2);
+    side->setStretchFactor(1, 3);
     m_splitter->addWidget(centre);
-    m_splitter->addWidget(buildRightSide());
+    m_splitter->addWidget(side);
+    m_splitter->setChildrenCollapsible(false);
     m_splitter->setStretchFactor(0, 1);
-    m_splitter->setStretchFactor(1, 4);
-    m_splitter->setStretchFactor(2, 1);
-    m_splitter->setSizes({240, 760, 320});
+    m_splitter->setStretchFactor(1, 0);
+    m_splitter->setSizes({900, 300});
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -131,7 +150,7 @@ QWidget *RtsEditor::buildToolBar()
     return toolBar;
 }
 
-QWidget *RtsEditor::buildLeftSide()
+QWidget *RtsEditor::buildBrowserTabs()
 {
     m_outlineView->setModel(m_outlineModel);
     m_outlineView->setUniformRowHeights(true);
@@ -143,10 +162,11 @@ QWidget *RtsEditor::buildLeftSide()
     tabs->setObjectName(QStringLiteral("systemEditorLeftTabs"));
     tabs->addTab(m_repositoryView, tr("Repository"));
     tabs->addTab(m_outlineView, tr("Outline"));
+    makeReadable(tabs);
     return tabs;
 }
 
-QWidget *RtsEditor::buildRightSide()
+QWidget *RtsEditor::buildDetailTabs()
 {
     auto *systemPage = new QWidget;
     auto *systemLayout = new QVBoxLayout(systemPage);
@@ -160,6 +180,7 @@ QWidget *RtsEditor::buildRightSide()
     tabs->setObjectName(QStringLiteral("systemEditorRightTabs"));
     tabs->addTab(m_properties, tr("Properties"));
     tabs->addTab(scroll, tr("System"));
+    makeReadable(tabs);
     return tabs;
 }
 

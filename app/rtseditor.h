@@ -22,10 +22,11 @@ class SystemInfoForm;
 class SystemOutlineModel;
 
 /**
- * The System Editor's editor of one system: the canvas in the middle; the repository of RTC
- * profiles (drag one onto the canvas to add an instance) and the outline on the left; the
- * properties of the selection and the system info on the right. Everything listens to the
- * document's SystemModel; edits go through the document's undo stack.
+ * The System Editor's editor of one system: the canvas takes most of the width; one column on
+ * the right holds the repository of RTC profiles (drag one onto the canvas to add an instance)
+ * and the outline above the properties of the selection and the system info, their tab bars
+ * showing whole titles. Everything listens to the document's SystemModel; edits go through the
+ * document's undo stack.
  */
 class RtsEditor : public QWidget
 {
@@ -53,8 +54,8 @@ public:
 
 private:
     QWidget *buildToolBar();
-    QWidget *buildLeftSide();
-    QWidget *buildRightSide();
+    QWidget *buildBrowserTabs();
+    QWidget *buildDetailTabs();
 
     RtsDocument *m_document;
     SystemOutlineModel *m_outlineModel;

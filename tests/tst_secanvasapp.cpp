@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The System Editor in the application: the system editor tab shows the canvas, repository and
 // properties over the document's model and undo stack; `rtstudio --export-diagram` renders a
-// system headless with exit code 0, and fails with 1 and a message.
+// system headless with exit code 0, and fails with 1 and a message. The canvas gets most of the
+// editor's width and the side tabs show whole titles; the main window's Edit menu offers the
+// canvas's selection edits (Group as Composite, Decompose, …).
 #include "documentloader.h"
+#include "mainwindow.h"
 #include "propertiespanel.h"
 #include "repositoryview.h"
 #include "rtcrepository.h"
@@ -12,9 +15,13 @@
 #include "systemmodel.h"
 #include "systemscene.h"
 
+#include <QAction>
 #include <QFile>
+#include <QMenu>
 #include <QProcess>
 #include <QSettings>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -28,6 +35,8 @@ class TestSeCanvasApp : public QObject
 private slots:
     void initTestCase();
     void editorShowsCanvasOverTheDocument();
+    void canvasGetsTheRoomAndTabsShowTitles();
+    void editMenuOffersCanvasActions();
     void repositoryRemembersItsSources();
     void exportFromCommandLine_data();
     void exportFromCommandLine();
@@ -77,6 +86,95 @@ void TestSeCanvasApp::editorShowsCanvasOverTheDocument()
     QVERIFY(!document->isModified());
     QCOMPARE(scene->componentItemCount(), 3);
     QCOMPARE(editor.repositoryView()->repository(), RtsEditor::sharedRepository());
+}
+
+void TestSeCanvasApp::canvasGetsTheRoomAndTabsShowTitles()
+{
+    RtsDocument document(Profile::RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("S"),
+                                                        QStringLiteral("1")));
+    RtsEditor editor(&document);
+    editor.resize(1400, 800);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    // The repository/outline and properties/system tabs share one column beside the canvas.
+    QVERIFY2(editor.canvas()->width() > editor.width() * 3 / 5,
+             qPrintable(QString::number(editor.canvas()->width())));
+    for (const char *name : {"systemEditorLeftTabs", "systemEditorRightTabs"}) {
+        const auto *tabs = editor.findChild<QTabWidget *>(QLatin1String(name));
+        QVERIFY(tabs);
+        QVERIFY(tabs->mapTo(&editor, QPoint()).x() > editor.canvas()->width() / 2);
+        const QTabBar *bar = tabs->tabBar();
+        for (int i = 0; i < bar->count(); ++i) {
+            const int needed = bar->fontMetrics().horizontalAdvance(bar->tabText(i));
+            QVERIFY2(bar->tabRect(i).width() > needed, qPrintable(bar->tabText(i)));
+            QVERIFY(bar->rect().contains(bar->tabRect(i)));
+        }
+    }
+}
+
+namespace {
+
+/// The Edit menu's actions as it shows them, by object name.
+QHash<QString, QAction *> shownEditActions(QMenu *edit)
+{
+    edit->popup(QPoint(0, 0));
+    QHash<QString, QAction *> shown;
+    for (QAction *action : edit->actions()) {
+        if (!action->objectName().isEmpty())
+            shown.insert(action->objectName(), action);
+    }
+    edit->hide();
+    return shown;
+}
+
+} // namespace
+
+void TestSeCanvasApp::editMenuOffersCanvasActions()
+{
+    MainWindow window;
+    auto *edit = window.findChild<QMenu *>(QStringLiteral("menuEdit"));
+    QVERIFY(edit);
+    QVERIFY(!shownEditActions(edit).contains(QStringLiteral("actionGroupComposite")));
+
+    QVERIFY(window.openFiles({QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/secanvas/system.xml")}));
+    auto *document = qobject_cast<RtsDocument *>(window.activeDocument());
+    QVERIFY(document);
+    auto *editor = window.findChild<RtsEditor *>();
+    QVERIFY(editor);
+    SystemEditor::SystemCanvas *canvas = editor->canvas();
+    canvas->setCompositeEditor([](const SystemEditor::SystemModel &, const QStringList &) {
+        return std::optional<SystemEditor::CompositeDialog::Choice>(
+            {QStringLiteral("Grouping"), {}});
+    });
+
+    QHash<QString, QAction *> shown = shownEditActions(edit);
+    QVERIFY(shown.contains(QStringLiteral("actionUndo")));
+    QAction *group = shown.value(QStringLiteral("actionGroupComposite"));
+    QAction *decompose = shown.value(QStringLiteral("actionDecompose"));
+    QVERIFY(group && decompose && shown.contains(QStringLiteral("actionCopy")));
+    QVERIFY(!group->isEnabled()); // nothing selected
+    QVERIFY(!decompose->isEnabled());
+
+    const QStringList before = document->model()->componentIds();
+    canvas->scene()->selectComponents({QStringLiteral("Filter0"), QStringLiteral("Sink0")});
+    QVERIFY(group->isEnabled());
+    group->trigger();
+    QCOMPARE(document->model()->componentIds().size(), before.size() + 1);
+    QCOMPARE(document->undoStack()->count(), 1);
+
+    // Select the new composite and dissolve it through the menu.
+    QStringList composites = document->model()->componentIds();
+    for (const QString &name : before)
+        composites.removeOne(name);
+    canvas->scene()->selectComponents(composites);
+    shown = shownEditActions(edit);
+    QVERIFY(shown.value(QStringLiteral("actionDecompose"))->isEnabled());
+    shown.value(QStringLiteral("actionDecompose"))->trigger();
+    QCOMPARE(document->model()->componentIds(), before);
+    document->undoStack()->undo();
+    document->undoStack()->undo();
+    QCOMPARE(document->model()->componentIds(), before);
+    QVERIFY(!document->isModified());
 }
 
 void TestSeCanvasApp::repositoryRemembersItsSources()
