@@ -225,7 +225,10 @@ std::optional<ConnectorInfo> SystemModel::connector(const QString &connectorId) 
     info.source = {c->source.instanceName, c->source.portName};
     info.target = {c->target.instanceName, c->target.portName};
     if (const std::optional<QString> text = rtsPropertyValue(c->properties, BendPointProperty))
-        info.bendPoints = bendPointsFromText(*text).value_or(QList<QPointF>());
+    {
+        info.bendPointEntries = bendPointEntriesFromText(*text).value_or(QMap<int, QPointF>());
+        info.bendPoints = info.bendPointEntries.values();
+    }
     return info;
 }
 

@@ -6,6 +6,7 @@
 #include "systemprofileinfo.h"
 
 #include <QHash>
+#include <QMap>
 #include <QObject>
 #include <QPointF>
 #include <QSizeF>
@@ -104,14 +105,24 @@ struct ConnectorInfo
     ConnectorEnd source;
     ConnectorEnd target;
     QList<QPointF> bendPoints; ///< from the `BEND_POINT` property; empty = route freely
+    /// The `BEND_POINT` entries by key: RT System Editor's route segment index (0 leaves the
+    /// source port) → a point that segment passes through. See savedRouteCorners().
+    QMap<int, QPointF> bendPointEntries;
 
     bool operator==(const ConnectorInfo &other) const;
     bool operator!=(const ConnectorInfo &other) const { return !(*this == other); }
 };
 
-/// `BEND_POINT` property text `{x0,y0;x1,y1}`-style ↔ points (see bendpoints in systemmodel.cpp).
+/**
+ * `BEND_POINT` property text as RT System Editor writes it, `{1:(x,y),2:(x,y)}` with integer
+ * coordinates. The key is the index of a route segment and the point one it passes through; this
+ * editor writes its route's corners in order from key 1, corner i being where segment i starts.
+ */
 QString bendPointsToText(const QList<QPointF> &points);
+/// The points of a `BEND_POINT` text in key order; nothing when the text is malformed.
 std::optional<QList<QPointF>> bendPointsFromText(const QString &text);
+/// The entries of a `BEND_POINT` text by key; nothing when the text is malformed.
+std::optional<QMap<int, QPointF>> bendPointEntriesFromText(const QString &text);
 
 /**
  * The editing model of one RT system: an RTS profile plus, per component instance, the RTC

@@ -97,14 +97,15 @@ bool ConnectorEnd::operator==(const ConnectorEnd &other) const
 
 bool ConnectorInfo::operator==(const ConnectorInfo &other) const
 {
-    return std::tie(id, name, kind, source, target, bendPoints)
+    return std::tie(id, name, kind, source, target, bendPoints, bendPointEntries)
         == std::tie(other.id, other.name, other.kind, other.source, other.target,
-                    other.bendPoints);
+                    other.bendPoints, other.bendPointEntries);
 }
 
 QString bendPointsToText(const QList<QPointF> &points)
 {
-    // RTSE writes `{1:(x,y),2:(x,y)}` with 1-based keys.
+    // Corner i starts route segment i (segment 0 leaves the source port), so RT System Editor,
+    // which keys segments, moves each of its segments through the corner that starts ours.
     QStringList items;
     for (int i = 0; i < points.size(); ++i) {
         items << QStringLiteral("%1:(%2,%3)")
@@ -116,18 +117,25 @@ QString bendPointsToText(const QList<QPointF> &points)
 
 std::optional<QList<QPointF>> bendPointsFromText(const QString &text)
 {
+    const std::optional<QMap<int, QPointF>> entries = bendPointEntriesFromText(text);
+    if (!entries)
+        return std::nullopt;
+    return entries->values();
+}
+
+std::optional<QMap<int, QPointF>> bendPointEntriesFromText(const QString &text)
+{
     static const QRegularExpression item(
         QStringLiteral(R"(^\s*(\d+)\s*:\s*\(\s*(-?\d+(?:\.\d+)?)\s*,\s*(-?\d+(?:\.\d+)?)\s*\)\s*$)"));
     QString body = text.trimmed();
     if (!body.startsWith(QLatin1Char('{')) || !body.endsWith(QLatin1Char('}')))
         return std::nullopt;
     body = body.mid(1, body.size() - 2);
-    QList<QPointF> points;
+    QMap<int, QPointF> ordered;
     if (body.trimmed().isEmpty())
-        return points;
+        return ordered;
     // Items are separated by the commas that follow a ')'.
     const QStringList items = body.split(QRegularExpression(QStringLiteral(R"((?<=\))\s*,)")));
-    QMap<int, QPointF> ordered;
     for (const QString &entry : items) {
         const QRegularExpressionMatch m = item.match(entry);
         if (!m.hasMatch())
@@ -135,7 +143,7 @@ std::optional<QList<QPointF>> bendPointsFromText(const QString &text)
         ordered.insert(m.captured(1).toInt(),
                        QPointF(m.captured(2).toDouble(), m.captured(3).toDouble()));
     }
-    return ordered.values();
+    return ordered;
 }
 
 } // namespace SystemEditor

@@ -13,6 +13,7 @@
 #include "portitem.h"
 #include "systemscene.h"
 
+#include <QTemporaryDir>
 #include <QUndoStack>
 
 using namespace SystemEditor;
@@ -61,6 +62,9 @@ private slots:
     void routesAreManhattan_data();
     void routesAreManhattan();
     void routeGoesRoundBodiesFacingAway();
+    void rtSystemEditorBendPointsMoveSegments();
+    void savedCornersReadBackInBothForms();
+    void rtSystemEditorFileRoutesAndSavesUnchanged();
 
 private:
     std::unique_ptr<SystemModel> m_model;
@@ -287,7 +291,13 @@ void TestSeCanvasScene::connectorFollowsComponent()
 void TestSeCanvasScene::bendPointsShapeTheRoute()
 {
     ConnectorItem *connector = m_scene->connectorItem(QStringLiteral("c-sensor-filter"));
-    const QList<QPointF> bends {QPointF(200, 300), QPointF(420, 300)};
+    QCOMPARE(connector->sourcePort()->port().side, PortSide::Right);
+    QCOMPARE(connector->targetPort()->port().side, PortSide::Right);
+    // Corners as this editor saves them: a right-angled path from one port's lead to the other's.
+    const qreal startY = qRound(connector->route().first().y());
+    const qreal endY = qRound(connector->route().last().y());
+    const QList<QPointF> bends {QPointF(200, startY), QPointF(200, 300), QPointF(700, 300),
+                                QPointF(700, endY)};
     m_stack->push(new SetBendPointsCommand(m_model.get(), QStringLiteral("c-sensor-filter"), bends));
     QCOMPARE(connector->info().bendPoints, bends);
     for (const QPointF &bend : bends)
@@ -358,6 +368,81 @@ void TestSeCanvasScene::routeGoesRoundBodiesFacingAway()
     }
     QCOMPARE(route.last(), m_scene->portItem({QStringLiteral("Filter0"), QStringLiteral("Filter0.in")})
                                ->connectionPoint());
+}
+
+void TestSeCanvasScene::rtSystemEditorBendPointsMoveSegments()
+{
+    // Ports facing each other: RT System Editor's automatic route and ours are start, two
+    // corners halfway, end; its BEND_POINT keys are those segments (0 leaves the start).
+    const QPointF start(100, 100);
+    const QPointF end(300, 200);
+    const QPolygonF automatic = manhattanRoute(start, PortSide::Right, end, PortSide::Left);
+    QCOMPARE(automatic, QPolygonF({start, QPointF(200, 100), QPointF(200, 200), end}));
+    // Segment 1 (vertical) takes the entry's x only; the point's y is where the handle was let go.
+    QCOMPARE(savedRouteCorners(start, PortSide::Right, end, PortSide::Left,
+                               {{1, QPointF(150, 170)}}),
+             QList<QPointF>({QPointF(150, 100), QPointF(150, 200)}));
+    // Segment 2 (horizontal, entering the end) takes its y; segments it does not have are ignored.
+    QCOMPARE(constrainedRoute(automatic, {{2, QPointF(0, 220)}, {9, QPointF(5, 5)}}),
+             QPolygonF({start, QPointF(200, 100), QPointF(200, 220), QPointF(300, 220)}));
+    // A straight route gets RT System Editor's zero-length jog halfway, which can be moved.
+    QCOMPARE(constrainedRoute(QPolygonF({start, QPointF(300, 100)}), {{1, QPointF(260, 0)}}),
+             QPolygonF({start, QPointF(260, 100), QPointF(260, 100), QPointF(300, 100)}));
+}
+
+void TestSeCanvasScene::savedCornersReadBackInBothForms()
+{
+    const QPointF start(100, 100);
+    const QPointF end(300, 200);
+    // A route dragged in this editor is saved as its corners keyed 1…n and reads back as such.
+    const QList<QPointF> dragged {QPointF(116, 100), QPointF(116, 40), QPointF(250, 40),
+                                  QPointF(250, 200)};
+    const QPolygonF route = manhattanRoute(start, PortSide::Right, end, PortSide::Left, dragged);
+    const std::optional<QMap<int, QPointF>> saved
+        = bendPointEntriesFromText(bendPointsToText(routeCorners(route)));
+    QVERIFY(saved);
+    QCOMPARE(saved->firstKey(), 1);
+    QCOMPARE(savedRouteCorners(start, PortSide::Right, end, PortSide::Left, *saved),
+             routeCorners(route));
+    // RT System Editor reads corner i as a point of its segment i: a route with its automatic
+    // route's segments opens there as drawn here.
+    const QList<QPointF> moved {QPointF(150, 100), QPointF(150, 200)};
+    const QPolygonF ours = manhattanRoute(start, PortSide::Right, end, PortSide::Left, moved);
+    const std::optional<QMap<int, QPointF>> written
+        = bendPointEntriesFromText(bendPointsToText(routeCorners(ours)));
+    QVERIFY(written);
+    QCOMPARE(constrainedRoute(manhattanRoute(start, PortSide::Right, end, PortSide::Left),
+                              *written),
+             ours);
+}
+
+void TestSeCanvasScene::rtSystemEditorFileRoutesAndSavesUnchanged()
+{
+    const QString path = SeCanvasTest::dataPath(QStringLiteral("rtsebendpoints.xml"));
+    std::unique_ptr<SystemModel> model = loadModel(path);
+    QVERIFY(model);
+    const Profile::RtsProfile loaded = model->profile();
+    {
+        const SystemScene scene(model.get(), nullptr);
+        // Drawn where RT System Editor drew it: its middle segment moved to x = 230.
+        const QPolygonF route = scene.connectorItem(QStringLiteral("c-sensor-filter"))->route();
+        QCOMPARE(route.size(), 4);
+        QCOMPARE(route.at(1), QPointF(230, route.first().y()));
+        QCOMPARE(route.at(2), QPointF(230, route.last().y()));
+        QVERIFY(route.first().y() < route.last().y());
+    }
+    QTemporaryDir dir;
+    const QString savedPath = dir.filePath(QStringLiteral("rtsebendpoints.xml"));
+    Profile::Diagnostics diagnostics;
+    QVERIFY(saveSystemFile(*model, savedPath, &diagnostics));
+    const std::unique_ptr<SystemModel> again = loadModel(savedPath);
+    QVERIFY(again);
+    QCOMPARE(Profile::rtsPropertyValue(
+                 again->dataConnector(QStringLiteral("c-sensor-filter"))->properties,
+                 SystemModel::BendPointProperty),
+             std::optional<QString>(QStringLiteral("{1:(230,150)}")));
+    QCOMPARE(again->profile().dataPortConnectors, loaded.dataPortConnectors);
+    QCOMPARE(again->profile().components.size(), loaded.components.size());
 }
 
 QTEST_MAIN(TestSeCanvasScene)

@@ -53,13 +53,27 @@ void ConnectorItem::updateRoute()
         setRoute({});
         return;
     }
-    const QList<QPointF> &bends = m_draggedHandle >= 0 ? m_draggedCorners : m_info.bendPoints;
+    const QList<QPointF> bends = m_draggedHandle >= 0 ? m_draggedCorners : savedCorners();
+    setRoute(manhattanRoute(m_source->connectionPoint(), m_source->port().side,
+                            m_target->connectionPoint(), m_target->port().side, bends,
+                            bodies()));
+}
+
+QRectF ConnectorItem::bodies() const
+{
     const auto bodyOf = [](const PortItem *port) {
         return port->parentItem() ? port->parentItem()->sceneBoundingRect() : QRectF();
     };
-    const QRectF bodies = bodyOf(m_source).united(bodyOf(m_target));
-    setRoute(manhattanRoute(m_source->connectionPoint(), m_source->port().side,
-                            m_target->connectionPoint(), m_target->port().side, bends, bodies));
+    return bodyOf(m_source).united(bodyOf(m_target));
+}
+
+QList<QPointF> ConnectorItem::savedCorners() const
+{
+    if (!m_source || !m_target)
+        return {};
+    return savedRouteCorners(m_source->connectionPoint(), m_source->port().side,
+                             m_target->connectionPoint(), m_target->port().side,
+                             m_info.bendPointEntries, bodies());
 }
 
 void ConnectorItem::setRoute(const QPolygonF &route)
@@ -212,10 +226,12 @@ void ConnectorItem::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
         QGraphicsObject::mouseReleaseEvent(event);
         return;
     }
-    const QList<QPointF> corners = m_draggedCorners;
+    // The corners of the route drawn, elbows included, so that what is saved is a right-angled
+    // path from port to port (see savedRouteCorners()).
+    const QList<QPointF> corners = routeCorners(m_route);
     m_draggedHandle = -1;
     m_draggedCorners.clear();
-    if (corners != m_info.bendPoints)
+    if (corners != savedCorners())
         emit bendPointsRequested(m_info.id, corners);
     updateRoute();
 }

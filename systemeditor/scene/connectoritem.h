@@ -12,7 +12,8 @@ class PortItem;
 /**
  * A connector drawn as a Manhattan route between two PortItems. When selected it shows a handle
  * on each corner; dragging one emits bendPointsRequested() with all corners, which the scene
- * turns into an undo command that stores them as `BEND_POINT`.
+ * turns into an undo command that stores them as `BEND_POINT`. Saved entries in RT System
+ * Editor's form (segment positions) are drawn where it drew them.
  */
 class ConnectorItem : public QGraphicsObject
 {
@@ -55,6 +56,10 @@ protected:
 
 private:
     void setRoute(const QPolygonF &route);
+    /// The two components' bodies, which automatic routes go round.
+    QRectF bodies() const;
+    /// The corners its `BEND_POINT` entries give (savedRouteCorners()); empty = route freely.
+    QList<QPointF> savedCorners() const;
     void drawVisibleRoute(QPainter *painter, qreal penWidth) const;
 
     ConnectorInfo m_info;

@@ -109,7 +109,78 @@ QPolygonF simplified(const QPolygonF &route, const QList<QPointF> &keep)
     return result;
 }
 
+/// Within the rounding of saved coordinates, which are whole numbers.
+bool sameCoordinate(qreal a, qreal b)
+{
+    return std::abs(a - b) <= 1.0;
+}
+
+bool aligned(const QPointF &a, const QPointF &b)
+{
+    return sameCoordinate(a.x(), b.x()) || sameCoordinate(a.y(), b.y());
+}
+
+/// True when `point` lies on the line leaving a port on `side` at `port`.
+bool onLead(const QPointF &port, PortSide side, const QPointF &point)
+{
+    return isHorizontal(side) ? sameCoordinate(port.y(), point.y())
+                              : sameCoordinate(port.x(), point.x());
+}
+
+/// True when `entries` are corners as this editor saves them: keyed 1…n, each in line with the
+/// next, the first on the start's lead and the last on the end's.
+bool isCornerChain(const QPointF &start, PortSide startSide, const QPointF &end,
+                   PortSide endSide, const QMap<int, QPointF> &entries)
+{
+    if (entries.firstKey() != 1 || entries.lastKey() != entries.size())
+        return false;
+    const QList<QPointF> corners = entries.values();
+    for (int i = 0; i + 1 < corners.size(); ++i) {
+        if (!aligned(corners.at(i), corners.at(i + 1)))
+            return false;
+    }
+    return onLead(start, startSide, corners.first()) && onLead(end, endSide, corners.last());
+}
+
 } // namespace
+
+QPolygonF constrainedRoute(const QPolygonF &route, const QMap<int, QPointF> &entries)
+{
+    QPolygonF points = route;
+    if (points.size() == 2) {
+        const QPointF middle = (points.first() + points.last()) / 2;
+        points = QPolygonF {points.first(), middle, middle, points.last()};
+    }
+    // As RT System Editor does: in key order, each entry slides its whole segment; a
+    // zero-length segment counts as vertical.
+    for (auto it = entries.cbegin(); it != entries.cend(); ++it) {
+        const int i = it.key();
+        if (i < 0 || i > points.size() - 2)
+            continue;
+        if (qFuzzyCompare(points.at(i).x() + 1, points.at(i + 1).x() + 1)) {
+            points[i].setX(it->x());
+            points[i + 1].setX(it->x());
+        } else if (qFuzzyCompare(points.at(i).y() + 1, points.at(i + 1).y() + 1)) {
+            points[i].setY(it->y());
+            points[i + 1].setY(it->y());
+        }
+    }
+    return points;
+}
+
+QList<QPointF> savedRouteCorners(const QPointF &start, PortSide startSide, const QPointF &end,
+                                 PortSide endSide, const QMap<int, QPointF> &entries,
+                                 const QRectF &bodies)
+{
+    if (entries.isEmpty())
+        return {};
+    if (isCornerChain(start, startSide, end, endSide, entries))
+        return entries.values();
+    const QPolygonF route
+        = constrainedRoute(manhattanRoute(start, startSide, end, endSide, {}, bodies), entries);
+    // The ends stay on the ports; manhattanRoute() joins them to the moved corners.
+    return QList<QPointF>(route.cbegin() + 1, route.cend() - 1);
+}
 
 QPolygonF manhattanRoute(const QPointF &start, PortSide startSide, const QPointF &end,
                          PortSide endSide, const QList<QPointF> &bendPoints,
