@@ -46,6 +46,7 @@ class TestOnlineDocks : public QObject
 
 private slots:
     void initTestCase();
+    void init();
     void docksFollowThePerspective();
     void choosingAComponentShowsItsConfigurationAndContexts();
     void restoresASystemThroughTheOnlineMenu();
@@ -79,6 +80,13 @@ void TestOnlineDocks::initTestCase()
     QVERIFY2(
         m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
         qPrintable(error));
+}
+
+void TestOnlineDocks::init()
+{
+    // Each test adds the name server itself; one remembered by an earlier test would make that
+    // addition a no-op.
+    QSettings().clear();
 }
 
 void TestOnlineDocks::docksFollowThePerspective()
@@ -243,8 +251,11 @@ void TestOnlineDocks::dragOntoTheTabActivateAndSaveTheLiveSystem()
 
     // Connected live, moved on the diagram, then saved: the file has both.
     QSignalSpy connected(diagram, &SystemEditor::OnlineDiagram::connectionFinished);
+    // In the live port's own spelling of the data type, as the connector dialog proposes it.
+    const auto out = diagram->model()->port("ConsoleIn0", "ConsoleIn0.out");
+    QVERIFY(out && out->dataType.contains("TimedLong"));
     diagram->connectLive("ConsoleIn0.out", "ConsoleOut0.in",
-                         SystemEditor::ConnectorSettings::defaults("out", "in", "RTC::TimedLong"));
+                         SystemEditor::ConnectorSettings::defaults("out", "in", out->dataType));
     QVERIFY(connected.wait(10000));
     QVERIFY2(connected.at(0).at(0).toString().isEmpty(),
              qPrintable(connected.at(0).at(0).toString()));

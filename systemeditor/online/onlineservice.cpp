@@ -34,6 +34,10 @@ void OnlineService::run(quint64 ticket, const Call &call)
         // The client library only throws Corba::Error; anything else is still reported, never
         // fatal.
         result.error = QString::fromLocal8Bit(e.what());
+    } catch (...) {
+        // An exception leaving a worker thread terminates the application; whatever went wrong
+        // is reported to the caller like any other failed call.
+        result.error = tr("The call to %1 failed with an unexpected error").arg(m_host);
     }
     const bool reachable = result.ok || !result.hostFailure;
     if (reachable != m_reachable) {

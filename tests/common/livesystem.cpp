@@ -8,7 +8,9 @@
 #include <QThread>
 
 #include <arpa/inet.h>
+#include <csignal>
 #include <netinet/in.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -23,6 +25,13 @@ sockaddr_in loopback(quint16 port)
     address.sin_port = htons(port);
     address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     return address;
+}
+
+// A test killed by its time limit or a crash never reaches stopAll(); the kernel then ends the
+// servers it started (even SIGSTOPped ones) instead of leaving them behind.
+void dieWithParent(QProcess &process)
+{
+    process.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
 }
 
 } // namespace
@@ -99,6 +108,7 @@ bool LiveSystem::startNameServer(QString *error)
     m_namingPort = freePort();
     const QString port = QString::number(m_namingPort);
     auto process = std::make_unique<QProcess>();
+    dieWithParent(*process);
     process->setProcessChannelMode(QProcess::MergedChannels);
     process->start(program,
                    {QStringLiteral("-start"), port, QStringLiteral("-datadir"), m_dataDir->path(),
@@ -143,6 +153,7 @@ QProcess *LiveSystem::startProcess(const QString &program, const QStringList &ar
                                    const QString &readyText, QString *error, int timeoutMs)
 {
     auto process = std::make_unique<QProcess>();
+    dieWithParent(*process);
     process->setProcessChannelMode(QProcess::ForwardedErrorChannel);
     process->start(program, arguments);
     QProcess *raw = process.get();
