@@ -45,6 +45,7 @@ private:
     Corba::ComponentProxy component(const QString &instance) const;
     void dropOnto(OnlineDiagram &diagram, const QStringList &instances);
     void waitForPoll(OnlineDiagram &diagram);
+    void pollUntil(OnlineDiagram &diagram, const std::function<bool()> &done);
 
     LiveTest::LiveSystem m_live;
     QProcess *m_manager = nullptr;
@@ -111,6 +112,14 @@ void TestOnlineDiagram::waitForPoll(OnlineDiagram &diagram)
     QVERIFY(polled.wait(10000));
 }
 
+// Polls at most one round more than the port refresh period (the first round may have started
+// before the change it should see), stopping early once `done` holds.
+void TestOnlineDiagram::pollUntil(OnlineDiagram &diagram, const std::function<bool()> &done)
+{
+    for (int round = 0; round <= OnlineDiagram::portRefreshRounds() && !done(); ++round)
+        waitForPoll(diagram);
+}
+
 void TestOnlineDiagram::dropsLiveComponentsWithStateColours()
 {
     OnlineSession session;
@@ -163,16 +172,28 @@ void TestOnlineDiagram::drawsLiveConnectors()
     const Corba::PortInfo in = component("ConsoleOut0").port("in");
     Corba::ConnectionRequest request;
     request.id = QStringLiteral("live-connector-1");
+    // Made elsewhere: the diagram reads ports only every few rounds, so it shows up within as
+    // many polls (a connector this diagram makes is read at once, see the dragging test).
+    const int reads = diagram.portReads();
+    QSignalSpy rounds(&diagram, &OnlineDiagram::polled);
     const Corba::ConnectorInfo made = Corba::PortConnection::connect({out, in}, request, "test");
-    waitForPoll(diagram);
+    pollUntil(diagram, [&] { return diagram.model()->connector(made.id).has_value(); });
     QCOMPARE(diagram.model()->connectorIds(), QStringList {made.id});
     QCOMPARE(diagram.scene()->connectorItemCount(), 1);
-    const auto connector = diagram.model()->connector(made.id);
-    QVERIFY(connector.has_value());
     Corba::PortConnection::disconnect(out, made.id, "test");
-    waitForPoll(diagram);
+    pollUntil(diagram, [&] { return diagram.model()->connectorIds().isEmpty(); });
     QVERIFY(diagram.model()->connectorIds().isEmpty());
     QCOMPARE(diagram.scene()->connectorItemCount(), 0);
+    // Each of the two components read its ports in at most one round of portRefreshRounds()
+    // (one more round may have started and not yet finished), never in every round.
+    const int started = int(rounds.size()) + 1;
+    const int period = OnlineDiagram::portRefreshRounds();
+    const int allowed = 2 * ((started + period - 1) / period);
+    QVERIFY2(diagram.portReads() - reads <= allowed,
+             qPrintable(QStringLiteral("%1 port reads in %2 rounds")
+                            .arg(diagram.portReads() - reads)
+                            .arg(started)));
+    QVERIFY(diagram.portReads() > reads);
 }
 
 void TestOnlineDiagram::connectsLiveByDraggingThroughTheDialog()
@@ -219,8 +240,8 @@ void TestOnlineDiagram::connectsLiveByDraggingThroughTheDialog()
         asked.dataType,
         Corba::propertyValue(component("ConsoleIn0").port("out").properties, "dataport.data_type"));
     QVERIFY(asked.dataType.contains("TimedLong"));
-    waitForPoll(diagram);
-    QCOMPARE(diagram.model()->connectorIds().size(), 1);
+    // Its own connection is read back at once, not after portRefreshRounds() rounds of 1 s.
+    QTRY_COMPARE_WITH_TIMEOUT(diagram.model()->connectorIds().size(), 1, 2000);
     const std::vector<Corba::ConnectorInfo> live = component("ConsoleIn0").port("out").connectors;
     QCOMPARE(int(live.size()), 1);
     QCOMPARE(Corba::propertyValue(live.front().properties, "dataport.subscription_type"),
@@ -230,8 +251,7 @@ void TestOnlineDiagram::connectsLiveByDraggingThroughTheDialog()
     diagram.disconnectLive(diagram.model()->connectorIds().first());
     QVERIFY(disconnected.wait(10000));
     QCOMPARE(disconnected.at(0).at(0).toString(), QString());
-    waitForPoll(diagram);
-    QVERIFY(diagram.model()->connectorIds().isEmpty());
+    QTRY_VERIFY_WITH_TIMEOUT(diagram.model()->connectorIds().isEmpty(), 2000);
     QVERIFY(component("ConsoleIn0").port("out").connectors.empty());
 }
 
@@ -244,7 +264,11 @@ void TestOnlineDiagram::stoppedManagerTurnsBlackWithoutStallingTheGui()
     QCOMPARE(diagram.bodyColor("ConsoleIn0"), OnlineIcons::stateColor(LifeCycleState::Inactive));
 
     Corba::Orb::setCallTimeout(500);
+    // processId() is 0 once the manager has ended, and kill(0, SIGSTOP) would stop this test's
+    // own process group: check before signalling.
+    QCOMPARE(m_manager->state(), QProcess::Running);
     const pid_t pid = pid_t(m_manager->processId());
+    QVERIFY(pid > 0);
     QCOMPARE(::kill(pid, SIGSTOP), 0);
     struct Resume
     {
@@ -255,6 +279,7 @@ void TestOnlineDiagram::stoppedManagerTurnsBlackWithoutStallingTheGui()
             Corba::Orb::setCallTimeout(3000);
         }
     } resume {pid};
+    QVERIFY(LiveTest::waitUntilStopped(pid, 5000));
     QElapsedTimer clock;
     clock.start();
     qint64 last = 0;

@@ -137,8 +137,10 @@ void OnlineDiagram::addComponent(const QString &path, const QString &ior, const 
             location.width = location.height = QStringLiteral("-1");
             location.direction = QStringLiteral("RIGHT");
             record.component.layout = location;
-            m_live.insert(info.instanceName,
-                          {path, ior, Corba::LifeCycleState::Unknown, info.ports, true});
+            const int stagger = int(m_live.size()) % portRefreshRounds();
+            m_live.insert(
+                info.instanceName,
+                {path, ior, Corba::LifeCycleState::Unknown, info.ports, true, stagger, false});
             m_model->addComponent(record.component, record.rtc);
             emit componentAdded(info.instanceName);
             poll();
@@ -171,16 +173,27 @@ void OnlineDiagram::poll()
 {
     if (m_pendingPolls > 0 || m_live.isEmpty())
         return;
+    ++m_round;
     for (auto it = m_live.begin(); it != m_live.end(); ++it) {
         const QString instance = it.key();
         const Corba::ComponentProxy proxy(it->ior, it->path);
+        // The state is what changes from round to round; ports and connectors change rarely and
+        // cost more calls, so they are read in one round of portRefreshRounds() (one call: the
+        // component profile carries every port profile).
+        const bool readPorts = it->portsStale || (m_round + it->stagger) % portRefreshRounds() == 0;
+        it->portsStale = false;
+        if (readPorts)
+            ++m_portReads;
         ++m_pendingPolls;
         m_session->submit(
             hostOf(*it),
-            [proxy] {
+            [proxy, readPorts] {
                 LiveComponentPoll result;
                 result.state = proxy.state();
-                result.ports = proxy.ports();
+                if (readPorts) {
+                    result.ports = proxy.profile().ports;
+                    result.portsRead = true;
+                }
                 return QVariant::fromValue(result);
             },
             this,
@@ -188,17 +201,24 @@ void OnlineDiagram::poll()
                 auto live = m_live.find(instance);
                 if (live != m_live.end()) {
                     // A component that does not answer is drawn as Unknown, never reported as an
-                    // error.
+                    // error; its ports are read again as soon as it answers.
                     const auto polled = result.value.value<LiveComponentPoll>();
                     live->state = result.ok ? polled.state : Corba::LifeCycleState::Unknown;
+                    live->portsStale = live->portsStale || !result.ok;
                     live->reachable = result.ok;
-                    if (result.ok)
+                    if (polled.portsRead)
                         live->ports = polled.ports;
                 }
                 if (--m_pendingPolls == 0)
                     finishRound();
             });
     }
+}
+
+void OnlineDiagram::markPortsStale()
+{
+    for (Live &live : m_live)
+        live.portsStale = true;
 }
 
 void OnlineDiagram::finishRound()

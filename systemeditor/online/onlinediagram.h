@@ -31,6 +31,7 @@ struct ConnectionCheck;
 struct LiveComponentPoll
 {
     Corba::LifeCycleState state = Corba::LifeCycleState::Unknown;
+    bool portsRead = false; ///< this poll also read the port profiles (with their connectors)
     std::vector<Corba::PortInfo> ports;
 };
 
@@ -39,8 +40,10 @@ struct LiveComponentPoll
  * canvas over a System Editor model built from their profiles, filled with their state colour
  * (Created white, Inactive blue, Active green, Error red, Unknown/unreachable black) and joined
  * by the connectors their ports report. A background poller (interval in QSettings
- * `online/pollInterval`, default 1000 ms) refreshes states and connectors through the worker
- * layer; components that stop answering turn black instead of raising errors.
+ * `online/pollInterval`, default 1000 ms) refreshes states through the worker layer every round
+ * and each component's ports and connectors every portRefreshRounds() rounds (staggered, and at
+ * once after this diagram connects or disconnects or the component answers again); components
+ * that stop answering turn black instead of raising errors.
  */
 class OnlineDiagram : public QWidget
 {
@@ -69,6 +72,11 @@ public:
     int pollInterval() const;
     /// Starts one poll round now (skipped while the previous one is still running).
     void poll();
+    /// A component's ports and connectors are read in one of this many poll rounds, so a
+    /// connector made elsewhere appears within this many rounds.
+    static constexpr int portRefreshRounds() { return 3; }
+    /// Remote reads of port profiles since the diagram was made (one per component and refresh).
+    int portReads() const { return m_portReads; }
 
     void perform(Action action, const QString &instanceName);
     void performAll(Action action);
@@ -120,11 +128,14 @@ private:
         Corba::LifeCycleState state = Corba::LifeCycleState::Unknown;
         std::vector<Corba::PortInfo> ports;
         bool reachable = true; ///< the last poll was answered
+        int stagger = 0; ///< spreads the port reads of the components over the rounds
+        bool portsStale = false; ///< read the ports in the next round, whatever its number
     };
 
     void buildUi();
     QString hostOf(const Live &live) const;
     void finishRound();
+    void markPortsStale();
     void syncConnectors();
     void applyColours();
     void showContextMenu(const QPoint &position);
@@ -143,6 +154,8 @@ private:
     QTimer *m_timer;
     QHash<QString, Live> m_live; ///< by instance name
     int m_pendingPolls = 0;
+    int m_round = 0;
+    int m_portReads = 0;
     ConnectorEditor m_connectorEditor;
 };
 

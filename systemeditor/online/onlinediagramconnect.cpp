@@ -114,6 +114,9 @@ void OnlineDiagram::submitConnection(const QString &host, const std::function<vo
             if (!result.ok)
                 m_status->setText(result.error);
             emit connectionFinished(result.ok ? QString() : result.error);
+            // The connector is drawn from what the ports report: read them now, not in a few
+            // rounds.
+            markPortsStale();
             poll();
         });
 }
