@@ -5,6 +5,7 @@
 #include "componentproxy.h"
 #include "connectionrules.h"
 #include "connectoritem.h"
+#include "corbaerror.h"
 #include "iorendpoint.h"
 #include "livesystembuilder.h"
 #include "nameservicemodel.h"
@@ -174,9 +175,10 @@ void OnlineDiagram::poll()
     if (m_pendingPolls > 0 || m_live.isEmpty())
         return;
     ++m_round;
+    // One call per host for all its components: one worker wake-up and one result per round
+    // instead of one per component.
+    QHash<QString, QList<PollRequest>> byHost;
     for (auto it = m_live.begin(); it != m_live.end(); ++it) {
-        const QString instance = it.key();
-        const Corba::ComponentProxy proxy(it->ior, it->path);
         // The state is what changes from round to round; ports and connectors change rarely and
         // cost more calls, so they are read in one round of portRefreshRounds() (one call: the
         // component profile carries every port profile).
@@ -184,34 +186,54 @@ void OnlineDiagram::poll()
         it->portsStale = false;
         if (readPorts)
             ++m_portReads;
+        byHost[hostOf(*it)].append({it.key(), Corba::ComponentProxy(it->ior, it->path), readPorts});
+    }
+    for (auto host = byHost.cbegin(); host != byHost.cend(); ++host) {
+        const QList<PollRequest> requests = host.value();
         ++m_pendingPolls;
         m_session->submit(
-            hostOf(*it),
-            [proxy, readPorts] {
-                LiveComponentPoll result;
-                result.state = proxy.state();
-                if (readPorts) {
-                    result.ports = proxy.profile().ports;
-                    result.portsRead = true;
-                }
-                return QVariant::fromValue(result);
-            },
-            this,
-            [this, instance](const OnlineResult &result) {
-                auto live = m_live.find(instance);
-                if (live != m_live.end()) {
-                    // A component that does not answer is drawn as Unknown, never reported as an
-                    // error; its ports are read again as soon as it answers.
-                    const auto polled = result.value.value<LiveComponentPoll>();
-                    live->state = result.ok ? polled.state : Corba::LifeCycleState::Unknown;
-                    live->portsStale = live->portsStale || !result.ok;
-                    live->reachable = result.ok;
-                    if (polled.portsRead)
-                        live->ports = polled.ports;
-                }
+            host.key(), [requests] { return QVariant::fromValue(pollComponents(requests)); }, this,
+            [this](const OnlineResult &result) {
+                applyPoll(result.value.value<QHash<QString, LiveComponentPoll>>());
                 if (--m_pendingPolls == 0)
                     finishRound();
             });
+    }
+}
+
+QHash<QString, LiveComponentPoll> OnlineDiagram::pollComponents(const QList<PollRequest> &requests)
+{
+    QHash<QString, LiveComponentPoll> results;
+    for (const PollRequest &request : requests) {
+        LiveComponentPoll &result = results[request.instance];
+        try {
+            result.state = request.proxy.state();
+            if (request.readPorts) {
+                result.ports = request.proxy.profile().ports;
+                result.portsRead = true;
+            }
+            result.answered = true;
+        } catch (const Corba::Error &) {
+            // Not answering is shown by the colour and the unreachable list, not as an error.
+        }
+    }
+    return results;
+}
+
+void OnlineDiagram::applyPoll(const QHash<QString, LiveComponentPoll> &results)
+{
+    for (auto polled = results.cbegin(); polled != results.cend(); ++polled) {
+        auto live = m_live.find(polled.key());
+        if (live == m_live.end())
+            continue; // removed while the round ran
+        // A component that does not answer is drawn as Unknown; its ports are read again as
+        // soon as it answers.
+        const bool ok = polled->answered;
+        live->state = ok ? polled->state : Corba::LifeCycleState::Unknown;
+        live->portsStale = live->portsStale || !ok;
+        live->reachable = ok;
+        if (polled->portsRead)
+            live->ports = polled->ports;
     }
 }
 

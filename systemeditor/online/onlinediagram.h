@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "componentproxy.h"
 #include "connectordialog.h"
 #include "connectorsettings.h"
 #include "corbatypes.h"
@@ -31,6 +32,7 @@ struct ConnectionCheck;
 struct LiveComponentPoll
 {
     Corba::LifeCycleState state = Corba::LifeCycleState::Unknown;
+    bool answered = false; ///< the component answered; state and ports are valid only then
     bool portsRead = false; ///< this poll also read the port profiles (with their connectors)
     std::vector<Corba::PortInfo> ports;
 };
@@ -134,6 +136,15 @@ private:
 
     void buildUi();
     QString hostOf(const Live &live) const;
+    struct PollRequest
+    {
+        QString instance;
+        Corba::ComponentProxy proxy;
+        bool readPorts = false;
+    };
+    /// Runs in a worker: the state (and ports when asked) of each component of one host.
+    static QHash<QString, LiveComponentPoll> pollComponents(const QList<PollRequest> &requests);
+    void applyPoll(const QHash<QString, LiveComponentPoll> &results);
     void finishRound();
     void markPortsStale();
     void syncConnectors();
