@@ -94,7 +94,11 @@ void TestSeComposite::groupSaveReopenDecompose()
     group->trigger();
     QCOMPARE(m_model->componentIds().size(), before.size() + 1);
     const QString name = m_model->componentIds().last();
-    const Profile::RtsComponent *composite = m_model->component(name);
+    // A copy: saving rewrites the model's components (dates, pathUri), so a pointer would dangle.
+    const std::optional<Profile::RtsComponent> composite = m_model->hasComponent(name)
+        ? std::optional<Profile::RtsComponent>(*m_model->component(name))
+        : std::nullopt;
+    QVERIFY(composite);
     QCOMPARE(composite->compositeType, std::optional<QString>("PeriodicStateShared"));
     QCOMPARE(composite->participants.size(), 2);
     QCOMPARE(composite->dataPorts.size(), 1);
