@@ -120,7 +120,7 @@ int main(int argc, char **argv)
     const Corba::ManagerProxy master(ComponentMapper::resolveManager(options.manager),
                                      options.manager);
     out << QStringLiteral("%1 %2 %3\n")
-               .arg("components on master / slaves", -40)
+               .arg("components via master / slave managers", -40)
                .arg(master.components().size(), 8)
                .arg(master.slaveManagers().size());
     ok = ok && row("teardown 150", [&] {
