@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "componentitem.h"
 #include "componentproxy.h"
 #include "livesystem.h"
 #include "nameservicemodel.h"
@@ -22,6 +23,7 @@
 #include <QStandardPaths>
 #include <QTest>
 #include <QTimer>
+#include <QWheelEvent>
 
 #include <csignal>
 
@@ -38,6 +40,7 @@ private slots:
     void dropsLiveComponentsWithStateColours();
     void activateTurnsTheComponentGreen();
     void drawsLiveConnectors();
+    void keepsTheDiagramInViewUntilTheUserNavigates();
     void connectsLiveByDraggingThroughTheDialog();
     void stoppedManagerTurnsBlackWithoutStallingTheGui();
 
@@ -46,6 +49,7 @@ private:
     void dropOnto(OnlineDiagram &diagram, const QStringList &instances);
     void waitForPoll(OnlineDiagram &diagram);
     void pollUntil(OnlineDiagram &diagram, const std::function<bool()> &done);
+    static bool shown(const OnlineDiagram &diagram, const QString &instance);
 
     LiveTest::LiveSystem m_live;
     QProcess *m_manager = nullptr;
@@ -118,6 +122,16 @@ void TestOnlineDiagram::pollUntil(OnlineDiagram &diagram, const std::function<bo
 {
     for (int round = 0; round <= OnlineDiagram::portRefreshRounds() && !done(); ++round)
         waitForPoll(diagram);
+}
+
+// Whether the view shows the whole of the component.
+bool TestOnlineDiagram::shown(const OnlineDiagram &diagram, const QString &instance)
+{
+    const ComponentItem *item = diagram.scene()->componentItem(instance);
+    const QGraphicsView *view = diagram.view();
+    const QRectF visible
+        = view->viewportTransform().inverted().mapRect(QRectF(view->viewport()->rect()));
+    return item && visible.contains(item->sceneBoundingRect());
 }
 
 void TestOnlineDiagram::dropsLiveComponentsWithStateColours()
@@ -194,6 +208,40 @@ void TestOnlineDiagram::drawsLiveConnectors()
                             .arg(diagram.portReads() - reads)
                             .arg(started)));
     QVERIFY(diagram.portReads() > reads);
+}
+
+void TestOnlineDiagram::keepsTheDiagramInViewUntilTheUserNavigates()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    diagram.resize(420, 320);
+    diagram.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&diagram));
+    const Corba::ComponentProxy in = component("ConsoleIn0");
+    const Corba::ComponentProxy out = component("ConsoleOut0");
+    QSignalSpy added(&diagram, &OnlineDiagram::componentAdded);
+    diagram.addComponent(in.path(), in.ior(), {40, 40});
+    diagram.addComponent(out.path(), out.ior(), {900, 700});
+    QTRY_COMPARE_WITH_TIMEOUT(added.size(), 2, 10000);
+    // Fresh: the whole diagram is fitted (zoomed out, as it is larger than the view).
+    QTRY_VERIFY(shown(diagram, "ConsoleIn0") && shown(diagram, "ConsoleOut0"));
+    QVERIFY(diagram.view()->transform().m11() < 1.0);
+
+    // Once the user scrolls, the view stays where it is until a component is added, which is
+    // then scrolled into view at the zoom the user has.
+    QWidget *viewport = diagram.view()->viewport();
+    const QPointF at(viewport->rect().center());
+    QWheelEvent wheel(at, viewport->mapToGlobal(at), {}, {0, -120}, Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(viewport, &wheel);
+    const qreal zoom = diagram.view()->transform().m11();
+    diagram.resize(400, 300);
+    QCOMPARE(diagram.view()->transform().m11(), zoom);
+    diagram.model()->removeComponent("ConsoleOut0");
+    diagram.addComponent(out.path(), out.ior(), {1800, 1400});
+    QTRY_COMPARE_WITH_TIMEOUT(added.size(), 3, 10000);
+    QTRY_VERIFY(shown(diagram, "ConsoleOut0"));
+    QCOMPARE(diagram.view()->transform().m11(), zoom);
 }
 
 void TestOnlineDiagram::connectsLiveByDraggingThroughTheDialog()

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
+#include "componentitem.h"
 #include "configurationview.h"
+#include "connectoritem.h"
 #include "documentcontroller.h"
 #include "executioncontextmodel.h"
 #include "executioncontextview.h"
@@ -19,6 +21,7 @@
 #include "restoredialog.h"
 #include "rtsdocument.h"
 #include "systemmodel.h"
+#include "systemscene.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -38,6 +41,24 @@
 #include <memory>
 
 using namespace Studio;
+
+namespace {
+
+// The part of the scene the diagram's view shows now.
+QRectF visibleSceneRect(const SystemEditor::OnlineDiagram *diagram)
+{
+    const QGraphicsView *view = diagram->view();
+    return view->viewportTransform().inverted().mapRect(QRectF(view->viewport()->rect()));
+}
+
+// Whether the whole of the component is on screen (not cut off, not scrolled away).
+bool showsWhole(const SystemEditor::OnlineDiagram *diagram, const QString &instanceName)
+{
+    const SystemEditor::ComponentItem *item = diagram->scene()->componentItem(instanceName);
+    return item && visibleSceneRect(diagram).contains(item->sceneBoundingRect());
+}
+
+} // namespace
 
 // The online views as docks of the main window, driven against a real rtmanager.
 class TestOnlineDocks : public QObject
@@ -171,6 +192,8 @@ void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
         QVERIFY(added.wait(10000));
     }
     QCOMPARE(diagram->model()->componentIds().size(), 2);
+    QTRY_VERIFY(showsWhole(diagram, "ConsoleIn0"));
+    QTRY_VERIFY(showsWhole(diagram, "ConfigSample0"));
     diagram->perform(SystemEditor::OnlineDiagram::Action::Activate, "ConsoleIn0");
     QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor("ConsoleIn0"),
                               SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active),
@@ -242,6 +265,10 @@ void TestOnlineDocks::dragOntoTheTabActivateAndSaveTheLiveSystem()
     QDropEvent drop(at, Qt::CopyAction, mime.get(), Qt::LeftButton, Qt::NoModifier);
     QCoreApplication::sendEvent(viewport, &drop);
     QTRY_COMPARE_WITH_TIMEOUT(added.size(), 2, 10000);
+    // The fresh tab is fitted to what was dropped: both components are on screen, whole.
+    QTRY_VERIFY(showsWhole(diagram, "ConsoleIn0"));
+    QTRY_VERIFY(showsWhole(diagram, "ConsoleOut0"));
+    QVERIFY(diagram->view()->transform().m11() <= 1.0);
 
     // Activate All from the Online menu acts on the tab.
     const QColor active = SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active);
@@ -261,6 +288,12 @@ void TestOnlineDocks::dragOntoTheTabActivateAndSaveTheLiveSystem()
              qPrintable(connected.at(0).at(0).toString()));
     QTRY_COMPARE_WITH_TIMEOUT(diagram->model()->connectorIds().size(), 1, 10000);
     diagram->model()->moveComponent("ConsoleOut0", QPointF(520, 240));
+    // Still fitted while the user has not navigated: the moved component and the connector too.
+    QTRY_VERIFY(showsWhole(diagram, "ConsoleOut0"));
+    const QString connector = diagram->model()->connectorIds().first();
+    QTRY_VERIFY(visibleSceneRect(diagram).contains(
+        diagram->scene()->connectorItem(connector)->sceneBoundingRect()));
+    QVERIFY(showsWhole(diagram, "ConsoleIn0"));
     const QString shot = qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT");
     if (!shot.isEmpty())
         window.grab().save(shot + ".tab.png");
@@ -307,6 +340,8 @@ void TestOnlineDocks::dragOntoTheTabActivateAndSaveTheLiveSystem()
     const Profile::RtsComponent *placed = again->diagram()->model()->component("ConsoleOut0");
     QVERIFY(placed && placed->layout);
     QCOMPARE(placed->layout->x, QStringLiteral("520"));
+    QTRY_VERIFY(showsWhole(again->diagram(), "ConsoleIn0"));
+    QTRY_VERIFY(showsWhole(again->diagram(), "ConsoleOut0"));
     QTRY_COMPARE_WITH_TIMEOUT(again->diagram()->model()->connectorIds().size(), 1, 10000);
     diagram->disconnectLive(diagram->model()->connectorIds().first());
     QTRY_COMPARE_WITH_TIMEOUT(diagram->model()->connectorIds().size(), 0, 10000);

@@ -14,11 +14,14 @@
 #include "systemmodel.h"
 #include "systemscene.h"
 
+#include <algorithm>
+
 #include <QDragEnterEvent>
 #include <QGraphicsView>
 #include <QLabel>
 #include <QMenu>
 #include <QMimeData>
+#include <QScrollBar>
 #include <QSettings>
 #include <QTimer>
 #include <QToolBar>
@@ -74,6 +77,11 @@ OnlineDiagram::OnlineDiagram(OnlineSession *session, QWidget *parent)
             Qt::QueuedConnection);
     connect(m_model, &SystemModel::componentAdded, this, &OnlineDiagram::applyColours,
             Qt::QueuedConnection);
+    // Connected after the scene, so its items are already there to fit or scroll to.
+    connect(m_model, &SystemModel::componentAdded, this, &OnlineDiagram::revealComponent);
+    connect(m_model, &SystemModel::componentChanged, this, &OnlineDiagram::keepDiagramInView);
+    connect(m_model, &SystemModel::connectorAdded, this, &OnlineDiagram::keepDiagramInView);
+    connect(m_model, &SystemModel::connectorRemoved, this, &OnlineDiagram::keepDiagramInView);
 }
 
 OnlineDiagram::~OnlineDiagram() = default;
@@ -85,6 +93,10 @@ void OnlineDiagram::buildUi()
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->setAcceptDrops(true);
     m_view->viewport()->installEventFilter(this);
+    m_view->installEventFilter(this);
+    // Scrolling by the bars (drag, arrows, wheel over them) is the user navigating too.
+    for (QScrollBar *bar : {m_view->horizontalScrollBar(), m_view->verticalScrollBar()})
+        connect(bar, &QScrollBar::actionTriggered, this, [this] { m_keepFitted = false; });
     m_view->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_view, &QGraphicsView::customContextMenuRequested, this,
             &OnlineDiagram::showContextMenu);
@@ -375,8 +387,15 @@ bool OnlineDiagram::dropComponents(const QByteArray &data, const QPointF &sceneP
 
 bool OnlineDiagram::eventFilter(QObject *watched, QEvent *event)
 {
+    if (watched == m_view) {
+        if (event->type() == QEvent::KeyPress)
+            m_keepFitted = false; // arrow and page keys scroll the view
+        return QWidget::eventFilter(watched, event);
+    }
     if (watched != m_view->viewport())
         return QWidget::eventFilter(watched, event);
+    if (filterViewEvent(event))
+        return true;
     const QString mime = NameServiceModel::componentMimeType();
     switch (event->type()) {
     case QEvent::DragEnter:
@@ -399,6 +418,64 @@ bool OnlineDiagram::eventFilter(QObject *watched, QEvent *event)
     default:
         return QWidget::eventFilter(watched, event);
     }
+}
+
+bool OnlineDiagram::filterViewEvent(QEvent *event)
+{
+    switch (event->type()) {
+    case QEvent::Wheel:
+    case QEvent::MouseButtonPress:
+        m_keepFitted = false; // the user navigates now; never move the view under them
+        break;
+    case QEvent::Resize:
+    case QEvent::Show:
+        // The tab settles into its size after the first components arrive.
+        keepDiagramInView();
+        break;
+    default:
+        break;
+    }
+    return false;
+}
+
+void OnlineDiagram::keepDiagramInView()
+{
+    if (m_keepFitted && m_view->isVisible())
+        fitFreshDiagram();
+}
+
+void OnlineDiagram::revealComponent(const QString &instanceName)
+{
+    if (m_keepFitted) {
+        keepDiagramInView();
+        return;
+    }
+    growSceneRect();
+    if (const ComponentItem *item = m_scene->componentItem(instanceName))
+        m_view->ensureVisible(item);
+}
+
+void OnlineDiagram::growSceneRect()
+{
+    // Room around the diagram: the view can centre it, scroll a new component in with a margin
+    // and let one be dragged past the edge; it only grows, so the view never jumps.
+    const QRectF wanted = m_scene->diagramRect().adjusted(-400, -300, 400, 300);
+    if (!m_view->sceneRect().contains(wanted))
+        m_view->setSceneRect(m_view->sceneRect().united(wanted));
+}
+
+void OnlineDiagram::fitFreshDiagram()
+{
+    const QRectF diagram = m_scene->diagramRect();
+    if (diagram.isEmpty())
+        return;
+    growSceneRect();
+    // The whole diagram, centred, as the offline canvas opens a system; never magnified.
+    const QRectF viewport = m_view->viewport()->rect();
+    const qreal factor
+        = std::min({viewport.width() / diagram.width(), viewport.height() / diagram.height(), 1.0});
+    m_view->setTransform(QTransform::fromScale(factor, factor));
+    m_view->centerOn(diagram.center());
 }
 
 } // namespace SystemEditor

@@ -46,6 +46,10 @@ struct LiveComponentPoll
  * and each component's ports and connectors every portRefreshRounds() rounds (staggered, and at
  * once after this diagram connects or disconnects or the component answers again); components
  * that stop answering turn black instead of raising errors.
+ *
+ * Like the offline canvas, the view keeps the whole diagram fitted (centred, never above 100 %)
+ * as components and connectors arrive and the tab settles, until the user zooms, scrolls or
+ * clicks; after that a newly added component is scrolled into view instead.
  */
 class OnlineDiagram : public QWidget
 {
@@ -155,6 +159,11 @@ private:
     std::optional<Corba::PortInfo> livePort(const QString &portName) const;
     void submitConnection(const QString &host, const std::function<void()> &call);
     void writeLiveSystem(const QString &path, const OnlineResult &result);
+    void keepDiagramInView();
+    void revealComponent(const QString &instanceName);
+    void fitFreshDiagram();
+    void growSceneRect();
+    bool filterViewEvent(QEvent *event);
 
     OnlineSession *m_session;
     QUndoStack *m_undoStack;
@@ -168,6 +177,9 @@ private:
     int m_round = 0;
     int m_portReads = 0;
     ConnectorEditor m_connectorEditor;
+    /// True until the user zooms, scrolls or clicks in the view: until then the whole diagram
+    /// is kept fitted into it.
+    bool m_keepFitted = true;
 };
 
 } // namespace SystemEditor
