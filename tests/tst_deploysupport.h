@@ -65,18 +65,10 @@ inline bool startManager(LiveTest::LiveSystem &live, const QString &namingFormat
     if (!live.startNameServer(error))
         return false;
     *managerPort = LiveTest::freePort();
-    const QStringList arguments {"-d",
-                                 "-o",
-                                 QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(*managerPort),
-                                 "-o",
-                                 "corba.nameservers=" + live.namingServer(),
-                                 "-o",
-                                 "naming.formats=" + namingFormat,
-                                 "-o",
-                                 "manager.naming_formats=" + managerFormat,
-                                 "-o",
-                                 "exec_cxt.periodic.rate=200"};
-    return live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", error)
+    const QStringList options {
+        "corba.nameservers=" + live.namingServer(), "naming.formats=" + namingFormat,
+        "manager.naming_formats=" + managerFormat, "exec_cxt.periodic.rate=200"};
+    return live.startManager(QStringLiteral(RTMANAGER_PATH), *managerPort, options, error)
         != nullptr;
 }
 

@@ -110,14 +110,12 @@ void TestManagerJoin::init()
     m_dir = std::make_unique<QTemporaryDir>();
     m_port = LiveTest::freePort();
     QString error;
-    QProcess *master = m_live->startProcess(
-        QStringLiteral(RTMANAGER_PATH),
-        {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(m_port), "-o", "naming.enable=NO",
-         "-o", "manager.components.precreate=ConsoleIn"},
-        "rtmanager ready", &error);
+    QProcess *master = m_live->startManager(
+        QStringLiteral(RTMANAGER_PATH), m_port,
+        {"naming.enable=NO", "manager.components.precreate=ConsoleIn"}, &error);
     QVERIFY2(master, qPrintable(error));
-    CORBA::Object_var object = m_orb->string_to_object(
-        QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(m_port).toUtf8().constData());
+    CORBA::Object_var object
+        = m_orb->string_to_object(LiveTest::managerLocation(m_port).constData());
     m_master = RTM::Manager::_narrow(object);
     QVERIFY(!CORBA::is_nil(m_master));
 }
@@ -200,8 +198,7 @@ void TestManagerJoin::spawnedSlavesHaveJoinedWhenCreateReturns()
         QStringLiteral(RTMANAGER_PATH),
         {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o", "naming.enable=NO"});
     QVERIFY(master.waitForStarted(10000));
-    CORBA::Object_var object = m_orb->string_to_object(
-        QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8().constData());
+    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
     RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
     QTRY_VERIFY_WITH_TIMEOUT(LiveTest::isListening(port), 10000);
 

@@ -169,8 +169,8 @@ RTM::Manager_ptr TestManagerLive::startMaster(QString *error, QProcess **process
         return RTM::Manager::_nil();
     if (process)
         *process = started;
-    CORBA::Object_var object =
-        m_orb->string_to_object(QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(m_masterPort).toUtf8().constData());
+    CORBA::Object_var object
+        = m_orb->string_to_object(LiveTest::managerLocation(m_masterPort).constData());
     return RTM::Manager::_narrow(object);
 }
 
@@ -558,8 +558,7 @@ void TestManagerLive::commandLine()
                                             {"-d", "-p", QString::number(port), "-o", "naming.enable=NO"},
                                             QString("rtmanager ready on 127.0.0.1:%1").arg(port), &error);
     QVERIFY2(master, qPrintable(error));
-    CORBA::Object_var object =
-        m_orb->string_to_object(QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8().constData());
+    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
     RTM::Manager_var manager = RTM::Manager::_narrow(object);
     QVERIFY(manager->is_master());
 
@@ -598,8 +597,8 @@ void TestManagerLive::shutdownWithoutComponents()
     QProcess *process = m_live->startProcess(QStringLiteral(RTMANAGER_PATH), args, "rtmanager ready", &error);
     QVERIFY2(process, qPrintable(error));
     if (deleteLast) {
-        CORBA::Object_var object =
-            m_orb->string_to_object(QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8().constData());
+        CORBA::Object_var object
+            = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
         RTM::Manager_var lonely = RTM::Manager::_narrow(object);
         QVERIFY(process->state() == QProcess::Running);
         QCOMPARE(lonely->delete_component("ConsoleIn0"), RTC::RTC_OK);

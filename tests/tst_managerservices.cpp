@@ -88,23 +88,13 @@ void TestManagerServices::init()
     QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
     m_port = LiveTest::freePort();
     // A slow watchdog, so that a stopped slave stays listed while the master is asked.
-    const QStringList args {"-d",
-                            "-o",
-                            QString("corba.endpoints=127.0.0.1:%1").arg(m_port),
-                            "-o",
-                            "corba.nameservers=" + m_live->namingServer(),
-                            "-o",
-                            "naming.formats=svchost.host_cxt/%n.rtc",
-                            "-o",
-                            "manager.naming_formats=svchost.host_cxt/%n.mgr",
-                            "-o",
-                            "manager.components.precreate=ConsoleIn",
-                            "-o",
-                            "manager.slave_call_timeout=800",
-                            "-o",
-                            "manager.slave_check_interval=60000"};
-    m_process
-        = m_live->startProcess(QStringLiteral(RTMANAGER_PATH), args, "rtmanager ready", &error);
+    const QStringList options {"corba.nameservers=" + m_live->namingServer(),
+                               "naming.formats=svchost.host_cxt/%n.rtc",
+                               "manager.naming_formats=svchost.host_cxt/%n.mgr",
+                               "manager.components.precreate=ConsoleIn",
+                               "manager.slave_call_timeout=800",
+                               "manager.slave_check_interval=60000"};
+    m_process = m_live->startManager(QStringLiteral(RTMANAGER_PATH), m_port, options, &error);
     QVERIFY2(m_process, qPrintable(error));
     m_master = managerAt(m_port);
     QVERIFY(!CORBA::is_nil(m_master));
@@ -123,8 +113,7 @@ void TestManagerServices::cleanupTestCase()
 
 RTM::Manager_ptr TestManagerServices::managerAt(quint16 port)
 {
-    CORBA::Object_var object = m_orb->string_to_object(
-        QString("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8().constData());
+    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
     return RTM::Manager::_unchecked_narrow(object);
 }
 

@@ -36,6 +36,8 @@ private:
     using Result = RtctlResult;
     Result rtctl(const QStringList &arguments, const QString &cwd = QString(),
                  const QString &servers = QString());
+    bool startRealManager(quint16 port, const QString &hostName, const QString &precreate,
+                          QString *error);
     QString host() const
     {
         return QStringLiteral("/%1/rthost.host_cxt").arg(m_live.namingServer());
@@ -51,6 +53,17 @@ TestRtctlRt::Result TestRtctlRt::rtctl(const QStringList &arguments, const QStri
     return runRtctl(arguments,
                     {{QStringLiteral("RTCSH_CWD"), cwd.isNull() ? host() : cwd},
                      {QStringLiteral("RTCTREE_NAMESERVERS"), servers}});
+}
+
+// An rtmanager master on `port`, its components and itself registered under `hostName`.host_cxt.
+bool TestRtctlRt::startRealManager(quint16 port, const QString &hostName, const QString &precreate,
+                                   QString *error)
+{
+    const QStringList options {"corba.nameservers=" + m_live.namingServer(),
+                               "naming.formats=" + hostName + ".host_cxt/%n.rtc",
+                               "manager.naming_formats=" + hostName + ".host_cxt/%n.mgr",
+                               "manager.components.precreate=" + precreate};
+    return m_live.startManager(QStringLiteral(RTMANAGER_PATH), port, options, error) != nullptr;
 }
 
 void TestRtctlRt::initTestCase()
@@ -337,15 +350,7 @@ void TestRtctlRt::drivesTheRealManager()
 {
     const quint16 port = LiveTest::freePort();
     QString error;
-    QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
-                            {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
-                             "-o", "corba.nameservers=" + m_live.namingServer(), "-o",
-                             "naming.formats=realhost.host_cxt/%n.rtc", "-o",
-                             "manager.naming_formats=realhost.host_cxt/%n.mgr", "-o",
-                             "manager.components.precreate=ConsoleIn,ConsoleOut"},
-                            "rtmanager ready", &error),
-        qPrintable(error));
+    QVERIFY2(startRealManager(port, "realhost", "ConsoleIn,ConsoleOut", &error), qPrintable(error));
     const QString dir = QStringLiteral("/%1/realhost.host_cxt").arg(m_live.namingServer());
     const Result ls = rtctl({"ls"}, dir);
     QCOMPARE(ls.code, 0);
@@ -371,15 +376,7 @@ void TestRtctlRt::forkAndRestartTheRealManager()
 {
     const quint16 port = LiveTest::freePort();
     QString error;
-    QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
-                            {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
-                             "-o", "corba.nameservers=" + m_live.namingServer(), "-o",
-                             "naming.formats=forkhost.host_cxt/%n.rtc", "-o",
-                             "manager.naming_formats=forkhost.host_cxt/%n.mgr", "-o",
-                             "manager.components.precreate=ConsoleIn"},
-                            "rtmanager ready", &error),
-        qPrintable(error));
+    QVERIFY2(startRealManager(port, "forkhost", "ConsoleIn", &error), qPrintable(error));
     const QString dir = QStringLiteral("/%1/forkhost.host_cxt").arg(m_live.namingServer());
     const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(port);
     const Result forked = rtctl({"mgr", direct, "fork"}, dir);

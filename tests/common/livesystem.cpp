@@ -92,6 +92,11 @@ LiveSystem::~LiveSystem()
     stopAll();
 }
 
+QByteArray managerLocation(quint16 port)
+{
+    return QStringLiteral("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8();
+}
+
 QString LiveSystem::namingServer() const
 {
     return QStringLiteral("127.0.0.1:%1").arg(m_namingPort);
@@ -147,6 +152,16 @@ QProcess *LiveSystem::startPeer(const QStringList &components, QString *error, q
     arguments += components;
     return startProcess(QStringLiteral(RTSTUDIO_LIVEPEER_PATH), arguments, QStringLiteral("ready"),
                         error);
+}
+
+QProcess *LiveSystem::startManager(const QString &program, quint16 port, const QStringList &options,
+                                   QString *error)
+{
+    QStringList arguments {QStringLiteral("-d"), QStringLiteral("-o"),
+                           QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port)};
+    for (const QString &option : options)
+        arguments << QStringLiteral("-o") << option;
+    return startProcess(program, arguments, QStringLiteral("rtmanager ready"), error);
 }
 
 QProcess *LiveSystem::startProcess(const QString &program, const QStringList &arguments,

@@ -17,6 +17,8 @@ quint16 freePort();
 bool isListening(quint16 port);
 /// SIGSTOP takes effect asynchronously: waits (bounded) until every thread of `pid` is stopped.
 bool waitUntilStopped(qint64 pid, int timeoutMs = 5000);
+/// `corbaloc:iiop:127.0.0.1:PORT/manager`: the object key of an rtmanager serving on `port`.
+QByteArray managerLocation(quint16 port);
 
 /**
  * Real peer processes for live tests: omniNames, the test peer (rtstudio_livepeer) or any other
@@ -48,6 +50,12 @@ public:
     /// Starts `program` and waits up to `timeoutMs` until its standard output contains `readyText`.
     QProcess *startProcess(const QString &program, const QStringList &arguments,
                            const QString &readyText, QString *error, int timeoutMs = 20000);
+    /**
+     * Starts the rtmanager `program` as a master (`-d`) serving on 127.0.0.1:`port`, each of
+     * `options` passed as `-o KEY=VALUE` after the endpoint, and waits for "rtmanager ready".
+     */
+    QProcess *startManager(const QString &program, quint16 port, const QStringList &options,
+                           QString *error);
     /// Kills and reaps one process started here.
     void stop(QProcess *process);
     /// Kills and reaps everything started here.
