@@ -8,6 +8,7 @@
 #include "languagepage.h"
 #include "profileio.h"
 #include "rtcxml.h"
+#include "tst_buildersupport.h"
 #include "typecatalog.h"
 
 #include <QCheckBox>
@@ -28,14 +29,7 @@ using namespace Builder;
 
 namespace {
 
-Profile::RtcProfile fixture()
-{
-    QFile file(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builder/component.xml"));
-    if (!file.open(QIODevice::ReadOnly))
-        qFatal("missing fixture component.xml");
-    Profile::Diagnostics diagnostics;
-    return *Profile::readRtcXml(file.readAll(), file.fileName(), &diagnostics);
-}
+using BuilderTest::fixture;
 
 QString conformance(const char *name)
 {
@@ -93,11 +87,7 @@ private:
 void TestBuilderBasic::initTestCase()
 {
     QVERIFY(m_settingsDir.isValid());
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_settingsDir.path());
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-    QCoreApplication::setOrganizationName(QStringLiteral("RtStudioTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("tst_builderbasic"));
-    TypeCatalog::setUserDirectories({});
+    BuilderTest::isolateSettings(m_settingsDir, QStringLiteral("tst_builderbasic"));
 }
 
 void TestBuilderBasic::abstractIsTypedAndUndone()

@@ -18,6 +18,7 @@
 #include "rtcxmlpage.h"
 #include "serviceportspage.h"
 #include "serviceporttreemodel.h"
+#include "tst_buildersupport.h"
 #include "typecatalog.h"
 
 #include <QComboBox>
@@ -39,14 +40,7 @@ using namespace Builder;
 
 namespace {
 
-Profile::RtcProfile fixture()
-{
-    QFile file(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builder/component.xml"));
-    if (!file.open(QIODevice::ReadOnly))
-        qFatal("missing fixture component.xml");
-    Profile::Diagnostics diagnostics;
-    return *Profile::readRtcXml(file.readAll(), file.fileName(), &diagnostics);
-}
+using BuilderTest::fixture;
 
 /// An editor over the fixture with its own model, stack and IDL catalog.
 struct Editor
@@ -111,13 +105,8 @@ private:
 
 void TestBuilderPages::initTestCase()
 {
-    // Keep the IDL folder settings of the test apart from the user's.
     QVERIFY(m_settingsDir.isValid());
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_settingsDir.path());
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-    QCoreApplication::setOrganizationName(QStringLiteral("RtStudioTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("tst_builderpages"));
-    TypeCatalog::setUserDirectories({});
+    BuilderTest::isolateSettings(m_settingsDir, QStringLiteral("tst_builderpages"));
 }
 
 void TestBuilderPages::editorHasEveryPage()
