@@ -74,6 +74,8 @@ private slots:
     void dragOntoTheTabActivateAndSaveTheLiveSystem();
 
 private:
+    void showWithServer(MainWindow &window, QSize size);
+
     LiveTest::LiveSystem m_live;
 };
 
@@ -110,6 +112,18 @@ void TestOnlineDocks::init()
     QSettings().clear();
 }
 
+// Shows `window` at `size` in the System Editor, its name-service view listing the test's server.
+void TestOnlineDocks::showWithServer(MainWindow &window, QSize size)
+{
+    window.resize(size);
+    window.show();
+    window.showPerspective(Perspective::Id::SystemEditor);
+    SystemEditor::NameServiceView *view = window.onlineDocks()->nameService();
+    QSignalSpy refreshed(view, &SystemEditor::NameServiceView::serverRefreshed);
+    QVERIFY(view->addServer(m_live.namingServer()));
+    QVERIFY(refreshed.wait(15000));
+}
+
 void TestOnlineDocks::docksFollowThePerspective()
 {
     MainWindow window;
@@ -132,13 +146,10 @@ void TestOnlineDocks::docksFollowThePerspective()
 void TestOnlineDocks::choosingAComponentShowsItsConfigurationAndContexts()
 {
     MainWindow window;
-    window.resize(1300, 850);
-    window.show();
-    window.showPerspective(Perspective::Id::SystemEditor);
+    showWithServer(window, {1300, 850});
+    if (QTest::currentTestFailed())
+        return;
     SystemEditor::NameServiceView *view = window.onlineDocks()->nameService();
-    QSignalSpy refreshed(view, &SystemEditor::NameServiceView::serverRefreshed);
-    QVERIFY(view->addServer(m_live.namingServer()));
-    QVERIFY(refreshed.wait(15000));
 
     const QString path
         = QStringLiteral("/%1/dockhost.host_cxt/ConfigSample0.rtc").arg(m_live.namingServer());
@@ -237,13 +248,10 @@ void TestOnlineDocks::restoresASystemThroughTheOnlineMenu()
 void TestOnlineDocks::dragOntoTheTabActivateAndSaveTheLiveSystem()
 {
     MainWindow window;
-    window.resize(1400, 900);
-    window.show();
-    window.showPerspective(Perspective::Id::SystemEditor);
+    showWithServer(window, {1400, 900});
+    if (QTest::currentTestFailed())
+        return;
     SystemEditor::NameServiceView *view = window.onlineDocks()->nameService();
-    QSignalSpy refreshed(view, &SystemEditor::NameServiceView::serverRefreshed);
-    QVERIFY(view->addServer(m_live.namingServer()));
-    QVERIFY(refreshed.wait(15000));
     window.findChild<QAction *>("actionNewOnlineDiagram")->trigger();
     auto *online = qobject_cast<OnlineDocument *>(window.activeDocument());
     QVERIFY(online);
