@@ -57,6 +57,24 @@ ServicePortSide sideOf(const SystemModel &model, const QString &instance, const 
     return {instance, info->profileName, info->interfaces};
 }
 
+/// The test system's model in a properties panel; edits go onto `stack`.
+struct PanelFixture
+{
+    std::unique_ptr<SystemModel> model = loadModel();
+    QUndoStack stack;
+    std::unique_ptr<PropertiesPanel> panel;
+
+    /// False when the system does not load; else the panel shows `instance`.
+    bool show(const QString &instance)
+    {
+        if (!model)
+            return false;
+        panel = std::make_unique<PropertiesPanel>(model.get(), &stack);
+        panel->showComponent(instance);
+        return true;
+    }
+};
+
 const QString SensorFilter = QStringLiteral("c-sensor-filter");
 const QString Control = QStringLiteral("s-control");
 
@@ -282,12 +300,9 @@ void TestSeProps::serviceDirectionFixed()
 
 void TestSeProps::configurationWidgetsFollowTheProfile()
 {
-    std::unique_ptr<SystemModel> model = loadModel();
-    QVERIFY(model);
-    QUndoStack stack;
-    PropertiesPanel panel(model.get(), &stack);
-    panel.showComponent(QStringLiteral("Filter0"));
-    ConfigurationSetEditor *editor = panel.configurationEditor();
+    PanelFixture f;
+    QVERIFY(f.show(QStringLiteral("Filter0")));
+    ConfigurationSetEditor *editor = f.panel->configurationEditor();
     auto *slider = qobject_cast<QSlider *>(editor->parameterEditor("gain")->input());
     QVERIFY(slider);
     QCOMPARE(slider->maximum(), 20); // 0..10 by 0.5
@@ -298,7 +313,7 @@ void TestSeProps::configurationWidgetsFollowTheProfile()
              QStringLiteral("mode:"));
     QCOMPARE(slider->value(), 2);
     const auto value = [&](int set, int index) {
-        return model->component(QStringLiteral("Filter0"))
+        return f.model->component(QStringLiteral("Filter0"))
             ->configurationSets.at(set)
             .data.at(index)
             .data.value_or(QString());
@@ -309,93 +324,84 @@ void TestSeProps::configurationWidgetsFollowTheProfile()
     QVERIFY(slow);
     QTest::mouseClick(slow, Qt::LeftButton);
     QCOMPARE(value(0, 1), QStringLiteral("slow"));
-    QCOMPARE(stack.count(), 2);
-    stack.undo();
+    QCOMPARE(f.stack.count(), 2);
+    f.stack.undo();
     QCOMPARE(value(0, 1), QStringLiteral("fast"));
     QVERIFY(editor->parameterEditor("mode")->findChild<QRadioButton *>("choice_fast")->isChecked());
-    stack.undo();
+    f.stack.undo();
     QCOMPARE(value(0, 0), QStringLiteral("1.0"));
     QCOMPARE(slider->value(), 2);
-    stack.redo();
-    stack.redo();
+    f.stack.redo();
+    f.stack.redo();
     QCOMPARE(value(0, 0), QStringLiteral("1.5"));
     QCOMPARE(value(0, 1), QStringLiteral("slow"));
 }
 
 void TestSeProps::configurationRejectsBrokenConstraint()
 {
-    std::unique_ptr<SystemModel> model = loadModel();
-    QVERIFY(model);
-    QUndoStack stack;
-    PropertiesPanel panel(model.get(), &stack);
-    panel.showComponent(QStringLiteral("Filter0"));
-    QVERIFY(!panel.setValue(QStringLiteral("gain"), QStringLiteral("42")));
-    QVERIFY(!panel.setValue(QStringLiteral("mode"), QStringLiteral("turbo")));
-    QCOMPARE(stack.count(), 0);
-    ParameterEditor *gain = panel.configurationEditor()->parameterEditor("gain");
+    PanelFixture f;
+    QVERIFY(f.show(QStringLiteral("Filter0")));
+    QVERIFY(!f.panel->setValue(QStringLiteral("gain"), QStringLiteral("42")));
+    QVERIFY(!f.panel->setValue(QStringLiteral("mode"), QStringLiteral("turbo")));
+    QCOMPARE(f.stack.count(), 0);
+    ParameterEditor *gain = f.panel->configurationEditor()->parameterEditor("gain");
     gain->setValue(QStringLiteral("42")); // as a pasted value: shown, refused, explained
     QVERIFY(!gain->error().isEmpty());
-    QCOMPARE(stack.count(), 0);
-    QVERIFY(panel.setValue(QStringLiteral("gain"), QStringLiteral("9.5")));
-    QCOMPARE(stack.count(), 1);
+    QCOMPARE(f.stack.count(), 0);
+    QVERIFY(f.panel->setValue(QStringLiteral("gain"), QStringLiteral("9.5")));
+    QCOMPARE(f.stack.count(), 1);
 }
 
 void TestSeProps::configurationTextFallbackAndSets()
 {
-    std::unique_ptr<SystemModel> model = loadModel();
-    QVERIFY(model);
-    QUndoStack stack;
-    PropertiesPanel panel(model.get(), &stack);
-    panel.showComponent(QStringLiteral("Sink0")); // its profile lists no parameters
-    ConfigurationSetEditor *editor = panel.configurationEditor();
+    PanelFixture f;
+    QVERIFY(f.show(QStringLiteral("Sink0"))); // its profile lists no parameters
+    ConfigurationSetEditor *editor = f.panel->configurationEditor();
     auto *text = qobject_cast<QLineEdit *>(editor->parameterEditor("label")->input());
     QVERIFY(text);
     text->selectAll();
     QTest::keyClicks(text, QStringLiteral("end"));
-    const auto sink = [&] { return model->component(QStringLiteral("Sink0")); };
+    const auto sink = [&] { return f.model->component(QStringLiteral("Sink0")); };
     QCOMPARE(sink()->configurationSets.at(0).data.at(0).data, QStringLiteral("end"));
-    QCOMPARE(stack.count(), 1); // typing merges into one step
-    stack.undo();
+    QCOMPARE(f.stack.count(), 1); // typing merges into one step
+    f.stack.undo();
     QCOMPARE(sink()->configurationSets.at(0).data.at(0).data, QStringLiteral("sink"));
-    stack.redo();
+    f.stack.redo();
 
-    panel.showComponent(QStringLiteral("Filter0"));
+    f.panel->showComponent(QStringLiteral("Filter0"));
     editor->addSet();
-    QCOMPARE(model->component("Filter0")->configurationSets.size(), 3);
-    QCOMPARE(model->component("Filter0")->configurationSets.last().id, QStringLiteral("new_set"));
-    QCOMPARE(model->component("Filter0")->configurationSets.last().data.at(1).data,
+    QCOMPARE(f.model->component("Filter0")->configurationSets.size(), 3);
+    QCOMPARE(f.model->component("Filter0")->configurationSets.last().id, QStringLiteral("new_set"));
+    QCOMPARE(f.model->component("Filter0")->configurationSets.last().data.at(1).data,
              QStringLiteral("fast")); // the profile's default
     QCOMPARE(editor->shownSet(), QStringLiteral("new_set"));
     editor->activateShownSet();
-    QCOMPARE(model->component("Filter0")->activeConfigurationSet, QStringLiteral("new_set"));
+    QCOMPARE(f.model->component("Filter0")->activeConfigurationSet, QStringLiteral("new_set"));
 
     QTemporaryDir dir;
-    std::unique_ptr<SystemModel> again = reopened(*model, dir);
+    std::unique_ptr<SystemModel> again = reopened(*f.model, dir);
     QVERIFY(again);
     QCOMPARE(again->component("Filter0")->configurationSets.size(), 3);
     QCOMPARE(again->component("Filter0")->activeConfigurationSet, QStringLiteral("new_set"));
     QCOMPARE(again->component("Sink0")->configurationSets.at(0).data.at(0).data,
              QStringLiteral("end"));
-    stack.undo();
-    stack.undo();
-    QCOMPARE(model->component("Filter0")->configurationSets.size(), 2);
+    f.stack.undo();
+    f.stack.undo();
+    QCOMPARE(f.model->component("Filter0")->configurationSets.size(), 2);
 }
 
 void TestSeProps::configurationArrayEditedPerElement()
 {
-    std::unique_ptr<SystemModel> model = loadModel();
-    QVERIFY(model);
-    QUndoStack stack;
-    PropertiesPanel panel(model.get(), &stack);
-    panel.showComponent(QStringLiteral("Filter0"));
-    ConfigurationSetEditor *editor = panel.configurationEditor();
+    PanelFixture f;
+    QVERIFY(f.show(QStringLiteral("Filter0")));
+    ConfigurationSetEditor *editor = f.panel->configurationEditor();
     QVERIFY(!editor->parameterEditor(QStringLiteral("weights")));
     ElementListEditor *weights = editor->elementEditor(QStringLiteral("weights"));
     QVERIFY(weights);
     QVERIFY(!editor->elementEditor(QStringLiteral("gain"))); // a scalar stays one widget
     QCOMPARE(weights->count(), 2);
     const auto stored = [&] {
-        return model->component(QStringLiteral("Filter0"))
+        return f.model->component(QStringLiteral("Filter0"))
             ->configurationSets.at(0)
             .data.at(2)
             .data.value_or(QString());
@@ -411,36 +417,36 @@ void TestSeProps::configurationArrayEditedPerElement()
     QVERIFY(!weights->element(1)->error().isEmpty());
     QVERIFY(weights->element(0)->error().isEmpty());
     QCOMPARE(stored(), QStringLiteral("0.25,0.75"));
-    QCOMPARE(stack.count(), 0);
-    QVERIFY(!panel.setValue(QStringLiteral("weights"), QStringLiteral("0.1,2")));
+    QCOMPARE(f.stack.count(), 0);
+    QVERIFY(!f.panel->setValue(QStringLiteral("weights"), QStringLiteral("0.1,2")));
     typeInto(weights->element(1), QStringLiteral("0.5"));
     QCOMPARE(stored(), QStringLiteral("0.25,0.5"));
-    QCOMPARE(stack.count(), 1);
+    QCOMPARE(f.stack.count(), 1);
 
     // Add and remove are steps of their own.
     QTest::mouseClick(weights->findChild<QPushButton *>(QStringLiteral("addElement_weights")),
                       Qt::LeftButton);
     QCOMPARE(weights->count(), 3);
     QCOMPARE(stored(), QStringLiteral("0.25,0.5,0.5"));
-    QCOMPARE(stack.count(), 2);
+    QCOMPARE(f.stack.count(), 2);
     typeInto(weights->element(2), QStringLiteral("1"));
     QCOMPARE(stored(), QStringLiteral("0.25,0.5,1"));
-    QCOMPARE(stack.count(), 3);
+    QCOMPARE(f.stack.count(), 3);
     QTest::mouseClick(weights->findChild<QToolButton *>(QStringLiteral("removeElement_0")),
                       Qt::LeftButton);
     QCOMPARE(stored(), QStringLiteral("0.5,1"));
-    QCOMPARE(stack.count(), 4);
+    QCOMPARE(f.stack.count(), 4);
     QCOMPARE(weights->count(), 2);
 
-    stack.undo();
+    f.stack.undo();
     QCOMPARE(stored(), QStringLiteral("0.25,0.5,1"));
     QCOMPARE(weights->count(), 3);
     QCOMPARE(weights->element(0)->value(), QStringLiteral("0.25"));
-    stack.undo();
-    stack.undo();
+    f.stack.undo();
+    f.stack.undo();
     QCOMPARE(stored(), QStringLiteral("0.25,0.5"));
     QCOMPARE(weights->value(), QStringLiteral("0.25,0.5"));
-    stack.redo();
+    f.stack.redo();
     QCOMPARE(stored(), QStringLiteral("0.25,0.5,0.5"));
 }
 
