@@ -145,6 +145,8 @@ private:
 
     std::mutex m_mutex;
     std::condition_variable m_slavesChanged;
+    /// One slave start at a time: concurrent creates must not pick one port twice or start one name twice.
+    std::mutex m_spawnMutex;
     std::vector<ComponentFactory> m_factories;
     std::vector<std::unique_ptr<Component>> m_components;
     std::vector<std::unique_ptr<Slave>> m_slaves;

@@ -84,6 +84,7 @@ RTM::Manager_ptr Manager::slaveFor(const CreateRequest &request, bool *remoteOnl
         const std::string address = normalizedHost(host) + ':' + std::to_string(port);
         if (address == m_address)
             return RTM::Manager::_duplicate(m_self);
+        std::lock_guard spawning(m_spawnMutex);
         {
             std::lock_guard lock(m_mutex);
             for (const auto &slave : m_slaves) {
@@ -101,6 +102,7 @@ RTM::Manager_ptr Manager::slaveFor(const CreateRequest &request, bool *remoteOnl
     const std::string name = *request.managerName;
     if (name == m_instanceName)
         return RTM::Manager::_duplicate(m_self);
+    std::lock_guard spawning(m_spawnMutex);
     if (name != "manager_%p") {
         std::lock_guard lock(m_mutex);
         for (const auto &slave : m_slaves) {

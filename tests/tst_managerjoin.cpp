@@ -200,25 +200,43 @@ void TestManagerJoin::spawnedSlavesHaveJoinedWhenCreateReturns()
     QVERIFY(master.waitForStarted(10000));
     CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
     RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
-    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::isListening(port), 10000);
+    // Ready when the manager answers, not merely when its port accepts connections.
+    const auto answers = [&manager] {
+        try {
+            manager->is_master();
+            return true;
+        } catch (const CORBA::Exception &) {
+            return false;
+        }
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(answers(), 10000);
 
     Hammer hammer(manager);
     std::vector<std::thread> creators;
     std::atomic_int created {0};
+    std::vector<QString> failures(SlaveCount);
     for (int i = 0; i < SlaveCount; ++i) {
-        creators.emplace_back([&manager, &created, i] {
+        creators.emplace_back([&manager, &created, &failures, i] {
             const QByteArray request = QString("ConsoleOut?manager_name=spawned%1").arg(i).toUtf8();
             try {
                 RTC::RTObject_var component = manager->create_component(request.constData());
                 if (!CORBA::is_nil(component))
                     ++created;
-            } catch (const CORBA::Exception &) {
-                // Counted as not created.
+                else
+                    failures[size_t(i)] = QString::fromUtf8(request) + QStringLiteral(": nil");
+            } catch (const CORBA::Exception &e) {
+                failures[size_t(i)] = QString::fromUtf8(request) + QStringLiteral(": ")
+                    + QString::fromLatin1(e._name());
             }
         });
     }
     for (std::thread &creator : creators)
         creator.join();
+    QStringList failed;
+    for (const QString &failure : failures)
+        if (!failure.isEmpty())
+            failed << failure;
+    QVERIFY2(failed.isEmpty(), qPrintable(failed.join(QStringLiteral("; "))));
     QCOMPARE(created.load(), SlaveCount);
     // Each slave knows its master at once, with no wait, since create_component returned.
     std::vector<pid_t> pids;
