@@ -1,0 +1,143 @@
+# SPDX-License-Identifier: MIT
+# package: how users' projects consume the SDK. The SDK presents itself as an OpenRTM-aist 2.1 prefix:
+#
+#   include/openrtm-2.1/rtm/      the component API, config_rtc.h, version.h
+#   include/openrtm-2.1/rtm/idl/  OpenRTM's IDL, omniidl's <Name>.hh, wrapper <Name>Skel.h / <Name>Stub.h
+#   include/openrtm-2.1/rtm/ext/  (extension IDL; empty)
+#   include/coil-2.1/coil/        coil (also as include/coil-2.0/coil/ for 2.0-era includes)
+#   lib/librtstudio_rtm.so        the runtime, coil, the component API and the IDL stubs in one library
+#   lib/cmake/openrtm-2.1/        OpenRTMConfig.cmake, OpenRTMConfigVersion.cmake (find_package(OpenRTM))
+#   lib/pkgconfig/                openrtm2.pc, openrtm-aist.pc (1.x name), libcoil.pc
+#   bin/                          rtm2-config, rtm-config, rtm2-skelwrapper, rtm-skelwrapper
+#   share/openrtm-2.1/            OPENRTM_DATA_DIR
+#
+# The prefix exists twice: staged in the build tree (CMAKE_BINARY_DIR is the prefix, so
+# -DCMAKE_PREFIX_PATH=<build dir> works without installing) and installed by cmake --install
+# (component "sdk"). Every file that names the prefix computes it from its own location, so one copy
+# of each serves both.
+
+set(RTSDK_OPENRTM_VERSION_MAJOR 2)
+set(RTSDK_OPENRTM_VERSION_MINOR 1)
+set(RTSDK_OPENRTM_VERSION_PATCH 0)
+set(RTSDK_OPENRTM_VERSION "2.1.0")
+set(RTSDK_OPENRTM_SHORT_VERSION 210)
+set(RTSDK_RTM_DIR "openrtm-2.1")
+set(RTSDK_COIL_DIR "coil-2.1")
+set(RTSDK_LIBRARY_NAME rtstudio_rtm)
+# Bare names only: OpenRTP's templates turn every "-l", "-L" and "-I" into a list separator.
+set(RTSDK_ORB_LIBRARIES omniORB4 omniDynamic4 omnithread pthread)
+
+set(rtsdk_package_dir "${CMAKE_CURRENT_LIST_DIR}")
+set(rtsdk_prefix "${CMAKE_BINARY_DIR}")
+set(rtsdk_generated "${CMAKE_CURRENT_BINARY_DIR}/package/include")
+
+string(REGEX MATCH "-[lLI]" rtsdk_bad_path "${rtsdk_prefix}")
+if(rtsdk_bad_path)
+    message(WARNING "The build directory ${rtsdk_prefix} contains \"${rtsdk_bad_path}\": OpenRTP-generated "
+        "projects split OPENRTM_INCLUDE_DIRS at it, so they cannot use this build tree as their prefix.")
+endif()
+
+find_package(PkgConfig REQUIRED)
+pkg_get_variable(RTSDK_OMNIORB_IDL_DIR omniORB4 idldir)
+execute_process(COMMAND "${PKG_CONFIG_EXECUTABLE}" --modversion omniORB4
+    OUTPUT_VARIABLE rtsdk_omniorb_version OUTPUT_STRIP_TRAILING_WHITESPACE)
+# omniidl has no default include path; OpenRTM's SDOPackage.idl includes <orb.idl> from omniORB's.
+set(RTSDK_IDLFLAGS_EXTRA "")
+if(RTSDK_OMNIORB_IDL_DIR)
+    set(RTSDK_IDLFLAGS_EXTRA " -I${RTSDK_OMNIORB_IDL_DIR}")
+endif()
+
+# --- Generated headers: rtm/config_rtc.h, rtm/version.h, rtm/idl/<Name>Skel.h and <Name>Stub.h.
+# The library is built against them too, from this folder.
+set(RTSDK_OMNIORB_VERSION_MACRO "")
+if(rtsdk_omniorb_version MATCHES "^4\\.([0-9]+)")
+    set(RTSDK_OMNIORB_VERSION_MACRO "#define RTM_OMNIORB_4${CMAKE_MATCH_1} 1")
+endif()
+set(RTSDK_VERSION "${PROJECT_VERSION}")
+configure_file("${rtsdk_package_dir}/config_rtc.h.in" "${rtsdk_generated}/rtm/config_rtc.h" @ONLY)
+configure_file("${rtsdk_package_dir}/version.h.in" "${rtsdk_generated}/rtm/version.h" @ONLY)
+
+file(GLOB rtsdk_idl_files CONFIGURE_DEPENDS "${RTSTUDIO_IDL_DIR}/*.idl")
+set(rtsdk_idl_headers "")
+foreach(idl IN LISTS rtsdk_idl_files)
+    get_filename_component(RTSDK_IDL_NAME "${idl}" NAME_WE)
+    foreach(RTSDK_WRAPPER_KIND Skel Stub)
+        string(TOUPPER "RTM_IDL_${RTSDK_IDL_NAME}${RTSDK_WRAPPER_KIND}_H" RTSDK_WRAPPER_GUARD)
+        configure_file("${rtsdk_package_dir}/idlwrapper.h.in"
+            "${rtsdk_generated}/rtm/idl/${RTSDK_IDL_NAME}${RTSDK_WRAPPER_KIND}.h" @ONLY)
+    endforeach()
+    list(APPEND rtsdk_idl_headers "${CMAKE_BINARY_DIR}/corba/generated/${RTSDK_IDL_NAME}.hh")
+endforeach()
+
+target_include_directories(rtsdk PUBLIC
+    $<BUILD_INTERFACE:${rtsdk_generated}>
+    $<BUILD_INTERFACE:${rtsdk_generated}/rtm/idl>)
+set_target_properties(rtsdk PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${rtsdk_prefix}/lib")
+
+# --- Files that compute the prefix themselves: written once, staged and installed as they are.
+set(RTSDK_OPENRTM_LIBRARIES_BARE "${RTSDK_LIBRARY_NAME};${RTSDK_ORB_LIBRARIES}")
+list(TRANSFORM RTSDK_OPENRTM_LIBRARIES_BARE PREPEND "-l" OUTPUT_VARIABLE rtsdk_l_flags)
+string(JOIN " " RTSDK_LIBS_L ${rtsdk_l_flags})
+string(JOIN " " RTSDK_OPENRTM_LIBRARIES_SPACED ${RTSDK_OPENRTM_LIBRARIES_BARE})
+
+set(rtsdk_cmake_dir "${rtsdk_prefix}/lib/cmake/${RTSDK_RTM_DIR}")
+configure_file("${rtsdk_package_dir}/OpenRTMConfig.cmake.in"
+    "${rtsdk_cmake_dir}/OpenRTMConfig.cmake" @ONLY)
+include(CMakePackageConfigHelpers)
+write_basic_package_version_file("${rtsdk_cmake_dir}/OpenRTMConfigVersion.cmake"
+    VERSION ${RTSDK_OPENRTM_VERSION} COMPATIBILITY AnyNewerVersion)
+
+set(rtsdk_pc_dir "${rtsdk_prefix}/lib/pkgconfig")
+set(RTSDK_PC_NAME "OpenRTM-aist")
+configure_file("${rtsdk_package_dir}/openrtm.pc.in" "${rtsdk_pc_dir}/openrtm2.pc" @ONLY)
+configure_file("${rtsdk_package_dir}/openrtm.pc.in" "${rtsdk_pc_dir}/openrtm-aist.pc" @ONLY)
+configure_file("${rtsdk_package_dir}/libcoil.pc.in" "${rtsdk_pc_dir}/libcoil.pc" @ONLY)
+
+set(rtsdk_exec_permissions OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE
+    WORLD_READ WORLD_EXECUTE)
+set(rtsdk_tools "")
+foreach(tool rtm2-config rtm-config)
+    configure_file("${rtsdk_package_dir}/rtm-config.in" "${rtsdk_prefix}/bin/${tool}"
+        @ONLY FILE_PERMISSIONS ${rtsdk_exec_permissions})
+    list(APPEND rtsdk_tools "${rtsdk_prefix}/bin/${tool}")
+endforeach()
+foreach(tool rtm2-skelwrapper rtm-skelwrapper)
+    configure_file("${rtsdk_package_dir}/rtm-skelwrapper.py" "${rtsdk_prefix}/bin/${tool}"
+        COPYONLY FILE_PERMISSIONS ${rtsdk_exec_permissions})
+    list(APPEND rtsdk_tools "${rtsdk_prefix}/bin/${tool}")
+endforeach()
+
+# --- The build-tree prefix: headers and omniidl output are copied at build time, so edits to the
+# headers reach users' builds without re-running CMake.
+file(MAKE_DIRECTORY "${rtsdk_prefix}/include/${RTSDK_RTM_DIR}/rtm/ext"
+    "${rtsdk_prefix}/share/${RTSDK_RTM_DIR}")
+add_custom_target(rtsdk_stage ALL
+    COMMAND "${CMAKE_COMMAND}"
+        "-DRTSDK_SOURCE_INCLUDE=${CMAKE_CURRENT_SOURCE_DIR}/include"
+        "-DRTSDK_GENERATED_INCLUDE=${rtsdk_generated}"
+        "-DRTSDK_IDL_DIR=${RTSTUDIO_IDL_DIR}"
+        "-DRTSDK_OMNIIDL_DIR=${CMAKE_BINARY_DIR}/corba/generated"
+        "-DRTSDK_PREFIX=${rtsdk_prefix}"
+        "-DRTSDK_RTM_DIR=${RTSDK_RTM_DIR}"
+        -P "${rtsdk_package_dir}/stage.cmake"
+    COMMENT "Staging the SDK prefix in the build tree"
+    VERBATIM)
+add_dependencies(rtsdk_stage rtcorba_stubs)
+
+# --- The installed prefix.
+set(rtsdk_include_rtm "include/${RTSDK_RTM_DIR}/rtm")
+install(TARGETS rtsdk LIBRARY DESTINATION lib COMPONENT sdk)
+install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/" "${rtsdk_generated}/rtm/"
+    DESTINATION "${rtsdk_include_rtm}" COMPONENT sdk FILES_MATCHING PATTERN "*.h")
+foreach(coil_dir coil-2.1 coil-2.0)
+    install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/include/coil/"
+        DESTINATION "include/${coil_dir}/coil" COMPONENT sdk FILES_MATCHING PATTERN "*.h")
+endforeach()
+install(FILES ${rtsdk_idl_files} ${rtsdk_idl_headers} DESTINATION "${rtsdk_include_rtm}/idl" COMPONENT sdk)
+install(DIRECTORY DESTINATION "${rtsdk_include_rtm}/ext" COMPONENT sdk)
+install(DIRECTORY DESTINATION "share/${RTSDK_RTM_DIR}" COMPONENT sdk)
+install(FILES "${rtsdk_cmake_dir}/OpenRTMConfig.cmake" "${rtsdk_cmake_dir}/OpenRTMConfigVersion.cmake"
+    DESTINATION "lib/cmake/${RTSDK_RTM_DIR}" COMPONENT sdk)
+install(FILES "${rtsdk_pc_dir}/openrtm2.pc" "${rtsdk_pc_dir}/openrtm-aist.pc" "${rtsdk_pc_dir}/libcoil.pc"
+    DESTINATION lib/pkgconfig COMPONENT sdk)
+install(PROGRAMS ${rtsdk_tools} DESTINATION bin COMPONENT sdk)
