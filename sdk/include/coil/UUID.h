@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+/*!
+ * @file UUID.h
+ * @brief coil::UUID: random (version 4) UUIDs as text.
+ */
+#ifndef COIL_UUID_H
+#define COIL_UUID_H
+
+#include <coil/config_coil.h>
+
+namespace coil
+{
+  /*! A random UUID (RFC 4122 version 4). */
+  class UUID
+  {
+  public:
+    /*! A new random UUID. */
+    UUID();
+    /*! The UUID as 36 characters, e.g. "1b4e28ba-2fa1-41d2-883f-0016d3cca427". */
+    const char* to_string();
+
+  private:
+    unsigned char m_bytes[16];
+    char m_text[37];
+  };
+
+  /*! OpenRTM-aist 2.x's UUID factory. */
+  namespace UUID_Generator
+  {
+    /*! A new random UUID, allocated with new; the arguments are ignored. */
+    UUID* generateUUID(int n, int h);
+  } // namespace UUID_Generator
+} // namespace coil
+
+#endif // COIL_UUID_H
