@@ -1,0 +1,994 @@
+// SPDX-License-Identifier: MIT
+// coil, the utility library of the component SDK: the OpenRTM-aist behaviour components rely on.
+#include <coil/Condition.h>
+#include <coil/Guard.h>
+#include <coil/Mutex.h>
+#include <coil/OS.h>
+#include <coil/Properties.h>
+#include <coil/Singleton.h>
+#include <coil/stringutil.h>
+#include <coil/Task.h>
+#include <coil/Time.h>
+#include <coil/TimeMeasure.h>
+#include <coil/TimeValue.h>
+#include <coil/UUID.h>
+
+#include <QRegularExpression>
+#include <QTest>
+
+#include <algorithm>
+#include <atomic>
+#include <deque>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+// The vector extraction OpenRTM-aist's ConfigSample (and OpenRTP's generated VectorConvert.h of
+// that generation) declares after coil's headers: a template in namespace std that splits at
+// commas and converts each element with coil::stringTo. coil itself has none.
+namespace std {
+template <typename T>
+std::istream &operator>>(std::istream &is, std::vector<T> &v)
+{
+    std::string s;
+    is >> s;
+    const coil::vstring sv = coil::split(s, ",");
+    v.resize(sv.size());
+    for (size_t i = 0; i < sv.size(); ++i) {
+        T tv;
+        if (coil::stringTo(tv, sv[i].c_str()))
+            v[i] = tv;
+    }
+    return is;
+}
+} // namespace std
+
+// The other published style: the same kind of operator in the global namespace, declared after
+// coil/stringutil.h (RT Studio's template and hrpsys put it there). A deque stands in for the
+// container so that both operators can live in this file.
+template <typename T>
+std::istream &operator>>(std::istream &is, std::deque<T> &v)
+{
+    std::string s;
+    std::getline(is, s);
+    v.clear();
+    for (const std::string &item : coil::split(s, ",")) {
+        T tv;
+        if (!coil::stringTo(tv, item.c_str())) {
+            is.setstate(std::ios::failbit);
+            return is;
+        }
+        v.push_back(tv);
+    }
+    return is;
+}
+
+Q_DECLARE_METATYPE(coil::vstring)
+
+namespace {
+
+const char *const kSpec[] = {
+    "implementation_id", "ConsoleIn",
+    "type_name",         "ConsoleIn",
+    "max_instance",      "1",
+    "conf.default.gain", "1.5",
+    "conf.default.name", "  padded  ",
+    "conf.mode1.gain",   "2.0",
+    "",
+};
+
+std::string storeText(coil::Properties &prop)
+{
+    std::ostringstream out;
+    prop.list(out);
+    return out.str();
+}
+
+class Counter : public coil::Singleton<Counter>
+{
+public:
+    std::atomic<int> hits{0};
+
+private:
+    friend class coil::Singleton<Counter>;
+    Counter() { ++constructed; }
+
+public:
+    static std::atomic<int> constructed;
+};
+std::atomic<int> Counter::constructed{0};
+
+class RecordingTask : public coil::Task
+{
+public:
+    int svc() override
+    {
+        svcThread = std::this_thread::get_id();
+        ++runs;
+        return 0;
+    }
+    void finalize() override
+    {
+        ++finalized;
+        coil::Task::finalize();
+    }
+    std::thread::id svcThread;
+    std::atomic<int> runs{0};
+    std::atomic<int> finalized{0};
+};
+
+} // namespace
+
+class TestSdkCoil : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    // Properties
+    void specArrayBuildsDefaultTree();
+    void specArrayStopsAtCount();
+    void valuesOverrideDefaults();
+    void nodeTree();
+    void writeAccessCreatesNodes();
+    void copiesAreDeep();
+    void mergeOperator();
+    void load_data();
+    void load();
+    void loadMalformedTextDoesNotCrash_data();
+    void loadMalformedTextDoesNotCrash();
+    void storeRoundTrip();
+    void streamDump();
+    void mapConstructor();
+
+    // stringutil
+    void split_data();
+    void split();
+    void toBool_data();
+    void toBool();
+    void trimming();
+    void escapeRoundTrip();
+    void replaceString();
+    void stringToNumbers_data();
+    void stringToNumbers();
+    void stringToBool_data();
+    void stringToBool();
+    void stringToStringKeepsBlanks();
+    void stringToDurations();
+    void stringToVectorViaNamespaceStdOperator();
+    void stringToContainerViaGlobalOperator();
+    void otosAndSprintf();
+    void addressChecks();
+    void listHelpers();
+    void argvHelpers();
+    void getlinePortableLineEnds();
+
+    // time, threads, OS
+    void timeValueNormalises_data();
+    void timeValueNormalises();
+    void timeValueFromDouble_data();
+    void timeValueFromDouble();
+    void timeValueArithmetic();
+    void timeFunctions();
+    void mutexAndGuard();
+    void conditionTimesOut();
+    void singletonCreatesOnce();
+    void taskRunsSvcInThread();
+    void timeMeasure();
+    void osWrappers();
+    void getOpt();
+    void uuid();
+};
+
+// ---------------------------------------------------------------- Properties
+
+void TestSdkCoil::specArrayBuildsDefaultTree()
+{
+    coil::Properties prop(kSpec);
+    QCOMPARE(prop.getProperty("implementation_id"), std::string("ConsoleIn"));
+    QCOMPARE(prop.getProperty("conf.default.gain"), std::string("1.5"));
+    QCOMPARE(prop.getProperty("conf.default.name"), std::string("padded"));
+    QCOMPARE(prop.getDefault("conf.default.gain"), std::string("1.5"));
+
+    const coil::Properties *conf = prop.findNode("conf");
+    QVERIFY(conf);
+    QCOMPARE(conf->getLeaf().size(), size_t(2)); // default, mode1
+    coil::Properties &def = prop.getNode("conf.default");
+    QCOMPARE(std::string(def.getName()), std::string("default"));
+    QCOMPARE(def.getRoot(), conf);
+    QCOMPARE(def.getProperty("gain"), std::string("1.5"));
+    QCOMPARE(def.propertyNames(), (coil::vstring{"gain", "name"}));
+    QCOMPARE(prop.size(), size_t(6));
+    QVERIFY(!prop.findNode("conf.nothing"));
+    QVERIFY(!prop.findNode(""));
+    QCOMPARE(prop.getProperty("conf.nothing"), std::string());
+}
+
+void TestSdkCoil::specArrayStopsAtCount()
+{
+    coil::Properties prop(kSpec, 4);
+    QCOMPARE(prop.propertyNames(), (coil::vstring{"implementation_id", "type_name"}));
+
+    const char *const empty[] = {""};
+    QCOMPARE(coil::Properties(empty).size(), size_t(0));
+}
+
+void TestSdkCoil::valuesOverrideDefaults()
+{
+    coil::Properties prop(kSpec);
+    QCOMPARE(prop.setProperty("conf.default.gain", "3"), std::string());
+    QCOMPARE(prop.getProperty("conf.default.gain"), std::string("3"));
+    QCOMPARE(prop.getDefault("conf.default.gain"), std::string("1.5"));
+    QCOMPARE(prop.setProperty("conf.default.gain", "4"), std::string("3"));
+
+    // An explicitly set empty value wins over the default; the two-argument form falls back.
+    prop.setProperty("max_instance", "");
+    QCOMPARE(prop.getProperty("max_instance"), std::string());
+    QCOMPARE(prop.getProperty("max_instance", "9"), std::string("9"));
+    QCOMPARE(prop.getProperty("implementation_id", "x"), std::string("ConsoleIn"));
+
+    prop.setDefault("exec_cxt.periodic.rate", "1000");
+    QCOMPARE(prop.getProperty("exec_cxt.periodic.rate"), std::string("1000"));
+    QCOMPARE(std::string(prop.findNode("exec_cxt.periodic.rate")->getDefaultValue()),
+             std::string("1000"));
+
+    // Blank keys are ignored.
+    QCOMPARE(prop.setProperty("  ", "x"), std::string());
+    QCOMPARE(prop.size(), size_t(7));
+}
+
+void TestSdkCoil::nodeTree()
+{
+    coil::Properties prop;
+    QVERIFY(prop.createNode("a.b.c"));
+    QVERIFY(!prop.createNode("a.b.c"));
+    QVERIFY(!prop.createNode(""));
+    QVERIFY(prop.hasKey("a"));
+    QVERIFY(!prop.hasKey("b"));
+    QVERIFY(prop.findNode("a")->hasKey("b"));
+
+    coil::Properties &made = prop.getNode("x.y");
+    QCOMPARE(std::string(made.getName()), std::string("y"));
+    QCOMPARE(&prop.getNode("x.y"), &made);
+    QCOMPARE(&prop.getNode(""), &prop);
+
+    // An escaped dot stays inside one name.
+    prop.setProperty("host\\.name.port", "80");
+    QVERIFY(prop.hasKey("host\\.name"));
+
+    coil::Properties *removed = prop.getNode("a").removeNode("b");
+    QVERIFY(removed);
+    QVERIFY(!removed->getRoot());
+    QVERIFY(!prop.findNode("a.b"));
+    QCOMPARE(removed->getProperty("c"), std::string());
+    QVERIFY(removed->findNode("c"));
+    delete removed;
+    QVERIFY(!prop.getNode("a").removeNode("nothing"));
+
+    // Deleting a child unlinks it from its parent.
+    delete prop.findNode("x.y");
+    QVERIFY(!prop.findNode("x.y"));
+    QVERIFY(prop.findNode("x"));
+
+    prop.clear();
+    QCOMPARE(prop.size(), size_t(0));
+    QVERIFY(prop.getLeaf().empty());
+}
+
+void TestSdkCoil::writeAccessCreatesNodes()
+{
+    coil::Properties prop(kSpec);
+    prop["conf.default.gain"] += "0";
+    QCOMPARE(prop.getProperty("conf.default.gain"), std::string("1.50"));
+    prop["new.key"] = "v";
+    QCOMPARE(prop.getProperty("new.key"), std::string("v"));
+
+    const coil::Properties &constProp = prop;
+    QCOMPARE(constProp["new.key"], std::string("v"));
+    QCOMPARE(constProp["absent.key"], std::string());
+    QVERIFY(!prop.findNode("absent.key"));
+}
+
+void TestSdkCoil::copiesAreDeep()
+{
+    coil::Properties prop(kSpec);
+    prop.setProperty("conf", "own value of an inner node");
+    coil::Properties copy(prop);
+    copy.setProperty("conf.default.gain", "9");
+    QCOMPARE(prop.getProperty("conf.default.gain"), std::string("1.5"));
+    QCOMPARE(copy.getProperty("conf"), std::string("own value of an inner node"));
+    QCOMPARE(copy.getDefault("conf.default.gain"), std::string("1.5"));
+
+    coil::Properties assigned("other", "x");
+    assigned = copy;
+    QCOMPARE(assigned.getProperty("conf.default.gain"), std::string("9"));
+    QCOMPARE(assigned.propertyNames(), copy.propertyNames());
+
+    // Assigning a node of a tree replaces its content and keeps it findable.
+    coil::Properties &node = prop.getNode("conf.mode1");
+    node = coil::Properties(kSpec).getNode("conf.default");
+    QCOMPARE(prop.getProperty("conf.mode1.gain"), std::string("1.5"));
+    QCOMPARE(prop.getProperty("conf.mode1.name"), std::string("padded"));
+
+    // Assigning a subtree to its own ancestor.
+    coil::Properties tree(kSpec);
+    tree = *tree.findNode("conf");
+    QCOMPARE(tree.getProperty("default.gain"), std::string("1.5"));
+}
+
+void TestSdkCoil::mergeOperator()
+{
+    coil::Properties base(kSpec);
+    coil::Properties extra;
+    extra.setProperty("conf.default.gain", "7");
+    extra.setProperty("vendor", "AIST");
+    base << extra;
+    QCOMPARE(base.getProperty("conf.default.gain"), std::string("7"));
+    QCOMPARE(base.getProperty("vendor"), std::string("AIST"));
+    QCOMPARE(base.getProperty("type_name"), std::string("ConsoleIn"));
+    base << base;
+    QCOMPARE(base.getProperty("vendor"), std::string("AIST"));
+}
+
+void TestSdkCoil::load_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<QByteArray>("key");
+    QTest::addColumn<QByteArray>("value");
+
+    QTest::newRow("colon") << QByteArray("corba.nameservers: localhost:2809\n")
+                           << QByteArray("corba.nameservers") << QByteArray("localhost:2809");
+    QTest::newRow("equals") << QByteArray("logger.enable = YES\n") << QByteArray("logger.enable")
+                            << QByteArray("YES");
+    QTest::newRow("blank separator") << QByteArray("naming.type corba\n")
+                                     << QByteArray("naming.type") << QByteArray("corba");
+    QTest::newRow("blanks around") << QByteArray("   a.b   :   c d   \n") << QByteArray("a.b")
+                                   << QByteArray("c d");
+    QTest::newRow("hash comment") << QByteArray("# a: 1\na: 2\n") << QByteArray("a")
+                                  << QByteArray("2");
+    QTest::newRow("bang comment") << QByteArray("  ! a: 1\n") << QByteArray("a") << QByteArray();
+    QTest::newRow("continuation")
+        << QByteArray("manager.modules.preload: A.so,\\\n    B.so,\\\n    C.so\nnext: 1\n")
+        << QByteArray("manager.modules.preload") << QByteArray("A.so,B.so,C.so");
+    QTest::newRow("after continuation") << QByteArray("x: a\\\n b\nnext: 1\n")
+                                        << QByteArray("next") << QByteArray("1");
+    QTest::newRow("escaped backslash ends line") << QByteArray("path: C:\\\\\nnext: 1\n")
+                                                 << QByteArray("path") << QByteArray("C:\\");
+    QTest::newRow("escaped separator in key") << QByteArray("a\\:b: c\n") << QByteArray("a:b")
+                                              << QByteArray("c");
+    QTest::newRow("escape sequences") << QByteArray("t: x\\ty\n") << QByteArray("t")
+                                      << QByteArray("x\ty");
+    QTest::newRow("crlf") << QByteArray("a: 1\r\nb: 2\r\n") << QByteArray("b")
+                          << QByteArray("2");
+    QTest::newRow("cr only") << QByteArray("a: 1\rb: 2\r") << QByteArray("b") << QByteArray("2");
+    QTest::newRow("no newline at end") << QByteArray("a: 1") << QByteArray("a")
+                                       << QByteArray("1");
+    QTest::newRow("continuation at end") << QByteArray("a: 1\\") << QByteArray("a")
+                                         << QByteArray("1");
+    QTest::newRow("key only") << QByteArray("flag\n") << QByteArray("flag") << QByteArray();
+    QTest::newRow("later wins") << QByteArray("a: 1\na: 2\n") << QByteArray("a")
+                                << QByteArray("2");
+}
+
+void TestSdkCoil::load()
+{
+    QFETCH(QByteArray, text);
+    QFETCH(QByteArray, key);
+    QFETCH(QByteArray, value);
+
+    std::istringstream in(text.toStdString());
+    coil::Properties prop;
+    prop.load(in);
+    QCOMPARE(QByteArray::fromStdString(prop.getProperty(key.toStdString())), value);
+}
+
+void TestSdkCoil::loadMalformedTextDoesNotCrash_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::newRow("separators only") << QByteArray(":::: ===\n=\n:\n");
+    QTest::newRow("dots") << QByteArray(".\n..: x\na..b: c\n.a: 1\na.: 2\n");
+    QTest::newRow("backslashes") << QByteArray("\\\n\\\\\n\\:\n\\\\\\\n");
+    QTest::newRow("binary") << QByteArray("\0\x01\xff: \xfe\n", 7);
+    QTest::newRow("blank lines") << QByteArray("\n\n   \n\t\n");
+    QTest::newRow("empty") << QByteArray();
+}
+
+void TestSdkCoil::loadMalformedTextDoesNotCrash()
+{
+    QFETCH(QByteArray, text);
+    std::istringstream in(text.toStdString());
+    coil::Properties prop;
+    prop.load(in);
+    // Whatever was read must survive a store/load cycle and a dump.
+    const std::string stored = storeText(prop);
+    std::istringstream again(stored);
+    coil::Properties reread;
+    reread.load(again);
+    std::ostringstream dump;
+    dump << prop;
+    QCOMPARE(storeText(reread), stored);
+}
+
+void TestSdkCoil::storeRoundTrip()
+{
+    coil::Properties prop(kSpec);
+    prop.setProperty("conf.default.gain", "2.5");
+    prop.setProperty("text", "tab\there\nnewline\\backslash");
+    prop.setProperty("corba.endpoints", "host:2810");
+
+    // Only set values are written; defaults are not.
+    const std::string listed = storeText(prop);
+    QVERIFY(listed.find("conf.default.gain: 2.5\n") != std::string::npos);
+    QVERIFY(listed.find("implementation_id") == std::string::npos);
+    QVERIFY(listed.find("text: tab\\there\\nnewline\\\\backslash\n") != std::string::npos);
+
+    std::ostringstream stored;
+    prop.store(stored, "saved by the test");
+    QCOMPARE(stored.str().substr(0, 20), std::string("# saved by the test\n"));
+
+    std::istringstream in(stored.str());
+    coil::Properties reread;
+    reread.load(in);
+    QCOMPARE(reread.getProperty("text"), prop.getProperty("text"));
+    QCOMPARE(reread.getProperty("corba.endpoints"), std::string("host:2810"));
+    QCOMPARE(reread.getProperty("conf.default.gain"), std::string("2.5"));
+    QCOMPARE(reread.size(), size_t(3));
+}
+
+void TestSdkCoil::streamDump()
+{
+    coil::Properties prop(kSpec);
+    std::ostringstream out;
+    out << prop;
+    const std::string dump = out.str();
+    QVERIFY2(dump.find("- conf\n  - default\n    - gain: 1.5\n") != std::string::npos,
+             dump.c_str());
+    QVERIFY(dump.find("- implementation_id: ConsoleIn\n") != std::string::npos);
+
+    const std::vector<std::string> lines = prop;
+    QCOMPARE(lines.front(), std::string("- implementation_id: ConsoleIn"));
+    QVERIFY(std::find(lines.begin(), lines.end(), "    - gain: 2.0") != lines.end());
+}
+
+void TestSdkCoil::mapConstructor()
+{
+    std::map<std::string, std::string> defaults{{"a.b", "1"}, {"c", "2"}};
+    coil::Properties prop(defaults);
+    QCOMPARE(prop.getProperty("a.b"), std::string("1"));
+    QCOMPARE(prop.getDefault("c"), std::string("2"));
+    QCOMPARE(prop.size(), size_t(2));
+}
+
+// ---------------------------------------------------------------- stringutil
+
+void TestSdkCoil::split_data()
+{
+    QTest::addColumn<QString>("input");
+    QTest::addColumn<QString>("delimiter");
+    QTest::addColumn<bool>("ignoreEmpty");
+    QTest::addColumn<coil::vstring>("expected");
+
+    QTest::newRow("commas") << "a,b,c" << "," << false << coil::vstring{"a", "b", "c"};
+    QTest::newRow("blanks trimmed") << " a , b\t,c " << "," << false
+                                    << coil::vstring{"a", "b", "c"};
+    QTest::newRow("empty kept") << "a,,b," << "," << false << coil::vstring{"a", "", "b", ""};
+    QTest::newRow("empty dropped") << "a,,b," << "," << true << coil::vstring{"a", "b"};
+    QTest::newRow("long delimiter") << "a::b::c" << "::" << false
+                                    << coil::vstring{"a", "b", "c"};
+    QTest::newRow("no delimiter found") << " abc " << "," << false << coil::vstring{"abc"};
+    QTest::newRow("empty input") << "" << "," << false << coil::vstring{};
+    QTest::newRow("empty delimiter") << " a,b " << "" << false << coil::vstring{"a,b"};
+}
+
+void TestSdkCoil::split()
+{
+    QFETCH(QString, input);
+    QFETCH(QString, delimiter);
+    QFETCH(bool, ignoreEmpty);
+    QFETCH(coil::vstring, expected);
+    QCOMPARE(coil::split(input.toStdString(), delimiter.toStdString(), ignoreEmpty), expected);
+}
+
+void TestSdkCoil::toBool_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<bool>("defaultValue");
+    QTest::addColumn<bool>("expected");
+
+    QTest::newRow("yes") << "YES" << false << true;
+    QTest::newRow("yes lower") << "yes" << false << true;
+    QTest::newRow("no") << "No" << true << false;
+    QTest::newRow("other, default true") << "maybe" << true << true;
+    QTest::newRow("other, default false") << "maybe" << false << false;
+}
+
+void TestSdkCoil::toBool()
+{
+    QFETCH(QString, text);
+    QFETCH(bool, defaultValue);
+    QFETCH(bool, expected);
+    QCOMPARE(coil::toBool(text.toStdString(), "YES", "NO", defaultValue), expected);
+}
+
+void TestSdkCoil::trimming()
+{
+    QCOMPARE(coil::normalize("  MiXed Case\t"), std::string("mixed case"));
+    QCOMPARE(coil::eraseBlank(" a b\tc "), std::string("abc"));
+    QCOMPARE(coil::eraseHeadBlank(" \t a "), std::string("a "));
+    QCOMPARE(coil::eraseTailBlank(" a \t "), std::string(" a"));
+    QCOMPARE(coil::eraseBothEndsBlank("   "), std::string());
+    QCOMPARE(coil::eraseBothEnds(" x "), std::string("x"));
+    QCOMPARE(coil::toUpper("abC1"), std::string("ABC1"));
+    QCOMPARE(coil::toLower("ABc1"), std::string("abc1"));
+}
+
+void TestSdkCoil::escapeRoundTrip()
+{
+    const std::string raw = "a\tb\nc\rd\fe\\f";
+    const std::string escaped = coil::escape(raw);
+    QCOMPARE(escaped, std::string("a\\tb\\nc\\rd\\fe\\\\f"));
+    QCOMPARE(coil::unescape(escaped), raw);
+    QCOMPARE(coil::unescape("\\q\\\"\\"), std::string("q\""));
+    QVERIFY(coil::isEscaped("a\\:", 2));
+    QVERIFY(!coil::isEscaped("a\\\\:", 3));
+    QVERIFY(!coil::isEscaped(":", 0));
+}
+
+void TestSdkCoil::replaceString()
+{
+    QCOMPARE(coil::replaceString("a.b.c", ".", "::"), std::string("a::b::c"));
+    QCOMPARE(coil::replaceString("aaa", "a", "aa"), std::string("aaaaaa"));
+    QCOMPARE(coil::replaceString("abc", "", "x"), std::string("abc"));
+}
+
+void TestSdkCoil::stringToNumbers_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<double>("expected");
+
+    QTest::newRow("integer") << QByteArray("42") << true << 42.0;
+    QTest::newRow("negative") << QByteArray("-7") << true << -7.0;
+    QTest::newRow("decimal") << QByteArray("0.25") << true << 0.25;
+    QTest::newRow("exponent") << QByteArray("1e3") << true << 1000.0;
+    QTest::newRow("leading blanks") << QByteArray("  8") << true << 8.0;
+    QTest::newRow("letters") << QByteArray("abc") << false << 0.0;
+    QTest::newRow("empty") << QByteArray("") << false << 0.0;
+    QTest::newRow("blank") << QByteArray("   ") << false << 0.0;
+}
+
+void TestSdkCoil::stringToNumbers()
+{
+    QFETCH(QByteArray, text);
+    QFETCH(bool, ok);
+    QFETCH(double, expected);
+
+    double d = -1.0;
+    QCOMPARE(coil::stringTo(d, text.constData()), ok);
+    QCOMPARE(d, ok ? expected : -1.0); // a failed conversion leaves the variable alone
+
+    long l = -1;
+    const bool integral = ok && expected == static_cast<long>(expected) && !text.contains('e')
+        && !text.contains('.');
+    if (integral) {
+        QVERIFY(coil::stringTo(l, text.constData()));
+        QCOMPARE(l, static_cast<long>(expected));
+    } else if (!ok) {
+        QVERIFY(!coil::stringTo(l, text.constData()));
+        QCOMPARE(l, -1L);
+    }
+
+    int i = 5;
+    QVERIFY(!coil::stringTo(i, nullptr));
+    QCOMPARE(i, 5);
+}
+
+void TestSdkCoil::stringToBool_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<bool>("expected");
+
+    QTest::newRow("true") << QByteArray("true") << true << true;
+    QTest::newRow("TRUE blanks") << QByteArray(" TRUE ") << true << true;
+    QTest::newRow("1") << QByteArray("1") << true << true;
+    QTest::newRow("yes") << QByteArray("Yes") << true << true;
+    QTest::newRow("on") << QByteArray("on") << true << true;
+    QTest::newRow("false") << QByteArray("False") << true << false;
+    QTest::newRow("0") << QByteArray("0") << true << false;
+    QTest::newRow("no") << QByteArray("NO") << true << false;
+    QTest::newRow("off") << QByteArray("off") << true << false;
+    QTest::newRow("other") << QByteArray("2") << false << false;
+    QTest::newRow("empty") << QByteArray("") << false << false;
+}
+
+void TestSdkCoil::stringToBool()
+{
+    QFETCH(QByteArray, text);
+    QFETCH(bool, ok);
+    QFETCH(bool, expected);
+    for (bool initial : {false, true}) {
+        bool value = initial;
+        QCOMPARE(coil::stringTo(value, text.constData()), ok);
+        QCOMPARE(value, ok ? expected : initial);
+    }
+}
+
+void TestSdkCoil::stringToStringKeepsBlanks()
+{
+    std::string s = "old";
+    QVERIFY(coil::stringTo(s, "  two words  "));
+    QCOMPARE(s, std::string("  two words  "));
+    QVERIFY(coil::stringTo(s, ""));
+    QCOMPARE(s, std::string());
+    QVERIFY(!coil::stringTo(s, nullptr));
+}
+
+void TestSdkCoil::stringToDurations()
+{
+    std::chrono::milliseconds ms(0);
+    QVERIFY(coil::stringTo(ms, "1.5"));
+    QCOMPARE(ms.count(), 1500LL);
+    std::chrono::duration<double> seconds(0.0);
+    QVERIFY(coil::stringTo(seconds, "0.25"));
+    QCOMPARE(seconds.count(), 0.25);
+    std::chrono::seconds s(3);
+    QVERIFY(!coil::stringTo(s, "soon"));
+    QCOMPARE(s.count(), 3LL);
+}
+
+void TestSdkCoil::stringToVectorViaNamespaceStdOperator()
+{
+    std::vector<double> gains{9.0};
+    QVERIFY(coil::stringTo(gains, "1.0,2.5,-3"));
+    QCOMPARE(gains, (std::vector<double>{1.0, 2.5, -3.0}));
+
+    std::vector<int> ids;
+    QVERIFY(coil::stringTo(ids, "4,5"));
+    QCOMPARE(ids, (std::vector<int>{4, 5}));
+
+    std::vector<std::string> names;
+    QVERIFY(coil::stringTo(names, "a,b"));
+    QCOMPARE(names, (std::vector<std::string>{"a", "b"}));
+}
+
+void TestSdkCoil::stringToContainerViaGlobalOperator()
+{
+    std::deque<double> values;
+    QVERIFY(coil::stringTo(values, "1.5, 2.5"));
+    QCOMPARE(values, (std::deque<double>{1.5, 2.5}));
+
+    QVERIFY(!coil::stringTo(values, "1.5, x"));
+    QCOMPARE(values, (std::deque<double>{1.5, 2.5})); // unchanged on failure
+}
+
+void TestSdkCoil::otosAndSprintf()
+{
+    QCOMPARE(coil::otos(42), std::string("42"));
+    QCOMPARE(coil::otos(1.5), std::string("1.5"));
+    QCOMPARE(coil::otos("text"), std::string("text"));
+    QCOMPARE(coil::sprintf("%s=%d (%.2f)", "rate", 1000, 0.5), std::string("rate=1000 (0.50)"));
+    QCOMPARE(coil::sprintf("%s", ""), std::string());
+    const std::string longText(5000, 'x');
+    QCOMPARE(coil::sprintf("[%s]", longText.c_str()), "[" + longText + "]");
+
+    int value = 0;
+    const std::string hex = coil::ptrToHex(&value);
+    int *back = nullptr;
+    QVERIFY(coil::hexToPtr(back, hex));
+    QCOMPARE(back, &value);
+    QVERIFY(!coil::hexToPtr(back, "zz"));
+}
+
+void TestSdkCoil::addressChecks()
+{
+    QVERIFY(coil::isIPv4("192.168.0.1"));
+    QVERIFY(coil::isIPv4("0.0.0.0"));
+    QVERIFY(!coil::isIPv4("256.1.1.1"));
+    QVERIFY(!coil::isIPv4("1.2.3"));
+    QVERIFY(!coil::isIPv4("01.2.3.4"));
+    QVERIFY(coil::isIPv6("fe80:0:0:0:0:0:0:1"));
+    QVERIFY(!coil::isIPv6("fe80::1"));
+    QVERIFY(coil::isIPPort("2809"));
+    QVERIFY(coil::isIPPort("65535"));
+    QVERIFY(!coil::isIPPort("65536"));
+    QVERIFY(!coil::isIPPort("port"));
+    QVERIFY(coil::isURL("http://localhost"));
+    QVERIFY(!coil::isURL("localhost:2809"));
+    QVERIFY(coil::isAbsolutePath("/usr/lib"));
+    QVERIFY(coil::isAbsolutePath("C:\\rtm"));
+    QVERIFY(coil::isAbsolutePath("\\\\server\\share"));
+    QVERIFY(!coil::isAbsolutePath("lib/x.so"));
+    QVERIFY(!coil::isAbsolutePath(""));
+
+    const coil::mapstring params = coil::urlparam2map("corbaloc::h:2809/x?interface_type=corba&id=");
+    QCOMPARE(params.size(), size_t(2));
+    QCOMPARE(params.at("interface_type"), std::string("corba"));
+    QCOMPARE(params.at("id"), std::string());
+}
+
+void TestSdkCoil::listHelpers()
+{
+    QVERIFY(coil::includes(coil::vstring{"Periodic", "Event"}, "periodic"));
+    QVERIFY(!coil::includes(coil::vstring{"Periodic"}, "periodic", false));
+    QVERIFY(coil::includes("a, b ,c", "B"));
+    QVERIFY(!coil::includes("a,b", "d"));
+    QCOMPARE(coil::unique_sv({"b", "a", "b", "c", "a"}), (coil::vstring{"b", "a", "c"}));
+    QCOMPARE(coil::flatten({"a", "b", "c"}), std::string("a, b, c"));
+    QCOMPARE(coil::flatten({"a", "b"}, ","), std::string("a,b"));
+    QCOMPARE(coil::flatten({}), std::string());
+
+    ::setenv("TST_SDKCOIL_VAR", "value", 1);
+    QCOMPARE(coil::replaceEnv("x${TST_SDKCOIL_VAR}y${TST_SDKCOIL_UNSET}z"),
+             std::string("xvalueyz"));
+}
+
+void TestSdkCoil::argvHelpers()
+{
+    const coil::vstring args = coil::parseArgs("rtcd -o \"a b\" 'c d' e\\ f");
+    QCOMPARE(args, (coil::vstring{"rtcd", "-o", "a b", "c d", "e f"}));
+
+    coil::Argv argv(args);
+    QCOMPARE(argv.size(), size_t(5));
+    QCOMPARE(std::string(argv.get()[2]), std::string("a b"));
+    QVERIFY(argv.get()[5] == nullptr);
+    QVERIFY(coil::Argv().get() == nullptr);
+
+    char **raw = coil::toArgv({"x", "yz"});
+    QCOMPARE(std::string(raw[1]), std::string("yz"));
+    QVERIFY(raw[2] == nullptr);
+    for (char **p = raw; *p; ++p)
+        delete[] *p;
+    delete[] raw;
+}
+
+void TestSdkCoil::getlinePortableLineEnds()
+{
+    std::istringstream in("one\r\ntwo\rthree\nfour");
+    QCOMPARE(coil::getlinePortable(in), std::string("one"));
+    QCOMPARE(coil::getlinePortable(in), std::string("two"));
+    std::string line;
+    QCOMPARE(coil::getlinePortable(in, line), 5);
+    QCOMPARE(line, std::string("three"));
+    QCOMPARE(coil::getlinePortable(in), std::string("four"));
+    QCOMPARE(coil::getlinePortable(in), std::string());
+}
+
+// ---------------------------------------------------------------- time, threads, OS
+
+void TestSdkCoil::timeValueNormalises_data()
+{
+    QTest::addColumn<long>("sec");
+    QTest::addColumn<long>("usec");
+    QTest::addColumn<long>("expectedSec");
+    QTest::addColumn<long>("expectedUsec");
+
+    QTest::newRow("in range") << 1L << 500000L << 1L << 500000L;
+    QTest::newRow("usec overflow") << 1L << 2500000L << 3L << 500000L;
+    QTest::newRow("negative usec borrows") << 2L << -250000L << 1L << 750000L;
+    QTest::newRow("negative total") << 0L << -1500000L << -1L << -500000L;
+    QTest::newRow("negative seconds") << -2L << 500000L << -1L << -500000L;
+    QTest::newRow("zero") << 0L << 0L << 0L << 0L;
+}
+
+void TestSdkCoil::timeValueNormalises()
+{
+    QFETCH(long, sec);
+    QFETCH(long, usec);
+    QFETCH(long, expectedSec);
+    QFETCH(long, expectedUsec);
+    const coil::TimeValue tv(sec, usec);
+    QCOMPARE(tv.sec(), expectedSec);
+    QCOMPARE(tv.usec(), expectedUsec);
+}
+
+void TestSdkCoil::timeValueFromDouble_data()
+{
+    QTest::addColumn<double>("seconds");
+    QTest::addColumn<long>("expectedSec");
+    QTest::addColumn<long>("expectedUsec");
+
+    QTest::newRow("1.5") << 1.5 << 1L << 500000L;
+    QTest::newRow("-1.5") << -1.5 << -1L << -500000L;
+    QTest::newRow("rounds to usec") << 0.0000014 << 0L << 1L;
+    QTest::newRow("rounds up into a second") << 0.9999999 << 1L << 0L;
+    QTest::newRow("nan") << qQNaN() << 0L << 0L;
+}
+
+void TestSdkCoil::timeValueFromDouble()
+{
+    QFETCH(double, seconds);
+    QFETCH(long, expectedSec);
+    QFETCH(long, expectedUsec);
+    const coil::TimeValue tv(seconds);
+    QCOMPARE(tv.sec(), expectedSec);
+    QCOMPARE(tv.usec(), expectedUsec);
+    coil::TimeValue assigned;
+    assigned = seconds;
+    QCOMPARE(assigned.sec(), expectedSec);
+    QCOMPARE(assigned.usec(), expectedUsec);
+}
+
+void TestSdkCoil::timeValueArithmetic()
+{
+    const coil::TimeValue a(1, 700000);
+    const coil::TimeValue b(0, 400000);
+    QCOMPARE((a + b).sec(), 2L);
+    QCOMPARE((a + b).usec(), 100000L);
+    QCOMPARE((a - b).usec(), 300000L);
+    QCOMPARE((b - a).sec(), -1L);
+    QCOMPARE((b - a).usec(), -300000L);
+    QCOMPARE((b - a).sign(), -1);
+    QCOMPARE(coil::TimeValue().sign(), 0);
+    QCOMPARE(static_cast<double>(a), 1.7);
+
+    coil::TimeValue c = a;
+    c += b;
+    QVERIFY(c == coil::TimeValue(2, 100000));
+    c -= coil::TimeValue(3.0);
+    QVERIFY(c == coil::TimeValue(0, -900000));
+    QVERIFY(c != a);
+    QVERIFY(b < a);
+    QVERIFY(a > b);
+    QVERIFY(a <= a);
+    QVERIFY(a >= b);
+
+    // Mixed with numbers a TimeValue reads as seconds, as in OpenRTM-aist 1.x.
+    QCOMPARE(a + 0.3, 2.0);
+    QVERIFY(a > 1.0);
+    c = 5;
+    QCOMPARE(c.sec(), 5L);
+}
+
+void TestSdkCoil::timeFunctions()
+{
+    const coil::TimeValue first = coil::gettimeofday();
+    QVERIFY(first.sec() > 1500000000L); // after 2017: a real wall clock
+    QCOMPARE(coil::usleep(1000), 0);
+    QCOMPARE(coil::sleep(coil::TimeValue(0, 1000)), 0);
+    QCOMPARE(coil::sleep(coil::TimeValue(-1.0)), -1);
+    coil::TimeValue second;
+    QCOMPARE(coil::gettimeofday(second), 0);
+    const double elapsed = second - first;
+    QVERIFY2(elapsed >= 0.0015 && elapsed < 60.0, qPrintable(QString::number(elapsed)));
+    timeval tv;
+    QCOMPARE(coil::gettimeofday(&tv, nullptr), 0);
+}
+
+void TestSdkCoil::mutexAndGuard()
+{
+    coil::Mutex mutex("named");
+    bool otherGotIt = true;
+    {
+        coil::Guard<coil::Mutex> guard(mutex);
+        std::thread other([&] {
+            otherGotIt = !mutex.trylock(); // trylock() answers "failed?"
+            if (otherGotIt)
+                mutex.unlock();
+        });
+        other.join();
+    }
+    QVERIFY(!otherGotIt);
+    QVERIFY(!mutex.trylock());
+    mutex.unlock();
+
+    int counter = 0;
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back([&] {
+            for (int i = 0; i < 10000; ++i) {
+                coil::Guard<coil::Mutex> guard(mutex);
+                ++counter;
+            }
+        });
+    for (std::thread &t : threads)
+        t.join();
+    QCOMPARE(counter, 40000);
+}
+
+void TestSdkCoil::conditionTimesOut()
+{
+    coil::Mutex mutex;
+    coil::Condition<coil::Mutex> condition(mutex);
+    coil::Guard<coil::Mutex> guard(mutex);
+    QVERIFY(!condition.wait(0, 1000000)); // nobody signals: times out after 1 ms
+}
+
+void TestSdkCoil::singletonCreatesOnce()
+{
+    std::vector<std::thread> threads;
+    std::vector<Counter *> seen(8, nullptr);
+    for (size_t t = 0; t < seen.size(); ++t)
+        threads.emplace_back([&seen, t] { seen[t] = &Counter::instance(); });
+    for (std::thread &t : threads)
+        t.join();
+    for (Counter *c : seen)
+        QCOMPARE(c, &Counter::instance());
+    QCOMPARE(Counter::constructed.load(), 1);
+}
+
+void TestSdkCoil::taskRunsSvcInThread()
+{
+    RecordingTask task;
+    QCOMPARE(task.wait(), 0); // nothing to join yet
+    QCOMPARE(task.open(), 0);
+    task.activate();
+    QCOMPARE(task.wait(), 0);
+    QCOMPARE(task.runs.load(), 1);
+    QCOMPARE(task.finalized.load(), 1);
+    QVERIFY(task.svcThread != std::this_thread::get_id());
+
+    // finalize() reset the task, so it can run again.
+    task.activate();
+    task.wait();
+    QCOMPARE(task.runs.load(), 2);
+    QCOMPARE(task.close(), 0);
+
+    // A task destroyed without wait() joins its thread instead of aborting.
+    RecordingTask *unjoined = new RecordingTask;
+    unjoined->activate();
+    delete unjoined;
+}
+
+void TestSdkCoil::timeMeasure()
+{
+    coil::TimeMeasure measure(3);
+    QCOMPARE(measure.count(), 0UL);
+    double maxI = -1, minI = -1, meanI = -1, dev = -1;
+    QVERIFY(!measure.getStatistics(maxI, minI, meanI, dev));
+    measure.tack(); // without tick: ignored
+    QCOMPARE(measure.count(), 0UL);
+    for (int i = 0; i < 5; ++i) {
+        measure.tick();
+        measure.tack();
+    }
+    QCOMPARE(measure.count(), 3UL);
+    QVERIFY(measure.interval().count() >= 0);
+    const coil::TimeMeasure::Statistics stats = measure.getStatistics();
+    QVERIFY(stats.min_interval >= 0.0);
+    QVERIFY(stats.min_interval <= stats.mean_interval);
+    QVERIFY(stats.mean_interval <= stats.max_interval);
+    QVERIFY(stats.std_deviation >= 0.0);
+    measure.reset();
+    QCOMPARE(measure.count(), 0UL);
+}
+
+void TestSdkCoil::osWrappers()
+{
+    ::setenv("TST_SDKCOIL_ENV", "here", 1);
+    std::string value;
+    QVERIFY(coil::getenv("TST_SDKCOIL_ENV", value));
+    QCOMPARE(value, std::string("here"));
+    QVERIFY(!coil::getenv("TST_SDKCOIL_NOT_SET_ANYWHERE", value));
+    QCOMPARE(std::string(coil::getenv("TST_SDKCOIL_ENV")), std::string("here"));
+    QVERIFY(coil::getenv("TST_SDKCOIL_NOT_SET_ANYWHERE") == nullptr);
+    QCOMPARE(coil::getpid(), ::getpid());
+    coil::utsname name;
+    QCOMPARE(coil::uname(&name), 0);
+}
+
+void TestSdkCoil::getOpt()
+{
+    char arg0[] = "comp", arg1[] = "-f", arg2[] = "rtc.conf", arg3[] = "-d", arg4[] = "rest";
+    char *argv[] = {arg0, arg1, arg2, arg3, arg4, nullptr};
+    coil::GetOpt get(5, argv, "f:d", 0);
+    QCOMPARE(get(), int('f'));
+    QCOMPARE(std::string(get.optarg), std::string("rtc.conf"));
+    QCOMPARE(get(), int('d'));
+    QCOMPARE(get(), -1);
+    QCOMPARE(std::string(argv[get.optind]), std::string("rest"));
+}
+
+void TestSdkCoil::uuid()
+{
+    coil::UUID *a = coil::UUID_Generator::generateUUID(0, 0);
+    coil::UUID b;
+    const std::string textA = a->to_string();
+    const QRegularExpression format(
+        QStringLiteral("^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$"));
+    QVERIFY2(format.match(QString::fromStdString(textA)).hasMatch(), textA.c_str());
+    QVERIFY(textA != std::string(b.to_string()));
+    delete a;
+}
+
+QTEST_APPLESS_MAIN(TestSdkCoil)
+#include "tst_sdkcoil.moc"
