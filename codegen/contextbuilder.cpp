@@ -7,6 +7,8 @@
 
 #include <QRegularExpression>
 
+#include <algorithm>
+
 using namespace Profile;
 
 namespace Codegen {
@@ -303,6 +305,14 @@ std::optional<QVariantMap> ContextBuilder::build(TargetLanguage language,
     context.insert(QStringLiteral("hasConfigurations"), !configs.isEmpty());
     if (language == TargetLanguage::Java)
         context.insert(QStringLiteral("javaVectorHolders"), javaVectorHolders());
+    if (language == TargetLanguage::Cpp) {
+        // OpenRTM-aist's coil cannot read std::vector parameters; the project brings the
+        // stream extraction in a header of its own (VectorConvert.h), written only when needed.
+        const bool vectors = hasVectorConfiguration();
+        context.insert(QStringLiteral("hasVectorConfigurations"), vectors);
+        context.insert(QStringLiteral("vectorConvertHeaders"),
+                       vectors ? QVariantList {QVariantMap()} : QVariantList());
+    }
     if (!addServices(language, context, &problems)) {
         if (diagnostics)
             diagnostics->append(problems);
@@ -485,6 +495,12 @@ QVariantList ContextBuilder::javaVectorHolders() const
                              {QStringLiteral("parse"), element->parse}};
     }
     return list;
+}
+
+bool ContextBuilder::hasVectorConfiguration() const
+{
+    return std::any_of(m_profile.configurations.cbegin(), m_profile.configurations.cend(),
+                       [](const RtcConfiguration &c) { return vectorElementType(c.type).has_value(); });
 }
 
 bool ContextBuilder::checkNames(TargetLanguage language, Diagnostics *diagnostics) const

@@ -37,8 +37,10 @@ namespace Codegen {
  *   holder, widget, constraint, unit, description}
  * - `projectIdls` {fileName, baseName}: non-standard IDL files copied into `idl/`
  * - `pythonModules` (strings): modules the Python code imports
+ * - `vectorConvertHeaders` (C++): one empty item when a configuration parameter is a vector
+ *   (the manifest renders VectorConvert.h once per item), else none
  * - flags: `hasInPorts`, `hasOutPorts`, `hasDataPorts`, `hasServicePorts`, `hasProvided`,
- *   `hasRequired`, `hasConfigurations`, `hasProjectIdls`
+ *   `hasRequired`, `hasConfigurations`, `hasProjectIdls`, `hasVectorConfigurations` (C++)
  */
 class ContextBuilder
 {
@@ -65,6 +67,8 @@ private:
     QVariantList configurations(TargetLanguage language) const;
     /// One entry per Java holder class the `vector<T>` configuration parameters need.
     QVariantList javaVectorHolders() const;
+    /// True when a configuration parameter is a `vector<T>`.
+    bool hasVectorConfiguration() const;
     bool checkNames(TargetLanguage language, Profile::Diagnostics *diagnostics) const;
     bool addServices(TargetLanguage language, QVariantMap &context,
                      Profile::Diagnostics *diagnostics) const;

@@ -44,6 +44,9 @@ private slots:
     void cmakeConfigures_data();
     void cmakeConfigures();
     void javaVectorHoldersParse();
+    void vectorConvertOnlyWithVectorParameters_data();
+    void vectorConvertOnlyWithVectorParameters();
+    void cppVectorConvertReadsVectors();
 
 private:
     void addFixtureRows();
@@ -360,6 +363,100 @@ void TestCodegenGolden::javaVectorHoldersParse()
     // A bad item leaves the parameter as it was, as OpenRTM keeps a value it cannot convert.
     QCOMPARE(output.trimmed().split(QLatin1Char('\n')),
              (QStringList {"3:0.5,1.5,2.0|second|0", "refused, kept 0.5,1.5,2.0"}));
+}
+
+void TestCodegenGolden::vectorConvertOnlyWithVectorParameters_data()
+{
+    addFixtureRows();
+}
+
+// VectorConvert.h is written, and included by the component header, exactly when a
+// configuration parameter is a vector (of the fixtures, ConfigComp's `order` and `weights`).
+void TestCodegenGolden::vectorConvertOnlyWithVectorParameters()
+{
+    QFETCH(QString, fixture);
+    const bool vectors = fixture == QLatin1String("ConfigComp");
+    const QDir project(projectDir(fixture));
+    const QString header = QStringLiteral("include/%1/VectorConvert.h").arg(fixture);
+    QCOMPARE(QFileInfo::exists(project.filePath(header)), vectors);
+    QFile component(project.filePath(QStringLiteral("include/%1/%1.h").arg(fixture)));
+    QVERIFY(component.open(QIODevice::ReadOnly));
+    const QByteArray text = component.readAll();
+    QCOMPARE(text.contains("#include \"VectorConvert.h\""), vectors);
+    if (vectors) // before OpenRTM's headers, whose conversion templates must see it
+        QVERIFY(text.indexOf("VectorConvert.h") < text.indexOf("#include <rtm/"));
+}
+
+// The generated VectorConvert.h compiled as C++11 into a program that reads vectors of
+// double, int and string the way OpenRTM-aist's configuration does (through a template like
+// coil::stringTo, defined after the header), and run.
+void TestCodegenGolden::cppVectorConvertReadsVectors()
+{
+    QString compiler = QStandardPaths::findExecutable(QStringLiteral("g++"));
+    if (compiler.isEmpty())
+        compiler = QStandardPaths::findExecutable(QStringLiteral("c++"));
+    if (compiler.isEmpty())
+        QSKIP("no C++ compiler; VectorConvert.h is not compiled");
+    const QString include
+        = QDir(projectDir(QStringLiteral("ConfigComp"))).filePath("include/ConfigComp");
+    QVERIFY(QFileInfo::exists(include + QStringLiteral("/VectorConvert.h")));
+    QTemporaryDir work;
+    QFile source(work.filePath(QStringLiteral("readvectors.cpp")));
+    QVERIFY(source.open(QIODevice::WriteOnly));
+    source.write(R"(#include "VectorConvert.h"
+#include <iostream>
+
+namespace coil {
+template <typename To> bool stringTo(To& value, const char* text)
+{
+  std::istringstream in(text);
+  return !(in >> value).fail();
+}
+}
+
+template <typename T> void show(const char* text)
+{
+  std::vector<T> values;
+  std::istringstream in(text);
+  in >> values;
+  std::cout << (in.fail() ? "fail" : "ok") << ' ' << values.size();
+  for (typename std::vector<T>::size_type i = 0; i < values.size(); ++i)
+    std::cout << '|' << values[i];
+  std::cout << '\n';
+}
+
+int main()
+{
+  show<double>("-1.57,1.57");
+  show<double>(" 0.5 , 2 ");
+  show<int>("1, 2 ,3");
+  show<std::string>("first, second item ,third");
+  show<std::string>("alone");
+  show<int>("  ");
+  show<int>("1,x,3");
+  show<double>("1.5,");
+  std::vector<int> kept(1, 7);
+  std::istringstream bad("4,five");
+  bad >> kept;
+  std::cout << "kept " << kept.size() << '|' << kept[0] << '\n';
+  std::vector<double> bound;
+  std::cout << "stringTo " << coil::stringTo(bound, "-1.57,1.57") << ' ' << bound.size() << '\n';
+  return 0;
+}
+)");
+    source.close();
+    QString output;
+    const QString program = work.filePath(QStringLiteral("readvectors"));
+    QVERIFY2(run(compiler,
+                 {"-std=c++11", "-Wall", "-Wextra", "-pedantic", "-Werror", "-I" + include,
+                  source.fileName(), "-o", program},
+                 work.path(), &output),
+             qPrintable(output));
+    QVERIFY2(run(program, {}, work.path(), &output), qPrintable(output));
+    QCOMPARE(output.split(QLatin1Char('\n'), Qt::SkipEmptyParts),
+             (QStringList {"ok 2|-1.57|1.57", "ok 2|0.5|2", "ok 3|1|2|3",
+                           "ok 3|first|second item|third", "ok 1|alone", "ok 0", "fail 0",
+                           "fail 0", "kept 1|7", "stringTo 1 2"}));
 }
 
 QTEST_GUILESS_MAIN(TestCodegenGolden)

@@ -9,6 +9,10 @@
 #ifndef CONFIGCOMPTEST_H
 #define CONFIGCOMPTEST_H
 
+// Reads the std::vector configuration parameters; it comes before OpenRTM-aist's headers so
+// that their conversion templates find it.
+#include "VectorConvert.h"
+
 #include <rtm/idl/BasicDataTypeSkel.h>
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
