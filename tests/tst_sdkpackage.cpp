@@ -178,6 +178,10 @@ void TestSdkPackage::layout()
     staged.removeAll(QStringLiteral("version.h"));
     QCOMPARE(staged, headerNames(sources + QStringLiteral("rtm")));
     QCOMPARE(headerNames(root + QStringLiteral("/include/coil-2.1/coil")), headerNames(sources + QStringLiteral("coil")));
+    QCOMPARE(headerNames(root + QStringLiteral("/include/coil-2.0/coil")), headerNames(sources + QStringLiteral("coil")));
+    // The component API's headers reach the runtime's as <rtmruntime/…>.
+    QCOMPARE(headerNames(root + QStringLiteral("/include/openrtm-2.1/rtmruntime")),
+             headerNames(QStringLiteral(RTSTUDIO_SOURCE_DIR "/manager")));
     const QStringList idlFiles = QDir(QStringLiteral(RTSTUDIO_SOURCE_DIR "/corba/idl"))
                                      .entryList({QStringLiteral("*.idl")}, QDir::Files);
     QVERIFY(idlFiles.contains(QStringLiteral("BasicDataType.idl")));
@@ -381,10 +385,10 @@ void TestSdkPackage::consume_data()
     QTest::addColumn<QString>("program");
     QTest::addColumn<QString>("expected");
     const QList<QList<const char *>> styles{
-        {"openrtp2", "GreetingProbe", "openrtp2 2.1.0 hello 42 2"},
-        {"legacy12", "LegacyProbe", "legacy12 2.1 legacy 3 -2"},
-        {"modern", "ModernProbe", "modern 2.1.0 sdk=1 3 4 0.5"},
-        {"pkgconfig", "PkgConfigProbe", "pkgconfig 2.1.0 pkg-config"}};
+        {"openrtp2", "GreetingProbe", "openrtp2 2.1.0 HELLO 42 2"},
+        {"legacy12", "LegacyProbe", "legacy12 2.1 legacy 3 -2 1s500000us"},
+        {"modern", "ModernProbe", "modern 2.1.0 sdk=1 3 4 0.5 rate=1000"},
+        {"pkgconfig", "PkgConfigProbe", "pkgconfig 2.1.0 pkg-config 2"}};
     for (const char *kind : {"build", "installed"}) {
         for (const auto &style : styles)
             QTest::addRow("%s %s", style[0], kind) << style[0] << kind << style[1] << style[2];

@@ -4,6 +4,7 @@
 #   include/openrtm-2.1/rtm/      the component API, config_rtc.h, version.h
 #   include/openrtm-2.1/rtm/idl/  OpenRTM's IDL, omniidl's <Name>.hh, wrapper <Name>Skel.h / <Name>Stub.h
 #   include/openrtm-2.1/rtm/ext/  (extension IDL; empty)
+#   include/openrtm-2.1/rtmruntime/  the runtime's headers (manager/*.h), which rtm/*.h include
 #   include/coil-2.1/coil/        coil (also as include/coil-2.0/coil/ for 2.0-era includes)
 #   lib/librtstudio_rtm.so        the runtime, coil, the component API and the IDL stubs in one library
 #   lib/cmake/openrtm-2.1/        OpenRTMConfig.cmake, OpenRTMConfigVersion.cmake (find_package(OpenRTM))
@@ -28,6 +29,7 @@ set(RTSDK_LIBRARY_NAME rtstudio_rtm)
 set(RTSDK_ORB_LIBRARIES omniORB4 omniDynamic4 omnithread pthread)
 
 set(rtsdk_package_dir "${CMAKE_CURRENT_LIST_DIR}")
+get_target_property(rtsdk_runtime_headers_dir rtmanager_runtime SOURCE_DIR)
 set(rtsdk_prefix "${CMAKE_BINARY_DIR}")
 set(rtsdk_generated "${CMAKE_CURRENT_BINARY_DIR}/package/include")
 
@@ -114,6 +116,7 @@ file(MAKE_DIRECTORY "${rtsdk_prefix}/include/${RTSDK_RTM_DIR}/rtm/ext"
 add_custom_target(rtsdk_stage ALL
     COMMAND "${CMAKE_COMMAND}"
         "-DRTSDK_SOURCE_INCLUDE=${CMAKE_CURRENT_SOURCE_DIR}/include"
+        "-DRTSDK_RUNTIME_HEADERS=${rtsdk_runtime_headers_dir}"
         "-DRTSDK_GENERATED_INCLUDE=${rtsdk_generated}"
         "-DRTSDK_IDL_DIR=${RTSTUDIO_IDL_DIR}"
         "-DRTSDK_OMNIIDL_DIR=${CMAKE_BINARY_DIR}/corba/generated"
@@ -134,6 +137,8 @@ foreach(coil_dir coil-2.1 coil-2.0)
         DESTINATION "include/${coil_dir}/coil" COMPONENT sdk FILES_MATCHING PATTERN "*.h")
 endforeach()
 install(FILES ${rtsdk_idl_files} ${rtsdk_idl_headers} DESTINATION "${rtsdk_include_rtm}/idl" COMPONENT sdk)
+install(DIRECTORY "${rtsdk_runtime_headers_dir}/" DESTINATION "include/${RTSDK_RTM_DIR}/rtmruntime"
+    COMPONENT sdk FILES_MATCHING PATTERN "*.h" PATTERN "builtins" EXCLUDE)
 install(DIRECTORY DESTINATION "${rtsdk_include_rtm}/ext" COMPONENT sdk)
 install(DIRECTORY DESTINATION "share/${RTSDK_RTM_DIR}" COMPONENT sdk)
 install(FILES "${rtsdk_cmake_dir}/OpenRTMConfig.cmake" "${rtsdk_cmake_dir}/OpenRTMConfigVersion.cmake"

@@ -4,6 +4,7 @@
 # removes staged headers whose source is gone.
 #
 #   RTSDK_SOURCE_INCLUDE     sdk/include (rtm/, coil/)
+#   RTSDK_RUNTIME_HEADERS    the runtime's headers (manager/), included by rtm/*.h as <rtmruntime/…>
 #   RTSDK_GENERATED_INCLUDE  configure-time headers (rtm/config_rtc.h, rtm/version.h, rtm/idl/*.h)
 #   RTSDK_IDL_DIR            the bundled IDL files
 #   RTSDK_OMNIIDL_DIR        omniidl's output for them (<Name>.hh)
@@ -18,9 +19,15 @@ function(rtsdk_copy from to)
     file(COPY_FILE "${from}" "${to}" ONLY_IF_DIFFERENT)
 endfunction()
 
-# Mirrors the headers under from/ into to/ (relative paths kept), removing staged ones whose source is gone.
+# Mirrors the headers under from/ into to/ (relative paths kept; only from/'s own with FLAT), removing
+# staged ones whose source is gone.
 function(rtsdk_mirror from to)
-    file(GLOB_RECURSE sources RELATIVE "${from}" "${from}/*.h")
+    cmake_parse_arguments(ARG "FLAT" "" "" ${ARGN})
+    if(ARG_FLAT)
+        file(GLOB sources RELATIVE "${from}" "${from}/*.h")
+    else()
+        file(GLOB_RECURSE sources RELATIVE "${from}" "${from}/*.h")
+    endif()
     foreach(relative IN LISTS sources)
         rtsdk_copy("${from}/${relative}" "${to}/${relative}")
     endforeach()
@@ -58,6 +65,8 @@ foreach(file IN LISTS idl_files)
     get_filename_component(name "${file}" NAME)
     rtsdk_copy("${file}" "${rtm}/idl/${name}")
 endforeach()
+
+rtsdk_mirror("${RTSDK_RUNTIME_HEADERS}" "${include}/${RTSDK_RTM_DIR}/rtmruntime" FLAT)
 
 foreach(coil coil-2.1 coil-2.0)
     file(MAKE_DIRECTORY "${include}/${coil}/coil")

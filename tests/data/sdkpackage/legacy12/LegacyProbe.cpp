@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Uses what a 1.2-era component's sources use: its own IDL's stub header, OpenRTM's types through
-// rtm/idl/...Stub.h, and the version constants. Prints the values after a round trip through a CORBA::Any.
+// rtm/idl/...Stub.h, the version constants and coil's 1.x time type. Prints the values after a round trip through a CORBA::Any.
 #include "GreetingStub.h"
+#include <coil/TimeValue.h>
 #include <rtm/idl/ExtendedDataTypesStub.h>
 #include <rtm/version.h>
 
@@ -27,7 +28,9 @@ int main()
   if (!(greetingAny >>= greetingBack))
     return 2;
 
+  const coil::TimeValue period(pointBack->data.x);
   std::cout << "legacy12 " << RTM_MAJOR_VERSION << "." << RTM_MINOR_VERSION << " " << greetingBack->text
-            << " " << greetingBack->count << " " << pointBack->data.y << std::endl;
+            << " " << greetingBack->count << " " << pointBack->data.y << " " << period.sec() << "s"
+            << period.usec() << "us" << std::endl;
   return 0;
 }

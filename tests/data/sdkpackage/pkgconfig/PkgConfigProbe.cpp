@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Built from the command line with pkg-config's flags for openrtm2: OpenRTM's data types through a
-// quoted stub header found on the include path. Prints the values after a round trip through a CORBA::Any.
+// quoted stub header found on the include path, and coil included the 2.1 way. Prints the values after a round trip through a CORBA::Any.
 #include "BasicDataTypeStub.h"
+#include <coil-2.1/coil/stringutil.h>
 #include <rtm/version.h>
 
 #include <iostream>
@@ -16,6 +17,7 @@ int main()
   if (!(textAny >>= textBack))
     return 1;
 
-  std::cout << "pkgconfig " << RTC::openrtm_version << " " << textBack->data << std::endl;
+  const coil::vstring words = coil::split(textBack->data.in(), "-");
+  std::cout << "pkgconfig " << RTC::openrtm_version << " " << textBack->data << " " << words.size() << std::endl;
   return 0;
 }

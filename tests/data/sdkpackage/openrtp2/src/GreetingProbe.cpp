@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Uses what an OpenRTP 2.0 component's sources use: its own IDL's skeleton header, OpenRTM's data types
-// through a quoted wrapper header and rtm/version.h. Prints the values after a round trip through a
+// through a quoted wrapper header, rtm/version.h and coil included the 2.0 way. Prints the values after a round trip through a
 // CORBA::Any, which exercises the stub code in the project and in the SDK's library.
 #include "BasicDataTypeSkel.h"
 #include "GreetingSkel.h"
+#include <coil-2.0/coil/stringutil.h>
 #include <rtm/version.h>
 
 #include <iostream>
@@ -30,7 +31,7 @@ int main()
   if (!(greetingAny >>= greetingBack))
     return 2;
 
-  std::cout << "openrtp2 " << RTC::openrtm_version << " " << greetingBack->text << " "
+  std::cout << "openrtp2 " << RTC::openrtm_version << " " << coil::toUpper(greetingBack->text.in()) << " "
             << greetingBack->count << " " << greetingBack->tm.nsec << std::endl;
   return 0;
 }
