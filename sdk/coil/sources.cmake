@@ -1,10 +1,14 @@
 # SPDX-License-Identifier: MIT
 # coil: OpenRTM-aist's utility library (2.x API plus the 1.x parts published components still use).
 set(SDK_COIL_HEADERS
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/ClockManager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/config_coil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Condition.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/DynamicLib.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/File.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Guard.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Mutex.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/NonCopyable.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/OS.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Properties.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Singleton.h
@@ -16,6 +20,9 @@ set(SDK_COIL_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/UUID.h
 )
 set(SDK_COIL_SOURCES
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/ClockManager.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/DynamicLib.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/File.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Properties.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/stringutil.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Task.cpp
