@@ -146,3 +146,7 @@ install(FILES "${rtsdk_cmake_dir}/OpenRTMConfig.cmake" "${rtsdk_cmake_dir}/OpenR
 install(FILES "${rtsdk_pc_dir}/openrtm2.pc" "${rtsdk_pc_dir}/openrtm-aist.pc" "${rtsdk_pc_dir}/libcoil.pc"
     DESTINATION lib/pkgconfig COMPONENT sdk)
 install(PROGRAMS ${rtsdk_tools} DESTINATION bin COMPONENT sdk)
+# rtmanager runs components on the SDK's library: installed, it finds it in <prefix>/lib wherever the prefix is.
+if(TARGET rtmanager)
+    set_property(TARGET rtmanager APPEND PROPERTY INSTALL_RPATH "$ORIGIN/../lib")
+endif()
