@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // coil, the utility library of the component SDK: the OpenRTM-aist behaviour components rely on.
+#include <coil/Async.h>
 #include <coil/ClockManager.h>
 #include <coil/Condition.h>
 #include <coil/DynamicLib.h>
@@ -188,6 +189,7 @@ private slots:
     void files();
     void dynamicLib();
     void nonCopyable();
+    void asyncInvoker();
 };
 
 // ---------------------------------------------------------------- Properties
@@ -1091,6 +1093,42 @@ void TestSdkCoil::nonCopyable()
     static_assert(!std::is_copy_constructible<Resource>::value, "NonCopyable forbids copies");
     static_assert(!std::is_copy_assignable<Resource>::value, "NonCopyable forbids assignment");
     static_assert(std::is_default_constructible<Resource>::value, "still constructible");
+}
+
+void TestSdkCoil::asyncInvoker()
+{
+    struct Robot
+    {
+        std::atomic<int> homed{0};
+        void home() { ++homed; }
+    } robot;
+
+    coil::Async *call = coil::AsyncInvoker(&robot, [](Robot *r) { r->home(); });
+    call->invoke();
+    QTRY_VERIFY(call->finished());
+    QCOMPARE(robot.homed.load(), 1);
+    call->exit();
+
+    // A function object the caller keeps, called through a reference.
+    struct Homing
+    {
+        int calls = 0;
+        void operator()(Robot *r)
+        {
+            ++calls;
+            r->home();
+        }
+    } homing;
+    coil::Async *byRef = coil::AsyncInvoker(&robot, &homing);
+    byRef->invoke();
+    byRef->exit();
+    QCOMPARE(homing.calls, 1);
+    QCOMPARE(robot.homed.load(), 2);
+
+    // Calls that delete themselves when done.
+    for (int i = 0; i < 20; ++i)
+        coil::AsyncInvoker(&robot, [](Robot *r) { r->home(); }, true)->invoke();
+    QTRY_COMPARE(robot.homed.load(), 22);
 }
 
 QTEST_APPLESS_MAIN(TestSdkCoil)

@@ -103,6 +103,9 @@ namespace coil
     Task* task = static_cast<Task*>(args);
     if (task != nullptr)
       {
+        // activate() holds the lock until it has stored this thread; a svc() or finalize()
+        // that deletes the task must not start before that.
+        { std::lock_guard<std::mutex> published(task->m_thread->mutex); }
         task->svc();
         task->finalize();
       }

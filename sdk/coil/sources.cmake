@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 # coil: OpenRTM-aist's utility library (2.x API plus the 1.x parts published components still use).
 set(SDK_COIL_HEADERS
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Async.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/ClockManager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/config_coil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Condition.h

@@ -251,12 +251,11 @@ namespace coil
     std::vector<std::vector<char> > m_args;
   };
 
-  /*! printf-style formatting into a std::string (no length limit). */
-  std::string sprintf(char const* fmt, ...)
-#if defined(__GNUC__) || defined(__clang__)
-      __attribute__((format(printf, 1, 2)))
-#endif
-      ;
+  /*!
+   * printf-style formatting into a std::string (no length limit). Deliberately without a
+   * format attribute: RTC_INFO(("...")) in existing components must stay warning-free.
+   */
+  std::string sprintf(char const* fmt, ...);
 
   /*! Replaces each "${NAME}" by the environment variable NAME (empty when unset). */
   std::string replaceEnv(std::string str);
