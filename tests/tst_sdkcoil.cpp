@@ -996,6 +996,12 @@ void TestSdkCoil::uuid()
     QVERIFY2(format.match(QString::fromStdString(textA)).hasMatch(), textA.c_str());
     QVERIFY(textA != std::string(b.to_string()));
     delete a;
+
+    coil::UUID_Generator generator; // the 1.x way
+    generator.init();
+    coil::UUID *c = generator.generateUUID(2, 0x01);
+    QVERIFY(format.match(QString::fromLatin1(c->to_string())).hasMatch());
+    delete c;
 }
 
 void TestSdkCoil::clocks()

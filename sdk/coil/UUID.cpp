@@ -30,11 +30,8 @@ namespace coil
     return m_text;
   }
 
-  namespace UUID_Generator
+  UUID* UUID_Generator::generateUUID(int, int)
   {
-    UUID* generateUUID(int, int)
-    {
-      return new UUID();
-    }
-  } // namespace UUID_Generator
+    return new UUID();
+  }
 } // namespace coil

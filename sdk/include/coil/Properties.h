@@ -6,6 +6,7 @@
 #ifndef COIL_PROPERTIES_H
 #define COIL_PROPERTIES_H
 
+#include <climits>
 #include <cstddef>
 #include <iosfwd>
 #include <limits>

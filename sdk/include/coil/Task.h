@@ -6,6 +6,8 @@
 #ifndef COIL_TASK_H
 #define COIL_TASK_H
 
+#include <thread>
+
 namespace coil
 {
   /*!

@@ -9,6 +9,7 @@
 #include <coil/config_coil.h>
 #include <coil/TimeValue.h>
 
+#include <iostream>
 #include <sys/select.h>
 #include <sys/time.h>
 #include <sys/types.h>

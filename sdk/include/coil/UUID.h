@@ -24,12 +24,19 @@ namespace coil
     char m_text[37];
   };
 
-  /*! OpenRTM-aist 2.x's UUID factory. */
-  namespace UUID_Generator
+  /*!
+   * The UUID factory, usable both ways OpenRTM-aist had it: 2.x calls
+   * coil::UUID_Generator::generateUUID(n, h), 1.x made an object and called init() first.
+   */
+  class UUID_Generator
   {
+  public:
+    UUID_Generator() {}
+    /*! Nothing to prepare (kept for 1.x code). */
+    void init() {}
     /*! A new random UUID, allocated with new; the arguments are ignored. */
-    UUID* generateUUID(int n, int h);
-  } // namespace UUID_Generator
+    static UUID* generateUUID(int n, int h);
+  };
 } // namespace coil
 
 #endif // COIL_UUID_H

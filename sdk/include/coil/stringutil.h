@@ -12,6 +12,7 @@
 
 #include <coil/config_coil.h>
 
+#include <cassert>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
