@@ -12,13 +12,14 @@ namespace coil
   {
     bool isBlankKey(const std::string& key) { return eraseBothEndsBlank(key).empty(); }
 
-    // Node names go back through load(), which unescapes keys and splits at ':' and '='.
+    // Node names go back through load(), which unescapes keys, splits at ':' and '=', and
+    // takes a line starting with '#' or '!' for a comment.
     std::string escapeKeyPart(const std::string& name)
     {
       std::string out;
       for (char c : escape(name))
         {
-          if (c == ':' || c == '=')
+          if (c == ':' || c == '=' || c == '#' || c == '!')
             out += '\\';
           out += c;
         }
