@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "commandline.h"
+#include "buildcommand.h"
 #include "gencommand.h"
 #include "profilecommand.h"
 #include "rtcatcommand.h"
@@ -80,6 +81,7 @@ std::unique_ptr<CommandLine> createCommandLine()
     auto commandLine = std::make_unique<CommandLine>();
     commandLine->addCommand(std::make_unique<ProfileCommand>());
     commandLine->addCommand(std::make_unique<GenCommand>());
+    commandLine->addCommand(std::make_unique<BuildCommand>());
     commandLine->addCommand(std::make_unique<RtLsCommand>());
     commandLine->addCommand(std::make_unique<RtCatCommand>());
     commandLine->addCommand(std::make_unique<RtFindCommand>());
