@@ -3,6 +3,7 @@
 
 #include "activitypage.h"
 #include "basicpage.h"
+#include "buildoutputpanel.h"
 #include "componentpreview.h"
 #include "componentrules.h"
 #include "configurationpage.h"
@@ -17,6 +18,7 @@
 #include <QMetaMethod>
 #include <QSplitter>
 #include <QTabWidget>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace Builder {
@@ -30,6 +32,8 @@ ComponentEditor::ComponentEditor(ComponentModel *model, QUndoStack *undoStack, T
     , m_pages(new QTabWidget(this))
     , m_basicPage(new BasicPage(model, undoStack))
     , m_preview(new ComponentPreview(model, this))
+    , m_toolBar(new QToolBar(tr("Builder"), this))
+    , m_buildOutput(new BuildOutputPanel(this))
 {
     m_pages->setTabPosition(QTabWidget::South);
     m_pages->setDocumentMode(true);
@@ -41,9 +45,21 @@ ComponentEditor::ComponentEditor(ComponentModel *model, QUndoStack *undoStack, T
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 1);
     splitter->setSizes({900, qMax(380, m_preview->sizeHint().width())});
+    auto *outputSplitter = new QSplitter(Qt::Vertical, this);
+    outputSplitter->addWidget(splitter);
+    outputSplitter->addWidget(m_buildOutput);
+    outputSplitter->setStretchFactor(0, 3);
+    outputSplitter->setStretchFactor(1, 1);
+    outputSplitter->setChildrenCollapsible(false);
+    m_buildOutput->hide();
+    m_toolBar->setObjectName(QStringLiteral("builderToolBar"));
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_toolBar->hide();
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(splitter);
+    layout->setSpacing(0);
+    layout->addWidget(m_toolBar);
+    layout->addWidget(outputSplitter, 1);
 
     connect(m_basicPage, &BasicPage::generateRequested, this, &ComponentEditor::requestGenerate);
     connect(m_basicPage, &BasicPage::codeRestoreRequested, this,

@@ -10,11 +10,13 @@
 
 class QLabel;
 class QTabWidget;
+class QToolBar;
 class QUndoStack;
 
 namespace Builder {
 
 class BasicPage;
+class BuildOutputPanel;
 class ComponentPreview;
 class TypeCatalog;
 
@@ -27,7 +29,8 @@ class TypeCatalog;
  * Generate asks generationProblems() first: with errors left, the editor lists them on the Basic
  * page and refuses (generateRefused()); otherwise it emits generateRequested(). Every outcome of
  * Generate (refused, failed, written) is announced as generationReported(), so that the
- * application can list it (the editor itself never depends on the application).
+ * application can list it (the editor itself never depends on the application). Build (see
+ * BuildController) reports the same way, and prints into buildOutputPanel().
  */
 class ComponentEditor : public QWidget
 {
@@ -43,6 +46,10 @@ public:
     QTabWidget *pages() const { return m_pages; }
     BasicPage *basicPage() const { return m_basicPage; }
     ComponentPreview *preview() const { return m_preview; }
+    /// The editor's own tool bar (Build and its settings); hidden while it has no actions.
+    QToolBar *toolBar() const { return m_toolBar; }
+    /// Where Build prints; below the pages, hidden until the first build.
+    BuildOutputPanel *buildOutputPanel() const { return m_buildOutput; }
     TypeCatalog *typeCatalog() const { return m_types; }
     /// The page with the given tab title (e.g. "Data Ports"); null when there is none.
     QWidget *page(const QString &title) const;
@@ -78,6 +85,8 @@ private:
     QTabWidget *m_pages;
     BasicPage *m_basicPage;
     ComponentPreview *m_preview;
+    QToolBar *m_toolBar;
+    BuildOutputPanel *m_buildOutput;
 };
 
 } // namespace Builder

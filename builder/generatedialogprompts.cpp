@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "generatedialogprompts.h"
 
+#include "buildcontroller.h"
 #include "coderestoredialog.h"
 #include "componenteditor.h"
 #include "generatecontroller.h"
@@ -91,6 +92,7 @@ GenerateController *installGenerateController(ComponentEditor *editor,
                      [editor](const Profile::Diagnostics &problems) {
                          editor->reportGeneration(GenerateOutcome::failed(problems));
                      });
+    installBuildController(editor, controller);
     return controller;
 }
 

@@ -38,7 +38,8 @@ private:
  * Gives `editor` its Generate, Code restore and Clear backups: a GenerateController (a child of
  * the editor) asking through dialogs over it. `profilePath` tells where the profile is saved
  * (for IDL next to it); it may be empty. Outcomes go to ComponentEditor::reportGeneration();
- * while something listens there, Generate shows no summary box.
+ * while something listens there, Generate shows no summary box. The editor gets its Build over
+ * the same output folder too (installBuildController()).
  */
 GenerateController *installGenerateController(ComponentEditor *editor,
                                               std::function<QString()> profilePath);

@@ -9,10 +9,11 @@
 namespace Builder {
 
 /**
- * What one Generate ended with, for whoever shows it (the application's Problems panel and
+ * What one Generate (or Build) ended with, for whoever shows it (the application's Problems panel and
  * status bar): a one-line summary and one diagnostic per finding. Errors and warnings name the
  * file and line where known (IDL parse errors, the element a rule refuses); on success every
- * written, merged, kept or backed-up file is an Info row naming the file.
+ * written, merged, kept or backed-up file is an Info row naming the file. A Build's rows are the
+ * compiler's and CMake's errors and warnings with file, line and column.
  */
 struct GenerateOutcome
 {

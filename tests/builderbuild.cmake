@@ -5,3 +5,5 @@ rtstudio_add_test(tst_codegenprojectbuilder
     SOURCES tst_codegenprojectbuilder.cpp tst_builderbuildsupport.h LIBS rtcodegen)
 rtstudio_add_test(tst_rtctlbuild
     SOURCES tst_rtctlbuild.cpp tst_builderbuildsupport.h LIBS rtstudio_rtctlrunner)
+rtstudio_add_test(tst_builderbuildapp
+    SOURCES tst_builderbuildapp.cpp tst_builderbuildsupport.h LIBS rtstudio_app)
