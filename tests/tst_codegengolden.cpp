@@ -338,6 +338,12 @@ void TestCodegenGolden::cmakeConfigures()
             qPrintable(tree + ":\n" + output));
         QVERIFY2(!output.contains(QLatin1String("CMake Warning")), qPrintable(output));
         QVERIFY(QFileInfo::exists(QDir(build.path()).filePath("Makefile")));
+        // `cmake --install` puts the component's headers beside the module and the program.
+        QFile rules(QDir(build.path()).filePath("src/cmake_install.cmake"));
+        QVERIFY(rules.open(QIODevice::ReadOnly));
+        const QString name = tree == projectDir(fixture) ? fixture : fixture + QStringLiteral("Test");
+        QVERIFY2(rules.readAll().contains(QStringLiteral("/include/%1\"").arg(name).toUtf8()),
+                 qPrintable(rules.fileName()));
     }
 }
 
