@@ -9,6 +9,7 @@
 #include <coil/Mutex.h>
 #include <coil/NonCopyable.h>
 #include <coil/OS.h>
+#include <coil/PeriodicTask.h>
 #include <coil/Properties.h>
 #include <coil/Singleton.h>
 #include <coil/stringutil.h>
@@ -19,6 +20,7 @@
 #include <coil/UUID.h>
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QRandomGenerator>
 #include <QRegularExpression>
@@ -192,6 +194,8 @@ private slots:
     void dynamicLib();
     void nonCopyable();
     void asyncInvoker();
+    void periodicTask();
+    void periodicTaskStopsWithoutWaitingForThePeriod();
 };
 
 // ---------------------------------------------------------------- Properties
@@ -1163,6 +1167,55 @@ void TestSdkCoil::asyncInvoker()
     for (int i = 0; i < 20; ++i)
         coil::AsyncInvoker(&robot, [](Robot *r) { r->home(); }, true)->invoke();
     QTRY_COMPARE(robot.homed.load(), 22);
+}
+
+void TestSdkCoil::periodicTask()
+{
+    std::atomic<int> calls{0};
+    coil::PeriodicTask task;
+    task.activate(); // no function yet: nothing starts
+    task.setTask([&calls] { ++calls; });
+    task.setPeriod(std::chrono::milliseconds(1));
+    task.executionMeasure(true);
+    task.executionMeasureCount(2);
+    task.periodicMeasure(true);
+    task.periodicMeasureCount(2);
+    task.activate();
+    task.activate(); // already running: no second thread
+    QTRY_VERIFY(calls.load() >= 5);
+    QTRY_VERIFY(task.getPeriodStat().max_interval > 0.0);
+    const coil::TimeMeasure::Statistics exec = task.getExecStat();
+    QVERIFY(exec.min_interval >= 0.0 && exec.min_interval <= exec.max_interval);
+
+    task.suspend();
+    const int beforeSignal = calls.load();
+    task.signal(); // one more call although suspended
+    QTRY_VERIFY(calls.load() > beforeSignal);
+    task.resume();
+    const int resumedFrom = calls.load();
+    QTRY_VERIFY(calls.load() > resumedFrom + 2);
+
+    task.finalize();
+    task.wait();
+    const int stoppedAt = calls.load();
+    task.activate(); // runs again after a stop
+    QTRY_VERIFY(calls.load() > stoppedAt);
+}
+
+void TestSdkCoil::periodicTaskStopsWithoutWaitingForThePeriod()
+{
+    std::atomic<int> calls{0};
+    QElapsedTimer timer;
+    timer.start();
+    {
+        coil::PeriodicTask task;
+        task.setTask([&calls] { ++calls; });
+        task.setPeriod(std::chrono::seconds(30));
+        task.activate();
+        QTRY_COMPARE(calls.load(), 1);
+    } // the destructor stops and joins the thread
+    QVERIFY2(timer.elapsed() < 10000, qPrintable(QString::number(timer.elapsed())));
+    QCOMPARE(calls.load(), 1);
 }
 
 QTEST_APPLESS_MAIN(TestSdkCoil)

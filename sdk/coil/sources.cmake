@@ -11,6 +11,8 @@ set(SDK_COIL_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Mutex.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/NonCopyable.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/OS.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/PeriodicTask.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/PeriodicTaskBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Properties.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Singleton.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/stringutil.h
@@ -24,6 +26,7 @@ set(SDK_COIL_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/ClockManager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/DynamicLib.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/File.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/PeriodicTask.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Properties.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/stringutil.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Task.cpp

@@ -11,6 +11,8 @@
 #include <coil/Mutex.h>
 #include <coil/NonCopyable.h>
 #include <coil/OS.h>
+#include <coil/PeriodicTask.h>
+#include <coil/PeriodicTaskBase.h>
 #include <coil/Properties.h>
 #include <coil/Singleton.h>
 #include <coil/stringutil.h>
@@ -71,6 +73,8 @@ int sdkcoil_cxx11_check()
   coil::DynamicLib lib;
   coil::IClock& clock = coil::ClockManager::instance().getClock("logical");
   (void)clock;
+  coil::PeriodicTask periodic;
+  periodic.setPeriod(std::chrono::milliseconds(10));
   coil::TimeMeasure measure;
   measure.tick();
   measure.tack();
