@@ -499,8 +499,9 @@ QVariantList ContextBuilder::javaVectorHolders() const
 
 bool ContextBuilder::hasVectorConfiguration() const
 {
-    return std::any_of(m_profile.configurations.cbegin(), m_profile.configurations.cend(),
-                       [](const RtcConfiguration &c) { return vectorElementType(c.type).has_value(); });
+    return std::any_of(
+        m_profile.configurations.cbegin(), m_profile.configurations.cend(),
+        [](const RtcConfiguration &c) { return vectorElementType(c.type).has_value(); });
 }
 
 bool ContextBuilder::checkNames(TargetLanguage language, Diagnostics *diagnostics) const

@@ -341,7 +341,8 @@ void TestCodegenGolden::cmakeConfigures()
         // `cmake --install` puts the component's headers beside the module and the program.
         QFile rules(QDir(build.path()).filePath("src/cmake_install.cmake"));
         QVERIFY(rules.open(QIODevice::ReadOnly));
-        const QString name = tree == projectDir(fixture) ? fixture : fixture + QStringLiteral("Test");
+        const QString name
+            = tree == projectDir(fixture) ? fixture : fixture + QStringLiteral("Test");
         QVERIFY2(rules.readAll().contains(QStringLiteral("/include/%1\"").arg(name).toUtf8()),
                  qPrintable(rules.fileName()));
     }
@@ -459,10 +460,10 @@ int main()
                  work.path(), &output),
              qPrintable(output));
     QVERIFY2(run(program, {}, work.path(), &output), qPrintable(output));
-    QCOMPARE(output.split(QLatin1Char('\n'), Qt::SkipEmptyParts),
-             (QStringList {"ok 2|-1.57|1.57", "ok 2|0.5|2", "ok 3|1|2|3",
-                           "ok 3|first|second item|third", "ok 1|alone", "ok 0", "fail 0",
-                           "fail 0", "kept 1|7", "stringTo 1 2"}));
+    QCOMPARE(
+        output.split(QLatin1Char('\n'), Qt::SkipEmptyParts),
+        (QStringList {"ok 2|-1.57|1.57", "ok 2|0.5|2", "ok 3|1|2|3", "ok 3|first|second item|third",
+                      "ok 1|alone", "ok 0", "fail 0", "fail 0", "kept 1|7", "stringTo 1 2"}));
 }
 
 QTEST_GUILESS_MAIN(TestCodegenGolden)
