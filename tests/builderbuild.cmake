@@ -7,3 +7,5 @@ rtstudio_add_test(tst_rtctlbuild
     SOURCES tst_rtctlbuild.cpp tst_builderbuildsupport.h LIBS rtstudio_rtctlrunner)
 rtstudio_add_test(tst_builderbuildapp
     SOURCES tst_builderbuildapp.cpp tst_builderbuildsupport.h LIBS rtstudio_app)
+# Signals the real rtctl while it builds.
+target_compile_definitions(tst_rtctlbuild PRIVATE RTCTL_PATH="$<TARGET_FILE:rtctl>")

@@ -4,9 +4,12 @@
 #include "rtctlrunner.h"
 #include "tst_builderbuildsupport.h"
 
+#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <csignal>
 
 class TestRtctlBuild : public QObject
 {
@@ -18,6 +21,7 @@ private slots:
     void buildsProject();
     void listsCompileErrors();
     void folderWithoutProjectFails();
+    void interruptCancelsBuild();
 };
 
 void TestRtctlBuild::usageErrors_data()
@@ -79,6 +83,40 @@ void TestRtctlBuild::folderWithoutProjectFails()
     QCOMPARE(result.code, 1);
     QVERIFY2(result.err.contains(dir.path() + QStringLiteral(" has no CMakeLists.txt")),
              qPrintable(result.err));
+}
+
+// Ctrl+C (here SIGINT, as the terminal sends it to rtctl) stops the build it started too: the
+// build runs in a process group of its own, out of the terminal's reach.
+void TestRtctlBuild::interruptCancelsBuild()
+{
+    QTemporaryDir dir;
+    QVERIFY(BuildFixture::copy(QStringLiteral("slow"), dir.path()));
+    QProcess rtctl;
+    rtctl.start(QStringLiteral(RTCTL_PATH), {"build", dir.path(), "-j", "2"});
+    QVERIFY(rtctl.waitForStarted());
+    const QString pidFile = dir.filePath(QStringLiteral("build/waiting.pid"));
+    qint64 pid = 0;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+            QFile file(pidFile);
+            pid = file.open(QIODevice::ReadOnly) ? file.readAll().trimmed().toLongLong() : 0;
+            return pid > 0;
+        }(),
+        120000);
+    QVERIFY(BuildFixture::processRuns(pid));
+    ::kill(pid_t(rtctl.processId()), SIGINT);
+    const bool ended = rtctl.waitForFinished(10000);
+    if (!ended) {
+        rtctl.kill();
+        rtctl.waitForFinished();
+    }
+    QVERIFY(ended);
+    QCOMPARE(rtctl.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(rtctl.exitCode(), 1);
+    const QString err = QString::fromUtf8(rtctl.readAllStandardError());
+    QVERIFY2(err.contains(QStringLiteral("cancelled")) && err.contains(dir.path()),
+             qPrintable(err));
+    QTRY_VERIFY_WITH_TIMEOUT(!BuildFixture::processRuns(pid), 5000);
 }
 
 QTEST_GUILESS_MAIN(TestRtctlBuild)
