@@ -3,6 +3,7 @@
 #include <coil/Async.h>
 #include <coil/ClockManager.h>
 #include <coil/Condition.h>
+#include <coil/crc.h>
 #include <coil/DynamicLib.h>
 #include <coil/File.h>
 #include <coil/Guard.h>
@@ -10,7 +11,9 @@
 #include <coil/NonCopyable.h>
 #include <coil/OS.h>
 #include <coil/PeriodicTask.h>
+#include <coil/Process.h>
 #include <coil/Properties.h>
+#include <coil/Signal.h>
 #include <coil/Singleton.h>
 #include <coil/stringutil.h>
 #include <coil/Task.h>
@@ -22,6 +25,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QRandomGenerator>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -196,6 +200,10 @@ private slots:
     void asyncInvoker();
     void periodicTask();
     void periodicTaskStopsWithoutWaitingForThePeriod();
+    void checksums_data();
+    void checksums();
+    void processes();
+    void signalAction();
 };
 
 // ---------------------------------------------------------------- Properties
@@ -1216,6 +1224,64 @@ void TestSdkCoil::periodicTaskStopsWithoutWaitingForThePeriod()
     } // the destructor stops and joins the thread
     QVERIFY2(timer.elapsed() < 10000, qPrintable(QString::number(timer.elapsed())));
     QCOMPARE(calls.load(), 1);
+}
+
+void TestSdkCoil::checksums_data()
+{
+    QTest::addColumn<QByteArray>("data");
+    QTest::addColumn<uint>("crc16");
+    QTest::addColumn<qulonglong>("crc32");
+
+    // The standard check values of CRC-16/CCITT-FALSE and CRC-32.
+    QTest::newRow("check string") << QByteArray("123456789") << 0x29B1u << 0xCBF43926ull;
+    QTest::newRow("empty") << QByteArray() << 0xFFFFu << 0x0ull;
+    QTest::newRow("high bytes") << QByteArray("\xff\x80") << 0x8F78u << 0x3F456CADull;
+}
+
+void TestSdkCoil::checksums()
+{
+    QFETCH(QByteArray, data);
+    QFETCH(uint, crc16);
+    QFETCH(qulonglong, crc32);
+    QCOMPARE(uint(coil::crc16(data.constData(), size_t(data.size()))), crc16);
+    QCOMPARE(qulonglong(coil::crc32(data.constData(), size_t(data.size()))), crc32);
+}
+
+void TestSdkCoil::processes()
+{
+    coil::vstring out{"stale"};
+    QCOMPARE(coil::create_process("printf 'one\\ntwo words\\nlast'", out), 0);
+    QCOMPARE(out, (coil::vstring{"one", "two words", "last"}));
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString marker = dir.filePath(QStringLiteral("started by launch_shell"));
+    QCOMPARE(coil::launch_shell("touch \"" + marker.toStdString() + "\""), 0);
+    QTRY_VERIFY(QFileInfo::exists(marker));
+    QCOMPARE(coil::launch_shell(""), -1);
+}
+
+namespace {
+volatile sig_atomic_t g_signalSeen = 0;
+extern "C" void recordSignal(int signum)
+{
+    g_signalSeen = signum;
+}
+} // namespace
+
+void TestSdkCoil::signalAction()
+{
+    {
+        coil::SignalAction action(recordSignal, SIGUSR2);
+        QCOMPARE(::raise(SIGUSR2), 0);
+        QCOMPARE(int(g_signalSeen), SIGUSR2);
+        struct sigaction current;
+        QCOMPARE(::sigaction(SIGUSR2, nullptr, &current), 0);
+        QVERIFY(current.sa_handler == recordSignal);
+    }
+    struct sigaction restored;
+    QCOMPARE(::sigaction(SIGUSR2, nullptr, &restored), 0);
+    QVERIFY(restored.sa_handler == SIG_DFL);
 }
 
 QTEST_APPLESS_MAIN(TestSdkCoil)

@@ -75,7 +75,8 @@ namespace coil
         sumOfSquares += seconds * seconds;
       }
     const double n = static_cast<double>(m_record.size());
-    mean_interval = sum / n;
+    // Rounding can put the mean of equal values a hair outside them.
+    mean_interval = std::min(std::max(sum / n, min_interval), max_interval);
     stddev = std::sqrt(std::max(0.0, sumOfSquares / n - mean_interval * mean_interval));
     return true;
   }

@@ -4,6 +4,7 @@ set(SDK_COIL_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Async.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/ClockManager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/config_coil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/crc.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Condition.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/DynamicLib.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/File.h
@@ -13,7 +14,9 @@ set(SDK_COIL_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/OS.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/PeriodicTask.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/PeriodicTaskBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Process.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Properties.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Signal.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Singleton.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/stringutil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Task.h
@@ -24,10 +27,13 @@ set(SDK_COIL_HEADERS
 )
 set(SDK_COIL_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/ClockManager.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/crc.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/DynamicLib.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/File.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/PeriodicTask.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/Process.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Properties.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/Signal.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/stringutil.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Task.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/TimeMeasure.cpp

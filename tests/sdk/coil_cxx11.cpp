@@ -5,6 +5,7 @@
 #include <coil/Async.h>
 #include <coil/config_coil.h>
 #include <coil/Condition.h>
+#include <coil/crc.h>
 #include <coil/DynamicLib.h>
 #include <coil/File.h>
 #include <coil/Guard.h>
@@ -13,7 +14,9 @@
 #include <coil/OS.h>
 #include <coil/PeriodicTask.h>
 #include <coil/PeriodicTaskBase.h>
+#include <coil/Process.h>
 #include <coil/Properties.h>
+#include <coil/Signal.h>
 #include <coil/Singleton.h>
 #include <coil/stringutil.h>
 #include <coil/Task.h>
