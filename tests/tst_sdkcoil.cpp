@@ -3,7 +3,6 @@
 #include <coil/Async.h>
 #include <coil/ClockManager.h>
 #include <coil/Condition.h>
-#include <coil/crc.h>
 #include <coil/DynamicLib.h>
 #include <coil/File.h>
 #include <coil/Guard.h>
@@ -15,12 +14,13 @@
 #include <coil/Properties.h>
 #include <coil/Signal.h>
 #include <coil/Singleton.h>
-#include <coil/stringutil.h>
 #include <coil/Task.h>
 #include <coil/Time.h>
 #include <coil/TimeMeasure.h>
 #include <coil/TimeValue.h>
 #include <coil/UUID.h>
+#include <coil/crc.h>
+#include <coil/stringutil.h>
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -42,8 +42,7 @@
 // that generation) declares after coil's headers: a template in namespace std that splits at
 // commas and converts each element with coil::stringTo. coil itself has none.
 namespace std {
-template <typename T>
-std::istream &operator>>(std::istream &is, std::vector<T> &v)
+template<typename T> std::istream &operator>>(std::istream &is, std::vector<T> &v)
 {
     std::string s;
     is >> s;
@@ -61,8 +60,7 @@ std::istream &operator>>(std::istream &is, std::vector<T> &v)
 // The other published style: the same kind of operator in the global namespace, declared after
 // coil/stringutil.h (RT Studio's template and hrpsys put it there). A deque stands in for the
 // container so that both operators can live in this file.
-template <typename T>
-std::istream &operator>>(std::istream &is, std::deque<T> &v)
+template<typename T> std::istream &operator>>(std::istream &is, std::deque<T> &v)
 {
     std::string s;
     std::getline(is, s);
@@ -83,12 +81,18 @@ Q_DECLARE_METATYPE(coil::vstring)
 namespace {
 
 const char *const kSpec[] = {
-    "implementation_id", "ConsoleIn",
-    "type_name",         "ConsoleIn",
-    "max_instance",      "1",
-    "conf.default.gain", "1.5",
-    "conf.default.name", "  padded  ",
-    "conf.mode1.gain",   "2.0",
+    "implementation_id",
+    "ConsoleIn",
+    "type_name",
+    "ConsoleIn",
+    "max_instance",
+    "1",
+    "conf.default.gain",
+    "1.5",
+    "conf.default.name",
+    "  padded  ",
+    "conf.mode1.gain",
+    "2.0",
     "",
 };
 
@@ -102,7 +106,7 @@ std::string storeText(coil::Properties &prop)
 class Counter : public coil::Singleton<Counter>
 {
 public:
-    std::atomic<int> hits{0};
+    std::atomic<int> hits {0};
 
 private:
     friend class coil::Singleton<Counter>;
@@ -111,7 +115,7 @@ private:
 public:
     static std::atomic<int> constructed;
 };
-std::atomic<int> Counter::constructed{0};
+std::atomic<int> Counter::constructed {0};
 
 class RecordingTask : public coil::Task
 {
@@ -128,8 +132,8 @@ public:
         coil::Task::finalize();
     }
     std::thread::id svcThread;
-    std::atomic<int> runs{0};
-    std::atomic<int> finalized{0};
+    std::atomic<int> runs {0};
+    std::atomic<int> finalized {0};
 };
 
 } // namespace
@@ -223,7 +227,7 @@ void TestSdkCoil::specArrayBuildsDefaultTree()
     QCOMPARE(std::string(def.getName()), std::string("default"));
     QCOMPARE(def.getRoot(), conf);
     QCOMPARE(def.getProperty("gain"), std::string("1.5"));
-    QCOMPARE(def.propertyNames(), (coil::vstring{"gain", "name"}));
+    QCOMPARE(def.propertyNames(), (coil::vstring {"gain", "name"}));
     QCOMPARE(prop.size(), size_t(6));
     QVERIFY(!prop.findNode("conf.nothing"));
     QVERIFY(!prop.findNode(""));
@@ -233,7 +237,7 @@ void TestSdkCoil::specArrayBuildsDefaultTree()
 void TestSdkCoil::specArrayStopsAtCount()
 {
     coil::Properties prop(kSpec, 4);
-    QCOMPARE(prop.propertyNames(), (coil::vstring{"implementation_id", "type_name"}));
+    QCOMPARE(prop.propertyNames(), (coil::vstring {"implementation_id", "type_name"}));
 
     const char *const empty[] = {""};
     QCOMPARE(coil::Properties(empty).size(), size_t(0));
@@ -366,34 +370,32 @@ void TestSdkCoil::load_data()
                            << QByteArray("corba.nameservers") << QByteArray("localhost:2809");
     QTest::newRow("equals") << QByteArray("logger.enable = YES\n") << QByteArray("logger.enable")
                             << QByteArray("YES");
-    QTest::newRow("blank separator") << QByteArray("naming.type corba\n")
-                                     << QByteArray("naming.type") << QByteArray("corba");
-    QTest::newRow("blanks around") << QByteArray("   a.b   :   c d   \n") << QByteArray("a.b")
-                                   << QByteArray("c d");
+    QTest::newRow("blank separator")
+        << QByteArray("naming.type corba\n") << QByteArray("naming.type") << QByteArray("corba");
+    QTest::newRow("blanks around")
+        << QByteArray("   a.b   :   c d   \n") << QByteArray("a.b") << QByteArray("c d");
     QTest::newRow("hash comment") << QByteArray("# a: 1\na: 2\n") << QByteArray("a")
                                   << QByteArray("2");
     QTest::newRow("bang comment") << QByteArray("  ! a: 1\n") << QByteArray("a") << QByteArray();
-    QTest::newRow("continuation")
-        << QByteArray("manager.modules.preload: A.so,\\\n    B.so,\\\n    C.so\nnext: 1\n")
-        << QByteArray("manager.modules.preload") << QByteArray("A.so,B.so,C.so");
-    QTest::newRow("after continuation") << QByteArray("x: a\\\n b\nnext: 1\n")
-                                        << QByteArray("next") << QByteArray("1");
-    QTest::newRow("escaped backslash ends line") << QByteArray("path: C:\\\\\nnext: 1\n")
-                                                 << QByteArray("path") << QByteArray("C:\\");
-    QTest::newRow("escaped separator in key") << QByteArray("a\\:b: c\n") << QByteArray("a:b")
-                                              << QByteArray("c");
-    QTest::newRow("escape sequences") << QByteArray("t: x\\ty\n") << QByteArray("t")
-                                      << QByteArray("x\ty");
-    QTest::newRow("crlf") << QByteArray("a: 1\r\nb: 2\r\n") << QByteArray("b")
-                          << QByteArray("2");
+    QTest::newRow("continuation") << QByteArray(
+        "manager.modules.preload: A.so,\\\n    B.so,\\\n    C.so\nnext: 1\n")
+                                  << QByteArray("manager.modules.preload")
+                                  << QByteArray("A.so,B.so,C.so");
+    QTest::newRow("after continuation")
+        << QByteArray("x: a\\\n b\nnext: 1\n") << QByteArray("next") << QByteArray("1");
+    QTest::newRow("escaped backslash ends line")
+        << QByteArray("path: C:\\\\\nnext: 1\n") << QByteArray("path") << QByteArray("C:\\");
+    QTest::newRow("escaped separator in key")
+        << QByteArray("a\\:b: c\n") << QByteArray("a:b") << QByteArray("c");
+    QTest::newRow("escape sequences")
+        << QByteArray("t: x\\ty\n") << QByteArray("t") << QByteArray("x\ty");
+    QTest::newRow("crlf") << QByteArray("a: 1\r\nb: 2\r\n") << QByteArray("b") << QByteArray("2");
     QTest::newRow("cr only") << QByteArray("a: 1\rb: 2\r") << QByteArray("b") << QByteArray("2");
-    QTest::newRow("no newline at end") << QByteArray("a: 1") << QByteArray("a")
-                                       << QByteArray("1");
-    QTest::newRow("continuation at end") << QByteArray("a: 1\\") << QByteArray("a")
-                                         << QByteArray("1");
+    QTest::newRow("no newline at end") << QByteArray("a: 1") << QByteArray("a") << QByteArray("1");
+    QTest::newRow("continuation at end")
+        << QByteArray("a: 1\\") << QByteArray("a") << QByteArray("1");
     QTest::newRow("key only") << QByteArray("flag\n") << QByteArray("flag") << QByteArray();
-    QTest::newRow("later wins") << QByteArray("a: 1\na: 2\n") << QByteArray("a")
-                                << QByteArray("2");
+    QTest::newRow("later wins") << QByteArray("a: 1\na: 2\n") << QByteArray("a") << QByteArray("2");
 }
 
 void TestSdkCoil::load()
@@ -504,7 +506,7 @@ void TestSdkCoil::streamDump()
 
 void TestSdkCoil::mapConstructor()
 {
-    std::map<std::string, std::string> defaults{{"a.b", "1"}, {"c", "2"}};
+    std::map<std::string, std::string> defaults {{"a.b", "1"}, {"c", "2"}};
     coil::Properties prop(defaults);
     QCOMPARE(prop.getProperty("a.b"), std::string("1"));
     QCOMPARE(prop.getDefault("c"), std::string("2"));
@@ -520,16 +522,22 @@ void TestSdkCoil::split_data()
     QTest::addColumn<bool>("ignoreEmpty");
     QTest::addColumn<coil::vstring>("expected");
 
-    QTest::newRow("commas") << "a,b,c" << "," << false << coil::vstring{"a", "b", "c"};
-    QTest::newRow("blanks trimmed") << " a , b\t,c " << "," << false
-                                    << coil::vstring{"a", "b", "c"};
-    QTest::newRow("empty kept") << "a,,b," << "," << false << coil::vstring{"a", "", "b", ""};
-    QTest::newRow("empty dropped") << "a,,b," << "," << true << coil::vstring{"a", "b"};
-    QTest::newRow("long delimiter") << "a::b::c" << "::" << false
-                                    << coil::vstring{"a", "b", "c"};
-    QTest::newRow("no delimiter found") << " abc " << "," << false << coil::vstring{"abc"};
-    QTest::newRow("empty input") << "" << "," << false << coil::vstring{};
-    QTest::newRow("empty delimiter") << " a,b " << "" << false << coil::vstring{"a,b"};
+    QTest::newRow("commas") << "a,b,c"
+                            << "," << false << coil::vstring {"a", "b", "c"};
+    QTest::newRow("blanks trimmed") << " a , b\t,c "
+                                    << "," << false << coil::vstring {"a", "b", "c"};
+    QTest::newRow("empty kept") << "a,,b,"
+                                << "," << false << coil::vstring {"a", "", "b", ""};
+    QTest::newRow("empty dropped") << "a,,b,"
+                                   << "," << true << coil::vstring {"a", "b"};
+    QTest::newRow("long delimiter") << "a::b::c"
+                                    << "::" << false << coil::vstring {"a", "b", "c"};
+    QTest::newRow("no delimiter found") << " abc "
+                                        << "," << false << coil::vstring {"abc"};
+    QTest::newRow("empty input") << ""
+                                 << "," << false << coil::vstring {};
+    QTest::newRow("empty delimiter") << " a,b "
+                                     << "" << false << coil::vstring {"a,b"};
 }
 
 void TestSdkCoil::split()
@@ -691,27 +699,27 @@ void TestSdkCoil::stringToDurations()
 
 void TestSdkCoil::stringToVectorViaNamespaceStdOperator()
 {
-    std::vector<double> gains{9.0};
+    std::vector<double> gains {9.0};
     QVERIFY(coil::stringTo(gains, "1.0,2.5,-3"));
-    QCOMPARE(gains, (std::vector<double>{1.0, 2.5, -3.0}));
+    QCOMPARE(gains, (std::vector<double> {1.0, 2.5, -3.0}));
 
     std::vector<int> ids;
     QVERIFY(coil::stringTo(ids, "4,5"));
-    QCOMPARE(ids, (std::vector<int>{4, 5}));
+    QCOMPARE(ids, (std::vector<int> {4, 5}));
 
     std::vector<std::string> names;
     QVERIFY(coil::stringTo(names, "a,b"));
-    QCOMPARE(names, (std::vector<std::string>{"a", "b"}));
+    QCOMPARE(names, (std::vector<std::string> {"a", "b"}));
 }
 
 void TestSdkCoil::stringToContainerViaGlobalOperator()
 {
     std::deque<double> values;
     QVERIFY(coil::stringTo(values, "1.5, 2.5"));
-    QCOMPARE(values, (std::deque<double>{1.5, 2.5}));
+    QCOMPARE(values, (std::deque<double> {1.5, 2.5}));
 
     QVERIFY(!coil::stringTo(values, "1.5, x"));
-    QCOMPARE(values, (std::deque<double>{1.5, 2.5})); // unchanged on failure
+    QCOMPARE(values, (std::deque<double> {1.5, 2.5})); // unchanged on failure
 }
 
 void TestSdkCoil::otosAndSprintf()
@@ -753,7 +761,8 @@ void TestSdkCoil::addressChecks()
     QVERIFY(!coil::isAbsolutePath("lib/x.so"));
     QVERIFY(!coil::isAbsolutePath(""));
 
-    const coil::mapstring params = coil::urlparam2map("corbaloc::h:2809/x?interface_type=corba&id=");
+    const coil::mapstring params
+        = coil::urlparam2map("corbaloc::h:2809/x?interface_type=corba&id=");
     QCOMPARE(params.size(), size_t(2));
     QCOMPARE(params.at("interface_type"), std::string("corba"));
     QCOMPARE(params.at("id"), std::string());
@@ -761,11 +770,11 @@ void TestSdkCoil::addressChecks()
 
 void TestSdkCoil::listHelpers()
 {
-    QVERIFY(coil::includes(coil::vstring{"Periodic", "Event"}, "periodic"));
-    QVERIFY(!coil::includes(coil::vstring{"Periodic"}, "periodic", false));
+    QVERIFY(coil::includes(coil::vstring {"Periodic", "Event"}, "periodic"));
+    QVERIFY(!coil::includes(coil::vstring {"Periodic"}, "periodic", false));
     QVERIFY(coil::includes("a, b ,c", "B"));
     QVERIFY(!coil::includes("a,b", "d"));
-    QCOMPARE(coil::unique_sv({"b", "a", "b", "c", "a"}), (coil::vstring{"b", "a", "c"}));
+    QCOMPARE(coil::unique_sv({"b", "a", "b", "c", "a"}), (coil::vstring {"b", "a", "c"}));
     QCOMPARE(coil::flatten({"a", "b", "c"}), std::string("a, b, c"));
     QCOMPARE(coil::flatten({"a", "b"}, ","), std::string("a,b"));
     QCOMPARE(coil::flatten({}), std::string());
@@ -778,7 +787,7 @@ void TestSdkCoil::listHelpers()
 void TestSdkCoil::argvHelpers()
 {
     const coil::vstring args = coil::parseArgs("rtcd -o \"a b\" 'c d' e\\ f");
-    QCOMPARE(args, (coil::vstring{"rtcd", "-o", "a b", "c d", "e f"}));
+    QCOMPARE(args, (coil::vstring {"rtcd", "-o", "a b", "c d", "e f"}));
 
     coil::Argv argv(args);
     QCOMPARE(argv.size(), size_t(5));
@@ -790,7 +799,7 @@ void TestSdkCoil::argvHelpers()
     QCOMPARE(std::string(raw[1]), std::string("yz"));
     QVERIFY(raw[2] == nullptr);
     for (char **p = raw; *p; ++p)
-        delete[] *p;
+        delete[] * p;
     delete[] raw;
 }
 
@@ -1093,16 +1102,16 @@ void TestSdkCoil::files()
 
     coil::vstring names = coil::filelist(root.c_str(), "*.so");
     std::sort(names.begin(), names.end());
-    QCOMPARE(names, (coil::vstring{"A.so", "B.so"}));
+    QCOMPARE(names, (coil::vstring {"A.so", "B.so"}));
     names = coil::filelist(root.c_str(), "+.txt");
-    QCOMPARE(names, (coil::vstring{"notes.txt"}));
+    QCOMPARE(names, (coil::vstring {"notes.txt"}));
     QCOMPARE(coil::filelist(root.c_str()).size(), size_t(6)); // with ".", ".." and "sub"
     QVERIFY(coil::filelist("/no/such/dir").empty());
 
     coil::vstring found;
     coil::findFile(root, "A.so", found);
     std::sort(found.begin(), found.end());
-    QCOMPARE(found, (coil::vstring{root + "/A.so", root + "/sub/deeper/A.so"}));
+    QCOMPARE(found, (coil::vstring {root + "/A.so", root + "/sub/deeper/A.so"}));
 
     coil::vstring libraries;
     coil::getFileList(root, "so", libraries);
@@ -1145,7 +1154,7 @@ void TestSdkCoil::asyncInvoker()
 {
     struct Robot
     {
-        std::atomic<int> homed{0};
+        std::atomic<int> homed {0};
         void home() { ++homed; }
     } robot;
 
@@ -1173,13 +1182,15 @@ void TestSdkCoil::asyncInvoker()
 
     // Calls that delete themselves when done.
     for (int i = 0; i < 20; ++i)
-        coil::AsyncInvoker(&robot, [](Robot *r) { r->home(); }, true)->invoke();
+        coil::AsyncInvoker(
+            &robot, [](Robot *r) { r->home(); }, true)
+            ->invoke();
     QTRY_COMPARE(robot.homed.load(), 22);
 }
 
 void TestSdkCoil::periodicTask()
 {
-    std::atomic<int> calls{0};
+    std::atomic<int> calls {0};
     coil::PeriodicTask task;
     task.activate(); // no function yet: nothing starts
     task.setTask([&calls] { ++calls; });
@@ -1212,7 +1223,7 @@ void TestSdkCoil::periodicTask()
 
 void TestSdkCoil::periodicTaskStopsWithoutWaitingForThePeriod()
 {
-    std::atomic<int> calls{0};
+    std::atomic<int> calls {0};
     QElapsedTimer timer;
     timer.start();
     {
@@ -1249,9 +1260,9 @@ void TestSdkCoil::checksums()
 
 void TestSdkCoil::processes()
 {
-    coil::vstring out{"stale"};
+    coil::vstring out {"stale"};
     QCOMPARE(coil::create_process("printf 'one\\ntwo words\\nlast'", out), 0);
-    QCOMPARE(out, (coil::vstring{"one", "two words", "last"}));
+    QCOMPARE(out, (coil::vstring {"one", "two words", "last"}));
 
     QTemporaryDir dir;
     QVERIFY(dir.isValid());

@@ -17,116 +17,108 @@
 
 #include <mutex>
 
-namespace coil
+namespace coil {
+/*! An asynchronous call running in its own thread. */
+class Async : public coil::Task
 {
-  /*! An asynchronous call running in its own thread. */
-  class Async : public coil::Task
-  {
-  public:
-    Async() {}
-    virtual ~Async() {}
+public:
+    Async() { }
+    virtual ~Async() { }
     /*! Starts the call. */
     virtual void invoke() = 0;
     /*! True once the call has returned. */
     virtual bool finished() = 0;
     /*! Waits for the call to return and deletes this object. */
     virtual void exit() = 0;
-  };
+};
 
-  namespace detail
-  {
-    // The common part of the two invoker kinds; Func is either a value or a reference type.
-    template <typename Object, typename Func>
-    class AsyncCall : public Async
+namespace detail {
+// The common part of the two invoker kinds; Func is either a value or a reference type.
+template<typename Object, typename Func> class AsyncCall : public Async
+{
+public:
+    AsyncCall(Object *obj, Func func, bool auto_delete)
+        : m_obj(obj)
+        , m_func(func)
+        , m_finished(false)
+        , m_autodelete(auto_delete)
+    { }
+    int svc()
     {
-    public:
-      AsyncCall(Object* obj, Func func, bool auto_delete)
-        : m_obj(obj), m_func(func), m_finished(false), m_autodelete(auto_delete)
-      {
-      }
-      int svc()
-      {
         m_func(m_obj);
         std::lock_guard<std::mutex> lock(m_mutex);
         m_finished = true;
         return 0;
-      }
-      void finalize()
-      {
+    }
+    void finalize()
+    {
         Task::finalize();
         // The thread ends right after this call and touches nothing of the object, so
         // a call that owns itself can go now.
         if (m_autodelete)
-          delete this;
-      }
-      void invoke()
-      {
-        activate();
-      }
-      bool finished()
-      {
+            delete this;
+    }
+    void invoke() { activate(); }
+    bool finished()
+    {
         bool done;
         {
-          std::lock_guard<std::mutex> lock(m_mutex);
-          done = m_finished;
+            std::lock_guard<std::mutex> lock(m_mutex);
+            done = m_finished;
         }
         if (done)
-          Task::wait();
+            Task::wait();
         return done;
-      }
-      void exit()
-      {
+    }
+    void exit()
+    {
         Task::wait();
         delete this;
-      }
-
-    private:
-      Object* m_obj;
-      Func m_func;
-      bool m_finished;
-      const bool m_autodelete;
-      std::mutex m_mutex;
-    };
-  } // namespace detail
-
-  /*! An asynchronous call holding a copy of the function. */
-  template <typename Object, typename Func>
-  class Async_t : public detail::AsyncCall<Object, Func>
-  {
-  public:
-    /*! Calls @p func(@p obj) when invoked; with @p auto_delete the call deletes itself. */
-    Async_t(Object* obj, Func func, bool auto_delete = false)
-      : detail::AsyncCall<Object, Func>(obj, func, auto_delete)
-    {
     }
-  };
 
-  /*! An asynchronous call referring to a function object the caller keeps alive. */
-  template <typename Object, typename Func>
-  class Async_ref_t : public detail::AsyncCall<Object, Func&>
-  {
-  public:
+private:
+    Object *m_obj;
+    Func m_func;
+    bool m_finished;
+    const bool m_autodelete;
+    std::mutex m_mutex;
+};
+} // namespace detail
+
+/*! An asynchronous call holding a copy of the function. */
+template<typename Object, typename Func> class Async_t : public detail::AsyncCall<Object, Func>
+{
+public:
     /*! Calls @p func(@p obj) when invoked; with @p auto_delete the call deletes itself. */
-    Async_ref_t(Object* obj, Func& func, bool auto_delete = false)
-      : detail::AsyncCall<Object, Func&>(obj, func, auto_delete)
-    {
-    }
-  };
+    Async_t(Object *obj, Func func, bool auto_delete = false)
+        : detail::AsyncCall<Object, Func>(obj, func, auto_delete)
+    { }
+};
 
-  /*! A new call of @p func(@p obj) (not started: call invoke()). */
-  template <typename Object, typename Func>
-  inline Async_t<Object, Func>* AsyncInvoker(Object* obj, Func func, bool auto_delete = false)
-  {
+/*! An asynchronous call referring to a function object the caller keeps alive. */
+template<typename Object, typename Func>
+class Async_ref_t : public detail::AsyncCall<Object, Func &>
+{
+public:
+    /*! Calls @p func(@p obj) when invoked; with @p auto_delete the call deletes itself. */
+    Async_ref_t(Object *obj, Func &func, bool auto_delete = false)
+        : detail::AsyncCall<Object, Func &>(obj, func, auto_delete)
+    { }
+};
+
+/*! A new call of @p func(@p obj) (not started: call invoke()). */
+template<typename Object, typename Func>
+inline Async_t<Object, Func> *AsyncInvoker(Object *obj, Func func, bool auto_delete = false)
+{
     return new Async_t<Object, Func>(obj, func, auto_delete);
-  }
+}
 
-  /*! A new call of (*@p func)(@p obj), using the caller's function object. */
-  template <typename Object, typename Func>
-  inline Async_ref_t<Object, Func>* AsyncInvoker(Object* obj, Func* func,
-                                                 bool auto_delete = false)
-  {
+/*! A new call of (*@p func)(@p obj), using the caller's function object. */
+template<typename Object, typename Func>
+inline Async_ref_t<Object, Func> *AsyncInvoker(Object *obj, Func *func, bool auto_delete = false)
+{
     return new Async_ref_t<Object, Func>(obj, *func, auto_delete);
-  }
+}
 } // namespace coil
 
 #endif // COIL_ASYNC_H

@@ -8,29 +8,25 @@
 
 #include <coil/Mutex.h>
 
-namespace coil
+namespace coil {
+/*! Locks @p M (anything with lock() and unlock()) on construction, unlocks on destruction. */
+template<class M> class Guard
 {
-  /*! Locks @p M (anything with lock() and unlock()) on construction, unlocks on destruction. */
-  template <class M>
-  class Guard
-  {
-  public:
+public:
     /*! Locks @p mutex. */
-    explicit Guard(M& mutex) : m_mutex(mutex)
+    explicit Guard(M &mutex)
+        : m_mutex(mutex)
     {
-      m_mutex.lock();
+        m_mutex.lock();
     }
     /*! Unlocks the mutex. */
-    ~Guard()
-    {
-      m_mutex.unlock();
-    }
+    ~Guard() { m_mutex.unlock(); }
 
-  private:
-    Guard(const Guard&);
-    Guard& operator=(const Guard&);
-    M& m_mutex;
-  };
+private:
+    Guard(const Guard &);
+    Guard &operator=(const Guard &);
+    M &m_mutex;
+};
 } // namespace coil
 
 #endif // COIL_GUARD_H

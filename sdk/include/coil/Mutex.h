@@ -8,48 +8,35 @@
 
 #include <pthread.h>
 
-namespace coil
+namespace coil {
+/*! A non-recursive mutex; use it with coil::Guard for scoped locking. */
+class Mutex
 {
-  /*! A non-recursive mutex; use it with coil::Guard for scoped locking. */
-  class Mutex
-  {
-  public:
+public:
     /*! @p name is accepted for compatibility and ignored. */
-    Mutex(const char* const name = 0)
+    Mutex(const char *const name = 0)
     {
-      (void)name;
-      ::pthread_mutex_init(&mutex_, 0);
+        (void)name;
+        ::pthread_mutex_init(&mutex_, 0);
     }
-    ~Mutex()
-    {
-      ::pthread_mutex_destroy(&mutex_);
-    }
+    ~Mutex() { ::pthread_mutex_destroy(&mutex_); }
     /*! Blocks until the mutex is locked. */
-    void lock()
-    {
-      ::pthread_mutex_lock(&mutex_);
-    }
+    void lock() { ::pthread_mutex_lock(&mutex_); }
     /*!
      * Tries to lock without blocking. As in OpenRTM-aist 1.x on POSIX, the result is the
      * failure flag: false means the lock was taken, true means another holder has it.
      */
-    bool trylock()
-    {
-      return ::pthread_mutex_trylock(&mutex_) != 0;
-    }
+    bool trylock() { return ::pthread_mutex_trylock(&mutex_) != 0; }
     /*! Releases the mutex. */
-    void unlock()
-    {
-      ::pthread_mutex_unlock(&mutex_);
-    }
+    void unlock() { ::pthread_mutex_unlock(&mutex_); }
 
     /*! The underlying POSIX mutex (coil::Condition waits on it). */
     pthread_mutex_t mutex_;
 
-  private:
-    Mutex(const Mutex&);
-    Mutex& operator=(const Mutex&);
-  };
+private:
+    Mutex(const Mutex &);
+    Mutex &operator=(const Mutex &);
+};
 } // namespace coil
 
 #endif // COIL_MUTEX_H

@@ -15,16 +15,15 @@
 #include <functional>
 #include <mutex>
 
-namespace coil
+namespace coil {
+/*!
+ * Calls the function given to setTask() once per period in its own thread, from activate()
+ * until finalize(). A waiting period is cut short by finalize(), so finalize() and wait()
+ * return promptly. The destructor stops and joins the thread.
+ */
+class PeriodicTask : public coil::PeriodicTaskBase
 {
-  /*!
-   * Calls the function given to setTask() once per period in its own thread, from activate()
-   * until finalize(). A waiting period is cut short by finalize(), so finalize() and wait()
-   * return promptly. The destructor stops and joins the thread.
-   */
-  class PeriodicTask : public coil::PeriodicTaskBase
-  {
-  public:
+public:
     PeriodicTask();
     virtual ~PeriodicTask();
     void activate();
@@ -41,7 +40,7 @@ namespace coil
     TimeMeasure::Statistics getExecStat();
     TimeMeasure::Statistics getPeriodStat();
 
-  protected:
+protected:
     /*! The loop of the thread. */
     int svc();
     /*! Waits for the rest of the period (or until finalize()). */
@@ -51,7 +50,7 @@ namespace coil
     /*! Publishes the period statistics every periodicMeasureCount() periods. */
     virtual void updatePeriodStat();
 
-  private:
+private:
     bool waitWhileSuspended();
 
     std::function<void(void)> m_func;
@@ -74,7 +73,7 @@ namespace coil
     std::mutex m_statMutex;
     TimeMeasure::Statistics m_execStat;
     TimeMeasure::Statistics m_periodStat;
-  };
+};
 } // namespace coil
 
 #endif // COIL_PERIODICTASK_H

@@ -12,13 +12,12 @@
 #include <chrono>
 #include <functional>
 
-namespace coil
+namespace coil {
+/*! A thread that calls a function once per period (see coil::PeriodicTask). */
+class PeriodicTaskBase : public coil::Task
 {
-  /*! A thread that calls a function once per period (see coil::PeriodicTask). */
-  class PeriodicTaskBase : public coil::Task
-  {
-  public:
-    virtual ~PeriodicTaskBase() {}
+public:
+    virtual ~PeriodicTaskBase() { }
     /*! Starts calling the function. */
     virtual void activate() = 0;
     /*! Stops the thread (join it with wait()). */
@@ -45,7 +44,7 @@ namespace coil
     virtual coil::TimeMeasure::Statistics getExecStat() = 0;
     /*! The latest statistics of the actual period. */
     virtual coil::TimeMeasure::Statistics getPeriodStat() = 0;
-  };
+};
 } // namespace coil
 
 #endif // COIL_PERIODICTASKBASE_H

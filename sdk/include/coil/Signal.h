@@ -10,27 +10,26 @@
 
 #include <signal.h>
 
-namespace coil
-{
-  /*! A signal handler function. */
-  extern "C" typedef void (*SignalHandler)(int);
+namespace coil {
+/*! A signal handler function. */
+extern "C" typedef void (*SignalHandler)(int);
 
-  /*! Installs @p handle for @p signum; the destructor restores the default action. */
-  class SignalAction
-  {
-  public:
+/*! Installs @p handle for @p signum; the destructor restores the default action. */
+class SignalAction
+{
+public:
     /*! Installs nothing. */
     SignalAction();
     /*! Installs @p handle for signal @p signum. */
     SignalAction(SignalHandler handle, int signum);
     ~SignalAction();
 
-  private:
-    SignalAction(const SignalAction&);
-    SignalAction& operator=(const SignalAction&);
+private:
+    SignalAction(const SignalAction &);
+    SignalAction &operator=(const SignalAction &);
     SignalHandler m_handle;
     int m_signum;
-  };
+};
 } // namespace coil
 
 #endif // COIL_SIGNAL_H

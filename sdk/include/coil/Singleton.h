@@ -6,35 +6,33 @@
 #ifndef COIL_SINGLETON_H
 #define COIL_SINGLETON_H
 
-namespace coil
+namespace coil {
+/*!
+ * Derive as `class X : public coil::Singleton<X>` (with `friend class coil::Singleton<X>;`
+ * when X's constructor is private) and use X::instance(). The instance is created on first
+ * use, by one thread only, and lives until the program ends.
+ */
+template<class SingletonClass> class Singleton
 {
-  /*!
-   * Derive as `class X : public coil::Singleton<X>` (with `friend class coil::Singleton<X>;`
-   * when X's constructor is private) and use X::instance(). The instance is created on first
-   * use, by one thread only, and lives until the program ends.
-   */
-  template <class SingletonClass>
-  class Singleton
-  {
-  public:
-    typedef SingletonClass* SingletonClassPtr;
+public:
+    typedef SingletonClass *SingletonClassPtr;
 
     /*! The instance, created on the first call. */
-    static SingletonClass& instance()
+    static SingletonClass &instance()
     {
-      // C++11 initialises function statics exactly once, even under concurrent calls.
-      static SingletonClass* const object = new SingletonClass();
-      return *object;
+        // C++11 initialises function statics exactly once, even under concurrent calls.
+        static SingletonClass *const object = new SingletonClass();
+        return *object;
     }
 
-  protected:
-    Singleton() {}
-    ~Singleton() {}
+protected:
+    Singleton() { }
+    ~Singleton() { }
 
-  private:
-    Singleton(const Singleton&);
-    Singleton& operator=(const Singleton&);
-  };
+private:
+    Singleton(const Singleton &);
+    Singleton &operator=(const Singleton &);
+};
 } // namespace coil
 
 #endif // COIL_SINGLETON_H

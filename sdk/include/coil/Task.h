@@ -8,25 +8,24 @@
 
 #include <thread>
 
-namespace coil
+namespace coil {
+/*!
+ * Override svc() and call activate() to run it in a new thread; wait() joins that thread.
+ * After svc() returns, finalize() runs in the same thread. A task runs at most one thread
+ * at a time: activate() does nothing while svc() is still running, and starts a new run
+ * once it has returned.
+ *
+ * Join the thread (wait()) before the derived object is destroyed: svc() of a destroyed
+ * object cannot run.
+ */
+class Task
 {
-  /*!
-   * Override svc() and call activate() to run it in a new thread; wait() joins that thread.
-   * After svc() returns, finalize() runs in the same thread. A task runs at most one thread
-   * at a time: activate() does nothing while svc() is still running, and starts a new run
-   * once it has returned.
-   *
-   * Join the thread (wait()) before the derived object is destroyed: svc() of a destroyed
-   * object cannot run.
-   */
-  class Task
-  {
-  public:
+public:
     Task();
     /*! Joins a thread that was never joined (the subclass should have stopped svc()). */
     virtual ~Task();
     /*! Hook for subclasses to prepare the task; returns 0. */
-    virtual int open(void* args = 0);
+    virtual int open(void *args = 0);
     /*! Hook for subclasses to shut the task down; returns 0. */
     virtual int close(unsigned long flags = 0);
     /*! The thread body; returns 0 unless overridden. */
@@ -44,14 +43,14 @@ namespace coil
     /*! Called in the task's thread after svc() returns; calls reset(). */
     virtual void finalize();
     /*! Runs svc() then finalize() of the coil::Task @p args points to. */
-    static void* svc_run(void* args = 0);
+    static void *svc_run(void *args = 0);
 
-  private:
-    Task(const Task&);
-    Task& operator=(const Task&);
+private:
+    Task(const Task &);
+    Task &operator=(const Task &);
     struct Thread;
-    Thread* m_thread;
-  };
+    Thread *m_thread;
+};
 } // namespace coil
 
 #endif // COIL_TASK_H

@@ -9,22 +9,21 @@
 #include <chrono>
 #include <vector>
 
-namespace coil
+namespace coil {
+/*!
+ * Measures durations: tick() starts one, tack() ends it and records it. The last
+ * @p buflen recorded durations make up the statistics.
+ */
+class TimeMeasure
 {
-  /*!
-   * Measures durations: tick() starts one, tack() ends it and records it. The last
-   * @p buflen recorded durations make up the statistics.
-   */
-  class TimeMeasure
-  {
-  public:
+public:
     /*! Summary of the recorded intervals, in seconds. */
     struct Statistics
     {
-      double max_interval;
-      double min_interval;
-      double mean_interval;
-      double std_deviation;
+        double max_interval;
+        double min_interval;
+        double mean_interval;
+        double std_deviation;
     };
 
     /*! Keeps up to @p buflen intervals (at least one). */
@@ -40,12 +39,12 @@ namespace coil
     /*! The number of intervals the statistics are based on. */
     unsigned long int count() const;
     /*! The statistics in seconds; false when nothing has been recorded. */
-    bool getStatistics(double& max_interval, double& min_interval, double& mean_interval,
-                       double& stddev);
+    bool getStatistics(double &max_interval, double &min_interval, double &mean_interval,
+                       double &stddev);
     /*! The statistics in seconds (all zero when nothing has been recorded). */
     Statistics getStatistics();
 
-  private:
+private:
     std::vector<std::chrono::nanoseconds> m_record;
     std::chrono::steady_clock::time_point m_begin;
     std::chrono::nanoseconds m_interval;
@@ -53,7 +52,7 @@ namespace coil
     const unsigned long int m_countMax;
     bool m_recurred;
     bool m_ticking;
-  };
+};
 } // namespace coil
 
 #endif // COIL_TIMEMEASURE_H

@@ -8,35 +8,34 @@
 
 #include <coil/config_coil.h>
 
-namespace coil
+namespace coil {
+/*! A random UUID (RFC 4122 version 4). */
+class UUID
 {
-  /*! A random UUID (RFC 4122 version 4). */
-  class UUID
-  {
-  public:
+public:
     /*! A new random UUID. */
     UUID();
     /*! The UUID as 36 characters, e.g. "1b4e28ba-2fa1-41d2-883f-0016d3cca427". */
-    const char* to_string();
+    const char *to_string();
 
-  private:
+private:
     unsigned char m_bytes[16];
     char m_text[37];
-  };
+};
 
-  /*!
-   * The UUID factory, usable both ways OpenRTM-aist had it: 2.x calls
-   * coil::UUID_Generator::generateUUID(n, h), 1.x made an object and called init() first.
-   */
-  class UUID_Generator
-  {
-  public:
-    UUID_Generator() {}
+/*!
+ * The UUID factory, usable both ways OpenRTM-aist had it: 2.x calls
+ * coil::UUID_Generator::generateUUID(n, h), 1.x made an object and called init() first.
+ */
+class UUID_Generator
+{
+public:
+    UUID_Generator() { }
     /*! Nothing to prepare (kept for 1.x code). */
-    void init() {}
+    void init() { }
     /*! A new random UUID, allocated with new; the arguments are ignored. */
-    static UUID* generateUUID(int n, int h);
-  };
+    static UUID *generateUUID(int n, int h);
+};
 } // namespace coil
 
 #endif // COIL_UUID_H

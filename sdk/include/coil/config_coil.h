@@ -7,21 +7,21 @@
 #define CONFIG_COIL_H
 
 #if defined(__linux__)
-#  ifndef COIL_OS_LINUX
-#    define COIL_OS_LINUX TRUE
-#  endif
+#ifndef COIL_OS_LINUX
+#define COIL_OS_LINUX TRUE
+#endif
 #elif defined(__APPLE__)
-#  ifndef COIL_OS_DARWIN
-#    define COIL_OS_DARWIN TRUE
-#  endif
+#ifndef COIL_OS_DARWIN
+#define COIL_OS_DARWIN TRUE
+#endif
 #elif defined(__FreeBSD__)
-#  ifndef COIL_OS_FREEBSD
-#    define COIL_OS_FREEBSD TRUE
-#  endif
+#ifndef COIL_OS_FREEBSD
+#define COIL_OS_FREEBSD TRUE
+#endif
 #elif defined(__QNX__)
-#  ifndef COIL_OS_QNX
-#    define COIL_OS_QNX TRUE
-#  endif
+#ifndef COIL_OS_QNX
+#define COIL_OS_QNX TRUE
+#endif
 #endif
 
 /*! Every coil of this SDK is the POSIX flavour. */
@@ -40,9 +40,9 @@
  * 1.x-style calls that would silently do nothing.
  */
 #if defined(__GNUC__) || defined(__clang__)
-#  define COIL_WARN_UNUSED_RESULT __attribute__((warn_unused_result))
+#define COIL_WARN_UNUSED_RESULT __attribute__((warn_unused_result))
 #else
-#  define COIL_WARN_UNUSED_RESULT
+#define COIL_WARN_UNUSED_RESULT
 #endif
 
 #endif // CONFIG_COIL_H
