@@ -114,6 +114,16 @@ bool BuildController::build()
     if (isRunning())
         return false;
     const QString folder = projectFolder();
+    if (folder.isEmpty()) {
+        const QString message = tr("Nothing to build: generate the component's project first.");
+        if (m_panel)
+            m_panel->finishBuild(false, message);
+        GenerateOutcome outcome;
+        outcome.summary = message;
+        outcome.diagnostics << Diagnostic::error(QString(), 0, 0, message);
+        emit reported(outcome);
+        return false;
+    }
     Codegen::BuildOptions options;
     options.projectDir = folder;
     options.prefixPath = sdkPrefix();
@@ -123,9 +133,8 @@ bool BuildController::build()
         m_panel->startBuild(tr("Building %1…").arg(QDir::toNativeSeparators(folder)));
     }
     emit buildStarted();
-    const bool started = !folder.isEmpty() && m_builder->start(options);
-    if (folder.isEmpty())
-        buildFinished(false, tr("Nothing to build: generate the component's project first."));
+    // One that cannot start has reported why (finished()) before start() returns.
+    const bool started = m_builder->start(options);
     updateActions();
     return started;
 }

@@ -132,6 +132,12 @@ void TestBuilderBuildApp::buildNeedsGeneratedProject()
     opened.generate->setOutputFolder(empty.path());
     opened.build->updateActions();
     QVERIFY(!build->isEnabled());
+    // Asked anyway (from code), it says why in the Problems panel, without a dialog.
+    QVERIFY(!opened.build->build());
+    QVERIFY2(window.problemsPanel()->summary().contains(empty.path()),
+             qPrintable(window.problemsPanel()->summary()));
+    QVERIFY(window.problemsPanel()->text(0).contains(QStringLiteral("no CMakeLists.txt")));
+    QVERIFY(m_modalsSeen.isEmpty());
 
     // Generate writing the C++ project enables it.
     QTemporaryDir project;
