@@ -381,6 +381,8 @@ void TestSdkCoil::load_data()
         "manager.modules.preload: A.so,\\\n    B.so,\\\n    C.so\nnext: 1\n")
                                   << QByteArray("manager.modules.preload")
                                   << QByteArray("A.so,B.so,C.so");
+    QTest::newRow("comment and blank line inside continuation")
+        << QByteArray("list: a,\\\n# b,\\\n\n  c\n") << QByteArray("list") << QByteArray("a,c");
     QTest::newRow("after continuation")
         << QByteArray("x: a\\\n b\nnext: 1\n") << QByteArray("next") << QByteArray("1");
     QTest::newRow("escaped backslash ends line")

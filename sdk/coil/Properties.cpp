@@ -201,33 +201,32 @@ void Properties::list(std::ostream &out)
 
 void Properties::load(std::istream &inStream)
 {
+    // As in OpenRTM-aist, blank and comment lines are skipped even between the lines of a
+    // continued entry, so a commented-out item inside a long list does not end the list.
     std::string pending;
-    bool continuing = false;
     while (inStream.good()) {
         std::string line = eraseHeadBlank(getlinePortable(inStream));
-        if (!continuing && (line.empty() || line[0] == '#' || line[0] == '!'))
+        if (line.empty() || line[0] == '#' || line[0] == '!')
             continue;
-        continuing = !line.empty() && line.back() == '\\' && !isEscaped(line, line.size() - 1);
-        if (continuing)
+        if (line.back() == '\\' && !isEscaped(line, line.size() - 1)) {
             line.pop_back();
-        pending += line;
-        if (continuing)
-            continue;
-        if (eraseBothEndsBlank(pending).empty()) {
-            pending.clear();
+            pending += line;
             continue;
         }
-        std::string key, value;
-        splitKeyValue(pending, key, value);
-        setProperty(eraseBothEndsBlank(unescape(key)), eraseBothEndsBlank(unescape(value)));
+        pending += line;
+        loadEntry(pending);
         pending.clear();
     }
-    // A backslash on the last line continues into nothing: keep what was read.
-    if (!eraseBothEndsBlank(pending).empty()) {
-        std::string key, value;
-        splitKeyValue(pending, key, value);
-        setProperty(eraseBothEndsBlank(unescape(key)), eraseBothEndsBlank(unescape(value)));
-    }
+    loadEntry(pending); // a backslash on the last line continues into nothing
+}
+
+void Properties::loadEntry(const std::string &entry)
+{
+    if (eraseBothEndsBlank(entry).empty())
+        return;
+    std::string key, value;
+    splitKeyValue(entry, key, value);
+    setProperty(eraseBothEndsBlank(unescape(key)), eraseBothEndsBlank(unescape(value)));
 }
 
 void Properties::save(std::ostream &out, const std::string &header)

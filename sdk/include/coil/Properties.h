@@ -143,6 +143,7 @@ protected:
 
 private:
     static void storeBelow(std::ostream &out, const std::string &prefix, const Properties *curr);
+    void loadEntry(const std::string &entry);
     Properties *childNamed(const std::string &name) const;
     Properties *makePath(const std::string &key);
     void copyChildrenFrom(const Properties &prop);
