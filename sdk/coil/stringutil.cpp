@@ -42,12 +42,12 @@ std::string wstring2string(const std::wstring &wstr)
     return out;
 }
 
-std::string toUpper(std::string str)
+std::string toUpper(std::string str) noexcept
 {
     return mapChars(std::move(str), [](unsigned char c) { return std::toupper(c); });
 }
 
-std::string toLower(std::string str)
+std::string toLower(std::string str) noexcept
 {
     return mapChars(std::move(str), [](unsigned char c) { return std::tolower(c); });
 }
@@ -116,72 +116,70 @@ std::string escape(const std::string &str)
     return out;
 }
 
-std::string unescape(std::string str)
+std::string unescape(std::string str) noexcept
 {
-    std::string out;
-    out.reserve(str.size());
-    bool pending = false;
-    for (char c : str) {
-        if (!pending) {
-            if (c == '\\')
-                pending = true;
-            else
-                out += c;
-            continue;
+    // Decodes in place (the result is never longer), so nothing can throw.
+    std::string::size_type out = 0;
+    for (std::string::size_type in = 0; in < str.size(); ++in) {
+        char c = str[in];
+        if (c == '\\' && in + 1 < str.size()) {
+            c = str[++in];
+            switch (c) {
+            case 't':
+                c = '\t';
+                break;
+            case 'n':
+                c = '\n';
+                break;
+            case 'f':
+                c = '\f';
+                break;
+            case 'r':
+                c = '\r';
+                break;
+            default:
+                break;
+            }
+        } else if (c == '\\') {
+            break; // a lone backslash at the end escapes nothing and is dropped
         }
-        pending = false;
-        switch (c) {
-        case 't':
-            out += '\t';
-            break;
-        case 'n':
-            out += '\n';
-            break;
-        case 'f':
-            out += '\f';
-            break;
-        case 'r':
-            out += '\r';
-            break;
-        default:
-            out += c;
-            break;
-        }
+        str[out++] = c;
     }
-    return out;
+    str.resize(out);
+    return str;
 }
 
-std::string eraseBlank(std::string str)
+std::string eraseBlank(std::string str) noexcept
 {
     str.erase(std::remove_if(str.begin(), str.end(), isBlank), str.end());
     return str;
 }
 
-std::string eraseHeadBlank(std::string str)
+std::string eraseHeadBlank(std::string str) noexcept
 {
     const auto first = str.find_first_not_of(" \t");
     str.erase(0, first); // npos erases everything
     return str;
 }
 
-std::string eraseTailBlank(std::string str)
+std::string eraseTailBlank(std::string str) noexcept
 {
     const auto last = str.find_last_not_of(" \t");
     str.erase(last == std::string::npos ? 0 : last + 1);
     return str;
 }
 
-std::string eraseBothEndsBlank(std::string str)
+std::string eraseBothEndsBlank(std::string str) noexcept
 {
     return eraseHeadBlank(eraseTailBlank(std::move(str)));
 }
 
-std::string eraseBothEnds(std::string str)
+std::string eraseBothEnds(std::string str) noexcept
 {
     return eraseBothEndsBlank(std::move(str));
 }
 
-std::string normalize(std::string str)
+std::string normalize(std::string str) noexcept
 {
     return toLower(eraseBothEndsBlank(std::move(str)));
 }

@@ -46,9 +46,9 @@ std::wstring string2wstring(const std::string &str);
 std::string wstring2string(const std::wstring &wstr);
 
 /*! Returns @p str in upper case (ASCII letters). */
-COIL_WARN_UNUSED_RESULT std::string toUpper(std::string str);
+COIL_WARN_UNUSED_RESULT std::string toUpper(std::string str) noexcept;
 /*! Returns @p str in lower case (ASCII letters). */
-COIL_WARN_UNUSED_RESULT std::string toLower(std::string str);
+COIL_WARN_UNUSED_RESULT std::string toLower(std::string str) noexcept;
 
 /*! Reads one line ending in LF, CR or CR LF and returns it without the line end. */
 std::string getlinePortable(std::istream &istr);
@@ -60,20 +60,20 @@ bool isEscaped(const std::string &str, std::string::size_type pos);
 /*! Writes tab, newline, form feed, carriage return and backslash as backslash sequences. */
 std::string escape(const std::string &str);
 /*! Turns backslash sequences back into characters; an unknown "\x" becomes "x". */
-std::string unescape(std::string str);
+std::string unescape(std::string str) noexcept;
 
 /*! Removes every space and tab. */
-COIL_WARN_UNUSED_RESULT std::string eraseBlank(std::string str);
+COIL_WARN_UNUSED_RESULT std::string eraseBlank(std::string str) noexcept;
 /*! Removes spaces and tabs at the start. */
-COIL_WARN_UNUSED_RESULT std::string eraseHeadBlank(std::string str);
+COIL_WARN_UNUSED_RESULT std::string eraseHeadBlank(std::string str) noexcept;
 /*! Removes spaces and tabs at the end. */
-COIL_WARN_UNUSED_RESULT std::string eraseTailBlank(std::string str);
+COIL_WARN_UNUSED_RESULT std::string eraseTailBlank(std::string str) noexcept;
 /*! Removes spaces and tabs at both ends. */
-COIL_WARN_UNUSED_RESULT std::string eraseBothEndsBlank(std::string str);
+COIL_WARN_UNUSED_RESULT std::string eraseBothEndsBlank(std::string str) noexcept;
 /*! Same as eraseBothEndsBlank(). */
-COIL_WARN_UNUSED_RESULT std::string eraseBothEnds(std::string str);
+COIL_WARN_UNUSED_RESULT std::string eraseBothEnds(std::string str) noexcept;
 /*! Trims blanks at both ends and lowers the case. */
-COIL_WARN_UNUSED_RESULT std::string normalize(std::string str);
+COIL_WARN_UNUSED_RESULT std::string normalize(std::string str) noexcept;
 /*! Replaces every occurrence of @p from by @p to (nothing happens when @p from is empty). */
 COIL_WARN_UNUSED_RESULT std::string replaceString(std::string str, const std::string &from,
                                                   const std::string &to);
