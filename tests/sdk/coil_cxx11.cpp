@@ -72,6 +72,25 @@ int sdkcoil_cxx11_check()
     double seconds = elapsed;
     sleep(0); // <unistd.h> comes with coil/OS.h and coil/Time.h
 
+    // OpenRTM-aist 1.x idioms of published components.
+    typedef coil::Guard<coil::Mutex> Guard;
+    coil::Mutex other;
+    {
+        Guard lock(other);
+    }
+    if (elapsed < 1.0 && (double)elapsed >= 0.0) // a TimeValue read as seconds
+        coil::usleep(0);
+    coil::sleep(coil::TimeValue(0, 0));
+    coil::TimeValue total = start + elapsed;
+    total += coil::TimeValue(0.5);
+    std::vector<std::string> list = coil::split("a, b", ",");
+    std::string upper = coil::toUpper(list[0]);
+    coil::UUID_Generator generator;
+    generator.init();
+    delete generator.generateUUID(2, 0x01);
+    const char *home = coil::getenv("HOME");
+    (void)home;
+
     Worker worker;
     (void)worker;
     coil::DynamicLib lib;
