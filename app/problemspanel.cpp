@@ -2,12 +2,14 @@
 #include "problemspanel.h"
 
 #include "profileio.h"
+#include "sourceviewer.h"
 
 #include <QDesktopServices>
 #include <QFile>
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
+#include <QSplitter>
 #include <QStyle>
 #include <QTreeWidget>
 #include <QUrl>
@@ -49,6 +51,7 @@ ProblemsPanel::ProblemsPanel(QWidget *parent)
     : QWidget(parent)
     , m_summary(new QLabel(this))
     , m_list(new QTreeWidget(this))
+    , m_viewer(new Builder::SourceViewer(this))
 {
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_summary->setText(tr("No problems."));
@@ -63,10 +66,17 @@ ProblemsPanel::ProblemsPanel(QWidget *parent)
     connect(m_list, &QTreeWidget::itemActivated, this,
             [this](QTreeWidgetItem *item) { activate(m_list->indexOfTopLevelItem(item)); });
 
+    m_viewer->setObjectName(QStringLiteral("problemsSourceViewer"));
+    m_viewer->hide();
+    auto *splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->setChildrenCollapsible(false);
+    splitter->addWidget(m_list);
+    splitter->addWidget(m_viewer);
+
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_summary);
-    layout->addWidget(m_list);
+    layout->addWidget(splitter);
 }
 
 void ProblemsPanel::setDiagnostics(const QString &summary, const Profile::Diagnostics &diagnostics)
@@ -103,6 +113,8 @@ void ProblemsPanel::activate(int row)
             && Profile::detectProfileKind(file.read(4096)) != Profile::ProfileKind::Unknown;
         if (profile)
             emit profileRequested(diagnostic.file);
+        else if (m_viewer->openFile(diagnostic.file, diagnostic.line, diagnostic.column))
+            m_viewer->show();
         else
             QDesktopServices::openUrl(QUrl::fromLocalFile(info.absoluteFilePath()));
     }

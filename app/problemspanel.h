@@ -9,6 +9,10 @@
 class QLabel;
 class QTreeWidget;
 
+namespace Builder {
+class SourceViewer;
+}
+
 namespace Studio {
 
 /**
@@ -17,7 +21,9 @@ namespace Studio {
  * and line, or the element it is about) and message.
  *
  * Double-clicking a row that names a file opens it: profiles (RTC.xml, RTS files) through
- * profileRequested(), anything else (generated sources, IDL) with the desktop's editor.
+ * profileRequested(); text files (generated sources, IDL, files a build complained about) in
+ * the panel's read-only source viewer beside the list, at the row's line; anything else with
+ * the desktop's application.
  */
 class ProblemsPanel : public QWidget
 {
@@ -40,6 +46,8 @@ public:
     QString text(int row) const;
     /// The location column of row `row` (file name and line, or the element).
     QString location(int row) const;
+    /// The viewer activated rows open their text files in; hidden until one does.
+    Builder::SourceViewer *sourceViewer() const { return m_viewer; }
 
 signals:
     void countChanged(int count);
@@ -51,6 +59,7 @@ signals:
 private:
     QLabel *m_summary;
     QTreeWidget *m_list;
+    Builder::SourceViewer *m_viewer;
     Profile::Diagnostics m_diagnostics;
 };
 

@@ -7,6 +7,7 @@
 #include "componentmodel.h"
 #include "generatecontroller.h"
 #include "projectbuilder.h"
+#include "runcontroller.h"
 
 #include <QAction>
 #include <QDir>
@@ -199,6 +200,7 @@ BuildController *installBuildController(ComponentEditor *editor, GenerateControl
         QObject::connect(model, &ComponentModel::profileReset, controller,
                          &BuildController::updateActions);
     }
+    installRunController(editor, generate, controller);
     return controller;
 }
 
