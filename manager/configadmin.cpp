@@ -28,6 +28,23 @@ void ConfigAdmin::applyProperties(const Properties &properties)
     m_dirty = true;
 }
 
+void ConfigAdmin::setObserver(Observer observer)
+{
+    std::lock_guard lock(m_mutex);
+    m_observer = std::move(observer);
+}
+
+void ConfigAdmin::notify(Event event, const std::string &setId) const
+{
+    Observer observer;
+    {
+        std::lock_guard lock(m_mutex);
+        observer = m_observer;
+    }
+    if (observer)
+        observer(event, setId);
+}
+
 std::vector<std::string> ConfigAdmin::setIds() const
 {
     std::lock_guard lock(m_mutex);
@@ -58,41 +75,53 @@ std::string ConfigAdmin::activeSetId() const
 
 bool ConfigAdmin::addSet(const std::string &id, const Properties &values)
 {
-    std::lock_guard lock(m_mutex);
-    if (id.empty() || m_sets.count(id))
-        return false;
-    m_sets[id] = values;
+    {
+        std::lock_guard lock(m_mutex);
+        if (id.empty() || m_sets.count(id))
+            return false;
+        m_sets[id] = values;
+    }
+    notify(Event::SetAdded, id);
     return true;
 }
 
 bool ConfigAdmin::setValues(const std::string &id, const Properties &values)
 {
-    std::lock_guard lock(m_mutex);
-    auto it = m_sets.find(id);
-    if (it == m_sets.end())
-        return false;
-    it->second.merge(values);
-    if (id == m_active)
-        m_dirty = true;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = m_sets.find(id);
+        if (it == m_sets.end())
+            return false;
+        it->second.merge(values);
+        if (id == m_active)
+            m_dirty = true;
+    }
+    notify(Event::SetValuesChanged, id);
     return true;
 }
 
 bool ConfigAdmin::removeSet(const std::string &id)
 {
-    std::lock_guard lock(m_mutex);
-    // OpenRTM refuses to remove the default and the active set.
-    if (id == "default" || id == m_active)
-        return false;
-    return m_sets.erase(id) != 0;
+    {
+        std::lock_guard lock(m_mutex);
+        // OpenRTM refuses to remove the default and the active set.
+        if (id == "default" || id == m_active || m_sets.erase(id) == 0)
+            return false;
+    }
+    notify(Event::SetRemoved, id);
+    return true;
 }
 
 bool ConfigAdmin::activate(const std::string &id)
 {
-    std::lock_guard lock(m_mutex);
-    if (!m_sets.count(id) || isHidden(id))
-        return false;
-    m_active = id;
-    m_dirty = true;
+    {
+        std::lock_guard lock(m_mutex);
+        if (!m_sets.count(id) || isHidden(id))
+            return false;
+        m_active = id;
+        m_dirty = true;
+    }
+    notify(Event::SetActivated, id);
     return true;
 }
 
@@ -107,10 +136,12 @@ bool ConfigAdmin::setParameter(const std::string &name, const std::string &value
 void ConfigAdmin::update()
 {
     std::vector<std::pair<Setter, std::string>> calls;
+    std::string activeId;
     {
         std::lock_guard lock(m_mutex);
         if (!m_dirty)
             return;
+        activeId = m_active;
         m_dirty = false;
         const Properties &active = m_sets[m_active];
         const Properties &defaults = m_sets["default"];
@@ -120,6 +151,7 @@ void ConfigAdmin::update()
     // Setters run unlocked: they may read the configuration themselves.
     for (const auto &[setter, value] : calls)
         setter(value);
+    notify(Event::Updated, activeId);
 }
 
 std::vector<std::string> ConfigAdmin::parameterNames() const

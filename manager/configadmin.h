@@ -23,6 +23,12 @@ class ConfigAdmin
 public:
     /// Parses the text into the component's variable; false when the text does not fit.
     using Setter = std::function<bool(const std::string &)>;
+    /// What changed, for observers (the SDK's configuration listeners).
+    enum class Event { SetValuesChanged, SetAdded, SetRemoved, SetActivated, Updated };
+    using Observer = std::function<void(Event event, const std::string &setId)>;
+
+    /// @p observer is called after each change, without the lock held.
+    void setObserver(Observer observer);
 
     /// Declares @p name with @p defaultValue in the "default" set and binds @p setter to it.
     void bindParameter(const std::string &name, const std::string &defaultValue, Setter setter);
@@ -56,6 +62,9 @@ private:
     std::vector<std::pair<std::string, Setter>> m_parameters;
     std::string m_active = "default";
     bool m_dirty = true;
+    Observer m_observer;
+
+    void notify(Event event, const std::string &setId) const;
 };
 
 } // namespace Runtime

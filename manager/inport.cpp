@@ -48,21 +48,21 @@ bool InPortBase::readMarshalled(CdrBytes *data, bool *littleEndian)
     return false;
 }
 
-void InPortBase::setReceiveListener(ReceiveListener listener)
+void InPortBase::setReceiveListener(SampleListener listener)
 {
     std::lock_guard lock(m_mutex);
     m_listener = std::move(listener);
 }
 
-void InPortBase::notifyReceived(const CdrBytes &data, bool littleEndian)
+void InPortBase::notifyReceived(const CdrBytes &data, bool littleEndian, const std::string &connectorId)
 {
-    ReceiveListener listener;
+    SampleListener listener;
     {
         std::lock_guard lock(m_mutex);
         listener = m_listener;
     }
     if (listener)
-        listener(data, littleEndian);
+        listener(data, littleEndian, connectorId);
 }
 
 size_t InPortBase::connectorCount()
@@ -81,7 +81,9 @@ RTC::ReturnCode_t InPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
         return RTC::RTC_OK;
     auto connector = std::make_shared<InPortPushConnector>(
         std::string(profile.connector_id), p, m_poa,
-        [this](const CdrBytes &data, bool littleEndian) { notifyReceived(data, littleEndian); });
+        [this, id = std::string(profile.connector_id)](const CdrBytes &data, bool littleEndian) {
+            notifyReceived(data, littleEndian, id);
+        });
     OpenRTM::InPortCdr_var ref = connector->reference();
     CORBA::String_var ior = theOrb()->object_to_string(ref);
     nvSet(profile.properties, "dataport.corba_cdr.inport_ior", std::string(ior.in()));
@@ -110,7 +112,9 @@ RTC::ReturnCode_t InPortBase::subscribeInterfaces(const RTC::ConnectorProfile &p
         OpenRTM::OutPortCdr_var peer = OpenRTM::OutPortCdr::_unchecked_narrow(object);
         auto connector = std::make_shared<InPortPullConnector>(
             std::string(profile.connector_id), p, peer,
-            [this](const CdrBytes &data, bool littleEndian) { notifyReceived(data, littleEndian); });
+            [this, id = std::string(profile.connector_id)](const CdrBytes &data, bool littleEndian) {
+                notifyReceived(data, littleEndian, id);
+            });
         std::lock_guard lock(m_mutex);
         m_connectors.push_back(connector);
     } catch (const CORBA::Exception &) {

@@ -10,6 +10,9 @@
 
 namespace Runtime {
 
+/// Called for every sample that arrives at an InPort, with the id of the connector it came through.
+using SampleListener = std::function<void(const CdrBytes &, bool littleEndian, const std::string &connectorId)>;
+
 /// Untyped data InPort: push connections fill buffers, pull connections are asked on read.
 class InPortBase : public DataPortBase
 {
@@ -22,7 +25,7 @@ public:
     /// Takes one sample (pushed ones first, then pulls); false when none is available.
     bool readMarshalled(CdrBytes *data, bool *littleEndian);
     /// Called (in the ORB's thread) for every sample that arrives, before it is buffered.
-    void setReceiveListener(ReceiveListener listener);
+    void setReceiveListener(SampleListener listener);
     size_t connectorCount();
 
 protected:
@@ -32,12 +35,12 @@ protected:
 
 private:
     std::vector<std::shared_ptr<InPortConnector>> connectors();
-    void notifyReceived(const CdrBytes &data, bool littleEndian);
+    void notifyReceived(const CdrBytes &data, bool littleEndian, const std::string &connectorId);
 
     PortableServer::POA_var m_poa;
     std::mutex m_mutex;
     std::vector<std::shared_ptr<InPortConnector>> m_connectors;
-    ReceiveListener m_listener;
+    SampleListener m_listener;
 };
 
 /// Typed InPort (`InPort<RTC::TimedLong>`), as OpenRTM's InPort<T>.

@@ -1,88 +1,30 @@
 // SPDX-License-Identifier: MIT
-// rtmanager: an OpenRTM-compatible manager process hosting the built-in components.
-//   rtmanager [-f rtc.conf] [-o key=value]... [-p PORT] [-d]
-// -d makes it the master (manager.is_master=YES); -p sets the listening port.
+// rtmanager: an OpenRTM-compatible manager process hosting the built-in components and the
+// modules written against the component SDK (OpenRTM-aist's C++ API).
+//   rtmanager [-f rtc.conf] [-i] [-o key:value]... [-p PORT] [-d] [-a]
+// Without -f the configuration file is searched as OpenRTM-aist does (RTC_MANAGER_CONFIG, ./rtc.conf, …).
 #include "builtins.h"
 #include "manager.h"
+#include "managerconfig.h"
+
+#include <rtm/Manager.h>
 
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <thread>
 #include <unistd.h>
 
-namespace {
-
-Runtime::Properties defaults()
-{
-    Runtime::Properties p;
-    p.set("corba.nameservers", "localhost");
-    p.set("corba.master_manager", "localhost:2810");
-    p.set("naming.enable", "YES");
-    p.set("naming.formats", "%h.host_cxt/%n.rtc");
-    p.set("manager.naming_formats", "%h.host_cxt/%n.mgr");
-    p.set("manager.is_master", "NO");
-    p.set("manager.corba_servant", "YES");
-    p.set("manager.name", "manager");
-    p.set("manager.instance_name", "manager");
-    p.set("exec_cxt.periodic.type", "PeriodicExecutionContext");
-    p.set("exec_cxt.periodic.rate", "1000");
-    p.set("exec_cxt.transition_timeout", "0.5");
-    return p;
-}
-
-int usage(const std::string &message)
-{
-    std::cerr << "rtmanager: " << message << "\nusage: rtmanager [-f rtc.conf] [-o key=value]... [-p PORT] [-d]\n";
-    return 2;
-}
-
-bool readConf(const std::string &file, Runtime::Properties *config)
-{
-    std::ifstream in(file);
-    if (!in)
-        return false;
-    std::stringstream text;
-    text << in.rdbuf();
-    std::vector<std::string> errors;
-    config->merge(Runtime::Properties::parseConf(text.str(), &errors));
-    for (const std::string &error : errors)
-        std::cerr << file << ':' << error << std::endl;
-    return true;
-}
-
-} // namespace
-
 int main(int argc, char **argv)
 {
-    Runtime::Properties config = defaults();
-    Runtime::Properties overrides;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        const bool hasValue = i + 1 < argc;
-        if (arg == "-f" && hasValue) {
-            if (!readConf(argv[++i], &config))
-                return usage(std::string("cannot read ") + argv[i]);
-        } else if (arg == "-o" && hasValue) {
-            const std::string pair = argv[++i];
-            const size_t eq = pair.find_first_of("=:");
-            if (eq == std::string::npos || eq == 0)
-                return usage("-o expects key=value, got '" + pair + "'");
-            overrides.set(Runtime::trimmed(pair.substr(0, eq)), Runtime::trimmed(pair.substr(eq + 1)));
-        } else if (arg == "-p" && hasValue) {
-            overrides.set("corba.endpoints", std::string("127.0.0.1:") + argv[++i]);
-        } else if (arg == "-d") {
-            overrides.set("manager.is_master", "YES");
-        } else if (arg.compare(0, 4, "-ORB") == 0 && hasValue) {
-            ++i; // ORB options are derived from the configuration
-        } else {
-            return usage("unknown argument '" + arg + "'");
-        }
+    Runtime::Properties config;
+    std::string error;
+    if (!Runtime::parseManagerArguments(argc, argv, &config, &error)) {
+        std::cerr << "rtmanager: " << error
+                  << "\nusage: rtmanager [-f rtc.conf] [-i] [-o key:value]... [-p PORT] [-d] [-a]\n";
+        return 2;
     }
-    config.merge(overrides);
 
     // Signals are taken by one thread, which shuts the manager down cleanly.
     sigset_t signals;
@@ -96,18 +38,14 @@ int main(int argc, char **argv)
     Runtime::Manager manager(config);
     for (Runtime::ComponentFactory &factory : Runtime::builtinFactories())
         manager.registerFactory(std::move(factory));
-    std::string error;
+    // Modules are OpenRTM-aist modules: their init function gets the SDK's RTC::Manager.
+    RTC::Manager::attach(&manager);
     if (!manager.start(&error)) {
         std::cerr << "rtmanager: " << error << std::endl;
         return 1;
     }
-    for (const std::string &module : Runtime::split(config.value("manager.preload.modules"), ',')) {
-        const size_t colon = module.find(':');
-        manager.loadModule(module.substr(0, colon), colon == std::string::npos ? "" : module.substr(colon + 1),
-                           nullptr);
-    }
-    for (const std::string &request : Runtime::split(config.value("manager.components.precreate"), ','))
-        CORBA::release(manager.createComponent(request, nullptr));
+    manager.preloadModules();
+    manager.precreateComponents();
 
     // Launchers (and tests) wait for this line before talking to the manager.
     std::cout << "rtmanager ready on " << manager.address() << std::endl;

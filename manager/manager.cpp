@@ -68,6 +68,10 @@ bool Manager::initOrb(std::string *error)
         host = "127.0.0.1";
     const std::string giop = "giop:tcp:" + host + ':' + (port ? std::to_string(port) : std::string());
     std::vector<std::string> args = {"rtmanager", "-ORBendPoint", giop};
+    // OpenRTM's corba.args: extra ORB options such as `-ORBgiopMaxMsgSize 209715200`.
+    std::istringstream extra(m_config.value("corba.args"));
+    for (std::string word; extra >> word;)
+        args.push_back(word);
     std::vector<char *> argv;
     for (std::string &arg : args)
         argv.push_back(arg.data());
@@ -262,7 +266,18 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     std::unique_lock lock(m_mutex);
     const ComponentFactory *factory = findFactory(request);
     if (!factory) {
+        // A type nobody registered yet may be a loadable module of the load path (`<Type>.so`,
+        // as the Builder and OpenRTP name them): load it, then look again.
         lock.unlock();
+        std::string loadError;
+        if (!findModuleFile(request.implementationId).empty()
+            && loadModule(request.implementationId, std::string(), &loadError))
+            lock.lock();
+        factory = lock.owns_lock() ? findFactory(request) : nullptr;
+    }
+    if (!factory) {
+        if (lock.owns_lock())
+            lock.unlock();
         fail("create_component: unknown component type '" + request.implementationId + "'", error);
         return RTC::RTObject::_nil();
     }
@@ -271,24 +286,38 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
         if (m_config.contains(key))
             properties.set(key, m_config.value(key));
     }
-    if (request.properties.contains("config_file")) {
-        // OpenRTM's per-component configuration file: its keys, then the request's own, apply.
-        std::ifstream file(request.properties.value("config_file"));
-        if (!file) {
+    // OpenRTM's per-component configuration files: rtc.conf's `<category>.<type>.config_file`,
+    // then `<category>.<instance>.config_file`, then the request's own `config_file`; the
+    // request's keys apply last.
+    const std::string category = properties.value("category");
+    std::string instance = request.properties.value("instance_name");
+    if (instance.empty())
+        instance = uniqueInstanceName(properties.value("type_name", request.implementationId));
+    const std::pair<std::string, bool> files[] = {
+        {m_config.value(category + '.' + properties.value("type_name") + ".config_file"), false},
+        {m_config.value(category + '.' + instance + ".config_file"), false},
+        {request.properties.value("config_file"), true}};
+    for (const auto &[file, requested] : files) {
+        if (file.empty())
+            continue;
+        std::ifstream in(file);
+        if (!in && !requested) {
+            // As in OpenRTM-aist, a file named in rtc.conf that is not there only costs its settings.
+            std::cerr << "rtmanager: " << instance << ": cannot read config_file '" << file << "'" << std::endl;
+            continue;
+        }
+        if (!in) {
             lock.unlock();
-            fail("create_component: cannot read config_file '" + request.properties.value("config_file") + "'", error);
+            fail("create_component: cannot read config_file '" + file + "'", error);
             return RTC::RTObject::_nil();
         }
         std::stringstream text;
-        text << file.rdbuf();
+        text << in.rdbuf();
         properties.merge(Properties::parseConf(text.str()));
     }
     properties.merge(request.properties);
-    std::string instance = properties.value("instance_name");
-    if (instance.empty())
-        instance = uniqueInstanceName(properties.value("type_name", request.implementationId));
-    else if (std::any_of(m_components.begin(), m_components.end(),
-                         [&instance](const auto &c) { return c->instanceName == instance; })) {
+    if (std::any_of(m_components.begin(), m_components.end(),
+                    [&instance](const auto &c) { return c->instanceName == instance; })) {
         lock.unlock();
         fail("create_component: instance name '" + instance + "' is already in use", error);
         return RTC::RTObject::_nil();

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -77,8 +78,21 @@ public:
      */
     CORBA::Object_ptr service(const std::string &name);
 
+    /**
+     * How a loaded module's init function is called. By default it is taken as
+     * `void Init(Runtime::Manager *)`; the component SDK installs a call that passes its
+     * RTC::Manager, as OpenRTM-aist modules expect.
+     */
+    using ModuleInitCall = std::function<void(void *initFunction)>;
+    void setModuleInitCall(ModuleInitCall call);
     bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
+    /// The module file @p name stands for: itself when absolute, else found in the load path (with or without ".so").
+    std::string findModuleFile(const std::string &name) const;
     bool unloadModule(const std::string &path, std::string *error);
+    /// Loads `manager.modules.preload` (and the older `manager.preload.modules`): `file[:init],…`.
+    void preloadModules();
+    /// Creates `manager.components.precreate`: `Type[?k=v&…],…`.
+    void precreateComponents();
     std::vector<Properties> loadableModules();
     std::vector<Properties> loadedModules();
     std::vector<Properties> factoryProfiles();
@@ -151,6 +165,7 @@ private:
     std::vector<std::unique_ptr<Component>> m_components;
     std::vector<std::unique_ptr<Slave>> m_slaves;
     std::vector<std::unique_ptr<Module>> m_modules;
+    ModuleInitCall m_moduleInitCall;
     RTM::ManagerList m_masters;
     std::string m_lastError;
     bool m_stopping = false;

@@ -34,10 +34,10 @@ std::string baseName(const std::string &path)
 /// Module functions have this signature (OpenRTM's `void XInit(RTC::Manager*)` with our manager).
 using ModuleInit = void (*)(Manager *);
 
-bool Manager::loadModule(const std::string &requested, const std::string &initFunction, std::string *error)
+std::string Manager::findModuleFile(const std::string &requested) const
 {
     if (requested.empty())
-        return fail("load_module: no module path given", error);
+        return {};
     // Relative names are looked up in manager.modules.load_path, with or without ".so".
     std::vector<std::string> candidates;
     for (const std::string &name : {requested, requested + ".so"}) {
@@ -47,9 +47,21 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
             candidates.push_back(dir + '/' + name);
     }
     auto found = std::find_if(candidates.begin(), candidates.end(), isFile);
-    if (found == candidates.end())
+    return found == candidates.end() ? std::string() : *found;
+}
+
+void Manager::setModuleInitCall(ModuleInitCall call)
+{
+    m_moduleInitCall = std::move(call);
+}
+
+bool Manager::loadModule(const std::string &requested, const std::string &initFunction, std::string *error)
+{
+    if (requested.empty())
+        return fail("load_module: no module path given", error);
+    const std::string path = findModuleFile(requested);
+    if (path.empty())
         return fail("load_module: no module file '" + requested + "'", error);
-    const std::string path = *found;
     bool loaded = false;
     {
         std::lock_guard lock(m_mutex);
@@ -62,18 +74,37 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
     if (!handle)
         return fail(std::string("load_module: '") + path + "' is not a loadable module: " + dlerror(), error);
     const std::string function = initFunction.empty() ? baseName(path) + "Init" : initFunction;
-    auto init = reinterpret_cast<ModuleInit>(dlsym(handle, function.c_str()));
+    void *init = dlsym(handle, function.c_str());
     if (!init) {
         dlclose(handle);
         return fail("load_module: '" + path + "' has no init function '" + function + "'", error);
     }
     const size_t before = m_factories.size();
-    init(this);
+    if (m_moduleInitCall)
+        m_moduleInitCall(init);
+    else
+        reinterpret_cast<ModuleInit>(init)(this);
     std::lock_guard lock(m_mutex);
     for (size_t i = before; i < m_factories.size(); ++i)
         m_factories[i].modulePath = path;
     m_modules.push_back(std::make_unique<Module>(Module{path, function, handle}));
     return true;
+}
+
+void Manager::preloadModules()
+{
+    for (const char *key : {"manager.modules.preload", "manager.preload.modules"}) {
+        for (const std::string &module : split(m_config.value(key), ',')) {
+            const size_t colon = module.find(':');
+            loadModule(module.substr(0, colon), colon == std::string::npos ? "" : module.substr(colon + 1), nullptr);
+        }
+    }
+}
+
+void Manager::precreateComponents()
+{
+    for (const std::string &request : split(m_config.value("manager.components.precreate"), ','))
+        CORBA::release(createComponent(request, nullptr));
 }
 
 bool Manager::unloadModule(const std::string &path, std::string *error)

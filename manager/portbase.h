@@ -32,6 +32,8 @@ public:
     RTC::PortService_ptr reference();
     /// Number of stored connections.
     size_t connectionCount();
+    /// Withdraws what the port offers to others (service providers); called when the component finalizes.
+    virtual void deactivateInterfaces() {}
 
     RTC::PortProfile *get_port_profile() override;
     RTC::ConnectorProfileList *get_connector_profiles() override;

@@ -5,6 +5,8 @@
 #include "executioncontext.h"
 #include "sdoconfiguration.h"
 
+#include <algorithm>
+
 namespace Runtime {
 
 RtObject::RtObject(PortableServer::POA_ptr poa)
@@ -69,6 +71,40 @@ void RtObject::addPort(PortBase *port)
     RTC::PortService_var activated = port->reference();
     std::lock_guard lock(m_mutex);
     m_ports.push_back(port);
+}
+
+void RtObject::addBorrowedPort(PortBase *port)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_borrowedPorts.insert(port);
+    }
+    addPort(port);
+}
+
+bool RtObject::removePort(PortBase *port)
+{
+    bool borrowed = false;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = std::find(m_ports.begin(), m_ports.end(), port);
+        if (it == m_ports.end())
+            return false;
+        m_ports.erase(it);
+        borrowed = m_borrowedPorts.erase(port) > 0;
+    }
+    port->disconnect_all();
+    port->deactivateInterfaces();
+    releasePort(port, borrowed);
+    return true;
+}
+
+void RtObject::releasePort(PortBase *port, bool borrowed)
+{
+    // A borrowed port keeps its creator's reference: only its owner deletes it.
+    if (borrowed)
+        port->_add_ref();
+    releaseServant(m_poa, port);
 }
 
 ServicePort *RtObject::addServicePort(const std::string &name)
@@ -176,6 +212,7 @@ void RtObject::releaseAll()
 {
     std::vector<PeriodicExecutionContext *> contexts;
     std::vector<PortBase *> ports;
+    std::set<PortBase *> borrowed;
     {
         std::lock_guard lock(m_mutex);
         if (m_finalized)
@@ -183,16 +220,19 @@ void RtObject::releaseAll()
         m_finalized = true;
         contexts.swap(m_ownedContexts);
         ports.swap(m_ports);
+        borrowed.swap(m_borrowedPorts);
     }
     for (PeriodicExecutionContext *context : contexts)
         context->halt(false);
-    for (PortBase *port : ports)
+    for (PortBase *port : ports) {
         port->disconnect_all();
+        port->deactivateInterfaces();
+    }
     onFinalize();
     for (PeriodicExecutionContext *context : contexts)
         releaseServant(m_poa, context);
     for (PortBase *port : ports)
-        releaseServant(m_poa, port);
+        releasePort(port, borrowed.count(port) > 0);
     releaseServant(m_poa, m_sdoConfig);
     m_sdoConfig = nullptr;
 }

@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,13 @@ protected:
     PortableServer::POA_ptr poa() const { return m_poa.in(); }
     /// Takes ownership of @p port and lists it in the profile.
     void addPort(PortBase *port);
+    /**
+     * Lists @p port, which the component object owns (a member): on finalize the runtime
+     * disconnects and deactivates it but leaves its deletion to the owner.
+     */
+    void addBorrowedPort(PortBase *port);
+    /// Disconnects, deactivates and unlists @p port (deleting it when the runtime owns it).
+    bool removePort(PortBase *port);
     template <typename T>
     InPort<T> *addInPort(const std::string &name)
     {
@@ -125,6 +133,7 @@ protected:
 private:
     void startOwnedContext();
     void releaseAll();
+    void releasePort(PortBase *port, bool borrowed);
     std::vector<PortBase *> portList();
 
     PortableServer::POA_var m_poa;
@@ -133,6 +142,7 @@ private:
     ConfigAdmin m_config;
     SdoConfiguration *m_sdoConfig = nullptr;
     std::vector<PortBase *> m_ports;
+    std::set<PortBase *> m_borrowedPorts;
     std::vector<PeriodicExecutionContext *> m_ownedContexts;
     std::map<RTC::ExecutionContextHandle_t, RTC::ExecutionContext_var> m_participating;
     RTC::ExecutionContextHandle_t m_nextParticipatingHandle = 1000;

@@ -26,7 +26,17 @@ ServicePort::ServicePort(const std::string &name, PortableServer::POA_ptr poa)
 
 ServicePort::~ServicePort()
 {
-    for (Provider &provider : m_providers)
+    deactivateInterfaces();
+}
+
+void ServicePort::deactivateInterfaces()
+{
+    std::vector<Provider> providers;
+    {
+        std::lock_guard lock(m_mutex);
+        providers.swap(m_providers);
+    }
+    for (Provider &provider : providers)
         releaseServant(m_poa, provider.servant);
 }
 

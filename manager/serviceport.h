@@ -39,6 +39,8 @@ public:
                           PortableServer::ServantBase *servant);
     /// Declares a required interface; returns the slot that receives the provider's reference.
     std::shared_ptr<ConsumerSlot> registerConsumer(const std::string &instanceName, const std::string &typeName);
+    /// Deactivates the providers and drops the port's references to them.
+    void deactivateInterfaces() override;
 
 protected:
     RTC::ReturnCode_t publishInterfaces(RTC::ConnectorProfile &profile) override;

@@ -9,7 +9,7 @@ packages=(
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev libqt6svg6 qt6-qpa-plugins libgl-dev
     libomniorb4-dev omniidl omniorb omniorb-nameserver omniorb-idl
     libkainjow-mustache-dev libyaml-cpp-dev libgraphviz-dev
-    xvfb xauth fonts-dejavu-core
+    xvfb xauth fonts-dejavu-core ccache
 )
 
 missing=()
