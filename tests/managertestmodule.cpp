@@ -1,44 +1,61 @@
 // SPDX-License-Identifier: MIT
-// A loadable module written against the runtime: rtmanager's load_module must find its init
-// function, which registers the "ModuleCounter" component type.
-#include "componentfactory.h"
-#include "manager.h"
-#include "rtobject.h"
+// A loadable module written against the component SDK (OpenRTM-aist's C++ API): rtmanager's
+// load_module must find its init function, which registers the "ModuleCounter" component type.
+#include <rtm/DataFlowComponentBase.h>
+#include <rtm/DataOutPort.h>
+#include <rtm/Manager.h>
+
+#include <string>
 
 namespace {
 
-class ModuleCounter : public Runtime::RtObject
+const char *const moduleCounterSpec[] = {"implementation_id", "ModuleCounter",
+                                         "type_name", "ModuleCounter",
+                                         "description", "Counter from a loaded module",
+                                         "version", "2.0.0",
+                                         "vendor", "RTStudioTests",
+                                         "category", "example",
+                                         "activity_type", "PERIODIC",
+                                         "kind", "DataFlowComponent",
+                                         "max_instance", "0",
+                                         "language", "C++",
+                                         "lang_type", "compile",
+                                         ""};
+
+class ModuleCounter : public RTC::DataFlowComponentBase
 {
 public:
-    using RtObject::RtObject;
+    explicit ModuleCounter(RTC::Manager *manager)
+        : RTC::DataFlowComponentBase(manager)
+        , m_outOut("out", m_out)
+    {
+    }
 
-protected:
     RTC::ReturnCode_t onInitialize() override
     {
-        m_out = addOutPort<RTC::TimedLong>("out");
+        addOutPort("out", m_outOut);
         return RTC::RTC_OK;
     }
-    RTC::ReturnCode_t onExecute(RTC::ExecutionContextHandle_t) override
+    RTC::ReturnCode_t onExecute(RTC::UniqueId) override
     {
-        RTC::TimedLong sample{};
-        sample.data = ++m_count;
-        m_out->write(sample);
+        m_out.data = ++m_count;
+        setTimestamp(m_out);
+        m_outOut.write();
+        // The runtime's status list lets the tests see how far the counter got.
         setStatus("sent_count", std::to_string(m_count));
         return RTC::RTC_OK;
     }
 
 private:
-    Runtime::OutPort<RTC::TimedLong> *m_out = nullptr;
+    RTC::TimedLong m_out;
+    RTC::OutPort<RTC::TimedLong> m_outOut;
     CORBA::Long m_count = 0;
 };
 
 } // namespace
 
-extern "C" void ManagerTestModuleInit(Runtime::Manager *manager)
+extern "C" DLL_EXPORT void ManagerTestModuleInit(RTC::Manager *manager)
 {
-    Runtime::ComponentFactory factory;
-    factory.profile = Runtime::exampleProfile("ModuleCounter", "Counter from a loaded module");
-    factory.profile.set("vendor", "RTStudioTests");
-    factory.create = [](PortableServer::POA_ptr poa) -> Runtime::RtObject * { return new ModuleCounter(poa); };
-    manager->registerFactory(std::move(factory));
+    coil::Properties profile(moduleCounterSpec);
+    manager->registerFactory(profile, RTC::Create<ModuleCounter>, RTC::Delete<ModuleCounter>);
 }

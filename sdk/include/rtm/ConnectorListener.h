@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: MIT
+// Listeners called by data ports for each sample (connector data listeners) and for connection
+// changes (connector listeners), with OpenRTM-aist 2.x's names and signatures.
+#ifndef RTM_CONNECTORLISTENER_H
+#define RTM_CONNECTORLISTENER_H
+
+#include <rtm/ByteData.h>
+#include <rtm/ConnectorBase.h>
+
+#include <cstdint>
+#include <string>
+
+namespace RTC
+{
+/// What a listener did to the data or the connector information it was given.
+class ConnectorListenerStatus
+{
+public:
+    enum Enum
+    {
+        NO_CHANGE = 0,
+        INFO_CHANGED = 1 << 0,
+        DATA_CHANGED = 1 << 1,
+        BOTH_CHANGED = INFO_CHANGED | DATA_CHANGED
+    };
+};
+
+inline ConnectorListenerStatus::Enum operator|(ConnectorListenerStatus::Enum a, ConnectorListenerStatus::Enum b)
+{
+    return static_cast<ConnectorListenerStatus::Enum>(static_cast<int>(a) | static_cast<int>(b));
+}
+inline ConnectorListenerStatus::Enum operator&(ConnectorListenerStatus::Enum a, ConnectorListenerStatus::Enum b)
+{
+    return static_cast<ConnectorListenerStatus::Enum>(static_cast<int>(a) & static_cast<int>(b));
+}
+
+/// Brings ReturnCode and its values into a listener class.
+#define USE_CONNLISTENER_STATUS                                                                                \
+    using ReturnCode = ::RTC::ConnectorListenerStatus::Enum;                                                   \
+    using ::RTC::ConnectorListenerStatus::NO_CHANGE;                                                           \
+    using ::RTC::ConnectorListenerStatus::INFO_CHANGED;                                                        \
+    using ::RTC::ConnectorListenerStatus::DATA_CHANGED;                                                        \
+    using ::RTC::ConnectorListenerStatus::BOTH_CHANGED
+
+/// Points in a sample's way through a connector at which data listeners are called.
+enum class ConnectorDataListenerType : uint8_t
+{
+    ON_BUFFER_WRITE = 0,
+    ON_BUFFER_FULL,
+    ON_BUFFER_WRITE_TIMEOUT,
+    ON_BUFFER_OVERWRITE,
+    ON_BUFFER_READ,
+    ON_SEND,
+    ON_RECEIVED,
+    ON_RECEIVER_FULL,
+    ON_RECEIVER_TIMEOUT,
+    ON_RECEIVER_ERROR,
+    CONNECTOR_DATA_LISTENER_NUM
+};
+
+/// Connection events for connector listeners.
+enum class ConnectorListenerType : uint8_t
+{
+    ON_BUFFER_EMPTY = 0,
+    ON_BUFFER_READ_TIMEOUT,
+    ON_SENDER_EMPTY,
+    ON_SENDER_TIMEOUT,
+    ON_SENDER_ERROR,
+    ON_CONNECT,
+    ON_DISCONNECT,
+    CONNECTOR_LISTENER_NUM
+};
+
+// OpenRTM-aist 1.x spelled the values without the enumeration's name; sources of that era still do.
+static const ConnectorDataListenerType ON_BUFFER_WRITE = ConnectorDataListenerType::ON_BUFFER_WRITE;
+static const ConnectorDataListenerType ON_BUFFER_OVERWRITE = ConnectorDataListenerType::ON_BUFFER_OVERWRITE;
+static const ConnectorDataListenerType ON_BUFFER_READ = ConnectorDataListenerType::ON_BUFFER_READ;
+static const ConnectorDataListenerType ON_SEND = ConnectorDataListenerType::ON_SEND;
+static const ConnectorDataListenerType ON_RECEIVED = ConnectorDataListenerType::ON_RECEIVED;
+static const ConnectorDataListenerType ON_RECEIVER_FULL = ConnectorDataListenerType::ON_RECEIVER_FULL;
+static const ConnectorDataListenerType ON_RECEIVER_TIMEOUT = ConnectorDataListenerType::ON_RECEIVER_TIMEOUT;
+static const ConnectorDataListenerType ON_RECEIVER_ERROR = ConnectorDataListenerType::ON_RECEIVER_ERROR;
+static const ConnectorListenerType ON_BUFFER_EMPTY = ConnectorListenerType::ON_BUFFER_EMPTY;
+static const ConnectorListenerType ON_BUFFER_READ_TIMEOUT = ConnectorListenerType::ON_BUFFER_READ_TIMEOUT;
+static const ConnectorListenerType ON_CONNECT = ConnectorListenerType::ON_CONNECT;
+static const ConnectorListenerType ON_DISCONNECT = ConnectorListenerType::ON_DISCONNECT;
+
+/// Called with each marshalled sample at one point of ConnectorDataListenerType.
+class ConnectorDataListener : public ConnectorListenerStatus
+{
+public:
+    USE_CONNLISTENER_STATUS;
+    static const char *toString(ConnectorDataListenerType type);
+    virtual ~ConnectorDataListener();
+    /**
+     * @p data holds the sample in CDR; @p marshalingtype is "cdr". The byte order is in
+     * `info.properties["serializer.cdr.endian"]` ("little" or "big").
+     */
+    virtual ReturnCode operator()(ConnectorInfo &info, ByteData &data, const std::string &marshalingtype) = 0;
+};
+
+/**
+ * A data listener for samples of type @p DataType: implement operator()(ConnectorInfo&,
+ * DataType&). Changes made to the sample are not sent on: listeners observe.
+ */
+template <class DataType>
+class ConnectorDataListenerT : public ConnectorDataListener
+{
+public:
+    ReturnCode operator()(ConnectorInfo &info, ByteData &cdr, const std::string &marshalingtype) override
+    {
+        if (marshalingtype != "cdr" && !marshalingtype.empty())
+            return NO_CHANGE;
+        DataType data;
+        try {
+            cdrMemoryStream stream(cdr.getBuffer(), cdr.getDataLength());
+            const std::string endian = info.properties.getProperty("serializer.cdr.endian", "little");
+            stream.setByteSwapFlag(endian.compare(0, 6, "little") == 0);
+            data <<= stream;
+        } catch (const CORBA::Exception &) {
+            return NO_CHANGE;
+        }
+        return this->operator()(info, data);
+    }
+    virtual ReturnCode operator()(ConnectorInfo &info, DataType &data) = 0;
+};
+
+/// Called when a connection of the port is made or removed (and for buffer events).
+class ConnectorListener : public ConnectorListenerStatus
+{
+public:
+    USE_CONNLISTENER_STATUS;
+    static const char *toString(ConnectorListenerType type);
+    virtual ~ConnectorListener();
+    virtual ReturnCode operator()(ConnectorInfo &info) = 0;
+};
+
+/**
+ * The listeners of one data port and what the port knows of its connections: the ports call
+ * connected()/disconnected() as connections come and go and notify…() at each event.
+ * Listeners added with autoclean are deleted with the holder or when removed. Thread-safe.
+ */
+class ConnectorListeners
+{
+public:
+    ConnectorListeners();
+    ~ConnectorListeners();
+    ConnectorListeners(const ConnectorListeners &) = delete;
+    ConnectorListeners &operator=(const ConnectorListeners &) = delete;
+
+    void addListener(ConnectorDataListenerType type, ConnectorDataListener *listener, bool autoclean);
+    bool removeListener(ConnectorDataListenerType type, ConnectorDataListener *listener);
+    void addListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean);
+    bool removeListener(ConnectorListenerType type, ConnectorListener *listener);
+    bool hasListeners(ConnectorDataListenerType type) const;
+
+    /// Calls the data listeners of @p type with one sample that went through @p connectorId
+    /// (empty: any connection of the port).
+    void notifyData(ConnectorDataListenerType type, const std::string &connectorId, const unsigned char *data,
+                    unsigned long length, bool littleEndian);
+    void notify(ConnectorListenerType type, const std::string &connectorId);
+
+    /// Remembers a new connection (its properties without the `dataport.` prefix).
+    void connected(const ConnectorProfile &profile);
+    void disconnected(const std::string &connectorId);
+    ConnectorInfoList connectorInfos() const;
+
+private:
+    struct Private;
+    Private *d;
+};
+} // namespace RTC
+
+#endif // RTM_CONNECTORLISTENER_H

@@ -1,0 +1,8 @@
+// SPDX-License-Identifier: MIT
+// The header generated components include for their OutPorts.
+#ifndef RTM_DATAOUTPORT_H
+#define RTM_DATAOUTPORT_H
+
+#include <rtm/OutPort.h>
+
+#endif // RTM_DATAOUTPORT_H

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// The untyped part of a data InPort.
+#ifndef RTM_INPORTBASE_H
+#define RTM_INPORTBASE_H
+
+#include <rtm/ConnectorListener.h>
+#include <rtm/PortBase.h>
+
+#include <rtmruntime/inport.h>
+
+#include <string>
+
+namespace RTC
+{
+/**
+ * A data InPort without its sample type: connections (push and pull over CORBA CDR), the
+ * port's properties and its listeners. InPort<T> adds the typed variable.
+ */
+class InPortBase : public ::Runtime::InPortBase
+{
+public:
+    /// @p data_type is the repository id of the sample type (`IDL:RTC/TimedLong:1.0`).
+    InPortBase(const char *name, const char *data_type);
+    ~InPortBase() override;
+
+    /// Takes the next sample into the bound variable; false when none was waiting.
+    virtual bool read() = 0;
+    /// True when a sample waits in a push connection.
+    virtual bool isNew();
+    /// True when no sample waits.
+    virtual bool isEmpty();
+
+    /// Applies port properties (`buffer.length`, …) as OpenRTM's init() does.
+    virtual void init(coil::Properties &prop);
+    coil::Properties &properties();
+    ConnectorInfoList getConnectorProfiles();
+    coil::vstring getConnectorIds();
+    coil::vstring getConnectorNames();
+
+    void addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
+                                  bool autoclean = true);
+    void removeConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener);
+    void addConnectorListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean = true);
+    void removeConnectorListener(ConnectorListenerType type, ConnectorListener *listener);
+
+    ReturnCode_t notify_connect(ConnectorProfile &connector_profile) override;
+    ReturnCode_t notify_disconnect(const char *connector_id) override;
+
+protected:
+    /// Takes one marshalled sample; false when none was waiting.
+    bool readBytes(::Runtime::CdrBytes *data, bool *littleEndian);
+
+    coil::Properties m_properties;
+    ConnectorListeners m_listeners;
+};
+} // namespace RTC
+
+#endif // RTM_INPORTBASE_H

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// The manager of a component process: configuration, ORB, naming, modules and components.
+#ifndef RTM_MANAGER_H
+#define RTM_MANAGER_H
+
+#include <rtm/Factory.h>
+#include <rtm/RTC.h>
+#include <rtm/SystemLogger.h>
+
+#include <coil/Properties.h>
+
+#include <string>
+#include <vector>
+
+namespace Runtime
+{
+class Manager;
+}
+
+namespace RTC
+{
+class Manager;
+using ModuleInitProc = void (*)(Manager *manager);
+
+/**
+ * The one manager of a process. A component program calls init(argc, argv) (OpenRTM-aist's
+ * command line and rtc.conf), setModuleInitProc(), activateManager() and runManager(); inside
+ * rtmanager the manager already exists and modules get it in their init function.
+ */
+class Manager
+{
+public:
+    Manager(const Manager &) = delete;
+    Manager &operator=(const Manager &) = delete;
+
+    /**
+     * Creates the manager from the command line (`-f FILE`, `-i`, `-o key:value`, `-p PORT`,
+     * `-d`, `-a`; rtc.conf searched as OpenRTM-aist does) and starts the ORB. A second call
+     * returns the same manager. On a command line or configuration it cannot use, prints why and
+     * exits the process with status 1, as OpenRTM-aist does.
+     */
+    static Manager *init(int argc, char **argv);
+    /// The manager (created with default settings if init() was not called).
+    static Manager &instance();
+    /// Makes @p manager the process's manager (rtmanager does this for its runtime).
+    static Manager *attach(::Runtime::Manager *manager);
+    /// Shuts the manager down (from any thread).
+    static void terminate();
+    /// Same as terminate(): components finalize, names are unbound, the ORB stops.
+    void shutdown();
+    /// Waits until the manager has shut down.
+    void join();
+
+    coil::Properties &getConfig();
+    void setModuleInitProc(ModuleInitProc proc);
+    /// Serves the manager, loads `manager.modules.preload`, runs the init procedure and creates
+    /// `manager.components.precreate`. False when the ORB cannot serve.
+    bool activateManager();
+    /// Runs until shutdown; with @p no_block true returns at once and runs in the background.
+    void runManager(bool no_block = false);
+
+    /// Loads module @p fname (searched in `manager.modules.load_path`) and calls @p initfunc
+    /// (default `<file stem>Init`).
+    ReturnCode_t load(const std::string &fname, const std::string &initfunc);
+    ReturnCode_t load(coil::Properties &prop, const std::string &initfunc);
+    void unload(const char *fname);
+    void unloadAll();
+    std::vector<coil::Properties> getLoadedModules();
+    std::vector<coil::Properties> getLoadableModules();
+
+    /// Registers a component type: @p profile has `implementation_id`, `type_name`, …, `conf.*`.
+    bool registerFactory(coil::Properties &profile, RtcNewFunc new_func, RtcDeleteFunc delete_func);
+    std::vector<coil::Properties> getFactoryProfiles();
+    std::vector<std::string> getModulesFactories();
+
+    /**
+     * Creates a component from `TypeName[?key=value&…]` (instance_name, exec_cxt.periodic.rate,
+     * conf.default.x, …), initializes it and registers its names. Null when it fails.
+     */
+    RTObject_impl *createComponent(const char *comp_args);
+    void deleteComponent(RTObject_impl *comp);
+    void deleteComponent(const char *instance_name);
+    RTObject_impl *getComponent(const char *instance_name);
+    std::vector<RTObject_impl *> getComponents();
+
+    CORBA::ORB_ptr getORB();
+    CORBA::ORB_ptr theORB() { return getORB(); }
+    PortableServer::POA_ptr getPOA();
+    PortableServer::POA_ptr thePOA() { return getPOA(); }
+    PortableServer::POAManager_ptr getPOAManager();
+    PortableServer::POAManager_ptr thePOAManager() { return getPOAManager(); }
+
+    /// A logger named @p name with the manager's logging settings.
+    Logger &getLogbuf(const std::string &name = "manager");
+    std::string &getLogLevel();
+
+    /// The runtime manager underneath (for RT Studio's own tools).
+    ::Runtime::Manager *runtime();
+
+private:
+    Manager();
+    ~Manager();
+
+    struct Private;
+    Private *d;
+};
+} // namespace RTC
+
+#endif // RTM_MANAGER_H

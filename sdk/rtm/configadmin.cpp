@@ -1,0 +1,313 @@
+// SPDX-License-Identifier: MIT
+#include <rtm/ConfigAdmin.h>
+
+#include "sdkinternal.h"
+
+#include <configadmin.h>
+
+#include <map>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace RTC {
+
+namespace {
+
+template <typename Listener>
+using ListenerList = std::vector<std::pair<Listener *, bool>>;
+
+template <typename Listener>
+void addTo(ListenerList<Listener> &list, Listener *listener, bool autoclean)
+{
+    if (listener != nullptr)
+        list.emplace_back(listener, autoclean);
+}
+
+template <typename Listener>
+void removeFrom(ListenerList<Listener> &list, Listener *listener)
+{
+    for (auto it = list.begin(); it != list.end(); ++it) {
+        if (it->first == listener) {
+            if (it->second)
+                delete it->first;
+            list.erase(it);
+            return;
+        }
+    }
+}
+
+template <typename Listener>
+void deleteOwned(ListenerList<Listener> &list)
+{
+    for (auto &entry : list) {
+        if (entry.second)
+            delete entry.first;
+    }
+}
+
+} // namespace
+
+const char *ConfigurationParamListener::toString(ConfigurationParamListenerType type)
+{
+    return type == ConfigurationParamListenerType::ON_UPDATE_CONFIG_PARAM ? "ON_UPDATE_CONFIG_PARAM" : "";
+}
+ConfigurationParamListener::~ConfigurationParamListener() = default;
+
+const char *ConfigurationSetListener::toString(ConfigurationSetListenerType type)
+{
+    static const char *const names[] = {"ON_SET_CONFIG_SET", "ON_ADD_CONFIG_SET"};
+    return size_t(type) < std::size(names) ? names[size_t(type)] : "";
+}
+ConfigurationSetListener::~ConfigurationSetListener() = default;
+
+const char *ConfigurationSetNameListener::toString(ConfigurationSetNameListenerType type)
+{
+    static const char *const names[] = {"ON_UPDATE_CONFIG_SET", "ON_REMOVE_CONFIG_SET", "ON_ACTIVATE_CONFIG_SET"};
+    return size_t(type) < std::size(names) ? names[size_t(type)] : "";
+}
+ConfigurationSetNameListener::~ConfigurationSetNameListener() = default;
+
+struct ConfigAdmin::Private
+{
+    explicit Private(Runtime::ConfigAdmin &admin)
+        : admin(admin)
+    {
+    }
+
+    void onEvent(Runtime::ConfigAdmin::Event event, const std::string &setId);
+    void onParameter(const std::string &name);
+    coil::Properties &cachedSet(const std::string &id);
+
+    Runtime::ConfigAdmin &admin;
+    std::recursive_mutex mutex;
+    ListenerList<ConfigurationParamListener> paramListeners;
+    ListenerList<ConfigurationSetListener> setListeners[size_t(ConfigurationSetListenerType::CONFIG_SET_LISTENER_NUM)];
+    ListenerList<ConfigurationSetNameListener>
+        nameListeners[size_t(ConfigurationSetNameListenerType::CONFIG_SET_NAME_LISTENER_NUM)];
+    /// The text each bound variable was last set from: listeners hear of real changes only.
+    std::map<std::string, std::string> applied;
+    std::map<std::string, coil::Properties> sets;
+    std::string activeId;
+    bool changed = false;
+};
+
+coil::Properties &ConfigAdmin::Private::cachedSet(const std::string &id)
+{
+    coil::Properties node(id.c_str());
+    const Runtime::Properties values = admin.set(id);
+    for (const auto &[key, value] : values.entries())
+        node.setProperty(key, value);
+    return sets[id] = node;
+}
+
+void ConfigAdmin::Private::onEvent(Runtime::ConfigAdmin::Event event, const std::string &setId)
+{
+    using Event = Runtime::ConfigAdmin::Event;
+    std::lock_guard lock(mutex);
+    switch (event) {
+    case Event::SetValuesChanged:
+    case Event::SetAdded: {
+        changed = changed || event == Event::SetValuesChanged;
+        const coil::Properties &set = cachedSet(setId);
+        const auto type = event == Event::SetAdded ? ConfigurationSetListenerType::ON_ADD_CONFIG_SET
+                                                   : ConfigurationSetListenerType::ON_SET_CONFIG_SET;
+        for (auto &entry : setListeners[size_t(type)])
+            (*entry.first)(set);
+        return;
+    }
+    case Event::SetRemoved:
+        for (auto &entry : nameListeners[size_t(ConfigurationSetNameListenerType::ON_REMOVE_CONFIG_SET)])
+            (*entry.first)(setId.c_str());
+        return;
+    case Event::SetActivated:
+        changed = true;
+        for (auto &entry : nameListeners[size_t(ConfigurationSetNameListenerType::ON_ACTIVATE_CONFIG_SET)])
+            (*entry.first)(setId.c_str());
+        return;
+    case Event::Updated:
+        changed = false;
+        for (auto &entry : nameListeners[size_t(ConfigurationSetNameListenerType::ON_UPDATE_CONFIG_SET)])
+            (*entry.first)(setId.c_str());
+        return;
+    }
+}
+
+ConfigAdmin::ConfigAdmin(Runtime::ConfigAdmin &admin)
+    : d(new Private(admin))
+{
+    Private *self = d;
+    admin.setObserver([self](Runtime::ConfigAdmin::Event event, const std::string &setId) { self->onEvent(event, setId); });
+}
+
+ConfigAdmin::~ConfigAdmin()
+{
+    d->admin.setObserver({});
+    deleteOwned(d->paramListeners);
+    for (auto &list : d->setListeners)
+        deleteOwned(list);
+    for (auto &list : d->nameListeners)
+        deleteOwned(list);
+    delete d;
+}
+
+void ConfigAdmin::bindSetter(const char *name, const char *defaultValue, std::function<bool(const char *)> setter)
+{
+    const std::string parameter(name);
+    {
+        std::lock_guard lock(d->mutex);
+        d->applied[parameter] = defaultValue;
+    }
+    Private *self = d;
+    d->admin.bindParameter(parameter, defaultValue, [self, parameter, setter](const std::string &text) {
+        {
+            std::lock_guard lock(self->mutex);
+            auto it = self->applied.find(parameter);
+            if (it != self->applied.end() && it->second == text)
+                return true;
+        }
+        if (!setter(text.c_str()))
+            return false;
+        std::lock_guard lock(self->mutex);
+        self->applied[parameter] = text;
+        const std::string active = self->admin.activeSetId();
+        for (auto &entry : self->paramListeners)
+            (*entry.first)(active.c_str(), parameter.c_str());
+        return true;
+    });
+}
+
+void ConfigAdmin::update()
+{
+    d->admin.update();
+}
+
+void ConfigAdmin::update(const char *config_set)
+{
+    if (config_set != nullptr && d->admin.activeSetId() == config_set)
+        d->admin.update();
+}
+
+void ConfigAdmin::update(const char *config_set, const char *config_param)
+{
+    // The runtime applies a set as a whole; unchanged parameters are skipped by their setters.
+    if (config_param != nullptr && isExist(config_param))
+        update(config_set);
+}
+
+bool ConfigAdmin::isExist(const char *param_name)
+{
+    if (param_name == nullptr)
+        return false;
+    for (const std::string &name : d->admin.parameterNames()) {
+        if (name == param_name)
+            return true;
+    }
+    return false;
+}
+
+bool ConfigAdmin::isChanged()
+{
+    std::lock_guard lock(d->mutex);
+    return d->changed;
+}
+
+const char *ConfigAdmin::getActiveId()
+{
+    std::lock_guard lock(d->mutex);
+    d->activeId = d->admin.activeSetId();
+    return d->activeId.c_str();
+}
+
+bool ConfigAdmin::haveConfig(const char *config_id)
+{
+    return config_id != nullptr && d->admin.hasSet(config_id);
+}
+
+const coil::Properties &ConfigAdmin::getConfigurationSet(const char *config_id)
+{
+    std::lock_guard lock(d->mutex);
+    return d->cachedSet(config_id ? config_id : "");
+}
+
+const coil::Properties &ConfigAdmin::getActiveConfigurationSet()
+{
+    std::lock_guard lock(d->mutex);
+    return d->cachedSet(d->admin.activeSetId());
+}
+
+bool ConfigAdmin::setConfigurationSetValues(const coil::Properties &config_set)
+{
+    Runtime::Properties values;
+    for (const std::string &key : config_set.propertyNames())
+        values.set(key, config_set.getProperty(key));
+    return d->admin.setValues(config_set.getName(), values);
+}
+
+bool ConfigAdmin::addConfigurationSet(const coil::Properties &config_set)
+{
+    Runtime::Properties values;
+    for (const std::string &key : config_set.propertyNames())
+        values.set(key, config_set.getProperty(key));
+    return d->admin.addSet(config_set.getName(), values);
+}
+
+bool ConfigAdmin::removeConfigurationSet(const char *config_id)
+{
+    return config_id != nullptr && d->admin.removeSet(config_id);
+}
+
+bool ConfigAdmin::activateConfigurationSet(const char *config_id)
+{
+    return config_id != nullptr && d->admin.activate(config_id);
+}
+
+void ConfigAdmin::addConfigurationParamListener(ConfigurationParamListenerType type,
+                                                ConfigurationParamListener *listener, bool autoclean)
+{
+    std::lock_guard lock(d->mutex);
+    if (type == ConfigurationParamListenerType::ON_UPDATE_CONFIG_PARAM)
+        addTo(d->paramListeners, listener, autoclean);
+}
+
+void ConfigAdmin::removeConfigurationParamListener(ConfigurationParamListenerType type,
+                                                   ConfigurationParamListener *listener)
+{
+    std::lock_guard lock(d->mutex);
+    if (type == ConfigurationParamListenerType::ON_UPDATE_CONFIG_PARAM)
+        removeFrom(d->paramListeners, listener);
+}
+
+void ConfigAdmin::addConfigurationSetListener(ConfigurationSetListenerType type, ConfigurationSetListener *listener,
+                                              bool autoclean)
+{
+    std::lock_guard lock(d->mutex);
+    if (type < ConfigurationSetListenerType::CONFIG_SET_LISTENER_NUM)
+        addTo(d->setListeners[size_t(type)], listener, autoclean);
+}
+
+void ConfigAdmin::removeConfigurationSetListener(ConfigurationSetListenerType type,
+                                                 ConfigurationSetListener *listener)
+{
+    std::lock_guard lock(d->mutex);
+    if (type < ConfigurationSetListenerType::CONFIG_SET_LISTENER_NUM)
+        removeFrom(d->setListeners[size_t(type)], listener);
+}
+
+void ConfigAdmin::addConfigurationSetNameListener(ConfigurationSetNameListenerType type,
+                                                  ConfigurationSetNameListener *listener, bool autoclean)
+{
+    std::lock_guard lock(d->mutex);
+    if (type < ConfigurationSetNameListenerType::CONFIG_SET_NAME_LISTENER_NUM)
+        addTo(d->nameListeners[size_t(type)], listener, autoclean);
+}
+
+void ConfigAdmin::removeConfigurationSetNameListener(ConfigurationSetNameListenerType type,
+                                                     ConfigurationSetNameListener *listener)
+{
+    std::lock_guard lock(d->mutex);
+    if (type < ConfigurationSetNameListenerType::CONFIG_SET_NAME_LISTENER_NUM)
+        removeFrom(d->nameListeners[size_t(type)], listener);
+}
+
+} // namespace RTC

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+#include <rtm/ConnectorListener.h>
+
+#include <map>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+namespace RTC {
+
+namespace {
+
+const char *const dataListenerNames[] = {"ON_BUFFER_WRITE", "ON_BUFFER_FULL", "ON_BUFFER_WRITE_TIMEOUT",
+                                         "ON_BUFFER_OVERWRITE", "ON_BUFFER_READ", "ON_SEND",
+                                         "ON_RECEIVED", "ON_RECEIVER_FULL", "ON_RECEIVER_TIMEOUT",
+                                         "ON_RECEIVER_ERROR"};
+const char *const listenerNames[] = {"ON_BUFFER_EMPTY", "ON_BUFFER_READ_TIMEOUT", "ON_SENDER_EMPTY",
+                                     "ON_SENDER_TIMEOUT", "ON_SENDER_ERROR", "ON_CONNECT", "ON_DISCONNECT"};
+
+/// Listeners of one event: the object and whether the holder deletes it.
+template <typename Listener>
+using ListenerList = std::vector<std::pair<Listener *, bool>>;
+
+template <typename Listener>
+bool removeFrom(ListenerList<Listener> &list, Listener *listener)
+{
+    for (auto it = list.begin(); it != list.end(); ++it) {
+        if (it->first == listener) {
+            if (it->second)
+                delete it->first;
+            list.erase(it);
+            return true;
+        }
+    }
+    return false;
+}
+
+template <typename Listener>
+void deleteOwned(ListenerList<Listener> &list)
+{
+    for (auto &entry : list) {
+        if (entry.second)
+            delete entry.first;
+    }
+    list.clear();
+}
+
+} // namespace
+
+const char *ConnectorDataListener::toString(ConnectorDataListenerType type)
+{
+    const auto index = static_cast<size_t>(type);
+    return index < std::size(dataListenerNames) ? dataListenerNames[index] : "";
+}
+
+ConnectorDataListener::~ConnectorDataListener() = default;
+
+const char *ConnectorListener::toString(ConnectorListenerType type)
+{
+    const auto index = static_cast<size_t>(type);
+    return index < std::size(listenerNames) ? listenerNames[index] : "";
+}
+
+ConnectorListener::~ConnectorListener() = default;
+
+struct ConnectorListeners::Private
+{
+    mutable std::mutex mutex;
+    ListenerList<ConnectorDataListener> data[size_t(ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)];
+    ListenerList<ConnectorListener> events[size_t(ConnectorListenerType::CONNECTOR_LISTENER_NUM)];
+    std::map<std::string, ConnectorInfo> connectors;
+};
+
+ConnectorListeners::ConnectorListeners()
+    : d(new Private)
+{
+}
+
+ConnectorListeners::~ConnectorListeners()
+{
+    for (auto &list : d->data)
+        deleteOwned(list);
+    for (auto &list : d->events)
+        deleteOwned(list);
+    delete d;
+}
+
+void ConnectorListeners::addListener(ConnectorDataListenerType type, ConnectorDataListener *listener, bool autoclean)
+{
+    if (listener == nullptr || type >= ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)
+        return;
+    std::lock_guard lock(d->mutex);
+    d->data[size_t(type)].emplace_back(listener, autoclean);
+}
+
+bool ConnectorListeners::removeListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
+{
+    if (type >= ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)
+        return false;
+    std::lock_guard lock(d->mutex);
+    return removeFrom(d->data[size_t(type)], listener);
+}
+
+void ConnectorListeners::addListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean)
+{
+    if (listener == nullptr || type >= ConnectorListenerType::CONNECTOR_LISTENER_NUM)
+        return;
+    std::lock_guard lock(d->mutex);
+    d->events[size_t(type)].emplace_back(listener, autoclean);
+}
+
+bool ConnectorListeners::removeListener(ConnectorListenerType type, ConnectorListener *listener)
+{
+    if (type >= ConnectorListenerType::CONNECTOR_LISTENER_NUM)
+        return false;
+    std::lock_guard lock(d->mutex);
+    return removeFrom(d->events[size_t(type)], listener);
+}
+
+bool ConnectorListeners::hasListeners(ConnectorDataListenerType type) const
+{
+    if (type >= ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)
+        return false;
+    std::lock_guard lock(d->mutex);
+    return !d->data[size_t(type)].empty();
+}
+
+void ConnectorListeners::notifyData(ConnectorDataListenerType type, const std::string &connectorId,
+                                    const unsigned char *data, unsigned long length, bool littleEndian)
+{
+    if (type >= ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)
+        return;
+    // Listeners run under the lock: a listener removed meanwhile must not be called afterwards.
+    std::lock_guard lock(d->mutex);
+    auto &listeners = d->data[size_t(type)];
+    if (listeners.empty())
+        return;
+    ConnectorInfo &info = connectorId.empty() || !d->connectors.count(connectorId)
+                              ? (d->connectors.empty() ? d->connectors[std::string()] : d->connectors.begin()->second)
+                              : d->connectors[connectorId];
+    info.properties.setProperty("serializer.cdr.endian", littleEndian ? "little" : "big");
+    ByteData bytes(data, length);
+    for (auto &entry : listeners)
+        (*entry.first)(info, bytes, "cdr");
+}
+
+void ConnectorListeners::notify(ConnectorListenerType type, const std::string &connectorId)
+{
+    if (type >= ConnectorListenerType::CONNECTOR_LISTENER_NUM)
+        return;
+    std::lock_guard lock(d->mutex);
+    auto it = d->connectors.find(connectorId);
+    ConnectorInfo info = it == d->connectors.end() ? ConnectorInfo() : it->second;
+    for (auto &entry : d->events[size_t(type)])
+        (*entry.first)(info);
+}
+
+void ConnectorListeners::connected(const ConnectorProfile &profile)
+{
+    ConnectorInfo info;
+    info.name = std::string(profile.name);
+    info.id = std::string(profile.connector_id);
+    // As in OpenRTM-aist, the ports are listed by their references in string form (no remote call).
+    int argc = 0;
+    CORBA::ORB_var orb = CORBA::ORB_init(argc, nullptr);
+    for (CORBA::ULong i = 0; i < profile.ports.length(); ++i) {
+        CORBA::String_var ior = orb->object_to_string(profile.ports[i]);
+        info.ports.push_back(std::string(ior.in()));
+    }
+    for (CORBA::ULong i = 0; i < profile.properties.length(); ++i) {
+        const char *text = nullptr;
+        if (!(profile.properties[i].value >>= text))
+            continue;
+        std::string key(profile.properties[i].name);
+        if (key.compare(0, 9, "dataport.") == 0)
+            key = key.substr(9);
+        info.properties.setProperty(key, text);
+    }
+    std::lock_guard lock(d->mutex);
+    d->connectors[info.id] = info;
+}
+
+void ConnectorListeners::disconnected(const std::string &connectorId)
+{
+    std::lock_guard lock(d->mutex);
+    d->connectors.erase(connectorId);
+}
+
+ConnectorInfoList ConnectorListeners::connectorInfos() const
+{
+    std::lock_guard lock(d->mutex);
+    ConnectorInfoList result;
+    for (const auto &entry : d->connectors) {
+        if (!entry.first.empty())
+            result.push_back(entry.second);
+    }
+    return result;
+}
+
+} // namespace RTC

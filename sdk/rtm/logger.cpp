@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#include <rtm/SystemLogger.h>
+
+#include "loggersink.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <ctime>
+#include <iomanip>
+
+namespace RTC {
+
+Logger::Logger(const char *name)
+    : m_name(name ? name : "")
+    , m_level(-1)
+    , m_lineLevel(RTL_INFO)
+{
+}
+
+Logger::Logger(const std::string &name)
+    : Logger(name.c_str())
+{
+}
+
+Logger::~Logger() = default;
+
+void Logger::setName(const char *name)
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_name = name ? name : "";
+}
+
+bool Logger::isValid(int level) const
+{
+    const int limit = m_level >= 0 ? m_level : Sdk::LoggerSink::instance().level();
+    return level > RTL_SILENT && level <= limit;
+}
+
+std::ostream &Logger::level(int level)
+{
+    m_lineLevel = level;
+    m_line.str(std::string());
+    return m_line;
+}
+
+void Logger::lock()
+{
+    m_mutex.lock();
+}
+
+void Logger::unlock()
+{
+    std::string text = m_line.str();
+    m_line.str(std::string());
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r'))
+        text.pop_back();
+    if (!text.empty())
+        Sdk::LoggerSink::instance().write(m_lineLevel, m_name, text);
+    m_mutex.unlock();
+}
+
+void Logger::setLevel(int level)
+{
+    m_level = level;
+}
+
+int Logger::getLevel() const
+{
+    return m_level >= 0 ? m_level : Sdk::LoggerSink::instance().level();
+}
+
+int Logger::strToLevel(const std::string &name)
+{
+    static const char *const names[] = {"SILENT", "FATAL", "ERROR", "WARN", "INFO",
+                                        "DEBUG", "TRACE", "VERBOSE", "PARANOID"};
+    std::string upper = name;
+    std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    for (int i = 0; i <= RTL_PARANOID; ++i) {
+        if (upper == names[i])
+            return i;
+    }
+    return RTL_SILENT;
+}
+
+namespace Sdk {
+
+LoggerSink &LoggerSink::instance()
+{
+    static LoggerSink sink;
+    return sink;
+}
+
+void LoggerSink::configure(const Runtime::Properties &config)
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_enabled = config.isYes("logger.enable", true);
+    m_level = Logger::strToLevel(config.value("logger.log_level", "INFO"));
+    std::string file = config.value("logger.file_name");
+    const size_t pid = file.find("%p");
+    if (pid != std::string::npos)
+        file.replace(pid, 2, std::to_string(getpid()));
+    m_file.close();
+    if (!file.empty() && file != "STDERR" && file != "stderr" && file != "STDOUT" && file != "stdout")
+        m_file.open(file, std::ios::app);
+}
+
+int LoggerSink::level()
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_enabled ? m_level : Logger::RTL_SILENT;
+}
+
+void LoggerSink::write(int level, const std::string &name, const std::string &text)
+{
+    static const char *const names[] = {"SILENT", "FATAL", "ERROR", "WARNING", "INFO",
+                                        "DEBUG", "TRACE", "VERBOSE", "PARANOID"};
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm local{};
+    localtime_r(&now, &local);
+    std::lock_guard<std::mutex> lock(m_mutex);
+    std::ostream &out = m_file.is_open() ? static_cast<std::ostream &>(m_file) : std::cerr;
+    out << std::put_time(&local, "%b %d %H:%M:%S") << ' ' << names[std::clamp(level, 0, 8)] << ": " << name << ": "
+        << text << std::endl;
+}
+
+} // namespace Sdk
+} // namespace RTC

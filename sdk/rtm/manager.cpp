@@ -1,0 +1,355 @@
+// SPDX-License-Identifier: MIT
+// RTC::Manager: OpenRTM-aist's manager interface on the runtime's Runtime::Manager.
+#include <rtm/Manager.h>
+#include <rtm/RTObject.h>
+
+#include "loggersink.h"
+#include "sdkinternal.h"
+
+#include <componentfactory.h>
+#include <corbautil.h>
+#include <manager.h>
+#include <managerconfig.h>
+
+#include <condition_variable>
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace RTC {
+
+namespace {
+
+std::mutex instanceMutex;
+Manager *theInstance = nullptr;
+
+/// Signals end the manager cleanly: one thread waits for them (they are blocked everywhere else).
+void handleSignalsInOneThread()
+{
+    static sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGTERM);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGHUP);
+    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+    std::thread([] {
+        int number = 0;
+        sigwait(&signals, &number);
+        Manager::terminate();
+    }).detach();
+}
+
+/// The servant behind @p object when it lives in this process's POA; null otherwise.
+RTObject_impl *localServant(PortableServer::POA_ptr poa, CORBA::Object_ptr object)
+{
+    if (CORBA::is_nil(object))
+        return nullptr;
+    try {
+        PortableServer::ServantBase *servant = poa->reference_to_servant(object);
+        auto *component = dynamic_cast<RTObject_impl *>(servant);
+        servant->_remove_ref();
+        return component;
+    } catch (const CORBA::Exception &) {
+        return nullptr;
+    }
+}
+
+} // namespace
+
+struct Manager::Private
+{
+    Runtime::Manager *runtime = nullptr;
+    std::unique_ptr<Runtime::Manager> owned;
+    coil::Properties config;
+    ModuleInitProc initProc = nullptr;
+    std::map<std::string, std::unique_ptr<Logger>> loggers;
+    std::mutex mutex;
+    std::condition_variable stopped;
+    bool running = false;
+    bool finished = false;
+};
+
+Manager::Manager()
+    : d(new Private)
+{
+}
+
+Manager::~Manager()
+{
+    delete d;
+}
+
+Manager *Manager::attach(Runtime::Manager *runtime)
+{
+    std::lock_guard lock(instanceMutex);
+    if (theInstance == nullptr)
+        theInstance = new Manager;
+    Manager *manager = theInstance;
+    manager->d->runtime = runtime;
+    manager->d->config = Sdk::toCoil(runtime->configuration());
+    Sdk::LoggerSink::instance().configure(runtime->configuration());
+    runtime->setModuleInitCall([manager](void *function) { reinterpret_cast<ModuleInitProc>(function)(manager); });
+    return manager;
+}
+
+Manager *Manager::init(int argc, char **argv)
+{
+    {
+        std::lock_guard lock(instanceMutex);
+        if (theInstance != nullptr && theInstance->d->runtime != nullptr)
+            return theInstance;
+    }
+    Runtime::Properties config;
+    std::string error;
+    if (!Runtime::parseManagerArguments(argc, argv, &config, &error)) {
+        std::cerr << (argc > 0 ? argv[0] : "manager") << ": " << error << std::endl;
+        std::exit(1);
+    }
+    handleSignalsInOneThread();
+    auto runtime = std::make_unique<Runtime::Manager>(config);
+    if (!runtime->start(&error)) {
+        std::cerr << (argc > 0 ? argv[0] : "manager") << ": " << error << std::endl;
+        std::exit(1);
+    }
+    Manager *manager = attach(runtime.get());
+    manager->d->owned = std::move(runtime);
+    return manager;
+}
+
+Manager &Manager::instance()
+{
+    {
+        std::lock_guard lock(instanceMutex);
+        if (theInstance != nullptr && theInstance->d->runtime != nullptr)
+            return *theInstance;
+    }
+    char program[] = "manager";
+    char *argv[] = {program, nullptr};
+    return *init(1, argv);
+}
+
+void Manager::terminate()
+{
+    Manager *manager = nullptr;
+    {
+        std::lock_guard lock(instanceMutex);
+        manager = theInstance;
+    }
+    if (manager != nullptr)
+        manager->shutdown();
+}
+
+void Manager::shutdown()
+{
+    if (d->runtime != nullptr)
+        d->runtime->shutdown();
+}
+
+void Manager::join()
+{
+    std::unique_lock lock(d->mutex);
+    d->stopped.wait(lock, [this] { return d->finished || !d->running; });
+}
+
+coil::Properties &Manager::getConfig()
+{
+    return d->config;
+}
+
+void Manager::setModuleInitProc(ModuleInitProc proc)
+{
+    d->initProc = proc;
+}
+
+bool Manager::activateManager()
+{
+    if (d->runtime == nullptr)
+        return false;
+    d->runtime->preloadModules();
+    if (d->initProc != nullptr)
+        d->initProc(this);
+    d->runtime->precreateComponents();
+    return true;
+}
+
+void Manager::runManager(bool no_block)
+{
+    {
+        std::lock_guard lock(d->mutex);
+        if (d->running || d->runtime == nullptr)
+            return;
+        d->running = true;
+    }
+    auto serve = [this] {
+        d->runtime->run();
+        std::lock_guard lock(d->mutex);
+        d->finished = true;
+        d->stopped.notify_all();
+    };
+    if (no_block)
+        std::thread(serve).detach();
+    else
+        serve();
+}
+
+ReturnCode_t Manager::load(const std::string &fname, const std::string &initfunc)
+{
+    std::string error;
+    if (d->runtime->loadModule(fname, initfunc, &error))
+        return RTC::RTC_OK;
+    return error.find("no module file") != std::string::npos ? RTC::BAD_PARAMETER : RTC::RTC_ERROR;
+}
+
+ReturnCode_t Manager::load(coil::Properties &prop, const std::string &initfunc)
+{
+    const std::string path = prop.getProperty("module_file_path", prop.getProperty("module_file_name"));
+    return load(path, initfunc);
+}
+
+void Manager::unload(const char *fname)
+{
+    if (fname != nullptr)
+        d->runtime->unloadModule(fname, nullptr);
+}
+
+void Manager::unloadAll()
+{
+    for (const Runtime::Properties &module : d->runtime->loadedModules())
+        d->runtime->unloadModule(module.value("file_path"), nullptr);
+}
+
+namespace {
+
+std::vector<coil::Properties> toCoilList(const std::vector<Runtime::Properties> &list)
+{
+    std::vector<coil::Properties> result;
+    for (const Runtime::Properties &entry : list)
+        result.push_back(Sdk::toCoil(entry));
+    return result;
+}
+
+} // namespace
+
+std::vector<coil::Properties> Manager::getLoadedModules()
+{
+    return toCoilList(d->runtime->loadedModules());
+}
+
+std::vector<coil::Properties> Manager::getLoadableModules()
+{
+    return toCoilList(d->runtime->loadableModules());
+}
+
+bool Manager::registerFactory(coil::Properties &profile, RtcNewFunc new_func, RtcDeleteFunc delete_func)
+{
+    (void)delete_func; // components go when the ORB drops its last reference (see RTC::Delete)
+    if (new_func == nullptr || profile.getProperty("implementation_id").empty())
+        return false;
+    Runtime::ComponentFactory factory;
+    factory.profile = Sdk::toRuntime(profile);
+    factory.create = [this, new_func](PortableServer::POA_ptr) -> Runtime::RtObject * { return new_func(this); };
+    d->runtime->registerFactory(std::move(factory));
+    return true;
+}
+
+std::vector<coil::Properties> Manager::getFactoryProfiles()
+{
+    return toCoilList(d->runtime->factoryProfiles());
+}
+
+std::vector<std::string> Manager::getModulesFactories()
+{
+    std::vector<std::string> ids;
+    for (const Runtime::Properties &profile : d->runtime->factoryProfiles())
+        ids.push_back(profile.value("implementation_id"));
+    return ids;
+}
+
+RTObject_impl *Manager::createComponent(const char *comp_args)
+{
+    if (comp_args == nullptr)
+        return nullptr;
+    std::string error;
+    RTC::RTObject_var object = d->runtime->createComponent(comp_args, &error);
+    PortableServer::POA_var poa = getPOA();
+    return localServant(poa, object);
+}
+
+void Manager::deleteComponent(RTObject_impl *comp)
+{
+    if (comp != nullptr)
+        deleteComponent(comp->getInstanceName());
+}
+
+void Manager::deleteComponent(const char *instance_name)
+{
+    if (instance_name != nullptr)
+        d->runtime->deleteComponent(instance_name, nullptr);
+}
+
+RTObject_impl *Manager::getComponent(const char *instance_name)
+{
+    if (instance_name == nullptr)
+        return nullptr;
+    PortableServer::POA_var poa = getPOA();
+    RTC::RTCList list = d->runtime->componentsByName(instance_name);
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        if (RTObject_impl *component = localServant(poa, list[i]))
+            return component;
+    }
+    return nullptr;
+}
+
+std::vector<RTObject_impl *> Manager::getComponents()
+{
+    PortableServer::POA_var poa = getPOA();
+    std::vector<RTObject_impl *> result;
+    RTC::RTCList list = d->runtime->components();
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        if (RTObject_impl *component = localServant(poa, list[i]))
+            result.push_back(component);
+    }
+    return result;
+}
+
+CORBA::ORB_ptr Manager::getORB()
+{
+    return Runtime::theOrb()._retn();
+}
+
+PortableServer::POA_ptr Manager::getPOA()
+{
+    return Sdk::rootPoa();
+}
+
+PortableServer::POAManager_ptr Manager::getPOAManager()
+{
+    PortableServer::POA_var poa = getPOA();
+    return poa->the_POAManager();
+}
+
+Logger &Manager::getLogbuf(const std::string &name)
+{
+    std::lock_guard lock(d->mutex);
+    std::unique_ptr<Logger> &logger = d->loggers[name];
+    if (!logger)
+        logger = std::make_unique<Logger>(name);
+    return *logger;
+}
+
+std::string &Manager::getLogLevel()
+{
+    return d->config["logger.log_level"];
+}
+
+Runtime::Manager *Manager::runtime()
+{
+    return d->runtime;
+}
+
+} // namespace RTC

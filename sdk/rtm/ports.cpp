@@ -1,0 +1,266 @@
+// SPDX-License-Identifier: MIT
+// The SDK's data and service ports: the runtime's ports plus OpenRTM-aist's listeners,
+// properties and consumer objects.
+#include <rtm/CorbaPort.h>
+#include <rtm/InPortBase.h>
+#include <rtm/OutPortBase.h>
+
+#include "sdkinternal.h"
+
+namespace RTC {
+
+namespace {
+
+coil::vstring connectorField(const ConnectorInfoList &infos, std::string ConnectorInfo::*field)
+{
+    coil::vstring result;
+    for (const ConnectorInfo &info : infos)
+        result.push_back(info.*field);
+    return result;
+}
+
+} // namespace
+
+// --- InPortBase ---
+
+InPortBase::InPortBase(const char *name, const char *data_type)
+    : Runtime::InPortBase(name, data_type, PortableServer::POA_var(Sdk::rootPoa()).in())
+{
+    m_properties.setProperty("dataport.data_type", data_type);
+    setReceiveListener([this](const Runtime::CdrBytes &data, bool littleEndian, const std::string &connectorId) {
+        // A push sample goes into the connection's buffer right after this call.
+        const auto length = static_cast<unsigned long>(data.size());
+        m_listeners.notifyData(ConnectorDataListenerType::ON_RECEIVED, connectorId, data.data(), length, littleEndian);
+        m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_WRITE, connectorId, data.data(), length,
+                               littleEndian);
+    });
+}
+
+InPortBase::~InPortBase()
+{
+    setReceiveListener({});
+}
+
+bool InPortBase::isNew()
+{
+    return Runtime::InPortBase::isNew();
+}
+
+bool InPortBase::isEmpty()
+{
+    return !Runtime::InPortBase::isNew();
+}
+
+void InPortBase::init(coil::Properties &prop)
+{
+    m_properties << prop;
+}
+
+coil::Properties &InPortBase::properties()
+{
+    return m_properties;
+}
+
+ConnectorInfoList InPortBase::getConnectorProfiles()
+{
+    return m_listeners.connectorInfos();
+}
+
+coil::vstring InPortBase::getConnectorIds()
+{
+    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::id);
+}
+
+coil::vstring InPortBase::getConnectorNames()
+{
+    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::name);
+}
+
+void InPortBase::addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
+                                          bool autoclean)
+{
+    m_listeners.addListener(type, listener, autoclean);
+}
+
+void InPortBase::removeConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
+{
+    m_listeners.removeListener(type, listener);
+}
+
+void InPortBase::addConnectorListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean)
+{
+    m_listeners.addListener(type, listener, autoclean);
+}
+
+void InPortBase::removeConnectorListener(ConnectorListenerType type, ConnectorListener *listener)
+{
+    m_listeners.removeListener(type, listener);
+}
+
+ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
+{
+    const ReturnCode_t result = Runtime::InPortBase::notify_connect(connector_profile);
+    if (result == RTC_OK) {
+        m_listeners.connected(connector_profile);
+        m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
+    }
+    return result;
+}
+
+ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
+{
+    m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
+    const ReturnCode_t result = Runtime::InPortBase::notify_disconnect(connector_id);
+    m_listeners.disconnected(connector_id);
+    return result;
+}
+
+bool InPortBase::readBytes(Runtime::CdrBytes *data, bool *littleEndian)
+{
+    return readMarshalled(data, littleEndian);
+}
+
+// --- OutPortBase ---
+
+OutPortBase::OutPortBase(const char *name, const char *data_type)
+    : Runtime::OutPortBase(name, data_type, PortableServer::POA_var(Sdk::rootPoa()).in())
+{
+    m_properties.setProperty("dataport.data_type", data_type);
+}
+
+OutPortBase::~OutPortBase() = default;
+
+void OutPortBase::init(coil::Properties &prop)
+{
+    m_properties << prop;
+}
+
+coil::Properties &OutPortBase::properties()
+{
+    return m_properties;
+}
+
+ConnectorInfoList OutPortBase::getConnectorProfiles()
+{
+    return m_listeners.connectorInfos();
+}
+
+coil::vstring OutPortBase::getConnectorIds()
+{
+    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::id);
+}
+
+coil::vstring OutPortBase::getConnectorNames()
+{
+    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::name);
+}
+
+void OutPortBase::addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
+                                           bool autoclean)
+{
+    m_listeners.addListener(type, listener, autoclean);
+}
+
+void OutPortBase::removeConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
+{
+    m_listeners.removeListener(type, listener);
+}
+
+void OutPortBase::addConnectorListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean)
+{
+    m_listeners.addListener(type, listener, autoclean);
+}
+
+void OutPortBase::removeConnectorListener(ConnectorListenerType type, ConnectorListener *listener)
+{
+    m_listeners.removeListener(type, listener);
+}
+
+ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
+{
+    const ReturnCode_t result = Runtime::OutPortBase::notify_connect(connector_profile);
+    if (result == RTC_OK) {
+        m_listeners.connected(connector_profile);
+        m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
+    }
+    return result;
+}
+
+ReturnCode_t OutPortBase::notify_disconnect(const char *connector_id)
+{
+    m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
+    const ReturnCode_t result = Runtime::OutPortBase::notify_disconnect(connector_id);
+    m_listeners.disconnected(connector_id);
+    return result;
+}
+
+void OutPortBase::writeBytes(const std::function<Runtime::CdrBytes(bool littleEndian)> &marshal)
+{
+    const bool watched = m_listeners.hasListeners(ConnectorDataListenerType::ON_BUFFER_WRITE)
+                         || m_listeners.hasListeners(ConnectorDataListenerType::ON_SEND);
+    if (watched) {
+        const Runtime::CdrBytes bytes = marshal(true);
+        const auto length = static_cast<unsigned long>(bytes.size());
+        m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_WRITE, std::string(), bytes.data(), length, true);
+        m_listeners.notifyData(ConnectorDataListenerType::ON_SEND, std::string(), bytes.data(), length, true);
+    }
+    writeMarshalled(marshal);
+}
+
+// --- CorbaPort ---
+
+CorbaPort::CorbaPort(const char *name)
+    : Runtime::ServicePort(name, PortableServer::POA_var(Sdk::rootPoa()).in())
+{
+}
+
+CorbaPort::~CorbaPort() = default;
+
+bool CorbaPort::registerServant(const char *instance_name, const char *type_name, PortableServer::ServantBase *provider)
+{
+    if (instance_name == nullptr || type_name == nullptr || provider == nullptr)
+        return false;
+    // The provider is the component's member: the port's release must leave it to its owner.
+    provider->_add_ref();
+    try {
+        Runtime::ServicePort::registerProvider(instance_name, type_name, provider);
+    } catch (const CORBA::Exception &) {
+        provider->_remove_ref();
+        return false;
+    }
+    return true;
+}
+
+bool CorbaPort::registerConsumer(const char *instance_name, const char *type_name, CorbaConsumerBase &consumer)
+{
+    if (instance_name == nullptr || type_name == nullptr)
+        return false;
+    m_consumers.push_back({Runtime::ServicePort::registerConsumer(instance_name, type_name), &consumer});
+    return true;
+}
+
+ReturnCode_t CorbaPort::subscribeInterfaces(const ConnectorProfile &profile)
+{
+    const ReturnCode_t result = Runtime::ServicePort::subscribeInterfaces(profile);
+    updateConsumers();
+    return result;
+}
+
+void CorbaPort::unsubscribeInterfaces(const ConnectorProfile &profile)
+{
+    Runtime::ServicePort::unsubscribeInterfaces(profile);
+    updateConsumers();
+}
+
+void CorbaPort::updateConsumers()
+{
+    for (ConsumerBinding &binding : m_consumers) {
+        CORBA::Object_var object = binding.slot->object();
+        if (CORBA::is_nil(object))
+            binding.consumer->releaseObject();
+        else
+            binding.consumer->setObject(object);
+    }
+}
+
+} // namespace RTC

@@ -1,0 +1,17 @@
+# SPDX-License-Identifier: MIT
+# The component SDK's C++ API in one process (tst_sdkrtm), and a generated component built
+# against it, loaded into rtmanager and run standalone (tst_sdkgenerated).
+rtstudio_add_test(tst_sdkrtm SOURCES tst_sdkrtm.cpp LIBS rtsdk)
+target_include_directories(tst_sdkrtm PRIVATE ${PROJECT_SOURCE_DIR}/manager)
+set_tests_properties(tst_sdkrtm PROPERTIES LABELS sdk)
+
+rtstudio_add_test(tst_sdkgenerated SOURCES tst_sdkgenerated.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+target_compile_definitions(tst_sdkgenerated PRIVATE
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
+    CMAKE_COMMAND="${CMAKE_COMMAND}")
+add_dependencies(tst_sdkgenerated rtmanager rtctl rtsdk)
+if(TARGET rtsdk_stage)
+    add_dependencies(tst_sdkgenerated rtsdk_stage)
+endif()
+set_tests_properties(tst_sdkgenerated PROPERTIES LABELS sdk TIMEOUT 900)

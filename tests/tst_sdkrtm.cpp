@@ -1,0 +1,462 @@
+// SPDX-License-Identifier: MIT
+// The component SDK in one process: components written against OpenRTM-aist's C++ API are
+// created by RTC::Manager, connected through their ports, configured through SDO and called
+// through service ports, as OpenRTM-aist would do it.
+#include <rtm/CorbaConsumer.h>
+#include <rtm/CorbaPort.h>
+#include <rtm/DataFlowComponentBase.h>
+#include <rtm/DataInPort.h>
+#include <rtm/DataOutPort.h>
+#include <rtm/Manager.h>
+
+#include <SimpleService.hh>
+
+#include <managerconfig.h>
+
+#include <QtTest>
+
+#include <atomic>
+#include <istream>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+// What OpenRTP-style generated components bring for vector parameters: a stream extraction that
+// coil::stringTo finds by argument-dependent lookup.
+namespace std {
+template <typename T>
+std::istream &operator>>(std::istream &in, std::vector<T> &values)
+{
+    std::string all;
+    std::getline(in, all);
+    std::vector<T> read;
+    std::istringstream items(all);
+    for (std::string item; std::getline(items, item, ',');) {
+        std::istringstream one(item);
+        T value;
+        if (!(one >> value)) {
+            in.setstate(std::ios::failbit);
+            return in;
+        }
+        read.push_back(value);
+    }
+    values = read;
+    return in;
+}
+} // namespace std
+
+namespace {
+
+const char *const sourceSpec[] = {"implementation_id", "SdkSource", "type_name", "SdkSource",
+                                  "description", "counter", "version", "1.0.0", "vendor", "RTStudioTests",
+                                  "category", "test", "activity_type", "PERIODIC", "kind", "DataFlowComponent",
+                                  "max_instance", "0", "language", "C++", "lang_type", "compile",
+                                  "conf.default.step", "1", "conf.default.gains", "0.5,1.5",
+                                  "exec_cxt.periodic.rate", "200", ""};
+
+class SdkSource : public RTC::DataFlowComponentBase
+{
+public:
+    explicit SdkSource(RTC::Manager *manager)
+        : RTC::DataFlowComponentBase(manager)
+        , m_outOut("out", m_out)
+    {
+    }
+    RTC::ReturnCode_t onInitialize() override
+    {
+        addOutPort("out", m_outOut);
+        if (!bindParameter("step", m_step, "1") || !bindParameter("gains", m_gains, "0.5,1.5"))
+            return RTC::RTC_ERROR;
+        return RTC::RTC_OK;
+    }
+    RTC::ReturnCode_t onExecute(RTC::UniqueId) override
+    {
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            seenStep = m_step;
+            seenGains = m_gains;
+        }
+        m_out.data += m_step;
+        setTimestamp(m_out);
+        m_outOut.write();
+        return RTC::RTC_OK;
+    }
+
+    std::mutex mutex;
+    int seenStep = 0;
+    std::vector<double> seenGains;
+
+private:
+    int m_step = 0;
+    std::vector<double> m_gains;
+    RTC::TimedLong m_out;
+    RTC::OutPort<RTC::TimedLong> m_outOut;
+};
+
+class CountingListener : public RTC::ConnectorDataListenerT<RTC::TimedLong>
+{
+    USE_CONNLISTENER_STATUS;
+
+public:
+    explicit CountingListener(std::atomic<int> *count, std::atomic<long> *last)
+        : m_count(count)
+        , m_last(last)
+    {
+    }
+    ReturnCode operator()(RTC::ConnectorInfo &, RTC::TimedLong &data) override
+    {
+        ++*m_count;
+        *m_last = data.data;
+        return NO_CHANGE;
+    }
+
+private:
+    std::atomic<int> *m_count;
+    std::atomic<long> *m_last;
+};
+
+class ConnectListener : public RTC::ConnectorListener
+{
+    USE_CONNLISTENER_STATUS;
+
+public:
+    explicit ConnectListener(std::atomic<int> *count) : m_count(count) {}
+    ReturnCode operator()(RTC::ConnectorInfo &info) override
+    {
+        if (!info.id.empty() && info.properties.getProperty("dataflow_type") == "push")
+            ++*m_count;
+        return NO_CHANGE;
+    }
+
+private:
+    std::atomic<int> *m_count;
+};
+
+const char *const sinkSpec[] = {"implementation_id", "SdkSink", "type_name", "SdkSink", "version", "1.0.0",
+                                "vendor", "RTStudioTests", "category", "test", "language", "C++",
+                                "exec_cxt.periodic.rate", "200", ""};
+
+class SdkSink : public RTC::DataFlowComponentBase
+{
+public:
+    explicit SdkSink(RTC::Manager *manager)
+        : RTC::DataFlowComponentBase(manager)
+        , m_inIn("in", m_in)
+    {
+    }
+    RTC::ReturnCode_t onInitialize() override
+    {
+        addInPort("in", m_inIn);
+        m_inIn.addConnectorDataListener(RTC::ConnectorDataListenerType::ON_BUFFER_WRITE,
+                                        new CountingListener(&bufferWrites, &lastWritten));
+        m_inIn.addConnectorListener(RTC::ON_CONNECT, new ConnectListener(&connects));
+        return RTC::RTC_OK;
+    }
+    RTC::ReturnCode_t onExecute(RTC::UniqueId) override
+    {
+        while (m_inIn.isNew()) {
+            m_inIn.read();
+            ++received;
+            lastRead = m_in.data;
+        }
+        return RTC::RTC_OK;
+    }
+
+    std::atomic<int> received{0};
+    std::atomic<long> lastRead{0};
+    std::atomic<int> bufferWrites{0};
+    std::atomic<long> lastWritten{0};
+    std::atomic<int> connects{0};
+
+private:
+    RTC::TimedLong m_in;
+    RTC::InPort<RTC::TimedLong> m_inIn;
+};
+
+class EchoService : public virtual POA_SimpleService::MyService
+{
+public:
+    char *echo(const char *msg) override { return CORBA::string_dup((std::string("echo:") + msg).c_str()); }
+    SimpleService::EchoList *get_echo_history() override { return new SimpleService::EchoList; }
+    void set_value(CORBA::Float value) override { m_value = value; }
+    CORBA::Float get_value() override { return m_value; }
+    SimpleService::ValueList *get_value_history() override { return new SimpleService::ValueList; }
+
+private:
+    CORBA::Float m_value = 0;
+};
+
+const char *const providerSpec[] = {"implementation_id", "SdkProvider", "type_name", "SdkProvider",
+                                    "version", "1.0.0", "vendor", "RTStudioTests", "category", "test",
+                                    "language", "C++", ""};
+
+class SdkProvider : public RTC::DataFlowComponentBase
+{
+public:
+    explicit SdkProvider(RTC::Manager *manager)
+        : RTC::DataFlowComponentBase(manager)
+        , m_servicePort("MyService")
+    {
+    }
+    RTC::ReturnCode_t onInitialize() override
+    {
+        m_servicePort.registerProvider("myservice", "SimpleService::MyService", m_service);
+        addPort(m_servicePort);
+        return RTC::RTC_OK;
+    }
+
+private:
+    RTC::CorbaPort m_servicePort;
+    EchoService m_service;
+};
+
+const char *const consumerSpec[] = {"implementation_id", "SdkConsumer", "type_name", "SdkConsumer",
+                                    "version", "1.0.0", "vendor", "RTStudioTests", "category", "test",
+                                    "language", "C++", ""};
+
+class SdkConsumer : public RTC::DataFlowComponentBase
+{
+public:
+    explicit SdkConsumer(RTC::Manager *manager)
+        : RTC::DataFlowComponentBase(manager)
+        , m_servicePort("MyService")
+    {
+    }
+    RTC::ReturnCode_t onInitialize() override
+    {
+        m_servicePort.registerConsumer("myservice", "SimpleService::MyService", m_service);
+        addPort(m_servicePort);
+        return RTC::RTC_OK;
+    }
+    RTC::CorbaConsumer<SimpleService::MyService> &service() { return m_service; }
+
+private:
+    RTC::CorbaPort m_servicePort;
+    RTC::CorbaConsumer<SimpleService::MyService> m_service;
+};
+
+RTC::PortService_ptr portNamed(RTC::RTObject_impl *component, const std::string &name)
+{
+    RTC::RTObject_var self = component->getObjRef();
+    RTC::PortServiceList_var ports = self->get_ports();
+    for (CORBA::ULong i = 0; i < ports->length(); ++i) {
+        RTC::PortProfile_var profile = ports[i]->get_port_profile();
+        if (std::string(profile->name) == std::string(component->getInstanceName()) + '.' + name)
+            return RTC::PortService::_duplicate(ports[i]);
+    }
+    return RTC::PortService::_nil();
+}
+
+RTC::ReturnCode_t connectPorts(RTC::PortService_ptr a, RTC::PortService_ptr b, bool dataPort)
+{
+    RTC::ConnectorProfile profile;
+    profile.name = CORBA::string_dup("test");
+    profile.connector_id = CORBA::string_dup("");
+    profile.ports.length(2);
+    profile.ports[0] = RTC::PortService::_duplicate(a);
+    profile.ports[1] = RTC::PortService::_duplicate(b);
+    if (dataPort) {
+        const char *const pairs[][2] = {{"dataport.interface_type", "corba_cdr"},
+                                        {"dataport.dataflow_type", "push"},
+                                        {"dataport.subscription_type", "flush"},
+                                        {"dataport.data_type", "IDL:RTC/TimedLong:1.0"}};
+        profile.properties.length(4);
+        for (CORBA::ULong i = 0; i < 4; ++i) {
+            profile.properties[i].name = CORBA::string_dup(pairs[i][0]);
+            profile.properties[i].value <<= pairs[i][1];
+        }
+    }
+    return a->connect(profile);
+}
+
+void activate(RTC::RTObject_impl *component)
+{
+    QCOMPARE(component->activate(0), RTC::RTC_OK);
+}
+
+} // namespace
+
+class TestSdkRtm : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void managerArguments_data();
+    void managerArguments();
+    void createsRegisteredTypes();
+    void dataFlowsWithListeners();
+    void configurationReachesBoundVariables();
+    void serviceCallReturns();
+
+private:
+    RTC::Manager *m_manager = nullptr;
+};
+
+void TestSdkRtm::initTestCase()
+{
+    // No name server and no master: the manager serves on a free loopback port only.
+    const char *args[] = {"tst_sdkrtm", "-o", "naming.enable:NO", "-o", "corba.master_manager:",
+                          "-o", "corba.endpoints:127.0.0.1:", "-o", "logger.log_level:ERROR", "-f", "/nonexistent/rtc.conf", "-i"};
+    std::vector<char *> argv;
+    for (const char *arg : args)
+        argv.push_back(const_cast<char *>(arg));
+    m_manager = RTC::Manager::init(int(argv.size()), argv.data());
+    QVERIFY(m_manager != nullptr);
+    QCOMPARE(&RTC::Manager::instance(), m_manager);
+    QVERIFY(m_manager->activateManager());
+    m_manager->runManager(true);
+    coil::Properties source(sourceSpec), sink(sinkSpec), provider(providerSpec), consumer(consumerSpec);
+    QVERIFY(m_manager->registerFactory(source, RTC::Create<SdkSource>, RTC::Delete<SdkSource>));
+    QVERIFY(m_manager->registerFactory(sink, RTC::Create<SdkSink>, RTC::Delete<SdkSink>));
+    QVERIFY(m_manager->registerFactory(provider, RTC::Create<SdkProvider>, RTC::Delete<SdkProvider>));
+    QVERIFY(m_manager->registerFactory(consumer, RTC::Create<SdkConsumer>, RTC::Delete<SdkConsumer>));
+}
+
+void TestSdkRtm::cleanupTestCase()
+{
+    if (!m_manager)
+        return;
+    for (RTC::RTObject_impl *component : m_manager->getComponents())
+        m_manager->deleteComponent(component);
+    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponents().empty(), 5000);
+    // The manager shuts down like a component program's: the ORB stops and runManager() returns.
+    RTC::Manager::terminate();
+    m_manager->join();
+}
+
+void TestSdkRtm::managerArguments_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("value");
+    QTest::addColumn<bool>("ok");
+    QTest::newRow("-o colon") << QStringList{"-i", "-f", "/none", "-o", "exec_cxt.periodic.rate: 50"}
+                              << "exec_cxt.periodic.rate" << "50" << true;
+    QTest::newRow("-o equals, later wins")
+        << QStringList{"-i", "-f", "/none", "-o", "a.b=1", "-o", "a.b=2"} << "a.b" << "2" << true;
+    QTest::newRow("-o value with colon") << QStringList{"-i", "-f", "/none", "-o", "corba.endpoints:127.0.0.1:2811"}
+                                         << "corba.endpoints" << "127.0.0.1:2811" << true;
+    QTest::newRow("-p") << QStringList{"-i", "-f", "/none", "-p", "2812"} << "corba.endpoints" << ":2812" << true;
+    QTest::newRow("-d") << QStringList{"-i", "-f", "/none", "-d"} << "manager.is_master" << "YES" << true;
+    QTest::newRow("-a") << QStringList{"-i", "-f", "/none", "-a"} << "manager.corba_servant" << "NO" << true;
+    QTest::newRow("default") << QStringList{"-i", "-f", "/none"} << "naming.formats" << "%h.host_cxt/%n.rtc" << true;
+    QTest::newRow("missing -f file") << QStringList{"-f", "/nonexistent/rtc.conf"} << "" << "" << false;
+    QTest::newRow("bad -o") << QStringList{"-o", "novalue"} << "" << "" << false;
+    QTest::newRow("unknown") << QStringList{"--frobnicate"} << "" << "" << false;
+}
+
+void TestSdkRtm::managerArguments()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, key);
+    QFETCH(QString, value);
+    QFETCH(bool, ok);
+    std::vector<QByteArray> storage{"prog"};
+    for (const QString &argument : arguments)
+        storage.push_back(argument.toUtf8());
+    std::vector<char *> argv;
+    for (QByteArray &argument : storage)
+        argv.push_back(argument.data());
+    Runtime::Properties config;
+    std::string error;
+    QCOMPARE(Runtime::parseManagerArguments(int(argv.size()), argv.data(), &config, &error), ok);
+    if (ok)
+        QCOMPARE(QString::fromStdString(config.value(key.toStdString())), value);
+    else
+        QVERIFY(!error.empty());
+}
+
+void TestSdkRtm::createsRegisteredTypes()
+{
+    RTC::RTObject_impl *component = m_manager->createComponent("SdkSource?instance_name=made");
+    QVERIFY(component != nullptr);
+    QCOMPARE(QString(component->getInstanceName()), QString("made"));
+    QCOMPARE(QString(component->getTypeName()), QString("SdkSource"));
+    QCOMPARE(QString::fromStdString(component->getProperties().getProperty("conf.default.step")), QString("1"));
+    QCOMPARE(m_manager->getComponent("made"), component);
+    RTC::PortService_var out = portNamed(component, "out");
+    QVERIFY(!CORBA::is_nil(out));
+    QVERIFY(m_manager->getModulesFactories().size() >= 4);
+    QVERIFY(m_manager->createComponent("NoSuchType") == nullptr);
+    m_manager->deleteComponent("made");
+    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponent("made") == nullptr, 5000);
+}
+
+void TestSdkRtm::dataFlowsWithListeners()
+{
+    auto *source = dynamic_cast<SdkSource *>(m_manager->createComponent("SdkSource"));
+    auto *sink = dynamic_cast<SdkSink *>(m_manager->createComponent("SdkSink"));
+    QVERIFY(source && sink);
+    RTC::PortService_var out = portNamed(source, "out");
+    RTC::PortService_var in = portNamed(sink, "in");
+    QCOMPARE(connectPorts(out, in, true), RTC::RTC_OK);
+    QCOMPARE(sink->connects.load(), 1);
+    activate(source);
+    activate(sink);
+    QTRY_VERIFY_WITH_TIMEOUT(sink->received.load() > 5, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(sink->bufferWrites.load() > 5, 10000);
+    QVERIFY(sink->lastRead.load() > 0);
+    QVERIFY(sink->lastWritten.load() >= sink->lastRead.load());
+    QCOMPARE(source->deactivate(0), RTC::RTC_OK);
+    QCOMPARE(sink->deactivate(0), RTC::RTC_OK);
+    m_manager->deleteComponent(source);
+    m_manager->deleteComponent(sink);
+}
+
+void TestSdkRtm::configurationReachesBoundVariables()
+{
+    auto *source = dynamic_cast<SdkSource *>(m_manager->createComponent("SdkSource"));
+    QVERIFY(source);
+    activate(source);
+    QTRY_VERIFY_WITH_TIMEOUT(([source] {
+                                 std::lock_guard<std::mutex> lock(source->mutex);
+                                 return source->seenStep == 1 && source->seenGains == std::vector<double>{0.5, 1.5};
+                             }()),
+                             5000);
+    RTC::RTObject_var self = source->getObjRef();
+    SDOPackage::Configuration_var configuration = self->get_configuration();
+    SDOPackage::ConfigurationSet set;
+    set.id = CORBA::string_dup("default");
+    set.description = CORBA::string_dup("");
+    set.configuration_data.length(2);
+    set.configuration_data[0].name = CORBA::string_dup("step");
+    set.configuration_data[0].value <<= "5";
+    set.configuration_data[1].name = CORBA::string_dup("gains");
+    set.configuration_data[1].value <<= "2.5, 3.5, 4";
+    QVERIFY(configuration->set_configuration_set_values(set));
+    QVERIFY(configuration->activate_configuration_set("default"));
+    QTRY_VERIFY_WITH_TIMEOUT(([source] {
+                                 std::lock_guard<std::mutex> lock(source->mutex);
+                                 return source->seenStep == 5
+                                        && source->seenGains == std::vector<double>{2.5, 3.5, 4.0};
+                             }()),
+                             5000);
+    QCOMPARE(source->deactivate(0), RTC::RTC_OK);
+    m_manager->deleteComponent(source);
+}
+
+void TestSdkRtm::serviceCallReturns()
+{
+    RTC::RTObject_impl *provider = m_manager->createComponent("SdkProvider");
+    auto *consumer = dynamic_cast<SdkConsumer *>(m_manager->createComponent("SdkConsumer"));
+    QVERIFY(provider && consumer);
+    QVERIFY(CORBA::is_nil(consumer->service()._ptr()));
+    RTC::PortService_var provided = portNamed(provider, "MyService");
+    RTC::PortService_var required = portNamed(consumer, "MyService");
+    QCOMPARE(connectPorts(required, provided, false), RTC::RTC_OK);
+    QVERIFY(!CORBA::is_nil(consumer->service()._ptr()));
+    CORBA::String_var answer = consumer->service()->echo("hello");
+    QCOMPARE(QString(answer.in()), QString("echo:hello"));
+    consumer->service()->set_value(2.5f);
+    QCOMPARE(consumer->service()->get_value(), 2.5f);
+    QCOMPARE(required->disconnect_all(), RTC::RTC_OK);
+    QVERIFY(CORBA::is_nil(consumer->service()._ptr()));
+    m_manager->deleteComponent(provider);
+    m_manager->deleteComponent(consumer);
+}
+
+QTEST_GUILESS_MAIN(TestSdkRtm)
+#include "tst_sdkrtm.moc"
