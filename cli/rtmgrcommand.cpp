@@ -23,7 +23,10 @@ QString actionOfFlag(const QString &flag)
         return QStringLiteral("unload");
     if (flag == QLatin1String("-c"))
         return QStringLiteral("create");
-    return QStringLiteral("delete");
+    if (flag == QLatin1String("-d"))
+        return QStringLiteral("delete");
+    // --json, --timeout and the other options are settings, not actions.
+    return QString();
 }
 
 // A refused fork or restart reports only its return code; the manager's last_error says why.
@@ -134,8 +137,11 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
     if (options.positionals.isEmpty())
         return usageError(QStringLiteral("missing manager PATH or corbaloc"), streams);
     QList<QPair<QString, QString>> actions;
-    for (const auto &flag : options.sequence)
-        actions.append({actionOfFlag(flag.first), flag.second});
+    for (const auto &flag : options.sequence) {
+        const QString action = actionOfFlag(flag.first);
+        if (!action.isEmpty())
+            actions.append({action, flag.second});
+    }
     const QStringList words = options.positionals.mid(1);
     for (int i = 0; i < words.size(); ++i) {
         const QString &word = words.at(i);

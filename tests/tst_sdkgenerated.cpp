@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: MIT
+// From design to a running component: a profile with data ports, provided and required service
+// ports of a user IDL and scalar and vector configuration is generated with `rtctl gen`, user code
+// goes into onExecute and the servant, a regeneration merges around it, CMake builds the project
+// against the component SDK of this build tree, rtmanager loads the module, and the instances
+// exchange data with built-in components, call each other's service and follow configuration
+// changes. The standalone <Name>Comp registers in the name server and is activated with rtctl.
+#include "livesystem.h"
+#include "rtctlrunner.h"
+
+#include <RTC.hh>
+
+#include <QtTest>
+
+#include <functional>
+
+namespace {
+
+const QString fixtureDir = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
+
+/// What the user writes into the generated files (between the generated blocks).
+struct UserEdit
+{
+    const char *file;
+    const char *before;
+    const char *after;
+};
+
+const UserEdit userEdits[] = {
+    {"src/SdkGreeter.cpp", "#include \"SdkGreeter.h\"\n", "#include \"SdkGreeter.h\"\n\n#include <algorithm>\n"},
+    {"src/SdkGreeter.cpp",
+     "RTC::ReturnCode_t SdkGreeter::onExecute(RTC::UniqueId /*ec_id*/)\n{\n  return RTC::RTC_OK;\n}",
+     "RTC::ReturnCode_t SdkGreeter::onExecute(RTC::UniqueId /*ec_id*/)\n"
+     "{\n"
+     "  // user code: greet the peer, scale the input within the limits, or report the greetings\n"
+     "  if (!CORBA::is_nil(m_peerGreeter._ptr()))\n"
+     "    {\n"
+     "      try { CORBA::String_var reply = m_peerGreeter->greet(getInstanceName()); }\n"
+     "      catch (const CORBA::Exception&) { RTC_WARN((\"peer unreachable\")); }\n"
+     "    }\n"
+     "  if (m_inIn.isNew())\n"
+     "    {\n"
+     "      m_inIn.read();\n"
+     "      double value = m_in.data * m_gain;\n"
+     "      if (m_limits.size() == 2) { value = std::min(std::max(value, m_limits[0]), m_limits[1]); }\n"
+     "      m_out.data = static_cast<CORBA::Long>(value);\n"
+     "      setTimestamp(m_out);\n"
+     "      m_outOut.write();\n"
+     "    }\n"
+     "  else if (m_greeter.calls() > 0)\n"
+     "    {\n"
+     "      m_out.data = -m_greeter.calls();\n"
+     "      m_outOut.write();\n"
+     "    }\n"
+     "  return RTC::RTC_OK;\n"
+     "}"},
+    {"src/GreeterSVC_impl.cpp", "#include \"GreeterSVC_impl.h\"\n",
+     "#include \"GreeterSVC_impl.h\"\n\n#include <map>\n#include <mutex>\n#include <string>\n\n"
+     "// Greetings received, per servant.\n"
+     "static std::mutex greetingsMutex;\n"
+     "static std::map<const void*, long> greetings;\n"},
+    {"src/GreeterSVC_impl.cpp", "  // Please insert your code here.\n  return CORBA::string_dup(\"\");",
+     "  {\n    std::lock_guard<std::mutex> lock(greetingsMutex);\n    ++greetings[this];\n  }\n"
+     "  return CORBA::string_dup((std::string(\"hello \") + name).c_str());"},
+    {"src/GreeterSVC_impl.cpp", "  // Please insert your code here.\n  return 0;",
+     "  std::lock_guard<std::mutex> lock(greetingsMutex);\n  return greetings[this];"},
+};
+
+bool applyEdit(const QString &root, const UserEdit &edit, QString *error)
+{
+    QFile file(root + '/' + edit.file);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = "cannot read " + file.fileName();
+        return false;
+    }
+    QByteArray text = file.readAll();
+    file.close();
+    if (!text.contains(edit.before)) {
+        *error = QString("%1 has no '%2'").arg(edit.file, edit.before);
+        return false;
+    }
+    text.replace(edit.before, edit.after);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(text) != text.size()) {
+        *error = "cannot write " + file.fileName();
+        return false;
+    }
+    return true;
+}
+
+/// Runs a build tool; false with its output in @p log when it fails or runs past @p timeoutMs.
+bool runTool(const QString &program, const QStringList &arguments, const QString &cwd, int timeoutMs, QString *log)
+{
+    QProcess process;
+    process.setWorkingDirectory(cwd);
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    process.start(program, arguments);
+    const bool finished = process.waitForFinished(timeoutMs);
+    *log = QString::fromLocal8Bit(process.readAll());
+    if (!finished) {
+        process.kill();
+        process.waitForFinished(5000);
+        *log += "\n(timed out)";
+        return false;
+    }
+    return process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
+}
+
+QString statusOf(CORBA::ORB_ptr orb, const QString &ior, const char *name)
+{
+    try {
+        CORBA::Object_var object = orb->string_to_object(ior.toUtf8().constData());
+        RTC::RTObject_var rtc = RTC::RTObject::_narrow(object);
+        SDOPackage::NVList_var list = rtc->get_status_list();
+        for (CORBA::ULong i = 0; i < list->length(); ++i) {
+            const char *text = nullptr;
+            if (QByteArray(list[i].name.in()) == name && (list[i].value >>= text))
+                return QString::fromUtf8(text);
+        }
+    } catch (const CORBA::Exception &) {
+    }
+    return {};
+}
+
+} // namespace
+
+class TestSdkGenerated : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void userCodeSurvivesRegeneration();
+    void moduleRunsInManager();
+    void standaloneComponentIsDrivenByRtctl();
+
+private:
+    RtctlResult rtctl(const QStringList &arguments);
+    QString host() const { return QStringLiteral("/%1/sdkhost.host_cxt").arg(m_live.namingServer()); }
+    QString iorOf(const QString &path);
+    QString lastValue(const QString &path);
+
+    QTemporaryDir m_work;
+    QString m_project;
+    QString m_buildLog;
+    LiveTest::LiveSystem m_live;
+    CORBA::ORB_var m_orb;
+};
+
+RtctlResult TestSdkGenerated::rtctl(const QStringList &arguments)
+{
+    return runRtctl(arguments, {{QStringLiteral("RTCSH_CWD"), host()}, {QStringLiteral("RTCTREE_NAMESERVERS"), QString()}});
+}
+
+void TestSdkGenerated::initTestCase()
+{
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
+    QVERIFY(m_work.isValid());
+    m_project = m_work.filePath("SdkGreeter");
+    const QStringList generate{"gen", fixtureDir + "/RTC.xml", "--lang", "cpp", "-o", m_project, "--idl-dir", fixtureDir};
+    RtctlResult generated = runRtctl(generate);
+    QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
+    QVERIFY2(QFile::exists(m_project + "/include/SdkGreeter/VectorConvert.h"),
+             "a vector parameter brings the vector conversion header");
+    QString error;
+    for (const UserEdit &edit : userEdits)
+        QVERIFY2(applyEdit(m_project, edit, &error), qPrintable(error));
+    // Regenerating merges the profile's blocks around the user's code.
+    RtctlResult merged = runRtctl(generate + QStringList{"--merge"});
+    QVERIFY2(merged.code == 0, qPrintable(merged.out + merged.err));
+
+    QStringList configure{"-S", m_project, "-B", m_project + "/build", "-G", "Ninja",
+                          "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_PREFIX_PATH=" RTSTUDIO_BUILD_DIR};
+    const QString ccache = QStandardPaths::findExecutable("ccache");
+    if (!ccache.isEmpty())
+        configure << "-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache;
+    QVERIFY2(runTool(CMAKE_COMMAND, configure, m_project, 120000, &m_buildLog), qPrintable(m_buildLog));
+    QVERIFY2(runTool(CMAKE_COMMAND, {"--build", m_project + "/build", "-j2"}, m_project, 600000, &m_buildLog),
+             qPrintable(m_buildLog));
+    QVERIFY(QFile::exists(m_project + "/build/src/SdkGreeter.so"));
+    QVERIFY(QFile::exists(m_project + "/build/src/SdkGreeterComp"));
+
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    const QStringList options{"corba.nameservers=" + m_live.namingServer(),
+                              "naming.formats=sdkhost.host_cxt/%n.rtc",
+                              "manager.naming_formats=sdkhost.host_cxt/%n.mgr",
+                              "manager.modules.load_path=" + m_project + "/build/src",
+                              "manager.components.precreate=ConsoleIn?exec_cxt.periodic.rate=50,"
+                              "ConsoleOut?instance_name=Scaled,ConsoleOut?instance_name=Greetings"};
+    QVERIFY2(m_live.startManager(RTMANAGER_PATH, LiveTest::freePort(), options, &error), qPrintable(error));
+}
+
+void TestSdkGenerated::cleanupTestCase()
+{
+    m_live.stopAll();
+}
+
+void TestSdkGenerated::userCodeSurvivesRegeneration()
+{
+    QFile source(m_project + "/src/SdkGreeter.cpp");
+    QVERIFY(source.open(QIODevice::ReadOnly));
+    const QByteArray text = source.readAll();
+    QVERIFY(text.contains("// user code: greet the peer"));
+    QVERIFY(text.contains("<rtc-template block=\"bind_config\">"));
+    QFile servant(m_project + "/src/GreeterSVC_impl.cpp");
+    QVERIFY(servant.open(QIODevice::ReadOnly));
+    QVERIFY(servant.readAll().contains("std::string(\"hello \") + name"));
+}
+
+QString TestSdkGenerated::iorOf(const QString &path)
+{
+    // The name server resolves the component's name for us.
+    return QStringLiteral("corbaname::%1#sdkhost.host_cxt/%2").arg(m_live.namingServer(), path);
+}
+
+QString TestSdkGenerated::lastValue(const QString &path)
+{
+    static QHash<QString, QString> iors;
+    if (!iors.contains(path))
+        iors.insert(path, iorOf(path));
+    return statusOf(m_orb, iors.value(path), "last_value");
+}
+
+void TestSdkGenerated::moduleRunsInManager()
+{
+    const QString manager = host() + "/manager.mgr";
+    // --timeout is a setting, not an action (it was once taken for a delete).
+    RtctlResult r = rtctl({"mgr", "--timeout", "20000", manager, "load", "SdkGreeter", "create", "SdkGreeter?instance_name=Front",
+                           "create", "SdkGreeter?instance_name=Back"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    for (const QStringList &link : {QStringList{"ConsoleIn0.rtc:out", "Front.rtc:in"},
+                                    QStringList{"Front.rtc:out", "Scaled.rtc:in"},
+                                    QStringList{"Front.rtc:peer", "Back.rtc:greet"},
+                                    QStringList{"Back.rtc:out", "Greetings.rtc:in"}}) {
+        r = rtctl(QStringList{"con"} + link);
+        QVERIFY2(r.code == 0, qPrintable(link.join(' ') + ": " + r.out + r.err));
+    }
+    r = rtctl({"act", "ConsoleIn0.rtc", "Front.rtc", "Back.rtc", "Scaled.rtc", "Greetings.rtc"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+
+    // Data in and out: ConsoleIn's counter doubled (gain 2) reaches the sink.
+    QTRY_VERIFY_WITH_TIMEOUT(lastValue("Scaled.rtc").toLong() > 0 && lastValue("Scaled.rtc").toLong() % 2 == 0, 20000);
+    // The required interface reached the other instance's servant: it reports its greetings.
+    QTRY_VERIFY_WITH_TIMEOUT(lastValue("Greetings.rtc").toLong() < 0, 20000);
+
+    // Configuration reaches the bound variables: a new gain, then vector limits.
+    r = rtctl({"conf", "Front.rtc", "set", "gain", "3"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QTRY_VERIFY_WITH_TIMEOUT(lastValue("Scaled.rtc").toLong() > 0 && lastValue("Scaled.rtc").toLong() % 3 == 0, 20000);
+    r = rtctl({"conf", "Front.rtc", "set", "limits", "0,7"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QTRY_COMPARE_WITH_TIMEOUT(lastValue("Scaled.rtc"), QString("7"), 20000);
+}
+
+void TestSdkGenerated::standaloneComponentIsDrivenByRtctl()
+{
+    QString error;
+    QProcess *comp = m_live.startProcess(m_project + "/build/src/SdkGreeterComp",
+                                         {"-f", m_project + "/rtc.conf", "-o",
+                                          "corba.nameservers:" + m_live.namingServer(), "-o",
+                                          "naming.formats:standalone.host_cxt/%n.rtc", "-o", "corba.master_manager:"},
+                                         QString(), &error, 0);
+    QVERIFY2(comp != nullptr, qPrintable(error));
+    const QString path = QStringLiteral("/%1/standalone.host_cxt/SdkGreeter0.rtc").arg(m_live.namingServer());
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"cat", path}).code == 0, 20000);
+    RtctlResult r = runRtctl({"act", path});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"cat", path}).out.contains("Active"), 10000);
+}
+
+QTEST_GUILESS_MAIN(TestSdkGenerated)
+#include "tst_sdkgenerated.moc"
