@@ -15,3 +15,19 @@ if(TARGET rtsdk_stage)
     add_dependencies(tst_sdkgenerated rtsdk_stage)
 endif()
 set_tests_properties(tst_sdkgenerated PROPERTIES LABELS sdk TIMEOUT 900)
+
+# Shared by the tests that build generated projects against the SDK.
+add_library(rtstudio_sdkproject STATIC common/sdkproject.h common/sdkproject.cpp)
+target_include_directories(rtstudio_sdkproject PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/common)
+target_link_libraries(rtstudio_sdkproject PUBLIC Qt6::Core)
+
+rtstudio_add_test(tst_sdkfixtures SOURCES tst_sdkfixtures.cpp
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject)
+target_compile_definitions(tst_sdkfixtures PRIVATE
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}")
+add_dependencies(tst_sdkfixtures rtmanager rtctl rtsdk)
+if(TARGET rtsdk_stage)
+    add_dependencies(tst_sdkfixtures rtsdk_stage)
+endif()
+set_tests_properties(tst_sdkfixtures PROPERTIES LABELS sdk TIMEOUT 900)
