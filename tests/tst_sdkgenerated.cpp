@@ -7,6 +7,7 @@
 // changes. The standalone <Name>Comp registers in the name server and is activated with rtctl.
 #include "livesystem.h"
 #include "rtctlrunner.h"
+#include "sdkgreeteredits.h"
 
 #include <RTC.hh>
 
@@ -17,93 +18,6 @@
 namespace {
 
 const QString fixtureDir = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
-
-/// What the user writes into the generated files (between the generated blocks).
-struct UserEdit
-{
-    const char *file;
-    const char *before;
-    const char *after;
-};
-
-const UserEdit userEdits[] = {
-    {"src/SdkGreeter.cpp", "#include \"SdkGreeter.h\"\n", "#include \"SdkGreeter.h\"\n\n#include <algorithm>\n"},
-    {"src/SdkGreeter.cpp",
-     "RTC::ReturnCode_t SdkGreeter::onExecute(RTC::UniqueId /*ec_id*/)\n{\n  return RTC::RTC_OK;\n}",
-     "RTC::ReturnCode_t SdkGreeter::onExecute(RTC::UniqueId /*ec_id*/)\n"
-     "{\n"
-     "  // user code: greet the peer, scale the input within the limits, or report the greetings\n"
-     "  if (!CORBA::is_nil(m_peerGreeter._ptr()))\n"
-     "    {\n"
-     "      try { CORBA::String_var reply = m_peerGreeter->greet(getInstanceName()); }\n"
-     "      catch (const CORBA::Exception&) { RTC_WARN((\"peer unreachable\")); }\n"
-     "    }\n"
-     "  if (m_inIn.isNew())\n"
-     "    {\n"
-     "      m_inIn.read();\n"
-     "      double value = m_in.data * m_gain;\n"
-     "      if (m_limits.size() == 2) { value = std::min(std::max(value, m_limits[0]), m_limits[1]); }\n"
-     "      m_out.data = static_cast<CORBA::Long>(value);\n"
-     "      setTimestamp(m_out);\n"
-     "      m_outOut.write();\n"
-     "    }\n"
-     "  else if (m_greeter.calls() > 0)\n"
-     "    {\n"
-     "      m_out.data = -m_greeter.calls();\n"
-     "      m_outOut.write();\n"
-     "    }\n"
-     "  return RTC::RTC_OK;\n"
-     "}"},
-    {"src/GreeterSVC_impl.cpp", "#include \"GreeterSVC_impl.h\"\n",
-     "#include \"GreeterSVC_impl.h\"\n\n#include <map>\n#include <mutex>\n#include <string>\n\n"
-     "// Greetings received, per servant.\n"
-     "static std::mutex greetingsMutex;\n"
-     "static std::map<const void*, long> greetings;\n"},
-    {"src/GreeterSVC_impl.cpp", "  // Please insert your code here.\n  return CORBA::string_dup(\"\");",
-     "  {\n    std::lock_guard<std::mutex> lock(greetingsMutex);\n    ++greetings[this];\n  }\n"
-     "  return CORBA::string_dup((std::string(\"hello \") + name).c_str());"},
-    {"src/GreeterSVC_impl.cpp", "  // Please insert your code here.\n  return 0;",
-     "  std::lock_guard<std::mutex> lock(greetingsMutex);\n  return greetings[this];"},
-};
-
-bool applyEdit(const QString &root, const UserEdit &edit, QString *error)
-{
-    QFile file(root + '/' + edit.file);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = "cannot read " + file.fileName();
-        return false;
-    }
-    QByteArray text = file.readAll();
-    file.close();
-    if (!text.contains(edit.before)) {
-        *error = QString("%1 has no '%2'").arg(edit.file, edit.before);
-        return false;
-    }
-    text.replace(edit.before, edit.after);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(text) != text.size()) {
-        *error = "cannot write " + file.fileName();
-        return false;
-    }
-    return true;
-}
-
-/// Runs a build tool; false with its output in @p log when it fails or runs past @p timeoutMs.
-bool runTool(const QString &program, const QStringList &arguments, const QString &cwd, int timeoutMs, QString *log)
-{
-    QProcess process;
-    process.setWorkingDirectory(cwd);
-    process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(program, arguments);
-    const bool finished = process.waitForFinished(timeoutMs);
-    *log = QString::fromLocal8Bit(process.readAll());
-    if (!finished) {
-        process.kill();
-        process.waitForFinished(5000);
-        *log += "\n(timed out)";
-        return false;
-    }
-    return process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
-}
 
 QString statusOf(CORBA::ORB_ptr orb, const QString &ior, const char *name)
 {
@@ -164,8 +78,8 @@ void TestSdkGenerated::initTestCase()
     QVERIFY2(QFile::exists(m_project + "/include/SdkGreeter/VectorConvert.h"),
              "a vector parameter brings the vector conversion header");
     QString error;
-    for (const UserEdit &edit : userEdits)
-        QVERIFY2(applyEdit(m_project, edit, &error), qPrintable(error));
+    for (const SdkGreeter::UserEdit &edit : SdkGreeter::userEdits)
+        QVERIFY2(SdkGreeter::applyEdit(m_project, edit, &error), qPrintable(error));
     // Regenerating merges the profile's blocks around the user's code.
     RtctlResult merged = runRtctl(generate + QStringList{"--merge"});
     QVERIFY2(merged.code == 0, qPrintable(merged.out + merged.err));
@@ -175,8 +89,8 @@ void TestSdkGenerated::initTestCase()
     const QString ccache = QStandardPaths::findExecutable("ccache");
     if (!ccache.isEmpty())
         configure << "-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache;
-    QVERIFY2(runTool(CMAKE_COMMAND, configure, m_project, 120000, &m_buildLog), qPrintable(m_buildLog));
-    QVERIFY2(runTool(CMAKE_COMMAND, {"--build", m_project + "/build", "-j2"}, m_project, 600000, &m_buildLog),
+    QVERIFY2(SdkGreeter::runTool(CMAKE_COMMAND, configure, m_project, 120000, &m_buildLog), qPrintable(m_buildLog));
+    QVERIFY2(SdkGreeter::runTool(CMAKE_COMMAND, {"--build", m_project + "/build", "-j2"}, m_project, 600000, &m_buildLog),
              qPrintable(m_buildLog));
     QVERIFY(QFile::exists(m_project + "/build/src/SdkGreeter.so"));
     QVERIFY(QFile::exists(m_project + "/build/src/SdkGreeterComp"));
