@@ -31,3 +31,15 @@ if(TARGET rtsdk_stage)
     add_dependencies(tst_sdkfixtures rtsdk_stage)
 endif()
 set_tests_properties(tst_sdkfixtures PROPERTIES LABELS sdk TIMEOUT 900)
+
+# A hand-written OpenRTM-style module that crashes on request, hosted by master and slaves.
+add_library(sdkcrashprobe MODULE sdkmodules/crashprobe.cpp)
+target_link_libraries(sdkcrashprobe PRIVATE rtsdk)
+set_target_properties(sdkcrashprobe PROPERTIES PREFIX "" OUTPUT_NAME CrashProbe AUTOMOC OFF
+    LIBRARY_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/sdkmodules)
+rtstudio_add_test(tst_sdkslaves SOURCES tst_sdkslaves.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner)
+target_compile_definitions(tst_sdkslaves PRIVATE
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+    SDK_TEST_MODULE_DIR="${CMAKE_CURRENT_BINARY_DIR}/sdkmodules")
+add_dependencies(tst_sdkslaves rtmanager rtctl sdkcrashprobe)
+set_tests_properties(tst_sdkslaves PROPERTIES LABELS sdk)
