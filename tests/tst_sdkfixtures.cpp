@@ -74,6 +74,9 @@ void TestSdkFixtures::generatedProjectRuns_data()
     QTest::newRow("services of a multi-module IDL") << codegen + "ServicesComp.xml" << "ServicesComp" << idl;
     QTest::newRow("documented") << codegen + "DocumentedComp.xml" << "DocumentedComp" << idl;
     QTest::newRow("OpenRTP's sample") << codegen + "SampleComp.xml" << "SampleComp" << idl;
+    // FSM and multi-mode kinds run their data-flow part.
+    QTest::newRow("all component kinds") << QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/KindsProbe.xml") << "KindsProbe"
+                                         << QStringList{"--idl-dir", RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter"};
 }
 
 void TestSdkFixtures::generatedProjectRuns()
