@@ -224,8 +224,16 @@ std::string Manager::lastError()
     return m_lastError;
 }
 
-RTC::RTObject_ptr Manager::createComponent(const std::string &text, std::string *error)
+void Manager::setLifecycleHooks(LifecycleHooks hooks)
 {
+    m_hooks = std::move(hooks);
+}
+
+RTC::RTObject_ptr Manager::createComponent(const std::string &requestText, std::string *error)
+{
+    std::string text = requestText;
+    if (m_hooks.preCreate)
+        m_hooks.preCreate(text);
     std::string message;
     const std::optional<CreateRequest> request = CreateRequest::parse(text, &message);
     if (!request) {
@@ -282,6 +290,8 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
         return RTC::RTObject::_nil();
     }
     Properties properties = factory->profile;
+    // The factory list may change while the hooks run unlocked: keep what is needed of it.
+    const std::function<RtObject *(PortableServer::POA_ptr)> create = factory->create;
     for (const char *key : {"exec_cxt.periodic.rate", "exec_cxt.periodic.type", "exec_cxt.transition_timeout"}) {
         if (m_config.contains(key))
             properties.set(key, m_config.value(key));
@@ -289,6 +299,10 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     // OpenRTM's per-component configuration files: rtc.conf's `<category>.<type>.config_file`,
     // then `<category>.<instance>.config_file`, then the request's own `config_file`; the
     // request's keys apply last.
+    lock.unlock();
+    if (m_hooks.preConfigure)
+        m_hooks.preConfigure(properties);
+    lock.lock();
     const std::string category = properties.value("category");
     std::string instance = request.properties.value("instance_name");
     if (instance.empty())
@@ -316,6 +330,11 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
         properties.merge(Properties::parseConf(text.str()));
     }
     properties.merge(request.properties);
+    if (m_hooks.postConfigure) {
+        lock.unlock();
+        m_hooks.postConfigure(properties);
+        lock.lock();
+    }
     if (std::any_of(m_components.begin(), m_components.end(),
                     [&instance](const auto &c) { return c->instanceName == instance; })) {
         lock.unlock();
@@ -325,7 +344,7 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     properties.set("instance_name", instance);
     auto component = std::make_unique<Component>();
     component->instanceName = instance;
-    component->servant = factory->create(m_poa);
+    component->servant = create(m_poa);
     // Reserve the name before initialising outside the lock.
     Component *record = component.get();
     m_components.push_back(std::move(component));
@@ -333,7 +352,11 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
 
     record->servant->setProperties(properties);
     record->reference = record->servant->reference();
+    if (m_hooks.preInitialize)
+        m_hooks.preInitialize();
     const RTC::ReturnCode_t result = record->servant->initialize();
+    if (m_hooks.postInitialize)
+        m_hooks.postInitialize();
     if (result != RTC::RTC_OK) {
         forget(record->servant);
         fail("create_component: " + instance + " failed to initialize", error);
@@ -341,6 +364,8 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     }
     record->servant->setExitHandler([this](RtObject *servant) { forget(servant); });
     registerNames(*record);
+    if (m_hooks.postCreate)
+        m_hooks.postCreate(record->servant);
     return RTC::RTObject::_duplicate(record->reference);
 }
 
@@ -349,13 +374,18 @@ void Manager::registerNames(Component &component)
     Properties values = component.servant->properties();
     values.set("manager_name", m_instanceName);
     std::vector<std::string> errors;
-    for (const std::string &path :
-         NamingRegistrar::expand(m_config.value("naming.formats", "%h.host_cxt/%n.rtc"), values)) {
+    std::vector<std::string> paths =
+        NamingRegistrar::expand(m_config.value("naming.formats", "%h.host_cxt/%n.rtc"), values);
+    if (m_hooks.preNaming)
+        m_hooks.preNaming(component.servant, paths, true);
+    for (const std::string &path : paths) {
         if (m_naming->bind(path, component.reference, &errors))
             component.names.push_back(path);
     }
     for (const std::string &message : errors)
         std::cerr << "rtmanager: " << message << std::endl;
+    if (m_hooks.postNaming)
+        m_hooks.postNaming(component.servant, component.names, true);
 }
 
 void Manager::forget(RtObject *servant)
@@ -370,8 +400,12 @@ void Manager::forget(RtObject *servant)
         removed = std::move(*it);
         m_components.erase(it);
     }
+    if (m_hooks.preNaming)
+        m_hooks.preNaming(removed->servant, removed->names, false);
     for (const std::string &path : removed->names)
         m_naming->unbind(path);
+    if (m_hooks.postNaming)
+        m_hooks.postNaming(removed->servant, removed->names, false);
     releaseServant(m_poa, removed->servant);
 }
 

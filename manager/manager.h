@@ -84,6 +84,25 @@ public:
      * RTC::Manager, as OpenRTM-aist modules expect.
      */
     using ModuleInitCall = std::function<void(void *initFunction)>;
+
+    /**
+     * Steps of a local component creation that observers may watch (the SDK's RTM:: action
+     * listeners): the request text, the component's properties before and after the
+     * configuration files and the request apply, initialisation, and its names when they are
+     * bound or unbound. Unset members are skipped. Called without the manager's lock.
+     */
+    struct LifecycleHooks
+    {
+        std::function<void(std::string &request)> preCreate;
+        std::function<void(RtObject *component)> postCreate;
+        std::function<void(Properties &properties)> preConfigure;
+        std::function<void(Properties &properties)> postConfigure;
+        std::function<void()> preInitialize;
+        std::function<void()> postInitialize;
+        std::function<void(RtObject *component, std::vector<std::string> &names, bool bind)> preNaming;
+        std::function<void(RtObject *component, std::vector<std::string> &names, bool bind)> postNaming;
+    };
+    void setLifecycleHooks(LifecycleHooks hooks);
     void setModuleInitCall(ModuleInitCall call);
     bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
     /// The module file @p name stands for: itself when absolute, else found in the load path (with or without ".so").
@@ -166,6 +185,7 @@ private:
     std::vector<std::unique_ptr<Slave>> m_slaves;
     std::vector<std::unique_ptr<Module>> m_modules;
     ModuleInitCall m_moduleInitCall;
+    LifecycleHooks m_hooks;
     RTM::ManagerList m_masters;
     std::string m_lastError;
     bool m_stopping = false;

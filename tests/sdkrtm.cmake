@@ -43,3 +43,6 @@ target_compile_definitions(tst_sdkslaves PRIVATE
     SDK_TEST_MODULE_DIR="${CMAKE_CURRENT_BINARY_DIR}/sdkmodules")
 add_dependencies(tst_sdkslaves rtmanager rtctl sdkcrashprobe)
 set_tests_properties(tst_sdkslaves PROPERTIES LABELS sdk)
+target_compile_definitions(tst_sdkrtm PRIVATE
+    MANAGER_TEST_MODULE="${CMAKE_CURRENT_BINARY_DIR}/managermodules/ManagerTestModule.so")
+add_dependencies(tst_sdkrtm managertestmodule)

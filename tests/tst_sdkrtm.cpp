@@ -236,6 +236,53 @@ private:
     RTC::CorbaConsumer<SimpleService::MyService> m_service;
 };
 
+/// Writes down every manager action it hears of, in order.
+class ActionRecorder : public RTM::RtcLifecycleActionListener,
+                       public RTM::ModuleActionListener,
+                       public RTM::NamingActionListener
+{
+public:
+    void preCreate(std::string &args) override { record("preCreate " + args); }
+    void postCreate(RTC::RTObject_impl *rtobj) override
+    {
+        record(std::string("postCreate ") + (rtobj ? rtobj->getInstanceName() : "null"));
+    }
+    void preConfigure(coil::Properties &prop) override
+    {
+        record("preConfigure " + prop.getProperty("type_name"));
+        prop.setProperty("conf.default.step", "7"); // a listener may change the settings
+    }
+    void postConfigure(coil::Properties &prop) override { record("postConfigure " + prop.getProperty("instance_name")); }
+    void preInitialize() override { record("preInitialize"); }
+    void postInitialize() override { record("postInitialize"); }
+    void preLoad(std::string &modname, std::string &) override { record("preLoad " + modname); }
+    void postLoad(std::string &, std::string &funcname) override { record("postLoad " + funcname); }
+    void preUnload(std::string &) override { record("preUnload"); }
+    void postUnload(std::string &) override { record("postUnload"); }
+    void preBind(RTC::RTObject_impl *rtobj, coil::vstring &name) override
+    {
+        record(std::string("preBind ") + rtobj->getInstanceName() + " " + (name.empty() ? "" : name.front()));
+    }
+    void postBind(RTC::RTObject_impl *, coil::vstring &) override { record("postBind"); }
+    void preUnbind(RTC::RTObject_impl *, coil::vstring &) override { record("preUnbind"); }
+    void postUnbind(RTC::RTObject_impl *, coil::vstring &) override { record("postUnbind"); }
+
+    QStringList calls()
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        return m_calls;
+    }
+
+private:
+    void record(const std::string &text)
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_calls << QString::fromStdString(text);
+    }
+    std::mutex m_mutex;
+    QStringList m_calls;
+};
+
 RTC::PortService_ptr portNamed(RTC::RTObject_impl *component, const std::string &name)
 {
     RTC::RTObject_var self = component->getObjRef();
@@ -290,6 +337,7 @@ private slots:
     void dataFlowsWithListeners();
     void configurationReachesBoundVariables();
     void serviceCallReturns();
+    void managerActionListeners();
 
 private:
     RTC::Manager *m_manager = nullptr;
@@ -456,6 +504,40 @@ void TestSdkRtm::serviceCallReturns()
     QVERIFY(CORBA::is_nil(consumer->service()._ptr()));
     m_manager->deleteComponent(provider);
     m_manager->deleteComponent(consumer);
+}
+
+void TestSdkRtm::managerActionListeners()
+{
+    ActionRecorder recorder;
+    m_manager->addRtcLifecycleActionListener(&recorder, false);
+    m_manager->addModuleActionListener(&recorder, false);
+    m_manager->addNamingActionListener(&recorder, false);
+    auto *source = dynamic_cast<SdkSource *>(m_manager->createComponent("SdkSource?instance_name=watched"));
+    QVERIFY(source);
+    QCOMPARE(QString::fromStdString(source->getProperties().getProperty("conf.default.step")), QString("7"));
+    QCOMPARE(m_manager->load(MANAGER_TEST_MODULE, ""), RTC::RTC_OK);
+    m_manager->deleteComponent(source);
+    QTRY_VERIFY_WITH_TIMEOUT(recorder.calls().contains("postUnbind"), 5000);
+    m_manager->removeRtcLifecycleActionListener(&recorder);
+    m_manager->removeModuleActionListener(&recorder);
+    m_manager->removeNamingActionListener(&recorder);
+    const QStringList expected{"preCreate SdkSource?instance_name=watched",
+                               "preConfigure SdkSource",
+                               "postConfigure watched",
+                               "preInitialize",
+                               "postInitialize",
+                               "preBind watched %h.host_cxt/watched.rtc",
+                               "postBind",
+                               "postCreate watched",
+                               "preLoad " MANAGER_TEST_MODULE,
+                               "postLoad ",
+                               "preUnbind",
+                               "postUnbind"};
+    QStringList calls = recorder.calls();
+    calls.replaceInStrings(QRegularExpression("^preBind watched [^/]*"), "preBind watched %h.host_cxt");
+    QCOMPARE(calls, expected);
+    QVERIFY(std::find(m_manager->getModulesFactories().begin(), m_manager->getModulesFactories().end(),
+                      "ModuleCounter") != m_manager->getModulesFactories().end());
 }
 
 QTEST_GUILESS_MAIN(TestSdkRtm)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <rtm/ConfigAdmin.h>
 
+#include "listenerset.h"
 #include "sdkinternal.h"
 
 #include <configadmin.h>
@@ -11,42 +12,6 @@
 #include <vector>
 
 namespace RTC {
-
-namespace {
-
-template <typename Listener>
-using ListenerList = std::vector<std::pair<Listener *, bool>>;
-
-template <typename Listener>
-void addTo(ListenerList<Listener> &list, Listener *listener, bool autoclean)
-{
-    if (listener != nullptr)
-        list.emplace_back(listener, autoclean);
-}
-
-template <typename Listener>
-void removeFrom(ListenerList<Listener> &list, Listener *listener)
-{
-    for (auto it = list.begin(); it != list.end(); ++it) {
-        if (it->first == listener) {
-            if (it->second)
-                delete it->first;
-            list.erase(it);
-            return;
-        }
-    }
-}
-
-template <typename Listener>
-void deleteOwned(ListenerList<Listener> &list)
-{
-    for (auto &entry : list) {
-        if (entry.second)
-            delete entry.first;
-    }
-}
-
-} // namespace
 
 const char *ConfigurationParamListener::toString(ConfigurationParamListenerType type)
 {
@@ -76,14 +41,18 @@ struct ConfigAdmin::Private
     }
 
     void onEvent(Runtime::ConfigAdmin::Event event, const std::string &setId);
+    void notifyName(ConfigurationSetNameListenerType type, const std::string &setId)
+    {
+        nameListeners[size_t(type)].forEach([&setId](ConfigurationSetNameListener &l) { l(setId.c_str()); });
+    }
     void onParameter(const std::string &name);
     coil::Properties &cachedSet(const std::string &id);
 
     Runtime::ConfigAdmin &admin;
     std::recursive_mutex mutex;
-    ListenerList<ConfigurationParamListener> paramListeners;
-    ListenerList<ConfigurationSetListener> setListeners[size_t(ConfigurationSetListenerType::CONFIG_SET_LISTENER_NUM)];
-    ListenerList<ConfigurationSetNameListener>
+    Sdk::ListenerSet<ConfigurationParamListener> paramListeners;
+    Sdk::ListenerSet<ConfigurationSetListener> setListeners[size_t(ConfigurationSetListenerType::CONFIG_SET_LISTENER_NUM)];
+    Sdk::ListenerSet<ConfigurationSetNameListener>
         nameListeners[size_t(ConfigurationSetNameListenerType::CONFIG_SET_NAME_LISTENER_NUM)];
     /// The text each bound variable was last set from: listeners hear of real changes only.
     std::map<std::string, std::string> applied;
@@ -112,23 +81,19 @@ void ConfigAdmin::Private::onEvent(Runtime::ConfigAdmin::Event event, const std:
         const coil::Properties &set = cachedSet(setId);
         const auto type = event == Event::SetAdded ? ConfigurationSetListenerType::ON_ADD_CONFIG_SET
                                                    : ConfigurationSetListenerType::ON_SET_CONFIG_SET;
-        for (auto &entry : setListeners[size_t(type)])
-            (*entry.first)(set);
+        setListeners[size_t(type)].forEach([&set](ConfigurationSetListener &listener) { listener(set); });
         return;
     }
     case Event::SetRemoved:
-        for (auto &entry : nameListeners[size_t(ConfigurationSetNameListenerType::ON_REMOVE_CONFIG_SET)])
-            (*entry.first)(setId.c_str());
+        notifyName(ConfigurationSetNameListenerType::ON_REMOVE_CONFIG_SET, setId);
         return;
     case Event::SetActivated:
         changed = true;
-        for (auto &entry : nameListeners[size_t(ConfigurationSetNameListenerType::ON_ACTIVATE_CONFIG_SET)])
-            (*entry.first)(setId.c_str());
+        notifyName(ConfigurationSetNameListenerType::ON_ACTIVATE_CONFIG_SET, setId);
         return;
     case Event::Updated:
         changed = false;
-        for (auto &entry : nameListeners[size_t(ConfigurationSetNameListenerType::ON_UPDATE_CONFIG_SET)])
-            (*entry.first)(setId.c_str());
+        notifyName(ConfigurationSetNameListenerType::ON_UPDATE_CONFIG_SET, setId);
         return;
     }
 }
@@ -143,11 +108,6 @@ ConfigAdmin::ConfigAdmin(Runtime::ConfigAdmin &admin)
 ConfigAdmin::~ConfigAdmin()
 {
     d->admin.setObserver({});
-    deleteOwned(d->paramListeners);
-    for (auto &list : d->setListeners)
-        deleteOwned(list);
-    for (auto &list : d->nameListeners)
-        deleteOwned(list);
     delete d;
 }
 
@@ -171,8 +131,8 @@ void ConfigAdmin::bindSetter(const char *name, const char *defaultValue, std::fu
         std::lock_guard lock(self->mutex);
         self->applied[parameter] = text;
         const std::string active = self->admin.activeSetId();
-        for (auto &entry : self->paramListeners)
-            (*entry.first)(active.c_str(), parameter.c_str());
+        self->paramListeners.forEach(
+            [&](ConfigurationParamListener &listener) { listener(active.c_str(), parameter.c_str()); });
         return true;
     });
 }
@@ -267,7 +227,7 @@ void ConfigAdmin::addConfigurationParamListener(ConfigurationParamListenerType t
 {
     std::lock_guard lock(d->mutex);
     if (type == ConfigurationParamListenerType::ON_UPDATE_CONFIG_PARAM)
-        addTo(d->paramListeners, listener, autoclean);
+        d->paramListeners.add(listener, autoclean);
 }
 
 void ConfigAdmin::removeConfigurationParamListener(ConfigurationParamListenerType type,
@@ -275,7 +235,7 @@ void ConfigAdmin::removeConfigurationParamListener(ConfigurationParamListenerTyp
 {
     std::lock_guard lock(d->mutex);
     if (type == ConfigurationParamListenerType::ON_UPDATE_CONFIG_PARAM)
-        removeFrom(d->paramListeners, listener);
+        d->paramListeners.remove(listener);
 }
 
 void ConfigAdmin::addConfigurationSetListener(ConfigurationSetListenerType type, ConfigurationSetListener *listener,
@@ -283,7 +243,7 @@ void ConfigAdmin::addConfigurationSetListener(ConfigurationSetListenerType type,
 {
     std::lock_guard lock(d->mutex);
     if (type < ConfigurationSetListenerType::CONFIG_SET_LISTENER_NUM)
-        addTo(d->setListeners[size_t(type)], listener, autoclean);
+        d->setListeners[size_t(type)].add(listener, autoclean);
 }
 
 void ConfigAdmin::removeConfigurationSetListener(ConfigurationSetListenerType type,
@@ -291,7 +251,7 @@ void ConfigAdmin::removeConfigurationSetListener(ConfigurationSetListenerType ty
 {
     std::lock_guard lock(d->mutex);
     if (type < ConfigurationSetListenerType::CONFIG_SET_LISTENER_NUM)
-        removeFrom(d->setListeners[size_t(type)], listener);
+        d->setListeners[size_t(type)].remove(listener);
 }
 
 void ConfigAdmin::addConfigurationSetNameListener(ConfigurationSetNameListenerType type,
@@ -299,7 +259,7 @@ void ConfigAdmin::addConfigurationSetNameListener(ConfigurationSetNameListenerTy
 {
     std::lock_guard lock(d->mutex);
     if (type < ConfigurationSetNameListenerType::CONFIG_SET_NAME_LISTENER_NUM)
-        addTo(d->nameListeners[size_t(type)], listener, autoclean);
+        d->nameListeners[size_t(type)].add(listener, autoclean);
 }
 
 void ConfigAdmin::removeConfigurationSetNameListener(ConfigurationSetNameListenerType type,
@@ -307,7 +267,7 @@ void ConfigAdmin::removeConfigurationSetNameListener(ConfigurationSetNameListene
 {
     std::lock_guard lock(d->mutex);
     if (type < ConfigurationSetNameListenerType::CONFIG_SET_NAME_LISTENER_NUM)
-        removeFrom(d->nameListeners[size_t(type)], listener);
+        d->nameListeners[size_t(type)].remove(listener);
 }
 
 } // namespace RTC

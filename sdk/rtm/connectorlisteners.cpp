@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <rtm/ConnectorListener.h>
 
+#include "listenerset.h"
+
 #include <map>
 #include <mutex>
 #include <utility>
@@ -16,34 +18,6 @@ const char *const dataListenerNames[] = {"ON_BUFFER_WRITE", "ON_BUFFER_FULL", "O
                                          "ON_RECEIVER_ERROR"};
 const char *const listenerNames[] = {"ON_BUFFER_EMPTY", "ON_BUFFER_READ_TIMEOUT", "ON_SENDER_EMPTY",
                                      "ON_SENDER_TIMEOUT", "ON_SENDER_ERROR", "ON_CONNECT", "ON_DISCONNECT"};
-
-/// Listeners of one event: the object and whether the holder deletes it.
-template <typename Listener>
-using ListenerList = std::vector<std::pair<Listener *, bool>>;
-
-template <typename Listener>
-bool removeFrom(ListenerList<Listener> &list, Listener *listener)
-{
-    for (auto it = list.begin(); it != list.end(); ++it) {
-        if (it->first == listener) {
-            if (it->second)
-                delete it->first;
-            list.erase(it);
-            return true;
-        }
-    }
-    return false;
-}
-
-template <typename Listener>
-void deleteOwned(ListenerList<Listener> &list)
-{
-    for (auto &entry : list) {
-        if (entry.second)
-            delete entry.first;
-    }
-    list.clear();
-}
 
 } // namespace
 
@@ -66,8 +40,8 @@ ConnectorListener::~ConnectorListener() = default;
 struct ConnectorListeners::Private
 {
     mutable std::mutex mutex;
-    ListenerList<ConnectorDataListener> data[size_t(ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)];
-    ListenerList<ConnectorListener> events[size_t(ConnectorListenerType::CONNECTOR_LISTENER_NUM)];
+    Sdk::ListenerSet<ConnectorDataListener> data[size_t(ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)];
+    Sdk::ListenerSet<ConnectorListener> events[size_t(ConnectorListenerType::CONNECTOR_LISTENER_NUM)];
     std::map<std::string, ConnectorInfo> connectors;
 };
 
@@ -78,10 +52,6 @@ ConnectorListeners::ConnectorListeners()
 
 ConnectorListeners::~ConnectorListeners()
 {
-    for (auto &list : d->data)
-        deleteOwned(list);
-    for (auto &list : d->events)
-        deleteOwned(list);
     delete d;
 }
 
@@ -90,7 +60,7 @@ void ConnectorListeners::addListener(ConnectorDataListenerType type, ConnectorDa
     if (listener == nullptr || type >= ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)
         return;
     std::lock_guard lock(d->mutex);
-    d->data[size_t(type)].emplace_back(listener, autoclean);
+    d->data[size_t(type)].add(listener, autoclean);
 }
 
 bool ConnectorListeners::removeListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
@@ -98,7 +68,7 @@ bool ConnectorListeners::removeListener(ConnectorDataListenerType type, Connecto
     if (type >= ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)
         return false;
     std::lock_guard lock(d->mutex);
-    return removeFrom(d->data[size_t(type)], listener);
+    return d->data[size_t(type)].remove(listener);
 }
 
 void ConnectorListeners::addListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean)
@@ -106,7 +76,7 @@ void ConnectorListeners::addListener(ConnectorListenerType type, ConnectorListen
     if (listener == nullptr || type >= ConnectorListenerType::CONNECTOR_LISTENER_NUM)
         return;
     std::lock_guard lock(d->mutex);
-    d->events[size_t(type)].emplace_back(listener, autoclean);
+    d->events[size_t(type)].add(listener, autoclean);
 }
 
 bool ConnectorListeners::removeListener(ConnectorListenerType type, ConnectorListener *listener)
@@ -114,7 +84,7 @@ bool ConnectorListeners::removeListener(ConnectorListenerType type, ConnectorLis
     if (type >= ConnectorListenerType::CONNECTOR_LISTENER_NUM)
         return false;
     std::lock_guard lock(d->mutex);
-    return removeFrom(d->events[size_t(type)], listener);
+    return d->events[size_t(type)].remove(listener);
 }
 
 bool ConnectorListeners::hasListeners(ConnectorDataListenerType type) const
@@ -140,8 +110,7 @@ void ConnectorListeners::notifyData(ConnectorDataListenerType type, const std::s
                               : d->connectors[connectorId];
     info.properties.setProperty("serializer.cdr.endian", littleEndian ? "little" : "big");
     ByteData bytes(data, length);
-    for (auto &entry : listeners)
-        (*entry.first)(info, bytes, "cdr");
+    listeners.forEach([&](ConnectorDataListener &listener) { listener(info, bytes, "cdr"); });
 }
 
 void ConnectorListeners::notify(ConnectorListenerType type, const std::string &connectorId)
@@ -151,8 +120,7 @@ void ConnectorListeners::notify(ConnectorListenerType type, const std::string &c
     std::lock_guard lock(d->mutex);
     auto it = d->connectors.find(connectorId);
     ConnectorInfo info = it == d->connectors.end() ? ConnectorInfo() : it->second;
-    for (auto &entry : d->events[size_t(type)])
-        (*entry.first)(info);
+    d->events[size_t(type)].forEach([&info](ConnectorListener &listener) { listener(info); });
 }
 
 void ConnectorListeners::connected(const ConnectorProfile &profile)

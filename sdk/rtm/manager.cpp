@@ -4,6 +4,7 @@
 #include <rtm/RTObject.h>
 
 #include "loggersink.h"
+#include "manageractions.h"
 #include "sdkinternal.h"
 
 #include <componentfactory.h>
@@ -68,6 +69,7 @@ struct Manager::Private
     coil::Properties config;
     ModuleInitProc initProc = nullptr;
     std::map<std::string, std::unique_ptr<Logger>> loggers;
+    Sdk::ManagerActions actions;
     std::mutex mutex;
     std::condition_variable stopped;
     bool running = false;
@@ -94,6 +96,7 @@ Manager *Manager::attach(Runtime::Manager *runtime)
     manager->d->config = Sdk::toCoil(runtime->configuration());
     Sdk::LoggerSink::instance().configure(runtime->configuration());
     runtime->setModuleInitCall([manager](void *function) { reinterpret_cast<ModuleInitProc>(function)(manager); });
+    manager->d->actions.install(*runtime);
     return manager;
 }
 
@@ -146,8 +149,10 @@ void Manager::terminate()
 
 void Manager::shutdown()
 {
-    if (d->runtime != nullptr)
-        d->runtime->shutdown();
+    if (d->runtime == nullptr)
+        return;
+    d->actions.each(d->actions.manager, [](RTM::ManagerActionListener &l) { l.preShutdown(); });
+    d->runtime->shutdown();
 }
 
 void Manager::join()
@@ -187,6 +192,7 @@ void Manager::runManager(bool no_block)
     }
     auto serve = [this] {
         d->runtime->run();
+        d->actions.each(d->actions.manager, [](RTM::ManagerActionListener &l) { l.postShutdown(); });
         std::lock_guard lock(d->mutex);
         d->finished = true;
         d->stopped.notify_all();
@@ -199,10 +205,14 @@ void Manager::runManager(bool no_block)
 
 ReturnCode_t Manager::load(const std::string &fname, const std::string &initfunc)
 {
+    std::string module = fname;
+    std::string function = initfunc;
+    d->actions.each(d->actions.module, [&](RTM::ModuleActionListener &l) { l.preLoad(module, function); });
     std::string error;
-    if (d->runtime->loadModule(fname, initfunc, &error))
-        return RTC::RTC_OK;
-    return error.find("no module file") != std::string::npos ? RTC::BAD_PARAMETER : RTC::RTC_ERROR;
+    if (!d->runtime->loadModule(module, function, &error))
+        return error.find("no module file") != std::string::npos ? RTC::BAD_PARAMETER : RTC::RTC_ERROR;
+    d->actions.each(d->actions.module, [&](RTM::ModuleActionListener &l) { l.postLoad(module, function); });
+    return RTC::RTC_OK;
 }
 
 ReturnCode_t Manager::load(coil::Properties &prop, const std::string &initfunc)
@@ -213,8 +223,12 @@ ReturnCode_t Manager::load(coil::Properties &prop, const std::string &initfunc)
 
 void Manager::unload(const char *fname)
 {
-    if (fname != nullptr)
-        d->runtime->unloadModule(fname, nullptr);
+    if (fname == nullptr)
+        return;
+    std::string module = fname;
+    d->actions.each(d->actions.module, [&](RTM::ModuleActionListener &l) { l.preUnload(module); });
+    if (d->runtime->unloadModule(module, nullptr))
+        d->actions.each(d->actions.module, [&](RTM::ModuleActionListener &l) { l.postUnload(module); });
 }
 
 void Manager::unloadAll()
@@ -331,6 +345,66 @@ PortableServer::POAManager_ptr Manager::getPOAManager()
 {
     PortableServer::POA_var poa = getPOA();
     return poa->the_POAManager();
+}
+
+void Manager::addManagerActionListener(RTM::ManagerActionListener *listener, bool autoclean)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.manager.add(listener, autoclean);
+}
+
+void Manager::removeManagerActionListener(RTM::ManagerActionListener *listener)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.manager.remove(listener);
+}
+
+void Manager::addModuleActionListener(RTM::ModuleActionListener *listener, bool autoclean)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.module.add(listener, autoclean);
+}
+
+void Manager::removeModuleActionListener(RTM::ModuleActionListener *listener)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.module.remove(listener);
+}
+
+void Manager::addRtcLifecycleActionListener(RTM::RtcLifecycleActionListener *listener, bool autoclean)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.lifecycle.add(listener, autoclean);
+}
+
+void Manager::removeRtcLifecycleActionListener(RTM::RtcLifecycleActionListener *listener)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.lifecycle.remove(listener);
+}
+
+void Manager::addNamingActionListener(RTM::NamingActionListener *listener, bool autoclean)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.naming.add(listener, autoclean);
+}
+
+void Manager::removeNamingActionListener(RTM::NamingActionListener *listener)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.naming.remove(listener);
+}
+
+void Manager::addLocalServiceActionListener(RTM::LocalServiceActionListener *listener, bool autoclean)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.localService.add(listener, autoclean);
+}
+
+void Manager::removeLocalServiceActionListener(RTM::LocalServiceActionListener *listener)
+{
+    std::lock_guard lock(d->actions.mutex);
+    d->actions.localService.remove(listener);
 }
 
 Logger &Manager::getLogbuf(const std::string &name)

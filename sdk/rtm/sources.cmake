@@ -15,6 +15,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
@@ -33,6 +34,8 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ports.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/rtobject.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manager.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS

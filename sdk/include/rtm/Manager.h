@@ -4,6 +4,7 @@
 #define RTM_MANAGER_H
 
 #include <rtm/Factory.h>
+#include <rtm/ManagerActionListener.h>
 #include <rtm/RTC.h>
 #include <rtm/SystemLogger.h>
 
@@ -89,6 +90,18 @@ public:
     PortableServer::POA_ptr thePOA() { return getPOA(); }
     PortableServer::POAManager_ptr getPOAManager();
     PortableServer::POAManager_ptr thePOAManager() { return getPOAManager(); }
+
+    /// Listeners of the manager's actions; with @p autoclean the manager deletes them when removed.
+    void addManagerActionListener(RTM::ManagerActionListener *listener, bool autoclean = true);
+    void removeManagerActionListener(RTM::ManagerActionListener *listener);
+    void addModuleActionListener(RTM::ModuleActionListener *listener, bool autoclean = true);
+    void removeModuleActionListener(RTM::ModuleActionListener *listener);
+    void addRtcLifecycleActionListener(RTM::RtcLifecycleActionListener *listener, bool autoclean = true);
+    void removeRtcLifecycleActionListener(RTM::RtcLifecycleActionListener *listener);
+    void addNamingActionListener(RTM::NamingActionListener *listener, bool autoclean = true);
+    void removeNamingActionListener(RTM::NamingActionListener *listener);
+    void addLocalServiceActionListener(RTM::LocalServiceActionListener *listener, bool autoclean = true);
+    void removeLocalServiceActionListener(RTM::LocalServiceActionListener *listener);
 
     /// A logger named @p name with the manager's logging settings.
     Logger &getLogbuf(const std::string &name = "manager");

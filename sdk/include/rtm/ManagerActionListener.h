@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+// Listeners of what the manager does: shutdown, module loading, component creation, naming.
+// Component programs (<Name>Comp.cpp) of some OpenRTP generations register them.
+#ifndef RTM_MANAGERACTIONLISTENER_H
+#define RTM_MANAGERACTIONLISTENER_H
+
+#include <coil/Properties.h>
+#include <coil/stringutil.h>
+
+#include <string>
+
+namespace RTC
+{
+class RTObject_impl;
+}
+
+namespace RTM
+{
+class LocalServiceBase;
+
+/// Called around the manager's shutdown and re-initialisation.
+class ManagerActionListener
+{
+public:
+    virtual ~ManagerActionListener();
+    virtual void preShutdown() = 0;
+    virtual void postShutdown() = 0;
+    virtual void preReinit() = 0;
+    virtual void postReinit() = 0;
+};
+
+/// Called around loading and unloading a module.
+class ModuleActionListener
+{
+public:
+    virtual ~ModuleActionListener();
+    virtual void preLoad(std::string &modname, std::string &funcname) = 0;
+    virtual void postLoad(std::string &modname, std::string &funcname) = 0;
+    virtual void preUnload(std::string &modname) = 0;
+    virtual void postUnload(std::string &modname) = 0;
+};
+
+/// Called at the steps of a component's creation in this process.
+class RtcLifecycleActionListener
+{
+public:
+    virtual ~RtcLifecycleActionListener();
+    /// With the creation request (`Type?key=value&…`), which the listener may change.
+    virtual void preCreate(std::string &args) = 0;
+    virtual void postCreate(RTC::RTObject_impl *rtobj) = 0;
+    /// With the component's properties before and after rtc.conf's and the request's settings apply.
+    virtual void preConfigure(coil::Properties &prop) = 0;
+    virtual void postConfigure(coil::Properties &prop) = 0;
+    virtual void preInitialize() = 0;
+    virtual void postInitialize() = 0;
+};
+
+/// Called around binding and unbinding a component's names in the name servers.
+class NamingActionListener
+{
+public:
+    virtual ~NamingActionListener();
+    virtual void preBind(RTC::RTObject_impl *rtobj, coil::vstring &name) = 0;
+    virtual void postBind(RTC::RTObject_impl *rtobj, coil::vstring &name) = 0;
+    virtual void preUnbind(RTC::RTObject_impl *rtobj, coil::vstring &name) = 0;
+    virtual void postUnbind(RTC::RTObject_impl *rtobj, coil::vstring &name) = 0;
+};
+
+/**
+ * Called around local services (OpenRTM-aist's plug-in services). This SDK has none, so these
+ * listeners are accepted and kept but never called.
+ */
+class LocalServiceActionListener
+{
+public:
+    virtual ~LocalServiceActionListener();
+    virtual void preServiceRegister(std::string service_name) = 0;
+    virtual void postServiceRegister(std::string service_name, LocalServiceBase *service) = 0;
+    virtual void preServiceInit(coil::Properties &prop, LocalServiceBase *service) = 0;
+    virtual void postServiceInit(coil::Properties &prop, LocalServiceBase *service) = 0;
+    virtual void preServiceReinit(coil::Properties &prop, LocalServiceBase *service) = 0;
+    virtual void postServiceReinit(coil::Properties &prop, LocalServiceBase *service) = 0;
+    virtual void postServiceFinalize(std::string service_name, LocalServiceBase *service) = 0;
+    virtual void preServiceFinalize(std::string service_name, LocalServiceBase *service) = 0;
+};
+} // namespace RTM
+
+#endif // RTM_MANAGERACTIONLISTENER_H
