@@ -15,6 +15,8 @@ private slots:
     void initTestCase();
     void typeFromLoadPathInMasterAndSlaves();
     void crashTakesDownOnlyItsSlave();
+    void restoreCreatesTypeFromLoadPath();
+    void rtcConfPreloadsAndPrecreates();
 
 private:
     RtctlResult rtctl(const QStringList &arguments);
@@ -64,6 +66,60 @@ void TestSdkSlaves::crashTakesDownOnlyItsSlave()
     QVERIFY2(list.code == 0, qPrintable(list.out + list.err));
     QVERIFY(list.out.contains("Survivor"));
     QVERIFY(!list.out.contains("Victim"));
+}
+
+void TestSdkSlaves::restoreCreatesTypeFromLoadPath()
+{
+    // A saved system whose component type only exists as a module in the load path.
+    QTemporaryDir dir;
+    const QString saved = dir.filePath("probe.rtsys");
+    RtctlResult r = rtctl({"cryo", "-n", "ProbeSystem", "-o", saved, host() + "/Local.rtc"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    r = rtctl({"mgr", host() + "/manager.mgr", "delete", "Local"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", "Local.rtc"}).code != 0, 10000);
+
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QVERIFY2(m_live.startManager(RTMANAGER_PATH, port,
+                                 {"corba.nameservers=" + m_live.namingServer(),
+                                  "naming.formats=restorehost.host_cxt/%n.rtc",
+                                  "manager.naming_formats=restorehost.host_cxt/%n.mgr",
+                                  "manager.modules.load_path=" SDK_TEST_MODULE_DIR},
+                                 &error),
+             qPrintable(error));
+    r = runRtctl({"resurrect", "--create", "-m", QStringLiteral("corbaloc::127.0.0.1:%1").arg(port), "-s",
+                  m_live.namingServer(), saved});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    const QString restored = QStringLiteral("/%1/restorehost.host_cxt/Local.rtc").arg(m_live.namingServer());
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"cat", restored}).code == 0, 10000);
+}
+
+void TestSdkSlaves::rtcConfPreloadsAndPrecreates()
+{
+    // OpenRTM-aist's rtc.conf keys for modules, read from a file given with -f.
+    QTemporaryDir dir;
+    QFile conf(dir.filePath("rtc.conf"));
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write(QStringLiteral("corba.nameservers: %1\n"
+                              "naming.formats: confhost.host_cxt/%n.rtc\n"
+                              "manager.naming_formats: confhost.host_cxt/%n.mgr\n"
+                              "manager.modules.load_path: " SDK_TEST_MODULE_DIR "\n"
+                              "manager.modules.preload: CrashProbe.so\n"
+                              "manager.components.precreate: CrashProbe?instance_name=Early\n")
+                   .arg(m_live.namingServer())
+                   .toUtf8());
+    conf.close();
+    QString error;
+    const QString endpoint = QStringLiteral("corba.endpoints:127.0.0.1:%1").arg(LiveTest::freePort());
+    QVERIFY2(m_live.startProcess(RTMANAGER_PATH, {"-f", conf.fileName(), "-d", "-o", endpoint}, "rtmanager ready",
+                                 &error),
+             qPrintable(error));
+    const QString early = QStringLiteral("/%1/confhost.host_cxt/Early.rtc").arg(m_live.namingServer());
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"cat", early}).code == 0, 10000);
+    const RtctlResult list = runRtctl({"mgr", QStringLiteral("/%1/confhost.host_cxt/manager.mgr").arg(m_live.namingServer()),
+                                       "list"});
+    QVERIFY2(list.out.contains("CrashProbe.so"), qPrintable(list.out + list.err));
 }
 
 QTEST_GUILESS_MAIN(TestSdkSlaves)
