@@ -93,20 +93,24 @@ bool Manager::initOrb(std::string *error)
 
 bool Manager::start(std::string *error)
 {
+    // OpenRTM's `-a` (manager.corba_servant: NO): components only, no RTM::Manager object.
+    const bool serving = m_config.isYes("manager.corba_servant", true);
     try {
         if (!initOrb(error))
             return false;
-        m_servant = new ManagerServant(*this);
-        CORBA::Object_var object = m_orb->resolve_initial_references("omniINSPOA");
-        PortableServer::POA_var ins = PortableServer::POA::_narrow(object);
-        PortableServer::ObjectId_var id = PortableServer::string_to_ObjectId("manager");
-        ins->activate_object_with_id(id, m_servant);
-        CORBA::Object_var ref = ins->id_to_reference(id);
-        m_self = RTM::Manager::_narrow(ref);
         PortableServer::POAManager_var pm = m_poa->the_POAManager();
         pm->activate();
-        PortableServer::POAManager_var insManager = ins->the_POAManager();
-        insManager->activate();
+        if (serving) {
+            m_servant = new ManagerServant(*this);
+            CORBA::Object_var object = m_orb->resolve_initial_references("omniINSPOA");
+            PortableServer::POA_var ins = PortableServer::POA::_narrow(object);
+            PortableServer::ObjectId_var id = PortableServer::string_to_ObjectId("manager");
+            ins->activate_object_with_id(id, m_servant);
+            CORBA::Object_var ref = ins->id_to_reference(id);
+            m_self = RTM::Manager::_narrow(ref);
+            PortableServer::POAManager_var insManager = ins->the_POAManager();
+            insManager->activate();
+        }
     } catch (const CORBA::Exception &e) {
         *error = "cannot serve the manager on " + m_address + ": " + describeException(e);
         return false;
@@ -118,6 +122,8 @@ bool Manager::start(std::string *error)
     values.set("instance_name", m_instanceName);
     values.set("manager_name", m_config.value("manager.name", "manager"));
     std::vector<std::string> errors;
+    if (!serving)
+        return true;
     for (const std::string &path :
          NamingRegistrar::expand(m_config.value("manager.naming_formats", "%h.host_cxt/%n.mgr"), values)) {
         if (m_naming->bind(path, m_self, &errors))

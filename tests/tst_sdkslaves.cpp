@@ -17,6 +17,7 @@ private slots:
     void crashTakesDownOnlyItsSlave();
     void restoreCreatesTypeFromLoadPath();
     void rtcConfPreloadsAndPrecreates();
+    void withoutManagerServant();
 
 private:
     RtctlResult rtctl(const QStringList &arguments);
@@ -120,6 +121,23 @@ void TestSdkSlaves::rtcConfPreloadsAndPrecreates()
     const RtctlResult list = runRtctl({"mgr", QStringLiteral("/%1/confhost.host_cxt/manager.mgr").arg(m_live.namingServer()),
                                        "list"});
     QVERIFY2(list.out.contains("CrashProbe.so"), qPrintable(list.out + list.err));
+}
+
+void TestSdkSlaves::withoutManagerServant()
+{
+    // `-a`: the process hosts and registers its components but serves no RTM::Manager.
+    QString error;
+    const QString endpoint = QStringLiteral("corba.endpoints:127.0.0.1:%1").arg(LiveTest::freePort());
+    QVERIFY2(m_live.startProcess(RTMANAGER_PATH,
+                                 {"-a", "-o", endpoint, "-o", "corba.nameservers:" + m_live.namingServer(), "-o",
+                                  "naming.formats:bare.host_cxt/%n.rtc", "-o",
+                                  "manager.naming_formats:bare.host_cxt/%n.mgr", "-o", "corba.master_manager:", "-o",
+                                  "manager.components.precreate:ConsoleIn"},
+                                 "rtmanager ready", &error),
+             qPrintable(error));
+    const QString context = QStringLiteral("/%1/bare.host_cxt").arg(m_live.namingServer());
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"ls", context}).out.contains("ConsoleIn0.rtc"), 10000);
+    QVERIFY(!runRtctl({"ls", context}).out.contains("manager.mgr"));
 }
 
 QTEST_GUILESS_MAIN(TestSdkSlaves)
