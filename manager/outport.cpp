@@ -20,7 +20,10 @@ void OutPortBase::writeMarshalled(const std::function<CdrBytes(bool littleEndian
     std::vector<std::shared_ptr<OutPortConnector>> connectors;
     {
         std::lock_guard lock(m_mutex);
-        connectors = m_connectors;
+        for (const auto &connector : m_connectors) {
+            if (!m_bypassed.count(connector->id()))
+                connectors.push_back(connector);
+        }
     }
     CdrBytes little;
     CdrBytes big;
@@ -38,6 +41,15 @@ void OutPortBase::writeMarshalled(const std::function<CdrBytes(bool littleEndian
             connector->write(big);
         }
     }
+}
+
+void OutPortBase::setBypassed(const std::string &connectorId, bool bypassed)
+{
+    std::lock_guard lock(m_mutex);
+    if (bypassed)
+        m_bypassed.insert(connectorId);
+    else
+        m_bypassed.erase(connectorId);
 }
 
 size_t OutPortBase::connectorCount()
@@ -105,6 +117,7 @@ void OutPortBase::unsubscribeInterfaces(const RTC::ConnectorProfile &profile)
             return;
         removed = *it;
         m_connectors.erase(it);
+        m_bypassed.erase(id);
     }
     // The connector's threads are joined here, outside the lock.
     removed.reset();

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <vector>
 
 namespace Runtime {
@@ -20,6 +21,11 @@ public:
 
     /// Sends one sample; @p marshalIn produces its bytes in the requested byte order (called at most twice).
     void writeMarshalled(const std::function<CdrBytes(bool littleEndian)> &marshalIn);
+    /**
+     * Leaves connection @p connectorId out of writeMarshalled() (@p bypassed true) or takes it back:
+     * the SDK hands such samples to an InPort of the same process itself, without marshalling.
+     */
+    void setBypassed(const std::string &connectorId, bool bypassed);
     size_t connectorCount();
 
 protected:
@@ -31,6 +37,7 @@ private:
     PortableServer::POA_var m_poa;
     std::mutex m_mutex;
     std::vector<std::shared_ptr<OutPortConnector>> m_connectors;
+    std::set<std::string> m_bypassed;
 };
 
 /// Typed OutPort (`OutPort<RTC::TimedLong>`), as OpenRTM's OutPort<T>.

@@ -43,6 +43,9 @@ struct ConnectorListeners::Private
     Sdk::ListenerSet<ConnectorDataListener> data[size_t(ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)];
     Sdk::ListenerSet<ConnectorListener> events[size_t(ConnectorListenerType::CONNECTOR_LISTENER_NUM)];
     std::map<std::string, ConnectorInfo> connectors;
+
+    /// The connection @p connectorId, else any (listeners get some information even so).
+    ConnectorInfo &infoOf(const std::string &connectorId);
 };
 
 ConnectorListeners::ConnectorListeners()
@@ -95,6 +98,13 @@ bool ConnectorListeners::hasListeners(ConnectorDataListenerType type) const
     return !d->data[size_t(type)].empty();
 }
 
+ConnectorInfo &ConnectorListeners::Private::infoOf(const std::string &connectorId)
+{
+    if (!connectorId.empty() && connectors.count(connectorId))
+        return connectors[connectorId];
+    return connectors.empty() ? connectors[std::string()] : connectors.begin()->second;
+}
+
 void ConnectorListeners::notifyData(ConnectorDataListenerType type, const std::string &connectorId,
                                     const unsigned char *data, unsigned long length, bool littleEndian)
 {
@@ -105,12 +115,38 @@ void ConnectorListeners::notifyData(ConnectorDataListenerType type, const std::s
     auto &listeners = d->data[size_t(type)];
     if (listeners.empty())
         return;
-    ConnectorInfo &info = connectorId.empty() || !d->connectors.count(connectorId)
-                              ? (d->connectors.empty() ? d->connectors[std::string()] : d->connectors.begin()->second)
-                              : d->connectors[connectorId];
+    ConnectorInfo &info = d->infoOf(connectorId);
     info.properties.setProperty("serializer.cdr.endian", littleEndian ? "little" : "big");
     ByteData bytes(data, length);
     listeners.forEach([&](ConnectorDataListener &listener) { listener(info, bytes, "cdr"); });
+}
+
+void ConnectorListeners::notifyValue(ConnectorDataListenerType type, const std::string &connectorId, void *value,
+                                     const std::type_info &valueType,
+                                     const std::function<std::vector<unsigned char>()> &marshal)
+{
+    if (type >= ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)
+        return;
+    std::lock_guard lock(d->mutex);
+    auto &listeners = d->data[size_t(type)];
+    if (listeners.empty())
+        return;
+    ConnectorInfo &info = d->infoOf(connectorId);
+    ByteData bytes;
+    bool marshalled = false;
+    listeners.forEach([&](ConnectorDataListener &listener) {
+        if (listener.acceptsValue(valueType)) {
+            listener.onValue(info, value);
+            return;
+        }
+        if (!marshalled) {
+            const std::vector<unsigned char> cdr = marshal();
+            bytes.writeData(cdr.data(), static_cast<unsigned long>(cdr.size()));
+            info.properties.setProperty("serializer.cdr.endian", "little");
+            marshalled = true;
+        }
+        listener(info, bytes, "cdr");
+    });
 }
 
 void ConnectorListeners::notify(ConnectorListenerType type, const std::string &connectorId)

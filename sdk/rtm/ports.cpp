@@ -7,6 +7,12 @@
 
 #include "sdkinternal.h"
 
+#include <corbautil.h>
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+
 namespace RTC {
 
 namespace {
@@ -18,6 +24,65 @@ coil::vstring connectorField(const ConnectorInfoList &infos, std::string Connect
         result.push_back(info.*field);
     return result;
 }
+
+/**
+ * Push/flush connections between an OutPort and an InPort of the SDK in this process, paired
+ * by connector id as both ends learn of the connection: such samples skip CORBA and CDR.
+ */
+class DirectLinks
+{
+public:
+    static DirectLinks &instance()
+    {
+        static DirectLinks links;
+        return links;
+    }
+
+    void offer(const ConnectorProfile &profile, InPortBase *in, OutPortBase *out)
+    {
+        if (!eligible(profile))
+            return;
+        const std::string id(profile.connector_id);
+        std::lock_guard<std::mutex> lock(m_mutex);
+        Link &link = m_links[id];
+        link.in = in ? in : link.in;
+        link.out = out ? out : link.out;
+        if (link.in && link.out && !link.paired && link.in->dataType() == link.out->dataType()) {
+            link.out->addDirectPeer(id, link.in);
+            link.paired = true;
+        }
+    }
+
+    void withdraw(const std::string &connectorId)
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        auto it = m_links.find(connectorId);
+        if (it == m_links.end())
+            return;
+        if (it->second.paired)
+            it->second.out->removeDirectPeer(connectorId);
+        m_links.erase(it);
+    }
+
+private:
+    struct Link
+    {
+        InPortBase *in = nullptr;
+        OutPortBase *out = nullptr;
+        bool paired = false;
+    };
+
+    static bool eligible(const ConnectorProfile &profile)
+    {
+        const Runtime::Properties p = Runtime::nvToProperties(profile.properties);
+        return p.value("dataport.interface_type", "corba_cdr") == "corba_cdr"
+               && p.value("dataport.dataflow_type", "push") == "push"
+               && p.value("dataport.subscription_type", "flush") == "flush";
+    }
+
+    std::mutex m_mutex;
+    std::map<std::string, Link> m_links;
+};
 
 } // namespace
 
@@ -49,6 +114,11 @@ bool InPortBase::isNew()
 bool InPortBase::isEmpty()
 {
     return !Runtime::InPortBase::isNew();
+}
+
+bool InPortBase::receiveValue(const void *, const std::type_info &, const std::string &)
+{
+    return false;
 }
 
 void InPortBase::init(coil::Properties &prop)
@@ -102,6 +172,7 @@ ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
     const ReturnCode_t result = Runtime::InPortBase::notify_connect(connector_profile);
     if (result == RTC_OK) {
         m_listeners.connected(connector_profile);
+        DirectLinks::instance().offer(connector_profile, this, nullptr);
         m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
     }
     return result;
@@ -109,6 +180,7 @@ ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
 
 ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
 {
+    DirectLinks::instance().withdraw(connector_id);
     m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
     const ReturnCode_t result = Runtime::InPortBase::notify_disconnect(connector_id);
     m_listeners.disconnected(connector_id);
@@ -181,6 +253,7 @@ ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
     const ReturnCode_t result = Runtime::OutPortBase::notify_connect(connector_profile);
     if (result == RTC_OK) {
         m_listeners.connected(connector_profile);
+        DirectLinks::instance().offer(connector_profile, nullptr, this);
         m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
     }
     return result;
@@ -188,22 +261,50 @@ ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
 
 ReturnCode_t OutPortBase::notify_disconnect(const char *connector_id)
 {
+    DirectLinks::instance().withdraw(connector_id);
     m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
     const ReturnCode_t result = Runtime::OutPortBase::notify_disconnect(connector_id);
     m_listeners.disconnected(connector_id);
     return result;
 }
 
+void OutPortBase::addDirectPeer(const std::string &connectorId, InPortBase *inport)
+{
+    {
+        std::lock_guard<std::mutex> lock(m_directMutex);
+        m_directPeers.emplace_back(connectorId, inport);
+    }
+    setBypassed(connectorId, true);
+}
+
+void OutPortBase::removeDirectPeer(const std::string &connectorId)
+{
+    setBypassed(connectorId, false);
+    // Once this returns no writer uses the InPort any more: writers hold the same lock.
+    std::lock_guard<std::mutex> lock(m_directMutex);
+    m_directPeers.erase(std::remove_if(m_directPeers.begin(), m_directPeers.end(),
+                                       [&connectorId](const auto &peer) { return peer.first == connectorId; }),
+                        m_directPeers.end());
+}
+
+void OutPortBase::writeDirect(const void *value, const std::type_info &type)
+{
+    std::lock_guard<std::mutex> lock(m_directMutex);
+    for (const auto &[connectorId, inport] : m_directPeers)
+        inport->receiveValue(value, type, connectorId);
+}
+
+void OutPortBase::notifyWrite(void *value, const std::type_info &type,
+                              const std::function<std::vector<unsigned char>()> &marshal)
+{
+    for (const auto event : {ConnectorDataListenerType::ON_BUFFER_WRITE, ConnectorDataListenerType::ON_SEND}) {
+        if (m_listeners.hasListeners(event))
+            m_listeners.notifyValue(event, std::string(), value, type, marshal);
+    }
+}
+
 void OutPortBase::writeBytes(const std::function<Runtime::CdrBytes(bool littleEndian)> &marshal)
 {
-    const bool watched = m_listeners.hasListeners(ConnectorDataListenerType::ON_BUFFER_WRITE)
-                         || m_listeners.hasListeners(ConnectorDataListenerType::ON_SEND);
-    if (watched) {
-        const Runtime::CdrBytes bytes = marshal(true);
-        const auto length = static_cast<unsigned long>(bytes.size());
-        m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_WRITE, std::string(), bytes.data(), length, true);
-        m_listeners.notifyData(ConnectorDataListenerType::ON_SEND, std::string(), bytes.data(), length, true);
-    }
     writeMarshalled(marshal);
 }
 

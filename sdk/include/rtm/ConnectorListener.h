@@ -8,7 +8,9 @@
 #include <rtm/ConnectorBase.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <typeinfo>
 
 namespace RTC
 {
@@ -97,6 +99,20 @@ public:
      * `info.properties["serializer.cdr.endian"]` ("little" or "big").
      */
     virtual ReturnCode operator()(ConnectorInfo &info, ByteData &data, const std::string &marshalingtype) = 0;
+
+    /// RT Studio: true when the listener takes samples of @p type as they are (no marshalling).
+    virtual bool acceptsValue(const std::type_info &type) const
+    {
+        (void)type;
+        return false;
+    }
+    /// RT Studio: a sample of the type acceptsValue() agreed to, handed over inside one process.
+    virtual ReturnCode onValue(ConnectorInfo &info, void *value)
+    {
+        (void)info;
+        (void)value;
+        return NO_CHANGE;
+    }
 };
 
 /**
@@ -123,6 +139,12 @@ public:
         return this->operator()(info, data);
     }
     virtual ReturnCode operator()(ConnectorInfo &info, DataType &data) = 0;
+
+    bool acceptsValue(const std::type_info &type) const override { return type == typeid(DataType); }
+    ReturnCode onValue(ConnectorInfo &info, void *value) override
+    {
+        return this->operator()(info, *static_cast<DataType *>(value));
+    }
 };
 
 /// Called when a connection of the port is made or removed (and for buffer events).
@@ -158,6 +180,12 @@ public:
     /// (empty: any connection of the port).
     void notifyData(ConnectorDataListenerType type, const std::string &connectorId, const unsigned char *data,
                     unsigned long length, bool littleEndian);
+    /**
+     * The same for a sample handed over inside one process: typed listeners of @p type get
+     * @p value itself, the others its CDR form from @p marshal (made at most once).
+     */
+    void notifyValue(ConnectorDataListenerType type, const std::string &connectorId, void *value,
+                     const std::type_info &valueType, const std::function<std::vector<unsigned char>()> &marshal);
     void notify(ConnectorListenerType type, const std::string &connectorId);
 
     /// Remembers a new connection (its properties without the `dataport.` prefix).

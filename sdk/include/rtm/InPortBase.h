@@ -9,6 +9,7 @@
 #include <rtmruntime/inport.h>
 
 #include <string>
+#include <typeinfo>
 
 namespace RTC
 {
@@ -29,6 +30,12 @@ public:
     virtual bool isNew();
     /// True when no sample waits.
     virtual bool isEmpty();
+    /**
+     * RT Studio: takes a sample that an OutPort of the same process hands over without
+     * marshalling (a push/flush connection between two SDK ports of one type). False when the
+     * port does not hold samples of @p type.
+     */
+    virtual bool receiveValue(const void *value, const std::type_info &type, const std::string &connectorId);
 
     /// Applies port properties (`buffer.length`, …) as OpenRTM's init() does.
     virtual void init(coil::Properties &prop);

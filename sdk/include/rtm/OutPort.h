@@ -27,6 +27,8 @@ public:
     virtual bool write(DataType &value)
     {
         const DataType &sample = value;
+        notifyWrite(&value, typeid(DataType), [&sample]() { return ::Runtime::marshal(sample, true); });
+        writeDirect(&value, typeid(DataType));
         writeBytes([&sample](bool littleEndian) { return ::Runtime::marshal(sample, littleEndian); });
         return true;
     }

@@ -4,11 +4,16 @@
 #define RTM_OUTPORTBASE_H
 
 #include <rtm/ConnectorListener.h>
+#include <rtm/InPortBase.h>
 #include <rtm/PortBase.h>
 
 #include <rtmruntime/outport.h>
 
+#include <mutex>
 #include <string>
+#include <typeinfo>
+#include <utility>
+#include <vector>
 
 namespace RTC
 {
@@ -38,12 +43,25 @@ public:
     ReturnCode_t notify_connect(ConnectorProfile &connector_profile) override;
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
+    /// RT Studio: hands samples of connection @p connectorId to @p inport directly (same process).
+    void addDirectPeer(const std::string &connectorId, InPortBase *inport);
+    void removeDirectPeer(const std::string &connectorId);
+
 protected:
+    /// Gives @p value to the InPorts of this process connected directly (one copy, no marshalling).
+    void writeDirect(const void *value, const std::type_info &type);
+    /// Calls the ON_BUFFER_WRITE and ON_SEND listeners with a sample about to be sent.
+    void notifyWrite(void *value, const std::type_info &type, const std::function<std::vector<unsigned char>()> &marshal);
+
     /// Hands a sample to the connections; @p marshal gives its bytes in the byte order asked for.
     void writeBytes(const std::function<::Runtime::CdrBytes(bool littleEndian)> &marshal);
 
     coil::Properties m_properties;
     ConnectorListeners m_listeners;
+
+private:
+    std::mutex m_directMutex;
+    std::vector<std::pair<std::string, InPortBase *>> m_directPeers;
 };
 } // namespace RTC
 
