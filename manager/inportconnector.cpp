@@ -22,10 +22,10 @@ InPortCdrServant::InPortCdrServant(std::shared_ptr<RingBuffer> buffer, ReceiveLi
 
 OpenRTM::PortStatus InPortCdrServant::put(const OpenRTM::CdrData &data)
 {
-    const CdrBytes bytes(data.get_buffer(), data.get_buffer() + data.length());
+    CdrBytes bytes(data.get_buffer(), data.get_buffer() + data.length());
     if (m_listener)
         m_listener(bytes, m_littleEndian);
-    switch (m_buffer->write(bytes)) {
+    switch (m_buffer->write(std::move(bytes))) {
     case RingBuffer::Status::Ok:
         return OpenRTM::PORT_OK;
     case RingBuffer::Status::Full:

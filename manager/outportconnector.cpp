@@ -89,9 +89,9 @@ void OutPortPushConnector::write(const CdrBytes &data)
 
 void OutPortPushConnector::send(const CdrBytes &data)
 {
-    OpenRTM::CdrData cdr(CORBA::ULong(data.size()));
-    cdr.length(CORBA::ULong(data.size()));
-    std::copy(data.begin(), data.end(), cdr.get_buffer());
+    // The sequence borrows the bytes (release = false): nothing is copied before the ORB sends them.
+    const auto length = CORBA::ULong(data.size());
+    OpenRTM::CdrData cdr(length, length, const_cast<CORBA::Octet *>(data.data()), false);
     try {
         m_peer->put(cdr);
     } catch (const CORBA::Exception &) {

@@ -45,7 +45,7 @@ RingBuffer::RingBuffer(const Properties &p)
     m_readTimeout = seconds(p.value("read.timeout", "1.0"), m_readTimeout);
 }
 
-RingBuffer::Status RingBuffer::write(const CdrBytes &data)
+RingBuffer::Status RingBuffer::write(CdrBytes data)
 {
     std::unique_lock lock(m_mutex);
     if (m_samples.size() >= m_length) {
@@ -63,7 +63,7 @@ RingBuffer::Status RingBuffer::write(const CdrBytes &data)
             break;
         }
     }
-    m_samples.push_back(data);
+    m_samples.push_back(std::move(data));
     m_changed.notify_all();
     return Status::Ok;
 }

@@ -27,8 +27,8 @@ public:
 
     explicit RingBuffer(const Properties &bufferProperties = {});
 
-    /// Stores @p data according to the write policy.
-    Status write(const CdrBytes &data);
+    /// Stores @p data according to the write policy (moved in: pass an rvalue to avoid a copy).
+    Status write(CdrBytes data);
     /// Takes the oldest sample according to the read policy ("readback" repeats the last one).
     Status read(CdrBytes *data);
     /// Unread samples.
