@@ -37,7 +37,9 @@ private:
 template <typename T>
 CdrBytes marshal(const T &value, bool littleEndian)
 {
-    cdrMemoryStream stream;
+    // One stream per thread, kept between calls: a large sample does not regrow its buffer each time.
+    thread_local cdrMemoryStream stream;
+    stream.rewindPtrs();
     stream.setByteSwapFlag(littleEndian);
     value >>= stream;
     const auto *begin = static_cast<const unsigned char *>(stream.bufPtr());
