@@ -349,62 +349,52 @@ PortableServer::POAManager_ptr Manager::getPOAManager()
 
 void Manager::addManagerActionListener(RTM::ManagerActionListener *listener, bool autoclean)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.manager.add(listener, autoclean);
+    d->actions.add(d->actions.manager, listener, autoclean);
 }
 
 void Manager::removeManagerActionListener(RTM::ManagerActionListener *listener)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.manager.remove(listener);
+    d->actions.remove(d->actions.manager, listener);
 }
 
 void Manager::addModuleActionListener(RTM::ModuleActionListener *listener, bool autoclean)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.module.add(listener, autoclean);
+    d->actions.add(d->actions.module, listener, autoclean);
 }
 
 void Manager::removeModuleActionListener(RTM::ModuleActionListener *listener)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.module.remove(listener);
+    d->actions.remove(d->actions.module, listener);
 }
 
 void Manager::addRtcLifecycleActionListener(RTM::RtcLifecycleActionListener *listener, bool autoclean)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.lifecycle.add(listener, autoclean);
+    d->actions.add(d->actions.lifecycle, listener, autoclean);
 }
 
 void Manager::removeRtcLifecycleActionListener(RTM::RtcLifecycleActionListener *listener)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.lifecycle.remove(listener);
+    d->actions.remove(d->actions.lifecycle, listener);
 }
 
 void Manager::addNamingActionListener(RTM::NamingActionListener *listener, bool autoclean)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.naming.add(listener, autoclean);
+    d->actions.add(d->actions.naming, listener, autoclean);
 }
 
 void Manager::removeNamingActionListener(RTM::NamingActionListener *listener)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.naming.remove(listener);
+    d->actions.remove(d->actions.naming, listener);
 }
 
 void Manager::addLocalServiceActionListener(RTM::LocalServiceActionListener *listener, bool autoclean)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.localService.add(listener, autoclean);
+    d->actions.add(d->actions.localService, listener, autoclean);
 }
 
 void Manager::removeLocalServiceActionListener(RTM::LocalServiceActionListener *listener)
 {
-    std::lock_guard lock(d->actions.mutex);
-    d->actions.localService.remove(listener);
+    d->actions.remove(d->actions.localService, listener);
 }
 
 Logger &Manager::getLogbuf(const std::string &name)

@@ -27,6 +27,19 @@ public:
     ListenerSet<RTM::NamingActionListener> naming;
     ListenerSet<RTM::LocalServiceActionListener> localService;
 
+    template <typename Listener>
+    void add(ListenerSet<Listener> &set, Listener *listener, bool autoclean)
+    {
+        std::lock_guard<std::recursive_mutex> lock(mutex);
+        set.add(listener, autoclean);
+    }
+    template <typename Listener>
+    void remove(ListenerSet<Listener> &set, Listener *listener)
+    {
+        std::lock_guard<std::recursive_mutex> lock(mutex);
+        set.remove(listener);
+    }
+
     /// Calls @p call on each listener of @p set under the lock.
     template <typename Listener, typename Call>
     void each(ListenerSet<Listener> &set, Call call)

@@ -86,12 +86,67 @@ private:
 
 } // namespace
 
+// --- DataPortListeners ---
+
+DataPortListeners::DataPortListeners(const char *data_type)
+{
+    m_properties.setProperty("dataport.data_type", data_type);
+}
+
+DataPortListeners::~DataPortListeners() = default;
+
+void DataPortListeners::init(coil::Properties &prop)
+{
+    m_properties << prop;
+}
+
+coil::Properties &DataPortListeners::properties()
+{
+    return m_properties;
+}
+
+ConnectorInfoList DataPortListeners::getConnectorProfiles()
+{
+    return m_listeners.connectorInfos();
+}
+
+coil::vstring DataPortListeners::getConnectorIds()
+{
+    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::id);
+}
+
+coil::vstring DataPortListeners::getConnectorNames()
+{
+    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::name);
+}
+
+void DataPortListeners::addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
+                                                 bool autoclean)
+{
+    m_listeners.addListener(type, listener, autoclean);
+}
+
+void DataPortListeners::removeConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
+{
+    m_listeners.removeListener(type, listener);
+}
+
+void DataPortListeners::addConnectorListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean)
+{
+    m_listeners.addListener(type, listener, autoclean);
+}
+
+void DataPortListeners::removeConnectorListener(ConnectorListenerType type, ConnectorListener *listener)
+{
+    m_listeners.removeListener(type, listener);
+}
+
 // --- InPortBase ---
 
 InPortBase::InPortBase(const char *name, const char *data_type)
     : Runtime::InPortBase(name, data_type, PortableServer::POA_var(Sdk::rootPoa()).in())
+    , DataPortListeners(data_type)
 {
-    m_properties.setProperty("dataport.data_type", data_type);
     setReceiveListener([this](const Runtime::CdrBytes &data, bool littleEndian, const std::string &connectorId) {
         // A push sample goes into the connection's buffer right after this call.
         const auto length = static_cast<unsigned long>(data.size());
@@ -119,52 +174,6 @@ bool InPortBase::isEmpty()
 bool InPortBase::receiveValue(const void *, const std::type_info &, const std::string &)
 {
     return false;
-}
-
-void InPortBase::init(coil::Properties &prop)
-{
-    m_properties << prop;
-}
-
-coil::Properties &InPortBase::properties()
-{
-    return m_properties;
-}
-
-ConnectorInfoList InPortBase::getConnectorProfiles()
-{
-    return m_listeners.connectorInfos();
-}
-
-coil::vstring InPortBase::getConnectorIds()
-{
-    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::id);
-}
-
-coil::vstring InPortBase::getConnectorNames()
-{
-    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::name);
-}
-
-void InPortBase::addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
-                                          bool autoclean)
-{
-    m_listeners.addListener(type, listener, autoclean);
-}
-
-void InPortBase::removeConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
-{
-    m_listeners.removeListener(type, listener);
-}
-
-void InPortBase::addConnectorListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean)
-{
-    m_listeners.addListener(type, listener, autoclean);
-}
-
-void InPortBase::removeConnectorListener(ConnectorListenerType type, ConnectorListener *listener)
-{
-    m_listeners.removeListener(type, listener);
 }
 
 ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
@@ -196,57 +205,11 @@ bool InPortBase::readBytes(Runtime::CdrBytes *data, bool *littleEndian)
 
 OutPortBase::OutPortBase(const char *name, const char *data_type)
     : Runtime::OutPortBase(name, data_type, PortableServer::POA_var(Sdk::rootPoa()).in())
+    , DataPortListeners(data_type)
 {
-    m_properties.setProperty("dataport.data_type", data_type);
 }
 
 OutPortBase::~OutPortBase() = default;
-
-void OutPortBase::init(coil::Properties &prop)
-{
-    m_properties << prop;
-}
-
-coil::Properties &OutPortBase::properties()
-{
-    return m_properties;
-}
-
-ConnectorInfoList OutPortBase::getConnectorProfiles()
-{
-    return m_listeners.connectorInfos();
-}
-
-coil::vstring OutPortBase::getConnectorIds()
-{
-    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::id);
-}
-
-coil::vstring OutPortBase::getConnectorNames()
-{
-    return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::name);
-}
-
-void OutPortBase::addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
-                                           bool autoclean)
-{
-    m_listeners.addListener(type, listener, autoclean);
-}
-
-void OutPortBase::removeConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
-{
-    m_listeners.removeListener(type, listener);
-}
-
-void OutPortBase::addConnectorListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean)
-{
-    m_listeners.addListener(type, listener, autoclean);
-}
-
-void OutPortBase::removeConnectorListener(ConnectorListenerType type, ConnectorListener *listener)
-{
-    m_listeners.removeListener(type, listener);
-}
 
 ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
 {

@@ -10,6 +10,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CorbaPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataFlowComponentBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataInPort.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortListeners.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataOutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Factory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h

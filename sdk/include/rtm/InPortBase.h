@@ -4,6 +4,7 @@
 #define RTM_INPORTBASE_H
 
 #include <rtm/ConnectorListener.h>
+#include <rtm/DataPortListeners.h>
 #include <rtm/PortBase.h>
 
 #include <rtmruntime/inport.h>
@@ -17,7 +18,7 @@ namespace RTC
  * A data InPort without its sample type: connections (push and pull over CORBA CDR), the
  * port's properties and its listeners. InPort<T> adds the typed variable.
  */
-class InPortBase : public ::Runtime::InPortBase
+class InPortBase : public ::Runtime::InPortBase, public DataPortListeners
 {
 public:
     /// @p data_type is the repository id of the sample type (`IDL:RTC/TimedLong:1.0`).
@@ -37,28 +38,12 @@ public:
      */
     virtual bool receiveValue(const void *value, const std::type_info &type, const std::string &connectorId);
 
-    /// Applies port properties (`buffer.length`, …) as OpenRTM's init() does.
-    virtual void init(coil::Properties &prop);
-    coil::Properties &properties();
-    ConnectorInfoList getConnectorProfiles();
-    coil::vstring getConnectorIds();
-    coil::vstring getConnectorNames();
-
-    void addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
-                                  bool autoclean = true);
-    void removeConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener);
-    void addConnectorListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean = true);
-    void removeConnectorListener(ConnectorListenerType type, ConnectorListener *listener);
-
     ReturnCode_t notify_connect(ConnectorProfile &connector_profile) override;
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
 protected:
     /// Takes one marshalled sample; false when none was waiting.
     bool readBytes(::Runtime::CdrBytes *data, bool *littleEndian);
-
-    coil::Properties m_properties;
-    ConnectorListeners m_listeners;
 };
 } // namespace RTC
 
