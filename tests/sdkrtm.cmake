@@ -46,3 +46,9 @@ set_tests_properties(tst_sdkslaves PROPERTIES LABELS sdk)
 target_compile_definitions(tst_sdkrtm PRIVATE
     MANAGER_TEST_MODULE="${CMAKE_CURRENT_BINARY_DIR}/managermodules/ManagerTestModule.so")
 add_dependencies(tst_sdkrtm managertestmodule)
+
+# The component API's headers as C++11, the standard OpenRTP 2.0 projects build with.
+add_library(sdkrtm_cxx11 OBJECT sdk/rtm_cxx11.cpp)
+target_link_libraries(sdkrtm_cxx11 PRIVATE rtsdk)
+set_target_properties(sdkrtm_cxx11 PROPERTIES CXX_STANDARD 11 CXX_EXTENSIONS ON AUTOMOC OFF)
+add_dependencies(tst_sdkrtm sdkrtm_cxx11)

@@ -386,7 +386,7 @@ void TestSdkPackage::consume_data()
     QTest::addColumn<QString>("expected");
     const QList<QList<const char *>> styles{
         {"openrtp2", "GreetingProbe", "openrtp2 2.1.0 HELLO 42 2"},
-        {"legacy12", "LegacyProbe", "legacy12 2.1 legacy 3 -2 1s500000us"},
+        {"legacy12", "LegacyProbe", "legacy12 2.1 legacy 3 -2 1s500000us ticked"},
         {"modern", "ModernProbe", "modern 2.1.0 sdk=1 3 4 0.5 rate=1000"},
         {"pkgconfig", "PkgConfigProbe", "pkgconfig 2.1.0 pkg-config 2"}};
     for (const char *kind : {"build", "installed"}) {
