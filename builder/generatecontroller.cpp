@@ -95,7 +95,15 @@ QString GenerateController::settingsKey() const
 
 QString GenerateController::outputFolder() const
 {
-    return QSettings().value(settingsKey()).toString();
+    const QString remembered = QSettings().value(settingsKey()).toString();
+    if (!remembered.isEmpty())
+        return remembered;
+    // An RTC.xml opened from a generated project (which keeps a copy of its profile) works there.
+    const QString profilePath = m_profilePath();
+    const QDir folder = QFileInfo(profilePath).dir();
+    if (!profilePath.isEmpty() && folder.exists(QStringLiteral("CMakeLists.txt")))
+        return folder.absolutePath();
+    return {};
 }
 
 void GenerateController::setOutputFolder(const QString &folder)

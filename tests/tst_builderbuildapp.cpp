@@ -40,6 +40,7 @@ private slots:
     void buildSucceeds();
     void cancelFromOutputPanel();
     void sdkPrefixIsRemembered();
+    void openedFromGeneratedProject();
 
 private:
     struct Opened
@@ -280,6 +281,28 @@ void TestBuilderBuildApp::sdkPrefixIsRemembered()
     const QString text = opened.editor->buildOutputPanel()->text();
     QVERIFY(text.contains(QStringLiteral("-DCMAKE_PREFIX_PATH=") + project.path()));
     QVERIFY(text.contains(QStringLiteral("-DCMAKE_BUILD_TYPE=Debug")));
+}
+
+void TestBuilderBuildApp::openedFromGeneratedProject()
+{
+    // The RTC.xml a generated project keeps: Build works on its folder without a Generate first.
+    QTemporaryDir project;
+    QVERIFY(project.isValid() && BuildFixture::copy(QStringLiteral("ok"), project.path()));
+    const QString profile = project.filePath(QStringLiteral("RTC.xml"));
+    QVERIFY(QFile::copy(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml"), profile));
+    Studio::MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openFiles({profile}));
+    Studio::Perspective *builder = window.perspective(Studio::Perspective::Id::Builder);
+    auto *editor = qobject_cast<Builder::ComponentEditor *>(builder->editor(window.activeDocument()));
+    QVERIFY(editor);
+    const auto builds = editor->findChildren<Builder::BuildController *>();
+    QCOMPARE(builds.size(), 1);
+    builds.first()->updateActions();
+    QVERIFY(builds.first()->buildAction()->isEnabled());
+    QCOMPARE(QDir(builds.first()->projectFolder()).canonicalPath(), QDir(project.path()).canonicalPath());
+    QVERIFY(m_modalsSeen.isEmpty());
 }
 
 QTEST_MAIN(TestBuilderBuildApp)
