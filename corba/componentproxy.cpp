@@ -376,13 +376,16 @@ void ComponentProxy::setParameter(const QString &setId, const QString &name,
         throw Error(Error::Kind::NotFound,
                     QStringLiteral("%1: no parameter '%2' in set '%3'").arg(m_path, name, setId));
     setProperty(set.data, name, value);
+    // Asked before the write: OpenRTM-aist has no active set from the write until the activation
+    // (get_active_configuration_set throws NotAvailable).
+    const bool active = activeConfigurationSet() == setId;
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
     const bool ok = call(
         m_path, [&] { return conf->set_configuration_set_values(toSdoConfigurationSet(set)); });
     if (!ok)
         throw Error(Error::Kind::Refused,
                     QStringLiteral("%1: parameter '%2' was not set").arg(m_path, name));
-    if (activeConfigurationSet() == setId)
+    if (active)
         activateConfigurationSet(setId);
 }
 

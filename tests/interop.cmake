@@ -1,0 +1,14 @@
+# SPDX-License-Identifier: MIT
+# Interoperability with a real OpenRTM-aist 2.x (ctest label "interop"): the project rtctl
+# generates for the SdkGreeter fixture is built against OpenRTM-aist's CMake package and run by
+# it. OpenRTM-aist is not a dependency of RT Studio: without a prefix the test skips itself.
+set(RTSTUDIO_OPENRTM_PREFIX "" CACHE PATH "OpenRTM-aist 2.x prefix for the interop tests (optional)")
+
+rtstudio_add_test(tst_interopbuild SOURCES tst_interopbuild.cpp common/sdkgreeteredits.h
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+target_compile_definitions(tst_interopbuild PRIVATE
+    RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+    CMAKE_COMMAND="${CMAKE_COMMAND}")
+add_dependencies(tst_interopbuild rtmanager rtctl)
+set_tests_properties(tst_interopbuild PROPERTIES LABELS interop TIMEOUT 900)
