@@ -49,25 +49,44 @@ void Manager::destroyOrb()
 
 bool Manager::initOrb(std::string *error)
 {
-    // The listening port: corba.endpoints, else (master) the port of corba.master_manager.
-    std::string endpoint = split(m_config.value("corba.endpoints"), ',').empty()
-                               ? std::string()
-                               : split(m_config.value("corba.endpoints"), ',').front();
-    if (endpoint.empty() && m_isMaster)
-        endpoint = m_config.value("corba.master_manager", "localhost:2810");
-    std::string host;
-    int port = 0;
-    if (!endpoint.empty()) {
-        const size_t colon = endpoint.rfind(':');
-        host = colon == std::string::npos ? endpoint : endpoint.substr(0, colon);
-        const std::string portText = colon == std::string::npos ? std::string() : endpoint.substr(colon + 1);
-        if (!portText.empty() && !parseHostPort("h:" + portText, &endpoint, &port, error))
+    // Where to listen: every entry of corba.endpoints ("all" or a blank host: every interface; no
+    // port: one of our choosing, so that the manager knows its own address). A master whose
+    // endpoints name no port listens first on the port of corba.master_manager, as OpenRTM-aist does.
+    std::vector<std::pair<std::string, int>> endpoints;
+    for (std::string entry : split(m_config.value("corba.endpoints"), ',')) {
+        entry = trimmed(entry);
+        if (entry == "all")
+            entry = ":";
+        const size_t colon = entry.rfind(':');
+        std::string host = colon == std::string::npos ? entry : entry.substr(0, colon);
+        const std::string portText = colon == std::string::npos ? std::string() : entry.substr(colon + 1);
+        int port = 0;
+        std::string ignored;
+        if (!portText.empty() && !parseHostPort("h:" + portText, &ignored, &port, error))
             return false;
+        endpoints.emplace_back(host == "localhost" ? std::string("127.0.0.1") : host, port);
     }
-    if (host == "localhost")
-        host = "127.0.0.1";
-    const std::string giop = "giop:tcp:" + host + ':' + (port ? std::to_string(port) : std::string());
-    std::vector<std::string> args = {"rtmanager", "-ORBendPoint", giop};
+    const bool anyPort = std::any_of(endpoints.begin(), endpoints.end(), [](const auto &e) { return e.second != 0; });
+    if (m_isMaster && !anyPort) {
+        std::string masterHost;
+        int masterPort = 0;
+        if (!parseHostPort(m_config.value("corba.master_manager", "localhost:2810"), &masterHost, &masterPort, error))
+            return false;
+        endpoints.insert(endpoints.begin(), {std::string(), masterPort});
+    }
+    if (endpoints.empty())
+        endpoints.emplace_back(std::string(), 0);
+    std::vector<std::string> args = {"rtmanager"};
+    std::string listening;
+    for (auto &[host, port] : endpoints) {
+        if (port == 0)
+            port = freeLoopbackPort();
+        const std::string giop = "giop:tcp:" + host + ':' + std::to_string(port);
+        args.insert(args.end(), {"-ORBendPoint", giop});
+        listening += (listening.empty() ? "" : ", ") + giop;
+    }
+    const std::string host = endpoints.front().first;
+    const int port = endpoints.front().second;
     // OpenRTM's corba.args: extra ORB options such as `-ORBgiopMaxMsgSize 209715200`.
     std::istringstream extra(m_config.value("corba.args"));
     for (std::string word; extra >> word;)
@@ -81,7 +100,7 @@ bool Manager::initOrb(std::string *error)
         CORBA::Object_var object = m_orb->resolve_initial_references("RootPOA");
         m_poa = PortableServer::POA::_narrow(object);
     } catch (const CORBA::Exception &e) {
-        *error = "cannot start the ORB on " + giop + ": " + describeException(e);
+        *error = "cannot start the ORB on " + listening + ": " + describeException(e);
         return false;
     }
     // No remote call may block forever: every outgoing call and connect is bounded.

@@ -98,29 +98,33 @@ void TestSdkSlaves::restoreCreatesTypeFromLoadPath()
 
 void TestSdkSlaves::rtcConfPreloadsAndPrecreates()
 {
-    // OpenRTM-aist's rtc.conf keys for modules, read from a file given with -f.
+    // OpenRTM-aist's usual master rtc.conf, read from a file given with -f: endpoints without a port,
+    // the master port in corba.master_manager, modules preloaded and components precreated.
+    const quint16 masterPort = LiveTest::freePort();
     QTemporaryDir dir;
     QFile conf(dir.filePath("rtc.conf"));
     QVERIFY(conf.open(QIODevice::WriteOnly));
     conf.write(QStringLiteral("corba.nameservers: %1\n"
+                              "corba.endpoints: 127.0.0.1:\n"
+                              "corba.master_manager: 127.0.0.1:%2\n"
+                              "manager.is_master: YES\n"
                               "naming.formats: confhost.host_cxt/%n.rtc\n"
                               "manager.naming_formats: confhost.host_cxt/%n.mgr\n"
                               "manager.modules.load_path: " SDK_TEST_MODULE_DIR "\n"
                               "manager.modules.preload: CrashProbe.so\n"
                               "manager.components.precreate: CrashProbe?instance_name=Early\n")
                    .arg(m_live.namingServer())
+                   .arg(masterPort)
                    .toUtf8());
     conf.close();
     QString error;
-    const QString endpoint = QStringLiteral("corba.endpoints:127.0.0.1:%1").arg(LiveTest::freePort());
-    QVERIFY2(m_live.startProcess(RTMANAGER_PATH, {"-f", conf.fileName(), "-d", "-o", endpoint}, "rtmanager ready",
-                                 &error),
+    QVERIFY2(m_live.startProcess(RTMANAGER_PATH, {"-f", conf.fileName()}, "rtmanager ready", &error),
              qPrintable(error));
     const QString early = QStringLiteral("/%1/confhost.host_cxt/Early.rtc").arg(m_live.namingServer());
     QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"cat", early}).code == 0, 10000);
-    const RtctlResult list = runRtctl({"mgr", QStringLiteral("/%1/confhost.host_cxt/manager.mgr").arg(m_live.namingServer()),
-                                       "list"});
-    QVERIFY2(list.out.contains("CrashProbe.so"), qPrintable(list.out + list.err));
+    // The master answers on the master port, where slaves and tools look for it.
+    const RtctlResult list = runRtctl({"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(masterPort), "list"});
+    QVERIFY2(list.code == 0 && list.out.contains("CrashProbe.so"), qPrintable(list.out + list.err));
 }
 
 void TestSdkSlaves::withoutManagerServant()
