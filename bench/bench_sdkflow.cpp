@@ -8,6 +8,8 @@
 // Two placements in one run: two components in one RTC::Manager, and a receiver in a second process
 // (this program run with --receiver PORT) reached through corbaloc:iiop:127.0.0.1:PORT/manager.
 // The targets, from OpenRTM-aist 2.1's figures, are printed against the measurements at the end.
+// With --openrtm PREFIX (or OPENRTM_PREFIX), OpenRTM-aist's own Throughput example installed there
+// runs afterwards (one process, bounded in time) and its figures are printed beside placement (a).
 #include <rtm/ConnectorListener.h>
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/DataInPort.h>
@@ -15,6 +17,8 @@
 #include <rtm/Manager.h>
 
 #include <Manager.hh>
+
+#include "openrtmthroughput.h"
 
 #include <algorithm>
 #include <chrono>
@@ -32,7 +36,6 @@
 #include <poll.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -49,6 +52,8 @@ constexpr int warmUpSamples = 5;
 constexpr double sizeBudgetSeconds = 6;
 constexpr int minSamples = 10;
 constexpr double mebibyte = 1024.0 * 1024.0;
+// OpenRTM-aist's example, when run beside this benchmark, is stopped after this long.
+constexpr int openRtmTimeoutSeconds = 180;
 // omniORB refuses GIOP messages over 2 MiB by default; OpenRTM's Throughput script raises the limit
 // with `corba.args: -ORBgiopMaxMsgSize 209715200`. The manager takes no ORB arguments, so the
 // environment carries it (omniORB reads ORB<parameter> variables; the receiver inherits them).
@@ -665,26 +670,56 @@ void printTargets(const std::vector<Row> &inProcess, const std::vector<Row> &bet
     std::printf("(met: yes = the strict end of the goal range, partly = only its lenient end)\n");
 }
 
-/// Mentions OpenRTM-aist's own Throughput example when a prefix with it was given; it is not run
-/// here.
-void noteOpenRtm(const std::string &prefix)
+/// OpenRTM-aist's row of @p elements, or null.
+const OpenRtmThroughput::Row *openRtmRow(const std::vector<OpenRtmThroughput::Row> &rows,
+                                         CORBA::ULong elements)
+{
+    for (const OpenRtmThroughput::Row &row : rows) {
+        if (row.elements == elements)
+            return &row;
+    }
+    return nullptr;
+}
+
+/// Runs OpenRTM-aist's own Throughput example from @p prefix (two components in one process, as
+/// placement (a)) and prints its figures beside this benchmark's.
+void compareWithOpenRtm(const std::string &prefix, const std::vector<Row> &inProcess)
 {
     if (prefix.empty())
         return;
-    const std::string examples = prefix + "/share/openrtm-2.1/components/c++/examples";
-    struct stat info
-    {
-    };
-    const bool found = stat((examples + "/ThroughputComp").c_str(), &info) == 0
-        || stat((examples + "/Throughput.so").c_str(), &info) == 0;
-    if (found)
-        std::printf(
-            "\nOpenRTM-aist's Throughput example is in %s; this benchmark does not run it.\n",
-            examples.c_str());
-    else
-        std::printf("\nNo OpenRTM-aist Throughput example in %s (it would not be run by this "
-                    "benchmark anyway).\n",
-                    examples.c_str());
+    std::printf("\nOpenRTM-aist's Throughput example from %s, run now: two components in one "
+                "process,\npush / flush / corba_cdr, 100 samples per size (sizes double from 1); "
+                "its MiB/s is the payload over the\nmean latency, ours over the mean write "
+                "interval.\n",
+                prefix.c_str());
+    std::fflush(stdout);
+    const OpenRtmThroughput::Run run
+        = OpenRtmThroughput::runSameProcess(prefix, sizes.back(), openRtmTimeoutSeconds);
+    if (!run.error.empty())
+        std::printf("OpenRTM-aist's example: %s\n", run.error.c_str());
+    if (run.rows.empty())
+        return;
+    std::printf("| elements | SDK mean us | OpenRTM mean us | SDK MiB/s | OpenRTM MiB/s |\n");
+    std::printf("|----------|-------------|-----------------|-----------|---------------|\n");
+    for (std::size_t i = 0; i < sizes.size() && i < inProcess.size(); ++i) {
+        const Row &ours = inProcess[i];
+        const OpenRtmThroughput::Row *theirs = openRtmRow(run.rows, sizes[i]);
+        if (!ours.reported || theirs == nullptr)
+            continue;
+        std::printf("| %8u | %11.1f | %15.1f | %9.1f | %13.1f |\n", unsigned(sizes[i]),
+                    ours.latency.mean, theirs->meanUs, ours.mibPerSecond, theirs->mibPerSecond);
+    }
+    double openRtmLatency = -1;
+    double openRtmPeak = 0;
+    for (const OpenRtmThroughput::Row &row : run.rows) {
+        if (row.elements <= 8)
+            openRtmLatency = std::max(openRtmLatency, row.meanUs);
+        openRtmPeak = std::max(openRtmPeak, row.mibPerSecond / 1024.0);
+    }
+    std::printf("latency, worse mean of 1-8 elements: SDK %.1f us, OpenRTM-aist %.1f us\n",
+                smallLatency(inProcess), openRtmLatency);
+    std::printf("peak throughput: SDK %.2f GiB/s, OpenRTM-aist %.2f GiB/s (all of its sizes)\n",
+                peakGiBPerSecond(inProcess), openRtmPeak);
 }
 
 } // namespace
@@ -717,7 +752,7 @@ int main(int argc, char **argv)
     const std::vector<Row> inProcess = measureInProcess(manager, sender);
     const std::vector<Row> between = measureBetweenProcesses(manager, sender);
     printTargets(inProcess, between);
-    noteOpenRtm(openRtm);
+    compareWithOpenRtm(openRtm, inProcess);
     std::fflush(stdout);
     // As in the receiver: the measurement is printed and the ORB holds nothing worth an orderly
     // end.

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # Benchmarks of the component SDK (sdk/): data-port latency and throughput as OpenRTM-aist's
 # Throughput example measures them, and the time from Generate to a running instance.
-add_executable(bench_sdkflow bench_sdkflow.cpp)
+add_executable(bench_sdkflow bench_sdkflow.cpp openrtmthroughput.h openrtmthroughput.cpp)
 target_link_libraries(bench_sdkflow PRIVATE rtsdk)
 
 add_executable(bench_sdkgenerate bench_sdkgenerate.cpp)
