@@ -107,6 +107,7 @@ QString RtSystemCommand::usage() const
         "name under the name servers (-s, else RTCTREE_NAMESERVERS, else localhost).\n"
         "-s SERVER      name server host[:port] to search (repeatable)\n"
         "-m MANAGER     manager path or corbaloc::host[:port] that creates missing components\n"
+        "               (default: the manager.mgr beside each component's saved path)\n"
         "--host-manager HOST=ADDRESS  components saved under HOST.host_cxt are created with\n"
         "               manager_address=ADDRESS\n");
     if (m_action == Action::Resurrect)
@@ -148,10 +149,6 @@ bool RtSystemCommand::targetOptions(const RtOptions &options, Deploy::TargetOpti
             return false;
         }
         target->hostManagers.insert(pair.left(eq), pair.mid(eq + 1));
-    }
-    if (target->create && target->manager.isEmpty()) {
-        usageError(QStringLiteral("--create needs -m MANAGER"), streams);
-        return false;
     }
     return true;
 }

@@ -16,6 +16,7 @@ private slots:
     void typeFromLoadPathInMasterAndSlaves();
     void crashTakesDownOnlyItsSlave();
     void restoreCreatesTypeFromLoadPath();
+    void restoreWithoutManagerUsesTheSavedHosts();
     void rtcConfPreloadsAndPrecreates();
     void withoutManagerServant();
 
@@ -94,6 +95,24 @@ void TestSdkSlaves::restoreCreatesTypeFromLoadPath()
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     const QString restored = QStringLiteral("/%1/restorehost.host_cxt/Local.rtc").arg(m_live.namingServer());
     QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"cat", restored}).code == 0, 10000);
+}
+
+void TestSdkSlaves::restoreWithoutManagerUsesTheSavedHosts()
+{
+    // No -m: the component is created by the manager registered beside its saved name.
+    RtctlResult r = rtctl({"mgr", host() + "/manager.mgr", "create", "CrashProbe?instance_name=Saved"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QTemporaryDir dir;
+    const QString saved = dir.filePath("saved.rtsys");
+    r = rtctl({"cryo", "-n", "SavedSystem", "-o", saved, host() + "/Saved.rtc"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    r = rtctl({"mgr", host() + "/manager.mgr", "delete", "Saved"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", "Saved.rtc"}).code != 0, 10000);
+    r = rtctl({"resurrect", "--create", "-s", m_live.namingServer(), saved});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2((r.out + r.err).contains("slavehost.host_cxt/manager.mgr"), qPrintable(r.out + r.err));
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", "Saved.rtc"}).code == 0, 10000);
 }
 
 void TestSdkSlaves::rtcConfPreloadsAndPrecreates()

@@ -195,9 +195,17 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
     if (mapping.message.isEmpty())
         mapping.message = QStringLiteral("no live component named %1").arg(component.instanceName);
     if (m_options.create) {
+        mapping.manager = m_options.manager;
+        // Without -m: the manager registered beside the component's saved name, as rtshell's users expect.
+        const int slash = component.pathUri.lastIndexOf(QLatin1Char('/'));
+        if (mapping.manager.isEmpty() && isLivePath(component.pathUri) && slash > 0)
+            mapping.manager = QLatin1Char('/') + component.pathUri.left(slash) + QStringLiteral("/manager.mgr");
+        if (mapping.manager.isEmpty()) {
+            mapping.message += QStringLiteral("; no manager to create it (give one with -m)");
+            return mapping;
+        }
         mapping.kind = MappingKind::Create;
-        mapping.path = m_options.manager + QLatin1Char('/') + component.instanceName
-            + QStringLiteral(".rtc");
+        mapping.path = mapping.manager + QLatin1Char('/') + component.instanceName + QStringLiteral(".rtc");
     }
     return mapping;
 }

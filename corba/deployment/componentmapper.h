@@ -23,7 +23,8 @@ struct TargetOptions
     /// named by live pathUri values, else `RTCTREE_NAMESERVERS`, else `localhost`.
     QStringList nameServers;
     /// The manager that creates missing components: an rtshell path (`/ns/h.host_cxt/manager.mgr`)
-    /// or a corbaloc (`corbaloc::host:2810`). Needed only with `create`.
+    /// or a corbaloc (`corbaloc::host:2810`). Empty: each component's saved host context's
+    /// `manager.mgr` (OpenRTM's default manager name), when its pathUri is a live path.
     QString manager;
     /// Saved host context name (`hostB` of `hostB.host_cxt` in a pathUri) → `manager_address`
     /// (`host:port`) of the manager that hosts that host's components; used when creating.
@@ -52,6 +53,8 @@ struct ComponentMapping
     QString path; ///< the live rtshell path (or the manager's path + name when created)
     QString ior; ///< the live object reference; empty until found or created
     QString createArgument; ///< `Type?instance_name=…&…` for create_component
+    /// The manager that creates it: `-m`, else the `manager.mgr` beside its saved live path.
+    QString manager;
     QString message; ///< why it is missing, or a warning (other vendor/version)
     bool activate = true; ///< take part in start/stop (a GUI mapping dialog may untick it)
 };

@@ -5,6 +5,8 @@
 #include "corbaerror.h"
 #include "liveports.h"
 #include "managerproxy.h"
+
+#include <map>
 #include "portconnection.h"
 #include "rtsprofile.h"
 #include "steprecorder.h"
@@ -88,17 +90,18 @@ private:
     {
         const int step = m_steps.begin(QStringLiteral("create"), c.instanceName, c.required);
         try {
-            if (!m_manager) {
-                if (m_options.manager.isEmpty())
-                    throw Error(Error::Kind::BadPath, QStringLiteral("no manager given"));
-                m_manager.emplace(ComponentMapper::resolveManager(m_options.manager),
-                                  m_options.manager);
-            }
-            const QString ior = m_manager->createComponent(c.createArgument);
+            const QString address = c.manager.isEmpty() ? m_options.manager : c.manager;
+            if (address.isEmpty())
+                throw Error(Error::Kind::BadPath, QStringLiteral("no manager given"));
+            auto manager = m_managers.find(address);
+            if (manager == m_managers.end())
+                manager = m_managers.emplace(address, Corba::ManagerProxy(ComponentMapper::resolveManager(address), address))
+                              .first;
+            const QString ior = manager->second.createComponent(c.createArgument);
             const ComponentProxy proxy(ior, c.path);
             m_live.insert(c.instanceName, proxy);
             m_undo.append({step, [proxy] { proxy.exit(); }});
-            m_steps.finish(step, StepStatus::Done, c.createArgument);
+            m_steps.finish(step, StepStatus::Done, QStringLiteral("%1 by %2").arg(c.createArgument, address));
         } catch (const Error &e) {
             m_steps.fail(step, e.message());
         }
@@ -305,7 +308,7 @@ private:
     const RestorePlan &m_plan;
     const TargetOptions &m_options;
     StepRecorder m_steps;
-    std::optional<Corba::ManagerProxy> m_manager;
+    std::map<QString, Corba::ManagerProxy> m_managers;
     QHash<QString, ComponentProxy> m_live;
     QHash<QString, std::vector<Corba::PortInfo>> m_ports;
     QList<Undo> m_undo;
