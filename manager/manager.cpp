@@ -284,97 +284,126 @@ const ComponentFactory *Manager::findFactory(const CreateRequest &request)
     return nullptr;
 }
 
-std::string Manager::uniqueInstanceName(const std::string &typeName)
+bool Manager::instanceNameTaken(const std::string &name) const
 {
-    for (int n = 0;; ++n) {
-        const std::string name = typeName + std::to_string(n);
-        if (std::none_of(m_components.begin(), m_components.end(),
-                         [&name](const auto &c) { return c->instanceName == name; }))
-            return name;
-    }
+    return m_reservedNames.count(name) > 0
+           || std::any_of(m_components.begin(), m_components.end(),
+                          [&name](const auto &c) { return c->instanceName == name; });
 }
 
-RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string *error)
+std::string Manager::reserveInstanceName(const std::string &requested, const std::string &typeName,
+                                         std::string *error)
 {
-    std::unique_lock lock(m_mutex);
+    std::lock_guard lock(m_mutex);
+    std::string name = requested;
+    for (int n = 0; name.empty(); ++n) {
+        if (!instanceNameTaken(typeName + std::to_string(n)))
+            name = typeName + std::to_string(n);
+    }
+    if (instanceNameTaken(name)) {
+        *error = "create_component: instance name '" + name + "' is already in use";
+        return {};
+    }
+    m_reservedNames.insert(name);
+    return name;
+}
+
+std::optional<ComponentFactory> Manager::factoryFor(const CreateRequest &request)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        if (const ComponentFactory *factory = findFactory(request))
+            return *factory;
+    }
+    // A type nobody registered yet may be a loadable module of the load path (`<Type>.so`, as
+    // the Builder and OpenRTP name them): load it, then look again.
+    std::string loadError;
+    if (findModuleFile(request.implementationId).empty()
+        || !loadModule(request.implementationId, std::string(), &loadError))
+        return std::nullopt;
+    std::lock_guard lock(m_mutex);
     const ComponentFactory *factory = findFactory(request);
-    if (!factory) {
-        // A type nobody registered yet may be a loadable module of the load path (`<Type>.so`,
-        // as the Builder and OpenRTP name them): load it, then look again.
-        lock.unlock();
-        std::string loadError;
-        if (!findModuleFile(request.implementationId).empty()
-            && loadModule(request.implementationId, std::string(), &loadError))
-            lock.lock();
-        factory = lock.owns_lock() ? findFactory(request) : nullptr;
-    }
-    if (!factory) {
-        if (lock.owns_lock())
-            lock.unlock();
-        fail("create_component: unknown component type '" + request.implementationId + "'", error);
-        return RTC::RTObject::_nil();
-    }
-    Properties properties = factory->profile;
-    // The factory list may change while the hooks run unlocked: keep what is needed of it.
-    const std::function<RtObject *(PortableServer::POA_ptr)> create = factory->create;
-    for (const char *key : {"exec_cxt.periodic.rate", "exec_cxt.periodic.type", "exec_cxt.transition_timeout"}) {
-        if (m_config.contains(key))
-            properties.set(key, m_config.value(key));
-    }
+    return factory ? std::optional<ComponentFactory>(*factory) : std::nullopt;
+}
+
+bool Manager::readConfigFiles(Properties *properties, const std::string &instance, const std::string &requestedFile,
+                              std::string *error)
+{
     // OpenRTM's per-component configuration files: rtc.conf's `<category>.<type>.config_file`,
-    // then `<category>.<instance>.config_file`, then the request's own `config_file`; the
-    // request's keys apply last.
-    lock.unlock();
-    if (m_hooks.preConfigure)
-        m_hooks.preConfigure(properties);
-    lock.lock();
-    const std::string category = properties.value("category");
-    std::string instance = request.properties.value("instance_name");
-    if (instance.empty())
-        instance = uniqueInstanceName(properties.value("type_name", request.implementationId));
+    // then `<category>.<instance>.config_file`, then the request's own `config_file`.
+    const Properties config = configuration();
+    const std::string category = properties->value("category");
     const std::pair<std::string, bool> files[] = {
-        {m_config.value(category + '.' + properties.value("type_name") + ".config_file"), false},
-        {m_config.value(category + '.' + instance + ".config_file"), false},
-        {request.properties.value("config_file"), true}};
+        {config.value(category + '.' + properties->value("type_name") + ".config_file"), false},
+        {config.value(category + '.' + instance + ".config_file"), false},
+        {requestedFile, true}};
     for (const auto &[file, requested] : files) {
         if (file.empty())
             continue;
         std::ifstream in(file);
-        if (!in && !requested) {
+        if (!in && requested) {
+            *error = "create_component: cannot read config_file '" + file + "'";
+            return false;
+        }
+        if (!in) {
             // As in OpenRTM-aist, a file named in rtc.conf that is not there only costs its settings.
             std::cerr << "rtmanager: " << instance << ": cannot read config_file '" << file << "'" << std::endl;
             continue;
         }
-        if (!in) {
-            lock.unlock();
-            fail("create_component: cannot read config_file '" + file + "'", error);
-            return RTC::RTObject::_nil();
-        }
         std::stringstream text;
         text << in.rdbuf();
-        properties.merge(Properties::parseConf(text.str()));
+        properties->merge(Properties::parseConf(text.str()));
     }
-    properties.merge(request.properties);
-    if (m_hooks.postConfigure) {
-        lock.unlock();
-        m_hooks.postConfigure(properties);
-        lock.lock();
-    }
-    if (std::any_of(m_components.begin(), m_components.end(),
-                    [&instance](const auto &c) { return c->instanceName == instance; })) {
-        lock.unlock();
-        fail("create_component: instance name '" + instance + "' is already in use", error);
+    return true;
+}
+
+RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string *error)
+{
+    const std::optional<ComponentFactory> factory = factoryFor(request);
+    if (!factory) {
+        fail("create_component: unknown component type '" + request.implementationId + "'", error);
         return RTC::RTObject::_nil();
     }
+    Properties properties = factory->profile;
+    const Properties config = configuration();
+    for (const char *key : {"exec_cxt.periodic.rate", "exec_cxt.periodic.type", "exec_cxt.transition_timeout"}) {
+        if (config.contains(key))
+            properties.set(key, config.value(key));
+    }
+    if (m_hooks.preConfigure)
+        m_hooks.preConfigure(properties);
+    std::string problem;
+    const std::string instance = reserveInstanceName(request.properties.value("instance_name"),
+                                                     properties.value("type_name", request.implementationId), &problem);
+    if (instance.empty()) {
+        fail(problem, error);
+        return RTC::RTObject::_nil();
+    }
+    const bool configured = readConfigFiles(&properties, instance, request.properties.value("config_file"), &problem);
+    properties.merge(request.properties);
     properties.set("instance_name", instance);
+    if (configured && m_hooks.postConfigure)
+        m_hooks.postConfigure(properties);
     auto component = std::make_unique<Component>();
     component->instanceName = instance;
-    component->servant = create(m_poa);
-    // Reserve the name before initialising outside the lock.
+    if (configured)
+        component->servant = factory->create(m_poa);
     Component *record = component.get();
-    m_components.push_back(std::move(component));
-    lock.unlock();
+    {
+        std::lock_guard lock(m_mutex);
+        m_reservedNames.erase(instance);
+        if (configured)
+            m_components.push_back(std::move(component));
+    }
+    if (!configured) {
+        fail(problem, error);
+        return RTC::RTObject::_nil();
+    }
+    return initializeComponent(record, properties, error);
+}
 
+RTC::RTObject_ptr Manager::initializeComponent(Component *record, const Properties &properties, std::string *error)
+{
     record->servant->setProperties(properties);
     record->reference = record->servant->reference();
     if (m_hooks.preInitialize)
@@ -383,6 +412,7 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     if (m_hooks.postInitialize)
         m_hooks.postInitialize();
     if (result != RTC::RTC_OK) {
+        const std::string instance = record->instanceName;
         forget(record->servant);
         fail("create_component: " + instance + " failed to initialize", error);
         return RTC::RTObject::_nil();

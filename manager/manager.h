@@ -13,6 +13,8 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <set>
 #include <string>
 #include <sys/types.h>
 #include <thread>
@@ -144,8 +146,15 @@ private:
     bool initOrb(std::string *error);
     void destroyOrb();
     RTC::RTObject_ptr createLocal(const CreateRequest &request, std::string *error);
+    RTC::RTObject_ptr initializeComponent(Component *record, const Properties &properties, std::string *error);
     const ComponentFactory *findFactory(const CreateRequest &request);
-    std::string uniqueInstanceName(const std::string &typeName);
+    /// The factory of the requested type (a copy), loading `<Type>.so` from the load path if needed.
+    std::optional<ComponentFactory> factoryFor(const CreateRequest &request);
+    bool readConfigFiles(Properties *properties, const std::string &instance, const std::string &requestedFile,
+                         std::string *error);
+    /// Holds @p requested (or the first free `<type>N`) for a creation in progress; empty with @p error when taken.
+    std::string reserveInstanceName(const std::string &requested, const std::string &typeName, std::string *error);
+    bool instanceNameTaken(const std::string &name) const;
     void forget(RtObject *component);
     void registerNames(Component &component);
     void cleanup();
@@ -182,6 +191,7 @@ private:
     std::mutex m_spawnMutex;
     std::vector<ComponentFactory> m_factories;
     std::vector<std::unique_ptr<Component>> m_components;
+    std::set<std::string> m_reservedNames;
     std::vector<std::unique_ptr<Slave>> m_slaves;
     std::vector<std::unique_ptr<Module>> m_modules;
     ModuleInitCall m_moduleInitCall;
