@@ -5,7 +5,7 @@
 set(RTSTUDIO_OPENRTM_PREFIX "" CACHE PATH "OpenRTM-aist 2.x prefix for the interop tests (optional)")
 
 rtstudio_add_test(tst_interopbuild SOURCES tst_interopbuild.cpp common/sdkgreeteredits.h
-    LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
 target_compile_definitions(tst_interopbuild PRIVATE
     RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"

@@ -5,7 +5,7 @@ rtstudio_add_test(tst_sdkrtm SOURCES tst_sdkrtm.cpp LIBS rtsdk)
 target_include_directories(tst_sdkrtm PRIVATE ${PROJECT_SOURCE_DIR}/manager)
 set_tests_properties(tst_sdkrtm PROPERTIES LABELS sdk)
 
-rtstudio_add_test(tst_sdkgenerated SOURCES tst_sdkgenerated.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+rtstudio_add_test(tst_sdkgenerated SOURCES tst_sdkgenerated.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
 target_compile_definitions(tst_sdkgenerated PRIVATE
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"

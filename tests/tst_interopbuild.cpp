@@ -15,6 +15,7 @@
 #include "livesystem.h"
 #include "rtctlrunner.h"
 #include "sdkgreeteredits.h"
+#include "sdkproject.h"
 
 #include <RTC.hh>
 
@@ -39,19 +40,7 @@ void prependToPath(const char *name, const QString &dir)
 /// in `dir`/build; false with the tools' output in @p log.
 bool buildAgainstOpenRtm(const QString &dir, QString *log)
 {
-    QStringList configure {"-S",
-                           dir,
-                           "-B",
-                           dir + "/build",
-                           "-G",
-                           "Ninja",
-                           "-DCMAKE_BUILD_TYPE=Release",
-                           "-DCMAKE_PREFIX_PATH=" + openRtmPrefix};
-    const QString ccache = QStandardPaths::findExecutable("ccache");
-    if (!ccache.isEmpty())
-        configure << "-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache;
-    return SdkGreeter::runTool(CMAKE_COMMAND, configure, dir, 120000, log)
-        && SdkGreeter::runTool(CMAKE_COMMAND, {"--build", dir + "/build", "-j2"}, dir, 600000, log);
+    return SdkTest::buildProject(dir, openRtmPrefix, log);
 }
 
 /// How a process that should still run ended, with what it wrote.

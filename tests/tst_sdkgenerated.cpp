@@ -8,6 +8,7 @@
 #include "livesystem.h"
 #include "rtctlrunner.h"
 #include "sdkgreeteredits.h"
+#include "sdkproject.h"
 
 #include <RTC.hh>
 
@@ -84,14 +85,7 @@ void TestSdkGenerated::initTestCase()
     RtctlResult merged = runRtctl(generate + QStringList{"--merge"});
     QVERIFY2(merged.code == 0, qPrintable(merged.out + merged.err));
 
-    QStringList configure{"-S", m_project, "-B", m_project + "/build", "-G", "Ninja",
-                          "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_PREFIX_PATH=" RTSTUDIO_BUILD_DIR};
-    const QString ccache = QStandardPaths::findExecutable("ccache");
-    if (!ccache.isEmpty())
-        configure << "-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache;
-    QVERIFY2(SdkGreeter::runTool(CMAKE_COMMAND, configure, m_project, 120000, &m_buildLog), qPrintable(m_buildLog));
-    QVERIFY2(SdkGreeter::runTool(CMAKE_COMMAND, {"--build", m_project + "/build", "-j2"}, m_project, 600000, &m_buildLog),
-             qPrintable(m_buildLog));
+    QVERIFY2(SdkTest::buildProject(m_project, RTSTUDIO_BUILD_DIR, &m_buildLog), qPrintable(m_buildLog));
     QVERIFY(QFile::exists(m_project + "/build/src/SdkGreeter.so"));
     QVERIFY(QFile::exists(m_project + "/build/src/SdkGreeterComp"));
 

@@ -7,7 +7,6 @@
 
 #include <QByteArray>
 #include <QFile>
-#include <QProcess>
 #include <QString>
 #include <QStringList>
 
@@ -81,25 +80,6 @@ inline bool applyEdit(const QString &root, const UserEdit &edit, QString *error)
         return false;
     }
     return true;
-}
-
-/// Runs a build tool; false with its output in @p log when it fails or runs past @p timeoutMs.
-inline bool runTool(const QString &program, const QStringList &arguments, const QString &cwd, int timeoutMs,
-                    QString *log)
-{
-    QProcess process;
-    process.setWorkingDirectory(cwd);
-    process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(program, arguments);
-    const bool finished = process.waitForFinished(timeoutMs);
-    *log = QString::fromLocal8Bit(process.readAll());
-    if (!finished) {
-        process.kill();
-        process.waitForFinished(5000);
-        *log += "\n(timed out)";
-        return false;
-    }
-    return process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
 }
 
 } // namespace SdkGreeter
