@@ -8,6 +8,8 @@
 #include "rtctlrunner.h"
 #include "sdkproject.h"
 
+#include <idltypelibrary.h>
+
 #include <QtTest>
 
 class TestSdkFixtures : public QObject
@@ -19,6 +21,7 @@ private slots:
     void generatedProjectRuns_data();
     void generatedProjectRuns();
     void examplesConnectToBuiltins();
+    void everyDataTypeTheBuilderOffers();
 
 private:
     RtctlResult rtctl(const QStringList &arguments);
@@ -128,6 +131,69 @@ void TestSdkFixtures::examplesConnectToBuiltins()
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     for (const QString &component : all)
         QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", component}).out.contains("Active"), 10000);
+}
+
+namespace {
+
+/// An RTC profile with one data port of every type in @p types, ins and outs alternating.
+QByteArray everyTypeProfile(const Codegen::IdlTypeLibrary &library, const QList<Codegen::IdlDataType> &types)
+{
+    QByteArray ports;
+    int index = 0;
+    for (const Codegen::IdlDataType &type : types) {
+        const QString file = QFileInfo(library.fileOf(type.scopedName)).fileName();
+        ports += QStringLiteral("    <rtc:DataPorts xsi:type=\"rtcExt:dataport_ext\" rtcExt:position=\"LEFT\" "
+                                "rtc:idlFile=\"%1\" rtc:type=\"%2\" rtc:name=\"p%3\" rtc:portType=\"%4\"/>\n")
+                     .arg(file, type.scopedName)
+                     .arg(index)
+                     .arg(index % 2 ? QStringLiteral("DataOutPort") : QStringLiteral("DataInPort"))
+                     .toUtf8();
+        ++index;
+    }
+    return QByteArrayLiteral(
+               "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n"
+               "<rtc:RtcProfile rtc:version=\"0.3\" rtc:id=\"RTC:RTStudioTests:Test:EveryType:1.0.0\" "
+               "xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\" "
+               "xmlns:rtcExt=\"http://www.openrtp.org/namespaces/rtc_ext\" "
+               "xmlns:rtcDoc=\"http://www.openrtp.org/namespaces/rtc_doc\" "
+               "xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\">\n"
+               "    <rtc:BasicInfo xsi:type=\"rtcExt:basic_info_ext\" rtc:version=\"1.0.0\" "
+               "rtc:vendor=\"RTStudioTests\" rtc:maxInstances=\"1\" rtc:executionType=\"PeriodicExecutionContext\" "
+               "rtc:executionRate=\"10.0\" rtc:description=\"A port of every data type\" rtc:category=\"Test\" "
+               "rtc:componentKind=\"DataFlowComponent\" rtc:activityType=\"PERIODIC\" "
+               "rtc:componentType=\"STATIC\" rtc:name=\"EveryType\"/>\n")
+           + ports
+           + QByteArrayLiteral("    <rtc:Language xsi:type=\"rtcExt:language_ext\" rtc:kind=\"C++\"/>\n"
+                               "</rtc:RtcProfile>\n");
+}
+
+} // namespace
+
+void TestSdkFixtures::everyDataTypeTheBuilderOffers()
+{
+    // The Builder's data type list comes from the bundled OpenRTM IDL, as here.
+    const Codegen::IdlTypeLibrary library({QStringLiteral(RTSTUDIO_SOURCE_DIR "/corba/idl")});
+    const QList<Codegen::IdlDataType> types = library.dataTypes();
+    QVERIFY2(types.size() > 100, qPrintable(QString::number(types.size())));
+    QFile profile(m_work.filePath("EveryType.xml"));
+    QVERIFY(profile.open(QIODevice::WriteOnly));
+    profile.write(everyTypeProfile(library, types));
+    profile.close();
+    const QString dir = generateAndBuild(profile.fileName(), "EveryType", {});
+    QVERIFY2(!dir.isEmpty(), "a port of every data type builds against the SDK");
+    const RtctlResult r = rtctl({"mgr", host() + "/manager.mgr", "load", dir + "/build/src/EveryType.so", "create",
+                                 "EveryType"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    const RtctlResult ports = rtctl({"cat", "-l", "EveryType0.rtc"});
+    QVERIFY2(ports.code == 0, qPrintable(ports.err));
+    for (const Codegen::IdlDataType &type : types) {
+        // RTC.idl and SDOPackage.idl put their ids under a prefix (omg.org, org.omg).
+        const QString path = QString(type.scopedName).replace("::", "/");
+        const QRegularExpression id("IDL:([\\w.]+/)?" + QRegularExpression::escape(path) + ":1\\.0\\b");
+        QVERIFY2(ports.out.contains(id), qPrintable(type.scopedName));
+    }
+    QVERIFY(rtctl({"act", "EveryType0.rtc"}).code == 0);
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", "EveryType0.rtc"}).out.contains("Active"), 10000);
 }
 
 QTEST_GUILESS_MAIN(TestSdkFixtures)
