@@ -167,7 +167,7 @@ void TestCorbaClient::readsComponentProfileAndPorts()
     const PortInfo service = component("MyServiceProvider0").port("MyService");
     QVERIFY(service.isService());
     QCOMPARE(service.interfaces.size(), size_t(1));
-    QCOMPARE(service.interfaces[0].instanceName, QString("myservice0"));
+    QCOMPARE(service.interfaces[0].instanceName, QString("myservice"));
     QCOMPARE(service.interfaces[0].typeName, QString("SimpleService::MyService"));
     QVERIFY(service.interfaces[0].provided);
     QCOMPARE(component("SeqIn0").ports().size(), size_t(2));

@@ -54,8 +54,8 @@ PortInfo service(const QString &name, std::vector<PortInterfaceInfo> interfaces)
     return port;
 }
 
-const PortInterfaceInfo provided {"myservice0", "SimpleService::MyService", true};
-const PortInterfaceInfo required {"myservice0", "SimpleService::MyService", false};
+const PortInterfaceInfo provided {"myservice", "SimpleService::MyService", true};
+const PortInterfaceInfo required {"myservice", "SimpleService::MyService", false};
 const PortInterfaceInfo otherRequired {"other0", "SimpleService::MyService", false};
 
 } // namespace
@@ -136,10 +136,10 @@ void TestCorbaClientConnect::checks_data()
                                   << none << "";
     QTest::newRow("service same polarity")
         << std::vector<PortInfo> {service("P0.s", {provided}), service("Q0.s", {provided})} << none
-        << "interface 'myservice0' of P0.s has no required counterpart in Q0.s";
+        << "interface 'myservice' of P0.s has no required counterpart in Q0.s";
     QTest::newRow("service instance names differ")
         << std::vector<PortInfo> {service("C0.s", {required}), service("D0.s", {otherRequired})}
-        << none << "interface 'myservice0' of C0.s has no provided counterpart in D0.s";
+        << none << "interface 'myservice' of C0.s has no provided counterpart in D0.s";
     QTest::newRow("service to data")
         << std::vector<PortInfo> {service("P0.s", {provided}), in("B0.in")} << none
         << "B0.in is not a service port";

@@ -116,7 +116,7 @@ void TestCorbaClientManager::readsProfilesAndPorts()
              qPrintable(propertyValue(out.properties, "dataport.data_type")));
     const PortInfo service = component("MyServiceProvider0").port("MyService");
     QVERIFY(service.isService());
-    QCOMPARE(service.interfaces.at(0).instanceName, QString("myservice0"));
+    QCOMPARE(service.interfaces.at(0).instanceName, QString("myservice"));
     const auto contexts = component("ConsoleIn0").executionContexts();
     QVERIFY(!contexts.empty());
     QVERIFY(contexts[0].owned);

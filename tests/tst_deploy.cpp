@@ -212,7 +212,7 @@ void TestDeploy::configurationAndRates()
     QCOMPARE(conf.activeConfigurationSet(), QString("mode0"));
     QCOMPARE(conf.parameter("default", "int_param0"), QString("7"));
     QCOMPARE(conf.parameter("mode0", "str_param0"), QString("restored"));
-    QCOMPARE(conf.parameter("mode0", "int_param1"), QString("-12345"));
+    QCOMPARE(conf.parameter("mode0", "int_param1"), QString("98765"));
     QCOMPARE(conf.parameter("extra", "int_param0"), QString("42"));
     QCOMPARE(conf.executionContexts().front().rate, 50.0);
 

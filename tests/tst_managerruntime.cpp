@@ -4,6 +4,7 @@
 // byte orders) and service ports, driven through their CORBA interfaces as tools would.
 #include "builtins.h"
 #include "createrequest.h"
+#include "portbase.h"
 #include "rtobject.h"
 #include "ringbuffer.h"
 
@@ -106,6 +107,11 @@ private slots:
     void connectorBufferPolicy();
     void connectRejectsMismatch_data();
     void connectRejectsMismatch();
+    void sameDataType_data();
+    void sameDataType();
+    void connectDataTypeSpellings_data();
+    void connectDataTypeSpellings();
+    void controlLoop();
     void servicePort();
 
 private:
@@ -437,7 +443,7 @@ void TestManagerRuntime::configurationSets()
     QCOMPARE(nv(active->configuration_data, "int_param1"), QString("77"));
     QCOMPARE(statusOf(rtc, "int_param1"), QString("77"));
     SDOPackage::ConfigurationSet_var widget = config->get_configuration_set("__widget__");
-    QCOMPARE(nv(widget->configuration_data, "int_param0"), QString("slider.1"));
+    QCOMPARE(nv(widget->configuration_data, "int_param0"), QString("slider.10"));
 
     // Activation reaches the variables in the EC thread once the component runs.
     RTC::ExecutionContext_var ec = ownedContext(rtc);
@@ -639,21 +645,113 @@ void TestManagerRuntime::connectRejectsMismatch()
     QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
 }
 
+void TestManagerRuntime::sameDataType_data()
+{
+    // OpenRTM-aist 1.x saves the short forms; 2.x and our ports use repository ids.
+    QTest::addColumn<QString>("a");
+    QTest::addColumn<QString>("b");
+    QTest::addColumn<bool>("same");
+    QTest::newRow("bare name") << "TimedFloat" << "IDL:RTC/TimedFloat:1.0" << true;
+    QTest::newRow("scoped name") << "RTC::TimedFloat" << "IDL:RTC/TimedFloat:1.0" << true;
+    QTest::newRow("repository id") << "IDL:RTC/TimedFloat:1.0" << "IDL:RTC/TimedFloat:1.0" << true;
+    QTest::newRow("bare and scoped") << "TimedFloat" << "RTC::TimedFloat" << true;
+    QTest::newRow("other version") << "IDL:RTC/TimedFloat:1.1" << "RTC::TimedFloat" << true;
+    QTest::newRow("nested module") << "IDL:Ext/Sub/Pose:1.0" << "Ext::Sub::Pose" << true;
+    QTest::newRow("bare, other type") << "TimedLong" << "IDL:RTC/TimedFloat:1.0" << false;
+    QTest::newRow("scoped, other type") << "RTC::TimedLong" << "IDL:RTC/TimedFloat:1.0" << false;
+    QTest::newRow("sequence of it") << "TimedFloatSeq" << "IDL:RTC/TimedFloat:1.0" << false;
+    QTest::newRow("other module") << "Ext::TimedFloat" << "IDL:RTC/TimedFloat:1.0" << false;
+    QTest::newRow("other module, ids") << "IDL:Ext/TimedFloat:1.0" << "IDL:RTC/TimedFloat:1.0" << false;
+}
+
+void TestManagerRuntime::sameDataType()
+{
+    QFETCH(QString, a);
+    QFETCH(QString, b);
+    QFETCH(bool, same);
+    QCOMPARE(Runtime::sameDataType(a.toStdString(), b.toStdString()), same);
+    QCOMPARE(Runtime::sameDataType(b.toStdString(), a.toStdString()), same);
+}
+
+void TestManagerRuntime::connectDataTypeSpellings_data()
+{
+    QTest::addColumn<QString>("dataType");
+    QTest::addColumn<bool>("accepted");
+    QTest::newRow("bare") << "TimedFloat" << true;
+    QTest::newRow("scoped") << "RTC::TimedFloat" << true;
+    QTest::newRow("repository id") << "IDL:RTC/TimedFloat:1.0" << true;
+    QTest::newRow("bare, other type") << "TimedLong" << false;
+    QTest::newRow("repository id, other type") << "IDL:RTC/TimedLong:1.0" << false;
+    QTest::newRow("other module") << "Ext::TimedFloat" << false;
+}
+
+// Sensor.out and Controller.in carry RTC::TimedFloat: every spelling of it connects, others do not.
+void TestManagerRuntime::connectDataTypeSpellings()
+{
+    QFETCH(QString, dataType);
+    QFETCH(bool, accepted);
+    RtObject *sensor = create("Sensor", "S5");
+    RtObject *controller = create("Controller", "C5");
+    RTC::RTObject_var s = sensor->reference();
+    RTC::RTObject_var c = controller->reference();
+    RTC::PortService_var outPort = port(s, "out");
+    RTC::PortService_var inPort = port(c, "in");
+    Properties p;
+    p.set("dataport.data_type", dataType.toStdString());
+    QCOMPARE(connect(outPort, inPort, p), accepted ? RTC::RTC_OK : RTC::BAD_PARAMETER);
+    RTC::ConnectorProfileList_var onIn = inPort->get_connector_profiles();
+    QCOMPARE(onIn->length(), CORBA::ULong(accepted ? 1 : 0));
+}
+
+// ConsoleIn → Sensor (TimedLong → TimedFloat) → Controller → Motor (TimedFloat → TimedLong, plus
+// motor_id) → ConsoleOut: the values arrive converted and shifted by the motor's id.
+void TestManagerRuntime::controlLoop()
+{
+    RtObject *source = create("ConsoleIn", "CI7");
+    RtObject *sensor = create("Sensor", "S7");
+    RtObject *controller = create("Controller", "C7");
+    RtObject *motor = create("Motor", "M7", Properties::parseConf("conf.default.motor_id: 1000\n"));
+    RtObject *sink = create("ConsoleOut", "CO7");
+    QVERIFY(source && sensor && controller && motor && sink);
+    const std::vector<RtObject *> chain {source, sensor, controller, motor, sink};
+    for (size_t i = 0; i + 1 < chain.size(); ++i) {
+        RTC::RTObject_var from = chain[i]->reference();
+        RTC::RTObject_var to = chain[i + 1]->reference();
+        RTC::PortService_var out = port(from, "out");
+        RTC::PortService_var in = port(to, "in");
+        QCOMPARE(connect(out, in, {}), RTC::RTC_OK);
+    }
+    for (RtObject *component : chain) {
+        RTC::RTObject_var rtc = component->reference();
+        RTC::ExecutionContext_var ec = ownedContext(rtc);
+        QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    }
+    RTC::RTObject_var out = sink->reference();
+    RTC::RTObject_var in = source->reference();
+    RTC::RTObject_var s = sensor->reference();
+    QTRY_VERIFY(statusNumber(out, "received_count") > 5);
+    const long last = statusNumber(out, "last_value");
+    QVERIFY2(last > 1000 && last <= 1000 + statusNumber(in, "sent_count"), qPrintable(QString::number(last)));
+    // Sensor reports what it sent as a float: whole numbers without a fraction.
+    QVERIFY(!statusOf(s, "last_value").contains('.'));
+}
+
 void TestManagerRuntime::servicePort()
 {
     RtObject *provider = create("MyServiceProvider", "P0");
-    RtObject *consumer = create("MyServiceConsumer", "C0", Properties::parseConf("conf.default.interval: 5\n"));
+    RtObject *consumer = create("MyServiceConsumer", "C0");
     RTC::RTObject_var p = provider->reference();
     RTC::RTObject_var c = consumer->reference();
     RTC::PortService_var pPort = port(p, "MyService");
     RTC::PortService_var cPort = port(c, "MyService");
     RTC::PortProfile_var profile = pPort->get_port_profile();
     QCOMPARE(profile->interfaces.length(), CORBA::ULong(1));
+    QCOMPARE(QByteArray(profile->interfaces[0].instance_name), QByteArray("myservice"));
     QCOMPARE(QByteArray(profile->interfaces[0].type_name), QByteArray("SimpleService::MyService"));
     QCOMPARE(profile->interfaces[0].polarity, RTC::PROVIDED);
     RTC::ConnectorProfile connected;
     QCOMPARE(connect(cPort, pPort, {}, &connected), RTC::RTC_OK);
-    QVERIFY(nv(connected.properties, "port.SimpleService::MyService.myservice0").startsWith("IOR:"));
+    QVERIFY(nv(connected.properties, "port.SimpleService::MyService.myservice").startsWith("IOR:"));
     RTC::ExecutionContext_var ec = ownedContext(c);
     QCOMPARE(ec->activate_component(c), RTC::RTC_OK);
     QTRY_VERIFY(statusNumber(c, "echo_count") >= 3);

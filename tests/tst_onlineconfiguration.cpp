@@ -236,7 +236,7 @@ void TestOnlineConfiguration::showsSetsAndWidgets()
     QVERIFY(view.shownSets().contains("__widget__"));
     QVERIFY(view.shownSets().contains("__constraints__"));
     view.selectSet("__widget__");
-    QCOMPARE(view.editor("int_param0")->value(), QStringLiteral("slider.1"));
+    QCOMPARE(view.editor("int_param0")->value(), QStringLiteral("slider.10"));
     QVERIFY(qobject_cast<QLineEdit *>(view.editor("int_param0")->input()));
     view.setDetailMode(false);
     QVERIFY(!view.shownSets().contains("__widget__"));
@@ -249,11 +249,11 @@ void TestOnlineConfiguration::refusesInvalidValues()
     ConfigurationView view(&session);
     load(view);
     view.selectSet("mode0");
-    ParameterEditor *editor = view.editor("int_param1"); // spin, 0<=x<=1000, mode0 holds -12345
+    ParameterEditor *editor = view.editor("int_param1"); // spin, 0<=x<=1000, mode0 holds 98765
     QVERIFY(!editor->error().isEmpty()); // the live value is shown with its reason
     auto *errorLabel = editor->findChild<QLabel *>("error_int_param1");
     QVERIFY(!errorLabel->text().isEmpty());
-    QCOMPARE(editor->value(), QStringLiteral("-12345")); // not clamped by the spin box
+    QCOMPARE(editor->value(), QStringLiteral("98765")); // not clamped by the spin box
     QVERIFY(!view.canApply()); // nothing edited yet
 
     ParameterEditor *text = view.editor("double_param1"); // text, no constraint
@@ -278,7 +278,7 @@ void TestOnlineConfiguration::appliesToTheLiveComponent()
     QVERIFY(text);
     text->setText("applied-value");
     auto *slider = qobject_cast<QSlider *>(view.editor("int_param0")->input());
-    slider->setValue(42);
+    slider->setValue(4); // slider.10: the fourth step is 40
     auto *apply = view.findChild<QPushButton *>("applyButton");
     QStringList errors;
     for (const char *name : {"int_param0", "int_param1", "double_param0", "double_param1",
@@ -292,8 +292,8 @@ void TestOnlineConfiguration::appliesToTheLiveComponent()
     QCOMPARE(finished.at(0).at(0).toString(), QString());
     QVERIFY(loaded.wait(10000));
     QCOMPARE(sample().parameter("default", "str_param1"), QStringLiteral("applied-value"));
-    QCOMPARE(sample().parameter("default", "int_param0"), QStringLiteral("42"));
-    QCOMPARE(view.editor("int_param0")->value(), QStringLiteral("42"));
+    QCOMPARE(sample().parameter("default", "int_param0"), QStringLiteral("40"));
+    QCOMPARE(view.editor("int_param0")->value(), QStringLiteral("40"));
     QVERIFY(!apply->isEnabled());
 }
 

@@ -140,7 +140,7 @@ void TestRtctlRt::catShowsComponentsPortsAndManagers()
     QCOMPARE(port.code, 0);
     QCOMPARE(port.lines(),
              QStringList({"  CorbaPort: MyService",
-                          "    Interface  myservice0  SimpleService::MyService  Provided"}));
+                          "    Interface  myservice  SimpleService::MyService  Provided"}));
     const Result json = rtctl({"cat", "--json", "ConsoleIn0.rtc"});
     QCOMPARE(json.json().object()["typeName"].toString(), QString("ConsoleIn"));
     QCOMPARE(json.json().object()["executionContexts"][0]["kind"].toString(), QString("PERIODIC"));

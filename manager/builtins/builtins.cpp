@@ -14,7 +14,7 @@ Properties exampleProfile(const std::string &typeName, const std::string &descri
     p.set("category", "example");
     p.set("activity_type", "PERIODIC");
     p.set("kind", "DataFlowComponent");
-    p.set("max_instance", "0");
+    p.set("max_instance", "10");
     p.set("language", "C++");
     p.set("lang_type", "compile");
     return p;

@@ -101,8 +101,8 @@ private:
 
 std::vector<ComponentFactory> consoleFactories()
 {
-    return {builtinFactory<ConsoleIn>("ConsoleIn", "Console input component (a counter)"),
-            builtinFactory<ConsoleOut>("ConsoleOut", "Console output component (counts what it receives)")};
+    return {builtinFactory<ConsoleIn>("ConsoleIn", "Console input component"),
+            builtinFactory<ConsoleOut>("ConsoleOut", "Console output component")};
 }
 
 } // namespace Runtime

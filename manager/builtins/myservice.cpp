@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // MyServiceProvider / MyServiceConsumer: OpenRTM-aist's service port example over
-// SimpleService::MyService. The consumer calls echo() every `interval` executions once connected.
+// SimpleService::MyService, interface instance "myservice" on port "MyService" as there. Like
+// OpenRTM-aist's consumer it has no configuration; instead of reading commands from the console it
+// calls echo() every hundredth execution once connected (status `echo_count`, `last_reply`).
 #include "builtins.h"
 #include "factorytemplate.h"
 
@@ -66,7 +68,7 @@ protected:
     RTC::ReturnCode_t onInitialize() override
     {
         ServicePort *port = addServicePort("MyService");
-        port->registerProvider("myservice0", "SimpleService::MyService", new MyServiceServant);
+        port->registerProvider("myservice", "SimpleService::MyService", new MyServiceServant);
         return RTC::RTC_OK;
     }
 };
@@ -79,21 +81,13 @@ public:
 protected:
     RTC::ReturnCode_t onInitialize() override
     {
-        configuration().bindParameter("interval", "100", [this](const std::string &text) {
-            try {
-                m_interval = std::max(1, std::stoi(text));
-                return true;
-            } catch (...) {
-                return false;
-            }
-        });
         ServicePort *port = addServicePort("MyService");
-        m_service = port->registerConsumer("myservice0", "SimpleService::MyService");
+        m_service = port->registerConsumer("myservice", "SimpleService::MyService");
         return RTC::RTC_OK;
     }
     RTC::ReturnCode_t onExecute(RTC::ExecutionContextHandle_t) override
     {
-        if (++m_ticks % m_interval != 0)
+        if (++m_ticks % kCallInterval != 0)
             return RTC::RTC_OK;
         CORBA::Object_var object = m_service->object();
         if (CORBA::is_nil(object))
@@ -112,7 +106,7 @@ protected:
 
 private:
     std::shared_ptr<ConsumerSlot> m_service;
-    int m_interval = 100;
+    static constexpr long kCallInterval = 100;
     long m_ticks = 0;
     long m_calls = 0;
 };
@@ -121,8 +115,8 @@ private:
 
 std::vector<ComponentFactory> serviceFactories()
 {
-    return {builtinFactory<MyServiceProvider>("MyServiceProvider", "MyService provider component"),
-            builtinFactory<MyServiceConsumer>("MyServiceConsumer", "MyService consumer component")};
+    return {builtinFactory<MyServiceProvider>("MyServiceProvider", "MyService Provider Sample component"),
+            builtinFactory<MyServiceConsumer>("MyServiceConsumer", "MyService Consumer Sample component")};
 }
 
 } // namespace Runtime

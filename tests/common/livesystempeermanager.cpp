@@ -36,7 +36,7 @@ RTC::PortProfile servicePort(bool provided)
     RTC::PortProfile profile;
     setNV(profile.properties, "port.port_type", "CorbaPort");
     profile.interfaces.length(1);
-    profile.interfaces[0].instance_name = "myservice0";
+    profile.interfaces[0].instance_name = "myservice";
     profile.interfaces[0].type_name = "SimpleService::MyService";
     profile.interfaces[0].polarity = provided ? RTC::PROVIDED : RTC::REQUIRED;
     return profile;
