@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 
 namespace Runtime {
 
@@ -94,8 +95,19 @@ void OutPortPushConnector::send(const CdrBytes &data)
     OpenRTM::CdrData cdr(length, length, const_cast<CORBA::Octet *>(data.data()), false);
     try {
         m_peer->put(cdr);
-    } catch (const CORBA::Exception &) {
-        // The peer is gone or slow; the sample is lost as with OpenRTM's CONNECTION_LOST.
+        m_failing = false;
+    } catch (const CORBA::Exception &e) {
+        // The peer is gone or slow; the sample is lost as with OpenRTM's CONNECTION_LOST. Say so
+        // once: a sample over omniORB's message size limit fails here on every write.
+        if (!m_failing.exchange(true)) {
+            const bool tooLarge = CORBA::MARSHAL::_downcast(&e) != nullptr;
+            std::cerr << "rtmanager: connection " << id() << ": a " << data.size()
+                      << "-byte sample was not delivered (" << describeException(e) << ")"
+                      << (tooLarge ? "; samples over omniORB's message limit (2 MiB by default) need "
+                                     "corba.args: -ORBgiopMaxMsgSize <bytes> on both sides"
+                                   : "")
+                      << std::endl;
+        }
     }
 }
 

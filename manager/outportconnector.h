@@ -6,6 +6,7 @@
 
 #include <DataPort.hh>
 
+#include <atomic>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -67,6 +68,8 @@ private:
     int m_skip = 0;
     int m_skipped = 0;
     std::thread m_thread;
+    /// A failing connection is reported once until a sample gets through again.
+    std::atomic<bool> m_failing{false};
 };
 
 /// Servant answering OutPortCdr::get from a pull connection's buffer.
