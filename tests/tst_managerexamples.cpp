@@ -8,6 +8,8 @@
 #include <Manager.hh>
 #include <omniORB4/omniORB.h>
 
+#include "common/nvlist.h"
+
 #include <QtTest>
 
 #include <map>
@@ -136,16 +138,6 @@ const ExampleFact &fact(const QString &type)
             return f;
     }
     qFatal("no facts for %s", qPrintable(type));
-}
-
-QString nv(const SDOPackage::NVList &list, const char *name)
-{
-    for (CORBA::ULong i = 0; i < list.length(); ++i) {
-        const char *text = nullptr;
-        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
-            return QString::fromUtf8(text);
-    }
-    return {};
 }
 
 QStringList names(const SDOPackage::NVList &list)

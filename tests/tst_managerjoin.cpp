@@ -8,6 +8,8 @@
 #include <Manager.hh>
 #include <omniORB4/omniORB.h>
 
+#include "common/nvlist.h"
+
 #include <QtTest>
 
 #include <atomic>
@@ -17,16 +19,6 @@
 namespace {
 
 constexpr int SlaveCount = 5;
-
-QString nv(const SDOPackage::NVList &list, const char *name)
-{
-    for (CORBA::ULong i = 0; i < list.length(); ++i) {
-        const char *text = nullptr;
-        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
-            return QString::fromUtf8(text);
-    }
-    return {};
-}
 
 // A process that has exited, also when nobody has reaped it yet (slaves orphaned by their master).
 bool gone(pid_t pid)

@@ -8,6 +8,8 @@
 #include <omniORB4/Naming.hh>
 #include <omniORB4/omniORB.h>
 
+#include "common/nvlist.h"
+
 #include <QtTest>
 
 #include <csignal>
@@ -20,16 +22,6 @@ QString localHost()
     char name[256] = {};
     gethostname(name, sizeof name - 1);
     return QString::fromLocal8Bit(name);
-}
-
-QString nv(const SDOPackage::NVList &list, const char *name)
-{
-    for (CORBA::ULong i = 0; i < list.length(); ++i) {
-        const char *text = nullptr;
-        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
-            return QString::fromUtf8(text);
-    }
-    return {};
 }
 
 void setNv(SDOPackage::NVList &list, const char *name, const QString &value)

@@ -8,6 +8,8 @@
 #include "rtobject.h"
 #include "ringbuffer.h"
 
+#include "common/nvlist.h"
+
 #include <QtTest>
 
 #include <omniORB4/omniORB.h>
@@ -65,16 +67,6 @@ void setNv(SDOPackage::NVList &list, const char *name, const char *value)
     list.length(n + 1);
     list[n].name = name;
     list[n].value <<= value;
-}
-
-QString nv(const SDOPackage::NVList &list, const char *name)
-{
-    for (CORBA::ULong i = 0; i < list.length(); ++i) {
-        const char *text = nullptr;
-        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
-            return QString::fromUtf8(text);
-    }
-    return {};
 }
 
 } // namespace

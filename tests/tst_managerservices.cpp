@@ -7,21 +7,13 @@
 #include <omniORB4/Naming.hh>
 #include <omniORB4/omniORB.h>
 
+#include "common/nvlist.h"
+
 #include <QtTest>
 
 #include <csignal>
 
 namespace {
-
-QString nv(const SDOPackage::NVList &list, const char *name)
-{
-    for (CORBA::ULong i = 0; i < list.length(); ++i) {
-        const char *text = nullptr;
-        if (QByteArray(list[i].name) == name && (list[i].value >>= text))
-            return QString::fromUtf8(text);
-    }
-    return {};
-}
 
 QStringList instanceNames(const RTC::ComponentProfileList &profiles)
 {
