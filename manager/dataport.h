@@ -33,17 +33,26 @@ private:
     std::string m_dataType;
 };
 
-/// Marshals @p value as CDR in the given byte order.
+/**
+ * Marshals @p value as CDR in the given byte order into this thread's stream, which is kept
+ * between calls (a large sample does not regrow a buffer each time). The view is valid until the
+ * thread marshals again.
+ */
 template <typename T>
-CdrBytes marshal(const T &value, bool littleEndian)
+CdrView marshalView(const T &value, bool littleEndian)
 {
-    // One stream per thread, kept between calls: a large sample does not regrow its buffer each time.
     thread_local cdrMemoryStream stream;
     stream.rewindPtrs();
     stream.setByteSwapFlag(littleEndian);
     value >>= stream;
-    const auto *begin = static_cast<const unsigned char *>(stream.bufPtr());
-    return CdrBytes(begin, begin + stream.bufSize());
+    return {static_cast<const unsigned char *>(stream.bufPtr()), size_t(stream.bufSize())};
+}
+
+/// Marshals @p value as CDR in the given byte order.
+template <typename T>
+CdrBytes marshal(const T &value, bool littleEndian)
+{
+    return marshalView(value, littleEndian).bytes();
 }
 
 /// Unmarshals @p data into @p value; false when the bytes do not hold a T.

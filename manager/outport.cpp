@@ -15,7 +15,7 @@ OutPortBase::OutPortBase(const std::string &name, const std::string &dataType, P
 
 OutPortBase::~OutPortBase() = default;
 
-void OutPortBase::writeMarshalled(const std::function<CdrBytes(bool littleEndian)> &marshalIn)
+void OutPortBase::writeMarshalled(const std::function<CdrView(bool littleEndian)> &marshalIn)
 {
     std::vector<std::shared_ptr<OutPortConnector>> connectors;
     {
@@ -25,20 +25,17 @@ void OutPortBase::writeMarshalled(const std::function<CdrBytes(bool littleEndian
                 connectors.push_back(connector);
         }
     }
-    CdrBytes little;
-    CdrBytes big;
-    bool haveLittle = false;
-    bool haveBig = false;
-    for (const auto &connector : connectors) {
-        // Marshal once per byte order in use, not once per connection.
-        if (connector->littleEndian()) {
-            if (!haveLittle)
-                little = marshalIn(true), haveLittle = true;
-            connector->write(little);
-        } else {
-            if (!haveBig)
-                big = marshalIn(false), haveBig = true;
-            connector->write(big);
+    // Marshal once per byte order in use, not once per connection: all connections of one order
+    // are served before the view of the other is made.
+    for (const bool littleEndian : {true, false}) {
+        CdrView view;
+        bool marshalled = false;
+        for (const auto &connector : connectors) {
+            if (connector->littleEndian() != littleEndian)
+                continue;
+            if (!marshalled)
+                view = marshalIn(littleEndian), marshalled = true;
+            connector->write(view);
         }
     }
 }

@@ -19,8 +19,11 @@ public:
     OutPortBase(const std::string &name, const std::string &dataType, PortableServer::POA_ptr poa);
     ~OutPortBase() override;
 
-    /// Sends one sample; @p marshalIn produces its bytes in the requested byte order (called at most twice).
-    void writeMarshalled(const std::function<CdrBytes(bool littleEndian)> &marshalIn);
+    /**
+     * Sends one sample; @p marshalIn produces its bytes in the requested byte order (called at
+     * most twice; each view only has to last until the next call).
+     */
+    void writeMarshalled(const std::function<CdrView(bool littleEndian)> &marshalIn);
     /**
      * Leaves connection @p connectorId out of writeMarshalled() (@p bypassed true) or takes it back:
      * the SDK hands such samples to an InPort of the same process itself, without marshalling.
@@ -51,7 +54,7 @@ public:
     }
     void write(const T &value)
     {
-        writeMarshalled([&value](bool littleEndian) { return marshal(value, littleEndian); });
+        writeMarshalled([&value](bool littleEndian) { return marshalView(value, littleEndian); });
     }
 };
 

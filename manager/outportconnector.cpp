@@ -69,7 +69,7 @@ OutPortPushConnector::~OutPortPushConnector()
         m_thread.join();
 }
 
-void OutPortPushConnector::write(const CdrBytes &data)
+void OutPortPushConnector::write(const CdrView &data)
 {
     switch (m_mode) {
     case Mode::Flush:
@@ -77,22 +77,22 @@ void OutPortPushConnector::write(const CdrBytes &data)
         break;
     case Mode::New: {
         std::lock_guard lock(m_mutex);
-        m_newest = data;
+        m_newest.assign(data.data, data.data + data.size);
         m_hasNewest = true;
         m_wake.notify_all();
         break;
     }
     case Mode::Periodic:
-        m_buffer.write(data);
+        m_buffer.write(data.bytes());
         break;
     }
 }
 
-void OutPortPushConnector::send(const CdrBytes &data)
+void OutPortPushConnector::send(const CdrView &data)
 {
     // The sequence borrows the bytes (release = false): nothing is copied before the ORB sends them.
-    const auto length = CORBA::ULong(data.size());
-    OpenRTM::CdrData cdr(length, length, const_cast<CORBA::Octet *>(data.data()), false);
+    const auto length = CORBA::ULong(data.size);
+    OpenRTM::CdrData cdr(length, length, const_cast<CORBA::Octet *>(data.data), false);
     try {
         m_peer->put(cdr);
         m_failing = false;
@@ -101,7 +101,7 @@ void OutPortPushConnector::send(const CdrBytes &data)
         // once: a sample over omniORB's message size limit fails here on every write.
         if (!m_failing.exchange(true)) {
             const bool tooLarge = CORBA::MARSHAL::_downcast(&e) != nullptr;
-            std::cerr << "rtmanager: connection " << id() << ": a " << data.size()
+            std::cerr << "rtmanager: connection " << id() << ": a " << data.size
                       << "-byte sample was not delivered (" << describeException(e) << ")"
                       << (tooLarge ? "; samples over omniORB's message limit (2 MiB by default) need "
                                      "corba.args: -ORBgiopMaxMsgSize <bytes> on both sides"
@@ -121,7 +121,7 @@ void OutPortPushConnector::runNew()
         CdrBytes data = std::move(m_newest);
         m_hasNewest = false;
         lock.unlock();
-        send(data);
+        send(CdrView::of(data));
         lock.lock();
     }
 }
@@ -131,21 +131,21 @@ void OutPortPushConnector::pushBuffered()
     CdrBytes data;
     if (m_pushPolicy == "all") {
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
-            send(data);
+            send(CdrView::of(data));
     } else if (m_pushPolicy == "fifo") {
         if (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
-            send(data);
+            send(CdrView::of(data));
     } else if (m_pushPolicy == "skip") {
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok) {
             if (m_skipped++ % (m_skip + 1) == 0)
-                send(data);
+                send(CdrView::of(data));
         }
     } else { // "new": only the newest of what piled up
         bool any = false;
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
             any = true;
         if (any)
-            send(data);
+            send(CdrView::of(data));
     }
 }
 
@@ -198,9 +198,9 @@ OutPortPullConnector::~OutPortPullConnector()
     releaseServant(m_poa, m_servant);
 }
 
-void OutPortPullConnector::write(const CdrBytes &data)
+void OutPortPullConnector::write(const CdrView &data)
 {
-    m_buffer->write(data);
+    m_buffer->write(data.bytes());
 }
 
 OpenRTM::OutPortCdr_ptr OutPortPullConnector::reference()

@@ -24,7 +24,8 @@ public:
     const std::string &id() const { return m_id; }
     /// `dataport.serializer.cdr.endian` (little unless it says big).
     bool littleEndian() const { return m_littleEndian; }
-    virtual void write(const CdrBytes &data) = 0;
+    /// Sends (or keeps) one sample; @p data is only valid during the call.
+    virtual void write(const CdrView &data) = 0;
 
 private:
     std::string m_id;
@@ -44,13 +45,13 @@ public:
 
     OutPortPushConnector(const std::string &id, const Properties &connectorProperties, OpenRTM::InPortCdr_ptr peer);
     ~OutPortPushConnector() override;
-    void write(const CdrBytes &data) override;
+    void write(const CdrView &data) override;
 
     /// Parses `dataport.subscription_type`; false for unknown names.
     static bool parseMode(const std::string &text, Mode *mode);
 
 private:
-    void send(const CdrBytes &data);
+    void send(const CdrView &data);
     void runNew();
     void runPeriodic();
     void pushBuffered();
@@ -91,7 +92,7 @@ public:
     OutPortPullConnector(const std::string &id, const Properties &connectorProperties,
                          PortableServer::POA_ptr poa);
     ~OutPortPullConnector() override;
-    void write(const CdrBytes &data) override;
+    void write(const CdrView &data) override;
     /// The object the InPort pulls from (published as `dataport.corba_cdr.outport_ior`).
     OpenRTM::OutPortCdr_ptr reference();
 

@@ -14,6 +14,19 @@ namespace Runtime {
 /// Marshalled data as it travels between ports.
 using CdrBytes = std::vector<unsigned char>;
 
+/// Marshalled bytes owned by someone else (valid until that owner changes them).
+struct CdrView
+{
+    CdrView() = default;
+    CdrView(const unsigned char *bytes, size_t length) : data(bytes), size(length) {}
+
+    const unsigned char *data = nullptr;
+    size_t size = 0;
+
+    CdrBytes bytes() const { return CdrBytes(data, data + size); }
+    static CdrView of(const CdrBytes &bytes) { return {bytes.data(), bytes.size()}; }
+};
+
 /**
  * A bounded buffer of marshalled samples with OpenRTM's policies, configured from connector
  * properties below `buffer.` (`length`, `write.full_policy` overwrite|do_nothing|block,

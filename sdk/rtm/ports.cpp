@@ -266,7 +266,7 @@ void OutPortBase::notifyWrite(void *value, const std::type_info &type,
     }
 }
 
-void OutPortBase::writeBytes(const std::function<Runtime::CdrBytes(bool littleEndian)> &marshal)
+void OutPortBase::writeBytes(const std::function<Runtime::CdrView(bool littleEndian)> &marshal)
 {
     writeMarshalled(marshal);
 }

@@ -29,7 +29,7 @@ public:
         const DataType &sample = value;
         notifyWrite(&value, typeid(DataType), [&sample]() { return ::Runtime::marshal(sample, true); });
         writeDirect(&value, typeid(DataType));
-        writeBytes([&sample](bool littleEndian) { return ::Runtime::marshal(sample, littleEndian); });
+        writeBytes([&sample](bool littleEndian) { return ::Runtime::marshalView(sample, littleEndian); });
         return true;
     }
     bool write() override { return write(m_value); }

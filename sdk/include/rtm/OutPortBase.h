@@ -43,7 +43,7 @@ protected:
     void notifyWrite(void *value, const std::type_info &type, const std::function<std::vector<unsigned char>()> &marshal);
 
     /// Hands a sample to the connections; @p marshal gives its bytes in the byte order asked for.
-    void writeBytes(const std::function<::Runtime::CdrBytes(bool littleEndian)> &marshal);
+    void writeBytes(const std::function<::Runtime::CdrView(bool littleEndian)> &marshal);
 
 private:
     std::mutex m_directMutex;
