@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "corbautil.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -92,6 +93,12 @@ void releaseServant(PortableServer::POA_ptr poa, PortableServer::ServantBase *se
         // Never activated or already gone: only our own reference remains to drop.
     }
     servant->_remove_ref();
+}
+
+const char *programName()
+{
+    // glibc keeps the short name of argv[0]; a component program's messages then carry its own name.
+    return program_invocation_short_name;
 }
 
 CORBA::ORB_var theOrb()

@@ -44,6 +44,9 @@ CORBA::ORB_var theOrb();
 /// A loopback TCP port nobody listens on right now (for a manager process we start ourselves).
 int freeLoopbackPort();
 
+/// The running program's name (`rtmanager`, `ConsoleInComp`, …), the prefix of its messages.
+const char *programName();
+
 /// One-line text of a CORBA exception for error messages.
 std::string describeException(const CORBA::Exception &e);
 

@@ -149,7 +149,7 @@ bool Manager::start(std::string *error)
             m_ownNames.push_back(path);
     }
     for (const std::string &message : errors)
-        std::cerr << "rtmanager: " << message << std::endl;
+        std::cerr << programName() << ": " << message << std::endl;
     if (m_isMaster) {
         m_watchdog = std::thread([this] { watchSlaves(); });
     } else {
@@ -237,7 +237,7 @@ bool Manager::fail(const std::string &message, std::string *error)
         std::lock_guard lock(m_mutex);
         m_lastError = message;
     }
-    std::cerr << "rtmanager: " << message << std::endl;
+    std::cerr << programName() << ": " << message << std::endl;
     if (error)
         *error = message;
     return false;
@@ -347,7 +347,7 @@ bool Manager::readConfigFiles(Properties *properties, const std::string &instanc
         }
         if (!in) {
             // As in OpenRTM-aist, a file named in rtc.conf that is not there only costs its settings.
-            std::cerr << "rtmanager: " << instance << ": cannot read config_file '" << file << "'" << std::endl;
+            std::cerr << programName() << ": " << instance << ": cannot read config_file '" << file << "'" << std::endl;
             continue;
         }
         std::stringstream text;
@@ -438,7 +438,7 @@ void Manager::registerNames(Component &component)
             component.names.push_back(path);
     }
     for (const std::string &message : errors)
-        std::cerr << "rtmanager: " << message << std::endl;
+        std::cerr << programName() << ": " << message << std::endl;
     if (m_hooks.postNaming)
         m_hooks.postNaming(component.servant, component.names, true);
 }

@@ -308,7 +308,7 @@ void Manager::joinMaster()
         // Unchecked: the first real call tells whether it is there, without an extra round trip.
         manager = RTM::Manager::_unchecked_narrow(object);
     } catch (const CORBA::Exception &e) {
-        std::cerr << "rtmanager: cannot join master " << master << ": " << describeException(e) << std::endl;
+        std::cerr << programName() << ": cannot join master " << master << ": " << describeException(e) << std::endl;
         return;
     }
     // A slave we were started for is awaited by its master, which may be busy (many slaves joining
@@ -330,7 +330,7 @@ void Manager::joinMaster()
             break;
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
-    std::cerr << "rtmanager: cannot join master " << master << ": " << problem << std::endl;
+    std::cerr << programName() << ": cannot join master " << master << ": " << problem << std::endl;
 }
 
 std::string Manager::requestJoin(RTM::Manager_ptr master, bool *retry)

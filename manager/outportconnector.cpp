@@ -101,7 +101,7 @@ void OutPortPushConnector::send(const CdrView &data)
         // once: a sample over omniORB's message size limit fails here on every write.
         if (!m_failing.exchange(true)) {
             const bool tooLarge = CORBA::MARSHAL::_downcast(&e) != nullptr;
-            std::cerr << "rtmanager: connection " << id() << ": a " << data.size
+            std::cerr << programName() << ": connection " << id() << ": a " << data.size
                       << "-byte sample was not delivered (" << describeException(e) << ")"
                       << (tooLarge ? "; samples over omniORB's message limit (2 MiB by default) need "
                                      "corba.args: -ORBgiopMaxMsgSize <bytes> on both sides"
