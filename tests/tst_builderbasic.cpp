@@ -31,11 +31,6 @@ namespace {
 
 using BuilderTest::fixture;
 
-QString conformance(const char *name)
-{
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/") + QLatin1String(name);
-}
-
 /// An editor over the fixture, shown, with its own model, stack and IDL catalog.
 struct Editor
 {
@@ -243,24 +238,24 @@ void TestBuilderBasic::importIsOneUndoStep()
 {
     Editor e;
     QVERIFY(QTest::qWaitForWindowExposed(&e.editor));
-    QVERIFY(e.basic->importProfile(conformance("rtc/sample_v02.xml")));
+    QVERIFY(e.basic->importProfile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rtc/full.xml")));
     QCOMPARE(e.stack.count(), 1);
-    QCOMPARE(e.stack.undoText(), QStringLiteral("Import sample_v02.xml"));
-    QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("SampleComponent"));
+    QCOMPARE(e.stack.undoText(), QStringLiteral("Import full.xml"));
+    QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Full"));
     auto *abstract = qobject_cast<QPlainTextEdit *>(e.basic->editor(BasicField::Abstract));
-    QCOMPARE(abstract->toPlainText(), QStringLiteral("SampleAbstract"));
+    QCOMPARE(abstract->toPlainText(), QStringLiteral("An abstract"));
     QCOMPARE(qobject_cast<QLineEdit *>(e.basic->editor(BasicField::RtcType))->text(),
              QStringLiteral("Normal"));
-    QVERIFY(e.basic->transferMessage().startsWith(QStringLiteral("Imported sample_v02.xml")));
+    QVERIFY(e.basic->transferMessage().startsWith(QStringLiteral("Imported full.xml")));
     e.stack.undo();
     QVERIFY(e.model.profile() == fixture());
     QCOMPARE(abstract->toPlainText(), QString());
     e.stack.redo();
-    QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("SampleComponent"));
+    QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Full"));
     // YAML works the same way, told apart by content.
-    QVERIFY(e.basic->importProfile(conformance("rtc-yaml/YAMLSample_RTC_Ver03Ex.yaml")));
+    QVERIFY(e.basic->importProfile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rtc/full.yaml")));
     QCOMPARE(e.stack.count(), 2);
-    QCOMPARE(e.model.profile().basicInfo.abstractText, QStringLiteral("SampleAbstract"));
+    QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Yaml"));
 }
 
 void TestBuilderBasic::importFromTheDialog()
@@ -272,9 +267,9 @@ void TestBuilderBasic::importFromTheDialog()
     QFileDialog *dialog = nullptr;
     QTRY_VERIFY((dialog = e.basic->findChild<QFileDialog *>(QStringLiteral("transferDialog"))));
     QCOMPARE(dialog->acceptMode(), QFileDialog::AcceptOpen);
-    dialog->selectFile(conformance("rtc/sample_v02.xml"));
+    dialog->selectFile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rtc/full.xml"));
     static_cast<QDialog *>(dialog)->accept(); // what the Open button does
-    QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("SampleComponent"));
+    QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Full"));
     QCOMPARE(e.stack.count(), 1);
 }
 
@@ -300,7 +295,7 @@ void TestBuilderBasic::importOfSystemIsRefused()
 {
     Editor e;
     QVERIFY(QTest::qWaitForWindowExposed(&e.editor));
-    QVERIFY(!e.basic->importProfile(conformance("rts/rtsprofile_rtsystem.xml")));
+    QVERIFY(!e.basic->importProfile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rts/full.xml")));
     QVERIFY(e.basic->transferMessage().contains(QStringLiteral("System Editor")));
     QCOMPARE(e.stack.count(), 0);
     QVERIFY(e.model.profile() == fixture());
