@@ -242,8 +242,11 @@ void TestBuilderEventPorts::eventTableFollowsPortMoves()
 
 void TestBuilderEventPorts::fsmFileRoundTrips()
 {
-    const Profile::RtcProfile fsm
-        = load(QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/rtc/rtcb_fsm_eventName.xml"));
+    // A file written by OpenRTP's RTC Builder: part of the shared conformance corpus, when it is there.
+    const QString file = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/rtc/rtcb_fsm_eventName.xml");
+    if (!QFile::exists(file))
+        QSKIP("no conformance corpus beside the checkout (../shared/conformance)");
+    const Profile::RtcProfile fsm = load(file);
     Editor e(fsm);
     QCOMPARE(e.page->eventPorts()->table()->rowCount(), 1);
     QCOMPARE(e.page->eventPorts()->table()->index(0, 0).data().toString(),
