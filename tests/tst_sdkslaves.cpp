@@ -59,8 +59,10 @@ void TestSdkSlaves::typeFromLoadPathInMasterAndSlaves()
 
 void TestSdkSlaves::crashTakesDownOnlyItsSlave()
 {
+    // The component crashes as soon as the value reaches it, which can be before rtctl's last call
+    // (activating the set) returns: that call may then fail, so only the outcome is checked.
     const RtctlResult r = rtctl({"conf", "Victim.rtc", "set", "crash", "1"});
-    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.code == 0 || r.err.contains("Victim.rtc"), qPrintable(r.out + r.err));
     QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", "Victim.rtc"}).code != 0, 20000);
     QVERIFY(isActive("Local.rtc"));
     QVERIFY(isActive("Survivor.rtc"));
