@@ -81,9 +81,8 @@ public:
     CORBA::Object_ptr service(const std::string &name);
 
     /**
-     * How a loaded module's init function is called. By default it is taken as
-     * `void Init(Runtime::Manager *)`; the component SDK installs a call that passes its
-     * RTC::Manager, as OpenRTM-aist modules expect.
+     * How a loaded module's init function is called: the component SDK installs a call that
+     * passes its RTC::Manager, as OpenRTM-aist modules expect. Without one no module loads.
      */
     using ModuleInitCall = std::function<void(void *initFunction)>;
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Loadable modules: shared libraries written against this runtime whose init function
-// (`extern "C" void <Name>Init(Runtime::Manager *)`) registers component factories.
+// Loadable modules: OpenRTM-aist component modules whose init function (`extern "C" void
+// <Name>Init(RTC::Manager *)`) registers component factories; the component SDK calls it.
 #include "managerdetail.h"
 
 #include <algorithm>
@@ -31,9 +31,6 @@ std::string baseName(const std::string &path)
 
 } // namespace
 
-/// Module functions have this signature (OpenRTM's `void XInit(RTC::Manager*)` with our manager).
-using ModuleInit = void (*)(Manager *);
-
 std::string Manager::findModuleFile(const std::string &requested) const
 {
     if (requested.empty())
@@ -59,6 +56,8 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
 {
     if (requested.empty())
         return fail("load_module: no module path given", error);
+    if (!m_moduleInitCall)
+        return fail("load_module: this manager has no component SDK to run module init functions", error);
     const std::string path = findModuleFile(requested);
     if (path.empty())
         return fail("load_module: no module file '" + requested + "'", error);
@@ -80,10 +79,7 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
         return fail("load_module: '" + path + "' has no init function '" + function + "'", error);
     }
     const size_t before = m_factories.size();
-    if (m_moduleInitCall)
-        m_moduleInitCall(init);
-    else
-        reinterpret_cast<ModuleInit>(init)(this);
+    m_moduleInitCall(init);
     std::lock_guard lock(m_mutex);
     for (size_t i = before; i < m_factories.size(); ++i)
         m_factories[i].modulePath = path;

@@ -49,7 +49,9 @@ private:
         Builder::BuildController *build = nullptr;
         Builder::GenerateController *generate = nullptr;
     };
-    Opened openCounter(Studio::MainWindow *window);
+    /// Opens @p profile (the Counter fixture by default) in the Builder of @p window.
+    Opened openCounter(Studio::MainWindow *window,
+                       const QString &profile = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml"));
     /// Generates nothing: points the component's output folder at a copy of fixture `name`.
     bool useFixture(const Opened &opened, const QString &name, const QTemporaryDir &dir);
 
@@ -83,10 +85,10 @@ void TestBuilderBuildApp::init()
     m_modalsSeen.clear();
 }
 
-TestBuilderBuildApp::Opened TestBuilderBuildApp::openCounter(Studio::MainWindow *window)
+TestBuilderBuildApp::Opened TestBuilderBuildApp::openCounter(Studio::MainWindow *window, const QString &profile)
 {
     Opened opened;
-    if (!window->openFiles({QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml")}))
+    if (!window->openFiles({profile}))
         return opened;
     Studio::Perspective *builder = window->perspective(Studio::Perspective::Id::Builder);
     opened.editor
@@ -293,15 +295,11 @@ void TestBuilderBuildApp::openedFromGeneratedProject()
     Studio::MainWindow window;
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.openFiles({profile}));
-    Studio::Perspective *builder = window.perspective(Studio::Perspective::Id::Builder);
-    auto *editor = qobject_cast<Builder::ComponentEditor *>(builder->editor(window.activeDocument()));
-    QVERIFY(editor);
-    const auto builds = editor->findChildren<Builder::BuildController *>();
-    QCOMPARE(builds.size(), 1);
-    builds.first()->updateActions();
-    QVERIFY(builds.first()->buildAction()->isEnabled());
-    QCOMPARE(QDir(builds.first()->projectFolder()).canonicalPath(), QDir(project.path()).canonicalPath());
+    const Opened opened = openCounter(&window, profile);
+    QVERIFY(opened.build);
+    opened.build->updateActions();
+    QVERIFY(opened.build->buildAction()->isEnabled());
+    QCOMPARE(QDir(opened.build->projectFolder()).canonicalPath(), QDir(project.path()).canonicalPath());
     QVERIFY(m_modalsSeen.isEmpty());
 }
 

@@ -35,7 +35,7 @@ private:
 
 RtctlResult TestSdkFixtures::rtctl(const QStringList &arguments)
 {
-    return runRtctl(arguments, {{QStringLiteral("RTCSH_CWD"), host()}, {QStringLiteral("RTCTREE_NAMESERVERS"), QString()}});
+    return runRtctlAt(host(), arguments);
 }
 
 void TestSdkFixtures::initTestCase()

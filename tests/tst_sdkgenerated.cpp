@@ -64,7 +64,7 @@ private:
 
 RtctlResult TestSdkGenerated::rtctl(const QStringList &arguments)
 {
-    return runRtctl(arguments, {{QStringLiteral("RTCSH_CWD"), host()}, {QStringLiteral("RTCTREE_NAMESERVERS"), QString()}});
+    return runRtctlAt(host(), arguments);
 }
 
 void TestSdkGenerated::initTestCase()

@@ -30,7 +30,7 @@ private:
 
 RtctlResult TestSdkSlaves::rtctl(const QStringList &arguments)
 {
-    return runRtctl(arguments, {{QStringLiteral("RTCSH_CWD"), host()}, {QStringLiteral("RTCTREE_NAMESERVERS"), QString()}});
+    return runRtctlAt(host(), arguments);
 }
 
 void TestSdkSlaves::initTestCase()

@@ -23,3 +23,8 @@ RtctlResult runRtctl(const QStringList &arguments, const QHash<QString, QString>
     result.err = QString::fromUtf8(process.readAllStandardError());
     return result;
 }
+
+RtctlResult runRtctlAt(const QString &context, const QStringList &arguments)
+{
+    return runRtctl(arguments, {{QStringLiteral("RTCSH_CWD"), context}, {QStringLiteral("RTCTREE_NAMESERVERS"), QString()}});
+}

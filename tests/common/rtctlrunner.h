@@ -24,3 +24,7 @@ struct RtctlResult
  */
 RtctlResult runRtctl(const QStringList &arguments,
                      const QHash<QString, QString> &environment = {});
+
+/// Runs rtctl with its current directory (RTCSH_CWD) at @p context, e.g. `/ns:port/host.host_cxt`,
+/// and no RTCTREE_NAMESERVERS, as the live tests drive one host context.
+RtctlResult runRtctlAt(const QString &context, const QStringList &arguments);
