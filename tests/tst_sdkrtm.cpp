@@ -543,6 +543,9 @@ void TestSdkRtm::managerActionListeners()
     QVERIFY(source);
     QCOMPARE(QString::fromStdString(source->getProperties().getProperty("conf.default.step")), QString("7"));
     QCOMPARE(m_manager->load(MANAGER_TEST_MODULE, ""), RTC::RTC_OK);
+    QCOMPARE(m_manager->getLoadedModules().size(), size_t(1));
+    m_manager->unload(MANAGER_TEST_MODULE);
+    QVERIFY(m_manager->getLoadedModules().empty());
     m_manager->deleteComponent(source);
     QTRY_VERIFY_WITH_TIMEOUT(recorder.calls().contains("postUnbind"), 5000);
     m_manager->removeRtcLifecycleActionListener(&recorder);
@@ -558,13 +561,17 @@ void TestSdkRtm::managerActionListeners()
                                "postCreate watched",
                                "preLoad " MANAGER_TEST_MODULE,
                                "postLoad ",
+                               "preUnload",
+                               "postUnload",
                                "preUnbind",
                                "postUnbind"};
     QStringList calls = recorder.calls();
     calls.replaceInStrings(QRegularExpression("^preBind watched [^/]*"), "preBind watched %h.host_cxt");
     QCOMPARE(calls, expected);
-    QVERIFY(std::find(m_manager->getModulesFactories().begin(), m_manager->getModulesFactories().end(),
-                      "ModuleCounter") != m_manager->getModulesFactories().end());
+    // Unloading withdrew the module's type.
+    const std::vector<std::string> factories = m_manager->getModulesFactories();
+    QVERIFY(std::find(factories.begin(), factories.end(), "ModuleCounter") == factories.end());
+    QVERIFY(m_manager->createComponent("ModuleCounter") == nullptr);
 }
 
 QTEST_GUILESS_MAIN(TestSdkRtm)
