@@ -364,6 +364,8 @@ void TestOnlineNameService::stoppedManagerNeverBlocksTheGui()
             Corba::Orb::setCallTimeout(2000);
         }
     } resume {pid};
+    // SIGSTOP lands asynchronously: an action sent before it did would still be answered.
+    QVERIFY(LiveTest::waitUntilStopped(pid));
 
     QSignalSpy problems(&view, &NameServiceView::problemReported);
     QSignalSpy finished(&view, &NameServiceView::actionFinished);
