@@ -313,10 +313,23 @@ std::optional<QVariantMap> ContextBuilder::build(TargetLanguage language,
         context.insert(QStringLiteral("vectorConvertHeaders"),
                        vectors ? QVariantList {QVariantMap()} : QVariantList());
     }
-    if (!addServices(language, context, &problems)) {
+    if (!addServices(language, context, &problems) || !addFsm(language, context, &problems)) {
         if (diagnostics)
             diagnostics->append(problems);
         return std::nullopt;
+    }
+    if (context.value(QStringLiteral("hasFsm")).toBool()) {
+        // The machine takes queued events from onExecute, so a component with EventPorts has one.
+        QVariantList list = context.value(QStringLiteral("actions")).toList();
+        for (QVariant &item : list) {
+            QVariantMap action = item.toMap();
+            if (action.value(QStringLiteral("name")) == rtcActionKey(RtcAction::OnExecute)) {
+                action.insert(QStringLiteral("implemented"), true);
+                action.insert(QStringLiteral("runsFsm"), true);
+            }
+            item = action;
+        }
+        context.insert(QStringLiteral("actions"), list);
     }
     return context;
 }

@@ -39,6 +39,13 @@ namespace Codegen {
  * - `pythonModules` (strings): modules the Python code imports
  * - `vectorConvertHeaders` (C++): one empty item when a configuration parameter is a vector
  *   (the manifest renders VectorConvert.h once per item), else none
+ * - C++ with EventPorts (`hasFsm`): `fsmFiles` (one empty item, renders <Name>Fsm.h/.cpp),
+ *   `fsmNamespace`, `fsmMachineType`, `fsmInitialState` (the first event's source),
+ *   `fsmEvents` {name, hasArgument, argumentType}: the machine's event protocol,
+ *   `fsmGuards` {name, hasArgument, argumentType, conditions}: one per transition condition,
+ *   `fsmStates` {name, handlers, declaredHandlers {event, target, hasArgument, argumentType,
+ *   guard, hasGuard, opens, closes}}, `eventPorts` {name, literalName, variable, events {name,
+ *   literalName}}; `actions` then has onExecute implemented with `runsFsm`
  * - flags: `hasInPorts`, `hasOutPorts`, `hasDataPorts`, `hasServicePorts`, `hasProvided`,
  *   `hasRequired`, `hasConfigurations`, `hasProjectIdls`, `hasVectorConfigurations` (C++)
  */
@@ -72,6 +79,10 @@ private:
     bool checkNames(TargetLanguage language, Profile::Diagnostics *diagnostics) const;
     bool addServices(TargetLanguage language, QVariantMap &context,
                      Profile::Diagnostics *diagnostics) const;
+    /// The static FSM of the EventPorts (fsmcontext.cpp); refuses events whose names cannot
+    /// name handlers or states.
+    bool addFsm(TargetLanguage language, QVariantMap &context,
+                Profile::Diagnostics *diagnostics) const;
 
     const Profile::RtcProfile &m_profile;
     const IdlModel &m_idl;

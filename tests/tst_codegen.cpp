@@ -40,6 +40,9 @@ private slots:
     void contextRefusesBadNames_data();
     void contextRefusesBadNames();
     void missingInterfaceTypeFails();
+    void contextStateMachine();
+    void contextRefusesBadEvents_data();
+    void contextRefusesBadEvents();
     void rendererInsertsVerbatim();
     void rendererDropsStandaloneTagLines();
     void rendererReportsBrokenTemplate();
@@ -379,6 +382,113 @@ void TestCodegen::missingInterfaceTypeFails()
     QVERIFY(!CodeGenerator(profile, m_idl).generate({TargetLanguage::Cpp}, &diagnostics));
     QVERIFY(hasErrors(diagnostics));
     QVERIFY(diagnostics.first().message.contains(QStringLiteral("Sample::Nowhere")));
+}
+
+namespace {
+
+RtcEvent fsmEvent(const QString &name, const QString &source, const QString &target, const QString &type = {},
+               const QString &condition = {})
+{
+    RtcEvent e;
+    e.name = name;
+    e.source = source;
+    e.target = target;
+    if (!type.isEmpty())
+        e.type = type;
+    if (!condition.isEmpty())
+        e.condition = condition;
+    return e;
+}
+
+RtcDataPort eventPort(const QString &name, const QList<RtcEvent> &events)
+{
+    RtcDataPort port;
+    port.portType = QStringLiteral("EventPort");
+    port.name = name;
+    port.type = QStringLiteral("Any");
+    port.events = events;
+    return port;
+}
+
+} // namespace
+
+void TestCodegen::contextStateMachine()
+{
+    RtcProfile profile = m_profile;
+    profile.dataPorts << eventPort("control", {fsmEvent("coin", "Locked", "Unlocked", "TimedLong", "paidEnough"),
+                                               fsmEvent("coin", "Unlocked", "Unlocked", "TimedLong"),
+                                               fsmEvent("push", "Unlocked", "Locked", {}, "arm passed"),
+                                               fsmEvent("push", "Locked", "Alarm")});
+    profile.dataPorts << eventPort("service", {fsmEvent("reset", "Alarm", "Locked")});
+    Diagnostics diagnostics;
+    const QVariantMap cpp = *ContextBuilder(profile, m_idl).build(TargetLanguage::Cpp, &diagnostics);
+    QVERIFY(cpp.value("hasFsm").toBool());
+    QCOMPARE(cpp.value("fsmFiles").toList().size(), 1);
+    QCOMPARE(cpp.value("fsmNamespace").toString(), QStringLiteral("SampleCompFsm"));
+    QCOMPARE(cpp.value("fsmMachineType").toString(), QStringLiteral("RTC::Machine<SampleCompFsm::Top>"));
+    QCOMPARE(cpp.value("fsmInitialState").toString(), QStringLiteral("Locked"));
+    // One handler per event in Top; RTC Builder's unscoped data types get OpenRTM's scope.
+    const QVariantList events = cpp.value("fsmEvents").toList();
+    QCOMPARE(events.size(), 3);
+    QCOMPARE(find(events, "name", "coin").value("declaration").toString(),
+             QStringLiteral("virtual void coin(RTC::TimedLong /*data*/) {}"));
+    QCOMPARE(find(events, "name", "reset").value("declaration").toString(), QStringLiteral("virtual void reset() {}"));
+    // A condition that is a name names its guard; other text documents one named after the event.
+    const QVariantList guards = cpp.value("fsmGuards").toList();
+    QCOMPARE(guards.size(), 2);
+    QCOMPARE(find(guards, "name", "paidEnough").value("declaration").toString(),
+             QStringLiteral("bool paidEnough(const RTC::TimedLong& data)"));
+    QCOMPARE(find(guards, "name", "paidEnough").value("hasConditions").toBool(), false);
+    QCOMPARE(find(guards, "name", "pushGuard").value("conditions").toString(), QStringLiteral("arm passed"));
+    // States in order of appearance; two transitions of one event from one state share a handler.
+    const QVariantList states = cpp.value("fsmStates").toList();
+    QCOMPARE(states.size(), 3);
+    const QVariantMap locked = find(states, "name", "Locked");
+    QCOMPARE(locked.value("declaredHandlers").toList().size(), 2);
+    const QVariantList handlers = locked.value("handlers").toList();
+    QCOMPARE(handlers.value(0).toMap().value("definition").toString(),
+             QStringLiteral("void Locked::coin(RTC::TimedLong data)"));
+    QCOMPARE(handlers.value(0).toMap().value("guardCall").toString(), QStringLiteral("paidEnough(data)"));
+    QCOMPARE(handlers.value(1).toMap().value("hasGuard").toBool(), false);
+    QCOMPARE(handlers.value(1).toMap().value("target").toString(), QStringLiteral("Alarm"));
+    // Each EventPort binds each of its events once.
+    const QVariantList ports = cpp.value("eventPorts").toList();
+    QCOMPARE(ports.size(), 2);
+    QCOMPARE(ports.value(0).toMap().value("events").toList().size(), 2);
+    // onExecute runs the machine even when the profile leaves it off.
+    const QVariantMap execute = find(cpp.value("actions").toList(), "name", "onExecute");
+    QVERIFY(execute.value("implemented").toBool());
+    QVERIFY(execute.value("runsFsm").toBool());
+
+    // Python and Java keep their data-flow part.
+    const QVariantMap python = *ContextBuilder(profile, m_idl).build(TargetLanguage::Python, &diagnostics);
+    QVERIFY(!python.value("hasFsm").toBool());
+    QVERIFY(python.value("fsmFiles").toList().isEmpty());
+}
+
+void TestCodegen::contextRefusesBadEvents_data()
+{
+    QTest::addColumn<QList<RtcEvent>>("events");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("event name") << QList<RtcEvent>{fsmEvent("go on", "A", "B")} << "go on";
+    QTest::newRow("state name") << QList<RtcEvent>{fsmEvent("go", "A", "B-1")} << "B-1";
+    QTest::newRow("no source") << QList<RtcEvent>{fsmEvent("go", "", "B")} << "state ''";
+    QTest::newRow("Top") << QList<RtcEvent>{fsmEvent("go", "Top", "B")} << "'Top'";
+    QTest::newRow("one event, two types")
+        << QList<RtcEvent>{fsmEvent("go", "A", "B", "TimedLong"), fsmEvent("go", "B", "A")} << "one event has one data type";
+}
+
+void TestCodegen::contextRefusesBadEvents()
+{
+    QFETCH(QList<RtcEvent>, events);
+    QFETCH(QString, message);
+    RtcProfile profile = m_profile;
+    profile.dataPorts << eventPort("control", events);
+    Diagnostics diagnostics;
+    QVERIFY(!ContextBuilder(profile, m_idl).build(TargetLanguage::Cpp, &diagnostics));
+    QCOMPARE(diagnostics.size(), 1);
+    QVERIFY2(diagnostics.first().message.contains(message), qPrintable(diagnostics.first().message));
+    QVERIFY2(diagnostics.first().message.contains("EventPort 'control'"), qPrintable(diagnostics.first().message));
 }
 
 void TestCodegen::rendererInsertsVerbatim()
