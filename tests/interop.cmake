@@ -2,7 +2,8 @@
 # Interoperability with a real OpenRTM-aist 2.x (ctest label "interop"): the project rtctl
 # generates for the SdkGreeter fixture is built against OpenRTM-aist's CMake package and run by
 # it. OpenRTM-aist is not a dependency of RT Studio: without a prefix the test skips itself.
-set(RTSTUDIO_OPENRTM_PREFIX "" CACHE PATH "OpenRTM-aist 2.x prefix for the interop tests (optional)")
+# The prefix comes from the cache or, at the first configure, from the OPENRTM_ROOT environment variable.
+set(RTSTUDIO_OPENRTM_PREFIX "$ENV{OPENRTM_ROOT}" CACHE PATH "OpenRTM-aist 2.x prefix for the interop tests (optional)")
 
 rtstudio_add_test(tst_interopbuild SOURCES tst_interopbuild.cpp common/sdkgreeteredits.h
     LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
