@@ -3,6 +3,8 @@
 
 #include "corbautil.h"
 
+#include <cctype>
+
 namespace Runtime {
 
 namespace {
@@ -24,6 +26,13 @@ std::string canonicalType(const std::string &name)
     return type;
 }
 
+bool isAnyType(const std::string &type)
+{
+    return type.size() == 3 && std::tolower(static_cast<unsigned char>(type[0])) == 'a'
+           && std::tolower(static_cast<unsigned char>(type[1])) == 'n'
+           && std::tolower(static_cast<unsigned char>(type[2])) == 'y';
+}
+
 std::string lastSegment(const std::string &scoped)
 {
     const size_t pos = scoped.rfind("::");
@@ -34,6 +43,8 @@ std::string lastSegment(const std::string &scoped)
 
 bool sameDataType(const std::string &a, const std::string &b)
 {
+    if (isAnyType(a) || isAnyType(b))
+        return true;
     const std::string ca = canonicalType(a);
     const std::string cb = canonicalType(b);
     if (ca == cb)

@@ -70,7 +70,11 @@ private:
     RTC::PortService_var m_self;
 };
 
-/// True when two data type names denote the same type (`IDL:RTC/TimedLong:1.0`, `RTC::TimedLong`, `TimedLong`).
+/**
+ * True when two data type names denote the same type (`IDL:RTC/TimedLong:1.0`, `RTC::TimedLong`,
+ * `TimedLong`), or when either is "any" (the data type of ports that take samples of every type,
+ * such as an FSM component's EventInPort).
+ */
 bool sameDataType(const std::string &a, const std::string &b);
 
 } // namespace Runtime
