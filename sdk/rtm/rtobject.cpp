@@ -3,6 +3,7 @@
 #include <rtm/Manager.h>
 #include <rtm/RTObject.h>
 
+#include "fsmactions.h"
 #include "sdkinternal.h"
 
 #include <algorithm>
@@ -28,6 +29,7 @@ RTObject_impl::RTObject_impl(Manager *manager)
     , m_readAllCompletion(false)
     , m_writeAll(false)
     , m_writeAllCompletion(false)
+    , m_fsmActions(new FsmActions)
 {
 }
 
@@ -41,6 +43,7 @@ RTObject_impl::RTObject_impl(CORBA::ORB_ptr orb, PortableServer::POA_ptr poa)
     , m_readAllCompletion(false)
     , m_writeAll(false)
     , m_writeAllCompletion(false)
+    , m_fsmActions(new FsmActions)
 {
 }
 

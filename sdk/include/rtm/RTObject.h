@@ -6,6 +6,7 @@
 #include <rtm/ConfigAdmin.h>
 #include <rtm/CorbaPort.h>
 #include <rtm/Factory.h>
+#include <rtm/FsmActionListener.h>
 #include <rtm/InPortBase.h>
 #include <rtm/OutPortBase.h>
 #include <rtm/PortBase.h>
@@ -14,6 +15,7 @@
 
 #include <rtmruntime/rtobject.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -99,6 +101,83 @@ public:
     void removeConfigurationSetNameListener(ConfigurationSetNameListenerType type,
                                             ConfigurationSetNameListener *listener);
 
+    /// Listeners called before the FSM state actions (see the pre/postOnFsm… hooks).
+    void addPreFsmActionListener(PreFsmActionListenerType listener_type, PreFsmActionListener *listener,
+                                 bool autoclean = true);
+    /// @p memfunc of @p obj as a PreFsmActionListener (deleted with the component).
+    template <class Listener>
+    PreFsmActionListener *addPreFsmActionListener(PreFsmActionListenerType listener_type, Listener &obj,
+                                                  void (Listener::*memfunc)(const char *state))
+    {
+        class Call : public PreFsmActionListener
+        {
+        public:
+            Call(Listener &obj, void (Listener::*memfunc)(const char *))
+                : m_obj(obj)
+                , m_memfunc(memfunc)
+            {
+            }
+            void operator()(const char *state) override { (m_obj.*m_memfunc)(state); }
+
+        private:
+            Listener &m_obj;
+            void (Listener::*m_memfunc)(const char *);
+        };
+        Call *listener = new Call(obj, memfunc);
+        addPreFsmActionListener(listener_type, listener, true);
+        return listener;
+    }
+    void removePreFsmActionListener(PreFsmActionListenerType listener_type, PreFsmActionListener *listener);
+    /// Listeners called after the FSM state actions, with their results.
+    void addPostFsmActionListener(PostFsmActionListenerType listener_type, PostFsmActionListener *listener,
+                                  bool autoclean = true);
+    /// @p memfunc of @p obj as a PostFsmActionListener (deleted with the component).
+    template <class Listener>
+    PostFsmActionListener *addPostFsmActionListener(PostFsmActionListenerType listener_type, Listener &obj,
+                                                    void (Listener::*memfunc)(const char *state, ReturnCode_t ret))
+    {
+        class Call : public PostFsmActionListener
+        {
+        public:
+            Call(Listener &obj, void (Listener::*memfunc)(const char *, ReturnCode_t))
+                : m_obj(obj)
+                , m_memfunc(memfunc)
+            {
+            }
+            void operator()(const char *state, ReturnCode_t ret) override { (m_obj.*m_memfunc)(state, ret); }
+
+        private:
+            Listener &m_obj;
+            void (Listener::*m_memfunc)(const char *, ReturnCode_t);
+        };
+        Call *listener = new Call(obj, memfunc);
+        addPostFsmActionListener(listener_type, listener, true);
+        return listener;
+    }
+    void removePostFsmActionListener(PostFsmActionListenerType listener_type, PostFsmActionListener *listener);
+
+    /**
+     * FSM hooks, called by the states of an RTC::Machine of this component (rtm/StaticFSM.h)
+     * around their actions; each calls the FSM action listeners of its kind. Entering a state
+     * (postOnFsmStateChange) makes it the component's current FSM state: logged at DEBUG level
+     * and shown as `fsm_state` in the component's status list.
+     */
+    void preOnFsmInit(const char *state);
+    void preOnFsmEntry(const char *state);
+    void preOnFsmDo(const char *state);
+    void preOnFsmExit(const char *state);
+    void preOnFsmStateChange(const char *state);
+    void postOnFsmInit(const char *state, ReturnCode_t ret);
+    void postOnFsmEntry(const char *state, ReturnCode_t ret);
+    void postOnFsmDo(const char *state, ReturnCode_t ret);
+    void postOnFsmExit(const char *state, ReturnCode_t ret);
+    void postOnFsmStateChange(const char *state, ReturnCode_t ret);
+    /// RT Studio: records @p state as the current FSM state without calling listeners (the
+    /// machine's state right after its construction, which no hook reports).
+    void setFsmState(const char *state);
+    /// RT Studio: the current FSM state's name; empty when the component has no state machine.
+    std::string getFsmState() const;
+
 protected:
     Manager *m_pManager;
     CORBA::ORB_var m_pORB;
@@ -114,6 +193,8 @@ protected:
     mutable Logger rtclog;
 
 private:
+    struct FsmActions;
+    std::unique_ptr<FsmActions> m_fsmActions;
     std::string m_instanceName;
     std::string m_typeName;
     std::string m_category;
