@@ -15,7 +15,7 @@ bool parseId(const std::string &id, CreateRequest *request, std::string *error)
     }
     // RTC:vendor:category:impl_id:language:version (language may be left out, as OpenRTM allows).
     const std::vector<std::string> parts = split(id, ':', false);
-    if (parts.size() != 5 && parts.size() != 6) {
+    if ((parts.size() != 5 && parts.size() != 6) || parts[3].empty()) {
         *error = "malformed component id '" + id + "' (expected RTC:vendor:category:type:language:version)";
         return false;
     }
@@ -30,11 +30,11 @@ bool parseId(const std::string &id, CreateRequest *request, std::string *error)
 bool applyParameter(const std::string &pair, CreateRequest *request, std::string *error)
 {
     const size_t eq = pair.find('=');
-    if (eq == std::string::npos || eq == 0) {
+    const std::string key = trimmed(pair.substr(0, eq));
+    if (eq == std::string::npos || key.empty()) {
         *error = "malformed parameter '" + pair + "' (expected key=value)";
         return false;
     }
-    const std::string key = trimmed(pair.substr(0, eq));
     const std::string value = trimmed(pair.substr(eq + 1));
     if (key == "manager_address")
         request->managerAddress = value;
@@ -79,7 +79,7 @@ std::optional<CreateRequest> CreateRequest::parse(const std::string &text, std::
 std::string CreateRequest::toStringWithoutManager() const
 {
     std::string text = implementationId;
-    if (!vendor.empty() || !category.empty() || !version.empty())
+    if (!vendor.empty() || !category.empty() || !language.empty() || !version.empty())
         text = "RTC:" + vendor + ':' + category + ':' + implementationId + ':'
                + (language.empty() ? std::string() : language + ':') + version;
     char separator = '?';
