@@ -106,18 +106,22 @@ RegionMergeResult mergeTemplateRegions(const QString &existing, const QString &f
         result.error = QStringLiteral("generated text: ") + error;
         return result;
     }
-    QMap<QString, Block> freshByName;
+    // A name may stand for several blocks: the n-th of the user's takes the n-th fresh one.
+    QMap<QString, QList<Block>> freshByName;
     for (const Block &block : *newBlocks)
-        freshByName.insert(block.name, block);
+        freshByName[block.name] << block;
+    QMap<QString, int> taken;
 
     QStringList merged;
     int next = 0; // first old line not yet copied
     for (const Block &block : *oldBlocks) {
-        const auto it = freshByName.constFind(block.name);
-        if (it == freshByName.cend())
+        const QList<Block> candidates = freshByName.value(block.name);
+        const int index = taken[block.name]++;
+        if (index >= candidates.size())
             continue;
+        const Block &freshBlock = candidates.at(index);
         merged << oldLines.mid(next, block.openLine + 1 - next);
-        merged << newLines.mid(it->openLine + 1, it->closeLine - it->openLine - 1);
+        merged << newLines.mid(freshBlock.openLine + 1, freshBlock.closeLine - freshBlock.openLine - 1);
         next = block.closeLine;
         result.refreshed << block.name;
     }
