@@ -55,12 +55,34 @@ CdrBytes marshal(const T &value, bool littleEndian)
     return marshalView(value, littleEndian).bytes();
 }
 
+/**
+ * A CDR stream reading received bytes. omniORB's own check of a sequence length multiplies element
+ * size and count in 32 bits, so a length near 2^32 / size passes it and a put of a few bytes makes
+ * the sequence allocate gigabytes; the check here is done in 64 bits.
+ */
+class CdrInputStream : public cdrMemoryStream
+{
+public:
+    explicit CdrInputStream(const CdrBytes &data)
+        : cdrMemoryStream(const_cast<unsigned char *>(data.data()), data.size())
+    {
+    }
+    CORBA::Boolean checkInputOverrun(CORBA::ULong itemSize, CORBA::ULong count,
+                                     omni::alignment_t align = omni::ALIGN_1) override
+    {
+        const omni::ptr_arith_t start = omni::align_to(omni::ptr_arith_t(pd_inb_mkr), align);
+        const omni::ptr_arith_t end = omni::ptr_arith_t(pd_inb_end);
+        return start <= end && uint64_t(itemSize) * count <= end - start
+               && cdrMemoryStream::checkInputOverrun(itemSize, count, align);
+    }
+};
+
 /// Unmarshals @p data into @p value; false when the bytes do not hold a T.
 template <typename T>
 bool unmarshal(const CdrBytes &data, bool littleEndian, T *value)
 {
     try {
-        cdrMemoryStream stream(const_cast<unsigned char *>(data.data()), data.size());
+        CdrInputStream stream(data);
         stream.setByteSwapFlag(littleEndian);
         *value <<= stream;
         return true;
