@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rtconfcommand.h"
 
+#include "corbaerror.h"
 #include "rtjson.h"
 
 namespace Cli {
@@ -93,6 +94,11 @@ int RtConfCommand::execute(const RtOptions &options, Streams streams)
     if (command == QLatin1String("list"))
         return list(rtc, options, streams);
     const QString target = set.isEmpty() ? rtc.activeConfigurationSet() : set;
+    if (target.isEmpty())
+        throw Error(Error::Kind::NotFound,
+                           QStringLiteral("%1: no configuration set is active (the sets were changed "
+                                          "and none activated since); name one with -s SET")
+                               .arg(rtc.path()));
     if (command == QLatin1String("get"))
         streams.out << rtc.parameter(target, words.at(1)) << '\n';
     else if (command == QLatin1String("set"))

@@ -4,6 +4,8 @@
 #include "corbacall.h"
 #include "rtcconversion.h"
 
+#include <functional>
+
 namespace Corba {
 
 using namespace Internal;
@@ -302,8 +304,12 @@ QString ComponentProxy::activeConfigurationSet() const
 {
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
     return call(m_path, [&] {
-        SDOPackage::ConfigurationSet_var set = conf->get_active_configuration_set();
-        return toQString(set->id.in());
+        try {
+            SDOPackage::ConfigurationSet_var set = conf->get_active_configuration_set();
+            return toQString(set->id.in());
+        } catch (const SDOPackage::NotAvailable &) {
+            return QString();
+        }
     });
 }
 
@@ -317,35 +323,47 @@ ConfigurationSet ComponentProxy::configurationSet(const QString &id) const
                 QStringLiteral("%1: no configuration set '%2'").arg(m_path, id));
 }
 
+namespace {
+
+/// Runs @p write (false: refused, reported with @p refusal) and activates again the set that was
+/// active before it.
+void writeConfiguration(const ComponentProxy &proxy,
+                        const std::function<bool(SDOPackage::Configuration_ptr)> &write,
+                        const QString &refusal)
+{
+    // Asked before the write: from the write until an activation there is no active set.
+    const QString active = proxy.activeConfigurationSet();
+    SDOPackage::Configuration_var conf = configuration(proxy.ior(), proxy.path());
+    if (!call(proxy.path(), [&] { return write(conf.in()); }))
+        throw Error(Error::Kind::Refused, QStringLiteral("%1: %2").arg(proxy.path(), refusal));
+    if (!active.isEmpty())
+        proxy.activateConfigurationSet(active);
+}
+
+} // namespace
+
 void ComponentProxy::addConfigurationSet(const ConfigurationSet &set) const
 {
-    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    const bool ok
-        = call(m_path, [&] { return conf->add_configuration_set(toSdoConfigurationSet(set)); });
-    if (!ok)
-        throw Error(Error::Kind::Refused,
-                    QStringLiteral("%1: configuration set '%2' was not added").arg(m_path, set.id));
+    writeConfiguration(*this,
+        [&](SDOPackage::Configuration_ptr conf) { return conf->add_configuration_set(toSdoConfigurationSet(set)); },
+        QStringLiteral("configuration set '%1' was not added").arg(set.id));
 }
 
 void ComponentProxy::setConfigurationSetValues(const ConfigurationSet &set) const
 {
-    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    const bool ok = call(
-        m_path, [&] { return conf->set_configuration_set_values(toSdoConfigurationSet(set)); });
-    if (!ok)
-        throw Error(
-            Error::Kind::Refused,
-            QStringLiteral("%1: configuration set '%2' was not written").arg(m_path, set.id));
+    writeConfiguration(*this,
+        [&](SDOPackage::Configuration_ptr conf) {
+            return conf->set_configuration_set_values(toSdoConfigurationSet(set));
+        },
+        QStringLiteral("configuration set '%1' was not written").arg(set.id));
 }
 
 void ComponentProxy::removeConfigurationSet(const QString &id) const
 {
-    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
     const QByteArray utf8 = id.toUtf8();
-    const bool ok = call(m_path, [&] { return conf->remove_configuration_set(utf8.constData()); });
-    if (!ok)
-        throw Error(Error::Kind::Refused,
-                    QStringLiteral("%1: configuration set '%2' was not removed").arg(m_path, id));
+    writeConfiguration(*this,
+        [&](SDOPackage::Configuration_ptr conf) { return conf->remove_configuration_set(utf8.constData()); },
+        QStringLiteral("configuration set '%1' was not removed").arg(id));
 }
 
 void ComponentProxy::activateConfigurationSet(const QString &id) const
@@ -376,17 +394,11 @@ void ComponentProxy::setParameter(const QString &setId, const QString &name,
         throw Error(Error::Kind::NotFound,
                     QStringLiteral("%1: no parameter '%2' in set '%3'").arg(m_path, name, setId));
     setProperty(set.data, name, value);
-    // Asked before the write: OpenRTM-aist has no active set from the write until the activation
-    // (get_active_configuration_set throws NotAvailable).
-    const bool active = activeConfigurationSet() == setId;
-    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    const bool ok = call(
-        m_path, [&] { return conf->set_configuration_set_values(toSdoConfigurationSet(set)); });
-    if (!ok)
-        throw Error(Error::Kind::Refused,
-                    QStringLiteral("%1: parameter '%2' was not set").arg(m_path, name));
-    if (active)
-        activateConfigurationSet(setId);
+    writeConfiguration(*this,
+        [&](SDOPackage::Configuration_ptr conf) {
+            return conf->set_configuration_set_values(toSdoConfigurationSet(set));
+        },
+        QStringLiteral("parameter '%1' was not set").arg(name));
 }
 
 } // namespace Corba

@@ -60,19 +60,25 @@ public:
     void stopContext(int ecIndex = 0) const;
     void setRate(double rate, int ecIndex = 0) const;
 
+    /*
+     * Writes to the configuration sets (add, values, remove, parameter) activate again the set
+     * that was active before: OpenRTM-aist leaves the whole configuration inactive after any write
+     * until a set is activated (rtshell writes, then activates, too).
+     */
     std::vector<ConfigurationSet> configurationSets() const;
+    /// The active set; empty when the component has none active (written, not activated since).
     QString activeConfigurationSet() const;
     ConfigurationSet configurationSet(const QString &id) const;
     void addConfigurationSet(const ConfigurationSet &set) const;
     /// Writes the values of `set` into the existing set `set.id` in one call (parameters not yet in
-    /// the set are added); does not re-activate it.
+    /// the set are added).
     void setConfigurationSetValues(const ConfigurationSet &set) const;
     void removeConfigurationSet(const QString &id) const;
     void activateConfigurationSet(const QString &id) const;
     /// The value of `name` in set `setId`; NotFound when the set or the parameter is missing.
     QString parameter(const QString &setId, const QString &name) const;
-    /// Writes `name` = `value` into set `setId`; re-activates the set when it is the active one so
-    /// that the component sees the new value (rtconf's behaviour).
+    /// Writes `name` = `value` into set `setId`; when that set is the active one the component sees
+    /// the new value at its next update (rtconf's behaviour).
     void setParameter(const QString &setId, const QString &name, const QString &value) const;
 
 private:

@@ -73,6 +73,12 @@ std::string ConfigAdmin::activeSetId() const
     return m_active;
 }
 
+bool ConfigAdmin::isActive() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_activated;
+}
+
 bool ConfigAdmin::addSet(const std::string &id, const Properties &values)
 {
     {
@@ -80,6 +86,7 @@ bool ConfigAdmin::addSet(const std::string &id, const Properties &values)
         if (id.empty() || m_sets.count(id))
             return false;
         m_sets[id] = values;
+        m_activated = false;
     }
     notify(Event::SetAdded, id);
     return true;
@@ -93,8 +100,8 @@ bool ConfigAdmin::setValues(const std::string &id, const Properties &values)
         if (it == m_sets.end())
             return false;
         it->second.merge(values);
-        if (id == m_active)
-            m_dirty = true;
+        m_dirty = true;
+        m_activated = false;
     }
     notify(Event::SetValuesChanged, id);
     return true;
@@ -107,6 +114,7 @@ bool ConfigAdmin::removeSet(const std::string &id)
         // OpenRTM refuses to remove the default and the active set.
         if (id == "default" || id == m_active || m_sets.erase(id) == 0)
             return false;
+        m_activated = false;
     }
     notify(Event::SetRemoved, id);
     return true;
@@ -120,6 +128,7 @@ bool ConfigAdmin::activate(const std::string &id)
             return false;
         m_active = id;
         m_dirty = true;
+        m_activated = true;
     }
     notify(Event::SetActivated, id);
     return true;
@@ -139,7 +148,7 @@ void ConfigAdmin::update()
     std::string activeId;
     {
         std::lock_guard lock(m_mutex);
-        if (!m_dirty)
+        if (!m_dirty || !m_activated)
             return;
         activeId = m_active;
         m_dirty = false;

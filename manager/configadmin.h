@@ -17,6 +17,10 @@ namespace Runtime {
  * setters. Sets whose id starts with "__" (`__widget__`, `__constraints__`, …) are hidden metadata:
  * listed, editable, never activated. Changes to the active set reach the variables at the next
  * update() (the runtime calls it in the execution context's thread). Thread-safe.
+ *
+ * As in OpenRTM-aist, adding, writing or removing a set leaves the configuration inactive until a
+ * set is activated: update() then applies nothing, and the SDO interface reports no active set
+ * (tools write, then activate, as rtshell does).
  */
 class ConfigAdmin
 {
@@ -40,16 +44,19 @@ public:
     /// Parameter → value of set @p id (empty when absent).
     Properties set(const std::string &id) const;
     std::string activeSetId() const;
+    /// False from a change of the sets (add, write, remove) until the next activate().
+    bool isActive() const;
 
     bool addSet(const std::string &id, const Properties &values);
-    /// Replaces values of an existing set (adds missing parameters); marks it for update when active.
+    /// Replaces values of an existing set (adds missing parameters).
     bool setValues(const std::string &id, const Properties &values);
     bool removeSet(const std::string &id);
     bool activate(const std::string &id);
     /// Sets one parameter of the active set.
     bool setParameter(const std::string &name, const std::string &value);
 
-    /// Pushes the active set's values through the setters if anything changed since the last update.
+    /// Pushes the active set's values through the setters if anything changed since the last update
+    /// and the configuration is active.
     void update();
     /// Order of declaration, for listings.
     std::vector<std::string> parameterNames() const;
@@ -62,6 +69,7 @@ private:
     std::vector<std::pair<std::string, Setter>> m_parameters;
     std::string m_active = "default";
     bool m_dirty = true;
+    bool m_activated = true;
     Observer m_observer;
 
     void notify(Event event, const std::string &setId) const;

@@ -145,6 +145,9 @@ CORBA::Boolean SdoConfiguration::set_configuration_set_values(const SDOPackage::
 
 SDOPackage::ConfigurationSet *SdoConfiguration::get_active_configuration_set()
 {
+    // OpenRTM-aist: no active set between a change of the sets and the next activation.
+    if (!m_admin.isActive())
+        throw SDOPackage::NotAvailable("the configuration has changed and no set was activated since");
     auto *set = new SDOPackage::ConfigurationSet;
     toSet(m_admin.activeSetId(), *set);
     return set;

@@ -7,6 +7,8 @@
 #include "orb.h"
 #include "portconnection.h"
 
+#include <RTC.hh>
+
 #include <QElapsedTimer>
 #include <QTest>
 
@@ -229,6 +231,31 @@ void TestCorbaClientManager::editsConfiguration()
     rtc.activateConfigurationSet("mode0");
     QCOMPARE(rtc.activeConfigurationSet(), QString("mode0"));
     rtc.activateConfigurationSet("default");
+
+    // rtmanager, like OpenRTM-aist, has no active set after a write until an activation; every
+    // write of the proxy activates again the set that was active, so the component stays usable.
+    rtc.setParameter("mode0", "int_param0", "7");
+    QCOMPARE(rtc.activeConfigurationSet(), QString("default"));
+    rtc.addConfigurationSet({"extra", "", {{"int_param0", "8"}}});
+    QCOMPARE(rtc.activeConfigurationSet(), QString("default"));
+    rtc.setConfigurationSetValues({"extra", "", {{"int_param0", "9"}}});
+    QCOMPARE(rtc.activeConfigurationSet(), QString("default"));
+    rtc.removeConfigurationSet("extra");
+    QCOMPARE(rtc.activeConfigurationSet(), QString("default"));
+    QCOMPARE(rtc.parameter("mode0", "int_param0"), QString("7"));
+
+    // Left inactive by another tool: readers report no active set instead of failing.
+    const QByteArray ior = rtc.ior().toUtf8();
+    int argc = 0;
+    CORBA::ORB_var orb = CORBA::ORB_init(argc, nullptr); // the client library's ORB
+    RTC::RTObject_var object = RTC::RTObject::_narrow(orb->string_to_object(ior.constData()));
+    SDOPackage::Configuration_var conf = object->get_configuration();
+    SDOPackage::ConfigurationSet_var mode0 = conf->get_configuration_set("mode0");
+    QVERIFY(conf->set_configuration_set_values(mode0.in()));
+    QCOMPARE(rtc.activeConfigurationSet(), QString());
+    QCOMPARE(rtc.parameter("mode0", "int_param0"), QString("7"));
+    rtc.activateConfigurationSet("default");
+    QCOMPARE(rtc.activeConfigurationSet(), QString("default"));
 }
 
 void TestCorbaClientManager::createsAndDeletesComponents()

@@ -449,6 +449,32 @@ void TestManagerRuntime::configurationSets()
     edit.description = "";
     setNv(edit.configuration_data, "int_param0", "42");
     QVERIFY(config->set_configuration_set_values(edit));
+    // As in OpenRTM-aist: after a write no set is active, and nothing reaches the variables, until
+    // a set is activated.
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::NotAvailable, config->get_active_configuration_set());
+    QCOMPARE(nv(config->get_configuration_set("mode0")->configuration_data, "int_param0"), QString("42"));
+    {
+        // The same rule, held still: an update between the write and the activation applies nothing.
+        ConfigAdmin admin;
+        std::string bound;
+        admin.bindParameter("p", "1", [&bound](const std::string &value) {
+            bound = value;
+            return true;
+        });
+        admin.update();
+        QCOMPARE(bound, std::string("1"));
+        QVERIFY(admin.setValues("default", Properties::parseConf("p: 2\n")));
+        QVERIFY(!admin.isActive());
+        admin.update();
+        QCOMPARE(bound, std::string("1"));
+        QVERIFY(admin.activate("default"));
+        QVERIFY(admin.isActive());
+        admin.update();
+        QCOMPARE(bound, std::string("2"));
+    }
+    QVERIFY(config->activate_configuration_set("mode0"));
+    QCOMPARE(QByteArray(SDOPackage::ConfigurationSet_var(config->get_active_configuration_set())->id),
+             QByteArray("mode0"));
     QTRY_COMPARE(statusOf(rtc, "int_param0"), QString("42"));
 
     QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, config->activate_configuration_set("__widget__"));
@@ -459,8 +485,12 @@ void TestManagerRuntime::configurationSets()
     added.description = "";
     setNv(added.configuration_data, "int_param0", "5");
     QVERIFY(config->add_configuration_set(added));
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::NotAvailable, config->get_active_configuration_set());
     QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, config->add_configuration_set(added));
+    QVERIFY(config->activate_configuration_set("mode0"));
     QVERIFY(config->remove_configuration_set("mine"));
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::NotAvailable, config->get_active_configuration_set());
+    QVERIFY(config->activate_configuration_set("mode0"));
 }
 
 void TestManagerRuntime::componentProfile()

@@ -172,6 +172,11 @@ bool ConfigAdmin::isChanged()
     return d->changed;
 }
 
+bool ConfigAdmin::isActive()
+{
+    return d->admin.isActive();
+}
+
 const char *ConfigAdmin::getActiveId()
 {
     std::lock_guard lock(d->mutex);

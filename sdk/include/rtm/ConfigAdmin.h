@@ -62,7 +62,8 @@ public:
     bool isChanged();
     const char *getActiveId();
     bool haveConfig(const char *config_id);
-    bool isActive() { return true; }
+    /// False after a set was added, written or removed, until one is activated.
+    bool isActive();
 
     /// Set @p config_id as a node whose name is the id and whose children are the parameters.
     const coil::Properties &getConfigurationSet(const char *config_id);
