@@ -19,6 +19,12 @@ bool opposite(Profile::RtcDirection a, Profile::RtcDirection b)
         || (a == RtcDirection::Required && b == RtcDirection::Provided);
 }
 
+// An InPort of data type "any" (an FSM component's EventInPort) takes samples of every type.
+bool takesAnyType(const PortInfo &port)
+{
+    return port.dataType.compare(QLatin1String("any"), Qt::CaseInsensitive) == 0;
+}
+
 } // namespace
 
 ConnectionCheck ConnectionRules::check(const SystemModel &model, const ConnectorEnd &first,
@@ -55,7 +61,8 @@ ConnectionCheck ConnectionRules::checkData(const ConnectorEnd &firstEnd, const P
     if (first.kind == PortKind::DataOut && second.kind == PortKind::DataOut)
         return refused(tr("Two OutPorts cannot be connected; connect an OutPort to an InPort."));
     const bool known = first.kind != PortKind::Unknown && second.kind != PortKind::Unknown;
-    if (known && first.dataType != second.dataType) {
+    if (known && first.dataType != second.dataType && !takesAnyType(first)
+        && !takesAnyType(second)) {
         return refused(tr("The data types differ: %1 and %2.")
                            .arg(first.dataType, second.dataType));
     }

@@ -23,8 +23,9 @@ struct ConnectionCheck
 /**
  * The reference's connection rules.
  *
- * Data ports connect only an OutPort to an InPort with the same data type (either may be picked
- * first; the result orders them out → in). Service ports connect when at least one interface of
+ * Data ports connect only an OutPort to an InPort with the same data type, or with any type when
+ * one port's data type is "any" (an FSM component's EventInPort); either may be picked first, the
+ * result orders them out → in. Service ports connect when at least one interface of
  * one port pairs with an interface of the other: same instance name and opposite polarity
  * (Provided ↔ Required); differing types are for the connector dialog to warn about. Ports of the same component never connect. Ports whose
  * kind is unknown (no RTC profile) are assumed compatible with any data port: the user knows what
