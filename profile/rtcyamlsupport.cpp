@@ -201,6 +201,9 @@ void emitValue(YAML::Emitter &out, const Value &value)
         out << YAML::BeginMap;
         for (const auto &entry : entries) {
             out << YAML::Key;
+            // YAML allows 1024 characters in a plain `key:`; a longer one (once escaped) must be `? key`.
+            if (entry.first.size() > 128)
+                out << YAML::LongKey;
             if (needsQuotes(entry.first))
                 out << YAML::DoubleQuoted;
             out << toStd(entry.first) << YAML::Value;

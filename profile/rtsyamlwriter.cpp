@@ -68,6 +68,9 @@ private:
     void key(const QString &name)
     {
         m_out << YAML::Key;
+        // YAML allows 1024 characters in a plain `key:`; a longer one (once escaped) must be `? key`.
+        if (name.size() > 128)
+            m_out << YAML::LongKey;
         // The dialect quotes its namespaced keys.
         if (name.contains(QLatin1String("::")))
             m_out << YAML::DoubleQuoted;
