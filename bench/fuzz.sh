@@ -8,9 +8,9 @@
 # Builds what it needs with the `fuzz` preset (clang, ASan + UBSan) in build-fuzz/. Each harness
 # starts from its seeds (tests' data and tests/data/fuzz/<harness>/, listed by CMake in
 # <harness>.seeds) plus the corpus earlier runs grew in build-fuzz/fuzz/corpus/<harness>/.
-# An input taking more than 1 s is a timeout. Findings are written to
-# build-fuzz/fuzz/artifacts/<harness>/ (crash-*, leak-*, timeout-*, oom-*); the log of each run
-# is build-fuzz/fuzz/<harness>.log. Exits non-zero when anything was found.
+# Inputs are at most 4 KiB (larger seeds are cut there); one taking more than 1 s is a timeout.
+# Findings are written to build-fuzz/fuzz/artifacts/<harness>/ (crash-*, leak-*, timeout-*, oom-*);
+# the log of each run is build-fuzz/fuzz/<harness>.log. Exits non-zero when anything was found.
 set -eu
 
 if [ $# -lt 1 ]; then
@@ -59,7 +59,7 @@ for harness in "$@"; do
         cp "$seed" "$corpus/$(sha1sum "$seed" | cut -c1-40)"
     done <"$harness_dir/$harness.seeds"
 
-    nice -n 10 "$harness_dir/$harness" -max_total_time="$seconds" -timeout=1 -rss_limit_mb=2048 \
+    nice -n 10 "$harness_dir/$harness" -max_total_time="$seconds" -timeout=1 -rss_limit_mb=2048 -max_len=4096 \
         -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" >"$log" 2>&1 || true
 
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
