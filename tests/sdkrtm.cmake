@@ -22,7 +22,7 @@ target_include_directories(rtstudio_sdkproject PUBLIC ${CMAKE_CURRENT_SOURCE_DIR
 target_link_libraries(rtstudio_sdkproject PUBLIC Qt6::Core)
 
 rtstudio_add_test(tst_sdkfixtures SOURCES tst_sdkfixtures.cpp
-    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcodegen)
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcodegen rtcorba_stubs)
 target_compile_definitions(tst_sdkfixtures PRIVATE
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}")

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Every profile the Builder's tests know, and the bundled examples' components, generated in C++,
 // built against the component SDK of this build tree, loaded into one rtmanager and created there;
-// the example pair is connected to built-in components and activated. Together the profiles cover
-// every port kind, the data types the Builder offers, provided and required service ports of a
+// the example pair is connected to built-in components and activated, and the state machine
+// generated for an EventPort follows the events built-in sources send it. Together the profiles
+// cover every port kind, the data types the Builder offers, provided and required service ports of a
 // multi-module user IDL and every configuration type including vectors.
+#include "componentstatus.h"
 #include "livesystem.h"
 #include "rtctlrunner.h"
 #include "sdkproject.h"
+#include "turnstileedits.h"
 
 #include <idltypelibrary.h>
 
@@ -22,6 +25,7 @@ private slots:
     void generatedProjectRuns();
     void examplesConnectToBuiltins();
     void everyDataTypeTheBuilderOffers();
+    void generatedStateMachineFollowsEvents();
 
 private:
     RtctlResult rtctl(const QStringList &arguments);
@@ -29,8 +33,11 @@ private:
     /// Generates and builds @p profile into m_work/<name>; the module path or empty.
     QString generateAndBuild(const QString &profile, const QString &name, const QStringList &options);
 
+    QString receivedValues(const QString &component);
+
     QTemporaryDir m_work;
     LiveTest::LiveSystem m_live;
+    CORBA::ORB_var m_orb;
 };
 
 RtctlResult TestSdkFixtures::rtctl(const QStringList &arguments)
@@ -40,6 +47,8 @@ RtctlResult TestSdkFixtures::rtctl(const QStringList &arguments)
 
 void TestSdkFixtures::initTestCase()
 {
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
     QVERIFY(m_work.isValid());
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
@@ -194,6 +203,53 @@ void TestSdkFixtures::everyDataTypeTheBuilderOffers()
     }
     QVERIFY(rtctl({"act", "EveryType0.rtc"}).code == 0);
     QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", "EveryType0.rtc"}).out.contains("Active"), 10000);
+}
+
+QString TestSdkFixtures::receivedValues(const QString &component)
+{
+    return LiveTest::componentStatus(
+        m_orb, QStringLiteral("corbaname::%1#fixhost.host_cxt/%2").arg(m_live.namingServer(), component),
+        "received_values");
+}
+
+void TestSdkFixtures::generatedStateMachineFollowsEvents()
+{
+    // EventPorts: the generated static FSM with the user's condition, driven by built-in sources
+    // through connectors that name the event (fsm_event_name); the sink sees each state change.
+    const QString dir = m_work.filePath("Turnstile");
+    const QStringList generate{"gen", RTSTUDIO_TEST_DATA_DIR "/sdk/Turnstile.xml", "--lang", "cpp", "-o", dir};
+    RtctlResult r = runRtctl(generate);
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QString log;
+    for (const SdkTest::UserEdit &edit : Turnstile::userEdits)
+        QVERIFY2(SdkTest::applyEdit(dir, edit, &log), qPrintable(log));
+    r = runRtctl(generate + QStringList{"--merge"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(SdkTest::buildProject(dir, RTSTUDIO_BUILD_DIR, &log), qPrintable(log));
+
+    const QString manager = host() + "/manager.mgr";
+    r = rtctl({"mgr", manager, "load", dir + "/build/src/Turnstile.so", "create", "Turnstile?instance_name=Gate",
+               "create", "ConsoleIn?instance_name=Coins&exec_cxt.periodic.rate=20", "create",
+               "ConsoleIn?instance_name=Pushes", "create", "ConsoleOut?instance_name=GateState"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    for (const QStringList &link : {QStringList{"-p", "fsm_event_name=coin", "Coins.rtc:out", "Gate.rtc:control"},
+                                    QStringList{"Gate.rtc:state", "GateState.rtc:in"}}) {
+        r = rtctl(QStringList{"con"} + link);
+        QVERIFY2(r.code == 0, qPrintable(link.join(' ') + ": " + r.out + r.err));
+    }
+    r = rtctl({"act", "GateState.rtc", "Gate.rtc", "Coins.rtc"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    // Locked at first; coins 1 … 9 fail the condition, 10 opens; later coins keep it open.
+    QTRY_COMPARE_WITH_TIMEOUT(receivedValues("GateState.rtc"), QStringLiteral("0,1"), 20000);
+
+    // Pushes: the first one locks the gate again, the next one raises the alarm, which only a
+    // reset leaves.
+    QVERIFY(rtctl({"deact", "Coins.rtc"}).code == 0);
+    r = rtctl({"con", "-p", "fsm_event_name=push", "Pushes.rtc:out", "Gate.rtc:control"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY(rtctl({"act", "Pushes.rtc"}).code == 0);
+    QTRY_COMPARE_WITH_TIMEOUT(receivedValues("GateState.rtc"), QStringLiteral("0,1,0,2"), 20000);
+    QVERIFY(rtctl({"deact", "Pushes.rtc", "Gate.rtc"}).code == 0);
 }
 
 QTEST_GUILESS_MAIN(TestSdkFixtures)

@@ -5,12 +5,11 @@
 // against the component SDK of this build tree, rtmanager loads the module, and the instances
 // exchange data with built-in components, call each other's service and follow configuration
 // changes. The standalone <Name>Comp registers in the name server and is activated with rtctl.
+#include "componentstatus.h"
 #include "livesystem.h"
 #include "rtctlrunner.h"
 #include "sdkgreeteredits.h"
 #include "sdkproject.h"
-
-#include <RTC.hh>
 
 #include <QtTest>
 
@@ -19,22 +18,6 @@
 namespace {
 
 const QString fixtureDir = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
-
-QString statusOf(CORBA::ORB_ptr orb, const QString &ior, const char *name)
-{
-    try {
-        CORBA::Object_var object = orb->string_to_object(ior.toUtf8().constData());
-        RTC::RTObject_var rtc = RTC::RTObject::_narrow(object);
-        SDOPackage::NVList_var list = rtc->get_status_list();
-        for (CORBA::ULong i = 0; i < list->length(); ++i) {
-            const char *text = nullptr;
-            if (QByteArray(list[i].name.in()) == name && (list[i].value >>= text))
-                return QString::fromUtf8(text);
-        }
-    } catch (const CORBA::Exception &) {
-    }
-    return {};
-}
 
 } // namespace
 
@@ -79,8 +62,8 @@ void TestSdkGenerated::initTestCase()
     QVERIFY2(QFile::exists(m_project + "/include/SdkGreeter/VectorConvert.h"),
              "a vector parameter brings the vector conversion header");
     QString error;
-    for (const SdkGreeter::UserEdit &edit : SdkGreeter::userEdits)
-        QVERIFY2(SdkGreeter::applyEdit(m_project, edit, &error), qPrintable(error));
+    for (const SdkTest::UserEdit &edit : SdkGreeter::userEdits)
+        QVERIFY2(SdkTest::applyEdit(m_project, edit, &error), qPrintable(error));
     // Regenerating merges the profile's blocks around the user's code.
     RtctlResult merged = runRtctl(generate + QStringList{"--merge"});
     QVERIFY2(merged.code == 0, qPrintable(merged.out + merged.err));
@@ -127,7 +110,7 @@ QString TestSdkGenerated::lastValue(const QString &path)
     static QHash<QString, QString> iors;
     if (!iors.contains(path))
         iors.insert(path, iorOf(path));
-    return statusOf(m_orb, iors.value(path), "last_value");
+    return LiveTest::componentStatus(m_orb, iors.value(path), "last_value");
 }
 
 void TestSdkGenerated::moduleRunsInManager()

@@ -2,25 +2,15 @@
 #pragma once
 
 // The SdkGreeter fixture (tests/data/sdk/SdkGreeter) as a user would finish it: the code written
-// between the generated blocks, and the tools that apply it and build the project. Shared by the
+// between the generated blocks (applied with SdkTest::applyEdit). Shared by the
 // tests that build the same generated project against the component SDK and against OpenRTM-aist.
 
-#include <QByteArray>
-#include <QFile>
-#include <QString>
-#include <QStringList>
+#include "sdkproject.h"
 
 namespace SdkGreeter {
 
 /// What the user writes into the generated files (between the generated blocks).
-struct UserEdit
-{
-    const char *file;
-    const char *before;
-    const char *after;
-};
-
-inline const UserEdit userEdits[] = {
+inline const SdkTest::UserEdit userEdits[] = {
     {"src/SdkGreeter.cpp", "#include \"SdkGreeter.h\"\n", "#include \"SdkGreeter.h\"\n\n#include <algorithm>\n"},
     {"src/SdkGreeter.cpp",
      "RTC::ReturnCode_t SdkGreeter::onExecute(RTC::UniqueId /*ec_id*/)\n{\n  return RTC::RTC_OK;\n}",
@@ -59,27 +49,5 @@ inline const UserEdit userEdits[] = {
     {"src/GreeterSVC_impl.cpp", "  // Please insert your code here.\n  return 0;",
      "  std::lock_guard<std::mutex> lock(greetingsMutex);\n  return greetings[this];"},
 };
-
-/// Replaces the first generated text of @p edit in the project at @p root with the user's text.
-inline bool applyEdit(const QString &root, const UserEdit &edit, QString *error)
-{
-    QFile file(root + '/' + edit.file);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = "cannot read " + file.fileName();
-        return false;
-    }
-    QByteArray text = file.readAll();
-    file.close();
-    if (!text.contains(edit.before)) {
-        *error = QString("%1 has no '%2'").arg(edit.file, edit.before);
-        return false;
-    }
-    text.replace(edit.before, edit.after);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(text) != text.size()) {
-        *error = "cannot write " + file.fileName();
-        return false;
-    }
-    return true;
-}
 
 } // namespace SdkGreeter

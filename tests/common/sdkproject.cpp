@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "sdkproject.h"
 
+#include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
 
@@ -33,6 +34,27 @@ bool buildProject(const QString &dir, const QString &sdkPrefix, QString *log)
         configure << "-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache;
     return runTool(cmake, configure, dir, 120000, log)
            && runTool(cmake, {"--build", dir + "/build", "-j2"}, dir, 600000, log);
+}
+
+bool applyEdit(const QString &root, const UserEdit &edit, QString *error)
+{
+    QFile file(root + '/' + QString::fromUtf8(edit.file));
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = "cannot read " + file.fileName();
+        return false;
+    }
+    QByteArray text = file.readAll();
+    file.close();
+    if (!text.contains(edit.before)) {
+        *error = QStringLiteral("%1 has no '%2'").arg(QString::fromUtf8(edit.file), QString::fromUtf8(edit.before));
+        return false;
+    }
+    text.replace(edit.before, edit.after);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(text) != text.size()) {
+        *error = "cannot write " + file.fileName();
+        return false;
+    }
+    return true;
 }
 
 } // namespace SdkTest
