@@ -377,6 +377,8 @@ QString quoted(const QString &value, bool key)
     const bool needsQuotes = value.isEmpty() || value.trimmed() != value
         || !plain.match(value).hasMatch() || value.contains(QLatin1String("&&"))
         || value.contains(QLatin1String("!=")) || value.contains(QLatin1String(".."))
+        // `a&` before `&&`, `1.` before `..` would make a longer operator of the two.
+        || value.endsWith(QLatin1Char('&')) || value.endsWith(QLatin1Char('.'))
         || (key && value.contains(QLatin1Char(':')));
     if (!needsQuotes)
         return value;
