@@ -147,6 +147,11 @@ XmlNode toXml(const RtcConfiguration &c)
         node.addChild(constraintToXml(*c.constraint));
     addOptional(node, c.doc);
     addProperties(node, c.properties);
+    // Files of RTC Builder's older versions type plain configurations rtcDoc:configuration_doc;
+    // the extension type is needed only for the extension's fields.
+    if (c.extras.hasXsiType(Ns::RtcDoc, s("configuration_doc")) && !c.variableName && !c.comment
+        && c.properties.isEmpty())
+        node.setXsiType(Ns::RtcDoc, s("configuration_doc"));
     c.extras.applyTo(node);
     return node;
 }

@@ -19,6 +19,8 @@ bool XmlExtras::operator==(const XmlExtras &other) const
 
 void XmlExtras::applyTo(XmlNode &node) const
 {
+    if (node.xsiTypeName.isEmpty() && !xsiTypeName.isEmpty())
+        node.setXsiType(xsiTypeNamespace, xsiTypeName);
     for (const XmlAttribute &a : attributes) {
         if (!node.attribute(a.namespaceUri, a.name))
             node.attributes.append(a);
@@ -113,6 +115,8 @@ const XmlNode *NodeReader::child(const QString &ns, const QString &name)
 XmlExtras NodeReader::extras() const
 {
     XmlExtras result;
+    result.xsiTypeNamespace = m_node.xsiTypeNamespace;
+    result.xsiTypeName = m_node.xsiTypeName;
     for (int i = 0; i < m_node.attributes.size(); ++i) {
         if (!m_attributeUsed[std::size_t(i)])
             result.attributes.append(m_node.attributes.at(i));

@@ -24,12 +24,22 @@ struct XmlExtras
 
     QList<XmlAttribute> attributes;
     std::vector<Child> children;
+    /// The element's xsi:type in the file (namespace URI, local name). Like a source location it
+    /// describes where the data came from: not compared, not counted by isEmpty(). Writers keep
+    /// it where they would write no type, or a type the file's narrower one can stand for.
+    QString xsiTypeNamespace;
+    QString xsiTypeName;
 
     bool isEmpty() const { return attributes.isEmpty() && children.empty(); }
+    bool hasXsiType(const QString &ns, const QString &localName) const
+    {
+        return xsiTypeNamespace == ns && xsiTypeName == localName;
+    }
     bool operator==(const XmlExtras &other) const;
     bool operator!=(const XmlExtras &other) const { return !(*this == other); }
 
-    /// Adds the attributes to `node` and inserts the children at their recorded positions.
+    /// Adds the attributes to `node` and inserts the children at their recorded positions; gives
+    /// `node` the file's xsi:type when it has none.
     void applyTo(XmlNode &node) const;
 };
 

@@ -89,6 +89,7 @@ private slots:
     void readsLanguageAndParameters();
     void roundTripIsLossless();
     void keepsUnknownContentInPlace();
+    void keepsNarrowConfigurationType();
     void writesOpenRtpTypes();
     void readsLegacySpellings();
     void writesSchemaSpelling();
@@ -381,6 +382,40 @@ void TestRtcXml::keepsUnknownContentInPlace()
     const auto languages = childrenNamed(*root, Ns::Rtc, QStringLiteral("Language"));
     QCOMPARE(indexOfChild(*languages.at(0), Future, QStringLiteral("Toolchain")), 0);
     QCOMPARE(indexOfChild(*languages.at(0), Ns::RtcExt, QStringLiteral("targets")), 1);
+}
+
+void TestRtcXml::keepsNarrowConfigurationType()
+{
+    // Older RTC Builder files type plain configurations rtcDoc:configuration_doc; saving keeps
+    // that type until an extension field needs rtcExt:configuration_ext.
+    const QByteArray file
+        = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+          "<rtc:RtcProfile rtc:version=\"0.2\" rtc:id=\"RTC:V:C:N:1.0.0\" "
+          "xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\" "
+          "xmlns:rtcDoc=\"http://www.openrtp.org/namespaces/rtc_doc\" "
+          "xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\">\n"
+          "  <rtc:BasicInfo rtc:name=\"N\" rtc:componentType=\"STATIC\" rtc:activityType=\"PERIODIC\" "
+          "rtc:componentKind=\"DataFlowComponent\" rtc:category=\"C\" rtc:executionType=\"PeriodicExecutionContext\" "
+          "rtc:vendor=\"V\" rtc:version=\"1.0.0\" rtc:creationDate=\"2008-01-01T00:00:00\" "
+          "rtc:updateDate=\"2008-01-01T00:00:00\"/>\n"
+          "  <rtc:ConfigurationSet>\n"
+          "    <rtc:Configuration xsi:type=\"rtcDoc:configuration_doc\" rtc:name=\"a\" rtc:type=\"int\" "
+          "rtc:defaultValue=\"1\"/>\n"
+          "    <rtc:Configuration xsi:type=\"rtcDoc:configuration_doc\" rtc:name=\"b\" rtc:type=\"int\" "
+          "rtc:defaultValue=\"2\"/>\n"
+          "  </rtc:ConfigurationSet>\n"
+          "</rtc:RtcProfile>\n";
+    Diagnostics diagnostics;
+    std::optional<RtcProfile> p = readRtcXml(file, QStringLiteral("old.xml"), &diagnostics);
+    QVERIFY(p);
+    p->configurations[1].variableName = QStringLiteral("bee");
+    const auto root = parseXml(writeRtcXml(*p), QStringLiteral("saved.xml"), nullptr);
+    QVERIFY(root);
+    const XmlNode &set = *childrenNamed(*root, Ns::Rtc, QStringLiteral("ConfigurationSet")).front();
+    QCOMPARE(set.children.at(0).xsiTypeNamespace, Ns::RtcDoc);
+    QCOMPARE(set.children.at(0).xsiTypeName, QStringLiteral("configuration_doc"));
+    QCOMPARE(set.children.at(1).xsiTypeNamespace, Ns::RtcExt);
+    QCOMPARE(set.children.at(1).xsiTypeName, QStringLiteral("configuration_ext"));
 }
 
 void TestRtcXml::writesOpenRtpTypes()

@@ -94,6 +94,7 @@ private slots:
     void readsExtension();
     void mapsLegacySpellings();
     void keepsUnknownContentInPlace();
+    void keepsRootExtensionType();
     void writesSchemaFormWithXsiTypes();
     void roundTrips_data();
     void roundTrips();
@@ -334,6 +335,26 @@ void TestRtsXml::keepsUnknownContentInPlace()
     const int deployment = indexOfChild(*saved, future, QStringLiteral("Deployment"));
     QCOMPARE(deployment, int(saved->children.size()) - 1);
     QCOMPARE(saved->children.back().children.size(), std::size_t(1));
+}
+
+void TestRtsXml::keepsRootExtensionType()
+{
+    // rtsprofile may type the root rtsExt:rts_profile_ext (which makes its rtsExt: attributes
+    // schema-valid); saving keeps it, and a root without one stays without.
+    QByteArray file = readFile(dataPath(QStringLiteral("rts/full.xml")));
+    QVERIFY(!file.contains("rts_profile_ext"));
+    const auto plain = parseXml(writeRtsXml(load(QStringLiteral("rts/full.xml"))), QStringLiteral("saved.xml"), nullptr);
+    QVERIFY(plain && plain->xsiTypeName.isEmpty());
+    const int root = file.indexOf("<rts:RtsProfile ");
+    QVERIFY(root >= 0);
+    file.insert(root + int(qstrlen("<rts:RtsProfile ")), "xsi:type=\"rtsExt:rts_profile_ext\" ");
+    Diagnostics diagnostics;
+    const auto typed = readRtsXml(file, QStringLiteral("typed.xml"), &diagnostics);
+    QVERIFY2(typed, qPrintable(diagnostics.isEmpty() ? QString() : diagnostics.first().toString()));
+    const auto saved = parseXml(writeRtsXml(*typed), QStringLiteral("saved.xml"), nullptr);
+    QVERIFY(saved);
+    QCOMPARE(saved->xsiTypeNamespace, Ns::RtsExt);
+    QCOMPARE(saved->xsiTypeName, QStringLiteral("rts_profile_ext"));
 }
 
 void TestRtsXml::writesSchemaFormWithXsiTypes()
