@@ -30,7 +30,7 @@ bool InPortBase::isNew()
     return false;
 }
 
-bool InPortBase::readMarshalled(CdrBytes *data, bool *littleEndian)
+bool InPortBase::readMarshalled(SharedCdr *data, bool *littleEndian)
 {
     const auto all = connectors();
     for (const auto &connector : all) {

@@ -23,7 +23,7 @@ public:
     /// True when a pushed sample waits in any connection.
     bool isNew();
     /// Takes one sample (pushed ones first, then pulls); false when none is available.
-    bool readMarshalled(CdrBytes *data, bool *littleEndian);
+    bool readMarshalled(SharedCdr *data, bool *littleEndian);
     /// Called (in the ORB's thread) for every sample that arrives, before it is buffered.
     void setReceiveListener(SampleListener listener);
     size_t connectorCount();
@@ -55,9 +55,9 @@ public:
     /// Reads one sample into @p value; false when none was available or it did not unmarshal.
     bool read(T *value)
     {
-        CdrBytes data;
+        SharedCdr data;
         bool littleEndian = true;
-        return readMarshalled(&data, &littleEndian) && unmarshal(data, littleEndian, value);
+        return readMarshalled(&data, &littleEndian) && unmarshal(*data, littleEndian, value);
     }
 };
 

@@ -58,7 +58,7 @@ bool InPortPushConnector::hasNew() const
     return m_buffer->readable() > 0;
 }
 
-bool InPortPushConnector::read(CdrBytes *data)
+bool InPortPushConnector::read(SharedCdr *data)
 {
     return m_buffer->read(data) == RingBuffer::Status::Ok;
 }
@@ -76,18 +76,20 @@ InPortPullConnector::InPortPullConnector(const std::string &id, const Properties
 {
 }
 
-bool InPortPullConnector::read(CdrBytes *data)
+bool InPortPullConnector::read(SharedCdr *data)
 {
+    CdrBytes bytes;
     try {
         OpenRTM::CdrData_var cdr;
         if (m_peer->get(cdr.out()) != OpenRTM::PORT_OK)
             return false;
-        data->assign(cdr->get_buffer(), cdr->get_buffer() + cdr->length());
+        bytes.assign(cdr->get_buffer(), cdr->get_buffer() + cdr->length());
     } catch (const CORBA::Exception &) {
         return false;
     }
     if (m_listener)
-        m_listener(*data, littleEndian());
+        m_listener(bytes, littleEndian());
+    *data = std::make_shared<const CdrBytes>(std::move(bytes));
     return true;
 }
 

@@ -27,7 +27,7 @@ public:
     /// True when a sample is waiting (push) — pull connections never know in advance.
     virtual bool hasNew() const = 0;
     /// Takes one sample; false when there is none.
-    virtual bool read(CdrBytes *data) = 0;
+    virtual bool read(SharedCdr *data) = 0;
 
 private:
     std::string m_id;
@@ -55,7 +55,7 @@ public:
                         PortableServer::POA_ptr poa, ReceiveListener listener);
     ~InPortPushConnector() override;
     bool hasNew() const override;
-    bool read(CdrBytes *data) override;
+    bool read(SharedCdr *data) override;
     /// Published as `dataport.corba_cdr.inport_ior`.
     OpenRTM::InPortCdr_ptr reference();
 
@@ -72,7 +72,7 @@ public:
     InPortPullConnector(const std::string &id, const Properties &connectorProperties,
                         OpenRTM::OutPortCdr_ptr peer, ReceiveListener listener);
     bool hasNew() const override { return false; }
-    bool read(CdrBytes *data) override;
+    bool read(SharedCdr *data) override;
 
 private:
     OpenRTM::OutPortCdr_var m_peer;

@@ -128,24 +128,24 @@ void OutPortPushConnector::runNew()
 
 void OutPortPushConnector::pushBuffered()
 {
-    CdrBytes data;
+    SharedCdr data;
     if (m_pushPolicy == "all") {
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
-            send(CdrView::of(data));
+            send(CdrView::of(*data));
     } else if (m_pushPolicy == "fifo") {
         if (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
-            send(CdrView::of(data));
+            send(CdrView::of(*data));
     } else if (m_pushPolicy == "skip") {
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok) {
             if (m_skipped++ % (m_skip + 1) == 0)
-                send(CdrView::of(data));
+                send(CdrView::of(*data));
         }
     } else { // "new": only the newest of what piled up
         bool any = false;
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
             any = true;
         if (any)
-            send(CdrView::of(data));
+            send(CdrView::of(*data));
     }
 }
 
@@ -165,11 +165,13 @@ void OutPortPushConnector::runPeriodic()
 
 OpenRTM::PortStatus OutPortCdrServant::get(OpenRTM::CdrData_out data)
 {
-    CdrBytes bytes;
+    SharedCdr bytes;
     const RingBuffer::Status status = m_buffer->read(&bytes);
-    data = new OpenRTM::CdrData(CORBA::ULong(bytes.size()));
-    data->length(CORBA::ULong(bytes.size()));
-    std::copy(bytes.begin(), bytes.end(), data->get_buffer());
+    const CORBA::ULong length = status == RingBuffer::Status::Ok ? CORBA::ULong(bytes->size()) : 0;
+    data = new OpenRTM::CdrData(length);
+    data->length(length);
+    if (length > 0)
+        std::copy(bytes->begin(), bytes->end(), data->get_buffer());
     switch (status) {
     case RingBuffer::Status::Ok:
         return OpenRTM::PORT_OK;

@@ -63,18 +63,18 @@ RingBuffer::Status RingBuffer::write(CdrBytes data)
             break;
         }
     }
-    m_samples.push_back(std::move(data));
+    m_samples.push_back(std::make_shared<const CdrBytes>(std::move(data)));
     m_changed.notify_all();
     return Status::Ok;
 }
 
-RingBuffer::Status RingBuffer::read(CdrBytes *data)
+RingBuffer::Status RingBuffer::read(SharedCdr *data)
 {
     std::unique_lock lock(m_mutex);
     if (m_samples.empty()) {
         switch (m_emptyPolicy) {
         case EmptyPolicy::Readback:
-            if (!m_hasLast)
+            if (!m_last)
                 return Status::Empty;
             *data = m_last;
             return Status::Ok;
@@ -87,12 +87,20 @@ RingBuffer::Status RingBuffer::read(CdrBytes *data)
             break;
         }
     }
-    *data = std::move(m_samples.front());
+    m_last = std::move(m_samples.front());
     m_samples.pop_front();
-    m_last = *data;
-    m_hasLast = true;
+    *data = m_last;
     m_changed.notify_all();
     return Status::Ok;
+}
+
+RingBuffer::Status RingBuffer::read(CdrBytes *data)
+{
+    SharedCdr sample;
+    const Status status = read(&sample);
+    if (status == Status::Ok)
+        *data = *sample;
+    return status;
 }
 
 size_t RingBuffer::readable() const

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -13,6 +14,9 @@ namespace Runtime {
 
 /// Marshalled data as it travels between ports.
 using CdrBytes = std::vector<unsigned char>;
+
+/// One marshalled sample shared between a buffer and its readers (no copy for each reader).
+using SharedCdr = std::shared_ptr<const CdrBytes>;
 
 /// Marshalled bytes owned by someone else (valid until that owner changes them).
 struct CdrView
@@ -43,6 +47,8 @@ public:
     /// Stores @p data according to the write policy (moved in: pass an rvalue to avoid a copy).
     Status write(CdrBytes data);
     /// Takes the oldest sample according to the read policy ("readback" repeats the last one).
+    Status read(SharedCdr *data);
+    /// The same, copied out.
     Status read(CdrBytes *data);
     /// Unread samples.
     size_t readable() const;
@@ -56,9 +62,8 @@ private:
 
     mutable std::mutex m_mutex;
     std::condition_variable m_changed;
-    std::deque<CdrBytes> m_samples;
-    CdrBytes m_last;
-    bool m_hasLast = false;
+    std::deque<SharedCdr> m_samples;
+    SharedCdr m_last; ///< what readback repeats; shared with the reader that took it
     bool m_closed = false;
     size_t m_length = 8;
     FullPolicy m_fullPolicy = FullPolicy::Overwrite;

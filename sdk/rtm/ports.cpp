@@ -196,7 +196,7 @@ ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
     return result;
 }
 
-bool InPortBase::readBytes(Runtime::CdrBytes *data, bool *littleEndian)
+bool InPortBase::readBytes(Runtime::SharedCdr *data, bool *littleEndian)
 {
     return readMarshalled(data, littleEndian);
 }

@@ -51,13 +51,13 @@ public:
     {
         if (readDirect())
             return true;
-        ::Runtime::CdrBytes bytes;
+        ::Runtime::SharedCdr bytes;
         bool littleEndian = true;
-        if (!readBytes(&bytes, &littleEndian) || !::Runtime::unmarshal(bytes, littleEndian, &m_value))
+        if (!readBytes(&bytes, &littleEndian) || !::Runtime::unmarshal(*bytes, littleEndian, &m_value))
             return false;
         if (m_listeners.hasListeners(ConnectorDataListenerType::ON_BUFFER_READ))
-            m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_READ, std::string(), bytes.data(),
-                                   static_cast<unsigned long>(bytes.size()), littleEndian);
+            m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_READ, std::string(), bytes->data(),
+                                   static_cast<unsigned long>(bytes->size()), littleEndian);
         return true;
     }
     /// Reads into the bound variable (OpenRTM's update()).

@@ -43,7 +43,7 @@ public:
 
 protected:
     /// Takes one marshalled sample; false when none was waiting.
-    bool readBytes(::Runtime::CdrBytes *data, bool *littleEndian);
+    bool readBytes(::Runtime::SharedCdr *data, bool *littleEndian);
 };
 } // namespace RTC
 
