@@ -20,12 +20,15 @@ QString sideOf(const QString &position, ComponentPreview::Port::Kind kind)
     return kind == ComponentPreview::Port::Out ? QStringLiteral("RIGHT") : QStringLiteral("LEFT");
 }
 
-/// "e1, e2" or "no events": what an EventPort shows under its name.
+/// "e1, e2" or "no events": what an EventPort shows under its name (each event once, although
+/// several transitions may share it).
 QString eventsText(const Profile::RtcDataPort &port)
 {
     QStringList names;
-    for (const Profile::RtcEvent &event : port.events)
-        names << event.name;
+    for (const Profile::RtcEvent &event : port.events) {
+        if (!names.contains(event.name))
+            names << event.name;
+    }
     return names.isEmpty() ? ComponentPreview::tr("no events") : names.join(QStringLiteral(", "));
 }
 

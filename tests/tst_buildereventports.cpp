@@ -218,6 +218,15 @@ void TestBuilderEventPorts::previewDrawsEventPorts()
     const QImage image = preview->grab().toImage();
     const QPoint centre = event.marker.center().toPoint();
     QCOMPARE(image.pixelColor(centre), QColor(196, 160, 230));
+
+    // Transitions that share an event show it once.
+    EventTableModel *table = e.page->eventTable();
+    QVERIFY(table->addEvent());
+    QVERIFY(table->setData(table->index(1, EventTableModel::Name), table->index(0, EventTableModel::Name).data()));
+    for (const ComponentPreview::Port &p : preview->ports()) {
+        if (p.name == QLatin1String("event"))
+            QCOMPARE(p.type, table->index(0, EventTableModel::Name).data().toString());
+    }
 }
 
 void TestBuilderEventPorts::eventTableFollowsPortMoves()
