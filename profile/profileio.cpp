@@ -172,10 +172,15 @@ bool writeFileAtomically(const QString &path, const QByteArray &data, Diagnostic
             diagnostics->append(Diagnostic::error(path, 0, 0, message));
         return false;
     };
-    if (!file.open(QIODevice::WriteOnly))
+    // Unbuffered, and flushed before the commit: Qt's QSaveFile commits even when its buffered
+    // data could not be flushed (a full disk), which would replace the old file with an empty one.
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
         return fail(tr("cannot be written: %1").arg(file.errorString()));
-    if (file.write(data) != data.size())
-        return fail(tr("writing failed: %1").arg(file.errorString()));
+    if (file.write(data) != data.size() || !file.flush()) {
+        const QString reason = file.errorString();
+        file.cancelWriting();
+        return fail(tr("writing failed: %1").arg(reason));
+    }
     if (!file.commit())
         return fail(tr("could not be saved: %1").arg(file.errorString()));
     return true;

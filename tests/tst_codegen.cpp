@@ -11,6 +11,7 @@
 #include "rtcxml.h"
 #include "templaterenderer.h"
 #include "templateset.h"
+#include "common/tmpfsmount.h"
 
 #include <QDir>
 #include <QFile>
@@ -56,6 +57,8 @@ private slots:
     void restoreSwapsBackupSet();
     void writerCreatesKeepsMergesOverwrites();
     void writerLeavesNothingOnFailure();
+    void writerReportsFullOrReadOnlyDisk_data();
+    void writerReportsFullOrReadOnlyDisk();
 
 private:
     IdlParameter parameter(const QString &operation, const QString &name) const;
@@ -739,6 +742,42 @@ void TestCodegen::writerLeavesNothingOnFailure()
     QVERIFY(!writer.write({{"ok.txt", "x"}, {"../outside.txt", "x"}}, &diagnostics));
     QVERIFY(!QFile::exists(dir.filePath("ok.txt")));
     QVERIFY(!QFileInfo::exists(QDir(dir.path()).filePath("../outside.txt")));
+}
+
+void TestCodegen::writerReportsFullOrReadOnlyDisk_data()
+{
+    QTest::addColumn<bool>("readOnly");
+    QTest::newRow("full disk") << false;
+    QTest::newRow("read-only file system") << true;
+}
+
+void TestCodegen::writerReportsFullOrReadOnlyDisk()
+{
+    // Regenerating into a tree that cannot take the files: an error naming the file, the user's
+    // file as it was, no new file.
+    QFETCH(bool, readOnly);
+    QTemporaryDir dir;
+    TestDisk::TmpfsMount disk;
+    QString why;
+    if (!disk.mount(dir.path(), 256, &why))
+        QSKIP(qPrintable("skipped: cannot mount a small file system here (" + why + ")"));
+    writeFile(dir.filePath("src/comp.cpp"), "// <rtc-template block=\"b\">\n// </rtc-template>\nuser code\n");
+    if (readOnly)
+        QVERIFY2(disk.makeReadOnly(&why), qPrintable(why));
+    else
+        disk.fill();
+    ProjectWriter writer(dir.path());
+    writer.setDecisionCallback([](const QString &) { return FileDecision::Merge; });
+    Diagnostics diagnostics;
+    const QByteArray large(64 * 1024, 'x');
+    QVERIFY(!writer.write({{"src/comp.cpp", "// <rtc-template block=\"b\">\nfresh\n// </rtc-template>\n"},
+                           {"src/new.cpp", large}},
+                          &diagnostics));
+    QVERIFY(hasErrors(diagnostics));
+    QVERIFY2(diagnostics.first().toString().contains(dir.path()), qPrintable(diagnostics.first().toString()));
+    QCOMPARE(readAll(dir.filePath("src/comp.cpp")),
+             QByteArray("// <rtc-template block=\"b\">\n// </rtc-template>\nuser code\n"));
+    QVERIFY(!QFile::exists(dir.filePath("src/new.cpp")));
 }
 
 QTEST_GUILESS_MAIN(TestCodegen)

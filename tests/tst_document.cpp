@@ -4,6 +4,7 @@
 #include "componentcommands.h"
 #include "rtcdocument.h"
 #include "rtscommands.h"
+#include "common/tmpfsmount.h"
 #include "xmlequivalence.h"
 
 #include <QDir>
@@ -91,6 +92,8 @@ private slots:
     void failedSaveKeepsDocumentModified_data();
     void failedSaveKeepsDocumentModified();
     void untitledDocumentNeedsSaveAs();
+    void failedSaveOnDiskKeepsOldFile_data();
+    void failedSaveOnDiskKeepsOldFile();
 };
 
 void TestDocument::loadsByContent_data()
@@ -313,6 +316,40 @@ void TestDocument::untitledDocumentNeedsSaveAs()
     QVERIFY(!document.save(&diagnostics));
     QVERIFY(Profile::hasErrors(diagnostics));
     QVERIFY(document.isUntitled());
+}
+
+void TestDocument::failedSaveOnDiskKeepsOldFile_data()
+{
+    QTest::addColumn<bool>("readOnly");
+    QTest::newRow("full disk") << false;
+    QTest::newRow("read-only file system") << true;
+}
+
+void TestDocument::failedSaveOnDiskKeepsOldFile()
+{
+    QFETCH(bool, readOnly);
+    QTemporaryDir dir;
+    TestDisk::TmpfsMount disk;
+    QString why;
+    if (!disk.mount(dir.path(), 256, &why))
+        QSKIP(qPrintable("skipped: cannot mount a small file system here (" + why + ")"));
+    const QString path = copyFixture(dir, QStringLiteral("component.xml"));
+    const QByteArray before = readAll(path);
+    std::unique_ptr<Document> document = load(path);
+    QVERIFY(document);
+    editName(document.get(), QStringLiteral("Unsaved"));
+    if (readOnly)
+        QVERIFY2(disk.makeReadOnly(&why), qPrintable(why));
+    else
+        disk.fill();
+
+    Profile::Diagnostics diagnostics;
+    QVERIFY(!document->save(&diagnostics));
+    QVERIFY(Profile::hasErrors(diagnostics));
+    QVERIFY2(diagnostics.first().toString().contains(path), qPrintable(diagnostics.first().toString()));
+    QVERIFY(document->isModified());
+    QCOMPARE(document->filePath(), path);
+    QCOMPARE(readAll(path), before);
 }
 
 QTEST_GUILESS_MAIN(TestDocument)
