@@ -2,6 +2,7 @@
 // The real dialogs behind UserPrompts: each answer maps to the right choice, file names get the
 // extension of the chosen format, problem reports carry their diagnostics.
 #include "dialogprompts.h"
+#include "modalguard.h"
 
 #include <QApplication>
 #include <QFileDialog>
@@ -10,25 +11,9 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QTimer>
-
-#include <functional>
 
 using namespace Studio;
-
-namespace {
-
-/// Runs `answer` on the modal dialog once it is up (from inside its own event loop).
-void whenModal(std::function<void(QWidget *)> answer)
-{
-    QTimer::singleShot(0, qApp, [answer] {
-        QWidget *modal = QApplication::activeModalWidget();
-        QVERIFY(modal);
-        answer(modal);
-    });
-}
-
-} // namespace
+using Expected = GuiTest::ModalGuard::Expected;
 
 class TestAppDialogPrompts : public QObject
 {
@@ -71,7 +56,7 @@ void TestAppDialogPrompts::saveChangesButtons()
     QWidget parent;
     DialogPrompts prompts(&parent);
     QString shownText;
-    whenModal([&](QWidget *modal) {
+    const Expected answer([&](QWidget *modal) {
         auto *box = qobject_cast<QMessageBox *>(modal);
         QVERIFY(box);
         shownText = box->text();
@@ -99,7 +84,7 @@ void TestAppDialogPrompts::saveFileNameGetsFormatExtension()
     QTemporaryDir dir;
     QWidget parent;
     DialogPrompts prompts(&parent);
-    whenModal([&](QWidget *modal) {
+    const Expected answer([&](QWidget *modal) {
         auto *dialog = qobject_cast<QFileDialog *>(modal);
         QVERIFY(dialog);
         const QStringList filters = dialog->nameFilters();
@@ -119,7 +104,7 @@ void TestAppDialogPrompts::problemsShowDiagnosticsAsDetails()
     DialogPrompts prompts(&parent);
     QString details;
     QString text;
-    whenModal([&](QWidget *modal) {
+    const Expected answer([&](QWidget *modal) {
         auto *box = qobject_cast<QMessageBox *>(modal);
         QVERIFY(box);
         text = box->text();

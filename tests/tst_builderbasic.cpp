@@ -6,6 +6,7 @@
 #include "componenteditor.h"
 #include "kindchoices.h"
 #include "languagepage.h"
+#include "modalguard.h"
 #include "profileio.h"
 #include "rtcxml.h"
 #include "tst_buildersupport.h"
@@ -262,6 +263,7 @@ void TestBuilderBasic::importFromTheDialog()
 {
     Editor e;
     QVERIFY(QTest::qWaitForWindowExposed(&e.editor));
+    const GuiTest::ModalGuard::Expected expected; // window-modal, answered below
     QTest::mouseClick(e.basic->findChild<QPushButton *>(QStringLiteral("importButton")),
                       Qt::LeftButton);
     QFileDialog *dialog = nullptr;

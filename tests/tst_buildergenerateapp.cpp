@@ -10,6 +10,7 @@
 #include "generatecontroller.h"
 #include "generateoptionsdialog.h"
 #include "mainwindow.h"
+#include "modalguard.h"
 #include "perspective.h"
 #include "problemspanel.h"
 #include "rtcdocument.h"
@@ -24,7 +25,6 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QTimer>
 
 #include <memory>
 
@@ -116,11 +116,9 @@ void TestBuilderGenerateApp::generatedFilesAreListed()
     QVERIFY(out.isValid());
     // The output folder is asked in a modal dialog: answer it once it is up.
     bool answered = false;
-    QTimer::singleShot(0, this, [&] {
-        auto *dialog
-            = qobject_cast<Builder::GenerateOptionsDialog *>(QApplication::activeModalWidget());
-        if (!dialog)
-            return;
+    const GuiTest::ModalGuard::Expected expected([&](QWidget *modal) {
+        auto *dialog = qobject_cast<Builder::GenerateOptionsDialog *>(modal);
+        QVERIFY(dialog);
         dialog->folderEdit()->setText(out.path());
         dialog->accept();
         answered = true;
