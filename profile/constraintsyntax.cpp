@@ -134,8 +134,26 @@ private:
         return RtcConstraint::list(std::move(items));
     }
 
+    /// Every nesting passes parseItem() or parseCondition(); a string nested deeper than any real
+    /// constraint (from a file, say) is an error rather than a stack overflow.
+    class Nesting
+    {
+    public:
+        explicit Nesting(Parser *parser)
+            : m_parser(parser)
+        {
+            if (++m_parser->m_depth > 200)
+                m_parser->fail(tr("the constraint is nested too deeply"));
+        }
+        ~Nesting() { --m_parser->m_depth; }
+
+    private:
+        Parser *m_parser;
+    };
+
     RtcConstraint parseItem()
     {
+        const Nesting nesting(this);
         if (accept("[")) {
             RtcConstraint list = parseItemList(QLatin1Char(']'));
             expect("]");
@@ -179,6 +197,7 @@ private:
     /// Conditions joined by `&&`.
     RtcConstraint parseCondition()
     {
+        const Nesting nesting(this);
         std::vector<RtcConstraint> operands;
         operands.push_back(parseUnary());
         while (accept("&&"))
@@ -366,6 +385,7 @@ private:
 
     const QString &m_text;
     qsizetype m_pos = 0;
+    int m_depth = 0;
 };
 
 // ---- writing
