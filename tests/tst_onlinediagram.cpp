@@ -43,6 +43,7 @@ private slots:
     void keepsTheDiagramInViewUntilTheUserNavigates();
     void connectsLiveByDraggingThroughTheDialog();
     void stoppedManagerTurnsBlackWithoutStallingTheGui();
+    void killedManagerRecoversOnTheNextPoll();
 
 private:
     Corba::ComponentProxy component(const QString &instance) const;
@@ -348,6 +349,44 @@ void TestOnlineDiagram::stoppedManagerTurnsBlackWithoutStallingTheGui()
     QCOMPARE(diagram.bodyColor("ConsoleIn0"), OnlineIcons::stateColor(LifeCycleState::Unknown));
     QVERIFY(diagram.unreachableComponents().contains("ConsoleIn0"));
     QVERIFY(diagram.findChild<QLabel *>("statusLabel")->text().contains("ConsoleIn0"));
+}
+
+void TestOnlineDiagram::killedManagerRecoversOnTheNextPoll()
+{
+    // A manager of its own, killed while the diagram polls it and started again.
+    const QStringList arguments {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(LiveTest::freePort()),
+                                 "-o", "corba.nameservers=" + m_live.namingServer(), "-o",
+                                 "naming.formats=diahost.host_cxt/%n.rtc", "-o",
+                                 "manager.naming_formats=diahost.host_cxt/revenant.mgr", "-o",
+                                 "manager.components.precreate=ConsoleIn?instance_name=Revenant"};
+    QString error;
+    QProcess *manager = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    QVERIFY2(manager, qPrintable(error));
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    dropOnto(diagram, {"Revenant"});
+    waitForPoll(diagram);
+    QCOMPARE(diagram.state("Revenant"), LifeCycleState::Inactive);
+    const QString firstIor = component("Revenant").ior();
+
+    manager->kill();
+    QVERIFY(manager->waitForFinished(10000));
+    pollUntil(diagram, [&] { return diagram.state("Revenant") == LifeCycleState::Unknown; });
+    QCOMPARE(diagram.state("Revenant"), LifeCycleState::Unknown);
+    QCOMPARE(diagram.unreachableComponents(), QStringList {"Revenant"});
+    // One line in the diagram's status, no dialog (the modal guard fails the test on any).
+    QCOMPARE(diagram.findChild<QLabel *>("statusLabel")->text(), QStringLiteral("Unreachable: Revenant"));
+    waitForPoll(diagram);
+    QCOMPARE(diagram.unreachableComponents(), QStringList {"Revenant"});
+
+    // Back under a new reference: the next rounds find it through the name server.
+    manager = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    QVERIFY2(manager, qPrintable(error));
+    QVERIFY(component("Revenant").ior() != firstIor);
+    pollUntil(diagram, [&] { return diagram.state("Revenant") == LifeCycleState::Inactive; });
+    QCOMPARE(diagram.state("Revenant"), LifeCycleState::Inactive);
+    QVERIFY(diagram.unreachableComponents().isEmpty());
+    QVERIFY(diagram.findChild<QLabel *>("statusLabel")->text().isEmpty());
 }
 
 QTEST_MAIN(TestOnlineDiagram)

@@ -8,9 +8,11 @@
 #include "corbaerror.h"
 #include "iorendpoint.h"
 #include "livesystembuilder.h"
+#include "namingbrowser.h"
 #include "nameservicemodel.h"
 #include "onlineicons.h"
 #include "onlinesession.h"
+#include "rtpath.h"
 #include "systemmodel.h"
 #include "systemscene.h"
 
@@ -218,15 +220,32 @@ QHash<QString, LiveComponentPoll> OnlineDiagram::pollComponents(const QList<Poll
     QHash<QString, LiveComponentPoll> results;
     for (const PollRequest &request : requests) {
         LiveComponentPoll &result = results[request.instance];
-        try {
-            result.state = request.proxy.state();
-            if (request.readPorts) {
-                result.ports = request.proxy.profile().ports;
+        auto read = [&](const Corba::ComponentProxy &proxy, bool readPorts) {
+            result.state = proxy.state();
+            if (readPorts) {
+                result.ports = proxy.profile().ports;
                 result.portsRead = true;
             }
             result.answered = true;
+        };
+        try {
+            read(request.proxy, request.readPorts);
+            continue;
         } catch (const Corba::Error &) {
             // Not answering is shown by the colour and the unreachable list, not as an error.
+        }
+        // A component whose process was restarted answers under a new reference: ask the name
+        // server for the one its name has now.
+        try {
+            const std::optional<Corba::RtPath> path = Corba::RtPath::parse(request.proxy.path());
+            if (!path || path->isDirect() || path->names().isEmpty())
+                continue;
+            const QString ior = Corba::NamingBrowser::resolve(*path);
+            if (ior.isEmpty() || ior == request.proxy.ior())
+                continue;
+            read(Corba::ComponentProxy(ior, request.proxy.path()), true);
+            result.newIor = ior;
+        } catch (const Corba::Error &) {
         }
     }
     return results;
@@ -244,6 +263,8 @@ void OnlineDiagram::applyPoll(const QHash<QString, LiveComponentPoll> &results)
         live->state = ok ? polled->state : Corba::LifeCycleState::Unknown;
         live->portsStale = live->portsStale || !ok;
         live->reachable = ok;
+        if (!polled->newIor.isEmpty())
+            live->ior = polled->newIor;
         if (polled->portsRead)
             live->ports = polled->ports;
     }

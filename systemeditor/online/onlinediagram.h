@@ -35,6 +35,9 @@ struct LiveComponentPoll
     bool answered = false; ///< the component answered; state and ports are valid only then
     bool portsRead = false; ///< this poll also read the port profiles (with their connectors)
     std::vector<Corba::PortInfo> ports;
+    /// Set when the component answered only under the reference its name now resolves to (its
+    /// process was restarted); the diagram uses it from then on.
+    QString newIor;
 };
 
 /**
