@@ -6,6 +6,7 @@
 #include "componentmodel.h"
 #include "generatecontroller.h"
 #include "runmanagerdialog.h"
+#include "workerthread.h"
 
 #include <QAction>
 #include <QDir>
@@ -52,11 +53,8 @@ RunController::RunController(std::function<QString()> projectFolder,
 
 RunController::~RunController()
 {
-    // A run inside a call to a hung manager ends with its timeout, so the wait is bounded.
-    m_thread->quit();
-    m_thread->wait(m_timeout + 2000);
-    delete m_worker;
-    delete m_thread;
+    // A run inside a call to a hung manager ends with its timeout.
+    Corba::retireWorkerThread(m_thread, m_worker, QDeadlineTimer(m_timeout + 1000));
 }
 
 QString RunController::componentName() const

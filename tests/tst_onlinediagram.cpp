@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "componentitem.h"
 #include "componentproxy.h"
+#include "corbaerror.h"
 #include "livesystem.h"
 #include "nameservicemodel.h"
 #include "namingbrowser.h"
@@ -25,7 +26,9 @@
 #include <QTimer>
 #include <QWheelEvent>
 
+#include <atomic>
 #include <csignal>
+#include <memory>
 
 using namespace SystemEditor;
 using Corba::LifeCycleState;
@@ -44,6 +47,7 @@ private slots:
     void connectsLiveByDraggingThroughTheDialog();
     void stoppedManagerTurnsBlackWithoutStallingTheGui();
     void killedManagerRecoversOnTheNextPoll();
+    void sessionEndsWithinACallTimeoutWhileCallsHang();
 
 private:
     Corba::ComponentProxy component(const QString &instance) const;
@@ -387,6 +391,55 @@ void TestOnlineDiagram::killedManagerRecoversOnTheNextPoll()
     QCOMPARE(diagram.state("Revenant"), LifeCycleState::Inactive);
     QVERIFY(diagram.unreachableComponents().isEmpty());
     QVERIFY(diagram.findChild<QLabel *>("statusLabel")->text().isEmpty());
+}
+
+void TestOnlineDiagram::sessionEndsWithinACallTimeoutWhileCallsHang()
+{
+    // Quitting while a worker runs calls against a hung manager (a restore makes one call after
+    // another): the session ends within about one call timeout, without destroying a running
+    // thread (which aborts the program); the worker finishes on its own later.
+    Corba::Orb::setCallTimeout(500);
+    const Corba::ComponentProxy proxy = component("ConsoleIn0");
+    QCOMPARE(m_manager->state(), QProcess::Running);
+    const pid_t pid = pid_t(m_manager->processId());
+    QVERIFY(pid > 0);
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    struct Resume
+    {
+        pid_t pid;
+        ~Resume()
+        {
+            ::kill(pid, SIGCONT);
+            Corba::Orb::setCallTimeout(3000);
+        }
+    } resume {pid};
+    QVERIFY(LiveTest::waitUntilStopped(pid, 5000));
+
+    auto done = std::make_shared<std::atomic_int>(0);
+    auto *session = new OnlineSession;
+    QObject context;
+    session->submit(
+        QStringLiteral("hung"),
+        [proxy, done] {
+            done->store(-1); // started
+            for (int i = 0; i < 10; ++i) {
+                try {
+                    proxy.state();
+                } catch (const Corba::Error &) {
+                }
+            }
+            done->store(1);
+            return QVariant();
+        },
+        &context, [](const OnlineResult &) {});
+    QTRY_COMPARE_WITH_TIMEOUT(done->load(), -1, 10000);
+    QElapsedTimer clock;
+    clock.start();
+    delete session;
+    QVERIFY2(clock.elapsed() < 500 + 1000 + 500, qPrintable(QString::number(clock.elapsed())));
+    QCOMPARE(done->load(), -1);
+    // The abandoned worker ends when its last call has timed out (a state read is a few calls).
+    QTRY_COMPARE_WITH_TIMEOUT(done->load(), 1, 30000);
 }
 
 QTEST_MAIN(TestOnlineDiagram)

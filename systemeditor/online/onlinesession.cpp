@@ -2,6 +2,7 @@
 #include "onlinesession.h"
 
 #include "orb.h"
+#include "workerthread.h"
 
 #include <QThread>
 
@@ -15,14 +16,13 @@ OnlineSession::OnlineSession(QObject *parent)
 
 OnlineSession::~OnlineSession()
 {
-    // A worker may be inside a call to a hung peer; that call ends with the client timeout, so the
-    // wait is bounded.
-    for (Worker &w : m_workers) {
+    // A worker may be inside a call to a hung peer, or have several queued: all get one deadline
+    // of about one call timeout, and those still busy then finish on their own.
+    for (Worker &w : m_workers)
         w.thread->quit();
-        w.thread->wait(Corba::Orb::callTimeout() * 2 + 1000);
-        delete w.service;
-        delete w.thread;
-    }
+    const QDeadlineTimer deadline(Corba::Orb::callTimeout() + 1000);
+    for (Worker &w : m_workers)
+        Corba::retireWorkerThread(w.thread, w.service, deadline);
 }
 
 OnlineSession::Worker &OnlineSession::worker(const QString &host)
