@@ -104,8 +104,8 @@ bool Manager::initOrb(std::string *error)
         return false;
     }
     // No remote call may block forever: every outgoing call and connect is bounded.
-    omniORB::setClientCallTimeout(CORBA::ULong(std::stoul(m_config.value("corba.call_timeout", "5000"))));
-    omniORB::setClientConnectTimeout(CORBA::ULong(std::stoul(m_config.value("corba.connect_timeout", "2000"))));
+    omniORB::setClientCallTimeout(CORBA::ULong(configNumber("corba.call_timeout", 5000)));
+    omniORB::setClientConnectTimeout(CORBA::ULong(configNumber("corba.connect_timeout", 2000)));
     m_address = (host.empty() || host == "0.0.0.0" ? std::string("127.0.0.1") : host) + ':' + std::to_string(port);
     return true;
 }
@@ -154,7 +154,7 @@ bool Manager::start(std::string *error)
         m_watchdog = std::thread([this] { watchSlaves(); });
     } else {
         joinMaster();
-        const pid_t parent = pid_t(std::stol("0" + m_config.value("manager.spawned_by")));
+        const pid_t parent = pid_t(configNumber("manager.spawned_by", 0));
         if (parent > 0 || m_config.isYes("manager.shutdown_auto"))
             m_watchdog = std::thread([this, parent] { watchAsSlave(parent); });
     }
@@ -542,6 +542,21 @@ Properties Manager::profile()
 RTM::Manager_ptr Manager::reference()
 {
     return RTM::Manager::_duplicate(m_self);
+}
+
+double Manager::configNumber(const std::string &key, double fallback) const
+{
+    constexpr double largest = 1e9;
+    std::string problem;
+    const double value = m_config.number(key, fallback, &problem);
+    if (!problem.empty())
+        std::cerr << programName() << ": " << problem << std::endl;
+    if (value < 0 || value > largest) {
+        std::cerr << programName() << ": " << key << ": " << value << " is out of range (0 to "
+                  << largest << ")" << std::endl;
+        return std::clamp(value, 0.0, largest);
+    }
+    return value;
 }
 
 } // namespace Runtime

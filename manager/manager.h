@@ -137,6 +137,9 @@ public:
     RTM::Manager_ptr reference();
 
 private:
+    /// A number from the configuration, within [0, 1e9] (times, pids); a malformed value is
+    /// reported and @p fallback used, one out of range is reported and clamped.
+    double configNumber(const std::string &key, double fallback) const;
     struct Component;
     struct Slave;
     struct Module;

@@ -161,7 +161,7 @@ pid_t Manager::startSlaveProcess(const std::string &address, const std::string &
 RTM::Manager_ptr Manager::waitForSlave(pid_t pid, const std::string &address)
 {
     const auto deadline = std::chrono::steady_clock::now()
-                          + std::chrono::milliseconds(std::stol(m_config.value("manager.slave_start_timeout", "10000")));
+                          + std::chrono::milliseconds(long(configNumber("manager.slave_start_timeout", 10000)));
     std::unique_lock lock(m_mutex);
     while (!m_stopping) {
         RTM::Manager_var found;
@@ -212,7 +212,7 @@ bool Manager::addSlave(RTM::Manager_ptr manager)
     slave->reference = RTM::Manager::_duplicate(manager);
     // Calls to a slave (create, aggregation, watchdog) never wait longer than this.
     omniORB::setClientCallTimeout(slave->reference,
-                                  CORBA::ULong(std::stoul("0" + m_config.value("manager.slave_call_timeout", "2000"))));
+                                  CORBA::ULong(configNumber("manager.slave_call_timeout", 2000)));
     try {
         RTM::ManagerProfile_var profile = slave->reference->get_profile();
         slave->name = nvString(profile->properties, "instance_name");
@@ -313,9 +313,9 @@ void Manager::joinMaster()
     }
     // A slave we were started for is awaited by its master, which may be busy (many slaves joining
     // at once, slow callbacks under load): keep asking while it lives, within the start timeout.
-    const pid_t parent = pid_t(std::stol("0" + m_config.value("manager.spawned_by")));
+    const pid_t parent = pid_t(configNumber("manager.spawned_by", 0));
     const auto deadline = std::chrono::steady_clock::now()
-                          + std::chrono::milliseconds(std::stol(m_config.value("manager.slave_start_timeout", "10000")));
+                          + std::chrono::milliseconds(long(configNumber("manager.slave_start_timeout", 10000)));
     std::string problem;
     for (;;) {
         bool retry = false;
@@ -362,7 +362,7 @@ void Manager::leaveMaster()
 
 void Manager::watchSlaves()
 {
-    const auto period = std::chrono::milliseconds(std::stol(m_config.value("manager.slave_check_interval", "500")));
+    const auto period = std::chrono::milliseconds(std::max(10L, long(configNumber("manager.slave_check_interval", 500))));
     std::unique_lock lock(m_mutex);
     while (!m_stopping) {
         m_slavesChanged.wait_for(lock, period);
@@ -399,12 +399,7 @@ void Manager::watchAsSlave(pid_t parent)
     // With manager.shutdown_auto, a manager left without components goes after
     // manager.auto_shutdown_duration seconds, as OpenRTM's slaves do.
     const bool autoShutdown = m_config.isYes("manager.shutdown_auto");
-    double idleLimit = 10.0;
-    try {
-        idleLimit = std::stod(m_config.value("manager.auto_shutdown_duration", "10.0"));
-    } catch (...) {
-        // Keep OpenRTM's default.
-    }
+    const double idleLimit = configNumber("manager.auto_shutdown_duration", 10.0);
     auto idleSince = std::chrono::steady_clock::now();
     std::unique_lock lock(m_mutex);
     while (!m_stopping) {

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace Runtime {
@@ -77,6 +79,25 @@ bool Properties::isYes(const std::string &key, bool fallback) const
     std::string v = trimmed(it->second);
     std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return char(std::toupper(c)); });
     return v == "YES" || v == "TRUE" || v == "1" || v == "ON";
+}
+
+double Properties::number(const std::string &key, double fallback, std::string *problem) const
+{
+    auto it = m_entries.find(key);
+    const std::string text = it == m_entries.end() ? std::string() : trimmed(it->second);
+    if (text.empty())
+        return fallback;
+    char *end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) {
+        if (problem) {
+            std::ostringstream message;
+            message << key << ": '" << text << "' is not a number; " << fallback << " is used";
+            *problem = message.str();
+        }
+        return fallback;
+    }
+    return value;
 }
 
 Properties Properties::parseConf(const std::string &text, std::vector<std::string> *errors)

@@ -25,6 +25,9 @@ public:
     Properties subtree(const std::string &prefix) const;
     /// True when the value of @p key is YES/TRUE/1/ON (any case); @p fallback when absent.
     bool isYes(const std::string &key, bool fallback = false) const;
+    /// The value of @p key as a number; @p fallback when absent or empty. A value that is not a
+    /// number (or not all of one) also gives @p fallback and is described in @p problem.
+    double number(const std::string &key, double fallback, std::string *problem = nullptr) const;
     const std::map<std::string, std::string> &entries() const { return m_entries; }
 
     /**

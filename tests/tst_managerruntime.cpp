@@ -220,6 +220,18 @@ void TestManagerRuntime::confParsing()
     QCOMPARE(errors.size(), size_t(1));
     QVERIFY(QString::fromStdString(errors[0]).startsWith("6:"));
     QCOMPARE(p.subtree("naming").value("formats"), std::string("%h.host_cxt/%n.rtc"));
+
+    // Numbers: a malformed one gives the fallback and says why (rtmanager reports it and starts).
+    const Properties numbers = Properties::parseConf("a: 250\nb: 0.5\nc: abc\nd: 12ms\ne:\n");
+    std::string problem;
+    QCOMPARE(numbers.number("a", 1, &problem), 250.0);
+    QCOMPARE(numbers.number("b", 1, &problem), 0.5);
+    QCOMPARE(numbers.number("e", 7, &problem), 7.0);
+    QCOMPARE(numbers.number("missing", 7, &problem), 7.0);
+    QVERIFY(problem.empty());
+    QCOMPARE(numbers.number("c", 5000, &problem), 5000.0);
+    QCOMPARE(problem, std::string("c: 'abc' is not a number; 5000 is used"));
+    QCOMPARE(numbers.number("d", 3, &problem), 3.0);
 }
 
 void TestManagerRuntime::createRequest_data()
