@@ -120,11 +120,12 @@ bool Manager::start(std::string *error)
         PortableServer::POAManager_var pm = m_poa->the_POAManager();
         pm->activate();
         if (serving) {
-            m_servant = new ManagerServant(*this);
+            // The POA holds the servant while it is active; destroying the ORB releases the last reference.
+            PortableServer::ServantBase_var servant = new ManagerServant(*this);
             CORBA::Object_var object = m_orb->resolve_initial_references("omniINSPOA");
             PortableServer::POA_var ins = PortableServer::POA::_narrow(object);
             PortableServer::ObjectId_var id = PortableServer::string_to_ObjectId("manager");
-            ins->activate_object_with_id(id, m_servant);
+            ins->activate_object_with_id(id, servant);
             CORBA::Object_var ref = ins->id_to_reference(id);
             m_self = RTM::Manager::_narrow(ref);
             PortableServer::POAManager_var insManager = ins->the_POAManager();

@@ -22,7 +22,6 @@
 
 namespace Runtime {
 
-class ManagerServant;
 class RtObject;
 
 /**
@@ -182,7 +181,6 @@ private:
     std::string m_instanceName;
     CORBA::ORB_var m_orb;
     PortableServer::POA_var m_poa;
-    ManagerServant *m_servant = nullptr;
     RTM::Manager_var m_self;
     std::unique_ptr<NamingRegistrar> m_naming;
     std::vector<std::string> m_ownNames;
