@@ -464,7 +464,8 @@ void TestManagerRuntime::configurationSets()
     // As in OpenRTM-aist: after a write no set is active, and nothing reaches the variables, until
     // a set is activated.
     QVERIFY_THROWS_EXCEPTION(SDOPackage::NotAvailable, config->get_active_configuration_set());
-    QCOMPARE(nv(config->get_configuration_set("mode0")->configuration_data, "int_param0"), QString("42"));
+    SDOPackage::ConfigurationSet_var written = config->get_configuration_set("mode0");
+    QCOMPARE(nv(written->configuration_data, "int_param0"), QString("42"));
     {
         // The same rule, held still: an update between the write and the activation applies nothing.
         ConfigAdmin admin;
