@@ -183,8 +183,11 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
     if (isLivePath(component.pathUri)) {
         try {
             const auto path = RtPath::parse(QLatin1Char('/') + component.pathUri);
-            if (path && checkLive(mapping, {path->toString(), NamingBrowser::resolve(*path)}))
-                return mapping;
+            if (path) {
+                const QString ior = NamingBrowser::resolve(*path);
+                if (checkLive(mapping, {path->toString(), ior}))
+                    return mapping;
+            }
         } catch (const Error &e) {
             mapping.message = e.message();
         }
