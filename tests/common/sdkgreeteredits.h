@@ -43,10 +43,10 @@ inline const SdkTest::UserEdit userEdits[] = {
      "// Greetings received, per servant.\n"
      "static std::mutex greetingsMutex;\n"
      "static std::map<const void*, long> greetings;\n"},
-    {"src/GreeterSVC_impl.cpp", "  // Please insert your code here.\n  return CORBA::string_dup(\"\");",
+    {"src/GreeterSVC_impl.cpp", "  // TODO: implement greet\n  return CORBA::string_dup(\"\");",
      "  {\n    std::lock_guard<std::mutex> lock(greetingsMutex);\n    ++greetings[this];\n  }\n"
      "  return CORBA::string_dup((std::string(\"hello \") + name).c_str());"},
-    {"src/GreeterSVC_impl.cpp", "  // Please insert your code here.\n  return 0;",
+    {"src/GreeterSVC_impl.cpp", "  // TODO: implement calls\n  return 0;",
      "  std::lock_guard<std::mutex> lock(greetingsMutex);\n  return greetings[this];"},
 };
 

@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  ConfigComp.cpp
+ * @file ConfigComp.cpp
  * @brief Configuration with every widget and constraint
  */
 // </rtc-template>
 
 #include "ConfigComp.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const configcomp_spec[] =
   {
@@ -83,13 +83,13 @@ ConfigComp::~ConfigComp()
 
 RTC::ReturnCode_t ConfigComp::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   addInPort("in", m_inIn);
   addOutPort("out", m_outOut);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   bindParameter("label", m_label, "hello world");
   bindParameter("gain", m_gainValue, "1.5");

@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file ConfigCompComp.cpp
- * @brief Standalone program that runs one ConfigComp component.
- */
+// ConfigCompComp.cpp: a program that starts a manager and creates one ConfigComp in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("ConfigComp");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "ConfigCompComp: the manager could not create ConfigComp" << std::endl;
       std::abort();
     }
 }

@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  DataPortsComp.cpp
+ * @file DataPortsComp.cpp
  * @brief Data ports of many types
  */
 // </rtc-template>
 
 #include "DataPortsComp.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const dataportscomp_spec[] =
   {
@@ -51,7 +51,7 @@ DataPortsComp::~DataPortsComp()
 
 RTC::ReturnCode_t DataPortsComp::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   addInPort("in_long", m_in_longIn);
   addInPort("in_doubles", m_doublesIn);
@@ -66,7 +66,7 @@ RTC::ReturnCode_t DataPortsComp::onInitialize()
   addOutPort("out_cloud", m_out_cloudOut);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   // </rtc-template>
 

@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file DataPortsCompComp.cpp
- * @brief Standalone program that runs one DataPortsComp component.
- */
+// DataPortsCompComp.cpp: a program that starts a manager and creates one DataPortsComp in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("DataPortsComp");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "DataPortsCompComp: the manager could not create DataPortsComp" << std::endl;
       std::abort();
     }
 }

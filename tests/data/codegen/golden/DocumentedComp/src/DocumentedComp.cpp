@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  DocumentedComp.cpp
+ * @file DocumentedComp.cpp
  * @brief A component with every documentation field
  */
 // </rtc-template>
 
 #include "DocumentedComp.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const documentedcomp_spec[] =
   {
@@ -47,7 +47,7 @@ DocumentedComp::~DocumentedComp()
 
 RTC::ReturnCode_t DocumentedComp::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   addInPort("command", m_commandIn);
   addOutPort("status", m_statusOut);
@@ -55,7 +55,7 @@ RTC::ReturnCode_t DocumentedComp::onInitialize()
   addPort(m_ClockPortPort);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   bindParameter("period", m_period, "0.1");
   // </rtc-template>

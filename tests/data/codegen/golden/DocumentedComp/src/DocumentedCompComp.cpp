@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file DocumentedCompComp.cpp
- * @brief Standalone program that runs one DocumentedComp component.
- */
+// DocumentedCompComp.cpp: a program that starts a manager and creates one DocumentedComp in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("DocumentedComp");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "DocumentedCompComp: the manager could not create DocumentedComp" << std::endl;
       std::abort();
     }
 }

@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  SampleComp.cpp
+ * @file SampleComp.cpp
  * @brief Sample component with "all" port kinds
  */
 // </rtc-template>
 
 #include "SampleComp.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const samplecomp_spec[] =
   {
@@ -54,7 +54,7 @@ SampleComp::~SampleComp()
 
 RTC::ReturnCode_t SampleComp::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   addInPort("in", m_inIn);
   addOutPort("out", m_resultOut);
@@ -64,7 +64,7 @@ RTC::ReturnCode_t SampleComp::onInitialize()
   addPort(m_ClockPortPort);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   bindParameter("gain_value", m_gain, "10");
   bindParameter("mode", m_mode, "fast");

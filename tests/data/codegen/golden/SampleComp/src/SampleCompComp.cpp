@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file SampleCompComp.cpp
- * @brief Standalone program that runs one SampleComp component.
- */
+// SampleCompComp.cpp: a program that starts a manager and creates one SampleComp in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("SampleComp");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "SampleCompComp: the manager could not create SampleComp" << std::endl;
       std::abort();
     }
 }

@@ -1,148 +1,131 @@
 // -*- C++ -*-
-/*!
- * @file  RoboticsSVC_impl.cpp
- * @brief Service implementation code of Robotics.idl
- */
+// RoboticsSVC_impl.cpp: the servants of Robotics.idl; write each operation's body
+// where it says TODO.
 
 #include "RoboticsSVC_impl.h"
 
-/*
- * Servant of IDL interface Robot::Control::Motor
- */
+// Robot::Control::Motor
 MotorSVC_impl::MotorSVC_impl()
 {
-  // Please add extra constructor code here.
 }
 
 MotorSVC_impl::~MotorSVC_impl()
 {
-  // Please add extra destructor code here.
 }
 
-/*
- * Methods corresponding to IDL attributes and operations
- */
 // Robot::Control::Status state()
 Robot::Control::Status MotorSVC_impl::state()
 {
-  // Please insert your code here.
+  // TODO: implement state
   return Robot::Control::OK;
 }
 
 // double speed()
 CORBA::Double MotorSVC_impl::speed()
 {
-  // Please insert your code here.
+  // TODO: implement speed
   return 0;
 }
 
 // void speed(in double value)
 void MotorSVC_impl::speed(CORBA::Double value)
 {
-  // Please insert your code here.
+  // TODO: implement speed
 }
 
 // string name()
 char* MotorSVC_impl::name()
 {
-  // Please insert your code here.
+  // TODO: implement name
   return CORBA::string_dup("");
 }
 
 // void configure(in string key, inout string value, out string previous)
 void MotorSVC_impl::configure(const char* key, char*& value, CORBA::String_out previous)
 {
-  // Please insert your code here.
+  // TODO: implement configure
 }
 
 // boolean move(in Robot::Geometry::Pose target, out Robot::Geometry::Pose reached, inout Robot::Geometry::Weights gains)
 CORBA::Boolean MotorSVC_impl::move(const Robot::Geometry::Pose& target, Robot::Geometry::Pose_out reached, Robot::Geometry::Weights& gains)
 {
-  // Please insert your code here.
+  // TODO: implement move
   return false;
 }
 
 // Robot::Geometry::PoseList trajectory(in Robot::Geometry::Path path, out Robot::Geometry::Path smoothed, inout Robot::Geometry::PoseList buffer)
 Robot::Geometry::PoseList* MotorSVC_impl::trajectory(const Robot::Geometry::Path& path, Robot::Geometry::Path_out smoothed, Robot::Geometry::PoseList& buffer)
 {
-  // Please insert your code here.
+  // TODO: implement trajectory
   return new Robot::Geometry::PoseList();
 }
 
 // void report(out Robot::Control::Status code, out string text, inout Robot::Geometry::Vector3 drift)
 void MotorSVC_impl::report(Robot::Control::Status_out code, CORBA::String_out text, Robot::Geometry::Vector3& drift)
 {
-  // Please insert your code here.
+  // TODO: implement report
 }
 
 // RTC::TimedDoubleSeq sample(in RTC::Time at, out RTC::TimedString label)
 RTC::TimedDoubleSeq* MotorSVC_impl::sample(const RTC::Time& at, RTC::TimedString_out label)
 {
-  // Please insert your code here.
+  // TODO: implement sample
   return new RTC::TimedDoubleSeq();
 }
 
-/*
- * Servant of IDL interface Nav::Planner
- */
+// Nav::Planner
 PlannerSVC_impl::PlannerSVC_impl()
 {
-  // Please add extra constructor code here.
 }
 
 PlannerSVC_impl::~PlannerSVC_impl()
 {
-  // Please add extra destructor code here.
 }
 
-/*
- * Methods corresponding to IDL attributes and operations
- */
 // Robot::Control::Status state()
 Robot::Control::Status PlannerSVC_impl::state()
 {
-  // Please insert your code here.
+  // TODO: implement state
   return Robot::Control::OK;
 }
 
 // Robot::Geometry::Path plan(in Robot::Geometry::Pose start, in Robot::Geometry::Pose goal, out Robot::Geometry::Weights costs)
 Robot::Geometry::Path* PlannerSVC_impl::plan(const Robot::Geometry::Pose& start, const Robot::Geometry::Pose& goal, Robot::Geometry::Weights_out costs)
 {
-  // Please insert your code here.
+  // TODO: implement plan
   return new Robot::Geometry::Path();
 }
 
 // string name()
 char* PlannerSVC_impl::name()
 {
-  // Please insert your code here.
+  // TODO: implement name
   return CORBA::string_dup("");
 }
 
 // void configure(in string key, inout string value, out string previous)
 void PlannerSVC_impl::configure(const char* key, char*& value, CORBA::String_out previous)
 {
-  // Please insert your code here.
+  // TODO: implement configure
 }
 
 // Robot::Geometry::Path replan(in Robot::Geometry::Path previous, inout Robot::Geometry::Vector3 offset, out unsigned long count)
 Robot::Geometry::Path* PlannerSVC_impl::replan(const Robot::Geometry::Path& previous, Robot::Geometry::Vector3& offset, CORBA::ULong_out count)
 {
-  // Please insert your code here.
+  // TODO: implement replan
   return new Robot::Geometry::Path();
 }
 
 // Robot::Control::Motor driver(in Robot::Control::Status wanted)
 Robot::Control::Motor_ptr PlannerSVC_impl::driver(Robot::Control::Status wanted)
 {
-  // Please insert your code here.
+  // TODO: implement driver
   return Robot::Control::Motor::_nil();
 }
 
 // void cancel(in string reason)
 void PlannerSVC_impl::cancel(const char* reason)
 {
-  // Please insert your code here.
+  // TODO: implement cancel
 }
 
-// End of servant code

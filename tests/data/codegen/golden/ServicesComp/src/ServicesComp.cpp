@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  ServicesComp.cpp
+ * @file ServicesComp.cpp
  * @brief Provided and required services from a multi-module IDL
  */
 // </rtc-template>
 
 #include "ServicesComp.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const servicescomp_spec[] =
   {
@@ -43,7 +43,7 @@ ServicesComp::~ServicesComp()
 
 RTC::ReturnCode_t ServicesComp::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   m_MotorPortPort.registerProvider("motor0", "Robot::Control::Motor", m_motor);
   addPort(m_MotorPortPort);
@@ -55,7 +55,7 @@ RTC::ReturnCode_t ServicesComp::onInitialize()
   addPort(m_DevicePortPort);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   // </rtc-template>
 

@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file ServicesCompComp.cpp
- * @brief Standalone program that runs one ServicesComp component.
- */
+// ServicesCompComp.cpp: a program that starts a manager and creates one ServicesComp in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("ServicesComp");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "ServicesCompComp: the manager could not create ServicesComp" << std::endl;
       std::abort();
     }
 }

@@ -1,7 +1,7 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  ConfigComp.h
+ * @file ConfigComp.h
  * @brief Configuration with every widget and constraint
  */
 // </rtc-template>
@@ -17,11 +17,11 @@
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
 
-// Service implementation headers
+// Servant classes of the provided interfaces
 // <rtc-template block="service_impl_h">
 // </rtc-template>
 
-// Data type and service consumer stub headers
+// IDL stubs for the data types and the required interfaces
 // <rtc-template block="consumer_stub_h">
 #include <rtm/idl/BasicDataTypeSkel.h>
 // </rtc-template>
@@ -72,77 +72,77 @@ class ConfigComp
   // <rtc-template block="protected_operation">
   // </rtc-template>
 
-  // Configuration variables
+  // Configuration parameters, bound in onInitialize()
   // <rtc-template block="config_declare">
   /*!
    * - Name: label
-   * - DefaultValue: hello world
+   * - Default: hello world
    */
   std::string m_label;
   /*!
    * - Name: gain
-   * - DefaultValue: 1.5
+   * - Default: 1.5
    * - Unit: dB
    * - Constraint: 0<=x<=10
    */
   double m_gainValue;
   /*!
    * - Name: count
-   * - DefaultValue: 3
+   * - Default: 3
    * - Constraint: 0<=x<=100
    */
   int m_count;
   /*!
    * - Name: threshold
-   * - DefaultValue: 10
+   * - Default: 10
    * - Constraint: x>0
    */
   long m_threshold;
   /*!
    * - Name: limit
-   * - DefaultValue: 5
+   * - Default: 5
    * - Constraint: x<8
    */
   short m_limit;
   /*!
    * - Name: mode
-   * - DefaultValue: fast
+   * - Default: fast
    * - Constraint: (fast,slow,idle)
    */
   std::string m_mode;
   /*!
    * - Name: features
-   * - DefaultValue: camera,lidar
+   * - Default: camera,lidar
    * - Constraint: (camera,lidar,sonar)
    */
   std::string m_features;
   /*!
    * - Name: order
-   * - DefaultValue: first,second
+   * - Default: first,second
    * - Constraint: (first,second,third)
    */
   std::vector<std::string> m_order;
   /*!
    * - Name: weights
-   * - DefaultValue: 0.5,1.5
+   * - Default: 0.5,1.5
    * - Constraint: 0<=x<=1,0<=x<=2
    */
   std::vector<double> m_weights;
   /*!
    * - Name: scale
-   * - DefaultValue: 0.25
+   * - Default: 0.25
    * - Constraint: x>=0
    */
   float m_scale;
   /*!
    * - Name: target
-   * - DefaultValue: 42
+   * - Default: 42
    * - Constraint: 42
    */
   long m_target;
   // </rtc-template>
 
-  // DataInPort declaration
+  // InPorts: the sample last read, and the port
   // <rtc-template block="inport_declare">
   RTC::TimedDouble m_in;
   /*!
@@ -150,7 +150,7 @@ class ConfigComp
   RTC::InPort<RTC::TimedDouble> m_inIn;
   // </rtc-template>
 
-  // DataOutPort declaration
+  // OutPorts: the sample to write, and the port
   // <rtc-template block="outport_declare">
   RTC::TimedDouble m_out;
   /*!
@@ -158,15 +158,15 @@ class ConfigComp
   RTC::OutPort<RTC::TimedDouble> m_outOut;
   // </rtc-template>
 
-  // CORBA Port declaration
+  // Service ports
   // <rtc-template block="corbaport_declare">
   // </rtc-template>
 
-  // Service declaration
+  // Servants of the provided interfaces, one per interface
   // <rtc-template block="service_declare">
   // </rtc-template>
 
-  // Consumer declaration
+  // The required interfaces: each holds the peer's reference once its port is connected
   // <rtc-template block="consumer_declare">
   // </rtc-template>
 

@@ -1,7 +1,6 @@
 // -*- C++ -*-
-/*!
- * @file  VectorConvert.h
- * @brief Reads std::vector configuration parameters of ConfigComp from text.
+/*
+ * VectorConvert.h: reads the std::vector configuration parameters of ConfigComp from text.
  *
  * OpenRTM-aist converts a configuration value with `stream >> variable`, and the standard
  * library has no such extraction for std::vector. This header adds it: the text is split at

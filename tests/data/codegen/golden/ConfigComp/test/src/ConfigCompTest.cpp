@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  ConfigCompTest.cpp
+ * @file ConfigCompTest.cpp
  * @brief Configuration with every widget and constraint
  */
 // </rtc-template>
 
 #include "ConfigCompTest.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const configcomptest_spec[] =
   {
@@ -83,13 +83,13 @@ ConfigCompTest::~ConfigCompTest()
 
 RTC::ReturnCode_t ConfigCompTest::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   addInPort("out", m_outIn);
   addOutPort("in", m_inOut);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   bindParameter("label", m_label, "hello world");
   bindParameter("gain", m_gainValue, "1.5");

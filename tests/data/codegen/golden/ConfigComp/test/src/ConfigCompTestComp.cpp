@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file ConfigCompTestComp.cpp
- * @brief Standalone program that runs one ConfigCompTest component.
- */
+// ConfigCompTestComp.cpp: a program that starts a manager and creates one ConfigCompTest in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("ConfigCompTest");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "ConfigCompTestComp: the manager could not create ConfigCompTest" << std::endl;
       std::abort();
     }
 }

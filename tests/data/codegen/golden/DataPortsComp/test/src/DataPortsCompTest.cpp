@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  DataPortsCompTest.cpp
+ * @file DataPortsCompTest.cpp
  * @brief Data ports of many types
  */
 // </rtc-template>
 
 #include "DataPortsCompTest.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const dataportscomptest_spec[] =
   {
@@ -51,7 +51,7 @@ DataPortsCompTest::~DataPortsCompTest()
 
 RTC::ReturnCode_t DataPortsCompTest::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   addInPort("out_wide", m_out_wideIn);
   addInPort("out_octets", m_out_octetsIn);
@@ -66,7 +66,7 @@ RTC::ReturnCode_t DataPortsCompTest::onInitialize()
   addOutPort("in_image", m_imageOut);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   // </rtc-template>
 

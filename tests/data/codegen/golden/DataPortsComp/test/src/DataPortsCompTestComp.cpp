@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file DataPortsCompTestComp.cpp
- * @brief Standalone program that runs one DataPortsCompTest component.
- */
+// DataPortsCompTestComp.cpp: a program that starts a manager and creates one DataPortsCompTest in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("DataPortsCompTest");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "DataPortsCompTestComp: the manager could not create DataPortsCompTest" << std::endl;
       std::abort();
     }
 }

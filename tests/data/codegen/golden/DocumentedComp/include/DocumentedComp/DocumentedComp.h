@@ -1,7 +1,7 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  DocumentedComp.h
+ * @file DocumentedComp.h
  * @brief A component with every documentation field
  */
 // </rtc-template>
@@ -13,11 +13,11 @@
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
 
-// Service implementation headers
+// Servant classes of the provided interfaces
 // <rtc-template block="service_impl_h">
 // </rtc-template>
 
-// Data type and service consumer stub headers
+// IDL stubs for the data types and the required interfaces
 // <rtc-template block="consumer_stub_h">
 #include <rtm/idl/BasicDataTypeSkel.h>
 #include "SampleService.hh"
@@ -101,12 +101,12 @@ class DocumentedComp
   // <rtc-template block="protected_operation">
   // </rtc-template>
 
-  // Configuration variables
+  // Configuration parameters, bound in onInitialize()
   // <rtc-template block="config_declare">
   /*!
    * Sampling period of the sensor
    * - Name: period
-   * - DefaultValue: 0.1
+   * - Default: 0.1
    * - Unit: s
    * - Range: 0.01-1.0
    * - Constraint: 0.01<=x<=1.0
@@ -114,7 +114,7 @@ class DocumentedComp
   double m_period;
   // </rtc-template>
 
-  // DataInPort declaration
+  // InPorts: the sample last read, and the port
   // <rtc-template block="inport_declare">
   RTC::TimedLong m_command;
   /*!
@@ -129,7 +129,7 @@ class DocumentedComp
   RTC::InPort<RTC::TimedLong> m_commandIn;
   // </rtc-template>
 
-  // DataOutPort declaration
+  // OutPorts: the sample to write, and the port
   // <rtc-template block="outport_declare">
   RTC::TimedString m_status;
   /*!
@@ -144,18 +144,18 @@ class DocumentedComp
   RTC::OutPort<RTC::TimedString> m_statusOut;
   // </rtc-template>
 
-  // CORBA Port declaration
+  // Service ports
   // <rtc-template block="corbaport_declare">
   // Port to read the time from
   // Interface: Clock interface
   RTC::CorbaPort m_ClockPortPort;
   // </rtc-template>
 
-  // Service declaration
+  // Servants of the provided interfaces, one per interface
   // <rtc-template block="service_declare">
   // </rtc-template>
 
-  // Consumer declaration
+  // The required interfaces: each holds the peer's reference once its port is connected
   // <rtc-template block="consumer_declare">
   // Time source of the component
   // - Argument: none

@@ -1,14 +1,14 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  DocumentedCompTest.cpp
+ * @file DocumentedCompTest.cpp
  * @brief A component with every documentation field
  */
 // </rtc-template>
 
 #include "DocumentedCompTest.h"
 
-// Module specification
+// The component type as the manager registers it (the profile's properties).
 // <rtc-template block="module_spec">
 static const char* const documentedcomptest_spec[] =
   {
@@ -47,7 +47,7 @@ DocumentedCompTest::~DocumentedCompTest()
 
 RTC::ReturnCode_t DocumentedCompTest::onInitialize()
 {
-  // Registration: InPort/OutPort/Service
+  // Adds the profile's ports to the component.
   // <rtc-template block="registration">
   addInPort("status", m_statusIn);
   addOutPort("command", m_commandOut);
@@ -55,7 +55,7 @@ RTC::ReturnCode_t DocumentedCompTest::onInitialize()
   addPort(m_ClockPortPort);
   // </rtc-template>
 
-  // Bind variables and configuration variables
+  // Ties each configuration parameter to its member, with its default.
   // <rtc-template block="bind_config">
   bindParameter("period", m_period, "0.1");
   // </rtc-template>

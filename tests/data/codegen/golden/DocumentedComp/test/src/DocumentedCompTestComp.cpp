@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file DocumentedCompTestComp.cpp
- * @brief Standalone program that runs one DocumentedCompTest component.
- */
+// DocumentedCompTestComp.cpp: a program that starts a manager and creates one DocumentedCompTest in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("DocumentedCompTest");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "DocumentedCompTestComp: the manager could not create DocumentedCompTest" << std::endl;
       std::abort();
     }
 }

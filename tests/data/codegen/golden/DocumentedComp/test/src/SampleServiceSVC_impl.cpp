@@ -1,32 +1,22 @@
 // -*- C++ -*-
-/*!
- * @file  SampleServiceSVC_impl.cpp
- * @brief Service implementation code of SampleService.idl
- */
+// SampleServiceSVC_impl.cpp: the servants of SampleService.idl; write each operation's body
+// where it says TODO.
 
 #include "SampleServiceSVC_impl.h"
 
-/*
- * Servant of IDL interface Sample::Clock
- */
+// Sample::Clock
 ClockSVC_impl::ClockSVC_impl()
 {
-  // Please add extra constructor code here.
 }
 
 ClockSVC_impl::~ClockSVC_impl()
 {
-  // Please add extra destructor code here.
 }
 
-/*
- * Methods corresponding to IDL attributes and operations
- */
 // unsigned long long now()
 CORBA::ULongLong ClockSVC_impl::now()
 {
-  // Please insert your code here.
+  // TODO: implement now
   return 0;
 }
 
-// End of servant code

@@ -1,7 +1,7 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  SampleComp.h
+ * @file SampleComp.h
  * @brief Sample component with "all" port kinds
  */
 // </rtc-template>
@@ -13,12 +13,12 @@
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
 
-// Service implementation headers
+// Servant classes of the provided interfaces
 // <rtc-template block="service_impl_h">
 #include "SampleServiceSVC_impl.h"
 // </rtc-template>
 
-// Data type and service consumer stub headers
+// IDL stubs for the data types and the required interfaces
 // <rtc-template block="consumer_stub_h">
 #include <rtm/idl/BasicDataTypeSkel.h>
 #include "SampleService.hh"
@@ -70,29 +70,29 @@ class SampleComp
   // <rtc-template block="protected_operation">
   // </rtc-template>
 
-  // Configuration variables
+  // Configuration parameters, bound in onInitialize()
   // <rtc-template block="config_declare">
   /*!
    * Amplification
    * - Name: gain_value
-   * - DefaultValue: 10
+   * - Default: 10
    * - Constraint: 0<=x<=100
    */
   int m_gain;
   /*!
    * - Name: mode
-   * - DefaultValue: fast
+   * - Default: fast
    * - Constraint: (fast,slow)
    */
   std::string m_mode;
   /*!
    * - Name: rate
-   * - DefaultValue: 0.5
+   * - Default: 0.5
    */
   double m_rate;
   // </rtc-template>
 
-  // DataInPort declaration
+  // InPorts: the sample last read, and the port
   // <rtc-template block="inport_declare">
   RTC::TimedLong m_in;
   /*!
@@ -101,7 +101,7 @@ class SampleComp
   RTC::InPort<RTC::TimedLong> m_inIn;
   // </rtc-template>
 
-  // DataOutPort declaration
+  // OutPorts: the sample to write, and the port
   // <rtc-template block="outport_declare">
   RTC::TimedDouble m_result;
   /*!
@@ -109,18 +109,18 @@ class SampleComp
   RTC::OutPort<RTC::TimedDouble> m_resultOut;
   // </rtc-template>
 
-  // CORBA Port declaration
+  // Service ports
   // <rtc-template block="corbaport_declare">
   RTC::CorbaPort m_EchoPortPort;
   RTC::CorbaPort m_ClockPortPort;
   // </rtc-template>
 
-  // Service declaration
+  // Servants of the provided interfaces, one per interface
   // <rtc-template block="service_declare">
   EchoSVC_impl m_echo0;
   // </rtc-template>
 
-  // Consumer declaration
+  // The required interfaces: each holds the peer's reference once its port is connected
   // <rtc-template block="consumer_declare">
   RTC::CorbaConsumer<Sample::Clock> m_clock;
   // </rtc-template>

@@ -1,18 +1,12 @@
 // -*- C++ -*-
-/*!
- * @file  SampleServiceSVC_impl.h
- * @brief Service implementation header of SampleService.idl
- */
+// SampleServiceSVC_impl.h: servant classes for the interfaces of SampleService.idl.
 
 #ifndef SAMPLESERVICESVC_IMPL_H
 #define SAMPLESERVICESVC_IMPL_H
 
 #include "SampleService.hh"
 
-/*!
- * @class EchoSVC_impl
- * Servant of IDL interface Sample::Echo
- */
+// Implements Sample::Echo; its operations are defined in SampleServiceSVC_impl.cpp.
 class EchoSVC_impl
   : public virtual POA_Sample::Echo,
     public virtual PortableServer::RefCountServantBase
@@ -21,7 +15,7 @@ class EchoSVC_impl
   EchoSVC_impl();
   ~EchoSVC_impl() override;
 
-  // attributes and operations
+  // One member per IDL operation and attribute accessor
   // <rtc-template block="Echo_operations">
   // string version()
   char* version() override;

@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file SampleCompTestComp.cpp
- * @brief Standalone program that runs one SampleCompTest component.
- */
+// SampleCompTestComp.cpp: a program that starts a manager and creates one SampleCompTest in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("SampleCompTest");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "SampleCompTestComp: the manager could not create SampleCompTest" << std::endl;
       std::abort();
     }
 }

@@ -1,18 +1,12 @@
 // -*- C++ -*-
-/*!
- * @file  RoboticsSVC_impl.h
- * @brief Service implementation header of Robotics.idl
- */
+// RoboticsSVC_impl.h: servant classes for the interfaces of Robotics.idl.
 
 #ifndef ROBOTICSSVC_IMPL_H
 #define ROBOTICSSVC_IMPL_H
 
 #include "Robotics.hh"
 
-/*!
- * @class MotorSVC_impl
- * Servant of IDL interface Robot::Control::Motor
- */
+// Implements Robot::Control::Motor; its operations are defined in RoboticsSVC_impl.cpp.
 class MotorSVC_impl
   : public virtual POA_Robot::Control::Motor,
     public virtual PortableServer::RefCountServantBase
@@ -21,7 +15,7 @@ class MotorSVC_impl
   MotorSVC_impl();
   ~MotorSVC_impl() override;
 
-  // attributes and operations
+  // One member per IDL operation and attribute accessor
   // <rtc-template block="Motor_operations">
   // Robot::Control::Status state()
   Robot::Control::Status state() override;
@@ -44,10 +38,7 @@ class MotorSVC_impl
   // </rtc-template>
 };
 
-/*!
- * @class PlannerSVC_impl
- * Servant of IDL interface Nav::Planner
- */
+// Implements Nav::Planner; its operations are defined in RoboticsSVC_impl.cpp.
 class PlannerSVC_impl
   : public virtual POA_Nav::Planner,
     public virtual PortableServer::RefCountServantBase
@@ -56,7 +47,7 @@ class PlannerSVC_impl
   PlannerSVC_impl();
   ~PlannerSVC_impl() override;
 
-  // attributes and operations
+  // One member per IDL operation and attribute accessor
   // <rtc-template block="Planner_operations">
   // Robot::Control::Status state()
   Robot::Control::Status state() override;

@@ -1,8 +1,5 @@
 // -*- C++ -*-
-/*!
- * @file ServicesCompTestComp.cpp
- * @brief Standalone program that runs one ServicesCompTest component.
- */
+// ServicesCompTestComp.cpp: a program that starts a manager and creates one ServicesCompTest in it.
 
 #include <rtm/Manager.h>
 
@@ -18,7 +15,7 @@ void MyModuleInit(RTC::Manager* manager)
   RTC::RtcBase* comp = manager->createComponent("ServicesCompTest");
   if (comp == nullptr)
     {
-      std::cerr << "Component create failed." << std::endl;
+      std::cerr << "ServicesCompTestComp: the manager could not create ServicesCompTest" << std::endl;
       std::abort();
     }
 }

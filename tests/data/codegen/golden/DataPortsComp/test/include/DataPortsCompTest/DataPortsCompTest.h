@@ -1,7 +1,7 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  DataPortsCompTest.h
+ * @file DataPortsCompTest.h
  * @brief Data ports of many types
  */
 // </rtc-template>
@@ -13,11 +13,11 @@
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
 
-// Service implementation headers
+// Servant classes of the provided interfaces
 // <rtc-template block="service_impl_h">
 // </rtc-template>
 
-// Data type and service consumer stub headers
+// IDL stubs for the data types and the required interfaces
 // <rtc-template block="consumer_stub_h">
 #include <rtm/idl/BasicDataTypeSkel.h>
 #include <rtm/idl/ExtendedDataTypesSkel.h>
@@ -70,11 +70,11 @@ class DataPortsCompTest
   // <rtc-template block="protected_operation">
   // </rtc-template>
 
-  // Configuration variables
+  // Configuration parameters, bound in onInitialize()
   // <rtc-template block="config_declare">
   // </rtc-template>
 
-  // DataInPort declaration
+  // InPorts: the sample last read, and the port
   // <rtc-template block="inport_declare">
   RTC::TimedWString m_out_wide;
   /*!
@@ -102,7 +102,7 @@ class DataPortsCompTest
   RTC::InPort<RTC::PointCloud> m_out_cloudIn;
   // </rtc-template>
 
-  // DataOutPort declaration
+  // OutPorts: the sample to write, and the port
   // <rtc-template block="outport_declare">
   RTC::TimedLong m_in_long;
   /*!
@@ -126,15 +126,15 @@ class DataPortsCompTest
   RTC::OutPort<RTC::CameraImage> m_imageOut;
   // </rtc-template>
 
-  // CORBA Port declaration
+  // Service ports
   // <rtc-template block="corbaport_declare">
   // </rtc-template>
 
-  // Service declaration
+  // Servants of the provided interfaces, one per interface
   // <rtc-template block="service_declare">
   // </rtc-template>
 
-  // Consumer declaration
+  // The required interfaces: each holds the peer's reference once its port is connected
   // <rtc-template block="consumer_declare">
   // </rtc-template>
 

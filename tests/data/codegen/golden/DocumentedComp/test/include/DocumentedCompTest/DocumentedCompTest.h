@@ -1,7 +1,7 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  DocumentedCompTest.h
+ * @file DocumentedCompTest.h
  * @brief A component with every documentation field
  */
 // </rtc-template>
@@ -13,12 +13,12 @@
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
 
-// Service implementation headers
+// Servant classes of the provided interfaces
 // <rtc-template block="service_impl_h">
 #include "SampleServiceSVC_impl.h"
 // </rtc-template>
 
-// Data type and service consumer stub headers
+// IDL stubs for the data types and the required interfaces
 // <rtc-template block="consumer_stub_h">
 #include <rtm/idl/BasicDataTypeSkel.h>
 // </rtc-template>
@@ -101,12 +101,12 @@ class DocumentedCompTest
   // <rtc-template block="protected_operation">
   // </rtc-template>
 
-  // Configuration variables
+  // Configuration parameters, bound in onInitialize()
   // <rtc-template block="config_declare">
   /*!
    * Sampling period of the sensor
    * - Name: period
-   * - DefaultValue: 0.1
+   * - Default: 0.1
    * - Unit: s
    * - Range: 0.01-1.0
    * - Constraint: 0.01<=x<=1.0
@@ -114,7 +114,7 @@ class DocumentedCompTest
   double m_period;
   // </rtc-template>
 
-  // DataInPort declaration
+  // InPorts: the sample last read, and the port
   // <rtc-template block="inport_declare">
   RTC::TimedString m_status;
   /*!
@@ -129,7 +129,7 @@ class DocumentedCompTest
   RTC::InPort<RTC::TimedString> m_statusIn;
   // </rtc-template>
 
-  // DataOutPort declaration
+  // OutPorts: the sample to write, and the port
   // <rtc-template block="outport_declare">
   RTC::TimedLong m_command;
   /*!
@@ -144,14 +144,14 @@ class DocumentedCompTest
   RTC::OutPort<RTC::TimedLong> m_commandOut;
   // </rtc-template>
 
-  // CORBA Port declaration
+  // Service ports
   // <rtc-template block="corbaport_declare">
   // Port to read the time from
   // Interface: Clock interface
   RTC::CorbaPort m_ClockPortPort;
   // </rtc-template>
 
-  // Service declaration
+  // Servants of the provided interfaces, one per interface
   // <rtc-template block="service_declare">
   // Time source of the component
   // - Argument: none
@@ -162,7 +162,7 @@ class DocumentedCompTest
   ClockSVC_impl m_clock;
   // </rtc-template>
 
-  // Consumer declaration
+  // The required interfaces: each holds the peer's reference once its port is connected
   // <rtc-template block="consumer_declare">
   // </rtc-template>
 

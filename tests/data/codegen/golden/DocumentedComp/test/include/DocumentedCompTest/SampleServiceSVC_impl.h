@@ -1,18 +1,12 @@
 // -*- C++ -*-
-/*!
- * @file  SampleServiceSVC_impl.h
- * @brief Service implementation header of SampleService.idl
- */
+// SampleServiceSVC_impl.h: servant classes for the interfaces of SampleService.idl.
 
 #ifndef SAMPLESERVICESVC_IMPL_H
 #define SAMPLESERVICESVC_IMPL_H
 
 #include "SampleService.hh"
 
-/*!
- * @class ClockSVC_impl
- * Servant of IDL interface Sample::Clock
- */
+// Implements Sample::Clock; its operations are defined in SampleServiceSVC_impl.cpp.
 class ClockSVC_impl
   : public virtual POA_Sample::Clock,
     public virtual PortableServer::RefCountServantBase
@@ -21,7 +15,7 @@ class ClockSVC_impl
   ClockSVC_impl();
   ~ClockSVC_impl() override;
 
-  // attributes and operations
+  // One member per IDL operation and attribute accessor
   // <rtc-template block="Clock_operations">
   // unsigned long long now()
   CORBA::ULongLong now() override;

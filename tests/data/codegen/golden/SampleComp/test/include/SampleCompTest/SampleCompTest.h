@@ -1,7 +1,7 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  SampleCompTest.h
+ * @file SampleCompTest.h
  * @brief Sample component with "all" port kinds
  */
 // </rtc-template>
@@ -13,12 +13,12 @@
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
 
-// Service implementation headers
+// Servant classes of the provided interfaces
 // <rtc-template block="service_impl_h">
 #include "SampleServiceSVC_impl.h"
 // </rtc-template>
 
-// Data type and service consumer stub headers
+// IDL stubs for the data types and the required interfaces
 // <rtc-template block="consumer_stub_h">
 #include <rtm/idl/BasicDataTypeSkel.h>
 #include "SampleService.hh"
@@ -70,29 +70,29 @@ class SampleCompTest
   // <rtc-template block="protected_operation">
   // </rtc-template>
 
-  // Configuration variables
+  // Configuration parameters, bound in onInitialize()
   // <rtc-template block="config_declare">
   /*!
    * Amplification
    * - Name: gain_value
-   * - DefaultValue: 10
+   * - Default: 10
    * - Constraint: 0<=x<=100
    */
   int m_gain;
   /*!
    * - Name: mode
-   * - DefaultValue: fast
+   * - Default: fast
    * - Constraint: (fast,slow)
    */
   std::string m_mode;
   /*!
    * - Name: rate
-   * - DefaultValue: 0.5
+   * - Default: 0.5
    */
   double m_rate;
   // </rtc-template>
 
-  // DataInPort declaration
+  // InPorts: the sample last read, and the port
   // <rtc-template block="inport_declare">
   RTC::TimedDouble m_result;
   /*!
@@ -100,7 +100,7 @@ class SampleCompTest
   RTC::InPort<RTC::TimedDouble> m_resultIn;
   // </rtc-template>
 
-  // DataOutPort declaration
+  // OutPorts: the sample to write, and the port
   // <rtc-template block="outport_declare">
   RTC::TimedLong m_in;
   /*!
@@ -109,18 +109,18 @@ class SampleCompTest
   RTC::OutPort<RTC::TimedLong> m_inOut;
   // </rtc-template>
 
-  // CORBA Port declaration
+  // Service ports
   // <rtc-template block="corbaport_declare">
   RTC::CorbaPort m_EchoPortPort;
   RTC::CorbaPort m_ClockPortPort;
   // </rtc-template>
 
-  // Service declaration
+  // Servants of the provided interfaces, one per interface
   // <rtc-template block="service_declare">
   ClockSVC_impl m_clock;
   // </rtc-template>
 
-  // Consumer declaration
+  // The required interfaces: each holds the peer's reference once its port is connected
   // <rtc-template block="consumer_declare">
   RTC::CorbaConsumer<Sample::Echo> m_echo0;
   // </rtc-template>

@@ -1,18 +1,12 @@
 // -*- C++ -*-
-/*!
- * @file  RoboticsSVC_impl.h
- * @brief Service implementation header of Robotics.idl
- */
+// RoboticsSVC_impl.h: servant classes for the interfaces of Robotics.idl.
 
 #ifndef ROBOTICSSVC_IMPL_H
 #define ROBOTICSSVC_IMPL_H
 
 #include "Robotics.hh"
 
-/*!
- * @class MapperSVC_impl
- * Servant of IDL interface Robot::Geometry::Mapper
- */
+// Implements Robot::Geometry::Mapper; its operations are defined in RoboticsSVC_impl.cpp.
 class MapperSVC_impl
   : public virtual POA_Robot::Geometry::Mapper,
     public virtual PortableServer::RefCountServantBase
@@ -21,17 +15,14 @@ class MapperSVC_impl
   MapperSVC_impl();
   ~MapperSVC_impl() override;
 
-  // attributes and operations
+  // One member per IDL operation and attribute accessor
   // <rtc-template block="Mapper_operations">
   // Robot::Geometry::Path plan(in Robot::Geometry::Pose start, in Robot::Geometry::Pose goal, out Robot::Geometry::Weights costs)
   Robot::Geometry::Path* plan(const Robot::Geometry::Pose& start, const Robot::Geometry::Pose& goal, Robot::Geometry::Weights_out costs) override;
   // </rtc-template>
 };
 
-/*!
- * @class DeviceSVC_impl
- * Servant of IDL interface Robot::Control::Device
- */
+// Implements Robot::Control::Device; its operations are defined in RoboticsSVC_impl.cpp.
 class DeviceSVC_impl
   : public virtual POA_Robot::Control::Device,
     public virtual PortableServer::RefCountServantBase
@@ -40,7 +31,7 @@ class DeviceSVC_impl
   DeviceSVC_impl();
   ~DeviceSVC_impl() override;
 
-  // attributes and operations
+  // One member per IDL operation and attribute accessor
   // <rtc-template block="Device_operations">
   // Robot::Control::Status state()
   Robot::Control::Status state() override;
@@ -51,10 +42,7 @@ class DeviceSVC_impl
   // </rtc-template>
 };
 
-/*!
- * @class MotorSVC_impl
- * Servant of IDL interface Robot::Control::Motor
- */
+// Implements Robot::Control::Motor; its operations are defined in RoboticsSVC_impl.cpp.
 class MotorSVC_impl
   : public virtual POA_Robot::Control::Motor,
     public virtual PortableServer::RefCountServantBase
@@ -63,7 +51,7 @@ class MotorSVC_impl
   MotorSVC_impl();
   ~MotorSVC_impl() override;
 
-  // attributes and operations
+  // One member per IDL operation and attribute accessor
   // <rtc-template block="Motor_operations">
   // Robot::Control::Status state()
   Robot::Control::Status state() override;

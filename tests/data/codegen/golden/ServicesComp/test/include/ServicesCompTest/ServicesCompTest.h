@@ -1,7 +1,7 @@
 // -*- C++ -*-
 // <rtc-template block="description">
 /*!
- * @file  ServicesCompTest.h
+ * @file ServicesCompTest.h
  * @brief Provided and required services from a multi-module IDL
  */
 // </rtc-template>
@@ -13,12 +13,12 @@
 #include <rtm/idl/ExtendedDataTypesSkel.h>
 #include <rtm/idl/InterfaceDataTypesSkel.h>
 
-// Service implementation headers
+// Servant classes of the provided interfaces
 // <rtc-template block="service_impl_h">
 #include "RoboticsSVC_impl.h"
 // </rtc-template>
 
-// Data type and service consumer stub headers
+// IDL stubs for the data types and the required interfaces
 // <rtc-template block="consumer_stub_h">
 #include "Robotics.hh"
 // </rtc-template>
@@ -69,33 +69,33 @@ class ServicesCompTest
   // <rtc-template block="protected_operation">
   // </rtc-template>
 
-  // Configuration variables
+  // Configuration parameters, bound in onInitialize()
   // <rtc-template block="config_declare">
   // </rtc-template>
 
-  // DataInPort declaration
+  // InPorts: the sample last read, and the port
   // <rtc-template block="inport_declare">
   // </rtc-template>
 
-  // DataOutPort declaration
+  // OutPorts: the sample to write, and the port
   // <rtc-template block="outport_declare">
   // </rtc-template>
 
-  // CORBA Port declaration
+  // Service ports
   // <rtc-template block="corbaport_declare">
   RTC::CorbaPort m_MotorPortPort;
   RTC::CorbaPort m_PlannerPortPort;
   RTC::CorbaPort m_DevicePortPort;
   // </rtc-template>
 
-  // Service declaration
+  // Servants of the provided interfaces, one per interface
   // <rtc-template block="service_declare">
   MapperSVC_impl m_mapperRef;
   DeviceSVC_impl m_device;
   MotorSVC_impl m_driver;
   // </rtc-template>
 
-  // Consumer declaration
+  // The required interfaces: each holds the peer's reference once its port is connected
   // <rtc-template block="consumer_declare">
   RTC::CorbaConsumer<Robot::Control::Motor> m_motor;
   RTC::CorbaConsumer<Nav::Planner> m_plannerImpl;
