@@ -1,31 +1,28 @@
 #!/usr/bin/env python3
 # -*- coding: utf-8 -*-
-# -*- Python -*-
 
 # <rtc-template block="description">
 """
- @file ConfigComp.py
- @brief Configuration with every widget and constraint
+ConfigComp.py: Configuration with every widget and constraint
 """
 # </rtc-template>
 
 import sys
 sys.path.append(".")
 
-# Import RTM module
 import RTC
 import OpenRTM_aist
 
-# Import Service implementation class
+# Servant classes of the provided interfaces
 # <rtc-template block="service_impl">
 # </rtc-template>
 
-# Import Service stub modules
+# IDL stubs for the data types and the required interfaces
 # <rtc-template block="consumer_import">
 import RTC
 # </rtc-template>
 
-# This module's specification
+# The component type as the manager registers it (the profile's properties).
 # <rtc-template block="module_spec">
 configcomp_spec = [
     "implementation_id", "ConfigComp",
@@ -86,8 +83,7 @@ configcomp_spec = [
 
 class ConfigComp(OpenRTM_aist.DataFlowComponentBase):
     """
-    @class ConfigComp
-    @brief Configuration with every widget and constraint
+    Configuration with every widget and constraint
     """
 
     def __init__(self, manager):
@@ -126,7 +122,7 @@ class ConfigComp(OpenRTM_aist.DataFlowComponentBase):
         # </rtc-template>
 
     def onInitialize(self):
-        # Bind variables and configuration variables
+        # Ties each configuration parameter to its member, with its default.
         # <rtc-template block="bind_config">
         self.bindParameter("label", self._label, "hello world")
         self.bindParameter("gain", self._gainValue, "1.5")
@@ -141,7 +137,7 @@ class ConfigComp(OpenRTM_aist.DataFlowComponentBase):
         self.bindParameter("target", self._target, "42")
         # </rtc-template>
 
-        # Registration: InPort/OutPort/Service
+        # Adds the profile's ports to the component.
         # <rtc-template block="registration">
         self.addInPort("in", self._inIn)
         self.addOutPort("out", self._outOut)

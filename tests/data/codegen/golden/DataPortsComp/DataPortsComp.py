@@ -1,31 +1,28 @@
 #!/usr/bin/env python3
 # -*- coding: utf-8 -*-
-# -*- Python -*-
 
 # <rtc-template block="description">
 """
- @file DataPortsComp.py
- @brief Data ports of many types
+DataPortsComp.py: Data ports of many types
 """
 # </rtc-template>
 
 import sys
 sys.path.append(".")
 
-# Import RTM module
 import RTC
 import OpenRTM_aist
 
-# Import Service implementation class
+# Servant classes of the provided interfaces
 # <rtc-template block="service_impl">
 # </rtc-template>
 
-# Import Service stub modules
+# IDL stubs for the data types and the required interfaces
 # <rtc-template block="consumer_import">
 import RTC
 # </rtc-template>
 
-# This module's specification
+# The component type as the manager registers it (the profile's properties).
 # <rtc-template block="module_spec">
 dataportscomp_spec = [
     "implementation_id", "DataPortsComp",
@@ -45,8 +42,7 @@ dataportscomp_spec = [
 
 class DataPortsComp(OpenRTM_aist.DataFlowComponentBase):
     """
-    @class DataPortsComp
-    @brief Data ports of many types
+    Data ports of many types
     """
 
     def __init__(self, manager):
@@ -81,11 +77,11 @@ class DataPortsComp(OpenRTM_aist.DataFlowComponentBase):
         # </rtc-template>
 
     def onInitialize(self):
-        # Bind variables and configuration variables
+        # Ties each configuration parameter to its member, with its default.
         # <rtc-template block="bind_config">
         # </rtc-template>
 
-        # Registration: InPort/OutPort/Service
+        # Adds the profile's ports to the component.
         # <rtc-template block="registration">
         self.addInPort("in_long", self._in_longIn)
         self.addInPort("in_doubles", self._doublesIn)

@@ -1,32 +1,29 @@
 #!/usr/bin/env python3
 # -*- coding: utf-8 -*-
-# -*- Python -*-
 
 # <rtc-template block="description">
 """
- @file DocumentedComp.py
- @brief A component with every documentation field
+DocumentedComp.py: A component with every documentation field
 """
 # </rtc-template>
 
 import sys
 sys.path.append(".")
 
-# Import RTM module
 import RTC
 import OpenRTM_aist
 
-# Import Service implementation class
+# Servant classes of the provided interfaces
 # <rtc-template block="service_impl">
 # </rtc-template>
 
-# Import Service stub modules
+# IDL stubs for the data types and the required interfaces
 # <rtc-template block="consumer_import">
 import RTC
 import Sample
 # </rtc-template>
 
-# This module's specification
+# The component type as the manager registers it (the profile's properties).
 # <rtc-template block="module_spec">
 documentedcomp_spec = [
     "implementation_id", "DocumentedComp",
@@ -50,8 +47,7 @@ documentedcomp_spec = [
 
 class DocumentedComp(OpenRTM_aist.DataFlowComponentBase):
     """
-    @class DocumentedComp
-    @brief A component with every documentation field
+    A component with every documentation field
     """
 
     def __init__(self, manager):
@@ -72,12 +68,12 @@ class DocumentedComp(OpenRTM_aist.DataFlowComponentBase):
         # </rtc-template>
 
     def onInitialize(self):
-        # Bind variables and configuration variables
+        # Ties each configuration parameter to its member, with its default.
         # <rtc-template block="bind_config">
         self.bindParameter("period", self._period, "0.1")
         # </rtc-template>
 
-        # Registration: InPort/OutPort/Service
+        # Adds the profile's ports to the component.
         # <rtc-template block="registration">
         self.addInPort("command", self._commandIn)
         self.addOutPort("status", self._statusOut)

@@ -1,34 +1,31 @@
 #!/usr/bin/env python3
 # -*- coding: utf-8 -*-
-# -*- Python -*-
 
 # <rtc-template block="description">
 """
- @file SampleComp.py
- @brief Sample component with "all" port kinds
+SampleComp.py: Sample component with "all" port kinds
 """
 # </rtc-template>
 
 import sys
 sys.path.append(".")
 
-# Import RTM module
 import RTC
 import OpenRTM_aist
 
-# Import Service implementation class
+# Servant classes of the provided interfaces
 # <rtc-template block="service_impl">
 from SampleService_idl_example import *
 # </rtc-template>
 
-# Import Service stub modules
+# IDL stubs for the data types and the required interfaces
 # <rtc-template block="consumer_import">
 import RTC
 import Sample
 import Sample__POA
 # </rtc-template>
 
-# This module's specification
+# The component type as the manager registers it (the profile's properties).
 # <rtc-template block="module_spec">
 samplecomp_spec = [
     "implementation_id", "SampleComp",
@@ -58,8 +55,7 @@ samplecomp_spec = [
 
 class SampleComp(OpenRTM_aist.DataFlowComponentBase):
     """
-    @class SampleComp
-    @brief Sample component with "all" port kinds
+    Sample component with "all" port kinds
     """
 
     def __init__(self, manager):
@@ -86,14 +82,14 @@ class SampleComp(OpenRTM_aist.DataFlowComponentBase):
         # </rtc-template>
 
     def onInitialize(self):
-        # Bind variables and configuration variables
+        # Ties each configuration parameter to its member, with its default.
         # <rtc-template block="bind_config">
         self.bindParameter("gain_value", self._gain, "10")
         self.bindParameter("mode", self._mode, "fast")
         self.bindParameter("rate", self._rate, "0.5")
         # </rtc-template>
 
-        # Registration: InPort/OutPort/Service
+        # Adds the profile's ports to the component.
         # <rtc-template block="registration">
         self.addInPort("in", self._inIn)
         self.addOutPort("out", self._resultOut)

@@ -1,27 +1,24 @@
 #!/usr/bin/env python3
 # -*- coding: utf-8 -*-
-# -*- Python -*-
 
 # <rtc-template block="description">
 """
- @file ServicesComp.py
- @brief Provided and required services from a multi-module IDL
+ServicesComp.py: Provided and required services from a multi-module IDL
 """
 # </rtc-template>
 
 import sys
 sys.path.append(".")
 
-# Import RTM module
 import RTC
 import OpenRTM_aist
 
-# Import Service implementation class
+# Servant classes of the provided interfaces
 # <rtc-template block="service_impl">
 from Robotics_idl_example import *
 # </rtc-template>
 
-# Import Service stub modules
+# IDL stubs for the data types and the required interfaces
 # <rtc-template block="consumer_import">
 import Nav
 import Nav__POA
@@ -29,7 +26,7 @@ import Robot
 import Robot__POA.Control
 # </rtc-template>
 
-# This module's specification
+# The component type as the manager registers it (the profile's properties).
 # <rtc-template block="module_spec">
 servicescomp_spec = [
     "implementation_id", "ServicesComp",
@@ -49,8 +46,7 @@ servicescomp_spec = [
 
 class ServicesComp(OpenRTM_aist.DataFlowComponentBase):
     """
-    @class ServicesComp
-    @brief Provided and required services from a multi-module IDL
+    Provided and required services from a multi-module IDL
     """
 
     def __init__(self, manager):
@@ -71,11 +67,11 @@ class ServicesComp(OpenRTM_aist.DataFlowComponentBase):
         # </rtc-template>
 
     def onInitialize(self):
-        # Bind variables and configuration variables
+        # Ties each configuration parameter to its member, with its default.
         # <rtc-template block="bind_config">
         # </rtc-template>
 
-        # Registration: InPort/OutPort/Service
+        # Adds the profile's ports to the component.
         # <rtc-template block="registration">
         self._MotorPortPort.registerProvider("motor0", "Robot::Control::Motor", self._motor)
         self.addPort(self._MotorPortPort)
