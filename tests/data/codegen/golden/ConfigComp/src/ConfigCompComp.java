@@ -1,8 +1,5 @@
 // -*- Java -*-
-/*!
- * @file ConfigCompComp.java
- * @brief Standalone program that runs one ConfigComp component.
- */
+// ConfigCompComp.java: a program that starts a manager and creates one ConfigComp in it.
 
 import jp.go.aist.rtm.RTC.Manager;
 import jp.go.aist.rtm.RTC.ModuleInitProc;
@@ -16,7 +13,7 @@ public class ConfigCompComp implements ModuleInitProc {
         mgr.registerFactory(prop, new ConfigComp(), new ConfigComp());
         RTObject_impl comp = mgr.createComponent("ConfigComp");
         if (comp == null) {
-            System.err.println("Component create failed.");
+            System.err.println("ConfigCompComp: the manager could not create ConfigComp");
             System.exit(1);
         }
     }

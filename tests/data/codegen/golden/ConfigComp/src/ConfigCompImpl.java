@@ -1,7 +1,7 @@
 // -*- Java -*-
 // <rtc-template block="description">
 /*!
- * @file  ConfigCompImpl.java
+ * @file ConfigCompImpl.java
  * @brief Configuration with every widget and constraint
  */
 // </rtc-template>
@@ -35,12 +35,13 @@ public class ConfigCompImpl extends DataFlowComponentBase {
 
     @Override
     protected ReturnCode_t onInitialize() {
-        // Registration: InPort/OutPort/Service
+        // Adds the profile's ports to the component.
         // <rtc-template block="registration">
         addInPort("in", m_inIn);
         addOutPort("out", m_outOut);
         // </rtc-template>
 
+        // Ties each configuration parameter to its member, with its default.
         // <rtc-template block="bind_config">
         bindParameter("label", m_label, "hello world");
         bindParameter("gain", m_gainValue, "1.5");
@@ -112,99 +113,99 @@ public class ConfigCompImpl extends DataFlowComponentBase {
 //        return super.onRateChanged(ec_id);
 //    }
 
-    // Configuration variables
+    // Configuration parameters, bound in onInitialize()
     // <rtc-template block="config_declare">
     /*!
      * 
      * - Name: label
-     * - DefaultValue: hello world
+     * - Default: hello world
      */
     protected StringHolder m_label = new StringHolder();
     /*!
      * 
      * - Name: gain
-     * - DefaultValue: 1.5
+     * - Default: 1.5
      */
     protected DoubleHolder m_gainValue = new DoubleHolder();
     /*!
      * 
      * - Name: count
-     * - DefaultValue: 3
+     * - Default: 3
      */
     protected IntegerHolder m_count = new IntegerHolder();
     /*!
      * 
      * - Name: threshold
-     * - DefaultValue: 10
+     * - Default: 10
      */
     protected LongHolder m_threshold = new LongHolder();
     /*!
      * 
      * - Name: limit
-     * - DefaultValue: 5
+     * - Default: 5
      */
     protected ShortHolder m_limit = new ShortHolder();
     /*!
      * 
      * - Name: mode
-     * - DefaultValue: fast
+     * - Default: fast
      */
     protected StringHolder m_mode = new StringHolder();
     /*!
      * 
      * - Name: features
-     * - DefaultValue: camera,lidar
+     * - Default: camera,lidar
      */
     protected StringHolder m_features = new StringHolder();
     /*!
      * 
      * - Name: order
-     * - DefaultValue: first,second
+     * - Default: first,second
      */
     protected StringVectorHolder m_order = new StringVectorHolder();
     /*!
      * 
      * - Name: weights
-     * - DefaultValue: 0.5,1.5
+     * - Default: 0.5,1.5
      */
     protected DoubleVectorHolder m_weights = new DoubleVectorHolder();
     /*!
      * 
      * - Name: scale
-     * - DefaultValue: 0.25
+     * - Default: 0.25
      */
     protected FloatHolder m_scale = new FloatHolder();
     /*!
      * 
      * - Name: target
-     * - DefaultValue: 42
+     * - Default: 42
      */
     protected LongHolder m_target = new LongHolder();
     // </rtc-template>
 
-    // DataInPort declaration
+    // InPorts: the sample last read, its holder, and the port
     // <rtc-template block="inport_declare">
     protected RTC.TimedDouble m_in_val;
     protected DataRef<RTC.TimedDouble> m_in;
     protected InPort<RTC.TimedDouble> m_inIn;
     // </rtc-template>
 
-    // DataOutPort declaration
+    // OutPorts: the sample to write, its holder, and the port
     // <rtc-template block="outport_declare">
     protected RTC.TimedDouble m_out_val;
     protected DataRef<RTC.TimedDouble> m_out;
     protected OutPort<RTC.TimedDouble> m_outOut;
     // </rtc-template>
 
-    // CORBA Port declaration
+    // Service ports
     // <rtc-template block="corbaport_declare">
     // </rtc-template>
 
-    // Service declaration
+    // Servants of the provided interfaces, one per interface
     // <rtc-template block="service_declare">
     // </rtc-template>
 
-    // Consumer declaration
+    // The required interfaces: each holds the peer's reference once its port is connected
     // <rtc-template block="consumer_declare">
     // </rtc-template>
 }

@@ -1,8 +1,5 @@
 // -*- Java -*-
-/*!
- * @file  DoubleVectorHolder.java
- * @brief Holder of the vector<double> configuration parameters of ConfigComp
- */
+// DoubleVectorHolder.java: holds the vector<double> configuration parameters of ConfigComp.
 
 import java.util.Vector;
 

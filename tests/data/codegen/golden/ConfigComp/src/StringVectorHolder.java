@@ -1,8 +1,5 @@
 // -*- Java -*-
-/*!
- * @file  StringVectorHolder.java
- * @brief Holder of the vector<string> configuration parameters of ConfigComp
- */
+// StringVectorHolder.java: holds the vector<string> configuration parameters of ConfigComp.
 
 import java.util.Vector;
 

@@ -1,8 +1,5 @@
 // -*- Java -*-
-/*!
- * @file DataPortsCompComp.java
- * @brief Standalone program that runs one DataPortsComp component.
- */
+// DataPortsCompComp.java: a program that starts a manager and creates one DataPortsComp in it.
 
 import jp.go.aist.rtm.RTC.Manager;
 import jp.go.aist.rtm.RTC.ModuleInitProc;
@@ -16,7 +13,7 @@ public class DataPortsCompComp implements ModuleInitProc {
         mgr.registerFactory(prop, new DataPortsComp(), new DataPortsComp());
         RTObject_impl comp = mgr.createComponent("DataPortsComp");
         if (comp == null) {
-            System.err.println("Component create failed.");
+            System.err.println("DataPortsCompComp: the manager could not create DataPortsComp");
             System.exit(1);
         }
     }

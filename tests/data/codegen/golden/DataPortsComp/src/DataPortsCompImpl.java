@@ -1,7 +1,7 @@
 // -*- Java -*-
 // <rtc-template block="description">
 /*!
- * @file  DataPortsCompImpl.java
+ * @file DataPortsCompImpl.java
  * @brief Data ports of many types
  */
 // </rtc-template>
@@ -62,7 +62,7 @@ public class DataPortsCompImpl extends DataFlowComponentBase {
 
     @Override
     protected ReturnCode_t onInitialize() {
-        // Registration: InPort/OutPort/Service
+        // Adds the profile's ports to the component.
         // <rtc-template block="registration">
         addInPort("in_long", m_in_longIn);
         addInPort("in_doubles", m_doublesIn);
@@ -77,6 +77,7 @@ public class DataPortsCompImpl extends DataFlowComponentBase {
         addOutPort("out_cloud", m_out_cloudOut);
         // </rtc-template>
 
+        // Ties each configuration parameter to its member, with its default.
         // <rtc-template block="bind_config">
         // </rtc-template>
         return super.onInitialize();
@@ -137,11 +138,11 @@ public class DataPortsCompImpl extends DataFlowComponentBase {
 //        return super.onRateChanged(ec_id);
 //    }
 
-    // Configuration variables
+    // Configuration parameters, bound in onInitialize()
     // <rtc-template block="config_declare">
     // </rtc-template>
 
-    // DataInPort declaration
+    // InPorts: the sample last read, its holder, and the port
     // <rtc-template block="inport_declare">
     protected RTC.TimedLong m_in_long_val;
     protected DataRef<RTC.TimedLong> m_in_long;
@@ -160,7 +161,7 @@ public class DataPortsCompImpl extends DataFlowComponentBase {
     protected InPort<RTC.CameraImage> m_imageIn;
     // </rtc-template>
 
-    // DataOutPort declaration
+    // OutPorts: the sample to write, its holder, and the port
     // <rtc-template block="outport_declare">
     protected RTC.TimedWString m_out_wide_val;
     protected DataRef<RTC.TimedWString> m_out_wide;
@@ -182,15 +183,15 @@ public class DataPortsCompImpl extends DataFlowComponentBase {
     protected OutPort<RTC.PointCloud> m_out_cloudOut;
     // </rtc-template>
 
-    // CORBA Port declaration
+    // Service ports
     // <rtc-template block="corbaport_declare">
     // </rtc-template>
 
-    // Service declaration
+    // Servants of the provided interfaces, one per interface
     // <rtc-template block="service_declare">
     // </rtc-template>
 
-    // Consumer declaration
+    // The required interfaces: each holds the peer's reference once its port is connected
     // <rtc-template block="consumer_declare">
     // </rtc-template>
 }

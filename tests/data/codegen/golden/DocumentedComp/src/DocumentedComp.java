@@ -1,7 +1,7 @@
 // -*- Java -*-
 // <rtc-template block="description">
 /*!
- * @file  DocumentedComp.java
+ * @file DocumentedComp.java
  * @brief A component with every documentation field
  */
 // </rtc-template>
@@ -19,7 +19,7 @@ import jp.go.aist.rtm.RTC.util.Properties;
  */
 public class DocumentedComp implements RtcNewFunc, RtcDeleteFunc, RegisterModuleFunc {
 
-    // Module specification
+    // The component type as the manager registers it (the profile's properties).
     // <rtc-template block="module_spec">
     public static String component_conf[] = {
             "implementation_id", "DocumentedComp",

@@ -1,8 +1,5 @@
 // -*- Java -*-
-/*!
- * @file DocumentedCompComp.java
- * @brief Standalone program that runs one DocumentedComp component.
- */
+// DocumentedCompComp.java: a program that starts a manager and creates one DocumentedComp in it.
 
 import jp.go.aist.rtm.RTC.Manager;
 import jp.go.aist.rtm.RTC.ModuleInitProc;
@@ -16,7 +13,7 @@ public class DocumentedCompComp implements ModuleInitProc {
         mgr.registerFactory(prop, new DocumentedComp(), new DocumentedComp());
         RTObject_impl comp = mgr.createComponent("DocumentedComp");
         if (comp == null) {
-            System.err.println("Component create failed.");
+            System.err.println("DocumentedCompComp: the manager could not create DocumentedComp");
             System.exit(1);
         }
     }

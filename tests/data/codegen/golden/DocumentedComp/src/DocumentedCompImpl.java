@@ -1,7 +1,7 @@
 // -*- Java -*-
 // <rtc-template block="description">
 /*!
- * @file  DocumentedCompImpl.java
+ * @file DocumentedCompImpl.java
  * @brief A component with every documentation field
  */
 // </rtc-template>
@@ -36,7 +36,7 @@ public class DocumentedCompImpl extends DataFlowComponentBase {
 
     @Override
     protected ReturnCode_t onInitialize() {
-        // Registration: InPort/OutPort/Service
+        // Adds the profile's ports to the component.
         // <rtc-template block="registration">
         addInPort("command", m_commandIn);
         addOutPort("status", m_statusOut);
@@ -44,6 +44,7 @@ public class DocumentedCompImpl extends DataFlowComponentBase {
         addPort(m_ClockPortPort);
         // </rtc-template>
 
+        // Ties each configuration parameter to its member, with its default.
         // <rtc-template block="bind_config">
         bindParameter("period", m_period, "0.1");
         // </rtc-template>
@@ -105,40 +106,40 @@ public class DocumentedCompImpl extends DataFlowComponentBase {
         return super.onRateChanged(ec_id);
     }
 
-    // Configuration variables
+    // Configuration parameters, bound in onInitialize()
     // <rtc-template block="config_declare">
     /*!
      * Sampling period of the sensor
      * - Name: period
-     * - DefaultValue: 0.1
+     * - Default: 0.1
      */
     protected DoubleHolder m_period = new DoubleHolder();
     // </rtc-template>
 
-    // DataInPort declaration
+    // InPorts: the sample last read, its holder, and the port
     // <rtc-template block="inport_declare">
     protected RTC.TimedLong m_command_val;
     protected DataRef<RTC.TimedLong> m_command;
     protected InPort<RTC.TimedLong> m_commandIn;
     // </rtc-template>
 
-    // DataOutPort declaration
+    // OutPorts: the sample to write, its holder, and the port
     // <rtc-template block="outport_declare">
     protected RTC.TimedString m_status_val;
     protected DataRef<RTC.TimedString> m_status;
     protected OutPort<RTC.TimedString> m_statusOut;
     // </rtc-template>
 
-    // CORBA Port declaration
+    // Service ports
     // <rtc-template block="corbaport_declare">
     protected CorbaPort m_ClockPortPort;
     // </rtc-template>
 
-    // Service declaration
+    // Servants of the provided interfaces, one per interface
     // <rtc-template block="service_declare">
     // </rtc-template>
 
-    // Consumer declaration
+    // The required interfaces: each holds the peer's reference once its port is connected
     // <rtc-template block="consumer_declare">
     protected CorbaConsumer<Sample.Clock> m_clockBase =
         new CorbaConsumer<Sample.Clock>(Sample.Clock.class);

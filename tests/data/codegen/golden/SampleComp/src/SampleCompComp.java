@@ -1,8 +1,5 @@
 // -*- Java -*-
-/*!
- * @file SampleCompComp.java
- * @brief Standalone program that runs one SampleComp component.
- */
+// SampleCompComp.java: a program that starts a manager and creates one SampleComp in it.
 
 import jp.go.aist.rtm.RTC.Manager;
 import jp.go.aist.rtm.RTC.ModuleInitProc;
@@ -16,7 +13,7 @@ public class SampleCompComp implements ModuleInitProc {
         mgr.registerFactory(prop, new SampleComp(), new SampleComp());
         RTObject_impl comp = mgr.createComponent("SampleComp");
         if (comp == null) {
-            System.err.println("Component create failed.");
+            System.err.println("SampleCompComp: the manager could not create SampleComp");
             System.exit(1);
         }
     }

@@ -1,7 +1,7 @@
 // -*- Java -*-
 // <rtc-template block="description">
 /*!
- * @file  SampleCompImpl.java
+ * @file SampleCompImpl.java
  * @brief Sample component with "all" port kinds
  */
 // </rtc-template>
@@ -37,7 +37,7 @@ public class SampleCompImpl extends DataFlowComponentBase {
 
     @Override
     protected ReturnCode_t onInitialize() {
-        // Registration: InPort/OutPort/Service
+        // Adds the profile's ports to the component.
         // <rtc-template block="registration">
         addInPort("in", m_inIn);
         addOutPort("out", m_resultOut);
@@ -47,6 +47,7 @@ public class SampleCompImpl extends DataFlowComponentBase {
         addPort(m_ClockPortPort);
         // </rtc-template>
 
+        // Ties each configuration parameter to its member, with its default.
         // <rtc-template block="bind_config">
         bindParameter("gain_value", m_gain, "10");
         bindParameter("mode", m_mode, "fast");
@@ -110,54 +111,54 @@ public class SampleCompImpl extends DataFlowComponentBase {
 //        return super.onRateChanged(ec_id);
 //    }
 
-    // Configuration variables
+    // Configuration parameters, bound in onInitialize()
     // <rtc-template block="config_declare">
     /*!
      * Amplification
      * - Name: gain_value
-     * - DefaultValue: 10
+     * - Default: 10
      */
     protected IntegerHolder m_gain = new IntegerHolder();
     /*!
      * 
      * - Name: mode
-     * - DefaultValue: fast
+     * - Default: fast
      */
     protected StringHolder m_mode = new StringHolder();
     /*!
      * 
      * - Name: rate
-     * - DefaultValue: 0.5
+     * - Default: 0.5
      */
     protected DoubleHolder m_rate = new DoubleHolder();
     // </rtc-template>
 
-    // DataInPort declaration
+    // InPorts: the sample last read, its holder, and the port
     // <rtc-template block="inport_declare">
     protected RTC.TimedLong m_in_val;
     protected DataRef<RTC.TimedLong> m_in;
     protected InPort<RTC.TimedLong> m_inIn;
     // </rtc-template>
 
-    // DataOutPort declaration
+    // OutPorts: the sample to write, its holder, and the port
     // <rtc-template block="outport_declare">
     protected RTC.TimedDouble m_result_val;
     protected DataRef<RTC.TimedDouble> m_result;
     protected OutPort<RTC.TimedDouble> m_resultOut;
     // </rtc-template>
 
-    // CORBA Port declaration
+    // Service ports
     // <rtc-template block="corbaport_declare">
     protected CorbaPort m_EchoPortPort;
     protected CorbaPort m_ClockPortPort;
     // </rtc-template>
 
-    // Service declaration
+    // Servants of the provided interfaces, one per interface
     // <rtc-template block="service_declare">
     protected EchoSVC_impl m_echo0 = new EchoSVC_impl();
     // </rtc-template>
 
-    // Consumer declaration
+    // The required interfaces: each holds the peer's reference once its port is connected
     // <rtc-template block="consumer_declare">
     protected CorbaConsumer<Sample.Clock> m_clockBase =
         new CorbaConsumer<Sample.Clock>(Sample.Clock.class);

@@ -1,8 +1,5 @@
 // -*- Java -*-
-/*!
- * @file ServicesCompComp.java
- * @brief Standalone program that runs one ServicesComp component.
- */
+// ServicesCompComp.java: a program that starts a manager and creates one ServicesComp in it.
 
 import jp.go.aist.rtm.RTC.Manager;
 import jp.go.aist.rtm.RTC.ModuleInitProc;
@@ -16,7 +13,7 @@ public class ServicesCompComp implements ModuleInitProc {
         mgr.registerFactory(prop, new ServicesComp(), new ServicesComp());
         RTObject_impl comp = mgr.createComponent("ServicesComp");
         if (comp == null) {
-            System.err.println("Component create failed.");
+            System.err.println("ServicesCompComp: the manager could not create ServicesComp");
             System.exit(1);
         }
     }

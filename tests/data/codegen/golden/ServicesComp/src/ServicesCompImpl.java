@@ -1,7 +1,7 @@
 // -*- Java -*-
 // <rtc-template block="description">
 /*!
- * @file  ServicesCompImpl.java
+ * @file ServicesCompImpl.java
  * @brief Provided and required services from a multi-module IDL
  */
 // </rtc-template>
@@ -32,7 +32,7 @@ public class ServicesCompImpl extends DataFlowComponentBase {
 
     @Override
     protected ReturnCode_t onInitialize() {
-        // Registration: InPort/OutPort/Service
+        // Adds the profile's ports to the component.
         // <rtc-template block="registration">
         m_MotorPortPort.registerProvider("motor0", "Robot::Control::Motor", m_motor);
         addPort(m_MotorPortPort);
@@ -44,6 +44,7 @@ public class ServicesCompImpl extends DataFlowComponentBase {
         addPort(m_DevicePortPort);
         // </rtc-template>
 
+        // Ties each configuration parameter to its member, with its default.
         // <rtc-template block="bind_config">
         // </rtc-template>
         return super.onInitialize();
@@ -104,32 +105,32 @@ public class ServicesCompImpl extends DataFlowComponentBase {
 //        return super.onRateChanged(ec_id);
 //    }
 
-    // Configuration variables
+    // Configuration parameters, bound in onInitialize()
     // <rtc-template block="config_declare">
     // </rtc-template>
 
-    // DataInPort declaration
+    // InPorts: the sample last read, its holder, and the port
     // <rtc-template block="inport_declare">
     // </rtc-template>
 
-    // DataOutPort declaration
+    // OutPorts: the sample to write, its holder, and the port
     // <rtc-template block="outport_declare">
     // </rtc-template>
 
-    // CORBA Port declaration
+    // Service ports
     // <rtc-template block="corbaport_declare">
     protected CorbaPort m_MotorPortPort;
     protected CorbaPort m_PlannerPortPort;
     protected CorbaPort m_DevicePortPort;
     // </rtc-template>
 
-    // Service declaration
+    // Servants of the provided interfaces, one per interface
     // <rtc-template block="service_declare">
     protected MotorSVC_impl m_motor = new MotorSVC_impl();
     protected PlannerSVC_impl m_plannerImpl = new PlannerSVC_impl();
     // </rtc-template>
 
-    // Consumer declaration
+    // The required interfaces: each holds the peer's reference once its port is connected
     // <rtc-template block="consumer_declare">
     protected CorbaConsumer<Robot.Geometry.Mapper> m_mapperRefBase =
         new CorbaConsumer<Robot.Geometry.Mapper>(Robot.Geometry.Mapper.class);
