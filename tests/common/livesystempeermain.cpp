@@ -83,15 +83,23 @@ int main(int argc, char **argv)
     context.naming = CosNaming::NamingContext::_narrow(naming.in());
 
     // The manager lives under the fixed key "manager" so that corbaloc addresses reach it.
-    CORBA::Object_var insObject = context.orb->resolve_initial_references("omniINSPOA");
-    PortableServer::POA_var insPoa = PortableServer::POA::_narrow(insObject.in());
+    // The POA holds the manager while it is active; destroying the ORB at exit releases it. The
+    // INS POA's references are let go before that, or omniORB keeps the POA past destroy().
     auto *manager = new LivePeer::Manager(context);
+    const PortableServer::ServantBase_var managerServant = manager;
     context.manager = manager;
-    PortableServer::ObjectId_var managerId = PortableServer::string_to_ObjectId("manager");
-    insPoa->activate_object_with_id(managerId.in(), manager);
-    CORBA::Object_var managerRef = insPoa->id_to_reference(managerId.in());
-    insPoa->the_POAManager()->activate();
-    context.poa->the_POAManager()->activate();
+    CORBA::Object_var managerRef;
+    {
+        CORBA::Object_var insObject = context.orb->resolve_initial_references("omniINSPOA");
+        PortableServer::POA_var insPoa = PortableServer::POA::_narrow(insObject.in());
+        PortableServer::ObjectId_var managerId = PortableServer::string_to_ObjectId("manager");
+        insPoa->activate_object_with_id(managerId.in(), manager);
+        managerRef = insPoa->id_to_reference(managerId.in());
+        PortableServer::POAManager_var insManager = insPoa->the_POAManager();
+        insManager->activate();
+    }
+    PortableServer::POAManager_var rootManager = context.poa->the_POAManager();
+    rootManager->activate();
 
     context.bind("manager", "mgr", managerRef.in());
     for (const std::string &argument : options.components) {
@@ -104,12 +112,12 @@ int main(int argc, char **argv)
         bindZombies(context);
     std::printf("ready\n");
     std::fflush(stdout);
-    // run() may report BAD_INV_ORDER when the shutdown thread has already torn the ORB down; the
-    // process leaves anyway, and the ORB is left to process exit.
+    // run() may report BAD_INV_ORDER when the shutdown thread has already torn the ORB down.
     try {
         context.orb->run();
     } catch (const CORBA::BAD_INV_ORDER &) { }
     if (context.shutdownThread.joinable())
         context.shutdownThread.join();
+    context.orb->destroy();
     return 0;
 }

@@ -84,6 +84,8 @@ Component *Component::create(Context &context, const std::string &type, const st
         return nullptr;
     auto *component = new Component(context, type, instance);
     component->m_self = component->_this();
+    // The POA holds the component from here on; destroy() deactivates it, which deletes it.
+    component->_remove_ref();
     auto *ec = new ExecutionContext(context);
     ec->setOwner(component);
     component->m_ec = ec->_this();
