@@ -309,12 +309,8 @@ void TestInteropBuild::generatedStateMachineRuns()
     // (OpenRTM-aist 2.1.0's own EventInPort declares no marshaling type, so it refuses every
     // connection; the events themselves are exercised against the SDK in tst_sdkfixtures.)
     const QString dir = m_work.filePath("Turnstile");
-    const QStringList generate{"gen", RTSTUDIO_TEST_DATA_DIR "/sdk/Turnstile.xml", "--lang", "cpp", "-o", dir};
-    RtctlResult r = runRtctl(generate);
-    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     QString log;
-    for (const SdkTest::UserEdit &edit : Turnstile::userEdits)
-        QVERIFY2(SdkTest::applyEdit(dir, edit, &log), qPrintable(log));
+    QVERIFY2(Turnstile::generate(dir, &log), qPrintable(log));
     QVERIFY2(buildAgainstOpenRtm(dir, &log), qPrintable(log));
 
     QString error;
@@ -324,11 +320,13 @@ void TestInteropBuild::generatedStateMachineRuns()
     QVERIFY2(comp != nullptr, qPrintable(error));
     const QString gate = componentPath("fsm", "Turnstile0");
     QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", gate}).code == 0, 30000);
-    const QString sink = componentPath("ours", "GateState");
-    r = rtctl({"mgr", QStringLiteral("/%1/ours.host_cxt/manager.mgr").arg(m_live.namingServer()), "create",
-               "ConsoleOut?instance_name=GateState"});
-    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
-    r = rtctl({"con", gate + ":state", sink + ":in"});
+    const QStringList options {"corba.nameservers=" + m_live.namingServer(), "naming.formats=sink.host_cxt/%n.rtc",
+                               "manager.naming_formats=sink.host_cxt/%n.mgr",
+                               "manager.components.precreate=ConsoleOut?instance_name=GateState"};
+    QVERIFY2(m_live.startManager(RTMANAGER_PATH, LiveTest::freePort(), options, &error), qPrintable(error));
+    const QString sink = componentPath("sink", "GateState");
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", sink}).code == 0, 20000);
+    RtctlResult r = rtctl({"con", gate + ":state", sink + ":in"});
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     r = rtctl({"act", sink, gate});
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));

@@ -33,6 +33,39 @@
 using namespace SystemEditor;
 using Corba::LifeCycleState;
 
+namespace {
+
+/// Stops a manager process (SIGSTOP) with a short call timeout while it exists.
+class StoppedManager
+{
+public:
+    explicit StoppedManager(QProcess *manager)
+    {
+        Corba::Orb::setCallTimeout(500);
+        // processId() is 0 once the manager has ended, and kill(0, SIGSTOP) would stop this
+        // test's own process group: check before signalling.
+        if (manager->state() == QProcess::Running && manager->processId() > 0) {
+            m_pid = pid_t(manager->processId());
+            m_stopped = ::kill(m_pid, SIGSTOP) == 0 && LiveTest::waitUntilStopped(m_pid, 5000);
+        }
+    }
+    ~StoppedManager()
+    {
+        if (m_pid > 0)
+            ::kill(m_pid, SIGCONT);
+        Corba::Orb::setCallTimeout(3000);
+    }
+    StoppedManager(const StoppedManager &) = delete;
+    StoppedManager &operator=(const StoppedManager &) = delete;
+    bool isStopped() const { return m_stopped; }
+
+private:
+    pid_t m_pid = 0;
+    bool m_stopped = false;
+};
+
+} // namespace
+
 // The online diagram against components running in a real rtmanager.
 class TestOnlineDiagram : public QObject
 {
@@ -316,23 +349,8 @@ void TestOnlineDiagram::stoppedManagerTurnsBlackWithoutStallingTheGui()
     waitForPoll(diagram);
     QCOMPARE(diagram.bodyColor("ConsoleIn0"), OnlineIcons::stateColor(LifeCycleState::Inactive));
 
-    Corba::Orb::setCallTimeout(500);
-    // processId() is 0 once the manager has ended, and kill(0, SIGSTOP) would stop this test's
-    // own process group: check before signalling.
-    QCOMPARE(m_manager->state(), QProcess::Running);
-    const pid_t pid = pid_t(m_manager->processId());
-    QVERIFY(pid > 0);
-    QCOMPARE(::kill(pid, SIGSTOP), 0);
-    struct Resume
-    {
-        pid_t pid;
-        ~Resume()
-        {
-            ::kill(pid, SIGCONT);
-            Corba::Orb::setCallTimeout(3000);
-        }
-    } resume {pid};
-    QVERIFY(LiveTest::waitUntilStopped(pid, 5000));
+    const StoppedManager stopped(m_manager);
+    QVERIFY(stopped.isStopped());
     QElapsedTimer clock;
     clock.start();
     qint64 last = 0;
@@ -398,22 +416,9 @@ void TestOnlineDiagram::sessionEndsWithinACallTimeoutWhileCallsHang()
     // Quitting while a worker runs calls against a hung manager (a restore makes one call after
     // another): the session ends within about one call timeout, without destroying a running
     // thread (which aborts the program); the worker finishes on its own later.
-    Corba::Orb::setCallTimeout(500);
     const Corba::ComponentProxy proxy = component("ConsoleIn0");
-    QCOMPARE(m_manager->state(), QProcess::Running);
-    const pid_t pid = pid_t(m_manager->processId());
-    QVERIFY(pid > 0);
-    QCOMPARE(::kill(pid, SIGSTOP), 0);
-    struct Resume
-    {
-        pid_t pid;
-        ~Resume()
-        {
-            ::kill(pid, SIGCONT);
-            Corba::Orb::setCallTimeout(3000);
-        }
-    } resume {pid};
-    QVERIFY(LiveTest::waitUntilStopped(pid, 5000));
+    const StoppedManager stopped(m_manager);
+    QVERIFY(stopped.isStopped());
 
     auto done = std::make_shared<std::atomic_int>(0);
     auto *session = new OnlineSession;

@@ -217,18 +217,12 @@ void TestSdkFixtures::generatedStateMachineFollowsEvents()
     // EventPorts: the generated static FSM with the user's condition, driven by built-in sources
     // through connectors that name the event (fsm_event_name); the sink sees each state change.
     const QString dir = m_work.filePath("Turnstile");
-    const QStringList generate{"gen", RTSTUDIO_TEST_DATA_DIR "/sdk/Turnstile.xml", "--lang", "cpp", "-o", dir};
-    RtctlResult r = runRtctl(generate);
-    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     QString log;
-    for (const SdkTest::UserEdit &edit : Turnstile::userEdits)
-        QVERIFY2(SdkTest::applyEdit(dir, edit, &log), qPrintable(log));
-    r = runRtctl(generate + QStringList{"--merge"});
-    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(Turnstile::generate(dir, &log), qPrintable(log));
     QVERIFY2(SdkTest::buildProject(dir, RTSTUDIO_BUILD_DIR, &log), qPrintable(log));
 
     const QString manager = host() + "/manager.mgr";
-    r = rtctl({"mgr", manager, "load", dir + "/build/src/Turnstile.so", "create", "Turnstile?instance_name=Gate",
+    RtctlResult r = rtctl({"mgr", manager, "load", dir + "/build/src/Turnstile.so", "create", "Turnstile?instance_name=Gate",
                "create", "ConsoleIn?instance_name=Coins&exec_cxt.periodic.rate=20", "create",
                "ConsoleIn?instance_name=Pushes&exec_cxt.periodic.rate=4", "create",
                "ConsoleOut?instance_name=GateState"});

@@ -6,6 +6,7 @@
 // OutPort whenever it changes (0 Locked, 1 Unlocked, 2 Alarm). Shared by the tests that build it
 // against the component SDK and against OpenRTM-aist.
 
+#include "rtctlrunner.h"
 #include "sdkproject.h"
 
 namespace Turnstile {
@@ -30,5 +31,22 @@ inline const SdkTest::UserEdit userEdits[] = {
      "    }\n"
      "  return RTC::RTC_OK;"},
 };
+
+/// Generates the fixture into @p dir with `rtctl gen`, writes the user's code and regenerates
+/// around it (the <rtc-template> merge); false with the reason in @p log.
+inline bool generate(const QString &dir, QString *log)
+{
+    const QStringList arguments{"gen", RTSTUDIO_TEST_DATA_DIR "/sdk/Turnstile.xml", "--lang", "cpp", "-o", dir};
+    RtctlResult r = runRtctl(arguments);
+    for (const SdkTest::UserEdit &edit : userEdits) {
+        if (r.code == 0 && !SdkTest::applyEdit(dir, edit, log))
+            return false;
+    }
+    if (r.code == 0)
+        r = runRtctl(arguments + QStringList{"--merge"});
+    if (r.code != 0)
+        *log = r.out + r.err;
+    return r.code == 0;
+}
 
 } // namespace Turnstile

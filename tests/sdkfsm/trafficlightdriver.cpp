@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "trafficlightdriver.h"
 
+#include "componentstatus.h"
 #include "rtctlrunner.h"
 
 #include <RTC.hh>
@@ -99,19 +100,8 @@ bool TrafficLightDriver::press(const QString &button, const std::function<bool(l
 
 QString TrafficLightDriver::status(const QString &path, const char *name) const
 {
-    const QString location = QStringLiteral("corbaname::%1#%2").arg(m_namingServer, path.section('/', 2));
-    try {
-        CORBA::Object_var object = m_orb->string_to_object(location.toUtf8().constData());
-        RTC::RTObject_var rtc = RTC::RTObject::_narrow(object);
-        SDOPackage::NVList_var list = rtc->get_status_list();
-        for (CORBA::ULong i = 0; i < list->length(); ++i) {
-            const char *text = nullptr;
-            if (QByteArray(list[i].name.in()) == name && (list[i].value >>= text))
-                return QString::fromUtf8(text);
-        }
-    } catch (const CORBA::Exception &) {
-    }
-    return {};
+    return LiveTest::componentStatus(
+        m_orb, QStringLiteral("corbaname::%1#%2").arg(m_namingServer, path.section('/', 2)), name);
 }
 
 } // namespace SdkFsmTest
