@@ -23,9 +23,11 @@ private slots:
     void initTestCase();
     void generatedProjectRuns_data();
     void generatedProjectRuns();
+    // Before examplesConnectToBuiltins, which replaces the built-in ConsoleIn and ConsoleOut
+    // types this test drives and watches with generated ones.
+    void generatedStateMachineFollowsEvents();
     void examplesConnectToBuiltins();
     void everyDataTypeTheBuilderOffers();
-    void generatedStateMachineFollowsEvents();
 
 private:
     RtctlResult rtctl(const QStringList &arguments);
