@@ -746,9 +746,7 @@ void TestCodegen::writerLeavesNothingOnFailure()
 
 void TestCodegen::writerReportsFullOrReadOnlyDisk_data()
 {
-    QTest::addColumn<bool>("readOnly");
-    QTest::newRow("full disk") << false;
-    QTest::newRow("read-only file system") << true;
+    TestDisk::addSpoiledDiskRows();
 }
 
 void TestCodegen::writerReportsFullOrReadOnlyDisk()
@@ -758,14 +756,10 @@ void TestCodegen::writerReportsFullOrReadOnlyDisk()
     QFETCH(bool, readOnly);
     QTemporaryDir dir;
     TestDisk::TmpfsMount disk;
-    QString why;
-    if (!disk.mount(dir.path(), 256, &why))
-        QSKIP(qPrintable("skipped: cannot mount a small file system here (" + why + ")"));
+    TESTDISK_MOUNT_OR_SKIP(disk, dir.path());
     writeFile(dir.filePath("src/comp.cpp"), "// <rtc-template block=\"b\">\n// </rtc-template>\nuser code\n");
-    if (readOnly)
-        QVERIFY2(disk.makeReadOnly(&why), qPrintable(why));
-    else
-        disk.fill();
+    QString why;
+    QVERIFY2(disk.spoil(readOnly, &why), qPrintable(why));
     ProjectWriter writer(dir.path());
     writer.setDecisionCallback([](const QString &) { return FileDecision::Merge; });
     Diagnostics diagnostics;

@@ -320,9 +320,7 @@ void TestDocument::untitledDocumentNeedsSaveAs()
 
 void TestDocument::failedSaveOnDiskKeepsOldFile_data()
 {
-    QTest::addColumn<bool>("readOnly");
-    QTest::newRow("full disk") << false;
-    QTest::newRow("read-only file system") << true;
+    TestDisk::addSpoiledDiskRows();
 }
 
 void TestDocument::failedSaveOnDiskKeepsOldFile()
@@ -330,18 +328,14 @@ void TestDocument::failedSaveOnDiskKeepsOldFile()
     QFETCH(bool, readOnly);
     QTemporaryDir dir;
     TestDisk::TmpfsMount disk;
-    QString why;
-    if (!disk.mount(dir.path(), 256, &why))
-        QSKIP(qPrintable("skipped: cannot mount a small file system here (" + why + ")"));
+    TESTDISK_MOUNT_OR_SKIP(disk, dir.path());
     const QString path = copyFixture(dir, QStringLiteral("component.xml"));
     const QByteArray before = readAll(path);
     std::unique_ptr<Document> document = load(path);
     QVERIFY(document);
     editName(document.get(), QStringLiteral("Unsaved"));
-    if (readOnly)
-        QVERIFY2(disk.makeReadOnly(&why), qPrintable(why));
-    else
-        disk.fill();
+    QString why;
+    QVERIFY2(disk.spoil(readOnly, &why), qPrintable(why));
 
     Profile::Diagnostics diagnostics;
     QVERIFY(!document->save(&diagnostics));

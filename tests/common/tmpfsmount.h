@@ -3,12 +3,21 @@
 
 // A small tmpfs mounted for the length of a test, to make a full disk or a read-only file system
 // that even root cannot write to. Mounting needs root (CI runs as root); tests skip with the
-// reason elsewhere.
+// reason elsewhere (TESTDISK_MOUNT_OR_SKIP).
 
 #include <QFile>
 #include <QProcess>
+#include <QTest>
 #include <QString>
 #include <QStringList>
+
+/// Mounts @p disk (a TmpfsMount) on @p dir or skips the test function with the reason.
+#define TESTDISK_MOUNT_OR_SKIP(disk, dir)                                                                    \
+    do {                                                                                                     \
+        QString why_;                                                                                        \
+        if (!(disk).mount((dir), 256, &why_))                                                                \
+            QSKIP(qPrintable("skipped: cannot mount a small file system here (" + why_ + ")"));             \
+    } while (false)
 
 namespace TestDisk {
 
@@ -41,6 +50,16 @@ public:
         return run({QStringLiteral("mount"), QStringLiteral("-o"), QStringLiteral("remount,ro"), m_dir}, why);
     }
 
+    /// Fills the file system (@p readOnly false) or makes it read-only; false with the reason in
+    /// @p why.
+    bool spoil(bool readOnly, QString *why)
+    {
+        if (readOnly)
+            return makeReadOnly(why);
+        fill();
+        return true;
+    }
+
     /// Writes a file that takes the space left; what is left is less than a page.
     void fill() const
     {
@@ -70,5 +89,14 @@ private:
 
     QString m_dir;
 };
+
+/// The data rows of a test run once on a full disk and once on a read-only file system (column
+/// `readOnly`, for TmpfsMount::spoil()).
+inline void addSpoiledDiskRows()
+{
+    QTest::addColumn<bool>("readOnly");
+    QTest::newRow("full disk") << false;
+    QTest::newRow("read-only file system") << true;
+}
 
 } // namespace TestDisk
