@@ -9,7 +9,7 @@
 // (this program run with --receiver PORT) reached through corbaloc:iiop:127.0.0.1:PORT/manager.
 // The targets, from OpenRTM-aist 2.1's figures, are printed against the measurements at the end.
 // With --openrtm PREFIX (or OPENRTM_PREFIX), OpenRTM-aist's own Throughput example installed there
-// runs afterwards (one process, bounded in time) and its figures are printed beside placement (a).
+// runs afterwards in both placements (bounded in time) and its figures are printed beside ours.
 #include <rtm/ConnectorListener.h>
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/DataInPort.h>
@@ -43,7 +43,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-const std::vector<CORBA::ULong> sizes = {1, 8, 64, 512, 4096, 32768, 262144, 1048576};
+/// 1 to 1,048,576 elements, doubling: the sizes OpenRTM-aist's example measures, so that both
+/// peaks are taken over the same sizes.
+std::vector<CORBA::ULong> allSizes()
+{
+    std::vector<CORBA::ULong> result;
+    for (CORBA::ULong elements = 1; elements <= 1048576; elements *= 2)
+        result.push_back(elements);
+    return result;
+}
+const std::vector<CORBA::ULong> sizes = allSizes();
 // The first element of a sample says what it is: its index when measured, or one of these.
 constexpr CORBA::Double warmUpMark = -1;
 constexpr CORBA::Double endOfSizeMark = -2;
@@ -681,45 +690,118 @@ const OpenRtmThroughput::Row *openRtmRow(const std::vector<OpenRtmThroughput::Ro
     return nullptr;
 }
 
-/// Runs OpenRTM-aist's own Throughput example from @p prefix (two components in one process, as
-/// placement (a)) and prints its figures beside this benchmark's.
-void compareWithOpenRtm(const std::string &prefix, const std::vector<Row> &inProcess)
+/// The first component of the manager at @p port on loopback, once it has one; nil after
+/// @p patience.
+RTC::RTObject_ptr componentAt(CORBA::ORB_ptr orb, unsigned port, std::chrono::seconds patience)
 {
-    if (prefix.empty())
-        return;
-    std::printf("\nOpenRTM-aist's Throughput example from %s, run now: two components in one "
-                "process,\npush / flush / corba_cdr, 100 samples per size (sizes double from 1); "
-                "its MiB/s is the payload over the\nmean latency, ours over the mean write "
-                "interval.\n",
-                prefix.c_str());
-    std::fflush(stdout);
-    const OpenRtmThroughput::Run run
-        = OpenRtmThroughput::runSameProcess(prefix, sizes.back(), openRtmTimeoutSeconds);
+    const std::string address = "corbaloc:iiop:127.0.0.1:" + std::to_string(port) + "/manager";
+    const auto deadline = Clock::now() + patience;
+    do {
+        try {
+            CORBA::Object_var object = orb->string_to_object(address.c_str());
+            RTM::Manager_var manager = RTM::Manager::_narrow(object);
+            RTC::RTCList_var components = manager->get_components();
+            if (components->length() > 0)
+                return RTC::RTObject::_duplicate(components[0]);
+        } catch (const CORBA::Exception &) {
+            // Not listening yet: the process is still starting.
+        }
+        poll(nullptr, 0, 50);
+    } while (Clock::now() < deadline);
+    return RTC::RTObject::_nil();
+}
+
+/// Joins two of OpenRTM-aist's Throughput examples the way its two-process script does with
+/// rtcon and rtact: sender's out to receiver's in (named inDouble for doubles), then activate.
+std::string connectOpenRtmExamples(CORBA::ORB_ptr orb, const OpenRtmThroughput::Ports &ports)
+{
+    try {
+        RTC::RTObject_var from = componentAt(orb, ports.sender, std::chrono::seconds(30));
+        RTC::RTObject_var to = componentAt(orb, ports.receiver, std::chrono::seconds(30));
+        if (CORBA::is_nil(from) || CORBA::is_nil(to))
+            return "its managers did not show a component within 30 s";
+        RTC::PortService_var out = portNamed(from, "out");
+        RTC::PortService_var in = portNamed(to, "inDouble");
+        if (CORBA::is_nil(in))
+            in = portNamed(to, "in");
+        if (!connectFlush(out, in))
+            return "cannot connect its ports";
+        RTC::ExecutionContextList_var contexts = from->get_owned_contexts();
+        if (contexts->length() == 0
+            || contexts[0]->activate_component(from) != RTC::RTC_OK)
+            return "cannot activate its sender";
+    } catch (const CORBA::Exception &e) {
+        return std::string("a call to it failed: ") + e._name();
+    }
+    return {};
+}
+
+/// Prints OpenRTM-aist's figures of one placement beside ours. Both MiB/s columns are the
+/// payload over the mean one-way latency, as the example computes it; the targets above use ours
+/// over the write interval, which counts the whole round trip of a flush write.
+void printComparison(const char *placement, const std::vector<Row> &ours,
+                     const OpenRtmThroughput::Run &run)
+{
+    std::printf("\n%s\n", placement);
     if (!run.error.empty())
         std::printf("OpenRTM-aist's example: %s\n", run.error.c_str());
     if (run.rows.empty())
         return;
-    std::printf("| elements | SDK mean us | OpenRTM mean us | SDK MiB/s | OpenRTM MiB/s |\n");
-    std::printf("|----------|-------------|-----------------|-----------|---------------|\n");
-    for (std::size_t i = 0; i < sizes.size() && i < inProcess.size(); ++i) {
-        const Row &ours = inProcess[i];
-        const OpenRtmThroughput::Row *theirs = openRtmRow(run.rows, sizes[i]);
-        if (!ours.reported || theirs == nullptr)
+    std::printf("| elements | SDK mean us | OpenRTM mean us | SDK MiB/s | OpenRTM MiB/s | ratio |\n");
+    std::printf("|----------|-------------|-----------------|-----------|---------------|-------|\n");
+    double ourPeak = 0, theirPeak = 0, ourSmall = -1, theirSmall = -1;
+    for (const Row &row : ours) {
+        const OpenRtmThroughput::Row *theirs = openRtmRow(run.rows, row.latency.elements);
+        if (!row.reported || theirs == nullptr || row.latency.mean <= 0)
             continue;
-        std::printf("| %8u | %11.1f | %15.1f | %9.1f | %13.1f |\n", unsigned(sizes[i]),
-                    ours.latency.mean, theirs->meanUs, ours.mibPerSecond, theirs->mibPerSecond);
+        const double bytes = double(row.latency.elements) * sizeof(CORBA::Double) + 8;
+        const double mibPerSecond = bytes / row.latency.mean * 1e6 / mebibyte;
+        std::printf("| %8u | %11.1f | %15.1f | %9.1f | %13.1f | %5.2f |\n",
+                    unsigned(row.latency.elements), row.latency.mean, theirs->meanUs,
+                    mibPerSecond, theirs->mibPerSecond, mibPerSecond / theirs->mibPerSecond);
+        ourPeak = std::max(ourPeak, mibPerSecond / 1024);
+        theirPeak = std::max(theirPeak, theirs->mibPerSecond / 1024);
+        if (row.latency.elements <= 8) {
+            ourSmall = std::max(ourSmall, row.latency.mean);
+            theirSmall = std::max(theirSmall, theirs->meanUs);
+        }
     }
-    double openRtmLatency = -1;
-    double openRtmPeak = 0;
-    for (const OpenRtmThroughput::Row &row : run.rows) {
-        if (row.elements <= 8)
-            openRtmLatency = std::max(openRtmLatency, row.meanUs);
-        openRtmPeak = std::max(openRtmPeak, row.mibPerSecond / 1024.0);
+    std::printf("latency, worse mean of 1-8 elements: SDK %.1f us, OpenRTM-aist %.1f us (%.2fx)\n",
+                ourSmall, theirSmall, theirSmall > 0 ? ourSmall / theirSmall : 0.0);
+    std::printf("peak throughput (best size of each): SDK %.2f GiB/s, OpenRTM-aist %.2f GiB/s "
+                "(%.2fx)\n",
+                ourPeak, theirPeak, theirPeak > 0 ? ourPeak / theirPeak : 0.0);
+}
+
+/// Runs OpenRTM-aist's own Throughput example from @p prefix in both placements, one after the
+/// other, and prints its figures beside this benchmark's.
+void compareWithOpenRtm(const std::string &prefix, CORBA::ORB_ptr orb,
+                        const std::vector<Row> &inProcess, const std::vector<Row> &between)
+{
+    if (prefix.empty()) {
+        std::printf("\nNo OpenRTM-aist prefix given (--openrtm PREFIX or OPENRTM_PREFIX): its "
+                    "Throughput example was not run beside.\n");
+        return;
     }
-    std::printf("latency, worse mean of 1-8 elements: SDK %.1f us, OpenRTM-aist %.1f us\n",
-                smallLatency(inProcess), openRtmLatency);
-    std::printf("peak throughput: SDK %.2f GiB/s, OpenRTM-aist %.2f GiB/s (all of its sizes)\n",
-                peakGiBPerSecond(inProcess), openRtmPeak);
+    std::printf("\nOpenRTM-aist's Throughput example from %s, run now: push / flush / corba_cdr, "
+                "100 samples\nper size (sizes double from 1).\n",
+                prefix.c_str());
+    std::fflush(stdout);
+    printComparison("(a) two components in one process",
+                    inProcess,
+                    OpenRtmThroughput::runSameProcess(prefix, sizes.back(), openRtmTimeoutSeconds));
+    std::fflush(stdout);
+    OpenRtmThroughput::Ports ports {freePort(), freePort(), freePort()};
+    while (ports.receiver == ports.sender)
+        ports.receiver = freePort();
+    while (ports.noMaster == ports.sender || ports.noMaster == ports.receiver)
+        ports.noMaster = freePort();
+    printComparison("(b) two processes over loopback TCP", between,
+                    OpenRtmThroughput::runTwoProcesses(
+                        prefix, sizes.back(), openRtmTimeoutSeconds, ports,
+                        [orb](const OpenRtmThroughput::Ports &p) {
+                            return connectOpenRtmExamples(orb, p);
+                        }));
 }
 
 } // namespace
@@ -752,7 +834,7 @@ int main(int argc, char **argv)
     const std::vector<Row> inProcess = measureInProcess(manager, sender);
     const std::vector<Row> between = measureBetweenProcesses(manager, sender);
     printTargets(inProcess, between);
-    compareWithOpenRtm(openRtm, inProcess);
+    compareWithOpenRtm(openRtm, manager->getORB(), inProcess, between);
     std::fflush(stdout);
     // As in the receiver: the measurement is printed and the ORB holds nothing worth an orderly
     // end.

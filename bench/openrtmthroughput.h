@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,30 @@ std::string programIn(const std::string &prefix);
  * without name service. Kills it after @p timeoutSeconds.
  */
 Run runSameProcess(const std::string &prefix, unsigned long maxElements, int timeoutSeconds);
+
+/// Loopback ports of one two-process run: each example's manager listens on its own, and
+/// `noMaster` is one where nothing listens (each looks for a master manager there and stays alone).
+struct Ports
+{
+    unsigned sender = 0;
+    unsigned receiver = 0;
+    unsigned noMaster = 0;
+};
+
+/**
+ * Connects the sender's `out` to the receiver's `in` (push, flush, corba_cdr) and activates the
+ * sender; each example's manager is at `corbaloc:iiop:127.0.0.1:<port>/manager`. Returns what went
+ * wrong, or an empty string.
+ */
+using Connect = std::function<std::string(const Ports &)>;
+
+/**
+ * Runs the example in two processes (sender and receiver, one Throughput0 each, the same sizes
+ * and samples as runSameProcess) and reads the receiver's results. @p connect joins them once
+ * both have started. Both are killed after @p timeoutSeconds.
+ */
+Run runTwoProcesses(const std::string &prefix, unsigned long maxElements, int timeoutSeconds,
+                    const Ports &ports, const Connect &connect);
 
 /// The rows of a result file (`size min max mean stddev Mbps`, seconds; `#` comments).
 std::vector<Row> parseResults(const std::string &text);

@@ -63,8 +63,8 @@ CdrBytes marshal(const T &value, bool littleEndian)
 class CdrInputStream : public cdrMemoryStream
 {
 public:
-    explicit CdrInputStream(const CdrBytes &data)
-        : cdrMemoryStream(const_cast<unsigned char *>(data.data()), data.size())
+    explicit CdrInputStream(const CdrView &data)
+        : cdrMemoryStream(const_cast<unsigned char *>(data.data), data.size)
     {
     }
     CORBA::Boolean checkInputOverrun(CORBA::ULong itemSize, CORBA::ULong count,
@@ -79,7 +79,7 @@ public:
 
 /// Unmarshals @p data into @p value; false when the bytes do not hold a T.
 template <typename T>
-bool unmarshal(const CdrBytes &data, bool littleEndian, T *value)
+bool unmarshal(const CdrView &data, bool littleEndian, T *value)
 {
     try {
         CdrInputStream stream(data);
@@ -89,6 +89,12 @@ bool unmarshal(const CdrBytes &data, bool littleEndian, T *value)
     } catch (const CORBA::Exception &) {
         return false;
     }
+}
+
+template <typename T>
+bool unmarshal(const CdrBytes &data, bool littleEndian, T *value)
+{
+    return unmarshal(CdrView::of(data), littleEndian, value);
 }
 
 /// Repository id of an IDL type, taken from its TypeCode (declare its Any operators before this header for user types).

@@ -54,7 +54,7 @@ void InPortBase::setReceiveListener(SampleListener listener)
     m_listener = std::move(listener);
 }
 
-void InPortBase::notifyReceived(const CdrBytes &data, bool littleEndian, const std::string &connectorId)
+void InPortBase::notifyReceived(const CdrView &data, bool littleEndian, const std::string &connectorId)
 {
     SampleListener listener;
     {
@@ -81,7 +81,7 @@ RTC::ReturnCode_t InPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
         return RTC::RTC_OK;
     auto connector = std::make_shared<InPortPushConnector>(
         std::string(profile.connector_id), p, m_poa,
-        [this, id = std::string(profile.connector_id)](const CdrBytes &data, bool littleEndian) {
+        [this, id = std::string(profile.connector_id)](const CdrView &data, bool littleEndian) {
             notifyReceived(data, littleEndian, id);
         });
     OpenRTM::InPortCdr_var ref = connector->reference();
@@ -112,7 +112,7 @@ RTC::ReturnCode_t InPortBase::subscribeInterfaces(const RTC::ConnectorProfile &p
         OpenRTM::OutPortCdr_var peer = OpenRTM::OutPortCdr::_unchecked_narrow(object);
         auto connector = std::make_shared<InPortPullConnector>(
             std::string(profile.connector_id), p, peer,
-            [this, id = std::string(profile.connector_id)](const CdrBytes &data, bool littleEndian) {
+            [this, id = std::string(profile.connector_id)](const CdrView &data, bool littleEndian) {
                 notifyReceived(data, littleEndian, id);
             });
         std::lock_guard lock(m_mutex);

@@ -11,7 +11,7 @@
 namespace Runtime {
 
 /// Called for every sample that arrives at an InPort, with the id of the connector it came through.
-using SampleListener = std::function<void(const CdrBytes &, bool littleEndian, const std::string &connectorId)>;
+using SampleListener = std::function<void(const CdrView &, bool littleEndian, const std::string &connectorId)>;
 
 /// Untyped data InPort: push connections fill buffers, pull connections are asked on read.
 class InPortBase : public DataPortBase
@@ -35,7 +35,7 @@ protected:
 
 private:
     std::vector<std::shared_ptr<InPortConnector>> connectors();
-    void notifyReceived(const CdrBytes &data, bool littleEndian, const std::string &connectorId);
+    void notifyReceived(const CdrView &data, bool littleEndian, const std::string &connectorId);
 
     PortableServer::POA_var m_poa;
     std::mutex m_mutex;
@@ -57,7 +57,7 @@ public:
     {
         SharedCdr data;
         bool littleEndian = true;
-        return readMarshalled(&data, &littleEndian) && unmarshal(*data, littleEndian, value);
+        return readMarshalled(&data, &littleEndian) && unmarshal(data->view(), littleEndian, value);
     }
 };
 

@@ -4,6 +4,8 @@
 #include "corbautil.h"
 #include "outportconnector.h"
 
+#include <utility>
+
 namespace Runtime {
 
 InPortConnector::InPortConnector(const std::string &id, const Properties &p)
@@ -20,12 +22,54 @@ InPortCdrServant::InPortCdrServant(std::shared_ptr<RingBuffer> buffer, ReceiveLi
 {
 }
 
+namespace {
+
+void releaseOctets(unsigned char *bytes)
+{
+    OpenRTM::CdrData::freebuf(bytes);
+}
+
+/**
+ * Received bytes as a sample to keep. When @p owned, @p data is a temporary that nobody reads
+ * after us (the skeleton's argument of a remote put, or the result of our own get): its buffer is
+ * taken over instead of copied, a copy that cost as much as receiving a large sample. Otherwise
+ * (a put from this process passes the caller's own sequence) the bytes are copied.
+ */
+SharedCdr adopt(const OpenRTM::CdrData &data, bool owned)
+{
+    auto &argument = const_cast<OpenRTM::CdrData &>(data);
+    const size_t size = argument.length();
+    if (owned && argument.release() && size > 0) {
+        unsigned char *bytes = argument.get_buffer(true);
+        return std::make_shared<const CdrSample>(bytes, size, releaseOctets);
+    }
+    return std::make_shared<const CdrSample>(CdrBytes(data.get_buffer(), data.get_buffer() + size));
+}
+
+/// Set while this thread runs a remote call's upcall, until its put() has looked.
+thread_local bool t_remoteUpcall = false;
+
+} // namespace
+
+CORBA::Boolean InPortCdrServant::_dispatch(omniCallHandle &handle)
+{
+    // Reset however the call ends (a request that does not unmarshal throws before put()).
+    struct RemoteUpcall
+    {
+        RemoteUpcall() { t_remoteUpcall = true; }
+        ~RemoteUpcall() { t_remoteUpcall = false; }
+    } upcall;
+    return POA_OpenRTM::InPortCdr::_dispatch(handle);
+}
+
 OpenRTM::PortStatus InPortCdrServant::put(const OpenRTM::CdrData &data)
 {
-    CdrBytes bytes(data.get_buffer(), data.get_buffer() + data.length());
+    // Cleared at once, so that a local put made from a listener below copies its caller's bytes.
+    const bool remote = std::exchange(t_remoteUpcall, false);
+    SharedCdr sample = adopt(data, remote);
     if (m_listener)
-        m_listener(bytes, m_littleEndian);
-    switch (m_buffer->write(std::move(bytes))) {
+        m_listener(sample->view(), m_littleEndian);
+    switch (m_buffer->write(std::move(sample))) {
     case RingBuffer::Status::Ok:
         return OpenRTM::PORT_OK;
     case RingBuffer::Status::Full:
@@ -78,18 +122,18 @@ InPortPullConnector::InPortPullConnector(const std::string &id, const Properties
 
 bool InPortPullConnector::read(SharedCdr *data)
 {
-    CdrBytes bytes;
+    SharedCdr sample;
     try {
         OpenRTM::CdrData_var cdr;
         if (m_peer->get(cdr.out()) != OpenRTM::PORT_OK)
             return false;
-        bytes.assign(cdr->get_buffer(), cdr->get_buffer() + cdr->length());
+        sample = adopt(cdr.in(), true);
     } catch (const CORBA::Exception &) {
         return false;
     }
     if (m_listener)
-        m_listener(bytes, littleEndian());
-    *data = std::make_shared<const CdrBytes>(std::move(bytes));
+        m_listener(sample->view(), littleEndian());
+    *data = std::move(sample);
     return true;
 }
 

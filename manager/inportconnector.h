@@ -14,7 +14,7 @@
 namespace Runtime {
 
 /// Called for every sample that arrives at an InPort (bytes and their byte order).
-using ReceiveListener = std::function<void(const CdrBytes &, bool littleEndian)>;
+using ReceiveListener = std::function<void(const CdrView &, bool littleEndian)>;
 
 /// One connection of an InPort.
 class InPortConnector
@@ -40,6 +40,9 @@ class InPortCdrServant : public virtual POA_OpenRTM::InPortCdr
 public:
     InPortCdrServant(std::shared_ptr<RingBuffer> buffer, ReceiveListener listener, bool littleEndian);
     OpenRTM::PortStatus put(const OpenRTM::CdrData &data) override;
+    /// Remote calls come through here, local ones do not: put() may take over only the bytes
+    /// of a remote call, which the skeleton unmarshalled into a temporary of its own.
+    CORBA::Boolean _dispatch(omniCallHandle &handle) override;
 
 private:
     std::shared_ptr<RingBuffer> m_buffer;

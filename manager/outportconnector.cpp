@@ -131,21 +131,21 @@ void OutPortPushConnector::pushBuffered()
     SharedCdr data;
     if (m_pushPolicy == "all") {
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
-            send(CdrView::of(*data));
+            send(data->view());
     } else if (m_pushPolicy == "fifo") {
         if (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
-            send(CdrView::of(*data));
+            send(data->view());
     } else if (m_pushPolicy == "skip") {
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok) {
             if (m_skipped++ % (m_skip + 1) == 0)
-                send(CdrView::of(*data));
+                send(data->view());
         }
     } else { // "new": only the newest of what piled up
         bool any = false;
         while (m_buffer.readable() > 0 && m_buffer.read(&data) == RingBuffer::Status::Ok)
             any = true;
         if (any)
-            send(CdrView::of(*data));
+            send(data->view());
     }
 }
 
@@ -171,7 +171,7 @@ OpenRTM::PortStatus OutPortCdrServant::get(OpenRTM::CdrData_out data)
     data = new OpenRTM::CdrData(length);
     data->length(length);
     if (length > 0)
-        std::copy(bytes->begin(), bytes->end(), data->get_buffer());
+        std::copy(bytes->data(), bytes->data() + length, data->get_buffer());
     switch (status) {
     case RingBuffer::Status::Ok:
         return OpenRTM::PORT_OK;

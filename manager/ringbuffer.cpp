@@ -47,6 +47,11 @@ RingBuffer::RingBuffer(const Properties &p)
 
 RingBuffer::Status RingBuffer::write(CdrBytes data)
 {
+    return write(std::make_shared<const CdrSample>(std::move(data)));
+}
+
+RingBuffer::Status RingBuffer::write(SharedCdr data)
+{
     std::unique_lock lock(m_mutex);
     if (m_samples.size() >= m_length) {
         switch (m_fullPolicy) {
@@ -63,7 +68,7 @@ RingBuffer::Status RingBuffer::write(CdrBytes data)
             break;
         }
     }
-    m_samples.push_back(std::make_shared<const CdrBytes>(std::move(data)));
+    m_samples.push_back(std::move(data));
     m_changed.notify_all();
     return Status::Ok;
 }
@@ -99,7 +104,7 @@ RingBuffer::Status RingBuffer::read(CdrBytes *data)
     SharedCdr sample;
     const Status status = read(&sample);
     if (status == Status::Ok)
-        *data = *sample;
+        *data = sample->view().bytes();
     return status;
 }
 

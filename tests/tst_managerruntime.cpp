@@ -4,6 +4,7 @@
 // byte orders) and service ports, driven through their CORBA interfaces as tools would.
 #include "builtins.h"
 #include "createrequest.h"
+#include "inportconnector.h"
 #include "portbase.h"
 #include "rtobject.h"
 #include "ringbuffer.h"
@@ -87,6 +88,7 @@ private slots:
     void createRequestErrors();
     void ringBufferPolicies();
     void cdrLayout();
+    void putFromThisProcessKeepsCallersBytes();
 
     void stateMachine();
     void errorAndReset();
@@ -347,6 +349,29 @@ void TestManagerRuntime::cdrLayout()
     QCOMPARE(back.data, CORBA::Long(0x01020304));
     QVERIFY(!unmarshal(CdrBytes{1, 2}, true, &back));
     QCOMPARE(QString::fromStdString(repositoryId<RTC::TimedLong>()), QString("IDL:RTC/TimedLong:1.0"));
+}
+
+void TestManagerRuntime::putFromThisProcessKeepsCallersBytes()
+{
+    // A remote put's bytes are taken over from the skeleton; a put within the process passes the
+    // caller's own sequence, which must come back untouched while the port keeps a copy.
+    CdrView heard;
+    InPortPushConnector connector("c0", Properties(), m_poa,
+                                  [&heard](const CdrView &data, bool) { heard = data; });
+    OpenRTM::InPortCdr_var port = connector.reference();
+    OpenRTM::CdrData data(4);
+    data.length(4);
+    for (CORBA::ULong i = 0; i < 4; ++i)
+        data[i] = CORBA::Octet(i + 1);
+    QVERIFY(data.release());
+    QCOMPARE(port->put(data), OpenRTM::PORT_OK);
+    QCOMPARE(data.length(), CORBA::ULong(4));
+    QCOMPARE(int(data[3]), 4);
+    QCOMPARE(heard.size, size_t(4));
+    QVERIFY(heard.data != data.get_buffer());
+    SharedCdr sample;
+    QVERIFY(connector.read(&sample));
+    QCOMPARE(sample->view().bytes(), CdrBytes({1, 2, 3, 4}));
 }
 
 void TestManagerRuntime::stateMachine()

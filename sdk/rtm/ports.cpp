@@ -147,11 +147,11 @@ InPortBase::InPortBase(const char *name, const char *data_type)
     : Runtime::InPortBase(name, data_type, PortableServer::POA_var(Sdk::rootPoa()).in())
     , DataPortListeners(data_type)
 {
-    setReceiveListener([this](const Runtime::CdrBytes &data, bool littleEndian, const std::string &connectorId) {
+    setReceiveListener([this](const Runtime::CdrView &data, bool littleEndian, const std::string &connectorId) {
         // A push sample goes into the connection's buffer right after this call.
-        const auto length = static_cast<unsigned long>(data.size());
-        m_listeners.notifyData(ConnectorDataListenerType::ON_RECEIVED, connectorId, data.data(), length, littleEndian);
-        m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_WRITE, connectorId, data.data(), length,
+        const auto length = static_cast<unsigned long>(data.size);
+        m_listeners.notifyData(ConnectorDataListenerType::ON_RECEIVED, connectorId, data.data, length, littleEndian);
+        m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_WRITE, connectorId, data.data, length,
                                littleEndian);
     });
 }

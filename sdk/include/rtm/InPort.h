@@ -53,7 +53,7 @@ public:
             return true;
         ::Runtime::SharedCdr bytes;
         bool littleEndian = true;
-        if (!readBytes(&bytes, &littleEndian) || !::Runtime::unmarshal(*bytes, littleEndian, &m_value))
+        if (!readBytes(&bytes, &littleEndian) || !::Runtime::unmarshal(bytes->view(), littleEndian, &m_value))
             return false;
         if (m_listeners.hasListeners(ConnectorDataListenerType::ON_BUFFER_READ))
             m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_READ, std::string(), bytes->data(),
