@@ -5,6 +5,8 @@
 
 #include <omniORB4/Naming.hh>
 
+#include <cstdlib>
+
 #include <unistd.h>
 
 namespace Runtime {
@@ -101,31 +103,57 @@ void NamingRegistrar::unbind(const std::string &path)
     }
 }
 
+namespace {
+
+/// The value of a one-letter format code, or the code itself when it is not one.
+std::string formatCode(char code, const Properties &values)
+{
+    switch (code) {
+    case 'h': return values.value("host", hostName());
+    case 'n': return values.value("instance_name");
+    case 'N': {
+        const std::string name = values.value("instance_name");
+        const size_t prefix = values.value("implementation_id").size();
+        return name.size() >= prefix ? name.substr(prefix) : std::string();
+    }
+    case 'i': return values.value("implementation_id");
+    case 't':
+    case 'm': return values.value("type_name");
+    case 'c': return values.value("category");
+    case 'v': return values.value("version");
+    case 'V': return values.value("vendor");
+    case 'p': return std::to_string(getpid());
+    case 'M': return values.value("manager_name");
+    case '%': return "%";
+    default: return std::string("%") + code;
+    }
+}
+
+std::string expandOne(const std::string &format, const Properties &values)
+{
+    std::string result;
+    for (size_t i = 0; i < format.size(); ++i) {
+        const size_t close = format.compare(i, 2, "${") == 0 ? format.find('}', i + 2) : std::string::npos;
+        if (close != std::string::npos) {
+            const char *value = std::getenv(format.substr(i + 2, close - i - 2).c_str());
+            result += value ? value : "";
+            i = close;
+        } else if (format[i] == '%' && i + 1 < format.size()) {
+            result += formatCode(format[++i], values);
+        } else {
+            result += format[i];
+        }
+    }
+    return result;
+}
+
+} // namespace
+
 std::vector<std::string> NamingRegistrar::expand(const std::string &formats, const Properties &values)
 {
     std::vector<std::string> paths;
-    for (const std::string &format : split(formats, ',')) {
-        std::string path;
-        for (size_t i = 0; i < format.size(); ++i) {
-            if (format[i] != '%' || i + 1 == format.size()) {
-                path += format[i];
-                continue;
-            }
-            const char code = format[++i];
-            switch (code) {
-            case 'h': path += values.value("host", hostName()); break;
-            case 'n': path += values.value("instance_name"); break;
-            case 'p': path += std::to_string(getpid()); break;
-            case 'M': path += values.value("manager_name"); break;
-            case 'c': path += values.value("category"); break;
-            case 't': path += values.value("type_name"); break;
-            case 'v': path += values.value("vendor"); break;
-            case '%': path += '%'; break;
-            default: path += '%'; path += code; break;
-            }
-        }
-        paths.push_back(path);
-    }
+    for (const std::string &format : split(formats, ','))
+        paths.push_back(expandOne(format, values));
     return paths;
 }
 

@@ -27,8 +27,11 @@ public:
     void unbind(const std::string &path);
 
     /**
-     * Expands an OpenRTM naming format: %h host, %n instance name, %p pid, %M manager name,
-     * %c category, %t type name, %v vendor, %% a percent sign. Several formats are comma-separated.
+     * Expands an OpenRTM format (naming formats, `logger.file_name`): %h host, %n instance name,
+     * %N its number (the instance name less the implementation id), %i implementation id,
+     * %t and %m type name, %c category, %v version, %V vendor, %p pid, %M manager name, %% a
+     * percent sign, `${NAME}` the environment variable NAME. Several formats are comma-separated;
+     * spaces around each are dropped.
      */
     static std::vector<std::string> expand(const std::string &formats, const Properties &values);
 

@@ -2,7 +2,7 @@
 # The component SDK's C++ API in one process (tst_sdkrtm), and a generated component built
 # against it, loaded into rtmanager and run standalone (tst_sdkgenerated).
 rtstudio_add_test(tst_sdkrtm SOURCES tst_sdkrtm.cpp LIBS rtsdk)
-target_include_directories(tst_sdkrtm PRIVATE ${PROJECT_SOURCE_DIR}/manager)
+target_include_directories(tst_sdkrtm PRIVATE ${PROJECT_SOURCE_DIR}/manager ${PROJECT_SOURCE_DIR}/sdk/rtm)
 set_tests_properties(tst_sdkrtm PROPERTIES LABELS sdk)
 
 rtstudio_add_test(tst_sdkgenerated SOURCES tst_sdkgenerated.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)

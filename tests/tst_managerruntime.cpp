@@ -5,6 +5,7 @@
 #include "builtins.h"
 #include "createrequest.h"
 #include "inportconnector.h"
+#include "namingregistrar.h"
 #include "portbase.h"
 #include "rtobject.h"
 #include "ringbuffer.h"
@@ -82,6 +83,8 @@ private slots:
     void cleanupTestCase();
 
     void confParsing();
+    void formatCodes_data();
+    void formatCodes();
     void createRequest_data();
     void createRequest();
     void createRequestErrors_data();
@@ -234,6 +237,39 @@ void TestManagerRuntime::confParsing()
     QCOMPARE(numbers.number("c", 5000, &problem), 5000.0);
     QCOMPARE(problem, std::string("c: 'abc' is not a number; 5000 is used"));
     QCOMPARE(numbers.number("d", 3, &problem), 3.0);
+}
+
+void TestManagerRuntime::formatCodes_data()
+{
+    QTest::addColumn<QString>("formats");
+    QTest::addColumn<QStringList>("expanded");
+    const QString pid = QString::number(QCoreApplication::applicationPid());
+    QTest::newRow("naming") << "%h.host_cxt/%n.rtc" << QStringList{"box.host_cxt/Motor3.rtc"};
+    QTest::newRow("profile codes") << "%t %m %i %N %c %v %V" << QStringList{"MotorType MotorType Motor 3 cat 2.1 AIST"};
+    QTest::newRow("several, trimmed") << "a/%n.rtc , %M/%n" << QStringList{"a/Motor3.rtc", "mgr/Motor3"};
+    QTest::newRow("pid and percent") << "rtc%p.log 100%%" << QStringList{"rtc" + pid + ".log 100%"};
+    QTest::newRow("environment") << "${RTSTUDIO_FORMAT_TEST}/x" << QStringList{"/var/envtest/x"};
+    QTest::newRow("unset variable, unknown code") << "${RTSTUDIO_NOT_SET_AT_ALL}%q" << QStringList{"%q"};
+}
+
+void TestManagerRuntime::formatCodes()
+{
+    QFETCH(QString, formats);
+    QFETCH(QStringList, expanded);
+    qputenv("RTSTUDIO_FORMAT_TEST", "/var/envtest");
+    Properties values;
+    values.set("host", "box");
+    values.set("instance_name", "Motor3");
+    values.set("implementation_id", "Motor");
+    values.set("type_name", "MotorType");
+    values.set("category", "cat");
+    values.set("version", "2.1");
+    values.set("vendor", "AIST");
+    values.set("manager_name", "mgr");
+    QStringList result;
+    for (const std::string &path : NamingRegistrar::expand(formats.toStdString(), values))
+        result << QString::fromStdString(path);
+    QCOMPARE(result, expanded);
 }
 
 void TestManagerRuntime::createRequest_data()

@@ -13,6 +13,10 @@
 
 #include <managerconfig.h>
 
+#include "loggersink.h"
+
+#include <rtm/SystemLogger.h>
+
 #include <QtTest>
 
 #include <atomic>
@@ -363,6 +367,7 @@ private slots:
     void configurationReachesBoundVariables();
     void serviceCallReturns();
     void managerActionListeners();
+    void loggerWritesWhereConfigured();
 
 private:
     RTC::Manager *m_manager = nullptr;
@@ -572,6 +577,35 @@ void TestSdkRtm::managerActionListeners()
     const std::vector<std::string> factories = m_manager->getModulesFactories();
     QVERIFY(std::find(factories.begin(), factories.end(), "ModuleCounter") == factories.end());
     QVERIFY(m_manager->createComponent("ModuleCounter") == nullptr);
+}
+
+void TestSdkRtm::loggerWritesWhereConfigured()
+{
+    // OpenRTM's logger.file_name: several destinations, format codes and environment variables.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    qputenv("RTSTUDIO_LOG_TEST_DIR", dir.path().toUtf8());
+    Runtime::Properties config;
+    config.set("logger.log_level", "DEBUG");
+    config.set("logger.file_name", "${RTSTUDIO_LOG_TEST_DIR}/rtc%p.log, " + dir.path().toStdString() + "/%M.log");
+    config.set("manager.name", "logmanager");
+    RTC::Sdk::LoggerSink::instance().configure(config);
+    RTC::Logger rtclog("LogTest");
+    RTC_DEBUG(("debug %d", 1));
+    RTC_TRACE(("trace %d", 2));
+    RTC_INFO_STR("info line");
+    for (const QString &name : {QString("rtc%1.log").arg(QCoreApplication::applicationPid()), QString("logmanager.log")}) {
+        QFile file(dir.filePath(name));
+        QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(name));
+        const QString text = QString::fromUtf8(file.readAll());
+        QVERIFY2(text.contains("DEBUG: LogTest: debug 1"), qPrintable(text));
+        QVERIFY2(text.contains("INFO: LogTest: info line"), qPrintable(text));
+        QVERIFY2(!text.contains("trace"), qPrintable(text));
+    }
+    // Back to what initTestCase chose, so that nothing else writes into the folder.
+    config = Runtime::Properties();
+    config.set("logger.log_level", "ERROR");
+    RTC::Sdk::LoggerSink::instance().configure(config);
 }
 
 QTEST_GUILESS_MAIN(TestSdkRtm)

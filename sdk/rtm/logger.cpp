@@ -3,11 +3,14 @@
 
 #include "loggersink.h"
 
+#include <namingregistrar.h>
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <ctime>
 #include <iomanip>
+#include <sstream>
 
 namespace RTC {
 
@@ -93,16 +96,32 @@ LoggerSink &LoggerSink::instance()
 
 void LoggerSink::configure(const Runtime::Properties &config)
 {
+    Runtime::Properties values = config;
+    values.set("manager_name", config.value("manager.name", "manager"));
     std::lock_guard<std::mutex> lock(m_mutex);
     m_enabled = config.isYes("logger.enable", true);
     m_level = Logger::strToLevel(config.value("logger.log_level", "INFO"));
-    std::string file = config.value("logger.file_name");
-    const size_t pid = file.find("%p");
-    if (pid != std::string::npos)
-        file.replace(pid, 2, std::to_string(getpid()));
-    m_file.close();
-    if (!file.empty() && file != "STDERR" && file != "stderr" && file != "STDOUT" && file != "stdout")
-        m_file.open(file, std::ios::app);
+    m_files.clear();
+    m_stdout = false;
+    m_stderr = false;
+    for (const std::string &name : Runtime::NamingRegistrar::expand(config.value("logger.file_name"), values)) {
+        std::string lower = name;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (lower == "stdout") {
+            m_stdout = true;
+        } else if (lower == "stderr") {
+            m_stderr = true;
+        } else if (!name.empty()) {
+            auto file = std::make_unique<std::ofstream>(name, std::ios::app);
+            if (*file)
+                m_files.push_back(std::move(file));
+            else
+                std::cerr << "logger: cannot open '" << name << "' (logger.file_name); its lines go to standard error"
+                          << std::endl;
+        }
+    }
+    if (m_files.empty() && !m_stdout)
+        m_stderr = true;
 }
 
 int LoggerSink::level()
@@ -118,10 +137,17 @@ void LoggerSink::write(int level, const std::string &name, const std::string &te
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     std::tm local{};
     localtime_r(&now, &local);
+    std::ostringstream line;
+    line << std::put_time(&local, "%b %d %H:%M:%S") << ' ' << names[std::clamp(level, 0, 8)] << ": " << name << ": "
+         << text << '\n';
+    const std::string bytes = line.str();
     std::lock_guard<std::mutex> lock(m_mutex);
-    std::ostream &out = m_file.is_open() ? static_cast<std::ostream &>(m_file) : std::cerr;
-    out << std::put_time(&local, "%b %d %H:%M:%S") << ' ' << names[std::clamp(level, 0, 8)] << ": " << name << ": "
-        << text << std::endl;
+    for (const auto &file : m_files)
+        file->write(bytes.data(), std::streamsize(bytes.size())).flush();
+    if (m_stdout)
+        std::cout.write(bytes.data(), std::streamsize(bytes.size())).flush();
+    if (m_stderr)
+        std::cerr.write(bytes.data(), std::streamsize(bytes.size())).flush();
 }
 
 } // namespace Sdk

@@ -5,18 +5,23 @@
 
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <string>
-#include <unistd.h>
+#include <vector>
 
 namespace RTC::Sdk {
 
-/// Where every component logger writes: standard error or `logger.file_name`, from `logger.log_level` down.
+/**
+ * Where every component logger writes, from `logger.log_level` down: each destination of
+ * `logger.file_name` (comma-separated files, `stdout`, `stderr`; format codes such as `%p` and
+ * `%h` and `${VAR}` expanded), standard error when it names none.
+ */
 class LoggerSink
 {
 public:
     static LoggerSink &instance();
-    /// Applies the manager's `logger.*` keys.
+    /// Applies the manager's `logger.*` keys; a file that cannot be opened is reported on standard error.
     void configure(const Runtime::Properties &config);
     int level();
     void write(int level, const std::string &name, const std::string &text);
@@ -25,7 +30,9 @@ private:
     std::mutex m_mutex;
     bool m_enabled = true;
     int m_level = 4; // INFO
-    std::ofstream m_file;
+    std::vector<std::unique_ptr<std::ofstream>> m_files;
+    bool m_stdout = false;
+    bool m_stderr = true;
 };
 
 } // namespace RTC::Sdk
