@@ -65,6 +65,8 @@ QJsonObject nodeToJson(const NamingNode &node)
         {"name", node.name}, {"path", node.path}, {"type", nodeTypeName(node.type)}};
     if (!node.reason.isEmpty())
         object.insert("reason", node.reason);
+    if (!node.answering)
+        object.insert("answering", false);
     if (!node.children.empty()) {
         QJsonArray children;
         for (const NamingNode &child : node.children)

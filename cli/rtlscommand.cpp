@@ -35,7 +35,8 @@ QString RtLsCommand::usage() const
         "Usage: rtctl ls [-l] [-R] [--json] [--timeout MS] [PATH...]\n\n"
         "Lists the RTC tree (rtshell's rtls). PATH defaults to RTCSH_CWD (or /); the root lists\n"
         "the name servers in RTCTREE_NAMESERVERS (';'-separated). Zombies (names whose object\n"
-        "does not answer or is of the wrong type) are marked with '*'.\n"
+        "is gone or of the wrong type) are marked with '*'; objects that hang keep their place and\n"
+        "show as Silent in the long form.\n"
         "  -l      long form: state, ports total/connected, in, out, service, name\n"
         "  -R      recurse into contexts and managers\n"
         "  --json  one JSON array of {name, path, type, ...} (with -l also state and ports)\n");
@@ -54,7 +55,10 @@ QString RtLsCommand::row(const NamingNode &node, bool longForm) const
         return name;
     QStringList columns {QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("-"),
                          QStringLiteral("-"), QStringLiteral("-")};
-    if (node.type == NodeType::Component && !node.ior.isEmpty()) {
+    // One that did not answer while listing is not asked again (another call timeout each).
+    if (!node.answering)
+        columns[0] = QStringLiteral("Silent");
+    else if (node.type == NodeType::Component && !node.ior.isEmpty()) {
         try {
             const ComponentProxy rtc(node.ior, node.path);
             const PortCounts c = countPorts(rtc.ports());
@@ -99,7 +103,7 @@ QJsonObject RtLsCommand::detailedJson(const NamingNode &node, bool longForm) con
 {
     QJsonObject object = nodeToJson(node);
     object.remove(QStringLiteral("children"));
-    if (longForm && node.type == NodeType::Component && !node.ior.isEmpty()) {
+    if (longForm && node.type == NodeType::Component && !node.ior.isEmpty() && node.answering) {
         try {
             const ComponentProxy rtc(node.ior, node.path);
             const PortCounts c = countPorts(rtc.ports());

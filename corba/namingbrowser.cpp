@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "namingbrowser.h"
 
+#include "concurrent.h"
 #include "corbacall.h"
 #include "managerproxy.h"
 
@@ -93,43 +94,72 @@ CORBA::Object_ptr resolveName(const RtPath &path)
     });
 }
 
-// Decides what a bound object is by asking it; any failure makes it a zombie.
-NodeType classify(CORBA::Object_ptr object, const QString &kind, const QString &path,
-                  QString *reason)
+/// What a bound object is taken to be before it is asked: its name's kind says it.
+NodeType typeByName(const QString &kind)
 {
+    if (kind == QLatin1String("rtc"))
+        return NodeType::Component;
+    if (kind == QLatin1String("mgr"))
+        return NodeType::Manager;
+    return NodeType::Object;
+}
+
+/**
+ * Decides what a bound object is by asking it. One that does not answer within the call timeout
+ * keeps the type its name gives and is marked as not answering (it may be stopped or busy);
+ * any other failure makes it a zombie.
+ */
+void classify(CORBA::Object_ptr object, NamingNode *node)
+{
+    const QString kind = kindOf(node->name);
     try {
-        return call(path, [&] {
+        node->type = call(node->path, [&] {
             if (kind == QLatin1String("rtc") || kind == QLatin1String("mgr")) {
                 const bool rtc = kind == QLatin1String("rtc");
                 if (object->_is_a(rtc ? rtObjectId : managerId))
                     return rtc ? NodeType::Component : NodeType::Manager;
-                *reason
+                node->reason
                     = QStringLiteral("%1: not an %2")
-                          .arg(path,
+                          .arg(node->path,
                                rtc ? QStringLiteral("RTObject") : QStringLiteral("RTM::Manager"));
                 return NodeType::Zombie;
             }
             return object->_non_existent() ? NodeType::Zombie : NodeType::Object;
         });
     } catch (const Error &e) {
-        *reason = e.message();
-        return NodeType::Zombie;
+        node->reason = e.message();
+        if (e.kind() == Error::Kind::Timeout) {
+            node->type = typeByName(kind);
+            node->answering = false;
+        } else {
+            node->type = NodeType::Zombie;
+        }
     }
 }
 
-NamingNode objectNode(CORBA::Object_ptr object, const QString &name, const QString &path)
+NamingNode objectNode(CORBA::Object_ptr object, const QString &name, const QString &path,
+                      NamingBrowser::Check check)
 {
     NamingNode node;
     node.name = name;
     node.path = path;
-    node.type = classify(object, kindOf(name), path, &node.reason);
+    node.type = typeByName(kindOf(name));
     node.ior = toIor(object);
+    if (check == NamingBrowser::Check::Objects)
+        classify(object, &node);
     return node;
 }
 
-std::vector<NamingNode> listContext(CosNaming::NamingContext_ptr context, const QString &path)
+/**
+ * The bindings of a context. Only the name server is asked for them; then, when checking, every
+ * bound object is asked what it is, all at once, so that objects that hang cost one call timeout
+ * together and never hold back the others.
+ */
+std::vector<NamingNode> listContext(CosNaming::NamingContext_ptr context, const QString &path,
+                                    NamingBrowser::Check check)
 {
     std::vector<NamingNode> nodes;
+    std::vector<std::pair<std::size_t, CORBA::Object_var>> objects;
     CosNaming::BindingList_var bindings;
     CosNaming::BindingIterator_var iterator;
     call(path, [&] { context->list(0, bindings.out(), iterator.out()); });
@@ -153,7 +183,8 @@ std::vector<NamingNode> listContext(CosNaming::NamingContext_ptr context, const 
             nodes.push_back({name, NodeType::Zombie, childPath, {}, e.message(), {}});
             continue;
         }
-        nodes.push_back(objectNode(object.in(), name, childPath));
+        nodes.push_back(objectNode(object.in(), name, childPath, NamingBrowser::Check::NamesOnly));
+        objects.emplace_back(nodes.size() - 1, object._retn());
     }
     if (!CORBA::is_nil(iterator)) {
         try {
@@ -161,6 +192,11 @@ std::vector<NamingNode> listContext(CosNaming::NamingContext_ptr context, const 
         } catch (const Error &) {
             // The iterator is the server's to reclaim; failing to destroy it early is harmless.
         }
+    }
+    if (check == NamingBrowser::Check::Objects) {
+        forEachConcurrently(objects.size(), [&](std::size_t i) {
+            classify(objects[i].second.in(), &nodes[objects[i].first]);
+        });
     }
     return nodes;
 }
@@ -181,6 +217,108 @@ std::vector<NamingNode> listManager(const QString &ior, const QString &path)
     return nodes;
 }
 
+/// The children of the node `self` at `path` (see NamingBrowser::list()).
+std::vector<NamingNode> childrenOf(const NamingNode &self, const RtPath &path,
+                                   const QStringList &rootServers, NamingBrowser::Check check)
+{
+    if (path.isRoot()) {
+        std::vector<NamingNode> servers;
+        for (const QString &server : rootServers)
+            servers.push_back({server, NodeType::Server, QLatin1Char('/') + server, {}, {}, {}});
+        return servers;
+    }
+    if (self.type == NodeType::Manager)
+        return self.answering ? listManager(self.ior, self.path) : std::vector<NamingNode>();
+    if (self.type != NodeType::Server && self.type != NodeType::Context)
+        return {self};
+    CosNaming::NamingContext_var root = rootContext(path);
+    if (path.names().isEmpty())
+        return listContext(root.in(), self.path, check);
+    CORBA::Object_var object = resolveName(path);
+    CosNaming::NamingContext_var context
+        = call(self.path, [&] { return CosNaming::NamingContext::_narrow(object.in()); });
+    return listContext(context.in(), self.path, check);
+}
+
+NamingNode nodeAt(const RtPath &path, NamingBrowser::Check check)
+{
+    const QString text = path.withoutPort().toString();
+    if (path.isRoot())
+        return {QStringLiteral("/"), NodeType::Root, QStringLiteral("/"), {}, {}, {}};
+    if (path.isDirect()) {
+        CORBA::Object_var object = toObject(path.corbaloc, text);
+        return objectNode(object.in(), QStringLiteral("manager.mgr"), text, check);
+    }
+    if (path.names().isEmpty()) {
+        CosNaming::NamingContext_var root = rootContext(path);
+        call(text, [&] { root->_non_existent(); });
+        return {path.server(), NodeType::Server, text, {}, {}, {}};
+    }
+    CORBA::Object_var object = resolveName(path);
+    const QString name = path.elements.last();
+    const QString kind = kindOf(name);
+    if (kind == QLatin1String("rtc") || kind == QLatin1String("mgr"))
+        return objectNode(object.in(), name, text, check);
+    bool isContext = false;
+    try {
+        isContext = call(text, [&] { return object->_is_a(CosNaming::NamingContext::_PD_repoId); });
+    } catch (const Error &e) {
+        return {name, NodeType::Zombie, text, toIor(object.in()), e.message(), {}};
+    }
+    if (isContext)
+        return {name, NodeType::Context, text, {}, {}, {}};
+    return objectNode(object.in(), name, text, check);
+}
+
+/// Fills in the children of `node` (at `path`) down to `depth` levels.
+void grow(NamingNode &node, const RtPath &path, int depth, const QStringList &rootServers,
+          NamingBrowser::Check check)
+{
+    if (depth == 0)
+        return;
+    if (node.type != NodeType::Root && node.type != NodeType::Server
+        && node.type != NodeType::Context && node.type != NodeType::Manager)
+        return;
+    const bool named = node.type != NodeType::Manager;
+    node.children = childrenOf(node, path, rootServers, check);
+    // A manager's own children are not bound in the name server; only named nodes recurse.
+    if (!named)
+        return;
+    std::vector<NamingNode *> managers;
+    for (NamingNode &child : node.children) {
+        const auto childPath = RtPath::parse(child.path);
+        if (!childPath)
+            continue;
+        if (child.type == NodeType::Manager) {
+            managers.push_back(&child);
+            continue;
+        }
+        if (child.type != NodeType::Context && child.type != NodeType::Server)
+            continue;
+        try {
+            grow(child, *childPath, depth - 1, {}, check);
+        } catch (const Error &e) {
+            child.type = NodeType::Zombie;
+            child.reason = e.message();
+        }
+    }
+    // Managers are asked for their components only when checking, and all at once.
+    if (check != NamingBrowser::Check::Objects || depth == 1)
+        return;
+    forEachConcurrently(managers.size(), [&](std::size_t i) {
+        NamingNode &manager = *managers[i];
+        try {
+            grow(manager, *RtPath::parse(manager.path), depth - 1, {}, check);
+        } catch (const Error &e) {
+            manager.reason = e.message();
+            if (e.kind() == Error::Kind::Timeout)
+                manager.answering = false;
+            else
+                manager.type = NodeType::Zombie;
+        }
+    });
+}
+
 } // namespace
 
 QStringList NamingBrowser::serversFromEnvironment()
@@ -198,80 +336,19 @@ QStringList NamingBrowser::serversFromEnvironment()
 
 std::vector<NamingNode> NamingBrowser::list(const RtPath &path, const QStringList &rootServers)
 {
-    if (path.isRoot()) {
-        std::vector<NamingNode> servers;
-        for (const QString &server : rootServers)
-            servers.push_back({server, NodeType::Server, QLatin1Char('/') + server, {}, {}, {}});
-        return servers;
-    }
-    const NamingNode self = node(path);
-    if (self.type == NodeType::Manager)
-        return listManager(self.ior, self.path);
-    if (self.type != NodeType::Server && self.type != NodeType::Context)
-        return {self};
-    CosNaming::NamingContext_var root = rootContext(path);
-    if (path.names().isEmpty())
-        return listContext(root.in(), self.path);
-    CORBA::Object_var object = resolveName(path);
-    CosNaming::NamingContext_var context
-        = call(self.path, [&] { return CosNaming::NamingContext::_narrow(object.in()); });
-    return listContext(context.in(), self.path);
+    return childrenOf(nodeAt(path, Check::Objects), path, rootServers, Check::Objects);
 }
 
 NamingNode NamingBrowser::node(const RtPath &path)
 {
-    const QString text = path.withoutPort().toString();
-    if (path.isRoot())
-        return {QStringLiteral("/"), NodeType::Root, QStringLiteral("/"), {}, {}, {}};
-    if (path.isDirect()) {
-        CORBA::Object_var object = toObject(path.corbaloc, text);
-        return objectNode(object.in(), QStringLiteral("manager.mgr"), text);
-    }
-    if (path.names().isEmpty()) {
-        CosNaming::NamingContext_var root = rootContext(path);
-        call(text, [&] { root->_non_existent(); });
-        return {path.server(), NodeType::Server, text, {}, {}, {}};
-    }
-    CORBA::Object_var object = resolveName(path);
-    const QString name = path.elements.last();
-    const QString kind = kindOf(name);
-    if (kind == QLatin1String("rtc") || kind == QLatin1String("mgr"))
-        return objectNode(object.in(), name, text);
-    bool isContext = false;
-    try {
-        isContext = call(text, [&] { return object->_is_a(CosNaming::NamingContext::_PD_repoId); });
-    } catch (const Error &e) {
-        return {name, NodeType::Zombie, text, toIor(object.in()), e.message(), {}};
-    }
-    if (isContext)
-        return {name, NodeType::Context, text, {}, {}, {}};
-    return objectNode(object.in(), name, text);
+    return nodeAt(path, Check::Objects);
 }
 
-NamingNode NamingBrowser::tree(const RtPath &path, int maxDepth, const QStringList &rootServers)
+NamingNode NamingBrowser::tree(const RtPath &path, int maxDepth, const QStringList &rootServers,
+                               Check check)
 {
-    NamingNode root = node(path);
-    if (maxDepth == 0)
-        return root;
-    if (root.type == NodeType::Root || root.type == NodeType::Server
-        || root.type == NodeType::Context || root.type == NodeType::Manager) {
-        for (NamingNode &child : list(path, rootServers)) {
-            // A manager's own children are not bound in the name server; only named nodes recurse.
-            const bool named = root.type != NodeType::Manager;
-            const bool container = child.type == NodeType::Context || child.type == NodeType::Server
-                || child.type == NodeType::Manager;
-            const auto childPath = RtPath::parse(child.path);
-            if (named && container && childPath) {
-                try {
-                    child = tree(*childPath, maxDepth - 1);
-                } catch (const Error &e) {
-                    child.type = NodeType::Zombie;
-                    child.reason = e.message();
-                }
-            }
-            root.children.push_back(std::move(child));
-        }
-    }
+    NamingNode root = nodeAt(path, check);
+    grow(root, path, maxDepth, rootServers, check);
     return root;
 }
 

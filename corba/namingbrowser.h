@@ -31,8 +31,11 @@ struct NamingNode
     NodeType type = NodeType::Object;
     QString path; ///< absolute rtshell path
     QString ior; ///< the object reference of objects and components
-    QString reason; ///< why the node is a zombie
+    QString reason; ///< why the node is a zombie, or why it is not answering
     std::vector<NamingNode> children;
+    /// False when the object did not answer within the call timeout (stopped or busy); it keeps
+    /// the type its name gives.
+    bool answering = true;
 };
 
 /**
@@ -42,6 +45,12 @@ struct NamingNode
 class NamingBrowser
 {
 public:
+    /// How much a listing asks the objects it finds.
+    enum class Check {
+        Objects, ///< each bound object is asked what it is; managers are asked for their components
+        NamesOnly ///< only name servers are asked: types come from the names' kinds (`rtc`, `mgr`)
+    };
+
     /// Name servers listed in `RTCTREE_NAMESERVERS` (`;`-separated, `,` also accepted).
     static QStringList serversFromEnvironment();
 
@@ -52,9 +61,12 @@ public:
     static std::vector<NamingNode> list(const RtPath &path, const QStringList &rootServers = {});
     /// The node at `path` itself, checked; NotFound when the name is not bound.
     static NamingNode node(const RtPath &path);
-    /// `path` and everything below it up to `maxDepth` levels (negative: no limit).
+    /**
+     * `path` and everything below it up to `maxDepth` levels (negative: no limit). Objects are
+     * checked concurrently, so objects that hang cost about one call timeout in all.
+     */
     static NamingNode tree(const RtPath &path, int maxDepth = -1,
-                           const QStringList &rootServers = {});
+                           const QStringList &rootServers = {}, Check check = Check::Objects);
     /// The object reference (IOR) bound at `path` (or at its corbaloc).
     static QString resolve(const RtPath &path);
     /// Binds `ior` at `path` (its naming context must exist).

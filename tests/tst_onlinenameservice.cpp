@@ -61,6 +61,7 @@ private slots:
     void deletesZombies();
     void unreachableServerIsReportedOnce();
     void stoppedManagerNeverBlocksTheGui();
+    void stoppedComponentsNeverHideTheTree();
 
 private:
     QString componentPath(const QString &instance) const;
@@ -427,6 +428,102 @@ void TestOnlineNameService::stoppedManagerNeverBlocksTheGui()
     QVERIFY(greyed.isValid());
     QVERIFY(!(view.model()->flags(greyed) & Qt::ItemIsEnabled));
     QCOMPARE(greyed.data(NameServiceModel::StateRole).toInt(), int(LifeCycleState::Unknown));
+}
+
+void TestOnlineNameService::stoppedComponentsNeverHideTheTree()
+{
+    // A second manager process with five components, bound under a host context of its own; it
+    // is stopped (as a debugger or a hung machine would), the first one keeps answering.
+    QString error;
+    const QStringList arguments {"-d",
+                                 "-o",
+                                 QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(LiveTest::freePort()),
+                                 "-o",
+                                 "corba.nameservers=" + m_live.namingServer(),
+                                 "-o",
+                                 "naming.formats=hunghost.host_cxt/%n.rtc",
+                                 "-o",
+                                 "manager.naming_formats=hunghost.host_cxt/%n.mgr",
+                                 "-o",
+                                 "manager.components.precreate=ConsoleIn,ConsoleIn,ConsoleIn,ConsoleOut,ConsoleOut"};
+    QProcess *hung
+        = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    QVERIFY2(hung, qPrintable(error));
+    struct Stop
+    {
+        LiveTest::LiveSystem &live;
+        QProcess *process;
+        ~Stop() { live.stop(process); }
+    } stop {m_live, hung};
+    const QString hungPrefix = QStringLiteral("/%1/hunghost.host_cxt/").arg(m_live.namingServer());
+    const QStringList hungPaths {hungPrefix + "ConsoleIn0.rtc", hungPrefix + "ConsoleIn1.rtc",
+                                 hungPrefix + "ConsoleIn2.rtc", hungPrefix + "ConsoleOut0.rtc",
+                                 hungPrefix + "ConsoleOut1.rtc"};
+
+    OnlineSession session;
+    NameServiceView view(&session, nullptr);
+    QSignalSpy listed(&view, &NameServiceView::serverListed);
+    QSignalSpy refreshed(&view, &NameServiceView::serverRefreshed);
+    view.addServer(m_live.namingServer());
+    QVERIFY(refreshed.wait(15000));
+    for (const QString &path : hungPaths)
+        QVERIFY2(view.model()->indexOfPath(path).isValid(), qPrintable(path));
+
+    Corba::Orb::setCallTimeout(600);
+    const pid_t pid = pid_t(hung->processId());
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    struct Resume
+    {
+        pid_t pid;
+        ~Resume()
+        {
+            ::kill(pid, SIGCONT);
+            Corba::Orb::setCallTimeout(2000);
+        }
+    } resume {pid};
+    QVERIFY(LiveTest::waitUntilStopped(pid));
+
+    listed.clear();
+    refreshed.clear();
+    QElapsedTimer clock;
+    clock.start();
+    view.refresh();
+    // The names come from the name server alone: every component is listed while the stopped
+    // ones are still being asked (their check cannot end before a call timeout).
+    QVERIFY(listed.wait(15000));
+    QCOMPARE(refreshed.size(), 0);
+    for (const QString &path : hungPaths + QStringList{componentPath("ConsoleIn0"), componentPath("ConsoleOut0")}) {
+        const QModelIndex index = view.model()->indexOfPath(path);
+        QVERIFY2(index.isValid(), qPrintable(path));
+        QCOMPARE(NodeType(index.data(NameServiceModel::TypeRole).toInt()), NodeType::Component);
+    }
+
+    // Then the check: the stopped ones are marked, the others keep their states; the six silent
+    // objects (five components and their manager) were asked at once, not one after the other
+    // (which would take six call timeouts at least).
+    QVERIFY(refreshed.wait(15000));
+    const qint64 checked = clock.elapsed();
+    QVERIFY2(checked < 4 * Corba::Orb::callTimeout(), qPrintable(QStringLiteral("%1 ms").arg(checked)));
+    for (const QString &path : hungPaths) {
+        const QModelIndex index = view.model()->indexOfPath(path);
+        QVERIFY2(index.isValid(), qPrintable(path));
+        QCOMPARE(NodeType(index.data(NameServiceModel::TypeRole).toInt()), NodeType::Component);
+        QCOMPARE(index.siblingAtColumn(1).data().toString(), QStringLiteral("not answering"));
+        QVERIFY(!(view.model()->flags(index) & Qt::ItemIsEnabled));
+        QVERIFY(!index.data(Qt::ToolTipRole).toString().isEmpty());
+    }
+    const QModelIndex answering = view.model()->indexOfPath(componentPath("ConsoleOut0"));
+    QVERIFY(view.model()->flags(answering) & Qt::ItemIsEnabled);
+    QVERIFY(answering.data(NameServiceModel::StateRole).toInt() != int(LifeCycleState::Unknown));
+
+    // Once the process goes on, the next refresh shows its components as they are.
+    ::kill(pid, SIGCONT);
+    refreshed.clear();
+    view.refresh();
+    QVERIFY(refreshed.wait(15000));
+    const QModelIndex back = view.model()->indexOfPath(hungPaths.first());
+    QVERIFY(view.model()->flags(back) & Qt::ItemIsEnabled);
+    QVERIFY(back.data(NameServiceModel::StateRole).toInt() != int(LifeCycleState::Unknown));
 }
 
 QTEST_MAIN(TestOnlineNameService)

@@ -189,7 +189,7 @@ bool NameServiceModel::isHostReachable(const QString &host) const
 
 bool NameServiceModel::unreachable(const Item *item) const
 {
-    return m_unreachable.contains(item->server)
+    return !item->node.answering || m_unreachable.contains(item->server)
         || (!item->endpoint.isEmpty() && m_unreachable.contains(item->endpoint));
 }
 
@@ -277,6 +277,8 @@ QVariant NameServiceModel::displayData(const Item *item, int column) const
 {
     if (column == 0)
         return item->node.name;
+    if (!item->node.answering)
+        return tr("not answering");
     switch (item->node.type) {
     case NodeType::Component:
         return Corba::stateName(stateOf(item));
@@ -308,7 +310,7 @@ QVariant NameServiceModel::data(const QModelIndex &index, int role) const
     case Qt::DecorationRole:
         return index.column() == 0 ? decoration(item) : QVariant();
     case Qt::ToolTipRole:
-        if (item->node.type == NodeType::Zombie)
+        if (item->node.type == NodeType::Zombie || !item->node.answering)
             return item->node.reason;
         if (unreachable(item))
             return m_unreachable.value(item->server, m_unreachable.value(item->endpoint));

@@ -55,7 +55,7 @@ public:
      */
     void setHostReachable(const QString &host, bool reachable, const QString &message = {});
     bool isHostReachable(const QString &host) const;
-    /// True when the item is shown greyed because its server or its endpoint does not answer.
+    /// True when the item is shown greyed: it, its server or its endpoint does not answer.
     bool isUnreachable(const QModelIndex &index) const;
 
     /// The index of the item at `path`, invalid when none.

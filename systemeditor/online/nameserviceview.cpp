@@ -222,21 +222,49 @@ void NameServiceView::refresh()
 
 void NameServiceView::refreshServer(const QString &server)
 {
+    // First the names, which only the name server is asked for: the tree shows at once, whatever
+    // the objects do. Then the objects themselves, which take up to a call timeout when some hang.
     m_session->submit(
-        server, [server] { return QVariant::fromValue(OnlineCalls::fetchServer(server)); }, this,
-        [this, server](const OnlineResult &result) {
-            if (!result.ok) {
-                // An unreachable server is reported once through onReachability().
-                if (!result.hostFailure)
-                    report(result.error);
-                m_model->setServerTree(server, {}, {});
+        server,
+        [server] {
+            return QVariant::fromValue(
+                OnlineCalls::fetchServer(server, Corba::NamingBrowser::Check::NamesOnly));
+        },
+        this, [this, server](const OnlineResult &result) {
+            if (!showServer(server, result))
                 return;
-            }
-            const auto snapshot = result.value.value<ServerSnapshot>();
-            m_model->setServerTree(server, snapshot.tree, snapshot.states);
-            m_tree->expandAll();
-            emit serverRefreshed(server);
+            emit serverListed(server);
+            checkServer(server);
         });
+}
+
+void NameServiceView::checkServer(const QString &server)
+{
+    m_session->submit(
+        server,
+        [server] {
+            return QVariant::fromValue(
+                OnlineCalls::fetchServer(server, Corba::NamingBrowser::Check::Objects));
+        },
+        this, [this, server](const OnlineResult &result) {
+            if (showServer(server, result))
+                emit serverRefreshed(server);
+        });
+}
+
+bool NameServiceView::showServer(const QString &server, const OnlineResult &result)
+{
+    if (!result.ok) {
+        // An unreachable server is reported once through onReachability().
+        if (!result.hostFailure)
+            report(result.error);
+        m_model->setServerTree(server, {}, {});
+        return false;
+    }
+    const auto snapshot = result.value.value<ServerSnapshot>();
+    m_model->setServerTree(server, snapshot.tree, snapshot.states);
+    m_tree->expandAll();
+    return true;
 }
 
 void NameServiceView::setFilterText(const QString &text)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "onlinecalls.h"
+#include "onlineservice.h"
 
 #include <QSet>
 #include <QWidget>
@@ -64,7 +65,9 @@ public:
 signals:
     /// A background state poll answered and the model was updated.
     void statesPolled();
-    /// A server was read and the model updated.
+    /// A server's names were read (only the name server was asked) and the model shows them.
+    void serverListed(const QString &server);
+    /// A server was read, its objects checked and their states taken, and the model updated.
     void serverRefreshed(const QString &server);
     /// A remote action finished; `error` is empty on success.
     void actionFinished(const QString &path, const QString &error);
@@ -79,6 +82,10 @@ private:
     void report(const QString &message);
     QModelIndex currentSourceIndex() const;
     void applyPolledStates(const QHash<QString, Corba::LifeCycleState> &states);
+    /// Second step of a refresh: checks the objects below `server` and takes their states.
+    void checkServer(const QString &server);
+    /// Shows a read of `server` (or reports why there is none); true when it was read.
+    bool showServer(const QString &server, const OnlineResult &result);
 
     OnlineSession *m_session;
     QSettings *m_settings;

@@ -2,6 +2,7 @@
 #include "onlinecalls.h"
 
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "corbaerror.h"
 #include "managerproxy.h"
 
@@ -13,28 +14,13 @@ using Corba::NodeType;
 
 namespace {
 
-// States by path; a component listed twice (in its naming context and below its manager) is
-// asked once, by its object reference.
-void collectStates(const NamingNode &node, QHash<QString, LifeCycleState> &states,
-                   QHash<QString, LifeCycleState> &byIor)
+/// The answering components of the tree with references, by path.
+void collectComponents(const NamingNode &node, QHash<QString, QString> &iorsByPath)
 {
-    // A manager lists its components by profile, without references: their states are taken
-    // from the same instance bound in the naming tree (see fillManagedStates()).
-    if (node.type == NodeType::Component && !node.ior.isEmpty()) {
-        auto known = byIor.find(node.ior);
-        if (known == byIor.end()) {
-            LifeCycleState state = LifeCycleState::Unknown;
-            try {
-                state = Corba::ComponentProxy(node.ior, node.path).state();
-            } catch (const Corba::Error &) {
-                // One silent component must not hide the rest of the tree.
-            }
-            known = byIor.insert(node.ior, state);
-        }
-        states.insert(node.path, *known);
-    }
+    if (node.type == NodeType::Component && !node.ior.isEmpty() && node.answering)
+        iorsByPath.insert(node.path, node.ior);
     for (const NamingNode &child : node.children)
-        collectStates(child, states, byIor);
+        collectComponents(child, iorsByPath);
 }
 
 void fillManagedStates(const NamingNode &node, QHash<QString, LifeCycleState> &states,
@@ -57,7 +43,7 @@ void collectNamedStates(const NamingNode &node, const QHash<QString, LifeCycleSt
 
 } // namespace
 
-ServerSnapshot fetchServer(const QString &server)
+ServerSnapshot fetchServer(const QString &server, Corba::NamingBrowser::Check check)
 {
     QString error;
     const auto path = Corba::RtPath::parse(QLatin1Char('/') + server, QString(), &error);
@@ -65,9 +51,12 @@ ServerSnapshot fetchServer(const QString &server)
         throw Corba::Error(Corba::Error::Kind::BadPath, server + QStringLiteral(": ") + error);
     ServerSnapshot snapshot;
     snapshot.server = server;
-    snapshot.tree = Corba::NamingBrowser::tree(*path);
-    QHash<QString, LifeCycleState> byIor;
-    collectStates(snapshot.tree, snapshot.states, byIor);
+    snapshot.tree = Corba::NamingBrowser::tree(*path, -1, {}, check);
+    if (check == Corba::NamingBrowser::Check::NamesOnly)
+        return snapshot;
+    QHash<QString, QString> iors;
+    collectComponents(snapshot.tree, iors);
+    snapshot.states = fetchStates(iors);
     QHash<QString, LifeCycleState> byName;
     collectNamedStates(snapshot.tree, snapshot.states, byName);
     fillManagedStates(snapshot.tree, snapshot.states, byName);
@@ -76,13 +65,25 @@ ServerSnapshot fetchServer(const QString &server)
 
 QHash<QString, LifeCycleState> fetchStates(const QHash<QString, QString> &iorsByPath)
 {
-    QHash<QString, LifeCycleState> states;
-    for (auto it = iorsByPath.begin(); it != iorsByPath.end(); ++it) {
+    // A component bound under several names is asked once, by its reference; all at once, so
+    // that components that hang cost one call timeout together.
+    QHash<QString, QStringList> pathsByIor;
+    for (auto it = iorsByPath.begin(); it != iorsByPath.end(); ++it)
+        pathsByIor[it.value()].append(it.key());
+    const QStringList iors = pathsByIor.keys();
+    std::vector<LifeCycleState> found(size_t(iors.size()), LifeCycleState::Unknown);
+    Corba::forEachConcurrently(found.size(), [&](std::size_t i) {
+        const QString &ior = iors.at(int(i));
         try {
-            states.insert(it.key(), Corba::ComponentProxy(it.value(), it.key()).state());
+            found[i] = Corba::ComponentProxy(ior, pathsByIor.value(ior).first()).state();
         } catch (const Corba::Error &) {
-            states.insert(it.key(), LifeCycleState::Unknown);
+            // Unknown: one silent component must not hide the others.
         }
+    });
+    QHash<QString, LifeCycleState> states;
+    for (int i = 0; i < iors.size(); ++i) {
+        for (const QString &path : pathsByIor.value(iors.at(i)))
+            states.insert(path, found[size_t(i)]);
     }
     return states;
 }

@@ -34,9 +34,14 @@ enum class RemoteAction { Activate, Deactivate, Reset, Exit, Shutdown, Restart, 
  */
 namespace OnlineCalls {
 
-/// The tree below `server` (`host:port`) with component states (a component that does not
-/// answer is Unknown).
-ServerSnapshot fetchServer(const QString &server);
+/**
+ * The tree below `server` (`host:port`). With Check::Objects, objects are asked what they are and
+ * components for their states, all at once (one that does not answer is Unknown and marked as
+ * not answering); with Check::NamesOnly only the name server is asked, which is quick whatever
+ * the objects do, and there are no states.
+ */
+ServerSnapshot fetchServer(const QString &server,
+                           Corba::NamingBrowser::Check check = Corba::NamingBrowser::Check::Objects);
 /// The states of the given components (path → IOR); Unknown for those that do not answer.
 QHash<QString, Corba::LifeCycleState> fetchStates(const QHash<QString, QString> &iorsByPath);
 /// Performs `action` on the object at `path` with reference `ior`.
