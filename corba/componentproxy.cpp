@@ -131,7 +131,7 @@ ComponentProxy::ComponentProxy(QString ior, QString path)
 ComponentInfo ComponentProxy::profile() const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTC::ComponentProfile_var profile = rtc->get_component_profile();
         return toComponentInfo(profile.in());
     });
@@ -140,7 +140,7 @@ ComponentInfo ComponentProxy::profile() const
 std::vector<PortInfo> ComponentProxy::ports() const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         std::vector<PortInfo> ports;
         RTC::PortServiceList_var list = rtc->get_ports();
         for (CORBA::ULong i = 0; i < list->length(); ++i) {
@@ -163,7 +163,7 @@ PortInfo ComponentProxy::port(const QString &name) const
 std::vector<ExecutionContextInfo> ComponentProxy::executionContexts(ContextDetail detail) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         std::vector<ExecutionContextInfo> contexts;
         const auto add = [&](RTC::ExecutionContext_ptr ec, bool owned) {
             contexts.push_back(contextInfo(rtc.in(), ec, owned));
@@ -184,7 +184,7 @@ void ComponentProxy::attachContext(const QString &contextIor) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = contextAt(contextIor, m_path);
-    call(m_path, [&] {
+    callServed(m_path, m_ior, [&] {
         if (owns(rtc.in(), ec.in()))
             throw Error(Error::Kind::Refused,
                         QStringLiteral("%1: owns this execution context already").arg(m_path));
@@ -193,11 +193,11 @@ void ComponentProxy::attachContext(const QString &contextIor) const
                 Error::Kind::Refused,
                 QStringLiteral("%1: takes part in this execution context already").arg(m_path));
     });
-    checkReturnCode(call(m_path, [&] { return int(ec->add_component(rtc.in())); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->add_component(rtc.in())); }), m_path,
                     QStringLiteral("add_component"));
     // OpenRTM-aist's contexts call attach_context from add_component; others leave it to the
     // tool, and without it the component would not list the context.
-    call(m_path, [&] {
+    callServed(m_path, m_ior, [&] {
         if (!participates(rtc.in(), ec.in()))
             rtc->attach_context(ec.in());
     });
@@ -207,7 +207,7 @@ void ComponentProxy::detachContext(const QString &contextIor) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = contextAt(contextIor, m_path);
-    call(m_path, [&] {
+    callServed(m_path, m_ior, [&] {
         if (owns(rtc.in(), ec.in()))
             throw Error(
                 Error::Kind::Refused,
@@ -217,10 +217,10 @@ void ComponentProxy::detachContext(const QString &contextIor) const
                 Error::Kind::NotFound,
                 QStringLiteral("%1: does not take part in this execution context").arg(m_path));
     });
-    checkReturnCode(call(m_path, [&] { return int(ec->remove_component(rtc.in())); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->remove_component(rtc.in())); }), m_path,
                     QStringLiteral("remove_component"));
     // As with attaching: a context that did not call detach_context leaves it to the tool.
-    call(m_path, [&] {
+    callServed(m_path, m_ior, [&] {
         if (!participates(rtc.in(), ec.in()))
             return;
         checkReturnCode(int(rtc->detach_context(rtc->get_context_handle(ec.in()))), m_path,
@@ -232,14 +232,14 @@ LifeCycleState ComponentProxy::state(int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    return call(m_path, [&] { return toLifeCycleState(ec->get_component_state(rtc.in())); });
+    return callServed(m_path, m_ior, [&] { return toLifeCycleState(ec->get_component_state(rtc.in())); });
 }
 
 void ComponentProxy::activate(int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    checkReturnCode(call(m_path, [&] { return int(ec->activate_component(rtc.in())); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->activate_component(rtc.in())); }), m_path,
                     QStringLiteral("activate"));
 }
 
@@ -247,7 +247,7 @@ void ComponentProxy::deactivate(int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    checkReturnCode(call(m_path, [&] { return int(ec->deactivate_component(rtc.in())); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->deactivate_component(rtc.in())); }), m_path,
                     QStringLiteral("deactivate"));
 }
 
@@ -255,21 +255,21 @@ void ComponentProxy::reset(int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    checkReturnCode(call(m_path, [&] { return int(ec->reset_component(rtc.in())); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->reset_component(rtc.in())); }), m_path,
                     QStringLiteral("reset"));
 }
 
 void ComponentProxy::exit() const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
-    checkReturnCode(call(m_path, [&] { return int(rtc->exit()); }), m_path, QStringLiteral("exit"));
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(rtc->exit()); }), m_path, QStringLiteral("exit"));
 }
 
 void ComponentProxy::startContext(int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    checkReturnCode(call(m_path, [&] { return int(ec->start()); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->start()); }), m_path,
                     QStringLiteral("start"));
 }
 
@@ -277,21 +277,21 @@ void ComponentProxy::stopContext(int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    checkReturnCode(call(m_path, [&] { return int(ec->stop()); }), m_path, QStringLiteral("stop"));
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->stop()); }), m_path, QStringLiteral("stop"));
 }
 
 void ComponentProxy::setRate(double rate, int ecIndex) const
 {
     RTC::RTObject_var rtc = component(m_ior, m_path);
     RTC::ExecutionContext_var ec = context(rtc.in(), ecIndex, m_path);
-    checkReturnCode(call(m_path, [&] { return int(ec->set_rate(rate)); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(ec->set_rate(rate)); }), m_path,
                     QStringLiteral("set_rate"));
 }
 
 std::vector<ConfigurationSet> ComponentProxy::configurationSets() const
 {
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         SDOPackage::ConfigurationSetList_var sets = conf->get_configuration_sets();
         std::vector<ConfigurationSet> result;
         for (CORBA::ULong i = 0; i < sets->length(); ++i)
@@ -303,7 +303,7 @@ std::vector<ConfigurationSet> ComponentProxy::configurationSets() const
 QString ComponentProxy::activeConfigurationSet() const
 {
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         try {
             SDOPackage::ConfigurationSet_var set = conf->get_active_configuration_set();
             return toQString(set->id.in());
@@ -371,7 +371,7 @@ void ComponentProxy::activateConfigurationSet(const QString &id) const
     SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
     const QByteArray utf8 = id.toUtf8();
     const bool ok
-        = call(m_path, [&] { return conf->activate_configuration_set(utf8.constData()); });
+        = callServed(m_path, m_ior, [&] { return conf->activate_configuration_set(utf8.constData()); });
     if (!ok)
         throw Error(Error::Kind::Refused,
                     QStringLiteral("%1: configuration set '%2' was not activated").arg(m_path, id));

@@ -10,6 +10,8 @@
 
 #include <QString>
 
+#include <utility>
+
 namespace Corba::Internal {
 
 /// The process's ORB, created on first use.
@@ -51,6 +53,22 @@ template<typename F> auto call(const QString &target, F &&f) -> decltype(f())
         throw;
     } catch (...) {
         rethrowAsError(target);
+    }
+}
+
+/**
+ * The error `e` about an object whose reference is `ior`: when it means that the object's process
+ * does not answer or cannot be reached, its message also names that process (`host:port`).
+ */
+Error withServingProcess(const Error &e, const QString &ior);
+
+/// call() on the object with reference `ior` (see withServingProcess()).
+template<typename F> auto callServed(const QString &target, const QString &ior, F &&f) -> decltype(f())
+{
+    try {
+        return call(target, std::forward<F>(f));
+    } catch (const Error &e) {
+        throw withServingProcess(e, ior);
     }
 }
 

@@ -44,7 +44,7 @@ ManagerProxy::ManagerProxy(QString ior, QString path)
 void ManagerProxy::loadModule(const QString &pathName, const QString &initFunction) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    const int code = call(m_path, [&] {
+    const int code = callServed(m_path, m_ior, [&] {
         return int(
             mgr->load_module(pathName.toUtf8().constData(), initFunction.toUtf8().constData()));
     });
@@ -55,14 +55,14 @@ void ManagerProxy::unloadModule(const QString &pathName) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
     const int code
-        = call(m_path, [&] { return int(mgr->unload_module(pathName.toUtf8().constData())); });
+        = callServed(m_path, m_ior, [&] { return int(mgr->unload_module(pathName.toUtf8().constData())); });
     checkReturnCode(code, m_path, QStringLiteral("unload_module(%1)").arg(pathName));
 }
 
 std::vector<Properties> ManagerProxy::loadableModules() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTM::ModuleProfileList_var list = mgr->get_loadable_modules();
         return modules(list.in());
     });
@@ -71,7 +71,7 @@ std::vector<Properties> ManagerProxy::loadableModules() const
 std::vector<Properties> ManagerProxy::loadedModules() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTM::ModuleProfileList_var list = mgr->get_loaded_modules();
         return modules(list.in());
     });
@@ -80,7 +80,7 @@ std::vector<Properties> ManagerProxy::loadedModules() const
 std::vector<Properties> ManagerProxy::factoryProfiles() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTM::ModuleProfileList_var list = mgr->get_factory_profiles();
         return modules(list.in());
     });
@@ -89,7 +89,7 @@ std::vector<Properties> ManagerProxy::factoryProfiles() const
 QString ManagerProxy::createComponent(const QString &moduleName) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    const QString ior = call(m_path, [&] {
+    const QString ior = callServed(m_path, m_ior, [&] {
         RTC::RTObject_var rtc = mgr->create_component(moduleName.toUtf8().constData());
         return toIor(rtc.in());
     });
@@ -110,7 +110,7 @@ void ManagerProxy::deleteComponent(const QString &instanceName) const
 QStringList ManagerProxy::components() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTC::RTCList_var list = mgr->get_components();
         return iors(list.in());
     });
@@ -119,7 +119,7 @@ QStringList ManagerProxy::components() const
 std::vector<ComponentInfo> ManagerProxy::componentProfiles() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTC::ComponentProfileList_var list = mgr->get_component_profiles();
         std::vector<ComponentInfo> result;
         for (CORBA::ULong i = 0; i < list->length(); ++i)
@@ -131,7 +131,7 @@ std::vector<ComponentInfo> ManagerProxy::componentProfiles() const
 QStringList ManagerProxy::componentsByName(const QString &name) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTC::RTCList_var list = mgr->get_components_by_name(name.toUtf8().constData());
         return iors(list.in());
     });
@@ -140,7 +140,7 @@ QStringList ManagerProxy::componentsByName(const QString &name) const
 Properties ManagerProxy::profile() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTM::ManagerProfile_var profile = mgr->get_profile();
         return fromNVList(profile->properties);
     });
@@ -149,7 +149,7 @@ Properties ManagerProxy::profile() const
 Properties ManagerProxy::configuration() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTM::NVList_var list = mgr->get_configuration();
         return fromNVList(list.in());
     });
@@ -158,7 +158,7 @@ Properties ManagerProxy::configuration() const
 void ManagerProxy::setConfiguration(const QString &name, const QString &value) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    const int code = call(m_path, [&] {
+    const int code = callServed(m_path, m_ior, [&] {
         return int(mgr->set_configuration(name.toUtf8().constData(), value.toUtf8().constData()));
     });
     checkReturnCode(code, m_path, QStringLiteral("set_configuration(%1)").arg(name));
@@ -167,13 +167,13 @@ void ManagerProxy::setConfiguration(const QString &name, const QString &value) c
 bool ManagerProxy::isMaster() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] { return bool(mgr->is_master()); });
+    return callServed(m_path, m_ior, [&] { return bool(mgr->is_master()); });
 }
 
 QStringList ManagerProxy::masterManagers() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTM::ManagerList_var list = mgr->get_master_managers();
         return iors(list.in());
     });
@@ -183,7 +183,7 @@ void ManagerProxy::addMasterManager(const QString &managerIor) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
     RTM::Manager_var other = manager(managerIor, m_path);
-    checkReturnCode(call(m_path, [&] { return int(mgr->add_master_manager(other.in())); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->add_master_manager(other.in())); }), m_path,
                     QStringLiteral("add_master_manager"));
 }
 
@@ -191,14 +191,14 @@ void ManagerProxy::removeMasterManager(const QString &managerIor) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
     RTM::Manager_var other = manager(managerIor, m_path);
-    checkReturnCode(call(m_path, [&] { return int(mgr->remove_master_manager(other.in())); }),
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->remove_master_manager(other.in())); }),
                     m_path, QStringLiteral("remove_master_manager"));
 }
 
 QStringList ManagerProxy::slaveManagers() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         RTM::ManagerList_var list = mgr->get_slave_managers();
         return iors(list.in());
     });
@@ -208,7 +208,7 @@ void ManagerProxy::addSlaveManager(const QString &managerIor) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
     RTM::Manager_var other = manager(managerIor, m_path);
-    checkReturnCode(call(m_path, [&] { return int(mgr->add_slave_manager(other.in())); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->add_slave_manager(other.in())); }), m_path,
                     QStringLiteral("add_slave_manager"));
 }
 
@@ -216,34 +216,34 @@ void ManagerProxy::removeSlaveManager(const QString &managerIor) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
     RTM::Manager_var other = manager(managerIor, m_path);
-    checkReturnCode(call(m_path, [&] { return int(mgr->remove_slave_manager(other.in())); }),
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->remove_slave_manager(other.in())); }),
                     m_path, QStringLiteral("remove_slave_manager"));
 }
 
 void ManagerProxy::fork() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    checkReturnCode(call(m_path, [&] { return int(mgr->fork()); }), m_path, QStringLiteral("fork"));
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->fork()); }), m_path, QStringLiteral("fork"));
 }
 
 void ManagerProxy::shutdown() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    checkReturnCode(call(m_path, [&] { return int(mgr->shutdown()); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->shutdown()); }), m_path,
                     QStringLiteral("shutdown"));
 }
 
 void ManagerProxy::restart() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    checkReturnCode(call(m_path, [&] { return int(mgr->restart()); }), m_path,
+    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->restart()); }), m_path,
                     QStringLiteral("restart"));
 }
 
 QString ManagerProxy::service(const QString &name) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    return call(m_path, [&] {
+    return callServed(m_path, m_ior, [&] {
         CORBA::Object_var object = mgr->get_service(name.toUtf8().constData());
         return toIor(object.in());
     });

@@ -2,6 +2,7 @@
 #include "orb.h"
 
 #include "corbacall.h"
+#include "iorendpoint.h"
 
 #include <omniORB4/minorCode.h>
 
@@ -162,6 +163,17 @@ void rethrowAsError(const QString &target)
         // Falls through to the generic error below.
     }
     throw fail(Kind::System, QStringLiteral("unknown exception"));
+}
+
+Error withServingProcess(const Error &e, const QString &ior)
+{
+    const Error::Kind kind = e.kind();
+    const QString endpoint = iorEndpoint(ior);
+    if (endpoint.isEmpty()
+        || (kind != Error::Kind::Timeout && kind != Error::Kind::Transient
+            && kind != Error::Kind::CommFailure))
+        return e;
+    return Error(kind, QStringLiteral("%1 (its process at %2)").arg(e.message(), endpoint));
 }
 
 CORBA::Object_ptr toObject(const QString &reference, const QString &target)

@@ -6,6 +6,7 @@
 #include "nameserviceview.h"
 #include "onlinesession.h"
 #include "orb.h"
+#include "stallmeter.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
@@ -28,20 +29,6 @@ using namespace SystemEditor;
 using Corba::LifeCycleState;
 using Corba::NodeType;
 
-namespace {
-
-// Nanoseconds the calling thread has run or waited in a run queue (Linux schedstat); 0 where the
-// kernel does not tell, so that whole intervals count as blocked.
-qint64 scheduledNs()
-{
-    QFile file(QStringLiteral("/proc/thread-self/schedstat"));
-    if (!file.open(QIODevice::ReadOnly))
-        return 0;
-    const QList<QByteArray> fields = file.readAll().split(' ');
-    return fields.size() < 2 ? 0 : fields.at(0).toLongLong() + fields.at(1).toLongLong();
-}
-
-} // namespace
 
 // The Name Service view and its worker layer against real omniNames and rtmanager processes.
 class TestOnlineNameService : public QObject
@@ -157,10 +144,10 @@ void TestOnlineNameService::readsEndpointsFromIors()
     const QModelIndex index = view.model()->indexOfPath(componentPath("ConsoleIn0"));
     QVERIFY(index.isValid());
     const QString ior = index.data(NameServiceModel::IorRole).toString();
-    QCOMPARE(iorEndpoint(ior), QStringLiteral("127.0.0.1:%1").arg(m_managerPort));
-    QCOMPARE(iorEndpoint(QStringLiteral("IOR:0102")), QString());
-    QCOMPARE(iorEndpoint(QStringLiteral("corbaloc::host:1/x")), QString());
-    QCOMPARE(iorEndpoint(ior.left(60)), QString());
+    QCOMPARE(Corba::iorEndpoint(ior), QStringLiteral("127.0.0.1:%1").arg(m_managerPort));
+    QCOMPARE(Corba::iorEndpoint(QStringLiteral("IOR:0102")), QString());
+    QCOMPARE(Corba::iorEndpoint(QStringLiteral("corbaloc::host:1/x")), QString());
+    QCOMPARE(Corba::iorEndpoint(ior.left(60)), QString());
 }
 
 void TestOnlineNameService::showsTheLiveTree()
@@ -391,24 +378,7 @@ void TestOnlineNameService::stoppedManagerNeverBlocksTheGui()
 
     QSignalSpy problems(&view, &NameServiceView::problemReported);
     QSignalSpy finished(&view, &NameServiceView::actionFinished);
-    // How long the GUI thread was blocked between two ticks: the wall-clock gap less the time it
-    // ran or waited for a CPU. A busy machine stretches the gaps but not this; a remote call made
-    // on the GUI thread would block it for a whole call timeout.
-    QElapsedTimer clock;
-    clock.start();
-    qint64 lastWall = 0;
-    qint64 lastScheduled = scheduledNs();
-    qint64 worstBlockedNs = 0;
-    QTimer ticker;
-    ticker.setInterval(10);
-    connect(&ticker, &QTimer::timeout, this, [&] {
-        const qint64 wall = clock.nsecsElapsed();
-        const qint64 scheduled = scheduledNs();
-        worstBlockedNs = std::max(worstBlockedNs, (wall - lastWall) - (scheduled - lastScheduled));
-        lastWall = wall;
-        lastScheduled = scheduled;
-    });
-    ticker.start();
+    LiveTest::StallMeter stalls;
     view.perform(RemoteAction::Activate, in);
     view.perform(RemoteAction::Reset, view.model()->indexOfPath(path));
     view.refresh();
@@ -416,10 +386,10 @@ void TestOnlineNameService::stoppedManagerNeverBlocksTheGui()
     QCOMPARE(session.pendingCalls(), 3);
     QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 15000);
     QTRY_COMPARE_WITH_TIMEOUT(session.pendingCalls(), 0, 30000);
-    ticker.stop();
-    QVERIFY2(worstBlockedNs < Corba::Orb::callTimeout() * 1000000LL / 2,
-             qPrintable(QStringLiteral("blocked for %1 ms").arg(worstBlockedNs / 1000000)));
-    QVERIFY(clock.elapsed() >= 1000); // the calls did wait for their timeouts, off the GUI thread
+    stalls.stop();
+    QVERIFY2(stalls.worstNs() < Corba::Orb::callTimeout() * 1000000LL / 2,
+             qPrintable(QStringLiteral("blocked for %1 ms").arg(stalls.worstMs())));
+    QVERIFY(stalls.elapsedMs() >= 1000); // the calls did wait for their timeouts, off the GUI thread
     QVERIFY(!finished.at(0).at(1).toString().isEmpty());
     QCOMPARE(problems.size(), 1); // two failed calls, one report
     QVERIFY(problems.at(0).at(0).toString().contains(endpoint));

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "componentproxy.h"
+#include "corbaerror.h"
 #include "driftview.h"
+#include "managerproxy.h"
 #include "livesystem.h"
 #include "namingbrowser.h"
 #include "onlinesession.h"
@@ -8,6 +10,7 @@
 #include "portconnection.h"
 #include "profileio.h"
 #include "restoredialog.h"
+#include "stallmeter.h"
 
 #include <QCheckBox>
 #include <QLabel>
@@ -17,6 +20,8 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QTreeWidget>
+
+#include <csignal>
 
 using namespace SystemEditor;
 
@@ -32,6 +37,7 @@ private slots:
     void missingComponentsBlockTheRestore();
     void createsTheExampleFromNothing();
     void driftShowsAChangedConfigurationValue();
+    void stoppedManagerMidRestoreRollsBack();
 
 private:
     Profile::RtsProfile system(const QString &outInstance) const;
@@ -282,6 +288,85 @@ void TestOnlineRestore::driftShowsAChangedConfigurationValue()
     QCOMPARE(found.first()->text(2), after);
     QVERIFY(changed.summary().contains("difference"));
     sample.setParameter("default", "int_param0", before);
+}
+
+void TestOnlineRestore::stoppedManagerMidRestoreRollsBack()
+{
+    // Two managers: the restore creates ConsoleIn0 through the first, then connects it to
+    // ConsoleOut0, which runs in the second; that one is stopped once the plan is made.
+    LiveTest::LiveSystem live;
+    QString error;
+    QVERIFY2(live.startNameServer(&error), qPrintable(error));
+    const quint16 creatorPort = LiveTest::freePort();
+    QVERIFY2(live.startProcess(QStringLiteral(RTMANAGER_PATH),
+                               {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(creatorPort), "-o",
+                                "corba.nameservers=" + live.namingServer(), "-o",
+                                "naming.formats=makerhost.host_cxt/%n.rtc", "-o",
+                                "manager.naming_formats=makerhost.host_cxt/%n.mgr"},
+                               "rtmanager ready", &error),
+             qPrintable(error));
+    const quint16 hostPort = LiveTest::freePort();
+    QProcess *host = live.startProcess(
+        QStringLiteral(RTMANAGER_PATH),
+        {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(hostPort), "-o",
+         "corba.nameservers=" + live.namingServer(), "-o", "naming.formats=stophost.host_cxt/%n.rtc", "-o",
+         "manager.naming_formats=stophost.host_cxt/%n.mgr", "-o", "manager.components.precreate=ConsoleOut"},
+        "rtmanager ready", &error);
+    QVERIFY2(host, qPrintable(error));
+
+    Deploy::TargetOptions target;
+    target.nameServers = {live.namingServer()};
+    const Profile::RtsProfile profile = system("ConsoleOut0");
+    OnlineSession session;
+    RestoreDialog dialog(&session, profile, target);
+    QSignalSpy planned(&dialog, &RestoreDialog::planned);
+    const QString creator = QStringLiteral("corbaloc::127.0.0.1:%1").arg(creatorPort);
+    dialog.setManagers({creator});
+    dialog.setCreateMissing(true, creator);
+    QVERIFY(planned.wait(15000));
+    QTableWidget *components = dialog.componentTable();
+    QCOMPARE(components->item(0, RestoreDialog::MappingColumn)->text(), QStringLiteral("create"));
+    QCOMPARE(components->item(1, RestoreDialog::MappingColumn)->text(), QStringLiteral("existing"));
+
+    Corba::Orb::setCallTimeout(800);
+    const pid_t pid = pid_t(host->processId());
+    QCOMPARE(::kill(pid, SIGSTOP), 0);
+    struct Resume
+    {
+        pid_t pid;
+        ~Resume()
+        {
+            ::kill(pid, SIGCONT);
+            Corba::Orb::setCallTimeout(3000);
+        }
+    } resume {pid};
+    QVERIFY(LiveTest::waitUntilStopped(pid));
+
+    LiveTest::StallMeter stalls;
+    QSignalSpy restored(&dialog, &RestoreDialog::restored);
+    QTest::mouseClick(dialog.findChild<QPushButton *>("restoreButton"), Qt::LeftButton);
+    QVERIFY(restored.wait(30000));
+    stalls.stop();
+    const QString report = dialog.report().toText();
+    QVERIFY2(!restored.at(0).at(0).toBool(), qPrintable(report));
+    // The event loop never waited on the stopped manager.
+    QVERIFY2(stalls.worstMs() < 100, qPrintable(QStringLiteral("blocked for %1 ms").arg(stalls.worstMs())));
+    // The report names what stopped answering: the component and the process that hosts it.
+    QVERIFY2(report.contains(QStringLiteral("ConsoleOut0")), qPrintable(report));
+    QVERIFY2(report.contains(QStringLiteral("127.0.0.1:%1").arg(hostPort)), qPrintable(report));
+    // What the restore created was removed again.
+    const auto created = Corba::RtPath::parse(
+        QStringLiteral("/%1/makerhost.host_cxt/ConsoleIn0.rtc").arg(live.namingServer()));
+    QVERIFY2(dialog.report().toText().contains(QStringLiteral("ConsoleIn0")), qPrintable(report));
+    bool gone = false;
+    try {
+        Corba::NamingBrowser::resolve(*created);
+    } catch (const Corba::Error &e) {
+        gone = e.kind() == Corba::Error::Kind::NotFound;
+    }
+    QVERIFY2(gone, "ConsoleIn0 is still bound after the rollback");
+    const auto manager = Corba::RtPath::parse(creator);
+    QVERIFY(Corba::ManagerProxy(manager->corbaloc, creator).componentProfiles().empty());
 }
 
 QTEST_MAIN(TestOnlineRestore)

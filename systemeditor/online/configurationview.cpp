@@ -128,7 +128,7 @@ void ConfigurationView::reload()
         return;
     const QString path = m_path;
     const QString ior = m_ior;
-    const QString host = iorEndpoint(ior).isEmpty() ? path : iorEndpoint(ior);
+    const QString host = Corba::iorEndpoint(ior).isEmpty() ? path : Corba::iorEndpoint(ior);
     m_session->submit(
         host,
         [path, ior] {
@@ -283,7 +283,7 @@ void ConfigurationView::updateButtons()
 
 void ConfigurationView::submitEdit(const std::function<void()> &edit)
 {
-    const QString host = iorEndpoint(m_ior).isEmpty() ? m_path : iorEndpoint(m_ior);
+    const QString host = Corba::iorEndpoint(m_ior).isEmpty() ? m_path : Corba::iorEndpoint(m_ior);
     m_session->submit(
         host,
         [edit] {

@@ -43,7 +43,7 @@ void collectComponents(const QAbstractItemModel *model, const QModelIndex &paren
 // delays only its own calls.
 QString hostOf(const QString &ior, const QString &path)
 {
-    const QString endpoint = iorEndpoint(ior);
+    const QString endpoint = Corba::iorEndpoint(ior);
     return endpoint.isEmpty() ? path : endpoint;
 }
 

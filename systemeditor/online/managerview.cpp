@@ -173,7 +173,7 @@ void ManagerView::reload()
         return;
     const QString ior = m_ior;
     const QString path = m_path;
-    const QString host = iorEndpoint(ior).isEmpty() ? path : iorEndpoint(ior);
+    const QString host = Corba::iorEndpoint(ior).isEmpty() ? path : Corba::iorEndpoint(ior);
     m_session->submit(
         host, [ior, path] { return QVariant::fromValue(readManager(ior, path)); }, this,
         [this, path](const OnlineResult &result) {
@@ -210,7 +210,7 @@ void ManagerView::showSnapshot(const ManagerSnapshot &snapshot)
     };
     QTreeWidgetItem *slaves = section(tr("Slave managers"), QStringLiteral("slaves"));
     for (const auto &[name, ior] : snapshot.slaves)
-        add(slaves, name, iorEndpoint(ior), QStringLiteral("slave"), ior);
+        add(slaves, name, Corba::iorEndpoint(ior), QStringLiteral("slave"), ior);
     QTreeWidgetItem *components = section(tr("Components"), QStringLiteral("components"));
     for (const Corba::ComponentInfo &c : snapshot.components)
         add(components, c.instanceName, c.typeName, QStringLiteral("component"), c.instanceName);
@@ -293,7 +293,7 @@ QString ManagerView::createArgument() const
 
 void ManagerView::submit(const QString &ior, const std::function<void()> &call)
 {
-    const QString host = iorEndpoint(ior).isEmpty() ? m_path : iorEndpoint(ior);
+    const QString host = Corba::iorEndpoint(ior).isEmpty() ? m_path : Corba::iorEndpoint(ior);
     m_session->submit(
         host,
         [call] {

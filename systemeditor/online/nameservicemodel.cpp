@@ -112,7 +112,7 @@ void NameServiceModel::appendChildren(Item *parent, const NamingNode &node)
         child->node = childNode;
         child->node.children.clear();
         child->server = parent->server;
-        child->endpoint = iorEndpoint(childNode.ior);
+        child->endpoint = Corba::iorEndpoint(childNode.ior);
         child->parent = parent;
         appendChildren(child.get(), childNode);
         parent->children.push_back(std::move(child));

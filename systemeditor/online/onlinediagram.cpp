@@ -127,7 +127,7 @@ void OnlineDiagram::buildUi()
 
 QString OnlineDiagram::hostOf(const Live &live) const
 {
-    const QString endpoint = iorEndpoint(live.ior);
+    const QString endpoint = Corba::iorEndpoint(live.ior);
     return endpoint.isEmpty() ? live.path : endpoint;
 }
 

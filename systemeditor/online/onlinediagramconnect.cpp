@@ -141,7 +141,7 @@ void OnlineDiagram::connectLive(const QString &sourcePort, const QString &target
     }
     const std::vector<Corba::PortInfo> ports {*source, *target};
     const QString path = m_live.value(sourcePort.section(QLatin1Char('.'), 0, 0)).path;
-    const QString endpoint = iorEndpoint(source->ior);
+    const QString endpoint = Corba::iorEndpoint(source->ior);
     submitConnection(endpoint.isEmpty() ? path : endpoint, [ports, request, path] {
         Corba::PortConnection::connect(ports, request, path);
     });
@@ -157,7 +157,7 @@ void OnlineDiagram::disconnectLive(const QString &connectorId)
         return;
     const QString path = m_live.value(connector->source.instanceName).path;
     const Corba::PortInfo through = *port;
-    const QString endpoint = iorEndpoint(through.ior);
+    const QString endpoint = Corba::iorEndpoint(through.ior);
     submitConnection(endpoint.isEmpty() ? path : endpoint, [through, connectorId, path] {
         Corba::PortConnection::disconnect(through, connectorId, path);
     });

@@ -5,7 +5,7 @@
 
 #include <optional>
 
-namespace SystemEditor {
+namespace Corba {
 
 namespace {
 
@@ -115,4 +115,4 @@ QString iorEndpoint(const QString &ior)
     return {};
 }
 
-} // namespace SystemEditor
+} // namespace Corba
