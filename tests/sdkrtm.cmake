@@ -37,7 +37,7 @@ add_library(sdkcrashprobe MODULE sdkmodules/crashprobe.cpp)
 target_link_libraries(sdkcrashprobe PRIVATE rtsdk)
 set_target_properties(sdkcrashprobe PROPERTIES PREFIX "" OUTPUT_NAME CrashProbe AUTOMOC OFF
     LIBRARY_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/sdkmodules)
-rtstudio_add_test(tst_sdkslaves SOURCES tst_sdkslaves.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner)
+rtstudio_add_test(tst_sdkslaves SOURCES tst_sdkslaves.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner rtsystemeditor)
 target_compile_definitions(tst_sdkslaves PRIVATE
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
     SDK_TEST_MODULE_DIR="${CMAKE_CURRENT_BINARY_DIR}/sdkmodules")

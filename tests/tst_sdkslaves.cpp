@@ -3,6 +3,7 @@
 // from the load path where the component is created (the master's own process or a slave
 // started for it), and a component that crashes in onExecute takes down only its own slave.
 #include "livesystem.h"
+#include "onlinecalls.h"
 #include "rtctlrunner.h"
 
 #include <QtTest>
@@ -70,6 +71,25 @@ void TestSdkSlaves::crashTakesDownOnlyItsSlave()
     QVERIFY2(list.code == 0, qPrintable(list.out + list.err));
     QVERIFY(list.out.contains("Survivor"));
     QVERIFY(!list.out.contains("Victim"));
+
+    // What the online views read of the name server: only the crashed one is marked (its name
+    // is still bound, its process is gone), the others run on.
+    const SystemEditor::ServerSnapshot snapshot = SystemEditor::OnlineCalls::fetchServer(m_live.namingServer());
+    QHash<QString, Corba::NamingNode> byName;
+    std::function<void(const Corba::NamingNode &)> collect = [&](const Corba::NamingNode &node) {
+        if (node.path.startsWith(host() + '/'))
+            byName.insert(node.name, node);
+        for (const Corba::NamingNode &child : node.children)
+            collect(child);
+    };
+    collect(snapshot.tree);
+    QVERIFY(byName.contains("Victim.rtc"));
+    QCOMPARE(byName.value("Victim.rtc").type, Corba::NodeType::Zombie);
+    for (const char *survivor : {"Local.rtc", "Survivor.rtc"}) {
+        const Corba::NamingNode node = byName.value(survivor);
+        QCOMPARE(node.type, Corba::NodeType::Component);
+        QCOMPARE(snapshot.states.value(node.path), Corba::LifeCycleState::Active);
+    }
 }
 
 void TestSdkSlaves::restoreCreatesTypeFromLoadPath()
