@@ -610,6 +610,7 @@ void TestRtcXml::reportsBrokenFiles_data()
     QTest::newRow("wrong namespace") << "wrong-namespace.xml" << 3 << "rtc_v9";
     QTest::newRow("invalid UTF-8") << "invalid-utf8.xml" << 4 << "UTF-8";
     QTest::newRow("deep nesting") << "deep-nesting.xml" << 89 << "deeper";
+    QTest::newRow("entity expansion") << "entity-expansion.xml" << 15 << "expansion limit";
     QTest::newRow("not XML") << "not-xml.xml" << 1 << "";
 }
 

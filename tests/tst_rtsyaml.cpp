@@ -57,6 +57,7 @@ private slots:
     void readsMessageSequences();
     void mapsDatesBothWays();
     void keepsUnknownKeys();
+    void keepsAliasChainsUnexpanded();
     void roundTrips_data();
     void roundTrips();
     void yamlToXmlKeepsEverything();
@@ -162,6 +163,22 @@ void TestRtsYaml::mapsDatesBothWays()
     QVERIFY2(again && diagnostics.isEmpty(), qPrintable(joined(diagnostics)));
     QCOMPARE(again->updateDate, odd.updateDate);
     QCOMPARE(again->creationDate, p.creationDate);
+}
+
+void TestRtsYaml::keepsAliasChainsUnexpanded()
+{
+    // Ten levels of nine aliases each below an unknown key: expanded, a billion scalars. Kept as
+    // written, the saved file stays the size of the original and reads back the same.
+    const QByteArray original = readFile(dataPath(QStringLiteral("rts/alias-chain.yaml")));
+    const RtsProfile p = loadYaml(QStringLiteral("rts/alias-chain.yaml"));
+    QCOMPARE(p.yamlExtras.entries.size(), 1);
+    QCOMPARE(p.yamlExtras.entries.at(0).key, QStringLiteral("unknownBomb"));
+    const QByteArray saved = writeRtsYaml(p);
+    QVERIFY2(saved.size() < 4 * original.size(), qPrintable(QString::number(saved.size())));
+    Diagnostics diagnostics;
+    const auto again = readRtsYaml(saved, QStringLiteral("saved.yaml"), &diagnostics);
+    QVERIFY2(again && diagnostics.isEmpty(), qPrintable(joined(diagnostics)));
+    QVERIFY(*again == p);
 }
 
 void TestRtsYaml::keepsUnknownKeys()
