@@ -7,6 +7,7 @@
 #include "componentmodel.h"
 #include "idlsearchpath.h"
 #include "idltypelibrary.h"
+#include "installation.h"
 #include "typecatalog.h"
 
 #include <QDir>
@@ -230,7 +231,7 @@ bool GenerateController::generate()
 
     const QString profilePath = m_profilePath();
     const QStringList leading
-        = m_types ? m_types->directories() : QStringList {QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR)};
+        = m_types ? m_types->directories() : QStringList {Codegen::Installation::bundledIdlDirectory()};
     const IdlTypeLibrary library(idlSearchDirs(
         profile, profilePath.isEmpty() ? QString() : QFileInfo(profilePath).absolutePath(),
         leading));

@@ -2,6 +2,7 @@
 #include "typecatalog.h"
 
 #include "idltypelibrary.h"
+#include "installation.h"
 
 #include <QDir>
 #include <QSettings>
@@ -16,7 +17,7 @@ const char *const SettingsKey = "builder/idlDirectories";
 
 TypeCatalog::TypeCatalog(const QString &bundledDirectory, QObject *parent)
     : QObject(parent)
-    , m_bundledDirectory(bundledDirectory.isEmpty() ? QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR)
+    , m_bundledDirectory(bundledDirectory.isEmpty() ? Codegen::Installation::bundledIdlDirectory()
                                                     : bundledDirectory)
     , m_library(std::make_unique<Codegen::IdlTypeLibrary>())
     , m_dataTypes(builtInDataTypes())

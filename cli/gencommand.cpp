@@ -4,6 +4,7 @@
 #include "codegenerator.h"
 #include "idlsearchpath.h"
 #include "idltypelibrary.h"
+#include "installation.h"
 #include "profileio.h"
 #include "projectwriter.h"
 
@@ -150,7 +151,7 @@ int GenCommand::run(const QStringList &arguments, Streams streams)
     }
     const IdlTypeLibrary library(
         idlSearchDirs(*loaded->rtc, QFileInfo(options.profile).absolutePath(),
-                      {QStringLiteral(RTSTUDIO_BUNDLED_IDL_DIR)}, options.idlDirs));
+                      {Codegen::Installation::bundledIdlDirectory()}, options.idlDirs));
     CodeGenerator generator(*loaded->rtc, library.model());
     generator.setUserTemplateFolder(options.templates);
     generator.setTestComponent(options.testComponent);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "projectbuilder.h"
 
+#include "installation.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -348,11 +350,7 @@ std::optional<BuildProgress> ProjectBuilder::parseProgressLine(const QString &li
 
 QString ProjectBuilder::defaultSdkPrefix()
 {
-    const QString program = QDir::cleanPath(QCoreApplication::applicationDirPath());
-    const QString buildTree = QDir::cleanPath(QStringLiteral(RTSTUDIO_BUILD_TREE));
-    if (program == buildTree || program.startsWith(buildTree + QLatin1Char('/')))
-        return buildTree;
-    return QStringLiteral(RTSTUDIO_INSTALL_PREFIX);
+    return Installation::prefix();
 }
 
 } // namespace Codegen

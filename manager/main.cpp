@@ -16,13 +16,29 @@
 #include <thread>
 #include <unistd.h>
 
+namespace {
+
+const char *const usage = "usage: rtmanager [-f rtc.conf] [-i] [-o key:value]... [-p PORT] [-d] [-a]\n";
+
+} // namespace
+
 int main(int argc, char **argv)
 {
+    if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
+        std::cout << "rtmanager " RTSTUDIO_VERSION "\n";
+        return 0;
+    }
+    if (argc == 2 && std::strcmp(argv[1], "--help") == 0) {
+        std::cout << usage
+                  << "OpenRTM-aist's manager command line: -f names the configuration file (else it is searched\n"
+                     "as OpenRTM-aist does; -i: a missing file is no error), -o sets one key, -p the port, -d makes\n"
+                     "it a master, -a runs it without the manager servant. See rtmanager(1).\n";
+        return 0;
+    }
     Runtime::Properties config;
     std::string error;
     if (!Runtime::parseManagerArguments(argc, argv, &config, &error)) {
-        std::cerr << "rtmanager: " << error
-                  << "\nusage: rtmanager [-f rtc.conf] [-i] [-o key:value]... [-p PORT] [-d] [-a]\n";
+        std::cerr << "rtmanager: " << error << '\n' << usage;
         return 2;
     }
 
