@@ -21,6 +21,7 @@ private slots:
     void containsWhatIsInstalled();
     void dependsOnDebianPackages();
     void programsRunFromTheUnpackedTree();
+    void completesRtctlCommands();
 
 private:
     /// Runs `program` with `arguments`; its exit code, or -1 when it did not end within 120 s.
@@ -132,6 +133,25 @@ void TestDebPackage::programsRunFromTheUnpackedTree()
     QVERIFY2(run(bin("rtctl"), {"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(port), "list"}, &output) == 0,
              qPrintable(output));
     QVERIFY2(output.contains("ConsoleIn0"), qPrintable(output));
+}
+
+void TestDebPackage::completesRtctlCommands()
+{
+    // The completion function as bash calls it: the words so far and the index of the current one.
+    const QString script = m_root.filePath("usr/share/bash-completion/completions/rtctl");
+    const auto complete = [&](const QString &words, int current) {
+        QString output;
+        const QString line = QStringLiteral("source '%1'; COMP_WORDS=(%2); COMP_CWORD=%3; _rtctl; "
+                                            "printf '%s\\n' \"${COMPREPLY[@]}\"")
+                                 .arg(script, words)
+                                 .arg(current);
+        run("bash", {"-c", line}, &output);
+        return output.split('\n', Qt::SkipEmptyParts);
+    };
+    QCOMPARE(complete("rtctl pro", 1), QStringList {"profile"});
+    QCOMPARE(complete("rtctl profile c", 2), (QStringList {"check", "convert"}));
+    QVERIFY(complete("rtctl ", 1).contains("resurrect"));
+    QVERIFY(complete("rtctl conf --", 2).contains("--json"));
 }
 
 QTEST_GUILESS_MAIN(TestDebPackage)
