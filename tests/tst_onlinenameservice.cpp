@@ -482,9 +482,19 @@ void TestOnlineNameService::stoppedComponentsNeverHideTheTree()
         QVERIFY(!(view.model()->flags(index) & Qt::ItemIsEnabled));
         QVERIFY(!index.data(Qt::ToolTipRole).toString().isEmpty());
     }
+    if (!qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT").isEmpty()) {
+        view.resize(520, 480);
+        view.grab().save(qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT") + ".silent.png");
+    }
     const QModelIndex answering = view.model()->indexOfPath(componentPath("ConsoleOut0"));
     QVERIFY(view.model()->flags(answering) & Qt::ItemIsEnabled);
     QVERIFY(answering.data(NameServiceModel::StateRole).toInt() != int(LifeCycleState::Unknown));
+    // Listed below its manager (no reference), a component shows the state of the one of its name
+    // bound beside that manager, not of the silent namesake in the other context.
+    const QModelIndex managed = view.model()->indexOfPath(
+        QStringLiteral("/%1/rtmhost.host_cxt/manager.mgr/ConsoleOut0.rtc").arg(m_live.namingServer()));
+    QVERIFY(managed.isValid());
+    QCOMPARE(managed.data(NameServiceModel::StateRole).toInt(), answering.data(NameServiceModel::StateRole).toInt());
 
     // Once the process goes on, the next refresh shows its components as they are.
     ::kill(pid, SIGCONT);

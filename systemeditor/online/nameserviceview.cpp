@@ -122,11 +122,11 @@ void NameServiceView::applyPolledStates(const QHash<QString, Corba::LifeCycleSta
     std::function<void(const QModelIndex &)> follow = [&](const QModelIndex &parent) {
         for (int row = 0; row < m_model->rowCount(parent); ++row) {
             const QModelIndex index = m_model->index(row, 0, parent);
-            const QString name = index.data().toString();
+            const QString path = index.data(NameServiceModel::PathRole).toString();
             if (NodeType(index.data(NameServiceModel::TypeRole).toInt()) == NodeType::Component
                 && index.data(NameServiceModel::IorRole).toString().isEmpty()
-                && byName.contains(name))
-                all.insert(index.data(NameServiceModel::PathRole).toString(), byName.value(name));
+                && byName.contains(index.data().toString()))
+                all.insert(path, OnlineCalls::managedState(path, states, byName));
             follow(index);
         }
     };

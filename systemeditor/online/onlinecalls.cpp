@@ -27,7 +27,7 @@ void fillManagedStates(const NamingNode &node, QHash<QString, LifeCycleState> &s
                        const QHash<QString, LifeCycleState> &byName)
 {
     if (node.type == NodeType::Component && node.ior.isEmpty())
-        states.insert(node.path, byName.value(node.name, LifeCycleState::Unknown));
+        states.insert(node.path, managedState(node.path, states, byName));
     for (const NamingNode &child : node.children)
         fillManagedStates(child, states, byName);
 }
@@ -42,6 +42,18 @@ void collectNamedStates(const NamingNode &node, const QHash<QString, LifeCycleSt
 }
 
 } // namespace
+
+LifeCycleState managedState(const QString &path, const QHash<QString, LifeCycleState> &byPath,
+                            const QHash<QString, LifeCycleState> &byName)
+{
+    // `…/context/manager.mgr/Name0.rtc` → `…/context/Name0.rtc`.
+    const QString name = path.section(QLatin1Char('/'), -1);
+    const QString beside = path.section(QLatin1Char('/'), 0, -3) + QLatin1Char('/') + name;
+    const auto found = byPath.find(beside);
+    if (found != byPath.end())
+        return *found;
+    return byName.value(name, LifeCycleState::Unknown);
+}
 
 ServerSnapshot fetchServer(const QString &server, Corba::NamingBrowser::Check check)
 {

@@ -42,6 +42,13 @@ namespace OnlineCalls {
  */
 ServerSnapshot fetchServer(const QString &server,
                            Corba::NamingBrowser::Check check = Corba::NamingBrowser::Check::Objects);
+/**
+ * The state shown for a component listed below its manager (at `path`, which carries no
+ * reference): that of the component of the same name bound in the manager's own naming context,
+ * else of any bound one of that name (`byName`), else Unknown.
+ */
+Corba::LifeCycleState managedState(const QString &path, const QHash<QString, Corba::LifeCycleState> &byPath,
+                                   const QHash<QString, Corba::LifeCycleState> &byName);
 /// The states of the given components (path → IOR); Unknown for those that do not answer.
 QHash<QString, Corba::LifeCycleState> fetchStates(const QHash<QString, QString> &iorsByPath);
 /// Performs `action` on the object at `path` with reference `ior`.
