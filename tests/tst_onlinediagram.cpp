@@ -3,6 +3,7 @@
 #include "componentproxy.h"
 #include "corbaerror.h"
 #include "livesystem.h"
+#include "stoppedprocess.h"
 #include "nameservicemodel.h"
 #include "namingbrowser.h"
 #include "onlinediagram.h"
@@ -27,42 +28,12 @@
 #include <QWheelEvent>
 
 #include <atomic>
-#include <csignal>
 #include <memory>
 
 using namespace SystemEditor;
 using Corba::LifeCycleState;
 
 namespace {
-
-/// Stops a manager process (SIGSTOP) with a short call timeout while it exists.
-class StoppedManager
-{
-public:
-    explicit StoppedManager(QProcess *manager)
-    {
-        Corba::Orb::setCallTimeout(500);
-        // processId() is 0 once the manager has ended, and kill(0, SIGSTOP) would stop this
-        // test's own process group: check before signalling.
-        if (manager->state() == QProcess::Running && manager->processId() > 0) {
-            m_pid = pid_t(manager->processId());
-            m_stopped = ::kill(m_pid, SIGSTOP) == 0 && LiveTest::waitUntilStopped(m_pid, 5000);
-        }
-    }
-    ~StoppedManager()
-    {
-        if (m_pid > 0)
-            ::kill(m_pid, SIGCONT);
-        Corba::Orb::setCallTimeout(3000);
-    }
-    StoppedManager(const StoppedManager &) = delete;
-    StoppedManager &operator=(const StoppedManager &) = delete;
-    bool isStopped() const { return m_stopped; }
-
-private:
-    pid_t m_pid = 0;
-    bool m_stopped = false;
-};
 
 } // namespace
 
@@ -349,7 +320,7 @@ void TestOnlineDiagram::stoppedManagerTurnsBlackWithoutStallingTheGui()
     waitForPoll(diagram);
     QCOMPARE(diagram.bodyColor("ConsoleIn0"), OnlineIcons::stateColor(LifeCycleState::Inactive));
 
-    const StoppedManager stopped(m_manager);
+    const LiveTest::StoppedProcess stopped(m_manager, 500, 3000);
     QVERIFY(stopped.isStopped());
     QElapsedTimer clock;
     clock.start();
@@ -417,7 +388,7 @@ void TestOnlineDiagram::sessionEndsWithinACallTimeoutWhileCallsHang()
     // another): the session ends within about one call timeout, without destroying a running
     // thread (which aborts the program); the worker finishes on its own later.
     const Corba::ComponentProxy proxy = component("ConsoleIn0");
-    const StoppedManager stopped(m_manager);
+    const LiveTest::StoppedProcess stopped(m_manager, 500, 3000);
     QVERIFY(stopped.isStopped());
 
     auto done = std::make_shared<std::atomic_int>(0);

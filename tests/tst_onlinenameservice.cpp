@@ -7,6 +7,7 @@
 #include "onlinesession.h"
 #include "orb.h"
 #include "stallmeter.h"
+#include "stoppedprocess.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
@@ -23,12 +24,9 @@
 #include <QTimer>
 #include <QTreeView>
 
-#include <csignal>
-
 using namespace SystemEditor;
 using Corba::LifeCycleState;
 using Corba::NodeType;
-
 
 // The Name Service view and its worker layer against real omniNames and rtmanager processes.
 class TestOnlineNameService : public QObject
@@ -361,20 +359,8 @@ void TestOnlineNameService::stoppedManagerNeverBlocksTheGui()
     const QString endpoint = in.data(NameServiceModel::EndpointRole).toString();
     QVERIFY(!endpoint.isEmpty());
 
-    Corba::Orb::setCallTimeout(600);
-    const pid_t pid = pid_t(m_manager->processId());
-    QCOMPARE(::kill(pid, SIGSTOP), 0);
-    struct Resume
-    {
-        pid_t pid;
-        ~Resume()
-        {
-            ::kill(pid, SIGCONT);
-            Corba::Orb::setCallTimeout(2000);
-        }
-    } resume {pid};
-    // SIGSTOP lands asynchronously: an action sent before it did would still be answered.
-    QVERIFY(LiveTest::waitUntilStopped(pid));
+    const LiveTest::StoppedProcess stopped(m_manager, 600, 2000);
+    QVERIFY(stopped.isStopped());
 
     QSignalSpy problems(&view, &NameServiceView::problemReported);
     QSignalSpy finished(&view, &NameServiceView::actionFinished);
@@ -439,19 +425,8 @@ void TestOnlineNameService::stoppedComponentsNeverHideTheTree()
     for (const QString &path : hungPaths)
         QVERIFY2(view.model()->indexOfPath(path).isValid(), qPrintable(path));
 
-    Corba::Orb::setCallTimeout(600);
-    const pid_t pid = pid_t(hung->processId());
-    QCOMPARE(::kill(pid, SIGSTOP), 0);
-    struct Resume
-    {
-        pid_t pid;
-        ~Resume()
-        {
-            ::kill(pid, SIGCONT);
-            Corba::Orb::setCallTimeout(2000);
-        }
-    } resume {pid};
-    QVERIFY(LiveTest::waitUntilStopped(pid));
+    LiveTest::StoppedProcess stopped(hung, 600, 2000);
+    QVERIFY(stopped.isStopped());
 
     listed.clear();
     refreshed.clear();
@@ -497,7 +472,7 @@ void TestOnlineNameService::stoppedComponentsNeverHideTheTree()
     QCOMPARE(managed.data(NameServiceModel::StateRole).toInt(), answering.data(NameServiceModel::StateRole).toInt());
 
     // Once the process goes on, the next refresh shows its components as they are.
-    ::kill(pid, SIGCONT);
+    stopped.resume();
     refreshed.clear();
     view.refresh();
     QVERIFY(refreshed.wait(15000));

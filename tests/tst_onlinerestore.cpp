@@ -11,6 +11,7 @@
 #include "profileio.h"
 #include "restoredialog.h"
 #include "stallmeter.h"
+#include "stoppedprocess.h"
 
 #include <QCheckBox>
 #include <QLabel>
@@ -20,8 +21,6 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QTreeWidget>
-
-#include <csignal>
 
 using namespace SystemEditor;
 
@@ -328,19 +327,8 @@ void TestOnlineRestore::stoppedManagerMidRestoreRollsBack()
     QCOMPARE(components->item(0, RestoreDialog::MappingColumn)->text(), QStringLiteral("create"));
     QCOMPARE(components->item(1, RestoreDialog::MappingColumn)->text(), QStringLiteral("existing"));
 
-    Corba::Orb::setCallTimeout(800);
-    const pid_t pid = pid_t(host->processId());
-    QCOMPARE(::kill(pid, SIGSTOP), 0);
-    struct Resume
-    {
-        pid_t pid;
-        ~Resume()
-        {
-            ::kill(pid, SIGCONT);
-            Corba::Orb::setCallTimeout(3000);
-        }
-    } resume {pid};
-    QVERIFY(LiveTest::waitUntilStopped(pid));
+    const LiveTest::StoppedProcess stopped(host, 800, 3000);
+    QVERIFY(stopped.isStopped());
 
     LiveTest::StallMeter stalls;
     QSignalSpy restored(&dialog, &RestoreDialog::restored);
