@@ -391,19 +391,9 @@ void TestOnlineNameService::stoppedComponentsNeverHideTheTree()
     // A second manager process with five components, bound under a host context of its own; it
     // is stopped (as a debugger or a hung machine would), the first one keeps answering.
     QString error;
-    const QStringList arguments {"-d",
-                                 "-o",
-                                 QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(LiveTest::freePort()),
-                                 "-o",
-                                 "corba.nameservers=" + m_live.namingServer(),
-                                 "-o",
-                                 "naming.formats=hunghost.host_cxt/%n.rtc",
-                                 "-o",
-                                 "manager.naming_formats=hunghost.host_cxt/%n.mgr",
-                                 "-o",
-                                 "manager.components.precreate=ConsoleIn,ConsoleIn,ConsoleIn,ConsoleOut,ConsoleOut"};
-    QProcess *hung
-        = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    QProcess *hung = m_live.startHostManager(
+        QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), "hunghost",
+        {"manager.components.precreate=ConsoleIn,ConsoleIn,ConsoleIn,ConsoleOut,ConsoleOut"}, &error);
     QVERIFY2(hung, qPrintable(error));
     struct Stop
     {

@@ -297,20 +297,11 @@ void TestOnlineRestore::stoppedManagerMidRestoreRollsBack()
     QString error;
     QVERIFY2(live.startNameServer(&error), qPrintable(error));
     const quint16 creatorPort = LiveTest::freePort();
-    QVERIFY2(live.startProcess(QStringLiteral(RTMANAGER_PATH),
-                               {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(creatorPort), "-o",
-                                "corba.nameservers=" + live.namingServer(), "-o",
-                                "naming.formats=makerhost.host_cxt/%n.rtc", "-o",
-                                "manager.naming_formats=makerhost.host_cxt/%n.mgr"},
-                               "rtmanager ready", &error),
+    QVERIFY2(live.startHostManager(QStringLiteral(RTMANAGER_PATH), creatorPort, "makerhost", {}, &error),
              qPrintable(error));
     const quint16 hostPort = LiveTest::freePort();
-    QProcess *host = live.startProcess(
-        QStringLiteral(RTMANAGER_PATH),
-        {"-d", "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(hostPort), "-o",
-         "corba.nameservers=" + live.namingServer(), "-o", "naming.formats=stophost.host_cxt/%n.rtc", "-o",
-         "manager.naming_formats=stophost.host_cxt/%n.mgr", "-o", "manager.components.precreate=ConsoleOut"},
-        "rtmanager ready", &error);
+    QProcess *host = live.startHostManager(QStringLiteral(RTMANAGER_PATH), hostPort, "stophost",
+                                           {"manager.components.precreate=ConsoleOut"}, &error);
     QVERIFY2(host, qPrintable(error));
 
     Deploy::TargetOptions target;

@@ -164,6 +164,17 @@ QProcess *LiveSystem::startManager(const QString &program, quint16 port, const Q
     return startProcess(program, arguments, QStringLiteral("rtmanager ready"), error);
 }
 
+QProcess *LiveSystem::startHostManager(const QString &program, quint16 port, const QString &host,
+                                       const QStringList &options, QString *error)
+{
+    return startManager(program, port,
+                        QStringList {QStringLiteral("corba.nameservers=") + namingServer(),
+                                     QStringLiteral("naming.formats=%1.host_cxt/%n.rtc").arg(host),
+                                     QStringLiteral("manager.naming_formats=%1.host_cxt/%n.mgr").arg(host)}
+                            + options,
+                        error);
+}
+
 QProcess *LiveSystem::startProcess(const QString &program, const QStringList &arguments,
                                    const QString &readyText, QString *error, int timeoutMs)
 {

@@ -56,6 +56,12 @@ public:
      */
     QProcess *startManager(const QString &program, quint16 port, const QStringList &options,
                            QString *error);
+    /**
+     * startManager() registered in this system's name server, the manager and its components
+     * under the context `<host>.host_cxt`.
+     */
+    QProcess *startHostManager(const QString &program, quint16 port, const QString &host,
+                               const QStringList &options, QString *error);
     /// Kills and reaps one process started here.
     void stop(QProcess *process);
     /// Kills and reaps everything started here.
