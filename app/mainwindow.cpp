@@ -184,13 +184,13 @@ void MainWindow::createFileActions()
     connect(open, &QAction::triggered, m_controller, &DocumentController::openWithDialog);
 
     addDocumentAction(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("save"),
-                      QKeySequence::Save, &DocumentController::save);
+                      QKeySequence::Save, [this](Document *d) { return m_controller->save(d); });
     addDocumentAction(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("save-as"),
-                      QKeySequence::SaveAs, &DocumentController::saveAs);
+                      QKeySequence::SaveAs, [this](Document *d) { return m_controller->saveAs(d); });
     addDocumentAction(QStringLiteral("actionClose"), tr("&Close"), QStringLiteral("close"),
-                      QKeySequence::Close, &DocumentController::close);
+                      QKeySequence::Close, [this](Document *d) { return m_controller->close(d); });
     addDocumentAction(QStringLiteral("actionExportDiagram"), tr("&Export Diagram…"), QString(),
-                      {}, &DocumentController::exportDiagram);
+                      {}, [this](Document *d) { return m_controller->exportDiagram(d); });
 
     QAction *quit = addAction(QStringLiteral("actionQuit"), tr("&Quit"), QStringLiteral("quit"),
                               QKeySequence::Quit);
@@ -200,12 +200,12 @@ void MainWindow::createFileActions()
 
 void MainWindow::addDocumentAction(const QString &objectName, const QString &text,
                                    const QString &iconName, const QKeySequence &shortcut,
-                                   bool (DocumentController::*operation)(Document *))
+                                   const std::function<bool(Document *)> &operation)
 {
     QAction *action = addAction(objectName, text, iconName, shortcut);
     connect(action, &QAction::triggered, this, [this, operation] {
         if (Document *document = activeDocument())
-            (m_controller->*operation)(document);
+            operation(document);
     });
 }
 
@@ -346,7 +346,7 @@ void MainWindow::createPerspectives()
         connect(perspective, &Perspective::currentDocumentChanged, this,
                 &MainWindow::updateActiveDocument);
         connect(perspective, &Perspective::closeRequested, m_controller,
-                &DocumentController::close);
+                [this](Document *d) { return m_controller->close(d); });
     }
 }
 

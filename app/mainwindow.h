@@ -7,6 +7,7 @@
 
 #include <QMainWindow>
 
+#include <functional>
 #include <memory>
 
 class QAction;
@@ -72,7 +73,7 @@ private:
     void createFileActions();
     void addDocumentAction(const QString &objectName, const QString &text, const QString &icon,
                            const QKeySequence &shortcut,
-                           bool (DocumentController::*operation)(Document *));
+                           const std::function<bool(Document *)> &operation);
     void createEditActions();
     void createPerspectiveActions();
     void createMenus();

@@ -69,6 +69,8 @@ public:
     }
     RTC::ReturnCode_t onInitialize() override
     {
+        // IDL structs leave their numbers uninitialised, as in OpenRTM-aist: the count starts here.
+        m_out.data = 0;
         addOutPort("out", m_outOut);
         if (!bindParameter("step", m_step, "1") || !bindParameter("gains", m_gains, "0.5,1.5"))
             return RTC::RTC_ERROR;

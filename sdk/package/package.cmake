@@ -81,6 +81,19 @@ set(RTSDK_OPENRTM_LIBRARIES_BARE "${RTSDK_LIBRARY_NAME};${RTSDK_ORB_LIBRARIES}")
 list(TRANSFORM RTSDK_OPENRTM_LIBRARIES_BARE PREPEND "-l" OUTPUT_VARIABLE rtsdk_l_flags)
 string(JOIN " " RTSDK_LIBS_L ${rtsdk_l_flags})
 string(JOIN " " RTSDK_OPENRTM_LIBRARIES_SPACED ${RTSDK_OPENRTM_LIBRARIES_BARE})
+# An SDK built with sanitizers (the asan preset) needs their runtimes first in every program that
+# links it, so its exported link flags carry them; a normal build exports none.
+string(REGEX MATCHALL "-fsanitize=[^ ]+" rtsdk_sanitize "${CMAKE_CXX_FLAGS}")
+list(FILTER rtsdk_sanitize EXCLUDE REGEX "fuzzer")
+set(RTSDK_LINK_ITEMS "")
+set(RTSDK_LINK_FLAGS_SPACED "")
+if(rtsdk_sanitize)
+    string(JOIN " " rtsdk_sanitize_spaced ${rtsdk_sanitize})
+    string(APPEND RTSDK_LIBS_L " ${rtsdk_sanitize_spaced}")
+    set(RTSDK_LINK_FLAGS_SPACED " ${rtsdk_sanitize_spaced}")
+    list(JOIN rtsdk_sanitize ";" rtsdk_sanitize_items)
+    set(RTSDK_LINK_ITEMS ";${rtsdk_sanitize_items}")
+endif()
 
 set(rtsdk_cmake_dir "${rtsdk_prefix}/lib/cmake/${RTSDK_RTM_DIR}")
 configure_file("${rtsdk_package_dir}/OpenRTMConfig.cmake.in"

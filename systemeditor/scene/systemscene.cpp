@@ -187,10 +187,12 @@ void SystemScene::renameComponentItem(const QString &oldName, const QString &new
 {
     if (ComponentItem *item = m_components.take(oldName))
         m_components.insert(newName, item);
-    refreshComponent(newName);
-    // Connector ends name the component; take them from the model again.
+    // Connector ends name the component; take them from the model again before its ports are
+    // rebuilt, so that reattaching finds the connectors by the new name (with the old one they
+    // kept pointing at the deleted ports).
     for (const QString &id : m_model->connectorsOf(newName))
         refreshConnector(id);
+    refreshComponent(newName);
 }
 
 void SystemScene::addConnectorItem(const QString &connectorId)
