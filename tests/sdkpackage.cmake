@@ -8,6 +8,7 @@ target_compile_definitions(tst_sdkpackage PRIVATE
     RTSTUDIO_CMAKE_COMMAND="${CMAKE_COMMAND}"
     RTSTUDIO_CMAKE_GENERATOR="${CMAKE_GENERATOR}"
     RTSTUDIO_CMAKE_MAKE_PROGRAM="${CMAKE_MAKE_PROGRAM}"
-    RTSTUDIO_CXX_COMPILER="${CMAKE_CXX_COMPILER}")
+    RTSTUDIO_CXX_COMPILER="${CMAKE_CXX_COMPILER}"
+    RTSDK_LINK_FLAGS="${RTSDK_LINK_FLAGS_SPACED}")
 add_dependencies(tst_sdkpackage rtsdk rtsdk_stage)
 set_tests_properties(tst_sdkpackage PROPERTIES LABELS sdk TIMEOUT 600)

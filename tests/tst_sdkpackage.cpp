@@ -222,8 +222,11 @@ void TestSdkPackage::cmakePackage()
     QCOMPARE(vars.value(QStringLiteral("OPENRTM_DIR")), root);
     QCOMPARE(vars.value(QStringLiteral("OPENRTM_INCLUDE_DIRS")), includeDirs.join(QLatin1Char(';')));
     QCOMPARE(vars.value(QStringLiteral("OPENRTM_LIBRARY_DIRS")), root + QStringLiteral("/lib"));
+    // A build with sanitizers adds their flags, which every program linking the SDK needs.
+    const QStringList linkFlags = QStringLiteral(RTSDK_LINK_FLAGS).split(QLatin1Char(' '), Qt::SkipEmptyParts);
     QCOMPARE(vars.value(QStringLiteral("OPENRTM_LIBRARIES")),
-             QStringLiteral("rtstudio_rtm;omniORB4;omniDynamic4;omnithread;pthread"));
+             (QStringList {"rtstudio_rtm", "omniORB4", "omniDynamic4", "omnithread", "pthread"} + linkFlags)
+                 .join(QLatin1Char(';')));
     QCOMPARE(vars.value(QStringLiteral("OPENRTM_CFLAGS")), QStringLiteral("-Wall;-fPIC;-O2"));
     QVERIFY(vars.contains(QStringLiteral("OPENRTM_LDFLAGS")));
     QCOMPARE(vars.value(QStringLiteral("OPENRTM_INCLUDE_DIR")), rtm);
@@ -260,7 +263,7 @@ void TestSdkPackage::rtmConfig_data()
         {"--exec-prefix", "@"},
         {"--version", "2.1.0"},
         {"--idlc", "omniidl"},
-        {"--libs-only-l", "-lrtstudio_rtm -lomniORB4 -lomniDynamic4 -lomnithread -lpthread"},
+        {"--libs-only-l", "-lrtstudio_rtm -lomniORB4 -lomniDynamic4 -lomnithread -lpthread" RTSDK_LINK_FLAGS},
         {"--libs-only-L", "-L@/lib"},
         {"--rtm-includedir", "@/include/openrtm-2.1"},
         {"--rtm-idldir", "@/include/openrtm-2.1/rtm/idl"},

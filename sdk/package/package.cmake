@@ -89,11 +89,15 @@ set(RTSDK_LINK_ITEMS "")
 set(RTSDK_LINK_FLAGS_SPACED "")
 if(rtsdk_sanitize)
     string(JOIN " " rtsdk_sanitize_spaced ${rtsdk_sanitize})
+    # With the libraries: 1.2-era projects take nothing but `rtm-config --libs-only-l`.
     string(APPEND RTSDK_LIBS_L " ${rtsdk_sanitize_spaced}")
     set(RTSDK_LINK_FLAGS_SPACED " ${rtsdk_sanitize_spaced}")
     list(JOIN rtsdk_sanitize ";" rtsdk_sanitize_items)
     set(RTSDK_LINK_ITEMS ";${rtsdk_sanitize_items}")
 endif()
+# The package test expects them too.
+set(RTSDK_LINK_ITEMS "${RTSDK_LINK_ITEMS}" CACHE INTERNAL "Link flags the SDK exports besides its libraries")
+set(RTSDK_LINK_FLAGS_SPACED "${RTSDK_LINK_FLAGS_SPACED}" CACHE INTERNAL "The same, space-separated")
 
 set(rtsdk_cmake_dir "${rtsdk_prefix}/lib/cmake/${RTSDK_RTM_DIR}")
 configure_file("${rtsdk_package_dir}/OpenRTMConfig.cmake.in"
