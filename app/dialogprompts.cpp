@@ -12,19 +12,20 @@ namespace Studio {
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Studio::DialogPrompts", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Studio::DialogPrompts)
+};
 
 QString xmlFilter()
 {
-    return tr("Profile XML (*.xml)");
+    return Text::tr("Profile XML (*.xml)");
 }
 
 QString yamlFilter()
 {
-    return tr("Profile YAML (*.yaml *.yml)");
+    return Text::tr("Profile YAML (*.yaml *.yml)");
 }
 
 } // namespace
@@ -35,10 +36,10 @@ DialogPrompts::DialogPrompts(QWidget *parent)
 
 UserPrompts::SaveChoice DialogPrompts::askSaveChanges(const QString &documentName)
 {
-    QMessageBox box(QMessageBox::Warning, tr("Unsaved Changes"),
-                    tr("\"%1\" has unsaved changes.").arg(documentName),
+    QMessageBox box(QMessageBox::Warning, Text::tr("Unsaved Changes"),
+                    Text::tr("\"%1\" has unsaved changes.").arg(documentName),
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_parent);
-    box.setInformativeText(tr("Do you want to save them before closing?"));
+    box.setInformativeText(Text::tr("Do you want to save them before closing?"));
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
     case QMessageBox::Save:
@@ -53,14 +54,14 @@ UserPrompts::SaveChoice DialogPrompts::askSaveChanges(const QString &documentNam
 QStringList DialogPrompts::askOpenFileNames(const QString &directory)
 {
     const QString filters
-        = tr("Profiles (*.xml *.yaml *.yml)") + QStringLiteral(";;") + tr("All files (*)");
-    return QFileDialog::getOpenFileNames(m_parent, tr("Open Profile"), directory, filters);
+        = Text::tr("Profiles (*.xml *.yaml *.yml)") + QStringLiteral(";;") + Text::tr("All files (*)");
+    return QFileDialog::getOpenFileNames(m_parent, Text::tr("Open Profile"), directory, filters);
 }
 
 QString DialogPrompts::askSaveFileName(Profile::ProfileKind kind, const QString &suggestedPath)
 {
-    const QString title = kind == Profile::ProfileKind::Rts ? tr("Save System Profile")
-                                                            : tr("Save Component Profile");
+    const QString title = kind == Profile::ProfileKind::Rts ? Text::tr("Save System Profile")
+                                                            : Text::tr("Save Component Profile");
     QString selected = Profile::formatForFileName(suggestedPath) == Profile::FileFormat::Yaml
         ? yamlFilter()
         : xmlFilter();
@@ -88,8 +89,8 @@ void DialogPrompts::showProblems(const QString &title, const QString &text,
 void DialogPrompts::showAbout()
 {
     QMessageBox::about(
-        m_parent, tr("About RT Studio"),
-        tr("<h3>RT Studio %1</h3>"
+        m_parent, Text::tr("About RT Studio"),
+        Text::tr("<h3>RT Studio %1</h3>"
            "<p>An IDE for OpenRTM-aist RT-Components: design components in the Builder, "
            "compose them into systems in the System Editor.</p>"
            "<p>Reads and writes RTC and RTS profiles (XML and YAML) as OpenRTP does.</p>"
@@ -109,10 +110,10 @@ DialogPrompts::askSystemProfileInfo(const SystemEditor::SystemProfileInfo &curre
 
 QString DialogPrompts::askExportFileName(const QString &suggestedPath)
 {
-    const QString png = tr("PNG image (*.png)");
-    const QString svg = tr("SVG drawing (*.svg)");
+    const QString png = Text::tr("PNG image (*.png)");
+    const QString svg = Text::tr("SVG drawing (*.svg)");
     QString selected = suggestedPath.endsWith(QLatin1String(".svg")) ? svg : png;
-    QString path = QFileDialog::getSaveFileName(m_parent, tr("Export Diagram"), suggestedPath,
+    QString path = QFileDialog::getSaveFileName(m_parent, Text::tr("Export Diagram"), suggestedPath,
                                                 png + QStringLiteral(";;") + svg, &selected);
     if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty())
         path += selected == svg ? QStringLiteral(".svg") : QStringLiteral(".png");

@@ -7,19 +7,20 @@ namespace Studio::FieldRules {
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Studio::FieldRules", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Studio::FieldRules)
+};
 
 } // namespace
 
 QString systemIdPartProblem(const QString &text)
 {
     if (text.trimmed().isEmpty())
-        return tr("This field is required (it is part of the system id).");
+        return Text::tr("This field is required (it is part of the system id).");
     if (text.contains(QLatin1Char(':')))
-        return tr("':' separates the parts of the system id and cannot be used here.");
+        return Text::tr("':' separates the parts of the system id and cannot be used here.");
     return {};
 }
 

@@ -2,6 +2,7 @@
 #include "diagramexport.h"
 #include "mainwindow.h"
 #include "rtstudioresources.h"
+#include "uilanguage.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -52,6 +53,10 @@ int main(int argc, char *argv[])
     QApplication::setApplicationDisplayName(QStringLiteral("RT Studio"));
     QApplication::setApplicationVersion(QStringLiteral(RTSTUDIO_VERSION));
     QApplication::setWindowIcon(QIcon(Resources::applicationIconPath()));
+    QString languageError;
+    if (!Studio::UiLanguage::install(
+            &app, Studio::UiLanguage::resolve(Studio::UiLanguage::chosen()), &languageError))
+        std::fprintf(stderr, "%s\n", qPrintable(languageError));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

@@ -13,6 +13,7 @@
 #include "rtseditor.h"
 #include "rtstudioresources.h"
 #include "systemcanvas.h"
+#include "uilanguage.h"
 
 #include <QActionGroup>
 #include <QCloseEvent>
@@ -285,6 +286,8 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(m_problemsDock->toggleViewAction());
     view->addActions(m_online->toggleActions());
+    view->addSeparator();
+    createLanguageMenu(view->addMenu(tr("&Language")));
 
     QMenu *online = menuBar()->addMenu(tr("&Online"));
     QAction *restore = online->addAction(tr("&Restore System on Live Managers…"));
@@ -300,6 +303,32 @@ void MainWindow::createMenus()
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action("actionAbout"));
     fillRecentFilesMenu();
+}
+
+void MainWindow::createLanguageMenu(QMenu *menu)
+{
+    menu->setObjectName(QStringLiteral("menuLanguage"));
+    auto *group = new QActionGroup(menu);
+    // Each language is named in itself, so that it can be found whatever the GUI shows now.
+    const QList<std::pair<QString, QString>> choices = {
+        {QString(), tr("System Default")},
+        {QStringLiteral("en"), QStringLiteral("English")},
+        {QStringLiteral("ja"), QStringLiteral("日本語")},
+    };
+    const QString current = UiLanguage::chosen();
+    for (const auto &[language, label] : choices) {
+        QAction *choice = menu->addAction(label);
+        choice->setObjectName(QStringLiteral("actionLanguage_")
+                              + (language.isEmpty() ? QStringLiteral("system") : language));
+        choice->setCheckable(true);
+        choice->setChecked(language == current);
+        group->addAction(choice);
+        connect(choice, &QAction::triggered, this, [this, language = language] {
+            UiLanguage::choose(language);
+            statusBar()->showMessage(
+                tr("RT Studio shows the chosen language when it starts again."), 10000);
+        });
+    }
 }
 
 void MainWindow::createToolBar()

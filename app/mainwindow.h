@@ -77,6 +77,7 @@ private:
     void createEditActions();
     void createPerspectiveActions();
     void createMenus();
+    void createLanguageMenu(QMenu *menu);
     void createToolBar();
     void createPerspectives();
     void createProblemsDock();

@@ -8,10 +8,11 @@ namespace Builder::FieldRules {
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Builder::FieldRules", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Builder::FieldRules)
+};
 
 bool isNameCharacter(QChar c)
 {
@@ -35,7 +36,7 @@ QString listOf(const QString &characters)
 QString componentNameProblem(const QString &text)
 {
     if (text.isEmpty())
-        return tr("A name is required.");
+        return Text::tr("A name is required.");
     QString bad;
     for (QChar c : text) {
         if (!isNameCharacter(c) && !bad.contains(c))
@@ -43,13 +44,13 @@ QString componentNameProblem(const QString &text)
     }
     if (bad.isEmpty())
         return {};
-    return tr("Only letters A-Z a-z, digits, '_', '-' and ':' are allowed (found %1).")
+    return Text::tr("Only letters A-Z a-z, digits, '_', '-' and ':' are allowed (found %1).")
         .arg(listOf(bad));
 }
 
 QString requiredProblem(const QString &text)
 {
-    return text.trimmed().isEmpty() ? tr("This field is required.") : QString();
+    return text.trimmed().isEmpty() ? Text::tr("This field is required.") : QString();
 }
 
 QString nonNegativeIntegerProblem(const QString &text)
@@ -59,7 +60,7 @@ QString nonNegativeIntegerProblem(const QString &text)
     bool ok = false;
     const qlonglong value = text.trimmed().toLongLong(&ok);
     if (!ok || value < 0)
-        return tr("Enter a whole number of 0 or more (0 = unlimited).");
+        return Text::tr("Enter a whole number of 0 or more (0 = unlimited).");
     return {};
 }
 
@@ -70,7 +71,7 @@ QString nonNegativeNumberProblem(const QString &text)
     bool ok = false;
     const double value = text.trimmed().toDouble(&ok);
     if (!ok || value < 0 || qIsNaN(value) || qIsInf(value))
-        return tr("Enter a number of 0 or more.");
+        return Text::tr("Enter a number of 0 or more.");
     return {};
 }
 
@@ -78,7 +79,7 @@ QString enumerationProblem(const QString &text, const QStringList &allowed)
 {
     if (allowed.contains(text))
         return {};
-    return tr("\"%1\" is not one of %2.").arg(text, allowed.join(QStringLiteral(", ")));
+    return Text::tr("\"%1\" is not one of %2.").arg(text, allowed.join(QStringLiteral(", ")));
 }
 
 QString identifierProblem(const QString &text)
@@ -86,7 +87,7 @@ QString identifierProblem(const QString &text)
     static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_][A-Za-z0-9_]*$"));
     if (text.isEmpty() || identifier.match(text).hasMatch())
         return {};
-    return tr("A variable name is a letter or '_' followed by letters, digits or '_'.");
+    return Text::tr("A variable name is a letter or '_' followed by letters, digits or '_'.");
 }
 
 } // namespace Builder::FieldRules

@@ -9,10 +9,11 @@ namespace {
 
 using Profile::RtcBasicInfo;
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Builder::ComponentModel", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Builder::ComponentModel)
+};
 
 /// The model member behind a required field; null for the optional ones.
 QString *requiredMember(RtcBasicInfo &info, BasicField field)
@@ -158,33 +159,33 @@ QString ComponentModel::fieldLabel(BasicField field)
 {
     switch (field) {
     case BasicField::Name:
-        return tr("component name");
+        return Text::tr("component name");
     case BasicField::Description:
-        return tr("description");
+        return Text::tr("description");
     case BasicField::Version:
-        return tr("version");
+        return Text::tr("version");
     case BasicField::Vendor:
-        return tr("vendor");
+        return Text::tr("vendor");
     case BasicField::Category:
-        return tr("category");
+        return Text::tr("category");
     case BasicField::ComponentType:
-        return tr("component type");
+        return Text::tr("component type");
     case BasicField::ActivityType:
-        return tr("activity type");
+        return Text::tr("activity type");
     case BasicField::MaxInstances:
-        return tr("max instances");
+        return Text::tr("max instances");
     case BasicField::ExecutionType:
-        return tr("execution type");
+        return Text::tr("execution type");
     case BasicField::ComponentKind:
-        return tr("component kind");
+        return Text::tr("component kind");
     case BasicField::Abstract:
-        return tr("abstract");
+        return Text::tr("abstract");
     case BasicField::RtcType:
-        return tr("RTC type");
+        return Text::tr("RTC type");
     case BasicField::ExecutionRate:
         break;
     }
-    return tr("execution rate");
+    return Text::tr("execution rate");
 }
 
 QString ComponentModel::idAfterEdit(const Profile::RtcProfile &profile, BasicField field,
@@ -321,13 +322,13 @@ QString partLabel(Part part)
 {
     switch (part) {
     case Part::DataPort:
-        return tr("data port");
+        return Text::tr("data port");
     case Part::ServicePort:
-        return tr("service port");
+        return Text::tr("service port");
     case Part::Configuration:
         break;
     }
-    return tr("configuration parameter");
+    return Text::tr("configuration parameter");
 }
 
 } // namespace Builder

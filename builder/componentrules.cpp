@@ -13,10 +13,11 @@ namespace {
 
 using namespace Profile;
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Builder::ComponentRules", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Builder::ComponentRules)
+};
 
 void add(FieldProblems &problems, const QString &field, const QString &message)
 {
@@ -36,11 +37,11 @@ QString describe(const RtcProfile &profile, const NameUse &use)
 {
     if (use.interfaceIndex >= 0) {
         const RtcServicePort &port = profile.servicePorts.at(use.index);
-        return tr("interface %1 of %2").arg(port.interfaces.at(use.interfaceIndex).name, port.name);
+        return Text::tr("interface %1 of %2").arg(port.interfaces.at(use.interfaceIndex).name, port.name);
     }
     if (use.part == Part::Configuration)
-        return tr("configuration parameter %1").arg(profile.configurations.at(use.index).name);
-    return tr("%1 #%2").arg(partLabel(use.part)).arg(use.index + 1);
+        return Text::tr("configuration parameter %1").arg(profile.configurations.at(use.index).name);
+    return Text::tr("%1 #%2").arg(partLabel(use.part)).arg(use.index + 1);
 }
 
 /// Port names of data and service ports share one name space.
@@ -61,7 +62,7 @@ QString duplicatePortName(const RtcProfile &profile, Part part, int index)
     }
     if (uses.isEmpty())
         return {};
-    return tr("The port name '%1' is already used by %2.")
+    return Text::tr("The port name '%1' is already used by %2.")
         .arg(name, describe(profile, uses.first()));
 }
 
@@ -92,7 +93,7 @@ QString duplicateVariable(const RtcProfile &profile, const QString &variable, co
     }
     for (const NameUse &use : uses) {
         if (!same(use))
-            return tr("The variable name '%1' is already used by %2.")
+            return Text::tr("The variable name '%1' is already used by %2.")
                 .arg(variable, describe(profile, use));
     }
     return {};
@@ -137,11 +138,11 @@ QString widgetProblem(const RtcConfiguration &configuration)
     if (!step.isEmpty() && (kind == QLatin1String("slider") || kind == QLatin1String("spin"))) {
         const QString problem = FieldRules::nonNegativeNumberProblem(step);
         if (!problem.isEmpty())
-            return tr("The step of a %1 must be a number of 0 or more.").arg(kind);
+            return Text::tr("The step of a %1 must be a number of 0 or more.").arg(kind);
     }
     if (kind == QLatin1String("radio")
         && !(configuration.constraint && isEnumerationConstraint(*configuration.constraint)))
-        return tr("A radio widget needs an enumeration constraint such as (a,b,c).");
+        return Text::tr("A radio widget needs an enumeration constraint such as (a,b,c).");
     return {};
 }
 
@@ -154,7 +155,7 @@ FieldProblems configurationProblems(const RtcProfile &profile, int index)
         if (i != index && !configuration.name.isEmpty()
             && profile.configurations.at(i).name == configuration.name) {
             add(problems, QStringLiteral("name"),
-                tr("The parameter name '%1' is already used by parameter #%2.")
+                Text::tr("The parameter name '%1' is already used by parameter #%2.")
                     .arg(configuration.name)
                     .arg(i + 1));
         }
@@ -195,7 +196,7 @@ FieldProblems interfaceProblems(const RtcProfile &profile, int portIndex, int in
         if (i != interfaceIndex && !interface.name.isEmpty()
             && port.interfaces.at(i).name == interface.name) {
             add(problems, QStringLiteral("name"),
-                tr("The interface name '%1' is already used in this port.").arg(interface.name));
+                Text::tr("The interface name '%1' is already used in this port.").arg(interface.name));
         }
     }
     add(problems, QStringLiteral("direction"),
@@ -214,7 +215,7 @@ QString compositePortsProblem(const RtcProfile &profile)
         return {};
     if (profile.dataPorts.isEmpty() && profile.servicePorts.isEmpty())
         return {};
-    return tr("A composite component (category '%1') may have no ports.")
+    return Text::tr("A composite component (category '%1') may have no ports.")
         .arg(profile.basicInfo.category);
 }
 
@@ -243,17 +244,17 @@ Diagnostics generationProblems(const RtcProfile &profile)
         }
     };
     if (const QString composite = compositePortsProblem(profile); !composite.isEmpty())
-        report(tr("component"), {{QStringLiteral("category"), composite}});
+        report(Text::tr("component"), {{QStringLiteral("category"), composite}});
     for (Part part : {Part::DataPort, Part::ServicePort, Part::Configuration}) {
         const int count = part == Part::DataPort ? profile.dataPorts.size()
             : part == Part::ServicePort          ? profile.servicePorts.size()
                                                  : profile.configurations.size();
         for (int i = 0; i < count; ++i)
-            report(tr("%1 #%2").arg(partLabel(part)).arg(i + 1), itemProblems(profile, part, i));
+            report(Text::tr("%1 #%2").arg(partLabel(part)).arg(i + 1), itemProblems(profile, part, i));
     }
     for (int p = 0; p < profile.servicePorts.size(); ++p) {
         for (int i = 0; i < profile.servicePorts.at(p).interfaces.size(); ++i)
-            report(tr("interface %1 of %2")
+            report(Text::tr("interface %1 of %2")
                        .arg(profile.servicePorts.at(p).interfaces.at(i).name,
                             profile.servicePorts.at(p).name),
                    interfaceProblems(profile, p, i));

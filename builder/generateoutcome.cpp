@@ -8,10 +8,11 @@ namespace Builder {
 
 namespace {
 
-QString tr(const char *text, int n = -1)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Builder::GenerateOutcome", text, nullptr, n);
-}
+    Q_DECLARE_TR_FUNCTIONS(Builder::GenerateOutcome)
+};
 
 void addFiles(Profile::Diagnostics *rows, const QDir &folder, const QStringList &paths,
               const QString &what)
@@ -36,15 +37,15 @@ GenerateOutcome GenerateOutcome::fromReport(const QString &folder,
     // Warnings first: they are what the user should look at.
     for (const QString &warning : report.warnings)
         outcome.diagnostics.append(Profile::Diagnostic::warning(folder, 0, 0, warning));
-    addFiles(&outcome.diagnostics, dir, report.created, tr("created"));
+    addFiles(&outcome.diagnostics, dir, report.created, Text::tr("created"));
     addFiles(&outcome.diagnostics, dir, report.merged,
-             tr("merged (generated regions refreshed, your code kept)"));
-    addFiles(&outcome.diagnostics, dir, report.overwritten, tr("overwritten"));
-    addFiles(&outcome.diagnostics, dir, report.kept, tr("kept as it was (not regenerated)"));
-    addFiles(&outcome.diagnostics, dir, report.backups, tr("backup of the previous file"));
+             Text::tr("merged (generated regions refreshed, your code kept)"));
+    addFiles(&outcome.diagnostics, dir, report.overwritten, Text::tr("overwritten"));
+    addFiles(&outcome.diagnostics, dir, report.kept, Text::tr("kept as it was (not regenerated)"));
+    addFiles(&outcome.diagnostics, dir, report.backups, Text::tr("backup of the previous file"));
     const int written
         = int(report.created.size() + report.merged.size() + report.overwritten.size());
-    outcome.summary = tr("Generated into %1: %2 written, %3 kept, %4 unchanged.")
+    outcome.summary = Text::tr("Generated into %1: %2 written, %3 kept, %4 unchanged.")
                           .arg(QDir::toNativeSeparators(folder))
                           .arg(written)
                           .arg(report.kept.size())
@@ -56,7 +57,7 @@ GenerateOutcome GenerateOutcome::refused(const Profile::Diagnostics &problems)
 {
     GenerateOutcome outcome;
     outcome.diagnostics = problems;
-    outcome.summary = tr("Generate refused: %n problem(s) to fix first.", int(problems.size()));
+    outcome.summary = Text::tr("Generate refused: %n problem(s) to fix first.", nullptr, int(problems.size()));
     return outcome;
 }
 
@@ -64,7 +65,7 @@ GenerateOutcome GenerateOutcome::failed(const Profile::Diagnostics &problems)
 {
     GenerateOutcome outcome;
     outcome.diagnostics = problems;
-    outcome.summary = tr("Code generation failed with %n problem(s).", int(problems.size()));
+    outcome.summary = Text::tr("Code generation failed with %n problem(s).", nullptr, int(problems.size()));
     return outcome;
 }
 

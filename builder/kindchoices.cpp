@@ -8,10 +8,11 @@ namespace Builder::KindChoices {
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Builder::KindChoices", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Builder::KindChoices)
+};
 
 const QString ComponentSuffix = QStringLiteral("Component");
 
@@ -47,8 +48,8 @@ QString componentKindProblem(const QString &kind)
             return {};
     }
     if (kind.trimmed().isEmpty())
-        return tr("Choose at least one component kind (DataFlow, FSM or MultiMode).");
-    return tr("\"%1\" names none of the kinds DataFlow, FiniteStateMachine or MultiMode.")
+        return Text::tr("Choose at least one component kind (DataFlow, FSM or MultiMode).");
+    return Text::tr("\"%1\" names none of the kinds DataFlow, FiniteStateMachine or MultiMode.")
         .arg(kind);
 }
 
@@ -89,7 +90,7 @@ QString languageProblem(const QString &kind)
 {
     const QStringList entries = languageEntries(kind);
     if (entries.isEmpty())
-        return tr("Choose at least one language.");
+        return Text::tr("Choose at least one language.");
     QStringList unknown;
     for (const QString &entry : entries) {
         if (!languages().contains(entry, Qt::CaseInsensitive))
@@ -97,7 +98,7 @@ QString languageProblem(const QString &kind)
     }
     if (unknown.isEmpty())
         return {};
-    return tr("No code can be generated for %1 (C++, Python or Java).")
+    return Text::tr("No code can be generated for %1 (C++, Python or Java).")
         .arg(unknown.join(QStringLiteral(", ")));
 }
 

@@ -11,14 +11,15 @@ namespace {
 
 using namespace Profile;
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Builder::ProfileChanges", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Builder::ProfileChanges)
+};
 
 QString shown(const std::optional<QString> &value)
 {
-    return value ? QStringLiteral("'%1'").arg(*value) : tr("(none)");
+    return value ? QStringLiteral("'%1'").arg(*value) : Text::tr("(none)");
 }
 
 void basicChanges(const RtcProfile &before, const RtcProfile &after, QStringList &lines)
@@ -28,13 +29,13 @@ void basicChanges(const RtcProfile &before, const RtcProfile &after, QStringList
     for (int f = int(BasicField::Name); f <= int(BasicField::ExecutionRate); ++f) {
         const auto field = BasicField(f);
         if (a.basicField(field) != b.basicField(field)) {
-            lines << tr("Basic: %1 %2 → %3")
+            lines << Text::tr("Basic: %1 %2 → %3")
                          .arg(ComponentModel::fieldLabel(field), shown(a.basicField(field)),
                               shown(b.basicField(field)));
         }
     }
     if (before.basicInfo.doc != after.basicInfo.doc)
-        lines << tr("Documentation changed");
+        lines << Text::tr("Documentation changed");
 }
 
 void actionChanges(const RtcProfile &before, const RtcProfile &after, QStringList &lines)
@@ -47,11 +48,11 @@ void actionChanges(const RtcProfile &before, const RtcProfile &after, QStringLis
         const bool onA = a && a->isImplemented();
         const bool onB = b && b->isImplemented();
         if (onA != onB)
-            lines << tr("%1: %2 → %3")
-                         .arg(rtcActionKey(action), onA ? tr("on") : tr("off"),
-                              onB ? tr("on") : tr("off"));
+            lines << Text::tr("%1: %2 → %3")
+                         .arg(rtcActionKey(action), onA ? Text::tr("on") : Text::tr("off"),
+                              onB ? Text::tr("on") : Text::tr("off"));
         else
-            lines << tr("%1 changed").arg(rtcActionKey(action));
+            lines << Text::tr("%1 changed").arg(rtcActionKey(action));
     }
 }
 
@@ -69,14 +70,14 @@ void listChanges(const QList<T> &before, const QList<T> &after, const QString &w
     };
     for (const T &item : before) {
         if (!find(after, item.name))
-            lines << tr("%1 '%2' removed").arg(what, item.name);
+            lines << Text::tr("%1 '%2' removed").arg(what, item.name);
     }
     for (const T &item : after) {
         const T *old = find(before, item.name);
         if (!old)
-            lines << tr("%1 '%2' added").arg(what, item.name);
+            lines << Text::tr("%1 '%2' added").arg(what, item.name);
         else if (*old != item)
-            lines << tr("%1 '%2' changed").arg(what, item.name);
+            lines << Text::tr("%1 '%2' changed").arg(what, item.name);
     }
     QStringList namesBefore;
     QStringList namesAfter;
@@ -86,7 +87,7 @@ void listChanges(const QList<T> &before, const QList<T> &after, const QString &w
         namesAfter << item.name;
     if (namesBefore != namesAfter && namesBefore.size() == namesAfter.size()
         && std::is_permutation(namesBefore.cbegin(), namesBefore.cend(), namesAfter.cbegin()))
-        lines << tr("Order of %1s changed").arg(what.toLower());
+        lines << Text::tr("Order of %1s changed").arg(what.toLower());
 }
 
 } // namespace
@@ -97,16 +98,16 @@ QStringList describeChanges(const RtcProfile &before, const RtcProfile &after)
         return {};
     QStringList lines;
     if (before.id != after.id)
-        lines << tr("Component id '%1' → '%2'").arg(before.id, after.id);
+        lines << Text::tr("Component id '%1' → '%2'").arg(before.id, after.id);
     basicChanges(before, after, lines);
     actionChanges(before, after, lines);
-    listChanges(before.dataPorts, after.dataPorts, tr("Data port"), lines);
-    listChanges(before.servicePorts, after.servicePorts, tr("Service port"), lines);
-    listChanges(before.configurations, after.configurations, tr("Configuration parameter"), lines);
+    listChanges(before.dataPorts, after.dataPorts, Text::tr("Data port"), lines);
+    listChanges(before.servicePorts, after.servicePorts, Text::tr("Service port"), lines);
+    listChanges(before.configurations, after.configurations, Text::tr("Configuration parameter"), lines);
     if (before.language != after.language)
-        lines << tr("Language and environment changed");
+        lines << Text::tr("Language and environment changed");
     if (lines.isEmpty())
-        lines << tr("Other content changed (dates, properties, unknown elements)");
+        lines << Text::tr("Other content changed (dates, properties, unknown elements)");
     return lines;
 }
 

@@ -12,10 +12,11 @@ namespace Builder::ProfileTransfer {
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("Builder::ProfileTransfer", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Builder::ProfileTransfer)
+};
 
 } // namespace
 
@@ -30,14 +31,14 @@ QUndoCommand *importCommand(ComponentModel *model, const QString &path,
         // Importing a system would replace the component with nothing it could describe.
         diagnostics->append(Profile::Diagnostic::error(
             path, 0, 0,
-            tr("This file holds a system (RTS Profile), not a component; open it in the System "
+            Text::tr("This file holds a system (RTS Profile), not a component; open it in the System "
                "Editor instead.")));
         return nullptr;
     }
     if (*loaded->rtc == model->profile())
         return nullptr;
     auto *command = new ReplaceProfileCommand(model, *loaded->rtc);
-    command->setText(tr("Import %1").arg(QFileInfo(path).fileName()));
+    command->setText(Text::tr("Import %1").arg(QFileInfo(path).fileName()));
     return command;
 }
 
@@ -49,7 +50,7 @@ bool exportProfile(const Profile::RtcProfile &profile, const QString &path,
 
 QString fileFilter()
 {
-    return tr("RTC Profile (*.xml *.yaml *.yml);;All files (*)");
+    return Text::tr("RTC Profile (*.xml *.yaml *.yml);;All files (*)");
 }
 
 } // namespace Builder::ProfileTransfer

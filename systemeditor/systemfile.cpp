@@ -17,10 +17,11 @@ namespace {
 const QString ComponentPathProperty = QStringLiteral("COMPONENT_PATH_ID");
 const QString RtcFolder = QStringLiteral("RTCs");
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("SystemFile", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(SystemEditor::SystemFile)
+};
 
 Diagnostic fileProblem(const QString &file, Diagnostic::Severity severity,
                        const QString &message)
@@ -74,7 +75,7 @@ QHash<QString, RtcProfile> resolveRtcProfiles(const RtsProfile &profile,
             if (warnings) {
                 warnings->append(fileProblem(
                     systemFilePath, Diagnostic::Severity::Warning,
-                    tr("The RTC profile of %1 (%2) could not be read; its ports come from the "
+                    Text::tr("The RTC profile of %1 (%2) could not be read; its ports come from the "
                        "system file.")
                         .arg(component.instanceName, component.pathUri)));
                 for (Diagnostic d : problems) {
@@ -98,7 +99,7 @@ std::optional<LoadedSystem> loadSystemFile(const QString &path, Diagnostics *dia
     if (!loaded || !loaded->rts) {
         if (loaded && !loaded->rts)
             problems.append(fileProblem(path, Diagnostic::Severity::Error,
-                                        tr("The file is no RT system profile.")));
+                                        Text::tr("The file is no RT system profile.")));
         if (diagnostics)
             diagnostics->append(problems);
         return std::nullopt;
@@ -158,7 +159,7 @@ bool saveSystemFile(SystemModel &model, const QString &path, Diagnostics *diagno
             if (!folder.mkpath(RtcFolder)) {
                 if (diagnostics)
                     diagnostics->append(fileProblem(folder.filePath(RtcFolder), Diagnostic::Severity::Error,
-                                                    tr("Cannot create the folder.")));
+                                                    Text::tr("Cannot create the folder.")));
                 return false;
             }
             if (!saveRtcProfileFile(*rtc, folder.filePath(component.pathUri), diagnostics))

@@ -16,10 +16,11 @@ using Op = Profile::RtcConstraintOperator;
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("SystemEditor::ParameterRule", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(SystemEditor::ParameterRule)
+};
 
 std::optional<double> number(const QString &text)
 {
@@ -208,16 +209,16 @@ QString ParameterRule::check(const QString &value) const
         // Several choices, comma-separated, each one of the enumeration.
         for (const QString &part : value.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
             if (!choices.contains(part.trimmed()))
-                return tr("'%1' is not one of %2")
+                return Text::tr("'%1' is not one of %2")
                     .arg(part.trimmed(), choices.join(QStringLiteral(", ")));
         }
         return {};
     }
     const bool numeric = (minimum || maximum) && constraint->kind == RtcConstraintKind::Unit;
     if (numeric && !number(value))
-        return tr("'%1' is not a number").arg(value);
+        return Text::tr("'%1' is not a number").arg(value);
     if (!satisfies(*constraint, value))
-        return tr("'%1' does not satisfy %2").arg(value, constraintText);
+        return Text::tr("'%1' does not satisfy %2").arg(value, constraintText);
     return {};
 }
 

@@ -18,10 +18,11 @@ namespace SystemEditor {
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("SystemEditor::DiagramExport", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(SystemEditor::DiagramExport)
+};
 
 /// The area to draw; an empty system still gives a small blank page.
 QRectF sourceRect(const SystemScene &scene)
@@ -44,16 +45,16 @@ bool writeSvg(SystemScene &scene, const QString &path, QString *error)
     generator.setFileName(path);
     generator.setSize(source.size().toSize());
     generator.setViewBox(QRectF(QPointF(0, 0), source.size()));
-    generator.setTitle(tr("RT System diagram"));
+    generator.setTitle(Text::tr("RT System diagram"));
     QPainter painter;
     if (!painter.begin(&generator)) {
-        *error = tr("Cannot write \"%1\".").arg(path);
+        *error = Text::tr("Cannot write \"%1\".").arg(path);
         return false;
     }
     paintScene(scene, painter, QRectF(QPointF(0, 0), source.size()));
     painter.end();
     if (!QFileInfo::exists(path)) {
-        *error = tr("Cannot write \"%1\".").arg(path);
+        *error = Text::tr("Cannot write \"%1\".").arg(path);
         return false;
     }
     return true;
@@ -85,12 +86,12 @@ bool DiagramExport::exportToFile(SystemModel &model, const QString &outputPath, 
         return writeSvg(scene, outputPath, &message);
     }
     if (!QImageWriter::supportedImageFormats().contains(suffix.toLatin1())) {
-        message = tr("Unknown image format \"%1\": use .svg or .png.").arg(suffix);
+        message = Text::tr("Unknown image format \"%1\": use .svg or .png.").arg(suffix);
         return false;
     }
     QImageWriter writer(outputPath, suffix.toLatin1());
     if (!writer.write(renderImage(model))) {
-        message = tr("Cannot write \"%1\": %2").arg(outputPath, writer.errorString());
+        message = Text::tr("Cannot write \"%1\": %2").arg(outputPath, writer.errorString());
         return false;
     }
     return true;
@@ -140,7 +141,7 @@ bool DiagramExport::exportSystemFile(const QString &systemPath, const QString &o
         for (const Profile::Diagnostic &diagnostic : std::as_const(diagnostics))
             lines << diagnostic.toString();
         if (error)
-            *error = lines.isEmpty() ? tr("Cannot read \"%1\".").arg(systemPath)
+            *error = lines.isEmpty() ? Text::tr("Cannot read \"%1\".").arg(systemPath)
                                      : lines.join(QLatin1Char('\n'));
         return false;
     }

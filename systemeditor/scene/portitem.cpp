@@ -10,31 +10,32 @@ namespace SystemEditor {
 
 namespace {
 
-QString tr(const char *text)
+/// The strings of this file, in one translation context.
+struct Text
 {
-    return QCoreApplication::translate("SystemEditor::PortItem", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(SystemEditor::PortItem)
+};
 
 QString kindText(PortKind kind)
 {
     switch (kind) {
     case PortKind::DataIn:
-        return tr("InPort");
+        return Text::tr("InPort");
     case PortKind::DataOut:
-        return tr("OutPort");
+        return Text::tr("OutPort");
     case PortKind::Service:
-        return tr("Service port");
+        return Text::tr("Service port");
     case PortKind::Unknown:
         break;
     }
-    return tr("Port (no RTC profile)");
+    return Text::tr("Port (no RTC profile)");
 }
 
 QString interfaceLine(const InterfaceInfo &interface)
 {
     const QString polarity = interface.polarity == Profile::RtcDirection::Required
-        ? tr("required")
-        : tr("provided");
+        ? Text::tr("required")
+        : Text::tr("provided");
     return QStringLiteral("%1 %2 : %3").arg(polarity, interface.name, interface.type);
 }
 
@@ -70,7 +71,7 @@ QString PortItem::toolTipFor(const PortInfo &port)
 {
     QStringList lines {QStringLiteral("%1: %2").arg(kindText(port.kind), port.profileName)};
     if (port.isDataPort() && !port.dataType.isEmpty())
-        lines << tr("Data type: %1").arg(port.dataType);
+        lines << Text::tr("Data type: %1").arg(port.dataType);
     for (const InterfaceInfo &interface : port.interfaces)
         lines << interfaceLine(interface);
     return lines.join(QLatin1Char('\n'));
