@@ -8,6 +8,7 @@
 #include "rtconnectcommand.h"
 #include "rtcryocommand.h"
 #include "rtcwdcommand.h"
+#include "rtdatacommand.h"
 #include "rtfindcommand.h"
 #include "rtlscommand.h"
 #include "rtmgrcommand.h"
@@ -92,6 +93,8 @@ std::unique_ptr<CommandLine> createCommandLine()
         commandLine->addCommand(std::make_unique<RtStateCommand>(action));
     commandLine->addCommand(std::make_unique<RtConnectCommand>(true));
     commandLine->addCommand(std::make_unique<RtConnectCommand>(false));
+    commandLine->addCommand(std::make_unique<RtDataCommand>(RtDataCommand::Mode::Print));
+    commandLine->addCommand(std::make_unique<RtDataCommand>(RtDataCommand::Mode::Inject));
     commandLine->addCommand(std::make_unique<RtConfCommand>());
     commandLine->addCommand(std::make_unique<RtMgrCommand>());
     using System = RtSystemCommand::Action;

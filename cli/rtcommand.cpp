@@ -9,6 +9,7 @@
 #include <QJsonObject>
 #include <QJsonValue>
 #include <QProcessEnvironment>
+#include <QRegularExpression>
 
 namespace Cli {
 
@@ -38,8 +39,10 @@ RtOptions parseOptions(const QStringList &arguments, const QStringList &flags,
     bool onlyPositionals = false;
     for (int i = 0; i < arguments.size(); ++i) {
         const QString argument = arguments.at(i);
+        // Negative numbers are values (`rtctl inject … -3`), not options.
+        static const QRegularExpression negativeNumber(QStringLiteral("^-\\.?\\d"));
         if (onlyPositionals || !argument.startsWith(QLatin1Char('-'))
-            || argument == QLatin1String("-")) {
+            || argument == QLatin1String("-") || negativeNumber.match(argument).hasMatch()) {
             parsed.positionals.append(argument);
             continue;
         }

@@ -170,10 +170,17 @@ ConnectorInfo PortConnection::connect(const std::vector<PortInfo> &ports,
                     QStringLiteral("%1: already connected (connector %2)").arg(path, connector.id));
         }
     }
+    return connectAsGiven(ports, request.name.isEmpty() ? defaultName(ports) : request.name,
+                          request.id, properties, path);
+}
+
+ConnectorInfo PortConnection::connectAsGiven(const std::vector<PortInfo> &ports, const QString &name,
+                                             const QString &id, const Properties &properties,
+                                             const QString &path)
+{
     RTC::ConnectorProfile profile;
-    profile.name
-        = (request.name.isEmpty() ? defaultName(ports) : request.name).toUtf8().constData();
-    profile.connector_id = request.id.toUtf8().constData();
+    profile.name = name.toUtf8().constData();
+    profile.connector_id = id.toUtf8().constData();
     profile.properties = toNVList(properties);
     profile.ports.length(CORBA::ULong(ports.size()));
     for (size_t i = 0; i < ports.size(); ++i)
@@ -181,9 +188,8 @@ ConnectorInfo PortConnection::connect(const std::vector<PortInfo> &ports,
     RTC::PortService_var source = portService(ports.front(), path);
     const int code = call(path, [&] { return int(source->connect(profile)); });
     checkReturnCode(code, path, QStringLiteral("connect"));
-    ConnectorInfo info {toQString(profile.name.in()), toQString(profile.connector_id.in()),
-                        namesOf(ports), fromNVList(profile.properties)};
-    return info;
+    return {toQString(profile.name.in()), toQString(profile.connector_id.in()), namesOf(ports),
+            fromNVList(profile.properties)};
 }
 
 void PortConnection::disconnect(const PortInfo &port, const QString &connectorId,

@@ -49,6 +49,14 @@ public:
      */
     static ConnectorInfo connect(const std::vector<PortInfo> &ports,
                                  const ConnectionRequest &request, const QString &path);
+    /**
+     * Connects `ports` (at least one; the first one is called) with exactly `properties`, without
+     * rtcon's defaults and checks: for connectors whose other end is not a port (a tool's own
+     * InPortCdr object named in the properties). Returns the connector as the port filled it in.
+     */
+    static ConnectorInfo connectAsGiven(const std::vector<PortInfo> &ports, const QString &name,
+                                        const QString &id, const Properties &properties,
+                                        const QString &path);
     /// Disconnects the connector `connectorId` through `port`.
     static void disconnect(const PortInfo &port, const QString &connectorId, const QString &path);
     /// Disconnects every connector of `port`.

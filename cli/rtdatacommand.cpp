@@ -1,0 +1,296 @@
+// SPDX-License-Identifier: MIT
+#include "rtdatacommand.h"
+
+#include "cdrcodec.h"
+#include "corbaerror.h"
+#include "idltypelibrary.h"
+#include "installation.h"
+#include "porttap.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonDocument>
+#include <QThread>
+
+#include <atomic>
+#include <csignal>
+
+namespace Cli {
+
+using namespace Corba;
+
+namespace {
+
+std::atomic<bool> s_interrupted {false};
+
+void onInterrupt(int)
+{
+    s_interrupted = true;
+}
+
+/// SIGINT and SIGTERM end the command's loop (and so remove its connector) while this lives.
+class InterruptScope
+{
+public:
+    InterruptScope()
+    {
+        s_interrupted = false;
+        m_int = std::signal(SIGINT, onInterrupt);
+        m_term = std::signal(SIGTERM, onInterrupt);
+    }
+    ~InterruptScope()
+    {
+        std::signal(SIGINT, m_int);
+        std::signal(SIGTERM, m_term);
+    }
+
+private:
+    void (*m_int)(int);
+    void (*m_term)(int);
+};
+
+/// The port's data type as a scoped IDL name, or a Corba::Error saying which IDL is missing.
+QString portType(const Codegen::CdrCodec &codec, const PortInfo &port, const QString &where)
+{
+    const QString dataType = propertyValue(port.properties, QStringLiteral("dataport.data_type"));
+    const QString type = Codegen::CdrCodec::typeName(dataType);
+    if (type.isEmpty())
+        throw Error(Error::Kind::Incompatible, QStringLiteral("%1: the port names no data type").arg(where));
+    if (!codec.knows(type))
+        throw Error(Error::Kind::NotFound,
+                    QStringLiteral("%1: data type %2 is in none of the IDL files (add its folder "
+                                   "with --idl-dir)")
+                        .arg(where, dataType));
+    return type;
+}
+
+/// OpenRTM's IDL first, then the user's folders.
+QStringList idlFolders(const RtOptions &options)
+{
+    return QStringList {Codegen::Installation::bundledIdlDirectory()}
+        + options.values.value(QStringLiteral("--idl-dir"));
+}
+
+Properties connectorSettings(const RtOptions &options, QString *error)
+{
+    Properties properties;
+    for (const QString &property : options.values.value(QStringLiteral("-p"))) {
+        const qsizetype equals = property.indexOf(QLatin1Char('='));
+        if (equals <= 0) {
+            *error = QStringLiteral("-p needs KEY=VALUE, got '%1'").arg(property);
+            return {};
+        }
+        properties.append({property.left(equals), property.mid(equals + 1)});
+    }
+    return properties;
+}
+
+} // namespace
+
+QString RtDataCommand::name() const
+{
+    return m_mode == Mode::Print ? QStringLiteral("print") : QStringLiteral("inject");
+}
+
+QString RtDataCommand::summary() const
+{
+    return m_mode == Mode::Print ? QStringLiteral("print the samples an OutPort sends")
+                                 : QStringLiteral("write samples into an InPort");
+}
+
+QString RtDataCommand::usage() const
+{
+    if (m_mode == Mode::Print)
+        return QStringLiteral(
+            "Usage: rtctl print [-n COUNT] [-r RATE] [--json] [-p KEY=VALUE]... [--idl-dir DIR]...\n"
+            "                   [--timeout MS] PATH:PORT\n\n"
+            "Prints each sample an OutPort sends (rtshell's rtprint), through a connector of its\n"
+            "own that is removed on exit, Ctrl-C or error. Timed types print as\n"
+            "`[sec.nsec] member=value …`; --json prints one JSON object per line (what\n"
+            "`rtctl inject --from` reads back).\n"
+            "  -n COUNT         stop after COUNT samples (default: until interrupted)\n"
+            "  -r RATE          print at most RATE samples a second (the others are skipped)\n"
+            "  --json           JSON lines, members in declaration order\n"
+            "  -p KEY=VALUE     connector property; the default subscription type `new` never\n"
+            "                   holds the component up but skips samples written in a burst,\n"
+            "                   dataport.subscription_type=flush shows every one\n"
+            "  --idl-dir DIR    more folders with IDL files for user data types (repeatable)\n");
+    return QStringLiteral(
+        "Usage: rtctl inject [-n TIMES] [-r RATE] [--from FILE] [-p KEY=VALUE]...\n"
+        "                    [--idl-dir DIR]... [--timeout MS] PATH:PORT [VALUE...]\n\n"
+        "Writes samples into an InPort (rtshell's rtinject), through a connector of its own that\n"
+        "is removed afterwards. Each VALUE is one sample: a JSON object with the type's members\n"
+        "(`{\"data\": 5}`; a timed type's tm defaults to now), or for a type with one member\n"
+        "besides tm that member's value alone (`42`, `[1.5,2]`, or text for a string).\n"
+        "  --from FILE      one sample per line (JSON, as `rtctl print --json` writes; - = stdin)\n"
+        "  -n TIMES         write the samples TIMES times (default 1)\n"
+        "  -r RATE          samples a second (default: one after the other)\n"
+        "  --linger MS      keep the connector MS milliseconds after the last sample (default\n"
+        "                   500): an InPort's unread samples go with the connector, so the\n"
+        "                   component needs a moment to read them\n"
+        "  -p KEY=VALUE     connector property\n"
+        "  --idl-dir DIR    more folders with IDL files for user data types (repeatable)\n");
+}
+
+QStringList RtDataCommand::flagNames() const
+{
+    return m_mode == Mode::Print ? QStringList {QStringLiteral("--json")} : QStringList();
+}
+
+QStringList RtDataCommand::optionNames() const
+{
+    QStringList names {QStringLiteral("-n"), QStringLiteral("-r"), QStringLiteral("-p"),
+                       QStringLiteral("--idl-dir")};
+    if (m_mode == Mode::Inject)
+        names += {QStringLiteral("--from"), QStringLiteral("--linger")};
+    return names;
+}
+
+int RtDataCommand::execute(const RtOptions &options, Streams streams)
+{
+    if (options.positionals.isEmpty())
+        return usageError(QStringLiteral("%1 needs a PATH:PORT").arg(name()), streams);
+    if (m_mode == Mode::Print && options.positionals.size() != 1)
+        return usageError(QStringLiteral("print watches one PATH:PORT"), streams);
+    const RtPath target = path(options.positionals.first());
+    if (target.port.isEmpty())
+        throw Error(Error::Kind::BadPath, target.toString() + QStringLiteral(": no :PORT given"));
+    const QString where = target.toString();
+    const PortInfo port = component(target).port(target.port);
+    return m_mode == Mode::Print ? print(options, port, where, streams)
+                                 : inject(options, port, where, streams);
+}
+
+int RtDataCommand::print(const RtOptions &options, const PortInfo &port, const QString &where,
+                         Streams streams)
+{
+    bool ok = true;
+    const qint64 count = options.value(QStringLiteral("-n"), QStringLiteral("0")).toLongLong(&ok);
+    if (!ok || count < 0)
+        return usageError(QStringLiteral("-n needs a number of samples"), streams);
+    const double rate = options.value(QStringLiteral("-r"), QStringLiteral("0")).toDouble(&ok);
+    if (!ok || rate < 0)
+        return usageError(QStringLiteral("-r needs a rate in samples a second"), streams);
+    QString error;
+    const Properties settings = connectorSettings(options, &error);
+    if (!error.isEmpty())
+        return usageError(error, streams);
+
+    const Codegen::IdlTypeLibrary library(idlFolders(options));
+    const Codegen::CdrCodec codec(library.model());
+    const QString type = portType(codec, port, where);
+    const bool json = options.has(QStringLiteral("--json"));
+
+    const InterruptScope interrupts;
+    PortTap tap(port, settings, where);
+    qint64 printed = 0;
+    QElapsedTimer sincePrinted;
+    while (!s_interrupted && (count == 0 || printed < count)) {
+        const std::optional<PortSample> sample = tap.next(100);
+        if (!sample)
+            continue;
+        if (rate > 0 && sincePrinted.isValid() && sincePrinted.elapsed() < 1000.0 / rate)
+            continue;
+        QString problem;
+        const QJsonValue value = codec.decode(type, sample->cdr, tap.littleEndian(), &problem);
+        if (!problem.isEmpty()) {
+            report(QStringLiteral("%1: a sample of %2 bytes is no %3: %4")
+                       .arg(where).arg(sample->cdr.size()).arg(type, problem),
+                   streams);
+            continue;
+        }
+        streams.out << (json ? codec.toJson(type, value) : codec.toText(type, value)) << '\n';
+        streams.out.flush();
+        sincePrinted.start();
+        ++printed;
+    }
+    tap.close();
+    return ExitOk;
+}
+
+int RtDataCommand::inject(const RtOptions &options, const PortInfo &port, const QString &where,
+                          Streams streams)
+{
+    bool ok = true;
+    const qint64 times = options.value(QStringLiteral("-n"), QStringLiteral("1")).toLongLong(&ok);
+    if (!ok || times < 1)
+        return usageError(QStringLiteral("-n needs a number of times"), streams);
+    const double rate = options.value(QStringLiteral("-r"), QStringLiteral("0")).toDouble(&ok);
+    if (!ok || rate < 0)
+        return usageError(QStringLiteral("-r needs a rate in samples a second"), streams);
+    const int linger = options.value(QStringLiteral("--linger"), QStringLiteral("500")).toInt(&ok);
+    if (!ok || linger < 0)
+        return usageError(QStringLiteral("--linger needs a number of milliseconds"), streams);
+    QString error;
+    const Properties settings = connectorSettings(options, &error);
+    if (!error.isEmpty())
+        return usageError(error, streams);
+
+    // Every value is checked before anything is written.
+    QStringList texts = options.positionals.mid(1);
+    QStringList origins;
+    for (int i = 0; i < texts.size(); ++i)
+        origins.append(QStringLiteral("value %1").arg(i + 1));
+    const QString from = options.value(QStringLiteral("--from"));
+    if (!from.isEmpty()) {
+        QFile file;
+        const bool opened = from == QLatin1String("-") ? file.open(stdin, QIODevice::ReadOnly)
+                                                       : (file.setFileName(from), file.open(QIODevice::ReadOnly));
+        if (!opened)
+            throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(from, file.errorString()));
+        int line = 0;
+        while (!file.atEnd()) {
+            ++line;
+            const QString text = QString::fromUtf8(file.readLine()).trimmed();
+            if (text.isEmpty() || text.startsWith(QLatin1Char('#')))
+                continue;
+            texts.append(text);
+            origins.append(QStringLiteral("%1:%2").arg(from).arg(line));
+        }
+    }
+    if (texts.isEmpty())
+        return usageError(QStringLiteral("inject needs at least one VALUE or --from FILE"), streams);
+
+    const Codegen::IdlTypeLibrary library(idlFolders(options));
+    const Codegen::CdrCodec codec(library.model());
+    const QString type = portType(codec, port, where);
+    QList<QJsonValue> values;
+    for (int i = 0; i < texts.size(); ++i) {
+        QString problem;
+        const QJsonValue value = codec.parseArgument(type, texts.at(i), &problem);
+        if (problem.isEmpty())
+            codec.encode(type, value, true, &problem);
+        if (!problem.isEmpty())
+            throw Error(Error::Kind::BadPath,
+                        QStringLiteral("%1: %2 for %3: %4").arg(where, origins.at(i), type, problem));
+        values.append(value);
+    }
+
+    const InterruptScope interrupts;
+    PortFeed feed(port, settings, where);
+    QElapsedTimer clock;
+    clock.start();
+    qint64 written = 0;
+    for (qint64 round = 0; round < times && !s_interrupted; ++round) {
+        for (const QJsonValue &value : std::as_const(values)) {
+            if (s_interrupted)
+                break;
+            if (rate > 0) {
+                const qint64 due = qint64(double(written) * 1000.0 / rate);
+                while (clock.elapsed() < due && !s_interrupted)
+                    QThread::msleep(ulong(std::min<qint64>(50, due - clock.elapsed())));
+            }
+            // Encoded when sent, so that a timed type's default timestamp is the sending time.
+            feed.put(codec.encode(type, value, feed.littleEndian(), nullptr));
+            ++written;
+        }
+    }
+    QElapsedTimer lingering;
+    lingering.start();
+    while (lingering.elapsed() < linger && !s_interrupted)
+        QThread::msleep(ulong(std::min<qint64>(50, linger - lingering.elapsed())));
+    feed.close();
+    return ExitOk;
+}
+
+} // namespace Cli

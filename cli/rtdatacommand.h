@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "rtcommand.h"
+
+namespace Codegen {
+class CdrCodec;
+}
+
+namespace Cli {
+
+/**
+ * `rtctl print PATH:PORT` and `rtctl inject PATH:PORT VALUE…` (rtshell's rtprint and rtinject):
+ * samples of a data port as text or JSON lines, through a connector of rtctl's own that is
+ * removed again on exit, on Ctrl-C and on errors. Types come from OpenRTM's IDL and the folders
+ * given with --idl-dir.
+ */
+class RtDataCommand : public RtCommand
+{
+public:
+    enum class Mode { Print, Inject };
+    explicit RtDataCommand(Mode mode)
+        : m_mode(mode)
+    { }
+
+    QString name() const override;
+    QString summary() const override;
+    QString usage() const override;
+
+protected:
+    QStringList flagNames() const override;
+    QStringList optionNames() const override;
+    int execute(const RtOptions &options, Streams streams) override;
+
+private:
+    int print(const RtOptions &options, const Corba::PortInfo &port, const QString &where,
+              Streams streams);
+    int inject(const RtOptions &options, const Corba::PortInfo &port, const QString &where,
+               Streams streams);
+
+    Mode m_mode;
+};
+
+} // namespace Cli

@@ -1,0 +1,740 @@
+// SPDX-License-Identifier: MIT
+#include "cdrcodec.h"
+
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtEndian>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace Codegen {
+
+namespace {
+
+constexpr int MaxDepth = 64;
+
+/// The primitive kinds of CDR, with their size (= alignment).
+enum class Primitive { Boolean, Char, Octet, Short, UShort, Long, ULong, LongLong, ULongLong, Float, Double };
+
+std::optional<Primitive> primitive(const QString &keyword)
+{
+    static const QHash<QString, Primitive> kinds = {
+        {QStringLiteral("boolean"), Primitive::Boolean},
+        {QStringLiteral("char"), Primitive::Char},
+        {QStringLiteral("octet"), Primitive::Octet},
+        {QStringLiteral("int8"), Primitive::Octet},
+        {QStringLiteral("uint8"), Primitive::Octet},
+        {QStringLiteral("short"), Primitive::Short},
+        {QStringLiteral("int16"), Primitive::Short},
+        {QStringLiteral("unsigned short"), Primitive::UShort},
+        {QStringLiteral("uint16"), Primitive::UShort},
+        {QStringLiteral("long"), Primitive::Long},
+        {QStringLiteral("int32"), Primitive::Long},
+        {QStringLiteral("unsigned long"), Primitive::ULong},
+        {QStringLiteral("uint32"), Primitive::ULong},
+        {QStringLiteral("long long"), Primitive::LongLong},
+        {QStringLiteral("int64"), Primitive::LongLong},
+        {QStringLiteral("unsigned long long"), Primitive::ULongLong},
+        {QStringLiteral("uint64"), Primitive::ULongLong},
+        {QStringLiteral("float"), Primitive::Float},
+        {QStringLiteral("double"), Primitive::Double},
+    };
+    const auto it = kinds.constFind(keyword);
+    return it == kinds.constEnd() ? std::nullopt : std::optional<Primitive>(*it);
+}
+
+int sizeOf(Primitive kind)
+{
+    switch (kind) {
+    case Primitive::Boolean:
+    case Primitive::Char:
+    case Primitive::Octet:
+        return 1;
+    case Primitive::Short:
+    case Primitive::UShort:
+        return 2;
+    case Primitive::Long:
+    case Primitive::ULong:
+    case Primitive::Float:
+        return 4;
+    case Primitive::LongLong:
+    case Primitive::ULongLong:
+    case Primitive::Double:
+        return 8;
+    }
+    return 1;
+}
+
+QJsonValue floatValue(double value)
+{
+    if (std::isnan(value))
+        return QStringLiteral("NaN");
+    if (std::isinf(value))
+        return value > 0 ? QStringLiteral("Infinity") : QStringLiteral("-Infinity");
+    return value;
+}
+
+/// The failure of one decode or encode, with the member path where it happened.
+struct Failure
+{
+    QString message;
+};
+
+/// Walks a type with the model; the base of the reader and the writer.
+class TypeWalker
+{
+public:
+    explicit TypeWalker(const IdlModel &model)
+        : m_model(model)
+    { }
+
+protected:
+    [[noreturn]] void fail(const QString &message) const
+    {
+        throw Failure {m_path.isEmpty() ? message
+                                        : QStringLiteral("%1: %2").arg(m_path.join(QString()), message)};
+    }
+
+    /// Typedefs followed; arrays whose element is a typedef of an array are kept as written.
+    IdlType resolved(const IdlType &type) const { return m_model.resolve(type); }
+
+    void enter(const QString &step)
+    {
+        if (m_path.size() > MaxDepth)
+            fail(QStringLiteral("types nested deeper than %1 levels").arg(MaxDepth));
+        m_path.append(step);
+    }
+    void leave() { m_path.removeLast(); }
+
+    const IdlModel &m_model;
+    QStringList m_path;
+};
+
+class Reader : public TypeWalker
+{
+public:
+    Reader(const IdlModel &model, const QByteArray &bytes, bool little)
+        : TypeWalker(model)
+        , m_bytes(bytes)
+        , m_little(little)
+    { }
+
+    QJsonValue read(const IdlType &written)
+    {
+        const IdlType type = resolved(written);
+        switch (type.kind) {
+        case IdlType::Kind::Basic: {
+            const std::optional<Primitive> kind = primitive(type.name);
+            if (!kind)
+                fail(QStringLiteral("values of type '%1' cannot be shown").arg(type.name));
+            return readPrimitive(*kind);
+        }
+        case IdlType::Kind::String: {
+            const quint32 length = quint32(readUnsigned(4));
+            if (length == 0 || length > remaining())
+                fail(QStringLiteral("string of %1 bytes where %2 remain").arg(length).arg(remaining()));
+            const QByteArray text = m_bytes.mid(m_position, length - 1);
+            m_position += length;
+            return QString::fromUtf8(text);
+        }
+        case IdlType::Kind::WString: {
+            // GIOP 1.2: the length in bytes, then UTF-16 code units in the stream's byte order.
+            const quint32 length = quint32(readUnsigned(4));
+            if (length % 2 != 0 || length > remaining())
+                fail(QStringLiteral("wide string of %1 bytes where %2 remain").arg(length).arg(remaining()));
+            QString text;
+            for (quint32 i = 0; i < length / 2; ++i)
+                text.append(QChar(char16_t(readUnsigned(2, /*align=*/false))));
+            return text;
+        }
+        case IdlType::Kind::Sequence: {
+            const quint32 count = quint32(readUnsigned(4));
+            // Every element takes at least one byte: a count beyond what remains is malformed.
+            if (count > remaining())
+                fail(QStringLiteral("sequence of %1 elements where %2 bytes remain").arg(count).arg(remaining()));
+            if (!type.bound.isEmpty() && count > type.bound.toUInt())
+                fail(QStringLiteral("sequence of %1 elements exceeds its bound %2").arg(count).arg(type.bound));
+            QJsonArray items;
+            for (quint32 i = 0; i < count; ++i) {
+                enter(QStringLiteral("[%1]").arg(i));
+                items.append(read(type.element.front()));
+                leave();
+            }
+            return items;
+        }
+        case IdlType::Kind::Array:
+            return readArray(type.element.front(), type.dimensions, 0);
+        case IdlType::Kind::Fixed:
+            fail(QStringLiteral("fixed-point values cannot be shown"));
+        case IdlType::Kind::Named:
+            return readNamed(type.name);
+        }
+        fail(QStringLiteral("unknown type"));
+    }
+
+    qsizetype remaining() const { return m_bytes.size() - m_position; }
+
+private:
+    QJsonValue readArray(const IdlType &element, const QStringList &dimensions, int level)
+    {
+        const int count = dimensions.value(level).toInt();
+        QJsonArray items;
+        for (int i = 0; i < count; ++i) {
+            enter(QStringLiteral("[%1]").arg(i));
+            items.append(level + 1 < dimensions.size() ? readArray(element, dimensions, level + 1)
+                                                       : read(element));
+            leave();
+        }
+        return items;
+    }
+
+    QJsonValue readNamed(const QString &name)
+    {
+        if (const auto it = m_model.structs.constFind(name); it != m_model.structs.constEnd()) {
+            QJsonObject object;
+            for (const IdlMember &member : it->members) {
+                enter(QLatin1Char('.') + member.name);
+                object.insert(member.name, read(member.type));
+                leave();
+            }
+            return object;
+        }
+        if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd()) {
+            const quint32 index = quint32(readUnsigned(4));
+            if (index >= quint32(it->enumerators.size()))
+                fail(QStringLiteral("%1 has no enumerator %2").arg(name).arg(index));
+            return it->enumerators.at(int(index));
+        }
+        if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd())
+            return readUnion(*it);
+        fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));
+    }
+
+    QJsonValue readUnion(const IdlUnion &type)
+    {
+        const QJsonValue discriminator = read(type.discriminator);
+        const QString label = discriminator.isString()
+            ? discriminator.toString()
+            : discriminator.isBool() ? (discriminator.toBool() ? QStringLiteral("TRUE") : QStringLiteral("FALSE"))
+                                     : QString::number(discriminator.toInteger());
+        const IdlUnionCase *chosen = nullptr;
+        for (const IdlUnionCase &c : type.cases) {
+            for (const QString &l : c.labels) {
+                if (l == label || l.section(QStringLiteral("::"), -1) == label)
+                    chosen = &c;
+            }
+            if (!chosen && c.isDefault)
+                chosen = &c;
+        }
+        QJsonObject object {{QStringLiteral("_d"), discriminator}};
+        if (chosen) {
+            enter(QLatin1Char('.') + chosen->member.name);
+            object.insert(chosen->member.name, read(chosen->member.type));
+            leave();
+        }
+        return object;
+    }
+
+    void align(int size)
+    {
+        m_position = (m_position + size - 1) / size * size;
+        if (m_position > m_bytes.size())
+            fail(QStringLiteral("the sample ends early (%1 bytes)").arg(m_bytes.size()));
+    }
+
+    quint64 readUnsigned(int size, bool aligned = true)
+    {
+        if (aligned)
+            align(size);
+        if (remaining() < size)
+            fail(QStringLiteral("the sample ends early (%1 bytes)").arg(m_bytes.size()));
+        const uchar *at = reinterpret_cast<const uchar *>(m_bytes.constData()) + m_position;
+        m_position += size;
+        quint64 value = 0;
+        for (int i = 0; i < size; ++i)
+            value |= quint64(at[m_little ? i : size - 1 - i]) << (8 * i);
+        return value;
+    }
+
+    QJsonValue readPrimitive(Primitive kind)
+    {
+        const quint64 raw = readUnsigned(sizeOf(kind));
+        switch (kind) {
+        case Primitive::Boolean:
+            return raw != 0;
+        case Primitive::Char:
+            return QString(QChar::fromLatin1(char(raw)));
+        case Primitive::Octet:
+        case Primitive::UShort:
+        case Primitive::ULong:
+            return qint64(raw);
+        case Primitive::Short:
+            return qint64(qint16(raw));
+        case Primitive::Long:
+            return qint64(qint32(raw));
+        case Primitive::LongLong:
+            return qint64(raw);
+        case Primitive::ULongLong:
+            return raw <= quint64(std::numeric_limits<qint64>::max()) ? QJsonValue(qint64(raw))
+                                                                      : QJsonValue(double(raw));
+        case Primitive::Float: {
+            const quint32 bits = quint32(raw);
+            float value;
+            std::memcpy(&value, &bits, sizeof value);
+            return floatValue(value);
+        }
+        case Primitive::Double: {
+            double value;
+            std::memcpy(&value, &raw, sizeof value);
+            return floatValue(value);
+        }
+        }
+        return {};
+    }
+
+    const QByteArray &m_bytes;
+    const bool m_little;
+    qsizetype m_position = 0;
+};
+
+class Writer : public TypeWalker
+{
+public:
+    Writer(const IdlModel &model, bool little)
+        : TypeWalker(model)
+        , m_little(little)
+    { }
+
+    QByteArray bytes() const { return m_bytes; }
+
+    void write(const IdlType &written, const QJsonValue &value)
+    {
+        const IdlType type = resolved(written);
+        switch (type.kind) {
+        case IdlType::Kind::Basic: {
+            const std::optional<Primitive> kind = primitive(type.name);
+            if (!kind)
+                fail(QStringLiteral("values of type '%1' cannot be written").arg(type.name));
+            writePrimitive(*kind, value);
+            return;
+        }
+        case IdlType::Kind::String: {
+            if (!value.isString() && !value.isUndefined() && !value.isNull())
+                fail(QStringLiteral("a string is expected"));
+            const QByteArray text = value.toString().toUtf8();
+            if (!type.bound.isEmpty() && text.size() > type.bound.toInt())
+                fail(QStringLiteral("the string is longer than its bound %1").arg(type.bound));
+            writeUnsigned(4, quint64(text.size() + 1));
+            m_bytes.append(text);
+            m_bytes.append('\0');
+            return;
+        }
+        case IdlType::Kind::WString: {
+            const QString text = value.toString();
+            writeUnsigned(4, quint64(text.size() * 2));
+            for (const QChar c : text)
+                writeUnsigned(2, c.unicode(), /*align=*/false);
+            return;
+        }
+        case IdlType::Kind::Sequence: {
+            if (!value.isArray() && !value.isUndefined() && !value.isNull())
+                fail(QStringLiteral("a list [ … ] is expected"));
+            const QJsonArray items = value.toArray();
+            if (!type.bound.isEmpty() && items.size() > type.bound.toInt())
+                fail(QStringLiteral("%1 elements exceed the bound %2").arg(items.size()).arg(type.bound));
+            writeUnsigned(4, quint64(items.size()));
+            for (qsizetype i = 0; i < items.size(); ++i) {
+                enter(QStringLiteral("[%1]").arg(i));
+                write(type.element.front(), items.at(i));
+                leave();
+            }
+            return;
+        }
+        case IdlType::Kind::Array:
+            writeArray(type.element.front(), type.dimensions, 0, value);
+            return;
+        case IdlType::Kind::Fixed:
+            fail(QStringLiteral("fixed-point values cannot be written"));
+        case IdlType::Kind::Named:
+            writeNamed(type.name, value);
+            return;
+        }
+    }
+
+private:
+    void writeArray(const IdlType &element, const QStringList &dimensions, int level,
+                    const QJsonValue &value)
+    {
+        const int count = dimensions.value(level).toInt();
+        const QJsonArray items = value.toArray();
+        if (!value.isUndefined() && !value.isNull() && items.size() != count)
+            fail(QStringLiteral("an array of %1 elements is expected").arg(count));
+        for (int i = 0; i < count; ++i) {
+            enter(QStringLiteral("[%1]").arg(i));
+            if (level + 1 < dimensions.size())
+                writeArray(element, dimensions, level + 1, items.at(i));
+            else
+                write(element, i < items.size() ? items.at(i) : QJsonValue());
+            leave();
+        }
+    }
+
+    void writeNamed(const QString &name, const QJsonValue &value)
+    {
+        if (const auto it = m_model.structs.constFind(name); it != m_model.structs.constEnd()) {
+            if (!value.isObject() && !value.isUndefined() && !value.isNull())
+                fail(QStringLiteral("an object { … } is expected for %1").arg(name));
+            const QJsonObject object = value.toObject();
+            for (auto key = object.constBegin(); key != object.constEnd(); ++key) {
+                const bool known = std::any_of(it->members.cbegin(), it->members.cend(),
+                                               [&](const IdlMember &m) { return m.name == key.key(); });
+                if (!known)
+                    fail(QStringLiteral("%1 has no member '%2'").arg(name, key.key()));
+            }
+            const bool timed = m_model.isTimed(*it);
+            for (const IdlMember &member : it->members) {
+                enter(QLatin1Char('.') + member.name);
+                QJsonValue field = object.value(member.name);
+                if (timed && member.name == QLatin1String("tm") && field.isUndefined()) {
+                    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+                    field = QJsonObject {{QStringLiteral("sec"), now / 1000},
+                                         {QStringLiteral("nsec"), (now % 1000) * 1000000}};
+                }
+                write(member.type, field);
+                leave();
+            }
+            return;
+        }
+        if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd()) {
+            const QString text = value.toString();
+            qsizetype index = value.isDouble() ? qsizetype(value.toInteger(-1))
+                                               : it->enumerators.indexOf(text.section(QStringLiteral("::"), -1));
+            if (value.isUndefined() || value.isNull())
+                index = 0;
+            if (index < 0 || index >= it->enumerators.size())
+                fail(QStringLiteral("'%1' is none of %2").arg(text, it->enumerators.join(QStringLiteral(", "))));
+            writeUnsigned(4, quint64(index));
+            return;
+        }
+        if (m_model.unions.contains(name))
+            fail(QStringLiteral("union values cannot be written"));
+        fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));
+    }
+
+    void align(int size)
+    {
+        while (m_bytes.size() % size != 0)
+            m_bytes.append('\0');
+    }
+
+    void writeUnsigned(int size, quint64 value, bool aligned = true)
+    {
+        if (aligned)
+            align(size);
+        for (int i = 0; i < size; ++i) {
+            const int shift = 8 * (m_little ? i : size - 1 - i);
+            m_bytes.append(char((value >> shift) & 0xff));
+        }
+    }
+
+    double number(const QJsonValue &value)
+    {
+        if (value.isUndefined() || value.isNull())
+            return 0;
+        if (value.isBool())
+            return value.toBool() ? 1 : 0;
+        if (value.isString()) {
+            const QString text = value.toString();
+            if (text == QLatin1String("NaN"))
+                return std::numeric_limits<double>::quiet_NaN();
+            if (text == QLatin1String("Infinity"))
+                return std::numeric_limits<double>::infinity();
+            if (text == QLatin1String("-Infinity"))
+                return -std::numeric_limits<double>::infinity();
+            fail(QStringLiteral("'%1' is not a number").arg(text));
+        }
+        if (!value.isDouble())
+            fail(QStringLiteral("a number is expected"));
+        return value.toDouble();
+    }
+
+    qint64 integer(const QJsonValue &value, qint64 low, qint64 high)
+    {
+        const double d = number(value);
+        if (d != std::floor(d) || d < double(low) || d > double(high))
+            fail(QStringLiteral("%1 is not a whole number from %2 to %3").arg(d).arg(low).arg(high));
+        return value.isDouble() ? value.toInteger() : qint64(d);
+    }
+
+    void writePrimitive(Primitive kind, const QJsonValue &value)
+    {
+        const int size = sizeOf(kind);
+        switch (kind) {
+        case Primitive::Boolean:
+            writeUnsigned(size, value.isBool() ? quint64(value.toBool()) : quint64(integer(value, 0, 1)));
+            return;
+        case Primitive::Char: {
+            const QString text = value.toString();
+            if (value.isString() && text.size() != 1)
+                fail(QStringLiteral("one character is expected"));
+            writeUnsigned(size, value.isString() ? quint64(text.at(0).toLatin1())
+                                                 : quint64(integer(value, 0, 255)));
+            return;
+        }
+        case Primitive::Octet:
+            writeUnsigned(size, quint64(integer(value, 0, 255)));
+            return;
+        case Primitive::Short:
+            writeUnsigned(size, quint64(integer(value, -32768, 32767)));
+            return;
+        case Primitive::UShort:
+            writeUnsigned(size, quint64(integer(value, 0, 65535)));
+            return;
+        case Primitive::Long:
+            writeUnsigned(size, quint64(integer(value, std::numeric_limits<qint32>::min(),
+                                                std::numeric_limits<qint32>::max())));
+            return;
+        case Primitive::ULong:
+            writeUnsigned(size, quint64(integer(value, 0, std::numeric_limits<quint32>::max())));
+            return;
+        case Primitive::LongLong:
+        case Primitive::ULongLong:
+            writeUnsigned(size, quint64(integer(value, kind == Primitive::LongLong
+                                                           ? std::numeric_limits<qint64>::min()
+                                                           : 0,
+                                                std::numeric_limits<qint64>::max())));
+            return;
+        case Primitive::Float: {
+            const float f = float(number(value));
+            quint32 bits;
+            std::memcpy(&bits, &f, sizeof bits);
+            writeUnsigned(size, bits);
+            return;
+        }
+        case Primitive::Double: {
+            const double d = number(value);
+            quint64 bits;
+            std::memcpy(&bits, &d, sizeof bits);
+            writeUnsigned(size, bits);
+            return;
+        }
+        }
+    }
+
+    const bool m_little;
+    QByteArray m_bytes;
+};
+
+QString jsonText(const QJsonValue &value)
+{
+    if (value.isString()) {
+        const QByteArray doc = QJsonDocument(QJsonArray {value}).toJson(QJsonDocument::Compact);
+        return QString::fromUtf8(doc.mid(1, doc.size() - 2));
+    }
+    if (value.isDouble()) {
+        const double d = value.toDouble();
+        if (d == std::floor(d) && std::abs(d) < 1e15)
+            return QString::number(value.toInteger());
+        return QString::number(d, 'g', 17);
+    }
+    if (value.isBool())
+        return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    return QStringLiteral("null");
+}
+
+/// Formats a value by its type; `json` picks JSON syntax, else the people's one-line form.
+class Formatter
+{
+public:
+    Formatter(const IdlModel &model, bool json)
+        : m_model(model)
+        , m_json(json)
+    { }
+
+    QString format(const IdlType &written, const QJsonValue &value, int depth = 0) const
+    {
+        if (depth > MaxDepth)
+            return QStringLiteral("…");
+        const IdlType type = m_model.resolve(written);
+        if (type.kind == IdlType::Kind::Sequence || type.kind == IdlType::Kind::Array) {
+            IdlType element = type.element.front();
+            if (type.kind == IdlType::Kind::Array && type.dimensions.size() > 1) {
+                IdlType inner = type;
+                inner.dimensions.removeFirst();
+                element = inner;
+            }
+            QStringList items;
+            for (const QJsonValue &item : value.toArray())
+                items.append(format(element, item, depth + 1));
+            return QLatin1Char('[') + items.join(m_json ? QStringLiteral(",") : QStringLiteral(", "))
+                + QLatin1Char(']');
+        }
+        if (type.kind == IdlType::Kind::Named && value.isObject()) {
+            const QJsonObject object = value.toObject();
+            QStringList names;
+            if (const auto it = m_model.structs.constFind(type.name); it != m_model.structs.constEnd()) {
+                for (const IdlMember &member : it->members)
+                    names.append(member.name);
+            } else {
+                names = object.keys();
+            }
+            QStringList fields;
+            for (const QString &name : names) {
+                const IdlType memberType = memberTypeOf(type.name, name, object);
+                const QString text = format(memberType, object.value(name), depth + 1);
+                fields.append(m_json ? jsonText(name) + QLatin1Char(':') + text
+                                     : name + QLatin1Char('=') + text);
+            }
+            return m_json ? QLatin1Char('{') + fields.join(QLatin1Char(',')) + QLatin1Char('}')
+                          : QLatin1Char('{') + fields.join(QStringLiteral(", ")) + QLatin1Char('}');
+        }
+        return jsonText(value);
+    }
+
+    IdlType memberTypeOf(const QString &owner, const QString &member, const QJsonObject &object) const
+    {
+        if (const auto it = m_model.structs.constFind(owner); it != m_model.structs.constEnd()) {
+            for (const IdlMember &m : it->members) {
+                if (m.name == member)
+                    return m.type;
+            }
+        }
+        if (const auto it = m_model.unions.constFind(owner); it != m_model.unions.constEnd()) {
+            if (member == QLatin1String("_d"))
+                return it->discriminator;
+            for (const IdlUnionCase &c : it->cases) {
+                if (c.member.name == member)
+                    return c.member.type;
+            }
+        }
+        Q_UNUSED(object);
+        return IdlType::basic(QStringLiteral("any"));
+    }
+
+private:
+    const IdlModel &m_model;
+    const bool m_json;
+};
+
+} // namespace
+
+CdrCodec::CdrCodec(const IdlModel &model)
+    : m_model(model)
+{ }
+
+QString CdrCodec::typeName(const QString &dataType)
+{
+    if (!dataType.startsWith(QLatin1String("IDL:")))
+        return dataType;
+    QString name = dataType.mid(4);
+    name = name.left(name.lastIndexOf(QLatin1Char(':')));
+    return name.replace(QLatin1Char('/'), QStringLiteral("::"));
+}
+
+bool CdrCodec::knows(const QString &type) const
+{
+    return m_model.structs.contains(type) || m_model.unions.contains(type)
+        || m_model.enums.contains(type) || m_model.typedefs.contains(type);
+}
+
+QJsonValue CdrCodec::decode(const QString &type, const QByteArray &cdr, bool littleEndian,
+                            QString *error) const
+{
+    try {
+        Reader reader(m_model, cdr, littleEndian);
+        const QJsonValue value = reader.read(IdlType::named(type));
+        if (reader.remaining() > 7) // at most the padding of a last member
+            throw Failure {QStringLiteral("%1 bytes left over after a %2").arg(reader.remaining()).arg(type)};
+        return value;
+    } catch (const Failure &failure) {
+        if (error)
+            *error = failure.message;
+        return QJsonValue(QJsonValue::Undefined);
+    }
+}
+
+QByteArray CdrCodec::encode(const QString &type, const QJsonValue &value, bool littleEndian,
+                            QString *error) const
+{
+    try {
+        Writer writer(m_model, littleEndian);
+        writer.write(IdlType::named(type), value);
+        return writer.bytes();
+    } catch (const Failure &failure) {
+        if (error)
+            *error = failure.message;
+        return {};
+    }
+}
+
+QJsonValue CdrCodec::parseArgument(const QString &type, const QString &text, QString *error) const
+{
+    QJsonParseError parseError;
+    const QJsonDocument document
+        = QJsonDocument::fromJson((QLatin1Char('[') + text + QLatin1Char(']')).toUtf8(), &parseError);
+    const QJsonValue parsed = parseError.error == QJsonParseError::NoError && document.array().size() == 1
+        ? document.array().at(0)
+        : QJsonValue(QJsonValue::Undefined);
+    const IdlType resolvedType = m_model.resolve(IdlType::named(type));
+    const auto it = m_model.structs.constFind(resolvedType.name);
+    if (parsed.isObject() || it == m_model.structs.constEnd()) {
+        if (parsed.isUndefined() && error)
+            *error = QStringLiteral("'%1' is not a JSON value").arg(text);
+        return parsed;
+    }
+    // A type with one member besides the timestamp takes that member's value alone.
+    QList<IdlMember> members = it->members;
+    members.removeIf([](const IdlMember &m) { return m.name == QLatin1String("tm"); });
+    if (members.size() != 1) {
+        if (error)
+            *error = QStringLiteral("%1 has %2 members: give them as a JSON object {\"name\": value, …}")
+                         .arg(type)
+                         .arg(it->members.size());
+        return QJsonValue(QJsonValue::Undefined);
+    }
+    QJsonValue value = parsed;
+    if (value.isUndefined()) {
+        const IdlType member = m_model.resolve(members.front().type);
+        if (member.kind != IdlType::Kind::String && member.kind != IdlType::Kind::WString) {
+            if (error)
+                *error = QStringLiteral("'%1' is not a value for %2.%3")
+                             .arg(text, type, members.front().name);
+            return QJsonValue(QJsonValue::Undefined);
+        }
+        value = text;
+    }
+    return QJsonObject {{members.front().name, value}};
+}
+
+QString CdrCodec::toJson(const QString &type, const QJsonValue &value) const
+{
+    return Formatter(m_model, true).format(IdlType::named(type), value);
+}
+
+QString CdrCodec::toText(const QString &type, const QJsonValue &value) const
+{
+    const IdlType resolvedType = m_model.resolve(IdlType::named(type));
+    const auto it = m_model.structs.constFind(resolvedType.name);
+    if (it == m_model.structs.constEnd() || !value.isObject() || !m_model.isTimed(*it))
+        return Formatter(m_model, false).format(resolvedType, value);
+    // Timed types: the source's timestamp first, then the other members.
+    const QJsonObject object = value.toObject();
+    const QJsonObject tm = object.value(QStringLiteral("tm")).toObject();
+    QStringList fields;
+    const Formatter formatter(m_model, false);
+    for (const IdlMember &member : it->members) {
+        if (member.name != QLatin1String("tm"))
+            fields.append(member.name + QLatin1Char('=')
+                          + formatter.format(member.type, object.value(member.name)));
+    }
+    return QStringLiteral("[%1.%2] %3")
+        .arg(tm.value(QStringLiteral("sec")).toInteger())
+        .arg(tm.value(QStringLiteral("nsec")).toInteger(), 9, 10, QLatin1Char('0'))
+        .arg(fields.join(QLatin1Char(' ')));
+}
+
+} // namespace Codegen

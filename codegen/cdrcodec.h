@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "idlmodel.h"
+
+#include <QByteArray>
+#include <QJsonValue>
+#include <QString>
+
+namespace Codegen {
+
+/**
+ * Data port samples as values: the CDR bytes an OutPort sends (OpenRTM's `corba_cdr` interface,
+ * serializer `cdr`, alignment counted from the start of the sample) decoded by the IDL type of
+ * the port, and values encoded back. Values are JSON: structs are objects, sequences and arrays
+ * are arrays, enums are their enumerator names, `char` a one-letter string, `long long` exact
+ * integers, and non-finite floats the strings "NaN", "Infinity" and "-Infinity".
+ *
+ * Types are the scoped names of an IdlModel (`RTC::TimedLong`); `any`, object references,
+ * `fixed` and `long double` are refused with an error naming the member.
+ */
+class CdrCodec
+{
+public:
+    explicit CdrCodec(const IdlModel &model);
+
+    /// The scoped name of an OpenRTM data type id: `IDL:RTC/TimedLong:1.0` → `RTC::TimedLong`;
+    /// a scoped name is returned as it is.
+    static QString typeName(const QString &dataType);
+
+    /// True when the model declares @p type (a struct, union, enum or typedef).
+    bool knows(const QString &type) const;
+
+    /// Decodes one sample; on failure an undefined value and the reason (with the member path).
+    QJsonValue decode(const QString &type, const QByteArray &cdr, bool littleEndian,
+                      QString *error) const;
+    /// Encodes one sample. Struct members the value leaves out are zero / empty, except a
+    /// timed type's `tm`, which is the current time.
+    QByteArray encode(const QString &type, const QJsonValue &value, bool littleEndian,
+                      QString *error) const;
+
+    /// A value read from a command line: a JSON value, or for a type with one member besides
+    /// `tm` (TimedLong, TimedString, TimedDoubleSeq, …) that member's value alone (`42`,
+    /// `[1,2]`, or plain text for a string member).
+    QJsonValue parseArgument(const QString &type, const QString &text, QString *error) const;
+
+    /// The value as one line of JSON with members in declaration order.
+    QString toJson(const QString &type, const QJsonValue &value) const;
+    /// The value as one line for people: `[sec.nsec] data=42` for timed types, members as
+    /// `name=value`, sequences as `[1, 2]`, nested structs as `{x=1, y=2}`.
+    QString toText(const QString &type, const QJsonValue &value) const;
+
+private:
+    const IdlModel &m_model;
+};
+
+} // namespace Codegen
