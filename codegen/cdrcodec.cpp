@@ -5,6 +5,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLocale>
 #include <QtEndian>
 
 #include <cmath>
@@ -539,7 +540,7 @@ QString jsonText(const QJsonValue &value)
         const double d = value.toDouble();
         if (d == std::floor(d) && std::abs(d) < 1e15)
             return QString::number(value.toInteger());
-        return QString::number(d, 'g', 17);
+        return QString::number(d, 'g', QLocale::FloatingPointShortest);
     }
     if (value.isBool())
         return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");

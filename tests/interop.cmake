@@ -13,3 +13,9 @@ target_compile_definitions(tst_interopbuild PRIVATE
     CMAKE_COMMAND="${CMAKE_COMMAND}")
 add_dependencies(tst_interopbuild rtmanager rtctl)
 set_tests_properties(tst_interopbuild PROPERTIES LABELS interop TIMEOUT 900)
+
+# rtctl print / inject against OpenRTM-aist's example components.
+rtstudio_add_test(tst_interopdata SOURCES tst_interopdata.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner)
+target_compile_definitions(tst_interopdata PRIVATE RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}")
+add_dependencies(tst_interopdata rtctl)
+set_tests_properties(tst_interopdata PROPERTIES LABELS interop)
