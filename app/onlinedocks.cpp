@@ -11,6 +11,7 @@
 #include "onlinediagram.h"
 #include "onlinedocument.h"
 #include "onlinesession.h"
+#include "portmonitor.h"
 #include "profileio.h"
 #include "restoredialog.h"
 #include "restoreplan.h"
@@ -41,6 +42,7 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     , m_configuration(new SystemEditor::ConfigurationView(m_session))
     , m_contexts(new SystemEditor::ExecutionContextView(m_session))
     , m_manager(new SystemEditor::ManagerView(m_session))
+    , m_portMonitor(new SystemEditor::PortMonitor)
 {
     qRegisterMetaType<Deploy::RestorePlan>();
     addDock(window, m_nameService, tr("Name Service"), QStringLiteral("nameServiceDock"),
@@ -57,7 +59,17 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
                                    Qt::BottomDockWidgetArea);
     window->tabifyDockWidget(configuration, contexts);
     window->tabifyDockWidget(contexts, manager);
+    QDockWidget *monitor = addDock(window, m_portMonitor, tr("Port Monitor"),
+                                   QStringLiteral("portMonitorDock"), Qt::BottomDockWidgetArea);
+    window->tabifyDockWidget(manager, monitor);
     configuration->raise();
+    connect(m_session, &SystemEditor::OnlineSession::portMonitorRequested, this,
+            [this, monitor](const QString &componentPath, const Corba::PortInfo &port) {
+                monitor->show();
+                monitor->raise();
+                m_portMonitor->watch(componentPath, port);
+            });
+    connect(m_portMonitor, &SystemEditor::PortMonitor::statusMessage, this, &OnlineDocks::statusMessage);
     connect(m_nameService->treeView()->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) {
                 showItem(m_nameService->filterModel()->mapToSource(current));

@@ -26,6 +26,7 @@ class ConfigurationView;
 class DriftView;
 class ExecutionContextView;
 class ManagerView;
+class PortMonitor;
 class OnlineDiagram;
 class RestoreDialog;
 class NameServiceView;
@@ -67,6 +68,7 @@ public:
     SystemEditor::ConfigurationView *configuration() const { return m_configuration; }
     SystemEditor::ExecutionContextView *executionContexts() const { return m_contexts; }
     SystemEditor::ManagerView *manager() const { return m_manager; }
+    SystemEditor::PortMonitor *portMonitor() const { return m_portMonitor; }
     QList<QDockWidget *> docks() const { return m_docks; }
     /// The docks' show/hide actions, for the View menu.
     QList<QAction *> toggleActions() const;
@@ -115,6 +117,7 @@ private:
     SystemEditor::ConfigurationView *m_configuration;
     SystemEditor::ExecutionContextView *m_contexts;
     SystemEditor::ManagerView *m_manager;
+    SystemEditor::PortMonitor *m_portMonitor;
     QList<QDockWidget *> m_docks;
     DocumentController *m_documents = nullptr;
     std::function<Document *()> m_activeDocument;

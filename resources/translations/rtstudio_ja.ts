@@ -2651,7 +2651,7 @@
 <context>
     <name>Studio::OnlineDocks</name>
     <message>
-        <location filename="../../app/onlinedocks.cpp" line="+46"/>
+        <location filename="../../app/onlinedocks.cpp" line="+48"/>
         <source>Name Service</source>
         <translation>ネームサービス</translation>
     </message>
@@ -2671,7 +2671,12 @@
         <translation>マネージャ</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+4"/>
+        <source>Port Monitor</source>
+        <translation>ポートモニタ</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>&amp;New Online Diagram</source>
         <translation>新規オンラインダイアグラム(&amp;N)</translation>
     </message>
@@ -3782,7 +3787,7 @@
 <context>
     <name>SystemEditor::OnlineDiagram</name>
     <message>
-        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+107"/>
+        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+108"/>
         <source>Activate All</source>
         <translation>すべてアクティブ化</translation>
     </message>
@@ -3822,7 +3827,12 @@
         <translation>到達不能：</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+108"/>
+        <source>&amp;Monitor Port</source>
+        <translation>ポートをモニタ(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Disconnect</source>
         <translation>切断</translation>
     </message>
@@ -3960,6 +3970,102 @@
         <location line="+36"/>
         <source>Data type: %1</source>
         <translation>データ型：%1</translation>
+    </message>
+</context>
+<context>
+    <name>SystemEditor::PortMonitor</name>
+    <message>
+        <location filename="../../systemeditor/online/portmonitor.cpp" line="+103"/>
+        <source>%1: data type %2 is in none of the IDL files</source>
+        <translation>%1：データ型 %2 はどの IDL ファイルにもありません</translation>
+    </message>
+    <message>
+        <location line="+89"/>
+        <source>&amp;Remove</source>
+        <translation>削除(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Pause</source>
+        <translation>一時停止(&amp;P)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How many seconds of samples are kept and plotted</source>
+        <translation>サンプルを保持してプロットする秒数</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>E&amp;xport CSV…</source>
+        <translation>CSV をエクスポート(&amp;X)…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Watched ports (pick one on an online diagram: Monitor Port)</source>
+        <translation>モニタ中のポート（オンラインダイアグラムでポートを選び「ポートをモニタ」）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Window:</source>
+        <translation>表示期間：</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Received</source>
+        <translation>受信時刻</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>値</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Seconds</source>
+        <translation>秒</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1 is no OutPort: only what an OutPort sends can be watched.</source>
+        <translation>%1 は OutPort ではありません。モニタできるのは OutPort が送るデータだけです。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+118"/>
+        <source>%1 · %n sample(s) kept</source>
+        <translation>
+            <numerusform>%1 · %n 個のサンプルを保持</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>%1 is not watched.</source>
+        <translation>%1 はモニタしていません。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+13"/>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 に書き込めません：%2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Export Samples</source>
+        <translation>サンプルをエクスポート</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV ファイル (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Saved the samples of %1 to %2</source>
+        <translation>%1 のサンプルを %2 に保存しました</translation>
     </message>
 </context>
 <context>

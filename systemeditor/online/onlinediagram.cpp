@@ -12,6 +12,7 @@
 #include "nameservicemodel.h"
 #include "onlineicons.h"
 #include "onlinesession.h"
+#include "portitem.h"
 #include "rtpath.h"
 #include "systemmodel.h"
 #include "systemscene.h"
@@ -365,14 +366,38 @@ void OnlineDiagram::performAll(Action action)
         perform(action, instance);
 }
 
+void OnlineDiagram::monitorPort(const QString &instanceName, const QString &portName)
+{
+    const auto it = m_live.constFind(instanceName);
+    if (it == m_live.constEnd())
+        return;
+    for (const Corba::PortInfo &port : it->ports) {
+        if (port.shortName() == portName || port.name == portName) {
+            emit m_session->portMonitorRequested(it->path, port);
+            return;
+        }
+    }
+}
+
 void OnlineDiagram::showContextMenu(const QPoint &position)
 {
     QGraphicsItem *hit = m_view->itemAt(position);
-    while (hit && hit->type() != ComponentItem::Type && hit->type() != ConnectorItem::Type)
+    while (hit && hit->type() != ComponentItem::Type && hit->type() != ConnectorItem::Type
+           && hit->type() != PortItem::Type)
         hit = hit->parentItem();
     if (!hit)
         return;
     QMenu menu(this);
+    if (hit->type() == PortItem::Type) {
+        const auto *port = static_cast<PortItem *>(hit);
+        const QString instance = port->instanceName();
+        const QString name = port->port().name;
+        QAction *monitor = menu.addAction(tr("&Monitor Port"), this,
+                                          [this, instance, name] { monitorPort(instance, name); });
+        monitor->setEnabled(port->port().kind == PortKind::DataOut);
+        menu.exec(m_view->viewport()->mapToGlobal(position));
+        return;
+    }
     if (hit->type() == ConnectorItem::Type) {
         const QString id = static_cast<ConnectorItem *>(hit)->connectorId();
         menu.addAction(tr("Disconnect"), this, [this, id] { disconnectLive(id); });

@@ -102,6 +102,8 @@ public:
                      const ConnectorSettings &settings);
     /// Disconnects the live connector `connectorId`.
     void disconnectLive(const QString &connectorId);
+    /// Asks the Port Monitor (through the session) to watch a port of a component on the diagram.
+    void monitorPort(const QString &instanceName, const QString &portName);
 
     /// The rtshell paths of the live components on the diagram, by instance name.
     QHash<QString, QString> livePaths() const;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "corbatypes.h"
 #include "onlineservice.h"
 
 #include <QHash>
@@ -46,6 +47,8 @@ signals:
     void hostReachabilityChanged(const QString &host, bool reachable, const QString &message);
     /// Every submitted call has been answered.
     void idle();
+    /// A view asks to watch the samples of a data port (the Port Monitor listens).
+    void portMonitorRequested(const QString &componentPath, const Corba::PortInfo &port);
 
 private:
     struct Pending
