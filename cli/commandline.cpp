@@ -95,6 +95,7 @@ std::unique_ptr<CommandLine> createCommandLine()
     commandLine->addCommand(std::make_unique<RtConnectCommand>(false));
     commandLine->addCommand(std::make_unique<RtDataCommand>(RtDataCommand::Mode::Print));
     commandLine->addCommand(std::make_unique<RtDataCommand>(RtDataCommand::Mode::Inject));
+    commandLine->addCommand(std::make_unique<RtDataCommand>(RtDataCommand::Mode::Log));
     commandLine->addCommand(std::make_unique<RtConfCommand>());
     commandLine->addCommand(std::make_unique<RtMgrCommand>());
     using System = RtSystemCommand::Action;

@@ -9,7 +9,9 @@
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QThread>
 
 #include <atomic>
@@ -64,6 +66,13 @@ QString portType(const Codegen::CdrCodec &codec, const PortInfo &port, const QSt
     return type;
 }
 
+/// A string as a JSON literal, quotes and escapes included.
+QString jsonString(const QString &text)
+{
+    const QByteArray array = QJsonDocument(QJsonArray {text}).toJson(QJsonDocument::Compact);
+    return QString::fromUtf8(array.mid(1, array.size() - 2));
+}
+
 /// OpenRTM's IDL first, then the user's folders.
 QStringList idlFolders(const RtOptions &options)
 {
@@ -89,17 +98,48 @@ Properties connectorSettings(const RtOptions &options, QString *error)
 
 QString RtDataCommand::name() const
 {
-    return m_mode == Mode::Print ? QStringLiteral("print") : QStringLiteral("inject");
+    switch (m_mode) {
+    case Mode::Print:
+        return QStringLiteral("print");
+    case Mode::Inject:
+        return QStringLiteral("inject");
+    case Mode::Log:
+        break;
+    }
+    return QStringLiteral("log");
 }
 
 QString RtDataCommand::summary() const
 {
-    return m_mode == Mode::Print ? QStringLiteral("print the samples an OutPort sends")
-                                 : QStringLiteral("write samples into an InPort");
+    switch (m_mode) {
+    case Mode::Print:
+        return QStringLiteral("print the samples an OutPort sends");
+    case Mode::Inject:
+        return QStringLiteral("write samples into an InPort");
+    case Mode::Log:
+        break;
+    }
+    return QStringLiteral("record OutPorts' samples to a file and play them into InPorts");
 }
 
 QString RtDataCommand::usage() const
 {
+    if (m_mode == Mode::Log)
+        return QStringLiteral(
+            "Usage: rtctl log -o FILE [-n COUNT] [-d SECONDS] [-p KEY=VALUE]... [--idl-dir DIR]...\n"
+            "                 PATH:PORT...\n"
+            "       rtctl log --play FILE [-r RATE] [--linger MS] [--idl-dir DIR]... PATH:PORT...\n\n"
+            "Records the samples of OutPorts (rtshell's rtlog) until COUNT samples in all, SECONDS\n"
+            "or Ctrl-C, one JSON line each: {\"t\": received (ms since the epoch), \"port\", \"type\",\n"
+            "\"value\"}. --play writes them into InPorts at the recorded pace (or RATE samples a\n"
+            "second): the recorded ports, in the order they first appear in the file, go to the\n"
+            "PATH:PORTs given, which must take the same data types.\n"
+            "  -o FILE          where to record (- = standard output)\n"
+            "  -n COUNT         stop after COUNT samples\n"
+            "  -d SECONDS       stop after SECONDS\n"
+            "  --play FILE      play a recording\n"
+            "  -r RATE          play at RATE samples a second instead of the recorded pace\n"
+            "  --linger MS      keep the connectors MS milliseconds after the last sample (500)\n");
     if (m_mode == Mode::Print)
         return QStringLiteral(
             "Usage: rtctl print [-n COUNT] [-r RATE] [--json] [-p KEY=VALUE]... [--idl-dir DIR]...\n"
@@ -137,12 +177,22 @@ QStringList RtDataCommand::flagNames() const
     return m_mode == Mode::Print ? QStringList {QStringLiteral("--json")} : QStringList();
 }
 
+std::pair<PortInfo, QString> RtDataCommand::port(const QString &text) const
+{
+    const RtPath target = path(text);
+    if (target.port.isEmpty())
+        throw Error(Error::Kind::BadPath, target.toString() + QStringLiteral(": no :PORT given"));
+    return {component(target).port(target.port), target.toString()};
+}
+
 QStringList RtDataCommand::optionNames() const
 {
     QStringList names {QStringLiteral("-n"), QStringLiteral("-r"), QStringLiteral("-p"),
                        QStringLiteral("--idl-dir")};
     if (m_mode == Mode::Inject)
         names += {QStringLiteral("--from"), QStringLiteral("--linger")};
+    if (m_mode == Mode::Log)
+        names += {QStringLiteral("-o"), QStringLiteral("-d"), QStringLiteral("--play"), QStringLiteral("--linger")};
     return names;
 }
 
@@ -150,15 +200,17 @@ int RtDataCommand::execute(const RtOptions &options, Streams streams)
 {
     if (options.positionals.isEmpty())
         return usageError(QStringLiteral("%1 needs a PATH:PORT").arg(name()), streams);
+    if (m_mode == Mode::Log) {
+        const bool recording = options.values.contains(QStringLiteral("-o"));
+        if (recording == options.values.contains(QStringLiteral("--play")))
+            return usageError(QStringLiteral("log needs either -o FILE or --play FILE"), streams);
+        return recording ? record(options, streams) : play(options, streams);
+    }
     if (m_mode == Mode::Print && options.positionals.size() != 1)
         return usageError(QStringLiteral("print watches one PATH:PORT"), streams);
-    const RtPath target = path(options.positionals.first());
-    if (target.port.isEmpty())
-        throw Error(Error::Kind::BadPath, target.toString() + QStringLiteral(": no :PORT given"));
-    const QString where = target.toString();
-    const PortInfo port = component(target).port(target.port);
-    return m_mode == Mode::Print ? print(options, port, where, streams)
-                                 : inject(options, port, where, streams);
+    const auto [found, where] = port(options.positionals.first());
+    return m_mode == Mode::Print ? print(options, found, where, streams)
+                                 : inject(options, found, where, streams);
 }
 
 int RtDataCommand::print(const RtOptions &options, const PortInfo &port, const QString &where,
@@ -290,6 +342,181 @@ int RtDataCommand::inject(const RtOptions &options, const PortInfo &port, const 
     while (lingering.elapsed() < linger && !s_interrupted)
         QThread::msleep(ulong(std::min<qint64>(50, linger - lingering.elapsed())));
     feed.close();
+    return ExitOk;
+}
+
+int RtDataCommand::record(const RtOptions &options, Streams streams)
+{
+    bool ok = true;
+    const qint64 count = options.value(QStringLiteral("-n"), QStringLiteral("0")).toLongLong(&ok);
+    if (!ok || count < 0)
+        return usageError(QStringLiteral("-n needs a number of samples"), streams);
+    const double duration = options.value(QStringLiteral("-d"), QStringLiteral("0")).toDouble(&ok);
+    if (!ok || duration < 0)
+        return usageError(QStringLiteral("-d needs a number of seconds"), streams);
+    QString error;
+    const Properties settings = connectorSettings(options, &error);
+    if (!error.isEmpty())
+        return usageError(error, streams);
+
+    const Codegen::IdlTypeLibrary library(idlFolders(options));
+    const Codegen::CdrCodec codec(library.model());
+    struct Recorded
+    {
+        QString where;
+        QString type;
+        std::unique_ptr<PortTap> tap;
+    };
+    std::vector<Recorded> ports;
+    for (const QString &text : options.positionals) {
+        const auto [found, where] = port(text);
+        ports.push_back({where, portType(codec, found, where), nullptr});
+        ports.back().tap = std::make_unique<PortTap>(found, settings, where);
+    }
+    const QString target = options.value(QStringLiteral("-o"));
+    QFile file;
+    const bool opened = target == QLatin1String("-")
+        ? file.open(stdout, QIODevice::WriteOnly)
+        : (file.setFileName(target), file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    if (!opened)
+        throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(target, file.errorString()));
+
+    const InterruptScope interrupts;
+    QElapsedTimer clock;
+    clock.start();
+    qint64 written = 0;
+    while (!s_interrupted && (count == 0 || written < count)
+           && (duration == 0 || clock.elapsed() < qint64(duration * 1000))) {
+        bool any = false;
+        for (Recorded &recorded : ports) {
+            while (count == 0 || written < count) {
+                const std::optional<PortSample> sample = recorded.tap->next(0);
+                if (!sample)
+                    break;
+                any = true;
+                QString problem;
+                const QJsonValue value = codec.decode(recorded.type, sample->cdr, recorded.tap->littleEndian(), &problem);
+                if (!problem.isEmpty()) {
+                    report(QStringLiteral("%1: a sample is no %2: %3").arg(recorded.where, recorded.type, problem), streams);
+                    continue;
+                }
+                const QString line = QStringLiteral("{\"t\":%1,\"port\":%2,\"type\":%3,\"value\":%4}\n")
+                                         .arg(sample->receivedMs)
+                                         .arg(jsonString(recorded.where), jsonString(recorded.type),
+                                              codec.toJson(recorded.type, value));
+                if (file.write(line.toUtf8()) < 0)
+                    throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(target, file.errorString()));
+                ++written;
+            }
+        }
+        file.flush();
+        if (!any)
+            ports.front().tap->wait(20); // waits a little for the first port, then looks at all again
+    }
+    for (Recorded &recorded : ports)
+        recorded.tap->close();
+    report(QStringLiteral("%1 sample(s) recorded").arg(written), streams);
+    return ExitOk;
+}
+
+int RtDataCommand::play(const RtOptions &options, Streams streams)
+{
+    bool ok = true;
+    const double rate = options.value(QStringLiteral("-r"), QStringLiteral("0")).toDouble(&ok);
+    if (!ok || rate < 0)
+        return usageError(QStringLiteral("-r needs a rate in samples a second"), streams);
+    const int linger = options.value(QStringLiteral("--linger"), QStringLiteral("500")).toInt(&ok);
+    if (!ok || linger < 0)
+        return usageError(QStringLiteral("--linger needs a number of milliseconds"), streams);
+    QString error;
+    const Properties settings = connectorSettings(options, &error);
+    if (!error.isEmpty())
+        return usageError(error, streams);
+
+    // The whole recording is read and checked before anything is written.
+    const QString source = options.value(QStringLiteral("--play"));
+    QFile file;
+    const bool opened = source == QLatin1String("-") ? file.open(stdin, QIODevice::ReadOnly)
+                                                      : (file.setFileName(source), file.open(QIODevice::ReadOnly));
+    if (!opened)
+        throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(source, file.errorString()));
+    struct Entry
+    {
+        qint64 t;
+        int port;
+        QJsonValue value;
+    };
+    std::vector<Entry> entries;
+    QStringList recordedPorts;
+    QStringList recordedTypes;
+    int lineNumber = 0;
+    while (!file.atEnd()) {
+        ++lineNumber;
+        const QByteArray line = file.readLine().trimmed();
+        if (line.isEmpty())
+            continue;
+        QJsonParseError parseError;
+        const QJsonObject object = QJsonDocument::fromJson(line, &parseError).object();
+        const QString recordedPort = object.value(QStringLiteral("port")).toString();
+        if (parseError.error != QJsonParseError::NoError || recordedPort.isEmpty()
+            || !object.value(QStringLiteral("t")).isDouble())
+            throw Error(Error::Kind::BadPath,
+                        QStringLiteral("%1:%2: not a recorded sample (t, port, type, value)").arg(source).arg(lineNumber));
+        qsizetype index = recordedPorts.indexOf(recordedPort);
+        if (index < 0) {
+            recordedPorts.append(recordedPort);
+            recordedTypes.append(object.value(QStringLiteral("type")).toString());
+            index = recordedPorts.size() - 1;
+        }
+        entries.push_back({object.value(QStringLiteral("t")).toInteger(), int(index), object.value(QStringLiteral("value"))});
+    }
+    if (recordedPorts.size() != options.positionals.size())
+        throw Error(Error::Kind::BadPath,
+                    QStringLiteral("%1 holds %2 port(s) (%3) but %4 PATH:PORT(s) were given")
+                        .arg(source)
+                        .arg(recordedPorts.size())
+                        .arg(recordedPorts.join(QStringLiteral(", ")))
+                        .arg(options.positionals.size()));
+
+    const Codegen::IdlTypeLibrary library(idlFolders(options));
+    const Codegen::CdrCodec codec(library.model());
+    std::vector<std::pair<PortInfo, QString>> targets;
+    for (qsizetype i = 0; i < recordedPorts.size(); ++i) {
+        targets.push_back(port(options.positionals.at(i)));
+        const QString type = portType(codec, targets.back().first, targets.back().second);
+        if (type != recordedTypes.at(i))
+            throw Error(Error::Kind::Incompatible,
+                        QStringLiteral("%1 takes %2, but %3 was recorded with %4")
+                            .arg(targets.back().second, type, recordedPorts.at(i), recordedTypes.at(i)));
+    }
+    for (const Entry &entry : entries) {
+        QString problem;
+        codec.encode(recordedTypes.at(entry.port), entry.value, true, &problem);
+        if (!problem.isEmpty())
+            throw Error(Error::Kind::BadPath, QStringLiteral("%1: a sample of %2: %3")
+                                                  .arg(source, recordedPorts.at(entry.port), problem));
+    }
+
+    const InterruptScope interrupts;
+    std::vector<std::unique_ptr<PortFeed>> feeds;
+    for (const auto &[found, where] : targets)
+        feeds.push_back(std::make_unique<PortFeed>(found, settings, where));
+    QElapsedTimer clock;
+    clock.start();
+    const qint64 start = entries.empty() ? 0 : entries.front().t;
+    for (size_t i = 0; i < entries.size() && !s_interrupted; ++i) {
+        const qint64 due = rate > 0 ? qint64(double(i) * 1000.0 / rate) : entries[i].t - start;
+        while (clock.elapsed() < due && !s_interrupted)
+            QThread::msleep(ulong(std::min<qint64>(50, due - clock.elapsed())));
+        PortFeed &feed = *feeds[size_t(entries[i].port)];
+        feed.put(codec.encode(recordedTypes.at(entries[i].port), entries[i].value, feed.littleEndian(), nullptr));
+    }
+    QElapsedTimer lingering;
+    lingering.start();
+    while (lingering.elapsed() < linger && !s_interrupted)
+        QThread::msleep(ulong(std::min<qint64>(50, linger - lingering.elapsed())));
+    for (auto &feed : feeds)
+        feed->close();
     return ExitOk;
 }
 

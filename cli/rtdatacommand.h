@@ -10,7 +10,8 @@ class CdrCodec;
 namespace Cli {
 
 /**
- * `rtctl print PATH:PORT` and `rtctl inject PATH:PORT VALUE…` (rtshell's rtprint and rtinject):
+ * `rtctl print PATH:PORT`, `rtctl inject PATH:PORT VALUE…` and `rtctl log` (rtshell's rtprint,
+ * rtinject and rtlog):
  * samples of a data port as text or JSON lines, through a connector of rtctl's own that is
  * removed again on exit, on Ctrl-C and on errors. Types come from OpenRTM's IDL and the folders
  * given with --idl-dir.
@@ -18,7 +19,7 @@ namespace Cli {
 class RtDataCommand : public RtCommand
 {
 public:
-    enum class Mode { Print, Inject };
+    enum class Mode { Print, Inject, Log };
     explicit RtDataCommand(Mode mode)
         : m_mode(mode)
     { }
@@ -37,6 +38,10 @@ private:
               Streams streams);
     int inject(const RtOptions &options, const Corba::PortInfo &port, const QString &where,
                Streams streams);
+    int record(const RtOptions &options, Streams streams);
+    int play(const RtOptions &options, Streams streams);
+    /// The port named by a `PATH:PORT` argument, and that text as a full path.
+    std::pair<Corba::PortInfo, QString> port(const QString &text) const;
 
     Mode m_mode;
 };

@@ -103,6 +103,13 @@ public:
         return sample;
     }
 
+    bool wait(int timeoutMs)
+    {
+        std::unique_lock lock(m_mutex);
+        return m_arrived.wait_for(lock, std::chrono::milliseconds(std::max(0, timeoutMs)),
+                                  [this] { return !m_queue.empty(); });
+    }
+
     quint64 dropped() const
     {
         std::lock_guard lock(m_mutex);
@@ -200,6 +207,11 @@ PortTap::~PortTap() = default;
 std::optional<PortSample> PortTap::next(int timeoutMs)
 {
     return d->servant->next(timeoutMs);
+}
+
+bool PortTap::wait(int timeoutMs)
+{
+    return d->servant->wait(timeoutMs);
 }
 
 quint64 PortTap::dropped() const

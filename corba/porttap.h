@@ -39,6 +39,8 @@ public:
 
     /// The next sample, waiting at most `timeoutMs` (0: do not wait).
     std::optional<PortSample> next(int timeoutMs);
+    /// Waits at most `timeoutMs` until a sample is there, and leaves it there.
+    bool wait(int timeoutMs);
     /// Samples dropped because the queue was full.
     quint64 dropped() const;
     /// The port's data type (`IDL:RTC/TimedLong:1.0`) and the connector's byte order.

@@ -16,6 +16,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -32,6 +33,7 @@ private slots:
     void injectedValuesPassThroughAComponent();
     void injectReadsWhatPrintWrote();
     void interruptRemovesTheConnector();
+    void logRecordsAndPlaysBack();
     void badInputWritesNothing_data();
     void badInputWritesNothing();
 
@@ -187,6 +189,62 @@ void TestRtctlData::interruptRemovesTheConnector()
     QCOMPARE(print->exitStatus(), QProcess::NormalExit);
     QCOMPARE(print->exitCode(), 0);
     QCOMPARE(connectors("SeqOut0.rtc", "Short"), 0);
+}
+
+void TestRtctlData::logRecordsAndPlaysBack()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString both = dir.filePath("both.jsonl");
+    const RtctlResult recorded = rtctl({"log", "-o", both, "-n", "6", "SeqOut0.rtc:Long", "SeqOut0.rtc:Double"});
+    QVERIFY2(recorded.code == 0, qPrintable(recorded.err));
+    QFile file(both);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QSet<QString> types;
+    int lines = 0;
+    for (const QByteArray &line : file.readAll().split('\n')) {
+        if (line.isEmpty())
+            continue;
+        ++lines;
+        const QJsonObject object = QJsonDocument::fromJson(line).object();
+        QVERIFY(object["t"].toInteger() > 0);
+        QVERIFY(object["port"].toString().endsWith("SeqOut0.rtc:Long") || object["port"].toString().endsWith("SeqOut0.rtc:Double"));
+        QVERIFY(object["value"]["data"].isDouble());
+        types.insert(object["type"].toString());
+    }
+    QCOMPARE(lines, 6);
+    QCOMPARE(types, QSet<QString>({"RTC::TimedLong", "RTC::TimedDouble"}));
+    QCOMPARE(connectors("SeqOut0.rtc", "Long"), 0);
+    QCOMPARE(connectors("SeqOut0.rtc", "Double"), 0);
+
+    // Played into Sensor, the recorded values come out again.
+    const QString longs = dir.filePath("long.jsonl");
+    QCOMPARE(rtctl({"log", "-o", longs, "-n", "4", "SeqOut0.rtc:Long"}).code, 0);
+    QStringList expected;
+    QFile longFile(longs);
+    QVERIFY(longFile.open(QIODevice::ReadOnly));
+    for (const QByteArray &line : longFile.readAll().split('\n')) {
+        if (!line.isEmpty())
+            expected.append(QString::number(QJsonDocument::fromJson(line)["value"]["data"].toInteger()));
+    }
+    QCOMPARE(expected.size(), 4);
+    QProcess *print = startPrint({"-n", "4", "--json", "-p", "dataport.subscription_type=flush", "Sensor0.rtc:out"});
+    QVERIFY(waitForConnectors("Sensor0.rtc", "out", 1));
+    const RtctlResult played = rtctl({"log", "--play", longs, "Sensor0.rtc:in"});
+    QVERIFY2(played.code == 0, qPrintable(played.err));
+    QVERIFY(print->waitForFinished(10000));
+    QStringList seen;
+    for (const QString &line : QString::fromUtf8(print->readAllStandardOutput()).split('\n', Qt::SkipEmptyParts))
+        seen.append(QString::number(QJsonDocument::fromJson(line.toUtf8())["data"].toInteger()));
+    QCOMPARE(seen, expected);
+
+    const RtctlResult wrongCount = rtctl({"log", "--play", longs, "Sensor0.rtc:in", "Sensor0.rtc:in"});
+    QCOMPARE(wrongCount.code, 1);
+    QVERIFY2(wrongCount.err.contains("holds 1 port(s)"), qPrintable(wrongCount.err));
+    const RtctlResult wrongType = rtctl({"log", "--play", both, "Sensor0.rtc:in", "Sensor0.rtc:in"});
+    QCOMPARE(wrongType.code, 1);
+    QVERIFY2(wrongType.err.contains("was recorded with RTC::TimedDouble"), qPrintable(wrongType.err));
+    QCOMPARE(connectors("Sensor0.rtc", "in"), 0);
 }
 
 void TestRtctlData::badInputWritesNothing_data()
