@@ -2,6 +2,7 @@
 #include "commandline.h"
 #include "buildcommand.h"
 #include "gencommand.h"
+#include "localcommand.h"
 #include "profilecommand.h"
 #include "rtcatcommand.h"
 #include "rtconfcommand.h"
@@ -103,6 +104,7 @@ std::unique_ptr<CommandLine> createCommandLine()
          {System::Resurrect, System::Teardown, System::Start, System::Stop, System::Diff})
         commandLine->addCommand(std::make_unique<RtSystemCommand>(action));
     commandLine->addCommand(std::make_unique<RtCryoCommand>());
+    commandLine->addCommand(std::make_unique<LocalCommand>());
     return commandLine;
 }
 

@@ -30,4 +30,11 @@ QString bundledIdlDirectory()
     return QDir(prefix()).filePath(QStringLiteral("share/rtstudio/idl"));
 }
 
+QString managerProgram()
+{
+    if (runsFromBuildTree())
+        return QDir(QStringLiteral(RTSTUDIO_BUILD_TREE)).filePath(QStringLiteral("manager/rtmanager"));
+    return QDir(prefix()).filePath(QStringLiteral("bin/rtmanager"));
+}
+
 } // namespace Codegen::Installation

@@ -18,4 +18,7 @@ QString prefix();
 /// The bundled OpenRTM IDL: `<prefix>/share/rtstudio/idl`, or the source folder from the build tree.
 QString bundledIdlDirectory();
 
+/// The rtmanager program: `<prefix>/bin/rtmanager`, or the build tree's.
+QString managerProgram();
+
 } // namespace Codegen::Installation

@@ -1,0 +1,280 @@
+// SPDX-License-Identifier: MIT
+#include "localruntime.h"
+
+#include <QDeadlineTimer>
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSaveFile>
+#include <QStandardPaths>
+#include <QThread>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+
+namespace Deploy {
+
+namespace {
+
+constexpr quint16 DefaultNamingPort = 2809;
+constexpr quint16 DefaultManagerPort = 2810;
+
+sockaddr_in address(quint16 port, in_addr_t host)
+{
+    sockaddr_in result {};
+    result.sin_family = AF_INET;
+    result.sin_port = htons(port);
+    result.sin_addr.s_addr = htonl(host);
+    return result;
+}
+
+bool listening(quint16 port)
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0)
+        return false;
+    sockaddr_in to = address(port, INADDR_LOOPBACK);
+    const bool connected = ::connect(fd, reinterpret_cast<sockaddr *>(&to), sizeof to) == 0;
+    ::close(fd);
+    return connected;
+}
+
+/// True when a server could listen on `port` on every interface.
+bool free(quint16 port)
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0)
+        return false;
+    const int yes = 1;
+    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    sockaddr_in at = address(port, INADDR_ANY);
+    const bool bound = ::bind(fd, reinterpret_cast<sockaddr *>(&at), sizeof at) == 0;
+    ::close(fd);
+    return bound;
+}
+
+quint16 firstFree(quint16 from, quint16 taken)
+{
+    for (quint16 port = from; port < from + 200; ++port) {
+        if (port != taken && free(port))
+            return port;
+    }
+    return 0;
+}
+
+/// The process lives and is the program we started (not another one that got its pid).
+bool alive(qint64 pid, const QString &program)
+{
+    if (pid <= 0 || (::kill(pid_t(pid), 0) != 0 && errno != EPERM))
+        return false;
+    QFile cmdline(QStringLiteral("/proc/%1/cmdline").arg(pid));
+    return !cmdline.open(QIODevice::ReadOnly) || cmdline.readAll().contains(program.toLocal8Bit());
+}
+
+LocalProcess readProcess(const QJsonObject &object, const QString &program)
+{
+    LocalProcess process;
+    process.pid = object.value(QStringLiteral("pid")).toInteger();
+    process.port = quint16(object.value(QStringLiteral("port")).toInt());
+    process.running = alive(process.pid, program) && listening(process.port);
+    return process;
+}
+
+QJsonObject writeProcess(const LocalProcess &process)
+{
+    return {{QStringLiteral("pid"), process.pid}, {QStringLiteral("port"), process.port}};
+}
+
+/// Starts `program` detached with its output in `log`; 0 when it did not start.
+qint64 startDetached(const QString &program, const QStringList &arguments, const QString &log)
+{
+    QProcess process;
+    process.setProgram(program);
+    process.setArguments(arguments);
+    process.setStandardInputFile(QProcess::nullDevice());
+    process.setStandardOutputFile(log, QIODevice::Append);
+    process.setStandardErrorFile(log, QIODevice::Append);
+    qint64 pid = 0;
+    return process.startDetached(&pid) ? pid : 0;
+}
+
+bool waitUntilListening(const LocalProcess &process, const QString &program, const QDeadlineTimer &deadline)
+{
+    while (!listening(process.port)) {
+        if (deadline.hasExpired() || !alive(process.pid, program))
+            return false;
+        QThread::msleep(20);
+    }
+    return true;
+}
+
+void terminate(qint64 pid, const QString &program)
+{
+    if (!alive(pid, program))
+        return;
+    ::kill(pid_t(pid), SIGTERM);
+    const QDeadlineTimer deadline(3000);
+    while (alive(pid, program) && !deadline.hasExpired())
+        QThread::msleep(20);
+    if (alive(pid, program))
+        ::kill(pid_t(pid), SIGKILL);
+}
+
+QString lastLines(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return QString();
+    const QStringList lines = QString::fromLocal8Bit(file.readAll()).trimmed().split(QLatin1Char('\n'));
+    return lines.mid(qMax(0, int(lines.size()) - 3)).join(QLatin1Char(' '));
+}
+
+const QString NameServerProgram = QStringLiteral("omniNames");
+const QString ManagerProgram = QStringLiteral("rtmanager");
+
+} // namespace
+
+QString LocalRuntimeState::nameServerAddress() const
+{
+    return QStringLiteral("127.0.0.1:%1").arg(nameServer.port);
+}
+
+QString LocalRuntimeState::managerAddress() const
+{
+    return QStringLiteral("corbaloc:iiop:127.0.0.1:%1/manager").arg(manager.port);
+}
+
+QString LocalRuntime::defaultFolder()
+{
+    const QString runtime = QStandardPaths::writableLocation(QStandardPaths::RuntimeLocation);
+    if (!runtime.isEmpty())
+        return QDir(runtime).filePath(QStringLiteral("rtstudio"));
+    return QDir::temp().filePath(QStringLiteral("rtstudio-%1").arg(::getuid()));
+}
+
+LocalRuntime::LocalRuntime(const QString &folder)
+    : m_folder(folder)
+{ }
+
+QString LocalRuntime::statePath() const
+{
+    return QDir(m_folder).filePath(QStringLiteral("state.json"));
+}
+
+LocalRuntimeState LocalRuntime::status() const
+{
+    LocalRuntimeState state;
+    state.folder = m_folder;
+    QFile file(statePath());
+    if (!file.open(QIODevice::ReadOnly))
+        return state;
+    const QJsonObject object = QJsonDocument::fromJson(file.readAll()).object();
+    state.nameServer = readProcess(object.value(QStringLiteral("nameServer")).toObject(), NameServerProgram);
+    state.manager = readProcess(object.value(QStringLiteral("manager")).toObject(), ManagerProgram);
+    return state;
+}
+
+void LocalRuntime::writeState(const LocalRuntimeState &state) const
+{
+    QSaveFile file(statePath());
+    if (!file.open(QIODevice::WriteOnly))
+        return;
+    file.write(QJsonDocument(QJsonObject {{QStringLiteral("nameServer"), writeProcess(state.nameServer)},
+                                          {QStringLiteral("manager"), writeProcess(state.manager)}})
+                   .toJson());
+    file.commit();
+}
+
+LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *error, int timeoutMs)
+{
+    LocalRuntimeState state = status();
+    if (state.running())
+        return state;
+    // Half a runtime (one of the two gone) is started afresh.
+    if (state.nameServer.running || state.manager.running)
+        stop(nullptr);
+    state = LocalRuntimeState();
+    state.folder = m_folder;
+    const auto fail = [&](const QString &message) {
+        if (error)
+            *error = message;
+        stop(nullptr);
+        LocalRuntimeState failed;
+        failed.folder = m_folder;
+        return failed;
+    };
+
+    const QString omniNames = QStandardPaths::findExecutable(NameServerProgram);
+    if (omniNames.isEmpty())
+        return fail(QStringLiteral("omniNames is not installed (Debian package omniorb-nameserver)"));
+    if (!QFileInfo(managerProgram).isExecutable())
+        return fail(QStringLiteral("%1: no rtmanager program there").arg(managerProgram));
+    // A fresh name server each time: omniNames -start refuses a folder with an old log.
+    QDir folder(m_folder);
+    const QString data = folder.filePath(QStringLiteral("omninames"));
+    QDir(data).removeRecursively();
+    if (!folder.mkpath(QStringLiteral("omninames")))
+        return fail(QStringLiteral("%1: cannot create the folder").arg(data));
+
+    const QDeadlineTimer deadline(timeoutMs);
+    state.nameServer.port = firstFree(DefaultNamingPort, 0);
+    state.manager.port = firstFree(DefaultManagerPort, state.nameServer.port);
+    if (state.nameServer.port == 0 || state.manager.port == 0)
+        return fail(QStringLiteral("no free port from 2809 on"));
+    const QString namingLog = folder.filePath(QStringLiteral("omniNames.log"));
+    state.nameServer.pid
+        = startDetached(omniNames,
+                        {QStringLiteral("-start"), QString::number(state.nameServer.port), QStringLiteral("-datadir"),
+                         data, QStringLiteral("-logdir"), data},
+                        namingLog);
+    writeState(state);
+    if (state.nameServer.pid == 0 || !waitUntilListening(state.nameServer, NameServerProgram, deadline))
+        return fail(QStringLiteral("omniNames did not start on port %1: %2")
+                        .arg(state.nameServer.port)
+                        .arg(lastLines(namingLog)));
+    state.nameServer.running = true;
+
+    const QString managerLog = folder.filePath(QStringLiteral("rtmanager.log"));
+    state.manager.pid = startDetached(
+        managerProgram,
+        {QStringLiteral("-d"), QStringLiteral("-p"), QString::number(state.manager.port), QStringLiteral("-o"),
+         QStringLiteral("corba.nameservers=") + state.nameServerAddress()},
+        managerLog);
+    writeState(state);
+    if (state.manager.pid == 0 || !waitUntilListening(state.manager, ManagerProgram, deadline))
+        return fail(QStringLiteral("rtmanager did not start on port %1: %2")
+                        .arg(state.manager.port)
+                        .arg(lastLines(managerLog)));
+    state.manager.running = true;
+    return state;
+}
+
+bool LocalRuntime::stop(QString *error)
+{
+    QFile file(statePath());
+    if (!file.exists())
+        return true;
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(statePath(), file.errorString());
+        return false;
+    }
+    const QJsonObject object = QJsonDocument::fromJson(file.readAll()).object();
+    file.close();
+    // The manager first, so that it can leave the name server while that still runs.
+    terminate(object.value(QStringLiteral("manager")).toObject().value(QStringLiteral("pid")).toInteger(),
+              ManagerProgram);
+    terminate(object.value(QStringLiteral("nameServer")).toObject().value(QStringLiteral("pid")).toInteger(),
+              NameServerProgram);
+    QFile::remove(statePath());
+    return true;
+}
+
+} // namespace Deploy

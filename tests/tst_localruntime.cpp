@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: MIT
+// rtctl local start|stop|status: a name server and an rtmanager master that outlive rtctl, found
+// and reused by the next call, restarted when half of it died, moved to the next free ports when
+// the usual ones are taken, and stopped for good.
+
+#include "livesystem.h"
+#include "rtctlrunner.h"
+
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <csignal>
+
+class TestLocalRuntime : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void startsReusesAndStops();
+    void restartsWhenHalfOfItDied();
+    void takenPortsAreSkipped();
+
+private:
+    RtctlResult local(const QString &action)
+    {
+        return runRtctl({"local", action, "--json"}, {{"XDG_RUNTIME_DIR", m_runtime.path()}});
+    }
+    QJsonObject state(const QString &action)
+    {
+        const RtctlResult r = local(action);
+        return r.json().object();
+    }
+
+    QTemporaryDir m_runtime;
+};
+
+void TestLocalRuntime::initTestCase()
+{
+    QVERIFY(m_runtime.isValid());
+    QFile::setPermissions(m_runtime.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+}
+
+void TestLocalRuntime::cleanupTestCase()
+{
+    local("stop"); // whatever a failed test left running
+}
+
+void TestLocalRuntime::startsReusesAndStops()
+{
+    const RtctlResult before = local("status");
+    QCOMPARE(before.code, 1);
+    QCOMPARE(before.json()["running"].toBool(), false);
+
+    const QJsonObject started = state("start");
+    QVERIFY2(started["running"].toBool(), qPrintable(local("status").err));
+    const int namingPort = started["nameServer"]["port"].toInt();
+    const int managerPort = started["manager"]["port"].toInt();
+    QVERIFY(namingPort >= 2809 && managerPort >= 2810 && namingPort != managerPort);
+
+    // The manager is registered in the name server and creates components.
+    const QString server = QStringLiteral("/127.0.0.1:%1").arg(namingPort);
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"ls", "-R", server}).out.contains("manager.mgr"), 10000);
+    const RtctlResult created
+        = runRtctl({"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(managerPort), "create", "ConsoleIn"});
+    QVERIFY2(created.code == 0, qPrintable(created.err));
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"ls", "-R", server}).out.contains("ConsoleIn0.rtc"), 10000);
+
+    // A second start finds the same processes.
+    const QJsonObject again = state("start");
+    QCOMPARE(again["nameServer"]["pid"].toInteger(), started["nameServer"]["pid"].toInteger());
+    QCOMPARE(again["manager"]["pid"].toInteger(), started["manager"]["pid"].toInteger());
+
+    QCOMPARE(local("stop").code, 0);
+    QVERIFY(LiveTest::waitUntilStopped(started["manager"]["pid"].toInteger()));
+    QCOMPARE(local("status").code, 1);
+    QVERIFY(!LiveTest::isListening(quint16(namingPort)) || namingPort == 2809); // 2809 may be a user's own
+}
+
+void TestLocalRuntime::restartsWhenHalfOfItDied()
+{
+    const QJsonObject started = state("start");
+    QVERIFY(started["running"].toBool());
+    const qint64 manager = started["manager"]["pid"].toInteger();
+    ::kill(pid_t(manager), SIGKILL);
+    QTRY_COMPARE_WITH_TIMEOUT(local("status").code, 1, 10000);
+    const QJsonObject status = local("status").json().object();
+    QVERIFY(status["nameServer"]["running"].toBool());
+    QVERIFY(!status["manager"]["running"].toBool());
+
+    const QJsonObject restarted = state("start");
+    QVERIFY(restarted["running"].toBool());
+    QVERIFY(restarted["manager"]["pid"].toInteger() != manager);
+    QCOMPARE(local("stop").code, 0);
+}
+
+void TestLocalRuntime::takenPortsAreSkipped()
+{
+    // Whatever holds 2809 and 2810 (this socket, or a runtime of the machine's user), ours moves on.
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address {};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(2809);
+    address.sin_addr.s_addr = htonl(INADDR_ANY);
+    const bool holding = ::bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0
+        && ::listen(fd, 1) == 0;
+    const QJsonObject started = state("start");
+    ::close(fd);
+    QVERIFY(started["running"].toBool());
+    if (holding)
+        QVERIFY(started["nameServer"]["port"].toInt() > 2809);
+    QVERIFY(started["manager"]["port"].toInt() != started["nameServer"]["port"].toInt());
+    QCOMPARE(local("stop").code, 0);
+}
+
+QTEST_GUILESS_MAIN(TestLocalRuntime)
+#include "tst_localruntime.moc"
