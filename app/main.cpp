@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "diagramexport.h"
 #include "mainwindow.h"
+#include "onlinedocks.h"
+#include "rtsdocument.h"
 #include "rtstudioresources.h"
 #include "uilanguage.h"
 
@@ -71,8 +73,14 @@ int main(int argc, char *argv[])
         QStringLiteral("output"),
         QApplication::translate("main", "Where --export-diagram writes (.png or .svg)."),
         QStringLiteral("OUT"));
+    const QCommandLineOption runOption(
+        QStringLiteral("run-locally"),
+        QApplication::translate("main", "Open a system, run it on the local runtime (started when needed) "
+                                        "and show it online with its first connection in the Port Monitor."),
+        QStringLiteral("SYSTEM"));
     parser.addOption(exportOption);
     parser.addOption(outputOption);
+    parser.addOption(runOption);
     parser.addPositionalArgument(
         QStringLiteral("files"),
         QApplication::translate("main", "RTC or RTS profiles to open (XML or YAML)."),
@@ -83,6 +91,13 @@ int main(int argc, char *argv[])
 
     Studio::MainWindow window;
     window.show();
+    if (parser.isSet(runOption)) {
+        const QString system = parser.value(runOption);
+        if (!window.openFiles({system}))
+            return 1;
+        if (auto *rts = qobject_cast<Studio::RtsDocument *>(window.activeDocument()))
+            window.onlineDocks()->runLocally(rts->profile());
+    }
     if (!parser.positionalArguments().isEmpty())
         window.openFiles(parser.positionalArguments());
     return app.exec();

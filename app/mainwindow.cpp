@@ -118,10 +118,12 @@ bool MainWindow::openFiles(const QStringList &paths)
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     writeSettings();
-    if (m_controller->closeAll())
+    if (m_controller->closeAll()) {
+        m_online->quitting();
         event->accept();
-    else
+    } else {
         event->ignore();
+    }
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent *event)

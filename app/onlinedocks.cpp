@@ -2,9 +2,11 @@
 #include "onlinedocks.h"
 
 #include "configurationview.h"
+#include "corbaerror.h"
 #include "documentcontroller.h"
 #include "driftview.h"
 #include "executioncontextview.h"
+#include "installation.h"
 #include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
@@ -15,13 +17,18 @@
 #include "profileio.h"
 #include "restoredialog.h"
 #include "restoreplan.h"
+#include "restorer.h"
 #include "rtsdocument.h"
+#include "sequencerunner.h"
 #include "systemmodel.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QItemSelectionModel>
+#include <QLabel>
+#include <QSettings>
+#include <QStatusBar>
 #include <QMainWindow>
 #include <QMenu>
 #include <QPointer>
@@ -34,6 +41,19 @@ namespace Studio {
 
 using SystemEditor::NameServiceModel;
 using SystemEditor::OnlineDiagram;
+
+namespace {
+
+const QString KeepLocalRuntimeKey = QStringLiteral("online/keepLocalRuntime");
+
+/// The name part of the system's id (`RTSystem:vendor:NAME:version`).
+QString systemName(const Profile::RtsProfile &profile)
+{
+    const QString name = profile.id.section(QLatin1Char(':'), 2, 2);
+    return name.isEmpty() ? profile.id : name;
+}
+
+} // namespace
 
 OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
     : QObject(window)
@@ -70,6 +90,11 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
                 m_portMonitor->watch(componentPath, port);
             });
     connect(m_portMonitor, &SystemEditor::PortMonitor::statusMessage, this, &OnlineDocks::statusMessage);
+    m_localRuntimeLabel = new QLabel(window);
+    m_localRuntimeLabel->setObjectName(QStringLiteral("localRuntimeStatus"));
+    window->statusBar()->addPermanentWidget(m_localRuntimeLabel);
+    m_localRuntime = Deploy::LocalRuntime().status();
+    showLocalRuntime();
     connect(m_nameService->treeView()->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) {
                 showItem(m_nameService->filterModel()->mapToSource(current));
@@ -136,6 +161,20 @@ void OnlineDocks::fillMenu(QMenu *menu)
             compareWithFile(path);
     });
     menu->addSeparator();
+    add("actionStartLocalRuntime", tr("Start &Local Runtime"), [this] { startLocalRuntime(); });
+    add("actionStopLocalRuntime", tr("Stop Local Runtime"), [this] { stopLocalRuntime(); });
+    m_keepLocalRuntime = add("actionKeepLocalRuntime", tr("&Keep Local Runtime After Quit"), [] {});
+    m_keepLocalRuntime->setCheckable(true);
+    m_keepLocalRuntime->setChecked(QSettings().value(KeepLocalRuntimeKey).toBool());
+    connect(m_keepLocalRuntime, &QAction::toggled, this,
+            [](bool keep) { QSettings().setValue(KeepLocalRuntimeKey, keep); });
+    add("actionRunLocally", tr("&Run System on Local Runtime"), [this] {
+        if (const auto *system = qobject_cast<RtsDocument *>(m_activeDocument()))
+            runLocally(system->profile());
+        else
+            emit statusMessage(tr("Open a system to run it."));
+    });
+    menu->addSeparator();
     const std::pair<const char *, OnlineDiagram::Action> all[]
         = {{QT_TR_NOOP("Activate All"), OnlineDiagram::Action::Activate},
            {QT_TR_NOOP("Deactivate All"), OnlineDiagram::Action::Deactivate},
@@ -152,6 +191,129 @@ void OnlineDocks::fillMenu(QMenu *menu)
         a->setObjectName(QStringLiteral("menuAction")
                          + QString::fromLatin1(text).remove(QLatin1Char(' ')));
     }
+}
+
+void OnlineDocks::showLocalRuntime()
+{
+    m_localRuntimeLabel->setText(
+        m_localRuntime.running()
+            ? tr("Local runtime: name server %1, manager port %2")
+                  .arg(m_localRuntime.nameServerAddress())
+                  .arg(m_localRuntime.manager.port)
+            : tr("Local runtime: stopped"));
+}
+
+void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then)
+{
+    emit statusMessage(tr("Starting the local runtime…"));
+    m_session->submit(
+        SystemEditor::OnlineSession::deploymentHost(),
+        [] {
+            QString error;
+            const Deploy::LocalRuntimeState state
+                = Deploy::LocalRuntime().start(Codegen::Installation::managerProgram(), &error);
+            if (!error.isEmpty())
+                throw Corba::Error(Corba::Error::Kind::System, error);
+            return QVariant::fromValue(state);
+        },
+        this,
+        [this, then](const SystemEditor::OnlineResult &result) {
+            if (!result.ok) {
+                emit statusMessage(tr("The local runtime did not start: %1").arg(result.error));
+                return;
+            }
+            m_localRuntime = result.value.value<Deploy::LocalRuntimeState>();
+            m_startedLocalRuntime = m_startedLocalRuntime || m_localRuntime.startedNow;
+            m_nameService->addServer(m_localRuntime.nameServerAddress());
+            m_docks.first()->show();
+            showLocalRuntime();
+            emit statusMessage(m_localRuntime.startedNow ? tr("Local runtime started.")
+                                                         : tr("The local runtime was already running."));
+            if (then)
+                then(m_localRuntime);
+        });
+}
+
+void OnlineDocks::stopLocalRuntime()
+{
+    m_session->submit(
+        SystemEditor::OnlineSession::deploymentHost(),
+        [] {
+            QString error;
+            if (!Deploy::LocalRuntime().stop(&error))
+                throw Corba::Error(Corba::Error::Kind::System, error);
+            return QVariant();
+        },
+        this,
+        [this](const SystemEditor::OnlineResult &result) {
+            if (!result.ok) {
+                emit statusMessage(result.error);
+                return;
+            }
+            m_localRuntime = Deploy::LocalRuntimeState();
+            m_startedLocalRuntime = false;
+            showLocalRuntime();
+            m_nameService->refresh();
+            emit statusMessage(tr("Local runtime stopped."));
+        });
+}
+
+void OnlineDocks::quitting()
+{
+    if (m_startedLocalRuntime && !(m_keepLocalRuntime && m_keepLocalRuntime->isChecked()))
+        Deploy::LocalRuntime().stop(nullptr);
+}
+
+void OnlineDocks::runLocally(const Profile::RtsProfile &profile,
+                             const std::function<void(const QString &)> &done)
+{
+    startLocalRuntime([this, profile, done](const Deploy::LocalRuntimeState &state) {
+        Deploy::TargetOptions target;
+        target.nameServers = {state.nameServerAddress()};
+        target.manager = QStringLiteral("corbaloc::127.0.0.1:%1").arg(state.manager.port);
+        target.create = true;
+        emit statusMessage(tr("Restoring %1 on the local runtime…").arg(systemName(profile)));
+        m_session->submit(
+            SystemEditor::OnlineSession::deploymentHost(),
+            [profile, target] {
+                const Deploy::RestorePlan plan = Deploy::planRestore(profile, target);
+                Deploy::DeployReport report = Deploy::restoreSystem(profile, plan, target);
+                if (report.ok)
+                    report = Deploy::startSystem(profile, Deploy::planRestore(profile, target));
+                if (!report.ok)
+                    throw Corba::Error(Corba::Error::Kind::Refused, report.error);
+                return QVariant();
+            },
+            this,
+            [this, profile, done](const SystemEditor::OnlineResult &result) {
+                if (!result.ok) {
+                    emit statusMessage(tr("%1 did not run: %2").arg(systemName(profile), result.error));
+                    if (done)
+                        done(result.error);
+                    return;
+                }
+                OnlineDocument *online = openOnline(profile);
+                watchFirstConnection(online, profile);
+                emit statusMessage(tr("%1 runs on the local runtime.").arg(systemName(profile)));
+                if (done)
+                    done(QString());
+            });
+    });
+}
+
+void OnlineDocks::watchFirstConnection(OnlineDocument *online, const Profile::RtsProfile &profile)
+{
+    // The OutPort of the first data connector, once its component is on the diagram.
+    if (!online || !online->diagram() || profile.dataPortConnectors.isEmpty())
+        return;
+    const Profile::RtsTargetPort source = profile.dataPortConnectors.first().source;
+    const QString instance = source.instanceName;
+    const QString port = source.portName.section(QLatin1Char('.'), -1);
+    const QPointer<OnlineDiagram> diagram(online->diagram());
+    connect(diagram, &OnlineDiagram::componentAdded, this, [diagram, instance, port](const QString &added) {
+        if (diagram && added == instance)
+            diagram->monitorPort(instance, port);
+    });
 }
 
 OnlineDocument *OnlineDocks::newDiagram()

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "localruntime.h"
+
 #include <QList>
 #include <QObject>
 #include <QPointF>
@@ -9,6 +11,7 @@
 
 class QAction;
 class QDockWidget;
+class QLabel;
 class QMainWindow;
 class QMenu;
 class QSettings;
@@ -97,6 +100,27 @@ public:
     /// Shows the docks with the System Editor perspective and hides them with the Builder.
     void setPerspectiveActive(bool systemEditor);
 
+    /**
+     * Starts the local runtime (a name server and an rtmanager master, Deploy::LocalRuntime) off
+     * the GUI thread, or finds the one running, adds its name server to the Name Service view and
+     * shows it in the status bar; then calls `then` (in this thread) when it runs.
+     */
+    void startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then = {});
+    void stopLocalRuntime();
+    /**
+     * Runs `profile` on the local runtime as a newcomer wants it: starts the runtime, restores the
+     * system there (creating its components through the local manager), starts it, opens it online
+     * and watches the first data connector's OutPort in the Port Monitor. `done` gets the error
+     * (empty when it all worked).
+     */
+    void runLocally(const Profile::RtsProfile &profile,
+                    const std::function<void(const QString &error)> &done = {});
+    /// Called when the application quits: stops the local runtime this window started, unless
+    /// the user asked to keep it running.
+    void quitting();
+    /// The local runtime as last seen.
+    const Deploy::LocalRuntimeState &localRuntime() const { return m_localRuntime; }
+
 signals:
     /// A one-line message for the status bar.
     void statusMessage(const QString &message);
@@ -108,6 +132,8 @@ private:
     void addToDiagram(const QModelIndex &index);
     Deploy::TargetOptions targetOptions() const;
     QStringList knownManagers() const;
+    void showLocalRuntime();
+    void watchFirstConnection(OnlineDocument *online, const Profile::RtsProfile &profile);
     void placeMapped(SystemEditor::OnlineDiagram *diagram, const Profile::RtsProfile &profile,
                      const QVariant &plan);
     static QPointF nextPosition(int count);
@@ -118,6 +144,10 @@ private:
     SystemEditor::ExecutionContextView *m_contexts;
     SystemEditor::ManagerView *m_manager;
     SystemEditor::PortMonitor *m_portMonitor;
+    Deploy::LocalRuntimeState m_localRuntime;
+    bool m_startedLocalRuntime = false;
+    QLabel *m_localRuntimeLabel = nullptr;
+    QAction *m_keepLocalRuntime = nullptr;
     QList<QDockWidget *> m_docks;
     DocumentController *m_documents = nullptr;
     std::function<Document *()> m_activeDocument;

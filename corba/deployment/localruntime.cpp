@@ -253,6 +253,7 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *er
                         .arg(state.manager.port)
                         .arg(lastLines(managerLog)));
     state.manager.running = true;
+    state.startedNow = true;
     return state;
 }
 

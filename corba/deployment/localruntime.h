@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QMetaType>
 #include <QString>
 
 namespace Deploy {
@@ -19,6 +20,7 @@ struct LocalRuntimeState
     LocalProcess nameServer;
     LocalProcess manager;
     QString folder; ///< where the runtime keeps its state, the name server's data and the logs
+    bool startedNow = false; ///< start() launched the processes (rather than finding them running)
 
     bool running() const { return nameServer.running && manager.running; }
     /// `127.0.0.1:PORT` of the name server, as rtshell paths and the Name Service view name it.
@@ -61,3 +63,5 @@ private:
 };
 
 } // namespace Deploy
+
+Q_DECLARE_METATYPE(Deploy::LocalRuntimeState)

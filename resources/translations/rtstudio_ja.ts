@@ -2472,7 +2472,7 @@
 <context>
     <name>Studio::MainWindow</name>
     <message>
-        <location filename="../../app/mainwindow.cpp" line="+164"/>
+        <location filename="../../app/mainwindow.cpp" line="+166"/>
         <source>&amp;About RT Studio</source>
         <translation>RT Studio について(&amp;A)</translation>
     </message>
@@ -2651,7 +2651,7 @@
 <context>
     <name>Studio::OnlineDocks</name>
     <message>
-        <location filename="../../app/onlinedocks.cpp" line="+48"/>
+        <location filename="../../app/onlinedocks.cpp" line="+68"/>
         <source>Name Service</source>
         <translation>ネームサービス</translation>
     </message>
@@ -2676,7 +2676,7 @@
         <translation>ポートモニタ</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+62"/>
         <source>&amp;New Online Diagram</source>
         <translation>新規オンラインダイアグラム(&amp;N)</translation>
     </message>
@@ -2706,7 +2706,32 @@
         <translation>ファイルと比較(&amp;C)…</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
+        <source>Start &amp;Local Runtime</source>
+        <translation>ローカルランタイムを起動(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop Local Runtime</source>
+        <translation>ローカルランタイムを停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Keep Local Runtime After Quit</source>
+        <translation>終了後もローカルランタイムを残す(&amp;K)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Run System on Local Runtime</source>
+        <translation>ローカルランタイムでシステムを実行(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open a system to run it.</source>
+        <translation>実行するシステムを開いてください。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Activate All</source>
         <translation>すべてアクティブ化</translation>
     </message>
@@ -2736,7 +2761,57 @@
         <translation>すべて終了</translation>
     </message>
     <message>
-        <location line="+112"/>
+        <location line="+16"/>
+        <source>Local runtime: name server %1, manager port %2</source>
+        <translation>ローカルランタイム：ネームサーバ %1、マネージャのポート %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Local runtime: stopped</source>
+        <translation>ローカルランタイム：停止中</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Starting the local runtime…</source>
+        <translation>ローカルランタイムを起動しています…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The local runtime did not start: %1</source>
+        <translation>ローカルランタイムを起動できませんでした：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Local runtime started.</source>
+        <translation>ローカルランタイムを起動しました。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The local runtime was already running.</source>
+        <translation>ローカルランタイムはすでに起動しています。</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Local runtime stopped.</source>
+        <translation>ローカルランタイムを停止しました。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Restoring %1 on the local runtime…</source>
+        <translation>%1 をローカルランタイムに復元しています…</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 did not run: %2</source>
+        <translation>%1 を実行できませんでした：%2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 runs on the local runtime.</source>
+        <translation>%1 はローカルランタイムで実行中です。</translation>
+    </message>
+    <message>
+        <location line="+122"/>
         <source>%1 is not a system profile.</source>
         <translation>%1 はシステムプロファイルではありません。</translation>
     </message>
@@ -4035,7 +4110,7 @@
         <translation>%1 は OutPort ではありません。モニタできるのは OutPort が送るデータだけです。</translation>
     </message>
     <message numerus="yes">
-        <location line="+118"/>
+        <location line="+119"/>
         <source>%1 · %n sample(s) kept</source>
         <translation>
             <numerusform>%1 · %n 個のサンプルを保持</numerusform>
@@ -4781,7 +4856,7 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../../app/main.cpp" line="+32"/>
+        <location filename="../../app/main.cpp" line="+34"/>
         <source>--export-diagram needs --output OUT.png or OUT.svg</source>
         <translation>--export-diagram には --output OUT.png または OUT.svg が必要です</translation>
     </message>
@@ -4801,7 +4876,12 @@
         <translation>--export-diagram の出力先（.png または .svg）。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
+        <source>Open a system, run it on the local runtime (started when needed) and show it online with its first connection in the Port Monitor.</source>
+        <translation>システムを開いてローカルランタイム（必要なら起動）で実行し、オンラインで表示して最初の接続をポートモニタに表示します。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>RTC or RTS profiles to open (XML or YAML).</source>
         <translation>開くRTCプロファイルまたはRTSプロファイル（XMLまたはYAML）。</translation>
     </message>

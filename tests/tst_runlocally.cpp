@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+// Online → Run System on Local Runtime, as the README's first command uses it: the bundled
+// ConsoleInOut example restored onto a local runtime that RT Studio starts, its components active
+// on an online diagram, ConsoleIn's samples in the Port Monitor, and the runtime stopped on quit
+// unless the user keeps it.
+
+#include "document.h"
+#include "documentcontroller.h"
+#include "localruntime.h"
+#include "mainwindow.h"
+#include "onlinediagram.h"
+#include "onlinedocks.h"
+#include "onlinedocument.h"
+#include "portmonitor.h"
+#include "rtsdocument.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Studio;
+
+class TestRunLocally : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void runsTheExampleAndStopsOnQuit();
+    void keptRuntimeOutlivesTheWindow();
+
+private:
+    OnlineDocument *onlineDiagram(MainWindow &window) const;
+
+    QTemporaryDir m_runtime;
+    QTemporaryDir m_settings;
+};
+
+void TestRunLocally::initTestCase()
+{
+    QVERIFY(m_runtime.isValid() && m_settings.isValid());
+    QFile::setPermissions(m_runtime.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    qputenv("XDG_RUNTIME_DIR", m_runtime.path().toLocal8Bit());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    QCoreApplication::setOrganizationName(QStringLiteral("RtStudioTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_runlocally"));
+    QVERIFY(Deploy::LocalRuntime::defaultFolder().startsWith(m_runtime.path()));
+}
+
+void TestRunLocally::cleanupTestCase()
+{
+    Deploy::LocalRuntime().stop(nullptr);
+}
+
+OnlineDocument *TestRunLocally::onlineDiagram(MainWindow &window) const
+{
+    for (Document *document : window.documents()->documents()) {
+        if (auto *online = qobject_cast<OnlineDocument *>(document))
+            return online;
+    }
+    return nullptr;
+}
+
+void TestRunLocally::runsTheExampleAndStopsOnQuit()
+{
+    QSettings().clear();
+    auto window = std::make_unique<MainWindow>();
+    window->show();
+    QVERIFY(window->openFiles({QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")}));
+    auto *system = qobject_cast<RtsDocument *>(window->activeDocument());
+    QVERIFY(system);
+    auto *label = window->findChild<QLabel *>(QStringLiteral("localRuntimeStatus"));
+    QVERIFY(label);
+    QVERIFY2(label->text().contains("stopped"), qPrintable(label->text()));
+
+    bool finished = false;
+    QString error;
+    window->onlineDocks()->runLocally(system->profile(), [&](const QString &e) {
+        finished = true;
+        error = e;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(finished, 60000);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    const Deploy::LocalRuntimeState runtime = window->onlineDocks()->localRuntime();
+    QVERIFY(runtime.running() && runtime.startedNow);
+    QVERIFY2(label->text().contains(runtime.nameServerAddress()), qPrintable(label->text()));
+
+    OnlineDocument *online = onlineDiagram(*window);
+    QVERIFY(online && online->diagram());
+    QTRY_COMPARE_WITH_TIMEOUT(int(online->diagram()->state("ConsoleIn0")), int(Corba::LifeCycleState::Active), 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(int(online->diagram()->state("ConsoleOut0")), int(Corba::LifeCycleState::Active), 20000);
+    SystemEditor::PortMonitor *monitor = window->onlineDocks()->portMonitor();
+    QTRY_COMPARE_WITH_TIMEOUT(monitor->watched().size(), 1, 20000);
+    QVERIFY2(monitor->watched().first().endsWith("ConsoleIn0.rtc:out"), qPrintable(monitor->watched().first()));
+    QTRY_VERIFY_WITH_TIMEOUT(monitor->samples(monitor->watched().first()).size() > 10, 20000);
+
+    // Quitting stops what this window started.
+    window->close();
+    window.reset();
+    QVERIFY(!Deploy::LocalRuntime().status().nameServer.running);
+    QVERIFY(!Deploy::LocalRuntime().status().manager.running);
+}
+
+void TestRunLocally::keptRuntimeOutlivesTheWindow()
+{
+    QSettings().clear();
+    auto window = std::make_unique<MainWindow>();
+    window->show();
+    window->findChild<QAction *>(QStringLiteral("actionKeepLocalRuntime"))->setChecked(true);
+    window->findChild<QAction *>(QStringLiteral("actionStartLocalRuntime"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(window->onlineDocks()->localRuntime().running(), 30000);
+    const qint64 pid = window->onlineDocks()->localRuntime().manager.pid;
+    window->close();
+    window.reset();
+    QVERIFY(Deploy::LocalRuntime().status().running());
+
+    // A second window finds it running and does not stop it on quit either.
+    window = std::make_unique<MainWindow>();
+    QVERIFY(window->onlineDocks()->localRuntime().running());
+    window->findChild<QAction *>(QStringLiteral("actionKeepLocalRuntime"))->setChecked(false);
+    window->findChild<QAction *>(QStringLiteral("actionStartLocalRuntime"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(window->onlineDocks()->localRuntime().manager.pid == pid
+                                 && !window->onlineDocks()->localRuntime().startedNow,
+                             30000);
+    window->close();
+    window.reset();
+    QVERIFY(Deploy::LocalRuntime().status().running());
+    QVERIFY(Deploy::LocalRuntime().stop(nullptr));
+}
+
+QTEST_MAIN(TestRunLocally)
+#include "tst_runlocally.moc"
