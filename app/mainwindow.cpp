@@ -22,7 +22,9 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QSettings>
+#include <QScreen>
 #include <QStackedWidget>
+#include <QStyle>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QToolButton>
@@ -541,8 +543,12 @@ void MainWindow::showProblems(const QString &summary, const Profile::Diagnostics
 void MainWindow::readSettings()
 {
     QSettings settings;
-    if (!restoreGeometry(settings.value(GeometryKey).toByteArray()))
-        resize(1200, 800);
+    if (!restoreGeometry(settings.value(GeometryKey).toByteArray())) {
+        // First start: 1200 × 800, or nine tenths of a smaller screen, centred on it.
+        const QRect available = screen()->availableGeometry();
+        const QSize size = QSize(1200, 800).boundedTo(available.size() * 9 / 10);
+        setGeometry(QStyle::alignedRect(Qt::LeftToRight, Qt::AlignCenter, size, available));
+    }
     restoreState(settings.value(StateKey).toByteArray());
     const bool systemEditor
         = settings.value(PerspectiveKey).toString() == QLatin1String("SystemEditor");

@@ -18,6 +18,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScreen>
 #include <QSettings>
 #include <QTabBar>
 #include <QTabWidget>
@@ -107,6 +108,7 @@ private slots:
     void quitAsksAboutEveryModifiedDocument();
     void recentFilesMenuReopensAndPrunes();
     void restoresPerspectiveAndGeometry();
+    void firstStartFitsTheScreen();
     void aboutGoesThroughPrompts();
     void opensDroppedFiles();
 
@@ -462,6 +464,17 @@ void TestMainWindow::recentFilesMenuReopensAndPrunes()
     keptEntry->trigger();
     QCOMPARE(m_window->documents()->documents().size(), 1);
     QCOMPARE(m_window->activeDocument()->filePath(), kept);
+}
+
+void TestMainWindow::firstStartFitsTheScreen()
+{
+    // init() made the window with no stored geometry.
+    const QRect available = m_window->screen()->availableGeometry();
+    QVERIFY2(available.contains(m_window->frameGeometry()) || available.contains(m_window->geometry()),
+             qPrintable(QStringLiteral("%1x%2 window on a %3x%4 screen")
+                            .arg(m_window->width()).arg(m_window->height())
+                            .arg(available.width()).arg(available.height())));
+    QVERIFY(m_window->width() >= qMin(1200, available.width() * 9 / 10) - 1);
 }
 
 void TestMainWindow::restoresPerspectiveAndGeometry()
