@@ -2472,7 +2472,7 @@
 <context>
     <name>Studio::MainWindow</name>
     <message>
-        <location filename="../../app/mainwindow.cpp" line="+166"/>
+        <location filename="../../app/mainwindow.cpp" line="+168"/>
         <source>&amp;About RT Studio</source>
         <translation>RT Studio について(&amp;A)</translation>
     </message>
@@ -3965,6 +3965,69 @@
         <location line="+1"/>
         <source>Saved %1 without: %2</source>
         <translation>%1を保存しました（次を除く：%2）</translation>
+    </message>
+</context>
+<context>
+    <name>SystemEditor::OnlineIcons</name>
+    <message>
+        <location filename="../../systemeditor/online/onlineicons.cpp" line="+130"/>
+        <source>Created</source>
+        <translation>生成済み</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Inactive</source>
+        <translation>非アクティブ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Active</source>
+        <translation>アクティブ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Error</source>
+        <translation>エラー</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Unknown</source>
+        <translation>不明</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>root</source>
+        <translation>ルート</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>server</source>
+        <translation>サーバ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>context</source>
+        <translation>コンテキスト</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>component</source>
+        <translation>コンポーネント</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>manager</source>
+        <translation>マネージャ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>object</source>
+        <translation>オブジェクト</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>zombie</source>
+        <translation>ゾンビ</translation>
     </message>
 </context>
 <context>

@@ -50,7 +50,7 @@ QVariant ExecutionContextModel::data(const QModelIndex &index, int role) const
     case RateColumn:
         return ec.rate;
     case StateColumn:
-        return Corba::stateName(ec.state);
+        return OnlineIcons::stateLabel(ec.state);
     case OwnerColumn:
         return ec.owner.ior.isEmpty() ? QString() : memberName(ec.owner);
     case ParticipantsColumn: {

@@ -281,13 +281,13 @@ QVariant NameServiceModel::displayData(const Item *item, int column) const
         return tr("not answering");
     switch (item->node.type) {
     case NodeType::Component:
-        return Corba::stateName(stateOf(item));
+        return OnlineIcons::stateLabel(stateOf(item));
     case NodeType::Zombie:
         return tr("zombie");
     case NodeType::Server:
         return unreachable(item) ? tr("unreachable") : QString();
     default:
-        return Corba::nodeTypeName(item->node.type);
+        return OnlineIcons::nodeTypeLabel(item->node.type);
     }
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "onlineicons.h"
 
+#include <QCoreApplication>
 #include <QHash>
 #include <QPainter>
 #include <QPixmap>
@@ -120,6 +121,42 @@ QIcon node(NodeType type)
                                                     : drawShape(type));
     }
     return *it;
+}
+
+QString stateLabel(Corba::LifeCycleState state)
+{
+    switch (state) {
+    case Corba::LifeCycleState::Created:
+        return QCoreApplication::translate("SystemEditor::OnlineIcons", "Created");
+    case Corba::LifeCycleState::Inactive:
+        return QCoreApplication::translate("SystemEditor::OnlineIcons", "Inactive");
+    case Corba::LifeCycleState::Active:
+        return QCoreApplication::translate("SystemEditor::OnlineIcons", "Active");
+    case Corba::LifeCycleState::Error:
+        return QCoreApplication::translate("SystemEditor::OnlineIcons", "Error");
+    case Corba::LifeCycleState::Unknown:
+        break;
+    }
+    return QCoreApplication::translate("SystemEditor::OnlineIcons", "Unknown");
+}
+
+QString nodeTypeLabel(Corba::NodeType type)
+{
+    static const char *const labels[] = {
+        QT_TRANSLATE_NOOP("SystemEditor::OnlineIcons", "root"),
+        QT_TRANSLATE_NOOP("SystemEditor::OnlineIcons", "server"),
+        QT_TRANSLATE_NOOP("SystemEditor::OnlineIcons", "context"),
+        QT_TRANSLATE_NOOP("SystemEditor::OnlineIcons", "component"),
+        QT_TRANSLATE_NOOP("SystemEditor::OnlineIcons", "manager"),
+        QT_TRANSLATE_NOOP("SystemEditor::OnlineIcons", "object"),
+        QT_TRANSLATE_NOOP("SystemEditor::OnlineIcons", "zombie"),
+    };
+    const QString english = Corba::nodeTypeName(type);
+    for (const char *label : labels) {
+        if (english == QLatin1String(label))
+            return QCoreApplication::translate("SystemEditor::OnlineIcons", label);
+    }
+    return english;
 }
 
 } // namespace SystemEditor::OnlineIcons

@@ -20,6 +20,11 @@ QIcon component(Corba::LifeCycleState state);
 /// The icon of a name-service node of another type.
 QIcon node(Corba::NodeType type);
 
+/// A component state as the views show it, in the GUI's language (rtshell's words in English).
+QString stateLabel(Corba::LifeCycleState state);
+/// The kind of a name-service node as the views show it, in the GUI's language.
+QString nodeTypeLabel(Corba::NodeType type);
+
 } // namespace OnlineIcons
 
 } // namespace SystemEditor
