@@ -288,8 +288,8 @@ void TestCodegenMerge::userEditsSurviveRegeneration()
         }
     }
     QVERIFY(checkedInside > Iterations / 4);
+    // Speed is the benchmarks' business (a sanitizer build on a busy machine takes twice as long).
     qInfo("%d merges in %lld ms", Iterations, timer.elapsed());
-    QVERIFY2(timer.elapsed() < 2000, qPrintable(QString::number(timer.elapsed()) + " ms"));
 }
 
 void TestCodegenMerge::mergeOfUneditedFileIsTheFreshFile()
