@@ -20,6 +20,7 @@
 #include "restorer.h"
 #include "rtsdocument.h"
 #include "sequencerunner.h"
+#include "typecatalog.h"
 #include "systemmodel.h"
 
 #include <QAction>
@@ -87,6 +88,8 @@ OnlineDocks::OnlineDocks(QMainWindow *window, QSettings *settings)
             [this, monitor](const QString &componentPath, const Corba::PortInfo &port) {
                 monitor->show();
                 monitor->raise();
+                // The Builder's IDL folders hold the user's data types.
+                m_portMonitor->setIdlDirectories(Builder::TypeCatalog::userDirectories());
                 m_portMonitor->watch(componentPath, port);
             });
     connect(m_portMonitor, &SystemEditor::PortMonitor::statusMessage, this, &OnlineDocks::statusMessage);

@@ -159,6 +159,21 @@ void TestPortMonitor::refusedPortsAreReported()
     QVERIFY2(monitor.problem(key).contains("IDL:Nowhere/Thing:1.0"), qPrintable(monitor.problem(key)));
     QCOMPARE(connectors("SeqOut0", "Long"), 0);
     QVERIFY(!messages.isEmpty());
+
+    // With the user's IDL folder the type is known; what remains is up to the port.
+    QTemporaryDir idl;
+    QFile file(idl.filePath("thing.idl"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("module Nowhere { struct Thing { long data; }; };\n");
+    file.close();
+    monitor.unwatch(key);
+    monitor.setIdlDirectories({idl.path()});
+    QSignalSpy started(&monitor, &PortMonitor::watchStarted);
+    monitor.watch(seqOut.path(), unknown);
+    QTRY_COMPARE_WITH_TIMEOUT(started.size(), 1, 10000);
+    QVERIFY2(!started.first().at(1).toString().contains("IDL files"), qPrintable(started.first().at(1).toString()));
+    monitor.unwatch(key);
+    QTRY_COMPARE_WITH_TIMEOUT(connectors("SeqOut0", "Long"), 0, 10000);
 }
 
 void TestPortMonitor::onlineDiagramAsksForAPort()

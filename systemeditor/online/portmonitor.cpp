@@ -82,13 +82,18 @@ public:
 
     void start()
     {
-        m_library = std::make_unique<Codegen::IdlTypeLibrary>(
-            QStringList {Codegen::Installation::bundledIdlDirectory()});
-        m_codec = std::make_unique<Codegen::CdrCodec>(m_library->model());
+        loadIdl({});
         m_drain = new QTimer(this);
         m_drain->setInterval(50);
         connect(m_drain, &QTimer::timeout, this, &PortMonitorWorker::drain);
         m_drain->start();
+    }
+
+    void loadIdl(const QStringList &extra)
+    {
+        m_library = std::make_unique<Codegen::IdlTypeLibrary>(
+            QStringList {Codegen::Installation::bundledIdlDirectory()} + extra);
+        m_codec = std::make_unique<Codegen::CdrCodec>(m_library->model());
     }
 
     void open(const QString &key, const Corba::PortInfo &port, const QString &path)
@@ -292,6 +297,14 @@ void PortMonitor::watch(const QString &componentPath, const Corba::PortInfo &por
         QMetaObject::invokeMethod(m_worker, [worker = m_worker, key, port] { worker->open(key, port, key); });
     }
     setCurrent(key);
+}
+
+void PortMonitor::setIdlDirectories(const QStringList &directories)
+{
+    if (directories == m_idlDirectories)
+        return;
+    m_idlDirectories = directories;
+    QMetaObject::invokeMethod(m_worker, [worker = m_worker, directories] { worker->loadIdl(directories); });
 }
 
 void PortMonitor::unwatch(const QString &key)

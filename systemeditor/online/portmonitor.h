@@ -53,6 +53,8 @@ public:
     /// Starts watching `port` of the component at `componentPath` (a tree path); a port already
     /// watched is just selected.
     void watch(const QString &componentPath, const Corba::PortInfo &port);
+    /// Folders with IDL files besides OpenRTM's, for ports of user data types.
+    void setIdlDirectories(const QStringList &directories);
     /// Stops watching (removes the connector).
     void unwatch(const QString &key);
     /// `<component path>:<port>` of the watched ports, in the order they were added.
@@ -112,6 +114,7 @@ private:
     PortMonitorWorker *m_worker;
     QHash<QString, Watched> m_watched;
     QStringList m_order;
+    QStringList m_idlDirectories;
     int m_windowSeconds = 10;
     bool m_paused = false;
 
