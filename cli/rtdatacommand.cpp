@@ -80,6 +80,57 @@ QStringList idlFolders(const RtOptions &options)
         + options.values.value(QStringLiteral("--idl-dir"));
 }
 
+/// The options the data commands share, checked once.
+struct DataSettings
+{
+    qint64 count = 0; ///< -n: samples to print or record, or times to write the values
+    double rate = 0; ///< -r: samples a second (0: as they come)
+    double duration = 0; ///< -d: seconds to record (0: no limit)
+    int linger = 500; ///< --linger: milliseconds a writing connector stays after the last sample
+    Properties connector; ///< -p KEY=VALUE
+};
+
+Properties connectorSettings(const RtOptions &options, QString *error);
+
+/// Reads -n, -r, -d, --linger and -p; the reason when one of them is wrong.
+QString parseSettings(const RtOptions &options, qint64 defaultCount, DataSettings *settings)
+{
+    bool ok = true;
+    settings->count = options.value(QStringLiteral("-n"), QString::number(defaultCount)).toLongLong(&ok);
+    if (!ok || settings->count < 0)
+        return QStringLiteral("-n needs a whole number");
+    settings->rate = options.value(QStringLiteral("-r"), QStringLiteral("0")).toDouble(&ok);
+    if (!ok || settings->rate < 0)
+        return QStringLiteral("-r needs a rate in samples a second");
+    settings->duration = options.value(QStringLiteral("-d"), QStringLiteral("0")).toDouble(&ok);
+    if (!ok || settings->duration < 0)
+        return QStringLiteral("-d needs a number of seconds");
+    settings->linger = options.value(QStringLiteral("--linger"), QStringLiteral("500")).toInt(&ok);
+    if (!ok || settings->linger < 0)
+        return QStringLiteral("--linger needs a number of milliseconds");
+    QString error;
+    settings->connector = connectorSettings(options, &error);
+    return error;
+}
+
+/// Opens `path` for reading, or standard input for "-"; throws the reason naming the file.
+void openInput(const QString &path, QFile *file)
+{
+    const bool opened = path == QLatin1String("-") ? file->open(stdin, QIODevice::ReadOnly)
+                                                    : (file->setFileName(path), file->open(QIODevice::ReadOnly));
+    if (!opened)
+        throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(path, file->errorString()));
+}
+
+/// Waits `milliseconds` (or until interrupted): an InPort's unread samples go with the connector.
+void linger(int milliseconds)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < milliseconds && !s_interrupted)
+        QThread::msleep(ulong(std::min<qint64>(50, milliseconds - clock.elapsed())));
+}
+
 Properties connectorSettings(const RtOptions &options, QString *error)
 {
     Properties properties;
@@ -216,17 +267,11 @@ int RtDataCommand::execute(const RtOptions &options, Streams streams)
 int RtDataCommand::print(const RtOptions &options, const PortInfo &port, const QString &where,
                          Streams streams)
 {
-    bool ok = true;
-    const qint64 count = options.value(QStringLiteral("-n"), QStringLiteral("0")).toLongLong(&ok);
-    if (!ok || count < 0)
-        return usageError(QStringLiteral("-n needs a number of samples"), streams);
-    const double rate = options.value(QStringLiteral("-r"), QStringLiteral("0")).toDouble(&ok);
-    if (!ok || rate < 0)
-        return usageError(QStringLiteral("-r needs a rate in samples a second"), streams);
-    QString error;
-    const Properties settings = connectorSettings(options, &error);
-    if (!error.isEmpty())
+    DataSettings settings;
+    if (const QString error = parseSettings(options, 0, &settings); !error.isEmpty())
         return usageError(error, streams);
+    const qint64 count = settings.count;
+    const double rate = settings.rate;
 
     const Codegen::IdlTypeLibrary library(idlFolders(options));
     const Codegen::CdrCodec codec(library.model());
@@ -234,7 +279,7 @@ int RtDataCommand::print(const RtOptions &options, const PortInfo &port, const Q
     const bool json = options.has(QStringLiteral("--json"));
 
     const InterruptScope interrupts;
-    PortTap tap(port, settings, where);
+    PortTap tap(port, settings.connector, where);
     qint64 printed = 0;
     QElapsedTimer sincePrinted;
     while (!s_interrupted && (count == 0 || printed < count)) {
@@ -263,20 +308,13 @@ int RtDataCommand::print(const RtOptions &options, const PortInfo &port, const Q
 int RtDataCommand::inject(const RtOptions &options, const PortInfo &port, const QString &where,
                           Streams streams)
 {
-    bool ok = true;
-    const qint64 times = options.value(QStringLiteral("-n"), QStringLiteral("1")).toLongLong(&ok);
-    if (!ok || times < 1)
-        return usageError(QStringLiteral("-n needs a number of times"), streams);
-    const double rate = options.value(QStringLiteral("-r"), QStringLiteral("0")).toDouble(&ok);
-    if (!ok || rate < 0)
-        return usageError(QStringLiteral("-r needs a rate in samples a second"), streams);
-    const int linger = options.value(QStringLiteral("--linger"), QStringLiteral("500")).toInt(&ok);
-    if (!ok || linger < 0)
-        return usageError(QStringLiteral("--linger needs a number of milliseconds"), streams);
-    QString error;
-    const Properties settings = connectorSettings(options, &error);
-    if (!error.isEmpty())
+    DataSettings settings;
+    if (const QString error = parseSettings(options, 1, &settings); !error.isEmpty())
         return usageError(error, streams);
+    if (settings.count < 1)
+        return usageError(QStringLiteral("-n needs a number of times"), streams);
+    const qint64 times = settings.count;
+    const double rate = settings.rate;
 
     // Every value is checked before anything is written.
     QStringList texts = options.positionals.mid(1);
@@ -286,10 +324,7 @@ int RtDataCommand::inject(const RtOptions &options, const PortInfo &port, const 
     const QString from = options.value(QStringLiteral("--from"));
     if (!from.isEmpty()) {
         QFile file;
-        const bool opened = from == QLatin1String("-") ? file.open(stdin, QIODevice::ReadOnly)
-                                                       : (file.setFileName(from), file.open(QIODevice::ReadOnly));
-        if (!opened)
-            throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(from, file.errorString()));
+        openInput(from, &file);
         int line = 0;
         while (!file.atEnd()) {
             ++line;
@@ -319,7 +354,7 @@ int RtDataCommand::inject(const RtOptions &options, const PortInfo &port, const 
     }
 
     const InterruptScope interrupts;
-    PortFeed feed(port, settings, where);
+    PortFeed feed(port, settings.connector, where);
     QElapsedTimer clock;
     clock.start();
     qint64 written = 0;
@@ -337,27 +372,18 @@ int RtDataCommand::inject(const RtOptions &options, const PortInfo &port, const 
             ++written;
         }
     }
-    QElapsedTimer lingering;
-    lingering.start();
-    while (lingering.elapsed() < linger && !s_interrupted)
-        QThread::msleep(ulong(std::min<qint64>(50, linger - lingering.elapsed())));
+    linger(settings.linger);
     feed.close();
     return ExitOk;
 }
 
 int RtDataCommand::record(const RtOptions &options, Streams streams)
 {
-    bool ok = true;
-    const qint64 count = options.value(QStringLiteral("-n"), QStringLiteral("0")).toLongLong(&ok);
-    if (!ok || count < 0)
-        return usageError(QStringLiteral("-n needs a number of samples"), streams);
-    const double duration = options.value(QStringLiteral("-d"), QStringLiteral("0")).toDouble(&ok);
-    if (!ok || duration < 0)
-        return usageError(QStringLiteral("-d needs a number of seconds"), streams);
-    QString error;
-    const Properties settings = connectorSettings(options, &error);
-    if (!error.isEmpty())
+    DataSettings settings;
+    if (const QString error = parseSettings(options, 0, &settings); !error.isEmpty())
         return usageError(error, streams);
+    const qint64 count = settings.count;
+    const double duration = settings.duration;
 
     const Codegen::IdlTypeLibrary library(idlFolders(options));
     const Codegen::CdrCodec codec(library.model());
@@ -371,7 +397,7 @@ int RtDataCommand::record(const RtOptions &options, Streams streams)
     for (const QString &text : options.positionals) {
         const auto [found, where] = port(text);
         ports.push_back({where, portType(codec, found, where), nullptr});
-        ports.back().tap = std::make_unique<PortTap>(found, settings, where);
+        ports.back().tap = std::make_unique<PortTap>(found, settings.connector, where);
     }
     const QString target = options.value(QStringLiteral("-o"));
     QFile file;
@@ -421,25 +447,15 @@ int RtDataCommand::record(const RtOptions &options, Streams streams)
 
 int RtDataCommand::play(const RtOptions &options, Streams streams)
 {
-    bool ok = true;
-    const double rate = options.value(QStringLiteral("-r"), QStringLiteral("0")).toDouble(&ok);
-    if (!ok || rate < 0)
-        return usageError(QStringLiteral("-r needs a rate in samples a second"), streams);
-    const int linger = options.value(QStringLiteral("--linger"), QStringLiteral("500")).toInt(&ok);
-    if (!ok || linger < 0)
-        return usageError(QStringLiteral("--linger needs a number of milliseconds"), streams);
-    QString error;
-    const Properties settings = connectorSettings(options, &error);
-    if (!error.isEmpty())
+    DataSettings settings;
+    if (const QString error = parseSettings(options, 0, &settings); !error.isEmpty())
         return usageError(error, streams);
+    const double rate = settings.rate;
 
     // The whole recording is read and checked before anything is written.
     const QString source = options.value(QStringLiteral("--play"));
     QFile file;
-    const bool opened = source == QLatin1String("-") ? file.open(stdin, QIODevice::ReadOnly)
-                                                      : (file.setFileName(source), file.open(QIODevice::ReadOnly));
-    if (!opened)
-        throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(source, file.errorString()));
+    openInput(source, &file);
     struct Entry
     {
         qint64 t;
@@ -500,7 +516,7 @@ int RtDataCommand::play(const RtOptions &options, Streams streams)
     const InterruptScope interrupts;
     std::vector<std::unique_ptr<PortFeed>> feeds;
     for (const auto &[found, where] : targets)
-        feeds.push_back(std::make_unique<PortFeed>(found, settings, where));
+        feeds.push_back(std::make_unique<PortFeed>(found, settings.connector, where));
     QElapsedTimer clock;
     clock.start();
     const qint64 start = entries.empty() ? 0 : entries.front().t;
@@ -511,10 +527,7 @@ int RtDataCommand::play(const RtOptions &options, Streams streams)
         PortFeed &feed = *feeds[size_t(entries[i].port)];
         feed.put(codec.encode(recordedTypes.at(entries[i].port), entries[i].value, feed.littleEndian(), nullptr));
     }
-    QElapsedTimer lingering;
-    lingering.start();
-    while (lingering.elapsed() < linger && !s_interrupted)
-        QThread::msleep(ulong(std::min<qint64>(50, linger - lingering.elapsed())));
+    linger(settings.linger);
     for (auto &feed : feeds)
         feed->close();
     return ExitOk;
