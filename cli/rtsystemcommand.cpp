@@ -6,6 +6,8 @@
 #include "restorer.h"
 #include "sequencerunner.h"
 
+#include <unistd.h>
+
 namespace Cli {
 
 using Deploy::DeployReport;
@@ -14,14 +16,21 @@ using Deploy::StepStatus;
 
 namespace {
 
-// Streams each finished step as it happens, so a long start shows its progress.
+// Streams each finished step as it happens, so a long start shows its progress. On a terminal the
+// step under way stands on a line of its own, overwritten by the next.
 Deploy::DeployControl printingControl(Streams streams)
 {
     Deploy::DeployControl control;
-    control.progress = [streams](const DeployStep &step) {
-        if (step.status == StepStatus::Running)
-            return;
-        streams.out << step.toString() << '\n';
+    const bool terminal = ::isatty(STDOUT_FILENO);
+    control.progress = [streams, terminal](const DeployStep &step) {
+        if (terminal)
+            streams.out << "\r\033[K";
+        if (step.status == StepStatus::Running) {
+            if (terminal)
+                streams.out << "… " << step.action << ' ' << step.subject;
+        } else {
+            streams.out << step.toString() << '\n';
+        }
         streams.out.flush();
     };
     return control;

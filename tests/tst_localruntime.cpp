@@ -7,6 +7,8 @@
 #include "rtctlrunner.h"
 
 #include <QJsonObject>
+#include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -26,6 +28,7 @@ private slots:
     void startsReusesAndStops();
     void restartsWhenHalfOfItDied();
     void takenPortsAreSkipped();
+    void deploymentShowsProgressOnATerminal();
 
 private:
     RtctlResult local(const QString &action)
@@ -116,6 +119,30 @@ void TestLocalRuntime::takenPortsAreSkipped()
     if (holding)
         QVERIFY(started["nameServer"]["port"].toInt() > 2809);
     QVERIFY(started["manager"]["port"].toInt() != started["nameServer"]["port"].toInt());
+    QCOMPARE(local("stop").code, 0);
+}
+
+void TestLocalRuntime::deploymentShowsProgressOnATerminal()
+{
+    const QString script = QStandardPaths::findExecutable("script");
+    if (script.isEmpty())
+        QSKIP("skipped: no script(1) to give rtctl a terminal (Debian's util-linux)");
+    const QJsonObject started = state("start");
+    QVERIFY(started["running"].toBool());
+    const QStringList arguments {"resurrect", "--create", "-s",
+                                 QStringLiteral("127.0.0.1:%1").arg(started["nameServer"]["port"].toInt()), "-m",
+                                 QStringLiteral("corbaloc::127.0.0.1:%1").arg(started["manager"]["port"].toInt()),
+                                 QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")};
+    // On a terminal (script's pseudo-terminal) each step under way stands on the line until it is done.
+    QProcess terminal;
+    terminal.start(script, {"-qec", QStringLiteral(RTCTL_PATH " ") + arguments.join(' '), "/dev/null"});
+    QVERIFY(terminal.waitForFinished(60000));
+    const QString shown = QString::fromUtf8(terminal.readAllStandardOutput());
+    QVERIFY2(shown.contains("\r\033[K… create ConsoleIn0\r\033[Kdone create ConsoleIn0"), qPrintable(shown));
+    // Into a pipe, only the finished steps.
+    const RtctlResult piped = runRtctl(QStringList {"teardown"} + arguments.mid(2, 4) + arguments.mid(6));
+    QVERIFY2(piped.code == 0, qPrintable(piped.err));
+    QVERIFY(!piped.out.contains("\033[K") && !piped.out.contains("…"));
     QCOMPARE(local("stop").code, 0);
 }
 

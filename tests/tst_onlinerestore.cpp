@@ -16,6 +16,7 @@
 #include <QCheckBox>
 #include <QLabel>
 #include <QListWidget>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -131,9 +132,15 @@ void TestOnlineRestore::showsTheMappingAndRestores()
     QVERIFY(restoreButton->isEnabled());
 
     QSignalSpy restored(&dialog, &RestoreDialog::restored);
+    auto *busy = dialog.findChild<QProgressBar *>("restoreBusy");
+    auto *cancel = dialog.findChild<QPushButton *>("cancelRestoreButton");
+    QVERIFY(busy && cancel);
     QTest::mouseClick(restoreButton, Qt::LeftButton);
+    // While it runs: a busy bar and Cancel; afterwards neither.
+    QVERIFY(!busy->isHidden() && !cancel->isHidden() && cancel->isEnabled());
     QVERIFY(restored.wait(15000));
     QVERIFY2(restored.at(0).at(0).toBool(), qPrintable(dialog.report().toText()));
+    QVERIFY(busy->isHidden() && cancel->isHidden());
     QTRY_VERIFY(dialog.progressList()->count() > 0);
     bool connected = false;
     for (const Corba::ConnectorInfo &c : component("ConsoleIn0").port("out").connectors)

@@ -14,6 +14,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPointer>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
@@ -122,6 +123,20 @@ void RestoreDialog::buildUi()
     m_restore->setObjectName(QStringLiteral("restoreButton"));
     m_restore->setEnabled(false);
     connect(m_restore, &QPushButton::clicked, this, &RestoreDialog::restore);
+    // While a restore runs: a busy bar, the step under way, and Cancel (which rolls back).
+    m_busy = new QProgressBar(this);
+    m_busy->setObjectName(QStringLiteral("restoreBusy"));
+    m_busy->setRange(0, 0);
+    m_busy->setTextVisible(false);
+    m_busy->hide();
+    m_stop = buttons->addButton(tr("Cancel Restore"), QDialogButtonBox::ActionRole);
+    m_stop->setObjectName(QStringLiteral("cancelRestoreButton"));
+    m_stop->hide();
+    connect(m_stop, &QPushButton::clicked, this, [this] {
+        cancelRestore();
+        m_stop->setEnabled(false);
+        m_summary->setText(tr("Cancelling: undoing what was done…"));
+    });
     connect(buttons, &QDialogButtonBox::rejected, this, [this] {
         cancelRestore();
         reject();
@@ -157,6 +172,7 @@ void RestoreDialog::buildUi()
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(createRow);
     layout->addWidget(splitter, 1);
+    layout->addWidget(m_busy);
     layout->addWidget(m_summary);
     layout->addWidget(buttons);
     resize(980, 620);
@@ -318,6 +334,9 @@ void RestoreDialog::restore()
             Qt::QueuedConnection);
     };
     m_summary->setText(tr("Restoring…"));
+    m_busy->show();
+    m_stop->setEnabled(true);
+    m_stop->show();
     m_session->submit(
         OnlineSession::deploymentHost(),
         [profile, plan, options, control, cancel] {
@@ -332,6 +351,8 @@ void RestoreDialog::restore()
             } else {
                 m_report = result.value.value<Deploy::DeployReport>();
             }
+            m_busy->hide();
+            m_stop->hide();
             showReport();
             m_restore->setEnabled(true);
             emit restored(m_report.ok);
@@ -362,6 +383,12 @@ void RestoreDialog::cancelRestore()
 
 void RestoreDialog::addProgress(const Deploy::DeployStep &step)
 {
+    if (step.status == Deploy::StepStatus::Running) {
+        // What is under way now; the list keeps what finished.
+        if (m_stop->isEnabled())
+            m_summary->setText(tr("Restoring: %1 %2…").arg(step.action, step.subject));
+        return;
+    }
     auto *item = new QListWidgetItem(step.toString(), m_progress);
     if (step.status == Deploy::StepStatus::Failed)
         item->setForeground(QColor(200, 0, 0));

@@ -15,6 +15,7 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QListWidget;
+class QProgressBar;
 class QPushButton;
 class QTableWidget;
 
@@ -94,6 +95,8 @@ private:
     QListWidget *m_progress = nullptr;
     QLabel *m_summary = nullptr;
     QPushButton *m_restore = nullptr;
+    QPushButton *m_stop = nullptr;
+    QProgressBar *m_busy = nullptr;
     QPushButton *m_dryRun = nullptr;
     QCheckBox *m_create = nullptr;
     QComboBox *m_manager = nullptr;
