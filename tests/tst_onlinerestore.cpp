@@ -2,14 +2,19 @@
 #include "componentproxy.h"
 #include "corbaerror.h"
 #include "driftview.h"
-#include "managerproxy.h"
 #include "livesystem.h"
+#include "mainwindow.h"
+#include "managerproxy.h"
+#include "nameserviceview.h"
 #include "namingbrowser.h"
+#include "onlinedocks.h"
 #include "onlinesession.h"
 #include "orb.h"
 #include "portconnection.h"
 #include "profileio.h"
 #include "restoredialog.h"
+#include "rtsdocument.h"
+#include "rtsxml.h"
 #include "stallmeter.h"
 #include "stoppedprocess.h"
 
@@ -18,8 +23,10 @@
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
 
@@ -38,17 +45,25 @@ private slots:
     void createsTheExampleFromNothing();
     void driftShowsAChangedConfigurationValue();
     void stoppedManagerMidRestoreRollsBack();
+    void failedRestoreFromTheWindowLeavesTheDocument();
 
 private:
     Profile::RtsProfile system(const QString &outInstance) const;
     Deploy::TargetOptions options() const;
     Corba::ComponentProxy component(const QString &instance) const;
 
+    QTemporaryDir m_settings;
     LiveTest::LiveSystem m_live;
 };
 
 void TestOnlineRestore::initTestCase()
 {
+    // The main window keeps its settings (name servers, layout) in a folder of the test's own.
+    QVERIFY(m_settings.isValid());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    QCoreApplication::setOrganizationName(QStringLiteral("RtStudioTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_onlinerestore"));
     Corba::Orb::setCallTimeout(3000);
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
@@ -296,63 +311,139 @@ void TestOnlineRestore::driftShowsAChangedConfigurationValue()
     sample.setParameter("default", "int_param0", before);
 }
 
+namespace {
+
+/// Two managers: a restore creates ConsoleIn0 through the first (makerhost), then connects it to
+/// ConsoleOut0, which runs in the second (stophost) — the one a test stops once the plan is made.
+struct TwoManagers
+{
+    LiveTest::LiveSystem live;
+    quint16 creatorPort = 0;
+    quint16 hostPort = 0;
+    QProcess *host = nullptr;
+    QString creator;
+
+    bool start(QString *error)
+    {
+        if (!live.startNameServer(error))
+            return false;
+        creatorPort = LiveTest::freePort();
+        if (!live.startHostManager(QStringLiteral(RTMANAGER_PATH), creatorPort, "makerhost", {}, error))
+            return false;
+        hostPort = LiveTest::freePort();
+        host = live.startHostManager(QStringLiteral(RTMANAGER_PATH), hostPort, "stophost",
+                                     {"manager.components.precreate=ConsoleOut"}, error);
+        creator = QStringLiteral("corbaloc::127.0.0.1:%1").arg(creatorPort);
+        return host != nullptr;
+    }
+
+    /// Runs a planned restore of `dialog` with the second manager stopped; the report, or why not.
+    bool restoreWhileStopped(RestoreDialog &dialog, qint64 *worstStallMs, QString *report)
+    {
+        const LiveTest::StoppedProcess stopped(host, 800, 3000);
+        if (!stopped.isStopped())
+            return false;
+        LiveTest::StallMeter stalls;
+        QSignalSpy restored(&dialog, &RestoreDialog::restored);
+        QTest::mouseClick(dialog.findChild<QPushButton *>("restoreButton"), Qt::LeftButton);
+        if (!restored.wait(30000))
+            return false;
+        stalls.stop();
+        *worstStallMs = stalls.worstMs();
+        *report = dialog.report().toText();
+        return !restored.at(0).at(0).toBool();
+    }
+
+    /// ConsoleIn0, created by the restore, was removed again.
+    bool rolledBack() const
+    {
+        const auto created = Corba::RtPath::parse(
+            QStringLiteral("/%1/makerhost.host_cxt/ConsoleIn0.rtc").arg(live.namingServer()));
+        bool gone = false;
+        try {
+            Corba::NamingBrowser::resolve(*created);
+        } catch (const Corba::Error &e) {
+            gone = e.kind() == Corba::Error::Kind::NotFound;
+        }
+        const auto manager = Corba::RtPath::parse(creator);
+        return gone && Corba::ManagerProxy(manager->corbaloc, creator).componentProfiles().empty();
+    }
+};
+
+} // namespace
+
 void TestOnlineRestore::stoppedManagerMidRestoreRollsBack()
 {
-    // Two managers: the restore creates ConsoleIn0 through the first, then connects it to
-    // ConsoleOut0, which runs in the second; that one is stopped once the plan is made.
-    LiveTest::LiveSystem live;
+    TwoManagers managers;
     QString error;
-    QVERIFY2(live.startNameServer(&error), qPrintable(error));
-    const quint16 creatorPort = LiveTest::freePort();
-    QVERIFY2(live.startHostManager(QStringLiteral(RTMANAGER_PATH), creatorPort, "makerhost", {}, &error),
-             qPrintable(error));
-    const quint16 hostPort = LiveTest::freePort();
-    QProcess *host = live.startHostManager(QStringLiteral(RTMANAGER_PATH), hostPort, "stophost",
-                                           {"manager.components.precreate=ConsoleOut"}, &error);
-    QVERIFY2(host, qPrintable(error));
+    QVERIFY2(managers.start(&error), qPrintable(error));
 
     Deploy::TargetOptions target;
-    target.nameServers = {live.namingServer()};
+    target.nameServers = {managers.live.namingServer()};
     const Profile::RtsProfile profile = system("ConsoleOut0");
     OnlineSession session;
     RestoreDialog dialog(&session, profile, target);
     QSignalSpy planned(&dialog, &RestoreDialog::planned);
-    const QString creator = QStringLiteral("corbaloc::127.0.0.1:%1").arg(creatorPort);
-    dialog.setManagers({creator});
-    dialog.setCreateMissing(true, creator);
+    dialog.setManagers({managers.creator});
+    dialog.setCreateMissing(true, managers.creator);
     QVERIFY(planned.wait(15000));
     QTableWidget *components = dialog.componentTable();
     QCOMPARE(components->item(0, RestoreDialog::MappingColumn)->text(), QStringLiteral("create"));
     QCOMPARE(components->item(1, RestoreDialog::MappingColumn)->text(), QStringLiteral("existing"));
 
-    const LiveTest::StoppedProcess stopped(host, 800, 3000);
-    QVERIFY(stopped.isStopped());
-
-    LiveTest::StallMeter stalls;
-    QSignalSpy restored(&dialog, &RestoreDialog::restored);
-    QTest::mouseClick(dialog.findChild<QPushButton *>("restoreButton"), Qt::LeftButton);
-    QVERIFY(restored.wait(30000));
-    stalls.stop();
-    const QString report = dialog.report().toText();
-    QVERIFY2(!restored.at(0).at(0).toBool(), qPrintable(report));
+    qint64 worst = 0;
+    QString report;
+    QVERIFY2(managers.restoreWhileStopped(dialog, &worst, &report), qPrintable(report));
     // The event loop never waited on the stopped manager.
-    QVERIFY2(stalls.worstMs() < 100, qPrintable(QStringLiteral("blocked for %1 ms").arg(stalls.worstMs())));
+    QVERIFY2(worst < 100, qPrintable(QStringLiteral("blocked for %1 ms").arg(worst)));
     // The report names what stopped answering: the component and the process that hosts it.
     QVERIFY2(report.contains(QStringLiteral("ConsoleOut0")), qPrintable(report));
-    QVERIFY2(report.contains(QStringLiteral("127.0.0.1:%1").arg(hostPort)), qPrintable(report));
-    // What the restore created was removed again.
-    const auto created = Corba::RtPath::parse(
-        QStringLiteral("/%1/makerhost.host_cxt/ConsoleIn0.rtc").arg(live.namingServer()));
-    QVERIFY2(dialog.report().toText().contains(QStringLiteral("ConsoleIn0")), qPrintable(report));
-    bool gone = false;
-    try {
-        Corba::NamingBrowser::resolve(*created);
-    } catch (const Corba::Error &e) {
-        gone = e.kind() == Corba::Error::Kind::NotFound;
-    }
-    QVERIFY2(gone, "ConsoleIn0 is still bound after the rollback");
-    const auto manager = Corba::RtPath::parse(creator);
-    QVERIFY(Corba::ManagerProxy(manager->corbaloc, creator).componentProfiles().empty());
+    QVERIFY2(report.contains(QStringLiteral("127.0.0.1:%1").arg(managers.hostPort)), qPrintable(report));
+    QVERIFY2(report.contains(QStringLiteral("ConsoleIn0")), qPrintable(report));
+    QVERIFY2(managers.rolledBack(), "ConsoleIn0 is still there after the rollback");
+}
+
+void TestOnlineRestore::failedRestoreFromTheWindowLeavesTheDocument()
+{
+    // The same failure started as a user does: the system open in the main window, Online →
+    // Restore System on Live Managers, the name server in the Name Service view.
+    TwoManagers managers;
+    QString error;
+    QVERIFY2(managers.start(&error), qPrintable(error));
+    QTemporaryDir dir;
+    const QString file = dir.filePath("restore.xml");
+    QFile out(file);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(Profile::writeRtsXml(system("ConsoleOut0")));
+    out.close();
+    QFile saved(file);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    const QByteArray before = saved.readAll();
+
+    Studio::MainWindow window;
+    window.show();
+    QVERIFY(window.openFiles({file}));
+    auto *document = qobject_cast<Studio::RtsDocument *>(window.activeDocument());
+    QVERIFY(document);
+    const Profile::RtsProfile opened = document->profile();
+    QVERIFY(window.onlineDocks()->nameService()->addServer(managers.live.namingServer()));
+    RestoreDialog *dialog = window.onlineDocks()->openRestore(document->profile());
+    QSignalSpy planned(dialog, &RestoreDialog::planned);
+    dialog->setManagers({managers.creator});
+    dialog->setCreateMissing(true, managers.creator);
+    QVERIFY(planned.wait(15000) || planned.size() > 0);
+
+    qint64 worst = 0;
+    QString report;
+    QVERIFY2(managers.restoreWhileStopped(*dialog, &worst, &report), qPrintable(report));
+    QVERIFY2(worst < 100, qPrintable(QStringLiteral("blocked for %1 ms").arg(worst)));
+    QVERIFY2(managers.rolledBack(), "ConsoleIn0 is still there after the rollback");
+    // The document is as it was opened: not modified, the same profile, the file untouched.
+    QVERIFY(!document->isModified());
+    QVERIFY(document->profile() == opened);
+    QVERIFY(saved.seek(0));
+    QCOMPARE(saved.readAll(), before);
+    dialog->close();
 }
 
 QTEST_MAIN(TestOnlineRestore)
