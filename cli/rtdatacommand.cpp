@@ -413,27 +413,37 @@ int RtDataCommand::record(const RtOptions &options, Streams streams)
     qint64 written = 0;
     while (!s_interrupted && (count == 0 || written < count)
            && (duration == 0 || clock.elapsed() < qint64(duration * 1000))) {
-        bool any = false;
+        // What every port has now, written in the order it arrived.
+        struct Arrived
+        {
+            PortSample sample;
+            Recorded *port;
+        };
+        std::vector<Arrived> arrived;
         for (Recorded &recorded : ports) {
-            while (count == 0 || written < count) {
-                const std::optional<PortSample> sample = recorded.tap->next(0);
-                if (!sample)
-                    break;
-                any = true;
-                QString problem;
-                const QJsonValue value = codec.decode(recorded.type, sample->cdr, recorded.tap->littleEndian(), &problem);
-                if (!problem.isEmpty()) {
-                    report(QStringLiteral("%1: a sample is no %2: %3").arg(recorded.where, recorded.type, problem), streams);
-                    continue;
-                }
-                const QString line = QStringLiteral("{\"t\":%1,\"port\":%2,\"type\":%3,\"value\":%4}\n")
-                                         .arg(sample->receivedMs)
-                                         .arg(jsonString(recorded.where), jsonString(recorded.type),
-                                              codec.toJson(recorded.type, value));
-                if (file.write(line.toUtf8()) < 0)
-                    throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(target, file.errorString()));
-                ++written;
+            while (std::optional<PortSample> sample = recorded.tap->next(0))
+                arrived.push_back({std::move(*sample), &recorded});
+        }
+        const bool any = !arrived.empty();
+        std::stable_sort(arrived.begin(), arrived.end(), [](const Arrived &a, const Arrived &b) {
+            return a.sample.receivedMs < b.sample.receivedMs;
+        });
+        for (const Arrived &a : arrived) {
+            if (count != 0 && written >= count)
+                break;
+            QString problem;
+            const QJsonValue value = codec.decode(a.port->type, a.sample.cdr, a.port->tap->littleEndian(), &problem);
+            if (!problem.isEmpty()) {
+                report(QStringLiteral("%1: a sample is no %2: %3").arg(a.port->where, a.port->type, problem), streams);
+                continue;
             }
+            const QString line = QStringLiteral("{\"t\":%1,\"port\":%2,\"type\":%3,\"value\":%4}\n")
+                                     .arg(a.sample.receivedMs)
+                                     .arg(jsonString(a.port->where), jsonString(a.port->type),
+                                          codec.toJson(a.port->type, value));
+            if (file.write(line.toUtf8()) < 0)
+                throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(target, file.errorString()));
+            ++written;
         }
         file.flush();
         if (!any)

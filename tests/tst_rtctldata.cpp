@@ -196,7 +196,8 @@ void TestRtctlData::logRecordsAndPlaysBack()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString both = dir.filePath("both.jsonl");
-    const RtctlResult recorded = rtctl({"log", "-o", both, "-n", "6", "SeqOut0.rtc:Long", "SeqOut0.rtc:Double"});
+    // Half a second of both ports (a count could be reached before the second port's first sample).
+    const RtctlResult recorded = rtctl({"log", "-o", both, "-d", "0.5", "SeqOut0.rtc:Long", "SeqOut0.rtc:Double"});
     QVERIFY2(recorded.code == 0, qPrintable(recorded.err));
     QFile file(both);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -212,7 +213,7 @@ void TestRtctlData::logRecordsAndPlaysBack()
         QVERIFY(object["value"]["data"].isDouble());
         types.insert(object["type"].toString());
     }
-    QCOMPARE(lines, 6);
+    QVERIFY(lines > 2);
     QCOMPARE(types, QSet<QString>({"RTC::TimedLong", "RTC::TimedDouble"}));
     QCOMPARE(connectors("SeqOut0.rtc", "Long"), 0);
     QCOMPARE(connectors("SeqOut0.rtc", "Double"), 0);
