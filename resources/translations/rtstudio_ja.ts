@@ -2651,7 +2651,7 @@
 <context>
     <name>Studio::OnlineDocks</name>
     <message>
-        <location filename="../../app/onlinedocks.cpp" line="+68"/>
+        <location filename="../../app/onlinedocks.cpp" line="+69"/>
         <source>Name Service</source>
         <translation>ネームサービス</translation>
     </message>
@@ -2676,7 +2676,7 @@
         <translation>ポートモニタ</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>&amp;New Online Diagram</source>
         <translation>新規オンラインダイアグラム(&amp;N)</translation>
     </message>
@@ -4113,7 +4113,7 @@
 <context>
     <name>SystemEditor::PortMonitor</name>
     <message>
-        <location filename="../../systemeditor/online/portmonitor.cpp" line="+103"/>
+        <location filename="../../systemeditor/online/portmonitor.cpp" line="+108"/>
         <source>%1: data type %2 is in none of the IDL files</source>
         <translation>%1：データ型 %2 はどの IDL ファイルにもありません</translation>
     </message>
@@ -4173,7 +4173,7 @@
         <translation>%1 は OutPort ではありません。モニタできるのは OutPort が送るデータだけです。</translation>
     </message>
     <message numerus="yes">
-        <location line="+119"/>
+        <location line="+127"/>
         <source>%1 · %n sample(s) kept</source>
         <translation>
             <numerusform>%1 · %n 個のサンプルを保持</numerusform>
@@ -4351,7 +4351,7 @@
 <context>
     <name>SystemEditor::RestoreDialog</name>
     <message>
-        <location filename="../../systemeditor/online/restoredialog.cpp" line="+82"/>
+        <location filename="../../systemeditor/online/restoredialog.cpp" line="+83"/>
         <source>Restore System</source>
         <translation>システムの復元</translation>
     </message>
@@ -4413,17 +4413,27 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+75"/>
+        <location line="+90"/>
         <source>Mapping the live system…</source>
         <translation>稼働中のシステムと対応付けています…</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-85"/>
         <source>Dry Run</source>
         <translation>ドライラン</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
+        <source>Cancel Restore</source>
+        <translation>復元を中止</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cancelling: undoing what was done…</source>
+        <translation>中止しています：行ったことを元に戻しています…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Create missing components through a manager:</source>
         <translation>不足しているコンポーネントをマネージャで生成：</translation>
     </message>
@@ -4433,7 +4443,7 @@
         <translation>rtshellのパス（/host:2809/host.host_cxt/manager.mgr）またはcorbaloc（corbaloc::host:2810）</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>host:port of the manager that runs it; empty: %1</source>
         <translation>これを実行するマネージャのホスト:ポート。空欄の場合：%1</translation>
     </message>
@@ -4483,7 +4493,7 @@
         <translation>復元しています…</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>Restored.</source>
         <translation>復元しました。</translation>
     </message>
@@ -4506,6 +4516,11 @@
         <location line="+1"/>
         <source>Rolled back: %1</source>
         <translation>ロールバック済み：%1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Restoring: %1 %2…</source>
+        <translation>復元中：%1 %2…</translation>
     </message>
 </context>
 <context>
