@@ -20,6 +20,9 @@
 #include <QGraphicsView>
 #include <QLabel>
 #include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -46,6 +49,7 @@ private slots:
     void initTestCase();
     void dropsLiveComponentsWithStateColours();
     void activateTurnsTheComponentGreen();
+    void actionOnAllShowsProgressAndCancels();
     void drawsLiveConnectors();
     void keepsTheDiagramInViewUntilTheUserNavigates();
     void connectsLiveByDraggingThroughTheDialog();
@@ -184,6 +188,45 @@ void TestOnlineDiagram::activateTurnsTheComponentGreen()
     diagram.performAll(OnlineDiagram::Action::Deactivate);
     QTRY_COMPARE_WITH_TIMEOUT(diagram.bodyColor("ConsoleOut0"),
                               OnlineIcons::stateColor(LifeCycleState::Inactive), 10000);
+}
+
+void TestOnlineDiagram::actionOnAllShowsProgressAndCancels()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    dropOnto(diagram, {"ConsoleIn0", "ConsoleOut0"});
+    // The other tests expect the peer's components inactive, whatever happens here.
+    const auto deactivate = qScopeGuard([this] {
+        for (const char *name : {"ConsoleIn0", "ConsoleOut0"}) {
+            try {
+                if (component(name).state() == LifeCycleState::Active)
+                    component(name).deactivate(0);
+            } catch (const Corba::Error &) {
+            }
+        }
+    });
+    auto *bar = diagram.findChild<QProgressBar *>("batchProgress");
+    auto *cancel = diagram.findChild<QPushButton *>("batchCancel");
+    QVERIFY(bar && cancel && bar->isHidden());
+
+    QSignalSpy finished(&diagram, &OnlineDiagram::allFinished);
+    diagram.performAll(OnlineDiagram::Action::Activate);
+    QVERIFY(!bar->isHidden() && !cancel->isHidden());
+    QCOMPARE(bar->maximum(), 2);
+    QVERIFY(finished.wait(10000));
+    QVERIFY(bar->isHidden() && cancel->isHidden());
+    QCOMPARE(finished.at(0).at(0).toString(), QString("Activating: 2 of 2 component(s) done"));
+    QTRY_COMPARE_WITH_TIMEOUT(component("ConsoleIn0").state(), LifeCycleState::Active, 10000);
+
+    // Cancelled at once: the calls not yet made are skipped, and the summary says so.
+    diagram.performAll(OnlineDiagram::Action::Deactivate);
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    QVERIFY(finished.wait(10000));
+    const QString summary = finished.at(1).at(0).toString();
+    QVERIFY2(summary.startsWith("Deactivating: ") && summary.contains("cancelled"), qPrintable(summary));
+    diagram.performAll(OnlineDiagram::Action::Deactivate);
+    QVERIFY(finished.wait(10000));
+    QTRY_COMPARE_WITH_TIMEOUT(component("ConsoleIn0").state(), LifeCycleState::Inactive, 10000);
 }
 
 void TestOnlineDiagram::drawsLiveConnectors()

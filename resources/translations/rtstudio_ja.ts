@@ -3862,7 +3862,7 @@
 <context>
     <name>SystemEditor::OnlineDiagram</name>
     <message>
-        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+108"/>
+        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+111"/>
         <source>Activate All</source>
         <translation>すべてアクティブ化</translation>
     </message>
@@ -3892,6 +3892,16 @@
         <translation>すべて終了</translation>
     </message>
     <message>
+        <location line="+12"/>
+        <source>%v of %m</source>
+        <translation>%v / %m</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
         <location line="+173"/>
         <source>Unreachable: %1</source>
         <translation>到達不能：%1</translation>
@@ -3902,7 +3912,70 @@
         <translation>到達不能：</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+91"/>
+        <source>Activating</source>
+        <translation>アクティブ化</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Deactivating</source>
+        <translation>非アクティブ化</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resetting</source>
+        <translation>リセット</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Exiting</source>
+        <translation>終了</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Starting</source>
+        <translation>開始</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Stopping</source>
+        <translation>停止</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>%1 %n component(s)…</source>
+        <translation>
+            <numerusform>%1：%n 個のコンポーネントを処理中…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cancelling: the calls under way finish, the others are not made…</source>
+        <translation>中止しています：実行中の呼び出しは完了し、残りは行いません…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+16"/>
+        <source>%1: %2 of %n component(s) done</source>
+        <translation>
+            <numerusform>%1：%n 個中 %2 個のコンポーネントが完了</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>, %n failed</source>
+        <translation>
+            <numerusform>、%n 個失敗</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>, %n cancelled</source>
+        <translation>
+            <numerusform>、%n 個中止</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>&amp;Monitor Port</source>
         <translation>ポートをモニタ(&amp;M)</translation>
     </message>

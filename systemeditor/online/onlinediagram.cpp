@@ -22,8 +22,11 @@
 #include <QDragEnterEvent>
 #include <QGraphicsView>
 #include <QLabel>
+#include <QHBoxLayout>
 #include <QMenu>
 #include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QScrollBar>
 #include <QSettings>
 #include <QTimer>
@@ -119,10 +122,23 @@ void OnlineDiagram::buildUi()
     }
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("statusLabel"));
+    // An action on every component: how far it got, and Cancel for the calls not yet made.
+    m_batchBar = new QProgressBar(this);
+    m_batchBar->setObjectName(QStringLiteral("batchProgress"));
+    m_batchBar->setFormat(tr("%v of %m"));
+    m_batchCancel = new QPushButton(tr("Cancel"), this);
+    m_batchCancel->setObjectName(QStringLiteral("batchCancel"));
+    connect(m_batchCancel, &QPushButton::clicked, this, &OnlineDiagram::cancelAll);
+    auto *batchRow = new QHBoxLayout;
+    batchRow->addWidget(m_batchBar, 1);
+    batchRow->addWidget(m_batchCancel);
+    m_batchBar->hide();
+    m_batchCancel->hide();
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(toolbar);
     layout->addWidget(m_view, 1);
+    layout->addLayout(batchRow);
     layout->addWidget(m_status);
 }
 
@@ -341,29 +357,93 @@ void OnlineDiagram::applyColours()
 
 void OnlineDiagram::perform(Action action, const QString &instanceName)
 {
+    submitAction(action, instanceName, nullptr);
+}
+
+void OnlineDiagram::submitAction(Action action, const QString &instanceName,
+                                 const std::shared_ptr<std::atomic_bool> &cancelled)
+{
     const auto live = m_live.constFind(instanceName);
     if (live == m_live.cend())
         return;
     const Corba::ComponentProxy proxy(live->ior, live->path);
     m_session->submit(
         hostOf(*live),
-        [proxy, action] {
+        [proxy, action, cancelled] {
+            // A cancelled batch leaves the calls still queued unmade.
+            if (cancelled && *cancelled)
+                return QVariant(false);
             run(proxy, action);
-            return QVariant();
+            return QVariant(true);
         },
         this,
-        [this, instanceName](const OnlineResult &result) {
+        [this, instanceName, cancelled](const OnlineResult &result) {
             if (!result.ok)
                 m_status->setText(result.error);
             emit actionFinished(instanceName, result.ok ? QString() : result.error);
+            if (cancelled)
+                batchStepDone(result.ok, result.ok && !result.value.toBool());
             poll();
         });
 }
 
 void OnlineDiagram::performAll(Action action)
 {
-    for (const QString &instance : m_live.keys())
-        perform(action, instance);
+    if (m_batch.running())
+        return;
+    static const char *const doing[] = {QT_TR_NOOP("Activating"), QT_TR_NOOP("Deactivating"),
+                                        QT_TR_NOOP("Resetting"), QT_TR_NOOP("Exiting"),
+                                        QT_TR_NOOP("Starting"), QT_TR_NOOP("Stopping")};
+    const QStringList instances = m_live.keys();
+    if (instances.isEmpty())
+        return;
+    m_batch = Batch();
+    m_batch.total = int(instances.size());
+    m_batch.doing = tr(doing[int(action)]);
+    m_batch.cancelled = std::make_shared<std::atomic_bool>(false);
+    m_batchBar->setRange(0, m_batch.total);
+    m_batchBar->setValue(0);
+    m_batchBar->show();
+    m_batchCancel->setEnabled(true);
+    m_batchCancel->show();
+    m_status->setText(tr("%1 %n component(s)…", nullptr, m_batch.total).arg(m_batch.doing));
+    for (const QString &instance : instances)
+        submitAction(action, instance, m_batch.cancelled);
+}
+
+void OnlineDiagram::cancelAll()
+{
+    if (!m_batch.running())
+        return;
+    *m_batch.cancelled = true;
+    m_batchCancel->setEnabled(false);
+    m_status->setText(tr("Cancelling: the calls under way finish, the others are not made…"));
+}
+
+void OnlineDiagram::batchStepDone(bool ok, bool skipped)
+{
+    if (!m_batch.running())
+        return;
+    ++m_batch.done;
+    m_batch.failed += ok ? 0 : 1;
+    m_batch.skipped += skipped ? 1 : 0;
+    m_batchBar->setValue(m_batch.done);
+    if (m_batch.done < m_batch.total)
+        return;
+    m_batchBar->hide();
+    m_batchCancel->hide();
+    const int made = m_batch.total - m_batch.skipped;
+    QString summary = tr("%1: %2 of %n component(s) done", nullptr, m_batch.total)
+                          .arg(m_batch.doing)
+                          .arg(made - m_batch.failed);
+    if (m_batch.failed > 0)
+        summary += tr(", %n failed", nullptr, m_batch.failed);
+    if (m_batch.skipped > 0)
+        summary += tr(", %n cancelled", nullptr, m_batch.skipped);
+    if (m_batch.failed == 0)
+        m_status->setText(summary + QLatin1Char('.'));
+    m_batch = Batch();
+    emit allFinished(summary);
 }
 
 void OnlineDiagram::monitorPort(const QString &instanceName, const QString &portName)

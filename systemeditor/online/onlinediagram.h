@@ -7,7 +7,9 @@
 #include "corbatypes.h"
 #include "rtsprofile.h"
 
+#include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include <QHash>
@@ -17,6 +19,8 @@
 
 class QGraphicsView;
 class QLabel;
+class QProgressBar;
+class QPushButton;
 class QTimer;
 class QUndoStack;
 
@@ -88,7 +92,10 @@ public:
     int portReads() const { return m_portReads; }
 
     void perform(Action action, const QString &instanceName);
+    /// `action` on every component of the diagram, with a progress bar and Cancel (the calls not
+    /// yet made are skipped); allFinished() says how it went.
     void performAll(Action action);
+    void cancelAll();
 
     /// Asks for the settings of a new data connector (default: the ConnectorDialog, modal).
     using ConnectorEditor = std::function<std::optional<ConnectorSettings>(
@@ -122,6 +129,8 @@ signals:
     /// A poll round finished and states and connectors are up to date.
     void polled();
     void actionFinished(const QString &instanceName, const QString &error);
+    /// A performAll() ended: how many components were done, failed or skipped by Cancel.
+    void allFinished(const QString &summary);
     /// A live connect or disconnect finished; `error` is empty on success.
     void connectionFinished(const QString &error);
     /// saveLiveSystem() finished: `error` is empty when the file was written; `warnings` name
@@ -143,7 +152,22 @@ private:
         bool portsStale = false; ///< read the ports in the next round, whatever its number
     };
 
+    /// One performAll(): the components done so far, and its cancel flag for the queued calls.
+    struct Batch
+    {
+        int total = 0;
+        int done = 0;
+        int failed = 0;
+        int skipped = 0;
+        QString doing;
+        std::shared_ptr<std::atomic_bool> cancelled;
+        bool running() const { return total > 0; }
+    };
+
     void buildUi();
+    void submitAction(Action action, const QString &instanceName,
+                      const std::shared_ptr<std::atomic_bool> &cancelled);
+    void batchStepDone(bool ok, bool skipped);
     QString hostOf(const Live &live) const;
     struct PollRequest
     {
@@ -171,6 +195,9 @@ private:
     bool filterViewEvent(QEvent *event);
 
     OnlineSession *m_session;
+    Batch m_batch;
+    QProgressBar *m_batchBar = nullptr;
+    QPushButton *m_batchCancel = nullptr;
     QUndoStack *m_undoStack;
     SystemModel *m_model;
     SystemScene *m_scene;
