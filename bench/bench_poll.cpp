@@ -4,6 +4,7 @@
 // and the Online Diagram's state + connector poll, each for BENCH_POLL_SECONDS (default 10) s of
 // wall time. CPU is this process's user + system time (getrusage), all threads: GUI, workers and
 // the ORB. Prints a table against the target of < 5 % of one core; timing never fails the build.
+#include "cputime.h"
 #include "livesystem.h"
 #include "managerproxy.h"
 #include "nameserviceview.h"
@@ -22,7 +23,6 @@
 #include <QTextStream>
 #include <QTimer>
 
-#include <sys/resource.h>
 
 #include <cstdlib>
 
@@ -41,13 +41,6 @@ int durationSeconds()
     return seconds > 0 ? seconds : 10;
 }
 
-double cpuSeconds()
-{
-    rusage usage {};
-    getrusage(RUSAGE_SELF, &usage);
-    const auto seconds = [](const timeval &t) { return double(t.tv_sec) + t.tv_usec / 1e6; };
-    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
 
 struct Sample
 {
@@ -69,10 +62,10 @@ Sample measure(const QString &poller, int seconds, const std::function<void(int 
     QEventLoop loop;
     QTimer::singleShot(seconds * 1000, Qt::PreciseTimer, &loop, &QEventLoop::quit);
     QElapsedTimer wall;
-    const double cpuBefore = cpuSeconds();
+    const double cpuBefore = processCpuSeconds();
     wall.start();
     loop.exec();
-    sample.cpu = cpuSeconds() - cpuBefore;
+    sample.cpu = processCpuSeconds() - cpuBefore;
     sample.wallSeconds = wall.elapsed() / 1000.0;
     sample.rounds = countRounds ? rounds : -1;
     return sample;

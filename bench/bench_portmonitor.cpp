@@ -5,6 +5,7 @@
 // event loop (target < 50 ms) and this process's CPU (all threads). Prints a table; timing never
 // fails the build.
 #include "componentproxy.h"
+#include "cputime.h"
 #include "livesystem.h"
 #include "namingbrowser.h"
 #include "portmonitor.h"
@@ -16,20 +17,6 @@
 #include <QEventLoop>
 #include <QTextStream>
 #include <QTimer>
-
-#include <sys/resource.h>
-
-namespace {
-
-double cpuSeconds()
-{
-    rusage usage {};
-    getrusage(RUSAGE_SELF, &usage);
-    const auto seconds = [](const timeval &t) { return double(t.tv_sec) + t.tv_usec / 1e6; };
-    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
-} // namespace
 
 int main(int argc, char *argv[])
 {
@@ -74,7 +61,7 @@ int main(int argc, char *argv[])
     for (const QString &key : keys)
         before.insert(key, monitor.received(key));
     const LiveTest::StallMeter stalls;
-    const double cpuBefore = cpuSeconds();
+    const double cpuBefore = processCpuSeconds();
     QElapsedTimer wall;
     wall.start();
     QEventLoop loop;
@@ -86,7 +73,7 @@ int main(int argc, char *argv[])
     QTimer::singleShot(seconds * 1000, &loop, &QEventLoop::quit);
     loop.exec();
     const double elapsed = wall.elapsed() / 1000.0;
-    const double cpu = cpuSeconds() - cpuBefore;
+    const double cpu = processCpuSeconds() - cpuBefore;
 
     out << "Port Monitor: SeqOut's " << keys.size() << " OutPorts written at 1 kHz, " << seconds
         << " s, plot and table of one port at a time\n\n";

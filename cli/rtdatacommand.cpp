@@ -9,7 +9,6 @@
 
 #include <QElapsedTimer>
 #include <QFile>
-#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QThread>
@@ -64,13 +63,6 @@ QString portType(const Codegen::CdrCodec &codec, const PortInfo &port, const QSt
                                    "with --idl-dir)")
                         .arg(where, dataType));
     return type;
-}
-
-/// A string as a JSON literal, quotes and escapes included.
-QString jsonString(const QString &text)
-{
-    const QByteArray array = QJsonDocument(QJsonArray {text}).toJson(QJsonDocument::Compact);
-    return QString::fromUtf8(array.mid(1, array.size() - 2));
 }
 
 /// OpenRTM's IDL first, then the user's folders.
@@ -302,6 +294,10 @@ int RtDataCommand::print(const RtOptions &options, const PortInfo &port, const Q
         ++printed;
     }
     tap.close();
+    if (tap.dropped() > 0)
+        report(QStringLiteral("%1 sample(s) were dropped: they came faster than they could be printed")
+                   .arg(tap.dropped()),
+               streams);
     return ExitOk;
 }
 
@@ -439,7 +435,7 @@ int RtDataCommand::record(const RtOptions &options, Streams streams)
             }
             const QString line = QStringLiteral("{\"t\":%1,\"port\":%2,\"type\":%3,\"value\":%4}\n")
                                      .arg(a.sample.receivedMs)
-                                     .arg(jsonString(a.port->where), jsonString(a.port->type),
+                                     .arg(Codegen::CdrCodec::jsonText(a.port->where), Codegen::CdrCodec::jsonText(a.port->type),
                                           codec.toJson(a.port->type, value));
             if (file.write(line.toUtf8()) < 0)
                 throw Error(Error::Kind::NotFound, QStringLiteral("%1: %2").arg(target, file.errorString()));

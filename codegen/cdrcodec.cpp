@@ -530,23 +530,6 @@ private:
     QByteArray m_bytes;
 };
 
-QString jsonText(const QJsonValue &value)
-{
-    if (value.isString()) {
-        const QByteArray doc = QJsonDocument(QJsonArray {value}).toJson(QJsonDocument::Compact);
-        return QString::fromUtf8(doc.mid(1, doc.size() - 2));
-    }
-    if (value.isDouble()) {
-        const double d = value.toDouble();
-        if (d == std::floor(d) && std::abs(d) < 1e15)
-            return QString::number(value.toInteger());
-        return QString::number(d, 'g', QLocale::FloatingPointShortest);
-    }
-    if (value.isBool())
-        return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
-    return QStringLiteral("null");
-}
-
 /// Formats a value by its type; `json` picks JSON syntax, else the people's one-line form.
 class Formatter
 {
@@ -587,13 +570,13 @@ public:
             for (const QString &name : names) {
                 const IdlType memberType = memberTypeOf(type.name, name, object);
                 const QString text = format(memberType, object.value(name), depth + 1);
-                fields.append(m_json ? jsonText(name) + QLatin1Char(':') + text
+                fields.append(m_json ? CdrCodec::jsonText(name) + QLatin1Char(':') + text
                                      : name + QLatin1Char('=') + text);
             }
             return m_json ? QLatin1Char('{') + fields.join(QLatin1Char(',')) + QLatin1Char('}')
                           : QLatin1Char('{') + fields.join(QStringLiteral(", ")) + QLatin1Char('}');
         }
-        return jsonText(value);
+        return CdrCodec::jsonText(value);
     }
 
     IdlType memberTypeOf(const QString &owner, const QString &member, const QJsonObject &object) const
@@ -622,6 +605,23 @@ private:
 };
 
 } // namespace
+
+QString CdrCodec::jsonText(const QJsonValue &value)
+{
+    if (value.isString()) {
+        const QByteArray doc = QJsonDocument(QJsonArray {value}).toJson(QJsonDocument::Compact);
+        return QString::fromUtf8(doc.mid(1, doc.size() - 2));
+    }
+    if (value.isDouble()) {
+        const double d = value.toDouble();
+        if (d == std::floor(d) && std::abs(d) < 1e15)
+            return QString::number(value.toInteger());
+        return QString::number(d, 'g', QLocale::FloatingPointShortest);
+    }
+    if (value.isBool())
+        return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    return QStringLiteral("null");
+}
 
 CdrCodec::CdrCodec(const IdlModel &model)
     : m_model(model)

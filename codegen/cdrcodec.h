@@ -44,6 +44,9 @@ public:
     /// `[1,2]`, or plain text for a string member).
     QJsonValue parseArgument(const QString &type, const QString &text, QString *error) const;
 
+    /// A string, number, boolean or null as JSON text (strings quoted and escaped).
+    static QString jsonText(const QJsonValue &value);
+
     /// The value as one line of JSON with members in declaration order.
     QString toJson(const QString &type, const QJsonValue &value) const;
     /// The value as one line for people: `[sec.nsec] data=42` for timed types, members as

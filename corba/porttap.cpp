@@ -33,21 +33,13 @@ PortableServer::POA_ptr rootPoa()
     return poa.in();
 }
 
-/// The connector settings of a tool's connector: rtcon's defaults under `given`, and the data
-/// type of the port.
+/// A tool's connector: rtcon's defaults (PortConnection::effectiveProperties), little-endian CDR as
+/// OpenRTM-aist 2.x sends it, then what the caller gives.
 Properties connectorProperties(const PortInfo &port, const Properties &given)
 {
-    Properties result = {
-        {QStringLiteral("dataport.interface_type"), QStringLiteral("corba_cdr")},
-        {QStringLiteral("dataport.dataflow_type"), QStringLiteral("push")},
-        {QStringLiteral("dataport.subscription_type"), QStringLiteral("new")},
-        {QStringLiteral("dataport.serializer.cdr.endian"), QStringLiteral("little")},
-        {QStringLiteral("dataport.data_type"),
-         propertyValue(port.properties, QStringLiteral("dataport.data_type"))},
-    };
-    for (const auto &[key, value] : given)
-        setProperty(result, key, value);
-    return result;
+    Properties defaults = {{QStringLiteral("dataport.serializer.cdr.endian"), QStringLiteral("little")}};
+    defaults += given;
+    return PortConnection::effectiveProperties({port}, defaults);
 }
 
 bool isLittleEndian(const Properties &properties)
@@ -163,7 +155,6 @@ struct PortTap::Private
     TapServant *servant = nullptr;
     PortableServer::ObjectId_var id;
     ToolConnector connector;
-    QString dataType;
     bool little = true;
 
     ~Private()
@@ -188,7 +179,6 @@ PortTap::PortTap(const PortInfo &port, const Properties &properties, const QStri
         throw Error(Error::Kind::Incompatible,
                     QStringLiteral("%1: not an OutPort (%2)").arg(path, port.portType()));
     Properties settings = connectorProperties(port, properties);
-    d->dataType = propertyValue(settings, QStringLiteral("dataport.data_type"));
     d->little = isLittleEndian(settings);
     call(path, [&] {
         d->servant = new TapServant(size_t(std::max(1, queueLength)));
@@ -219,19 +209,9 @@ quint64 PortTap::dropped() const
     return d->servant->dropped();
 }
 
-QString PortTap::dataType() const
-{
-    return d->dataType;
-}
-
 bool PortTap::littleEndian() const
 {
     return d->little;
-}
-
-QString PortTap::connectorId() const
-{
-    return d->connector.connector.id;
 }
 
 void PortTap::close()
@@ -243,7 +223,6 @@ struct PortFeed::Private
 {
     ToolConnector connector;
     OpenRTM::InPortCdr_var target;
-    QString dataType;
     bool little = true;
 
     ~Private() { connector.closeQuietly(); }
@@ -256,7 +235,6 @@ PortFeed::PortFeed(const PortInfo &port, const Properties &properties, const QSt
         throw Error(Error::Kind::Incompatible,
                     QStringLiteral("%1: not an InPort (%2)").arg(path, port.portType()));
     const Properties settings = connectorProperties(port, properties);
-    d->dataType = propertyValue(settings, QStringLiteral("dataport.data_type"));
     d->little = isLittleEndian(settings);
     d->connector = {port, path,
                     PortConnection::connectAsGiven({port}, toolConnectorName("inject"), QString(),
@@ -292,19 +270,9 @@ void PortFeed::put(const QByteArray &cdr)
                     QStringLiteral("%1: put: %2").arg(path, portStatusName(status)));
 }
 
-QString PortFeed::dataType() const
-{
-    return d->dataType;
-}
-
 bool PortFeed::littleEndian() const
 {
     return d->little;
-}
-
-QString PortFeed::connectorId() const
-{
-    return d->connector.connector.id;
 }
 
 void PortFeed::close()

@@ -43,10 +43,8 @@ public:
     bool wait(int timeoutMs);
     /// Samples dropped because the queue was full.
     quint64 dropped() const;
-    /// The port's data type (`IDL:RTC/TimedLong:1.0`) and the connector's byte order.
-    QString dataType() const;
+    /// The connector's byte order.
     bool littleEndian() const;
-    QString connectorId() const;
     /// Removes the connector (once; later calls do nothing). Throws on a failed disconnect.
     void close();
 
@@ -71,9 +69,7 @@ public:
     /// Sends one sample; throws Corba::Error when the port reports anything but PORT_OK
     /// (BUFFER_FULL, …, named in the message) or does not answer.
     void put(const QByteArray &cdr);
-    QString dataType() const;
     bool littleEndian() const;
-    QString connectorId() const;
     void close();
 
 private:

@@ -81,9 +81,12 @@ void TestLocalRuntime::startsReusesAndStops()
     QCOMPARE(again["manager"]["pid"].toInteger(), started["manager"]["pid"].toInteger());
 
     QCOMPARE(local("stop").code, 0);
-    QVERIFY(LiveTest::waitUntilStopped(started["manager"]["pid"].toInteger()));
+    // Both processes are gone (the detached processes are reaped by init).
+    for (const char *process : {"manager", "nameServer"}) {
+        const auto pid = pid_t(started[process]["pid"].toInteger());
+        QTRY_VERIFY_WITH_TIMEOUT(::kill(pid, 0) != 0, 10000);
+    }
     QCOMPARE(local("status").code, 1);
-    QVERIFY(!LiveTest::isListening(quint16(namingPort)) || namingPort == 2809); // 2809 may be a user's own
 }
 
 void TestLocalRuntime::restartsWhenHalfOfItDied()

@@ -129,7 +129,13 @@ void TestRunLocally::keptRuntimeOutlivesTheWindow()
     window->close();
     window.reset();
     QVERIFY(Deploy::LocalRuntime().status().running());
-    QVERIFY(Deploy::LocalRuntime().stop(nullptr));
+
+    // Online → Stop Local Runtime.
+    window = std::make_unique<MainWindow>();
+    window->findChild<QAction *>(QStringLiteral("actionStopLocalRuntime"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!Deploy::LocalRuntime().status().nameServer.running, 20000);
+    QVERIFY(!Deploy::LocalRuntime().status().manager.running);
+    QTRY_VERIFY(window->findChild<QLabel *>(QStringLiteral("localRuntimeStatus"))->text().contains("stopped"));
 }
 
 QTEST_MAIN(TestRunLocally)

@@ -47,7 +47,7 @@ bool listening(quint16 port)
 }
 
 /// True when a server could listen on `port` on every interface.
-bool free(quint16 port)
+bool portIsFree(quint16 port)
 {
     const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
     if (fd < 0)
@@ -63,7 +63,7 @@ bool free(quint16 port)
 quint16 firstFree(quint16 from, quint16 taken)
 {
     for (quint16 port = from; port < from + 200; ++port) {
-        if (port != taken && free(port))
+        if (port != taken && portIsFree(port))
             return port;
     }
     return 0;

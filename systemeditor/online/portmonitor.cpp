@@ -202,13 +202,11 @@ void PortMonitor::buildUi()
     });
     m_pause = new QCheckBox(tr("&Pause"), this);
     m_pause->setObjectName(QStringLiteral("portMonitorPause"));
-    connect(m_pause, &QCheckBox::toggled, this, &PortMonitor::setPaused);
     m_window = new QSpinBox(this);
     m_window->setRange(1, 600);
-    m_window->setValue(m_windowSeconds);
+    m_window->setValue(10);
     m_window->setSuffix(tr(" s"));
     m_window->setToolTip(tr("How many seconds of samples are kept and plotted"));
-    connect(m_window, &QSpinBox::valueChanged, this, &PortMonitor::setWindowSeconds);
     auto *exportButton = new QPushButton(tr("E&xport CSV…"), this);
     connect(exportButton, &QPushButton::clicked, this, &PortMonitor::exportCurrent);
     m_status = new QLabel(this);
@@ -348,21 +346,17 @@ QString PortMonitor::problem(const QString &key) const
 
 void PortMonitor::setPaused(bool paused)
 {
-    m_paused = paused;
-    if (m_pause->isChecked() != paused)
-        m_pause->setChecked(paused);
+    m_pause->setChecked(paused);
 }
 
 bool PortMonitor::isPaused() const
 {
-    return m_paused;
+    return m_pause->isChecked();
 }
 
 void PortMonitor::setWindowSeconds(int seconds)
 {
-    m_windowSeconds = qMax(1, seconds);
-    if (m_window->value() != m_windowSeconds)
-        m_window->setValue(m_windowSeconds);
+    m_window->setValue(seconds);
 }
 
 void PortMonitor::opened(const QString &key, const QString &type, const QString &problem)
@@ -397,7 +391,7 @@ void PortMonitor::receive(const QString &key, const QList<MonitorSample> &batch)
 
 void PortMonitor::prune(Watched &watched, qint64 nowMs) const
 {
-    const qint64 oldest = nowMs - qint64(m_windowSeconds) * 1000;
+    const qint64 oldest = nowMs - qint64(m_window->value()) * 1000;
     while (!watched.samples.empty()
            && (watched.samples.front().receivedMs < oldest || watched.samples.size() > MaxKept))
         watched.samples.pop_front();
@@ -416,7 +410,7 @@ void PortMonitor::refreshView()
     m_status->setText(it->problem.isEmpty() ? tr("%1 · %n sample(s) kept", nullptr, int(it->samples.size()))
                                                   .arg(it->type)
                                             : it->problem);
-    if (m_paused)
+    if (isPaused())
         return;
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     prune(*it, now);
@@ -470,7 +464,7 @@ void PortMonitor::refreshView()
     }
     for (qsizetype i = 0; i < series.size(); ++i)
         static_cast<QLineSeries *>(series[i])->replace(points[i]);
-    m_timeAxis->setRange(-m_windowSeconds, 0);
+    m_timeAxis->setRange(-m_window->value(), 0);
     const double margin = high > low ? (high - low) * 0.05 : 1.0;
     m_valueAxis->setRange(low - margin, high + margin);
     emit samplesShown(key);

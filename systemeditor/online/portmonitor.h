@@ -115,8 +115,6 @@ private:
     QHash<QString, Watched> m_watched;
     QStringList m_order;
     QStringList m_idlDirectories;
-    int m_windowSeconds = 10;
-    bool m_paused = false;
 
     QSplitter *m_splitter = nullptr;
     bool m_splitSet = false;
