@@ -5,8 +5,10 @@
 // latency is the receiver's ON_BUFFER_WRITE listener time minus the time stamp the sender set just
 // before write() (system_clock on both sides); throughput is the payload over the mean interval of
 // back-to-back writes (a flush write returns once the receiver has the sample).
-// Two placements in one run: two components in one RTC::Manager, and a receiver in a second process
-// (this program run with --receiver PORT) reached through corbaloc:iiop:127.0.0.1:PORT/manager.
+// Three placements in one run: two components in one RTC::Manager, and a receiver in a second process
+// (this program run with --receiver PORT [tcp]) reached through corbaloc:iiop:127.0.0.1:PORT/manager,
+// once through the Unix socket the runtime offers same-host peers by default and once over loopback
+// TCP only (corba.unix_socket: NO in the receiver).
 // The targets, from OpenRTM-aist 2.1's figures, are printed against the measurements at the end.
 // With --openrtm PREFIX (or OPENRTM_PREFIX), OpenRTM-aist's own Throughput example installed there
 // runs afterwards in both placements (bounded in time) and its figures are printed beside ours.
@@ -262,10 +264,11 @@ private:
 };
 
 /// The manager of this process: no name server, no master, loopback only.
-RTC::Manager *startManager(const char *program, const std::string &endpoint)
+RTC::Manager *startManager(const char *program, const std::string &endpoint, bool unixSocket = true)
 {
     setenv("ORBgiopMaxMsgSize", giopMaxMsgSize, 0);
     const std::string endpoints = "corba.endpoints:" + endpoint;
+    const char *transport = unixSocket ? "corba.unix_socket:YES" : "corba.unix_socket:NO";
     const char *args[] = {program,
                           "-o",
                           "naming.enable:NO",
@@ -275,6 +278,8 @@ RTC::Manager *startManager(const char *program, const std::string &endpoint)
                           endpoints.c_str(),
                           "-o",
                           "logger.log_level:ERROR",
+                          "-o",
+                          transport,
                           "-i",
                           "-f",
                           "/nonexistent"};
@@ -409,9 +414,9 @@ std::vector<Row> measureAll(FlowSender *sender, const AwaitResult &awaitResult)
 
 /// This program as the receiving process: a manager on 127.0.0.1:PORT with one FlowReceiver that
 /// prints a result line per size; it runs until its standard input closes.
-int runReceiver(const char *program, const char *port)
+int runReceiver(const char *program, const char *port, bool unixSocket)
 {
-    RTC::Manager *manager = startManager(program, std::string("127.0.0.1:") + port);
+    RTC::Manager *manager = startManager(program, std::string("127.0.0.1:") + port, unixSocket);
     if (manager == nullptr)
         return 1;
     auto *receiver = dynamic_cast<FlowReceiver *>(manager->createComponent("FlowReceiver"));
@@ -440,7 +445,7 @@ public:
     ReceiverProcess &operator=(const ReceiverProcess &) = delete;
     ~ReceiverProcess() { stop(); }
 
-    bool start(unsigned port)
+    bool start(unsigned port, bool unixSocket)
     {
         int toChild[2], fromChild[2];
         if (pipe(toChild) != 0 || pipe(fromChild) != 0)
@@ -455,7 +460,7 @@ public:
             close(toChild[1]);
             close(fromChild[0]);
             execl("/proc/self/exe", "bench_sdkflow", "--receiver", portText.c_str(),
-                  static_cast<char *>(nullptr));
+                  unixSocket ? static_cast<char *>(nullptr) : "tcp", static_cast<char *>(nullptr));
             _exit(127);
         }
         close(toChild[0]);
@@ -570,7 +575,11 @@ std::vector<Row> measureInProcess(RTC::Manager *manager, FlowSender *sender)
     return rows;
 }
 
-std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *sender)
+const char *const unixPlacement
+    = "(b) two processes on one host, through the Unix socket the runtime offers by default";
+const char *const tcpPlacement = "(c) two processes over loopback TCP (receiver: corba.unix_socket NO)";
+
+std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *sender, bool unixSocket)
 {
     const unsigned port = freePort();
     ReceiverProcess process;
@@ -584,7 +593,7 @@ std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *send
               }
               return false;
           };
-    if (port == 0 || !process.start(port)
+    if (port == 0 || !process.start(port, unixSocket)
         || !nextLine(&line, [](const std::string &text) { return text.rfind("ready", 0) == 0; })) {
         std::printf("\nthe receiver process did not start (%s)\n", line.c_str());
         return {};
@@ -607,7 +616,7 @@ std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *send
         std::printf("\ncannot connect to the receiver's port\n");
         return {};
     }
-    printHeader("(b) two processes: the receiver in a second process, over loopback TCP");
+    printHeader(unixSocket ? unixPlacement : tcpPlacement);
     const std::vector<Row> rows = measureAll(sender, [&](Latency *l) {
         std::string result;
         return nextLine(&result, [l](const std::string &text) { return fromLine(text, l); });
@@ -652,10 +661,13 @@ const char *verdict(double measured, double strict, double lenient, bool lowerIs
     return meets(strict) ? "yes" : meets(lenient) ? "partly" : "no";
 }
 
-void printTargets(const std::vector<Row> &inProcess, const std::vector<Row> &between)
+void printTargets(const std::vector<Row> &inProcess, const std::vector<Row> &between,
+                  const std::vector<Row> &tcp)
 {
     const double betweenLatency = smallLatency(between);
     const double betweenPeak = peakGiBPerSecond(between);
+    const double tcpLatency = smallLatency(tcp);
+    const double tcpPeak = peakGiBPerSecond(tcp);
     const double inLatency = smallLatency(inProcess);
     const double inPeak = peakGiBPerSecond(inProcess);
     std::printf("\nAgainst OpenRTM-aist 2.1 (latency: worse mean of 1 and 8 elements; peak: best "
@@ -670,13 +682,20 @@ void printTargets(const std::vector<Row> &inProcess, const std::vector<Row> &bet
     std::printf("| peak throughput, 2 procs        | 0.9-1.3 GiB/s    | >= 1.35-1.95 GiB/s    | "
                 "%6.2f GiB/s  | %-6s |\n",
                 betweenPeak, verdict(betweenPeak, 1.95, 1.35, false));
+    std::printf("| latency, 2 procs, TCP only      | 45-76 us         | <= 22.5-38 us (1/2)   | "
+                "%8.1f us   | %-6s |\n",
+                tcpLatency, verdict(tcpLatency, 22.5, 38, true));
+    std::printf("| peak throughput, 2 procs, TCP   | 0.9-1.3 GiB/s    | >= 1.35-1.95 GiB/s    | "
+                "%6.2f GiB/s  | %-6s |\n",
+                tcpPeak, verdict(tcpPeak, 1.95, 1.35, false));
     std::printf("| latency, 1-8 elements, 1 proc   | 10-18 us         | -                     | "
                 "%8.1f us   | -      |\n",
                 inLatency);
     std::printf("| peak throughput, 1 proc         | 1.7-1.8 GiB/s    | >= 8.5-9.0 GiB/s (5x) | "
                 "%6.2f GiB/s  | %-6s |\n",
                 inPeak, verdict(inPeak, 9.0, 8.5, false));
-    std::printf("(met: yes = the strict end of the goal range, partly = only its lenient end)\n");
+    std::printf("(met: yes = the strict end of the goal range, partly = only its lenient end; \"2 procs\" is\n"
+                "the runtime's default between processes on one host, a Unix socket)\n");
 }
 
 /// OpenRTM-aist's row of @p elements, or null.
@@ -776,7 +795,8 @@ void printComparison(const char *placement, const std::vector<Row> &ours,
 /// Runs OpenRTM-aist's own Throughput example from @p prefix in both placements, one after the
 /// other, and prints its figures beside this benchmark's.
 void compareWithOpenRtm(const std::string &prefix, CORBA::ORB_ptr orb,
-                        const std::vector<Row> &inProcess, const std::vector<Row> &between)
+                        const std::vector<Row> &inProcess, const std::vector<Row> &between,
+                        const std::vector<Row> &tcp)
 {
     if (prefix.empty()) {
         std::printf("\nNo OpenRTM-aist prefix given (--openrtm PREFIX or OPENRTM_PREFIX): its "
@@ -796,20 +816,21 @@ void compareWithOpenRtm(const std::string &prefix, CORBA::ORB_ptr orb,
         ports.receiver = freePort();
     while (ports.noMaster == ports.sender || ports.noMaster == ports.receiver)
         ports.noMaster = freePort();
-    printComparison("(b) two processes over loopback TCP", between,
-                    OpenRtmThroughput::runTwoProcesses(
-                        prefix, sizes.back(), openRtmTimeoutSeconds, ports,
-                        [orb](const OpenRtmThroughput::Ports &p) {
-                            return connectOpenRtmExamples(orb, p);
-                        }));
+    const OpenRtmThroughput::Run twoProcesses = OpenRtmThroughput::runTwoProcesses(
+        prefix, sizes.back(), openRtmTimeoutSeconds, ports,
+        [orb](const OpenRtmThroughput::Ports &p) { return connectOpenRtmExamples(orb, p); });
+    printComparison("(b) two processes, each product's default: the SDK through its Unix socket, "
+                    "OpenRTM-aist over loopback TCP",
+                    between, twoProcesses);
+    printComparison("(c) two processes, both over loopback TCP", tcp, twoProcesses);
 }
 
 } // namespace
 
 int main(int argc, char **argv)
 {
-    if (argc == 3 && std::string(argv[1]) == "--receiver")
-        return runReceiver(argv[0], argv[2]);
+    if ((argc == 3 || argc == 4) && std::string(argv[1]) == "--receiver")
+        return runReceiver(argv[0], argv[2], argc == 3);
     std::string openRtm = std::getenv("OPENRTM_PREFIX") ? std::getenv("OPENRTM_PREFIX") : "";
     for (int i = 1; i + 1 < argc; ++i) {
         if (std::string(argv[i]) == "--openrtm")
@@ -832,9 +853,10 @@ int main(int argc, char **argv)
         "ORBgiopMaxMsgSize %s.\n",
         warmUpSamples, sizeBudgetSeconds, std::getenv("ORBgiopMaxMsgSize"));
     const std::vector<Row> inProcess = measureInProcess(manager, sender);
-    const std::vector<Row> between = measureBetweenProcesses(manager, sender);
-    printTargets(inProcess, between);
-    compareWithOpenRtm(openRtm, manager->getORB(), inProcess, between);
+    const std::vector<Row> between = measureBetweenProcesses(manager, sender, true);
+    const std::vector<Row> tcp = measureBetweenProcesses(manager, sender, false);
+    printTargets(inProcess, between, tcp);
+    compareWithOpenRtm(openRtm, manager->getORB(), inProcess, between, tcp);
     std::fflush(stdout);
     // As in the receiver: the measurement is printed and the ORB holds nothing worth an orderly
     // end.

@@ -1,11 +1,19 @@
 // SPDX-License-Identifier: MIT
 #include "corbautil.h"
 
+#include <omniORB4/IIOP.h>
+#include <omniORB4/omniIOR.h>
+
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <dirent.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <algorithm>
 #include <random>
 
 namespace Runtime {
@@ -123,6 +131,84 @@ int freeLoopbackPort()
     if (fd >= 0)
         close(fd);
     return port;
+}
+
+std::string localSocketFolder()
+{
+    // A socket's path must fit sockaddr_un (108 bytes) with omniORB's 20-character file name.
+    const char *tmp = std::getenv("TMPDIR");
+    std::string base = tmp && *tmp ? std::string(tmp) : std::string("/tmp");
+    if (base.size() > 64)
+        base = "/tmp";
+    std::string folder = base + "/rtstudio-orb-" + std::to_string(getuid());
+    struct stat info {};
+    if (mkdir(folder.c_str(), 0700) != 0 && errno != EEXIST)
+        return {};
+    // Someone else's folder, or not a folder: do not put sockets there.
+    if (lstat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) || info.st_uid != getuid())
+        return {};
+    // omniORB names a socket "<pid>-<time>" and removes it when its ORB is destroyed; a process that
+    // was killed leaves its socket behind.
+    if (DIR *dir = opendir(folder.c_str())) {
+        while (const dirent *entry = readdir(dir)) {
+            char *end = nullptr;
+            const long pid = std::strtol(entry->d_name, &end, 10);
+            if (end == entry->d_name || *end != '-' || pid <= 0)
+                continue;
+            const std::string path = folder + '/' + entry->d_name;
+            if (kill(pid_t(pid), 0) != 0 && errno == ESRCH && lstat(path.c_str(), &info) == 0
+                && S_ISSOCK(info.st_mode))
+                unlink(path.c_str());
+        }
+        closedir(dir);
+    }
+    return folder;
+}
+
+namespace {
+
+/// The object key and TCP addresses of a reference's IIOP profiles.
+struct IiopAddresses
+{
+    std::string key;
+    std::vector<std::pair<std::string, int>> addresses;
+};
+
+IiopAddresses iiopAddresses(CORBA::Object_ptr object)
+{
+    IiopAddresses result;
+    omniIOR_var ior = object->_PR_getobj()->_getIOR();
+    const IOP::TaggedProfileList &profiles = ior->iopProfiles();
+    for (CORBA::ULong i = 0; i < profiles.length(); ++i) {
+        if (profiles[i].tag != IOP::TAG_INTERNET_IOP)
+            continue;
+        IIOP::ProfileBody body;
+        IIOP::unmarshalProfile(profiles[i], body);
+        result.key.assign(reinterpret_cast<const char *>(body.object_key.get_buffer()), body.object_key.length());
+        result.addresses.emplace_back(static_cast<const char *>(body.address.host), int(body.address.port));
+    }
+    return result;
+}
+
+} // namespace
+
+bool sameObject(CORBA::Object_ptr a, CORBA::Object_ptr b)
+{
+    if (CORBA::is_nil(a) || CORBA::is_nil(b))
+        return CORBA::is_nil(a) && CORBA::is_nil(b);
+    if (a->_is_equivalent(b))
+        return true;
+    try {
+        const IiopAddresses first = iiopAddresses(a);
+        const IiopAddresses second = iiopAddresses(b);
+        if (first.key.empty() || first.key != second.key)
+            return false;
+        return std::any_of(first.addresses.begin(), first.addresses.end(), [&second](const auto &address) {
+            return std::find(second.addresses.begin(), second.addresses.end(), address) != second.addresses.end();
+        });
+    } catch (const CORBA::Exception &) {
+        return false;
+    }
 }
 
 std::string describeException(const CORBA::Exception &e)

@@ -44,6 +44,22 @@ CORBA::ORB_var theOrb();
 /// A loopback TCP port nobody listens on right now (for a manager process we start ourselves).
 int freeLoopbackPort();
 
+/**
+ * The folder where this user's managers and components keep the Unix domain sockets that peers on
+ * the same host reach them through (`$TMPDIR/rtstudio-orb-<uid>`, or /tmp's), created private to
+ * the user. Sockets left by processes that are gone (killed before their ORB removed them) are
+ * removed. Empty when the folder cannot be made.
+ */
+std::string localSocketFolder();
+
+/**
+ * Whether two references name the same object. omniORB calls remote references equivalent only when
+ * they reach the object the same way, so `corbaloc:iiop:host:port/manager` and the manager's own
+ * reference (which also offers a Unix socket) would differ; here they are the same when their object
+ * keys are and they share a TCP address.
+ */
+bool sameObject(CORBA::Object_ptr a, CORBA::Object_ptr b);
+
 /// The running program's name (`rtmanager`, `ConsoleInComp`, …), the prefix of its messages.
 const char *programName();
 

@@ -85,6 +85,14 @@ bool Manager::initOrb(std::string *error)
         args.insert(args.end(), {"-ORBendPoint", giop});
         listening += (listening.empty() ? "" : ", ") + giop;
     }
+    // Peers on the same host (omniORB prefers a Unix socket over TCP when an object's reference
+    // offers one) reach this process without the TCP stack: a few microseconds per call instead of
+    // tens. Remote peers ignore the socket and use TCP as before.
+    if (m_config.isYes("corba.unix_socket", true)) {
+        const std::string folder = localSocketFolder();
+        if (!folder.empty())
+            args.insert(args.end(), {"-ORBunixTransportDirectory", folder, "-ORBendPoint", "giop:unix:"});
+    }
     const std::string host = endpoints.front().first;
     const int port = endpoints.front().second;
     // OpenRTM's corba.args: extra ORB options such as `-ORBgiopMaxMsgSize 209715200`.

@@ -49,7 +49,7 @@ RTC::RTObject_ptr Manager::createRemote(const CreateRequest &request, std::strin
                 fail("create_component: no manager for the request", error);
             return RTC::RTObject::_nil();
         }
-        if (target->_is_equivalent(m_self))
+        if (sameObject(target, m_self))
             return createLocal(request, error);
         try {
             RTC::RTObject_var created = target->create_component(forwarded.c_str());
@@ -245,7 +245,7 @@ void Manager::dropSlave(RTM::Manager_ptr manager)
     m_slaves.erase(std::remove_if(m_slaves.begin(), m_slaves.end(),
                                   [manager](const auto &slave) {
                                       try {
-                                          return bool(slave->reference->_is_equivalent(manager));
+                                          return sameObject(slave->reference, manager);
                                       } catch (const CORBA::Exception &) {
                                           return false;
                                       }
@@ -286,7 +286,7 @@ bool Manager::removeMaster(RTM::Manager_ptr manager)
     std::lock_guard lock(m_mutex);
     RTM::ManagerList kept;
     for (CORBA::ULong i = 0; i < m_masters.length(); ++i) {
-        if (m_masters[i]->_is_equivalent(manager))
+        if (sameObject(m_masters[i], manager))
             continue;
         const CORBA::ULong n = kept.length();
         kept.length(n + 1);

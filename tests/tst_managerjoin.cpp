@@ -3,6 +3,7 @@
 // aggregated queries, and slaves the master spawns, which must know they joined before
 // create_component returns (a master going down right after used to leave them reporting
 // "cannot join master").
+#include "corbautil.h"
 #include "livesystem.h"
 
 #include <Manager.hh>
@@ -132,7 +133,7 @@ QStringList TestManagerJoin::slaveNames()
         RTM::ManagerProfile_var profile = slaves[i]->get_profile();
         names << nv(profile->properties, "instance_name");
         RTM::ManagerList_var masters = slaves[i]->get_master_managers();
-        if (masters->length() != 1 || !masters[0]->_is_equivalent(m_master))
+        if (masters->length() != 1 || !Runtime::sameObject(masters[0], m_master))
             names.last() += QStringLiteral(" (does not know its master)");
     }
     names.sort();

@@ -2,6 +2,7 @@
 // rtmanager as a real process next to a real omniNames (free loopback ports, always stopped):
 // naming, create with parameters, data flow in one process and across slaves, slaves that die,
 // bad requests, loadable modules and shutdown.
+#include "corbautil.h"
 #include "livesystem.h"
 
 #include <Manager.hh>
@@ -13,6 +14,10 @@
 #include <QtTest>
 
 #include <csignal>
+#include <cstring>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -104,6 +109,9 @@ private slots:
     void commandLine();
     void shutdownWithoutComponents_data();
     void shutdownWithoutComponents();
+    void masterKnownByAnyReference();
+    void sameHostPeersUseUnixSocket_data();
+    void sameHostPeersUseUnixSocket();
 
 private:
     RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
@@ -238,7 +246,7 @@ void TestManagerLive::masterServesAndRegisters()
     const QString host = localHost();
     CORBA::Object_var named = resolve(host + ".host_cxt/manager.mgr");
     QVERIFY(!CORBA::is_nil(named));
-    QVERIFY(named->_is_equivalent(m_master));
+    QVERIFY(Runtime::sameObject(named, m_master));
     RTM::ModuleProfileList_var factories = m_master->get_factory_profiles();
     QStringList types;
     for (CORBA::ULong i = 0; i < factories->length(); ++i)
@@ -322,7 +330,7 @@ void TestManagerLive::createParametersInAnyOrder()
     QVERIFY(!slaves[0]->is_master());
     RTM::ManagerList_var masters = slaves[0]->get_master_managers();
     QCOMPARE(masters->length(), CORBA::ULong(1));
-    QVERIFY(masters[0]->_is_equivalent(m_master));
+    QVERIFY(Runtime::sameObject(masters[0], m_master));
     RTC::RTCList_var byName = slaves[0]->get_components_by_name("mid");
     QCOMPARE(byName->length(), CORBA::ULong(1));
 
@@ -599,6 +607,116 @@ void TestManagerLive::shutdownWithoutComponents()
     QCOMPARE(process->exitCode(), 0);
     CORBA::Object_var named = resolve(localHost() + ".host_cxt/lonely.mgr");
     QVERIFY(CORBA::is_nil(named));
+}
+
+void TestManagerLive::masterKnownByAnyReference()
+{
+    // The slave joined through corbaloc (TCP); the master's own reference, as the name server has
+    // it, also offers the Unix socket. Both name the same master.
+    RTC::RTObject_var onSlave = create("ConsoleIn?manager_name=slaveR");
+    QVERIFY2(!CORBA::is_nil(onSlave), qPrintable(lastError(m_master)));
+    RTM::ManagerList_var slaves = m_master->get_slave_managers();
+    QCOMPARE(slaves->length(), CORBA::ULong(1));
+    CORBA::Object_var named = resolve(localHost() + ".host_cxt/manager.mgr");
+    RTM::Manager_var master = RTM::Manager::_narrow(named);
+    QVERIFY(!CORBA::is_nil(master));
+    QVERIFY(!named->_is_equivalent(m_master)); // omniORB's view: reached differently
+    QCOMPARE(slaves[0]->remove_master_manager(master), RTC::RTC_OK);
+    RTM::ManagerList_var masters = slaves[0]->get_master_managers();
+    QCOMPARE(masters->length(), CORBA::ULong(0));
+}
+
+void TestManagerLive::sameHostPeersUseUnixSocket_data()
+{
+    QTest::addColumn<QStringList>("options");
+    QTest::addColumn<bool>("unixSocket");
+    QTest::newRow("default") << QStringList() << true;
+    QTest::newRow("corba.unix_socket=NO") << QStringList{"-o", "corba.unix_socket=NO"} << false;
+}
+
+namespace {
+
+/// Lines of /proc/net/unix for sockets bound to @p path: the listening one and one per accepted
+/// connection.
+int unixSocketsAt(const QString &path)
+{
+    QFile table(QStringLiteral("/proc/net/unix"));
+    if (!table.open(QIODevice::ReadOnly))
+        return -1;
+    int count = 0;
+    for (const QByteArray &line : table.readAll().split('\n')) {
+        if (line.endsWith(' ' + path.toLocal8Bit()))
+            ++count;
+    }
+    return count;
+}
+
+/// Leaves a socket file at @p path as a killed process does.
+bool leaveSocket(const QString &path)
+{
+    const int fd = socket(AF_UNIX, SOCK_STREAM, 0);
+    sockaddr_un address {};
+    address.sun_family = AF_UNIX;
+    const QByteArray name = path.toLocal8Bit();
+    if (fd < 0 || name.size() >= int(sizeof address.sun_path))
+        return false;
+    std::memcpy(address.sun_path, name.constData(), size_t(name.size()));
+    const bool bound = bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0;
+    close(fd);
+    return bound;
+}
+
+} // namespace
+
+void TestManagerLive::sameHostPeersUseUnixSocket()
+{
+    QFETCH(QStringList, options);
+    QFETCH(bool, unixSocket);
+    // The sockets' folder follows TMPDIR; a private one keeps this test's files apart.
+    QTemporaryDir tmp(QStringLiteral("/tmp/rtsock-XXXXXX"));
+    QVERIFY(tmp.isValid());
+    const QByteArray oldTmp = qgetenv("TMPDIR");
+    qputenv("TMPDIR", tmp.path().toLocal8Bit());
+    const auto restore = qScopeGuard([&oldTmp] {
+        if (oldTmp.isNull())
+            qunsetenv("TMPDIR");
+        else
+            qputenv("TMPDIR", oldTmp);
+    });
+    const QDir folder(tmp.filePath(QStringLiteral("rtstudio-orb-%1").arg(getuid())));
+    QVERIFY(QDir().mkpath(folder.path()));
+    // A process that is gone, and the socket it left behind.
+    const pid_t gone = fork();
+    if (gone == 0)
+        _exit(0);
+    QVERIFY(gone > 0);
+    QCOMPARE(waitpid(gone, nullptr, 0), gone);
+    const QString stale = folder.filePath(QString::asprintf("%09d-1700000000", int(gone)));
+    QVERIFY(leaveSocket(stale));
+
+    QString error;
+    QProcess *process = nullptr;
+    RTM::Manager_var manager = startMaster(
+        &error, &process,
+        options + QStringList{"-o", "manager.components.precreate=ConsoleIn", "-o", "manager.instance_name=local"});
+    QVERIFY2(!CORBA::is_nil(manager), qPrintable(error));
+    const QStringList own = folder.entryList({QString::asprintf("%09d-*", int(process->processId()))},
+                                             QDir::System);
+    if (!unixSocket) {
+        QVERIFY2(own.isEmpty(), qPrintable(own.join(' ')));
+        return;
+    }
+    QVERIFY2(!QFileInfo::exists(stale), "the socket of a process that is gone was not removed");
+    QCOMPARE(own.size(), 1);
+    const QString path = folder.filePath(own.first());
+    QCOMPARE(unixSocketsAt(path), 1); // listening, nobody connected yet
+    // The component's reference offers the socket beside TCP; a call from this host takes it.
+    RTC::RTCList_var components = manager->get_components();
+    QCOMPARE(components->length(), CORBA::ULong(1));
+    RTC::ComponentProfile_var profile = components[0]->get_component_profile();
+    QCOMPARE(QString(profile->instance_name), QStringLiteral("ConsoleIn0"));
+    QVERIFY(unixSocketsAt(path) >= 2);
+    m_live->stop(process);
 }
 
 QTEST_GUILESS_MAIN(TestManagerLive)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // rtmanager's answers beyond its own process, live: a master aggregating its slaves' components
 // (stopped and dead slaves skipped within a bound), restart(), fork() and get_service().
+#include "corbautil.h"
 #include "livesystem.h"
 
 #include <Manager.hh>
@@ -225,9 +226,9 @@ void TestManagerServices::forkStartsRegisteredSlaves()
 void TestManagerServices::servicesByName()
 {
     CORBA::Object_var self = m_master->get_service("manager");
-    QVERIFY(!CORBA::is_nil(self) && self->_is_equivalent(m_master));
+    QVERIFY(!CORBA::is_nil(self) && Runtime::sameObject(self, m_master));
     CORBA::Object_var master = m_master->get_service("master");
-    QVERIFY(!CORBA::is_nil(master) && master->_is_equivalent(m_master));
+    QVERIFY(!CORBA::is_nil(master) && Runtime::sameObject(master, m_master));
     CORBA::Object_var unknown = m_master->get_service("NoSuchService");
     QVERIFY(CORBA::is_nil(unknown));
 
@@ -241,15 +242,15 @@ void TestManagerServices::servicesByName()
     name[1].id = "manager";
     name[1].kind = "mgr";
     CORBA::Object_var bound = naming->resolve(name);
-    QVERIFY(bound->_is_equivalent(m_master));
+    QVERIFY(Runtime::sameObject(bound, m_master));
 
     RTC::RTObject_var onSlave = create("ConsoleOut?manager_name=slaveS");
     QVERIFY(!CORBA::is_nil(onSlave));
     RTM::Manager_var slaveS = slave("slaveS");
     CORBA::Object_var slavesMaster = slaveS->get_service("master");
-    QVERIFY(!CORBA::is_nil(slavesMaster) && slavesMaster->_is_equivalent(m_master));
+    QVERIFY(!CORBA::is_nil(slavesMaster) && Runtime::sameObject(slavesMaster, m_master));
     CORBA::Object_var slaveSelf = slaveS->get_service("manager");
-    QVERIFY(slaveSelf->_is_equivalent(slaveS));
+    QVERIFY(Runtime::sameObject(slaveSelf, slaveS));
 }
 
 QTEST_GUILESS_MAIN(TestManagerServices)
