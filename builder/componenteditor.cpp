@@ -95,7 +95,7 @@ TypeCatalog *ComponentEditor::sharedTypeCatalog()
     static QPointer<TypeCatalog> catalog;
     if (!catalog) {
         catalog = new TypeCatalog(QString(), QCoreApplication::instance());
-        catalog->reload();
+        catalog->startReload();
     }
     return catalog;
 }
@@ -106,6 +106,7 @@ void ComponentEditor::requestGenerate()
         return;
     Profile::Diagnostics problems = generationProblems(m_model->profile());
     // The generator needs every interface's IDL; an empty list means no IDL could be read.
+    m_types->waitForLoaded();
     const QStringList known = m_types->interfaceTypes();
     for (const Profile::RtcServicePort &port : m_model->profile().servicePorts) {
         for (const Profile::RtcServiceInterface &interface : port.interfaces) {

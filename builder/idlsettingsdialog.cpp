@@ -5,10 +5,13 @@
 
 #include <QDialogButtonBox>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QProgressBar>
 #include <QPushButton>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace Builder {
@@ -70,9 +73,65 @@ void IdlSettingsDialog::removeSelected()
 void IdlSettingsDialog::accept()
 {
     TypeCatalog::setUserDirectories(directories());
-    m_catalog->reload();
+    m_catalog->startReload();
     QDialog::accept();
 }
+
+namespace {
+
+/// How long a scan runs before its progress is shown (short scans do not flicker).
+constexpr int ScanProgressDelayMs = 250;
+
+/// A bar, the file being read and Cancel, shown while the catalog reads its folders.
+QWidget *createScanProgress(TypeCatalog *catalog, QWidget *parent)
+{
+    auto *strip = new QWidget(parent);
+    strip->setObjectName(QStringLiteral("idlScan"));
+    auto *layout = new QHBoxLayout(strip);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto *label = new QLabel(strip);
+    label->setObjectName(QStringLiteral("idlScanLabel"));
+    auto *bar = new QProgressBar(strip);
+    bar->setObjectName(QStringLiteral("idlScanProgress"));
+    bar->setRange(0, 0);
+    bar->setMaximumWidth(160);
+    auto *cancel = new QPushButton(IdlSettingsDialog::tr("Cancel"), strip);
+    cancel->setObjectName(QStringLiteral("idlScanCancel"));
+    cancel->setToolTip(IdlSettingsDialog::tr("Stop reading the IDL folders and keep the types read before"));
+    layout->addWidget(label, 1);
+    layout->addWidget(bar);
+    layout->addWidget(cancel);
+    strip->setVisible(false);
+
+    auto *delay = new QTimer(strip);
+    delay->setSingleShot(true);
+    delay->setInterval(ScanProgressDelayMs);
+    QObject::connect(delay, &QTimer::timeout, strip, [strip, catalog] { strip->setVisible(catalog->isLoading()); });
+    QObject::connect(catalog, &TypeCatalog::loadingStarted, strip, [label, bar, delay] {
+        label->setText(IdlSettingsDialog::tr("Reading the IDL folders…"));
+        bar->setRange(0, 0);
+        delay->start();
+    });
+    QObject::connect(catalog, &TypeCatalog::loadingProgress, strip,
+                     [label, bar](int done, int total, const QString &file) {
+                         bar->setRange(0, total);
+                         bar->setValue(done);
+                         label->setText(IdlSettingsDialog::tr("Reading %1 (%2 of %3)")
+                                            .arg(QFileInfo(file).fileName())
+                                            .arg(done + 1)
+                                            .arg(total));
+                     });
+    QObject::connect(catalog, &TypeCatalog::loadingFinished, strip, [strip, delay] {
+        delay->stop();
+        strip->setVisible(false);
+    });
+    QObject::connect(cancel, &QPushButton::clicked, catalog, &TypeCatalog::cancelReload);
+    if (catalog->isLoading())
+        delay->start();
+    return strip;
+}
+
+} // namespace
 
 QWidget *createTypeCatalogButtons(TypeCatalog *catalog, QWidget *parent)
 {
@@ -81,13 +140,14 @@ QWidget *createTypeCatalogButtons(TypeCatalog *catalog, QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     auto *folders = new QPushButton(IdlSettingsDialog::tr("IDL Folders..."), row);
     auto *reload = new QPushButton(IdlSettingsDialog::tr("Reload Types"), row);
+    reload->setObjectName(QStringLiteral("reloadTypes"));
     reload->setToolTip(IdlSettingsDialog::tr("Parse the IDL folders again"));
     QObject::connect(folders, &QPushButton::clicked, row, [catalog, row] {
         IdlSettingsDialog dialog(catalog, row);
         dialog.exec();
     });
-    QObject::connect(reload, &QPushButton::clicked, catalog, &TypeCatalog::reload);
-    layout->addStretch(1);
+    QObject::connect(reload, &QPushButton::clicked, catalog, &TypeCatalog::startReload);
+    layout->addWidget(createScanProgress(catalog, row), 1);
     layout->addWidget(folders);
     layout->addWidget(reload);
     return row;

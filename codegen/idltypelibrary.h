@@ -6,6 +6,8 @@
 
 #include <QStringList>
 
+#include <functional>
+
 namespace Codegen {
 
 /// The IDL types the RTC Builder offers: every `.idl` file directly in a set of folders (the OpenRTM
@@ -17,12 +19,18 @@ class IdlTypeLibrary
 public:
     explicit IdlTypeLibrary(const QStringList &directories = {});
 
-    /// Sets the folders and reloads.
-    void setDirectories(const QStringList &directories);
+    /// Told before each file is parsed: files done, files in all, the file; false stops the reload.
+    using Progress = std::function<bool(int done, int total, const QString &file)>;
+
+    /// Sets the folders and reloads (see reload()).
+    bool setDirectories(const QStringList &directories, const Progress &progress = {});
     QStringList directories() const { return m_directories; }
 
-    /// Parses every `.idl` file again (after files were added, changed or removed).
-    void reload();
+    /**
+     * Parses every `.idl` file again (after files were added, changed or removed). False when
+     * @p progress stopped it; the library then keeps what it had.
+     */
+    bool reload(const Progress &progress = {});
 
     /// Structs usable as data port types, sorted by scoped name; "Timed" ones are flagged.
     QList<IdlDataType> dataTypes() const { return m_model.dataTypes(); }

@@ -22,6 +22,7 @@
 #include "typecatalog.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QCompleter>
 #include <QFile>
 #include <QLineEdit>
@@ -35,6 +36,10 @@
 #include <QTest>
 #include <QTreeView>
 #include <QUndoStack>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace Builder;
 
@@ -98,6 +103,7 @@ private slots:
     void generateIsRefusedWhileErrorsRemain();
     void typeListsComeFromIdl();
     void idlSettingsStoreUserFolders();
+    void idlScanShowsProgressAndCancels();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -547,11 +553,70 @@ void TestBuilderPages::idlSettingsStoreUserFolders()
     dialog.addDirectory(folder);
     QCOMPARE(dialog.directories(), QStringList({folder}));
     QSignalSpy changed(&catalog, &TypeCatalog::typesChanged);
-    dialog.accept();
-    QCOMPARE(changed.count(), 1);
+    dialog.accept(); // reads the folders in the background
+    QTRY_COMPARE(changed.count(), 1);
     QCOMPARE(TypeCatalog::userDirectories(), QStringList({folder}));
     QCOMPARE(catalog.directories(), QStringList({QStringLiteral(RTSTUDIO_IDL_DIR), folder}));
     TypeCatalog::setUserDirectories({});
+}
+
+void TestBuilderPages::idlScanShowsProgressAndCancels()
+{
+    QTemporaryDir folder;
+    QVERIFY(folder.isValid());
+    const auto write = [&folder](const QString &name, const QByteArray &text) {
+        QFile file(folder.filePath(name));
+        return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
+    };
+    QVERIFY(write(QStringLiteral("known.idl"), "struct Known { long x; };\n"));
+    TypeCatalog::setUserDirectories({folder.path()});
+    const auto forget = qScopeGuard([] { TypeCatalog::setUserDirectories({}); });
+    Editor e;
+    e.types.reload();
+    QVERIFY(e.types.dataTypes().contains(QStringLiteral("Known")));
+
+    // A file whose include waits on a pipe: the scan is under way until the test writes to it.
+    const QString pipe = folder.filePath(QStringLiteral("waiting"));
+    QVERIFY(mkfifo(QFile::encodeName(pipe).constData(), 0600) == 0);
+    QVERIFY(write(QStringLiteral("waits.idl"), "#include \"" + pipe.toUtf8() + "\"\nstruct Waiting { long y; };\n"));
+    auto *page = e.page<DataPortsPage>("Data Ports");
+    auto *strip = page->findChild<QWidget *>(QStringLiteral("idlScan"));
+    auto *label = page->findChild<QLabel *>(QStringLiteral("idlScanLabel"));
+    auto *cancel = page->findChild<QPushButton *>(QStringLiteral("idlScanCancel"));
+    QVERIFY(strip && label && cancel);
+    QVERIFY(strip->isHidden());
+    QSignalSpy finished(&e.types, &TypeCatalog::loadingFinished);
+    QSignalSpy changed(&e.types, &TypeCatalog::typesChanged);
+    auto *reload = page->findChild<QPushButton *>(QStringLiteral("reloadTypes"));
+    QVERIFY(reload);
+    reload->click();
+    QVERIFY(e.types.isLoading());
+    QTRY_VERIFY(!strip->isHidden());
+    QTRY_VERIFY2(label->text().contains(QStringLiteral("waits.idl")), qPrintable(label->text()));
+
+    // Cancel answers at once although the file is still being read, and keeps the types.
+    cancel->click();
+    QVERIFY(strip->isHidden());
+    QVERIFY(!e.types.isLoading());
+    QCOMPARE(finished.count(), 1);
+    QCOMPARE(finished.first().first().toBool(), true);
+    const int fd = ::open(QFile::encodeName(pipe).constData(), O_WRONLY);
+    QVERIFY(fd >= 0);
+    ::close(fd);
+    QTest::qWait(0);
+    QCOMPARE(changed.count(), 0);
+    QVERIFY(e.types.dataTypes().contains(QStringLiteral("Known")));
+    QVERIFY(!e.types.dataTypes().contains(QStringLiteral("Waiting")));
+
+    // Without the pipe the next scan completes and brings the new type.
+    QVERIFY(QFile::remove(pipe));
+    QVERIFY(write(QStringLiteral("waits.idl"), "struct Waiting { long y; };\n"));
+    reload->click();
+    QTRY_COMPARE(changed.count(), 1);
+    QCOMPARE(finished.count(), 2);
+    QCOMPARE(finished.last().first().toBool(), false);
+    QVERIFY(e.types.dataTypes().contains(QStringLiteral("Waiting")));
+    QVERIFY(strip->isHidden());
 }
 
 QTEST_MAIN(TestBuilderPages)

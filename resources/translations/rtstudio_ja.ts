@@ -466,7 +466,7 @@
         <translation>RTC.xml</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>The interface type &apos;%1&apos; is not declared in any parsed IDL file.</source>
         <translation>インターフェース型「%1」は、読み込んだどの IDL ファイルにも宣言されていません。</translation>
     </message>
@@ -1197,7 +1197,7 @@
 <context>
     <name>Builder::IdlSettingsDialog</name>
     <message>
-        <location filename="../../builder/idlsettingsdialog.cpp" line="+21"/>
+        <location filename="../../builder/idlsettingsdialog.cpp" line="+24"/>
         <source>IDL Folders</source>
         <translation>IDLフォルダ</translation>
     </message>
@@ -1227,7 +1227,27 @@
         <translation>追加のIDLフォルダ（同梱のフォルダの後に検索）：</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+49"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop reading the IDL folders and keep the types read before</source>
+        <translation>IDL フォルダーの読み込みを中止し、以前に読み込んだ型をそのまま使います</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Reading the IDL folders…</source>
+        <translation>IDL フォルダーを読み込んでいます…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Reading %1 (%2 of %3)</source>
+        <translation>%1 を読み込んでいます（%3 件中 %2 件目）</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>IDL Folders...</source>
         <translation>IDLフォルダ...</translation>
     </message>
@@ -1237,7 +1257,7 @@
         <translation>型を再読み込み</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Parse the IDL folders again</source>
         <translation>IDLフォルダを再度解析します</translation>
     </message>
@@ -4201,7 +4221,7 @@
         <translation>一時停止(&amp;P)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source> s</source>
         <translation> 秒</translation>
     </message>
@@ -4211,7 +4231,7 @@
         <translation>サンプルを保持してプロットする秒数</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>E&amp;xport CSV…</source>
         <translation>CSV をエクスポート(&amp;X)…</translation>
     </message>
@@ -4246,7 +4266,7 @@
         <translation>%1 は OutPort ではありません。モニタできるのは OutPort が送るデータだけです。</translation>
     </message>
     <message numerus="yes">
-        <location line="+127"/>
+        <location line="+123"/>
         <source>%1 · %n sample(s) kept</source>
         <translation>
             <numerusform>%1 · %n 個のサンプルを保持</numerusform>
