@@ -12,8 +12,10 @@
 #include "userprompts.h"
 
 #include <QDir>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QSettings>
+#include <QThread>
 #include <QUndoStack>
 
 namespace Studio {
@@ -21,6 +23,9 @@ namespace Studio {
 namespace {
 
 const QString LastDirectoryKey = QStringLiteral("lastDirectory");
+
+/// Files read within this time open without any sign of waiting.
+constexpr unsigned long QuickReadMs = 100;
 
 QString canonicalPath(const QString &path)
 {
@@ -108,8 +113,11 @@ QList<Document *> DocumentController::openFiles(const QStringList &paths)
     Profile::Diagnostics failures;
     QStringList failedNames;
     for (const QString &path : paths) {
-        if (Document *document = openOne(path, &failures))
+        bool cancelled = false;
+        if (Document *document = openOne(path, &failures, &cancelled))
             opened << document;
+        else if (cancelled)
+            break;
         else
             failedNames << QFileInfo(path).fileName();
     }
@@ -124,6 +132,55 @@ QList<Document *> DocumentController::openFiles(const QStringList &paths)
         }
     }
     return opened;
+}
+
+void DocumentController::cancelOpening()
+{
+    if (!m_openingLoop)
+        return;
+    m_openingCancelled = true;
+    m_openingLoop->quit();
+}
+
+std::optional<Profile::LoadedProfile> DocumentController::readProfile(const QString &path,
+                                                                      Profile::Diagnostics *diagnostics,
+                                                                      bool *cancelled)
+{
+    struct Reading
+    {
+        std::optional<Profile::LoadedProfile> loaded;
+        Profile::Diagnostics diagnostics;
+    };
+    // Shared with the thread, which may outlive this call when the user gives up on the file.
+    auto reading = std::make_shared<Reading>();
+    QThread *thread = QThread::create([reading, path] {
+        reading->loaded = Profile::loadProfileFile(path, &reading->diagnostics);
+    });
+    thread->start();
+    if (!thread->wait(QuickReadMs)) {
+        QEventLoop loop;
+        connect(thread, &QThread::finished, &loop, &QEventLoop::quit);
+        m_openingLoop = &loop;
+        m_openingCancelled = false;
+        emit openingStarted(path);
+        if (!thread->isFinished())
+            loop.exec();
+        m_openingLoop = nullptr;
+        emit openingFinished();
+        if (m_openingCancelled) {
+            // Nobody waits for the thread: it ends after reading, and is deleted then.
+            connect(thread, &QThread::finished, thread, &QObject::deleteLater);
+            if (thread->isFinished())
+                delete thread;
+            *cancelled = true;
+            emit statusMessage(tr("Opening %1 was cancelled").arg(QFileInfo(path).fileName()));
+            return std::nullopt;
+        }
+        thread->wait();
+    }
+    delete thread;
+    diagnostics->append(reading->diagnostics);
+    return std::move(reading->loaded);
 }
 
 QList<Document *> DocumentController::openWithDialog()
@@ -208,14 +265,19 @@ QString DocumentController::lastDirectory() const
     return !stored.isEmpty() && QFileInfo(stored).isDir() ? stored : QDir::homePath();
 }
 
-Document *DocumentController::openOne(const QString &path, Profile::Diagnostics *failures)
+Document *DocumentController::openOne(const QString &path, Profile::Diagnostics *failures,
+                                      bool *cancelled)
 {
     if (Document *existing = findByPath(path)) {
         emit activationRequested(existing);
         return existing;
     }
     Profile::Diagnostics diagnostics;
-    std::unique_ptr<Document> document = loadDocument(path, &diagnostics);
+    std::optional<Profile::LoadedProfile> loaded = readProfile(path, &diagnostics, cancelled);
+    if (*cancelled)
+        return nullptr;
+    std::unique_ptr<Document> document
+        = loaded ? documentFromProfile(std::move(*loaded), path, &diagnostics) : nullptr;
     if (!document) {
         if (diagnostics.isEmpty())
             diagnostics << Profile::Diagnostic::error(path, 0, 0, tr("could not be read"));

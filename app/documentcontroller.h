@@ -2,10 +2,13 @@
 #pragma once
 
 #include "diagnostic.h"
+#include "profileio.h"
 
 #include <QList>
 #include <QObject>
 #include <QStringList>
+
+class QEventLoop;
 
 namespace SystemEditor {
 class OnlineSession;
@@ -54,6 +57,10 @@ public:
      * Opens the files; a file that is open already is not read again, its document is returned.
      * Files that fail to load change nothing; all their diagnostics are reported together.
      * Returns the documents of the files that could be opened.
+     *
+     * Each file is read on a worker thread. One that takes longer than a glance is announced
+     * with openingStarted() and the event loop runs until it is read or cancelOpening() gives up
+     * on it (and on the files after it).
      */
     QList<Document *> openFiles(const QStringList &paths);
     /// Asks for files and opens them.
@@ -83,6 +90,10 @@ public:
     /// Where the file dialogs start: the folder of the last opened or saved file.
     QString lastDirectory() const;
 
+public slots:
+    /// Stops waiting for the file being read; the open documents stay as they were.
+    void cancelOpening();
+
 signals:
     void documentAdded(Studio::Document *document);
     /// An already open document was asked for again (e.g. opened a second time): show it.
@@ -92,9 +103,15 @@ signals:
     /// Diagnostics of a failed operation, or warnings of a successful load.
     void problemsReported(const QString &summary, const Profile::Diagnostics &diagnostics);
     void statusMessage(const QString &message);
+    /// A file takes a moment to read; openingFinished() follows in any case.
+    void openingStarted(const QString &filePath);
+    void openingFinished();
 
 private:
-    Document *openOne(const QString &path, Profile::Diagnostics *failures);
+    Document *openOne(const QString &path, Profile::Diagnostics *failures, bool *cancelled);
+    std::optional<Profile::LoadedProfile> readProfile(const QString &path,
+                                                      Profile::Diagnostics *diagnostics,
+                                                      bool *cancelled);
     void addDocument(Document *document);
     void reportLiveSave(const QString &path, const QString &error, const QStringList &warnings);
     bool saveTo(Document *document, const QString &path, bool keepFormat);
@@ -111,6 +128,8 @@ private:
     int m_newComponents = 0;
     int m_newSystems = 0;
     int m_newOnlineDiagrams = 0;
+    QEventLoop *m_openingLoop = nullptr; ///< runs while a slow file is read
+    bool m_openingCancelled = false;
 };
 
 } // namespace Studio

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "diagnostic.h"
+#include "profileio.h"
 
 #include <memory>
 
@@ -18,5 +19,9 @@ class Document;
  * `diagnostics`; the reader's warnings of a successful load are kept in the document.
  */
 std::unique_ptr<Document> loadDocument(const QString &path, Profile::Diagnostics *diagnostics);
+
+/// The document of a profile Profile::loadProfileFile() read from @p path (null when it is neither kind).
+std::unique_ptr<Document> documentFromProfile(Profile::LoadedProfile loaded, const QString &path,
+                                              Profile::Diagnostics *diagnostics);
 
 } // namespace Studio

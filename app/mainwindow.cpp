@@ -7,6 +7,7 @@
 #include "documentcontroller.h"
 #include "editorfactory.h"
 #include "onlinedocks.h"
+#include "openingprogress.h"
 #include "problemspanel.h"
 #include "recentfiles.h"
 #include "rtsdocument.h"
@@ -67,7 +68,7 @@ MainWindow::MainWindow(QWidget *parent)
     createMenus();
     createToolBar();
     connectController();
-    statusBar();
+    statusBar()->addPermanentWidget(new OpeningProgress(m_controller, this));
     readSettings();
     updateActiveDocument();
 }

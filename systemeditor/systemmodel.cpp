@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systemmodel.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace SystemEditor {
@@ -261,7 +262,14 @@ QStringList SystemModel::connectorsOf(const QString &instanceName, const QString
 
 bool SystemModel::isPortConnected(const QString &instanceName, const QString &portName) const
 {
-    return !connectorsOf(instanceName, portName).isEmpty();
+    const auto touches = [&](const RtsTargetPort &end) {
+        return end.instanceName == instanceName && (portName.isEmpty() || end.portName == portName);
+    };
+    const auto any = [&](const auto &list) {
+        return std::any_of(list.begin(), list.end(),
+                           [&](const auto &c) { return touches(c.source) || touches(c.target); });
+    };
+    return any(m_profile.dataPortConnectors) || any(m_profile.servicePortConnectors);
 }
 
 int SystemModel::connectorIndex(const QString &connectorId) const

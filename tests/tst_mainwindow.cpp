@@ -11,6 +11,10 @@
 #include "userprompts.h"
 
 #include <QAction>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTimer>
 #include <QApplication>
 #include <QDockWidget>
 #include <QFile>
@@ -26,6 +30,12 @@
 #include <QTest>
 #include <QToolBar>
 #include <QUndoStack>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <functional>
 
 using namespace Studio;
 using Id = Perspective::Id;
@@ -111,6 +121,8 @@ private slots:
     void firstStartFitsTheScreen();
     void aboutGoesThroughPrompts();
     void opensDroppedFiles();
+    void slowOpenShowsProgressAndCancels();
+    void slowOpenCompletes();
 
 private:
     QAction *action(const char *name) const;
@@ -513,6 +525,93 @@ void TestMainWindow::opensDroppedFiles()
     QCOMPARE(m_window->perspective(Id::SystemEditor)->documents().size(), 1);
     QCOMPARE(m_window->perspective(Id::Builder)->documents().size(), 1);
     QCOMPARE(m_window->activeDocument()->displayName(), QStringLiteral("component.yaml"));
+}
+
+namespace {
+
+/// Runs @p step from the event loop (every 10 ms) once the opening progress is shown, then stops.
+struct WhenOpeningShows
+{
+    QTimer timer;
+    bool seen = false;
+
+    WhenOpeningShows(QWidget *progress, const std::function<void()> &step)
+    {
+        timer.setInterval(10);
+        QObject::connect(&timer, &QTimer::timeout, [this, progress, step] {
+            if (progress->isHidden())
+                return;
+            seen = true;
+            timer.stop();
+            step();
+        });
+        timer.start();
+    }
+};
+
+} // namespace
+
+void TestMainWindow::slowOpenShowsProgressAndCancels()
+{
+    // A file read slowly: a pipe that gives its bytes when the test decides.
+    const QString pipe = m_scratch->filePath(QStringLiteral("slow.xml"));
+    QVERIFY(mkfifo(QFile::encodeName(pipe).constData(), 0600) == 0);
+    auto *progress = m_window->findChild<QWidget *>(QStringLiteral("openingProgress"));
+    auto *cancel = m_window->findChild<QPushButton *>(QStringLiteral("cancelOpening"));
+    QVERIFY(progress && cancel);
+    QVERIFY(progress->isHidden());
+    auto *newSystem = m_window->findChild<QToolBar *>()->widgetForAction(action("actionNewSystem"));
+    QVERIFY(newSystem);
+
+    QString label;
+    int documentsMeanwhile = -1;
+    WhenOpeningShows step(progress, [&] {
+        label = progress->findChild<QLabel *>()->text();
+        // The window takes no other input while it waits: no shortcut, no tool button.
+        QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier);
+        QTest::mouseClick(newSystem, Qt::LeftButton);
+        documentsMeanwhile = int(m_window->documents()->documents().size());
+        QTest::mouseClick(cancel, Qt::LeftButton);
+    });
+    QSignalSpy messages(m_window->documents(), &DocumentController::statusMessage);
+    QVERIFY(!m_window->openFiles({pipe}));
+    QVERIFY(step.seen);
+    QCOMPARE(label, QStringLiteral("Opening slow.xml…"));
+    QCOMPARE(documentsMeanwhile, 0);
+    QVERIFY(progress->isHidden());
+    QVERIFY(m_window->documents()->documents().isEmpty());
+    QVERIFY(m_prompts->shown.isEmpty()); // cancelled is not failed
+    QCOMPARE(messages.count(), 1);
+    QCOMPARE(messages.first().first().toString(), QStringLiteral("Opening slow.xml was cancelled"));
+    // Input reaches the window again.
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier);
+    QCOMPARE(m_window->documents()->documents().size(), 1);
+    // The reader still waits on the pipe: let it finish.
+    const int fd = ::open(QFile::encodeName(pipe).constData(), O_WRONLY);
+    QVERIFY(fd >= 0);
+    ::close(fd);
+}
+
+void TestMainWindow::slowOpenCompletes()
+{
+    const QString pipe = m_scratch->filePath(QStringLiteral("arriving.xml"));
+    QVERIFY(mkfifo(QFile::encodeName(pipe).constData(), 0600) == 0);
+    auto *progress = m_window->findChild<QWidget *>(QStringLiteral("openingProgress"));
+    QVERIFY(progress);
+    const QByteArray system = readAll(dataPath(QStringLiteral("system.xml")));
+    QVERIFY(!system.isEmpty());
+    bool written = false;
+    WhenOpeningShows step(progress, [&] {
+        const int fd = ::open(QFile::encodeName(pipe).constData(), O_WRONLY);
+        written = fd >= 0 && ::write(fd, system.constData(), size_t(system.size())) == system.size();
+        ::close(fd);
+    });
+    QVERIFY(m_window->openFiles({pipe}));
+    QVERIFY(step.seen);
+    QVERIFY(written);
+    QVERIFY(progress->isHidden());
+    QCOMPARE(m_window->perspective(Id::SystemEditor)->documents().size(), 1);
+    QCOMPARE(m_window->activeDocument()->displayName(), QStringLiteral("arriving.xml"));
 }
 
 QTEST_MAIN(TestMainWindow)

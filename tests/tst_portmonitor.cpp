@@ -17,6 +17,7 @@
 #include <QLineSeries>
 #include <QSignalSpy>
 #include <QTableWidget>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -30,6 +31,7 @@ private slots:
     void initTestCase();
     void showsSamplesOfSeveralPorts();
     void pauseExportAndRemove();
+    void rateLimitsKeptSamples();
     void refusedPortsAreReported();
     void onlineDiagramAsksForAPort();
 
@@ -141,6 +143,26 @@ void TestPortMonitor::pauseExportAndRemove()
     QTRY_COMPARE_WITH_TIMEOUT(connectors("SeqOut0", "Float"), 1, 10000);
     monitor.reset();
     QCOMPARE(connectors("SeqOut0", "Float"), 0);
+}
+
+void TestPortMonitor::rateLimitsKeptSamples()
+{
+    PortMonitor monitor;
+    monitor.show();
+    auto *rate = monitor.findChild<QSpinBox *>(QStringLiteral("portMonitorRate"));
+    QVERIFY(rate);
+    QCOMPARE(rate->value(), 0); // every sample by default
+    monitor.setRate(5);
+    const Corba::ComponentProxy seqOut = component("SeqOut0");
+    monitor.watch(seqOut.path(), seqOut.port("Octet"));
+    const QString key = seqOut.path() + ":Octet";
+    // SeqOut writes 200 a second; five a second are kept, at least 200 ms apart.
+    QTRY_VERIFY_WITH_TIMEOUT(monitor.samples(key).size() >= 4, 10000);
+    const QList<MonitorSample> kept = monitor.samples(key);
+    for (qsizetype i = 1; i < kept.size(); ++i)
+        QVERIFY2(kept[i].receivedMs - kept[i - 1].receivedMs >= 200, qPrintable(QString::number(i)));
+    QVERIFY2(monitor.received(key) > quint64(2 * kept.size()),
+             qPrintable(QStringLiteral("%1 received, %2 kept").arg(monitor.received(key)).arg(kept.size())));
 }
 
 void TestPortMonitor::refusedPortsAreReported()

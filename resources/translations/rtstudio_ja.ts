@@ -2371,7 +2371,7 @@
 <context>
     <name>Studio::DocumentController</name>
     <message>
-        <location filename="../../app/documentcontroller.cpp" line="+59"/>
+        <location filename="../../app/documentcontroller.cpp" line="+64"/>
         <source>New Component %1</source>
         <translation>新規コンポーネント %1</translation>
     </message>
@@ -2404,12 +2404,12 @@
     </message>
     <message>
         <location line="+4"/>
-        <location line="+157"/>
+        <location line="+214"/>
         <source>Save Failed</source>
         <translation>保存に失敗しました</translation>
     </message>
     <message>
-        <location line="-141"/>
+        <location line="-195"/>
         <source>Could not open %1.</source>
         <translation>%1 を開けませんでした。</translation>
     </message>
@@ -2424,7 +2424,12 @@
         <translation>開いているドキュメントは変更されていません。</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+45"/>
+        <source>Opening %1 was cancelled</source>
+        <translation>%1 を開くのを取り消しました</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>Could not export the diagram to %1.</source>
         <translation>ダイアグラムを %1 にエクスポートできませんでした。</translation>
     </message>
@@ -2439,7 +2444,7 @@
         <translation>ダイアグラムを %1 にエクスポートしました</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>could not be read</source>
         <translation>読み込めませんでした</translation>
     </message>
@@ -2492,7 +2497,7 @@
 <context>
     <name>Studio::MainWindow</name>
     <message>
-        <location filename="../../app/mainwindow.cpp" line="+168"/>
+        <location filename="../../app/mainwindow.cpp" line="+169"/>
         <source>&amp;About RT Studio</source>
         <translation>RT Studio について(&amp;A)</translation>
     </message>
@@ -2842,6 +2847,24 @@
     </message>
 </context>
 <context>
+    <name>Studio::OpeningProgress</name>
+    <message>
+        <location filename="../../app/openingprogress.cpp" line="+45"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Stop opening this file; open documents stay as they are</source>
+        <translation>このファイルを開くのを中止します。開いているドキュメントはそのままです</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Opening %1…</source>
+        <translation>%1 を開いています…</translation>
+    </message>
+</context>
+<context>
     <name>Studio::Perspective</name>
     <message>
         <location filename="../../app/perspective.cpp" line="+135"/>
@@ -3048,7 +3071,7 @@
 <context>
     <name>Studio::loadDocument</name>
     <message>
-        <location filename="../../app/documentloader.cpp" line="+28"/>
+        <location filename="../../app/documentloader.cpp" line="+34"/>
         <source>not an RTC or RTS profile</source>
         <translation>RTCプロファイルでもRTSプロファイルでもありません</translation>
     </message>
@@ -4231,6 +4254,21 @@
         <translation>サンプルを保持してプロットする秒数</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>all</source>
+        <translation>すべて</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> /s</source>
+        <translation> 件/秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>At most this many samples a second are kept of each port (all: every sample)</source>
+        <translation>各ポートで 1 秒間に保持するサンプル数の上限（すべて: 全サンプル）</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>E&amp;xport CSV…</source>
         <translation>CSV をエクスポート(&amp;X)…</translation>
@@ -4244,6 +4282,11 @@
         <location line="+10"/>
         <source>Window:</source>
         <translation>表示期間：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rate:</source>
+        <translation>レート:</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -4266,7 +4309,7 @@
         <translation>%1 は OutPort ではありません。モニタできるのは OutPort が送るデータだけです。</translation>
     </message>
     <message numerus="yes">
-        <location line="+123"/>
+        <location line="+134"/>
         <source>%1 · %n sample(s) kept</source>
         <translation>
             <numerusform>%1 · %n 個のサンプルを保持</numerusform>

@@ -207,6 +207,13 @@ void PortMonitor::buildUi()
     m_window->setValue(10);
     m_window->setSuffix(tr(" s"));
     m_window->setToolTip(tr("How many seconds of samples are kept and plotted"));
+    m_rate = new QSpinBox(this);
+    m_rate->setObjectName(QStringLiteral("portMonitorRate"));
+    m_rate->setRange(0, 1000);
+    m_rate->setValue(0);
+    m_rate->setSpecialValueText(tr("all"));
+    m_rate->setSuffix(tr(" /s"));
+    m_rate->setToolTip(tr("At most this many samples a second are kept of each port (all: every sample)"));
     auto *exportButton = new QPushButton(tr("E&xport CSV…"), this);
     connect(exportButton, &QPushButton::clicked, this, &PortMonitor::exportCurrent);
     m_status = new QLabel(this);
@@ -227,6 +234,8 @@ void PortMonitor::buildUi()
     controls->addWidget(m_pause);
     controls->addWidget(new QLabel(tr("Window:"), left));
     controls->addWidget(m_window);
+    controls->addWidget(new QLabel(tr("Rate:"), left));
+    controls->addWidget(m_rate);
     leftLayout->addLayout(controls);
     leftLayout->addWidget(m_status);
 
@@ -359,6 +368,11 @@ void PortMonitor::setWindowSeconds(int seconds)
     m_window->setValue(seconds);
 }
 
+void PortMonitor::setRate(int samplesPerSecond)
+{
+    m_rate->setValue(samplesPerSecond);
+}
+
 void PortMonitor::opened(const QString &key, const QString &type, const QString &problem)
 {
     const auto it = m_watched.find(key);
@@ -377,8 +391,14 @@ void PortMonitor::receive(const QString &key, const QList<MonitorSample> &batch)
     const auto it = m_watched.find(key);
     if (it == m_watched.end())
         return;
-    for (const MonitorSample &sample : batch)
+    const int rate = m_rate->value();
+    const qint64 spacingMs = rate > 0 ? 1000 / rate : 0;
+    for (const MonitorSample &sample : batch) {
+        if (spacingMs > 0 && !it->samples.empty() && sample.receivedMs - it->lastKeptMs < spacingMs)
+            continue;
         it->samples.push_back(sample);
+        it->lastKeptMs = sample.receivedMs;
+    }
     it->received += quint64(batch.size());
     if (it->fields.isEmpty() && !batch.isEmpty()) {
         QList<std::pair<QString, double>> numbers;

@@ -38,7 +38,8 @@ struct MonitorSample
  * plot. Each watched port gets a connector of its own to an InPortCdr object of this process; a
  * worker thread drains them and decodes the samples by the port's IDL type (OpenRTM's IDL), so the
  * GUI thread makes no remote call. For the chosen port it shows a table of the latest samples
- * and a plot of their numeric fields over a time window; Pause freezes the view (samples keep
+ * and a plot of their numeric fields over a time window; Rate keeps at most that many samples a
+ * second of each port (as rtprint's --rate; 0 keeps all), Pause freezes the view (samples keep
  * arriving), Export writes the kept samples as CSV. Removing a port or closing the view removes
  * its connector.
  */
@@ -75,6 +76,8 @@ public:
     bool isPaused() const;
     /// The plotted time window in seconds.
     void setWindowSeconds(int seconds);
+    /// At most this many samples a second are kept of each port; 0 keeps every sample.
+    void setRate(int samplesPerSecond);
     /// Writes the kept samples of `key` as CSV (time in seconds since the epoch, then each field).
     bool exportCsv(const QString &key, const QString &path, QString *error) const;
 
@@ -101,6 +104,7 @@ private:
         std::deque<MonitorSample> samples;
         QStringList fields;
         quint64 received = 0;
+        qint64 lastKeptMs = 0;
     };
 
     void buildUi();
@@ -127,6 +131,7 @@ private:
     QValueAxis *m_valueAxis = nullptr;
     QCheckBox *m_pause = nullptr;
     QSpinBox *m_window = nullptr;
+    QSpinBox *m_rate = nullptr;
 };
 
 } // namespace SystemEditor

@@ -123,10 +123,15 @@ void SystemScene::rebuild()
         removeConnectorItem(id);
     for (const QString &name : m_components.keys())
         removeComponentItem(name);
+    // The model holds every connector already, so components get their final look when added;
+    // adding connectors must then not refresh their ends (which would reattach every connector of
+    // both, quadratic in a large system).
+    m_rebuilding = true;
     for (const QString &name : m_model->componentIds())
         addComponentItem(name);
     for (const QString &id : m_model->connectorIds())
         addConnectorItem(id);
+    m_rebuilding = false;
 }
 
 void SystemScene::addComponentItem(const QString &instanceName)
@@ -209,8 +214,10 @@ void SystemScene::addConnectorItem(const QString &connectorId)
             });
     connect(item, &ConnectorItem::editRequested, this, &SystemScene::connectorEditRequested);
     // The ends are now connected: their colour changes (which also attaches this item).
-    refreshComponent(info->source.instanceName);
-    refreshComponent(info->target.instanceName);
+    if (!m_rebuilding) {
+        refreshComponent(info->source.instanceName);
+        refreshComponent(info->target.instanceName);
+    }
     item->setPorts(portItem(info->source), portItem(info->target));
 }
 

@@ -156,6 +156,7 @@ private:
     QHash<QString, ConnectorInfo> m_removedConnectors;
     bool m_gridVisible = true;
     bool m_snapToGrid = true;
+    bool m_rebuilding = false; ///< rebuild() is adding every item
     PortItem *m_dragSource = nullptr;
     QGraphicsPathItem *m_rubberConnector = nullptr;
     QString m_lastRefusal;
