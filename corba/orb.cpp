@@ -51,8 +51,12 @@ void createOrb()
     int argc = int(argv.size()) - 1;
     // omniORB's defaults would print to stderr and retry forever; a tool wants quick, quiet
     // failure. Per-thread timeouts are off unless asked for (CallTimeoutScope relies on them).
-    const char *options[][2]
-        = {{"traceLevel", "0"}, {"supportPerThreadTimeOut", "1"}, {nullptr, nullptr}};
+    // giopMaxMsgSize: the profiles of a large system (every component's ports and connectors in
+    // one reply) pass omniORB's 2 MiB default.
+    const char *options[][2] = {{"traceLevel", "0"},
+                                {"supportPerThreadTimeOut", "1"},
+                                {"giopMaxMsgSize", "268435456"},
+                                {nullptr, nullptr}};
     s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
     s_initialised = true;
     applyDefaultTimeout(s_callTimeout);

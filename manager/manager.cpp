@@ -95,6 +95,9 @@ bool Manager::initOrb(std::string *error)
     }
     const std::string host = endpoints.front().first;
     const int port = endpoints.front().second;
+    // A manager's replies about a large system (profiles of every component) pass omniORB's 2 MiB
+    // default; corba.args below may set another limit.
+    args.insert(args.end(), {"-ORBgiopMaxMsgSize", "268435456"});
     // OpenRTM's corba.args: extra ORB options such as `-ORBgiopMaxMsgSize 209715200`.
     std::istringstream extra(m_config.value("corba.args"));
     for (std::string word; extra >> word;)

@@ -103,7 +103,8 @@ void OutPortPushConnector::send(const CdrView &data)
             const bool tooLarge = CORBA::MARSHAL::_downcast(&e) != nullptr;
             std::cerr << programName() << ": connection " << id() << ": a " << data.size
                       << "-byte sample was not delivered (" << describeException(e) << ")"
-                      << (tooLarge ? "; samples over omniORB's message limit (2 MiB by default) need "
+                      << (tooLarge ? "; samples over the ORB's message limit (256 MiB in RT Studio's runtime, "
+                                     "2 MiB in OpenRTM-aist's by default) need "
                                      "corba.args: -ORBgiopMaxMsgSize <bytes> on both sides"
                                    : "")
                       << std::endl;

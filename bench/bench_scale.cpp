@@ -1,0 +1,346 @@
+// SPDX-License-Identifier: MIT
+// bench_scale: deployment at scale, against real omniNames and rtmanager processes it starts itself.
+//
+// 1. Creation (the deployment paper's Table 3), measured as a user does it: one `rtctl mgr` call
+//    creating 10 and then 100 ConsoleIn components, naming on, in the master's own process and
+//    each in a new slave process (`manager_name=manager_%p`). Per component = the call's time / N.
+// 2. A large system: 1,000 components (ConsoleIn sources, ConsoleOut sinks) and 1,500 connectors
+//    over 10 slave managers (one per host context, started by the master through
+//    manager_address) registered in two name servers: restore (create + connect) + start, stop,
+//    teardown, cryo and drift against the file, then the managers' memory per hosted component.
+//
+//    bench_scale [--components N] [--managers M]
+//
+// Prints a table per part and ends with one summary line. Timing never fails the build.
+#include "cryo.h"
+#include "drift.h"
+#include "livesystem.h"
+#include "orb.h"
+#include "restorer.h"
+#include "rtsprofile.h"
+#include "sequencerunner.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QTextStream>
+
+#include <functional>
+
+using namespace Deploy;
+
+namespace {
+
+constexpr int FanOut = 3; // connectors per source: 1,000 components give 1,500 connectors
+
+struct Options
+{
+    int components = 1000;
+    int managers = 10;
+};
+
+Options parseOptions(const QStringList &arguments)
+{
+    Options options;
+    for (qsizetype i = 1; i + 1 < arguments.size(); ++i) {
+        if (arguments.at(i) == QLatin1String("--components"))
+            options.components = qMax(2, arguments.at(i + 1).toInt() / 2 * 2);
+        else if (arguments.at(i) == QLatin1String("--managers"))
+            options.managers = qMax(1, arguments.at(i + 1).toInt());
+    }
+    return options;
+}
+
+QString hostName(int index)
+{
+    return QStringLiteral("scale%1").arg(index);
+}
+
+/// The master's command line: naming on (`server`s), components under `<host>.host_cxt`.
+QStringList masterArguments(quint16 port, const QStringList &servers)
+{
+    return {"-d",
+            "-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
+            "-o", QStringLiteral("corba.nameservers=%1").arg(servers.join(QLatin1Char(','))),
+            "-o", "naming.formats=%h.host_cxt/%n.rtc",
+            "-o", "manager.naming_formats=%h.host_cxt/%n.mgr",
+            "-o", "logger.log_level=ERROR"};
+}
+
+// --- 1. creation ---
+
+struct Creation
+{
+    int count = 0;
+    bool separate = false;
+    qint64 elapsedMs = -1;
+    QString error;
+};
+
+/// One `rtctl mgr MASTER create … create …` call creating `count` components.
+Creation createThroughRtctl(quint16 masterPort, int count, bool separate, const QString &prefix)
+{
+    Creation result;
+    result.count = count;
+    result.separate = separate;
+    QStringList arguments {QStringLiteral("mgr"), QStringLiteral("corbaloc::127.0.0.1:%1").arg(masterPort)};
+    for (int i = 0; i < count; ++i) {
+        QString request = QStringLiteral("ConsoleIn?instance_name=%1%2").arg(prefix).arg(i);
+        if (separate)
+            request += QStringLiteral("&manager_name=manager_%p");
+        arguments << QStringLiteral("create") << request;
+    }
+    QProcess rtctl;
+    rtctl.setProcessChannelMode(QProcess::MergedChannels);
+    QElapsedTimer timer;
+    timer.start();
+    rtctl.start(QStringLiteral(RTCTL_PATH), arguments);
+    const bool finished = rtctl.waitForFinished(600000);
+    result.elapsedMs = timer.elapsed();
+    if (!finished || rtctl.exitCode() != 0)
+        result.error = QString::fromLocal8Bit(rtctl.readAll()).trimmed().section(QLatin1Char('\n'), -1);
+    return result;
+}
+
+/// The time rtctl itself needs to start and end (a `--version` call), to read the figures by.
+qint64 rtctlStartMs()
+{
+    QProcess rtctl;
+    QElapsedTimer timer;
+    timer.start();
+    rtctl.start(QStringLiteral(RTCTL_PATH), {QStringLiteral("--version")});
+    rtctl.waitForFinished(30000);
+    return timer.elapsed();
+}
+
+// --- 2. the large system ---
+
+Profile::RtsComponent component(const QString &server, const QString &type, const QString &instance,
+                                const QString &host, const QString &port)
+{
+    Profile::RtsComponent c;
+    c.id = QStringLiteral("RTC:AIST:example:%1:2.0.0").arg(type);
+    c.instanceName = instance;
+    c.pathUri = QStringLiteral("%1/%2.host_cxt/%3.rtc").arg(server, host, instance);
+    Profile::RtsPort p;
+    p.name = instance + QLatin1Char('.') + port;
+    c.dataPorts.append(p);
+    Profile::RtsExecutionContext ec;
+    ec.id = QStringLiteral("0");
+    ec.kind = QStringLiteral("PeriodicExecutionContext");
+    ec.rate = QStringLiteral("10");
+    c.executionContexts.append(ec);
+    return c;
+}
+
+/// Sources and sinks spread round-robin over the hosts; hosts alternate between the servers.
+Profile::RtsProfile largeSystem(const Options &options, const QStringList &servers)
+{
+    Profile::RtsProfile profile = Profile::RtsProfile::createNew("Bench", "Scale", "1.0");
+    const int pairs = options.components / 2;
+    for (int i = 0; i < pairs; ++i) {
+        const int sourceHost = (2 * i) % options.managers;
+        const int sinkHost = (2 * i + 1) % options.managers;
+        profile.components.append(component(servers.at(sourceHost % servers.size()), "ConsoleIn",
+                                            QStringLiteral("Src%1").arg(i), hostName(sourceHost), "out"));
+        profile.components.append(component(servers.at(sinkHost % servers.size()), "ConsoleOut",
+                                            QStringLiteral("Snk%1").arg(i), hostName(sinkHost), "in"));
+    }
+    for (int i = 0; i < pairs; ++i) {
+        for (int k = 0; k < FanOut; ++k) {
+            const QString source = QStringLiteral("Src%1").arg(i);
+            const QString sink = QStringLiteral("Snk%1").arg((i + k) % pairs);
+            Profile::RtsDataPortConnector c;
+            c.connectorId = QStringLiteral("scale-%1-%2").arg(i).arg(k);
+            c.name = source + QLatin1Char('_') + sink;
+            c.dataType = QStringLiteral("IDL:RTC/TimedLong:1.0");
+            c.interfaceType = QStringLiteral("corba_cdr");
+            c.dataflowType = QStringLiteral("push");
+            c.subscriptionType = QStringLiteral("new");
+            c.source.instanceName = source;
+            c.source.portName = source + QStringLiteral(".out");
+            c.target.instanceName = sink;
+            c.target.portName = sink + QStringLiteral(".in");
+            profile.dataPortConnectors.append(c);
+        }
+    }
+    return profile;
+}
+
+/// Resident memory in KiB of `pid` and every process below it.
+qint64 residentKiB(qint64 pid)
+{
+    qint64 total = 0;
+    QFile status(QStringLiteral("/proc/%1/status").arg(pid));
+    if (status.open(QIODevice::ReadOnly)) {
+        for (const QByteArray &line : status.readAll().split('\n')) {
+            if (line.startsWith("VmRSS:"))
+                total += line.mid(6).trimmed().split(' ').value(0).toLongLong();
+        }
+    }
+    QFile children(QStringLiteral("/proc/%1/task/%1/children").arg(pid));
+    if (children.open(QIODevice::ReadOnly)) {
+        for (const QByteArray &child : children.readAll().simplified().split(' ')) {
+            if (!child.isEmpty())
+                total += residentKiB(child.toLongLong());
+        }
+    }
+    return total;
+}
+
+struct Phase
+{
+    QString name;
+    qint64 ms = -1;
+    QString target;
+    QString result;
+};
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QTextStream out(stdout);
+    const Options options = parseOptions(app.arguments());
+    Corba::Orb::setCallTimeout(30000);
+
+    // --- 1. creation ---
+    out << QStringLiteral("Creation through one `rtctl mgr … create …` call, naming on, a fresh name server and "
+                          "master each (rtctl alone starts and ends in %1 ms)\n\n")
+               .arg(rtctlStartMs());
+    out << "| placement         |   N | call ms | per component ms | goal ms | met |\n";
+    out << "|-------------------|-----|---------|------------------|---------|-----|\n";
+    double samePer = -1, separatePer = -1;
+    QString error;
+    for (const bool separate : {false, true}) {
+        for (const int count : {10, 100}) {
+            LiveTest::LiveSystem creationLive;
+            const quint16 creationPort = LiveTest::freePort();
+            if (!creationLive.startNameServer(&error)
+                || !creationLive.startProcess(QStringLiteral(RTMANAGER_PATH),
+                                              masterArguments(creationPort, {creationLive.namingServer()}),
+                                              "rtmanager ready", &error)) {
+                out << "bench_scale: " << error << '\n';
+                return 1;
+            }
+            const Creation c = createThroughRtctl(creationPort, count, separate, QStringLiteral("C"));
+            const double per = c.error.isEmpty() ? double(c.elapsedMs) / count : -1;
+            const double goal = separate ? 2.5 : 0.5;
+            out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 |\n")
+                       .arg(separate ? QStringLiteral("own slave process") : QStringLiteral("same process"), -17)
+                       .arg(count, 3)
+                       .arg(c.elapsedMs, 7)
+                       .arg(c.error.isEmpty() ? QString::number(per, 'f', 2) : c.error, 16)
+                       .arg(goal, 7, 'f', 1)
+                       .arg(per >= 0 && per <= goal ? QStringLiteral("yes") : QStringLiteral("no"), 3);
+            out.flush();
+            if (count == 100)
+                (separate ? separatePer : samePer) = per;
+        }
+    }
+
+    // --- 2. the large system ---
+    LiveTest::LiveSystem live;
+    LiveTest::LiveSystem secondServer;
+    const quint16 masterPort = LiveTest::freePort();
+    if (!live.startNameServer(&error) || !secondServer.startNameServer(&error)) {
+        out << "bench_scale: " << error << '\n';
+        return 1;
+    }
+    const QStringList servers {live.namingServer(), secondServer.namingServer()};
+    QProcess *master = live.startProcess(QStringLiteral(RTMANAGER_PATH), masterArguments(masterPort, servers),
+                                         "rtmanager ready", &error);
+    if (!master) {
+        out << "bench_scale: " << error << '\n';
+        return 1;
+    }
+    const Profile::RtsProfile profile = largeSystem(options, servers);
+    TargetOptions target;
+    target.nameServers = servers;
+    target.manager = QStringLiteral("corbaloc::127.0.0.1:%1").arg(masterPort);
+    for (int i = 0; i < options.managers; ++i)
+        target.hostManagers.insert(hostName(i), QStringLiteral("127.0.0.1:%1").arg(LiveTest::freePort()));
+    target.create = true;
+
+    out << QStringLiteral("\nA system of %1 components and %2 connectors on %3 slave managers, two name servers\n\n")
+               .arg(profile.components.size())
+               .arg(profile.dataPortConnectors.size())
+               .arg(options.managers);
+    out << "| phase                          |      ms | goal ms | result |\n";
+    out << "|--------------------------------|---------|---------|--------|\n";
+    QList<Phase> phases;
+    const auto run = [&](const QString &name, const QString &goal, const std::function<QString()> &step) {
+        QElapsedTimer timer;
+        timer.start();
+        const QString result = step();
+        const Phase phase {name, timer.elapsed(), goal, result};
+        phases << phase;
+        const bool met = result.isEmpty() && (goal == QLatin1String("-") || phase.ms <= goal.toLongLong());
+        out << QStringLiteral("| %1 | %2 | %3 | %4 |\n")
+                   .arg(name, -30)
+                   .arg(phase.ms, 7)
+                   .arg(goal, 7)
+                   .arg(result.isEmpty() ? (met ? QStringLiteral("met") : QStringLiteral("slower")) : result, -6);
+        out.flush();
+        return result.isEmpty();
+    };
+    const auto reported = [](const DeployReport &report) { return report.ok ? QString() : report.error; };
+    RestorePlan plan;
+    bool ok = run(QStringLiteral("first restore (creates slaves)"), QStringLiteral("-"), [&] {
+        plan = planRestore(profile, target);
+        return reported(restoreSystem(profile, plan, target));
+    });
+    ok = ok && run(QStringLiteral("teardown"), QStringLiteral("1000"), [&] {
+             plan = planRestore(profile, target);
+             return reported(teardownSystem(plan));
+         });
+    ok = ok && run(QStringLiteral("restore + start"), QStringLiteral("3000"), [&] {
+             plan = planRestore(profile, target);
+             DeployReport report = restoreSystem(profile, plan, target);
+             if (report.ok)
+                 report = startSystem(profile, plan);
+             return reported(report);
+         });
+    ok = ok && run(QStringLiteral("drift against the file"), QStringLiteral("1000"), [&] {
+             const QList<DriftItem> drift = diffSystem(profile, plan);
+             return drift.isEmpty() ? QString() : QStringLiteral("%1 items, first: %2").arg(drift.size()).arg(drift.first().toString());
+         });
+    ok = ok && run(QStringLiteral("stop"), QStringLiteral("1000"), [&] { return reported(stopSystem(profile, plan)); });
+    ok = ok && run(QStringLiteral("cryo"), QStringLiteral("1000"), [&] {
+             CryoOptions cryo;
+             cryo.paths = {QLatin1Char('/') + servers.first()};
+             DeployReport report;
+             const Profile::RtsProfile saved = cryoSystem(cryo, &report);
+             if (report.ok && (saved.components.size() != profile.components.size()
+                               || saved.dataPortConnectors.size() != profile.dataPortConnectors.size())) {
+                 return QStringLiteral("saw %1 components, %2 connectors")
+                     .arg(saved.components.size())
+                     .arg(saved.dataPortConnectors.size());
+             }
+             return reported(report);
+         });
+    const qint64 rssKiB = residentKiB(master->processId());
+    out << QStringLiteral("\nrtmanager processes (master + %1 slaves): %2 MiB resident, %3 KiB per hosted component\n")
+               .arg(options.managers)
+               .arg(double(rssKiB) / 1024, 0, 'f', 1)
+               .arg(rssKiB / qMax<qsizetype>(1, profile.components.size()));
+
+    const auto msOf = [&phases](const QString &name) {
+        for (const Phase &phase : std::as_const(phases)) {
+            if (phase.name == name)
+                return phase.result.isEmpty() ? QString::number(phase.ms) : QStringLiteral("failed");
+        }
+        return QStringLiteral("-");
+    };
+    out << QStringLiteral("\nscale: create same %1 ms, create separate %2 ms, restore+start %3 ms, teardown %4 ms, "
+                          "cryo %5 ms (%6 RTCs / %7 managers)\n")
+               .arg(samePer, 0, 'f', 2)
+               .arg(separatePer, 0, 'f', 2)
+               .arg(msOf(QStringLiteral("restore + start")), msOf(QStringLiteral("teardown")), msOf(QStringLiteral("cryo")))
+               .arg(profile.components.size())
+               .arg(options.managers);
+    return ok ? 0 : 1;
+}
