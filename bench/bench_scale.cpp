@@ -293,6 +293,10 @@ int main(int argc, char **argv)
         plan = planRestore(profile, target);
         return reported(restoreSystem(profile, plan, target));
     });
+    ok = ok && run(QStringLiteral("plan (find every component)"), QStringLiteral("-"), [&] {
+             plan = planRestore(profile, target);
+             return plan.missingRequired().isEmpty() ? QString() : QStringLiteral("components missing");
+         });
     ok = ok && run(QStringLiteral("teardown"), QStringLiteral("1000"), [&] {
              plan = planRestore(profile, target);
              return reported(teardownSystem(plan));

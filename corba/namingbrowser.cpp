@@ -150,52 +150,63 @@ NamingNode objectNode(CORBA::Object_ptr object, const QString &name, const QStri
     return node;
 }
 
+/// How many bindings one list() or next_n() call brings (a large context costs a few calls).
+constexpr CORBA::ULong ListBatch = 1000;
+
 /**
- * The bindings of a context. Only the name server is asked for them; then, when checking, every
- * bound object is asked what it is, all at once, so that objects that hang cost one call timeout
- * together and never hold back the others.
+ * The bindings of a context. The name server is asked for them in batches and for the bound
+ * objects several at once; then, when checking, every bound object is asked what it is, all at
+ * once, so that objects that hang cost one call timeout together and never hold back the others.
  */
 std::vector<NamingNode> listContext(CosNaming::NamingContext_ptr context, const QString &path,
                                     NamingBrowser::Check check)
 {
-    std::vector<NamingNode> nodes;
-    std::vector<std::pair<std::size_t, CORBA::Object_var>> objects;
-    CosNaming::BindingList_var bindings;
-    CosNaming::BindingIterator_var iterator;
-    call(path, [&] { context->list(0, bindings.out(), iterator.out()); });
-    bool more = !CORBA::is_nil(iterator);
-    while (more) {
-        CosNaming::Binding_var binding;
-        more = call(path, [&] { return iterator->next_one(binding.out()); });
-        if (!more)
-            break;
-        const QString name = elementName(binding->binding_name[0]);
+    std::vector<CosNaming::Binding> bindings;
+    {
+        CosNaming::BindingList_var batch;
+        CosNaming::BindingIterator_var iterator;
+        call(path, [&] { context->list(ListBatch, batch.out(), iterator.out()); });
+        for (bool more = true; more;) {
+            for (CORBA::ULong i = 0; i < batch->length(); ++i)
+                bindings.push_back(batch[i]);
+            more = !CORBA::is_nil(iterator)
+                && call(path, [&] { return iterator->next_n(ListBatch, batch.out()); });
+        }
+        if (!CORBA::is_nil(iterator)) {
+            try {
+                call(path, [&] { iterator->destroy(); });
+            } catch (const Error &) {
+                // The iterator is the server's to reclaim; failing to destroy it early is harmless.
+            }
+        }
+    }
+    std::vector<NamingNode> nodes(bindings.size());
+    std::vector<CORBA::Object_var> objects(bindings.size());
+    std::vector<std::size_t> bound; // indices of object bindings
+    for (std::size_t i = 0; i < bindings.size(); ++i) {
+        const QString name = elementName(bindings[i].binding_name[0]);
         const QString childPath
             = path.endsWith(QLatin1Char('/')) ? path + name : path + QLatin1Char('/') + name;
-        if (binding->binding_type == CosNaming::ncontext) {
-            nodes.push_back({name, NodeType::Context, childPath, {}, {}, {}});
-            continue;
-        }
-        CORBA::Object_var object;
+        nodes[i] = {name, NodeType::Context, childPath, {}, {}, {}};
+        if (bindings[i].binding_type != CosNaming::ncontext)
+            bound.push_back(i);
+    }
+    forEachConcurrently(bound.size(), [&](std::size_t k) {
+        const std::size_t i = bound[k];
+        const QString name = nodes[i].name;
+        const QString childPath = nodes[i].path;
         try {
-            object = call(childPath, [&] { return context->resolve(binding->binding_name); });
+            objects[i] = call(childPath, [&] { return context->resolve(bindings[i].binding_name); });
+            nodes[i] = objectNode(objects[i].in(), name, childPath, NamingBrowser::Check::NamesOnly);
         } catch (const Error &e) {
-            nodes.push_back({name, NodeType::Zombie, childPath, {}, e.message(), {}});
-            continue;
+            nodes[i] = {name, NodeType::Zombie, childPath, {}, e.message(), {}};
         }
-        nodes.push_back(objectNode(object.in(), name, childPath, NamingBrowser::Check::NamesOnly));
-        objects.emplace_back(nodes.size() - 1, object._retn());
-    }
-    if (!CORBA::is_nil(iterator)) {
-        try {
-            call(path, [&] { iterator->destroy(); });
-        } catch (const Error &) {
-            // The iterator is the server's to reclaim; failing to destroy it early is harmless.
-        }
-    }
+    });
     if (check == NamingBrowser::Check::Objects) {
-        forEachConcurrently(objects.size(), [&](std::size_t i) {
-            classify(objects[i].second.in(), &nodes[objects[i].first]);
+        forEachConcurrently(bound.size(), [&](std::size_t k) {
+            const std::size_t i = bound[k];
+            if (!CORBA::is_nil(objects[i]))
+                classify(objects[i].in(), &nodes[i]);
         });
     }
     return nodes;

@@ -2,6 +2,7 @@
 #include "componentmapper.h"
 
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "corbaerror.h"
 #include "namingbrowser.h"
 #include "rtsprofile.h"
@@ -128,14 +129,26 @@ void ComponentMapper::indexServers(const Profile::RtsProfile &profile)
         servers = NamingBrowser::serversFromEnvironment();
     if (servers.isEmpty())
         servers.append(QStringLiteral("localhost"));
-    QStringList paths;
+    m_serverPaths.clear();
     for (const QString &server : servers)
-        paths.append(QLatin1Char('/') + server);
-    m_byInstance = liveComponents(paths, &m_problems);
+        m_serverPaths.append(QLatin1Char('/') + server);
+    // Names only: asking every component and manager is for those no name leads to.
+    m_byInstance = liveComponents(m_serverPaths, &m_problems, NamingBrowser::Check::NamesOnly);
+}
+
+const QHash<QString, ComponentMapper::LiveEntry> &ComponentMapper::fullIndex()
+{
+    QMutexLocker lock(&m_fullIndexMutex);
+    if (!m_fullIndexed) {
+        m_fullIndex = liveComponents(m_serverPaths, nullptr);
+        m_fullIndexed = true;
+    }
+    return m_fullIndex;
 }
 
 QHash<QString, ComponentMapper::LiveEntry> ComponentMapper::liveComponents(const QStringList &paths,
-                                                                           QStringList *problems)
+                                                                           QStringList *problems,
+                                                                           NamingBrowser::Check check)
 {
     QHash<QString, LiveEntry> found;
     for (const QString &text : paths) {
@@ -144,7 +157,7 @@ QHash<QString, ComponentMapper::LiveEntry> ComponentMapper::liveComponents(const
             const auto path = RtPath::parse(text, QStringLiteral("/"), &error);
             if (!path)
                 throw Error(Error::Kind::BadPath, QStringLiteral("%1: %2").arg(text, error));
-            collectComponents(NamingBrowser::tree(*path, searchDepth), found);
+            collectComponents(NamingBrowser::tree(*path, searchDepth, {}, check), found);
         } catch (const Error &e) {
             if (problems)
                 problems->append(e.message());
@@ -195,6 +208,11 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
     const auto live = m_byInstance.constFind(component.instanceName);
     if (live != m_byInstance.constEnd() && checkLive(mapping, *live))
         return mapping;
+    const QHash<QString, LiveEntry> &known = fullIndex();
+    const auto listed = known.constFind(component.instanceName);
+    if (listed != known.constEnd() && (live == m_byInstance.constEnd() || listed->path != live->path)
+        && checkLive(mapping, *listed))
+        return mapping;
     if (mapping.message.isEmpty())
         mapping.message = QStringLiteral("no live component named %1").arg(component.instanceName);
     if (m_options.create) {
@@ -216,11 +234,15 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
 QList<ComponentMapping> ComponentMapper::map(const Profile::RtsProfile &profile)
 {
     m_byInstance.clear();
+    m_fullIndex.clear();
+    m_fullIndexed = false;
     m_problems.clear();
     indexServers(profile);
-    QList<ComponentMapping> result;
-    for (const auto &component : profile.components)
-        result.append(mapOne(component));
+    // Components are looked up independently: several at once.
+    QList<ComponentMapping> result(profile.components.size());
+    Corba::forEachConcurrently(std::size_t(profile.components.size()), [&](std::size_t i) {
+        result[qsizetype(i)] = mapOne(profile.components.at(qsizetype(i)));
+    });
     return result;
 }
 

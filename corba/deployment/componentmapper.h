@@ -3,9 +3,11 @@
 
 #include "corbatypes.h"
 #include "deployreport.h"
+#include "namingbrowser.h"
 
 #include <QHash>
 #include <QList>
+#include <QMutex>
 #include <QString>
 #include <QStringList>
 
@@ -95,18 +97,26 @@ public:
     /**
      * The components at or below each of `paths` (rtshell paths: servers, contexts, managers or
      * components), by instance name; naming-context bindings win over a manager's listing.
-     * Paths that cannot be walked are added to `problems`.
+     * Paths that cannot be walked are added to `problems`. With Check::NamesOnly only the name
+     * servers are asked (components bound under a name, no manager's listing): much quicker.
      */
-    static QHash<QString, LiveEntry> liveComponents(const QStringList &paths,
-                                                    QStringList *problems);
+    static QHash<QString, LiveEntry> liveComponents(
+        const QStringList &paths, QStringList *problems,
+        Corba::NamingBrowser::Check check = Corba::NamingBrowser::Check::Objects);
 
 private:
     void indexServers(const Profile::RtsProfile &profile);
+    /// The components the managers know beside those bound by name (walked on first need).
+    const QHash<QString, LiveEntry> &fullIndex();
     ComponentMapping mapOne(const Profile::RtsComponent &component);
     bool checkLive(ComponentMapping &mapping, const LiveEntry &entry) const;
 
     TargetOptions m_options;
-    QHash<QString, LiveEntry> m_byInstance;
+    QStringList m_serverPaths;
+    QHash<QString, LiveEntry> m_byInstance; ///< bound by name
+    QHash<QString, LiveEntry> m_fullIndex;
+    bool m_fullIndexed = false;
+    QMutex m_fullIndexMutex;
     QStringList m_problems;
 };
 

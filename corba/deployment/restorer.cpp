@@ -2,11 +2,10 @@
 #include "restorer.h"
 
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "corbaerror.h"
 #include "liveports.h"
 #include "managerproxy.h"
-
-#include <map>
 #include "portconnection.h"
 #include "rtsprofile.h"
 #include "steprecorder.h"
@@ -15,6 +14,7 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <optional>
 
 namespace Deploy {
@@ -325,29 +325,43 @@ DeployReport restoreSystem(const Profile::RtsProfile &profile, const RestorePlan
 DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &control)
 {
     StepRecorder steps(control);
+    struct Job
+    {
+        int step;
+        const ConnectorPlan *connector;
+        const ComponentMapping *source;
+    };
+    std::vector<Job> jobs;
     for (const ConnectorPlan &c : plan.connectors) {
-        if (steps.checkCancelled())
-            break;
         const ComponentMapping *source = plan.component(c.sourceInstance);
         if (!source || source->kind != MappingKind::Existing) {
             steps.add(QStringLiteral("disconnect"), c.connectorId, StepStatus::Skipped,
                       QStringLiteral("%1 is not there").arg(c.sourceInstance), false);
             continue;
         }
-        const int step = steps.begin(QStringLiteral("disconnect"), c.connectorId, c.required);
+        jobs.push_back({steps.begin(QStringLiteral("disconnect"), c.connectorId, c.required), &c, source});
+    }
+    // Connectors are independent of each other: several are taken apart at once.
+    Corba::forEachConcurrently(jobs.size(), [&steps, &jobs](std::size_t i) {
+        const Job &job = jobs[i];
+        const ConnectorPlan &c = *job.connector;
+        if (steps.checkCancelled()) {
+            steps.finish(job.step, StepStatus::Skipped, QStringLiteral("cancelled"));
+            return;
+        }
         try {
-            const ComponentProxy proxy(source->ior, source->path);
+            const ComponentProxy proxy(job.source->ior, job.source->path);
             const Corba::PortInfo port = proxy.port(shortPortName(c.sourcePort, c.sourceInstance));
             if (!findConnector(port, c.connectorId)) {
-                steps.finish(step, StepStatus::Skipped, QStringLiteral("not connected"));
-                continue;
+                steps.finish(job.step, StepStatus::Skipped, QStringLiteral("not connected"));
+                return;
             }
             Corba::PortConnection::disconnect(port, c.connectorId, proxy.path());
-            steps.finish(step, StepStatus::Done);
+            steps.finish(job.step, StepStatus::Done);
         } catch (const Error &e) {
-            steps.fail(step, e.message());
+            steps.fail(job.step, e.message());
         }
-    }
+    });
     return steps.report();
 }
 

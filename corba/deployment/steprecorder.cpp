@@ -24,6 +24,7 @@ int StepRecorder::add(const QString &action, const QString &subject, StepStatus 
     step.message = message;
     step.required = required;
     step.elapsedMs = m_timer.elapsed();
+    QMutexLocker lock(&m_mutex);
     m_report.steps.append(step);
     const int index = int(m_report.steps.size()) - 1;
     announce(index);
@@ -32,6 +33,7 @@ int StepRecorder::add(const QString &action, const QString &subject, StepStatus 
 
 void StepRecorder::finish(int index, StepStatus status, const QString &message)
 {
+    QMutexLocker lock(&m_mutex);
     DeployStep &step = m_report.steps[index];
     step.status = status;
     if (!message.isEmpty())
@@ -43,6 +45,7 @@ void StepRecorder::finish(int index, StepStatus status, const QString &message)
 void StepRecorder::fail(int index, const QString &message)
 {
     finish(index, StepStatus::Failed, message);
+    QMutexLocker lock(&m_mutex);
     const DeployStep &step = m_report.steps.at(index);
     if (step.required && m_report.ok) {
         m_report.ok = false;
@@ -54,6 +57,7 @@ bool StepRecorder::checkCancelled()
 {
     if (!m_control.cancelled())
         return false;
+    QMutexLocker lock(&m_mutex);
     if (!m_report.cancelled) {
         m_report.cancelled = true;
         if (m_report.ok) {
@@ -64,6 +68,25 @@ bool StepRecorder::checkCancelled()
     return true;
 }
 
+DeployStep StepRecorder::step(int index) const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_report.steps.at(index);
+}
+
+bool StepRecorder::ok() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_report.ok;
+}
+
+DeployReport StepRecorder::report() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_report;
+}
+
+// Called with m_mutex held: callbacks come one at a time, in the order of the changes.
 void StepRecorder::announce(int index)
 {
     if (m_control.progress)

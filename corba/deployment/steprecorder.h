@@ -4,12 +4,14 @@
 #include "deployreport.h"
 
 #include <QElapsedTimer>
+#include <QMutex>
 
 namespace Deploy {
 
 /**
  * Records the steps of one operation into a DeployReport and tells the caller's progress callback
- * about each change. Internal to the deployment library.
+ * about each change. Safe to use from several threads (ConcurrentCalls' jobs finish their steps);
+ * the callback is never called by two threads at once. Internal to the deployment library.
  */
 class StepRecorder
 {
@@ -27,15 +29,16 @@ public:
     /// Marks the operation cancelled (and failed) once the caller asked for it.
     bool checkCancelled();
 
-    const DeployStep &step(int index) const { return m_report.steps.at(index); }
-    bool ok() const { return m_report.ok; }
-    DeployReport report() const { return m_report; }
+    DeployStep step(int index) const;
+    bool ok() const;
+    DeployReport report() const;
     const DeployControl &control() const { return m_control; }
     qint64 elapsed() const { return m_timer.elapsed(); }
 
 private:
     void announce(int index);
 
+    mutable QMutex m_mutex;
     DeployControl m_control;
     DeployReport m_report;
     QElapsedTimer m_timer;
