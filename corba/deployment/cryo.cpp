@@ -3,6 +3,7 @@
 
 #include "componentmapper.h"
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "corbaerror.h"
 #include "restoreplan.h"
 #include "rtsprofile.h"
@@ -12,6 +13,8 @@
 #include <QSet>
 
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 namespace Deploy {
 
@@ -161,19 +164,37 @@ Profile::RtsProfile cryoSystem(const CryoOptions &options, DeployReport *report,
                    problem);
     QStringList instances = live.keys();
     instances.sort();
-    QMap<QString, std::vector<Corba::PortInfo>> ports;
-    for (const QString &instance : instances) {
-        if (steps.checkCancelled())
-            break;
-        const int step = steps.begin(QStringLiteral("save"), instance, false);
-        try {
-            const ComponentProxy proxy(live.value(instance).ior, live.value(instance).path);
-            ports.insert(instance, proxy.ports());
-            profile.components.append(savedComponent(proxy, ports.value(instance)));
-            steps.finish(step, StepStatus::Done, proxy.path());
-        } catch (const Error &e) {
-            steps.fail(step, e.message());
+    // Each component is asked on its own: several at once, saved in name order.
+    struct Saved
+    {
+        int step = -1;
+        std::optional<Profile::RtsComponent> component;
+        std::vector<Corba::PortInfo> ports;
+    };
+    std::vector<Saved> saved(std::size_t(instances.size()));
+    for (std::size_t i = 0; i < saved.size(); ++i)
+        saved[i].step = steps.begin(QStringLiteral("save"), instances.at(qsizetype(i)), false);
+    Corba::forEachConcurrently(saved.size(), [&](std::size_t i) {
+        const ComponentMapper::LiveEntry entry = live.value(instances.at(qsizetype(i)));
+        if (steps.checkCancelled()) {
+            steps.finish(saved[i].step, StepStatus::Skipped, QStringLiteral("cancelled"));
+            return;
         }
+        try {
+            const ComponentProxy proxy(entry.ior, entry.path);
+            saved[i].ports = proxy.ports();
+            saved[i].component = savedComponent(proxy, saved[i].ports);
+            steps.finish(saved[i].step, StepStatus::Done, proxy.path());
+        } catch (const Error &e) {
+            steps.fail(saved[i].step, e.message());
+        }
+    });
+    QMap<QString, std::vector<Corba::PortInfo>> ports;
+    for (std::size_t i = 0; i < saved.size(); ++i) {
+        if (!saved[i].component)
+            continue;
+        ports.insert(instances.at(qsizetype(i)), std::move(saved[i].ports));
+        profile.components.append(std::move(*saved[i].component));
     }
     QMap<QString, PortOwner> owners;
     for (const auto &component : profile.components) {

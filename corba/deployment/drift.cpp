@@ -2,6 +2,7 @@
 #include "drift.h"
 
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "corbaerror.h"
 #include "liveports.h"
 #include "rtsprofile.h"
@@ -10,6 +11,8 @@
 #include <QSet>
 
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 namespace Deploy {
 
@@ -149,23 +152,36 @@ QString DriftItem::toString() const
 
 QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePlan &plan)
 {
-    QList<DriftItem> items;
-    QHash<QString, LiveComponent> live;
-    for (const auto &saved : profile.components) {
+    // Each component is compared on its own: several at once, reported in the file's order.
+    struct Compared
+    {
+        QList<DriftItem> items;
+        std::optional<LiveComponent> component;
+    };
+    std::vector<Compared> compared(std::size_t(profile.components.size()));
+    Corba::forEachConcurrently(compared.size(), [&](std::size_t i) {
+        const auto &saved = profile.components.at(qsizetype(i));
         const ComponentMapping *mapping = plan.component(saved.instanceName);
         if (!mapping || mapping->kind != MappingKind::Existing) {
-            items.append({Kind::MissingComponent, saved.instanceName, saved.id,
-                          mapping ? mapping->message : QString()});
-            continue;
+            compared[i].items.append({Kind::MissingComponent, saved.instanceName, saved.id,
+                                      mapping ? mapping->message : QString()});
+            return;
         }
         try {
             LiveComponent component {ComponentProxy(mapping->ior, mapping->path), {}};
             component.ports = component.proxy.ports();
-            diffComponent(saved, component, items);
-            live.insert(saved.instanceName, component);
+            diffComponent(saved, component, compared[i].items);
+            compared[i].component = std::move(component);
         } catch (const Error &e) {
-            items.append({Kind::Unreachable, saved.instanceName, QString(), e.message()});
+            compared[i].items.append({Kind::Unreachable, saved.instanceName, QString(), e.message()});
         }
+    });
+    QList<DriftItem> items;
+    QHash<QString, LiveComponent> live;
+    for (std::size_t i = 0; i < compared.size(); ++i) {
+        items.append(compared[i].items);
+        if (compared[i].component)
+            live.insert(profile.components.at(qsizetype(i)).instanceName, std::move(*compared[i].component));
     }
     diffConnectors(profile, live, items);
     return items;
