@@ -320,6 +320,23 @@ void PeriodicExecutionContext::run()
         std::unique_lock lock(m_mutex);
         if (!m_running)
             return;
+        // Only active components execute and only those in error are told so each period: with
+        // neither (a freshly created or a stopped system) the thread sleeps until a transition is
+        // asked for, instead of waking `rate` times a second for nothing.
+        const auto due = [&] {
+            for (const ParticipantPtr &p : m_participants) {
+                if (p->request != Request::None || p->state == RTC::ACTIVE_STATE || p->state == RTC::ERROR_STATE)
+                    return true;
+            }
+            return false;
+        };
+        if (!due()) {
+            m_wake.wait(lock, [&] { return !m_running || due(); });
+            if (!m_running)
+                return;
+            next = Clock::now();
+            continue;
+        }
         next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / m_rate));
         const auto now = Clock::now();
         if (next < now)

@@ -30,10 +30,12 @@ CosNaming::NamingContext_ptr rootContext(const std::string &server)
 {
     const std::string address = server.find(':') == std::string::npos ? server + ":2809" : server;
     CORBA::Object_var object = theOrb()->string_to_object(("corbaloc:iiop:" + address + "/NameService").c_str());
-    return CosNaming::NamingContext::_narrow(object);
+    // Unchecked: the first real call tells whether a name server answers, without an extra round trip.
+    return CosNaming::NamingContext::_unchecked_narrow(object);
 }
 
-void bindPath(CosNaming::NamingContext_ptr root, const CosNaming::Name &name, CORBA::Object_ptr object)
+/// Walks (and makes) the contexts of every element of @p name but the last.
+CosNaming::NamingContext_ptr walkContexts(CosNaming::NamingContext_ptr root, const CosNaming::Name &name)
 {
     CosNaming::NamingContext_var context = CosNaming::NamingContext::_duplicate(root);
     for (CORBA::ULong i = 0; i + 1 < name.length(); ++i) {
@@ -42,15 +44,20 @@ void bindPath(CosNaming::NamingContext_ptr root, const CosNaming::Name &name, CO
         step[0] = name[i];
         try {
             CORBA::Object_var next = context->resolve(step);
-            context = CosNaming::NamingContext::_narrow(next);
+            context = CosNaming::NamingContext::_unchecked_narrow(next);
         } catch (const CosNaming::NamingContext::NotFound &) {
             context = context->bind_new_context(step);
         }
     }
-    CosNaming::Name last;
-    last.length(1);
-    last[0] = name[name.length() - 1];
-    context->rebind(last, object);
+    return context._retn();
+}
+
+std::string contextKey(const std::string &server, const CosNaming::Name &name)
+{
+    std::string key = server;
+    for (CORBA::ULong i = 0; i + 1 < name.length(); ++i)
+        key += std::string("/") + static_cast<const char *>(name[i].id) + '.' + static_cast<const char *>(name[i].kind);
+    return key;
 }
 
 } // namespace
@@ -68,18 +75,51 @@ NamingRegistrar::NamingRegistrar(const std::vector<std::string> &servers)
 {
 }
 
+CosNaming::NamingContext_ptr NamingRegistrar::context(const std::string &server, const CosNaming::Name &name,
+                                                     bool fresh)
+{
+    const std::string key = contextKey(server, name);
+    {
+        std::lock_guard lock(m_mutex);
+        const auto cached = m_contexts.find(key);
+        if (!fresh && cached != m_contexts.end())
+            return CosNaming::NamingContext::_duplicate(cached->second);
+    }
+    CosNaming::NamingContext_var root = rootContext(server);
+    if (CORBA::is_nil(root))
+        throw CORBA::OBJECT_NOT_EXIST();
+    CosNaming::NamingContext_var found = walkContexts(root, name);
+    std::lock_guard lock(m_mutex);
+    m_contexts[key] = CosNaming::NamingContext::_duplicate(found);
+    return found._retn();
+}
+
 bool NamingRegistrar::bind(const std::string &path, CORBA::Object_ptr object, std::vector<std::string> *errors)
 {
     const CosNaming::Name name = toName(path);
     if (name.length() == 0)
         return false;
+    CosNaming::Name last;
+    last.length(1);
+    last[0] = name[name.length() - 1];
     bool ok = true;
     for (const std::string &server : m_servers) {
         try {
-            CosNaming::NamingContext_var root = rootContext(server);
-            if (CORBA::is_nil(root))
-                throw CORBA::OBJECT_NOT_EXIST();
-            bindPath(root, name, object);
+            bool again = false;
+            try {
+                CosNaming::NamingContext_var holder = context(server, name, false);
+                holder->rebind(last, object);
+            } catch (const CORBA::OBJECT_NOT_EXIST &) {
+                again = true; // a remembered context is gone (the name server lost its data)
+            } catch (const CORBA::TRANSIENT &) {
+                again = true; // or the server was restarted elsewhere
+            } catch (const CosNaming::NamingContext::NotFound &) {
+                again = true; // or someone removed the context
+            }
+            if (again) {
+                CosNaming::NamingContext_var holder = context(server, name, true);
+                holder->rebind(last, object);
+            }
         } catch (const CORBA::Exception &e) {
             ok = false;
             if (errors)
