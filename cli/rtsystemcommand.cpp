@@ -36,14 +36,9 @@ Deploy::DeployControl printingControl(Streams streams)
     return control;
 }
 
+// Every finished step, rolled-back ones included, was printed as it happened (printingControl).
 int finish(const DeployReport &report, const QString &command, Streams streams)
 {
-    // Rolled-back steps were printed as done before the failure; say what became of them.
-    for (const DeployStep &step : report.steps) {
-        if (step.status == StepStatus::RolledBack)
-            streams.out << step.toString() << '\n';
-    }
-    streams.out.flush();
     if (report.ok)
         return ExitOk;
     streams.err << "rtctl " << command << ": " << report.error << '\n';

@@ -94,9 +94,21 @@ QString ManagerProxy::createComponent(const QString &moduleName) const
         return toIor(rtc.in());
     });
     if (ior.isEmpty())
-        throw Error(Error::Kind::Refused,
-                    QStringLiteral("%1: could not create '%2'").arg(m_path, moduleName));
+        throw Error(Error::Kind::Refused, QStringLiteral("%1: could not create '%2'%3")
+                                              .arg(m_path, moduleName, refusalReason()));
     return ior;
+}
+
+// create_component answers a refusal with nil alone; rtmanager says why in its profile (a slave
+// or another host's manager it could not reach, an unknown type, a name taken).
+QString ManagerProxy::refusalReason() const
+{
+    try {
+        const QString reason = propertyValue(profile(), QStringLiteral("last_error"));
+        return reason.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(reason);
+    } catch (const Error &) {
+        return QString();
+    }
 }
 
 void ManagerProxy::deleteComponent(const QString &instanceName) const

@@ -29,7 +29,10 @@ public:
     std::vector<Properties> loadableModules() const;
     std::vector<Properties> loadedModules() const;
     std::vector<Properties> factoryProfiles() const;
-    /// `create_component("Type?k=v&...")`; returns the new component's IOR. Refused when nil.
+    /**
+     * `create_component("Type?k=v&...")`; returns the new component's IOR. Refused when nil, with
+     * the manager's reason (its profile's `last_error`) when it gives one.
+     */
     QString createComponent(const QString &moduleName) const;
     void deleteComponent(const QString &instanceName) const;
     QStringList components() const;
@@ -52,6 +55,8 @@ public:
     QString service(const QString &name) const;
 
 private:
+    QString refusalReason() const;
+
     QString m_ior;
     QString m_path;
 };

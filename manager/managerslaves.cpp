@@ -29,6 +29,33 @@ bool unreachable(const CORBA::Exception &e)
            || CORBA::OBJECT_NOT_EXIST::_downcast(&e) || CORBA::TIMEOUT::_downcast(&e);
 }
 
+// "manager at HOST:PORT" or "manager NAME": the one a create request is forwarded to.
+std::string targetName(const CreateRequest &request)
+{
+    if (request.managerAddress)
+        return "manager at " + *request.managerAddress;
+    return "manager " + request.managerName.value_or(std::string());
+}
+
+// Why `manager`, on another host, cannot take a request now; empty when it answers. omniORB keeps
+// the connection to a manager after its process is gone, and the first call on it fails although
+// a new process may listen there by now. _non_existent may be repeated on a broken connection (the
+// repeat opens a new one); create_component may not, for it may have been carried out.
+std::string remoteProblem(RTM::Manager_ptr manager)
+{
+    std::string problem;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        try {
+            return manager->_non_existent() ? std::string("no manager there") : std::string();
+        } catch (const CORBA::COMM_FAILURE &e) {
+            problem = describeException(e);
+        } catch (const CORBA::Exception &e) {
+            return describeException(e);
+        }
+    }
+    return problem;
+}
+
 } // namespace
 
 bool Manager::isLocalHost(const std::string &host) const
@@ -51,6 +78,14 @@ RTC::RTObject_ptr Manager::createRemote(const CreateRequest &request, std::strin
         }
         if (sameObject(target, m_self))
             return createLocal(request, error);
+        if (remoteOnly) {
+            const std::string problem = remoteProblem(target);
+            if (!problem.empty()) {
+                fail("create_component: " + targetName(request) + " unreachable: " + problem,
+                     error);
+                return RTC::RTObject::_nil();
+            }
+        }
         try {
             RTC::RTObject_var created = target->create_component(forwarded.c_str());
             if (!CORBA::is_nil(created))
@@ -62,7 +97,8 @@ RTC::RTObject_ptr Manager::createRemote(const CreateRequest &request, std::strin
             return RTC::RTObject::_nil();
         } catch (const CORBA::Exception &e) {
             if (remoteOnly || !unreachable(e) || attempt == 1) {
-                fail("create_component: manager unreachable: " + describeException(e), error);
+                fail("create_component: " + targetName(request) + " unreachable: " + describeException(e),
+                     error);
                 return RTC::RTObject::_nil();
             }
             dropSlave(target);

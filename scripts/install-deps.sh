@@ -10,7 +10,7 @@ packages=(
     qt6-tools-dev qt6-l10n-tools qt6-translations-l10n fonts-ipafont-gothic qt6-charts-dev libqt6opengl6-dev
     libomniorb4-dev omniidl omniorb omniorb-nameserver omniorb-idl
     libkainjow-mustache-dev libyaml-cpp-dev libgraphviz-dev
-    xvfb xauth fonts-dejavu-core ccache
+    xvfb xauth fonts-dejavu-core ccache iproute2
 )
 
 missing=()

@@ -274,6 +274,15 @@ void TestCorbaClientManager::createsAndDeletesComponents()
     QCOMPARE(manager.componentsByName("Extra0").size(), 1);
     QCOMPARE(kindOf([&] { manager.createComponent("ConsoleOut?instance_name=Extra0"); }),
              Error::Kind::Refused);
+    // The refusal says why, as the manager put it.
+    try {
+        manager.createComponent("NoSuchType");
+        QFAIL("created a component of an unknown type");
+    } catch (const Error &e) {
+        QVERIFY2(e.message().endsWith("could not create 'NoSuchType' (create_component: unknown "
+                                      "component type 'NoSuchType')"),
+                 qPrintable(e.message()));
+    }
     manager.deleteComponent("Extra0");
     QCOMPARE(manager.components().size(), before);
     QVERIFY(!manager.profile().isEmpty());

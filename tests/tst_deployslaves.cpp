@@ -34,6 +34,7 @@ private slots:
     void startAndStopFollowTheOrderAcrossProcesses();
     void findsComponentsOnANamedSlave();
     void slaveKilledMidRestoreRollsBackTheOthers();
+    void restoresAgainAfterASlaveDied();
     void cryoRestoreCryoKeepsTheSpread();
 
 private:
@@ -251,6 +252,36 @@ void TestDeploySlaves::slaveKilledMidRestoreRollsBackTheOthers()
     // hostB's slave survived its component's removal and still answers.
     QTRY_COMPARE(master().slaveManagers().size(), 1);
     QVERIFY(Corba::ManagerProxy(master().slaveManagers().first(), "slave").components().isEmpty());
+}
+
+// hostB's slave dies with Mid0, and Src0 keeps its connector to the dead port: restoring again
+// creates Mid0 on a new slave and connects it in place of the broken connector.
+void TestDeploySlaves::restoresAgainAfterASlaveDied()
+{
+    const Profile::RtsProfile profile = spreadSystem();
+    const TargetOptions options = target();
+    QVERIFY(restoreSystem(profile, planRestore(profile, options), options).ok);
+    const QString midHost = hostingManagers().value("Mid0");
+    QVERIFY(!midHost.isEmpty() && midHost != "master");
+    const qint64 pid
+        = Corba::propertyValue(Corba::ManagerProxy(midHost, "slave").profile(), "pid").toLongLong();
+    QVERIFY(pid > 0);
+    QCOMPARE(::kill(pid_t(pid), SIGKILL), 0);
+    QTRY_COMPARE(master().slaveManagers().size(), 1);
+    const auto broken = live("Src0").port("out").connectors;
+    QCOMPARE(broken.size(), size_t(1));
+    QCOMPARE(broken.front().id, QString("conn-src-mid"));
+
+    const DeployReport again = restoreSystem(profile, planRestore(profile, options), options);
+    QVERIFY2(again.ok, qPrintable(again.toText()));
+    QCOMPARE(doneSubjects(again, "create"), QStringList({"Mid0"}));
+    QCOMPARE(stepMessage(again, "connect", "conn-src-mid"),
+             QString("Src0.out -> Mid0.in (replaced a broken connector)"));
+    checkSpread({"Mid0", "Sink0"});
+    const auto connectors = live("Src0").port("out").connectors;
+    QCOMPARE(connectors.size(), size_t(1));
+    QCOMPARE(connectors.front().ports, QStringList({"Src0.out", "Mid0.in"}));
+    QCOMPARE(live("Mid0").port("in").connectors.front().id, QString("conn-src-mid"));
 }
 
 void TestDeploySlaves::cryoRestoreCryoKeepsTheSpread()

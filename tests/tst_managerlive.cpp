@@ -110,6 +110,7 @@ private slots:
     void shutdownWithoutComponents_data();
     void shutdownWithoutComponents();
     void masterKnownByAnyReference();
+    void forwardsToARestartedManagerOnAnotherHost();
     void sameHostPeersUseUnixSocket_data();
     void sameHostPeersUseUnixSocket();
 
@@ -624,6 +625,37 @@ void TestManagerLive::masterKnownByAnyReference()
     QCOMPARE(slaves[0]->remove_master_manager(master), RTC::RTC_OK);
     RTM::ManagerList_var masters = slaves[0]->get_master_managers();
     QCOMPARE(masters->length(), CORBA::ULong(0));
+}
+
+// 127.0.0.2 is another host to the master (not its address, host name or 127.0.0.1): it uses the
+// manager there directly, without making it its slave.
+void TestManagerLive::forwardsToARestartedManagerOnAnotherHost()
+{
+    const QString address = QStringLiteral("127.0.0.2:%1").arg(LiveTest::freePort());
+    const QStringList arguments {"-d", "-o", "corba.endpoints=" + address, "-o",
+                                 "naming.enable=NO"};
+    QString error;
+    QProcess *remote = m_live->startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error);
+    QVERIFY2(remote, qPrintable(error));
+    const QString request = "ConsoleOut?instance_name=%1&manager_address=" + address;
+    RTC::RTObject_var first = create(request.arg("far1"));
+    QVERIFY2(!CORBA::is_nil(first), qPrintable(lastError(m_master)));
+    QVERIFY(m_master->get_slave_managers()->length() == 0);
+
+    // The master's connection to the first process is broken now, yet the new one is reached.
+    m_live->stop(remote);
+    remote = m_live->startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error);
+    QVERIFY2(remote, qPrintable(error));
+    RTC::RTObject_var second = create(request.arg("far2"));
+    QVERIFY2(!CORBA::is_nil(second), qPrintable(lastError(m_master)));
+
+    // With nobody there, the master says which manager it could not reach.
+    m_live->stop(remote);
+    RTC::RTObject_var third = create(request.arg("far3"));
+    QVERIFY(CORBA::is_nil(third));
+    QVERIFY2(lastError(m_master).startsWith("create_component: manager at " + address
+                                            + " unreachable: "),
+             qPrintable(lastError(m_master)));
 }
 
 void TestManagerLive::sameHostPeersUseUnixSocket_data()

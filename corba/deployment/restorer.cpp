@@ -148,10 +148,20 @@ private:
         if (!source || !target)
             throw Error(Error::Kind::NotFound,
                         QStringLiteral("no port %1").arg(source ? c.targetPort : c.sourcePort));
+        const QString path = proxy(c.sourceInstance).path();
+        QString replaced;
         if (const Corba::ConnectorInfo *existing = findConnector(*source, c.connectorId)) {
             if (existing->ports.contains(target->name)) {
                 m_steps.finish(step, StepStatus::Skipped, QStringLiteral("already connected"));
                 return;
+            }
+            // The saved connector, left on this end when the process of the other end died (a
+            // host or slave restarted): its port no longer answers (no name). The port refuses
+            // a second connector of the same id, so the broken one goes first; it cannot be
+            // restored on rollback, having nothing to connect to.
+            if (existing->ports.contains(QString())) {
+                Corba::PortConnection::disconnect(*source, c.connectorId, path);
+                replaced = QStringLiteral(" (replaced a broken connector)");
             }
         }
         Corba::ConnectionRequest request;
@@ -159,13 +169,12 @@ private:
         request.name = c.name;
         request.properties = adaptedProperties(c.properties, *source);
         const Corba::PortInfo sourcePort = *source;
-        const QString path = proxy(c.sourceInstance).path();
         Corba::PortConnection::connect({*source, *target}, request, path);
         m_undo.append({step, [sourcePort, c, path] {
                            Corba::PortConnection::disconnect(sourcePort, c.connectorId, path);
                        }});
         m_steps.finish(step, StepStatus::Done,
-                       QStringLiteral("%1 -> %2").arg(source->name, target->name));
+                       QStringLiteral("%1 -> %2%3").arg(source->name, target->name, replaced));
     }
 
     // Files name data types either way (`IDL:RTC/TimedLong:1.0`, `RTC::TimedLong`); the port's

@@ -27,11 +27,26 @@ sockaddr_in loopback(quint16 port)
     return address;
 }
 
+bool accepts(const sockaddr_in &address)
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0)
+        return false;
+    const bool connected
+        = ::connect(fd, reinterpret_cast<const sockaddr *>(&address), sizeof(address)) == 0;
+    ::close(fd);
+    return connected;
+}
+
 // A test killed by its time limit or a crash never reaches stopAll(); the kernel then ends the
 // servers it started (even SIGSTOPped ones) instead of leaving them behind.
-void dieWithParent(QProcess &process)
+void prepareChild(QProcess &process, const std::function<void()> &enterChild)
 {
-    process.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
+    process.setChildProcessModifier([enterChild] {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (enterChild)
+            enterChild();
+    });
 }
 
 } // namespace
@@ -53,14 +68,14 @@ quint16 freePort()
 
 bool isListening(quint16 port)
 {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (fd < 0)
-        return false;
-    sockaddr_in address = loopback(port);
-    const bool connected
-        = ::connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof(address)) == 0;
-    ::close(fd);
-    return connected;
+    return accepts(loopback(port));
+}
+
+bool isListening(const QString &address, quint16 port)
+{
+    sockaddr_in target = loopback(port);
+    return ::inet_pton(AF_INET, address.toLatin1().constData(), &target.sin_addr) == 1
+        && accepts(target);
 }
 
 bool waitUntilStopped(qint64 pid, int timeoutMs)
@@ -85,7 +100,9 @@ bool waitUntilStopped(qint64 pid, int timeoutMs)
     return false;
 }
 
-LiveSystem::LiveSystem() = default;
+LiveSystem::LiveSystem(LiveHost host)
+    : m_host(std::move(host))
+{ }
 
 LiveSystem::~LiveSystem()
 {
@@ -99,10 +116,10 @@ QByteArray managerLocation(quint16 port)
 
 QString LiveSystem::namingServer() const
 {
-    return QStringLiteral("127.0.0.1:%1").arg(m_namingPort);
+    return QStringLiteral("%1:%2").arg(m_host.address).arg(m_namingPort);
 }
 
-bool LiveSystem::startNameServer(QString *error)
+bool LiveSystem::startNameServer(QString *error, quint16 port)
 {
     const QString program = QStandardPaths::findExecutable(QStringLiteral("omniNames"));
     if (program.isEmpty()) {
@@ -110,15 +127,15 @@ bool LiveSystem::startNameServer(QString *error)
         return false;
     }
     m_dataDir = std::make_unique<QTemporaryDir>();
-    m_namingPort = freePort();
-    const QString port = QString::number(m_namingPort);
+    m_namingPort = port ? port : freePort();
+    const QString portText = QString::number(m_namingPort);
     auto process = std::make_unique<QProcess>();
-    dieWithParent(*process);
+    prepareChild(*process, m_host.enterChild);
     process->setProcessChannelMode(QProcess::MergedChannels);
-    process->start(program,
-                   {QStringLiteral("-start"), port, QStringLiteral("-datadir"), m_dataDir->path(),
-                    QStringLiteral("-logdir"), m_dataDir->path(), QStringLiteral("-ORBendPoint"),
-                    QStringLiteral("giop:tcp:127.0.0.1:%1").arg(port)});
+    process->start(program, {QStringLiteral("-start"), portText, QStringLiteral("-datadir"),
+                             m_dataDir->path(), QStringLiteral("-logdir"), m_dataDir->path(),
+                             QStringLiteral("-ORBendPoint"),
+                             QStringLiteral("giop:tcp:%1:%2").arg(m_host.address, portText)});
     if (!process->waitForStarted(10000)) {
         *error = QStringLiteral("omniNames did not start: %1").arg(process->errorString());
         return false;
@@ -127,10 +144,10 @@ bool LiveSystem::startNameServer(QString *error)
     m_processes.push_back(std::move(process));
     // Readiness is "accepts connections"; between attempts wait on the server's own output.
     const QDeadlineTimer deadline(20000);
-    while (!isListening(m_namingPort)) {
+    while (!isListening(m_host.address, m_namingPort)) {
         if (deadline.hasExpired() || m_nameServer->state() != QProcess::Running) {
             *error = QStringLiteral("omniNames is not listening on %1: %2")
-                         .arg(port, QString::fromLocal8Bit(m_nameServer->readAll()));
+                         .arg(namingServer(), QString::fromLocal8Bit(m_nameServer->readAll()));
             return false;
         }
         m_nameServer->waitForReadyRead(20);
@@ -158,7 +175,7 @@ QProcess *LiveSystem::startManager(const QString &program, quint16 port, const Q
                                    QString *error)
 {
     QStringList arguments {QStringLiteral("-d"), QStringLiteral("-o"),
-                           QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port)};
+                           QStringLiteral("corba.endpoints=%1:%2").arg(m_host.address).arg(port)};
     for (const QString &option : options)
         arguments << QStringLiteral("-o") << option;
     return startProcess(program, arguments, QStringLiteral("rtmanager ready"), error);
@@ -179,7 +196,7 @@ QProcess *LiveSystem::startProcess(const QString &program, const QStringList &ar
                                    const QString &readyText, QString *error, int timeoutMs)
 {
     auto process = std::make_unique<QProcess>();
-    dieWithParent(*process);
+    prepareChild(*process, m_host.enterChild);
     process->setProcessChannelMode(QProcess::ForwardedErrorChannel);
     process->start(program, arguments);
     QProcess *raw = process.get();

@@ -6,6 +6,7 @@
 #include <QStringList>
 #include <QTemporaryDir>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -15,28 +16,45 @@ namespace LiveTest {
 quint16 freePort();
 /// True when something accepts TCP connections on 127.0.0.1:`port`.
 bool isListening(quint16 port);
+/// True when something accepts TCP connections on `address`:`port` (an IPv4 address).
+bool isListening(const QString &address, quint16 port);
 /// SIGSTOP takes effect asynchronously: waits (bounded) until every thread of `pid` is stopped.
 bool waitUntilStopped(qint64 pid, int timeoutMs = 5000);
 /// `corbaloc:iiop:127.0.0.1:PORT/manager`: the object key of an rtmanager serving on `port`.
 QByteArray managerLocation(quint16 port);
 
+/// Where a LiveSystem runs its servers.
+struct LiveHost
+{
+    /// The IPv4 address the servers listen on; this process must reach it.
+    QString address = QStringLiteral("127.0.0.1");
+    /**
+     * Runs in each child process between fork and exec (e.g. to enter another network
+     * namespace): async-signal-safe calls only, `_exit()` on failure. None by default.
+     */
+    std::function<void()> enterChild;
+};
+
 /**
  * Real peer processes for live tests: omniNames, the test peer (rtstudio_livepeer) or any other
- * server, each on free loopback ports with its own temporary data folder. Everything started is
- * killed and reaped in the destructor, also when a test fails halfway.
+ * server, each on free loopback ports (or on the ports and the address of a LiveHost) with its
+ * own temporary data folder. Everything started is killed and reaped in the destructor, also
+ * when a test fails halfway.
  */
 class LiveSystem
 {
 public:
-    LiveSystem();
+    explicit LiveSystem(LiveHost host = {});
     ~LiveSystem();
     LiveSystem(const LiveSystem &) = delete;
     LiveSystem &operator=(const LiveSystem &) = delete;
 
-    /// Starts omniNames on a free port and waits until it accepts connections.
-    bool startNameServer(QString *error);
+    /// The address the servers listen on.
+    QString address() const { return m_host.address; }
+    /// Starts omniNames on `port` (0: a free loopback port) and waits until it accepts connections.
+    bool startNameServer(QString *error, quint16 port = 0);
     quint16 namingPort() const { return m_namingPort; }
-    /// `127.0.0.1:PORT` of the name server, as an rtshell path element.
+    /// `ADDRESS:PORT` of the name server, as an rtshell path element.
     QString namingServer() const;
 
     /**
@@ -51,8 +69,9 @@ public:
     QProcess *startProcess(const QString &program, const QStringList &arguments,
                            const QString &readyText, QString *error, int timeoutMs = 20000);
     /**
-     * Starts the rtmanager `program` as a master (`-d`) serving on 127.0.0.1:`port`, each of
-     * `options` passed as `-o KEY=VALUE` after the endpoint, and waits for "rtmanager ready".
+     * Starts the rtmanager `program` as a master (`-d`) serving on this system's address and
+     * `port`, each of `options` passed as `-o KEY=VALUE` after the endpoint, and waits for
+     * "rtmanager ready".
      */
     QProcess *startManager(const QString &program, quint16 port, const QStringList &options,
                            QString *error);
@@ -68,6 +87,7 @@ public:
     void stopAll();
 
 private:
+    LiveHost m_host;
     std::vector<std::unique_ptr<QProcess>> m_processes;
     std::unique_ptr<QTemporaryDir> m_dataDir;
     quint16 m_namingPort = 0;
