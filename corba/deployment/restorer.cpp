@@ -334,13 +334,19 @@ DeployReport restoreSystem(const Profile::RtsProfile &profile, const RestorePlan
 DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &control)
 {
     StepRecorder steps(control);
-    struct Job
+    // One job per source component: its ports are read once for all of its connectors.
+    struct Disconnect
     {
         int step;
         const ConnectorPlan *connector;
+    };
+    struct Job
+    {
         const ComponentMapping *source;
+        std::vector<Disconnect> connectors;
     };
     std::vector<Job> jobs;
+    QHash<QString, std::size_t> jobOf;
     for (const ConnectorPlan &c : plan.connectors) {
         const ComponentMapping *source = plan.component(c.sourceInstance);
         if (!source || source->kind != MappingKind::Existing) {
@@ -348,27 +354,48 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
                       QStringLiteral("%1 is not there").arg(c.sourceInstance), false);
             continue;
         }
-        jobs.push_back({steps.begin(QStringLiteral("disconnect"), c.connectorId, c.required), &c, source});
+        const auto known = jobOf.constFind(c.sourceInstance);
+        const std::size_t index = known != jobOf.constEnd() ? *known : jobs.size();
+        if (index == jobs.size()) {
+            jobs.push_back({source, {}});
+            jobOf.insert(c.sourceInstance, index);
+        }
+        jobs[index].connectors.push_back({steps.begin(QStringLiteral("disconnect"), c.connectorId, c.required), &c});
     }
-    // Connectors are independent of each other: several are taken apart at once.
+    // Components are independent of each other: several are taken apart at once.
     Corba::forEachConcurrently(jobs.size(), [&steps, &jobs](std::size_t i) {
         const Job &job = jobs[i];
-        const ConnectorPlan &c = *job.connector;
-        if (steps.checkCancelled()) {
-            steps.finish(job.step, StepStatus::Skipped, QStringLiteral("cancelled"));
-            return;
-        }
+        std::vector<Corba::PortInfo> ports;
+        QString unreachable;
         try {
-            const ComponentProxy proxy(job.source->ior, job.source->path);
-            const Corba::PortInfo port = proxy.port(shortPortName(c.sourcePort, c.sourceInstance));
-            if (!findConnector(port, c.connectorId)) {
-                steps.finish(job.step, StepStatus::Skipped, QStringLiteral("not connected"));
-                return;
-            }
-            Corba::PortConnection::disconnect(port, c.connectorId, proxy.path());
-            steps.finish(job.step, StepStatus::Done);
+            ports = ComponentProxy(job.source->ior, job.source->path).ports();
         } catch (const Error &e) {
-            steps.fail(job.step, e.message());
+            unreachable = e.message();
+        }
+        for (const Disconnect &d : job.connectors) {
+            const ConnectorPlan &c = *d.connector;
+            if (steps.checkCancelled()) {
+                steps.finish(d.step, StepStatus::Skipped, QStringLiteral("cancelled"));
+                continue;
+            }
+            if (!unreachable.isEmpty()) {
+                steps.fail(d.step, unreachable);
+                continue;
+            }
+            try {
+                const Corba::PortInfo *port = findPort(ports, c.sourcePort, c.sourceInstance);
+                if (!port)
+                    throw Error(Error::Kind::NotFound, QStringLiteral("%1: no port named '%2'")
+                                                           .arg(job.source->path, shortPortName(c.sourcePort, c.sourceInstance)));
+                if (!findConnector(*port, c.connectorId)) {
+                    steps.finish(d.step, StepStatus::Skipped, QStringLiteral("not connected"));
+                    continue;
+                }
+                Corba::PortConnection::disconnect(*port, c.connectorId, job.source->path);
+                steps.finish(d.step, StepStatus::Done);
+            } catch (const Error &e) {
+                steps.fail(d.step, e.message());
+            }
         }
     });
     return steps.report();
