@@ -145,7 +145,7 @@ NamingNode objectNode(CORBA::Object_ptr object, const QString &name, const QStri
     node.path = path;
     node.type = typeByName(kindOf(name));
     node.ior = toIor(object);
-    if (check == NamingBrowser::Check::Objects)
+    if (check != NamingBrowser::Check::NamesOnly)
         classify(object, &node);
     return node;
 }
@@ -202,7 +202,7 @@ std::vector<NamingNode> listContext(CosNaming::NamingContext_ptr context, const 
             nodes[i] = {name, NodeType::Zombie, childPath, {}, e.message(), {}};
         }
     });
-    if (check == NamingBrowser::Check::Objects) {
+    if (check != NamingBrowser::Check::NamesOnly) {
         forEachConcurrently(bound.size(), [&](std::size_t k) {
             const std::size_t i = bound[k];
             if (!CORBA::is_nil(objects[i]))

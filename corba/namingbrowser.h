@@ -48,6 +48,7 @@ public:
     /// How much a listing asks the objects it finds.
     enum class Check {
         Objects, ///< each bound object is asked what it is; managers are asked for their components
+        NamedObjects, ///< each bound object is asked what it is; managers are not listed
         NamesOnly ///< only name servers are asked: types come from the names' kinds (`rtc`, `mgr`)
     };
 

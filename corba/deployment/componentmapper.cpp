@@ -4,10 +4,13 @@
 #include "componentproxy.h"
 #include "concurrent.h"
 #include "corbaerror.h"
+#include "managerproxy.h"
 #include "namingbrowser.h"
 #include "rtsprofile.h"
 
+#include <QMutex>
 #include <QProcessEnvironment>
+#include <QSet>
 
 namespace Deploy {
 
@@ -36,6 +39,50 @@ void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::L
     }
     for (const NamingNode &child : node.children)
         collectComponents(child, found);
+}
+
+void collectManagers(const NamingNode &node, std::vector<NamingNode> &managers)
+{
+    if (node.type == NodeType::Manager && node.answering) {
+        managers.push_back(node);
+        return;
+    }
+    for (const NamingNode &child : node.children)
+        collectManagers(child, managers);
+}
+
+/**
+ * Components that managers host but no name leads to: each manager's component references are
+ * compared with those found by name, and only unknown ones are asked for their instance names.
+ */
+void addUnnamedComponents(const std::vector<NamingNode> &managers,
+                          QHash<QString, ComponentMapper::LiveEntry> &found)
+{
+    QSet<QString> known;
+    for (const ComponentMapper::LiveEntry &entry : std::as_const(found))
+        known.insert(entry.ior);
+    QMutex mutex;
+    Corba::forEachConcurrently(managers.size(), [&](std::size_t m) {
+        const NamingNode &manager = managers[m];
+        QStringList unnamed;
+        try {
+            for (const QString &ior : Corba::ManagerProxy(manager.ior, manager.path).components()) {
+                if (!known.contains(ior))
+                    unnamed.append(ior);
+            }
+        } catch (const Error &) {
+            return; // a manager that does not answer lists nothing, as in the tree
+        }
+        for (const QString &ior : std::as_const(unnamed)) {
+            try {
+                const QString instance = Corba::ComponentProxy(ior, manager.path).profile().instanceName;
+                QMutexLocker lock(&mutex);
+                if (!found.contains(instance))
+                    found.insert(instance, {manager.path + QLatin1Char('/') + instance + QStringLiteral(".rtc"), ior});
+            } catch (const Error &) {
+            }
+        }
+    });
 }
 
 QString firstRate(const Profile::RtsComponent &component)
@@ -151,18 +198,26 @@ QHash<QString, ComponentMapper::LiveEntry> ComponentMapper::liveComponents(const
                                                                            NamingBrowser::Check check)
 {
     QHash<QString, LiveEntry> found;
+    std::vector<NamingNode> managers;
     for (const QString &text : paths) {
         try {
             QString error;
             const auto path = RtPath::parse(text, QStringLiteral("/"), &error);
             if (!path)
                 throw Error(Error::Kind::BadPath, QStringLiteral("%1: %2").arg(text, error));
-            collectComponents(NamingBrowser::tree(*path, searchDepth, {}, check), found);
+            // Managers are listed below, asked only about components no name leads to.
+            const NamingNode tree = NamingBrowser::tree(
+                *path, searchDepth, {},
+                check == NamingBrowser::Check::Objects ? NamingBrowser::Check::NamedObjects : check);
+            collectComponents(tree, found);
+            if (check == NamingBrowser::Check::Objects)
+                collectManagers(tree, managers);
         } catch (const Error &e) {
             if (problems)
                 problems->append(e.message());
         }
     }
+    addUnnamedComponents(managers, found);
     return found;
 }
 
