@@ -2,12 +2,14 @@
 #include "sequencerunner.h"
 
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "corbaerror.h"
 #include "rtsprofile.h"
 #include "steprecorder.h"
 
 #include <QDeadlineTimer>
 #include <QHash>
+#include <QMutex>
 #include <QSet>
 
 #include <algorithm>
@@ -70,11 +72,21 @@ public:
 
     void run(RtsSequenceKind kind)
     {
-        for (const Target &target : targets(kind)) {
+        const QList<Target> all = targets(kind);
+        // Targets of the file's sequence go one after the other, in its order (they may wait for
+        // each other) ...
+        qsizetype ordered = 0;
+        for (; ordered < all.size() && all.at(ordered).condition; ++ordered) {
             if (!m_steps.ok() || m_steps.checkCancelled())
                 return;
-            runTarget(target);
+            runTarget(all.at(ordered));
         }
+        // ... the others have no order among them: several at once.
+        Corba::forEachConcurrently(std::size_t(all.size() - ordered), [&](std::size_t i) {
+            if (!m_steps.ok() || m_steps.checkCancelled())
+                return;
+            runTarget(all.at(ordered + qsizetype(i)));
+        });
     }
 
 private:
@@ -133,13 +145,22 @@ private:
     int ecIndex(const ComponentProxy &proxy, const QString &ecId)
     {
         const QString key = proxy.ior();
-        auto cached = m_contexts.constFind(key);
-        if (cached == m_contexts.constEnd())
-            cached = m_contexts.insert(key, proxy.executionContexts());
+        std::vector<Corba::ExecutionContextInfo> contexts;
+        {
+            QMutexLocker lock(&m_contextsMutex);
+            const auto cached = m_contexts.constFind(key);
+            if (cached != m_contexts.constEnd())
+                contexts = *cached;
+        }
+        if (contexts.empty()) {
+            contexts = proxy.executionContexts();
+            QMutexLocker lock(&m_contextsMutex);
+            m_contexts.insert(key, contexts);
+        }
         bool numeric = false;
         const int handle = ecId.toInt(&numeric);
-        for (size_t i = 0; numeric && i < cached->size(); ++i) {
-            if (cached->at(i).handle == handle)
+        for (size_t i = 0; numeric && i < contexts.size(); ++i) {
+            if (contexts.at(i).handle == handle)
                 return int(i);
         }
         return 0;
@@ -290,6 +311,7 @@ private:
     const RestorePlan &m_plan;
     SequenceAction m_action;
     StepRecorder &m_steps;
+    QMutex m_contextsMutex;
     QHash<QString, std::vector<Corba::ExecutionContextInfo>> m_contexts;
 };
 
