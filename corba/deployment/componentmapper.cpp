@@ -179,13 +179,33 @@ void ComponentMapper::indexServers(const Profile::RtsProfile &profile)
     m_serverPaths.clear();
     for (const QString &server : servers)
         m_serverPaths.append(QLatin1Char('/') + server);
-    // Names only: asking every component and manager is for those no name leads to.
-    m_byInstance = liveComponents(m_serverPaths, &m_problems, NamingBrowser::Check::NamesOnly);
+    // Whether each server answers is known now; what they hold is walked only for components
+    // their saved paths do not lead to.
+    for (const QString &text : std::as_const(m_serverPaths)) {
+        try {
+            const auto path = RtPath::parse(text);
+            if (!path)
+                throw Error(Error::Kind::BadPath, text);
+            NamingBrowser::tree(*path, 0, {}, NamingBrowser::Check::NamesOnly);
+        } catch (const Error &e) {
+            m_problems.append(e.message());
+        }
+    }
+}
+
+const QHash<QString, ComponentMapper::LiveEntry> &ComponentMapper::namedIndex()
+{
+    QMutexLocker lock(&m_indexMutex);
+    if (!m_named) {
+        m_byInstance = liveComponents(m_serverPaths, nullptr, NamingBrowser::Check::NamesOnly);
+        m_named = true;
+    }
+    return m_byInstance;
 }
 
 const QHash<QString, ComponentMapper::LiveEntry> &ComponentMapper::fullIndex()
 {
-    QMutexLocker lock(&m_fullIndexMutex);
+    QMutexLocker lock(&m_indexMutex);
     if (!m_fullIndexed) {
         m_fullIndex = liveComponents(m_serverPaths, nullptr);
         m_fullIndexed = true;
@@ -260,12 +280,13 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
             mapping.message = e.message();
         }
     }
-    const auto live = m_byInstance.constFind(component.instanceName);
-    if (live != m_byInstance.constEnd() && checkLive(mapping, *live))
+    const QHash<QString, LiveEntry> &named = namedIndex();
+    const auto live = named.constFind(component.instanceName);
+    if (live != named.constEnd() && checkLive(mapping, *live))
         return mapping;
     const QHash<QString, LiveEntry> &known = fullIndex();
     const auto listed = known.constFind(component.instanceName);
-    if (listed != known.constEnd() && (live == m_byInstance.constEnd() || listed->path != live->path)
+    if (listed != known.constEnd() && (live == named.constEnd() || listed->path != live->path)
         && checkLive(mapping, *listed))
         return mapping;
     if (mapping.message.isEmpty())
@@ -289,6 +310,7 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
 QList<ComponentMapping> ComponentMapper::map(const Profile::RtsProfile &profile)
 {
     m_byInstance.clear();
+    m_named = false;
     m_fullIndex.clear();
     m_fullIndexed = false;
     m_problems.clear();

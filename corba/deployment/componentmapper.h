@@ -106,6 +106,8 @@ public:
 
 private:
     void indexServers(const Profile::RtsProfile &profile);
+    /// The components bound by name on the servers (walked on first need).
+    const QHash<QString, LiveEntry> &namedIndex();
     /// The components the managers know beside those bound by name (walked on first need).
     const QHash<QString, LiveEntry> &fullIndex();
     ComponentMapping mapOne(const Profile::RtsComponent &component);
@@ -113,10 +115,11 @@ private:
 
     TargetOptions m_options;
     QStringList m_serverPaths;
+    QMutex m_indexMutex;
     QHash<QString, LiveEntry> m_byInstance; ///< bound by name
+    bool m_named = false;
     QHash<QString, LiveEntry> m_fullIndex;
     bool m_fullIndexed = false;
-    QMutex m_fullIndexMutex;
     QStringList m_problems;
 };
 
