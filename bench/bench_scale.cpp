@@ -180,8 +180,12 @@ qint64 residentKiB(qint64 pid)
                 total += line.mid(6).trimmed().split(' ').value(0).toLongLong();
         }
     }
-    QFile children(QStringLiteral("/proc/%1/task/%1/children").arg(pid));
-    if (children.open(QIODevice::ReadOnly)) {
+    // Children are listed per thread that started them (slaves are started from ORB threads).
+    const QDir tasks(QStringLiteral("/proc/%1/task").arg(pid));
+    for (const QString &task : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile children(tasks.filePath(task + QStringLiteral("/children")));
+        if (!children.open(QIODevice::ReadOnly))
+            continue;
         for (const QByteArray &child : children.readAll().simplified().split(' ')) {
             if (!child.isEmpty())
                 total += residentKiB(child.toLongLong());
