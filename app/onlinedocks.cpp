@@ -295,6 +295,8 @@ void OnlineDocks::runLocally(const Profile::RtsProfile &profile,
                         done(result.error);
                     return;
                 }
+                // The name server now holds the system's components: show them in the tree.
+                m_nameService->refresh();
                 OnlineDocument *online = openOnline(profile);
                 watchFirstConnection(online, profile);
                 emit statusMessage(tr("%1 runs on the local runtime.").arg(systemName(profile)));

@@ -52,6 +52,7 @@ OpeningProgress::OpeningProgress(DocumentController *controller, QWidget *parent
     bar->setRange(0, 0);
     bar->setMaximumWidth(120);
     m_cancel->setObjectName(QStringLiteral("cancelOpening"));
+    m_cancel->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     m_cancel->setToolTip(tr("Stop opening this file; open documents stay as they are"));
     layout->addWidget(m_label);
     layout->addWidget(bar);

@@ -8,6 +8,8 @@
 #include "documentcontroller.h"
 #include "localruntime.h"
 #include "mainwindow.h"
+#include "nameservicemodel.h"
+#include "nameserviceview.h"
 #include "onlinediagram.h"
 #include "onlinedocks.h"
 #include "onlinedocument.h"
@@ -17,6 +19,7 @@
 #include <QAction>
 #include <QLabel>
 #include <QSettings>
+#include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -97,6 +100,11 @@ void TestRunLocally::runsTheExampleAndStopsOnQuit()
     QTRY_COMPARE_WITH_TIMEOUT(monitor->watched().size(), 1, 20000);
     QVERIFY2(monitor->watched().first().endsWith("ConsoleIn0.rtc:out"), qPrintable(monitor->watched().first()));
     QTRY_VERIFY_WITH_TIMEOUT(monitor->samples(monitor->watched().first()).size() > 10, 20000);
+    // The Name Service view shows the components the system put into the name server.
+    const SystemEditor::NameServiceModel *names = window->onlineDocks()->nameService()->model();
+    const QString component = QStringLiteral("/%1/%2.host_cxt/ConsoleIn0.rtc")
+                                  .arg(runtime.nameServerAddress(), QSysInfo::machineHostName());
+    QTRY_VERIFY2_WITH_TIMEOUT(names->indexOfPath(component).isValid(), qPrintable(component), 20000);
 
     // Quitting stops what this window started.
     window->close();
