@@ -2,6 +2,7 @@
 // bench_deploy: restore + start of 100 components / 150 connectors on two managers (a master and
 // a slave it starts through manager_address), against real omniNames and rtmanager processes.
 // Prints one table row per phase; timing never fails the build.
+#include "benchlivesystem.h"
 #include "cryo.h"
 #include "livesystem.h"
 #include "managerproxy.h"
@@ -23,53 +24,14 @@ namespace {
 constexpr int pairs = 50; // 50 sources + 50 sinks = 100 components
 constexpr int fanOut = 3; // 3 connectors per source = 150 connectors
 
-Profile::RtsComponent component(const QString &server, const QString &type, const QString &instance,
-                                const QString &host, const QString &port)
-{
-    Profile::RtsComponent c;
-    c.id = QStringLiteral("RTC:AIST:example:%1:2.0.0").arg(type);
-    c.instanceName = instance;
-    c.pathUri = QStringLiteral("%1/%2.host_cxt/%3.rtc").arg(server, host, instance);
-    Profile::RtsPort p;
-    p.name = instance + QLatin1Char('.') + port;
-    c.dataPorts.append(p);
-    Profile::RtsExecutionContext ec;
-    ec.id = QStringLiteral("0");
-    ec.kind = QStringLiteral("PeriodicExecutionContext");
-    ec.rate = QStringLiteral("100");
-    c.executionContexts.append(ec);
-    return c;
-}
-
 // Sources on the master's host, sinks on the slave's.
 Profile::RtsProfile benchSystem(const QString &server)
 {
-    Profile::RtsProfile profile = Profile::RtsProfile::createNew("Bench", "Deploy", "1.0");
-    for (int i = 0; i < pairs; ++i) {
-        profile.components.append(
-            component(server, "ConsoleIn", QStringLiteral("Src%1").arg(i), "hostA", "out"));
-        profile.components.append(
-            component(server, "ConsoleOut", QStringLiteral("Snk%1").arg(i), "hostB", "in"));
-    }
-    for (int i = 0; i < pairs; ++i) {
-        for (int k = 0; k < fanOut; ++k) {
-            Profile::RtsDataPortConnector c;
-            const QString source = QStringLiteral("Src%1").arg(i);
-            const QString sink = QStringLiteral("Snk%1").arg((i + k) % pairs);
-            c.connectorId = QStringLiteral("bench-%1-%2").arg(i).arg(k);
-            c.name = source + QLatin1Char('_') + sink;
-            c.dataType = QStringLiteral("IDL:RTC/TimedLong:1.0");
-            c.interfaceType = QStringLiteral("corba_cdr");
-            c.dataflowType = QStringLiteral("push");
-            c.subscriptionType = QStringLiteral("flush");
-            c.source.instanceName = source;
-            c.source.portName = source + QStringLiteral(".out");
-            c.target.instanceName = sink;
-            c.target.portName = sink + QStringLiteral(".in");
-            profile.dataPortConnectors.append(c);
-        }
-    }
-    return profile;
+    return Bench::liveSystem(QStringLiteral("Deploy"), pairs, fanOut,
+                             [&server](int k) {
+                                 return Bench::Placement {server, k % 2 ? QStringLiteral("hostB") : QStringLiteral("hostA")};
+                             },
+                             QStringLiteral("100"), QStringLiteral("flush"));
 }
 
 } // namespace

@@ -12,6 +12,7 @@
 //    bench_scale [--components N] [--managers M]
 //
 // Prints a table per part and ends with one summary line. Timing never fails the build.
+#include "benchlivesystem.h"
 #include "cryo.h"
 #include "drift.h"
 #include "livesystem.h"
@@ -117,56 +118,15 @@ qint64 rtctlStartMs()
 
 // --- 2. the large system ---
 
-Profile::RtsComponent component(const QString &server, const QString &type, const QString &instance,
-                                const QString &host, const QString &port)
-{
-    Profile::RtsComponent c;
-    c.id = QStringLiteral("RTC:AIST:example:%1:2.0.0").arg(type);
-    c.instanceName = instance;
-    c.pathUri = QStringLiteral("%1/%2.host_cxt/%3.rtc").arg(server, host, instance);
-    Profile::RtsPort p;
-    p.name = instance + QLatin1Char('.') + port;
-    c.dataPorts.append(p);
-    Profile::RtsExecutionContext ec;
-    ec.id = QStringLiteral("0");
-    ec.kind = QStringLiteral("PeriodicExecutionContext");
-    ec.rate = QStringLiteral("10");
-    c.executionContexts.append(ec);
-    return c;
-}
-
 /// Sources and sinks spread round-robin over the hosts; hosts alternate between the servers.
 Profile::RtsProfile largeSystem(const Options &options, const QStringList &servers)
 {
-    Profile::RtsProfile profile = Profile::RtsProfile::createNew("Bench", "Scale", "1.0");
-    const int pairs = options.components / 2;
-    for (int i = 0; i < pairs; ++i) {
-        const int sourceHost = (2 * i) % options.managers;
-        const int sinkHost = (2 * i + 1) % options.managers;
-        profile.components.append(component(servers.at(sourceHost % servers.size()), "ConsoleIn",
-                                            QStringLiteral("Src%1").arg(i), hostName(sourceHost), "out"));
-        profile.components.append(component(servers.at(sinkHost % servers.size()), "ConsoleOut",
-                                            QStringLiteral("Snk%1").arg(i), hostName(sinkHost), "in"));
-    }
-    for (int i = 0; i < pairs; ++i) {
-        for (int k = 0; k < FanOut; ++k) {
-            const QString source = QStringLiteral("Src%1").arg(i);
-            const QString sink = QStringLiteral("Snk%1").arg((i + k) % pairs);
-            Profile::RtsDataPortConnector c;
-            c.connectorId = QStringLiteral("scale-%1-%2").arg(i).arg(k);
-            c.name = source + QLatin1Char('_') + sink;
-            c.dataType = QStringLiteral("IDL:RTC/TimedLong:1.0");
-            c.interfaceType = QStringLiteral("corba_cdr");
-            c.dataflowType = QStringLiteral("push");
-            c.subscriptionType = QStringLiteral("new");
-            c.source.instanceName = source;
-            c.source.portName = source + QStringLiteral(".out");
-            c.target.instanceName = sink;
-            c.target.portName = sink + QStringLiteral(".in");
-            profile.dataPortConnectors.append(c);
-        }
-    }
-    return profile;
+    return Bench::liveSystem(QStringLiteral("Scale"), options.components / 2, FanOut,
+                             [&](int k) {
+                                 const int host = k % options.managers;
+                                 return Bench::Placement {servers.at(host % servers.size()), hostName(host)};
+                             },
+                             QStringLiteral("10"), QStringLiteral("new"));
 }
 
 /// Resident memory in KiB of `pid` and every process below it.
