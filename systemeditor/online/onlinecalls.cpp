@@ -2,9 +2,9 @@
 #include "onlinecalls.h"
 
 #include "componentproxy.h"
-#include "concurrent.h"
 #include "corbaerror.h"
 #include "managerproxy.h"
+#include "statepoller.h"
 
 namespace SystemEditor::OnlineCalls {
 
@@ -77,21 +77,17 @@ ServerSnapshot fetchServer(const QString &server, Corba::NamingBrowser::Check ch
 
 QHash<QString, LifeCycleState> fetchStates(const QHash<QString, QString> &iorsByPath)
 {
-    // A component bound under several names is asked once, by its reference; all at once, so
-    // that components that hang cost one call timeout together.
+    // A component bound under several names is asked once, by its reference.
     QHash<QString, QStringList> pathsByIor;
     for (auto it = iorsByPath.begin(); it != iorsByPath.end(); ++it)
         pathsByIor[it.value()].append(it.key());
     const QStringList iors = pathsByIor.keys();
-    std::vector<LifeCycleState> found(size_t(iors.size()), LifeCycleState::Unknown);
-    Corba::forEachConcurrently(found.size(), [&](std::size_t i) {
-        const QString &ior = iors.at(int(i));
-        try {
-            found[i] = Corba::ComponentProxy(ior, pathsByIor.value(ior).first()).state();
-        } catch (const Corba::Error &) {
-            // Unknown: one silent component must not hide the others.
-        }
-    });
+    QStringList firstPaths;
+    for (const QString &ior : iors)
+        firstPaths.append(pathsByIor.value(ior).first());
+    // One for the process: the online views poll the same components round after round.
+    static Corba::StatePoller poller;
+    const std::vector<LifeCycleState> found = poller.poll(iors, firstPaths);
     QHash<QString, LifeCycleState> states;
     for (int i = 0; i < iors.size(); ++i) {
         for (const QString &path : pathsByIor.value(iors.at(i)))
