@@ -3,6 +3,7 @@
 
 #include "componentitem.h"
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "connectionrules.h"
 #include "connectoritem.h"
 #include "corbaerror.h"
@@ -10,6 +11,7 @@
 #include "livesystembuilder.h"
 #include "namingbrowser.h"
 #include "nameservicemodel.h"
+#include "onlinecalls.h"
 #include "onlineicons.h"
 #include "onlinesession.h"
 #include "portitem.h"
@@ -18,6 +20,7 @@
 #include "systemscene.h"
 
 #include <algorithm>
+#include <vector>
 
 #include <QDragEnterEvent>
 #include <QGraphicsView>
@@ -234,37 +237,51 @@ void OnlineDiagram::poll()
 
 QHash<QString, LiveComponentPoll> OnlineDiagram::pollComponents(const QList<PollRequest> &requests)
 {
-    QHash<QString, LiveComponentPoll> results;
-    for (const PollRequest &request : requests) {
-        LiveComponentPoll &result = results[request.instance];
-        auto read = [&](const Corba::ComponentProxy &proxy, bool readPorts) {
-            result.state = proxy.state();
-            if (readPorts) {
-                result.ports = proxy.profile().ports;
-                result.portsRead = true;
-            }
-            result.answered = true;
-        };
+    // States of all at once (one call each, references kept between rounds), then the ports of
+    // those whose turn it is, several at once.
+    QHash<QString, QString> iorsByPath;
+    for (const PollRequest &request : requests)
+        iorsByPath.insert(request.proxy.path(), request.proxy.ior());
+    const QHash<QString, Corba::LifeCycleState> states = OnlineCalls::fetchStates(iorsByPath);
+    std::vector<LiveComponentPoll> polled(std::size_t(requests.size()));
+    Corba::forEachConcurrently(polled.size(), [&](std::size_t i) {
+        const PollRequest &request = requests.at(qsizetype(i));
+        LiveComponentPoll &result = polled[i];
+        result.state = states.value(request.proxy.path(), Corba::LifeCycleState::Unknown);
+        result.answered = result.state != Corba::LifeCycleState::Unknown;
         try {
-            read(request.proxy, request.readPorts);
-            continue;
+            if (result.answered) {
+                if (request.readPorts) {
+                    result.ports = request.proxy.profile().ports;
+                    result.portsRead = true;
+                }
+                return;
+            }
         } catch (const Corba::Error &) {
             // Not answering is shown by the colour and the unreachable list, not as an error.
+            result.answered = false;
         }
         // A component whose process was restarted answers under a new reference: ask the name
         // server for the one its name has now.
         try {
             const std::optional<Corba::RtPath> path = Corba::RtPath::parse(request.proxy.path());
             if (!path || path->isDirect() || path->names().isEmpty())
-                continue;
+                return;
             const QString ior = Corba::NamingBrowser::resolve(*path);
             if (ior.isEmpty() || ior == request.proxy.ior())
-                continue;
-            read(Corba::ComponentProxy(ior, request.proxy.path()), true);
+                return;
+            const Corba::ComponentProxy renewed(ior, request.proxy.path());
+            result.state = renewed.state();
+            result.ports = renewed.profile().ports;
+            result.portsRead = true;
+            result.answered = true;
             result.newIor = ior;
         } catch (const Corba::Error &) {
         }
-    }
+    });
+    QHash<QString, LiveComponentPoll> results;
+    for (qsizetype i = 0; i < requests.size(); ++i)
+        results.insert(requests.at(i).instance, polled[std::size_t(i)]);
     return results;
 }
 
