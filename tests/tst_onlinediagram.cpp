@@ -218,9 +218,14 @@ void TestOnlineDiagram::actionOnAllShowsProgressAndCancels()
     QCOMPARE(finished.at(0).at(0).toString(), QString("Activating: 2 of 2 component(s) done"));
     QTRY_COMPARE_WITH_TIMEOUT(component("ConsoleIn0").state(), LifeCycleState::Active, 10000);
 
-    // Cancelled at once: the calls not yet made are skipped, and the summary says so.
-    diagram.performAll(OnlineDiagram::Action::Deactivate);
-    QTest::mouseClick(cancel, Qt::LeftButton);
+    // Cancelled while the calls cannot be answered (their manager stopped): the calls not yet made
+    // are skipped, and the summary says so.
+    {
+        const LiveTest::StoppedProcess stopped(m_manager, 5000, 3000);
+        QVERIFY(stopped.isStopped());
+        diagram.performAll(OnlineDiagram::Action::Deactivate);
+        QTest::mouseClick(cancel, Qt::LeftButton);
+    }
     QVERIFY(finished.wait(10000));
     const QString summary = finished.at(1).at(0).toString();
     QVERIFY2(summary.startsWith("Deactivating: ") && summary.contains("cancelled"), qPrintable(summary));
