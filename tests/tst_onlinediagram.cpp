@@ -51,6 +51,7 @@ private slots:
     void activateTurnsTheComponentGreen();
     void actionOnAllShowsProgressAndCancels();
     void drawsLiveConnectors();
+    void portRefreshScalesWithSize();
     void keepsTheDiagramInViewUntilTheUserNavigates();
     void connectsLiveByDraggingThroughTheDialog();
     void stoppedManagerTurnsBlackWithoutStallingTheGui();
@@ -133,7 +134,7 @@ void TestOnlineDiagram::waitForPoll(OnlineDiagram &diagram)
 // before the change it should see), stopping early once `done` holds.
 void TestOnlineDiagram::pollUntil(OnlineDiagram &diagram, const std::function<bool()> &done)
 {
-    for (int round = 0; round <= OnlineDiagram::portRefreshRounds() && !done(); ++round)
+    for (int round = 0; round <= diagram.portRefreshRounds() && !done(); ++round)
         waitForPoll(diagram);
 }
 
@@ -258,13 +259,25 @@ void TestOnlineDiagram::drawsLiveConnectors()
     // Each of the two components read its ports in at most one round of portRefreshRounds()
     // (one more round may have started and not yet finished), never in every round.
     const int started = int(rounds.size()) + 1;
-    const int period = OnlineDiagram::portRefreshRounds();
+    const int period = diagram.portRefreshRounds();
+    QCOMPARE(period, 3);
     const int allowed = 2 * ((started + period - 1) / period);
     QVERIFY2(diagram.portReads() - reads <= allowed,
              qPrintable(QStringLiteral("%1 port reads in %2 rounds")
                             .arg(diagram.portReads() - reads)
                             .arg(started)));
     QVERIFY(diagram.portReads() > reads);
+}
+
+void TestOnlineDiagram::portRefreshScalesWithSize()
+{
+    // Up to 300 components every third round; beyond, about 100 components' ports a round.
+    QCOMPARE(OnlineDiagram::portRefreshRounds(1), 3);
+    QCOMPARE(OnlineDiagram::portRefreshRounds(300), 3);
+    QCOMPARE(OnlineDiagram::portRefreshRounds(301), 4);
+    QCOMPARE(OnlineDiagram::portRefreshRounds(1000), 10);
+    for (const int components : {301, 1000, 5000})
+        QVERIFY(components / OnlineDiagram::portRefreshRounds(components) <= 100);
 }
 
 void TestOnlineDiagram::keepsTheDiagramInViewUntilTheUserNavigates()

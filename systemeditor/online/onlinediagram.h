@@ -86,8 +86,13 @@ public:
     /// Starts one poll round now (skipped while the previous one is still running).
     void poll();
     /// A component's ports and connectors are read in one of this many poll rounds, so a
-    /// connector made elsewhere appears within this many rounds.
-    static constexpr int portRefreshRounds() { return 3; }
+    /// connector made elsewhere appears within this many rounds: 3, or more on a diagram of more
+    /// than 300 components, so that a round reads the ports of about 100 at most.
+    int portRefreshRounds() const { return portRefreshRounds(int(m_live.size())); }
+    static constexpr int portRefreshRounds(int components)
+    {
+        return components > 300 ? (components + 99) / 100 : 3;
+    }
     /// Remote reads of port profiles since the diagram was made (one per component and refresh).
     int portReads() const { return m_portReads; }
 
