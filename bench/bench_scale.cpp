@@ -18,6 +18,7 @@
 #include "livesystem.h"
 #include "orb.h"
 #include "restorer.h"
+#include "rtctlrunner.h"
 #include "rtsprofile.h"
 #include "sequencerunner.h"
 
@@ -74,45 +75,36 @@ QStringList masterArguments(quint16 port, const QStringList &servers)
 
 struct Creation
 {
-    int count = 0;
-    bool separate = false;
     qint64 elapsedMs = -1;
     QString error;
 };
 
 /// One `rtctl mgr MASTER create … create …` call creating `count` components.
-Creation createThroughRtctl(quint16 masterPort, int count, bool separate, const QString &prefix)
+Creation createThroughRtctl(quint16 masterPort, int count, bool separate)
 {
-    Creation result;
-    result.count = count;
-    result.separate = separate;
     QStringList arguments {QStringLiteral("mgr"), QStringLiteral("corbaloc::127.0.0.1:%1").arg(masterPort)};
     for (int i = 0; i < count; ++i) {
-        QString request = QStringLiteral("ConsoleIn?instance_name=%1%2").arg(prefix).arg(i);
+        QString request = QStringLiteral("ConsoleIn?instance_name=C%1").arg(i);
         if (separate)
             request += QStringLiteral("&manager_name=manager_%p");
         arguments << QStringLiteral("create") << request;
     }
-    QProcess rtctl;
-    rtctl.setProcessChannelMode(QProcess::MergedChannels);
+    Creation result;
     QElapsedTimer timer;
     timer.start();
-    rtctl.start(QStringLiteral(RTCTL_PATH), arguments);
-    const bool finished = rtctl.waitForFinished(600000);
+    const RtctlResult rtctl = runRtctl(arguments);
     result.elapsedMs = timer.elapsed();
-    if (!finished || rtctl.exitCode() != 0)
-        result.error = QString::fromLocal8Bit(rtctl.readAll()).trimmed().section(QLatin1Char('\n'), -1);
+    if (rtctl.code != 0)
+        result.error = rtctl.err.trimmed().section(QLatin1Char('\n'), -1);
     return result;
 }
 
 /// The time rtctl itself needs to start and end (a `--version` call), to read the figures by.
 qint64 rtctlStartMs()
 {
-    QProcess rtctl;
     QElapsedTimer timer;
     timer.start();
-    rtctl.start(QStringLiteral(RTCTL_PATH), {QStringLiteral("--version")});
-    rtctl.waitForFinished(30000);
+    runRtctl({QStringLiteral("--version")});
     return timer.elapsed();
 }
 
@@ -190,7 +182,7 @@ int main(int argc, char **argv)
                 out << "bench_scale: " << error << '\n';
                 return 1;
             }
-            const Creation c = createThroughRtctl(creationPort, count, separate, QStringLiteral("C"));
+            const Creation c = createThroughRtctl(creationPort, count, separate);
             const double per = c.error.isEmpty() ? double(c.elapsedMs) / count : -1;
             const double goal = separate ? 2.5 : 0.5;
             out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 |\n")

@@ -110,6 +110,7 @@ private slots:
     void shutdownWithoutComponents_data();
     void shutdownWithoutComponents();
     void masterKnownByAnyReference();
+    void idleContextsDoNotTick();
     void forwardsToARestartedManagerOnAnotherHost();
     void sameHostPeersUseUnixSocket_data();
     void sameHostPeersUseUnixSocket();
@@ -657,6 +658,59 @@ void TestManagerLive::forwardsToARestartedManagerOnAnotherHost()
     QVERIFY2(lastError(m_master).startsWith("create_component: manager at " + address
                                             + " unreachable: "),
              qPrintable(lastError(m_master)));
+}
+
+namespace {
+
+/// Context switches of every thread of @p pid so far: each wake-up of a periodic context counts.
+qint64 contextSwitches(qint64 pid)
+{
+    qint64 total = 0;
+    const QDir tasks(QStringLiteral("/proc/%1/task").arg(pid));
+    for (const QString &task : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile status(tasks.filePath(task + QStringLiteral("/status")));
+        if (!status.open(QIODevice::ReadOnly))
+            continue;
+        for (const QByteArray &line : status.readAll().split('\n')) {
+            if (line.startsWith("voluntary_ctxt_switches:") || line.startsWith("nonvoluntary_ctxt_switches:"))
+                total += line.mid(line.indexOf(':') + 1).trimmed().toLongLong();
+        }
+    }
+    return total;
+}
+
+} // namespace
+
+void TestManagerLive::idleContextsDoNotTick()
+{
+    // Twenty components at 1 kHz, none active: their contexts would wake 20,000 times a second.
+    QStringList types;
+    for (int i = 0; i < 20; ++i)
+        types << QStringLiteral("ConsoleIn?instance_name=idle%1").arg(i);
+    QString error;
+    QProcess *process = nullptr;
+    RTM::Manager_var manager = startMaster(&error, &process,
+                                           {"-o", "exec_cxt.periodic.rate=1000", "-o",
+                                            "manager.components.precreate=" + types.join(','), "-o",
+                                            "manager.instance_name=idle"});
+    QVERIFY2(!CORBA::is_nil(manager), qPrintable(error));
+    RTC::RTCList_var components = manager->get_components();
+    QCOMPARE(components->length(), CORBA::ULong(20));
+    const qint64 pid = process->processId();
+    // A window of measurement, not a wait for a condition.
+    qint64 before = contextSwitches(pid);
+    QTest::qWait(500);
+    const qint64 idle = contextSwitches(pid) - before;
+    QVERIFY2(idle < 1000, qPrintable(QStringLiteral("%1 context switches in 0.5 s while idle").arg(idle)));
+
+    // One active component makes its context tick at its rate again.
+    RTC::ExecutionContextList_var contexts = components[0]->get_owned_contexts();
+    QCOMPARE(contexts[0]->activate_component(components[0]), RTC::RTC_OK);
+    before = contextSwitches(pid);
+    QTest::qWait(500);
+    const qint64 active = contextSwitches(pid) - before;
+    QVERIFY2(active > 200, qPrintable(QStringLiteral("%1 context switches in 0.5 s with one active").arg(active)));
+    m_live->stop(process);
 }
 
 void TestManagerLive::sameHostPeersUseUnixSocket_data()
