@@ -1,9 +1,10 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Runs every libFuzzer harness of tests/fuzz for SECONDS each, one after the other, and prints a
-# table of executions, coverage and findings.
+# Runs every libFuzzer harness of tests/fuzz for SECONDS each (or until each has run N inputs), one
+# after the other, and prints a table of executions, coverage and findings.
 #
 #   bench/fuzz.sh SECONDS [HARNESS...]
+#   bench/fuzz.sh --runs N [HARNESS...]
 #
 # Builds what it needs with the `fuzz` preset (clang, ASan + UBSan) in build-fuzz/. Each harness
 # starts from its seeds (tests' data and tests/data/fuzz/<harness>/, listed by CMake in
@@ -13,12 +14,19 @@
 # the log of each run is build-fuzz/fuzz/<harness>.log. Exits non-zero when anything was found.
 set -eu
 
+usage="usage: $0 SECONDS [HARNESS...] | $0 --runs N [HARNESS...]"
 if [ $# -lt 1 ]; then
-    echo "usage: $0 SECONDS [HARNESS...]" >&2
+    echo "$usage" >&2
     exit 2
 fi
-seconds=$1
-shift
+if [ "$1" = --runs ]; then
+    [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
+    limit="-runs=$2"
+    shift 2
+else
+    limit="-max_total_time=$1"
+    shift
+fi
 
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 build_dir="$source_dir/build-fuzz"
@@ -59,7 +67,7 @@ for harness in "$@"; do
         cp "$seed" "$corpus/$(sha1sum "$seed" | cut -c1-40)"
     done <"$harness_dir/$harness.seeds"
 
-    nice -n 10 "$harness_dir/$harness" -max_total_time="$seconds" -timeout=1 -rss_limit_mb=2048 -max_len=4096 \
+    nice -n 10 "$harness_dir/$harness" "$limit" -timeout=1 -rss_limit_mb=2048 -max_len=4096 \
         -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" >"$log" 2>&1 || true
 
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
@@ -69,8 +77,9 @@ for harness in "$@"; do
     crashes=$(find "$artifacts" -name 'crash-*' -o -name 'oom-*' | wc -l)
     leaks=$(find "$artifacts" -name 'leak-*' | wc -l)
     timeouts=$(find "$artifacts" -name 'timeout-*' | wc -l)
-    printf '%-20s %12s %8s %8s %8s %8s %8s\n' "$harness" "$execs" "${coverage:-?}" \
-        "${features:-?}" "$crashes" "$timeouts" "$leaks" >>"$table"
+    seconds_taken=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -n 1)
+    printf '%-20s %12s %8s %8s %8s %8s %8s %8s\n' "$harness" "$execs" "${seconds_taken:-?}" \
+        "${coverage:-?}" "${features:-?}" "$crashes" "$timeouts" "$leaks" >>"$table"
 
     total_runs=$((total_runs + 1))
     total_execs=$((total_execs + execs))
@@ -79,7 +88,8 @@ for harness in "$@"; do
     total_timeouts=$((total_timeouts + timeouts))
 done
 
-printf '%-20s %12s %8s %8s %8s %8s %8s\n' harness executions coverage features crashes timeouts leaks
+printf '%-20s %12s %8s %8s %8s %8s %8s %8s\n' harness executions seconds coverage features crashes timeouts \
+    leaks
 cat "$table"
 echo "$total_runs harnesses, $total_execs executions, $total_crashes crashes, $total_leaks leaks," \
     "$total_timeouts timeouts"

@@ -4,6 +4,7 @@
 //   rtmanager [-f rtc.conf] [-i] [-o key:value]... [-p PORT] [-d] [-a]
 // Without -f the configuration file is searched as OpenRTM-aist does (RTC_MANAGER_CONFIG, ./rtc.conf, …).
 #include "builtins.h"
+#include "forkserver.h"
 #include "manager.h"
 #include "managerconfig.h"
 
@@ -20,9 +21,7 @@ namespace {
 
 const char *const usage = "usage: rtmanager [-f rtc.conf] [-i] [-o key:value]... [-p PORT] [-d] [-a]\n";
 
-} // namespace
-
-int main(int argc, char **argv)
+int runManager(int argc, char **argv)
 {
     if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
         std::cout << "rtmanager " RTSTUDIO_VERSION "\n";
@@ -52,6 +51,8 @@ int main(int argc, char **argv)
     std::signal(SIGPIPE, SIG_IGN);
 
     Runtime::Manager manager(config);
+    if (manager.isMaster())
+        manager.startForkServer();
     for (Runtime::ComponentFactory &factory : Runtime::builtinFactories())
         manager.registerFactory(std::move(factory));
     // Modules are OpenRTM-aist modules: their init function gets the SDK's RTC::Manager.
@@ -78,4 +79,14 @@ int main(int argc, char **argv)
         return 1;
     }
     return 0;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    // Started by a master (descriptor 3 is its connection): starts its slaves, see ForkServer.
+    if (argc >= 2 && std::strcmp(argv[1], "--fork-server") == 0)
+        Runtime::ForkServer::serve(3, argc, argv, runManager);
+    return runManager(argc, argv);
 }

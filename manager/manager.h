@@ -3,6 +3,7 @@
 
 #include "componentfactory.h"
 #include "createrequest.h"
+#include "forkserver.h"
 #include "namingregistrar.h"
 #include "properties.h"
 
@@ -40,6 +41,10 @@ public:
     Manager(const Manager &) = delete;
     Manager &operator=(const Manager &) = delete;
 
+    /// Starts slave processes through a fork server from now on (see ForkServer; the program must
+    /// answer `--fork-server`). Call before start(), from the main thread. Without it, or when the
+    /// server is gone, each slave is a fork and exec of this program.
+    void startForkServer();
     /// Initialises the ORB on the configured endpoint and starts serving; false with @p error on failure.
     bool start(std::string *error);
     /// Serves until shutdown() finishes; after restart() also releases the ORB and its endpoint.
@@ -189,6 +194,7 @@ private:
     std::condition_variable m_slavesChanged;
     /// One slave start at a time: concurrent creates must not pick one port twice or start one name twice.
     std::mutex m_spawnMutex;
+    ForkServer m_forkServer;
     std::vector<ComponentFactory> m_factories;
     std::vector<std::unique_ptr<Component>> m_components;
     std::set<std::string> m_reservedNames;

@@ -167,6 +167,12 @@ RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const st
     return slave._retn();
 }
 
+void Manager::startForkServer()
+{
+    if (!m_forkServer.start())
+        std::cerr << programName() << ": no fork server, slaves are started one exec each" << std::endl;
+}
+
 pid_t Manager::startSlaveProcess(const std::string &address, const std::string &name, const std::string &master)
 {
     std::vector<std::string> args = {"rtmanager"};
@@ -180,8 +186,16 @@ pid_t Manager::startSlaveProcess(const std::string &address, const std::string &
         args.insert(args.end(), {"-o", key + '=' + value});
     }
     args.insert(args.end(), {"-o", "manager.is_master=NO", "-o", "corba.master_manager=" + master, "-o",
-                             "corba.endpoints=" + address, "-o", "manager.instance_name=" + name, "-o",
-                             "manager.spawned_by=" + std::to_string(getpid())});
+                             "corba.endpoints=" + address, "-o", "manager.instance_name=" + name});
+    // The slave watches its parent to go down with its master: the fork server, or this process.
+    if (m_forkServer.running()) {
+        std::vector<std::string> served = args;
+        served.insert(served.end(), {"-o", "manager.spawned_by=" + std::to_string(m_forkServer.pid())});
+        const pid_t pid = m_forkServer.launch(served);
+        if (pid > 0)
+            return pid;
+    }
+    args.insert(args.end(), {"-o", "manager.spawned_by=" + std::to_string(getpid())});
     std::vector<char *> argv;
     for (std::string &arg : args)
         argv.push_back(arg.data());
@@ -235,7 +249,8 @@ bool Manager::joinConfirmed(RTM::Manager_ptr slave, std::chrono::steady_clock::t
         } catch (const CORBA::Exception &) {
             return false;
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        // The reply is on its way already: a short pause is enough.
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
     return false;
 }

@@ -31,6 +31,26 @@ bool gone(pid_t pid)
     return text.mid(text.lastIndexOf(')') + 2, 1) == "Z";
 }
 
+/// The parent process of @p pid (0 when it is gone).
+pid_t parentOf(pid_t pid)
+{
+    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly))
+        return 0;
+    const QByteArray text = stat.readAll();
+    // "pid (comm) state ppid …": the name may hold spaces, the fields after it do not.
+    return pid_t(text.mid(text.lastIndexOf(')') + 2).split(' ').value(1).toInt());
+}
+
+/// The command line of @p pid as ps shows it (arguments joined by spaces).
+QByteArray commandLine(pid_t pid)
+{
+    QFile file(QStringLiteral("/proc/%1/cmdline").arg(pid));
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return file.readAll().replace('\0', ' ').trimmed();
+}
+
 /// Asks @p manager for its (aggregated) components over and over until stopped.
 class Hammer
 {
@@ -79,6 +99,7 @@ private slots:
 
     void slavesStartedAtOnceAllJoin();
     void spawnedSlavesHaveJoinedWhenCreateReturns();
+    void slavesStartThroughForkServer();
 
 private:
     QStringList slaveNames();
@@ -250,6 +271,63 @@ void TestManagerJoin::spawnedSlavesHaveJoinedWhenCreateReturns()
     QVERIFY(err.open(QIODevice::ReadOnly));
     const QByteArray text = err.readAll();
     QVERIFY2(!text.contains("cannot join"), text.constData());
+}
+
+void TestManagerJoin::slavesStartThroughForkServer()
+{
+    QProcess master;
+    const quint16 port = LiveTest::freePort();
+    master.start(
+        QStringLiteral(RTMANAGER_PATH),
+        {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o", "naming.enable=NO"});
+    QVERIFY(master.waitForStarted(10000));
+    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
+    RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
+    const auto answers = [&manager] {
+        try {
+            manager->is_master();
+            return true;
+        } catch (const CORBA::Exception &) {
+            return false;
+        }
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(answers(), 10000);
+    const auto slavePid = [&manager](const char *name) {
+        RTC::RTObject_var component
+            = manager->create_component(QByteArray("ConsoleOut?manager_name=") + name);
+        if (CORBA::is_nil(component))
+            return pid_t(0);
+        RTM::ManagerList_var slaves = manager->get_slave_managers();
+        for (CORBA::ULong i = 0; i < slaves->length(); ++i) {
+            RTM::ManagerProfile_var profile = slaves[i]->get_profile();
+            if (nv(profile->properties, "instance_name") == QLatin1String(name))
+                return pid_t(nv(profile->properties, "pid").toInt());
+        }
+        return pid_t(0);
+    };
+
+    // The slave is a child of the master's fork server and shows its own command line.
+    const pid_t forked = slavePid("forked");
+    QVERIFY(forked > 0);
+    const pid_t server = parentOf(forked);
+    QCOMPARE(parentOf(server), pid_t(master.processId()));
+    QVERIFY2(commandLine(server).startsWith("rtmanager --fork-server"), commandLine(server).constData());
+    const QByteArray shown = commandLine(forked);
+    QVERIFY2(shown.startsWith("rtmanager -o ") && shown.contains("manager.instance_name=forked")
+                 && !shown.contains("--fork-server"),
+             shown.constData());
+
+    // Without its fork server (killed), the master starts slaves itself; the server's slaves end.
+    QCOMPARE(::kill(server, SIGKILL), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(gone(forked), 10000);
+    const pid_t direct = slavePid("direct");
+    QVERIFY(direct > 0);
+    QCOMPARE(parentOf(direct), pid_t(master.processId()));
+
+    master.kill();
+    QVERIFY(master.waitForFinished(10000));
+    QTRY_VERIFY_WITH_TIMEOUT(gone(direct), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(gone(server), 10000);
 }
 
 QTEST_GUILESS_MAIN(TestManagerJoin)
