@@ -2,6 +2,7 @@
 // Reads rtsprofile's YAML dialect into RtsProfile. Every yaml-cpp call that can throw runs inside
 // readRtsYaml's try block; structural problems (a list where a value belongs …) are reported at the
 // node's mark and the reader carries on, so one file shows all its problems at once.
+#include "rtsfields_p.h"
 #include "rtsyaml.h"
 #include "rtsyamlmap_p.h"
 
@@ -20,13 +21,7 @@ QString tr(const char *text)
 
 constexpr qint64 MaxYamlBytes = 512LL * 1024 * 1024;
 
-QString normalizedBoolean(const QString &text)
-{
-    const auto value = parseBoolean(text);
-    return value ? booleanText(*value) : text;
-}
-
-/// Maps the YAML nodes of a profile onto the model; one function per part.
+/// Maps the YAML nodes of a profile onto the model by walking the field tables.
 class RtsYamlReader
 {
 public:
@@ -34,71 +29,105 @@ public:
         : m_context(context)
     { }
 
-    RtsProfile readProfile(const YAML::Node &node)
+    /// Keys in table order (the order of diagnostics); what is left becomes the extras.
+    template<typename T> T readElement(const YAML::Node &node)
     {
         Map m(node, m_context);
-        RtsProfile p;
-        p.id = m.required("id");
-        p.version = m.required("version");
-        p.abstract = m.scalar("abstract");
-        p.creationDate = readDate(m, "creationDate");
-        p.updateDate = readDate(m, "updateDate");
-        p.comment = m.scalar(ext("comment"));
-        p.components = readList<RtsComponent>(m, "components", &RtsYamlReader::readComponent);
-        p.groups = readList<RtsGroup>(m, "groups", &RtsYamlReader::readGroup);
-        p.dataPortConnectors = readList<RtsDataPortConnector>(
-            m, "dataPortConnectors", &RtsYamlReader::readDataPortConnector);
-        p.servicePortConnectors = readList<RtsServicePortConnector>(
-            m, "servicePortConnectors", &RtsYamlReader::readServicePortConnector);
-        for (RtsSequenceKind kind : rtsSequenceKinds()) {
-            if (const auto sequence = m.map(rtsSequenceYamlKey(kind)))
-                p.sequence(kind) = readSequence(*sequence);
-        }
-        p.versionUpLogs = readStrings(m, ext("versionUpLogs"));
-        p.properties = readProperties(m);
-        p.systems = readList<RtsSystemPath>(m, ext("systems"), &RtsYamlReader::readSystemPath);
-        finish(p, m);
-        return p;
+        T item;
+        Fields::forEachRow(Fields::RtsElement<T>::fields,
+                           [&](const auto &row) { readRow(m, item, row); });
+        m.addExtrasTo(item.yamlExtras);
+        item.location = m.location();
+        return item;
     }
 
 private:
-    template<typename T> void finish(T &item, const Map &m)
+    template<typename T, typename Owner, typename Value>
+    void readRow(Map &m, T &item, const Fields::Scalar<Owner, Value> &row)
     {
-        item.yamlExtras = m.extras();
-        item.location = m.location();
+        constexpr bool required = Fields::Scalar<Owner, Value>::required;
+        std::optional<QString> value;
+        // Unlike XML, a legacy spelling wins over the schema's (a converted file may carry it).
+        if (row.legacyName)
+            value = m.scalar(row.legacyName);
+        if (!value)
+            value = readScalar(m, row.yamlKey, row.style, required);
+        if (value && row.normalize)
+            value = row.normalize(*value);
+        if constexpr (required)
+            item.*row.member = value.value_or(QString());
+        else
+            item.*row.member = value;
+    }
+
+    /// A required key is reported when absent (and read as empty text).
+    std::optional<QString> readScalar(Map &m, const char *key, Fields::Style style, bool required)
+    {
+        if (style == Fields::Style::Date)
+            return readDate(m, key);
+        if (required)
+            return m.required(key);
+        return m.scalar(key);
     }
 
     /// Each list entry must be a mapping; others are reported and skipped.
-    template<typename T, typename Key>
-    QList<T> readList(Map &m, const Key &key, T (RtsYamlReader::*read)(const YAML::Node &))
+    template<typename T, typename Owner, typename Item>
+    void readRow(Map &m, T &item, const Fields::Child<Owner, QList<Item>> &row)
     {
-        QList<T> result;
+        const QString key = QLatin1String(row.yamlKey);
         const auto list = m.sequence(key);
         if (!list)
-            return result;
+            return;
+        QList<Item> &result = item.*row.member;
         result.reserve(qsizetype(list->size()));
         for (const YAML::Node &entry : *list) {
             if (entry.IsMap())
-                result.append((this->*read)(entry));
+                result.append(readElement<Item>(entry));
             else
                 m_context.error(entry.Mark(), tr("each entry of '%1' must be a mapping").arg(key));
         }
-        return result;
     }
 
-    QStringList readStrings(Map &m, const QString &key)
+    template<typename T, typename Owner, typename Item>
+    void readRow(Map &m, T &item, const Fields::Child<Owner, std::optional<Item>> &row)
     {
-        QStringList result;
+        if (const auto child = m.map(row.yamlKey))
+            item.*row.member = readElement<Item>(*child);
+    }
+
+    template<typename T, typename Owner, typename Item>
+    void readRow(Map &m, T &item, const Fields::Child<Owner, Item> &row)
+    {
+        if (const auto child = m.map(row.yamlKey))
+            item.*row.member = readElement<Item>(*child);
+        else
+            m_context.error(m.node().Mark(), tr(row.yamlMissing).arg(QLatin1String(row.yamlKey)));
+    }
+
+    template<typename T, typename Owner>
+    void readRow(Map &m, T &item, const Fields::TextList<Owner> &row)
+    {
+        const QString key = QLatin1String(row.yamlKey);
         const auto list = m.sequence(key);
         if (!list)
-            return result;
+            return;
         for (const YAML::Node &entry : *list) {
             if (entry.IsScalar())
-                result.append(fromStd(entry.Scalar()));
+                (item.*row.member).append(fromStd(entry.Scalar()));
             else
                 m_context.error(entry.Mark(), tr("each entry of '%1' must be text").arg(key));
         }
-        return result;
+    }
+
+    template<typename T, typename... Rows>
+    void readRow(Map &m, T &item, const Fields::YamlGroup<Rows...> &group)
+    {
+        const auto node = m.map(group.yamlKey);
+        if (!node)
+            return;
+        Map inner(*node, m_context);
+        Fields::forEachRow(group.rows, [&](const auto &row) { readRow(inner, item, row); });
+        inner.addExtrasTo(item.yamlExtras, QLatin1String(group.yamlKey) + QLatin1Char('/'));
     }
 
     /// rtsprofile's {year, month, day, hour, minute, second} (+ this project's fraction and
@@ -156,292 +185,6 @@ private:
         return text;
     }
 
-    RtsProperties readProperties(Map &m)
-    {
-        return readList<RtsProperty>(m, ext("properties"), &RtsYamlReader::readProperty);
-    }
-
-    RtsProperty readProperty(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsProperty p;
-        p.name = m.required("name");
-        p.value = m.scalar("value");
-        finish(p, m);
-        return p;
-    }
-
-    void readTargetBase(Map &m, RtsTargetComponent &t)
-    {
-        t.componentId = m.required("componentId");
-        t.instanceName = m.required("instanceName");
-        t.properties = readProperties(m);
-    }
-
-    RtsTargetComponent readTargetComponent(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsTargetComponent t;
-        readTargetBase(m, t);
-        finish(t, m);
-        return t;
-    }
-
-    RtsTargetPort readTargetPort(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsTargetPort t;
-        readTargetBase(m, t);
-        t.portName = m.required("portName");
-        finish(t, m);
-        return t;
-    }
-
-    RtsTargetExecutionContext readTargetExecutionContext(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsTargetExecutionContext t;
-        readTargetBase(m, t);
-        t.id = m.required("id");
-        finish(t, m);
-        return t;
-    }
-
-    RtsPort readPort(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsPort port;
-        port.name = m.required("name");
-        port.comment = m.scalar(ext("comment"));
-        if (const auto visible = m.scalar(ext("visible")))
-            port.visible = normalizedBoolean(*visible);
-        port.properties = readProperties(m);
-        finish(port, m);
-        return port;
-    }
-
-    RtsConfigurationData readConfigurationData(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsConfigurationData data;
-        data.name = m.required("name");
-        data.data = m.scalar("data");
-        finish(data, m);
-        return data;
-    }
-
-    RtsConfigurationSet readConfigurationSet(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsConfigurationSet set;
-        set.id = m.required("id");
-        set.data = readList<RtsConfigurationData>(m, "configurationData",
-                                                  &RtsYamlReader::readConfigurationData);
-        finish(set, m);
-        return set;
-    }
-
-    RtsExecutionContext readExecutionContext(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsExecutionContext ec;
-        ec.id = m.required("id");
-        ec.kind = m.required("kind");
-        ec.rate = m.scalar("rate");
-        ec.participants
-            = readList<RtsTargetComponent>(m, "participants", &RtsYamlReader::readTargetComponent);
-        ec.properties = readProperties(m);
-        finish(ec, m);
-        return ec;
-    }
-
-    RtsParticipant readParticipant(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsParticipant participant;
-        if (const auto target = m.map("participant"))
-            participant.participant = readTargetComponent(*target);
-        else
-            m_context.error(node.Mark(), tr("a participant lacks its 'participant' mapping"));
-        finish(participant, m);
-        return participant;
-    }
-
-    RtsLocation readLocation(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsLocation l;
-        l.x = m.required("x");
-        l.y = m.required("y");
-        l.height = m.required("height");
-        l.width = m.required("width");
-        l.direction = m.required("direction");
-        if (RtsLocation::directions().contains(l.direction.trimmed().toUpper()))
-            l.direction = l.direction.trimmed().toUpper();
-        finish(l, m);
-        return l;
-    }
-
-    void readComponentAttributes(Map &m, RtsComponent &c)
-    {
-        c.id = m.required("id");
-        c.pathUri = m.required("pathUri");
-        c.instanceName = m.required("instanceName");
-        c.activeConfigurationSet = m.scalar("activeConfigurationSet");
-        c.compositeType = m.scalar("compositeType");
-        c.isRequired = normalizedBoolean(m.required("isRequired"));
-        c.comment = m.scalar(ext("comment"));
-        if (const auto visible = m.scalar(ext("visible")))
-            c.visible = normalizedBoolean(*visible);
-    }
-
-    RtsComponent readComponent(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsComponent c;
-        readComponentAttributes(m, c);
-        c.dataPorts = readList<RtsPort>(m, "dataPorts", &RtsYamlReader::readPort);
-        c.servicePorts = readList<RtsPort>(m, "servicePorts", &RtsYamlReader::readPort);
-        c.configurationSets = readList<RtsConfigurationSet>(m, "configurationSets",
-                                                            &RtsYamlReader::readConfigurationSet);
-        c.executionContexts = readList<RtsExecutionContext>(m, "executionContexts",
-                                                            &RtsYamlReader::readExecutionContext);
-        c.participants
-            = readList<RtsParticipant>(m, "participants", &RtsYamlReader::readParticipant);
-        if (const auto location = m.map(ext("location")))
-            c.layout = readLocation(*location);
-        c.properties = readProperties(m);
-        finish(c, m);
-        return c;
-    }
-
-    RtsGroup readGroup(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsGroup g;
-        // Accept rtsprofile's XML spelling here too, in case a converted file carries it.
-        if (const auto legacy = m.scalar("groupID"))
-            g.groupId = *legacy;
-        else
-            g.groupId = m.required("groupId");
-        g.members = readList<RtsTargetComponent>(m, "members", &RtsYamlReader::readTargetComponent);
-        finish(g, m);
-        return g;
-    }
-
-    void readConnectorBase(Map &m, RtsPortConnector &c, const char *sourceKey,
-                           const char *targetKey)
-    {
-        c.connectorId = m.required("connectorId");
-        c.name = m.required("name");
-        c.comment = m.scalar(ext("comment"));
-        if (const auto visible = m.scalar(ext("visible")))
-            c.visible = normalizedBoolean(*visible);
-        if (const auto source = m.map(sourceKey))
-            c.source = readTargetPort(*source);
-        else
-            m_context.error(m.node().Mark(),
-                            tr("the connector lacks '%1'").arg(QLatin1String(sourceKey)));
-        if (const auto target = m.map(targetKey))
-            c.target = readTargetPort(*target);
-        else
-            m_context.error(m.node().Mark(),
-                            tr("the connector lacks '%1'").arg(QLatin1String(targetKey)));
-        c.properties = readProperties(m);
-    }
-
-    RtsDataPortConnector readDataPortConnector(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsDataPortConnector c;
-        c.dataType = m.required("dataType");
-        c.interfaceType = m.required("interfaceType");
-        c.dataflowType = m.required("dataflowType");
-        c.subscriptionType = m.scalar("subscriptionType");
-        c.pushInterval = m.scalar("pushInterval");
-        readConnectorBase(m, c, "sourceDataPort", "targetDataPort");
-        finish(c, m);
-        return c;
-    }
-
-    RtsServicePortConnector readServicePortConnector(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsServicePortConnector c;
-        c.transMethod = m.scalar("transMethod");
-        readConnectorBase(m, c, "sourceServicePort", "targetServicePort");
-        finish(c, m);
-        return c;
-    }
-
-    RtsWaitTime readWaitTime(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsWaitTime w;
-        w.waitTime = m.scalar("waitTime");
-        finish(w, m);
-        return w;
-    }
-
-    RtsPreceding readPreceding(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsPreceding p;
-        p.timeout = m.scalar("timeout");
-        p.sendingTiming = m.scalar("sendingTiming");
-        p.precedingComponents = readList<RtsTargetExecutionContext>(
-            m, "precedingComponents", &RtsYamlReader::readTargetExecutionContext);
-        finish(p, m);
-        return p;
-    }
-
-    /// `condition: {waitTime: {…}}` or `{preceding: {…}}`; unknown keys of this inner mapping
-    /// are kept on the condition with the key prefix `condition/`.
-    void readConditionChoice(const YAML::Node &node, RtsCondition &c)
-    {
-        Map m(node, m_context);
-        if (const auto wait = m.map("waitTime"))
-            c.waitTime = readWaitTime(*wait);
-        if (const auto preceding = m.map("preceding"))
-            c.preceding = readPreceding(*preceding);
-        m.addExtrasTo(c.yamlExtras, QStringLiteral("condition/"));
-    }
-
-    RtsCondition readCondition(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsCondition c;
-        c.sequence = m.required("sequence");
-        if (const auto target = m.map("targetComponent"))
-            c.targetComponent = readTargetExecutionContext(*target);
-        else
-            m_context.error(node.Mark(), tr("a message-sequence target lacks 'targetComponent'"));
-        if (const auto choice = m.map("condition"))
-            readConditionChoice(*choice, c);
-        c.properties = readProperties(m);
-        m.addExtrasTo(c.yamlExtras);
-        c.location = m.location();
-        return c;
-    }
-
-    RtsMessageSequence readSequence(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsMessageSequence s;
-        s.targets = readList<RtsCondition>(m, "targets", &RtsYamlReader::readCondition);
-        finish(s, m);
-        return s;
-    }
-
-    RtsSystemPath readSystemPath(const YAML::Node &node)
-    {
-        Map m(node, m_context);
-        RtsSystemPath s;
-        s.path = m.required("path");
-        finish(s, m);
-        return s;
-    }
-
     const Context &m_context;
 };
 
@@ -462,7 +205,7 @@ std::optional<RtsProfile> readDocument(const YAML::Node &document, const Context
         context.error(profile.Mark(), tr("'rtsProfile' must be a mapping"));
         return std::nullopt;
     }
-    return RtsYamlReader(context).readProfile(profile);
+    return RtsYamlReader(context).readElement<RtsProfile>(profile);
 }
 
 } // namespace

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Writes rtsprofile's YAML dialect. Values keep the model's text; the scalar style is chosen so
 // that YAML tools see text as text (a version "0.2" stays a string) and numbers as numbers.
+#include "rtsfields_p.h"
 #include "rtsyaml.h"
 #include "rtsyamlmap_p.h"
 
 #include <QRegularExpression>
+
+#include <algorithm>
 
 namespace Profile {
 
@@ -39,36 +42,16 @@ public:
 
     void writeProfile(const RtsProfile &p)
     {
-        m_out << YAML::BeginMap << YAML::Key << "rtsProfile" << YAML::Value << YAML::BeginMap;
-        text("id", p.id);
-        text("version", p.version);
-        text("abstract", p.abstract);
-        date("creationDate", p.creationDate);
-        date("updateDate", p.updateDate);
-        text(ext("comment"), p.comment);
-        list("components", p.components, &RtsYamlWriter::writeComponent);
-        list("groups", p.groups, &RtsYamlWriter::writeGroup);
-        list("dataPortConnectors", p.dataPortConnectors, &RtsYamlWriter::writeDataPortConnector);
-        list("servicePortConnectors", p.servicePortConnectors,
-             &RtsYamlWriter::writeServicePortConnector);
-        for (RtsSequenceKind kind : rtsSequenceKinds()) {
-            if (const auto &sequence = p.sequence(kind)) {
-                key(rtsSequenceYamlKey(kind));
-                writeSequence(*sequence);
-            }
-        }
-        writeStrings(ext("versionUpLogs"), p.versionUpLogs);
-        properties(p.properties);
-        list(ext("systems"), p.systems, &RtsYamlWriter::writeSystemPath);
-        extras(p.yamlExtras);
-        m_out << YAML::EndMap << YAML::EndMap;
+        m_out << YAML::BeginMap << YAML::Key << "rtsProfile" << YAML::Value;
+        writeElement(p);
+        m_out << YAML::EndMap;
     }
 
 private:
     void key(const QString &name)
     {
         m_out << YAML::Key;
-        // YAML allows 1024 characters in a plain `key:`; a longer one (once escaped) must be `? key`.
+        // YAML allows 1024 characters in a plain `key:`; longer ones (once escaped) need `? key`.
         if (name.size() > 128)
             m_out << YAML::LongKey;
         // The dialect quotes its namespaced keys.
@@ -78,6 +61,24 @@ private:
     }
     void key(const char *name) { key(QString::fromLatin1(name)); }
 
+    void scalar(const QString &name, Fields::Style style, const QString &value)
+    {
+        switch (style) {
+        case Fields::Style::Text:
+            text(name, value);
+            break;
+        case Fields::Style::Number:
+            number(name, value);
+            break;
+        case Fields::Style::Boolean:
+            boolean(name, value);
+            break;
+        case Fields::Style::Date:
+            date(name, value);
+            break;
+        }
+    }
+
     /// Text that must stay text for YAML readers.
     void text(const QString &name, const QString &value)
     {
@@ -86,29 +87,14 @@ private:
             m_out << YAML::SingleQuoted;
         m_out << toStd(value);
     }
-    void text(const char *name, const QString &value) { text(QString::fromLatin1(name), value); }
-    void text(const QString &name, const std::optional<QString> &value)
-    {
-        if (value)
-            text(name, *value);
-    }
-    void text(const char *name, const std::optional<QString> &value)
-    {
-        text(QString::fromLatin1(name), value);
-    }
 
     /// A number written plain; text that is no number is written as text so that it survives.
-    void number(const char *name, const QString &value)
+    void number(const QString &name, const QString &value)
     {
         key(name);
         if (!looksNumeric(value))
             m_out << YAML::SingleQuoted;
         m_out << toStd(value);
-    }
-    void number(const char *name, const std::optional<QString> &value)
-    {
-        if (value)
-            number(name, *value);
     }
 
     /// rtsprofile writes its booleans as the strings 'true'/'false' (and compares them so).
@@ -117,13 +103,8 @@ private:
         key(name);
         m_out << YAML::SingleQuoted << toStd(value);
     }
-    void boolean(const QString &name, const std::optional<QString> &value)
-    {
-        if (value)
-            boolean(name, *value);
-    }
 
-    void date(const char *name, const QString &value)
+    void date(const QString &name, const QString &value)
     {
         static const QRegularExpression pattern(QStringLiteral(
             R"(^(\d{4})-(\d{2})-(\d{2})T(\d{2}):(\d{2}):(\d{2})(?:\.(\d+))?(Z|[+-]\d{2}:\d{2})?$)"));
@@ -147,18 +128,6 @@ private:
         m_out << YAML::EndMap;
     }
 
-    template<typename T, typename Key>
-    void list(const Key &name, const QList<T> &items, void (RtsYamlWriter::*write)(const T &))
-    {
-        if (items.isEmpty())
-            return;
-        key(name);
-        m_out << YAML::BeginSeq;
-        for (const T &item : items)
-            (this->*write)(item);
-        m_out << YAML::EndSeq;
-    }
-
     void writeStrings(const QString &name, const QStringList &values)
     {
         if (values.isEmpty())
@@ -173,13 +142,16 @@ private:
         m_out << YAML::EndSeq;
     }
 
-    /// Unknown keys as read; an entry whose text no longer parses is dropped rather than
+    /// Unknown keys as read: those under `prefix` (a YamlGroup's), or with no prefix those not
+    /// under any of `groupPrefixes`. An entry whose text no longer parses is dropped rather than
     /// breaking the file (it was produced by yaml-cpp, so this does not happen in practice).
-    void extras(const RtsYamlExtras &extras, const QString &prefix = QString())
+    void extras(const RtsYamlExtras &extras, const QString &prefix,
+                const QStringList &groupPrefixes = {})
     {
         for (const RtsYamlExtras::Entry &e : extras.entries) {
-            const bool inner = e.key.startsWith(QLatin1String("condition/"));
-            if (inner != !prefix.isEmpty())
+            const auto under = [&](const QString &p) { return e.key.startsWith(p); };
+            if (prefix.isEmpty() ? std::any_of(groupPrefixes.begin(), groupPrefixes.end(), under)
+                                 : !under(prefix))
                 continue;
             try {
                 const YAML::Node value = YAML::Load(toStd(e.yaml));
@@ -191,245 +163,83 @@ private:
         }
     }
 
-    void properties(const RtsProperties &items)
-    {
-        list(ext("properties"), items, &RtsYamlWriter::writeProperty);
-    }
-
-    void writeProperty(const RtsProperty &p)
+    /// Keys in table order, then the unknown keys as read.
+    template<typename T> void writeElement(const T &item)
     {
         m_out << YAML::BeginMap;
-        text("name", p.name);
-        text("value", p.value);
-        extras(p.yamlExtras);
+        QStringList groupPrefixes;
+        Fields::forEachRow(Fields::RtsElement<T>::fields, [&](const auto &row) {
+            writeRow(item, row);
+            addGroupPrefix(groupPrefixes, row);
+        });
+        extras(item.yamlExtras, QString(), groupPrefixes);
         m_out << YAML::EndMap;
     }
 
-    void targetBase(const RtsTargetComponent &t)
+    template<typename Row> static void addGroupPrefix(QStringList &, const Row &) { }
+    template<typename... Rows>
+    static void addGroupPrefix(QStringList &prefixes, const Fields::YamlGroup<Rows...> &group)
     {
-        text("componentId", t.componentId);
-        text("instanceName", t.instanceName);
-        properties(t.properties);
+        prefixes.append(groupPrefix(group));
+    }
+    template<typename... Rows> static QString groupPrefix(const Fields::YamlGroup<Rows...> &group)
+    {
+        return QLatin1String(group.yamlKey) + QLatin1Char('/');
     }
 
-    void writeTargetComponent(const RtsTargetComponent &t)
+    template<typename T, typename Owner, typename Value>
+    void writeRow(const T &item, const Fields::Scalar<Owner, Value> &row)
     {
-        m_out << YAML::BeginMap;
-        targetBase(t);
-        extras(t.yamlExtras);
-        m_out << YAML::EndMap;
+        const QString name = QLatin1String(row.yamlKey);
+        const Value &value = item.*row.member;
+        if constexpr (Fields::Scalar<Owner, Value>::required)
+            scalar(name, row.style, value);
+        else if (value)
+            scalar(name, row.style, *value);
     }
 
-    void writeTargetPort(const RtsTargetPort &t)
+    template<typename T, typename Owner, typename Item>
+    void writeRow(const T &item, const Fields::Child<Owner, QList<Item>> &row)
     {
-        m_out << YAML::BeginMap;
-        targetBase(t);
-        text("portName", t.portName);
-        extras(t.yamlExtras);
-        m_out << YAML::EndMap;
+        const QList<Item> &items = item.*row.member;
+        if (items.isEmpty())
+            return;
+        key(row.yamlKey);
+        m_out << YAML::BeginSeq;
+        for (const Item &child : items)
+            writeElement(child);
+        m_out << YAML::EndSeq;
     }
 
-    void writeTargetExecutionContext(const RtsTargetExecutionContext &t)
+    template<typename T, typename Owner, typename Item>
+    void writeRow(const T &item, const Fields::Child<Owner, std::optional<Item>> &row)
     {
-        m_out << YAML::BeginMap;
-        targetBase(t);
-        text("id", t.id);
-        extras(t.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writePort(const RtsPort &port)
-    {
-        m_out << YAML::BeginMap;
-        text("name", port.name);
-        text(ext("comment"), port.comment);
-        boolean(ext("visible"), port.visible);
-        properties(port.properties);
-        extras(port.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeConfigurationData(const RtsConfigurationData &data)
-    {
-        m_out << YAML::BeginMap;
-        text("name", data.name);
-        text("data", data.data);
-        extras(data.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeConfigurationSet(const RtsConfigurationSet &set)
-    {
-        m_out << YAML::BeginMap;
-        text("id", set.id);
-        list("configurationData", set.data, &RtsYamlWriter::writeConfigurationData);
-        extras(set.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeExecutionContext(const RtsExecutionContext &ec)
-    {
-        m_out << YAML::BeginMap;
-        text("id", ec.id);
-        text("kind", ec.kind);
-        number("rate", ec.rate);
-        list("participants", ec.participants, &RtsYamlWriter::writeTargetComponent);
-        properties(ec.properties);
-        extras(ec.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeParticipant(const RtsParticipant &participant)
-    {
-        m_out << YAML::BeginMap;
-        key("participant");
-        writeTargetComponent(participant.participant);
-        extras(participant.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeLocation(const RtsLocation &l)
-    {
-        m_out << YAML::BeginMap;
-        number("x", l.x);
-        number("y", l.y);
-        number("height", l.height);
-        number("width", l.width);
-        text("direction", l.direction);
-        extras(l.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeComponent(const RtsComponent &c)
-    {
-        m_out << YAML::BeginMap;
-        text("id", c.id);
-        text("pathUri", c.pathUri);
-        text("instanceName", c.instanceName);
-        text("activeConfigurationSet", c.activeConfigurationSet);
-        text("compositeType", c.compositeType);
-        boolean(QStringLiteral("isRequired"), c.isRequired);
-        text(ext("comment"), c.comment);
-        boolean(ext("visible"), c.visible);
-        list("dataPorts", c.dataPorts, &RtsYamlWriter::writePort);
-        list("servicePorts", c.servicePorts, &RtsYamlWriter::writePort);
-        list("configurationSets", c.configurationSets, &RtsYamlWriter::writeConfigurationSet);
-        list("executionContexts", c.executionContexts, &RtsYamlWriter::writeExecutionContext);
-        list("participants", c.participants, &RtsYamlWriter::writeParticipant);
-        if (c.layout) {
-            key(ext("location"));
-            writeLocation(*c.layout);
+        if (const std::optional<Item> &child = item.*row.member) {
+            key(row.yamlKey);
+            writeElement(*child);
         }
-        properties(c.properties);
-        extras(c.yamlExtras);
-        m_out << YAML::EndMap;
     }
 
-    void writeGroup(const RtsGroup &g)
+    template<typename T, typename Owner, typename Item>
+    void writeRow(const T &item, const Fields::Child<Owner, Item> &row)
     {
+        key(row.yamlKey);
+        writeElement(item.*row.member);
+    }
+
+    template<typename T, typename Owner>
+    void writeRow(const T &item, const Fields::TextList<Owner> &row)
+    {
+        writeStrings(QLatin1String(row.yamlKey), item.*row.member);
+    }
+
+    template<typename T, typename... Rows>
+    void writeRow(const T &item, const Fields::YamlGroup<Rows...> &group)
+    {
+        key(group.yamlKey);
         m_out << YAML::BeginMap;
-        text("groupId", g.groupId);
-        list("members", g.members, &RtsYamlWriter::writeTargetComponent);
-        extras(g.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void connectorBase(const RtsPortConnector &c)
-    {
-        text("connectorId", c.connectorId);
-        text("name", c.name);
-        text(ext("comment"), c.comment);
-        boolean(ext("visible"), c.visible);
-    }
-
-    void connectorEnds(const char *sourceKey, const char *targetKey, const RtsPortConnector &c)
-    {
-        key(sourceKey);
-        writeTargetPort(c.source);
-        key(targetKey);
-        writeTargetPort(c.target);
-        properties(c.properties);
-        extras(c.yamlExtras);
-    }
-
-    void writeDataPortConnector(const RtsDataPortConnector &c)
-    {
-        m_out << YAML::BeginMap;
-        connectorBase(c);
-        text("dataType", c.dataType);
-        text("interfaceType", c.interfaceType);
-        text("dataflowType", c.dataflowType);
-        text("subscriptionType", c.subscriptionType);
-        number("pushInterval", c.pushInterval);
-        connectorEnds("sourceDataPort", "targetDataPort", c);
-        m_out << YAML::EndMap;
-    }
-
-    void writeServicePortConnector(const RtsServicePortConnector &c)
-    {
-        m_out << YAML::BeginMap;
-        connectorBase(c);
-        text("transMethod", c.transMethod);
-        connectorEnds("sourceServicePort", "targetServicePort", c);
-        m_out << YAML::EndMap;
-    }
-
-    void writePreceding(const RtsPreceding &p)
-    {
-        m_out << YAML::BeginMap;
-        number("timeout", p.timeout);
-        text("sendingTiming", p.sendingTiming);
-        list("precedingComponents", p.precedingComponents,
-             &RtsYamlWriter::writeTargetExecutionContext);
-        extras(p.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeConditionChoice(const RtsCondition &c)
-    {
-        key("condition");
-        m_out << YAML::BeginMap;
-        if (c.waitTime) {
-            key("waitTime");
-            m_out << YAML::BeginMap;
-            number("waitTime", c.waitTime->waitTime);
-            extras(c.waitTime->yamlExtras);
-            m_out << YAML::EndMap;
-        }
-        if (c.preceding) {
-            key("preceding");
-            writePreceding(*c.preceding);
-        }
-        extras(c.yamlExtras, QStringLiteral("condition/"));
-        m_out << YAML::EndMap;
-    }
-
-    void writeCondition(const RtsCondition &c)
-    {
-        m_out << YAML::BeginMap;
-        number("sequence", c.sequence);
-        key("targetComponent");
-        writeTargetExecutionContext(c.targetComponent);
-        // Always present: rtsprofile looks the key up unconditionally.
-        writeConditionChoice(c);
-        properties(c.properties);
-        extras(c.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeSequence(const RtsMessageSequence &s)
-    {
-        m_out << YAML::BeginMap;
-        list("targets", s.targets, &RtsYamlWriter::writeCondition);
-        extras(s.yamlExtras);
-        m_out << YAML::EndMap;
-    }
-
-    void writeSystemPath(const RtsSystemPath &s)
-    {
-        m_out << YAML::BeginMap;
-        text("path", s.path);
-        extras(s.yamlExtras);
+        Fields::forEachRow(group.rows, [&](const auto &row) { writeRow(item, row); });
+        extras(item.yamlExtras, groupPrefix(group));
         m_out << YAML::EndMap;
     }
 
