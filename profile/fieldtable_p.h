@@ -40,6 +40,8 @@ template<typename Owner, typename Value> struct Scalar
     Style style = Style::Text;
     /// Another spelling accepted on read, never written.
     const char *legacyName = nullptr;
+    /// A second namespace the XML reader tries the legacy spelling in, after the row's own.
+    const QString *legacyNamespace = nullptr;
     /// Applied to the text read (e.g. a boolean's `1` becomes `true`).
     QString (*normalize)(const QString &) = nullptr;
 
@@ -47,6 +49,12 @@ template<typename Owner, typename Value> struct Scalar
     {
         Scalar row = *this;
         row.legacyName = name;
+        return row;
+    }
+    constexpr Scalar withLegacyName(const char *name, const QString &alsoInNamespace) const
+    {
+        Scalar row = withLegacyName(name);
+        row.legacyNamespace = &alsoInNamespace;
         return row;
     }
     constexpr Scalar normalizedBy(QString (*function)(const QString &)) const
@@ -128,6 +136,15 @@ template<typename... Rows> struct YamlGroup
     std::tuple<Rows...> rows;
 };
 
+/**
+ * A place in the table for an element part that does not fit the row kinds (the RTC Profile's
+ * constraint trees, its configuration set wrapper …). Each walker handles `Special<Tag>` in a
+ * function of its own, at the row's position.
+ */
+template<typename Tag> struct Special
+{
+};
+
 // Row constructors, so that a table reads as a list of fields.
 
 template<typename Owner, typename Value>
@@ -156,7 +173,9 @@ template<typename Owner, typename Value>
 constexpr Scalar<Owner, Value> boolean(Value Owner::*member, const QString &ns, const char *xmlName,
                                        const char *yamlKey)
 {
-    return {member, &ns, xmlName, yamlKey, Style::Boolean, nullptr, &normalizedBoolean};
+    Scalar<Owner, Value> row {member, &ns, xmlName, yamlKey, Style::Boolean};
+    row.normalize = &normalizedBoolean;
+    return row;
 }
 
 template<typename Owner>
@@ -193,6 +212,11 @@ constexpr TextList<Owner> textList(QStringList Owner::*member, const QString &ns
                                    const char *xmlName, const char *yamlKey)
 {
     return {member, &ns, xmlName, yamlKey};
+}
+
+template<typename Tag> constexpr Special<Tag> special()
+{
+    return {};
 }
 
 template<typename... Rows> constexpr YamlGroup<Rows...> yamlGroup(const char *yamlKey, Rows... rows)

@@ -192,27 +192,6 @@ XmlNode textElement(const QString &ns, const QString &name, const QString &text)
     return node;
 }
 
-RtcProperty readProperty(const XmlNode &node, const ReadContext &context)
-{
-    NodeReader reader(node, context.fileName, context.diagnostics);
-    RtcProperty property;
-    property.location = node.location;
-    property.name = requiredAttribute(reader, Ns::RtcExt, QStringLiteral("name"), property.missing);
-    property.value = reader.attribute(Ns::RtcExt, QStringLiteral("value"));
-    property.extras = reader.extras();
-    return property;
-}
-
-XmlNode propertyToXml(const RtcProperty &property)
-{
-    XmlNode node(Ns::RtcExt, QStringLiteral("Properties"));
-    node.prefix = Ns::preferredPrefix(Ns::RtcExt);
-    setRequired(node, Ns::RtcExt, QStringLiteral("name"), property.name, property.missing);
-    node.setAttribute(Ns::RtcExt, QStringLiteral("value"), property.value);
-    property.extras.applyTo(node);
-    return node;
-}
-
 RtcConstraint readConstraint(const XmlNode &node, const ReadContext &context)
 {
     NodeReader reader(node, context.fileName, context.diagnostics);

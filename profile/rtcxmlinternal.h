@@ -34,9 +34,6 @@ void setRequired(XmlNode &node, const QString &ns, const QString &name, const QS
 /// A leaf element with text.
 XmlNode textElement(const QString &ns, const QString &name, const QString &text);
 
-RtcProperty readProperty(const XmlNode &node, const ReadContext &context);
-XmlNode propertyToXml(const RtcProperty &property);
-
 /// Reads an `rtc:Constraint` element (recursively).
 RtcConstraint readConstraint(const XmlNode &node, const ReadContext &context);
 /// The `rtc:Constraint` element for a tree.
@@ -46,29 +43,11 @@ XmlNode constraintToXml(const RtcConstraint &constraint);
 
 namespace Profile::RtcXml {
 
-// Element builders of the writer, one per model struct (extras applied). The YAML reader uses
-// them to learn how many schema children an element gets, so that unknown YAML keys kept as
-// extra elements land after them.
-XmlNode toXml(const RtcBasicInfo &info);
-XmlNode toXml(const RtcActions &actions);
-XmlNode toXml(RtcAction action, const RtcActionStatus &status);
-XmlNode toXml(const RtcActionDoc &doc);
-XmlNode toXml(const RtcBasicDoc &doc);
-XmlNode toXml(const RtcConfiguration &configuration);
-XmlNode toXml(const RtcConfigurationDoc &doc);
-XmlNode toXml(const RtcDataPort &port);
-XmlNode toXml(const RtcDataPortDoc &doc);
-XmlNode toXml(const RtcEvent &event);
-XmlNode toXml(const RtcEventDoc &doc);
-XmlNode toXml(const RtcServicePort &port);
-XmlNode toXml(const RtcServicePortDoc &doc);
-XmlNode toXml(const RtcServiceInterface &interface);
-XmlNode toXml(const RtcServiceInterfaceDoc &doc);
-XmlNode toXml(const RtcTransMethod &method);
-XmlNode toXml(const RtcLanguage &language);
-XmlNode toXml(const RtcTargetEnvironment &target);
-XmlNode toXml(const RtcLibrary &library);
-XmlNode toXml(const RtcParameter &parameter);
+/// Gives `node` the attributes, child elements and extras the writer gives an element of this
+/// type (its name and xsi:type are the caller's). The YAML reader uses it to learn how many
+/// schema children an element gets, so that unknown YAML keys kept as extra elements land after
+/// them.
+template<typename T> void writeFields(XmlNode &node, const T &item);
 /// The `rtc:ConfigurationSet` element of a profile.
 XmlNode configurationSetToXml(const RtcProfile &profile);
 

@@ -20,9 +20,11 @@ QString tr(const char *text)
 
 /// How many schema children the XML writer gives the element of `value` (which has no extras
 /// yet): unknown YAML keys kept as elements go after them.
-template<typename... T> int schemaChildren(const T &...value)
+template<typename T> int schemaChildren(const T &value)
 {
-    return int(RtcXml::toXml(value...).children.size());
+    XmlNode node;
+    RtcXml::writeFields(node, value);
+    return int(node.children.size());
 }
 
 /// Records a required part the mapping lacks (under its XML name) and warns about it.
@@ -221,7 +223,7 @@ RtcActionStatus Reader::actionStatus(const YAML::Node &node)
         r.preCondition = d.scalar({"preCondition"});
         r.postCondition = d.scalar({"postCondition"});
     });
-    a.extras = m.extras(schemaChildren(RtcAction::OnInitialize, a));
+    a.extras = m.extras(schemaChildren(a));
     return a;
 }
 

@@ -2,8 +2,10 @@
 // RTC.xml reading and writing with self-written fixtures: every field, unknown content kept in
 // place, legacy spellings, missing required parts, broken files.
 #include "namespaces.h"
+#include "rtcfields_p.h"
 #include "rtcvalidator.h"
 #include "rtcxml.h"
+#include "tst_fieldtablesupport.h"
 #include "xmlequivalence.h"
 
 #include <QFile>
@@ -73,6 +75,33 @@ QString attributeOf(const XmlNode &node, const QString &ns, const QString &name)
 
 const QString Future = QStringLiteral("urn:example:future");
 
+/// Fills the RTC tables, their Special rows included.
+class RtcFiller : public FieldTableFiller<RtcFiller, Fields::RtcElement>
+{
+public:
+    /// The writers always write the current version.
+    void fillSpecial(RtcProfile &profile, const Fields::Special<Fields::RtcProfileVersion> &)
+    {
+        profile.version = RtcProfile::CurrentVersion;
+    }
+    void fillSpecial(RtcProfile &profile, const Fields::Special<Fields::RtcConfigurationSet> &)
+    {
+        for (int i = 0; i < 2; ++i)
+            fill(profile.configurations.emplace_back());
+    }
+    void fillSpecial(RtcActions &actions, const Fields::Special<Fields::RtcActionStatuses> &)
+    {
+        for (RtcAction action : rtcAllActions())
+            fill(actions[action].emplace());
+    }
+    template<typename T>
+    void fillSpecial(T &item, const Fields::Special<Fields::RtcConstraintTree> &)
+    {
+        item.constraint
+            = RtcConstraint::between(next(Fields::Style::Number), next(Fields::Style::Number));
+    }
+};
+
 } // namespace
 
 class TestRtcXml : public QObject
@@ -88,6 +117,7 @@ private slots:
     void readsServicePorts();
     void readsLanguageAndParameters();
     void roundTripIsLossless();
+    void everyTableFieldRoundTrips();
     void keepsUnknownContentInPlace();
     void keepsNarrowConfigurationType();
     void writesOpenRtpTypes();
@@ -355,6 +385,22 @@ void TestRtcXml::roundTripIsLossless()
     QVERIFY(original && written);
     const QString difference = xmlDifference(*original, *written);
     QVERIFY2(difference.isEmpty(), qPrintable(difference));
+}
+
+void TestRtcXml::everyTableFieldRoundTrips()
+{
+    RtcProfile profile;
+    RtcFiller filler;
+    filler.fill(profile);
+    // Every element type of the component is reached, each with several fields.
+    QVERIFY2(filler.scalarCount() > 300, qPrintable(QString::number(filler.scalarCount())));
+    QVERIFY(profile.actions[RtcAction::OnModeChanged] && profile.language
+            && profile.dataPorts.at(1).events.at(1).doc);
+
+    Diagnostics diagnostics;
+    const auto viaXml = readRtcXml(writeRtcXml(profile), QStringLiteral("table.xml"), &diagnostics);
+    QVERIFY2(viaXml && diagnostics.isEmpty(), qPrintable(errorsOf(diagnostics)));
+    QVERIFY(*viaXml == profile);
 }
 
 void TestRtcXml::keepsUnknownContentInPlace()

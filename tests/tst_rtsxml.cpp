@@ -3,6 +3,7 @@
 #include "rtsfields_p.h"
 #include "rtsxml.h"
 #include "rtsyaml.h"
+#include "tst_fieldtablesupport.h"
 #include "xmlequivalence.h"
 
 #include <QDateTime>
@@ -82,78 +83,9 @@ int indexOfChild(const XmlNode &node, const QString &ns, const QString &name)
     return -1;
 }
 
-/**
- * Gives every field of an element, as its field table lists it, a value of its own (lists get two
- * entries, optional children are present), down through the child elements' tables. A row added
- * to a table later is filled, and so checked, without touching the test.
- */
-class TableFiller
+/// The RTS tables have no Special rows.
+class RtsFiller : public FieldTableFiller<RtsFiller, Fields::RtsElement>
 {
-public:
-    template<typename T> void fill(T &item)
-    {
-        Fields::forEachRow(Fields::RtsElement<T>::fields,
-                           [&](const auto &row) { fillRow(item, row); });
-    }
-
-    int scalarCount() const { return m_count; }
-
-private:
-    QString next(Fields::Style style)
-    {
-        ++m_count;
-        switch (style) {
-        case Fields::Style::Number:
-            return QStringLiteral("%1.5").arg(m_count);
-        case Fields::Style::Boolean:
-            return booleanText(m_count % 2 == 0);
-        case Fields::Style::Date:
-            return QStringLiteral("2024-05-%1T10:20:%2.250+09:00")
-                .arg(m_count % 28 + 1, 2, 10, QLatin1Char('0'))
-                .arg(m_count % 60, 2, 10, QLatin1Char('0'));
-        case Fields::Style::Text:
-            break;
-        }
-        return QStringLiteral("value %1").arg(m_count);
-    }
-
-    template<typename T, typename Owner, typename Value>
-    void fillRow(T &item, const Fields::Scalar<Owner, Value> &row)
-    {
-        item.*row.member = next(row.style);
-    }
-
-    template<typename T, typename Owner, typename Item>
-    void fillRow(T &item, const Fields::Child<Owner, QList<Item>> &row)
-    {
-        for (int i = 0; i < 2; ++i)
-            fill((item.*row.member).emplace_back());
-    }
-
-    template<typename T, typename Owner, typename Item>
-    void fillRow(T &item, const Fields::Child<Owner, std::optional<Item>> &row)
-    {
-        fill((item.*row.member).emplace());
-    }
-
-    template<typename T, typename Owner, typename Item>
-    void fillRow(T &item, const Fields::Child<Owner, Item> &row)
-    {
-        fill(item.*row.member);
-    }
-
-    template<typename T, typename Owner> void fillRow(T &item, const Fields::TextList<Owner> &row)
-    {
-        item.*row.member = {next(Fields::Style::Text), next(Fields::Style::Text)};
-    }
-
-    template<typename T, typename... Rows>
-    void fillRow(T &item, const Fields::YamlGroup<Rows...> &group)
-    {
-        Fields::forEachRow(group.rows, [&](const auto &row) { fillRow(item, row); });
-    }
-
-    int m_count = 0;
 };
 
 } // namespace
@@ -482,7 +414,7 @@ void TestRtsXml::roundTrips()
 void TestRtsXml::everyTableFieldRoundTrips()
 {
     RtsProfile profile;
-    TableFiller filler;
+    RtsFiller filler;
     filler.fill(profile);
     // Every element type of the system is reached, each with several fields.
     QVERIFY2(filler.scalarCount() > 500, qPrintable(QString::number(filler.scalarCount())));
