@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Internal to the rtprofile library: the kinds of rows a profile element's field table is made of.
-// A table is a std::tuple of rows (see rtsfields_p.h); the XML and YAML readers and writers walk
-// it, so a field is described once for all four.
+// A table is a std::tuple of rows (see rtsfields_p.h and rtcfields_p.h); the XML and YAML readers
+// and writers walk it, so a field is described once for all four. What a row means in detail
+// (is a missing required field an error or a warning …) is each profile's walkers' business.
 
 #include "xmlextras.h"
 
@@ -10,6 +11,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <array>
 #include <optional>
 #include <tuple>
 #include <type_traits>
@@ -20,9 +22,12 @@ namespace Profile::Fields {
 enum class Style {
     Text, ///< quoted when a YAML reader would take it for something else
     Number, ///< plain when it is a number, quoted otherwise so that the text survives
-    Boolean, ///< always quoted ('true'/'false'), the way rtsprofile compares them
-    Date, ///< xs:dateTime; rtsprofile's YAML spells it as a {year, month, …} mapping
+    Boolean, ///< xs:boolean, written as the dialect writes booleans
+    Date, ///< xs:dateTime, which the YAML dialects spell as a {year, month, …} mapping
 };
+
+/// Other keys a YAML reader accepts for a row (old spellings); never written.
+using YamlLegacyKeys = std::array<const char *, 2>;
 
 /**
  * An attribute (XML) or scalar key (YAML). A `QString` member is required (readers report its
@@ -38,23 +43,39 @@ template<typename Owner, typename Value> struct Scalar
     const char *xmlName;
     const char *yamlKey;
     Style style = Style::Text;
-    /// Another spelling accepted on read, never written.
-    const char *legacyName = nullptr;
-    /// A second namespace the XML reader tries the legacy spelling in, after the row's own.
-    const QString *legacyNamespace = nullptr;
+    /// Another attribute name the XML reader accepts, never written.
+    const char *xmlLegacyName = nullptr;
+    /// A second namespace the XML reader tries the legacy name in, after the row's own.
+    const QString *xmlLegacyNamespace = nullptr;
+    YamlLegacyKeys yamlLegacyKeys {};
+    /// The value a YAML reader takes for an absent required key instead of reporting it (EMF
+    /// leaves out attributes at their default).
+    const char *yamlDefault = nullptr;
     /// Applied to the text read (e.g. a boolean's `1` becomes `true`).
     QString (*normalize)(const QString &) = nullptr;
 
-    constexpr Scalar withLegacyName(const char *name) const
+    constexpr Scalar withXmlLegacyName(const char *name) const
     {
         Scalar row = *this;
-        row.legacyName = name;
+        row.xmlLegacyName = name;
         return row;
     }
-    constexpr Scalar withLegacyName(const char *name, const QString &alsoInNamespace) const
+    constexpr Scalar withXmlLegacyName(const char *name, const QString &alsoInNamespace) const
     {
-        Scalar row = withLegacyName(name);
-        row.legacyNamespace = &alsoInNamespace;
+        Scalar row = withXmlLegacyName(name);
+        row.xmlLegacyNamespace = &alsoInNamespace;
+        return row;
+    }
+    constexpr Scalar withYamlLegacyKeys(const char *key, const char *another = nullptr) const
+    {
+        Scalar row = *this;
+        row.yamlLegacyKeys = {key, another};
+        return row;
+    }
+    constexpr Scalar withYamlDefault(const char *value) const
+    {
+        Scalar row = *this;
+        row.yamlDefault = value;
         return row;
     }
     constexpr Scalar normalizedBy(QString (*function)(const QString &)) const
@@ -81,10 +102,11 @@ template<typename Owner, typename Member> struct Child
     /// The xsi:type the writer gives the child element (the namespace is null when none).
     const QString *xsiTypeNamespace = nullptr;
     const char *xsiTypeName = nullptr;
-    /// For a required child: the YAML reader's message when it is missing, `%1` being the key;
-    /// marked with QT_TRANSLATE_NOOP in the reader's translation context.
+    /// For a required child: the RTS YAML reader's message when it is missing, `%1` being the
+    /// key; marked with QT_TRANSLATE_NOOP in the reader's translation context.
     const char *yamlMissing = nullptr;
     XmlPlace xmlPlace = XmlPlace::InOrder;
+    YamlLegacyKeys yamlLegacyKeys {};
 
     constexpr Child withXsiType(const QString &ns, const char *name) const
     {
@@ -105,6 +127,12 @@ template<typename Owner, typename Member> struct Child
         row.xmlPlace = XmlPlace::First;
         return row;
     }
+    constexpr Child withYamlLegacyKeys(const char *key, const char *another = nullptr) const
+    {
+        Child row = *this;
+        row.yamlLegacyKeys = {key, another};
+        return row;
+    }
 };
 
 /// Repeated text elements (XML) or a list of text (YAML).
@@ -114,13 +142,20 @@ template<typename Owner> struct TextList
     const QString *xmlNamespace;
     const char *xmlName;
     const char *yamlKey;
-    /// Another element name accepted on read; both kinds are kept in document order.
-    const char *legacyXmlName = nullptr;
+    /// Another element name the XML reader accepts, never written.
+    const char *xmlLegacyName = nullptr;
+    YamlLegacyKeys yamlLegacyKeys {};
 
-    constexpr TextList withLegacyXmlName(const char *name) const
+    constexpr TextList withXmlLegacyName(const char *name) const
     {
         TextList row = *this;
-        row.legacyXmlName = name;
+        row.xmlLegacyName = name;
+        return row;
+    }
+    constexpr TextList withYamlLegacyKeys(const char *key, const char *another = nullptr) const
+    {
+        TextList row = *this;
+        row.yamlLegacyKeys = {key, another};
         return row;
     }
 };

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Internal to the rtprofile library: the field table of each RTC Profile element, walked by the
-// XML reader and writer (rtcxmlreader.cpp, rtcxmlwriter.cpp). Adding a field to an element means
+// XML and YAML readers and writers (rtcxml*.cpp, rtcyaml*.cpp). Adding a field to an element means
 // adding its row here.
 //
-// Row order is the order the XML reader looks fields up in and the writer writes them (the
-// schema's). The YAML keys are those RTC Builder writes (its YAML dialect is still read and
-// written by rtcyamlreader.cpp / rtcyamlwriter.cpp on their own).
+// Row order is the order the readers look fields up in and the XML writer writes them (the
+// schema's); the YAML writer sorts keys by their local name, as RTC Builder does. The YAML keys
+// are those RTC Builder writes, the legacy ones those older files have.
 //
 // The RTC walkers differ from the RTS ones in how they treat a required field: a missing one is
 // a warning, its name is recorded in the element's `missing` list, and the writers leave it out
@@ -30,29 +30,32 @@ struct RtcConstraintTree; ///< rtc:Constraint, a recursive tree (rtcxmlconstrain
 
 template<typename Owner> constexpr auto rtcProperties(RtcProperties Owner::*member)
 {
-    return list(member, Ns::RtcExt, "Properties", "rtcExt::properties");
+    return list(member, Ns::RtcExt, "Properties", "rtcExt::properties")
+        .withYamlLegacyKeys("properties");
 }
 
 template<typename Owner, typename Doc> constexpr auto rtcDoc(std::optional<Doc> Owner::*member)
 {
-    return optionalElement(member, Ns::RtcDoc, "Doc", "rtcDoc::doc");
+    return optionalElement(member, Ns::RtcDoc, "Doc", "rtcDoc::doc").withYamlLegacyKeys("doc");
 }
 
 template<typename Owner> constexpr auto rtcComment(std::optional<QString> Owner::*member)
 {
-    return text(member, Ns::RtcExt, "comment", "rtcExt::comment");
+    return text(member, Ns::RtcExt, "comment", "rtcExt::comment").withYamlLegacyKeys("comment");
 }
 
 /// 0.2+ writes rtcExt:variableName; the 0.1 templates wrote varname in either namespace.
 template<typename Owner> constexpr auto rtcVariableName(std::optional<QString> Owner::*member)
 {
     return text(member, Ns::RtcExt, "variableName", "rtcExt::variableName")
-        .withLegacyName("varname", Ns::Rtc);
+        .withXmlLegacyName("varname", Ns::Rtc)
+        .withYamlLegacyKeys("variableName", "varname");
 }
 
 template<typename Owner> constexpr auto rtcPosition(QString Owner::*member)
 {
     return text(member, Ns::RtcExt, "position", "rtcExt::position")
+        .withYamlLegacyKeys("position")
         .normalizedBy(&RtcXml::normalizedPosition);
 }
 
@@ -98,11 +101,13 @@ template<> struct RtcElement<RtcBasicInfo>
         date(&RtcBasicInfo::creationDate, Ns::Rtc, "creationDate", "creationDate"),
         date(&RtcBasicInfo::updateDate, Ns::Rtc, "updateDate", "updateDate"),
         rtcComment(&RtcBasicInfo::comment),
-        text(&RtcBasicInfo::saveProject, Ns::RtcExt, "saveProject", "rtcExt::saveProject"),
+        text(&RtcBasicInfo::saveProject, Ns::RtcExt, "saveProject", "rtcExt::saveProject")
+            .withYamlLegacyKeys("saveProject"),
         rtcDoc(&RtcBasicInfo::doc),
         // Old EMF-era files spell the element VersionUpLog.
         textList(&RtcBasicInfo::versionUpLogs, Ns::RtcExt, "VersionUpLogs", "rtcExt::versionUpLogs")
-            .withLegacyXmlName("VersionUpLog"),
+            .withXmlLegacyName("VersionUpLog")
+            .withYamlLegacyKeys("versionUpLogs", "versionUpLog"),
         rtcProperties(&RtcBasicInfo::properties));
 };
 
@@ -117,7 +122,9 @@ template<> struct RtcElement<RtcActionDoc>
 template<> struct RtcElement<RtcActionStatus>
 {
     static constexpr auto fields = std::make_tuple(
-        boolean(&RtcActionStatus::implemented, Ns::Rtc, "implemented", "implemented"),
+        // EMF leaves out attributes at their default, so a YAML file without it means false.
+        boolean(&RtcActionStatus::implemented, Ns::Rtc, "implemented", "implemented")
+            .withYamlDefault("false"),
         rtcDoc(&RtcActionStatus::doc));
 };
 
@@ -186,11 +193,14 @@ template<> struct RtcElement<RtcDataPort>
         text(&RtcDataPort::interfaceType, Ns::Rtc, "interfaceType", "interfaceType"),
         text(&RtcDataPort::dataflowType, Ns::Rtc, "dataflowType", "dataflowType"),
         text(&RtcDataPort::subscriptionType, Ns::Rtc, "subscriptionType", "subscriptionType")
-            .withLegacyName("subscriprionType"),
+            .withXmlLegacyName("subscriprionType")
+            .withYamlLegacyKeys("subscriprionType"),
         text(&RtcDataPort::unit, Ns::Rtc, "unit", "unit"), rtcPosition(&RtcDataPort::position),
         rtcVariableName(&RtcDataPort::variableName), rtcComment(&RtcDataPort::comment),
         special<RtcConstraintTree>(),
-        list(&RtcDataPort::events, Ns::Rtc, "Event", "event").withXsiType(Ns::RtcDoc, "event_doc"),
+        list(&RtcDataPort::events, Ns::Rtc, "Event", "event")
+            .withXsiType(Ns::RtcDoc, "event_doc")
+            .withYamlLegacyKeys("events"),
         rtcDoc(&RtcDataPort::doc), rtcProperties(&RtcDataPort::properties));
 };
 
@@ -238,7 +248,8 @@ template<> struct RtcElement<RtcServicePort>
         text(&RtcServicePort::name, Ns::Rtc, "name", "name"),
         rtcPosition(&RtcServicePort::position), rtcComment(&RtcServicePort::comment),
         list(&RtcServicePort::interfaces, Ns::Rtc, "ServiceInterface", "serviceInterface")
-            .withXsiType(Ns::RtcExt, "serviceinterface_ext"),
+            .withXsiType(Ns::RtcExt, "serviceinterface_ext")
+            .withYamlLegacyKeys("serviceInterfaces"),
         list(&RtcServicePort::transMethods, Ns::Rtc, "TransMethods", "transMethods"),
         rtcDoc(&RtcServicePort::doc), rtcProperties(&RtcServicePort::properties));
 };
@@ -251,23 +262,31 @@ template<> struct RtcElement<RtcLibrary>
                           text(&RtcLibrary::other, Ns::RtcExt, "other", "other"));
 };
 
+// RTC Builder writes the target environment's keys without the rtcExt prefix; some files have it.
 template<> struct RtcElement<RtcTargetEnvironment>
 {
     static constexpr auto fields = std::make_tuple(
-        text(&RtcTargetEnvironment::langVersion, Ns::RtcExt, "langVersion", "langVersion"),
-        text(&RtcTargetEnvironment::os, Ns::RtcExt, "os", "os"),
-        text(&RtcTargetEnvironment::other, Ns::RtcExt, "other", "other"),
-        text(&RtcTargetEnvironment::cpuOther, Ns::RtcExt, "cpuOther", "cpuOther"),
-        textList(&RtcTargetEnvironment::osVersions, Ns::RtcExt, "osVersions", "osVersions"),
-        textList(&RtcTargetEnvironment::cpus, Ns::RtcExt, "cpus", "cpus"),
-        list(&RtcTargetEnvironment::libraries, Ns::RtcExt, "libraries", "libraries"));
+        text(&RtcTargetEnvironment::langVersion, Ns::RtcExt, "langVersion", "langVersion")
+            .withYamlLegacyKeys("rtcExt::langVersion"),
+        text(&RtcTargetEnvironment::os, Ns::RtcExt, "os", "os").withYamlLegacyKeys("rtcExt::os"),
+        text(&RtcTargetEnvironment::other, Ns::RtcExt, "other", "other")
+            .withYamlLegacyKeys("rtcExt::other"),
+        text(&RtcTargetEnvironment::cpuOther, Ns::RtcExt, "cpuOther", "cpuOther")
+            .withYamlLegacyKeys("rtcExt::cpuOther"),
+        textList(&RtcTargetEnvironment::osVersions, Ns::RtcExt, "osVersions", "osVersions")
+            .withYamlLegacyKeys("rtcExt::osVersions"),
+        textList(&RtcTargetEnvironment::cpus, Ns::RtcExt, "cpus", "cpus")
+            .withYamlLegacyKeys("rtcExt::cpus"),
+        list(&RtcTargetEnvironment::libraries, Ns::RtcExt, "libraries", "libraries")
+            .withYamlLegacyKeys("rtcExt::libraries"));
 };
 
 template<> struct RtcElement<RtcLanguage>
 {
     static constexpr auto fields
         = std::make_tuple(text(&RtcLanguage::kind, Ns::Rtc, "kind", "kind"),
-                          list(&RtcLanguage::targets, Ns::RtcExt, "targets", "rtcExt::targets"),
+                          list(&RtcLanguage::targets, Ns::RtcExt, "targets", "rtcExt::targets")
+                              .withYamlLegacyKeys("targets"),
                           rtcProperties(&RtcLanguage::properties));
 };
 

@@ -53,11 +53,11 @@ private:
     {
         const QString name = s(row.xmlName);
         QStringList legacy;
-        if (row.legacyName)
-            legacy.append(s(row.legacyName));
+        if (row.xmlLegacyName)
+            legacy.append(s(row.xmlLegacyName));
         std::optional<QString> value = r.attribute(*row.xmlNamespace, name, legacy);
-        if (!value && row.legacyNamespace)
-            value = r.attribute(*row.legacyNamespace, s(row.legacyName));
+        if (!value && row.xmlLegacyNamespace)
+            value = r.attribute(*row.xmlLegacyNamespace, s(row.xmlLegacyName));
         if constexpr (Fields::Scalar<Owner, Value>::required) {
             if (!value)
                 value = requiredAttribute(r, *row.xmlNamespace, name, item.missing);
@@ -108,7 +108,7 @@ private:
     template<typename T, typename Owner>
     void readChildren(NodeReader &r, T &item, const Fields::TextList<Owner> &row) const
     {
-        for (const char *name : {row.xmlName, row.legacyXmlName}) {
+        for (const char *name : {row.xmlName, row.xmlLegacyName}) {
             if (!name)
                 continue;
             for (const XmlNode *child : r.children(*row.xmlNamespace, s(name)))

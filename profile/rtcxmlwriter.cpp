@@ -147,17 +147,29 @@ template<typename T> void writeFields(XmlNode &node, const T &item)
     item.extras.applyTo(node);
 }
 
-// The YAML reader counts the children of these to place unknown keys after them.
+// The YAML reader counts the children of each element type to place unknown keys after them.
+template void writeFields(XmlNode &, const RtcProfile &);
+template void writeFields(XmlNode &, const RtcProperty &);
 template void writeFields(XmlNode &, const RtcBasicInfo &);
+template void writeFields(XmlNode &, const RtcBasicDoc &);
 template void writeFields(XmlNode &, const RtcActions &);
 template void writeFields(XmlNode &, const RtcActionStatus &);
+template void writeFields(XmlNode &, const RtcActionDoc &);
 template void writeFields(XmlNode &, const RtcConfiguration &);
+template void writeFields(XmlNode &, const RtcConfigurationDoc &);
 template void writeFields(XmlNode &, const RtcDataPort &);
+template void writeFields(XmlNode &, const RtcDataPortDoc &);
 template void writeFields(XmlNode &, const RtcEvent &);
+template void writeFields(XmlNode &, const RtcEventDoc &);
 template void writeFields(XmlNode &, const RtcServicePort &);
+template void writeFields(XmlNode &, const RtcServicePortDoc &);
 template void writeFields(XmlNode &, const RtcServiceInterface &);
+template void writeFields(XmlNode &, const RtcServiceInterfaceDoc &);
+template void writeFields(XmlNode &, const RtcTransMethod &);
 template void writeFields(XmlNode &, const RtcLanguage &);
 template void writeFields(XmlNode &, const RtcTargetEnvironment &);
+template void writeFields(XmlNode &, const RtcLibrary &);
+template void writeFields(XmlNode &, const RtcParameter &);
 
 XmlNode configurationSetToXml(const RtcProfile &profile)
 {

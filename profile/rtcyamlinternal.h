@@ -8,6 +8,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,24 @@ private:
 /// The 1-based position of a node (invalid for nodes without a mark).
 SourceLocation locationOf(const YAML::Node &node);
 
+/// The keys one value may be found under: the dialect's spelling first, then older ones.
+class Keys
+{
+public:
+    Keys(std::initializer_list<const char *> keys);
+    /// `key`, then those of `legacy` that are not null.
+    Keys(const char *key, const std::array<const char *, 2> &legacy);
+
+    const char *const *begin() const { return m_keys.data(); }
+    const char *const *end() const { return m_keys.data() + m_count; }
+
+private:
+    void append(const char *key);
+
+    std::array<const char *, 4> m_keys {};
+    std::size_t m_count = 0;
+};
+
 /**
  * The YAML counterpart of NodeReader: takes the values of one mapping by key (trying the
  * dialect's alternative spellings), checks their kind, and remembers what was taken so that the
@@ -56,20 +75,19 @@ public:
     Context &context() const { return m_context; }
 
     /// The value of the first present key among `keys` (consumed); nothing when none is there.
-    std::optional<YAML::Node> take(std::initializer_list<const char *> keys);
+    std::optional<YAML::Node> take(const Keys &keys);
     /// A scalar; nothing when absent or null (an error when it is a mapping or a sequence).
-    std::optional<QString> scalar(std::initializer_list<const char *> keys);
+    std::optional<QString> scalar(const Keys &keys);
     /// A required scalar; when absent a warning, the schema name (the first key without its
     /// `rtcExt::` prefix, or `schemaName`) recorded in `missing`, and "".
-    QString required(std::initializer_list<const char *> keys, RtcMissing &missing,
-                     const char *schemaName = nullptr);
+    QString required(const Keys &keys, RtcMissing &missing, const char *schemaName = nullptr);
     /// A mapping value; a null value counts as an empty mapping; nothing when absent (or, with
     /// an error, when it is not a mapping).
-    std::optional<YAML::Node> map(std::initializer_list<const char *> keys);
+    std::optional<YAML::Node> map(const Keys &keys);
     /// The items of a sequence value; a single mapping counts as a one-item list.
-    std::vector<YAML::Node> list(std::initializer_list<const char *> keys);
+    std::vector<YAML::Node> list(const Keys &keys);
     /// A sequence of scalars.
-    QStringList scalarList(std::initializer_list<const char *> keys);
+    QStringList scalarList(const Keys &keys);
 
     /// Keys not taken, as XmlExtras: scalars become attributes, mappings and sequences child
     /// elements placed after `schemaChildCount` children (where the XML writer puts them last).
@@ -83,7 +101,7 @@ private:
         bool used = false;
     };
 
-    Entry *find(std::initializer_list<const char *> keys);
+    Entry *find(const Keys &keys);
 
     YAML::Node m_node;
     Context &m_context;

@@ -286,7 +286,29 @@ MapReader::MapReader(const YAML::Node &node, Context &context)
     }
 }
 
-MapReader::Entry *MapReader::find(std::initializer_list<const char *> keys)
+Keys::Keys(std::initializer_list<const char *> keys)
+{
+    for (const char *key : keys)
+        append(key);
+}
+
+Keys::Keys(const char *key, const std::array<const char *, 2> &legacy)
+{
+    append(key);
+    for (const char *other : legacy) {
+        if (other)
+            append(other);
+    }
+}
+
+void Keys::append(const char *key)
+{
+    Q_ASSERT(m_count < m_keys.size());
+    if (m_count < m_keys.size())
+        m_keys[m_count++] = key;
+}
+
+MapReader::Entry *MapReader::find(const Keys &keys)
 {
     for (const char *key : keys) {
         for (Entry &entry : m_entries) {
@@ -297,7 +319,7 @@ MapReader::Entry *MapReader::find(std::initializer_list<const char *> keys)
     return nullptr;
 }
 
-std::optional<YAML::Node> MapReader::take(std::initializer_list<const char *> keys)
+std::optional<YAML::Node> MapReader::take(const Keys &keys)
 {
     Entry *entry = find(keys);
     if (!entry)
@@ -306,7 +328,7 @@ std::optional<YAML::Node> MapReader::take(std::initializer_list<const char *> ke
     return entry->value;
 }
 
-std::optional<QString> MapReader::scalar(std::initializer_list<const char *> keys)
+std::optional<QString> MapReader::scalar(const Keys &keys)
 {
     const auto value = take(keys);
     if (!value || value->IsNull())
@@ -320,8 +342,7 @@ std::optional<QString> MapReader::scalar(std::initializer_list<const char *> key
     return fromStd(value->Scalar());
 }
 
-QString MapReader::required(std::initializer_list<const char *> keys, RtcMissing &missing,
-                            const char *schemaName)
+QString MapReader::required(const Keys &keys, RtcMissing &missing, const char *schemaName)
 {
     if (auto value = scalar(keys))
         return *value;
@@ -332,7 +353,7 @@ QString MapReader::required(std::initializer_list<const char *> keys, RtcMissing
     return {};
 }
 
-std::optional<YAML::Node> MapReader::map(std::initializer_list<const char *> keys)
+std::optional<YAML::Node> MapReader::map(const Keys &keys)
 {
     const auto value = take(keys);
     if (!value)
@@ -348,7 +369,7 @@ std::optional<YAML::Node> MapReader::map(std::initializer_list<const char *> key
     return value;
 }
 
-std::vector<YAML::Node> MapReader::list(std::initializer_list<const char *> keys)
+std::vector<YAML::Node> MapReader::list(const Keys &keys)
 {
     const auto value = take(keys);
     if (!value || value->IsNull())
@@ -363,7 +384,7 @@ std::vector<YAML::Node> MapReader::list(std::initializer_list<const char *> keys
     return std::vector<YAML::Node>(value->begin(), value->end());
 }
 
-QStringList MapReader::scalarList(std::initializer_list<const char *> keys)
+QStringList MapReader::scalarList(const Keys &keys)
 {
     QStringList result;
     const auto value = take(keys);

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: MIT
+// Writes RTC Builder's YAML dialect through the field tables; constraint trees have code of their
+// own. The emitter sorts each mapping's keys by their local name, as RTC Builder does.
+#include "rtcfields_p.h"
 #include "rtcyaml.h"
 #include "rtcyamlinternal.h"
 
@@ -13,37 +16,19 @@ QString s(const char *text)
     return QString::fromLatin1(text);
 }
 
-Value propertiesValue(const RtcProperties &properties)
+Value scalarValue(Fields::Style style, const QString &text)
 {
-    Value list = Value::sequence();
-    for (const RtcProperty &property : properties) {
-        Value item;
-        item.setRequired(s("name"), property.name, property.missing);
-        item.set(s("value"), property.value);
-        item.addExtras(property.extras);
-        list.items.push_back(item);
+    switch (style) {
+    case Fields::Style::Number:
+        return Value::number(text);
+    case Fields::Style::Boolean:
+        return Value::boolean(text);
+    case Fields::Style::Date:
+        return dateValue(text);
+    case Fields::Style::Text:
+        break;
     }
-    return list;
-}
-
-void setProperties(Value &value, const RtcProperties &properties)
-{
-    if (!properties.isEmpty())
-        value.set(s("rtcExt::properties"), propertiesValue(properties));
-}
-
-/// `"rtcDoc::doc"` with the given attributes (name → value) and extras.
-template<typename Doc>
-void setDoc(Value &value, const std::optional<Doc> &doc,
-            std::initializer_list<std::pair<const char *, std::optional<QString>>> fields)
-{
-    if (!doc)
-        return;
-    Value d;
-    for (const auto &field : fields)
-        d.set(s(field.first), field.second);
-    d.addExtras(doc->extras);
-    value.set(s("rtcDoc::doc"), d);
+    return Value::string(text);
 }
 
 Value constraintValue(const RtcConstraint &c);
@@ -121,288 +106,101 @@ Value constraintValue(const RtcConstraint &c)
     return v;
 }
 
-Value basicInfoValue(const RtcBasicInfo &b)
-{
-    Value v;
-    const RtcMissing &m = b.missing;
-    v.setRequired(s("name"), b.name, m);
-    v.setRequired(s("componentType"), b.componentType, m);
-    v.setRequired(s("activityType"), b.activityType, m);
-    v.setRequired(s("componentKind"), b.componentKind, m);
-    v.set(s("rtcType"), b.rtcType);
-    v.setRequired(s("category"), b.category, m);
-    v.set(s("description"), b.description);
-    if (b.executionRate)
-        v.set(s("executionRate"), Value::number(*b.executionRate));
-    v.setRequired(s("executionType"), b.executionType, m);
-    if (b.maxInstances)
-        v.set(s("maxInstances"), Value::number(*b.maxInstances));
-    v.setRequired(s("vendor"), b.vendor, m);
-    v.setRequired(s("version"), b.version, m);
-    v.set(s("abstract"), b.abstractText);
-    v.set(s("hardwareProfile"), b.hardwareProfile);
-    if (!(b.creationDate.isEmpty() && m.contains(s("creationDate"))))
-        v.set(s("creationDate"), dateValue(b.creationDate));
-    if (!(b.updateDate.isEmpty() && m.contains(s("updateDate"))))
-        v.set(s("updateDate"), dateValue(b.updateDate));
-    v.set(s("rtcExt::comment"), b.comment);
-    v.set(s("rtcExt::saveProject"), b.saveProject);
-    setDoc(v, b.doc,
-           {{"description", b.doc ? b.doc->description : std::nullopt},
-            {"inout", b.doc ? b.doc->inout : std::nullopt},
-            {"algorithm", b.doc ? b.doc->algorithm : std::nullopt},
-            {"creator", b.doc ? b.doc->creator : std::nullopt},
-            {"license", b.doc ? b.doc->license : std::nullopt},
-            {"reference", b.doc ? b.doc->reference : std::nullopt}});
-    if (!b.versionUpLogs.isEmpty())
-        v.set(s("rtcExt::versionUpLogs"), Value::stringList(b.versionUpLogs));
-    setProperties(v, b.properties);
-    v.addExtras(b.extras);
-    return v;
-}
+template<typename T> Value elementValue(const T &item);
 
-Value actionsValue(const RtcActions &actions)
+template<typename T, typename Owner, typename Text>
+void writeRow(Value &value, const T &item, const Fields::Scalar<Owner, Text> &row)
 {
-    Value v;
-    for (RtcAction action : rtcAllActions()) {
-        const auto &status = actions[action];
-        if (!status)
-            continue;
-        Value a;
-        if (!(status->implemented.isEmpty() && status->missing.contains(s("implemented"))))
-            a.set(s("implemented"), Value::boolean(status->implemented));
-        const auto &doc = status->doc;
-        setDoc(a, doc,
-               {{"description", doc ? doc->description : std::nullopt},
-                {"preCondition", doc ? doc->preCondition : std::nullopt},
-                {"postCondition", doc ? doc->postCondition : std::nullopt}});
-        a.addExtras(status->extras);
-        v.set(rtcActionKey(action), a);
+    const QString key = s(row.yamlKey);
+    if constexpr (Fields::Scalar<Owner, Text>::required) {
+        const QString &text = item.*row.member;
+        // A required part the source lacked stays out while it is still empty.
+        if (text.isEmpty() && item.missing.contains(s(row.xmlName)))
+            return;
+        value.set(key, scalarValue(row.style, text));
+    } else if (const std::optional<QString> &text = item.*row.member) {
+        value.set(key, scalarValue(row.style, *text));
     }
-    v.addExtras(actions.extras);
-    return v;
 }
 
-Value configurationValue(const RtcConfiguration &c)
+template<typename T, typename Owner, typename Item>
+void writeRow(Value &value, const T &item, const Fields::Child<Owner, QList<Item>> &row)
 {
-    Value v;
-    v.setRequired(s("name"), c.name, c.missing);
-    v.setRequired(s("type"), c.type, c.missing);
-    v.setRequired(s("defaultValue"), c.defaultValue, c.missing);
-    v.set(s("unit"), c.unit);
-    v.set(s("rtcExt::variableName"), c.variableName);
-    v.set(s("rtcExt::comment"), c.comment);
-    if (c.constraint)
-        v.set(s("constraint"), constraintValue(*c.constraint));
-    const auto &doc = c.doc;
-    setDoc(v, doc,
-           {{"dataname", doc ? doc->dataname : std::nullopt},
-            {"defaultValue", doc ? doc->defaultValue : std::nullopt},
-            {"description", doc ? doc->description : std::nullopt},
-            {"unit", doc ? doc->unit : std::nullopt},
-            {"range", doc ? doc->range : std::nullopt},
-            {"constraint", doc ? doc->constraint : std::nullopt}});
-    setProperties(v, c.properties);
-    v.addExtras(c.extras);
-    return v;
-}
-
-Value eventValue(const RtcEvent &e)
-{
-    Value v;
-    v.setRequired(s("name"), e.name, e.missing);
-    v.set(s("condition"), e.condition);
-    v.setRequired(s("source"), e.source, e.missing);
-    v.setRequired(s("target"), e.target, e.missing);
-    v.set(s("type"), e.type);
-    const auto &doc = e.doc;
-    setDoc(v, doc,
-           {{"description", doc ? doc->description : std::nullopt},
-            {"type", doc ? doc->type : std::nullopt},
-            {"number", doc ? doc->number : std::nullopt},
-            {"semantics", doc ? doc->semantics : std::nullopt},
-            {"unit", doc ? doc->unit : std::nullopt},
-            {"operation", doc ? doc->operation : std::nullopt}});
-    v.addExtras(e.extras);
-    return v;
-}
-
-Value dataPortValue(const RtcDataPort &p)
-{
-    Value v;
-    v.setRequired(s("portType"), p.portType, p.missing);
-    v.setRequired(s("name"), p.name, p.missing);
-    v.setRequired(s("type"), p.type, p.missing);
-    v.set(s("idlFile"), p.idlFile);
-    v.set(s("interfaceType"), p.interfaceType);
-    v.set(s("dataflowType"), p.dataflowType);
-    v.set(s("subscriptionType"), p.subscriptionType);
-    v.set(s("unit"), p.unit);
-    v.setRequired(s("rtcExt::position"), p.position, p.missing);
-    v.set(s("rtcExt::variableName"), p.variableName);
-    v.set(s("rtcExt::comment"), p.comment);
-    if (p.constraint)
-        v.set(s("constraint"), constraintValue(*p.constraint));
-    if (!p.events.isEmpty()) {
-        Value events = Value::sequence();
-        for (const RtcEvent &event : p.events)
-            events.items.push_back(eventValue(event));
-        v.set(s("event"), events);
-    }
-    const auto &doc = p.doc;
-    setDoc(v, doc,
-           {{"description", doc ? doc->description : std::nullopt},
-            {"type", doc ? doc->type : std::nullopt},
-            {"number", doc ? doc->number : std::nullopt},
-            {"semantics", doc ? doc->semantics : std::nullopt},
-            {"unit", doc ? doc->unit : std::nullopt},
-            {"occerrence", doc ? doc->occerrence : std::nullopt},
-            {"operation", doc ? doc->operation : std::nullopt}});
-    setProperties(v, p.properties);
-    v.addExtras(p.extras);
-    return v;
-}
-
-Value serviceInterfaceValue(const RtcServiceInterface &i)
-{
-    Value v;
-    v.setRequired(s("name"), i.name, i.missing);
-    v.setRequired(s("direction"), i.direction, i.missing);
-    v.set(s("instanceName"), i.instanceName);
-    v.set(s("idlFile"), i.idlFile);
-    v.setRequired(s("type"), i.type, i.missing);
-    v.set(s("path"), i.path);
-    v.set(s("rtcExt::variableName"), i.variableName);
-    v.set(s("rtcExt::comment"), i.comment);
-    const auto &doc = i.doc;
-    setDoc(v, doc,
-           {{"description", doc ? doc->description : std::nullopt},
-            {"docArgument", doc ? doc->docArgument : std::nullopt},
-            {"docReturn", doc ? doc->docReturn : std::nullopt},
-            {"docException", doc ? doc->docException : std::nullopt},
-            {"docPreCondition", doc ? doc->docPreCondition : std::nullopt},
-            {"docPostCondition", doc ? doc->docPostCondition : std::nullopt}});
-    setProperties(v, i.properties);
-    v.addExtras(i.extras);
-    return v;
-}
-
-Value servicePortValue(const RtcServicePort &p)
-{
-    Value v;
-    v.setRequired(s("name"), p.name, p.missing);
-    v.setRequired(s("rtcExt::position"), p.position, p.missing);
-    v.set(s("rtcExt::comment"), p.comment);
-    if (!p.interfaces.isEmpty()) {
-        Value interfaces = Value::sequence();
-        for (const RtcServiceInterface &interface : p.interfaces)
-            interfaces.items.push_back(serviceInterfaceValue(interface));
-        v.set(s("serviceInterface"), interfaces);
-    }
-    if (!p.transMethods.isEmpty()) {
-        Value methods = Value::sequence();
-        for (const RtcTransMethod &method : p.transMethods) {
-            Value m;
-            m.setRequired(s("kind"), method.kind, method.missing);
-            m.addExtras(method.extras);
-            methods.items.push_back(m);
-        }
-        v.set(s("transMethods"), methods);
-    }
-    const auto &doc = p.doc;
-    setDoc(v, doc,
-           {{"description", doc ? doc->description : std::nullopt},
-            {"ifdescription", doc ? doc->ifdescription : std::nullopt}});
-    setProperties(v, p.properties);
-    v.addExtras(p.extras);
-    return v;
-}
-
-Value targetValue(const RtcTargetEnvironment &t)
-{
-    Value v;
-    v.set(s("langVersion"), t.langVersion);
-    v.set(s("os"), t.os);
-    v.set(s("other"), t.other);
-    v.set(s("cpuOther"), t.cpuOther);
-    if (!t.osVersions.isEmpty())
-        v.set(s("osVersions"), Value::stringList(t.osVersions));
-    if (!t.cpus.isEmpty())
-        v.set(s("cpus"), Value::stringList(t.cpus));
-    if (!t.libraries.isEmpty()) {
-        Value libraries = Value::sequence();
-        for (const RtcLibrary &library : t.libraries) {
-            Value l;
-            l.setRequired(s("name"), library.name, library.missing);
-            l.set(s("version"), library.version);
-            l.set(s("other"), library.other);
-            l.addExtras(library.extras);
-            libraries.items.push_back(l);
-        }
-        v.set(s("libraries"), libraries);
-    }
-    v.addExtras(t.extras);
-    return v;
-}
-
-Value languageValue(const RtcLanguage &l)
-{
-    Value v;
-    v.setRequired(s("kind"), l.kind, l.missing);
-    if (!l.targets.isEmpty()) {
-        Value targets = Value::sequence();
-        for (const RtcTargetEnvironment &target : l.targets)
-            targets.items.push_back(targetValue(target));
-        v.set(s("rtcExt::targets"), targets);
-    }
-    setProperties(v, l.properties);
-    v.addExtras(l.extras);
-    return v;
-}
-
-template<typename T, typename F>
-void setList(Value &value, const char *key, const QList<T> &items, F convert)
-{
+    const QList<Item> &items = item.*row.member;
     if (items.isEmpty())
         return;
     Value list = Value::sequence();
-    for (const T &item : items)
-        list.items.push_back(convert(item));
-    value.set(s(key), list);
+    for (const Item &child : items)
+        list.items.push_back(elementValue(child));
+    value.set(s(row.yamlKey), list);
 }
 
-Value profileValue(const RtcProfile &p)
+template<typename T, typename Owner, typename Item>
+void writeRow(Value &value, const T &item, const Fields::Child<Owner, std::optional<Item>> &row)
 {
-    Value v;
-    v.setRequired(s("id"), p.id, p.missing);
-    v.set(s("version"), Value::string(RtcProfile::CurrentVersion));
-    if (!(p.missing.contains(s("BasicInfo")) && p.basicInfo == RtcBasicInfo()))
-        v.set(s("basicInfo"), basicInfoValue(p.basicInfo));
-    if (!p.missing.contains(s("Actions")) || p.actions != RtcActions())
-        v.set(s("actions"), actionsValue(p.actions));
-    if (p.hasConfigurationSet || !p.configurations.isEmpty()
-        || !p.configurationSetExtras.isEmpty()) {
-        Value set;
-        Value list = Value::sequence();
-        for (const RtcConfiguration &c : p.configurations)
-            list.items.push_back(configurationValue(c));
-        set.set(s("configuration"), list);
-        set.addExtras(p.configurationSetExtras);
-        v.set(s("configurationSet"), set);
+    if (const std::optional<Item> &child = item.*row.member)
+        value.set(s(row.yamlKey), elementValue(*child));
+}
+
+template<typename T, typename Owner, typename Item>
+void writeRow(Value &value, const T &item, const Fields::Child<Owner, Item> &row)
+{
+    const Item &child = item.*row.member;
+    if (!(item.missing.contains(s(row.xmlName)) && child == Item()))
+        value.set(s(row.yamlKey), elementValue(child));
+}
+
+template<typename T, typename Owner>
+void writeRow(Value &value, const T &item, const Fields::TextList<Owner> &row)
+{
+    if (!(item.*row.member).isEmpty())
+        value.set(s(row.yamlKey), Value::stringList(item.*row.member));
+}
+
+/// Saving upgrades the file to the current format, as RTC Builder does.
+void writeRow(Value &value, const RtcProfile &, const Fields::Special<Fields::RtcProfileVersion> &)
+{
+    value.set(s("version"), Value::string(RtcProfile::CurrentVersion));
+}
+
+void writeRow(Value &value, const RtcProfile &p,
+              const Fields::Special<Fields::RtcConfigurationSet> &)
+{
+    if (!p.hasConfigurationSet && p.configurations.isEmpty() && p.configurationSetExtras.isEmpty())
+        return;
+    Value set;
+    Value list = Value::sequence();
+    for (const RtcConfiguration &c : p.configurations)
+        list.items.push_back(elementValue(c));
+    set.set(s("configuration"), list);
+    set.addExtras(p.configurationSetExtras);
+    value.set(s("configurationSet"), set);
+}
+
+void writeRow(Value &value, const RtcActions &actions,
+              const Fields::Special<Fields::RtcActionStatuses> &)
+{
+    for (RtcAction action : rtcAllActions()) {
+        if (const auto &status = actions[action])
+            value.set(rtcActionKey(action), elementValue(*status));
     }
-    setList(v, "dataPorts", p.dataPorts, dataPortValue);
-    setList(v, "servicePorts", p.servicePorts, servicePortValue);
-    setList(v, "parameters", p.parameters, [](const RtcParameter &parameter) {
-        Value item;
-        item.setRequired(s("name"), parameter.name, parameter.missing);
-        item.set(s("defaultValue"), parameter.defaultValue);
-        item.addExtras(parameter.extras);
-        return item;
-    });
-    if (p.language)
-        v.set(s("language"), languageValue(*p.language));
-    v.addExtras(p.extras);
-    return v;
+}
+
+template<typename T>
+void writeRow(Value &value, const T &item, const Fields::Special<Fields::RtcConstraintTree> &)
+{
+    if (item.constraint)
+        value.set(s("constraint"), constraintValue(*item.constraint));
+}
+
+/// The keys of the table's rows (RTC Builder's order comes from sorting them), then the extras.
+template<typename T> Value elementValue(const T &item)
+{
+    Value value;
+    Fields::forEachRow(Fields::RtcElement<T>::fields,
+                       [&](const auto &row) { writeRow(value, item, row); });
+    value.addExtras(item.extras);
+    return value;
 }
 
 } // namespace
@@ -410,7 +208,7 @@ Value profileValue(const RtcProfile &p)
 QByteArray writeRtcYaml(const RtcProfile &profile)
 {
     Value root;
-    root.set(s("rtcProfile"), profileValue(profile));
+    root.set(s("rtcProfile"), elementValue(profile));
     return emitDocument(root);
 }
 

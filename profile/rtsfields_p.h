@@ -9,7 +9,8 @@
 // type's) and child rows marked firstInXml() before the others, as the schema wants.
 //
 // Every element also has `extras`, `yamlExtras` and `location`, which the walkers fill
-// themselves.
+// themselves. The RTS YAML reader knows legacy keys (withYamlLegacyKeys) on scalar rows only, and
+// tries them before the schema's key.
 
 #include "fieldtable_p.h"
 #include "namespaces.h"
@@ -165,8 +166,10 @@ template<> struct RtsElement<RtsComponent>
 template<> struct RtsElement<RtsGroup>
 {
     static constexpr auto fields = std::make_tuple(
-        // rtsprofile writes groupID.
-        text(&RtsGroup::groupId, Ns::Rts, "groupId", "groupId").withLegacyName("groupID"),
+        // rtsprofile writes groupID (a converted YAML file may carry it too).
+        text(&RtsGroup::groupId, Ns::Rts, "groupId", "groupId")
+            .withXmlLegacyName("groupID")
+            .withYamlLegacyKeys("groupID"),
         targetComponents(&RtsGroup::members, "Members", "members"));
 };
 
@@ -268,7 +271,7 @@ template<> struct RtsElement<RtsProfile>
         optionalElement(&RtsProfile::initializing, Ns::Rts, "Initializing", "initializing"),
         optionalElement(&RtsProfile::finalizing, Ns::Rts, "Finalizing", "finalizing"),
         textList(&RtsProfile::versionUpLogs, Ns::RtsExt, "VersionUpLogs", "rtsExt::versionUpLogs")
-            .withLegacyXmlName("VersionUpLog"),
+            .withXmlLegacyName("VersionUpLog"),
         properties(&RtsProfile::properties),
         list(&RtsProfile::systems, Ns::RtsExt, "Systems", "rtsExt::systems"));
 };

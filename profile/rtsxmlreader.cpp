@@ -114,8 +114,8 @@ private:
     {
         const QString name = rtsName(row.xmlName);
         QStringList legacy;
-        if (row.legacyName)
-            legacy.append(rtsName(row.legacyName));
+        if (row.xmlLegacyName)
+            legacy.append(rtsName(row.xmlLegacyName));
         Value value;
         if constexpr (Fields::Scalar<Owner, Value>::required)
             value = r.required(*row.xmlNamespace, name, legacy);
@@ -172,8 +172,8 @@ private:
     void readChildren(NodeReader &r, T &item, const Fields::TextList<Owner> &row)
     {
         std::vector<const XmlNode *> nodes = r.children(*row.xmlNamespace, rtsName(row.xmlName));
-        if (row.legacyXmlName) {
-            const auto legacy = r.children(*row.xmlNamespace, rtsName(row.legacyXmlName));
+        if (row.xmlLegacyName) {
+            const auto legacy = r.children(*row.xmlNamespace, rtsName(row.xmlLegacyName));
             nodes.insert(nodes.end(), legacy.begin(), legacy.end());
             // The nodes live in one vector of siblings, so address order is document order.
             std::sort(nodes.begin(), nodes.end());

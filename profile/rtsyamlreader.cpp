@@ -47,9 +47,11 @@ private:
     {
         constexpr bool required = Fields::Scalar<Owner, Value>::required;
         std::optional<QString> value;
-        // Unlike XML, a legacy spelling wins over the schema's (a converted file may carry it).
-        if (row.legacyName)
-            value = m.scalar(row.legacyName);
+        // Unlike XML, a legacy key wins over the schema's (a converted file may carry it).
+        for (const char *key : row.yamlLegacyKeys) {
+            if (key && !value)
+                value = m.scalar(key);
+        }
         if (!value)
             value = readScalar(m, row.yamlKey, row.style, required);
         if (value && row.normalize)

@@ -5,6 +5,7 @@
 #include "rtcfields_p.h"
 #include "rtcvalidator.h"
 #include "rtcxml.h"
+#include "rtcyaml.h"
 #include "tst_fieldtablesupport.h"
 #include "xmlequivalence.h"
 
@@ -401,6 +402,11 @@ void TestRtcXml::everyTableFieldRoundTrips()
     const auto viaXml = readRtcXml(writeRtcXml(profile), QStringLiteral("table.xml"), &diagnostics);
     QVERIFY2(viaXml && diagnostics.isEmpty(), qPrintable(errorsOf(diagnostics)));
     QVERIFY(*viaXml == profile);
+
+    const auto viaYaml
+        = readRtcYaml(writeRtcYaml(profile), QStringLiteral("table.yaml"), &diagnostics);
+    QVERIFY2(viaYaml && diagnostics.isEmpty(), qPrintable(errorsOf(diagnostics)));
+    QVERIFY(*viaYaml == profile);
 }
 
 void TestRtcXml::keepsUnknownContentInPlace()
