@@ -2,11 +2,16 @@
 #include "rtmgrcommand.h"
 
 #include "componentproxy.h"
+#include "concurrent.h"
 #include "corbaerror.h"
 #include "managerproxy.h"
 #include "rtjson.h"
 
 #include <QFileInfo>
+#include <QSet>
+
+#include <optional>
+#include <vector>
 
 namespace Cli {
 
@@ -49,6 +54,36 @@ template<typename Action> void withManagerReason(const ManagerProxy &manager, Ac
     }
 }
 
+/// The instance_name a create request asks for; empty when the manager is to choose one.
+QString requestedInstanceName(const QString &request)
+{
+    const QString query = request.section(QLatin1Char('?'), 1);
+    for (const QString &pair : query.split(QLatin1Char('&'))) {
+        if (pair.section(QLatin1Char('='), 0, 0).trimmed() == QLatin1String("instance_name"))
+            return pair.section(QLatin1Char('='), 1).trimmed();
+    }
+    return {};
+}
+
+/**
+ * How many of the actions from @p first on are creates that can run side by side: each names its
+ * own instance, and no two the same name. Creates the manager names (`Type0`, `Type1` …) stay in
+ * order, so that the numbers come out as they would one after the other.
+ */
+qsizetype concurrentCreates(const QList<QPair<QString, QString>> &actions, qsizetype first)
+{
+    QSet<QString> names;
+    qsizetype end = first;
+    while (end < actions.size() && actions.at(end).first == QLatin1String("create")) {
+        const QString name = requestedInstanceName(actions.at(end).second);
+        if (name.isEmpty() || names.contains(name))
+            break;
+        names.insert(name);
+        ++end;
+    }
+    return end - first;
+}
+
 } // namespace
 
 QString RtMgrCommand::summary() const
@@ -61,7 +96,9 @@ QString RtMgrCommand::usage() const
     return QStringLiteral(
         "Usage: rtctl mgr [--json] [--timeout MS] PATH|corbaloc::HOST[:PORT] ACTION...\n\n"
         "Drives an RTC manager (rtshell's rtmgr), given as a tree path (…/manager.mgr) or\n"
-        "directly (corbaloc::host, port 2810 and key 'manager' by default). Actions run in order:\n"
+        "directly (corbaloc::host, port 2810 and key 'manager' by default). Actions run in order\n"
+        "and stop at the first failure; consecutive creates that each give their own instance_name\n"
+        "are sent side by side (printed in order; those after a failed one are removed again):\n"
         "  load FILE[:INIT]     load a module (INIT defaults to <basename>Init)\n"
         "  unload FILE          unload a module\n"
         "  create 'Type?k=v&…'  create a component; prints its instance name\n"
@@ -166,9 +203,53 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
                 ? QStringLiteral("%1: not a manager (%2)").arg(node.path, nodeTypeName(node.type))
                 : node.reason);
     const ManagerProxy manager(node.ior, node.path);
-    for (const auto &action : actions)
-        run(manager, action.first, action.second, options.has(QStringLiteral("--json")), streams);
+    for (qsizetype i = 0; i < actions.size();) {
+        const qsizetype creates = concurrentCreates(actions, i);
+        if (creates > 1) {
+            createSideBySide(manager, actions.mid(i, creates), streams);
+            i += creates;
+        } else {
+            run(manager, actions.at(i).first, actions.at(i).second, options.has(QStringLiteral("--json")),
+                streams);
+            ++i;
+        }
+    }
     return ExitOk;
+}
+
+void RtMgrCommand::createSideBySide(const ManagerProxy &manager, const QList<QPair<QString, QString>> &creates,
+                                    Streams streams) const
+{
+    const auto count = std::size_t(creates.size());
+    std::vector<QString> created(count);
+    std::vector<QString> iors(count);
+    std::vector<std::optional<Error>> failures(count);
+    forEachConcurrently(count, [&](std::size_t i) {
+        try {
+            iors[i] = manager.createComponent(creates.at(qsizetype(i)).second);
+            created[i] = ComponentProxy(iors[i], manager.path()).profile().instanceName;
+        } catch (const Error &e) {
+            failures[i].emplace(e);
+        }
+    });
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!failures[i]) {
+            streams.out << created[i] << '\n';
+            continue;
+        }
+        // One after the other, the creates after this one would not have been made. The component
+        // itself is asked to go: it may live in a slave process the manager does not delete in.
+        for (std::size_t later = i + 1; later < count; ++later) {
+            if (iors[later].isEmpty())
+                continue;
+            try {
+                ComponentProxy(iors[later], manager.path()).exit();
+            } catch (const Error &e) {
+                streams.err << "rtctl: " << e.message() << '\n';
+            }
+        }
+        throw *failures[i];
+    }
 }
 
 } // namespace Cli

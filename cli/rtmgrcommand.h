@@ -27,6 +27,9 @@ protected:
     int execute(const RtOptions &options, Streams streams) override;
 
 private:
+    /// Consecutive creates with their own instance names, sent at once; see usage().
+    void createSideBySide(const Corba::ManagerProxy &manager, const QList<QPair<QString, QString>> &creates,
+                          Streams streams) const;
     void run(const Corba::ManagerProxy &manager, const QString &action, const QString &argument,
              bool json, Streams streams) const;
     void list(const Corba::ManagerProxy &manager, bool json, Streams streams) const;

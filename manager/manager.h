@@ -169,6 +169,8 @@ private:
     RTC::RTObject_ptr createRemote(const CreateRequest &request, std::string *error);
     RTM::Manager_ptr slaveFor(const CreateRequest &request, bool *remoteOnly, std::string *error);
     RTM::Manager_ptr spawnSlave(const std::string &host, int port, const std::string &name, std::string *error);
+    /// A free loopback port no other slave being started has; spawnSlave() gives it back.
+    int reserveLoopbackPort();
     pid_t startSlaveProcess(const std::string &address, const std::string &name, const std::string &master);
     RTM::Manager_ptr waitForSlave(pid_t pid, const std::string &address);
     bool joinConfirmed(RTM::Manager_ptr slave, std::chrono::steady_clock::time_point deadline);
@@ -194,6 +196,7 @@ private:
     std::condition_variable m_slavesChanged;
     /// One slave start at a time: concurrent creates must not pick one port twice or start one name twice.
     std::mutex m_spawnMutex;
+    std::set<int> m_startingPorts;
     ForkServer m_forkServer;
     std::vector<ComponentFactory> m_factories;
     std::vector<std::unique_ptr<Component>> m_components;

@@ -138,31 +138,51 @@ RTM::Manager_ptr Manager::slaveFor(const CreateRequest &request, bool *remoteOnl
     const std::string name = *request.managerName;
     if (name == m_instanceName)
         return RTM::Manager::_duplicate(m_self);
+    // Each such request wants a process of its own: nothing to look up or share, so these slaves
+    // start side by side.
+    if (name == "manager_%p")
+        return spawnSlave("127.0.0.1", reserveLoopbackPort(), name, error);
     std::lock_guard spawning(m_spawnMutex);
-    if (name != "manager_%p") {
+    {
         std::lock_guard lock(m_mutex);
         for (const auto &slave : m_slaves) {
             if (slave->name == name)
                 return RTM::Manager::_duplicate(slave->reference);
         }
     }
-    return spawnSlave("127.0.0.1", freeLoopbackPort(), name, error);
+    return spawnSlave("127.0.0.1", reserveLoopbackPort(), name, error);
+}
+
+int Manager::reserveLoopbackPort()
+{
+    // Two slaves starting at once must not be given one port: the kernel may hand out a port
+    // again as soon as the probe's socket is closed.
+    std::lock_guard lock(m_mutex);
+    for (;;) {
+        const int port = freeLoopbackPort();
+        if (port == 0 || m_startingPorts.insert(port).second)
+            return port;
+    }
 }
 
 RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const std::string &name, std::string *error)
 {
+    const auto release = [this, port] {
+        std::lock_guard lock(m_mutex);
+        m_startingPorts.erase(port);
+    };
     if (!m_isMaster) {
+        release();
         fail("create_component: only a master manager starts slaves", error);
         return RTM::Manager::_nil();
     }
     const std::string address = host + ':' + std::to_string(port);
     const pid_t pid = startSlaveProcess(address, name, m_address);
-    if (pid < 0) {
+    RTM::Manager_var slave = pid < 0 ? RTM::Manager::_nil() : waitForSlave(pid, address);
+    release();
+    if (pid < 0)
         fail("create_component: cannot start a slave manager", error);
-        return RTM::Manager::_nil();
-    }
-    RTM::Manager_var slave = waitForSlave(pid, address);
-    if (CORBA::is_nil(slave))
+    else if (CORBA::is_nil(slave))
         fail("create_component: slave manager at " + address + " did not start", error);
     return slave._retn();
 }
@@ -175,7 +195,10 @@ void Manager::startForkServer()
 
 pid_t Manager::startSlaveProcess(const std::string &address, const std::string &name, const std::string &master)
 {
-    std::vector<std::string> args = {"rtmanager"};
+    // What makes it a slave comes first, where ps shows it.
+    std::vector<std::string> args = {"rtmanager", "-o", "manager.instance_name=" + name, "-o",
+                                     "corba.endpoints=" + address, "-o", "manager.is_master=NO", "-o",
+                                     "corba.master_manager=" + master};
     const Properties config = configuration();
     for (const auto &[key, value] : config.entries()) {
         // A slave makes only what it is asked for: the master's precreated components stay single.
@@ -185,8 +208,6 @@ pid_t Manager::startSlaveProcess(const std::string &address, const std::string &
             continue;
         args.insert(args.end(), {"-o", key + '=' + value});
     }
-    args.insert(args.end(), {"-o", "manager.is_master=NO", "-o", "corba.master_manager=" + master, "-o",
-                             "corba.endpoints=" + address, "-o", "manager.instance_name=" + name});
     // The slave watches its parent to go down with its master: the fork server, or this process.
     if (m_forkServer.running()) {
         std::vector<std::string> served = args;

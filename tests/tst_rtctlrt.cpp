@@ -31,6 +31,7 @@ private slots:
     void unreachableServerIsAFailure();
     void drivesTheRealManager();
     void forkAndRestartTheRealManager();
+    void namedCreatesRunSideBySide();
 
 private:
     using Result = RtctlResult;
@@ -408,6 +409,49 @@ void TestRtctlRt::forkAndRestartTheRealManager()
     QCOMPARE(refused.code, 1);
     QVERIFY2(refused.err.contains("fork returned BAD_PARAMETER (fork: this manager has no master"),
              qPrintable(refused.err));
+}
+
+// Creates naming their own instances are sent at once; the output and the outcome stay those of
+// one create after the other.
+void TestRtctlRt::namedCreatesRunSideBySide()
+{
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QVERIFY2(startRealManager(port, "sidehost", "", &error), qPrintable(error));
+    const QString dir = QStringLiteral("/%1/sidehost.host_cxt").arg(m_live.namingServer());
+    const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(port);
+    QStringList arguments {"mgr", direct};
+    QStringList expected;
+    for (int i = 0; i < 6; ++i) {
+        const QString name = QStringLiteral("Side%1").arg(i);
+        // Every other one in a slave process of its own, started side by side too.
+        arguments << "create"
+                  << QStringLiteral("ConsoleOut?instance_name=%1%2")
+                         .arg(name, i % 2 ? QStringLiteral("&manager_name=manager_%p") : QString());
+        expected << name;
+    }
+    // Unnamed ones are numbered in order, as one after the other would number them.
+    arguments << "create" << "ConsoleIn" << "create" << "ConsoleIn";
+    expected << "ConsoleIn0" << "ConsoleIn1";
+    const Result created = rtctl(arguments, dir);
+    QCOMPARE(created.code, 0);
+    QCOMPARE(created.lines(), expected);
+    const QStringList listed = rtctl({"ls", "-R", "."}, dir).out.split(QRegularExpression("\\s+"));
+    for (const QString &name : std::as_const(expected))
+        QVERIFY2(listed.contains(name + ".rtc"), qPrintable(name));
+
+    // A failed create stops there: the ones before it are printed, those after it made no more.
+    const Result failed = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Before0", "create",
+                                 "NoSuchType?instance_name=Broken0", "create",
+                                 "ConsoleOut?instance_name=After0&manager_name=manager_%p", "create",
+                                 "ConsoleOut?instance_name=After1"},
+                                dir);
+    QCOMPARE(failed.code, 1);
+    QCOMPARE(failed.lines(), QStringList {"Before0"});
+    QVERIFY2(failed.err.contains("NoSuchType"), qPrintable(failed.err));
+    const QStringList after = rtctl({"ls", "-R", "."}, dir).out.split(QRegularExpression("\\s+"));
+    QVERIFY(after.contains("Before0.rtc"));
+    QVERIFY2(!after.contains("After0.rtc") && !after.contains("After1.rtc"), qPrintable(after.join(' ')));
 }
 
 QTEST_GUILESS_MAIN(TestRtctlRt)
