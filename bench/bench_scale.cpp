@@ -9,6 +9,11 @@
 //    manager_address) registered in two name servers: restore (create + connect) + start, stop,
 //    teardown, cryo and drift against the file, then the managers' memory per hosted component.
 //
+//    When an OpenRTM-aist 2.x prefix is known (OPENRTM_ROOT, else the one the build was configured
+//    with for the interop tests), the same requests go to its rtcd2 master in the same run, as it
+//    comes (modules found by searching the load path) and tuned (the module preloaded), with the
+//    ratio printed; rtcd2 hosts nothing itself, so "same process" is one named slave there.
+//
 //    bench_scale [--components N] [--managers M]
 //
 // Prints a table per part and ends with one summary line. Timing never fails the build.
@@ -27,7 +32,11 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QTextStream>
+#include <QThread>
+
+#include <csignal>
 
 #include <functional>
 
@@ -79,14 +88,17 @@ struct Creation
     QString error;
 };
 
-/// One `rtctl mgr MASTER create … create …` call creating `count` components.
-Creation createThroughRtctl(quint16 masterPort, int count, bool separate)
+/// One `rtctl mgr MASTER create … create …` call creating `count` components; @p sameSlave names
+/// the slave that hosts them all where the master hosts none itself (rtcd2).
+Creation createThroughRtctl(quint16 masterPort, int count, bool separate, const QString &sameSlave = {})
 {
     QStringList arguments {QStringLiteral("mgr"), QStringLiteral("corbaloc::127.0.0.1:%1").arg(masterPort)};
     for (int i = 0; i < count; ++i) {
         QString request = QStringLiteral("ConsoleIn?instance_name=C%1").arg(i);
         if (separate)
             request += QStringLiteral("&manager_name=manager_%p");
+        else if (!sameSlave.isEmpty())
+            request += QStringLiteral("&manager_name=") + sameSlave;
         arguments << QStringLiteral("create") << request;
     }
     Creation result;
@@ -106,6 +118,108 @@ qint64 rtctlStartMs()
     timer.start();
     runRtctl({QStringLiteral("--version")});
     return timer.elapsed();
+}
+
+// --- OpenRTM-aist's rtcd2, side by side ---
+
+QString openRtmPrefix()
+{
+    const QString fromEnvironment = qEnvironmentVariable("OPENRTM_ROOT");
+    const QString prefix = fromEnvironment.isEmpty() ? QStringLiteral(RTSTUDIO_OPENRTM_PREFIX) : fromEnvironment;
+    return QFile::exists(prefix + QStringLiteral("/bin/rtcd2")) ? prefix : QString();
+}
+
+/// Every process below @p pid, deepest first.
+QList<qint64> descendants(qint64 pid)
+{
+    QList<qint64> result;
+    const QDir tasks(QStringLiteral("/proc/%1/task").arg(pid));
+    for (const QString &task : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile children(tasks.filePath(task + QStringLiteral("/children")));
+        if (!children.open(QIODevice::ReadOnly))
+            continue;
+        for (const QByteArray &child : children.readAll().simplified().split(' ')) {
+            if (child.isEmpty())
+                continue;
+            result << descendants(child.toLongLong());
+            result << child.toLongLong();
+        }
+    }
+    return result;
+}
+
+/// An rtcd2 master on @p port with its own name server, as the interop tests configure it; with
+/// @p tuned the ConsoleIn module is preloaded (slaves read the same file).
+class Rtcd2Master
+{
+public:
+    Rtcd2Master(const QString &prefix, quint16 port, bool tuned)
+    {
+        if (!m_live.startNameServer(&m_error))
+            return;
+        const QString examples = prefix + QStringLiteral("/share/openrtm-2.1/components/c++/examples/rtc");
+        QFile conf(m_dir.filePath(QStringLiteral("rtc.conf")));
+        if (!conf.open(QIODevice::WriteOnly | QIODevice::Text)) {
+            m_error = QStringLiteral("cannot write %1").arg(conf.fileName());
+            return;
+        }
+        QTextStream(&conf) << "corba.nameservers: " << m_live.namingServer() << "\n"
+                           << "corba.endpoints: 127.0.0.1:\n"
+                           << "corba.master_manager: 127.0.0.1:" << port << "\n"
+                           << "manager.is_master: YES\n"
+                           << "naming.formats: %h.host_cxt/%n.rtc\n"
+                           << "manager.modules.load_path: " << examples << "\n"
+                           << "manager.modules.C++.manager_cmd: " << prefix << "/bin/rtcd2\n"
+                           << "logger.enable: NO\n"
+                           << (tuned ? "manager.modules.preload: ConsoleIn.so\n" : "");
+        conf.close();
+        qputenv("LD_LIBRARY_PATH", (prefix + QStringLiteral("/lib:")).toUtf8() + qgetenv("LD_LIBRARY_PATH"));
+        qputenv("PATH", (prefix + QStringLiteral("/bin:")).toUtf8() + qgetenv("PATH"));
+        m_master = m_live.startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), conf.fileName()},
+                                       QString(), &m_error, 0);
+        // Listening comes before the manager object is served: wait until it answers.
+        const QStringList list {QStringLiteral("mgr"), QStringLiteral("corbaloc::127.0.0.1:%1").arg(port),
+                                QStringLiteral("list")};
+        QElapsedTimer waited;
+        waited.start();
+        while (m_master && runRtctl(list).code != 0) {
+            if (waited.elapsed() > 20000) {
+                m_error = QStringLiteral("rtcd2 did not answer on port %1").arg(port);
+                break;
+            }
+            QThread::msleep(10);
+        }
+    }
+    ~Rtcd2Master()
+    {
+        // Its slaves are processes of their own that outlive the master: end them first.
+        if (m_master) {
+            for (const qint64 pid : descendants(m_master->processId()))
+                ::kill(pid_t(pid), SIGKILL);
+        }
+    }
+    QString error() const { return m_master ? m_error : m_error.isEmpty() ? QStringLiteral("rtcd2 did not start") : m_error; }
+    bool ok() const { return m_master && m_error.isEmpty(); }
+
+private:
+    LiveTest::LiveSystem m_live;
+    QTemporaryDir m_dir;
+    QProcess *m_master = nullptr;
+    QString m_error;
+};
+
+/// Per component ms of one creation row against rtcd2, or the reason it could not be measured.
+QString rtcd2PerComponent(const QString &prefix, int count, bool separate, bool tuned, double *per)
+{
+    const quint16 port = LiveTest::freePort();
+    Rtcd2Master master(prefix, port, tuned);
+    if (!master.ok())
+        return master.error();
+    const Creation c = createThroughRtctl(port, count, separate, QStringLiteral("benchslave"));
+    if (!c.error.isEmpty())
+        return c.error;
+    *per = double(c.elapsedMs) / count;
+    return QString::number(*per, 'f', 2);
 }
 
 // --- 2. the large system ---
@@ -164,11 +278,16 @@ int main(int argc, char **argv)
     Corba::Orb::setCallTimeout(30000);
 
     // --- 1. creation ---
+    const QString openRtm = openRtmPrefix();
     out << QStringLiteral("Creation through one `rtctl mgr … create …` call, naming on, a fresh name server and "
-                          "master each (rtctl alone starts and ends in %1 ms)\n\n")
-               .arg(rtctlStartMs());
-    out << "| placement         |   N | call ms | per component ms | goal ms | met |\n";
-    out << "|-------------------|-----|---------|------------------|---------|-----|\n";
+                          "master each (rtctl alone starts and ends in %1 ms); %2\n\n")
+               .arg(rtctlStartMs())
+               .arg(openRtm.isEmpty() ? QStringLiteral("no OpenRTM-aist prefix (OPENRTM_ROOT), so rtmanager alone")
+                                      : QStringLiteral("OpenRTM-aist's rtcd2 side by side, per component ms"));
+    out << "| placement         |   N | call ms | per component ms | goal ms | met |"
+        << (openRtm.isEmpty() ? "" : " rtcd2 as it comes | rtcd2 tuned | rtcd2 tuned / ours |") << "\n";
+    out << "|-------------------|-----|---------|------------------|---------|-----|"
+        << (openRtm.isEmpty() ? "" : "-------------------|-------------|--------------------|") << "\n";
     double samePer = -1, separatePer = -1;
     QString error;
     for (const bool separate : {false, true}) {
@@ -185,13 +304,25 @@ int main(int argc, char **argv)
             const Creation c = createThroughRtctl(creationPort, count, separate);
             const double per = c.error.isEmpty() ? double(c.elapsedMs) / count : -1;
             const double goal = separate ? 2.5 : 0.5;
-            out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 |\n")
+            out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 |")
                        .arg(separate ? QStringLiteral("own slave process") : QStringLiteral("same process"), -17)
                        .arg(count, 3)
                        .arg(c.elapsedMs, 7)
                        .arg(c.error.isEmpty() ? QString::number(per, 'f', 2) : c.error, 16)
                        .arg(goal, 7, 'f', 1)
                        .arg(per >= 0 && per <= goal ? QStringLiteral("yes") : QStringLiteral("no"), 3);
+            if (!openRtm.isEmpty()) {
+                double plain = -1, tuned = -1;
+                const QString plainText = rtcd2PerComponent(openRtm, count, separate, false, &plain);
+                const QString tunedText = rtcd2PerComponent(openRtm, count, separate, true, &tuned);
+                out << QStringLiteral(" %1 | %2 | %3 |")
+                           .arg(plainText, 17)
+                           .arg(tunedText, 11)
+                           .arg(tuned > 0 && per > 0 ? QString::number(tuned / per, 'f', 1) + QLatin1Char('x')
+                                                     : QStringLiteral("-"),
+                                18);
+            }
+            out << '\n';
             out.flush();
             if (count == 100)
                 (separate ? separatePer : samePer) = per;

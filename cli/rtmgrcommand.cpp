@@ -98,7 +98,8 @@ QString RtMgrCommand::usage() const
         "Drives an RTC manager (rtshell's rtmgr), given as a tree path (…/manager.mgr) or\n"
         "directly (corbaloc::host, port 2810 and key 'manager' by default). Actions run in order\n"
         "and stop at the first failure; consecutive creates that each give their own instance_name\n"
-        "are sent side by side (printed in order; those after a failed one are removed again):\n"
+        "are sent side by side to an rtmanager (printed in order; those after a failed one are\n"
+        "removed again):\n"
         "  load FILE[:INIT]     load a module (INIT defaults to <basename>Init)\n"
         "  unload FILE          unload a module\n"
         "  create 'Type?k=v&…'  create a component; prints its instance name\n"
@@ -203,8 +204,15 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
                 ? QStringLiteral("%1: not a manager (%2)").arg(node.path, nodeTypeName(node.type))
                 : node.reason);
     const ManagerProxy manager(node.ior, node.path);
+    std::optional<bool> sideBySide; // asked once, when there is something to send side by side
     for (qsizetype i = 0; i < actions.size();) {
-        const qsizetype creates = concurrentCreates(actions, i);
+        qsizetype creates = concurrentCreates(actions, i);
+        if (creates > 1 && !sideBySide) {
+            sideBySide = propertyValue(manager.profile(), QStringLiteral("rtstudio.concurrent_create"))
+                         == QLatin1String("YES");
+        }
+        if (!sideBySide.value_or(false))
+            creates = 0;
         if (creates > 1) {
             createSideBySide(manager, actions.mid(i, creates), streams);
             i += creates;

@@ -548,6 +548,9 @@ Properties Manager::profile()
     p.set("address", m_address);
     p.set("is_master", m_isMaster ? "YES" : "NO");
     p.set("last_error", lastError());
+    // Tells clients they may send create_component calls at once (rtctl mgr does): names, ports
+    // and slave processes are handed out safely. Other managers lack the key and get them in turn.
+    p.set("rtstudio.concurrent_create", "YES");
     return p;
 }
 
