@@ -282,7 +282,15 @@ MapReader::MapReader(const YAML::Node &node, Context &context)
             context.error(entry.first.Mark(), tr("a mapping key must be a plain value"));
             continue;
         }
-        m_entries.push_back(Entry {fromStd(entry.first.Scalar()), entry.second, false});
+        const QString key = fromStd(entry.first.Scalar());
+        // YAML wants each key once; the first one counts, as in the RTS Profile reader.
+        const bool seen = std::any_of(m_entries.cbegin(), m_entries.cend(),
+                                      [&key](const Entry &e) { return e.key == key; });
+        if (seen) {
+            context.warn(entry.first.Mark(), tr("duplicate key '%1' was ignored").arg(key));
+            continue;
+        }
+        m_entries.push_back(Entry {key, entry.second, false});
     }
 }
 

@@ -374,6 +374,42 @@ void collectNamespaces(const XmlNode &node, QList<QPair<QString, QString>> &out)
         collectNamespaces(child, out);
 }
 
+bool isXmlChar(char32_t c)
+{
+    return c == 0x9 || c == 0xA || c == 0xD || (c >= 0x20 && c <= 0xD7FF) || (c >= 0xE000 && c <= 0xFFFD)
+        || (c >= 0x10000 && c <= 0x10FFFF);
+}
+
+/// @p text with every character XML 1.0 cannot carry (lone surrogates, most control characters)
+/// replaced by U+FFFD. A file read in a declared encoding may decode to such characters, and
+/// QXmlStreamWriter given one stops writing well-formed XML.
+QString xmlSafe(const QString &text)
+{
+    QString result;
+    const qsizetype size = text.size();
+    for (qsizetype i = 0; i < size; ++i) {
+        const QChar c = text.at(i);
+        const bool pair = c.isHighSurrogate() && i + 1 < size && text.at(i + 1).isLowSurrogate();
+        const char32_t code = pair ? QChar::surrogateToUcs4(c, text.at(i + 1)) : c.unicode();
+        const bool ok = !c.isSurrogate() || pair ? isXmlChar(code) : false;
+        if (ok && result.isNull()) {
+            i += pair ? 1 : 0;
+            continue; // nothing replaced so far: the text is copied only when needed
+        }
+        if (result.isNull())
+            result = text.left(i);
+        if (ok) {
+            result.append(c);
+            if (pair)
+                result.append(text.at(++i));
+        } else {
+            result.append(QChar::ReplacementCharacter);
+            i += pair ? 1 : 0;
+        }
+    }
+    return result.isNull() ? text : result;
+}
+
 void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
                const QHash<QString, QString> &prefixes, bool isRoot,
                const QList<QPair<QString, QString>> &declarations)
@@ -396,12 +432,12 @@ void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
     }
     for (const XmlAttribute &a : node.attributes) {
         if (a.namespaceUri.isEmpty())
-            writer.writeAttribute(a.name, a.value);
+            writer.writeAttribute(a.name, xmlSafe(a.value));
         else
-            writer.writeAttribute(a.namespaceUri, a.name, a.value);
+            writer.writeAttribute(a.namespaceUri, a.name, xmlSafe(a.value));
     }
     if (!node.text.isEmpty())
-        writer.writeCharacters(node.text);
+        writer.writeCharacters(xmlSafe(node.text));
     for (const XmlNode &child : node.children)
         writeNode(writer, child, prefixes, false, declarations);
     writer.writeEndElement();
