@@ -171,6 +171,16 @@ std::vector<ExecutionContextInfo> ComponentProxy::executionContexts(ContextDetai
                 readMembers(contexts.back(), ec);
         };
         RTC::ExecutionContextList_var owned = rtc->get_owned_contexts();
+        if (detail == ContextDetail::Saved) {
+            for (CORBA::ULong i = 0; i < owned->length(); ++i) {
+                ExecutionContextInfo info;
+                info.handle = int(rtc->get_context_handle(owned[i]));
+                info.kind = executionKindName(owned[i]->get_kind());
+                info.rate = owned[i]->get_rate();
+                contexts.push_back(info);
+            }
+            return contexts;
+        }
         for (CORBA::ULong i = 0; i < owned->length(); ++i)
             add(owned[i].in(), true);
         RTC::ExecutionContextList_var participating = rtc->get_participating_contexts();
@@ -296,6 +306,27 @@ std::vector<ConfigurationSet> ComponentProxy::configurationSets() const
         std::vector<ConfigurationSet> result;
         for (CORBA::ULong i = 0; i < sets->length(); ++i)
             result.push_back(toConfigurationSet(sets[i]));
+        return result;
+    });
+}
+
+std::vector<ConfigurationSet> ComponentProxy::configurationSets(QString *activeSet) const
+{
+    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
+    return callServed(m_path, m_ior, [&] {
+        SDOPackage::ConfigurationSetList_var sets = conf->get_configuration_sets();
+        std::vector<ConfigurationSet> result;
+        for (CORBA::ULong i = 0; i < sets->length(); ++i)
+            result.push_back(toConfigurationSet(sets[i]));
+        activeSet->clear();
+        if (!result.empty()) {
+            try {
+                SDOPackage::ConfigurationSet_var set = conf->get_active_configuration_set();
+                *activeSet = toQString(set->id.in());
+            } catch (const SDOPackage::NotAvailable &) {
+                // None active: written, not activated since.
+            }
+        }
         return result;
     });
 }

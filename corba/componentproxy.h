@@ -32,8 +32,9 @@ public:
     PortInfo port(const QString &name) const;
 
     /// How much executionContexts() reads: Members adds each context's owner and participants
-    /// (one more call per context and one per member, so the pollers stay with Basic).
-    enum class ContextDetail { Basic, Members };
+    /// (one more call per context and one per member, so the pollers stay with Basic); Saved
+    /// reads only the owned contexts' handle, kind and rate (what a saved system keeps).
+    enum class ContextDetail { Saved, Basic, Members };
     std::vector<ExecutionContextInfo> executionContexts(ContextDetail detail
                                                         = ContextDetail::Basic) const;
     /**
@@ -68,6 +69,8 @@ public:
     std::vector<ConfigurationSet> configurationSets() const;
     /// The active set; empty when the component has none active (written, not activated since).
     QString activeConfigurationSet() const;
+    /// configurationSets() and activeConfigurationSet() through one configuration reference.
+    std::vector<ConfigurationSet> configurationSets(QString *activeSet) const;
     ConfigurationSet configurationSet(const QString &id) const;
     void addConfigurationSet(const ConfigurationSet &set) const;
     /// Writes the values of `set` into the existing set `set.id` in one call (parameters not yet in

@@ -9,7 +9,10 @@
 #include <RTC.hh>
 #include <omniORB4/Naming.hh>
 
+#include <QHash>
 #include <QProcessEnvironment>
+
+#include <mutex>
 
 namespace Corba {
 
@@ -69,16 +72,52 @@ QString kindOf(const QString &element)
     return dot < 0 ? QString() : element.mid(dot + 1);
 }
 
+/**
+ * Root contexts already known to be name servers, by address. Narrowing a corbaloc reference asks
+ * the server (_is_a), and planning a large system resolves one name per component: the answer is
+ * kept. A name server started again at the same address is reached through the same reference.
+ */
+class RootContexts
+{
+public:
+    CosNaming::NamingContext_ptr find(const QString &address)
+    {
+        std::lock_guard lock(m_mutex);
+        const auto found = m_contexts.constFind(address);
+        return found == m_contexts.constEnd() ? CosNaming::NamingContext::_nil()
+                                              : CosNaming::NamingContext::_duplicate(found->in());
+    }
+    void insert(const QString &address, CosNaming::NamingContext_ptr context)
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_contexts.size() >= 64) // a long-running GUI meets many addresses over time
+            m_contexts.clear();
+        m_contexts.insert(address, CosNaming::NamingContext::_duplicate(context));
+    }
+
+private:
+    std::mutex m_mutex;
+    QHash<QString, CosNaming::NamingContext_var> m_contexts;
+};
+
 CosNaming::NamingContext_ptr rootContext(const RtPath &path)
 {
-    const QString target = QLatin1Char('/') + path.server();
-    CORBA::Object_var object = toObject(path.nameServiceAddress(), target);
-    return call(target, [&] {
-        CosNaming::NamingContext_var context = CosNaming::NamingContext::_narrow(object.in());
-        if (CORBA::is_nil(context))
-            throw Error(Error::Kind::WrongType, target + QStringLiteral(": not a name server"));
+    // Never destroyed: the ORB lives as long as the process, and so may its references.
+    static auto *const known = new RootContexts;
+    const QString address = path.nameServiceAddress();
+    CosNaming::NamingContext_var context = known->find(address);
+    if (!CORBA::is_nil(context))
         return context._retn();
+    const QString target = QLatin1Char('/') + path.server();
+    CORBA::Object_var object = toObject(address, target);
+    context = call(target, [&] {
+        CosNaming::NamingContext_var narrowed = CosNaming::NamingContext::_narrow(object.in());
+        if (CORBA::is_nil(narrowed))
+            throw Error(Error::Kind::WrongType, target + QStringLiteral(": not a name server"));
+        return narrowed._retn();
     });
+    known->insert(address, context.in());
+    return context._retn();
 }
 
 CORBA::Object_ptr resolveName(const RtPath &path)

@@ -60,10 +60,10 @@ Profile::RtsExecutionContext savedContext(const Corba::ExecutionContextInfo &liv
     return ec;
 }
 
-Profile::RtsComponent savedComponent(const ComponentProxy &proxy,
-                                     const std::vector<Corba::PortInfo> &ports)
+/// The component as a saved system keeps it; its profile @p info (ports included) was read before.
+Profile::RtsComponent savedComponent(const ComponentProxy &proxy, const Corba::ComponentInfo &info)
 {
-    const Corba::ComponentInfo info = proxy.profile();
+    const std::vector<Corba::PortInfo> &ports = info.ports;
     Profile::RtsComponent component;
     component.id = componentId(info);
     component.pathUri = proxy.path().mid(proxy.path().startsWith(QLatin1Char('/')) ? 1 : 0);
@@ -75,14 +75,13 @@ Profile::RtsComponent savedComponent(const ComponentProxy &proxy,
         saved.name = port.name;
         (port.isService() ? component.servicePorts : component.dataPorts).append(saved);
     }
-    for (const auto &set : proxy.configurationSets())
+    QString active;
+    for (const auto &set : proxy.configurationSets(&active))
         component.configurationSets.append(savedSet(set));
     if (!component.configurationSets.isEmpty())
-        component.activeConfigurationSet = proxy.activeConfigurationSet();
-    for (const auto &ec : proxy.executionContexts()) {
-        if (ec.owned)
-            component.executionContexts.append(savedContext(ec));
-    }
+        component.activeConfigurationSet = active;
+    for (const auto &ec : proxy.executionContexts(ComponentProxy::ContextDetail::Saved))
+        component.executionContexts.append(savedContext(ec));
     Profile::setRtsProperty(component.properties, QStringLiteral("IOR"), proxy.ior());
     return component;
 }
@@ -181,9 +180,11 @@ Profile::RtsProfile cryoSystem(const CryoOptions &options, DeployReport *report,
             return;
         }
         try {
+            // The component profile carries every port's profile with its connectors.
             const ComponentProxy proxy(entry.ior, entry.path);
-            saved[i].ports = proxy.ports();
-            saved[i].component = savedComponent(proxy, saved[i].ports);
+            const Corba::ComponentInfo info = proxy.profile();
+            saved[i].ports = info.ports;
+            saved[i].component = savedComponent(proxy, info);
             steps.finish(saved[i].step, StepStatus::Done, proxy.path());
         } catch (const Error &e) {
             steps.fail(saved[i].step, e.message());

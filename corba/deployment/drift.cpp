@@ -31,7 +31,8 @@ struct LiveComponent
 void diffConfiguration(const Profile::RtsComponent &saved, const ComponentProxy &proxy,
                        QList<DriftItem> &items)
 {
-    const auto sets = proxy.configurationSets();
+    QString liveActive;
+    const auto sets = proxy.configurationSets(&liveActive);
     for (const auto &set : saved.configurationSets) {
         const auto live
             = std::find_if(sets.begin(), sets.end(), [&](const auto &s) { return s.id == set.id; });
@@ -51,7 +52,6 @@ void diffConfiguration(const Profile::RtsComponent &saved, const ComponentProxy 
     }
     const QString active = saved.activeConfigurationSet.value_or(QString());
     if (!active.isEmpty()) {
-        const QString liveActive = proxy.activeConfigurationSet();
         if (liveActive != active)
             items.append({Kind::ActiveSet, saved.instanceName, active, liveActive});
     }
@@ -169,7 +169,8 @@ QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePla
         }
         try {
             LiveComponent component {ComponentProxy(mapping->ior, mapping->path), {}};
-            component.ports = component.proxy.ports();
+            // From the component profile: every port's profile in one call.
+            component.ports = component.proxy.profile().ports;
             diffComponent(saved, component, compared[i].items);
             compared[i].component = std::move(component);
         } catch (const Error &e) {

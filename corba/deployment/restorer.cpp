@@ -368,7 +368,7 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
         std::vector<Corba::PortInfo> ports;
         QString unreachable;
         try {
-            ports = ComponentProxy(job.source->ior, job.source->path).ports();
+            ports = ComponentProxy(job.source->ior, job.source->path).profile().ports;
         } catch (const Error &e) {
             unreachable = e.message();
         }
