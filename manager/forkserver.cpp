@@ -104,6 +104,17 @@ bool ForkServer::start(const std::string &program)
     std::string option = "--fork-server";
     std::string room(CommandLineRoom, ' ');
     char *argv[] = {name.data(), option.data(), room.data(), nullptr};
+    // Symbols bound once in the server rather than on first use in every child. The environment
+    // is made here: after fork in a process with threads only async-signal-safe calls are allowed.
+    std::vector<std::string> environment {"LD_BIND_NOW=1"};
+    for (char **variable = environ; *variable; ++variable) {
+        if (std::strncmp(*variable, "LD_BIND_NOW=", 12) != 0)
+            environment.emplace_back(*variable);
+    }
+    std::vector<char *> envp;
+    for (std::string &variable : environment)
+        envp.push_back(variable.data());
+    envp.push_back(nullptr);
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid == 0) {
@@ -115,7 +126,7 @@ bool ForkServer::start(const std::string &program)
         // The server's end becomes descriptor 3 (dup2 clears close-on-exec); nothing else is kept.
         if (::dup2(fds[1], 3) < 0)
             _exit(127);
-        ::execv(path.c_str(), argv);
+        ::execve(path.c_str(), argv, envp.data());
         _exit(127);
     }
     ::close(fds[1]);
@@ -167,6 +178,8 @@ void ForkServer::stop()
 
 void ForkServer::serve(int fd, int argc, char **argv, int (*run)(int, char **))
 {
+    // Only the server binds everything at once; its children run programs of their own.
+    ::unsetenv("LD_BIND_NOW");
     // Ctrl-C in a terminal reaches the whole process group: the client decides when this ends.
     std::signal(SIGINT, SIG_IGN);
     std::signal(SIGHUP, SIG_IGN);
