@@ -4,7 +4,8 @@
 // 1 Hz: the Name Service view's state poll and the Online Diagram's state + connector poll, each
 // for BENCH_POLL_SECONDS (default 10) s of wall time. CPU is this process's user + system time
 // (getrusage), all threads: GUI, workers and the ORB; the GUI thread's longest stall is measured
-// meanwhile. Prints a table against the targets of < 5 % of one core and no stall over 50 ms;
+// meanwhile. Prints a table against the targets of < 5 % of one core over the idle process (the
+// same live system and stall meter with no poller) and no stall over 50 ms;
 // timing never fails the build.
 #include "cputime.h"
 #include "livesystem.h"
@@ -179,7 +180,14 @@ void printTable(const QList<Sample> &samples, int seconds)
                .arg(componentCount())
                .arg(pollIntervalMs)
                .arg(seconds);
-    out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9\n")
+    // The idle row is what the process costs with nothing polling: the stall meter's hundred
+    // wake-ups a second and the ORB's own threads. What a poller adds to it is its cost.
+    double idlePercent = 0;
+    for (const Sample &s : samples) {
+        if (s.rounds < 0)
+            idlePercent = s.percent();
+    }
+    out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10\n")
                .arg("poller", -20)
                .arg("components", 10)
                .arg("interval", 9)
@@ -187,12 +195,14 @@ void printTable(const QList<Sample> &samples, int seconds)
                .arg("rounds", 7)
                .arg("CPU s", 8)
                .arg("CPU %", 7)
+               .arg("over idle", 9)
                .arg("stall ms", 8)
                .arg("targets", 14);
     for (const Sample &s : samples) {
         const bool polls = s.rounds >= 0;
-        const bool met = s.percent() < targetPercent && s.worstStallMs <= targetStallMs;
-        out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9\n")
+        const double added = s.percent() - idlePercent;
+        const bool met = added < targetPercent && s.worstStallMs <= targetStallMs;
+        out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9 %10\n")
                    .arg(s.poller, -20)
                    .arg(componentCount(), 10)
                    .arg(polls ? QStringLiteral("%1 ms").arg(pollIntervalMs) : QStringLiteral("-"),
@@ -201,6 +211,7 @@ void printTable(const QList<Sample> &samples, int seconds)
                    .arg(polls ? QString::number(s.rounds) : QStringLiteral("-"), 7)
                    .arg(s.cpu, 8, 'f', 3)
                    .arg(QStringLiteral("%1 %").arg(s.percent(), 0, 'f', 2), 7)
+                   .arg(polls ? QStringLiteral("%1 %").arg(added, 0, 'f', 2) : QStringLiteral("-"), 9)
                    .arg(s.worstStallMs, 8)
                    .arg(!polls ? QStringLiteral("-")
                          : met ? QStringLiteral("< 5 %, ≤ 50 ms")
