@@ -234,8 +234,10 @@ void RtMgrCommand::createSideBySide(const ManagerProxy &manager, const QList<QPa
     std::vector<std::optional<Error>> failures(count);
     forEachConcurrently(count, [&](std::size_t i) {
         try {
+            // An rtmanager gives the instance the name asked for or refuses the request, so the
+            // name needs no further call to the new component.
             iors[i] = manager.createComponent(creates.at(qsizetype(i)).second);
-            created[i] = ComponentProxy(iors[i], manager.path()).profile().instanceName;
+            created[i] = requestedInstanceName(creates.at(qsizetype(i)).second);
         } catch (const Error &e) {
             failures[i].emplace(e);
         }
