@@ -381,8 +381,9 @@ bool isXmlChar(char32_t c)
 }
 
 /// @p text with every character XML 1.0 cannot carry (lone surrogates, most control characters)
-/// replaced by U+FFFD. A file read in a declared encoding may decode to such characters, and
-/// QXmlStreamWriter given one stops writing well-formed XML.
+/// replaced by U+FFFD, which may stand in names too. A file read in a declared encoding may decode
+/// to such characters, in values and names, and QXmlStreamWriter given one stops writing
+/// well-formed XML.
 QString xmlSafe(const QString &text)
 {
     QString result;
@@ -418,23 +419,23 @@ void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
     // after it, the writer would first invent a prefix of its own for the root's namespace.
     if (isRoot) {
         for (const auto &d : declarations)
-            writer.writeNamespace(d.first, d.second);
+            writer.writeNamespace(xmlSafe(d.first), xmlSafe(d.second));
     }
     if (node.namespaceUri.isEmpty())
-        writer.writeStartElement(node.name);
+        writer.writeStartElement(xmlSafe(node.name));
     else
-        writer.writeStartElement(node.namespaceUri, node.name);
+        writer.writeStartElement(xmlSafe(node.namespaceUri), xmlSafe(node.name));
     if (!node.xsiTypeName.isEmpty()) {
         const QString prefix = prefixes.value(node.xsiTypeNamespace);
         writer.writeAttribute(Ns::Xsi, QStringLiteral("type"),
-                              prefix.isEmpty() ? node.xsiTypeName
-                                               : prefix + QLatin1Char(':') + node.xsiTypeName);
+                              xmlSafe(prefix.isEmpty() ? node.xsiTypeName
+                                                       : prefix + QLatin1Char(':') + node.xsiTypeName));
     }
     for (const XmlAttribute &a : node.attributes) {
         if (a.namespaceUri.isEmpty())
-            writer.writeAttribute(a.name, xmlSafe(a.value));
+            writer.writeAttribute(xmlSafe(a.name), xmlSafe(a.value));
         else
-            writer.writeAttribute(a.namespaceUri, a.name, xmlSafe(a.value));
+            writer.writeAttribute(xmlSafe(a.namespaceUri), xmlSafe(a.name), xmlSafe(a.value));
     }
     if (!node.text.isEmpty())
         writer.writeCharacters(xmlSafe(node.text));
