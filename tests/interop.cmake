@@ -19,3 +19,14 @@ rtstudio_add_test(tst_interopdata SOURCES tst_interopdata.cpp LIBS rtstudio_live
 target_compile_definitions(tst_interopdata PRIVATE RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}")
 add_dependencies(tst_interopdata rtctl)
 set_tests_properties(tst_interopdata PROPERTIES LABELS interop)
+
+# One name server with OpenRTM-aist's example programs, an rtcd2 master and rtmanager: every rtctl
+# command against OpenRTM-aist, data of every basic type both ways, configuration, service calls
+# and a mixed system saved and restored.
+rtstudio_add_test(tst_interopsystem SOURCES tst_interopsystem.cpp
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+target_compile_definitions(tst_interopsystem PRIVATE
+    RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
+add_dependencies(tst_interopsystem rtmanager rtctl)
+set_tests_properties(tst_interopsystem PROPERTIES LABELS interop)
