@@ -18,6 +18,7 @@ private slots:
     void usageErrors_data();
     void usageErrors();
     void failedResurrectRollsBack();
+    void cryoReportsTwoComponentsOfOneName();
 
 private:
     using Result = RtctlResult;
@@ -144,6 +145,31 @@ void TestDeployRtctl::failedResurrectRollsBack()
     QTRY_VERIFY(rtctl({"resurrect", "--dry-run",
                        QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/broken.xml")})
                     .out.contains("component Src0 missing"));
+}
+
+// A saved system tells its components apart by instance name only: of two live components with
+// one name (on two hosts here) cryo saves the first and says so instead of dropping one silently.
+void TestDeployRtctl::cryoReportsTwoComponentsOfOneName()
+{
+    QString error;
+    QVERIFY2(m_live.startHostManager(QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), "twinhost",
+                                     {"manager.components.precreate=ConsoleIn?instance_name=Twin0"}, &error),
+             qPrintable(error));
+    QCOMPARE(rtctl({"mgr", manager(), "create", "ConsoleIn?instance_name=Twin0"}).code, 0);
+    const QString first = QStringLiteral("/%1/clihost.host_cxt/Twin0.rtc").arg(m_live.namingServer());
+    const QString second = QStringLiteral("/%1/twinhost.host_cxt/Twin0.rtc").arg(m_live.namingServer());
+    QTemporaryDir dir;
+    const QString file = dir.filePath("twins.rtsys.xml");
+    const Result cryo = rtctl({"cryo", "-o", file, first, second});
+    QCOMPARE(cryo.code, 1);
+    QVERIFY2(cryo.err.contains(second + ": another component is named Twin0 too (" + first + ")"),
+             qPrintable(cryo.err));
+    QFile saved(file);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    QCOMPARE(saved.readAll().count("<rts:Components "), 1);
+    // The same component reached twice is no clash.
+    QCOMPARE(rtctl({"cryo", "-o", file, first, first}).code, 0);
+    QCOMPARE(rtctl({"mgr", manager(), "delete", "Twin0"}).code, 0);
 }
 
 QTEST_GUILESS_MAIN(TestDeployRtctl)

@@ -608,7 +608,12 @@ void TestInteropSystem::serviceCalls()
 
 void TestInteropSystem::mixedSystemRoundTrip()
 {
-    // An RTS profile tells components apart by instance name: ours get names of their own.
+    // An RTS profile tells components apart by instance name: cryo refuses to save two SeqIn0s
+    // silently as one, and the system below gives ours names of their own.
+    const RtctlResult twins
+        = rtctl({"cryo", "-o", m_work.filePath("twins.rtsys"), openRtm("SeqIn0.rtc"), ours("SeqIn0.rtc")});
+    QCOMPARE(twins.code, 1);
+    QVERIFY2(twins.err.contains("another component is named SeqIn0 too"), qPrintable(twins.err));
     const RtctlResult made = rtctl({"mgr", ours("manager.mgr"), "create", "SeqOut?instance_name=MixOut0", "create",
                                     "SeqIn?instance_name=MixIn0"});
     QVERIFY2(made.code == 0, qPrintable(made.err));

@@ -26,7 +26,15 @@ namespace {
 // that a big name server is walked quickly.
 constexpr int searchDepth = 4;
 
-void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::LiveEntry> &found)
+/// Whether two entries found under one instance name are different components bound by name.
+bool isClash(const ComponentMapper::LiveEntry &existing, const NamingNode &node)
+{
+    return !existing.path.contains(QLatin1String(".mgr")) && !node.path.contains(QLatin1String(".mgr"))
+        && !existing.ior.isEmpty() && !node.ior.isEmpty() && existing.ior != node.ior;
+}
+
+void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::LiveEntry> &found,
+                       QStringList *problems)
 {
     if (node.type == NodeType::Component && node.name.endsWith(QLatin1String(".rtc"))) {
         const QString instance = node.name.chopped(4);
@@ -36,9 +44,14 @@ void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::L
             || (existing->path.contains(QLatin1String(".mgr"))
                 && !node.path.contains(QLatin1String(".mgr"))))
             found.insert(instance, {node.path, node.ior});
+        else if (problems && isClash(*existing, node))
+            // A saved system names its components by instance name only (as RTS profiles do).
+            problems->append(QStringLiteral("%1: another component is named %2 too (%3); one instance "
+                                            "name can stand for one component only")
+                                 .arg(node.path, instance, existing->path));
     }
     for (const NamingNode &child : node.children)
-        collectComponents(child, found);
+        collectComponents(child, found, problems);
 }
 
 void collectManagers(const NamingNode &node, std::vector<NamingNode> &managers)
@@ -229,7 +242,7 @@ QHash<QString, ComponentMapper::LiveEntry> ComponentMapper::liveComponents(const
             const NamingNode tree = NamingBrowser::tree(
                 *path, searchDepth, {},
                 check == NamingBrowser::Check::Objects ? NamingBrowser::Check::NamedObjects : check);
-            collectComponents(tree, found);
+            collectComponents(tree, found, problems);
             if (check == NamingBrowser::Check::Objects)
                 collectManagers(tree, managers);
         } catch (const Error &e) {
