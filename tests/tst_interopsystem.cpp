@@ -574,15 +574,30 @@ void TestInteropSystem::serviceCalls()
     // OpenRTM's consumer calls our provider: it reads its commands from the console and prints
     // the reply of an echo at the next command.
     QProcess *consumer = m_examples.value("MyServiceConsumer");
-    QCOMPARE(rtctl({"con", openRtm("MyServiceConsumer0.rtc:MyService"), ours("MyServiceProvider0.rtc:MyService")}).code,
-             0);
+    const QString provided = ours("MyServiceProvider0.rtc");
+    QCOMPARE(rtctl({"con", openRtm("MyServiceConsumer0.rtc:MyService"), provided + ":MyService"}).code, 0);
     QCOMPARE(rtctl({"act", openRtm("MyServiceConsumer0.rtc")}).code, 0);
+    // OpenRTM-aist's providers exist only while their component is Active (see below); the
+    // consumer says so when a call fails.
+    newOutput(consumer);
+    consumer->write("get_value\n");
+    const QRegularExpression answer("Current remote value: \\S+|No service connected\\.");
+    QByteArray got;
+    QTRY_VERIFY_WITH_TIMEOUT((got += consumer->readAllStandardOutput(), answer.match(got).hasMatch()), 10000);
+    QEXPECT_FAIL("", "rtmanager's service providers answer while their component is Inactive; OpenRTM-aist "
+                     "activates a CorbaPort's provider objects in on_activated and deactivates them in "
+                     "on_deactivated",
+                 Continue);
+    QCOMPARE(answer.match(got).captured(0), QString("No service connected."));
+
+    QCOMPARE(rtctl({"act", provided}).code, 0);
     consumer->write("echo interop-hello\n");
     QVERIFY(waitForOutput(consumer, QRegularExpression("echo\\(\\) finished: interop-hello"), 10000, "\n"));
     newOutput(consumer);
     consumer->write("get_echo_history\n");
     QVERIFY(waitForOutput(consumer, QRegularExpression("\\n> 0: interop-hello\\n"), 10000));
     QCOMPARE(rtctl({"dis", openRtm("MyServiceConsumer0.rtc:MyService")}).code, 0);
+    QCOMPARE(rtctl({"deact", provided}).code, 0);
 
     // Our consumer calls OpenRTM's provider. Unlike rtmanager's, OpenRTM-aist's provider objects
     // exist only while their component is Active: until then every call fails.
@@ -594,12 +609,15 @@ void TestInteropSystem::serviceCalls()
     QCOMPARE(ourStatus("MyServiceConsumer0", "echo_count"), QString());
     // The provider prints each call and answers ten seconds later.
     QCOMPARE(rtctl({"act", openRtm("MyServiceProvider0.rtc")}).code, 0);
-    const QRegularExpression call("MyService::echo\\(\\) was called\\.\\s+Message: echo (\\d+)\\s");
-    QByteArray printed;
-    QTRY_VERIFY_WITH_TIMEOUT((printed += provider->readAllStandardOutput(), call.match(printed).hasMatch()), 10000);
-    const QString message = "echo " + call.match(printed).captured(1);
-    QTRY_COMPARE_WITH_TIMEOUT(ourStatus("MyServiceConsumer0", "last_reply"), message, 20000);
-    QCOMPARE(ourStatus("MyServiceConsumer0", "echo_count"), call.match(printed).captured(1));
+    QTRY_VERIFY_WITH_TIMEOUT(!ourStatus("MyServiceConsumer0", "last_reply").isEmpty(), 30000);
+    // What came back is what the provider was called with.
+    const QString reply = ourStatus("MyServiceConsumer0", "last_reply");
+    QVERIFY2(reply.startsWith("echo "), qPrintable(reply));
+    QCOMPARE(ourStatus("MyServiceConsumer0", "echo_count"), reply.mid(5));
+    QVERIFY(waitForOutput(provider,
+                          QRegularExpression("MyService::echo\\(\\) was called\\.\\s+Message: "
+                                             + QRegularExpression::escape(reply) + "\\s"),
+                          5000));
     // The next call is under way and would hold our consumer ten seconds: the provider goes.
     QCOMPARE(rtctl({"dis", ours("MyServiceConsumer0.rtc:MyService")}).code, 0);
     m_live.stop(provider);
