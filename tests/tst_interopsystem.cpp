@@ -181,6 +181,10 @@ private slots:
     void commandTableMatchesHelp();
 
 private:
+    void treeCommands();
+    void dataCommands();
+    void resetCommand();
+    void managerCommands();
     RtctlResult rtctl(const QStringList &arguments, const QString &cwd = QString());
     QString openRtm(const QString &name) const { return "openrtm.host_cxt/" + name; }
     QString ours(const QString &name) const { return "ours.host_cxt/" + name; }
@@ -208,8 +212,15 @@ private:
 
 RtctlResult TestInteropSystem::rtctl(const QStringList &arguments, const QString &cwd)
 {
-    const RtctlResult result = runRtctlAt(cwd.isEmpty() ? "/" + m_server : cwd, arguments);
-    if (result.code == 0 && !arguments.isEmpty())
+    const QString directory = cwd.isEmpty() ? "/" + m_server : cwd;
+    const RtctlResult result = runRtctlAt(directory, arguments);
+    // Counted for the command table when OpenRTM-aist's side took part: its contexts, the
+    // master's endpoint or a saved mixed system.
+    const QString all = arguments.join(QLatin1Char(' ')) + QLatin1Char(' ') + directory;
+    const bool openRtmInvolved = all.contains(QLatin1String("openrtm.host_cxt"))
+        || all.contains(QLatin1String("rtcd.host_cxt")) || all.contains(QStringLiteral(":%1").arg(m_masterPort))
+        || all.contains(QLatin1String(".rtsys"));
+    if (result.code == 0 && !arguments.isEmpty() && openRtmInvolved)
         m_succeeded.insert(arguments.first());
     return result;
 }
@@ -318,12 +329,15 @@ bool TestInteropSystem::waitForSeqInTable(const std::function<bool(const SeqInTa
     return false;
 }
 
+// Before the master: once it is gone they are no longer known as its children. Also from the
+// destructor, in case cleanupTestCase() never ran.
 void TestInteropSystem::stopSlaves()
 {
     if (m_master && m_master->state() != QProcess::NotRunning) {
         for (qint64 pid : childrenOf(m_master->processId()))
             ::kill(pid_t(pid), SIGKILL);
     }
+    m_master = nullptr; // LiveSystem::stopAll() deletes it
 }
 
 void TestInteropSystem::initTestCase()
@@ -360,11 +374,27 @@ void TestInteropSystem::cleanupTestCase()
 {
     stopSlaves();
     m_live.stopAll();
+    // Its threads must not outlive the test's objects at exit.
+    if (!CORBA::is_nil(m_orb))
+        m_orb->destroy();
 }
 
+// Each command of the table above that names this function succeeds here at least once, and its
+// effect is read back.
 void TestInteropSystem::everyRtctlCommand()
 {
-    // The tree: OpenRTM's programs, the master and our manager side by side.
+    for (void (TestInteropSystem::*part)() :
+         {&TestInteropSystem::treeCommands, &TestInteropSystem::dataCommands, &TestInteropSystem::resetCommand,
+          &TestInteropSystem::managerCommands}) {
+        (this->*part)();
+        if (QTest::currentTestFailed())
+            return;
+    }
+}
+
+// ls, cat, find, cd, pwd: OpenRTM's programs, the master and our manager side by side.
+void TestInteropSystem::treeCommands()
+{
     const RtctlResult ls = rtctl({"ls", "-l", "openrtm.host_cxt"});
     QCOMPARE(ls.code, 0);
     QVERIFY2(ls.out.contains(QRegularExpression("Inactive\\s+10/0\\s+10/0\\s+0/0\\s+0/0\\s+SeqIn0.rtc")),
@@ -385,7 +415,7 @@ void TestInteropSystem::everyRtctlCommand()
     QCOMPARE(found.code, 0);
     for (const QString &path : {openRtm("SeqIn0.rtc"), openRtm("SeqOut0.rtc"), ours("SeqIn0.rtc"), ours("SeqOut0.rtc")})
         QVERIFY2(found.lines().contains("/" + m_server + "/" + path), qPrintable(found.out));
-    const RtctlResult managers = rtctl({"find", "/" + m_server, "-t", "m", "-m", "2"});
+    const RtctlResult managers = rtctl({"find", "/" + m_server + "/rtcd.host_cxt", "-t", "m"});
     QVERIFY2(managers.lines().contains("/" + m_server + "/rtcd.host_cxt/manager.mgr"), qPrintable(managers.out));
 
     const RtctlResult cd = rtctl({"cd", "openrtm.host_cxt"});
@@ -396,6 +426,11 @@ void TestInteropSystem::everyRtctlCommand()
     QCOMPARE(rtctl({"cd", "rtcd.host_cxt/manager.mgr"}).code, 0);
     QCOMPARE(rtctl({"cd", "SeqIn0.rtc"}, context).code, 1);
 
+}
+
+// act, print, inject, log, con, dis, deact on OpenRTM's SeqOut and SeqIn.
+void TestInteropSystem::dataCommands()
+{
     // States, read back through ls.
     QCOMPARE(rtctl({"act", openRtm("SeqIn0.rtc"), openRtm("SeqOut0.rtc")}).code, 0);
     QTRY_COMPARE(state(openRtm("SeqIn0.rtc")), QString("Active"));
@@ -440,14 +475,22 @@ void TestInteropSystem::everyRtctlCommand()
     QTRY_COMPARE(state(openRtm("SeqIn0.rtc")), QString("Inactive"));
     QTRY_COMPARE(state(openRtm("SeqOut0.rtc")), QString("Inactive"));
 
-    // reset: OpenRTM's ConsoleIn goes to Error on 666.
+}
+
+// reset: OpenRTM's ConsoleIn goes to Error on 666.
+void TestInteropSystem::resetCommand()
+{
     QCOMPARE(rtctl({"act", openRtm("ConsoleIn0.rtc")}).code, 0);
     m_examples.value("ConsoleIn")->write("666\n");
     QTRY_COMPARE_WITH_TIMEOUT(state(openRtm("ConsoleIn0.rtc")), QString("Error"), 10000);
     QCOMPARE(rtctl({"reset", openRtm("ConsoleIn0.rtc")}).code, 0);
     QTRY_COMPARE_WITH_TIMEOUT(state(openRtm("ConsoleIn0.rtc")), QString("Inactive"), 10000);
 
-    // rtcd2: the master creates in a slave, loads and unloads; exit removes what it created.
+}
+
+// mgr and exit: rtcd2 creates in a slave, loads and unloads; exit removes what it created.
+void TestInteropSystem::managerCommands()
+{
     const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_masterPort);
     const RtctlResult created
         = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Made0&manager_name=interopslave", "list"});
