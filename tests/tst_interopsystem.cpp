@@ -12,7 +12,6 @@
 #include "rtctlrunner.h"
 
 #include <QDeadlineTimer>
-#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -138,27 +137,6 @@ bool holdsCounter(const SeqInTable &table, int column)
             return false;
     }
     return true;
-}
-
-/// Pids whose parent is @p parent (rtcd2's slaves start a session of their own, so killing the
-/// master's process group would leave them).
-QList<qint64> childrenOf(qint64 parent)
-{
-    QList<qint64> children;
-    const QStringList entries = QDir(QStringLiteral("/proc")).entryList(QDir::Dirs);
-    for (const QString &entry : entries) {
-        bool ok = false;
-        const qint64 pid = entry.toLongLong(&ok);
-        QFile stat(QStringLiteral("/proc/%1/stat").arg(entry));
-        if (!ok || !stat.open(QIODevice::ReadOnly))
-            continue;
-        // pid (comm) state ppid …; comm may hold spaces, so count from the last ')'.
-        const QByteArray text = stat.readAll();
-        const QList<QByteArray> fields = text.mid(text.lastIndexOf(')') + 2).split(' ');
-        if (fields.size() > 1 && fields[1].toLongLong() == parent)
-            children.append(pid);
-    }
-    return children;
 }
 
 } // namespace
@@ -334,7 +312,7 @@ bool TestInteropSystem::waitForSeqInTable(const std::function<bool(const SeqInTa
 void TestInteropSystem::stopSlaves()
 {
     if (m_master && m_master->state() != QProcess::NotRunning) {
-        for (qint64 pid : childrenOf(m_master->processId()))
+        for (qint64 pid : LiveTest::childProcesses(m_master->processId()))
             ::kill(pid_t(pid), SIGKILL);
     }
     m_master = nullptr; // LiveSystem::stopAll() deletes it

@@ -114,6 +114,25 @@ QByteArray managerLocation(quint16 port)
     return QStringLiteral("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8();
 }
 
+QList<qint64> childProcesses(qint64 parent)
+{
+    QList<qint64> children;
+    const QStringList entries = QDir(QStringLiteral("/proc")).entryList(QDir::Dirs);
+    for (const QString &entry : entries) {
+        bool ok = false;
+        const qint64 pid = entry.toLongLong(&ok);
+        QFile stat(QStringLiteral("/proc/%1/stat").arg(entry));
+        if (!ok || !stat.open(QIODevice::ReadOnly))
+            continue;
+        // "pid (comm) state ppid ...": comm may hold spaces, so fields count from the last ')'.
+        const QByteArray text = stat.readAll();
+        const QList<QByteArray> fields = text.mid(text.lastIndexOf(')') + 2).split(' ');
+        if (fields.size() > 1 && fields[1].toLongLong() == parent)
+            children.append(pid);
+    }
+    return children;
+}
+
 QString LiveSystem::namingServer() const
 {
     return QStringLiteral("%1:%2").arg(m_host.address).arg(m_namingPort);
@@ -201,6 +220,12 @@ QProcess *LiveSystem::startProcess(const QString &program, const QStringList &ar
     process->start(program, arguments);
     QProcess *raw = process.get();
     m_processes.push_back(std::move(process));
+    // Without this, state() can say Starting long after the program runs when no ready text is
+    // awaited: only an event loop or a wait notices that the start succeeded.
+    if (!raw->waitForStarted(10000)) {
+        *error = QStringLiteral("%1 did not start: %2").arg(program, raw->errorString());
+        return nullptr;
+    }
     QByteArray output;
     const QDeadlineTimer deadline(timeoutMs);
     while (!output.contains(readyText.toUtf8())) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QList>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
@@ -22,6 +23,11 @@ bool isListening(const QString &address, quint16 port);
 bool waitUntilStopped(qint64 pid, int timeoutMs = 5000);
 /// `corbaloc:iiop:127.0.0.1:PORT/manager`: the object key of an rtmanager serving on `port`.
 QByteArray managerLocation(quint16 port);
+/**
+ * The processes whose parent is `parent`, e.g. the slaves an OpenRTM-aist master started: they
+ * begin sessions of their own, so stopping the master leaves them running.
+ */
+QList<qint64> childProcesses(qint64 parent);
 
 /// Where a LiveSystem runs its servers.
 struct LiveHost
