@@ -30,3 +30,12 @@ target_compile_definitions(tst_interopsystem PRIVATE
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
 add_dependencies(tst_interopsystem rtmanager rtctl)
 set_tests_properties(tst_interopsystem PROPERTIES LABELS interop)
+
+# The online System Editor's Name Service view against the same kind of mixed system.
+rtstudio_add_test(tst_interoponline SOURCES tst_interoponline.cpp
+    LIBS rtsystemeditor rtstudio_livetest rtstudio_rtctlrunner)
+target_compile_definitions(tst_interoponline PRIVATE
+    RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
+add_dependencies(tst_interoponline rtmanager rtctl)
+set_tests_properties(tst_interoponline PROPERTIES LABELS interop)
