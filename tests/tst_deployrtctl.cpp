@@ -152,12 +152,15 @@ void TestDeployRtctl::failedResurrectRollsBack()
 void TestDeployRtctl::cryoReportsTwoComponentsOfOneName()
 {
     QString error;
-    QVERIFY2(m_live.startHostManager(QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), "twinhost",
-                                     {"manager.components.precreate=ConsoleIn?instance_name=Twin0"}, &error),
+    QVERIFY2(m_live.startHostManager(
+                 QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), "twinhost",
+                 {"manager.components.precreate=ConsoleIn?instance_name=Twin0"}, &error),
              qPrintable(error));
     QCOMPARE(rtctl({"mgr", manager(), "create", "ConsoleIn?instance_name=Twin0"}).code, 0);
-    const QString first = QStringLiteral("/%1/clihost.host_cxt/Twin0.rtc").arg(m_live.namingServer());
-    const QString second = QStringLiteral("/%1/twinhost.host_cxt/Twin0.rtc").arg(m_live.namingServer());
+    const QString first
+        = QStringLiteral("/%1/clihost.host_cxt/Twin0.rtc").arg(m_live.namingServer());
+    const QString second
+        = QStringLiteral("/%1/twinhost.host_cxt/Twin0.rtc").arg(m_live.namingServer());
     QTemporaryDir dir;
     const QString file = dir.filePath("twins.rtsys.xml");
     const Result cryo = rtctl({"cryo", "-o", file, first, second});

@@ -43,7 +43,10 @@ private slots:
     void pollsAndDrivesOpenRtmStates();
 
 private:
-    QString path(const QString &relative) const { return "/" + m_live.namingServer() + "/" + relative; }
+    QString path(const QString &relative) const
+    {
+        return "/" + m_live.namingServer() + "/" + relative;
+    }
     static int polledState(NameServiceView &view, const QString &path);
     void refreshed(NameServiceView &view);
 
@@ -77,12 +80,14 @@ void TestInteropOnline::initTestCase()
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     const QString server = m_live.namingServer();
     QStringList arguments;
-    for (const QString &option : {"corba.nameservers:" + server, QStringLiteral("corba.endpoints:127.0.0.1:"),
-                                  QStringLiteral("naming.formats:openrtm.host_cxt/%n.rtc"),
-                                  QStringLiteral("manager.corba_servant:NO"), QStringLiteral("logger.enable:NO"),
-                                  QStringLiteral("exec_cxt.periodic.rate:20")})
+    for (const QString &option :
+         {"corba.nameservers:" + server, QStringLiteral("corba.endpoints:127.0.0.1:"),
+          QStringLiteral("naming.formats:openrtm.host_cxt/%n.rtc"),
+          QStringLiteral("manager.corba_servant:NO"), QStringLiteral("logger.enable:NO"),
+          QStringLiteral("exec_cxt.periodic.rate:20")})
         arguments << "-o" << option;
-    QVERIFY2(m_live.startProcess(examples + "SeqOutComp", arguments, QString(), &error, 0), qPrintable(error));
+    QVERIFY2(m_live.startProcess(examples + "SeqOutComp", arguments, QString(), &error, 0),
+             qPrintable(error));
     // An rtcd2 master; the component it creates lives in a slave process.
     const quint16 masterPort = LiveTest::freePort();
     QVERIFY2(m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), "ours",
@@ -106,13 +111,18 @@ void TestInteropOnline::initTestCase()
                    .arg(examples, openRtmPrefix)
                    .toUtf8());
     conf.close();
-    m_master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()}, QString(), &error, 0);
+    m_master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()}, QString(),
+                                   &error, 0);
     QVERIFY2(m_master, qPrintable(error));
     const QString cwd = "/" + server;
-    QTRY_VERIFY_WITH_TIMEOUT(runRtctlAt(cwd, {"cat", "openrtm.host_cxt/SeqOut0.rtc"}).code == 0, 30000);
-    QTRY_VERIFY_WITH_TIMEOUT(runRtctlAt(cwd, {"cat", "rtcd.host_cxt/manager.mgr"}).code == 0, 30000);
-    const RtctlResult created = runRtctlAt(cwd, {"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(masterPort),
-                                                 "create", "ConsoleOut?instance_name=Made0&manager_name=onlineslave"});
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctlAt(cwd, {"cat", "openrtm.host_cxt/SeqOut0.rtc"}).code == 0,
+                             30000);
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctlAt(cwd, {"cat", "rtcd.host_cxt/manager.mgr"}).code == 0,
+                             30000);
+    const RtctlResult created
+        = runRtctlAt(cwd,
+                     {"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(masterPort), "create",
+                      "ConsoleOut?instance_name=Made0&manager_name=onlineslave"});
     QVERIFY2(created.code == 0, qPrintable(created.err));
 }
 
@@ -138,7 +148,9 @@ void TestInteropOnline::showsOpenRtmInTheTree()
     QCOMPARE(NodeType(seqOut.data(NameServiceModel::TypeRole).toInt()), NodeType::Component);
     QCOMPARE(seqOut.siblingAtColumn(1).data().toString(), QStringLiteral("Inactive"));
     QVERIFY(seqOut.data(NameServiceModel::IorRole).toString().startsWith("IOR:"));
-    QCOMPARE(NodeType(model->indexOfPath(path("ours.host_cxt/SeqIn0.rtc")).data(NameServiceModel::TypeRole).toInt()),
+    QCOMPARE(NodeType(model->indexOfPath(path("ours.host_cxt/SeqIn0.rtc"))
+                          .data(NameServiceModel::TypeRole)
+                          .toInt()),
              NodeType::Component);
     // rtcd2's master, the component its slave holds listed below it and bound by name.
     const QModelIndex master = model->indexOfPath(path("rtcd.host_cxt/manager.mgr"));

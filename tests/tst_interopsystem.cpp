@@ -46,9 +46,11 @@ struct CommandCoverage
 const CommandCoverage commandTable[] = {
     {"profile", nullptr, "offline: checks and converts profile files"},
     {"gen", nullptr, "offline: writes a project (built against OpenRTM-aist by tst_interopbuild)"},
-    {"build", nullptr, "offline: builds a generated project (against OpenRTM-aist in tst_interopbuild)"},
+    {"build", nullptr,
+     "offline: builds a generated project (against OpenRTM-aist in tst_interopbuild)"},
     {"local", nullptr, "RT Studio's own name server and manager on fixed ports; no peer involved"},
-    {"ls", "everyRtctlCommand", "-l: states and port counts of OpenRTM's components; rtcd2's manager"},
+    {"ls", "everyRtctlCommand",
+     "-l: states and port counts of OpenRTM's components; rtcd2's manager"},
     {"cat", "everyRtctlCommand", "SeqIn0's ten InPorts; rtcd2's manager profile"},
     {"find", "everyRtctlCommand", "by name pattern and by type (rtcd2's manager)"},
     {"pwd", "everyRtctlCommand", "prints the directory cd gave"},
@@ -56,7 +58,8 @@ const CommandCoverage commandTable[] = {
     {"act", "everyRtctlCommand", "OpenRTM's SeqIn0 and SeqOut0 read back Active"},
     {"deact", "everyRtctlCommand", "the same read back Inactive"},
     {"reset", "everyRtctlCommand", "OpenRTM's ConsoleIn0 from Error (input 666) to Inactive"},
-    {"exit", "everyRtctlCommand", "a component rtcd2 created is gone from the manager and the names"},
+    {"exit", "everyRtctlCommand",
+     "a component rtcd2 created is gone from the manager and the names"},
     {"con", "everyRtctlCommand", "the connector is listed on both OpenRTM ports"},
     {"dis", "everyRtctlCommand", "the connector is gone from both"},
     {"print", "everyRtctlCommand", "samples of OpenRTM's SeqOut0"},
@@ -98,8 +101,10 @@ QList<SeqInTable> seqInTables(QByteArray output)
 {
     // The program moves the cursor up to redraw in place; only the lines matter here.
     output.replace("\x1b[A", "").replace('\r', "");
-    static const QRegularExpression header(QStringLiteral("^\\s*((?:[A-Z][a-z]+\\s+){4}[A-Z][a-z]+)\\s*$"));
-    static const QRegularExpression basicRow(QStringLiteral("^\\s*(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+(-?\\d+)\\["));
+    static const QRegularExpression header(
+        QStringLiteral("^\\s*((?:[A-Z][a-z]+\\s+){4}[A-Z][a-z]+)\\s*$"));
+    static const QRegularExpression basicRow(
+        QStringLiteral("^\\s*(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+(-?\\d+)\\["));
     static const QRegularExpression sequenceRow(
         QStringLiteral("^\\s*\\d+:\\s+(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+(\\S+)\\s+(-|-?\\d+)"));
     QList<SeqInTable> tables;
@@ -109,8 +114,10 @@ QList<SeqInTable> seqInTables(QByteArray output)
         if (const auto m = header.match(text); m.hasMatch()) {
             if (current)
                 tables.append(*current);
-            current = SeqInTable {m.captured(1).split(QLatin1Char(' '), Qt::SkipEmptyParts), {}, {}};
-        } else if (const auto b = basicRow.match(text); current && current->basic.isEmpty() && b.hasMatch()) {
+            current
+                = SeqInTable {m.captured(1).split(QLatin1Char(' '), Qt::SkipEmptyParts), {}, {}};
+        } else if (const auto b = basicRow.match(text);
+                   current && current->basic.isEmpty() && b.hasMatch()) {
             for (int i = 1; i <= 5; ++i)
                 current->basic.append(cell(b.captured(i)));
         } else if (const auto s = sequenceRow.match(text); current && s.hasMatch()) {
@@ -130,7 +137,9 @@ bool holdsCounter(const SeqInTable &table, int column)
     if (table.basic.size() != 5 || table.rows.size() < 10 || table.basic[column] == 0)
         return false;
     const QString type = table.columns.value(column);
-    const double wrap = type == QLatin1String("Octet") ? 256 : type == QLatin1String("Short") ? 65536 : 0;
+    const double wrap = type == QLatin1String("Octet") ? 256
+        : type == QLatin1String("Short")               ? 65536
+                                                       : 0;
     for (int i = 0; i < 10; ++i) {
         const double step = table.rows[i][column] - table.rows[0][column];
         if (std::isnan(step) || (wrap ? std::fmod(step + wrap, wrap) : step) != i)
@@ -175,8 +184,9 @@ private:
                        const QByteArray &poke = QByteArray());
     bool waitForSeqInTable(const std::function<bool(const SeqInTable &)> &wanted, int timeoutMs);
     void stopSlaves();
-    void checkConfiguration(const QString &component,
-                            const std::function<bool(const QString &, const QString &, const QString &)> &inEffect);
+    void checkConfiguration(
+        const QString &component,
+        const std::function<bool(const QString &, const QString &, const QString &)> &inEffect);
 
     LiveTest::LiveSystem m_live;
     QTemporaryDir m_work;
@@ -185,7 +195,7 @@ private:
     quint16 m_masterPort = 0;
     QProcess *m_master = nullptr;
     QHash<QString, QProcess *> m_examples; // OpenRTM-aist's programs by component name
-    QSet<QString> m_succeeded;              // rtctl commands that exited 0 at least once
+    QSet<QString> m_succeeded; // rtctl commands that exited 0 at least once
 };
 
 RtctlResult TestInteropSystem::rtctl(const QStringList &arguments, const QString &cwd)
@@ -196,7 +206,8 @@ RtctlResult TestInteropSystem::rtctl(const QStringList &arguments, const QString
     // master's endpoint or a saved mixed system.
     const QString all = arguments.join(QLatin1Char(' ')) + QLatin1Char(' ') + directory;
     const bool openRtmInvolved = all.contains(QLatin1String("openrtm.host_cxt"))
-        || all.contains(QLatin1String("rtcd.host_cxt")) || all.contains(QStringLiteral(":%1").arg(m_masterPort))
+        || all.contains(QLatin1String("rtcd.host_cxt"))
+        || all.contains(QStringLiteral(":%1").arg(m_masterPort))
         || all.contains(QLatin1String(".rtsys"));
     if (result.code == 0 && !arguments.isEmpty() && openRtmInvolved)
         m_succeeded.insert(arguments.first());
@@ -205,7 +216,8 @@ RtctlResult TestInteropSystem::rtctl(const QStringList &arguments, const QString
 
 QString TestInteropSystem::ourStatus(const QString &component, const QString &name) const
 {
-    const QString name_ = QStringLiteral("corbaname::%1#ours.host_cxt/%2.rtc").arg(m_server, component);
+    const QString name_
+        = QStringLiteral("corbaname::%1#ours.host_cxt/%2.rtc").arg(m_server, component);
     return LiveTest::componentStatus(m_orb, name_, name.toUtf8().constData());
 }
 
@@ -214,9 +226,11 @@ QProcess *TestInteropSystem::startExample(const QString &name, QString *error)
     // Registered in this test's name server only; no manager servant, so no master is looked for.
     // Twenty cycles a second keep the examples' console output small.
     const QString examples = openRtmPrefix + "/share/openrtm-2.1/components/c++/examples/";
-    QStringList options {"corba.nameservers:" + m_server, QStringLiteral("corba.endpoints:127.0.0.1:"),
+    QStringList options {"corba.nameservers:" + m_server,
+                         QStringLiteral("corba.endpoints:127.0.0.1:"),
                          QStringLiteral("naming.formats:openrtm.host_cxt/%n.rtc"),
-                         QStringLiteral("manager.corba_servant:NO"), QStringLiteral("logger.enable:NO"),
+                         QStringLiteral("manager.corba_servant:NO"),
+                         QStringLiteral("logger.enable:NO"),
                          QStringLiteral("exec_cxt.periodic.rate:20")};
     // ConfigSample's sets other than the default come from the example's configuration file.
     if (name == QLatin1String("ConfigSample"))
@@ -224,7 +238,8 @@ QProcess *TestInteropSystem::startExample(const QString &name, QString *error)
     QStringList arguments;
     for (const QString &option : std::as_const(options))
         arguments << QStringLiteral("-o") << option;
-    QProcess *process = m_live.startProcess(examples + name + "Comp", arguments, QString(), error, 0);
+    QProcess *process
+        = m_live.startProcess(examples + name + "Comp", arguments, QString(), error, 0);
     m_examples.insert(name, process);
     return process;
 }
@@ -253,7 +268,8 @@ bool TestInteropSystem::startMaster(QString *error)
                    .arg(examples, openRtmPrefix)
                    .toUtf8());
     conf.close();
-    m_master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()}, QString(), error, 0);
+    m_master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()}, QString(),
+                                   error, 0);
     return m_master != nullptr;
 }
 
@@ -268,14 +284,15 @@ QByteArray TestInteropSystem::newOutput(QProcess *process)
     return process->readAllStandardOutput();
 }
 
-bool TestInteropSystem::waitForOutput(QProcess *process, const QRegularExpression &pattern, int timeoutMs,
-                                      const QByteArray &poke)
+bool TestInteropSystem::waitForOutput(QProcess *process, const QRegularExpression &pattern,
+                                      int timeoutMs, const QByteArray &poke)
 {
     QByteArray output;
     const QDeadlineTimer deadline(timeoutMs);
     while (!pattern.match(QString::fromLatin1(output)).hasMatch()) {
         if (deadline.hasExpired()) {
-            // The examples redraw with cursor movements; shown as they are they would hide the text.
+            // The examples redraw with cursor movements; shown as they are they would hide the
+            // text.
             output.replace("\x1b[A", "").replace('\r', "");
             qWarning("no %s in: %s", qPrintable(pattern.pattern()), output.right(1500).constData());
             return false;
@@ -331,7 +348,8 @@ void TestInteropSystem::initTestCase()
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     m_server = m_live.namingServer();
-    for (const char *name : {"SeqOut", "SeqIn", "ConfigSample", "MyServiceProvider", "MyServiceConsumer", "ConsoleIn"})
+    for (const char *name :
+         {"SeqOut", "SeqIn", "ConfigSample", "MyServiceProvider", "MyServiceConsumer", "ConsoleIn"})
         QVERIFY2(startExample(name, &error), qPrintable(error));
     QVERIFY2(startMaster(&error), qPrintable(error));
     // rtmanager's service consumer waits for OpenRTM's provider, which takes ten seconds to echo.
@@ -341,8 +359,10 @@ void TestInteropSystem::initTestCase()
                                       "corba.call_timeout=20000"},
                                      &error),
              qPrintable(error));
-    for (const char *name : {"SeqOut", "SeqIn", "ConfigSample", "MyServiceProvider", "MyServiceConsumer", "ConsoleIn"})
-        QTRY_VERIFY2_WITH_TIMEOUT(rtctl({"cat", openRtm(name + QStringLiteral("0.rtc"))}).code == 0, name, 30000);
+    for (const char *name :
+         {"SeqOut", "SeqIn", "ConfigSample", "MyServiceProvider", "MyServiceConsumer", "ConsoleIn"})
+        QTRY_VERIFY2_WITH_TIMEOUT(rtctl({"cat", openRtm(name + QStringLiteral("0.rtc"))}).code == 0,
+                                  name, 30000);
     QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", "rtcd.host_cxt/manager.mgr"}).code == 0, 30000);
     QCOMPARE(rtctl({"ls", "ours.host_cxt"}).lines().size(), 6);
     m_succeeded.clear();
@@ -362,8 +382,8 @@ void TestInteropSystem::cleanupTestCase()
 void TestInteropSystem::everyRtctlCommand()
 {
     for (void (TestInteropSystem::*part)() :
-         {&TestInteropSystem::treeCommands, &TestInteropSystem::dataCommands, &TestInteropSystem::resetCommand,
-          &TestInteropSystem::managerCommands}) {
+         {&TestInteropSystem::treeCommands, &TestInteropSystem::dataCommands,
+          &TestInteropSystem::resetCommand, &TestInteropSystem::managerCommands}) {
         (this->*part)();
         if (QTest::currentTestFailed())
             return;
@@ -375,9 +395,11 @@ void TestInteropSystem::treeCommands()
 {
     const RtctlResult ls = rtctl({"ls", "-l", "openrtm.host_cxt"});
     QCOMPARE(ls.code, 0);
-    QVERIFY2(ls.out.contains(QRegularExpression("Inactive\\s+10/0\\s+10/0\\s+0/0\\s+0/0\\s+SeqIn0.rtc")),
-             qPrintable(ls.out));
-    QVERIFY2(ls.out.contains(QRegularExpression("Inactive\\s+1/0\\s+0/0\\s+0/0\\s+1/0\\s+MyServiceProvider0.rtc")),
+    QVERIFY2(
+        ls.out.contains(QRegularExpression("Inactive\\s+10/0\\s+10/0\\s+0/0\\s+0/0\\s+SeqIn0.rtc")),
+        qPrintable(ls.out));
+    QVERIFY2(ls.out.contains(QRegularExpression(
+                 "Inactive\\s+1/0\\s+0/0\\s+0/0\\s+1/0\\s+MyServiceProvider0.rtc")),
              qPrintable(ls.out));
     QCOMPARE(rtctl({"ls", "rtcd.host_cxt"}).lines(), QStringList {"manager.mgr"});
 
@@ -386,15 +408,18 @@ void TestInteropSystem::treeCommands()
     for (const QString &port : seqPorts)
         QVERIFY2(cat.lines().contains("  DataInPort: " + port), qPrintable(port));
     QVERIFY(cat.lines().contains("  Type name      SeqIn"));
-    const QJsonObject master = rtctl({"cat", "--json", "rtcd.host_cxt/manager.mgr"}).json().object();
+    const QJsonObject master
+        = rtctl({"cat", "--json", "rtcd.host_cxt/manager.mgr"}).json().object();
     QCOMPARE(master["profile"]["instance_name"].toString(), QString("manager"));
 
     const RtctlResult found = rtctl({"find", "/" + m_server, "-n", "Seq*.rtc"});
     QCOMPARE(found.code, 0);
-    for (const QString &path : {openRtm("SeqIn0.rtc"), openRtm("SeqOut0.rtc"), ours("SeqIn0.rtc"), ours("SeqOut0.rtc")})
+    for (const QString &path :
+         {openRtm("SeqIn0.rtc"), openRtm("SeqOut0.rtc"), ours("SeqIn0.rtc"), ours("SeqOut0.rtc")})
         QVERIFY2(found.lines().contains("/" + m_server + "/" + path), qPrintable(found.out));
     const RtctlResult managers = rtctl({"find", "/" + m_server + "/rtcd.host_cxt", "-t", "m"});
-    QVERIFY2(managers.lines().contains("/" + m_server + "/rtcd.host_cxt/manager.mgr"), qPrintable(managers.out));
+    QVERIFY2(managers.lines().contains("/" + m_server + "/rtcd.host_cxt/manager.mgr"),
+             qPrintable(managers.out));
 
     const RtctlResult cd = rtctl({"cd", "openrtm.host_cxt"});
     QCOMPARE(cd.code, 0);
@@ -403,7 +428,6 @@ void TestInteropSystem::treeCommands()
     QCOMPARE(rtctl({"pwd"}, context).out, context + "\n");
     QCOMPARE(rtctl({"cd", "rtcd.host_cxt/manager.mgr"}).code, 0);
     QCOMPARE(rtctl({"cd", "SeqIn0.rtc"}, context).code, 1);
-
 }
 
 // act, print, inject, log, con, dis, deact on OpenRTM's SeqOut and SeqIn.
@@ -418,8 +442,9 @@ void TestInteropSystem::dataCommands()
     const RtctlResult printed = rtctl({"print", "-n", "2", openRtm("SeqOut0.rtc:Short")});
     QCOMPARE(printed.code, 0);
     QCOMPARE(printed.lines().size(), 2);
-    QVERIFY2(printed.lines().first().contains(QRegularExpression("^\\[\\d+\\.\\d{9}\\] data=-?\\d+$")),
-             qPrintable(printed.out));
+    QVERIFY2(
+        printed.lines().first().contains(QRegularExpression("^\\[\\d+\\.\\d{9}\\] data=-?\\d+$")),
+        qPrintable(printed.out));
     QCOMPARE(rtctl({"inject", openRtm("SeqIn0.rtc:Short"), "4242"}).code, 0);
     QVERIFY(waitForSeqInTable([](const SeqInTable &t) { return t.basic.value(3) == 4242; }, 10000));
 
@@ -433,10 +458,12 @@ void TestInteropSystem::dataCommands()
     QVERIFY2(last["type"].toString().contains("TimedLong"), samples[2].constData());
     const double value = last["value"]["data"].toDouble();
     QCOMPARE(rtctl({"log", "--play", recording, "-r", "50", openRtm("SeqIn0.rtc:Long")}).code, 0);
-    QVERIFY(waitForSeqInTable([value](const SeqInTable &t) { return t.basic.value(2) == value; }, 10000));
+    QVERIFY(waitForSeqInTable([value](const SeqInTable &t) { return t.basic.value(2) == value; },
+                              10000));
 
     // A connector between two of OpenRTM's ports, seen from both and gone again.
-    const RtctlResult con = rtctl({"con", "-n", "interop", openRtm("SeqOut0.rtc:Double"), openRtm("SeqIn0.rtc:Double")});
+    const RtctlResult con = rtctl(
+        {"con", "-n", "interop", openRtm("SeqOut0.rtc:Double"), openRtm("SeqIn0.rtc:Double")});
     QCOMPARE(con.code, 0);
     const QString id = con.out.trimmed();
     for (const QString &port : {openRtm("SeqOut0.rtc:Double"), openRtm("SeqIn0.rtc:Double")}) {
@@ -452,7 +479,6 @@ void TestInteropSystem::dataCommands()
     QCOMPARE(rtctl({"deact", openRtm("SeqIn0.rtc"), openRtm("SeqOut0.rtc")}).code, 0);
     QTRY_COMPARE(state(openRtm("SeqIn0.rtc")), QString("Inactive"));
     QTRY_COMPARE(state(openRtm("SeqOut0.rtc")), QString("Inactive"));
-
 }
 
 // reset: OpenRTM's ConsoleIn goes to Error on 666.
@@ -463,7 +489,6 @@ void TestInteropSystem::resetCommand()
     QTRY_COMPARE_WITH_TIMEOUT(state(openRtm("ConsoleIn0.rtc")), QString("Error"), 10000);
     QCOMPARE(rtctl({"reset", openRtm("ConsoleIn0.rtc")}).code, 0);
     QTRY_COMPARE_WITH_TIMEOUT(state(openRtm("ConsoleIn0.rtc")), QString("Inactive"), 10000);
-
 }
 
 // mgr and exit: rtcd2 creates in a slave, loads and unloads; exit removes what it created.
@@ -471,14 +496,17 @@ void TestInteropSystem::managerCommands()
 {
     const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_masterPort);
     const RtctlResult created
-        = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Made0&manager_name=interopslave", "list"});
+        = rtctl({"mgr", direct, "create",
+                 "ConsoleOut?instance_name=Made0&manager_name=interopslave", "list"});
     QVERIFY2(created.code == 0, qPrintable(created.err));
     QCOMPARE(created.lines().value(0), QString("Made0"));
     QVERIFY2(created.lines().contains("  Made0  ConsoleOut"), qPrintable(created.out));
     QTRY_VERIFY(rtctl({"ls", "rtcd.host_cxt"}).lines().contains("Made0.rtc"));
-    const RtctlResult loaded = rtctl({"mgr", "--json", "rtcd.host_cxt/manager.mgr", "load", "ConfigSample.so", "list"});
+    const RtctlResult loaded
+        = rtctl({"mgr", "--json", "rtcd.host_cxt/manager.mgr", "load", "ConfigSample.so", "list"});
     QVERIFY2(loaded.code == 0, qPrintable(loaded.err));
-    QVERIFY2(loaded.json()["factories"].toArray().contains(QJsonValue("ConfigSample")), qPrintable(loaded.out));
+    QVERIFY2(loaded.json()["factories"].toArray().contains(QJsonValue("ConfigSample")),
+             qPrintable(loaded.out));
     // OpenRTM's manager unloads a module by the path it lists, not by the name it was loaded with.
     QString module;
     for (const QJsonValue &entry : loaded.json()["loadedModules"].toArray()) {
@@ -498,22 +526,29 @@ void TestInteropSystem::managerCommands()
 void TestInteropSystem::dataBothWays()
 {
     for (const QString &port : seqPorts) {
-        const RtctlResult in = rtctl({"con", openRtm("SeqOut0.rtc:") + port, ours("SeqIn0.rtc:") + port});
+        const RtctlResult in
+            = rtctl({"con", openRtm("SeqOut0.rtc:") + port, ours("SeqIn0.rtc:") + port});
         QVERIFY2(in.code == 0, qPrintable(port + ": " + in.err));
-        const RtctlResult out = rtctl({"con", ours("SeqOut0.rtc:") + port, openRtm("SeqIn0.rtc:") + port});
+        const RtctlResult out
+            = rtctl({"con", ours("SeqOut0.rtc:") + port, openRtm("SeqIn0.rtc:") + port});
         QVERIFY2(out.code == 0, qPrintable(port + ": " + out.err));
     }
-    QCOMPARE(rtctl({"act", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"), ours("SeqIn0.rtc")}).code,
+    QCOMPARE(rtctl({"act", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
+                    ours("SeqIn0.rtc")})
+                 .code,
              0);
 
     // OpenRTM → ours: our SeqIn counts the samples of each port.
     QStringList silent = seqPorts;
     const QDeadlineTimer deadline(15000);
     while (!silent.isEmpty() && !deadline.hasExpired()) {
-        silent.removeIf([this](const QString &port) { return ourStatus("SeqIn0", port + "_count").toLong() > 0; });
+        silent.removeIf([this](const QString &port) {
+            return ourStatus("SeqIn0", port + "_count").toLong() > 0;
+        });
         QTest::qWait(50);
     }
-    QVERIFY2(silent.isEmpty(), qPrintable("nothing arrived from OpenRTM's SeqOut on " + silent.join(", ")));
+    QVERIFY2(silent.isEmpty(),
+             qPrintable("nothing arrived from OpenRTM's SeqOut on " + silent.join(", ")));
 
     // Ours → OpenRTM: each column of its table holds our counter, every sequence complete.
     QSet<QString> arrived;
@@ -527,9 +562,13 @@ void TestInteropSystem::dataBothWays()
         },
         15000);
     for (const char *type : {"Double", "Float", "Long", "Short", "Octet"})
-        QVERIFY2(arrived.contains(type), qPrintable(QStringLiteral("OpenRTM's SeqIn did not get our %1 and %1Seq").arg(type)));
+        QVERIFY2(
+            arrived.contains(type),
+            qPrintable(QStringLiteral("OpenRTM's SeqIn did not get our %1 and %1Seq").arg(type)));
 
-    QCOMPARE(rtctl({"deact", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"), ours("SeqIn0.rtc")}).code,
+    QCOMPARE(rtctl({"deact", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
+                    ours("SeqIn0.rtc")})
+                 .code,
              0);
     QCOMPARE(rtctl({"dis", openRtm("SeqOut0.rtc")}).code, 0);
     QCOMPARE(rtctl({"dis", ours("SeqOut0.rtc")}).code, 0);
@@ -544,15 +583,19 @@ void TestInteropSystem::configuration()
     const QString theirs = openRtm("ConfigSample0.rtc");
     const RtctlResult list = rtctl({"conf", theirs});
     QCOMPARE(list.code, 0);
-    QVERIFY2(list.lines().contains("  default") && list.lines().contains("  mode0") && list.lines().contains("* mode1"),
+    QVERIFY2(list.lines().contains("  default") && list.lines().contains("  mode0")
+                 && list.lines().contains("* mode1"),
              qPrintable(list.out));
-    checkConfiguration(theirs, [this, sample](const QString &set, const QString &parameter, const QString &value) {
-        newOutput(sample);
-        return waitForOutput(sample,
-                             QRegularExpression(QStringLiteral("Active Configuration Set: %1\\s[^A]*%2:\\s+%3\\s")
-                                                    .arg(set, parameter, QRegularExpression::escape(value))),
-                             10000);
-    });
+    checkConfiguration(
+        theirs, [this, sample](const QString &set, const QString &parameter, const QString &value) {
+            newOutput(sample);
+            return waitForOutput(
+                sample,
+                QRegularExpression(
+                    QStringLiteral("Active Configuration Set: %1\\s[^A]*%2:\\s+%3\\s")
+                        .arg(set, parameter, QRegularExpression::escape(value))),
+                10000);
+        });
     QCOMPARE(rtctl({"conf", "-s", "mode1", theirs, "act"}).code, 0);
 
     // The same against rtmanager's ConfigSample, which mirrors its bound values in its status.
@@ -560,12 +603,13 @@ void TestInteropSystem::configuration()
     const QString mine = ours("ConfigSample0.rtc");
     QCOMPARE(rtctl({"act", mine}).code, 0);
     QCOMPARE(rtctl({"conf", "--json", mine}).json()["active"].toString(), QString("default"));
-    checkConfiguration(mine, [this](const QString &, const QString &parameter, const QString &value) {
-        const QDeadlineTimer deadline(10000);
-        while (ourStatus("ConfigSample0", parameter) != value && !deadline.hasExpired())
-            QTest::qWait(50);
-        return ourStatus("ConfigSample0", parameter) == value;
-    });
+    checkConfiguration(
+        mine, [this](const QString &, const QString &parameter, const QString &value) {
+            const QDeadlineTimer deadline(10000);
+            while (ourStatus("ConfigSample0", parameter) != value && !deadline.hasExpired())
+                QTest::qWait(50);
+            return ourStatus("ConfigSample0", parameter) == value;
+        });
     QCOMPARE(rtctl({"conf", "-s", "default", mine, "act"}).code, 0);
     QCOMPARE(rtctl({"deact", mine}).code, 0);
 }
@@ -573,7 +617,8 @@ void TestInteropSystem::configuration()
 // Writes the active set and mode0, activates mode0 and reads back; `inEffect(set, parameter,
 // value)` tells whether the component itself runs with that value.
 void TestInteropSystem::checkConfiguration(
-    const QString &component, const std::function<bool(const QString &, const QString &, const QString &)> &inEffect)
+    const QString &component,
+    const std::function<bool(const QString &, const QString &, const QString &)> &inEffect)
 {
     const QString active = rtctl({"conf", "--json", component}).json()["active"].toString();
     QVERIFY(!active.isEmpty());
@@ -596,7 +641,9 @@ void TestInteropSystem::serviceCalls()
     // the reply of an echo at the next command.
     QProcess *consumer = m_examples.value("MyServiceConsumer");
     const QString provided = ours("MyServiceProvider0.rtc");
-    QCOMPARE(rtctl({"con", openRtm("MyServiceConsumer0.rtc:MyService"), provided + ":MyService"}).code, 0);
+    QCOMPARE(
+        rtctl({"con", openRtm("MyServiceConsumer0.rtc:MyService"), provided + ":MyService"}).code,
+        0);
     QCOMPARE(rtctl({"act", openRtm("MyServiceConsumer0.rtc")}).code, 0);
     // OpenRTM-aist's providers exist only while their component is Active (see below); the
     // consumer says so when a call fails.
@@ -604,16 +651,20 @@ void TestInteropSystem::serviceCalls()
     consumer->write("get_value\n");
     const QRegularExpression answer("Current remote value: \\S+|No service connected\\.");
     QByteArray got;
-    QTRY_VERIFY_WITH_TIMEOUT((got += consumer->readAllStandardOutput(), answer.match(got).hasMatch()), 10000);
-    QEXPECT_FAIL("", "rtmanager's service providers answer while their component is Inactive; OpenRTM-aist "
-                     "activates a CorbaPort's provider objects in on_activated and deactivates them in "
-                     "on_deactivated",
-                 Continue);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (got += consumer->readAllStandardOutput(), answer.match(got).hasMatch()), 10000);
+    QEXPECT_FAIL(
+        "",
+        "rtmanager's service providers answer while their component is Inactive; OpenRTM-aist "
+        "activates a CorbaPort's provider objects in on_activated and deactivates them in "
+        "on_deactivated",
+        Continue);
     QCOMPARE(answer.match(got).captured(0), QString("No service connected."));
 
     QCOMPARE(rtctl({"act", provided}).code, 0);
     consumer->write("echo interop-hello\n");
-    QVERIFY(waitForOutput(consumer, QRegularExpression("echo\\(\\) finished: interop-hello"), 10000, "\n"));
+    QVERIFY(waitForOutput(consumer, QRegularExpression("echo\\(\\) finished: interop-hello"), 10000,
+                          "\n"));
     newOutput(consumer);
     consumer->write("get_echo_history\n");
     QVERIFY(waitForOutput(consumer, QRegularExpression("\\n> 0: interop-hello\\n"), 10000));
@@ -623,10 +674,13 @@ void TestInteropSystem::serviceCalls()
     // Our consumer calls OpenRTM's provider. Unlike rtmanager's, OpenRTM-aist's provider objects
     // exist only while their component is Active: until then every call fails.
     QProcess *provider = m_examples.value("MyServiceProvider");
-    QCOMPARE(rtctl({"con", ours("MyServiceConsumer0.rtc:MyService"), openRtm("MyServiceProvider0.rtc:MyService")}).code,
+    QCOMPARE(rtctl({"con", ours("MyServiceConsumer0.rtc:MyService"),
+                    openRtm("MyServiceProvider0.rtc:MyService")})
+                 .code,
              0);
     QCOMPARE(rtctl({"act", ours("MyServiceConsumer0.rtc")}).code, 0);
-    QTRY_COMPARE_WITH_TIMEOUT(ourStatus("MyServiceConsumer0", "last_error"), QString("provider unreachable"), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(ourStatus("MyServiceConsumer0", "last_error"),
+                              QString("provider unreachable"), 10000);
     QCOMPARE(ourStatus("MyServiceConsumer0", "echo_count"), QString());
     // The provider prints each call and answers ten seconds later.
     QCOMPARE(rtctl({"act", openRtm("MyServiceProvider0.rtc")}).code, 0);
@@ -649,18 +703,22 @@ void TestInteropSystem::mixedSystemRoundTrip()
 {
     // An RTS profile tells components apart by instance name: cryo refuses to save two SeqIn0s
     // silently as one, and the system below gives ours names of their own.
-    const RtctlResult twins
-        = rtctl({"cryo", "-o", m_work.filePath("twins.rtsys"), openRtm("SeqIn0.rtc"), ours("SeqIn0.rtc")});
+    const RtctlResult twins = rtctl(
+        {"cryo", "-o", m_work.filePath("twins.rtsys"), openRtm("SeqIn0.rtc"), ours("SeqIn0.rtc")});
     QCOMPARE(twins.code, 1);
     QVERIFY2(twins.err.contains("another component is named SeqIn0 too"), qPrintable(twins.err));
-    const RtctlResult made = rtctl({"mgr", ours("manager.mgr"), "create", "SeqOut?instance_name=MixOut0", "create",
-                                    "SeqIn?instance_name=MixIn0"});
+    const RtctlResult made
+        = rtctl({"mgr", ours("manager.mgr"), "create", "SeqOut?instance_name=MixOut0", "create",
+                 "SeqIn?instance_name=MixIn0"});
     QVERIFY2(made.code == 0, qPrintable(made.err));
-    const QStringList components {openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), openRtm("ConfigSample0.rtc"),
-                                  ours("MixOut0.rtc"), ours("MixIn0.rtc")};
+    const QStringList components {openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"),
+                                  openRtm("ConfigSample0.rtc"), ours("MixOut0.rtc"),
+                                  ours("MixIn0.rtc")};
     QCOMPARE(rtctl({"con", openRtm("SeqOut0.rtc:Long"), ours("MixIn0.rtc:Long")}).code, 0);
     QCOMPARE(rtctl({"con", ours("MixOut0.rtc:Double"), openRtm("SeqIn0.rtc:Double")}).code, 0);
-    QCOMPARE(rtctl({"act", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("MixOut0.rtc"), ours("MixIn0.rtc")}).code,
+    QCOMPARE(rtctl({"act", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("MixOut0.rtc"),
+                    ours("MixIn0.rtc")})
+                 .code,
              0);
     QTRY_VERIFY(ourStatus("MixIn0", "Long_count").toLong() > 0);
 
@@ -676,21 +734,31 @@ void TestInteropSystem::mixedSystemRoundTrip()
     QVERIFY2(same.code == 0, qPrintable(same.out + same.err));
 
     QCOMPARE(rtctl({"teardown", file}).code, 0);
-    QVERIFY(rtctl({"cat", "--json", ours("MixIn0.rtc:Long")}).json()["connectors"].toArray().isEmpty());
-    QVERIFY(rtctl({"cat", "--json", openRtm("SeqIn0.rtc:Double")}).json()["connectors"].toArray().isEmpty());
+    QVERIFY(
+        rtctl({"cat", "--json", ours("MixIn0.rtc:Long")}).json()["connectors"].toArray().isEmpty());
+    QVERIFY(rtctl({"cat", "--json", openRtm("SeqIn0.rtc:Double")})
+                .json()["connectors"]
+                .toArray()
+                .isEmpty());
     const RtctlResult stopped = rtctl({"stop", file});
     QVERIFY2(stopped.code == 0, qPrintable(stopped.out + stopped.err));
     for (const QString &component : components)
         QTRY_COMPARE(state(component), QString("Inactive"));
     const RtctlResult differs = rtctl({"diff", file});
     QCOMPARE(differs.code, 1);
-    QVERIFY2(differs.out.contains("Long") && differs.out.contains("Double"), qPrintable(differs.out));
+    QVERIFY2(differs.out.contains("Long") && differs.out.contains("Double"),
+             qPrintable(differs.out));
 
     const long before = ourStatus("MixIn0", "Long_count").toLong();
     const RtctlResult resurrected = rtctl({"resurrect", file});
     QVERIFY2(resurrected.code == 0, qPrintable(resurrected.out + resurrected.err));
-    QCOMPARE(rtctl({"cat", "--json", ours("MixIn0.rtc:Long")}).json()["connectors"].toArray().size(), 1);
-    QCOMPARE(rtctl({"cat", "--json", openRtm("SeqIn0.rtc:Double")}).json()["connectors"].toArray().size(), 1);
+    QCOMPARE(
+        rtctl({"cat", "--json", ours("MixIn0.rtc:Long")}).json()["connectors"].toArray().size(), 1);
+    QCOMPARE(rtctl({"cat", "--json", openRtm("SeqIn0.rtc:Double")})
+                 .json()["connectors"]
+                 .toArray()
+                 .size(),
+             1);
     const RtctlResult started = rtctl({"start", file});
     QVERIFY2(started.code == 0, qPrintable(started.out + started.err));
     for (const QString &component : components)
@@ -710,7 +778,8 @@ void TestInteropSystem::commandTableMatchesHelp()
 {
     const RtctlResult help = rtctl({"--help"});
     QCOMPARE(help.code, 0);
-    const QString commands = help.out.section(QStringLiteral("Commands:\n"), 1).section(QStringLiteral("\n\n"), 0, 0);
+    const QString commands
+        = help.out.section(QStringLiteral("Commands:\n"), 1).section(QStringLiteral("\n\n"), 0, 0);
     QStringList listed;
     for (const QString &line : commands.split('\n', Qt::SkipEmptyParts))
         listed.append(line.simplified().section(' ', 0, 0));

@@ -29,8 +29,9 @@ constexpr int searchDepth = 4;
 /// Whether two entries found under one instance name are different components bound by name.
 bool isClash(const ComponentMapper::LiveEntry &existing, const NamingNode &node)
 {
-    return !existing.path.contains(QLatin1String(".mgr")) && !node.path.contains(QLatin1String(".mgr"))
-        && !existing.ior.isEmpty() && !node.ior.isEmpty() && existing.ior != node.ior;
+    return !existing.path.contains(QLatin1String(".mgr"))
+        && !node.path.contains(QLatin1String(".mgr")) && !existing.ior.isEmpty()
+        && !node.ior.isEmpty() && existing.ior != node.ior;
 }
 
 void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::LiveEntry> &found,
@@ -46,9 +47,10 @@ void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::L
             found.insert(instance, {node.path, node.ior});
         else if (problems && isClash(*existing, node))
             // A saved system names its components by instance name only (as RTS profiles do).
-            problems->append(QStringLiteral("%1: another component is named %2 too (%3); one instance "
-                                            "name can stand for one component only")
-                                 .arg(node.path, instance, existing->path));
+            problems->append(
+                QStringLiteral("%1: another component is named %2 too (%3); one instance "
+                               "name can stand for one component only")
+                    .arg(node.path, instance, existing->path));
     }
     for (const NamingNode &child : node.children)
         collectComponents(child, found, problems);

@@ -97,9 +97,9 @@ public:
     /**
      * The components at or below each of `paths` (rtshell paths: servers, contexts, managers or
      * components), by instance name; naming-context bindings win over a manager's listing.
-     * Paths that cannot be walked, and components bound under an instance name another component
-     * found has too (only the first is kept), are added to `problems`. With Check::NamesOnly only the name
-     * servers are asked (components bound under a name, no manager's listing): much quicker.
+     * Paths that cannot be walked, and components bound under an instance name that another one
+     * found has too (only the first is kept), are added to `problems`. With Check::NamesOnly
+     * only the name servers are asked (named components, no manager's listing): much quicker.
      */
     static QHash<QString, LiveEntry> liveComponents(
         const QStringList &paths, QStringList *problems,
