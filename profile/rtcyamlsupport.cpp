@@ -208,6 +208,10 @@ void emitValue(YAML::Emitter &out, const Value &value)
                 out << YAML::DoubleQuoted;
             out << toStd(entry.first) << YAML::Value;
             emitValue(out, entry.second);
+            // After a `? key` (asked for, or yaml-cpp's own choice for a key over 1,024
+            // characters) yaml-cpp writes every later key so, flow mappings' too, where no reader
+            // takes it: back to plain keys.
+            out.SetMapFormat(YAML::Auto);
         }
         out << YAML::EndMap;
         break;

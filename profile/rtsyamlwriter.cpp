@@ -157,6 +157,10 @@ private:
                 const YAML::Node value = YAML::Load(toStd(e.yaml));
                 key(e.key.mid(prefix.size()));
                 m_out << value;
+                // After a `? key` (asked for, or yaml-cpp's own choice for a key over 1,024
+                // characters) yaml-cpp writes every later key so, flow mappings' too, where no
+                // reader takes it: back to plain keys.
+                m_out.SetMapFormat(YAML::Auto);
             } catch (const YAML::Exception &) {
                 continue;
             }
