@@ -122,14 +122,8 @@ qint64 rtctlStartMs()
 
 // --- OpenRTM-aist's rtcd2, side by side ---
 
-QString openRtmPrefix()
-{
-    const QString fromEnvironment = qEnvironmentVariable("OPENRTM_ROOT");
-    const QString prefix = fromEnvironment.isEmpty() ? QStringLiteral(RTSTUDIO_OPENRTM_PREFIX) : fromEnvironment;
-    return QFile::exists(prefix + QStringLiteral("/bin/rtcd2")) ? prefix : QString();
-}
-
-/// Every process below @p pid, deepest first.
+/// Every process below @p pid, deepest first. Children are listed per thread that started them
+/// (slaves are started from ORB threads).
 QList<qint64> descendants(qint64 pid)
 {
     QList<qint64> result;
@@ -146,6 +140,13 @@ QList<qint64> descendants(qint64 pid)
         }
     }
     return result;
+}
+
+QString openRtmPrefix()
+{
+    const QString fromEnvironment = qEnvironmentVariable("OPENRTM_ROOT");
+    const QString prefix = fromEnvironment.isEmpty() ? QStringLiteral(RTSTUDIO_OPENRTM_PREFIX) : fromEnvironment;
+    return QFile::exists(prefix + QStringLiteral("/bin/rtcd2")) ? prefix : QString();
 }
 
 /// An rtcd2 master on @p port with its own name server, as the interop tests configure it; with
@@ -239,22 +240,14 @@ Profile::RtsProfile largeSystem(const Options &options, const QStringList &serve
 qint64 residentKiB(qint64 pid)
 {
     qint64 total = 0;
-    QFile status(QStringLiteral("/proc/%1/status").arg(pid));
-    if (status.open(QIODevice::ReadOnly)) {
+    const QList<qint64> processes = descendants(pid) << pid;
+    for (const qint64 process : processes) {
+        QFile status(QStringLiteral("/proc/%1/status").arg(process));
+        if (!status.open(QIODevice::ReadOnly))
+            continue;
         for (const QByteArray &line : status.readAll().split('\n')) {
             if (line.startsWith("VmRSS:"))
                 total += line.mid(6).trimmed().split(' ').value(0).toLongLong();
-        }
-    }
-    // Children are listed per thread that started them (slaves are started from ORB threads).
-    const QDir tasks(QStringLiteral("/proc/%1/task").arg(pid));
-    for (const QString &task : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
-        QFile children(tasks.filePath(task + QStringLiteral("/children")));
-        if (!children.open(QIODevice::ReadOnly))
-            continue;
-        for (const QByteArray &child : children.readAll().simplified().split(' ')) {
-            if (!child.isEmpty())
-                total += residentKiB(child.toLongLong());
         }
     }
     return total;

@@ -300,14 +300,7 @@ void ComponentProxy::setRate(double rate, int ecIndex) const
 
 std::vector<ConfigurationSet> ComponentProxy::configurationSets() const
 {
-    SDOPackage::Configuration_var conf = configuration(m_ior, m_path);
-    return callServed(m_path, m_ior, [&] {
-        SDOPackage::ConfigurationSetList_var sets = conf->get_configuration_sets();
-        std::vector<ConfigurationSet> result;
-        for (CORBA::ULong i = 0; i < sets->length(); ++i)
-            result.push_back(toConfigurationSet(sets[i]));
-        return result;
-    });
+    return configurationSets(nullptr);
 }
 
 std::vector<ConfigurationSet> ComponentProxy::configurationSets(QString *activeSet) const
@@ -318,6 +311,8 @@ std::vector<ConfigurationSet> ComponentProxy::configurationSets(QString *activeS
         std::vector<ConfigurationSet> result;
         for (CORBA::ULong i = 0; i < sets->length(); ++i)
             result.push_back(toConfigurationSet(sets[i]));
+        if (!activeSet)
+            return result;
         activeSet->clear();
         if (!result.empty()) {
             try {

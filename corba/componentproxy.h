@@ -69,7 +69,8 @@ public:
     std::vector<ConfigurationSet> configurationSets() const;
     /// The active set; empty when the component has none active (written, not activated since).
     QString activeConfigurationSet() const;
-    /// configurationSets() and activeConfigurationSet() through one configuration reference.
+    /// configurationSets() and, unless @p activeSet is null, activeConfigurationSet() through one
+    /// configuration reference.
     std::vector<ConfigurationSet> configurationSets(QString *activeSet) const;
     ConfigurationSet configurationSet(const QString &id) const;
     void addConfigurationSet(const ConfigurationSet &set) const;
