@@ -103,6 +103,8 @@ private slots:
 
 private:
     QStringList slaveNames();
+    /// A master in @p process (not the fixture's), naming off, once it answers; nil when it does not.
+    RTM::Manager_ptr startOwnMaster(QProcess &process);
 
     CORBA::ORB_var m_orb;
     std::unique_ptr<LiveTest::LiveSystem> m_live;
@@ -161,6 +163,29 @@ QStringList TestManagerJoin::slaveNames()
     return names;
 }
 
+RTM::Manager_ptr TestManagerJoin::startOwnMaster(QProcess &process)
+{
+    const quint16 port = LiveTest::freePort();
+    process.start(
+        QStringLiteral(RTMANAGER_PATH),
+        {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o", "naming.enable=NO"});
+    if (!process.waitForStarted(10000))
+        return RTM::Manager::_nil();
+    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
+    RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
+    // Ready when the manager answers, not merely when its port accepts connections.
+    const QDeadlineTimer deadline(10000);
+    while (!deadline.hasExpired()) {
+        try {
+            manager->is_master();
+            return manager._retn();
+        } catch (const CORBA::Exception &) {
+            QTest::qWait(10);
+        }
+    }
+    return RTM::Manager::_nil();
+}
+
 void TestManagerJoin::slavesStartedAtOnceAllJoin()
 {
     // Slaves started on their own (as on a robot's host) find the master while it is busy
@@ -205,25 +230,10 @@ void TestManagerJoin::spawnedSlavesHaveJoinedWhenCreateReturns()
     // The master's own process writes to a file its slaves inherit, so that what they print after
     // the master is gone is kept too.
     QProcess master;
-    const quint16 port = LiveTest::freePort();
     const QString errFile = m_dir->filePath("master.err");
     master.setStandardErrorFile(errFile);
-    master.start(
-        QStringLiteral(RTMANAGER_PATH),
-        {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o", "naming.enable=NO"});
-    QVERIFY(master.waitForStarted(10000));
-    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
-    RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
-    // Ready when the manager answers, not merely when its port accepts connections.
-    const auto answers = [&manager] {
-        try {
-            manager->is_master();
-            return true;
-        } catch (const CORBA::Exception &) {
-            return false;
-        }
-    };
-    QTRY_VERIFY_WITH_TIMEOUT(answers(), 10000);
+    RTM::Manager_var manager = startOwnMaster(master);
+    QVERIFY(!CORBA::is_nil(manager));
 
     Hammer hammer(manager);
     std::vector<std::thread> creators;
@@ -276,22 +286,8 @@ void TestManagerJoin::spawnedSlavesHaveJoinedWhenCreateReturns()
 void TestManagerJoin::slavesStartThroughForkServer()
 {
     QProcess master;
-    const quint16 port = LiveTest::freePort();
-    master.start(
-        QStringLiteral(RTMANAGER_PATH),
-        {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o", "naming.enable=NO"});
-    QVERIFY(master.waitForStarted(10000));
-    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
-    RTM::Manager_var manager = RTM::Manager::_unchecked_narrow(object);
-    const auto answers = [&manager] {
-        try {
-            manager->is_master();
-            return true;
-        } catch (const CORBA::Exception &) {
-            return false;
-        }
-    };
-    QTRY_VERIFY_WITH_TIMEOUT(answers(), 10000);
+    RTM::Manager_var manager = startOwnMaster(master);
+    QVERIFY(!CORBA::is_nil(manager));
     const auto slavePid = [&manager](const char *name) {
         RTC::RTObject_var component
             = manager->create_component(QByteArray("ConsoleOut?manager_name=") + name);
