@@ -32,8 +32,15 @@ public:
     RTC::PortService_ptr reference();
     /// Number of stored connections.
     size_t connectionCount();
-    /// Withdraws what the port offers to others (service providers); called when the component finalizes.
+    /// Lets others reach what the port provides (service providers); called when the component
+    /// is activated, as OpenRTM-aist's PortAdmin::activatePorts.
+    virtual void activateInterfaces() {}
+    /// Makes what the port provides unreachable until the next activation; called when the
+    /// component is deactivated.
     virtual void deactivateInterfaces() {}
+    /// Withdraws and drops what the port provides, for good; called when the port is removed or
+    /// the component finalizes.
+    virtual void releaseInterfaces() {}
 
     RTC::PortProfile *get_port_profile() override;
     RTC::ConnectorProfileList *get_connector_profiles() override;

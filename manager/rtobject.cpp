@@ -94,7 +94,7 @@ bool RtObject::removePort(PortBase *port)
         borrowed = m_borrowedPorts.erase(port) > 0;
     }
     port->disconnect_all();
-    port->deactivateInterfaces();
+    port->releaseInterfaces();
     releasePort(port, borrowed);
     return true;
 }
@@ -126,7 +126,6 @@ RTC::ReturnCode_t RtObject::on_initialize() { return onInitialize(); }
 RTC::ReturnCode_t RtObject::on_finalize() { return onFinalize(); }
 RTC::ReturnCode_t RtObject::on_startup(RTC::ExecutionContextHandle_t h) { return onStartup(h); }
 RTC::ReturnCode_t RtObject::on_shutdown(RTC::ExecutionContextHandle_t h) { return onShutdown(h); }
-RTC::ReturnCode_t RtObject::on_deactivated(RTC::ExecutionContextHandle_t h) { return onDeactivated(h); }
 RTC::ReturnCode_t RtObject::on_aborting(RTC::ExecutionContextHandle_t h) { return onAborting(h); }
 RTC::ReturnCode_t RtObject::on_error(RTC::ExecutionContextHandle_t h) { return onError(h); }
 RTC::ReturnCode_t RtObject::on_reset(RTC::ExecutionContextHandle_t h) { return onReset(h); }
@@ -137,7 +136,19 @@ RTC::ReturnCode_t RtObject::on_activated(RTC::ExecutionContextHandle_t h)
 {
     // Configuration changes reach the variables in the EC thread, as in OpenRTM.
     m_config.update();
-    return onActivated(h);
+    const RTC::ReturnCode_t result = onActivated(h);
+    // As OpenRTM-aist: service providers answer only while the component is active (they are
+    // offered even when the user's hook failed; the context then moves on to Error).
+    for (PortBase *port : portList())
+        port->activateInterfaces();
+    return result;
+}
+
+RTC::ReturnCode_t RtObject::on_deactivated(RTC::ExecutionContextHandle_t h)
+{
+    for (PortBase *port : portList())
+        port->deactivateInterfaces();
+    return onDeactivated(h);
 }
 
 RTC::ReturnCode_t RtObject::on_state_update(RTC::ExecutionContextHandle_t h)
@@ -226,7 +237,7 @@ void RtObject::releaseAll()
         context->halt(false);
     for (PortBase *port : ports) {
         port->disconnect_all();
-        port->deactivateInterfaces();
+        port->releaseInterfaces();
     }
     onFinalize();
     for (PeriodicExecutionContext *context : contexts)

@@ -3,6 +3,8 @@
 
 #include "corbautil.h"
 
+#include <iostream>
+
 namespace Runtime {
 
 CORBA::Object_ptr ConsumerSlot::object()
@@ -26,29 +28,67 @@ ServicePort::ServicePort(const std::string &name, PortableServer::POA_ptr poa)
 
 ServicePort::~ServicePort()
 {
-    deactivateInterfaces();
+    releaseInterfaces();
+}
+
+void ServicePort::activateInterfaces()
+{
+    std::lock_guard lock(m_mutex);
+    for (Provider &provider : m_providers) {
+        if (provider.active)
+            continue;
+        try {
+            m_poa->activate_object_with_id(provider.id, provider.servant);
+        } catch (const PortableServer::POA::ObjectAlreadyActive &) {
+            // Still finishing a call of its last activation: it answers as it is.
+        } catch (const CORBA::Exception &error) {
+            std::cerr << programName() << ": " << profileName() << ": cannot offer "
+                      << provider.instanceName << ": " << describeException(error) << std::endl;
+            continue;
+        }
+        provider.active = true;
+    }
 }
 
 void ServicePort::deactivateInterfaces()
 {
+    std::lock_guard lock(m_mutex);
+    for (Provider &provider : m_providers) {
+        if (!provider.active)
+            continue;
+        provider.active = false;
+        try {
+            m_poa->deactivate_object(provider.id);
+        } catch (const CORBA::Exception &) {
+            // Already gone with its POA.
+        }
+    }
+}
+
+void ServicePort::releaseInterfaces()
+{
+    deactivateInterfaces();
     std::vector<Provider> providers;
     {
         std::lock_guard lock(m_mutex);
         providers.swap(m_providers);
     }
     for (Provider &provider : providers)
-        releaseServant(m_poa, provider.servant);
+        provider.servant->_remove_ref();
 }
 
 void ServicePort::registerProvider(const std::string &instanceName, const std::string &typeName,
                                    PortableServer::ServantBase *servant)
 {
+    // The reference (and so the IOR published on connecting) is made once; the object itself
+    // comes and goes with the component's activation.
     PortableServer::ObjectId_var id = m_poa->activate_object(servant);
     CORBA::Object_var ref = m_poa->id_to_reference(id);
     CORBA::String_var ior = theOrb()->object_to_string(ref);
+    m_poa->deactivate_object(id);
     {
         std::lock_guard lock(m_mutex);
-        m_providers.push_back({instanceName, typeName, servant, std::string(ior.in())});
+        m_providers.push_back({instanceName, typeName, servant, id.in(), std::string(ior.in()), false});
     }
     addInterfaceProfile(instanceName, typeName, true);
 }

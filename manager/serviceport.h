@@ -26,7 +26,8 @@ private:
 /**
  * OpenRTM's CorbaPort: provided interfaces publish their IOR under `port.<type>.<instance>`;
  * required interfaces take the IOR published under the same key (or, failing that, the only
- * provider of their type) when the port connects.
+ * provider of their type) when the port connects. A provider's object exists only while its
+ * component is active: calls at other times end in OBJECT_NOT_EXIST, as with OpenRTM-aist.
  */
 class ServicePort : public PortBase
 {
@@ -34,13 +35,16 @@ public:
     ServicePort(const std::string &name, PortableServer::POA_ptr poa);
     ~ServicePort() override;
 
-    /// Offers @p servant (activated here; the port drops its reference when destroyed).
+    /// Offers @p servant under a reference fixed here; the object answers from the next
+    /// activation of the component on. The port drops its reference to @p servant when released.
     void registerProvider(const std::string &instanceName, const std::string &typeName,
                           PortableServer::ServantBase *servant);
     /// Declares a required interface; returns the slot that receives the provider's reference.
     std::shared_ptr<ConsumerSlot> registerConsumer(const std::string &instanceName, const std::string &typeName);
-    /// Deactivates the providers and drops the port's references to them.
+    void activateInterfaces() override;
     void deactivateInterfaces() override;
+    /// Deactivates the providers and drops the port's references to them.
+    void releaseInterfaces() override;
 
 protected:
     RTC::ReturnCode_t publishInterfaces(RTC::ConnectorProfile &profile) override;
@@ -53,7 +57,9 @@ private:
         std::string instanceName;
         std::string typeName;
         PortableServer::ServantBase *servant;
+        PortableServer::ObjectId id;
         std::string ior;
+        bool active;
     };
     struct Consumer
     {

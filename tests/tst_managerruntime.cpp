@@ -847,11 +847,29 @@ void TestManagerRuntime::servicePort()
     QCOMPARE(profile->interfaces[0].polarity, RTC::PROVIDED);
     RTC::ConnectorProfile connected;
     QCOMPARE(connect(cPort, pPort, {}, &connected), RTC::RTC_OK);
-    QVERIFY(nv(connected.properties, "port.SimpleService::MyService.myservice").startsWith("IOR:"));
+    const QString ior = nv(connected.properties, "port.SimpleService::MyService.myservice");
+    QVERIFY(ior.startsWith("IOR:"));
+    CORBA::Object_var service = m_orb->string_to_object(ior.toLatin1().constData());
     RTC::ExecutionContext_var ec = ownedContext(c);
     QCOMPARE(ec->activate_component(c), RTC::RTC_OK);
+
+    // As with OpenRTM-aist, the provider's object answers only while its component is active.
+    QVERIFY(service->_non_existent());
+    QTRY_COMPARE(statusOf(c, "last_error"), QString("provider unreachable"));
+    QCOMPARE(statusOf(c, "echo_count"), QString());
+    RTC::ExecutionContext_var providerEc = ownedContext(p);
+    QCOMPARE(providerEc->activate_component(p), RTC::RTC_OK);
     QTRY_VERIFY(statusNumber(c, "echo_count") >= 3);
     QVERIFY(statusOf(c, "last_reply").startsWith("echo "));
+    QVERIFY(!service->_non_existent());
+
+    // Deactivated, it is gone again until the next activation, under the same reference.
+    QCOMPARE(providerEc->deactivate_component(p), RTC::RTC_OK);
+    QTRY_VERIFY(service->_non_existent());
+    const long answered = statusNumber(c, "echo_count");
+    QTRY_VERIFY(statusNumber(c, "echo_count") == answered && service->_non_existent());
+    QCOMPARE(providerEc->activate_component(p), RTC::RTC_OK);
+    QTRY_VERIFY(statusNumber(c, "echo_count") > answered + 1);
 }
 
 QTEST_GUILESS_MAIN(TestManagerRuntime)

@@ -530,12 +530,23 @@ void TestSdkRtm::serviceCallReturns()
     RTC::PortService_var required = portNamed(consumer, "MyService");
     QCOMPARE(connectPorts(required, provided, false), RTC::RTC_OK);
     QVERIFY(!CORBA::is_nil(consumer->service()._ptr()));
+    // As in OpenRTM-aist, the provided object answers only while its component is active.
+    bool answeredInactive = true;
+    try {
+        CORBA::String_var early = consumer->service()->echo("early");
+    } catch (const CORBA::OBJECT_NOT_EXIST &) {
+        answeredInactive = false;
+    }
+    QVERIFY(!answeredInactive);
+    QCOMPARE(provider->activate(0), RTC::RTC_OK);
+    QTRY_VERIFY_WITH_TIMEOUT(!consumer->service()->_non_existent(), 5000);
     CORBA::String_var answer = consumer->service()->echo("hello");
     QCOMPARE(QString(answer.in()), QString("echo:hello"));
     consumer->service()->set_value(2.5f);
     QCOMPARE(consumer->service()->get_value(), 2.5f);
     QCOMPARE(required->disconnect_all(), RTC::RTC_OK);
     QVERIFY(CORBA::is_nil(consumer->service()._ptr()));
+    QCOMPARE(provider->deactivate(0), RTC::RTC_OK);
     m_manager->deleteComponent(provider);
     m_manager->deleteComponent(consumer);
 }
