@@ -95,15 +95,17 @@ QString RtMgrCommand::usage() const
 {
     return QStringLiteral(
         "Usage: rtctl mgr [--json] [--timeout MS] PATH|corbaloc::HOST[:PORT] ACTION...\n\n"
-        "Drives an RTC manager (rtshell's rtmgr), given as a tree path (…/manager.mgr) or\n"
-        "directly (corbaloc::host, port 2810 and key 'manager' by default). Actions run in order\n"
+        "Drives an RTC manager (rtshell's rtmgr), given as a tree path (…/manager.mgr, a slave\n"
+        "of it as …/manager.mgr/slave0.mgr) or directly (corbaloc::host, port 2810 and key\n"
+        "'manager' by default). Actions run in order\n"
         "and stop at the first failure; consecutive creates that each give their own instance_name\n"
         "are sent side by side to an rtmanager (printed in order; those after a failed one are\n"
         "removed again):\n"
         "  load FILE[:INIT]     load a module (INIT defaults to <basename>Init)\n"
         "  unload FILE          unload a module\n"
         "  create 'Type?k=v&…'  create a component; prints its instance name\n"
-        "  delete NAME          delete the component with that instance name\n"
+        "  delete NAME          delete the component with that instance name (a master's\n"
+        "                       slave that hosts it deletes it)\n"
         "  list                 components, loaded modules and factories (--json: one object)\n"
         "  fork                 start a new slave manager process registered with the master\n"
         "  restart              finalise the components and run the manager process again\n"
@@ -166,7 +168,35 @@ void RtMgrCommand::run(const ManagerProxy &manager, const QString &action, const
         const QString ior = manager.createComponent(argument);
         streams.out << ComponentProxy(ior, manager.path()).profile().instanceName << '\n';
     } else {
-        manager.deleteComponent(argument);
+        deleteComponent(manager, argument, streams);
+    }
+}
+
+void RtMgrCommand::deleteComponent(const ManagerProxy &manager, const QString &instanceName,
+                                   Streams streams) const
+{
+    try {
+        manager.deleteComponent(instanceName);
+        return;
+    } catch (const Error &refused) {
+        if (refused.kind() != Error::Kind::Refused)
+            throw;
+        // A master (OpenRTM-aist's as ours) deletes only what it hosts itself: a component it
+        // created in a slave is deleted by that slave.
+        const QStringList slaves = manager.slaveManagers();
+        for (qsizetype i = 0; i < slaves.size(); ++i) {
+            const ManagerProxy slave(slaves.at(i), manager.path() + QStringLiteral("/slave%1.mgr").arg(i));
+            try {
+                if (slave.componentsByName(instanceName).isEmpty())
+                    continue;
+            } catch (const Error &) {
+                continue; // a slave that does not answer cannot be the one
+            }
+            slave.deleteComponent(instanceName);
+            streams.err << "rtctl mgr: " << instanceName << " deleted by " << slave.path() << '\n';
+            return;
+        }
+        throw;
     }
 }
 

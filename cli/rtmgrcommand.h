@@ -33,6 +33,9 @@ private:
     void run(const Corba::ManagerProxy &manager, const QString &action, const QString &argument,
              bool json, Streams streams) const;
     void list(const Corba::ManagerProxy &manager, bool json, Streams streams) const;
+    /// Deletes through @p manager, or through the slave of it that hosts the component.
+    void deleteComponent(const Corba::ManagerProxy &manager, const QString &instanceName,
+                         Streams streams) const;
 };
 
 } // namespace Cli

@@ -133,6 +133,54 @@ CORBA::Object_ptr resolveName(const RtPath &path)
     });
 }
 
+/// The name listManager() gives the slave at @p index of a manager.
+QString slaveName(int index)
+{
+    return QStringLiteral("slave%1.mgr").arg(index);
+}
+
+/**
+ * The object at @p path. Names resolve through the name server up to the first manager that is not
+ * the last element; below a manager, `Name.rtc` is one of its components and `slaveN.mgr` its Nth
+ * slave, as listManager() lists them (rtshell's tree offers the same paths).
+ */
+CORBA::Object_ptr resolveObject(const RtPath &path)
+{
+    const QStringList names = path.names();
+    qsizetype managerAt = -1;
+    for (qsizetype i = 0; i + 1 < names.size() && managerAt < 0; ++i) {
+        if (kindOf(names.at(i)) == QLatin1String("mgr"))
+            managerAt = i;
+    }
+    if (managerAt < 0)
+        return resolveName(path);
+    RtPath managerPath = path.withoutPort();
+    managerPath.elements = path.elements.mid(0, managerAt + 2);
+    CORBA::Object_var first = resolveName(managerPath);
+    QString ior = toIor(first.in());
+    QString at = managerPath.toString();
+    for (qsizetype i = managerAt + 1; i < names.size(); ++i) {
+        const QString &name = names.at(i);
+        const QString below = at + QLatin1Char('/') + name;
+        const ManagerProxy manager(ior, at);
+        QString found;
+        if (kindOf(name) == QLatin1String("mgr")) {
+            const QStringList slaves = manager.slaveManagers();
+            for (qsizetype k = 0; k < slaves.size() && found.isEmpty(); ++k) {
+                if (slaveName(int(k)) == name)
+                    found = slaves.at(k);
+            }
+        } else if (kindOf(name) == QLatin1String("rtc") && i + 1 == names.size()) {
+            found = manager.componentsByName(name.chopped(4)).value(0);
+        }
+        if (found.isEmpty())
+            throw Error(Error::Kind::NotFound, below + QStringLiteral(": no such name"));
+        ior = found;
+        at = below;
+    }
+    return toObject(ior, at);
+}
+
 /// What a bound object is taken to be before it is asked: its name's kind says it.
 NodeType typeByName(const QString &kind)
 {
@@ -261,7 +309,7 @@ std::vector<NamingNode> listManager(const QString &ior, const QString &path)
     }
     int index = 0;
     for (const QString &slave : manager.slaveManagers()) {
-        const QString name = QStringLiteral("slave%1.mgr").arg(index++);
+        const QString name = slaveName(index++);
         nodes.push_back({name, NodeType::Manager, path + QLatin1Char('/') + name, slave, {}, {}});
     }
     return nodes;
@@ -304,7 +352,7 @@ NamingNode nodeAt(const RtPath &path, NamingBrowser::Check check)
         call(text, [&] { root->_non_existent(); });
         return {path.server(), NodeType::Server, text, {}, {}, {}};
     }
-    CORBA::Object_var object = resolveName(path);
+    CORBA::Object_var object = resolveObject(path);
     const QString name = path.elements.last();
     const QString kind = kindOf(name);
     if (kind == QLatin1String("rtc") || kind == QLatin1String("mgr"))
@@ -405,7 +453,7 @@ NamingNode NamingBrowser::tree(const RtPath &path, int maxDepth, const QStringLi
 QString NamingBrowser::resolve(const RtPath &path)
 {
     CORBA::Object_var object
-        = path.isDirect() ? toObject(path.corbaloc, path.corbaloc) : resolveName(path);
+        = path.isDirect() ? toObject(path.corbaloc, path.corbaloc) : resolveObject(path);
     return toIor(object.in());
 }
 

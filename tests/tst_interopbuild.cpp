@@ -69,6 +69,7 @@ private slots:
     void standaloneComponentIsDrivenByRtctl();
     void configurationSetIsActivated();
     void moduleLoadsIntoRtcd();
+    void moduleLoadedAndCreatedThroughRtctl();
     void generatedStateMachineRuns();
 
 private:
@@ -300,6 +301,71 @@ void TestInteropBuild::moduleLoadsIntoRtcd()
     RtctlResult r = rtctl({"ls", QStringLiteral("/%1/rtcd.host_cxt").arg(m_live.namingServer())});
     QVERIFY2(r.out.contains("SdkGreeter0.rtc"), qPrintable(r.out + r.err));
     QVERIFY2(rtcd->state() == QProcess::Running, qPrintable(exitReport(rtcd)));
+}
+
+void TestInteropBuild::moduleLoadedAndCreatedThroughRtctl()
+{
+    // An rtcd2 master as users run it: it loads the module by name from its load path and creates
+    // the component in a slave process it starts; the slave is then driven by its own path.
+    const int masterPort = LiveTest::freePort();
+    QFile conf(m_work.filePath("master.conf"));
+    QVERIFY(conf.open(QIODevice::WriteOnly | QIODevice::Text));
+    conf.write(QStringLiteral("corba.nameservers: %1\n"
+                              "corba.endpoints: 127.0.0.1:\n"
+                              "corba.master_manager: 127.0.0.1:%2\n"
+                              "manager.is_master: YES\n"
+                              "naming.formats: loaded.host_cxt/%n.rtc\n"
+                              "manager.naming_formats: loaded.host_cxt/%n.mgr\n"
+                              "manager.modules.load_path: %3/build/src\n"
+                              "manager.modules.C++.manager_cmd: %4/bin/rtcd2\n"
+                              "logger.enable: NO\n")
+                   .arg(m_live.namingServer())
+                   .arg(masterPort)
+                   .arg(m_project, openRtmPrefix)
+                   .toUtf8());
+    conf.close();
+    QString error;
+    QProcess *master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()},
+                                           QString(), &error, 0);
+    QVERIFY2(master != nullptr, qPrintable(error));
+    const QString dir = QStringLiteral("/%1/loaded.host_cxt").arg(m_live.namingServer());
+    const QString masterPath = dir + "/manager.mgr";
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"mgr", masterPath, "list"}).code == 0, 30000);
+
+    RtctlResult r = rtctl({"mgr", masterPath, "load", "SdkGreeter.so", "list"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains("/build/src/SdkGreeter.so"), qPrintable(r.out));
+    QVERIFY2(r.out.contains("  SdkGreeter\n"), qPrintable(r.out));
+    r = rtctl({"mgr", masterPath, "create", "SdkGreeter?instance_name=Loaded0"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QCOMPARE(r.out, QString("Loaded0\n"));
+    const QString loaded = dir + "/Loaded0.rtc";
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", loaded}).code == 0, 10000);
+    QCOMPARE(rtctl({"act", loaded}).code, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", loaded}).out.contains("Active"), 10000);
+
+    // The slave rtcd2 started, reached below its master: a module loaded by its file and a
+    // second component created there directly.
+    const QString slave = masterPath + "/slave0.mgr";
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"ls", slave}).lines().contains("Loaded0.rtc"), 10000);
+    r = rtctl({"mgr", slave, "load", m_project + "/build/src/SdkGreeter.so", "create",
+               "SdkGreeter?instance_name=Direct0", "list"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.startsWith("Direct0\n"), qPrintable(r.out));
+    QVERIFY2(r.out.contains("  Direct0  SdkGreeter") && r.out.contains("  Loaded0  SdkGreeter"),
+             qPrintable(r.out));
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", dir + "/Direct0.rtc"}).code == 0, 10000);
+    QCOMPARE(rtctl({"act", slave + "/Direct0.rtc"}).code, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", dir + "/Direct0.rtc"}).out.contains("Active"), 10000);
+
+    // Deleted through the master, which leaves it to the slave.
+    for (const char *name : {"Loaded0", "Direct0"}) {
+        r = rtctl({"mgr", masterPath, "delete", name});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(!rtctl({"ls", dir}).out.contains("Loaded0.rtc"), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!rtctl({"ls", dir}).out.contains("Direct0.rtc"), 10000);
+    QVERIFY2(master->state() == QProcess::Running, qPrintable(exitReport(master)));
 }
 
 void TestInteropBuild::generatedStateMachineRuns()

@@ -32,6 +32,7 @@ private slots:
     void drivesTheRealManager();
     void forkAndRestartTheRealManager();
     void namedCreatesRunSideBySide();
+    void pathsBelowAManager();
 
 private:
     using Result = RtctlResult;
@@ -452,6 +453,52 @@ void TestRtctlRt::namedCreatesRunSideBySide()
     const QStringList after = rtctl({"ls", "-R", "."}, dir).out.split(QRegularExpression("\\s+"));
     QVERIFY(after.contains("Before0.rtc"));
     QVERIFY2(!after.contains("After0.rtc") && !after.contains("After1.rtc"), qPrintable(after.join(' ')));
+}
+
+// What `ls` lists below a manager (its components, its slaves) is a path every command takes; a
+// component in a slave is deleted through its master.
+void TestRtctlRt::pathsBelowAManager()
+{
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QVERIFY2(startRealManager(port, "belowhost", "ConsoleIn", &error), qPrintable(error));
+    const QString dir = QStringLiteral("/%1/belowhost.host_cxt").arg(m_live.namingServer());
+    const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(port);
+    QCOMPARE(rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Far0&manager_name=manager_%p"}, dir)
+                 .code,
+             0);
+    QCOMPARE(rtctl({"ls", "manager.mgr/slave0.mgr"}, dir).lines(), QStringList {"Far0.rtc"});
+
+    const QString far = QStringLiteral("manager.mgr/slave0.mgr/Far0.rtc");
+    const Result cat = rtctl({"cat", far}, dir);
+    QVERIFY2(cat.code == 0, qPrintable(cat.err));
+    QVERIFY2(cat.out.contains("Far0") && cat.out.contains("Inactive"), qPrintable(cat.out));
+    QCOMPARE(rtctl({"act", far}, dir).code, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(rtctl({"cat", far}, dir).out.contains("Active"), 10000);
+    QCOMPARE(rtctl({"deact", far}, dir).code, 0);
+    QVERIFY2(rtctl({"cat", "manager.mgr/ConsoleIn0.rtc"}, dir).out.contains("ConsoleIn0"),
+             "a component of the master itself");
+    const Result slaveList = rtctl({"mgr", "manager.mgr/slave0.mgr", "list"}, dir);
+    QVERIFY2(slaveList.out.contains("  Far0  ConsoleOut"), qPrintable(slaveList.out + slaveList.err));
+    QVERIFY2(!slaveList.out.contains("ConsoleIn0"), qPrintable(slaveList.out));
+
+    // Names the manager does not have are not found, with the path.
+    const Result noSlave = rtctl({"cat", "manager.mgr/slave7.mgr"}, dir);
+    QCOMPARE(noSlave.code, 1);
+    QVERIFY2(noSlave.err.contains("manager.mgr/slave7.mgr: no such name"), qPrintable(noSlave.err));
+    const Result noComponent = rtctl({"act", "manager.mgr/slave0.mgr/Near0.rtc"}, dir);
+    QCOMPARE(noComponent.code, 1);
+    QVERIFY2(noComponent.err.contains("slave0.mgr/Near0.rtc: no such name"), qPrintable(noComponent.err));
+
+    // The master does not delete what its slave hosts; rtctl asks the slave and says so.
+    const Result deleted = rtctl({"mgr", direct, "delete", "Far0"}, dir);
+    QVERIFY2(deleted.code == 0, qPrintable(deleted.err));
+    QVERIFY2(deleted.err.contains("Far0 deleted by ") && deleted.err.contains("/slave0.mgr"),
+             qPrintable(deleted.err));
+    QTRY_VERIFY(!rtctl({"ls", "-R", "."}, dir).out.contains("Far0"));
+    const Result missing = rtctl({"mgr", direct, "delete", "Far0"}, dir);
+    QCOMPARE(missing.code, 1);
+    QVERIFY2(missing.err.contains("delete_component(Far0) returned BAD_PARAMETER"), qPrintable(missing.err));
 }
 
 QTEST_GUILESS_MAIN(TestRtctlRt)
