@@ -175,29 +175,9 @@ void RtMgrCommand::run(const ManagerProxy &manager, const QString &action, const
 void RtMgrCommand::deleteComponent(const ManagerProxy &manager, const QString &instanceName,
                                    Streams streams) const
 {
-    try {
-        manager.deleteComponent(instanceName);
-        return;
-    } catch (const Error &refused) {
-        if (refused.kind() != Error::Kind::Refused)
-            throw;
-        // A master (OpenRTM-aist's as ours) deletes only what it hosts itself: a component it
-        // created in a slave is deleted by that slave.
-        const QStringList slaves = manager.slaveManagers();
-        for (qsizetype i = 0; i < slaves.size(); ++i) {
-            const ManagerProxy slave(slaves.at(i), manager.path() + QStringLiteral("/slave%1.mgr").arg(i));
-            try {
-                if (slave.componentsByName(instanceName).isEmpty())
-                    continue;
-            } catch (const Error &) {
-                continue; // a slave that does not answer cannot be the one
-            }
-            slave.deleteComponent(instanceName);
-            streams.err << "rtctl mgr: " << instanceName << " deleted by " << slave.path() << '\n';
-            return;
-        }
-        throw;
-    }
+    const QString by = manager.deleteComponent(instanceName);
+    if (by != manager.path())
+        streams.err << "rtctl mgr: " << instanceName << " deleted by " << by << '\n';
 }
 
 int RtMgrCommand::execute(const RtOptions &options, Streams streams)

@@ -111,12 +111,33 @@ QString ManagerProxy::refusalReason() const
     }
 }
 
-void ManagerProxy::deleteComponent(const QString &instanceName) const
+QString ManagerProxy::deleteComponent(const QString &instanceName) const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
     const int code = call(
         m_path, [&] { return int(mgr->delete_component(instanceName.toUtf8().constData())); });
-    checkReturnCode(code, m_path, QStringLiteral("delete_component(%1)").arg(instanceName));
+    try {
+        checkReturnCode(code, m_path, QStringLiteral("delete_component(%1)").arg(instanceName));
+        return m_path;
+    } catch (const Error &refused) {
+        QStringList slaves;
+        try {
+            slaves = slaveManagers();
+        } catch (const Error &) {
+            throw refused;
+        }
+        for (qsizetype i = 0; i < slaves.size(); ++i) {
+            const ManagerProxy slave(slaves.at(i), m_path + QStringLiteral("/slave%1.mgr").arg(i));
+            try {
+                if (slave.componentsByName(instanceName).isEmpty())
+                    continue;
+            } catch (const Error &) {
+                continue; // a slave that does not answer cannot be asked to delete either
+            }
+            return slave.deleteComponent(instanceName);
+        }
+        throw refused;
+    }
 }
 
 QStringList ManagerProxy::components() const

@@ -34,7 +34,12 @@ public:
      * the manager's reason (its profile's `last_error`) when it gives one.
      */
     QString createComponent(const QString &moduleName) const;
-    void deleteComponent(const QString &instanceName) const;
+    /**
+     * `delete_component(instanceName)`. A master (OpenRTM-aist's as rtmanager) deletes only the
+     * components it hosts itself; when it refuses, the slave that hosts the component is asked.
+     * Returns the path of the manager that deleted it (this one's, or `<path>/slaveN.mgr`).
+     */
+    QString deleteComponent(const QString &instanceName) const;
     QStringList components() const;
     std::vector<ComponentInfo> componentProfiles() const;
     QStringList componentsByName(const QString &name) const;

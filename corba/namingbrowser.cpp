@@ -171,7 +171,15 @@ CORBA::Object_ptr resolveObject(const RtPath &path)
                     found = slaves.at(k);
             }
         } else if (kindOf(name) == QLatin1String("rtc") && i + 1 == names.size()) {
-            found = manager.componentsByName(name.chopped(4)).value(0);
+            // A master lists its slaves' components with its own, but by name it answers for its
+            // own only (OpenRTM-aist's and rtmanager alike): the slaves are asked next.
+            const QString instance = name.chopped(4);
+            found = manager.componentsByName(instance).value(0);
+            const QStringList slaves = found.isEmpty() ? manager.slaveManagers() : QStringList();
+            for (qsizetype k = 0; k < slaves.size() && found.isEmpty(); ++k)
+                found = ManagerProxy(slaves.at(k), at + QLatin1Char('/') + slaveName(int(k)))
+                            .componentsByName(instance)
+                            .value(0);
         }
         if (found.isEmpty())
             throw Error(Error::Kind::NotFound, below + QStringLiteral(": no such name"));

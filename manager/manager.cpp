@@ -512,10 +512,16 @@ RTC::RTCList Manager::components()
 
 RTC::RTCList Manager::componentsByName(const std::string &name)
 {
+    const std::size_t slash = name.find('/');
+    const std::string category = slash == std::string::npos ? std::string() : name.substr(0, slash);
+    const std::string instance = slash == std::string::npos ? name : name.substr(slash + 1);
     std::lock_guard lock(m_mutex);
     RTC::RTCList list;
     for (const auto &component : m_components) {
-        if (component->instanceName != name || CORBA::is_nil(component->reference))
+        if (component->instanceName != instance || CORBA::is_nil(component->reference))
+            continue;
+        if (slash != std::string::npos && category != "*"
+            && (!component->servant || component->servant->properties().value("category") != category))
             continue;
         const CORBA::ULong n = list.length();
         list.length(n + 1);

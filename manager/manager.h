@@ -58,6 +58,11 @@ public:
     bool deleteComponent(const std::string &instanceName, std::string *error);
     /// This process's components.
     RTC::RTCList components();
+    /**
+     * This process's components named @p name, in OpenRTM-aist's forms: `Instance0` or
+     * `category/Instance0`, where the category `*` matches any. A master answers for its own
+     * components only, as OpenRTM-aist's does.
+     */
     RTC::RTCList componentsByName(const std::string &name);
 
     /**
@@ -66,7 +71,6 @@ public:
      * that fails or does not answer in time is skipped.
      */
     RTC::RTCList slaveComponents();
-    RTC::RTCList slaveComponentsByName(const std::string &name);
     RTC::ComponentProfileList slaveComponentProfiles();
 
     /**

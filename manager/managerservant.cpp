@@ -95,10 +95,7 @@ RTC::ComponentProfileList *ManagerServant::get_component_profiles()
 RTC::RTCList *ManagerServant::get_components_by_name(const char *name)
 {
     const std::string wanted = name ? name : "";
-    auto *list = new RTC::RTCList(m_manager.componentsByName(wanted));
-    if (m_manager.isMaster())
-        appendSequence(*list, m_manager.slaveComponentsByName(wanted));
-    return list;
+    return new RTC::RTCList(m_manager.componentsByName(wanted));
 }
 
 RTM::ManagerProfile *ManagerServant::get_profile()

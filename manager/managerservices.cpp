@@ -45,13 +45,6 @@ RTC::RTCList Manager::slaveComponents()
         slaves(), [](RTM::Manager_ptr slave) { return RTC::RTCList_var(slave->get_components()); });
 }
 
-RTC::RTCList Manager::slaveComponentsByName(const std::string &name)
-{
-    return gather<RTC::RTCList>(slaves(), [&name](RTM::Manager_ptr slave) {
-        return RTC::RTCList_var(slave->get_components_by_name(name.c_str()));
-    });
-}
-
 RTC::ComponentProfileList Manager::slaveComponentProfiles()
 {
     return gather<RTC::ComponentProfileList>(slaves(), [](RTM::Manager_ptr slave) {

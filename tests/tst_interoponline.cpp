@@ -7,6 +7,9 @@
 // Needs the prefix of an OpenRTM-aist installation (CMake cache variable RTSTUDIO_OPENRTM_PREFIX,
 // ctest label "interop"); without one the test is skipped.
 #include "livesystem.h"
+#include "managerproxy.h"
+#include "managerview.h"
+#include "namingbrowser.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
 #include "onlinesession.h"
@@ -14,6 +17,8 @@
 #include "rtctlrunner.h"
 
 #include <QAction>
+#include <QPushButton>
+#include <QTreeWidget>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -41,6 +46,7 @@ private slots:
     void cleanupTestCase();
     void showsOpenRtmInTheTree();
     void pollsAndDrivesOpenRtmStates();
+    void managerViewDrivesRtcd();
 
 private:
     QString path(const QString &relative) const
@@ -162,6 +168,10 @@ void TestInteropOnline::showsOpenRtmInTheTree()
     QCOMPARE(managed.siblingAtColumn(1).data().toString(), QStringLiteral("Inactive"));
     QVERIFY(model->indexOfPath(path("rtcd.host_cxt/Made0.rtc")).isValid());
     QVERIFY(model->zombiePaths().isEmpty());
+    // The path the tree shows below the master names the component for rtctl too.
+    const RtctlResult cat
+        = runRtctlAt("/" + m_live.namingServer(), {"cat", "rtcd.host_cxt/manager.mgr/Made0.rtc"});
+    QVERIFY2(cat.code == 0 && cat.out.contains("Made0"), qPrintable(cat.out + cat.err));
 }
 
 void TestInteropOnline::pollsAndDrivesOpenRtmStates()
@@ -195,6 +205,55 @@ void TestInteropOnline::pollsAndDrivesOpenRtmStates()
              int(LifeCycleState::Active));
     QCOMPARE(runRtctlAt("/" + m_live.namingServer(), {"deact", "rtcd.host_cxt/Made0.rtc"}).code, 0);
     QTRY_COMPARE_WITH_TIMEOUT(polledState(view, made), int(LifeCycleState::Inactive), 10000);
+}
+
+// The Manager view on rtcd2's master: a module loaded by its file, a component created (rtcd2's
+// master makes it in a slave, listed among the master's components) and deleted again.
+void TestInteropOnline::managerViewDrivesRtcd()
+{
+    const auto master = Corba::RtPath::parse(path("rtcd.host_cxt/manager.mgr"));
+    QVERIFY(master);
+    OnlineSession session;
+    ManagerView view(&session);
+    auto actAndWait = [&view](const std::function<void()> &action) {
+        QSignalSpy finished(&view, &ManagerView::actionFinished);
+        QSignalSpy loaded(&view, &ManagerView::loaded);
+        action();
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(finished.at(0).at(0).toString(), QString());
+        QVERIFY(loaded.wait(10000));
+    };
+    {
+        QSignalSpy loaded(&view, &ManagerView::loaded);
+        view.setManager(master->toString(), Corba::NamingBrowser::resolve(*master));
+        QVERIFY(loaded.wait(10000));
+    }
+    QVERIFY(view.snapshot().master);
+    QVERIFY(!view.types().contains("ConfigSample"));
+    actAndWait([&] { view.loadModule(examples + "rtc/ConfigSample.so", "ConfigSampleInit"); });
+    QVERIFY2(view.types().contains("ConfigSample"), qPrintable(view.types().join(' ')));
+
+    view.setCreateForm("ConfigSample", 0, {{"instance_name", "ViewMade0"}});
+    actAndWait([&] {
+        QTest::mouseClick(view.findChild<QPushButton *>("createButton"), Qt::LeftButton);
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(
+        runRtctlAt("/" + m_live.namingServer(), {"cat", "rtcd.host_cxt/ViewMade0.rtc"}).code == 0,
+        10000);
+    QTreeWidgetItem *made = nullptr;
+    QTreeWidgetItem *components = view.tree()->topLevelItem(1);
+    for (int i = 0; i < components->childCount(); ++i) {
+        if (components->child(i)->text(0) == "ViewMade0")
+            made = components->child(i);
+    }
+    QVERIFY(made);
+    view.tree()->setCurrentItem(made);
+    actAndWait([&] {
+        QTest::mouseClick(view.findChild<QPushButton *>("deleteComponentButton"), Qt::LeftButton);
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(
+        runRtctlAt("/" + m_live.namingServer(), {"cat", "rtcd.host_cxt/ViewMade0.rtc"}).code != 0,
+        10000);
 }
 
 QTEST_MAIN(TestInteropOnline)

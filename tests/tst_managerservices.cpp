@@ -135,13 +135,23 @@ void TestManagerServices::masterAggregatesSlaves()
     RTC::ComponentProfileList_var profiles = m_master->get_component_profiles();
     QCOMPARE(instanceNames(profiles.in()), QStringList({"ConsoleIn0", "OutA", "SensB"}));
     QCOMPARE(componentCount(m_master), 3);
+    // By name, as OpenRTM-aist's: each manager answers for its own components only, named
+    // `Instance`, `*` + `/Instance` or `category/Instance`.
     RTC::RTCList_var named = m_master->get_components_by_name("SensB");
+    QCOMPARE(named->length(), CORBA::ULong(0));
+    RTM::Manager_var slaveB = slave("slaveB");
+    QVERIFY(!CORBA::is_nil(slaveB));
+    named = slaveB->get_components_by_name("SensB");
     QCOMPARE(named->length(), CORBA::ULong(1));
     QVERIFY(named[0]->_is_equivalent(b));
-    named = m_master->get_components_by_name("ConsoleIn0");
-    QCOMPARE(named->length(), CORBA::ULong(1));
-    named = m_master->get_components_by_name("Nobody");
-    QCOMPARE(named->length(), CORBA::ULong(0));
+    for (const char *name : {"ConsoleIn0", "*/ConsoleIn0", "example/ConsoleIn0"}) {
+        named = m_master->get_components_by_name(name);
+        QVERIFY2(named->length() == 1, name);
+    }
+    for (const char *name : {"Nobody", "other/ConsoleIn0", "ConsoleIn"}) {
+        named = m_master->get_components_by_name(name);
+        QVERIFY2(named->length() == 0, name);
+    }
     // A slave answers for itself only.
     RTM::Manager_var slaveA = slave("slaveA");
     QVERIFY(!CORBA::is_nil(slaveA));

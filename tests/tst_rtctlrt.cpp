@@ -468,6 +468,10 @@ void TestRtctlRt::pathsBelowAManager()
                  .code,
              0);
     QCOMPARE(rtctl({"ls", "manager.mgr/slave0.mgr"}, dir).lines(), QStringList {"Far0.rtc"});
+    // A master lists its slaves' components with its own (as OpenRTM-aist's): those paths resolve.
+    QCOMPARE(rtctl({"ls", "manager.mgr"}, dir).lines(),
+             QStringList({"ConsoleIn0.rtc", "Far0.rtc", "slave0.mgr"}));
+    QVERIFY(rtctl({"cat", "manager.mgr/Far0.rtc"}, dir).out.contains("Far0"));
 
     const QString far = QStringLiteral("manager.mgr/slave0.mgr/Far0.rtc");
     const Result cat = rtctl({"cat", far}, dir);
