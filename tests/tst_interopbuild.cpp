@@ -307,26 +307,11 @@ void TestInteropBuild::moduleLoadedAndCreatedThroughRtctl()
 {
     // An rtcd2 master as users run it: it loads the module by name from its load path and creates
     // the component in a slave process it starts; the slave is then driven by its own path.
-    const int masterPort = LiveTest::freePort();
-    QFile conf(m_work.filePath("master.conf"));
-    QVERIFY(conf.open(QIODevice::WriteOnly | QIODevice::Text));
-    conf.write(QStringLiteral("corba.nameservers: %1\n"
-                              "corba.endpoints: 127.0.0.1:\n"
-                              "corba.master_manager: 127.0.0.1:%2\n"
-                              "manager.is_master: YES\n"
-                              "naming.formats: loaded.host_cxt/%n.rtc\n"
-                              "manager.naming_formats: loaded.host_cxt/%n.mgr\n"
-                              "manager.modules.load_path: %3/build/src\n"
-                              "manager.modules.C++.manager_cmd: %4/bin/rtcd2\n"
-                              "logger.enable: NO\n")
-                   .arg(m_live.namingServer())
-                   .arg(masterPort)
-                   .arg(m_project, openRtmPrefix)
-                   .toUtf8());
-    conf.close();
+    const quint16 masterPort = LiveTest::freePort();
     QString error;
-    QProcess *master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()},
-                                           QString(), &error, 0);
+    QProcess *master = m_live.startRtcdMaster(openRtmPrefix, m_work.filePath("master.conf"), masterPort,
+                                              "loaded", {"manager.modules.load_path: " + m_project + "/build/src"},
+                                              &error);
     QVERIFY2(master != nullptr, qPrintable(error));
     const QString dir = QStringLiteral("/%1/loaded.host_cxt").arg(m_live.namingServer());
     const QString masterPath = dir + "/manager.mgr";

@@ -99,26 +99,10 @@ void TestInteropOnline::initTestCase()
     QVERIFY2(m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), "ours",
                                      {"manager.components.precreate=SeqIn"}, &error),
              qPrintable(error));
-    // Slaves read the master's configuration file, not its command line: everything goes there.
-    QFile conf(m_work.filePath("master.conf"));
-    QVERIFY(conf.open(QIODevice::WriteOnly | QIODevice::Text));
-    conf.write(QStringLiteral("corba.nameservers: %1\n"
-                              "corba.endpoints: 127.0.0.1:\n"
-                              "corba.master_manager: 127.0.0.1:%2\n"
-                              "manager.is_master: YES\n"
-                              "naming.formats: rtcd.host_cxt/%n.rtc\n"
-                              "manager.naming_formats: rtcd.host_cxt/%n.mgr\n"
-                              "manager.modules.load_path: %3rtc\n"
-                              "manager.modules.C++.manager_cmd: %4/bin/rtcd2\n"
-                              "manager.modules.preload: ConsoleOut.so\n"
-                              "logger.enable: NO\n")
-                   .arg(server)
-                   .arg(masterPort)
-                   .arg(examples, openRtmPrefix)
-                   .toUtf8());
-    conf.close();
-    m_master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()}, QString(),
-                                   &error, 0);
+    m_master = m_live.startRtcdMaster(openRtmPrefix, m_work.filePath("master.conf"), masterPort, "rtcd",
+                                      {"manager.modules.load_path: " + examples + "rtc",
+                                       "manager.modules.preload: ConsoleOut.so"},
+                                      &error);
     QVERIFY2(m_master, qPrintable(error));
     const QString cwd = "/" + server;
     QTRY_VERIFY_WITH_TIMEOUT(runRtctlAt(cwd, {"cat", "openrtm.host_cxt/SeqOut0.rtc"}).code == 0,

@@ -248,28 +248,10 @@ bool TestInteropSystem::startMaster(QString *error)
 {
     m_masterPort = LiveTest::freePort();
     const QString examples = openRtmPrefix + "/share/openrtm-2.1/components/c++/examples/rtc";
-    QFile conf(m_work.filePath("master.conf"));
-    if (!conf.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        *error = conf.errorString();
-        return false;
-    }
-    conf.write(QStringLiteral("corba.nameservers: %1\n"
-                              "corba.endpoints: 127.0.0.1:\n"
-                              "corba.master_manager: 127.0.0.1:%2\n"
-                              "manager.is_master: YES\n"
-                              "naming.formats: rtcd.host_cxt/%n.rtc\n"
-                              "manager.naming_formats: rtcd.host_cxt/%n.mgr\n"
-                              "manager.modules.load_path: %3\n"
-                              "manager.modules.C++.manager_cmd: %4/bin/rtcd2\n"
-                              "manager.modules.preload: ConsoleOut.so\n"
-                              "logger.enable: NO\n")
-                   .arg(m_server)
-                   .arg(m_masterPort)
-                   .arg(examples, openRtmPrefix)
-                   .toUtf8());
-    conf.close();
-    m_master = m_live.startProcess(openRtmPrefix + "/bin/rtcd2", {"-f", conf.fileName()}, QString(),
-                                   error, 0);
+    m_master = m_live.startRtcdMaster(openRtmPrefix, m_work.filePath("master.conf"), m_masterPort, "rtcd",
+                                      {"manager.modules.load_path: " + examples,
+                                       "manager.modules.preload: ConsoleOut.so"},
+                                      error);
     return m_master != nullptr;
 }
 

@@ -211,6 +211,29 @@ QProcess *LiveSystem::startHostManager(const QString &program, quint16 port, con
                         error);
 }
 
+QProcess *LiveSystem::startRtcdMaster(const QString &prefix, const QString &confFile, quint16 masterPort,
+                                      const QString &host, const QStringList &extraLines, QString *error)
+{
+    QFile conf(confFile);
+    if (!conf.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        *error = confFile + QStringLiteral(": ") + conf.errorString();
+        return nullptr;
+    }
+    const QStringList lines = QStringList {QStringLiteral("corba.nameservers: ") + namingServer(),
+                                           QStringLiteral("corba.endpoints: 127.0.0.1:"),
+                                           QStringLiteral("corba.master_manager: 127.0.0.1:%1").arg(masterPort),
+                                           QStringLiteral("manager.is_master: YES"),
+                                           QStringLiteral("naming.formats: %1.host_cxt/%n.rtc").arg(host),
+                                           QStringLiteral("manager.naming_formats: %1.host_cxt/%n.mgr").arg(host),
+                                           QStringLiteral("manager.modules.C++.manager_cmd: %1/bin/rtcd2").arg(prefix),
+                                           QStringLiteral("logger.enable: NO")}
+                              + extraLines;
+    conf.write((lines.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8());
+    conf.close();
+    return startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), confFile}, QString(),
+                        error, 0);
+}
+
 QProcess *LiveSystem::startProcess(const QString &program, const QStringList &arguments,
                                    const QString &readyText, QString *error, int timeoutMs)
 {

@@ -87,6 +87,14 @@ public:
      */
     QProcess *startHostManager(const QString &program, quint16 port, const QString &host,
                                const QStringList &options, QString *error);
+    /**
+     * Starts OpenRTM-aist's rtcd2 (of the installation at `prefix`) as a master on
+     * 127.0.0.1:`masterPort`, registered with its components in this system's name server under
+     * `<host>.host_cxt`, starting slaves with the same rtcd2. Its configuration goes to `confFile`
+     * (slaves read the master's file, not its command line), `extraLines` after the common ones.
+     */
+    QProcess *startRtcdMaster(const QString &prefix, const QString &confFile, quint16 masterPort,
+                              const QString &host, const QStringList &extraLines, QString *error);
     /// Kills and reaps one process started here.
     void stop(QProcess *process);
     /// Kills and reaps everything started here.
