@@ -8,6 +8,7 @@
 #include "managerproxy.h"
 #include "namingbrowser.h"
 #include "orb.h"
+#include "portconnection.h"
 #include "profileio.h"
 #include "restorer.h"
 #include "rtsprofile.h"
@@ -35,6 +36,7 @@ private slots:
     void restoresBundledExamples_data();
     void restoresBundledExamples();
     void dryRunPlanChangesNothing();
+    void teardownReadsAgainWhatChangedSincePlanning();
     void restoreCreatesFromNothing();
     void configurationAndRates();
     void failedRestoreRollsBack();
@@ -150,6 +152,43 @@ void TestDeploy::restoresBundledExamples()
     const DeployReport teardown = teardownSystem(planRestore(profile, target(false)));
     QVERIFY2(teardown.ok, qPrintable(teardown.toText()));
     QCOMPARE(doneSubjects(teardown, "disconnect").size(), profile.dataPortConnectors.size());
+    for (const auto &connector : profile.dataPortConnectors)
+        QVERIFY(live(connector.source.instanceName)
+                    .port(connector.source.portName.section('.', 1))
+                    .connectors.empty());
+}
+
+// Teardown starts from the ports the plan read and reads them again where they no longer hold.
+void TestDeploy::teardownReadsAgainWhatChangedSincePlanning()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("ordered.xml"));
+    QVERIFY(!profile.dataPortConnectors.isEmpty());
+    QVERIFY2(restoreSystem(profile, planRestore(profile, target(true)), target(true)).ok, "restore");
+    QVERIFY2(teardownSystem(planRestore(profile, target(false))).ok, "teardown");
+    // Planned while the components were there unconnected: each connector made since is found
+    // when its component is read again.
+    const RestorePlan unconnected = planRestore(profile, target(false));
+    QVERIFY2(restoreSystem(profile, unconnected, target(false)).ok, "restore");
+    DeployReport report = teardownSystem(unconnected);
+    QVERIFY2(report.ok, qPrintable(report.toText()));
+    QCOMPARE(doneSubjects(report, "disconnect").size(), profile.dataPortConnectors.size());
+
+    // Planned while connected; one connector removed behind the plan's back is skipped, the
+    // others are disconnected.
+    QVERIFY2(restoreSystem(profile, planRestore(profile, target(false)), target(false)).ok, "restore");
+    const RestorePlan connected = planRestore(profile, target(false));
+    const auto &gone = profile.dataPortConnectors.front();
+    const Corba::PortInfo port = live(gone.source.instanceName).port(gone.source.portName.section('.', 1));
+    Corba::PortConnection::disconnect(port, gone.connectorId, gone.source.instanceName);
+    report = teardownSystem(connected);
+    QVERIFY2(report.ok, qPrintable(report.toText()));
+    QCOMPARE(doneSubjects(report, "disconnect").size(), profile.dataPortConnectors.size() - 1);
+    bool skipped = false;
+    for (const DeployStep &step : report.steps) {
+        if (step.subject == gone.connectorId)
+            skipped = step.status == StepStatus::Skipped && step.message == "not connected";
+    }
+    QVERIFY2(skipped, qPrintable(report.toText()));
     for (const auto &connector : profile.dataPortConnectors)
         QVERIFY(live(connector.source.instanceName)
                     .port(connector.source.portName.section('.', 1))

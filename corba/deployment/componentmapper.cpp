@@ -267,6 +267,7 @@ bool ComponentMapper::checkLive(ComponentMapping &mapping, const LiveEntry &entr
         }
         mapping.path = entry.path;
         mapping.ior = entry.ior;
+        mapping.plannedPorts = info.ports;
         mapping.kind = MappingKind::Existing;
         mapping.message.clear();
         return true;

@@ -59,6 +59,9 @@ struct ComponentMapping
     QString manager;
     QString message; ///< why it is missing, or a warning (other vendor/version)
     bool activate = true; ///< take part in start/stop (a GUI mapping dialog may untick it)
+    /// An existing component's ports and connectors as the plan read them: a first guess for a
+    /// step that runs right after planning, to be read again when it does not hold.
+    std::vector<Corba::PortInfo> plannedPorts;
 };
 
 /**

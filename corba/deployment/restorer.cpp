@@ -365,36 +365,61 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
     // Components are independent of each other: several are taken apart at once.
     Corba::forEachConcurrently(jobs.size(), [&steps, &jobs](std::size_t i) {
         const Job &job = jobs[i];
-        std::vector<Corba::PortInfo> ports;
+        // The ports the plan read are used first; they are read again as soon as they disagree
+        // with the component (a connector made or removed since).
+        std::vector<Corba::PortInfo> ports = job.source->plannedPorts;
+        bool fresh = ports.empty();
         QString unreachable;
-        try {
-            ports = ComponentProxy(job.source->ior, job.source->path).profile().ports;
-        } catch (const Error &e) {
-            unreachable = e.message();
-        }
+        const auto readPorts = [&] {
+            fresh = true;
+            try {
+                ports = ComponentProxy(job.source->ior, job.source->path).profile().ports;
+            } catch (const Error &e) {
+                unreachable = e.message();
+            }
+        };
+        if (fresh)
+            readPorts();
         for (const Disconnect &d : job.connectors) {
             const ConnectorPlan &c = *d.connector;
             if (steps.checkCancelled()) {
                 steps.finish(d.step, StepStatus::Skipped, QStringLiteral("cancelled"));
                 continue;
             }
+            const Corba::PortInfo *port = nullptr;
+            const auto connected = [&] {
+                port = unreachable.isEmpty() ? findPort(ports, c.sourcePort, c.sourceInstance) : nullptr;
+                return port && findConnector(*port, c.connectorId);
+            };
+            if (!connected() && !fresh) {
+                readPorts();
+                connected();
+            }
             if (!unreachable.isEmpty()) {
                 steps.fail(d.step, unreachable);
                 continue;
             }
+            if (!port) {
+                steps.fail(d.step, QStringLiteral("%1: no port named '%2'")
+                                       .arg(job.source->path, shortPortName(c.sourcePort, c.sourceInstance)));
+                continue;
+            }
+            if (!findConnector(*port, c.connectorId)) {
+                steps.finish(d.step, StepStatus::Skipped, QStringLiteral("not connected"));
+                continue;
+            }
             try {
-                const Corba::PortInfo *port = findPort(ports, c.sourcePort, c.sourceInstance);
-                if (!port)
-                    throw Error(Error::Kind::NotFound, QStringLiteral("%1: no port named '%2'")
-                                                           .arg(job.source->path, shortPortName(c.sourcePort, c.sourceInstance)));
-                if (!findConnector(*port, c.connectorId)) {
-                    steps.finish(d.step, StepStatus::Skipped, QStringLiteral("not connected"));
-                    continue;
-                }
                 Corba::PortConnection::disconnect(*port, c.connectorId, job.source->path);
                 steps.finish(d.step, StepStatus::Done);
             } catch (const Error &e) {
-                steps.fail(d.step, e.message());
+                // Refused by ports the plan read: disconnected since, unless a fresh look finds it.
+                const bool stale = !fresh && e.kind() == Error::Kind::Refused;
+                if (stale)
+                    readPorts();
+                if (stale && unreachable.isEmpty() && !connected())
+                    steps.finish(d.step, StepStatus::Skipped, QStringLiteral("not connected"));
+                else
+                    steps.fail(d.step, e.message());
             }
         }
     });
