@@ -127,7 +127,7 @@ QString ManagerProxy::deleteComponent(const QString &instanceName) const
             throw refused;
         }
         for (qsizetype i = 0; i < slaves.size(); ++i) {
-            const ManagerProxy slave(slaves.at(i), m_path + QStringLiteral("/slave%1.mgr").arg(i));
+            const ManagerProxy slave(slaves.at(i), m_path + QLatin1Char('/') + slaveName(int(i)));
             try {
                 if (slave.componentsByName(instanceName).isEmpty())
                     continue;

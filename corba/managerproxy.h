@@ -23,6 +23,8 @@ public:
 
     QString ior() const { return m_ior; }
     QString path() const { return m_path; }
+    /// The name the RTC tree gives a manager's slave number @p index (`slave0.mgr`).
+    static QString slaveName(int index) { return QStringLiteral("slave%1.mgr").arg(index); }
 
     void loadModule(const QString &pathName, const QString &initFunction) const;
     void unloadModule(const QString &pathName) const;

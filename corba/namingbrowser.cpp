@@ -133,12 +133,6 @@ CORBA::Object_ptr resolveName(const RtPath &path)
     });
 }
 
-/// The name listManager() gives the slave at @p index of a manager.
-QString slaveName(int index)
-{
-    return QStringLiteral("slave%1.mgr").arg(index);
-}
-
 /**
  * The object at @p path. Names resolve through the name server up to the first manager that is not
  * the last element; below a manager, `Name.rtc` is one of its components and `slaveN.mgr` its Nth
@@ -167,7 +161,7 @@ CORBA::Object_ptr resolveObject(const RtPath &path)
         if (kindOf(name) == QLatin1String("mgr")) {
             const QStringList slaves = manager.slaveManagers();
             for (qsizetype k = 0; k < slaves.size() && found.isEmpty(); ++k) {
-                if (slaveName(int(k)) == name)
+                if (ManagerProxy::slaveName(int(k)) == name)
                     found = slaves.at(k);
             }
         } else if (kindOf(name) == QLatin1String("rtc") && i + 1 == names.size()) {
@@ -177,7 +171,7 @@ CORBA::Object_ptr resolveObject(const RtPath &path)
             found = manager.componentsByName(instance).value(0);
             const QStringList slaves = found.isEmpty() ? manager.slaveManagers() : QStringList();
             for (qsizetype k = 0; k < slaves.size() && found.isEmpty(); ++k)
-                found = ManagerProxy(slaves.at(k), at + QLatin1Char('/') + slaveName(int(k)))
+                found = ManagerProxy(slaves.at(k), at + QLatin1Char('/') + ManagerProxy::slaveName(int(k)))
                             .componentsByName(instance)
                             .value(0);
         }
@@ -317,7 +311,7 @@ std::vector<NamingNode> listManager(const QString &ior, const QString &path)
     }
     int index = 0;
     for (const QString &slave : manager.slaveManagers()) {
-        const QString name = slaveName(index++);
+        const QString name = ManagerProxy::slaveName(index++);
         nodes.push_back({name, NodeType::Manager, path + QLatin1Char('/') + name, slave, {}, {}});
     }
     return nodes;
