@@ -206,7 +206,8 @@ void OnlineDocks::showLocalRuntime()
             : tr("Local runtime: stopped"));
 }
 
-void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then)
+void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then,
+                                    const std::function<void(const QString &)> &failed)
 {
     emit statusMessage(tr("Starting the local runtime…"));
     m_session->submit(
@@ -220,9 +221,11 @@ void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::Local
             return QVariant::fromValue(state);
         },
         this,
-        [this, then](const SystemEditor::OnlineResult &result) {
+        [this, then, failed](const SystemEditor::OnlineResult &result) {
             if (!result.ok) {
                 emit statusMessage(tr("The local runtime did not start: %1").arg(result.error));
+                if (failed)
+                    failed(result.error);
                 return;
             }
             m_localRuntime = result.value.value<Deploy::LocalRuntimeState>();
@@ -303,7 +306,7 @@ void OnlineDocks::runLocally(const Profile::RtsProfile &profile,
                 if (done)
                     done(QString());
             });
-    });
+    }, done);
 }
 
 void OnlineDocks::watchFirstConnection(OnlineDocument *online, const Profile::RtsProfile &profile)

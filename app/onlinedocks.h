@@ -103,9 +103,11 @@ public:
     /**
      * Starts the local runtime (a name server and an rtmanager master, Deploy::LocalRuntime) off
      * the GUI thread, or finds the one running, adds its name server to the Name Service view and
-     * shows it in the status bar; then calls `then` (in this thread) when it runs.
+     * shows it in the status bar; then calls `then` (in this thread) when it runs, or `failed`
+     * with the reason when it does not start.
      */
-    void startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then = {});
+    void startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then = {},
+                           const std::function<void(const QString &)> &failed = {});
     void stopLocalRuntime();
     /**
      * Runs `profile` on the local runtime as a newcomer wants it: starts the runtime, restores the

@@ -317,11 +317,12 @@ void TestInteropBuild::moduleLoadedAndCreatedThroughRtctl()
     const QString masterPath = dir + "/manager.mgr";
     QTRY_VERIFY_WITH_TIMEOUT(rtctl({"mgr", masterPath, "list"}).code == 0, 30000);
 
-    RtctlResult r = rtctl({"mgr", masterPath, "load", "SdkGreeter.so", "list"});
+    // Loading and creating start rtcprof2 and a slave rtcd2: slow on a busy machine.
+    RtctlResult r = rtctl({"mgr", "--timeout", "30000", masterPath, "load", "SdkGreeter.so", "list"});
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     QVERIFY2(r.out.contains("/build/src/SdkGreeter.so"), qPrintable(r.out));
     QVERIFY2(r.out.contains("  SdkGreeter\n"), qPrintable(r.out));
-    r = rtctl({"mgr", masterPath, "create", "SdkGreeter?instance_name=Loaded0"});
+    r = rtctl({"mgr", "--timeout", "30000", masterPath, "create", "SdkGreeter?instance_name=Loaded0"});
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     QCOMPARE(r.out, QString("Loaded0\n"));
     const QString loaded = dir + "/Loaded0.rtc";
@@ -333,7 +334,7 @@ void TestInteropBuild::moduleLoadedAndCreatedThroughRtctl()
     // second component created there directly.
     const QString slave = masterPath + "/slave0.mgr";
     QTRY_VERIFY_WITH_TIMEOUT(rtctl({"ls", slave}).lines().contains("Loaded0.rtc"), 10000);
-    r = rtctl({"mgr", slave, "load", m_project + "/build/src/SdkGreeter.so", "create",
+    r = rtctl({"mgr", "--timeout", "30000", slave, "load", m_project + "/build/src/SdkGreeter.so", "create",
                "SdkGreeter?instance_name=Direct0", "list"});
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     QVERIFY2(r.out.startsWith("Direct0\n"), qPrintable(r.out));

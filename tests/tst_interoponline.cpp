@@ -17,14 +17,12 @@
 #include "rtctlrunner.h"
 
 #include <QAction>
-#include <QPushButton>
-#include <QTreeWidget>
 #include <QFile>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
-
-#include <csignal>
+#include <QTreeWidget>
 
 using namespace SystemEditor;
 using Corba::LifeCycleState;
@@ -118,11 +116,6 @@ void TestInteropOnline::initTestCase()
 
 void TestInteropOnline::cleanupTestCase()
 {
-    // The master's slaves run in sessions of their own: they go before it.
-    if (m_master && m_master->state() != QProcess::NotRunning) {
-        for (qint64 pid : LiveTest::childProcesses(m_master->processId()))
-            ::kill(pid_t(pid), SIGKILL);
-    }
     m_master = nullptr;
     m_live.stopAll();
 }

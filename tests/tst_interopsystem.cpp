@@ -23,7 +23,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <csignal>
 #include <functional>
 #include <optional>
 
@@ -154,9 +153,6 @@ class TestInteropSystem : public QObject
 {
     Q_OBJECT
 
-public:
-    ~TestInteropSystem() override { stopSlaves(); }
-
 private slots:
     void initTestCase();
     void cleanupTestCase();
@@ -183,7 +179,6 @@ private:
     bool waitForOutput(QProcess *process, const QRegularExpression &pattern, int timeoutMs,
                        const QByteArray &poke = QByteArray());
     bool waitForSeqInTable(const std::function<bool(const SeqInTable &)> &wanted, int timeoutMs);
-    void stopSlaves();
     void checkConfiguration(
         const QString &component,
         const std::function<bool(const QString &, const QString &, const QString &)> &inEffect);
@@ -306,17 +301,6 @@ bool TestInteropSystem::waitForSeqInTable(const std::function<bool(const SeqInTa
     return false;
 }
 
-// Before the master: once it is gone they are no longer known as its children. Also from the
-// destructor, in case cleanupTestCase() never ran.
-void TestInteropSystem::stopSlaves()
-{
-    if (m_master && m_master->state() != QProcess::NotRunning) {
-        for (qint64 pid : LiveTest::childProcesses(m_master->processId()))
-            ::kill(pid_t(pid), SIGKILL);
-    }
-    m_master = nullptr; // LiveSystem::stopAll() deletes it
-}
-
 void TestInteropSystem::initTestCase()
 {
     if (openRtmPrefix.isEmpty() || !QFile::exists(openRtmPrefix + "/bin/rtcd2"))
@@ -352,7 +336,7 @@ void TestInteropSystem::initTestCase()
 
 void TestInteropSystem::cleanupTestCase()
 {
-    stopSlaves();
+    m_master = nullptr;
     m_live.stopAll();
     // Its threads must not outlive the test's objects at exit.
     if (!CORBA::is_nil(m_orb))

@@ -82,11 +82,14 @@ void TestRunLocally::runsTheExampleAndStopsOnQuit()
 
     bool finished = false;
     QString error;
+    QStringList messages; // what the status bar said, for a report when it never finishes
+    connect(window->onlineDocks(), &OnlineDocks::statusMessage, this,
+            [&messages](const QString &message) { messages << message; });
     window->onlineDocks()->runLocally(system->profile(), [&](const QString &e) {
         finished = true;
         error = e;
     });
-    QTRY_VERIFY_WITH_TIMEOUT(finished, 60000);
+    QTRY_VERIFY2_WITH_TIMEOUT(finished, qPrintable(messages.join(" | ")), 60000);
     QVERIFY2(error.isEmpty(), qPrintable(error));
     const Deploy::LocalRuntimeState runtime = window->onlineDocks()->localRuntime();
     QVERIFY(runtime.running() && runtime.startedNow);

@@ -230,8 +230,11 @@ QProcess *LiveSystem::startRtcdMaster(const QString &prefix, const QString &conf
                               + extraLines;
     conf.write((lines.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8());
     conf.close();
-    return startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), confFile}, QString(),
-                        error, 0);
+    QProcess *master = startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), confFile},
+                                    QString(), error, 0);
+    if (master)
+        m_rtcdMasters.insert(master);
+    return master;
 }
 
 QProcess *LiveSystem::startProcess(const QString &program, const QStringList &arguments,
@@ -268,9 +271,15 @@ void LiveSystem::stop(QProcess *process)
     if (!process)
         return;
     if (process->state() != QProcess::NotRunning) {
+        // Before the master: once it is gone they are no longer known as its children.
+        if (m_rtcdMasters.count(process) > 0) {
+            for (qint64 pid : childProcesses(process->processId()))
+                ::kill(pid_t(pid), SIGKILL);
+        }
         process->kill();
         process->waitForFinished(10000);
     }
+    m_rtcdMasters.erase(process);
 }
 
 void LiveSystem::stopAll()

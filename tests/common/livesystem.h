@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace LiveTest {
@@ -92,10 +93,11 @@ public:
      * 127.0.0.1:`masterPort`, registered with its components in this system's name server under
      * `<host>.host_cxt`, starting slaves with the same rtcd2. Its configuration goes to `confFile`
      * (slaves read the master's file, not its command line), `extraLines` after the common ones.
+     * Its slaves run in sessions of their own and outlive it: stopping it here stops them first.
      */
     QProcess *startRtcdMaster(const QString &prefix, const QString &confFile, quint16 masterPort,
                               const QString &host, const QStringList &extraLines, QString *error);
-    /// Kills and reaps one process started here.
+    /// Kills and reaps one process started here (and first the slaves of an rtcd2 master).
     void stop(QProcess *process);
     /// Kills and reaps everything started here.
     void stopAll();
@@ -106,6 +108,7 @@ private:
     std::unique_ptr<QTemporaryDir> m_dataDir;
     quint16 m_namingPort = 0;
     QProcess *m_nameServer = nullptr;
+    std::set<QProcess *> m_rtcdMasters; ///< whose children (slaves) are stopped with them
 };
 
 } // namespace LiveTest
