@@ -5,37 +5,34 @@
 # The prefix comes from the cache or, at the first configure, from the OPENRTM_ROOT environment variable.
 set(RTSTUDIO_OPENRTM_PREFIX "$ENV{OPENRTM_ROOT}" CACHE PATH "OpenRTM-aist 2.x prefix for the interop tests (optional)")
 
-rtstudio_add_test(tst_interopbuild SOURCES tst_interopbuild.cpp common/sdkgreeteredits.h
-    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
-target_compile_definitions(tst_interopbuild PRIVATE
-    RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
-    CMAKE_COMMAND="${CMAKE_COMMAND}")
-add_dependencies(tst_interopbuild rtmanager rtctl)
-set_tests_properties(tst_interopbuild PROPERTIES LABELS interop TIMEOUT 900)
+# One interop test: the prefix and rtmanager's path compiled in, rtmanager and rtctl built first.
+function(rtstudio_add_interop_test name)
+    cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;DEFINITIONS" ${ARGN})
+    rtstudio_add_test(${name} SOURCES ${ARG_SOURCES} LIBS ${ARG_LIBS})
+    target_compile_definitions(${name} PRIVATE
+        RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
+        RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+        ${ARG_DEFINITIONS})
+    add_dependencies(${name} rtmanager rtctl)
+    set_tests_properties(${name} PROPERTIES LABELS interop)
+    if(ARG_TIMEOUT)
+        set_tests_properties(${name} PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+    endif()
+endfunction()
+
+rtstudio_add_interop_test(tst_interopbuild SOURCES tst_interopbuild.cpp common/sdkgreeteredits.h
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs
+    DEFINITIONS CMAKE_COMMAND="${CMAKE_COMMAND}" TIMEOUT 900)
 
 # rtctl print / inject against OpenRTM-aist's example components.
-rtstudio_add_test(tst_interopdata SOURCES tst_interopdata.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner)
-target_compile_definitions(tst_interopdata PRIVATE RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}")
-add_dependencies(tst_interopdata rtctl)
-set_tests_properties(tst_interopdata PROPERTIES LABELS interop)
+rtstudio_add_interop_test(tst_interopdata SOURCES tst_interopdata.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner)
 
 # One name server with OpenRTM-aist's example programs, an rtcd2 master and rtmanager: every rtctl
 # command against OpenRTM-aist, data of every basic type both ways, configuration, service calls
 # and a mixed system saved and restored.
-rtstudio_add_test(tst_interopsystem SOURCES tst_interopsystem.cpp
+rtstudio_add_interop_test(tst_interopsystem SOURCES tst_interopsystem.cpp
     LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
-target_compile_definitions(tst_interopsystem PRIVATE
-    RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
-add_dependencies(tst_interopsystem rtmanager rtctl)
-set_tests_properties(tst_interopsystem PROPERTIES LABELS interop)
 
-# The online System Editor's Name Service view against the same kind of mixed system.
-rtstudio_add_test(tst_interoponline SOURCES tst_interoponline.cpp
+# The online System Editor's Name Service view and Manager view against the same kind of mixed system.
+rtstudio_add_interop_test(tst_interoponline SOURCES tst_interoponline.cpp
     LIBS rtsystemeditor rtstudio_livetest rtstudio_rtctlrunner)
-target_compile_definitions(tst_interoponline PRIVATE
-    RTSTUDIO_OPENRTM_PREFIX="${RTSTUDIO_OPENRTM_PREFIX}"
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
-add_dependencies(tst_interoponline rtmanager rtctl)
-set_tests_properties(tst_interoponline PROPERTIES LABELS interop)
