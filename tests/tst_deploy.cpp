@@ -48,6 +48,7 @@ private slots:
     void syncTimeoutCancelsThePlan();
     void cryoRestoreCryoGivesTheSameSystem();
     void diffListsDrift();
+    void diffReadsAgainWhatChangedSincePlanning();
 
 private:
     TargetOptions target(bool create) const;
@@ -520,6 +521,23 @@ void TestDeploy::diffListsDrift()
                           "active set Conf0: saved 'mode0', live 'default'",
                           "missing component Opt0: saved 'RTC:AIST:example:NoSuchType:2.0.0', "
                           "live 'no live component named Opt0'"}));
+}
+
+void TestDeploy::diffReadsAgainWhatChangedSincePlanning()
+{
+    const Profile::RtsProfile profile = loadSystem(dataFile("ordered.xml"));
+    QVERIFY(!profile.dataPortConnectors.isEmpty());
+    QVERIFY(restore(profile, true).ok);
+    QVERIFY2(teardownSystem(planRestore(profile, target(false))).ok, "teardown");
+    // Planned while unconnected: the plan's ports lack every connector, which the comparison finds
+    // by reading those components again.
+    const RestorePlan unconnected = planRestore(profile, target(false));
+    QCOMPARE(diffSystem(profile, unconnected).size(), profile.dataPortConnectors.size());
+    QVERIFY2(restoreSystem(profile, unconnected, target(false)).ok, "restore");
+    QStringList lines;
+    for (const DriftItem &item : diffSystem(profile, unconnected))
+        lines.append(item.toString());
+    QVERIFY2(lines.isEmpty(), qPrintable(lines.join('\n')));
 }
 
 QTEST_GUILESS_MAIN(TestDeploy)

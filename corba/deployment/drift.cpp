@@ -57,25 +57,28 @@ void diffConfiguration(const Profile::RtsComponent &saved, const ComponentProxy 
     }
 }
 
-void diffComponent(const Profile::RtsComponent &saved, const LiveComponent &live,
-                   QList<DriftItem> &items)
+void diffPorts(const Profile::RtsComponent &saved, const std::vector<Corba::PortInfo> &ports,
+               QList<DriftItem> &items)
 {
     for (const auto *list : {&saved.dataPorts, &saved.servicePorts}) {
         for (const auto &port : *list) {
-            if (!findPort(live.ports, port.name, saved.instanceName))
+            if (!findPort(ports, port.name, saved.instanceName))
                 items.append({Kind::MissingPort, port.name, port.name, QString()});
         }
     }
-    diffConfiguration(saved, live.proxy, items);
-    const Corba::LifeCycleState state = live.proxy.state(0);
+}
+
+void diffState(const Profile::RtsComponent &saved, const ComponentProxy &proxy, QList<DriftItem> &items)
+{
+    const Corba::LifeCycleState state = proxy.state(0);
     if (state == Corba::LifeCycleState::Error || state == Corba::LifeCycleState::Unknown)
         items.append({Kind::State, saved.instanceName, QString(), Corba::stateName(state)});
 }
 
 // Saved connectors are found by id; a live connector between two saved components that no saved
-// connector accounts for is extra.
+// connector accounts for is extra. `involved` gets the instances whose ports showed a difference.
 void diffConnectors(const Profile::RtsProfile &profile, const QHash<QString, LiveComponent> &live,
-                    QList<DriftItem> &items)
+                    QList<DriftItem> &items, QSet<QString> &involved)
 {
     QSet<QString> savedIds;
     QList<const Profile::RtsPortConnector *> connectors;
@@ -89,22 +92,27 @@ void diffConnectors(const Profile::RtsProfile &profile, const QHash<QString, Liv
         if (source == live.constEnd() || !live.contains(c->target.instanceName))
             continue; // already reported as a missing component
         const auto *port = findPort(source->ports, c->source.portName, c->source.instanceName);
-        if (!port || !findConnector(*port, c->connectorId))
+        if (!port || !findConnector(*port, c->connectorId)) {
             items.append({Kind::MissingConnector, c->connectorId,
                           c->source.portName + QStringLiteral(" -> ") + c->target.portName,
                           QString()});
+            involved.insert(c->source.instanceName);
+        }
     }
     QSet<QString> reported;
-    for (const LiveComponent &component : live) {
-        for (const auto &port : component.ports) {
+    for (auto component = live.constBegin(); component != live.constEnd(); ++component) {
+        for (const auto &port : component->ports) {
             for (const auto &connector : port.connectors) {
-                if (savedIds.contains(connector.id) || reported.contains(connector.id)
+                if (savedIds.contains(connector.id))
+                    continue;
+                if (reported.contains(connector.id)
                     || !std::all_of(connector.ports.begin(), connector.ports.end(),
                                     [&](const QString &name) {
                                         return live.contains(name.section(QLatin1Char('.'), 0, 0));
                                     }))
                     continue;
                 reported.insert(connector.id);
+                involved.insert(component.key());
                 items.append({Kind::ExtraConnector, connector.id, QString(),
                               connector.ports.join(QStringLiteral(" -> "))});
             }
@@ -152,15 +160,20 @@ QString DriftItem::toString() const
 
 QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePlan &plan)
 {
-    // Each component is compared on its own: several at once, reported in the file's order.
+    // Each component is compared on its own: several at once, reported in the file's order. Ports
+    // and connectors start from what the plan read a moment ago; the components where they differ
+    // from the file are read again below, so what is reported is what is live now.
     struct Compared
     {
-        QList<DriftItem> items;
+        const Profile::RtsComponent *saved = nullptr;
+        QList<DriftItem> items; ///< configuration and state
         std::optional<LiveComponent> component;
     };
-    std::vector<Compared> compared(std::size_t(profile.components.size()));
+    const auto &components = profile.components;
+    std::vector<Compared> compared(std::size_t(components.size()));
     Corba::forEachConcurrently(compared.size(), [&](std::size_t i) {
-        const auto &saved = profile.components.at(qsizetype(i));
+        const auto &saved = components.at(qsizetype(i));
+        compared[i].saved = &saved;
         const ComponentMapping *mapping = plan.component(saved.instanceName);
         if (!mapping || mapping->kind != MappingKind::Existing) {
             compared[i].items.append({Kind::MissingComponent, saved.instanceName, saved.id,
@@ -168,23 +181,56 @@ QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePla
             return;
         }
         try {
-            LiveComponent component {ComponentProxy(mapping->ior, mapping->path), {}};
-            // From the component profile: every port's profile in one call.
-            component.ports = component.proxy.profile().ports;
-            diffComponent(saved, component, compared[i].items);
+            LiveComponent component {ComponentProxy(mapping->ior, mapping->path), mapping->plannedPorts};
+            diffConfiguration(saved, component.proxy, compared[i].items);
+            diffState(saved, component.proxy, compared[i].items);
             compared[i].component = std::move(component);
         } catch (const Error &e) {
             compared[i].items.append({Kind::Unreachable, saved.instanceName, QString(), e.message()});
         }
     });
-    QList<DriftItem> items;
-    QHash<QString, LiveComponent> live;
+    const auto portItems = [&](QSet<QString> &involved) {
+        QList<DriftItem> items;
+        QHash<QString, LiveComponent> live;
+        for (const Compared &c : compared) {
+            if (!c.component)
+                continue;
+            const qsizetype before = items.size();
+            diffPorts(*c.saved, c.component->ports, items);
+            if (items.size() != before)
+                involved.insert(c.saved->instanceName);
+            live.insert(c.saved->instanceName, *c.component);
+        }
+        QList<DriftItem> connectors;
+        diffConnectors(profile, live, connectors, involved);
+        return connectors;
+    };
+    QSet<QString> involved;
+    portItems(involved);
+    // Read again (one call each, component profile) the components the plan's ports disagree on.
+    std::vector<std::size_t> again;
     for (std::size_t i = 0; i < compared.size(); ++i) {
-        items.append(compared[i].items);
-        if (compared[i].component)
-            live.insert(profile.components.at(qsizetype(i)).instanceName, std::move(*compared[i].component));
+        if (compared[i].component && involved.contains(compared[i].saved->instanceName))
+            again.push_back(i);
     }
-    diffConnectors(profile, live, items);
+    Corba::forEachConcurrently(again.size(), [&](std::size_t k) {
+        Compared &c = compared[again[k]];
+        try {
+            c.component->ports = c.component->proxy.profile().ports;
+        } catch (const Error &e) {
+            c.items.append({Kind::Unreachable, c.saved->instanceName, QString(), e.message()});
+            c.component.reset();
+        }
+    });
+    involved.clear();
+    const QList<DriftItem> connectors = portItems(involved);
+    QList<DriftItem> items;
+    for (const Compared &c : compared) {
+        if (c.component)
+            diffPorts(*c.saved, c.component->ports, items);
+        items.append(c.items);
+    }
+    items.append(connectors);
     return items;
 }
 

@@ -42,6 +42,10 @@ struct DriftItem
  * planRestore()): missing components and ports, missing and extra connectors, configuration
  * values and active sets, components in the error state. Makes no change; remote failures become
  * Unreachable items. Safe to call from a worker thread.
+ *
+ * Ports and connectors are first taken from the plan's reading (ComponentMapping::plannedPorts);
+ * the components where they disagree with the file are read again. So make the plan right before
+ * the comparison, as rtctl and the Drift view do.
  */
 QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePlan &plan);
 
