@@ -31,8 +31,9 @@ struct ConnectorInfo
 {
     QString name;
     QString id;
-    QStringList ports;
+    QStringList ports; ///< the ends' names; empty for an end that did not answer
     Properties properties;
+    QStringList portIors; ///< the ends' references, in the order of `ports`
 };
 
 /// One RTC::PortInterfaceProfile.

@@ -93,17 +93,25 @@ QString serviceProblem(const std::vector<PortInfo> &ports)
     return QString();
 }
 
-QSet<QString> portNames(const QStringList &names)
-{
-    return QSet<QString>(names.begin(), names.end());
-}
-
 QStringList namesOf(const std::vector<PortInfo> &ports)
 {
     QStringList names;
     for (const PortInfo &port : ports)
         names.append(port.name);
     return names;
+}
+
+QStringList iorsOf(const std::vector<PortInfo> &ports)
+{
+    QStringList iors;
+    for (const PortInfo &port : ports)
+        iors.append(port.ior);
+    return iors;
+}
+
+QSet<QString> asSet(const QStringList &list)
+{
+    return QSet<QString>(list.begin(), list.end());
 }
 
 RTC::PortService_ptr portService(const PortInfo &port, const QString &path)
@@ -162,9 +170,11 @@ ConnectorInfo PortConnection::connect(const std::vector<PortInfo> &ports,
         throw Error(Error::Kind::Incompatible,
                     QStringLiteral("%1: cannot connect: %2").arg(path, why));
     if (request.noDuplicates) {
-        const QSet<QString> wanted = portNames(namesOf(ports));
+        // The same ports, by reference: a connector left to a port whose process has gone does
+        // not count, even when a new port of the same name has taken its place.
+        const QSet<QString> wanted = asSet(iorsOf(ports));
         for (const ConnectorInfo &connector : ports.front().connectors) {
-            if (portNames(connector.ports) == wanted)
+            if (asSet(connector.portIors) == wanted)
                 throw Error(
                     Error::Kind::Refused,
                     QStringLiteral("%1: already connected (connector %2)").arg(path, connector.id));
@@ -189,7 +199,7 @@ ConnectorInfo PortConnection::connectAsGiven(const std::vector<PortInfo> &ports,
     const int code = call(path, [&] { return int(source->connect(profile)); });
     checkReturnCode(code, path, QStringLiteral("connect"));
     return {toQString(profile.name.in()), toQString(profile.connector_id.in()), namesOf(ports),
-            fromNVList(profile.properties)};
+            fromNVList(profile.properties), iorsOf(ports)};
 }
 
 void PortConnection::disconnect(const PortInfo &port, const QString &connectorId,
@@ -206,6 +216,20 @@ void PortConnection::disconnectAll(const PortInfo &port, const QString &path)
     RTC::PortService_var service = portService(port, path);
     checkReturnCode(call(path, [&] { return int(service->disconnect_all()); }), path,
                     QStringLiteral("disconnect_all"));
+}
+
+bool PortConnection::hasEndGone(const ConnectorInfo &connector)
+{
+    for (const QString &ior : connector.portIors) {
+        try {
+            CORBA::Object_var end = toObject(ior, connector.id);
+            if (call(connector.id, [&] { return bool(end->_non_existent()); }))
+                return true;
+        } catch (const Error &) {
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace Corba

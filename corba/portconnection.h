@@ -61,6 +61,9 @@ public:
     static void disconnect(const PortInfo &port, const QString &connectorId, const QString &path);
     /// Disconnects every connector of `port`.
     static void disconnectAll(const PortInfo &port, const QString &path);
+    /// True when an end of `connector` no longer answers (its process has gone or hangs): asks
+    /// each end, one call each.
+    static bool hasEndGone(const ConnectorInfo &connector);
 };
 
 } // namespace Corba

@@ -3,21 +3,66 @@
 
 #include "corbacall.h"
 
+#include <QHash>
+#include <QMutex>
+
 namespace Corba::Internal {
 
 namespace {
 
-// A port reference can be dead (its owner exited); the profile is still worth showing.
-QString portName(RTC::PortService_ptr port)
+/**
+ * Port names by port reference. A connector profile names its ports by reference only, and
+ * asking each port for its profile is a remote call per end: reading a system of a thousand
+ * components asked several thousand of them. A port keeps its name for its life and its reference
+ * is its own, so a name read once (or seen in the port's own profile) is not asked again.
+ */
+class PortNames
 {
+public:
+    QString find(const QString &ior) const
+    {
+        const QMutexLocker lock(&m_mutex);
+        return m_names.value(ior);
+    }
+    void insert(const QString &ior, const QString &name)
+    {
+        if (ior.isEmpty() || name.isEmpty())
+            return;
+        const QMutexLocker lock(&m_mutex);
+        // Bounded: a long session that meets many short-lived ports starts over now and then.
+        if (m_names.size() >= MaxNames)
+            m_names.clear();
+        m_names.insert(ior, name);
+    }
+
+private:
+    static constexpr qsizetype MaxNames = 100000;
+    mutable QMutex m_mutex;
+    QHash<QString, QString> m_names;
+};
+
+PortNames &portNames()
+{
+    static PortNames names;
+    return names;
+}
+
+// A port reference can be dead (its owner exited); the profile is still worth showing.
+QString portName(RTC::PortService_ptr port, const QString &ior)
+{
+    QString name = portNames().find(ior);
+    if (!name.isEmpty())
+        return name;
     try {
-        return call(QStringLiteral("port"), [&] {
+        name = call(QStringLiteral("port"), [&] {
             RTC::PortProfile_var profile = port->get_port_profile();
             return toQString(profile->name.in());
         });
     } catch (const Error &) {
         return QString();
     }
+    portNames().insert(ior, name);
+    return name;
 }
 
 } // namespace
@@ -28,8 +73,10 @@ ConnectorInfo toConnectorInfo(const RTC::ConnectorProfile &profile)
     info.name = toQString(profile.name.in());
     info.id = toQString(profile.connector_id.in());
     info.properties = fromNVList(profile.properties);
-    for (CORBA::ULong i = 0; i < profile.ports.length(); ++i)
-        info.ports.append(portName(profile.ports[i].in()));
+    for (CORBA::ULong i = 0; i < profile.ports.length(); ++i) {
+        info.portIors.append(toIor(profile.ports[i].in()));
+        info.ports.append(portName(profile.ports[i].in(), info.portIors.constLast()));
+    }
     return info;
 }
 
@@ -39,6 +86,7 @@ PortInfo toPortInfo(const RTC::PortProfile &profile)
     info.name = toQString(profile.name.in());
     info.properties = fromNVList(profile.properties);
     info.ior = toIor(profile.port_ref.in());
+    portNames().insert(info.ior, info.name);
     for (CORBA::ULong i = 0; i < profile.interfaces.length(); ++i) {
         const RTC::PortInterfaceProfile &interface = profile.interfaces[i];
         info.interfaces.push_back({toQString(interface.instance_name.in()),

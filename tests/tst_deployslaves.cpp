@@ -8,6 +8,7 @@
 #include "managerproxy.h"
 #include "namingbrowser.h"
 #include "orb.h"
+#include "portconnection.h"
 #include "sequencerunner.h"
 #include "tst_deploysupport.h"
 
@@ -266,11 +267,19 @@ void TestDeploySlaves::restoresAgainAfterASlaveDied()
     const qint64 pid
         = Corba::propertyValue(Corba::ManagerProxy(midHost, "slave").profile(), "pid").toLongLong();
     QVERIFY(pid > 0);
+    const auto connected = live("Src0").port("out").connectors;
+    QCOMPARE(connected.size(), size_t(1));
+    QVERIFY(!Corba::PortConnection::hasEndGone(connected.front()));
     QCOMPARE(::kill(pid_t(pid), SIGKILL), 0);
     QTRY_COMPARE(master().slaveManagers().size(), 1);
     const auto broken = live("Src0").port("out").connectors;
     QCOMPARE(broken.size(), size_t(1));
     QCOMPARE(broken.front().id, QString("conn-src-mid"));
+    // The end that has gone keeps the name read while it answered (a port's reference is its
+    // own), and is found gone by asking it.
+    QCOMPARE(broken.front().ports, QStringList({"Src0.out", "Mid0.in"}));
+    QCOMPARE(broken.front().portIors, connected.front().portIors);
+    QVERIFY(Corba::PortConnection::hasEndGone(broken.front()));
 
     const DeployReport again = restoreSystem(profile, planRestore(profile, options), options);
     QVERIFY2(again.ok, qPrintable(again.toText()));

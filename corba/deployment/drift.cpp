@@ -31,8 +31,12 @@ struct LiveComponent
 void diffConfiguration(const Profile::RtsComponent &saved, const ComponentProxy &proxy,
                        QList<DriftItem> &items)
 {
+    // Only what the file says is compared, and only that is asked.
+    const QString active = saved.activeConfigurationSet.value_or(QString());
+    if (saved.configurationSets.isEmpty() && active.isEmpty())
+        return;
     QString liveActive;
-    const auto sets = proxy.configurationSets(&liveActive);
+    const auto sets = proxy.configurationSets(active.isEmpty() ? nullptr : &liveActive);
     for (const auto &set : saved.configurationSets) {
         const auto live
             = std::find_if(sets.begin(), sets.end(), [&](const auto &s) { return s.id == set.id; });
@@ -50,11 +54,8 @@ void diffConfiguration(const Profile::RtsComponent &saved, const ComponentProxy 
                               value, present ? liveValue : QString()});
         }
     }
-    const QString active = saved.activeConfigurationSet.value_or(QString());
-    if (!active.isEmpty()) {
-        if (liveActive != active)
-            items.append({Kind::ActiveSet, saved.instanceName, active, liveActive});
-    }
+    if (!active.isEmpty() && liveActive != active)
+        items.append({Kind::ActiveSet, saved.instanceName, active, liveActive});
 }
 
 void diffPorts(const Profile::RtsComponent &saved, const std::vector<Corba::PortInfo> &ports,

@@ -151,15 +151,15 @@ private:
         const QString path = proxy(c.sourceInstance).path();
         QString replaced;
         if (const Corba::ConnectorInfo *existing = findConnector(*source, c.connectorId)) {
-            if (existing->ports.contains(target->name)) {
+            if (existing->portIors.contains(target->ior)) {
                 m_steps.finish(step, StepStatus::Skipped, QStringLiteral("already connected"));
                 return;
             }
             // The saved connector, left on this end when the process of the other end died (a
-            // host or slave restarted): its port no longer answers (no name). The port refuses
-            // a second connector of the same id, so the broken one goes first; it cannot be
-            // restored on rollback, having nothing to connect to.
-            if (existing->ports.contains(QString())) {
+            // host or slave restarted): that port no longer answers. The port refuses a second
+            // connector of the same id, so the broken one goes first; it cannot be restored on
+            // rollback, having nothing to connect to.
+            if (Corba::PortConnection::hasEndGone(*existing)) {
                 Corba::PortConnection::disconnect(*source, c.connectorId, path);
                 replaced = QStringLiteral(" (replaced a broken connector)");
             }
