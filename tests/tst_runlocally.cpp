@@ -18,6 +18,7 @@
 
 #include <QAction>
 #include <QLabel>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSysInfo>
 #include <QTemporaryDir>
@@ -32,6 +33,7 @@ class TestRunLocally : public QObject
 private slots:
     void initTestCase();
     void cleanupTestCase();
+    void failedStartIsReported();
     void runsTheExampleAndStopsOnQuit();
     void keptRuntimeOutlivesTheWindow();
 
@@ -66,6 +68,36 @@ OnlineDocument *TestRunLocally::onlineDiagram(MainWindow &window) const
             return online;
     }
     return nullptr;
+}
+
+void TestRunLocally::failedStartIsReported()
+{
+    // No name server program to be found: the runtime cannot start, and Run says why.
+    QTemporaryDir emptyPath;
+    QVERIFY(emptyPath.isValid());
+    const QByteArray path = qgetenv("PATH");
+    const auto restorePath = qScopeGuard([&path] { qputenv("PATH", path); });
+    qputenv("PATH", emptyPath.path().toLocal8Bit());
+    auto window = std::make_unique<MainWindow>();
+    QVERIFY(window->openFiles({QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")}));
+    auto *system = qobject_cast<RtsDocument *>(window->activeDocument());
+    QVERIFY(system);
+    QStringList messages;
+    connect(window->onlineDocks(), &OnlineDocks::statusMessage, this,
+            [&messages](const QString &message) { messages << message; });
+    bool finished = false;
+    QString error;
+    window->onlineDocks()->runLocally(system->profile(), [&](const QString &e) {
+        finished = true;
+        error = e;
+    });
+    QTRY_VERIFY2_WITH_TIMEOUT(finished, qPrintable(messages.join(" | ")), 30000);
+    QVERIFY2(error.contains("omniNames is not installed"), qPrintable(error));
+    QVERIFY2(messages.last().startsWith("The local runtime did not start: "), qPrintable(messages.join(" | ")));
+    QVERIFY(!window->onlineDocks()->localRuntime().running());
+    auto *label = window->findChild<QLabel *>(QStringLiteral("localRuntimeStatus"));
+    QVERIFY(label);
+    QVERIFY2(label->text().contains("stopped"), qPrintable(label->text()));
 }
 
 void TestRunLocally::runsTheExampleAndStopsOnQuit()
