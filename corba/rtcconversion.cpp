@@ -29,14 +29,15 @@ public:
         if (ior.isEmpty() || name.isEmpty())
             return;
         const QMutexLocker lock(&m_mutex);
-        // Bounded: a long session that meets many short-lived ports starts over now and then.
+        // Bounded (a few MiB; a system of a thousand components has a few thousand ports): a long
+        // session that meets many short-lived ports starts over now and then.
         if (m_names.size() >= MaxNames)
             m_names.clear();
         m_names.insert(ior, name);
     }
 
 private:
-    static constexpr qsizetype MaxNames = 100000;
+    static constexpr qsizetype MaxNames = 16384;
     mutable QMutex m_mutex;
     QHash<QString, QString> m_names;
 };

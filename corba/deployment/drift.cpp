@@ -190,24 +190,25 @@ QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePla
             compared[i].items.append({Kind::Unreachable, saved.instanceName, QString(), e.message()});
         }
     });
-    const auto portItems = [&](QSet<QString> &involved) {
-        QList<DriftItem> items;
+    // The connector items of the ports as they stand now; `involved` gets the components whose
+    // ports or connectors disagree with the file.
+    const auto connectorItems = [&](QSet<QString> &involved) {
         QHash<QString, LiveComponent> live;
         for (const Compared &c : compared) {
             if (!c.component)
                 continue;
-            const qsizetype before = items.size();
-            diffPorts(*c.saved, c.component->ports, items);
-            if (items.size() != before)
+            QList<DriftItem> missingPorts;
+            diffPorts(*c.saved, c.component->ports, missingPorts);
+            if (!missingPorts.isEmpty())
                 involved.insert(c.saved->instanceName);
             live.insert(c.saved->instanceName, *c.component);
         }
-        QList<DriftItem> connectors;
-        diffConnectors(profile, live, connectors, involved);
-        return connectors;
+        QList<DriftItem> items;
+        diffConnectors(profile, live, items, involved);
+        return items;
     };
     QSet<QString> involved;
-    portItems(involved);
+    connectorItems(involved);
     // Read again (one call each, component profile) the components the plan's ports disagree on.
     std::vector<std::size_t> again;
     for (std::size_t i = 0; i < compared.size(); ++i) {
@@ -224,7 +225,7 @@ QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePla
         }
     });
     involved.clear();
-    const QList<DriftItem> connectors = portItems(involved);
+    const QList<DriftItem> connectors = connectorItems(involved);
     QList<DriftItem> items;
     for (const Compared &c : compared) {
         if (c.component)
