@@ -151,8 +151,11 @@ private:
         const QString path = proxy(c.sourceInstance).path();
         QString replaced;
         if (const Corba::ConnectorInfo *existing = findConnector(*source, c.connectorId)) {
-            if (existing->portIors.contains(target->ior)) {
+            const auto alreadyConnected = [&] {
                 m_steps.finish(step, StepStatus::Skipped, QStringLiteral("already connected"));
+            };
+            if (existing->portIors.contains(target->ior)) {
+                alreadyConnected();
                 return;
             }
             // The saved connector, left on this end when the process of the other end died (a
@@ -162,6 +165,11 @@ private:
             if (Corba::PortConnection::hasEndGone(*existing)) {
                 Corba::PortConnection::disconnect(*source, c.connectorId, path);
                 replaced = QStringLiteral(" (replaced a broken connector)");
+            } else if (existing->ports.contains(target->name)) {
+                // Both ends answer and one is named as the target: a reference written another
+                // way (another tool made the connector) for the same port.
+                alreadyConnected();
+                return;
             }
         }
         Corba::ConnectionRequest request;
