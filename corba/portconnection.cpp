@@ -170,11 +170,14 @@ ConnectorInfo PortConnection::connect(const std::vector<PortInfo> &ports,
         throw Error(Error::Kind::Incompatible,
                     QStringLiteral("%1: cannot connect: %2").arg(path, why));
     if (request.noDuplicates) {
-        // The same ports, by reference: a connector left to a port whose process has gone does
-        // not count, even when a new port of the same name has taken its place.
+        // The same ports: by reference, or by name when every end still answers (a connector left
+        // to a port whose process has gone does not count, even when a new port of the same name
+        // has taken its place).
         const QSet<QString> wanted = asSet(iorsOf(ports));
+        const QSet<QString> wantedNames = asSet(namesOf(ports));
         for (const ConnectorInfo &connector : ports.front().connectors) {
-            if (asSet(connector.portIors) == wanted)
+            if (asSet(connector.portIors) == wanted
+                || (asSet(connector.ports) == wantedNames && !hasEndGone(connector)))
                 throw Error(
                     Error::Kind::Refused,
                     QStringLiteral("%1: already connected (connector %2)").arg(path, connector.id));

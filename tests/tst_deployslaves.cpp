@@ -3,6 +3,7 @@
 // host) or a slave named by manager_name: creation from nothing, start/stop order across the
 // processes, a slave killed mid-restore, and cryo → restore → cryo keeping the spread.
 #include "componentproxy.h"
+#include "corbaerror.h"
 #include "cryo.h"
 #include "livesystem.h"
 #include "managerproxy.h"
@@ -36,6 +37,7 @@ private slots:
     void findsComponentsOnANamedSlave();
     void slaveKilledMidRestoreRollsBackTheOthers();
     void restoresAgainAfterASlaveDied();
+    void connectIgnoresAConnectorToAGonePort();
     void cryoRestoreCryoKeepsTheSpread();
 
 private:
@@ -291,6 +293,38 @@ void TestDeploySlaves::restoresAgainAfterASlaveDied()
     QCOMPARE(connectors.size(), size_t(1));
     QCOMPARE(connectors.front().ports, QStringList({"Src0.out", "Mid0.in"}));
     QCOMPARE(live("Mid0").port("in").connectors.front().id, QString("conn-src-mid"));
+}
+
+void TestDeploySlaves::connectIgnoresAConnectorToAGonePort()
+{
+    const Profile::RtsProfile profile = spreadSystem();
+    const TargetOptions options = target();
+    QVERIFY(restoreSystem(profile, planRestore(profile, options), options).ok);
+    const QString midHost = hostingManagers().value("Mid0");
+    const qint64 pid
+        = Corba::propertyValue(Corba::ManagerProxy(midHost, "slave").profile(), "pid").toLongLong();
+    QVERIFY(pid > 0);
+    QCOMPARE(::kill(pid_t(pid), SIGKILL), 0);
+    QTRY_COMPARE(master().slaveManagers().size(), 1);
+    // A new Mid0 in the master: its port has the name of the one that has gone, not its reference.
+    master().createComponent("ConsoleOut?instance_name=Mid0");
+    const Corba::PortInfo source = live("Src0").port("out");
+    QCOMPARE(source.connectors.size(), size_t(1));
+    QCOMPARE(source.connectors.front().ports, QStringList({"Src0.out", "Mid0.in"}));
+    Corba::ConnectionRequest request;
+    request.noDuplicates = true;
+    const Corba::PortInfo mid = live("Mid0").port("in");
+    Corba::PortConnection::connect({source, mid}, request, "Src0");
+    const Corba::PortInfo connected = live("Src0").port("out");
+    QCOMPARE(connected.connectors.size(), size_t(2));
+    // The connector to the live port is one.
+    bool refused = false;
+    try {
+        Corba::PortConnection::connect({connected, mid}, request, "Src0");
+    } catch (const Corba::Error &e) {
+        refused = e.kind() == Corba::Error::Kind::Refused;
+    }
+    QVERIFY(refused);
 }
 
 void TestDeploySlaves::cryoRestoreCryoKeepsTheSpread()
