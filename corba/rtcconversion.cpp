@@ -44,8 +44,9 @@ private:
 
 PortNames &portNames()
 {
-    static PortNames names;
-    return names;
+    // Never destroyed: worker threads may still read profiles while the process exits.
+    static auto *const names = new PortNames;
+    return *names;
 }
 
 // A port reference can be dead (its owner exited); the profile is still worth showing.
