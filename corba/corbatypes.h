@@ -31,7 +31,7 @@ struct ConnectorInfo
 {
     QString name;
     QString id;
-    QStringList ports; ///< the ends' names; empty for an end that did not answer
+    QStringList ports; ///< the ends' names; empty for an end never seen answering
     Properties properties;
     QStringList portIors; ///< the ends' references, in the order of `ports`
 };

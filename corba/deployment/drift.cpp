@@ -104,9 +104,7 @@ void diffConnectors(const Profile::RtsProfile &profile, const QHash<QString, Liv
     for (auto component = live.constBegin(); component != live.constEnd(); ++component) {
         for (const auto &port : component->ports) {
             for (const auto &connector : port.connectors) {
-                if (savedIds.contains(connector.id))
-                    continue;
-                if (reported.contains(connector.id)
+                if (savedIds.contains(connector.id) || reported.contains(connector.id)
                     || !std::all_of(connector.ports.begin(), connector.ports.end(),
                                     [&](const QString &name) {
                                         return live.contains(name.section(QLatin1Char('.'), 0, 0));
