@@ -19,7 +19,7 @@ target_sources(rtstudio_client PRIVATE client.cpp)
 target_link_libraries(rtstudio_client PRIVATE
     -Wl,--whole-archive $<TARGET_FILE:rtdeploy> $<TARGET_FILE:rtcorba> $<TARGET_FILE:rtprofile>
     -Wl,--no-whole-archive
-    rtcorba_stubs yaml-cpp PkgConfig::OMNIORB Qt6::Core)
+    rtcorba_stubs yaml-cpp rtstudio_omniorb Qt6::Core)
 add_dependencies(rtstudio_client rtdeploy rtcorba rtprofile)
 
 set(rtstudio_client_headers "")

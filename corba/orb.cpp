@@ -52,10 +52,13 @@ void createOrb()
     // omniORB's defaults would print to stderr and retry forever; a tool wants quick, quiet
     // failure. Per-thread timeouts are off unless asked for (CallTimeoutScope relies on them).
     // giopMaxMsgSize: the profiles of a large system (every component's ports and connectors in
-    // one reply) pass omniORB's 2 MiB default.
+    // one reply) pass omniORB's 2 MiB default. verifyObjectExistsAndType 0: no LocateRequest before
+    // the first call on each new reference (one round trip per reference made from an IOR); a
+    // reference to a gone object still fails its first call with OBJECT_NOT_EXIST or TRANSIENT.
     const char *options[][2] = {{"traceLevel", "0"},
                                 {"supportPerThreadTimeOut", "1"},
                                 {"giopMaxMsgSize", "268435456"},
+                                {"verifyObjectExistsAndType", "0"},
                                 {nullptr, nullptr}};
     s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
     s_initialised = true;
