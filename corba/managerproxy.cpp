@@ -95,16 +95,20 @@ QString ManagerProxy::createComponent(const QString &moduleName) const
     });
     if (ior.isEmpty())
         throw Error(Error::Kind::Refused, QStringLiteral("%1: could not create '%2'%3")
-                                              .arg(m_path, moduleName, refusalReason()));
+                                              .arg(m_path, moduleName, refusalReason(moduleName)));
     return ior;
 }
 
 // create_component answers a refusal with nil alone; rtmanager says why in its profile (a slave
-// or another host's manager it could not reach, an unknown type, a name taken).
-QString ManagerProxy::refusalReason() const
+// or another host's manager it could not reach, an unknown type, a name taken): by request, as
+// creates may run side by side, else its last error.
+QString ManagerProxy::refusalReason(const QString &request) const
 {
     try {
-        const QString reason = propertyValue(profile(), QStringLiteral("last_error"));
+        const Properties properties = profile();
+        QString reason = propertyValue(properties, QStringLiteral("rtstudio.create_error.") + request);
+        if (reason.isEmpty())
+            reason = propertyValue(properties, QStringLiteral("last_error"));
         return reason.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(reason);
     } catch (const Error &) {
         return QString();

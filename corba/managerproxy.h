@@ -62,7 +62,7 @@ public:
     QString service(const QString &name) const;
 
 private:
-    QString refusalReason() const;
+    QString refusalReason(const QString &request) const;
 
     QString m_ior;
     QString m_path;

@@ -268,6 +268,21 @@ void Manager::setLifecycleHooks(LifecycleHooks hooks)
 
 RTC::RTObject_ptr Manager::createComponent(const std::string &requestText, std::string *error)
 {
+    std::string reason;
+    RTC::RTObject_ptr created = createRequested(requestText, &reason);
+    if (CORBA::is_nil(created)) {
+        std::lock_guard lock(m_mutex);
+        m_refusals.emplace_back(requestText, reason);
+        if (m_refusals.size() > maxKeptRefusals)
+            m_refusals.pop_front();
+    }
+    if (error)
+        *error = reason;
+    return created;
+}
+
+RTC::RTObject_ptr Manager::createRequested(const std::string &requestText, std::string *error)
+{
     std::string text = requestText;
     if (m_hooks.preCreate)
         m_hooks.preCreate(text);
@@ -554,6 +569,11 @@ Properties Manager::profile()
     p.set("address", m_address);
     p.set("is_master", m_isMaster ? "YES" : "NO");
     p.set("last_error", lastError());
+    {
+        std::lock_guard lock(m_mutex);
+        for (const auto &[request, reason] : m_refusals)
+            p.set("rtstudio.create_error." + request, reason);
+    }
     // Tells clients they may send create_component calls at once (rtctl mgr does): names, ports
     // and slave processes are handed out safely. Other managers lack the key and get them in turn.
     p.set("rtstudio.concurrent_create", "YES");

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -30,7 +31,9 @@ class RtObject;
  * factories (built-ins and loaded modules), registers them and itself in the naming services,
  * serves RTM::Manager at `corbaloc:iiop:<host>:<port>/manager`, and as master spawns and drives
  * slave managers (the same executable in slave mode). Every request that fails records a message
- * naming the problem (lastError(), also in the profile as `last_error`).
+ * naming the problem (lastError(), also in the profile as `last_error`); a refused create_component
+ * is also kept by its request text (profile key `rtstudio.create_error.<request>`, the latest
+ * maxKeptRefusals), so a client whose creates run side by side reads the reason of its own.
  */
 class Manager
 {
@@ -55,6 +58,8 @@ public:
     void registerFactory(ComponentFactory factory);
     /// Creates per `Type?k=v&…` (locally or on a slave); nil and @p error when it fails.
     RTC::RTObject_ptr createComponent(const std::string &request, std::string *error);
+    /// How many refused create requests the profile names with their reasons.
+    static constexpr std::size_t maxKeptRefusals = 64;
     bool deleteComponent(const std::string &instanceName, std::string *error);
     /// This process's components.
     RTC::RTCList components();
@@ -135,7 +140,8 @@ public:
 
     Properties configuration();
     bool setConfiguration(const std::string &key, const std::string &value);
-    /// Configuration plus `instance_name`, `pid`, `address`, `is_master`, `last_error`.
+    /// Configuration plus `instance_name`, `pid`, `address`, `is_master`, `last_error` and the
+    /// kept refusals (`rtstudio.create_error.<request>`).
     Properties profile();
     std::string lastError();
     /// Records @p message as the last error (and prints it) and returns false.
@@ -154,6 +160,7 @@ private:
 
     // manager.cpp
     bool initOrb(std::string *error);
+    RTC::RTObject_ptr createRequested(const std::string &request, std::string *error);
     void destroyOrb();
     RTC::RTObject_ptr createLocal(const CreateRequest &request, std::string *error);
     RTC::RTObject_ptr initializeComponent(Component *record, const Properties &properties, std::string *error);
@@ -211,6 +218,8 @@ private:
     LifecycleHooks m_hooks;
     RTM::ManagerList m_masters;
     std::string m_lastError;
+    /// Refused create requests and why, oldest first (at most maxKeptRefusals).
+    std::deque<std::pair<std::string, std::string>> m_refusals;
     bool m_stopping = false;
     bool m_restart = false;
     std::thread m_shutdownThread;

@@ -91,9 +91,10 @@ RTC::RTObject_ptr Manager::createRemote(const CreateRequest &request, std::strin
             if (!CORBA::is_nil(created))
                 return created._retn();
             RTM::ManagerProfile_var profile = target->get_profile();
-            fail("create_component on " + nvString(profile->properties, "address") + ": "
-                     + nvString(profile->properties, "last_error"),
-                 error);
+            std::string reason = nvString(profile->properties, "rtstudio.create_error." + forwarded);
+            if (reason.empty())
+                reason = nvString(profile->properties, "last_error");
+            fail("create_component on " + nvString(profile->properties, "address") + ": " + reason, error);
             return RTC::RTObject::_nil();
         } catch (const CORBA::Exception &e) {
             if (remoteOnly || !unreachable(e) || attempt == 1) {

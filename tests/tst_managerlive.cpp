@@ -101,6 +101,7 @@ private slots:
     void deleteComponent();
     void badRequests_data();
     void badRequests();
+    void refusalsAreKeptByRequest();
     void killedSlaveLeavesOthersWorking();
     void loadModule();
     void shutdownUnregisters();
@@ -443,6 +444,38 @@ void TestManagerLive::badRequests()
     // The manager keeps serving.
     RTC::RTObject_var fine = create("ConsoleIn");
     QVERIFY2(!CORBA::is_nil(fine), qPrintable(lastError(m_master)));
+}
+
+// Creates sent side by side each read why they were refused by their request text: last_error
+// holds only the latest refusal of all.
+void TestManagerLive::refusalsAreKeptByRequest()
+{
+    RTC::RTObject_var taken = create("ConsoleIn?instance_name=keptName");
+    QVERIFY2(!CORBA::is_nil(taken), qPrintable(lastError(m_master)));
+    const QString sameName = "ConsoleIn?instance_name=keptName";
+    const QString unknownType = "NoSuchKeptType?instance_name=other";
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(sameName))));
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(unknownType))));
+    const auto reasonOf = [this](const QString &request) {
+        RTM::ManagerProfile_var profile = m_master->get_profile();
+        return nv(profile->properties, ("rtstudio.create_error." + request).toUtf8().constData());
+    };
+    QVERIFY2(reasonOf(sameName).contains("'keptName' is already in use"), qPrintable(reasonOf(sameName)));
+    QVERIFY2(reasonOf(unknownType).contains("NoSuchKeptType"), qPrintable(reasonOf(unknownType)));
+    QVERIFY2(lastError(m_master).contains("NoSuchKeptType"), qPrintable(lastError(m_master)));
+
+    // A slave's refusal reaches the master's caller with the reason of that request.
+    RTC::RTObject_var far = create("ConsoleIn?instance_name=keptFar&manager_name=keptSlave");
+    QVERIFY2(!CORBA::is_nil(far), qPrintable(lastError(m_master)));
+    const QString farTaken = "ConsoleIn?instance_name=keptFar&manager_name=keptSlave";
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(farTaken))));
+    QVERIFY2(reasonOf(farTaken).contains("'keptFar' is already in use"), qPrintable(reasonOf(farTaken)));
+
+    // The profile keeps the latest refusals only.
+    for (int i = 0; i < 64; ++i)
+        QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(QString("NoSuchKeptType?instance_name=n%1").arg(i)))));
+    QVERIFY(reasonOf(sameName).isEmpty());
+    QVERIFY(!reasonOf("NoSuchKeptType?instance_name=n63").isEmpty());
 }
 
 void TestManagerLive::killedSlaveLeavesOthersWorking()

@@ -441,6 +441,15 @@ void TestRtctlRt::namedCreatesRunSideBySide()
     for (const QString &name : std::as_const(expected))
         QVERIFY2(listed.contains(name + ".rtc"), qPrintable(name));
 
+    // Refused side by side, each for a name of its own: the first refusal is the one reported,
+    // with its own reason.
+    const Result taken = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Side0", "create",
+                                "ConsoleOut?instance_name=Side2", "create", "ConsoleOut?instance_name=Side4"},
+                               dir);
+    QCOMPARE(taken.code, 1);
+    QVERIFY2(taken.err.contains("'Side0' is already in use") && !taken.err.contains("Side2"),
+             qPrintable(taken.err));
+
     // A failed create stops there: the ones before it are printed, those after it made no more.
     const Result failed = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Before0", "create",
                                  "NoSuchType?instance_name=Broken0", "create",
