@@ -196,14 +196,20 @@ void OnlineDocks::fillMenu(QMenu *menu)
     }
 }
 
-void OnlineDocks::showLocalRuntime()
+void OnlineDocks::showLocalRuntime(const QString &failure)
 {
+    // A failed start stays in the label (the status bar's message goes after a few seconds); the
+    // reason is in its tooltip.
     m_localRuntimeLabel->setText(
         m_localRuntime.running()
             ? tr("Local runtime: name server %1, manager port %2")
                   .arg(m_localRuntime.nameServerAddress())
                   .arg(m_localRuntime.manager.port)
-            : tr("Local runtime: stopped"));
+        : failure.isEmpty() ? tr("Local runtime: stopped")
+                            : tr("Local runtime: did not start"));
+    m_localRuntimeLabel->setToolTip(m_localRuntime.running() || failure.isEmpty()
+                                        ? QString()
+                                        : tr("The local runtime did not start: %1").arg(failure));
 }
 
 void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then,
@@ -224,6 +230,7 @@ void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::Local
         [this, then, failed](const SystemEditor::OnlineResult &result) {
             if (!result.ok) {
                 emit statusMessage(tr("The local runtime did not start: %1").arg(result.error));
+                showLocalRuntime(result.error);
                 if (failed)
                     failed(result.error);
                 return;

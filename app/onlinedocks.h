@@ -134,7 +134,7 @@ private:
     void addToDiagram(const QModelIndex &index);
     Deploy::TargetOptions targetOptions() const;
     QStringList knownManagers() const;
-    void showLocalRuntime();
+    void showLocalRuntime(const QString &failure = QString());
     void watchFirstConnection(OnlineDocument *online, const Profile::RtsProfile &profile);
     void placeMapped(SystemEditor::OnlineDiagram *diagram, const Profile::RtsProfile &profile,
                      const QVariant &plan);

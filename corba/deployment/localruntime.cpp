@@ -213,21 +213,21 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *er
 
     const QString omniNames = QStandardPaths::findExecutable(NameServerProgram);
     if (omniNames.isEmpty())
-        return fail(QStringLiteral("omniNames is not installed (Debian package omniorb-nameserver)"));
+        return fail(tr("omniNames is not installed (Debian package omniorb-nameserver)"));
     if (!QFileInfo(managerProgram).isExecutable())
-        return fail(QStringLiteral("%1: no rtmanager program there").arg(managerProgram));
+        return fail(tr("%1: no rtmanager program there").arg(managerProgram));
     // A fresh name server each time: omniNames -start refuses a folder with an old log.
     QDir folder(m_folder);
     const QString data = folder.filePath(QStringLiteral("omninames"));
     QDir(data).removeRecursively();
     if (!folder.mkpath(QStringLiteral("omninames")))
-        return fail(QStringLiteral("%1: cannot create the folder").arg(data));
+        return fail(tr("%1: cannot create the folder").arg(data));
 
     const QDeadlineTimer deadline(timeoutMs);
     state.nameServer.port = firstFree(DefaultNamingPort, 0);
     state.manager.port = firstFree(DefaultManagerPort, state.nameServer.port);
     if (state.nameServer.port == 0 || state.manager.port == 0)
-        return fail(QStringLiteral("no free port from 2809 on"));
+        return fail(tr("no free port from 2809 on"));
     const QString namingLog = folder.filePath(QStringLiteral("omniNames.log"));
     state.nameServer.pid
         = startDetached(omniNames,
@@ -236,7 +236,7 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *er
                         namingLog);
     writeState(state);
     if (state.nameServer.pid == 0 || !waitUntilListening(state.nameServer, NameServerProgram, deadline))
-        return fail(QStringLiteral("omniNames did not start on port %1: %2")
+        return fail(tr("omniNames did not start on port %1: %2")
                         .arg(state.nameServer.port)
                         .arg(lastLines(namingLog)));
     state.nameServer.running = true;
@@ -249,7 +249,7 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *er
         managerLog);
     writeState(state);
     if (state.manager.pid == 0 || !waitUntilListening(state.manager, ManagerProgram, deadline))
-        return fail(QStringLiteral("rtmanager did not start on port %1: %2")
+        return fail(tr("rtmanager did not start on port %1: %2")
                         .arg(state.manager.port)
                         .arg(lastLines(managerLog)));
     state.manager.running = true;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QCoreApplication>
 #include <QMetaType>
 #include <QString>
 
@@ -38,6 +39,9 @@ struct LocalRuntimeState
  */
 class LocalRuntime
 {
+    // Its reasons reach the GUI's status bar: translated there, English in rtctl (no translator).
+    Q_DECLARE_TR_FUNCTIONS(Deploy::LocalRuntime)
+
 public:
     /// The user's runtime folder (`$XDG_RUNTIME_DIR/rtstudio`, else a folder under the temp dir).
     static QString defaultFolder();

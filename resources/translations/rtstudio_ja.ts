@@ -2074,6 +2074,39 @@
     </message>
 </context>
 <context>
+    <name>Deploy::LocalRuntime</name>
+    <message>
+        <location filename="../../corba/deployment/localruntime.cpp" line="+216"/>
+        <source>omniNames is not installed (Debian package omniorb-nameserver)</source>
+        <translation>omniNames がインストールされていません（Debian パッケージ omniorb-nameserver）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: no rtmanager program there</source>
+        <translation>%1: そこに rtmanager プログラムがありません</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: cannot create the folder</source>
+        <translation>%1: フォルダーを作成できません</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no free port from 2809 on</source>
+        <translation>2809 以降に空きポートがありません</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>omniNames did not start on port %1: %2</source>
+        <translation>omniNames がポート %1 で起動しませんでした：%2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>rtmanager did not start on port %1: %2</source>
+        <translation>rtmanager がポート %1 で起動しませんでした：%2</translation>
+    </message>
+</context>
+<context>
     <name>DisconnectCommand</name>
     <message>
         <location filename="../../systemeditor/connectorcommands.cpp" line="+34"/>
@@ -2786,7 +2819,7 @@
         <translation>すべて終了</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>Local runtime: name server %1, manager port %2</source>
         <translation>ローカルランタイム：ネームサーバ %1、マネージャのポート %2</translation>
     </message>
@@ -2796,17 +2829,23 @@
         <translation>ローカルランタイム：停止中</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+1"/>
+        <source>Local runtime: did not start</source>
+        <translation>ローカルランタイム：起動できませんでした</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Starting the local runtime…</source>
         <translation>ローカルランタイムを起動しています…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-6"/>
+        <location line="+20"/>
         <source>The local runtime did not start: %1</source>
         <translation>ローカルランタイムを起動できませんでした：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Local runtime started.</source>
         <translation>ローカルランタイムを起動しました。</translation>
     </message>
@@ -2831,7 +2870,7 @@
         <translation>%1 を実行できませんでした：%2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>%1 runs on the local runtime.</source>
         <translation>%1 はローカルランタイムで実行中です。</translation>
     </message>
@@ -2854,7 +2893,7 @@
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Stop opening this file; open documents stay as they are</source>
         <translation>このファイルを開くのを中止します。開いているドキュメントはそのままです</translation>
     </message>
@@ -3905,7 +3944,7 @@
 <context>
     <name>SystemEditor::OnlineDiagram</name>
     <message>
-        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+111"/>
+        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+114"/>
         <source>Activate All</source>
         <translation>すべてアクティブ化</translation>
     </message>
@@ -3945,7 +3984,7 @@
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location line="+173"/>
+        <location line="+187"/>
         <source>Unreachable: %1</source>
         <translation>到達不能：%1</translation>
     </message>
