@@ -273,7 +273,7 @@ RTC::RTObject_ptr Manager::createComponent(const std::string &requestText, std::
 {
     std::string reason;
     RTC::RTObject_ptr created = createRequested(requestText, &reason);
-    if (CORBA::is_nil(created)) {
+    if (CORBA::is_nil(created) && requestText.size() <= maxKeptRequestLength) {
         std::lock_guard lock(m_mutex);
         m_refusals.emplace_back(requestText, reason);
         if (m_refusals.size() > maxKeptRefusals)

@@ -58,8 +58,10 @@ public:
     void registerFactory(ComponentFactory factory);
     /// Creates per `Type?k=v&…` (locally or on a slave); nil and @p error when it fails.
     RTC::RTObject_ptr createComponent(const std::string &request, std::string *error);
-    /// How many refused create requests the profile names with their reasons.
+    /// How many refused create requests the profile names with their reasons, and the longest
+    /// request text kept (a longer one has its reason in `last_error` only).
     static constexpr std::size_t maxKeptRefusals = 64;
+    static constexpr std::size_t maxKeptRequestLength = 1024;
     bool deleteComponent(const std::string &instanceName, std::string *error);
     /// This process's components.
     RTC::RTCList components();

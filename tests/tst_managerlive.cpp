@@ -471,6 +471,12 @@ void TestManagerLive::refusalsAreKeptByRequest()
     QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(farTaken))));
     QVERIFY2(reasonOf(farTaken).contains("'keptFar' is already in use"), qPrintable(reasonOf(farTaken)));
 
+    // A request too long to be a key has its reason in last_error only.
+    const QString tooLong = "NoSuchKeptType?instance_name=" + QString(1100, 'x');
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(tooLong))));
+    QVERIFY(reasonOf(tooLong).isEmpty());
+    QVERIFY2(lastError(m_master).contains("NoSuchKeptType"), qPrintable(lastError(m_master)));
+
     // The profile keeps the latest refusals only.
     for (int i = 0; i < 64; ++i)
         QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(QString("NoSuchKeptType?instance_name=n%1").arg(i)))));
