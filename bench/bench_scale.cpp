@@ -329,7 +329,7 @@ int main(int argc, char **argv)
                 out << "bench_scale: " << error << '\n';
                 return 1;
             }
-            const double per = c.error.isEmpty() ? double(c.elapsedMs) / count : -1;
+            const double per = c.error.isEmpty() ? c.elapsedMs / count : -1;
             const double goal = separate ? 2.5 : 0.5;
             const double beyond = c.error.isEmpty() ? qMax(0.0, c.elapsedMs - rtctlAlone) / count : -1;
             out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 |")

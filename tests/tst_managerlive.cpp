@@ -464,7 +464,7 @@ void TestManagerLive::refusalsAreKeptByRequest()
     QVERIFY2(reasonOf(unknownType).contains("NoSuchKeptType"), qPrintable(reasonOf(unknownType)));
     QVERIFY2(lastError(m_master).contains("NoSuchKeptType"), qPrintable(lastError(m_master)));
 
-    // A slave's refusal reaches the master's caller with the reason of that request.
+    // A refusal on a slave is kept on the master under the request as sent, with the slave's reason.
     RTC::RTObject_var far = create("ConsoleIn?instance_name=keptFar&manager_name=keptSlave");
     QVERIFY2(!CORBA::is_nil(far), qPrintable(lastError(m_master)));
     const QString farTaken = "ConsoleIn?instance_name=keptFar&manager_name=keptSlave";

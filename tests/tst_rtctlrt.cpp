@@ -449,6 +449,16 @@ void TestRtctlRt::namedCreatesRunSideBySide()
     QCOMPARE(taken.code, 1);
     QVERIFY2(taken.err.contains("'Side0' is already in use") && !taken.err.contains("Side2"),
              qPrintable(taken.err));
+    // The same for refusals of one slave: the master reads the slave's reason by request too.
+    QStringList twins {"mgr", direct};
+    for (int i = 0; i < 4; ++i)
+        twins << "create" << QStringLiteral("ConsoleOut?instance_name=Twin%1&manager_name=twinslave").arg(i);
+    QCOMPARE(rtctl(twins, dir).code, 0);
+    const Result twinsTaken = rtctl(twins, dir);
+    QCOMPARE(twinsTaken.code, 1);
+    QVERIFY2(twinsTaken.err.contains("'Twin0' is already in use") && !twinsTaken.err.contains("'Twin1'")
+                 && !twinsTaken.err.contains("'Twin2'") && !twinsTaken.err.contains("'Twin3'"),
+             qPrintable(twinsTaken.err));
 
     // A failed create stops there: the ones before it are printed, those after it made no more.
     const Result failed = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Before0", "create",
