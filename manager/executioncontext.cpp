@@ -86,8 +86,24 @@ RTC::ReturnCode_t PeriodicExecutionContext::start()
         guarded([&] { return p->ref->on_startup(p->handle); });
     std::lock_guard lock(m_mutex);
     m_running = true;
-    m_thread = std::thread([this] { run(); });
+    if (hasWork())
+        startThread();
     return RTC::RTC_OK;
+}
+
+bool PeriodicExecutionContext::hasWork() const
+{
+    for (const ParticipantPtr &p : m_participants) {
+        if (p->request != Request::None || p->state == RTC::ACTIVE_STATE || p->state == RTC::ERROR_STATE)
+            return true;
+    }
+    return false;
+}
+
+void PeriodicExecutionContext::startThread()
+{
+    if (!m_thread.joinable())
+        m_thread = std::thread([this] { run(); });
 }
 
 RTC::ReturnCode_t PeriodicExecutionContext::stop()
@@ -238,6 +254,7 @@ RTC::ReturnCode_t PeriodicExecutionContext::requestTransition(RTC::LightweightRT
         return RTC::RTC_OK;
     }
     p->request = request;
+    startThread();
     m_wake.notify_all();
     // Wait a couple of periods at least, so slow rates still report the finished transition.
     const double waitSeconds = std::max(m_transitionTimeout, 2.0 / m_rate);
@@ -321,17 +338,10 @@ void PeriodicExecutionContext::run()
         if (!m_running)
             return;
         // Only active components execute and only those in error are told so each period: with
-        // neither (a freshly created or a stopped system) the thread sleeps until a transition is
-        // asked for, instead of waking `rate` times a second for nothing.
-        const auto due = [&] {
-            for (const ParticipantPtr &p : m_participants) {
-                if (p->request != Request::None || p->state == RTC::ACTIVE_STATE || p->state == RTC::ERROR_STATE)
-                    return true;
-            }
-            return false;
-        };
-        if (!due()) {
-            m_wake.wait(lock, [&] { return !m_running || due(); });
+        // neither (a stopped system) the thread sleeps until a transition is asked for, instead of
+        // waking `rate` times a second for nothing.
+        if (!hasWork()) {
+            m_wake.wait(lock, [&] { return !m_running || hasWork(); });
             if (!m_running)
                 return;
             next = Clock::now();

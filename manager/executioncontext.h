@@ -16,7 +16,8 @@ namespace Runtime {
  * the OMG RTC state machine (INACTIVE → ACTIVE → ERROR → INACTIVE) and calls on_execute /
  * on_state_update on the active ones. State changes requested while the context runs happen in its
  * thread (the caller waits for them, bounded by the transition timeout); while it is stopped they
- * happen at once in the caller's thread.
+ * happen at once in the caller's thread. The thread starts with the first such request: a running
+ * context of components that were only created (inactive) has no thread yet.
  */
 class PeriodicExecutionContext : public virtual POA_RTC::ExecutionContextService
 {
@@ -67,6 +68,11 @@ private:
     void runTransition(const ParticipantPtr &p, Request request);
     void execute(const ParticipantPtr &p);
     void setState(const ParticipantPtr &p, RTC::LifeCycleState state);
+    /// Whether a participant needs the thread: a transition asked for, or a state acted on each period.
+    bool hasWork() const; // m_mutex held
+    /// Starts the thread once the context runs and has work: a context whose components were only
+    /// created costs no thread (m_mutex held).
+    void startThread();
     void run();
 
     std::mutex m_mutex;

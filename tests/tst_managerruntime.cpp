@@ -95,6 +95,7 @@ private slots:
 
     void stateMachine();
     void errorAndReset();
+    void contextThreadStartsWithWork();
     void rateAndProfile();
     void configurationSets();
     void componentProfile();
@@ -460,6 +461,43 @@ void TestManagerRuntime::errorAndReset()
     QCOMPARE(ec->reset_component(rtc), RTC::RTC_OK);
     QCOMPARE(ec->get_component_state(rtc), RTC::INACTIVE_STATE);
     QCOMPARE(ec->reset_component(rtc), RTC::PRECONDITION_NOT_MET);
+}
+
+/// Threads of this process now.
+int threadCount()
+{
+    return int(QDir(QStringLiteral("/proc/self/task")).entryList(QDir::Dirs | QDir::NoDotAndDotDot).size());
+}
+
+void TestManagerRuntime::contextThreadStartsWithWork()
+{
+    // Components that were only created run their contexts without a thread each: a manager
+    // hosting many inactive components holds no thread per component.
+    const int before = threadCount();
+    std::vector<RTC::RTObject_var> components;
+    for (int i = 0; i < 5; ++i) {
+        RtObject *component = create("ConsoleOut", QStringLiteral("Idle%1").arg(i));
+        QVERIFY(component);
+        components.push_back(component->reference());
+    }
+    QCOMPARE(threadCount(), before);
+    RTC::ExecutionContext_var ec = ownedContext(components.front());
+    QVERIFY(ec->is_running());
+    QCOMPARE(ec->get_component_state(components.front()), RTC::INACTIVE_STATE);
+    // The first request starts the thread, which serves it before activate returns.
+    QCOMPARE(ec->activate_component(components.front()), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(components.front()), RTC::ACTIVE_STATE);
+    QCOMPARE(threadCount(), before + 1);
+    QCOMPARE(ec->deactivate_component(components.front()), RTC::RTC_OK);
+    QCOMPARE(ec->activate_component(components.front()), RTC::RTC_OK);
+    QCOMPARE(threadCount(), before + 1);
+    // A context stopped with an active participant starts its thread again at once.
+    QCOMPARE(ec->stop(), RTC::RTC_OK);
+    QCOMPARE(threadCount(), before);
+    QCOMPARE(ec->start(), RTC::RTC_OK);
+    QCOMPARE(threadCount(), before + 1);
+    QCOMPARE(ec->deactivate_component(components.front()), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(components.front()), RTC::INACTIVE_STATE);
 }
 
 void TestManagerRuntime::rateAndProfile()
