@@ -117,6 +117,11 @@ CORBA::ORB_var theOrb()
 }
 
 // A port nobody listens on right now, for a slave we start ourselves.
+CORBA::Object_ptr corbalocObject(const std::string &address, const std::string &key)
+{
+    return theOrb()->string_to_object(("corbaloc:iiop:1.2@" + address + '/' + key).c_str());
+}
+
 int freeLoopbackPort()
 {
     const int fd = socket(AF_INET, SOCK_STREAM, 0);

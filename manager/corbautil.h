@@ -41,6 +41,14 @@ void releaseServant(PortableServer::POA_ptr poa, PortableServer::ServantBase *se
 /// The process's ORB (initialised earlier by the runtime's owner).
 CORBA::ORB_var theOrb();
 
+/**
+ * The reference `corbaloc:iiop:1.2@<address>/<key>` (address as host:port). GIOP 1.2 from the first
+ * call: with corbaloc's default 1.0, omniORB talks to the object over one connection and to the
+ * references it hands out (a naming context, a new slave) over a second one, a connection and a
+ * server thread more on both sides.
+ */
+CORBA::Object_ptr corbalocObject(const std::string &address, const std::string &key);
+
 /// A loopback TCP port nobody listens on right now (for a manager process we start ourselves).
 int freeLoopbackPort();
 

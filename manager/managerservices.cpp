@@ -96,7 +96,7 @@ CORBA::Object_ptr Manager::service(const std::string &name)
         const std::string server = trimmed(servers.front());
         const std::string address
             = server.find(':') == std::string::npos ? server + ":2809" : server;
-        return m_orb->string_to_object(("corbaloc:iiop:" + address + "/NameService").c_str());
+        return corbalocObject(address, "NameService");
     }
     return CORBA::Object::_nil();
 }

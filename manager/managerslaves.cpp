@@ -133,7 +133,7 @@ RTM::Manager_ptr Manager::slaveFor(const CreateRequest &request, bool *remoteOnl
             return spawnSlave(normalizedHost(host), port, "manager_%p", error);
         // Someone else's manager on another host: use it directly, without making it our slave.
         *remoteOnly = true;
-        CORBA::Object_var object = m_orb->string_to_object(("corbaloc:iiop:" + address + "/manager").c_str());
+        CORBA::Object_var object = corbalocObject(address, "manager");
         return RTM::Manager::_unchecked_narrow(object);
     }
     const std::string name = *request.managerName;
@@ -377,7 +377,7 @@ void Manager::joinMaster()
         return;
     RTM::Manager_var manager;
     try {
-        CORBA::Object_var object = m_orb->string_to_object(("corbaloc:iiop:" + master + "/manager").c_str());
+        CORBA::Object_var object = corbalocObject(master, "manager");
         // Unchecked: the first real call tells whether it is there, without an extra round trip.
         manager = RTM::Manager::_unchecked_narrow(object);
     } catch (const CORBA::Exception &e) {

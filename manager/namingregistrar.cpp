@@ -29,7 +29,7 @@ CosNaming::Name toName(const std::string &path)
 CosNaming::NamingContext_ptr rootContext(const std::string &server)
 {
     const std::string address = server.find(':') == std::string::npos ? server + ":2809" : server;
-    CORBA::Object_var object = theOrb()->string_to_object(("corbaloc:iiop:" + address + "/NameService").c_str());
+    CORBA::Object_var object = corbalocObject(address, "NameService");
     // Unchecked: the first real call tells whether a name server answers, without an extra round trip.
     return CosNaming::NamingContext::_unchecked_narrow(object);
 }

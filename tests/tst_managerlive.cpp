@@ -115,6 +115,7 @@ private slots:
     void forwardsToARestartedManagerOnAnotherHost();
     void sameHostPeersUseUnixSocket_data();
     void sameHostPeersUseUnixSocket();
+    void oneNameServerConnectionPerProcess();
 
 private:
     RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
@@ -846,4 +847,51 @@ void TestManagerLive::sameHostPeersUseUnixSocket()
 }
 
 QTEST_GUILESS_MAIN(TestManagerLive)
+namespace {
+
+/// TCP connections of process @p pid to @p port on this host (its sockets in /proc/<pid>/net/tcp).
+int connectionsTo(qint64 pid, quint16 port)
+{
+    QSet<QByteArray> sockets;
+    const QDir fds(QStringLiteral("/proc/%1/fd").arg(pid));
+    for (const QFileInfo &fd : fds.entryInfoList(QDir::System | QDir::NoDotAndDotDot)) {
+        // The link reads `socket:[<inode>]`.
+        const QByteArray name = QFileInfo(fd.symLinkTarget()).fileName().toUtf8();
+        if (name.startsWith("socket:["))
+            sockets.insert(name.mid(8, name.size() - 9));
+    }
+    QFile table(QStringLiteral("/proc/%1/net/tcp").arg(pid));
+    if (!table.open(QIODevice::ReadOnly))
+        return -1;
+    const QByteArray remotePort = ':' + QByteArray::number(port, 16).toUpper().rightJustified(4, '0');
+    int count = 0;
+    for (const QByteArray &line : table.readAll().split('\n')) {
+        const QList<QByteArray> fields = line.simplified().split(' ');
+        // sl local_address rem_address st … inode: established (01) to the port, owned by the process
+        if (fields.size() > 9 && fields.at(2).endsWith(remotePort) && fields.at(3) == "01"
+            && sockets.contains(fields.at(9)))
+            ++count;
+    }
+    return count;
+}
+
+} // namespace
+
+void TestManagerLive::oneNameServerConnectionPerProcess()
+{
+    // A manager registers itself and its components over one connection to each name server: the
+    // contexts it resolves there are reached over the same connection as the server's root.
+    const quint16 namingPort = m_live->namingServer().section(QLatin1Char(':'), -1).toUShort();
+    RTC::RTObject_var inMaster = create(QStringLiteral("ConsoleIn?instance_name=named0"));
+    QVERIFY(!CORBA::is_nil(inMaster));
+    RTC::RTObject_var inSlave = create(QStringLiteral("ConsoleIn?instance_name=named1&manager_name=slaveC"));
+    QVERIFY(!CORBA::is_nil(inSlave));
+    QVERIFY(!CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/named0.rtc"))));
+    QVERIFY(!CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/named1.rtc"))));
+    QCOMPARE(connectionsTo(m_masterProcess->processId(), namingPort), 1);
+    const qint64 slave = slavePid(QStringLiteral("slaveC"));
+    QVERIFY(slave > 0);
+    QCOMPARE(connectionsTo(slave, namingPort), 1);
+}
+
 #include "tst_managerlive.moc"
