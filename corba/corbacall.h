@@ -72,7 +72,8 @@ template<typename F> auto callServed(const QString &target, const QString &ior, 
     }
 }
 
-/// string_to_object for an IOR, corbaloc or corbaname; BadPath when the text is not a reference.
+/// string_to_object for an IOR, corbaloc (GIOP 1.2: corbalocWithGiop12) or corbaname; BadPath when
+/// the text is not a reference.
 CORBA::Object_ptr toObject(const QString &reference, const QString &target);
 QString toIor(CORBA::Object_ptr object);
 

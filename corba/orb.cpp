@@ -3,6 +3,7 @@
 
 #include "corbacall.h"
 #include "iorendpoint.h"
+#include "rtpath.h"
 
 #include <omniORB4/minorCode.h>
 
@@ -187,7 +188,7 @@ CORBA::Object_ptr toObject(const QString &reference, const QString &target)
 {
     return call(target, [&] {
         try {
-            return orb()->string_to_object(reference.toLatin1().constData());
+            return orb()->string_to_object(corbalocWithGiop12(reference).toLatin1().constData());
         } catch (const CORBA::BAD_PARAM &) {
             throw Error(Error::Kind::BadPath,
                         QStringLiteral("%1: not an object reference: %2").arg(target, reference));

@@ -148,4 +148,24 @@ bool RtPath::operator==(const RtPath &other) const
     return elements == other.elements && port == other.port && corbaloc == other.corbaloc;
 }
 
+QString corbalocWithGiop12(const QString &reference)
+{
+    static const QLatin1String scheme("corbaloc:");
+    if (!reference.startsWith(scheme))
+        return reference;
+    const qsizetype slash = reference.indexOf(QLatin1Char('/'), scheme.size());
+    const qsizetype end = slash < 0 ? reference.size() : slash;
+    QStringList addresses = reference.mid(scheme.size(), end - scheme.size()).split(QLatin1Char(','));
+    for (QString &address : addresses) {
+        // `iiop:host:port` or `:host:port`, without a `version@` of their own
+        if (address.contains(QLatin1Char('@')))
+            continue;
+        if (address.startsWith(QLatin1String("iiop:")))
+            address.insert(5, QLatin1String("1.2@"));
+        else if (address.startsWith(QLatin1Char(':')))
+            address.insert(1, QLatin1String("1.2@"));
+    }
+    return scheme + addresses.join(QLatin1Char(',')) + reference.mid(end);
+}
+
 } // namespace Corba

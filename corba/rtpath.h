@@ -47,4 +47,11 @@ struct RtPath
     bool operator!=(const RtPath &other) const { return !(*this == other); }
 };
 
+/**
+ * @p reference with GIOP 1.2 for each corbaloc address that names no version (`corbaloc:iiop:h:p/k`
+ * becomes `corbaloc:iiop:1.2@h:p/k`); anything else unchanged. With corbaloc's default 1.0, omniORB
+ * opens a second connection for the references the object hands out (naming contexts, components).
+ */
+QString corbalocWithGiop12(const QString &reference);
+
 } // namespace Corba

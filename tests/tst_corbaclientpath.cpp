@@ -17,6 +17,8 @@ private slots:
     void rejects();
     void nameServiceAddress_data();
     void nameServiceAddress();
+    void corbalocAsksForGiop12_data();
+    void corbalocAsksForGiop12();
 };
 
 void TestCorbaClientPath::parses_data()
@@ -155,6 +157,31 @@ void TestCorbaClientPath::nameServiceAddress()
     const auto path = RtPath::parse(text);
     QVERIFY(path.has_value());
     QCOMPARE(path->nameServiceAddress(), address);
+}
+
+void TestCorbaClientPath::corbalocAsksForGiop12_data()
+{
+    QTest::addColumn<QString>("reference");
+    QTest::addColumn<QString>("sent");
+    QTest::newRow("iiop") << "corbaloc:iiop:127.0.0.1:2809/NameService"
+                          << "corbaloc:iiop:1.2@127.0.0.1:2809/NameService";
+    QTest::newRow("empty protocol") << "corbaloc::host:2810/manager"
+                                    << "corbaloc::1.2@host:2810/manager";
+    QTest::newRow("no key") << "corbaloc:iiop:host" << "corbaloc:iiop:1.2@host";
+    QTest::newRow("several addresses") << "corbaloc:iiop:a:1,:1.0@b:2,iiop:c:3/k"
+                                       << "corbaloc:iiop:1.2@a:1,:1.0@b:2,iiop:1.2@c:3/k";
+    QTest::newRow("own version") << "corbaloc:iiop:1.1@host:2809/k" << "corbaloc:iiop:1.1@host:2809/k";
+    QTest::newRow("key with @ and :") << "corbaloc:iiop:host:1/a@b:c" << "corbaloc:iiop:1.2@host:1/a@b:c";
+    QTest::newRow("rir") << "corbaloc:rir:/NameService" << "corbaloc:rir:/NameService";
+    QTest::newRow("corbaname") << "corbaname::host:2809#a/b" << "corbaname::host:2809#a/b";
+    QTest::newRow("IOR") << "IOR:0100" << "IOR:0100";
+}
+
+void TestCorbaClientPath::corbalocAsksForGiop12()
+{
+    QFETCH(QString, reference);
+    QFETCH(QString, sent);
+    QCOMPARE(Corba::corbalocWithGiop12(reference), sent);
 }
 
 QTEST_GUILESS_MAIN(TestCorbaClientPath)
