@@ -34,8 +34,8 @@ CosNaming::NamingContext_ptr rootContext(const std::string &server)
     return CosNaming::NamingContext::_unchecked_narrow(object);
 }
 
-/// Walks (and makes) the contexts of every element of @p name but the last.
-CosNaming::NamingContext_ptr walkContexts(CosNaming::NamingContext_ptr root, const CosNaming::Name &name)
+/// Makes the contexts of every element of @p name but the last where missing; returns the last one.
+CosNaming::NamingContext_ptr makeContexts(CosNaming::NamingContext_ptr root, const CosNaming::Name &name)
 {
     CosNaming::NamingContext_var context = CosNaming::NamingContext::_duplicate(root);
     for (CORBA::ULong i = 0; i + 1 < name.length(); ++i) {
@@ -43,21 +43,14 @@ CosNaming::NamingContext_ptr walkContexts(CosNaming::NamingContext_ptr root, con
         step.length(1);
         step[0] = name[i];
         try {
+            context = context->bind_new_context(step);
+        } catch (const CosNaming::NamingContext::AlreadyBound &) {
+            // There already, or made by another registration just now.
             CORBA::Object_var next = context->resolve(step);
             context = CosNaming::NamingContext::_unchecked_narrow(next);
-        } catch (const CosNaming::NamingContext::NotFound &) {
-            context = context->bind_new_context(step);
         }
     }
     return context._retn();
-}
-
-std::string contextKey(const std::string &server, const CosNaming::Name &name)
-{
-    std::string key = server;
-    for (CORBA::ULong i = 0; i + 1 < name.length(); ++i)
-        key += std::string("/") + static_cast<const char *>(name[i].id) + '.' + static_cast<const char *>(name[i].kind);
-    return key;
 }
 
 } // namespace
@@ -75,25 +68,6 @@ NamingRegistrar::NamingRegistrar(const std::vector<std::string> &servers)
 {
 }
 
-CosNaming::NamingContext_ptr NamingRegistrar::context(const std::string &server, const CosNaming::Name &name,
-                                                     bool fresh)
-{
-    const std::string key = contextKey(server, name);
-    {
-        std::lock_guard lock(m_mutex);
-        const auto cached = m_contexts.find(key);
-        if (!fresh && cached != m_contexts.end())
-            return CosNaming::NamingContext::_duplicate(cached->second);
-    }
-    CosNaming::NamingContext_var root = rootContext(server);
-    if (CORBA::is_nil(root))
-        throw CORBA::OBJECT_NOT_EXIST();
-    CosNaming::NamingContext_var found = walkContexts(root, name);
-    std::lock_guard lock(m_mutex);
-    m_contexts[key] = CosNaming::NamingContext::_duplicate(found);
-    return found._retn();
-}
-
 bool NamingRegistrar::bind(const std::string &path, CORBA::Object_ptr object, std::vector<std::string> *errors)
 {
     const CosNaming::Name name = toName(path);
@@ -105,19 +79,12 @@ bool NamingRegistrar::bind(const std::string &path, CORBA::Object_ptr object, st
     bool ok = true;
     for (const std::string &server : m_servers) {
         try {
-            bool again = false;
+            CosNaming::NamingContext_var root = rootContext(server);
             try {
-                CosNaming::NamingContext_var holder = context(server, name, false);
-                holder->rebind(last, object);
-            } catch (const CORBA::OBJECT_NOT_EXIST &) {
-                again = true; // a remembered context is gone (the name server lost its data)
-            } catch (const CORBA::TRANSIENT &) {
-                again = true; // or the server was restarted elsewhere
+                // The whole path in one call: the server walks the contexts.
+                root->rebind(name, object);
             } catch (const CosNaming::NamingContext::NotFound &) {
-                again = true; // or someone removed the context
-            }
-            if (again) {
-                CosNaming::NamingContext_var holder = context(server, name, true);
+                CosNaming::NamingContext_var holder = makeContexts(root, name);
                 holder->rebind(last, object);
             }
         } catch (const CORBA::Exception &e) {

@@ -6,8 +6,6 @@
 #include <omniORB4/CORBA.h>
 #include <omniORB4/Naming.hh>
 
-#include <map>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -17,8 +15,8 @@ namespace Runtime {
  * Binds objects in CORBA naming services under OpenRTM-style paths (`host.host_cxt/Name0.rtc`),
  * creating the contexts on the way, and unbinds them again. Servers are `host[:port]` (2809 by
  * default). A server that cannot be reached is reported, never waited on beyond the ORB's timeouts.
- * The contexts a name goes into are remembered, so the next component of the same host costs one
- * call (rebind); a context that is gone (a restarted name server) is looked up again.
+ * A name costs one call (a rebind of the whole path) when its contexts exist, and makes the missing
+ * ones otherwise.
  */
 class NamingRegistrar
 {
@@ -40,13 +38,7 @@ public:
     static std::vector<std::string> expand(const std::string &formats, const Properties &values);
 
 private:
-    /// The context on @p server that holds the last element of @p name, made when missing.
-    CosNaming::NamingContext_ptr context(const std::string &server, const CosNaming::Name &name,
-                                         bool fresh);
-
     std::vector<std::string> m_servers;
-    std::mutex m_mutex;
-    std::map<std::string, CosNaming::NamingContext_var> m_contexts; ///< by server and context path
 };
 
 /// This machine's host name.

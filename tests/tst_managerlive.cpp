@@ -14,6 +14,7 @@
 #include <QtTest>
 
 #include <csignal>
+#include <thread>
 #include <cstring>
 #include <sys/socket.h>
 #include <sys/un.h>
@@ -116,6 +117,7 @@ private slots:
     void sameHostPeersUseUnixSocket_data();
     void sameHostPeersUseUnixSocket();
     void oneNameServerConnectionPerProcess();
+    void registrationsSideBySideMakeContextsOnce();
 
 private:
     RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
@@ -892,6 +894,42 @@ void TestManagerLive::oneNameServerConnectionPerProcess()
     const qint64 slave = slavePid(QStringLiteral("slaveC"));
     QVERIFY(slave > 0);
     QCOMPARE(connectionsTo(slave, namingPort), 1);
+}
+
+void TestManagerLive::registrationsSideBySideMakeContextsOnce()
+{
+    // Components created side by side into contexts nobody made yet: each registration finds the
+    // contexts missing, and only one of them can make each; the others use it.
+    QString error;
+    QProcess *process = nullptr;
+    RTM::Manager_var manager = startMaster(&error, &process,
+                                           {"-o", "naming.formats=%h.host_cxt/side.cxt/%n.cxt/%n.rtc", "-o",
+                                            "manager.instance_name=side"});
+    QVERIFY2(!CORBA::is_nil(manager), qPrintable(error));
+    constexpr int Count = 8;
+    std::vector<std::thread> threads;
+    std::atomic<int> created {0};
+    for (int i = 0; i < Count; ++i) {
+        threads.emplace_back([&manager, &created, i] {
+            try {
+                const QByteArray request = QStringLiteral("ConsoleIn?instance_name=side%1").arg(i).toUtf8();
+                RTC::RTObject_var rtc = manager->create_component(request.constData());
+                if (!CORBA::is_nil(rtc))
+                    ++created;
+            } catch (const CORBA::Exception &) {
+            }
+        });
+    }
+    for (std::thread &thread : threads)
+        thread.join();
+    QCOMPARE(created.load(), Count);
+    for (int i = 0; i < Count; ++i) {
+        const QString path = QStringLiteral("%1.host_cxt/side.cxt/side%2.cxt/side%2.rtc").arg(localHost()).arg(i);
+        QVERIFY2(!CORBA::is_nil(CORBA::Object_var(resolve(path))), qPrintable(path));
+    }
+    const QByteArray messages = process->readAllStandardError();
+    QVERIFY2(!messages.contains("cannot bind"), messages.constData());
+    m_live->stop(process);
 }
 
 #include "tst_managerlive.moc"
