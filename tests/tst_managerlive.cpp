@@ -927,8 +927,6 @@ void TestManagerLive::registrationsSideBySideMakeContextsOnce()
         const QString path = QStringLiteral("%1.host_cxt/side.cxt/side%2.cxt/side%2.rtc").arg(localHost()).arg(i);
         QVERIFY2(!CORBA::is_nil(CORBA::Object_var(resolve(path))), qPrintable(path));
     }
-    const QByteArray messages = process->readAllStandardError();
-    QVERIFY2(!messages.contains("cannot bind"), messages.constData());
     m_live->stop(process);
 }
 
