@@ -12,10 +12,26 @@
 #include <cstring>
 #include <sys/prctl.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 namespace Runtime {
+
+std::string ownExecutable()
+{
+    static const std::string self = "/proc/self/exe";
+    char buffer[4096];
+    const ssize_t length = ::readlink(self.c_str(), buffer, sizeof buffer - 1);
+    if (length <= 0)
+        return self;
+    const std::string path(buffer, size_t(length));
+    struct stat running {}, named {};
+    if (::stat(self.c_str(), &running) != 0 || ::stat(path.c_str(), &named) != 0
+        || running.st_dev != named.st_dev || running.st_ino != named.st_ino)
+        return self; // replaced or removed since it started
+    return path;
+}
 
 namespace {
 

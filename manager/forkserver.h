@@ -9,6 +9,13 @@
 namespace Runtime {
 
 /**
+ * This program's file to start it again: its path when that still names the running file, else
+ * /proc/self/exe. A process is called by the last part of the path it was started from (`ps`,
+ * `pgrep`, `top`), so slaves started through /proc/self/exe would all be called `exe`.
+ */
+std::string ownExecutable();
+
+/**
  * Starts processes of this program without paying for exec each time.
  *
  * A new manager process spends most of its start loading the shared libraries and running their
@@ -30,10 +37,10 @@ public:
     ForkServer(const ForkServer &) = delete;
     ForkServer &operator=(const ForkServer &) = delete;
 
-    /// Starts `program --fork-server` (this program: /proc/self/exe) with the server's end of the
-    /// connection as descriptor 3; false when it cannot. Call it from the thread that lives as long
-    /// as the process (the server follows that thread's end).
-    bool start(const std::string &program = "/proc/self/exe");
+    /// Starts `program --fork-server` (by default this program, ownExecutable()) with the server's
+    /// end of the connection as descriptor 3; false when it cannot. Call it from the thread that
+    /// lives as long as the process (the server follows that thread's end).
+    bool start(const std::string &program = ownExecutable());
     bool running() const;
     /// The fork server's process id: the parent of every process it starts.
     pid_t pid() const { return m_pid; }

@@ -74,7 +74,7 @@ int runManager(int argc, char **argv)
     manager.run();
     if (manager.restartRequested()) {
         // restart(): the same program with the same arguments, hence the same endpoint and setup.
-        execv("/proc/self/exe", argv);
+        execv(Runtime::ownExecutable().c_str(), argv);
         std::cerr << "rtmanager: cannot restart: " << std::strerror(errno) << std::endl;
         return 1;
     }

@@ -222,9 +222,10 @@ pid_t Manager::startSlaveProcess(const std::string &address, const std::string &
     for (std::string &arg : args)
         argv.push_back(arg.data());
     argv.push_back(nullptr);
+    const std::string program = ownExecutable();
     const pid_t pid = fork();
     if (pid == 0) {
-        execv("/proc/self/exe", argv.data());
+        execv(program.c_str(), argv.data());
         _exit(127);
     }
     return pid;

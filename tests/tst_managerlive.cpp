@@ -118,6 +118,7 @@ private slots:
     void sameHostPeersUseUnixSocket();
     void oneNameServerConnectionPerProcess();
     void registrationsSideBySideMakeContextsOnce();
+    void startedProcessesAreCalledRtmanager();
 
 private:
     RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
@@ -928,6 +929,43 @@ void TestManagerLive::registrationsSideBySideMakeContextsOnce()
         QVERIFY2(!CORBA::is_nil(CORBA::Object_var(resolve(path))), qPrintable(path));
     }
     m_live->stop(process);
+}
+
+namespace {
+
+/// The name the kernel knows process @p pid by (what ps, pgrep and top show).
+QByteArray commandName(qint64 pid)
+{
+    QFile comm(QStringLiteral("/proc/%1/comm").arg(pid));
+    return comm.open(QIODevice::ReadOnly) ? comm.readAll().trimmed() : QByteArray();
+}
+
+/// The parent of process @p pid.
+qint64 parentOf(qint64 pid)
+{
+    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly))
+        return 0;
+    const QByteArray text = stat.readAll();
+    // pid (comm) state ppid …: the name may hold spaces and parentheses, so read after the last ')'
+    return text.mid(text.lastIndexOf(')') + 2).split(' ').value(1).toLongLong();
+}
+
+} // namespace
+
+void TestManagerLive::startedProcessesAreCalledRtmanager()
+{
+    // `pgrep rtmanager` and `killall rtmanager` find every manager process, slaves and the fork
+    // server that starts them included.
+    RTC::RTObject_var remote = create("ConsoleIn?manager_name=slaveN");
+    QVERIFY(!CORBA::is_nil(remote));
+    const qint64 slave = slavePid("slaveN");
+    QVERIFY(slave > 0);
+    QCOMPARE(commandName(slave), QByteArray("rtmanager"));
+    const qint64 forkServer = parentOf(slave);
+    QVERIFY(forkServer != m_masterProcess->processId());
+    QCOMPARE(parentOf(forkServer), m_masterProcess->processId());
+    QCOMPARE(commandName(forkServer), QByteArray("rtmanager"));
 }
 
 #include "tst_managerlive.moc"
