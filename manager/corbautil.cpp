@@ -116,12 +116,12 @@ CORBA::ORB_var theOrb()
     return CORBA::ORB_init(argc, nullptr);
 }
 
-// A port nobody listens on right now, for a slave we start ourselves.
 CORBA::Object_ptr corbalocObject(const std::string &address, const std::string &key)
 {
     return theOrb()->string_to_object(("corbaloc:iiop:1.2@" + address + '/' + key).c_str());
 }
 
+// A port nobody listens on right now, for a slave we start ourselves.
 int freeLoopbackPort()
 {
     const int fd = socket(AF_INET, SOCK_STREAM, 0);
