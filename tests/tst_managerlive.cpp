@@ -13,6 +13,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <csignal>
 #include <thread>
 #include <cstring>
@@ -940,17 +941,6 @@ QByteArray commandName(qint64 pid)
     return comm.open(QIODevice::ReadOnly) ? comm.readAll().trimmed() : QByteArray();
 }
 
-/// The parent of process @p pid.
-qint64 parentOf(qint64 pid)
-{
-    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
-    if (!stat.open(QIODevice::ReadOnly))
-        return 0;
-    const QByteArray text = stat.readAll();
-    // pid (comm) state ppid …: the name may hold spaces and parentheses, so read after the last ')'
-    return text.mid(text.lastIndexOf(')') + 2).split(' ').value(1).toLongLong();
-}
-
 } // namespace
 
 void TestManagerLive::startedProcessesAreCalledRtmanager()
@@ -962,10 +952,13 @@ void TestManagerLive::startedProcessesAreCalledRtmanager()
     const qint64 slave = slavePid("slaveN");
     QVERIFY(slave > 0);
     QCOMPARE(commandName(slave), QByteArray("rtmanager"));
-    const qint64 forkServer = parentOf(slave);
-    QVERIFY(forkServer != m_masterProcess->processId());
-    QCOMPARE(parentOf(forkServer), m_masterProcess->processId());
-    QCOMPARE(commandName(forkServer), QByteArray("rtmanager"));
+    // The fork server: the master's child whose child the slave is.
+    const QList<qint64> children = LiveTest::childProcesses(m_masterProcess->processId());
+    const auto forkServer = std::find_if(children.begin(), children.end(), [slave](qint64 child) {
+        return LiveTest::childProcesses(child).contains(slave);
+    });
+    QVERIFY(forkServer != children.end());
+    QCOMPARE(commandName(*forkServer), QByteArray("rtmanager"));
 }
 
 #include "tst_managerlive.moc"
