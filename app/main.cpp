@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "diagramexport.h"
+#include "interruptsignals.h"
 #include "mainwindow.h"
 #include "onlinedocks.h"
 #include "rtsdocument.h"
@@ -41,6 +42,26 @@ int exportDiagram(const QCommandLineParser &parser, const QCommandLineOption &ou
         return 1;
     }
     return 0;
+}
+
+/**
+ * SIGTERM, SIGINT and SIGHUP close the window as its close button does: unsaved work is asked
+ * about, and the local runtime this window started stops unless the user keeps it. A second
+ * signal while that question waits (or after the user kept the window) ends the program at once,
+ * still stopping that runtime; the unsaved work is lost then, as the sender insisted.
+ */
+void closeOnSignals(Codegen::InterruptSignals *interrupts, Studio::MainWindow *window)
+{
+    QObject::connect(interrupts, &Codegen::InterruptSignals::received, window,
+                     [window, asked = false](int signal) mutable {
+                         if (!asked) {
+                             asked = true;
+                             window->close();
+                             return;
+                         }
+                         window->onlineDocks()->quitting();
+                         Codegen::InterruptSignals::endAsSignalled(signal);
+                     });
 }
 
 } // namespace
@@ -90,6 +111,8 @@ int main(int argc, char *argv[])
         return exportDiagram(parser, outputOption);
 
     Studio::MainWindow window;
+    Codegen::InterruptSignals interrupts;
+    closeOnSignals(&interrupts, &window);
     window.show();
     if (parser.isSet(runOption)) {
         const QString system = parser.value(runOption);

@@ -1,18 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "buildcommand.h"
 
+#include "interruptsignals.h"
 #include "projectbuilder.h"
 
 #include <QEventLoop>
-#include <QSocketNotifier>
-
-#include <memory>
-
-#ifdef Q_OS_UNIX
-#include <csignal>
-#include <fcntl.h>
-#include <unistd.h>
-#endif
 
 using namespace Codegen;
 using namespace Profile;
@@ -60,59 +52,6 @@ QString parseArguments(const QStringList &arguments, BuildOptions *options)
     return QString();
 }
 
-#ifdef Q_OS_UNIX
-/// The write end of the pipe the signal handler wakes the event loop through.
-int interruptPipe[2] = {-1, -1};
-
-void onInterrupt(int)
-{
-    const char byte = 1;
-    [[maybe_unused]] const ssize_t written = ::write(interruptPipe[1], &byte, 1);
-}
-
-/**
- * While it lives, Ctrl+C (SIGINT) and SIGTERM cancel the build instead of ending rtctl at once:
- * the build runs in a process group of its own, which the terminal's signal does not reach, so
- * rtctl stops it (and waits for it) before it exits.
- */
-class InterruptCancels
-{
-public:
-    explicit InterruptCancels(ProjectBuilder *builder)
-    {
-        if (::pipe(interruptPipe) != 0)
-            return;
-        ::fcntl(interruptPipe[1], F_SETFL, O_NONBLOCK);
-        m_notifier = std::make_unique<QSocketNotifier>(interruptPipe[0], QSocketNotifier::Read);
-        QObject::connect(m_notifier.get(), &QSocketNotifier::activated, builder, [builder] {
-            char byte;
-            [[maybe_unused]] const ssize_t read = ::read(interruptPipe[0], &byte, 1);
-            builder->cancel();
-        });
-        struct sigaction action = {};
-        action.sa_handler = onInterrupt;
-        sigemptyset(&action.sa_mask);
-        ::sigaction(SIGINT, &action, &m_oldInt);
-        ::sigaction(SIGTERM, &action, &m_oldTerm);
-    }
-    ~InterruptCancels()
-    {
-        if (!m_notifier)
-            return;
-        ::sigaction(SIGINT, &m_oldInt, nullptr);
-        ::sigaction(SIGTERM, &m_oldTerm, nullptr);
-        m_notifier.reset();
-        ::close(interruptPipe[0]);
-        ::close(interruptPipe[1]);
-        interruptPipe[0] = interruptPipe[1] = -1;
-    }
-
-private:
-    std::unique_ptr<QSocketNotifier> m_notifier;
-    struct sigaction m_oldInt = {};
-    struct sigaction m_oldTerm = {};
-};
-#endif
 
 } // namespace
 
@@ -158,9 +97,11 @@ int BuildCommand::run(const QStringList &arguments, Streams streams)
         message = text;
         loop.quit();
     });
-#ifdef Q_OS_UNIX
-    const InterruptCancels interrupts(&builder);
-#endif
+    // Ctrl+C and SIGTERM cancel the build instead of ending rtctl at once: the build runs in a
+    // process group of its own, which the terminal's signal does not reach, so rtctl stops it (and
+    // waits for it) before it exits.
+    const InterruptSignals interrupts;
+    QObject::connect(&interrupts, &InterruptSignals::received, &builder, &ProjectBuilder::cancel);
     // A build that cannot start reports finished() before start() returns.
     if (builder.start(options))
         loop.exec();

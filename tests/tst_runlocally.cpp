@@ -2,7 +2,7 @@
 // Online → Run System on Local Runtime, as the README's first command uses it: the bundled
 // ConsoleInOut example restored onto a local runtime that RT Studio starts, its components active
 // on an online diagram, ConsoleIn's samples in the Port Monitor, and the runtime stopped on quit
-// unless the user keeps it.
+// (also when the program is told to end by a signal) unless the user keeps it.
 
 #include "document.h"
 #include "documentcontroller.h"
@@ -18,11 +18,14 @@
 
 #include <QAction>
 #include <QLabel>
+#include <QProcess>
 #include <QScopeGuard>
 #include <QSettings>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <csignal>
 
 using namespace Studio;
 
@@ -36,6 +39,7 @@ private slots:
     void failedStartIsReported();
     void runsTheExampleAndStopsOnQuit();
     void keptRuntimeOutlivesTheWindow();
+    void terminationSignalStopsTheRuntime();
 
 private:
     OnlineDocument *onlineDiagram(MainWindow &window) const;
@@ -181,6 +185,39 @@ void TestRunLocally::keptRuntimeOutlivesTheWindow()
     QTRY_VERIFY_WITH_TIMEOUT(!Deploy::LocalRuntime().status().nameServer.running, 20000);
     QVERIFY(!Deploy::LocalRuntime().status().manager.running);
     QTRY_VERIFY(window->findChild<QLabel *>(QStringLiteral("localRuntimeStatus"))->text().contains("stopped"));
+}
+
+void TestRunLocally::terminationSignalStopsTheRuntime()
+{
+    // A session that ends sends SIGTERM: rtstudio closes as from its close button, and the runtime
+    // it started for --run-locally stops with it instead of staying behind for the next start.
+    QTemporaryDir home;
+    QVERIFY(home.isValid());
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("HOME"), home.path());
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
+    QProcess studio;
+    studio.setProcessEnvironment(environment);
+    studio.setProcessChannelMode(QProcess::ForwardedChannels);
+    studio.start(QStringLiteral(RTSTUDIO_PATH),
+                 {QStringLiteral("--run-locally"),
+                  QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")});
+    QVERIFY(studio.waitForStarted());
+    const auto endStudio = qScopeGuard([&studio] {
+        if (studio.state() != QProcess::NotRunning) {
+            studio.kill();
+            studio.waitForFinished();
+        }
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(Deploy::LocalRuntime().status().running(), 60000);
+
+    ::kill(pid_t(studio.processId()), SIGTERM);
+    QVERIFY(studio.waitForFinished(30000));
+    QCOMPARE(studio.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(studio.exitCode(), 0);
+    QVERIFY(!Deploy::LocalRuntime().status().nameServer.running);
+    QVERIFY(!Deploy::LocalRuntime().status().manager.running);
 }
 
 QTEST_MAIN(TestRunLocally)
