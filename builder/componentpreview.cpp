@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "componentpreview.h"
 
+#include <QHelpEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QToolTip>
 
 namespace Builder {
 
@@ -11,6 +13,8 @@ namespace {
 constexpr qreal Marker = 14;
 constexpr qreal SidePitch = 34; ///< vertical distance between ports on LEFT/RIGHT
 constexpr qreal TopPitch = 90; ///< horizontal distance between ports on TOP/BOTTOM
+constexpr qreal LabelGap = 4; ///< between a marker and its label
+constexpr qreal EdgeMargin = 2; ///< kept free along the widget's edges
 
 QString sideOf(const QString &position, ComponentPreview::Port::Kind kind)
 {
@@ -75,24 +79,25 @@ void ComponentPreview::relayout()
         return;
     const Profile::RtcProfile &profile = m_model->profile();
     m_title = profile.basicInfo.name;
+    const auto add = [this](Port::Kind kind, const QString &name, const QString &type, const QString &position) {
+        Port port;
+        port.kind = kind;
+        port.name = name;
+        port.type = type;
+        port.side = sideOf(position, kind);
+        m_ports.append(port);
+    };
     for (const Profile::RtcDataPort &p : profile.dataPorts) {
-        if (p.kind() == Profile::RtcPortType::Event) {
-            m_ports.append(
-                {Port::Event, p.name, eventsText(p), sideOf(p.position, Port::Event), {}});
-            continue;
-        }
-        const Port::Kind kind = p.kind() == Profile::RtcPortType::DataOut ? Port::Out : Port::In;
-        m_ports.append({kind, p.name, p.type, sideOf(p.position, kind), {}});
+        if (p.kind() == Profile::RtcPortType::Event)
+            add(Port::Event, p.name, eventsText(p), p.position);
+        else
+            add(p.kind() == Profile::RtcPortType::DataOut ? Port::Out : Port::In, p.name, p.type, p.position);
     }
     for (const Profile::RtcServicePort &p : profile.servicePorts) {
         QStringList types;
         for (const Profile::RtcServiceInterface &i : p.interfaces)
             types << i.type;
-        m_ports.append({Port::Service,
-                        p.name,
-                        types.join(QStringLiteral(", ")),
-                        sideOf(p.position, Port::Service),
-                        {}});
+        add(Port::Service, p.name, types.join(QStringLiteral(", ")), p.position);
     }
     QHash<QString, QList<Port *>> bySide;
     for (Port &port : m_ports)
@@ -121,7 +126,13 @@ void ComponentPreview::relayout()
     m_box = QRectF(0, 0, width, height);
     m_box.moveCenter(QRectF(rect()).center());
     const qreal spare = rect().width() - left - right - width;
-    m_box.moveLeft(left + qMax<qreal>(0, spare / 2));
+    // Too narrow for every label: a side that needs less than half of the room left by the box
+    // keeps what it needs, the other gets the rest, and the labels are shortened to fit.
+    const qreal room = rect().width() - width;
+    qreal leftRoom = left + spare / 2;
+    if (spare < 0)
+        leftRoom = left <= room / 2 ? left : right <= room / 2 ? room - right : room / 2;
+    m_box.moveLeft(qMax(Marker, leftRoom));
     m_box.moveTop(qMax(above, m_box.top()));
     m_extent = QSizeF(left + width + right, 2 * above + height);
     for (const QString &side : Profile::rtcPositions())
@@ -146,7 +157,71 @@ void ComponentPreview::layoutSide(const QString &side, QList<Port *> ports)
         QRectF marker(0, 0, Marker, Marker);
         marker.moveCenter(centre);
         ports[i]->marker = marker;
+        placeLabels(*ports[i]);
     }
+}
+
+QFont ComponentPreview::typeFont() const
+{
+    QFont small = font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    return small;
+}
+
+void ComponentPreview::placeLabels(Port &port) const
+{
+    const QRectF &r = port.marker;
+    const QFontMetricsF metrics(font());
+    const qreal h = metrics.height();
+    // The room between the marker and the widget's edge on the label's side.
+    qreal room = width() - 2 * EdgeMargin;
+    if (port.side == QLatin1String("LEFT"))
+        room = r.left() - LabelGap - EdgeMargin;
+    else if (port.side == QLatin1String("RIGHT"))
+        room = width() - EdgeMargin - r.right() - LabelGap;
+    room = qMax<qreal>(0, room);
+    port.shownName = metrics.elidedText(port.name, Qt::ElideRight, room);
+    const qreal w = metrics.horizontalAdvance(port.shownName);
+    if (port.side == QLatin1String("LEFT"))
+        port.nameRect = QRectF(r.left() - LabelGap - w, r.center().y() - h, w, h);
+    else if (port.side == QLatin1String("RIGHT"))
+        port.nameRect = QRectF(r.right() + LabelGap, r.center().y() - h, w, h);
+    else if (port.side == QLatin1String("TOP"))
+        port.nameRect = QRectF(r.center().x() - w / 2, r.top() - 2 - h, w, h);
+    else
+        port.nameRect = QRectF(r.center().x() - w / 2, r.bottom() + 2, w, h);
+    if (!vertical(port.side)) {
+        port.nameRect.moveRight(qMin(port.nameRect.right(), width() - EdgeMargin));
+        port.nameRect.moveLeft(qMax(port.nameRect.left(), EdgeMargin));
+    }
+    port.shownType.clear();
+    port.typeRect = QRectF();
+    if (!vertical(port.side) || port.type.isEmpty())
+        return;
+    const QFontMetricsF small(typeFont());
+    port.shownType = small.elidedText(port.type, Qt::ElideRight, room);
+    const qreal tw = small.horizontalAdvance(port.shownType);
+    const qreal x = port.side == QLatin1String("LEFT") ? r.left() - LabelGap - tw : r.right() + LabelGap;
+    port.typeRect = QRectF(x, r.center().y(), tw, h);
+}
+
+bool ComponentPreview::event(QEvent *event)
+{
+    if (event->type() != QEvent::ToolTip)
+        return QWidget::event(event);
+    const QPoint at = static_cast<QHelpEvent *>(event)->pos();
+    for (const Port &port : std::as_const(m_ports)) {
+        if (port.marker.adjusted(-2, -2, 2, 2).contains(at) || port.nameRect.contains(at)
+            || port.typeRect.contains(at)) {
+            QToolTip::showText(static_cast<QHelpEvent *>(event)->globalPos(),
+                               port.type.isEmpty() ? port.name : port.name + QLatin1Char('\n') + port.type,
+                               this);
+            return true;
+        }
+    }
+    QToolTip::hideText();
+    event->ignore();
+    return true;
 }
 
 void ComponentPreview::paintEvent(QPaintEvent *)
@@ -206,29 +281,12 @@ void ComponentPreview::paintPort(QPainter &painter, const Port &port) const
         painter.setBrush(in ? QColor(120, 170, 230) : QColor(130, 200, 140));
         painter.drawPath(path);
     }
-    const QFontMetricsF metrics(painter.font());
-    const QString label = port.name;
-    const qreal w = metrics.horizontalAdvance(label);
-    const qreal h = metrics.height();
-    QRectF text;
-    if (port.side == QLatin1String("LEFT"))
-        text = QRectF(r.left() - 4 - w, r.center().y() - h, w, h);
-    else if (port.side == QLatin1String("RIGHT"))
-        text = QRectF(r.right() + 4, r.center().y() - h, w, h);
-    else if (port.side == QLatin1String("TOP"))
-        text = QRectF(r.center().x() - w / 2, r.top() - 2 - h, w, h);
-    else
-        text = QRectF(r.center().x() - w / 2, r.bottom() + 2, w, h);
     painter.setPen(palette().text().color());
-    painter.drawText(text, Qt::AlignCenter, label);
-    if (vertical(port.side) && !port.type.isEmpty()) {
-        QFont small = painter.font();
-        small.setPointSizeF(small.pointSizeF() * 0.85);
-        painter.setFont(small);
+    painter.drawText(port.nameRect, Qt::AlignCenter, port.shownName);
+    if (!port.shownType.isEmpty()) {
+        painter.setFont(typeFont());
         painter.setPen(QColor(100, 100, 100));
-        const qreal tw = QFontMetricsF(small).horizontalAdvance(port.type);
-        const qreal x = port.side == QLatin1String("LEFT") ? r.left() - 4 - tw : r.right() + 4;
-        painter.drawText(QRectF(x, r.center().y(), tw, h), Qt::AlignCenter, port.type);
+        painter.drawText(port.typeRect, Qt::AlignCenter, port.shownType);
         painter.setFont(font());
     }
 }

@@ -34,6 +34,7 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolTip>
 #include <QTreeView>
 #include <QUndoStack>
 
@@ -90,6 +91,7 @@ private slots:
     void typingAPortNameUpdatesThePreview();
     void duplicatePortNameIsMarkedWithReason();
     void previewPutsPortsOnTheirSides();
+    void previewShortensLabelsThatDoNotFit();
     void addingAPortSelectsIt();
     void formKeepsItsPortWhenOthersComeAndGo();
     void undoReachesAcrossPages();
@@ -202,6 +204,57 @@ void TestBuilderPages::previewPutsPortsOnTheirSides()
     }
     QImage image = preview->grab().toImage();
     QVERIFY(!image.isNull());
+}
+
+void TestBuilderPages::previewShortensLabelsThatDoNotFit()
+{
+    Editor e;
+    const QString longName = QStringLiteral("rangesOfTheLaserScannerInMillimetres");
+    auto port = std::get<Profile::RtcDataPort>(e.model.item(Part::DataPort, 1));
+    QCOMPARE(port.name, QStringLiteral("ranges"));
+    port.name = longName;
+    e.model.setItem(Part::DataPort, 1, port);
+    // A preview of its own, on the editor's model, as a window whose width the test sets.
+    ComponentPreview own(&e.model);
+    ComponentPreview *preview = &own;
+    preview->show();
+    QVERIFY(QTest::qWaitForWindowExposed(preview));
+    const auto labelsInside = [preview] {
+        for (const ComponentPreview::Port &p : preview->ports()) {
+            const QRectF inside = preview->rect();
+            if (inside.united(p.nameRect) != inside || inside.united(p.typeRect) != inside)
+                return false;
+        }
+        return true;
+    };
+    const auto shown = [preview](const QString &name) {
+        for (const ComponentPreview::Port &p : preview->ports()) {
+            if (p.name == name)
+                return p;
+        }
+        return ComponentPreview::Port();
+    };
+
+    // Wide enough: everything as it is.
+    preview->resize(900, 300);
+    QVERIFY(labelsInside());
+    QCOMPARE(shown(longName).shownName, longName);
+    QCOMPARE(shown(longName).shownType, shown(longName).type);
+
+    // Too narrow: the long name and its type end in "…" at the widget's edge instead of beyond it.
+    preview->resize(300, 300);
+    QVERIFY(labelsInside());
+    const ComponentPreview::Port cut = shown(longName);
+    QVERIFY2(cut.shownName.endsWith(QChar(0x2026)) && cut.shownName.size() < longName.size(),
+             qPrintable(cut.shownName));
+    QVERIFY2(cut.shownType.endsWith(QChar(0x2026)), qPrintable(cut.shownType));
+    QCOMPARE(shown(QStringLiteral("trigger")).shownName, QStringLiteral("trigger"));
+
+    // Its tooltip gives both in full.
+    QHelpEvent help(QEvent::ToolTip, cut.nameRect.center().toPoint(),
+                    preview->mapToGlobal(cut.nameRect.center().toPoint()));
+    QCoreApplication::sendEvent(preview, &help);
+    QCOMPARE(QToolTip::text(), longName + QLatin1Char('\n') + cut.type);
 }
 
 void TestBuilderPages::addingAPortSelectsIt()
