@@ -438,10 +438,14 @@ void Manager::watchSlaves()
 {
     const auto period = std::chrono::milliseconds(std::max(10L, long(configNumber("manager.slave_check_interval", 500))));
     std::unique_lock lock(m_mutex);
+    auto next = std::chrono::steady_clock::now() + period;
     while (!m_stopping) {
-        m_slavesChanged.wait_for(lock, period);
-        if (m_stopping)
-            return;
+        // The condition also announces each slave that joins: checking only once a period keeps
+        // slaves started side by side from being asked once per join, each ask a further
+        // connection and server thread in a slave that is still starting.
+        if (m_slavesChanged.wait_until(lock, next) != std::cv_status::timeout)
+            continue;
+        next = std::chrono::steady_clock::now() + period;
         std::vector<RTM::Manager_var> refs;
         for (const auto &slave : m_slaves)
             refs.push_back(RTM::Manager::_duplicate(slave->reference));

@@ -119,6 +119,7 @@ private slots:
     void sameHostPeersUseUnixSocket();
     void oneNameServerConnectionPerProcess();
     void registrationsSideBySideMakeContextsOnce();
+    void slavesStartedSideBySideServeOneConnection();
     void startedProcessesAreCalledRtmanager();
 
 private:
@@ -853,27 +854,56 @@ void TestManagerLive::sameHostPeersUseUnixSocket()
 QTEST_GUILESS_MAIN(TestManagerLive)
 namespace {
 
-/// TCP connections of process @p pid to @p port on this host (its sockets in /proc/<pid>/net/tcp).
-int connectionsTo(qint64 pid, quint16 port)
+/// The inodes of the sockets process @p pid holds (its /proc/<pid>/fd links read `socket:[<inode>]`).
+QSet<QByteArray> socketInodes(qint64 pid)
 {
     QSet<QByteArray> sockets;
     const QDir fds(QStringLiteral("/proc/%1/fd").arg(pid));
     for (const QFileInfo &fd : fds.entryInfoList(QDir::System | QDir::NoDotAndDotDot)) {
-        // The link reads `socket:[<inode>]`.
         const QByteArray name = QFileInfo(fd.symLinkTarget()).fileName().toUtf8();
         if (name.startsWith("socket:["))
             sockets.insert(name.mid(8, name.size() - 9));
     }
-    QFile table(QStringLiteral("/proc/%1/net/tcp").arg(pid));
-    if (!table.open(QIODevice::ReadOnly))
-        return -1;
+    return sockets;
+}
+
+/// The rows of /proc/<pid>/net/@p table (split into fields) for sockets process @p pid holds,
+/// @p inodeField naming the column of the inode.
+QList<QList<QByteArray>> ownSockets(qint64 pid, const QString &table, int inodeField)
+{
+    const QSet<QByteArray> sockets = socketInodes(pid);
+    QFile file(QStringLiteral("/proc/%1/net/%2").arg(pid).arg(table));
+    QList<QList<QByteArray>> rows;
+    if (!file.open(QIODevice::ReadOnly))
+        return rows;
+    for (const QByteArray &line : file.readAll().split('\n')) {
+        const QList<QByteArray> fields = line.simplified().split(' ');
+        if (fields.size() > inodeField && sockets.contains(fields.at(inodeField)))
+            rows.append(fields);
+    }
+    return rows;
+}
+
+/// TCP connections of process @p pid to @p port on this host.
+int connectionsTo(qint64 pid, quint16 port)
+{
     const QByteArray remotePort = ':' + QByteArray::number(port, 16).toUpper().rightJustified(4, '0');
     int count = 0;
-    for (const QByteArray &line : table.readAll().split('\n')) {
-        const QList<QByteArray> fields = line.simplified().split(' ');
-        // sl local_address rem_address st … inode: established (01) to the port, owned by the process
-        if (fields.size() > 9 && fields.at(2).endsWith(remotePort) && fields.at(3) == "01"
-            && sockets.contains(fields.at(9)))
+    // sl local_address rem_address st … inode: established (01) to the port
+    for (const QList<QByteArray> &fields : ownSockets(pid, QStringLiteral("tcp"), 9)) {
+        if (fields.at(2).endsWith(remotePort) && fields.at(3) == "01")
+            ++count;
+    }
+    return count;
+}
+
+/// Unix socket connections process @p pid accepted: connected (03) and bound to its listening path.
+int acceptedUnixConnections(qint64 pid)
+{
+    int count = 0;
+    // Num RefCount Protocol Flags Type St Inode Path
+    for (const QList<QByteArray> &fields : ownSockets(pid, QStringLiteral("unix"), 6)) {
+        if (fields.size() == 8 && fields.at(5) == "03")
             ++count;
     }
     return count;
@@ -898,6 +928,31 @@ void TestManagerLive::oneNameServerConnectionPerProcess()
     QCOMPARE(connectionsTo(slave, namingPort), 1);
 }
 
+namespace {
+
+/// Sends @p count create_component requests to @p manager at once, one thread each, `%1` in
+/// @p request numbering them; the number of components made.
+int createSideBySide(RTM::Manager_ptr manager, const QString &request, int count)
+{
+    std::vector<std::thread> threads;
+    std::atomic<int> created {0};
+    for (int i = 0; i < count; ++i) {
+        threads.emplace_back([manager, &created, text = request.arg(i).toUtf8()] {
+            try {
+                RTC::RTObject_var rtc = manager->create_component(text.constData());
+                if (!CORBA::is_nil(rtc))
+                    ++created;
+            } catch (const CORBA::Exception &) {
+            }
+        });
+    }
+    for (std::thread &thread : threads)
+        thread.join();
+    return created;
+}
+
+} // namespace
+
 void TestManagerLive::registrationsSideBySideMakeContextsOnce()
 {
     // Components created side by side into contexts nobody made yet: each registration finds the
@@ -909,26 +964,33 @@ void TestManagerLive::registrationsSideBySideMakeContextsOnce()
                                             "manager.instance_name=side"});
     QVERIFY2(!CORBA::is_nil(manager), qPrintable(error));
     constexpr int Count = 8;
-    std::vector<std::thread> threads;
-    std::atomic<int> created {0};
-    for (int i = 0; i < Count; ++i) {
-        threads.emplace_back([&manager, &created, i] {
-            try {
-                const QByteArray request = QStringLiteral("ConsoleIn?instance_name=side%1").arg(i).toUtf8();
-                RTC::RTObject_var rtc = manager->create_component(request.constData());
-                if (!CORBA::is_nil(rtc))
-                    ++created;
-            } catch (const CORBA::Exception &) {
-            }
-        });
-    }
-    for (std::thread &thread : threads)
-        thread.join();
-    QCOMPARE(created.load(), Count);
+    QCOMPARE(createSideBySide(manager, QStringLiteral("ConsoleIn?instance_name=side%1"), Count), Count);
     for (int i = 0; i < Count; ++i) {
         const QString path = QStringLiteral("%1.host_cxt/side.cxt/side%2.cxt/side%2.rtc").arg(localHost()).arg(i);
         QVERIFY2(!CORBA::is_nil(CORBA::Object_var(resolve(path))), qPrintable(path));
     }
+    m_live->stop(process);
+}
+
+void TestManagerLive::slavesStartedSideBySideServeOneConnection()
+{
+    // A master asks each new slave for its profile and whether it joined, then creates in it: all
+    // over one connection. A slave joining must not set off a check of every slave (each check
+    // that meets another call to a slave opens a further connection, and a server thread there).
+    // No periodic check during the test: only the joins could cause one.
+    QString error;
+    QProcess *process = nullptr;
+    RTM::Manager_var manager = startMaster(&error, &process, {"-o", "manager.slave_check_interval=600000"});
+    QVERIFY2(!CORBA::is_nil(manager), qPrintable(error));
+    constexpr int Count = 8;
+    QCOMPARE(createSideBySide(manager, QStringLiteral("ConsoleIn?instance_name=own%1&manager_name=manager_%p"), Count),
+             Count);
+    QList<qint64> slaves;
+    for (const qint64 forkServer : LiveTest::childProcesses(process->processId()))
+        slaves << LiveTest::childProcesses(forkServer);
+    QCOMPARE(slaves.size(), Count);
+    for (const qint64 slave : std::as_const(slaves))
+        QCOMPARE(acceptedUnixConnections(slave), 1);
     m_live->stop(process);
 }
 
