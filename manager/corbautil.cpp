@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <dirent.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -138,13 +139,19 @@ int freeLoopbackPort()
     return port;
 }
 
-std::string localSocketFolder()
+std::string localSocketFolder(bool removeStale)
 {
     // A socket's path must fit sockaddr_un (108 bytes) with omniORB's 20-character file name.
-    const char *tmp = std::getenv("TMPDIR");
-    std::string base = tmp && *tmp ? std::string(tmp) : std::string("/tmp");
-    if (base.size() > 64)
-        base = "/tmp";
+    // $XDG_RUNTIME_DIR is the user's place for sockets (a tmpfs on desktops, where making and
+    // removing them costs no disk inode), then $TMPDIR, then /tmp.
+    std::string base = "/tmp";
+    for (const char *variable : {"XDG_RUNTIME_DIR", "TMPDIR"}) {
+        const char *value = std::getenv(variable);
+        if (value && *value == '/' && std::strlen(value) <= 64) {
+            base = value;
+            break;
+        }
+    }
     std::string folder = base + "/rtstudio-orb-" + std::to_string(getuid());
     struct stat info {};
     if (mkdir(folder.c_str(), 0700) != 0 && errno != EEXIST)
@@ -152,6 +159,8 @@ std::string localSocketFolder()
     // Someone else's folder, or not a folder: do not put sockets there.
     if (lstat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) || info.st_uid != getuid())
         return {};
+    if (!removeStale)
+        return folder;
     // omniORB names a socket "<pid>-<time>" and removes it when its ORB is destroyed; a process that
     // was killed leaves its socket behind.
     if (DIR *dir = opendir(folder.c_str())) {

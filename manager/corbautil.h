@@ -54,11 +54,11 @@ int freeLoopbackPort();
 
 /**
  * The folder where this user's managers and components keep the Unix domain sockets that peers on
- * the same host reach them through (`$TMPDIR/rtstudio-orb-<uid>`, or /tmp's), created private to
- * the user. Sockets left by processes that are gone (killed before their ORB removed them) are
- * removed. Empty when the folder cannot be made.
+ * the same host reach them through (`rtstudio-orb-<uid>` in `$XDG_RUNTIME_DIR`, else in `$TMPDIR`
+ * or /tmp), created private to the user. With @p removeStale, sockets left by processes that are
+ * gone (killed before their ORB removed them) are removed. Empty when the folder cannot be made.
  */
-std::string localSocketFolder();
+std::string localSocketFolder(bool removeStale = true);
 
 /**
  * Whether two references name the same object. omniORB calls remote references equivalent only when

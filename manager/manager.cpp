@@ -89,7 +89,9 @@ bool Manager::initOrb(std::string *error)
     // offers one) reach this process without the TCP stack: a few microseconds per call instead of
     // tens. Remote peers ignore the socket and use TCP as before.
     if (m_config.isYes("corba.unix_socket", true)) {
-        const std::string folder = localSocketFolder();
+        // A slave's master cleared the folder when it started: slaves started side by side need
+        // not each read it again.
+        const std::string folder = localSocketFolder(!m_config.contains("manager.spawned_by"));
         if (!folder.empty())
             args.insert(args.end(), {"-ORBunixTransportDirectory", folder, "-ORBendPoint", "giop:unix:"});
     }

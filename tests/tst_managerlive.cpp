@@ -762,8 +762,10 @@ void TestManagerLive::sameHostPeersUseUnixSocket_data()
 {
     QTest::addColumn<QStringList>("options");
     QTest::addColumn<bool>("unixSocket");
-    QTest::newRow("default") << QStringList() << true;
-    QTest::newRow("corba.unix_socket=NO") << QStringList{"-o", "corba.unix_socket=NO"} << false;
+    QTest::addColumn<bool>("runtimeDir"); ///< XDG_RUNTIME_DIR set (else TMPDIR only)
+    QTest::newRow("default") << QStringList() << true << true;
+    QTest::newRow("no XDG_RUNTIME_DIR") << QStringList() << true << false;
+    QTest::newRow("corba.unix_socket=NO") << QStringList{"-o", "corba.unix_socket=NO"} << false << true;
 }
 
 namespace {
@@ -804,16 +806,32 @@ void TestManagerLive::sameHostPeersUseUnixSocket()
 {
     QFETCH(QStringList, options);
     QFETCH(bool, unixSocket);
-    // The sockets' folder follows TMPDIR; a private one keeps this test's files apart.
+    QFETCH(bool, runtimeDir);
+    // The sockets' folder is in XDG_RUNTIME_DIR, else in TMPDIR: private ones keep this test's files
+    // apart, and the one not to be used stays empty.
     QTemporaryDir tmp(QStringLiteral("/tmp/rtsock-XXXXXX"));
-    QVERIFY(tmp.isValid());
+    QTemporaryDir other(QStringLiteral("/tmp/rtsock-XXXXXX"));
+    QVERIFY(tmp.isValid() && other.isValid());
     const QByteArray oldTmp = qgetenv("TMPDIR");
-    qputenv("TMPDIR", tmp.path().toLocal8Bit());
-    const auto restore = qScopeGuard([&oldTmp] {
-        if (oldTmp.isNull())
-            qunsetenv("TMPDIR");
-        else
-            qputenv("TMPDIR", oldTmp);
+    const QByteArray oldRuntime = qgetenv("XDG_RUNTIME_DIR");
+    const auto restore = qScopeGuard([&oldTmp, &oldRuntime] {
+        for (const auto &[name, value] : {std::pair {"TMPDIR", oldTmp}, std::pair {"XDG_RUNTIME_DIR", oldRuntime}}) {
+            if (value.isNull())
+                qunsetenv(name);
+            else
+                qputenv(name, value);
+        }
+    });
+    if (runtimeDir) {
+        qputenv("XDG_RUNTIME_DIR", tmp.path().toLocal8Bit());
+        qputenv("TMPDIR", other.path().toLocal8Bit());
+    } else {
+        qunsetenv("XDG_RUNTIME_DIR");
+        qputenv("TMPDIR", tmp.path().toLocal8Bit());
+    }
+    const auto checkOtherUnused = qScopeGuard([&other] {
+        QVERIFY2(QDir(other.path()).isEmpty(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::System),
+                 "sockets in the folder not to be used");
     });
     const QDir folder(tmp.filePath(QStringLiteral("rtstudio-orb-%1").arg(getuid())));
     QVERIFY(QDir().mkpath(folder.path()));
