@@ -370,19 +370,19 @@ NamingNode nodeAt(const RtPath &path, NamingBrowser::Check check)
     return objectNode(object.in(), name, text, check);
 }
 
-/// Fills in the children of `node` (at `path`) down to `depth` levels.
+/// Fills in the children of `node` (at `path`) down to `depth` levels. A manager's slaves are listed
+/// below it, with their components; slaves are not asked for slaves of their own (@p belowManager),
+/// so that two managers naming each other cannot make the walk endless.
 void grow(NamingNode &node, const RtPath &path, int depth, const QStringList &rootServers,
-          NamingBrowser::Check check)
+          NamingBrowser::Check check, bool belowManager = false)
 {
     if (depth == 0)
         return;
     if (node.type != NodeType::Root && node.type != NodeType::Server
         && node.type != NodeType::Context && node.type != NodeType::Manager)
         return;
-    const bool named = node.type != NodeType::Manager;
     node.children = childrenOf(node, path, rootServers, check);
-    // A manager's own children are not bound in the name server; only named nodes recurse.
-    if (!named)
+    if (belowManager)
         return;
     std::vector<NamingNode *> managers;
     for (NamingNode &child : node.children) {
@@ -405,10 +405,11 @@ void grow(NamingNode &node, const RtPath &path, int depth, const QStringList &ro
     // Managers are asked for their components only when checking, and all at once.
     if (check != NamingBrowser::Check::Objects || depth == 1)
         return;
+    const bool slaves = node.type == NodeType::Manager;
     forEachConcurrently(managers.size(), [&](std::size_t i) {
         NamingNode &manager = *managers[i];
         try {
-            grow(manager, *RtPath::parse(manager.path), depth - 1, {}, check);
+            grow(manager, *RtPath::parse(manager.path), depth - 1, {}, check, slaves);
         } catch (const Error &e) {
             manager.reason = e.message();
             if (e.kind() == Error::Kind::Timeout)

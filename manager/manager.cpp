@@ -160,8 +160,14 @@ bool Manager::start(std::string *error)
     std::vector<std::string> errors;
     if (!serving)
         return true;
-    for (const std::string &path :
-         NamingRegistrar::expand(m_config.value("manager.naming_formats", "%h.host_cxt/%n.mgr"), values)) {
+    // A slave its master started stays out of the name servers, as OpenRTM-aist's do: it is reached
+    // through its master (get_slave_managers, rtshell's `manager.mgr/slave.mgr`). A manager a user
+    // started puts itself there, master or not.
+    const std::vector<std::string> names
+        = m_config.contains("manager.spawned_by")
+              ? std::vector<std::string>()
+              : NamingRegistrar::expand(m_config.value("manager.naming_formats", "%h.host_cxt/%n.mgr"), values);
+    for (const std::string &path : names) {
         if (m_naming->bind(path, m_self, &errors))
             m_ownNames.push_back(path);
     }

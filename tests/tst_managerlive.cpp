@@ -121,6 +121,7 @@ private slots:
     void registrationsSideBySideMakeContextsOnce();
     void slavesStartedSideBySideServeOneConnection();
     void startedProcessesAreCalledRtmanager();
+    void startedSlavesStayOutOfNaming();
 
 private:
     RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
@@ -867,6 +868,18 @@ void TestManagerLive::sameHostPeersUseUnixSocket()
     QCOMPARE(QString(profile->instance_name), QStringLiteral("ConsoleIn0"));
     QVERIFY(unixSocketsAt(path) >= 2);
     m_live->stop(process);
+}
+
+void TestManagerLive::startedSlavesStayOutOfNaming()
+{
+    // As OpenRTM-aist's: the master is in the name server, the slaves it starts are reached through
+    // it (their components are named as usual).
+    RTC::RTObject_var remote = create("ConsoleIn?instance_name=outside0&manager_name=slaveQ");
+    QVERIFY(!CORBA::is_nil(remote));
+    QVERIFY(slavePid("slaveQ") > 0);
+    QVERIFY(!CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/manager.mgr"))));
+    QVERIFY(!CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/outside0.rtc"))));
+    QVERIFY(CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/slaveQ.mgr"))));
 }
 
 QTEST_GUILESS_MAIN(TestManagerLive)

@@ -491,6 +491,9 @@ void TestRtctlRt::pathsBelowAManager()
     QCOMPARE(rtctl({"ls", "manager.mgr"}, dir).lines(),
              QStringList({"ConsoleIn0.rtc", "Far0.rtc", "slave0.mgr"}));
     QVERIFY(rtctl({"cat", "manager.mgr/Far0.rtc"}, dir).out.contains("Far0"));
+    // `ls -R` goes into the slaves too (rtshell's rtls does), listing what each hosts.
+    const QString recursive = rtctl({"ls", "-R", "manager.mgr"}, dir).out;
+    QVERIFY2(recursive.contains(QStringLiteral("manager.mgr/slave0.mgr:\nFar0.rtc\n")), qPrintable(recursive));
 
     const QString far = QStringLiteral("manager.mgr/slave0.mgr/Far0.rtc");
     const Result cat = rtctl({"cat", far}, dir);
