@@ -218,12 +218,19 @@ void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::Local
     emit statusMessage(tr("Starting the local runtime…"));
     m_session->submit(
         SystemEditor::OnlineSession::deploymentHost(),
-        [] {
+        [ownership = m_ownership] {
             QString error;
             const Deploy::LocalRuntimeState state
                 = Deploy::LocalRuntime().start(Codegen::Installation::managerProgram(), &error);
             if (!error.isEmpty())
                 throw Corba::Error(Corba::Error::Kind::System, error);
+            std::lock_guard lock(ownership->mutex);
+            ownership->started = ownership->started || state.startedNow;
+            if (ownership->quitting && ownership->started) {
+                // The window quit while this start was under way.
+                Deploy::LocalRuntime().stop(nullptr);
+                ownership->started = false;
+            }
             return QVariant::fromValue(state);
         },
         this,
@@ -236,7 +243,6 @@ void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::Local
                 return;
             }
             m_localRuntime = result.value.value<Deploy::LocalRuntimeState>();
-            m_startedLocalRuntime = m_startedLocalRuntime || m_localRuntime.startedNow;
             m_nameService->addServer(m_localRuntime.nameServerAddress());
             m_docks.first()->show();
             showLocalRuntime();
@@ -251,10 +257,12 @@ void OnlineDocks::stopLocalRuntime()
 {
     m_session->submit(
         SystemEditor::OnlineSession::deploymentHost(),
-        [] {
+        [ownership = m_ownership] {
             QString error;
+            std::lock_guard lock(ownership->mutex);
             if (!Deploy::LocalRuntime().stop(&error))
                 throw Corba::Error(Corba::Error::Kind::System, error);
+            ownership->started = false;
             return QVariant();
         },
         this,
@@ -264,7 +272,6 @@ void OnlineDocks::stopLocalRuntime()
                 return;
             }
             m_localRuntime = Deploy::LocalRuntimeState();
-            m_startedLocalRuntime = false;
             showLocalRuntime();
             m_nameService->refresh();
             emit statusMessage(tr("Local runtime stopped."));
@@ -273,8 +280,14 @@ void OnlineDocks::stopLocalRuntime()
 
 void OnlineDocks::quitting()
 {
-    if (m_startedLocalRuntime && !(m_keepLocalRuntime && m_keepLocalRuntime->isChecked()))
+    if (m_keepLocalRuntime && m_keepLocalRuntime->isChecked())
+        return;
+    std::lock_guard lock(m_ownership->mutex);
+    m_ownership->quitting = true;
+    if (m_ownership->started) {
         Deploy::LocalRuntime().stop(nullptr);
+        m_ownership->started = false;
+    }
 }
 
 void OnlineDocks::runLocally(const Profile::RtsProfile &profile,

@@ -8,6 +8,8 @@
 #include <QPointF>
 
 #include <functional>
+#include <memory>
+#include <mutex>
 
 class QAction;
 class QDockWidget;
@@ -146,8 +148,17 @@ private:
     SystemEditor::ExecutionContextView *m_contexts;
     SystemEditor::ManagerView *m_manager;
     SystemEditor::PortMonitor *m_portMonitor;
+    /// Whether this window started the running local runtime, shared with the worker that starts
+    /// it: a quit while a start is under way still stops what that start brings up.
+    struct LocalRuntimeOwnership
+    {
+        std::mutex mutex;
+        bool started = false;
+        bool quitting = false; ///< quitting() ran (and the runtime is not to be kept)
+    };
+
     Deploy::LocalRuntimeState m_localRuntime;
-    bool m_startedLocalRuntime = false;
+    std::shared_ptr<LocalRuntimeOwnership> m_ownership = std::make_shared<LocalRuntimeOwnership>();
     QLabel *m_localRuntimeLabel = nullptr;
     QAction *m_keepLocalRuntime = nullptr;
     QList<QDockWidget *> m_docks;

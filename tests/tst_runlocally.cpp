@@ -40,6 +40,7 @@ private slots:
     void runsTheExampleAndStopsOnQuit();
     void keptRuntimeOutlivesTheWindow();
     void terminationSignalStopsTheRuntime();
+    void quitWhileStartingStopsTheRuntime();
 
 private:
     OnlineDocument *onlineDiagram(MainWindow &window) const;
@@ -216,6 +217,22 @@ void TestRunLocally::terminationSignalStopsTheRuntime()
     QVERIFY(studio.waitForFinished(30000));
     QCOMPARE(studio.exitStatus(), QProcess::NormalExit);
     QCOMPARE(studio.exitCode(), 0);
+    QVERIFY(!Deploy::LocalRuntime().status().nameServer.running);
+    QVERIFY(!Deploy::LocalRuntime().status().manager.running);
+}
+
+void TestRunLocally::quitWhileStartingStopsTheRuntime()
+{
+    // Closed before the start it asked for has come back: the start still runs to its end, and
+    // what it brought up is stopped then.
+    QSettings().clear();
+    QVERIFY(!Deploy::LocalRuntime().status().running());
+    auto window = std::make_unique<MainWindow>();
+    window->show();
+    window->findChild<QAction *>(QStringLiteral("actionStartLocalRuntime"))->trigger();
+    QVERIFY(!window->onlineDocks()->localRuntime().running()); // not back yet
+    window->close();
+    window.reset();
     QVERIFY(!Deploy::LocalRuntime().status().nameServer.running);
     QVERIFY(!Deploy::LocalRuntime().status().manager.running);
 }
