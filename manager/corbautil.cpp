@@ -225,6 +225,19 @@ bool sameObject(CORBA::Object_ptr a, CORBA::Object_ptr b)
     }
 }
 
+std::vector<std::string> tcpAddresses(CORBA::Object_ptr object)
+{
+    std::vector<std::string> result;
+    if (CORBA::is_nil(object))
+        return result;
+    try {
+        for (const auto &[host, port] : iiopAddresses(object).addresses)
+            result.push_back(host + ':' + std::to_string(port));
+    } catch (const CORBA::Exception &) {
+    }
+    return result;
+}
+
 std::string describeException(const CORBA::Exception &e)
 {
     std::string text = e._name();

@@ -6,6 +6,7 @@
 #include <SDOPackage.hh>
 
 #include <string>
+#include <vector>
 
 namespace Runtime {
 
@@ -67,6 +68,9 @@ std::string localSocketFolder(bool removeStale = true);
  * keys are and they share a TCP address.
  */
 bool sameObject(CORBA::Object_ptr a, CORBA::Object_ptr b);
+
+/// `host:port` of each TCP address a reference offers (none for an unreadable one).
+std::vector<std::string> tcpAddresses(CORBA::Object_ptr object);
 
 /// The running program's name (`rtmanager`, `ConsoleInComp`, …), the prefix of its messages.
 const char *programName();

@@ -19,12 +19,16 @@ Manager::Manager(const Properties &config)
     : m_config(config)
 {
     m_isMaster = m_config.isYes("manager.is_master");
-    std::string name = m_config.value("manager.instance_name", "manager");
-    const size_t pid = name.find("%p");
-    if (pid != std::string::npos)
-        name.replace(pid, 2, std::to_string(getpid()));
-    m_instanceName = name;
-    m_config.set("manager.instance_name", name);
+    m_instanceName = expandedInstanceName(m_config.value("manager.instance_name", "manager"), getpid());
+    m_config.set("manager.instance_name", m_instanceName);
+}
+
+std::string expandedInstanceName(std::string format, pid_t pid)
+{
+    const size_t at = format.find("%p");
+    if (at != std::string::npos)
+        format.replace(at, 2, std::to_string(pid));
+    return format;
 }
 
 Manager::~Manager()

@@ -16,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <map>
 #include <set>
 #include <string>
 #include <sys/types.h>
@@ -186,7 +187,6 @@ private:
     int reserveLoopbackPort();
     pid_t startSlaveProcess(const std::string &address, const std::string &name, const std::string &master);
     RTM::Manager_ptr waitForSlave(pid_t pid, const std::string &address);
-    bool joinConfirmed(RTM::Manager_ptr slave, std::chrono::steady_clock::time_point deadline);
     std::string requestJoin(RTM::Manager_ptr master, bool *retry);
     void dropSlave(RTM::Manager_ptr manager);
     void joinMaster();
@@ -210,6 +210,14 @@ private:
     /// One slave start at a time: concurrent creates must not pick one port twice or start one name twice.
     std::mutex m_spawnMutex;
     std::set<int> m_startingPorts;
+    /// The slaves spawnSlave() waits for, by the address each was given: their join needs no
+    /// call back for their profile.
+    struct StartingSlave
+    {
+        pid_t pid = 0;
+        std::string name;
+    };
+    std::map<std::string, StartingSlave> m_startingSlaves;
     ForkServer m_forkServer;
     std::vector<ComponentFactory> m_factories;
     std::vector<std::unique_ptr<Component>> m_components;

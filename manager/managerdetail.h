@@ -30,4 +30,7 @@ struct Manager::Module
     void *handle = nullptr;
 };
 
+/// A manager's instance name from its `manager.instance_name` (`%p` is its process id).
+std::string expandedInstanceName(std::string format, pid_t pid);
+
 } // namespace Runtime

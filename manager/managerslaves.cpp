@@ -179,7 +179,15 @@ RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const st
     }
     const std::string address = host + ':' + std::to_string(port);
     const pid_t pid = startSlaveProcess(address, name, m_address);
+    if (pid > 0) {
+        std::lock_guard lock(m_mutex);
+        m_startingSlaves[address] = {pid, expandedInstanceName(name, pid)};
+    }
     RTM::Manager_var slave = pid < 0 ? RTM::Manager::_nil() : waitForSlave(pid, address);
+    {
+        std::lock_guard lock(m_mutex);
+        m_startingSlaves.erase(address);
+    }
     release();
     if (pid < 0)
         fail("create_component: cannot start a slave manager", error);
@@ -242,12 +250,8 @@ RTM::Manager_ptr Manager::waitForSlave(pid_t pid, const std::string &address)
             if (slave->address == address || slave->pid == pid)
                 found = RTM::Manager::_duplicate(slave->reference);
         }
-        if (!CORBA::is_nil(found)) {
-            lock.unlock();
-            if (joinConfirmed(found, deadline))
-                return found._retn();
-            return RTM::Manager::_nil();
-        }
+        if (!CORBA::is_nil(found))
+            return found._retn();
         // Woken by add_slave_manager; the short bound notices a child that died on start.
         if (m_slavesChanged.wait_for(lock, std::chrono::milliseconds(100)) == std::cv_status::timeout) {
             if (kill(pid, 0) != 0 || waitpid(pid, nullptr, WNOHANG) == pid
@@ -256,26 +260,6 @@ RTM::Manager_ptr Manager::waitForSlave(pid_t pid, const std::string &address)
         }
     }
     return RTM::Manager::_nil();
-}
-
-bool Manager::joinConfirmed(RTM::Manager_ptr slave, std::chrono::steady_clock::time_point deadline)
-{
-    // add_slave_manager registers the slave before its reply is on the way back. Until the slave
-    // has that reply it does not know it joined, and a master going down in between (a test or a
-    // benchmark ending right after create_component) left it reporting a failed join. The slave
-    // lists its master only once the reply arrived, so wait for that.
-    while (std::chrono::steady_clock::now() < deadline) {
-        try {
-            RTM::ManagerList_var masters = slave->get_master_managers();
-            if (masters->length() > 0)
-                return true;
-        } catch (const CORBA::Exception &) {
-            return false;
-        }
-        // The reply is on its way already: a short pause is enough.
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
-    }
-    return false;
 }
 
 bool Manager::addSlave(RTM::Manager_ptr manager)
@@ -287,11 +271,26 @@ bool Manager::addSlave(RTM::Manager_ptr manager)
     // Calls to a slave (create, aggregation, watchdog) never wait longer than this.
     omniORB::setClientCallTimeout(slave->reference,
                                   CORBA::ULong(configNumber("manager.slave_call_timeout", 2000)));
+    // A slave this master started is known by the address it was given; others are asked.
+    {
+        std::lock_guard lock(m_mutex);
+        for (const std::string &address : tcpAddresses(manager)) {
+            const auto starting = m_startingSlaves.find(address);
+            if (starting == m_startingSlaves.end())
+                continue;
+            slave->name = starting->second.name;
+            slave->address = address;
+            slave->pid = starting->second.pid;
+            break;
+        }
+    }
     try {
-        RTM::ManagerProfile_var profile = slave->reference->get_profile();
-        slave->name = nvString(profile->properties, "instance_name");
-        slave->address = nvString(profile->properties, "address");
-        slave->pid = pid_t(std::stol("0" + nvString(profile->properties, "pid")));
+        if (slave->pid == 0) {
+            RTM::ManagerProfile_var profile = slave->reference->get_profile();
+            slave->name = nvString(profile->properties, "instance_name");
+            slave->address = nvString(profile->properties, "address");
+            slave->pid = pid_t(std::stol("0" + nvString(profile->properties, "pid")));
+        }
     } catch (const CORBA::Exception &) {
         return false;
     }
@@ -390,20 +389,24 @@ void Manager::joinMaster()
     const pid_t parent = pid_t(configNumber("manager.spawned_by", 0));
     const auto deadline = std::chrono::steady_clock::now()
                           + std::chrono::milliseconds(long(configNumber("manager.slave_start_timeout", 10000)));
+    // The master counts this slave as started once it has registered it, before its answer is
+    // back here, and may call create_component at once: list it as the master before asking.
+    addMaster(manager);
     std::string problem;
     for (;;) {
         bool retry = false;
         problem = requestJoin(manager, &retry);
-        if (problem.empty()) {
-            // Only now is this manager the master's slave: waitForSlave() on the master watches for it.
-            addMaster(manager);
+        if (problem.empty())
             return;
-        }
         const bool parentAlive = parent > 0 && getppid() == parent;
         if (!(retry || parentAlive) || std::chrono::steady_clock::now() > deadline)
             break;
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
+    removeMaster(manager);
+    // A master that went down meanwhile took this slave's parent with it: it goes too, quietly.
+    if (parent > 0 && getppid() != parent)
+        return;
     std::cerr << programName() << ": cannot join master " << master << ": " << problem << std::endl;
 }
 

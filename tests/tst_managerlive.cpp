@@ -122,6 +122,7 @@ private slots:
     void slavesStartedSideBySideServeOneConnection();
     void startedProcessesAreCalledRtmanager();
     void startedSlavesStayOutOfNaming();
+    void slaveFoundByItsExpandedName();
 
 private:
     RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
@@ -880,6 +881,23 @@ void TestManagerLive::startedSlavesStayOutOfNaming()
     QVERIFY(!CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/manager.mgr"))));
     QVERIFY(!CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/outside0.rtc"))));
     QVERIFY(CORBA::is_nil(CORBA::Object_var(resolve(localHost() + ".host_cxt/slaveQ.mgr"))));
+}
+
+void TestManagerLive::slaveFoundByItsExpandedName()
+{
+    // A `manager_%p` slave is then `manager_<its pid>`: a request naming it goes to that process.
+    RTC::RTObject_var first = create("ConsoleIn?instance_name=byPid0&manager_name=manager_%p");
+    QVERIFY(!CORBA::is_nil(first));
+    RTM::ManagerList_var slaves = m_master->get_slave_managers();
+    QCOMPARE(slaves->length(), CORBA::ULong(1));
+    const QString pid = nv(RTM::ManagerProfile_var(slaves[0]->get_profile())->properties, "pid");
+    QVERIFY(pid.toLongLong() > 0);
+    RTC::RTObject_var second = create(QStringLiteral("ConsoleIn?instance_name=byPid1&manager_name=manager_%1").arg(pid));
+    QVERIFY(!CORBA::is_nil(second));
+    slaves = m_master->get_slave_managers();
+    QCOMPARE(slaves->length(), CORBA::ULong(1));
+    RTC::RTCList_var hosted = slaves[0]->get_components();
+    QCOMPARE(hosted->length(), CORBA::ULong(2));
 }
 
 QTEST_GUILESS_MAIN(TestManagerLive)
