@@ -29,6 +29,7 @@
 #include "sequencerunner.h"
 
 #include <QCoreApplication>
+#include <QDeadlineTimer>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -136,28 +137,6 @@ double rtctlStartMs()
     return median(runs);
 }
 
-/// The middle of CreationRounds calls creating @p count, each in a fresh name server and master
-/// (a failed call is the answer).
-Creation createInFreshMasters(int count, bool separate, QString *error)
-{
-    std::vector<double> calls;
-    for (int round = 0; round < CreationRounds; ++round) {
-        LiveTest::LiveSystem live;
-        const quint16 port = LiveTest::freePort();
-        if (!live.startNameServer(error)
-            || !live.startProcess(QStringLiteral(RTMANAGER_PATH), masterArguments(port, {live.namingServer()}),
-                                  "rtmanager ready", error))
-            return {};
-        const Creation c = createThroughRtctl(port, count, separate);
-        if (!c.error.isEmpty())
-            return c;
-        calls.push_back(c.elapsedMs);
-    }
-    return {median(calls), QString()};
-}
-
-// --- OpenRTM-aist's rtcd2, side by side ---
-
 /// Every process below @p pid, deepest first. Children are listed per thread that started them
 /// (slaves are started from ORB threads).
 QList<qint64> descendants(qint64 pid)
@@ -177,6 +156,52 @@ QList<qint64> descendants(qint64 pid)
     }
     return result;
 }
+
+/// Waits (at most @p timeoutMs) until none of @p processes runs any more (gone or a zombie).
+void waitUntilGone(const QList<qint64> &processes, int timeoutMs)
+{
+    const QDeadlineTimer deadline(timeoutMs);
+    for (const qint64 pid : processes) {
+        for (;;) {
+            QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+            const QByteArray text = stat.open(QIODevice::ReadOnly) ? stat.readAll() : QByteArray();
+            const int close = text.lastIndexOf(')');
+            if (close < 0 || text.size() <= close + 2 || text.at(close + 2) == 'Z' || deadline.hasExpired())
+                break;
+            QThread::msleep(1);
+        }
+    }
+}
+
+/// The middle of CreationRounds calls creating @p count, each in a fresh name server and master
+/// (a failed call is the answer). Each round waits for the slaves of the one before to end: they
+/// notice their master is gone within a tenth of a second, and would still be ending meanwhile.
+Creation createInFreshMasters(int count, bool separate, QString *error)
+{
+    std::vector<double> calls;
+    for (int round = 0; round < CreationRounds; ++round) {
+        QList<qint64> started;
+        {
+            LiveTest::LiveSystem live;
+            const quint16 port = LiveTest::freePort();
+            QProcess *master = nullptr;
+            if (!live.startNameServer(error)
+                || !(master = live.startProcess(QStringLiteral(RTMANAGER_PATH),
+                                                masterArguments(port, {live.namingServer()}), "rtmanager ready",
+                                                error)))
+                return {};
+            const Creation c = createThroughRtctl(port, count, separate);
+            if (!c.error.isEmpty())
+                return c;
+            calls.push_back(c.elapsedMs);
+            started = descendants(master->processId());
+        }
+        waitUntilGone(started, 10000);
+    }
+    return {median(calls), QString()};
+}
+
+// --- OpenRTM-aist's rtcd2, side by side ---
 
 QString openRtmPrefix()
 {
@@ -210,10 +235,19 @@ public:
                            << "logger.enable: NO\n"
                            << (tuned ? "manager.modules.preload: ConsoleIn.so\n" : "");
         conf.close();
-        qputenv("LD_LIBRARY_PATH", (prefix + QStringLiteral("/lib:")).toUtf8() + qgetenv("LD_LIBRARY_PATH"));
-        qputenv("PATH", (prefix + QStringLiteral("/bin:")).toUtf8() + qgetenv("PATH"));
+        // OpenRTM-aist's libraries and programs for rtcd2 (and the slaves it starts) only: rtmanager
+        // and rtctl, started by this process later, are not to search its folders too.
+        const QByteArray libraryPath = qgetenv("LD_LIBRARY_PATH");
+        const QByteArray path = qgetenv("PATH");
+        qputenv("LD_LIBRARY_PATH", (prefix + QStringLiteral("/lib:")).toUtf8() + libraryPath);
+        qputenv("PATH", (prefix + QStringLiteral("/bin:")).toUtf8() + path);
         m_master = m_live.startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), conf.fileName()},
                                        QString(), &m_error, 0);
+        if (libraryPath.isNull())
+            qunsetenv("LD_LIBRARY_PATH");
+        else
+            qputenv("LD_LIBRARY_PATH", libraryPath);
+        qputenv("PATH", path);
         // Listening comes before the manager object is served: wait until it answers.
         const QStringList list {QStringLiteral("mgr"), QStringLiteral("corbaloc::127.0.0.1:%1").arg(port),
                                 QStringLiteral("list")};

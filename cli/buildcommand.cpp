@@ -52,7 +52,6 @@ QString parseArguments(const QStringList &arguments, BuildOptions *options)
     return QString();
 }
 
-
 } // namespace
 
 QString BuildCommand::summary() const

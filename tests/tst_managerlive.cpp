@@ -900,7 +900,6 @@ void TestManagerLive::slaveFoundByItsExpandedName()
     QCOMPARE(hosted->length(), CORBA::ULong(2));
 }
 
-QTEST_GUILESS_MAIN(TestManagerLive)
 namespace {
 
 /// The inodes of the sockets process @p pid holds (its /proc/<pid>/fd links read `socket:[<inode>]`).
@@ -1072,4 +1071,5 @@ void TestManagerLive::startedProcessesAreCalledRtmanager()
     QCOMPARE(commandName(*forkServer), QByteArray("rtmanager"));
 }
 
+QTEST_GUILESS_MAIN(TestManagerLive)
 #include "tst_managerlive.moc"
