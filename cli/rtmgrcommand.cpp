@@ -206,7 +206,12 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
     if (actions.isEmpty())
         actions.append({QStringLiteral("list"), QString()});
     const RtPath target = path(options.positionals.first());
-    const NamingNode node = NamingBrowser::node(target);
+    // `corbaloc::host:port` names a manager's object ("manager" key): its first call tells whether
+    // it answers, a round trip less than asking first what it is.
+    const NamingNode node = target.isDirect() && target.corbaloc.endsWith(QLatin1String("/manager"))
+                                ? NamingNode {QStringLiteral("manager.mgr"), NodeType::Manager, target.toString(),
+                                              target.corbaloc, {}, {}}
+                                : NamingBrowser::node(target);
     if (node.type != NodeType::Manager)
         throw Error(
             Error::Kind::WrongType,
