@@ -7,7 +7,7 @@
 //    the middle of five calls, each in a fresh master (rtcd2: one call).
 // 2. A large system: 1,000 components (ConsoleIn sources, ConsoleOut sinks) and 1,500 connectors
 //    over 10 slave managers (one per host context, started by the master through
-//    manager_address) registered in two name servers: restore (create + connect) + start, stop,
+//    manager_address), registered in two name servers: restore (create + connect) + start, stop,
 //    teardown, cryo and drift against the file, then the managers' memory per hosted component.
 //
 //    When an OpenRTM-aist 2.x prefix is known (OPENRTM_ROOT, else the one the build was configured
