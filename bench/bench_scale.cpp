@@ -38,8 +38,6 @@
 #include <QTextStream>
 #include <QThread>
 
-#include <csignal>
-
 #include <algorithm>
 #include <functional>
 
@@ -220,34 +218,11 @@ public:
         if (!m_live.startNameServer(&m_error))
             return;
         const QString examples = prefix + QStringLiteral("/share/openrtm-2.1/components/c++/examples/rtc");
-        QFile conf(m_dir.filePath(QStringLiteral("rtc.conf")));
-        if (!conf.open(QIODevice::WriteOnly | QIODevice::Text)) {
-            m_error = QStringLiteral("cannot write %1").arg(conf.fileName());
-            return;
-        }
-        QTextStream(&conf) << "corba.nameservers: " << m_live.namingServer() << "\n"
-                           << "corba.endpoints: 127.0.0.1:\n"
-                           << "corba.master_manager: 127.0.0.1:" << port << "\n"
-                           << "manager.is_master: YES\n"
-                           << "naming.formats: %h.host_cxt/%n.rtc\n"
-                           << "manager.modules.load_path: " << examples << "\n"
-                           << "manager.modules.C++.manager_cmd: " << prefix << "/bin/rtcd2\n"
-                           << "logger.enable: NO\n"
-                           << (tuned ? "manager.modules.preload: ConsoleIn.so\n" : "");
-        conf.close();
-        // OpenRTM-aist's libraries and programs for rtcd2 (and the slaves it starts) only: rtmanager
-        // and rtctl, started by this process later, are not to search its folders too.
-        const QByteArray libraryPath = qgetenv("LD_LIBRARY_PATH");
-        const QByteArray path = qgetenv("PATH");
-        qputenv("LD_LIBRARY_PATH", (prefix + QStringLiteral("/lib:")).toUtf8() + libraryPath);
-        qputenv("PATH", (prefix + QStringLiteral("/bin:")).toUtf8() + path);
-        m_master = m_live.startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), conf.fileName()},
-                                       QString(), &m_error, 0);
-        if (libraryPath.isNull())
-            qunsetenv("LD_LIBRARY_PATH");
-        else
-            qputenv("LD_LIBRARY_PATH", libraryPath);
-        qputenv("PATH", path);
+        QStringList extra {QStringLiteral("manager.modules.load_path: ") + examples};
+        if (tuned)
+            extra << QStringLiteral("manager.modules.preload: ConsoleIn.so");
+        m_master = m_live.startRtcdMaster(prefix, m_dir.filePath(QStringLiteral("rtc.conf")), port,
+                                          QStringLiteral("bench"), extra, &m_error);
         // Listening comes before the manager object is served: wait until it answers.
         const QStringList list {QStringLiteral("mgr"), QStringLiteral("corbaloc::127.0.0.1:%1").arg(port),
                                 QStringLiteral("list")};
@@ -259,14 +234,6 @@ public:
                 break;
             }
             QThread::msleep(10);
-        }
-    }
-    ~Rtcd2Master()
-    {
-        // Its slaves are processes of their own that outlive the master: end them first.
-        if (m_master) {
-            for (const qint64 pid : descendants(m_master->processId()))
-                ::kill(pid_t(pid), SIGKILL);
         }
     }
     QString error() const { return m_master ? m_error : m_error.isEmpty() ? QStringLiteral("rtcd2 did not start") : m_error; }

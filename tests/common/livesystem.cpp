@@ -230,18 +230,28 @@ QProcess *LiveSystem::startRtcdMaster(const QString &prefix, const QString &conf
                               + extraLines;
     conf.write((lines.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8());
     conf.close();
+    // Its libraries and programs (rtcd2 starts its slaves with the same environment).
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const auto &[variable, folder] : {std::pair {"LD_LIBRARY_PATH", "/lib"}, std::pair {"PATH", "/bin"}}) {
+        const QString name = QString::fromLatin1(variable);
+        const QString before = environment.value(name);
+        environment.insert(name, prefix + QLatin1String(folder) + (before.isEmpty() ? QString() : QLatin1Char(':') + before));
+    }
     QProcess *master = startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), confFile},
-                                    QString(), error, 0);
+                                    QString(), error, 0, environment);
     if (master)
         m_rtcdMasters.insert(master);
     return master;
 }
 
 QProcess *LiveSystem::startProcess(const QString &program, const QStringList &arguments,
-                                   const QString &readyText, QString *error, int timeoutMs)
+                                   const QString &readyText, QString *error, int timeoutMs,
+                                   const QProcessEnvironment &environment)
 {
     auto process = std::make_unique<QProcess>();
     prepareChild(*process, m_host.enterChild);
+    if (!environment.isEmpty())
+        process->setProcessEnvironment(environment);
     process->setProcessChannelMode(QProcess::ForwardedErrorChannel);
     process->start(program, arguments);
     QProcess *raw = process.get();

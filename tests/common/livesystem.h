@@ -3,6 +3,7 @@
 
 #include <QList>
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
 #include <QTemporaryDir>
@@ -72,9 +73,11 @@ public:
     QProcess *startPeer(const QStringList &components, QString *error, quint16 *port = nullptr,
                         const QString &host = QStringLiteral("livehost"), bool zombies = false);
 
-    /// Starts `program` and waits up to `timeoutMs` until its standard output contains `readyText`.
+    /// Starts `program` and waits up to `timeoutMs` until its standard output contains `readyText`;
+    /// a non-empty `environment` replaces this process's for it.
     QProcess *startProcess(const QString &program, const QStringList &arguments,
-                           const QString &readyText, QString *error, int timeoutMs = 20000);
+                           const QString &readyText, QString *error, int timeoutMs = 20000,
+                           const QProcessEnvironment &environment = {});
     /**
      * Starts the rtmanager `program` as a master (`-d`) serving on this system's address and
      * `port`, each of `options` passed as `-o KEY=VALUE` after the endpoint, and waits for
@@ -93,6 +96,7 @@ public:
      * 127.0.0.1:`masterPort`, registered with its components in this system's name server under
      * `<host>.host_cxt`, starting slaves with the same rtcd2. Its configuration goes to `confFile`
      * (slaves read the master's file, not its command line), `extraLines` after the common ones.
+     * It runs with the installation's lib and bin folders first in LD_LIBRARY_PATH and PATH.
      * Its slaves run in sessions of their own and outlive it: stopping it here stops them first.
      */
     QProcess *startRtcdMaster(const QString &prefix, const QString &confFile, quint16 masterPort,
