@@ -28,14 +28,6 @@ namespace {
 const QString fixtureDir = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
 const QString openRtmPrefix = QStringLiteral(RTSTUDIO_OPENRTM_PREFIX);
 
-/// Prepends @p dir to the path list in environment variable @p name of this process (inherited by
-/// every process the test starts).
-void prependToPath(const char *name, const QString &dir)
-{
-    const QByteArray old = qgetenv(name);
-    qputenv(name, old.isEmpty() ? dir.toLocal8Bit() : dir.toLocal8Bit() + ':' + old);
-}
-
 /// Configures the generated project in @p dir with OpenRTM-aist's CMake package and builds it
 /// in `dir`/build; false with the tools' output in @p log.
 bool buildAgainstOpenRtm(const QString &dir, QString *log)
@@ -142,9 +134,7 @@ void TestInteropBuild::initTestCase()
         QSKIP("skipped: no OpenRTM-aist");
     const QString config = openRtmPrefix + "/lib/cmake/openrtm-2.1/OpenRTMConfig.cmake";
     QVERIFY2(QFile::exists(config), qPrintable("RTSTUDIO_OPENRTM_PREFIX has no " + config));
-    prependToPath("LD_LIBRARY_PATH", openRtmPrefix + "/lib");
-    // A manager finds rtcprof2 on the PATH to list the modules of its load path.
-    prependToPath("PATH", openRtmPrefix + "/bin");
+    LiveTest::useOpenRtm(openRtmPrefix);
 
     int argc = 0;
     m_orb = CORBA::ORB_init(argc, nullptr);

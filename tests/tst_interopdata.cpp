@@ -53,7 +53,7 @@ void TestInteropData::initTestCase()
 {
     if (openRtmPrefix.isEmpty())
         QSKIP("skipped: no OpenRTM-aist");
-    qputenv("LD_LIBRARY_PATH", (openRtmPrefix + "/lib:").toUtf8() + qgetenv("LD_LIBRARY_PATH"));
+    LiveTest::useOpenRtm(openRtmPrefix);
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     m_context = QStringLiteral("/%1/openrtm.host_cxt").arg(m_live.namingServer());

@@ -18,12 +18,6 @@ namespace {
 
 const QString openRtmPrefix = QStringLiteral(RTSTUDIO_OPENRTM_PREFIX);
 
-void prependToPath(const char *name, const QString &dir)
-{
-    const QByteArray old = qgetenv(name);
-    qputenv(name, old.isEmpty() ? dir.toLocal8Bit() : dir.toLocal8Bit() + ':' + old);
-}
-
 bool copyFiles(const QString &from, const QStringList &names, const QString &to)
 {
     for (const QString &name : names) {
@@ -58,7 +52,7 @@ void TestInteropFsm::initTestCase()
         QSKIP("skipped: no OpenRTM-aist");
     QVERIFY2(QFile::exists(openRtmPrefix + "/include/openrtm-2.1/rtm/Macho.h"),
              qPrintable("RTSTUDIO_OPENRTM_PREFIX has no rtm/Macho.h"));
-    prependToPath("LD_LIBRARY_PATH", openRtmPrefix + "/lib");
+    LiveTest::useOpenRtm(openRtmPrefix);
     QVERIFY(m_work.isValid());
     m_project = m_work.filePath("TrafficLight");
     QVERIFY(QDir().mkpath(m_project));

@@ -76,8 +76,7 @@ void TestInteropOnline::initTestCase()
 {
     if (openRtmPrefix.isEmpty() || !QFile::exists(openRtmPrefix + "/bin/rtcd2"))
         QSKIP("skipped: no OpenRTM-aist (RTSTUDIO_OPENRTM_PREFIX unset or without bin/rtcd2)");
-    qputenv("LD_LIBRARY_PATH", (openRtmPrefix + "/lib:").toUtf8() + qgetenv("LD_LIBRARY_PATH"));
-    qputenv("PATH", (openRtmPrefix + "/bin:").toUtf8() + qgetenv("PATH"));
+    LiveTest::useOpenRtm(openRtmPrefix);
     Corba::Orb::setCallTimeout(5000);
     QVERIFY(m_work.isValid());
     QString error;

@@ -305,9 +305,7 @@ void TestInteropSystem::initTestCase()
 {
     if (openRtmPrefix.isEmpty() || !QFile::exists(openRtmPrefix + "/bin/rtcd2"))
         QSKIP("skipped: no OpenRTM-aist (RTSTUDIO_OPENRTM_PREFIX unset or without bin/rtcd2)");
-    qputenv("LD_LIBRARY_PATH", (openRtmPrefix + "/lib:").toUtf8() + qgetenv("LD_LIBRARY_PATH"));
-    // The master runs rtcprof2 from its PATH to list the modules it can load.
-    qputenv("PATH", (openRtmPrefix + "/bin:").toUtf8() + qgetenv("PATH"));
+    LiveTest::useOpenRtm(openRtmPrefix);
     QVERIFY(m_work.isValid());
     int argc = 0;
     m_orb = CORBA::ORB_init(argc, nullptr);

@@ -114,6 +114,24 @@ QByteArray managerLocation(quint16 port)
     return QStringLiteral("corbaloc:iiop:127.0.0.1:%1/manager").arg(port).toUtf8();
 }
 
+QProcessEnvironment openRtmEnvironment(const QString &prefix)
+{
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const auto &[name, folder] : {std::pair {QStringLiteral("LD_LIBRARY_PATH"), QStringLiteral("/lib")},
+                                       std::pair {QStringLiteral("PATH"), QStringLiteral("/bin")}}) {
+        const QString before = environment.value(name);
+        environment.insert(name, prefix + folder + (before.isEmpty() ? QString() : QLatin1Char(':') + before));
+    }
+    return environment;
+}
+
+void useOpenRtm(const QString &prefix)
+{
+    const QProcessEnvironment environment = openRtmEnvironment(prefix);
+    for (const char *name : {"LD_LIBRARY_PATH", "PATH"})
+        qputenv(name, environment.value(QString::fromLatin1(name)).toLocal8Bit());
+}
+
 QList<qint64> childProcesses(qint64 parent)
 {
     QList<qint64> children;
@@ -230,15 +248,9 @@ QProcess *LiveSystem::startRtcdMaster(const QString &prefix, const QString &conf
                               + extraLines;
     conf.write((lines.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8());
     conf.close();
-    // Its libraries and programs (rtcd2 starts its slaves with the same environment).
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    for (const auto &[variable, folder] : {std::pair {"LD_LIBRARY_PATH", "/lib"}, std::pair {"PATH", "/bin"}}) {
-        const QString name = QString::fromLatin1(variable);
-        const QString before = environment.value(name);
-        environment.insert(name, prefix + QLatin1String(folder) + (before.isEmpty() ? QString() : QLatin1Char(':') + before));
-    }
+    // rtcd2 starts its slaves with the same environment.
     QProcess *master = startProcess(prefix + QStringLiteral("/bin/rtcd2"), {QStringLiteral("-f"), confFile},
-                                    QString(), error, 0, environment);
+                                    QString(), error, 0, openRtmEnvironment(prefix));
     if (master)
         m_rtcdMasters.insert(master);
     return master;

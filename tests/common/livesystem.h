@@ -31,6 +31,13 @@ QByteArray managerLocation(quint16 port);
  */
 QList<qint64> childProcesses(qint64 parent);
 
+/// This process's environment with OpenRTM-aist's installation at @p prefix first: its lib folder in
+/// LD_LIBRARY_PATH (rtcd2 and its example programs find their libraries), its bin folder in PATH (a
+/// master runs rtcprof2 to list the modules it can load).
+QProcessEnvironment openRtmEnvironment(const QString &prefix);
+/// Sets those two variables in this process's environment, for every program it starts from now on.
+void useOpenRtm(const QString &prefix);
+
 /// Where a LiveSystem runs its servers.
 struct LiveHost
 {
