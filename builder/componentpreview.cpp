@@ -112,13 +112,13 @@ void ComponentPreview::relayout()
                                                 bySide.value(QStringLiteral("RIGHT")).size()));
     // Labels sit outside the box: keep room for the widest on each side, then centre.
     const QFontMetricsF metrics(font());
+    const QFontMetricsF typeMetrics(typeFont());
     const auto labelWidth = [&](const QString &side) {
         qreal widest = 0;
         for (const Port *port : bySide.value(side))
             widest = qMax(widest,
-                          qMax(metrics.horizontalAdvance(port->name),
-                               metrics.horizontalAdvance(port->type) * 0.85));
-        return widest > 0 ? widest + Marker + 8 : Marker;
+                          qMax(metrics.horizontalAdvance(port->name), typeMetrics.horizontalAdvance(port->type)));
+        return widest > 0 ? widest + Marker + LabelGap + 2 * EdgeMargin : Marker;
     };
     const qreal left = labelWidth(QStringLiteral("LEFT"));
     const qreal right = labelWidth(QStringLiteral("RIGHT"));
