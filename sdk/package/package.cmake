@@ -164,6 +164,9 @@ install(FILES "${rtsdk_pc_dir}/openrtm2.pc" "${rtsdk_pc_dir}/openrtm-aist.pc" "$
     DESTINATION lib/pkgconfig COMPONENT sdk)
 install(PROGRAMS ${rtsdk_tools} DESTINATION bin COMPONENT sdk)
 # rtmanager runs components on the SDK's library: installed, it finds it in <prefix>/lib wherever the prefix is.
+# The build tree has the same layout (programs and lib/ one folder below its root), so rtmanager is built with
+# that path too. Otherwise CMake pads the build tree's path with empty entries to make room for rewriting
+# it on install, and the dynamic loader reads an empty entry as the working directory.
 if(TARGET rtmanager)
-    set_property(TARGET rtmanager APPEND PROPERTY INSTALL_RPATH "$ORIGIN/../lib")
+    set_target_properties(rtmanager PROPERTIES INSTALL_RPATH "$ORIGIN/../lib" BUILD_WITH_INSTALL_RPATH ON)
 endif()
