@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Component creation through RTM::Manager::create_component on a real rtmanager: 1 and 10
-// components in the manager's own process and in separate (newly spawned slave) processes.
+// Component creation through RTM::Manager::create_component on a real rtmanager: 1, 10 and 1,000
+// components in the manager's own process and 1 and 10 in separate (newly spawned slave) processes.
 // Targets: ≤ 1 ms per component in the same process, ≤ 10 ms per component in separate processes.
 // Naming is off so the table shows creation itself; run with --naming HOST:PORT to include it.
 #include <Manager.hh>
@@ -14,6 +14,8 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
+
+#include <vector>
 
 namespace {
 
@@ -104,7 +106,8 @@ int main(int argc, char **argv)
         << (naming.isEmpty() ? ", naming off" : ", naming on " + naming) << "\n\n";
     out << QString("%1 %2 %3 %4\n").arg("placement", -20).arg("components", 10).arg("ms/component", 13).arg("target", 8);
     for (bool separate : {false, true}) {
-        for (int count : {1, 10}) {
+        // 1,000 in one process: a create's cost must not grow with the components already hosted.
+        for (int count : separate ? std::vector<int> {1, 10} : std::vector<int> {1, 10, 1000}) {
             const double ms = measure(orb, naming, count, separate);
             out << QString("%1 %2 %3 %4\n")
                        .arg(separate ? "separate processes" : "same process", -20)

@@ -224,6 +224,7 @@ void Manager::cleanup()
     {
         std::lock_guard lock(m_mutex);
         components.swap(m_components);
+        m_instanceNames.clear();
     }
     for (auto &component : components) {
         component->servant->setExitHandler({});
@@ -326,27 +327,19 @@ const ComponentFactory *Manager::findFactory(const CreateRequest &request)
     return nullptr;
 }
 
-bool Manager::instanceNameTaken(const std::string &name) const
-{
-    return m_reservedNames.count(name) > 0
-           || std::any_of(m_components.begin(), m_components.end(),
-                          [&name](const auto &c) { return c->instanceName == name; });
-}
-
 std::string Manager::reserveInstanceName(const std::string &requested, const std::string &typeName,
                                          std::string *error)
 {
     std::lock_guard lock(m_mutex);
     std::string name = requested;
     for (int n = 0; name.empty(); ++n) {
-        if (!instanceNameTaken(typeName + std::to_string(n)))
+        if (m_instanceNames.count(typeName + std::to_string(n)) == 0)
             name = typeName + std::to_string(n);
     }
-    if (instanceNameTaken(name)) {
+    if (!m_instanceNames.insert(name).second) {
         *error = "create_component: instance name '" + name + "' is already in use";
         return {};
     }
-    m_reservedNames.insert(name);
     return name;
 }
 
@@ -433,9 +426,10 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     Component *record = component.get();
     {
         std::lock_guard lock(m_mutex);
-        m_reservedNames.erase(instance);
         if (configured)
             m_components.push_back(std::move(component));
+        else
+            m_instanceNames.erase(instance);
     }
     if (!configured) {
         fail(problem, error);
@@ -496,6 +490,7 @@ void Manager::forget(RtObject *servant)
             return;
         removed = std::move(*it);
         m_components.erase(it);
+        m_instanceNames.erase(removed->instanceName);
     }
     if (m_hooks.preNaming)
         m_hooks.preNaming(removed->servant, removed->names, false);

@@ -174,7 +174,6 @@ private:
                          std::string *error);
     /// Holds @p requested (or the first free `<type>N`) for a creation in progress; empty with @p error when taken.
     std::string reserveInstanceName(const std::string &requested, const std::string &typeName, std::string *error);
-    bool instanceNameTaken(const std::string &name) const;
     void forget(RtObject *component);
     void registerNames(Component &component);
     void cleanup();
@@ -221,7 +220,9 @@ private:
     ForkServer m_forkServer;
     std::vector<ComponentFactory> m_factories;
     std::vector<std::unique_ptr<Component>> m_components;
-    std::set<std::string> m_reservedNames;
+    /// The instance names of m_components and of creations in progress (a lookup per create,
+    /// however many components the manager hosts).
+    std::set<std::string> m_instanceNames;
     std::vector<std::unique_ptr<Slave>> m_slaves;
     std::vector<std::unique_ptr<Module>> m_modules;
     ModuleInitCall m_moduleInitCall;

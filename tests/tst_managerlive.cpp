@@ -414,6 +414,13 @@ void TestManagerLive::deleteComponent()
     // exit() on the component itself also removes it from its manager.
     QCOMPARE(a->exit(), RTC::RTC_OK);
     QTRY_COMPARE(RTC::RTCList_var(m_master->get_components())->length(), CORBA::ULong(0));
+    // Both names are free again: the one asked for, and the lowest number of the type.
+    RTC::RTObject_var sinkAgain = create("ConsoleOut?instance_name=sink");
+    QVERIFY2(!CORBA::is_nil(sinkAgain), qPrintable(lastError(m_master)));
+    RTC::RTObject_var numberedAgain = create("ConsoleIn");
+    QVERIFY2(!CORBA::is_nil(numberedAgain), qPrintable(lastError(m_master)));
+    QCOMPARE(QByteArray(RTC::ComponentProfile_var(numberedAgain->get_component_profile())->instance_name),
+             QByteArray("ConsoleIn0"));
 }
 
 void TestManagerLive::badRequests_data()
