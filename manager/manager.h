@@ -208,9 +208,9 @@ private:
     std::condition_variable m_slavesChanged;
     /// One slave start at a time: concurrent creates must not pick one port twice or start one name twice.
     std::mutex m_spawnMutex;
-    std::set<int> m_startingPorts;
-    /// The slaves spawnSlave() waits for, by the address each was given: their join needs no
-    /// call back for their profile.
+    /// Slaves being started, by the address each is given: from the port's reservation (pid 0, so
+    /// that two starts never get one port) until spawnSlave() has them; once launched, their join
+    /// needs no call back for their profile.
     struct StartingSlave
     {
         pid_t pid = 0;

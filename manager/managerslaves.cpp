@@ -161,33 +161,29 @@ int Manager::reserveLoopbackPort()
     std::lock_guard lock(m_mutex);
     for (;;) {
         const int port = freeLoopbackPort();
-        if (port == 0 || m_startingPorts.insert(port).second)
+        if (port == 0 || m_startingSlaves.emplace("127.0.0.1:" + std::to_string(port), StartingSlave {}).second)
             return port;
     }
 }
 
 RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const std::string &name, std::string *error)
 {
-    const auto release = [this, port] {
+    const std::string address = host + ':' + std::to_string(port);
+    const auto release = [this, &address] {
         std::lock_guard lock(m_mutex);
-        m_startingPorts.erase(port);
+        m_startingSlaves.erase(address);
     };
     if (!m_isMaster) {
         release();
         fail("create_component: only a master manager starts slaves", error);
         return RTM::Manager::_nil();
     }
-    const std::string address = host + ':' + std::to_string(port);
     const pid_t pid = startSlaveProcess(address, name, m_address);
     if (pid > 0) {
         std::lock_guard lock(m_mutex);
         m_startingSlaves[address] = {pid, expandedInstanceName(name, pid)};
     }
     RTM::Manager_var slave = pid < 0 ? RTM::Manager::_nil() : waitForSlave(pid, address);
-    {
-        std::lock_guard lock(m_mutex);
-        m_startingSlaves.erase(address);
-    }
     release();
     if (pid < 0)
         fail("create_component: cannot start a slave manager", error);
@@ -276,7 +272,7 @@ bool Manager::addSlave(RTM::Manager_ptr manager)
         std::lock_guard lock(m_mutex);
         for (const std::string &address : tcpAddresses(manager)) {
             const auto starting = m_startingSlaves.find(address);
-            if (starting == m_startingSlaves.end())
+            if (starting == m_startingSlaves.end() || starting->second.pid == 0)
                 continue;
             slave->name = starting->second.name;
             slave->address = address;
