@@ -161,7 +161,9 @@ int Manager::reserveLoopbackPort()
     std::lock_guard lock(m_mutex);
     for (;;) {
         const int port = freeLoopbackPort();
-        if (port == 0 || m_startingSlaves.emplace("127.0.0.1:" + std::to_string(port), StartingSlave {}).second)
+        if (port == 0
+            || m_startingSlaves.emplace("127.0.0.1:" + std::to_string(port), StartingSlave {})
+                   .second)
             return port;
     }
 }

@@ -419,7 +419,8 @@ void TestManagerLive::deleteComponent()
     QVERIFY2(!CORBA::is_nil(sinkAgain), qPrintable(lastError(m_master)));
     RTC::RTObject_var numberedAgain = create("ConsoleIn");
     QVERIFY2(!CORBA::is_nil(numberedAgain), qPrintable(lastError(m_master)));
-    QCOMPARE(QByteArray(RTC::ComponentProfile_var(numberedAgain->get_component_profile())->instance_name),
+    QCOMPARE(QByteArray(
+                 RTC::ComponentProfile_var(numberedAgain->get_component_profile())->instance_name),
              QByteArray("ConsoleIn0"));
 }
 

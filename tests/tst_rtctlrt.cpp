@@ -345,6 +345,26 @@ void TestRtctlRt::unreachableServerIsAFailure()
     const Result bad = rtctl({"cat", "/127.0.0.1:x/a.rtc"});
     QCOMPARE(bad.code, 1);
     QVERIFY(bad.err.contains("bad name server address"));
+
+    // A manager given by address is used without asking first what it is: its first call tells
+    // that nothing listens there, or that what listens (here the name server) has no manager.
+    const Result noManager = rtctl(
+        {"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(LiveTest::freePort()), "list"});
+    QCOMPARE(noManager.code, 1);
+    QVERIFY2(noManager.err.contains("/manager: unreachable (cannot connect)"),
+             qPrintable(noManager.err));
+    for (const QStringList &actions : {QStringList {"list"},
+                                       QStringList {"create", "ConsoleIn?instance_name=x", "create",
+                                                    "ConsoleIn?instance_name=y"}}) {
+        const Result notAManager = rtctl(
+            QStringList {"mgr", QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_live.namingPort())}
+            + actions);
+        QCOMPARE(notAManager.code, 1);
+        QVERIFY2(
+            notAManager.err.contains(QStringLiteral("127.0.0.1:%1/manager: object does not exist")
+                                         .arg(m_live.namingPort())),
+            qPrintable(notAManager.err));
+    }
 }
 
 // The same commands against the project's rtmanager process instead of the test peer.
