@@ -10,6 +10,7 @@
 #include <QFileInfo>
 #include <QSet>
 
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -54,16 +55,36 @@ template<typename Action> void withManagerReason(const ManagerProxy &manager, Ac
     }
 }
 
-/// The instance_name a create request asks for; empty when the manager is to choose one.
-QString requestedInstanceName(const QString &request)
+/// The value of @p key in a create request's query (`Type?key=value&…`); empty when not given.
+QString requestParameter(const QString &request, QLatin1String key)
 {
     const QString query = request.section(QLatin1Char('?'), 1);
     for (const QString &pair : query.split(QLatin1Char('&'))) {
-        if (pair.section(QLatin1Char('='), 0, 0).trimmed() == QLatin1String("instance_name"))
+        if (pair.section(QLatin1Char('='), 0, 0).trimmed() == key)
             return pair.section(QLatin1Char('='), 1).trimmed();
     }
     return {};
 }
+
+/// The instance_name a create request asks for; empty when the manager is to choose one.
+QString requestedInstanceName(const QString &request)
+{
+    return requestParameter(request, QLatin1String("instance_name"));
+}
+
+/// Whether the addressed manager hosts the component itself (no slave named or addressed).
+bool hostedByAddressedManager(const QString &request)
+{
+    return requestParameter(request, QLatin1String("manager_name")).isEmpty()
+        && requestParameter(request, QLatin1String("manager_address")).isEmpty();
+}
+
+/**
+ * Creates one manager process hosts itself share that process and its name-server connection:
+ * two at once keep it busy (one is carried out while the next travels), more only add
+ * connections and threads. Creates in slaves each start or reach a process of their own.
+ */
+constexpr std::size_t createsInOneProcess = 2;
 
 /**
  * How many of the actions from @p first on are creates that can run side by side: each names its
@@ -247,16 +268,23 @@ void RtMgrCommand::createSideBySide(const ManagerProxy &manager, const QList<QPa
     std::vector<QString> created(count);
     std::vector<QString> iors(count);
     std::vector<std::optional<Error>> failures(count);
-    forEachConcurrently(count, [&](std::size_t i) {
-        try {
-            // An rtmanager gives the instance the name asked for or refuses the request, so the
-            // name needs no further call to the new component.
-            iors[i] = manager.createComponent(creates.at(qsizetype(i)).second);
-            created[i] = requestedInstanceName(creates.at(qsizetype(i)).second);
-        } catch (const Error &e) {
-            failures[i].emplace(e);
-        }
-    });
+    const bool oneProcess
+        = std::all_of(creates.cbegin(), creates.cend(), [](const QPair<QString, QString> &create) {
+              return hostedByAddressedManager(create.second);
+          });
+    forEachConcurrently(
+        count,
+        [&](std::size_t i) {
+            try {
+                // An rtmanager gives the instance the name asked for or refuses the request, so the
+                // name needs no further call to the new component.
+                iors[i] = manager.createComponent(creates.at(qsizetype(i)).second);
+                created[i] = requestedInstanceName(creates.at(qsizetype(i)).second);
+            } catch (const Error &e) {
+                failures[i].emplace(e);
+            }
+        },
+        oneProcess ? createsInOneProcess : defaultConcurrency);
     for (std::size_t i = 0; i < count; ++i) {
         if (!failures[i]) {
             streams.out << created[i] << '\n';
