@@ -4,6 +4,7 @@
 #include "componentproxy.h"
 #include "concurrent.h"
 #include "corbaerror.h"
+#include "iorendpoint.h"
 #include "managerproxy.h"
 #include "rtjson.h"
 
@@ -80,11 +81,13 @@ bool hostedByAddressedManager(const QString &request)
 }
 
 /**
- * Creates one manager process hosts itself share that process and its name-server connection:
- * two at once keep it busy (one is carried out while the next travels), more only add
- * connections and threads. Creates in slaves each start or reach a process of their own.
+ * Creates a manager on this machine hosts itself share its one process, its name-server
+ * connection and the processors with this client, and each round trip is short: two at once keep
+ * it busy (one is carried out while the next travels), more only add connections and threads. A
+ * manager on another host is a network round trip away, which more at once hide; creates in
+ * slaves each start or reach a process of their own.
  */
-constexpr std::size_t createsInOneProcess = 2;
+constexpr std::size_t createsInOneNearbyProcess = 2;
 
 /**
  * How many of the actions from @p first on are creates that can run side by side: each names its
@@ -268,10 +271,11 @@ void RtMgrCommand::createSideBySide(const ManagerProxy &manager, const QList<QPa
     std::vector<QString> created(count);
     std::vector<QString> iors(count);
     std::vector<std::optional<Error>> failures(count);
-    const bool oneProcess
-        = std::all_of(creates.cbegin(), creates.cend(), [](const QPair<QString, QString> &create) {
-              return hostedByAddressedManager(create.second);
-          });
+    const bool oneNearbyProcess = std::all_of(creates.cbegin(), creates.cend(),
+                                              [](const QPair<QString, QString> &create) {
+                                                  return hostedByAddressedManager(create.second);
+                                              })
+        && isThisHost(referenceHost(manager.ior()));
     forEachConcurrently(
         count,
         [&](std::size_t i) {
@@ -284,7 +288,7 @@ void RtMgrCommand::createSideBySide(const ManagerProxy &manager, const QList<QPa
                 failures[i].emplace(e);
             }
         },
-        oneProcess ? createsInOneProcess : defaultConcurrency);
+        oneNearbyProcess ? createsInOneNearbyProcess : defaultConcurrency);
     for (std::size_t i = 0; i < count; ++i) {
         if (!failures[i]) {
             streams.out << created[i] << '\n';

@@ -2,8 +2,13 @@
 #include "iorendpoint.h"
 
 #include <QByteArray>
+#include <QSysInfo>
 
 #include <optional>
+
+#include <arpa/inet.h>
+#include <ifaddrs.h>
+#include <netinet/in.h>
 
 namespace Corba {
 
@@ -113,6 +118,57 @@ QString iorEndpoint(const QString &ior)
             return iiopEndpoint(*body);
     }
     return {};
+}
+
+QString referenceHost(const QString &reference)
+{
+    static const QLatin1String corbaloc("corbaloc:");
+    if (!reference.startsWith(corbaloc, Qt::CaseInsensitive)) {
+        const QString endpoint = iorEndpoint(reference);
+        return endpoint.left(endpoint.lastIndexOf(QLatin1Char(':')));
+    }
+    // `corbaloc:iiop:1.2@host:port/key`, `corbaloc::host/key`, `corbaloc:iiop:[::1]:2810/key`
+    QString address = reference.mid(corbaloc.size())
+                          .section(QLatin1Char('/'), 0, 0)
+                          .section(QLatin1Char(','), 0, 0);
+    address = address.mid(address.indexOf(QLatin1Char(':')) + 1); // after the protocol
+    address = address.mid(address.indexOf(QLatin1Char('@')) + 1); // after a GIOP version
+    if (address.startsWith(QLatin1Char('[')))
+        return address.mid(1, address.indexOf(QLatin1Char(']')) - 1);
+    return address.section(QLatin1Char(':'), 0, 0);
+}
+
+bool isThisHost(const QString &host)
+{
+    if (host.isEmpty())
+        return false;
+    if (host.compare(QLatin1String("localhost"), Qt::CaseInsensitive) == 0
+        || host.compare(QSysInfo::machineHostName(), Qt::CaseInsensitive) == 0)
+        return true;
+    const QByteArray text = host.toLatin1();
+    in_addr v4 {};
+    in6_addr v6 {};
+    const bool isV4 = inet_pton(AF_INET, text.constData(), &v4) == 1;
+    if (!isV4 && inet_pton(AF_INET6, text.constData(), &v6) != 1)
+        return false; // a name other than this machine's
+    if ((isV4 && (ntohl(v4.s_addr) >> 24) == 127) || (!isV4 && IN6_IS_ADDR_LOOPBACK(&v6)))
+        return true;
+    ifaddrs *interfaces = nullptr;
+    if (getifaddrs(&interfaces) != 0)
+        return false;
+    bool found = false;
+    for (const ifaddrs *i = interfaces; i && !found; i = i->ifa_next) {
+        if (!i->ifa_addr)
+            continue;
+        if (isV4 && i->ifa_addr->sa_family == AF_INET)
+            found
+                = reinterpret_cast<const sockaddr_in *>(i->ifa_addr)->sin_addr.s_addr == v4.s_addr;
+        else if (!isV4 && i->ifa_addr->sa_family == AF_INET6)
+            found = IN6_ARE_ADDR_EQUAL(
+                &reinterpret_cast<const sockaddr_in6 *>(i->ifa_addr)->sin6_addr, &v6);
+    }
+    freeifaddrs(interfaces);
+    return found;
 }
 
 } // namespace Corba
