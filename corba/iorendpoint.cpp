@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "iorendpoint.h"
 
+#include "rtpath.h"
+
 #include <QByteArray>
 #include <QSysInfo>
 
@@ -122,20 +124,10 @@ QString iorEndpoint(const QString &ior)
 
 QString referenceHost(const QString &reference)
 {
-    static const QLatin1String corbaloc("corbaloc:");
-    if (!reference.startsWith(corbaloc, Qt::CaseInsensitive)) {
-        const QString endpoint = iorEndpoint(reference);
-        return endpoint.left(endpoint.lastIndexOf(QLatin1Char(':')));
-    }
-    // `corbaloc:iiop:1.2@host:port/key`, `corbaloc::host/key`, `corbaloc:iiop:[::1]:2810/key`
-    QString address = reference.mid(corbaloc.size())
-                          .section(QLatin1Char('/'), 0, 0)
-                          .section(QLatin1Char(','), 0, 0);
-    address = address.mid(address.indexOf(QLatin1Char(':')) + 1); // after the protocol
-    address = address.mid(address.indexOf(QLatin1Char('@')) + 1); // after a GIOP version
-    if (address.startsWith(QLatin1Char('[')))
-        return address.mid(1, address.indexOf(QLatin1Char(']')) - 1);
-    return address.section(QLatin1Char(':'), 0, 0);
+    if (const std::optional<Corbaloc> url = Corbaloc::parse(reference))
+        return url->addresses.isEmpty() ? QString() : url->addresses.first().host();
+    const QString endpoint = iorEndpoint(reference);
+    return endpoint.left(endpoint.lastIndexOf(QLatin1Char(':')));
 }
 
 bool isThisHost(const QString &host)

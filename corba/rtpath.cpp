@@ -12,15 +12,40 @@ bool fail(QString *error, const QString &message)
     return false;
 }
 
-bool validHostPort(const QString &address)
+struct HostPort
 {
-    const int colon = address.lastIndexOf(QLatin1Char(':'));
-    if (address.isEmpty() || colon == 0)
-        return false;
+    QString host;
+    QString port;
+    bool hasPort = false;
+};
+
+// `host`, `host:port`, `[v6 address]` or `[v6 address]:port`.
+HostPort splitHostPort(const QString &text)
+{
+    if (text.startsWith(QLatin1Char('['))) {
+        const qsizetype close = text.indexOf(QLatin1Char(']'));
+        if (close > 0) {
+            const QString rest = text.mid(close + 1);
+            return {text.mid(1, close - 1), rest.startsWith(QLatin1Char(':')) ? rest.mid(1) : rest,
+                    !rest.isEmpty()};
+        }
+    }
+    const qsizetype colon = text.lastIndexOf(QLatin1Char(':'));
     if (colon < 0)
+        return {text, QString(), false};
+    return {text.left(colon), text.mid(colon + 1), true};
+}
+
+// `host` or `host:port` with a port in 1…65535.
+bool isValidHostPort(const QString &address)
+{
+    const HostPort split = splitHostPort(address);
+    if (split.host.isEmpty())
+        return false;
+    if (!split.hasPort)
         return true;
     bool ok = false;
-    const int port = address.mid(colon + 1).toInt(&ok);
+    const int port = split.port.toInt(&ok);
     return ok && port > 0 && port < 65536;
 }
 
@@ -88,30 +113,27 @@ QString RtPath::toString() const
 
 std::optional<QString> RtPath::normaliseCorbaloc(const QString &text, QString *error)
 {
-    if (!text.startsWith(QLatin1String("corbaloc:"))) {
+    std::optional<Corbaloc> url = Corbaloc::parse(text);
+    if (!url) {
         fail(error, QStringLiteral("not a corbaloc address: %1").arg(text));
         return std::nullopt;
     }
-    QString rest = text.mid(9);
-    if (rest.startsWith(QLatin1String("iiop:")))
-        rest = rest.mid(5);
-    else if (rest.startsWith(QLatin1Char(':')))
-        rest = rest.mid(1);
-    else {
-        fail(error, QStringLiteral("unsupported corbaloc protocol: %1").arg(text));
-        return std::nullopt;
+    for (CorbalocAddress &address : url->addresses) {
+        if (!address.isIiop()) {
+            fail(error, QStringLiteral("unsupported corbaloc protocol: %1").arg(text));
+            return std::nullopt;
+        }
+        address.protocol = QStringLiteral("iiop");
+        if (!address.hasPort())
+            address.hostPort += QStringLiteral(":2810");
+        if (!isValidHostPort(address.hostPort)) {
+            fail(error, QStringLiteral("bad host or port in %1").arg(text));
+            return std::nullopt;
+        }
     }
-    const int slash = rest.indexOf(QLatin1Char('/'));
-    QString address = slash < 0 ? rest : rest.left(slash);
-    const QString key
-        = slash < 0 || slash == rest.size() - 1 ? QStringLiteral("manager") : rest.mid(slash + 1);
-    if (!address.contains(QLatin1Char(':')))
-        address += QStringLiteral(":2810");
-    if (!validHostPort(address)) {
-        fail(error, QStringLiteral("bad host or port in %1").arg(text));
-        return std::nullopt;
-    }
-    return QStringLiteral("corbaloc:iiop:%1/%2").arg(address, key);
+    if (url->key.value_or(QString()).isEmpty())
+        url->key = QStringLiteral("manager");
+    return url->toString();
 }
 
 std::optional<RtPath> RtPath::parse(const QString &text, const QString &currentDirectory,
@@ -136,7 +158,7 @@ std::optional<RtPath> RtPath::parse(const QString &text, const QString &currentD
     }
     if (!appendElements(path.elements, text, error) || !splitPort(path, error))
         return std::nullopt;
-    if (!path.elements.isEmpty() && !validHostPort(path.server())) {
+    if (!path.elements.isEmpty() && !isValidHostPort(path.server())) {
         fail(error, QStringLiteral("bad name server address: %1").arg(path.server()));
         return std::nullopt;
     }
@@ -148,24 +170,67 @@ bool RtPath::operator==(const RtPath &other) const
     return elements == other.elements && port == other.port && corbaloc == other.corbaloc;
 }
 
-QString corbalocWithGiop12(const QString &reference)
+QString CorbalocAddress::host() const
+{
+    return splitHostPort(hostPort).host;
+}
+
+bool CorbalocAddress::hasPort() const
+{
+    return splitHostPort(hostPort).hasPort;
+}
+
+QString CorbalocAddress::toString() const
+{
+    return protocol + QLatin1Char(':')
+        + (version.isEmpty() ? QString() : version + QLatin1Char('@')) + hostPort;
+}
+
+QString Corbaloc::toString() const
+{
+    QStringList texts;
+    for (const CorbalocAddress &address : addresses)
+        texts << address.toString();
+    return QStringLiteral("corbaloc:") + texts.join(QLatin1Char(','))
+        + (key ? QLatin1Char('/') + *key : QString());
+}
+
+std::optional<Corbaloc> Corbaloc::parse(const QString &text)
 {
     static const QLatin1String scheme("corbaloc:");
-    if (!reference.startsWith(scheme))
-        return reference;
-    const qsizetype slash = reference.indexOf(QLatin1Char('/'), scheme.size());
-    const qsizetype end = slash < 0 ? reference.size() : slash;
-    QStringList addresses = reference.mid(scheme.size(), end - scheme.size()).split(QLatin1Char(','));
-    for (QString &address : addresses) {
-        // `iiop:host:port` or `:host:port`, without a `version@` of their own
-        if (address.contains(QLatin1Char('@')))
-            continue;
-        if (address.startsWith(QLatin1String("iiop:")))
-            address.insert(5, QLatin1String("1.2@"));
-        else if (address.startsWith(QLatin1Char(':')))
-            address.insert(1, QLatin1String("1.2@"));
+    if (!text.startsWith(scheme, Qt::CaseInsensitive))
+        return std::nullopt;
+    Corbaloc url;
+    const qsizetype slash = text.indexOf(QLatin1Char('/'), scheme.size());
+    if (slash >= 0)
+        url.key = text.mid(slash + 1);
+    const QString list = text.mid(scheme.size(), slash < 0 ? -1 : slash - scheme.size());
+    for (const QString &item : list.split(QLatin1Char(','))) {
+        CorbalocAddress address;
+        const qsizetype colon = item.indexOf(QLatin1Char(':'));
+        address.protocol = colon < 0 ? item : item.left(colon);
+        QString rest = colon < 0 ? QString() : item.mid(colon + 1);
+        const qsizetype at = address.isIiop() ? rest.indexOf(QLatin1Char('@')) : -1;
+        if (at >= 0) {
+            address.version = rest.left(at);
+            rest.remove(0, at + 1);
+        }
+        address.hostPort = rest;
+        url.addresses << address;
     }
-    return scheme + addresses.join(QLatin1Char(',')) + reference.mid(end);
+    return url;
+}
+
+QString corbalocWithGiop12(const QString &reference)
+{
+    std::optional<Corbaloc> url = Corbaloc::parse(reference);
+    if (!url)
+        return reference;
+    for (CorbalocAddress &address : url->addresses) {
+        if (address.isIiop() && address.version.isEmpty())
+            address.version = QStringLiteral("1.2");
+    }
+    return url->toString();
 }
 
 } // namespace Corba

@@ -47,6 +47,32 @@ struct RtPath
     bool operator!=(const RtPath &other) const { return !(*this == other); }
 };
 
+/// One address of a corbaloc URL as written: `iiop:1.2@host:2810`, `:host` (iiop), `rir:`.
+struct CorbalocAddress
+{
+    QString protocol; ///< `iiop`, `rir` …; empty for the `:host` form of iiop
+    QString version; ///< the GIOP version before `@` (`1.2`) of an iiop address; empty when none
+    QString hostPort; ///< `host`, `host:port` or `[v6 address]:port`; empty for `rir:`
+
+    bool isIiop() const { return protocol.isEmpty() || protocol == QLatin1String("iiop"); }
+    /// The host, an IPv6 address without its brackets.
+    QString host() const;
+    /// Whether a port follows the host (`host:` counts, with an empty port).
+    bool hasPort() const;
+    QString toString() const;
+};
+
+/// A `corbaloc:` URL split into its comma-separated addresses and its object key.
+struct Corbaloc
+{
+    QList<CorbalocAddress> addresses;
+    std::optional<QString> key; ///< what follows the first `/`; none when there is no `/`
+
+    QString toString() const;
+    /// The parts of @p text, or std::nullopt when it does not start with `corbaloc:` (any case).
+    static std::optional<Corbaloc> parse(const QString &text);
+};
+
 /**
  * @p reference with GIOP 1.2 for each corbaloc address that names no version (`corbaloc:iiop:h:p/k`
  * becomes `corbaloc:iiop:1.2@h:p/k`); anything else unchanged. With corbaloc's default 1.0, omniORB

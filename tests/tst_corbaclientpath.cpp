@@ -99,6 +99,19 @@ void TestCorbaClientPath::parses_data()
     QTest::newRow("corbaloc other key")
         << "corbaloc::h:1/other" << none << QStringList() << none << "corbaloc:iiop:h:1/other"
         << "corbaloc:iiop:h:1/other";
+    // Each address of a list gets the default port; a GIOP version and IPv6 brackets stay.
+    QTest::newRow("corbaloc several") << "corbaloc::a,iiop:b:2/k" << none << QStringList() << none
+                                      << "corbaloc:iiop:a:2810,iiop:b:2/k"
+                                      << "corbaloc:iiop:a:2810,iiop:b:2/k";
+    QTest::newRow("corbaloc version")
+        << "corbaloc:iiop:1.2@h/x" << none << QStringList() << none << "corbaloc:iiop:1.2@h:2810/x"
+        << "corbaloc:iiop:1.2@h:2810/x";
+    QTest::newRow("corbaloc IPv6")
+        << "corbaloc::[::1]" << none << QStringList() << none << "corbaloc:iiop:[::1]:2810/manager"
+        << "corbaloc:iiop:[::1]:2810/manager";
+    QTest::newRow("corbaloc IPv6 port") << "corbaloc::[fe80::1]:5/" << none << QStringList() << none
+                                        << "corbaloc:iiop:[fe80::1]:5/manager"
+                                        << "corbaloc:iiop:[fe80::1]:5/manager";
 }
 
 void TestCorbaClientPath::parses()
@@ -138,6 +151,11 @@ void TestCorbaClientPath::rejects_data()
     QTest::newRow("corbaloc protocol") << "corbaloc:rir:/NameService" << QString() << "protocol";
     QTest::newRow("corbaloc port") << "corbaloc::h:zz/manager" << QString() << "bad host";
     QTest::newRow("corbaloc host") << "corbaloc:::2810" << QString() << "bad host";
+    QTest::newRow("corbaloc second protocol") << "corbaloc::h,rir:/x" << QString() << "protocol";
+    QTest::newRow("corbaloc second port") << "corbaloc::h,:g:0/x" << QString() << "bad host";
+    QTest::newRow("corbaloc empty port") << "corbaloc::h:/x" << QString() << "bad host";
+    QTest::newRow("corbaloc IPv6 port") << "corbaloc::[::1]x/x" << QString() << "bad host";
+    QTest::newRow("corbaloc no protocol") << "corbaloc:h/x" << QString() << "protocol";
 }
 
 void TestCorbaClientPath::rejects()
@@ -219,6 +237,8 @@ void TestCorbaClientPath::referenceHost_data()
     QTest::newRow("first of several") << "corbaloc:iiop:a:1,iiop:b:2/k"
                                       << "a";
     QTest::newRow("rir") << "corbaloc:rir:/NameService" << QString();
+    QTest::newRow("scheme in capitals") << "CORBALOC::host:2810/manager"
+                                        << "host";
     QTest::newRow("unreadable IOR") << "IOR:0102" << QString();
     QTest::newRow("no reference") << "manager.mgr" << QString();
 }
