@@ -4,7 +4,7 @@
 // 1. Creation (the deployment paper's Table 3), measured as a user does it: one `rtctl mgr` call
 //    creating 10 and then 100 ConsoleIn components, naming on, in the master's own process and
 //    each in a new slave process (`manager_name=manager_%p`). Per component = the call's time / N,
-//    the middle of five calls, each in a fresh master (rtcd2: one call).
+//    the middle of eleven calls, each in a fresh master (rtcd2: one call).
 // 2. A large system: 1,000 components (ConsoleIn sources, ConsoleOut sinks) and 1,500 connectors
 //    over 10 slave managers (one per host context, started by the master through
 //    manager_address), registered in two name servers: restore (create + connect) + start, stop,
@@ -90,7 +90,7 @@ struct Creation
 };
 
 /// Calls per creation row, each against a fresh name server and master: the row shows the middle one.
-constexpr int CreationRounds = 5;
+constexpr int CreationRounds = 11;
 
 /// One `rtctl mgr MASTER create … create …` call creating `count` components; @p sameSlave names
 /// the slave that hosts them all where the master hosts none itself (rtcd2).
