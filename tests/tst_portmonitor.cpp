@@ -16,10 +16,13 @@
 #include <QFile>
 #include <QLineSeries>
 #include <QSignalSpy>
-#include <QTableWidget>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QValueAxis>
+
+#include <cmath>
 
 using namespace SystemEditor;
 
@@ -92,6 +95,26 @@ void TestPortMonitor::showsSamplesOfSeveralPorts()
     QVERIFY2(monitor.table()->item(0, 1)->text().contains("data="), qPrintable(monitor.table()->item(0, 1)->text()));
     QCOMPARE(monitor.chart()->series().size(), 1);
     QTRY_VERIFY(static_cast<QLineSeries *>(monitor.chart()->series().first())->count() >= 5);
+
+    // The value axis holds every point, ticks at round values: a 1, 2 or 5 times a power of ten
+    // apart.
+    const auto *axis = qobject_cast<QValueAxis *>(monitor.chart()->axes(Qt::Vertical).value(0));
+    QVERIFY(axis);
+    for (const QPointF &point :
+         static_cast<QLineSeries *>(monitor.chart()->series().first())->points())
+        QVERIFY2(point.y() >= axis->min() && point.y() <= axis->max(),
+                 qPrintable(QString::number(point.y())));
+    QVERIFY(axis->tickCount() >= 2);
+    const double interval = (axis->max() - axis->min()) / (axis->tickCount() - 1);
+    const double mantissa = interval / std::pow(10.0, std::floor(std::log10(interval)));
+    QVERIFY2(qFuzzyCompare(mantissa, 1.0) || qFuzzyCompare(mantissa, 2.0)
+                 || qFuzzyCompare(mantissa, 5.0),
+             qPrintable(QString::number(interval)));
+    const double steps = axis->min() / interval;
+    QVERIFY2(qAbs(steps - std::round(steps)) < 1e-6, qPrintable(QString::number(axis->min())));
+    // Labels carry the decimals the step needs, no more (2000, not 2000.0; 0.05, not 0.1).
+    QCOMPARE(axis->labelFormat(),
+             QStringLiteral("%.%1f").arg(std::max(0, int(-std::floor(std::log10(interval))))));
 
     monitor.setCurrent(seqKey);
     QTRY_COMPARE(monitor.chart()->series().size(), 10);

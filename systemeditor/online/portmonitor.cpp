@@ -31,6 +31,8 @@
 #include <QValueAxis>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 
@@ -487,6 +489,13 @@ void PortMonitor::refreshView()
     m_timeAxis->setRange(-m_window->value(), 0);
     const double margin = high > low ? (high - low) * 0.05 : 1.0;
     m_valueAxis->setRange(low - margin, high + margin);
+    // Ticks at round values (…, 2000, 4000, 6000) rather than at fifths of the data's range, with
+    // as many decimals as the step between them needs.
+    m_valueAxis->applyNiceNumbers();
+    const double step
+        = (m_valueAxis->max() - m_valueAxis->min()) / std::max(1, m_valueAxis->tickCount() - 1);
+    const int decimals = step > 0 ? std::max(0, int(-std::floor(std::log10(step)))) : 1;
+    m_valueAxis->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
     emit samplesShown(key);
 }
 
