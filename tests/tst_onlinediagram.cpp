@@ -48,6 +48,7 @@ class TestOnlineDiagram : public QObject
 private slots:
     void initTestCase();
     void dropsLiveComponentsWithStateColours();
+    void stateColoursKeepTextReadable();
     void activateTurnsTheComponentGreen();
     void actionOnAllShowsProgressAndCancels();
     void drawsLiveConnectors();
@@ -146,6 +147,27 @@ bool TestOnlineDiagram::shown(const OnlineDiagram &diagram, const QString &insta
     const QRectF visible
         = view->viewportTransform().inverted().mapRect(QRectF(view->viewport()->rect()));
     return item && visible.contains(item->sceneBoundingRect());
+}
+
+// Every fill a component gets, offline or in any state (black when it does not answer), keeps its
+// name, type and port labels readable: WCAG's 4.5:1 for normal text.
+void TestOnlineDiagram::stateColoursKeepTextReadable()
+{
+    QList<QColor> fills {ComponentAppearance().bodyColor};
+    for (const LifeCycleState state :
+         {LifeCycleState::Created, LifeCycleState::Inactive, LifeCycleState::Active,
+          LifeCycleState::Error, LifeCycleState::Unknown})
+        fills << OnlineIcons::stateColor(state);
+    for (const QColor &fill : std::as_const(fills)) {
+        const BodyTextColours text = BodyTextColours::on(fill);
+        for (const QColor &colour : {text.title, text.type, text.portLabel})
+            QVERIFY2(contrastRatio(fill, colour) >= 4.5,
+                     qPrintable(QStringLiteral("%1 on %2: %3")
+                                    .arg(colour.name(), fill.name())
+                                    .arg(contrastRatio(fill, colour))));
+    }
+    QCOMPARE(BodyTextColours::on(Qt::black).title, QColor(Qt::white));
+    QCOMPARE(qRound(contrastRatio(Qt::black, Qt::white)), 21);
 }
 
 void TestOnlineDiagram::dropsLiveComponentsWithStateColours()

@@ -31,6 +31,34 @@ ComponentAppearance ComponentAppearance::fromModel(const SystemModel &model,
     return appearance;
 }
 
+namespace {
+
+// WCAG 2 relative luminance of an sRGB colour.
+double relativeLuminance(const QColor &colour)
+{
+    const auto linear = [](double channel) {
+        return channel <= 0.03928 ? channel / 12.92 : std::pow((channel + 0.055) / 1.055, 2.4);
+    };
+    return 0.2126 * linear(colour.redF()) + 0.7152 * linear(colour.greenF())
+        + 0.0722 * linear(colour.blueF());
+}
+
+} // namespace
+
+double contrastRatio(const QColor &a, const QColor &b)
+{
+    const double first = relativeLuminance(a);
+    const double second = relativeLuminance(b);
+    return (std::max(first, second) + 0.05) / (std::min(first, second) + 0.05);
+}
+
+BodyTextColours BodyTextColours::on(const QColor &body)
+{
+    const BodyTextColours dark {QColor(20, 20, 20), QColor(35, 35, 35), QColor(30, 30, 60)};
+    const BodyTextColours light {Qt::white, Qt::white, Qt::white};
+    return contrastRatio(body, dark.title) >= contrastRatio(body, light.title) ? dark : light;
+}
+
 bool ComponentAppearance::operator==(const ComponentAppearance &other) const
 {
     return instanceName == other.instanceName && typeName == other.typeName

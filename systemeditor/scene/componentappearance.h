@@ -34,6 +34,21 @@ struct ComponentAppearance
     bool operator!=(const ComponentAppearance &other) const { return !(*this == other); }
 };
 
+/// The colours of a component's text, readable on its body: dark on light fills, white on dark
+/// ones (the black of a component that does not answer, the red of one in error).
+struct BodyTextColours
+{
+    QColor title;
+    QColor type;
+    QColor portLabel;
+
+    /// The colours for a body filled with @p body, the set that contrasts with it more.
+    static BodyTextColours on(const QColor &body);
+};
+
+/// WCAG 2 contrast ratio of two colours (1 to 21), alpha ignored.
+double contrastRatio(const QColor &a, const QColor &b);
+
 /// Minimum sizes the text of a component needs; measured by the item with its fonts.
 struct ComponentTextSizes
 {

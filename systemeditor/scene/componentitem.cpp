@@ -69,6 +69,9 @@ const QFontMetricsF &labelMetrics()
     return metrics;
 }
 
+/// A composite's frame is filled with a translucent light tint over the canvas.
+constexpr QColor CompositeFill(228, 232, 250, 110);
+
 constexpr qreal CompositeZ = -2; // under connectors (-1) and components (0)
 constexpr qreal FrameWidth = 8;
 
@@ -161,6 +164,8 @@ ComponentTextSizes ComponentItem::measureText() const
 
 void ComponentItem::relayout()
 {
+    m_text
+        = BodyTextColours::on(m_appearance.isComposite() ? CompositeFill : m_appearance.bodyColor);
     m_geometry = ComponentGeometry::layout(m_appearance, measureText());
     layoutPortLabels();
 }
@@ -249,13 +254,13 @@ void ComponentItem::paintTitles(QPainter *painter, bool withType) const
     const QRectF body = m_geometry.body;
     const qreal top = m_geometry.title.top();
     const qreal titleHeight = titleMetrics().height();
-    painter->setPen(QColor(20, 20, 20));
+    painter->setPen(m_text.title);
     painter->setFont(titleFont());
     painter->drawText(QRectF(body.left(), top, body.width(), titleHeight), Qt::AlignCenter,
                       m_appearance.instanceName);
     if (!withType)
         return;
-    painter->setPen(QColor(90, 90, 90));
+    painter->setPen(m_text.type);
     painter->setFont(typeFont());
     painter->drawText(QRectF(body.left(), top + titleHeight, body.width(), typeMetrics().height()),
                       Qt::AlignCenter, m_appearance.typeName);
@@ -266,17 +271,17 @@ void ComponentItem::paintComposite(QPainter *painter, bool selected, bool withTy
     QPen frame(selected ? QColor(30, 110, 230) : QColor(80, 80, 130), selected ? 2.5 : 1.5);
     frame.setStyle(Qt::DashLine);
     painter->setPen(frame);
-    painter->setBrush(QColor(228, 232, 250, 110));
+    painter->setBrush(CompositeFill);
     painter->drawRoundedRect(m_geometry.body, 8, 8);
     const QRectF band = m_geometry.body.adjusted(FrameWidth, 4, -FrameWidth, 0);
     const qreal titleHeight = titleMetrics().height();
-    painter->setPen(QColor(20, 20, 20));
+    painter->setPen(m_text.title);
     painter->setFont(titleFont());
     painter->drawText(QRectF(band.left(), band.top(), band.width(), titleHeight),
                       Qt::AlignLeft | Qt::AlignVCenter, m_appearance.instanceName);
     if (!withType)
         return;
-    painter->setPen(QColor(90, 90, 90));
+    painter->setPen(m_text.type);
     painter->setFont(typeFont());
     painter->drawText(QRectF(band.left(), band.top() + titleHeight, band.width(),
                              typeMetrics().height()),
@@ -287,7 +292,7 @@ void ComponentItem::paintComposite(QPainter *painter, bool selected, bool withTy
 void ComponentItem::paintPortLabels(QPainter *painter) const
 {
     painter->setFont(labelFont());
-    painter->setPen(QColor(50, 50, 80));
+    painter->setPen(m_text.portLabel);
     for (const PortLabel &label : m_labels)
         painter->drawText(label.rect, label.align, label.text);
 }

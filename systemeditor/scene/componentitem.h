@@ -85,6 +85,7 @@ private:
 
     ComponentAppearance m_appearance;
     ComponentGeometry m_geometry;
+    BodyTextColours m_text; ///< chosen for the body colour at layout time
     QList<PortLabel> m_labels;
     QHash<QString, PortItem *> m_ports;
     qreal m_snapGrid = 0;
