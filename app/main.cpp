@@ -8,6 +8,7 @@
 #include "uilanguage.h"
 
 #include <QApplication>
+#include <QByteArray>
 #include <QCommandLineParser>
 #include <QIcon>
 
@@ -16,11 +17,14 @@
 
 namespace {
 
-/// True when the command line asks for a headless export, which must not need a display.
-bool wantsHeadlessExport(int argc, char *argv[])
+/// True when the command line asks only for what needs no display: a diagram export, the usage or
+/// the version (over ssh, in a script).
+bool needsNoDisplay(int argc, char *argv[])
 {
     for (int i = 1; i < argc; ++i) {
-        if (std::strncmp(argv[i], "--export-diagram", 16) == 0)
+        const QByteArray argument(argv[i]);
+        if (argument.startsWith("--export-diagram") || argument.startsWith("--help")
+            || argument == "--version" || argument == "-h" || argument == "-?" || argument == "-v")
             return true;
     }
     return false;
@@ -68,7 +72,7 @@ void closeOnSignals(Codegen::InterruptSignals *interrupts, Studio::MainWindow *w
 
 int main(int argc, char *argv[])
 {
-    if (wantsHeadlessExport(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    if (needsNoDisplay(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RtStudio"));

@@ -40,6 +40,8 @@ private slots:
     void repositoryRemembersItsSources();
     void exportFromCommandLine_data();
     void exportFromCommandLine();
+    void helpAndVersionWithoutDisplay_data();
+    void helpAndVersionWithoutDisplay();
     void exportFailuresExitWithOne_data();
     void exportFailuresExitWithOne();
 
@@ -223,6 +225,34 @@ void TestSeCanvasApp::exportFromCommandLine()
     QVERIFY(file.size() > 1000);
     if (output.endsWith(QLatin1String(".svg")))
         QVERIFY(file.readAll().contains("ConsoleOut0"));
+}
+
+// The usage and the version need no display either (ssh, scripts).
+void TestSeCanvasApp::helpAndVersionWithoutDisplay_data()
+{
+    QTest::addColumn<QString>("option");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("help") << QStringLiteral("--help") << QStringLiteral("--export-diagram");
+    QTest::newRow("-h") << QStringLiteral("-h") << QStringLiteral("--run-locally");
+    QTest::newRow("version") << QStringLiteral("--version") << QStringLiteral(RTSTUDIO_VERSION);
+}
+
+void TestSeCanvasApp::helpAndVersionWithoutDisplay()
+{
+    QFETCH(QString, option);
+    QFETCH(QString, expected);
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("DISPLAY"));
+    environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(RTSTUDIO_PATH), {option});
+    QVERIFY(process.waitForFinished(60000));
+    const QString output = QString::fromUtf8(process.readAllStandardOutput());
+    QVERIFY2(process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0,
+             qPrintable(QString::fromUtf8(process.readAllStandardError())));
+    QVERIFY2(output.contains(expected), qPrintable(output));
 }
 
 void TestSeCanvasApp::exportFailuresExitWithOne_data()
