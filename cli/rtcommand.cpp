@@ -8,7 +8,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonValue>
-#include <QProcessEnvironment>
 #include <QRegularExpression>
 
 namespace Cli {
@@ -96,7 +95,7 @@ int RtCommand::run(const QStringList &arguments, Streams streams)
 
 QString RtCommand::currentDirectory()
 {
-    const QString cwd = QProcessEnvironment::systemEnvironment().value(QStringLiteral("RTCSH_CWD"));
+    const QString cwd = qEnvironmentVariable("RTCSH_CWD");
     return cwd.isEmpty() ? QStringLiteral("/") : cwd;
 }
 

@@ -10,7 +10,6 @@
 #include <omniORB4/Naming.hh>
 
 #include <QHash>
-#include <QProcessEnvironment>
 
 #include <mutex>
 
@@ -424,8 +423,7 @@ void grow(NamingNode &node, const RtPath &path, int depth, const QStringList &ro
 
 QStringList NamingBrowser::serversFromEnvironment()
 {
-    QString value
-        = QProcessEnvironment::systemEnvironment().value(QStringLiteral("RTCTREE_NAMESERVERS"));
+    QString value = qEnvironmentVariable("RTCTREE_NAMESERVERS");
     value.replace(QLatin1Char(','), QLatin1Char(';'));
     QStringList servers;
     for (const QString &server : value.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
