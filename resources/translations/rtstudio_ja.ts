@@ -562,12 +562,12 @@
 <context>
     <name>Builder::ComponentPreview</name>
     <message>
-        <location filename="../../builder/componentpreview.cpp" line="+32"/>
+        <location filename="../../builder/componentpreview.cpp" line="+36"/>
         <source>no events</source>
         <translation>イベントなし</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+204"/>
         <source>(unnamed)</source>
         <translation>（名前なし）</translation>
     </message>
@@ -2840,12 +2840,12 @@
     </message>
     <message>
         <location line="-6"/>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>The local runtime did not start: %1</source>
         <translation>ローカルランタイムを起動できませんでした：%1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Local runtime started.</source>
         <translation>ローカルランタイムを起動しました。</translation>
     </message>
@@ -2855,12 +2855,12 @@
         <translation>ローカルランタイムはすでに起動しています。</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Local runtime stopped.</source>
         <translation>ローカルランタイムを停止しました。</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>Restoring %1 on the local runtime…</source>
         <translation>%1 をローカルランタイムに復元しています…</translation>
     </message>
@@ -3131,7 +3131,7 @@
 <context>
     <name>SystemEditor::ComponentItem</name>
     <message>
-        <location filename="../../systemeditor/scene/componentitem.cpp" line="+284"/>
+        <location filename="../../systemeditor/scene/componentitem.cpp" line="+289"/>
         <source>Composite (%1)</source>
         <translation>複合 (%1)</translation>
     </message>
@@ -4268,7 +4268,7 @@
 <context>
     <name>SystemEditor::PortMonitor</name>
     <message>
-        <location filename="../../systemeditor/online/portmonitor.cpp" line="+108"/>
+        <location filename="../../systemeditor/online/portmonitor.cpp" line="+110"/>
         <source>%1: data type %2 is in none of the IDL files</source>
         <translation>%1：データ型 %2 はどの IDL ファイルにもありません</translation>
     </message>
@@ -4355,7 +4355,7 @@
         </translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+74"/>
         <source>%1 is not watched.</source>
         <translation>%1 はモニタしていません。</translation>
     </message>
@@ -5109,12 +5109,12 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../../app/main.cpp" line="+34"/>
+        <location filename="../../app/main.cpp" line="+39"/>
         <source>--export-diagram needs --output OUT.png or OUT.svg</source>
         <translation>--export-diagram には --output OUT.png または OUT.svg が必要です</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+51"/>
         <source>IDE for OpenRTM-aist RT-Components and RT Systems.</source>
         <translation>OpenRTM-aistのRTコンポーネントとRTシステムのための統合開発環境です。</translation>
     </message>
