@@ -207,6 +207,20 @@ void TestOnlineNameService::remembersServers()
     }
     NameServiceView again(&session, &settings);
     QCOMPARE(again.model()->servers(), QStringList {"otherhost:2809"});
+
+    // Shown again, a remembered server's tree is read without a Refresh.
+    {
+        NameServiceView view(&session, &settings);
+        view.removeServer(QStringLiteral("otherhost:2809"));
+        QVERIFY(view.addServer(m_live.namingServer()));
+    }
+    NameServiceView reopened(&session, &settings);
+    QSignalSpy listed(&reopened, &NameServiceView::serverListed);
+    QVERIFY(!reopened.model()->indexOfPath(componentPath("ConsoleIn0")).isValid());
+    reopened.show();
+    QTRY_VERIFY_WITH_TIMEOUT(reopened.model()->indexOfPath(componentPath("ConsoleIn0")).isValid(),
+                             15000);
+    QCOMPARE(listed.size(), 1);
 }
 
 void TestOnlineNameService::activatesThroughTheContextMenu()

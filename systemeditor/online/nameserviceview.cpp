@@ -14,6 +14,7 @@
 #include <QMenu>
 #include <QPlainTextEdit>
 #include <QSettings>
+#include <QShowEvent>
 #include <QSortFilterProxyModel>
 #include <QTimer>
 #include <QToolButton>
@@ -218,6 +219,15 @@ void NameServiceView::refresh()
 {
     for (const QString &server : m_model->servers())
         refreshServer(server);
+}
+
+void NameServiceView::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (!m_readOnFirstShow)
+        return;
+    m_readOnFirstShow = false;
+    refresh();
 }
 
 void NameServiceView::refreshServer(const QString &server)

@@ -62,6 +62,11 @@ public:
     /// whose previous poll has not answered yet is skipped).
     void pollStates();
 
+protected:
+    /// The first time the view is shown, the servers it remembers are read (their trees, or
+    /// that they do not answer).
+    void showEvent(QShowEvent *event) override;
+
 signals:
     /// A background state poll answered and the model was updated.
     void statesPolled();
@@ -97,6 +102,7 @@ private:
     QLabel *m_status = nullptr;
     QTimer *m_pollTimer = nullptr;
     QSet<QString> m_polling; ///< endpoints with a state poll under way
+    bool m_readOnFirstShow = true; ///< the remembered servers are still to be read
 };
 
 } // namespace SystemEditor
