@@ -13,7 +13,6 @@
 #include <QIcon>
 
 #include <cstdio>
-#include <cstring>
 
 namespace {
 
