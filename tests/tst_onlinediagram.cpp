@@ -208,6 +208,13 @@ void TestOnlineDiagram::activateTurnsTheComponentGreen()
     QTRY_COMPARE_WITH_TIMEOUT(diagram.bodyColor("ConsoleOut0"),
                               OnlineIcons::stateColor(LifeCycleState::Active), 10000);
     QCOMPARE(component("ConsoleOut0").state(), LifeCycleState::Active);
+    // Redrawn from the model (moved, its size changed, undone), it keeps its state's colour at
+    // once, not the offline fill until the next poll.
+    const QPointF at = diagram.model()->layout("ConsoleOut0").position;
+    diagram.model()->moveComponent("ConsoleOut0", at + QPointF(40, 20));
+    QCOMPARE(diagram.bodyColor("ConsoleOut0"), OnlineIcons::stateColor(LifeCycleState::Active));
+    diagram.model()->moveComponent("ConsoleOut0", at);
+    QCOMPARE(diagram.bodyColor("ConsoleOut0"), OnlineIcons::stateColor(LifeCycleState::Active));
     diagram.performAll(OnlineDiagram::Action::Deactivate);
     QTRY_COMPARE_WITH_TIMEOUT(diagram.bodyColor("ConsoleOut0"),
                               OnlineIcons::stateColor(LifeCycleState::Inactive), 10000);

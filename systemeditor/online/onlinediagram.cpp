@@ -359,17 +359,8 @@ void OnlineDiagram::syncConnectors()
 
 void OnlineDiagram::applyColours()
 {
-    for (auto it = m_live.cbegin(); it != m_live.cend(); ++it) {
-        ComponentItem *item = m_scene->componentItem(it.key());
-        if (!item)
-            continue;
-        ComponentAppearance appearance = item->appearance();
-        const QColor colour = OnlineIcons::stateColor(it->state);
-        if (appearance.bodyColor == colour)
-            continue;
-        appearance.bodyColor = colour;
-        item->setAppearance(appearance);
-    }
+    for (auto it = m_live.cbegin(); it != m_live.cend(); ++it)
+        m_scene->setBodyColor(it.key(), OnlineIcons::stateColor(it->state));
 }
 
 void OnlineDiagram::perform(Action action, const QString &instanceName)

@@ -138,7 +138,7 @@ void SystemScene::addComponentItem(const QString &instanceName)
 {
     if (m_components.contains(instanceName))
         return;
-    auto *item = new ComponentItem(ComponentAppearance::fromModel(*m_model, instanceName));
+    auto *item = new ComponentItem(appearanceOf(instanceName));
     // The model's position is exact; snapping applies to what the user drags only.
     item->setPos(m_model->layout(instanceName).position);
     item->setSnapGrid(m_snapToGrid ? GridSize : 0);
@@ -180,7 +180,7 @@ void SystemScene::refreshComponent(const QString &instanceName)
     ComponentItem *item = m_components.value(instanceName);
     if (!item)
         return;
-    item->setAppearance(ComponentAppearance::fromModel(*m_model, instanceName));
+    item->setAppearance(appearanceOf(instanceName));
     const qreal grid = m_snapToGrid ? GridSize : 0;
     item->setSnapGrid(0);
     item->setPos(m_model->layout(instanceName).position);
@@ -188,8 +188,30 @@ void SystemScene::refreshComponent(const QString &instanceName)
     reattachConnectors(instanceName);
 }
 
+ComponentAppearance SystemScene::appearanceOf(const QString &instanceName) const
+{
+    ComponentAppearance appearance = ComponentAppearance::fromModel(*m_model, instanceName);
+    const auto colour = m_bodyColors.constFind(instanceName);
+    if (colour != m_bodyColors.constEnd())
+        appearance.bodyColor = *colour;
+    return appearance;
+}
+
+void SystemScene::setBodyColor(const QString &instanceName, const QColor &colour)
+{
+    m_bodyColors.insert(instanceName, colour);
+    ComponentItem *item = m_components.value(instanceName);
+    if (!item || item->appearance().bodyColor == colour)
+        return;
+    ComponentAppearance appearance = item->appearance();
+    appearance.bodyColor = colour;
+    item->setAppearance(appearance);
+}
+
 void SystemScene::renameComponentItem(const QString &oldName, const QString &newName)
 {
+    if (m_bodyColors.contains(oldName))
+        m_bodyColors.insert(newName, m_bodyColors.take(oldName));
     if (ComponentItem *item = m_components.take(oldName))
         m_components.insert(newName, item);
     // Connector ends name the component; take them from the model again before its ports are

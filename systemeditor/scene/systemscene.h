@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "componentappearance.h"
 #include "connectionrules.h"
 #include "connectorsettings.h"
 #include "serviceconnectorsettings.h"
@@ -48,6 +49,9 @@ public:
     ConnectorItem *connectorItem(const QString &connectorId) const;
     PortItem *portItem(const ConnectorEnd &end) const;
     int componentItemCount() const { return int(m_components.size()); }
+    /// Fills a component's body with @p colour (an online diagram's state colours); it stays
+    /// through every redraw from the model (a move, a connection, undo) until set again.
+    void setBodyColor(const QString &instanceName, const QColor &colour);
     int connectorItemCount() const { return int(m_connectors.size()); }
 
     /// Instance names / connector ids of the selected items, in model order.
@@ -133,6 +137,8 @@ private:
     void addComponentItem(const QString &instanceName);
     void removeComponentItem(const QString &instanceName);
     void refreshComponent(const QString &instanceName);
+    /// The model's appearance of a component with the body colour set for it.
+    ComponentAppearance appearanceOf(const QString &instanceName) const;
     void renameComponentItem(const QString &oldName, const QString &newName);
     void addConnectorItem(const QString &connectorId);
     void removeConnectorItem(const QString &connectorId);
@@ -152,6 +158,7 @@ private:
     QPointer<SystemModel> m_model;
     QPointer<QUndoStack> m_undoStack;
     QHash<QString, ComponentItem *> m_components;
+    QHash<QString, QColor> m_bodyColors; ///< set by setBodyColor(), by instance name
     QHash<QString, ConnectorItem *> m_connectors;
     QHash<QString, ConnectorInfo> m_removedConnectors;
     bool m_gridVisible = true;
