@@ -201,11 +201,8 @@ void SystemScene::setBodyColor(const QString &instanceName, const QColor &colour
 {
     m_bodyColors.insert(instanceName, colour);
     ComponentItem *item = m_components.value(instanceName);
-    if (!item || item->appearance().bodyColor == colour)
-        return;
-    ComponentAppearance appearance = item->appearance();
-    appearance.bodyColor = colour;
-    item->setAppearance(appearance);
+    if (item && item->appearance().bodyColor != colour)
+        item->setAppearance(appearanceOf(instanceName));
 }
 
 void SystemScene::renameComponentItem(const QString &oldName, const QString &newName)
