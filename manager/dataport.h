@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "corbautil.h"
 #include "portbase.h"
 #include "ringbuffer.h"
 
@@ -28,6 +29,39 @@ public:
 protected:
     /// Empty when the profile fits this port; else why not. @p pull tells the data flow.
     std::string checkProfile(const Properties &connectorProperties, bool *pull) const;
+
+    /// Offers @p reference in @p profile as OpenRTM's corba_cdr interface type does: its IOR under
+    /// `dataport.corba_cdr.<end>_ior` and the reference itself under `<end>_ref` (@p end is
+    /// `inport` or `outport`).
+    template<typename Reference>
+    static void offerInterface(RTC::ConnectorProfile &profile, const std::string &end,
+                               Reference reference)
+    {
+        const std::string key = "dataport.corba_cdr." + end;
+        CORBA::String_var ior = theOrb()->object_to_string(reference);
+        nvSet(profile.properties, key + "_ior", std::string(ior.in()));
+        const CORBA::ULong n = profile.properties.length();
+        profile.properties.length(n + 1);
+        profile.properties[n].name = (key + "_ref").c_str();
+        profile.properties[n].value <<= reference;
+    }
+
+    /// The peer's interface that `dataport.corba_cdr.<end>_ior` of @p connectorProperties names;
+    /// nil when the key is missing or names no object.
+    template<typename Interface>
+    static typename Interface::_ptr_type peerInterface(const Properties &connectorProperties,
+                                                       const std::string &end)
+    {
+        const std::string ior = connectorProperties.value("dataport.corba_cdr." + end + "_ior");
+        if (ior.empty())
+            return Interface::_nil();
+        try {
+            CORBA::Object_var object = theOrb()->string_to_object(ior.c_str());
+            return Interface::_unchecked_narrow(object);
+        } catch (const CORBA::Exception &) {
+            return Interface::_nil();
+        }
+    }
 
 private:
     std::string m_dataType;

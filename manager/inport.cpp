@@ -85,12 +85,7 @@ RTC::ReturnCode_t InPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
             notifyReceived(data, littleEndian, id);
         });
     OpenRTM::InPortCdr_var ref = connector->reference();
-    CORBA::String_var ior = theOrb()->object_to_string(ref);
-    nvSet(profile.properties, "dataport.corba_cdr.inport_ior", std::string(ior.in()));
-    const CORBA::ULong n = profile.properties.length();
-    profile.properties.length(n + 1);
-    profile.properties[n].name = "dataport.corba_cdr.inport_ref";
-    profile.properties[n].value <<= ref.in();
+    offerInterface(profile, "inport", ref.in());
     std::lock_guard lock(m_mutex);
     m_connectors.push_back(connector);
     return RTC::RTC_OK;
@@ -104,22 +99,16 @@ RTC::ReturnCode_t InPortBase::subscribeInterfaces(const RTC::ConnectorProfile &p
         return RTC::BAD_PARAMETER;
     if (!pull)
         return RTC::RTC_OK;
-    const std::string ior = p.value("dataport.corba_cdr.outport_ior");
-    if (ior.empty())
+    OpenRTM::OutPortCdr_var peer = peerInterface<OpenRTM::OutPortCdr>(p, "outport");
+    if (CORBA::is_nil(peer))
         return RTC::BAD_PARAMETER;
-    try {
-        CORBA::Object_var object = theOrb()->string_to_object(ior.c_str());
-        OpenRTM::OutPortCdr_var peer = OpenRTM::OutPortCdr::_unchecked_narrow(object);
-        auto connector = std::make_shared<InPortPullConnector>(
-            std::string(profile.connector_id), p, peer,
-            [this, id = std::string(profile.connector_id)](const CdrView &data, bool littleEndian) {
-                notifyReceived(data, littleEndian, id);
-            });
-        std::lock_guard lock(m_mutex);
-        m_connectors.push_back(connector);
-    } catch (const CORBA::Exception &) {
-        return RTC::BAD_PARAMETER;
-    }
+    auto connector = std::make_shared<InPortPullConnector>(
+        std::string(profile.connector_id), p, peer,
+        [this, id = std::string(profile.connector_id)](const CdrView &data, bool littleEndian) {
+            notifyReceived(data, littleEndian, id);
+        });
+    std::lock_guard lock(m_mutex);
+    m_connectors.push_back(connector);
     return RTC::RTC_OK;
 }
 

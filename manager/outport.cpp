@@ -65,13 +65,7 @@ RTC::ReturnCode_t OutPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
         return RTC::RTC_OK;
     auto connector = std::make_shared<OutPortPullConnector>(std::string(profile.connector_id), p, m_poa);
     OpenRTM::OutPortCdr_var ref = connector->reference();
-    CORBA::String_var ior = theOrb()->object_to_string(ref);
-    nvSet(profile.properties, "dataport.corba_cdr.outport_ior", std::string(ior.in()));
-    // OpenRTM also passes the reference itself as an Any.
-    const CORBA::ULong n = profile.properties.length();
-    profile.properties.length(n + 1);
-    profile.properties[n].name = "dataport.corba_cdr.outport_ref";
-    profile.properties[n].value <<= ref.in();
+    offerInterface(profile, "outport", ref.in());
     std::lock_guard lock(m_mutex);
     m_connectors.push_back(connector);
     return RTC::RTC_OK;
@@ -85,20 +79,13 @@ RTC::ReturnCode_t OutPortBase::subscribeInterfaces(const RTC::ConnectorProfile &
         return RTC::BAD_PARAMETER;
     if (pull)
         return RTC::RTC_OK;
-    const std::string ior = p.value("dataport.corba_cdr.inport_ior");
-    if (ior.empty())
+    OpenRTM::InPortCdr_var peer = peerInterface<OpenRTM::InPortCdr>(p, "inport");
+    if (CORBA::is_nil(peer))
         return RTC::BAD_PARAMETER;
-    try {
-        CORBA::Object_var object = theOrb()->string_to_object(ior.c_str());
-        OpenRTM::InPortCdr_var peer = OpenRTM::InPortCdr::_unchecked_narrow(object);
-        if (CORBA::is_nil(peer))
-            return RTC::BAD_PARAMETER;
-        auto connector = std::make_shared<OutPortPushConnector>(std::string(profile.connector_id), p, peer);
-        std::lock_guard lock(m_mutex);
-        m_connectors.push_back(connector);
-    } catch (const CORBA::Exception &) {
-        return RTC::BAD_PARAMETER;
-    }
+    auto connector
+        = std::make_shared<OutPortPushConnector>(std::string(profile.connector_id), p, peer);
+    std::lock_guard lock(m_mutex);
+    m_connectors.push_back(connector);
     return RTC::RTC_OK;
 }
 

@@ -63,6 +63,18 @@ long statusNumber(RTC::RTObject_ptr rtc, const char *name)
     return statusOf(rtc, name).toLong();
 }
 
+/// The reference of type T that entry @p name of @p list holds; nil when it holds none.
+template<typename T>
+typename T::_var_type nvReference(const SDOPackage::NVList &list, const char *name)
+{
+    for (CORBA::ULong i = 0; i < list.length(); ++i) {
+        typename T::_ptr_type reference = T::_nil();
+        if (QByteArray(list[i].name) == name && (list[i].value >>= reference))
+            return T::_duplicate(reference);
+    }
+    return T::_nil();
+}
+
 void setNv(SDOPackage::NVList &list, const char *name, const char *value)
 {
     const CORBA::ULong n = list.length();
@@ -105,6 +117,8 @@ private slots:
     void connectorBufferPolicy();
     void connectRejectsMismatch_data();
     void connectRejectsMismatch();
+    void connectRefusesNilPeer_data();
+    void connectRefusesNilPeer();
     void sameDataType_data();
     void sameDataType();
     void connectDataTypeSpellings_data();
@@ -667,6 +681,17 @@ void TestManagerRuntime::dataFlow()
     QVERIFY(!QByteArray(profile.connector_id).isEmpty());
     const char *iorKey = flow == "push" ? "dataport.corba_cdr.inport_ior" : "dataport.corba_cdr.outport_ior";
     QVERIFY(nv(profile.properties, iorKey).startsWith("IOR:"));
+    // As OpenRTM's ports, the offering port also passes its interface as a reference (`…_ref`).
+    CORBA::Object_var offered = m_orb->string_to_object(nv(profile.properties, iorKey).toUtf8());
+    CORBA::Object_var passed = flow == "push"
+        ? CORBA::Object_var(
+            nvReference<OpenRTM::InPortCdr>(profile.properties, "dataport.corba_cdr.inport_ref")
+                ._retn())
+        : CORBA::Object_var(
+            nvReference<OpenRTM::OutPortCdr>(profile.properties, "dataport.corba_cdr.outport_ref")
+                ._retn());
+    QVERIFY(!CORBA::is_nil(passed));
+    QVERIFY(passed->_is_equivalent(offered));
     RTC::ConnectorProfileList_var onOut = outPort->get_connector_profiles();
     RTC::ConnectorProfileList_var onIn = inPort->get_connector_profiles();
     QCOMPARE(onOut->length(), CORBA::ULong(1));
@@ -777,6 +802,44 @@ void TestManagerRuntime::connectRejectsMismatch()
     p = Properties();
     p.set("dataport.data_type", "TimedLong");
     QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
+}
+
+void TestManagerRuntime::connectRefusesNilPeer_data()
+{
+    QTest::addColumn<QString>("flow");
+    QTest::addColumn<QString>("portName");
+    QTest::addColumn<QString>("peerKey");
+    // The subscribing end of each flow: an InPort pulls from the OutPort's interface, an OutPort
+    // pushes into the InPort's.
+    QTest::newRow("pull into an InPort") << "pull"
+                                         << "in"
+                                         << "dataport.corba_cdr.outport_ior";
+    QTest::newRow("push from an OutPort") << "push"
+                                          << "out"
+                                          << "dataport.corba_cdr.inport_ior";
+}
+
+void TestManagerRuntime::connectRefusesNilPeer()
+{
+    QFETCH(QString, flow);
+    QFETCH(QString, portName);
+    QFETCH(QString, peerKey);
+    RtObject *component = create(portName == "in" ? "ConsoleOut" : "ConsoleIn", "NP0");
+    RTC::RTObject_var rtc = component->reference();
+    RTC::PortService_var subscriber = port(rtc, portName.toUtf8().constData());
+    // A peer interface that names no object: the connection is refused, not made to send
+    // nowhere.
+    CORBA::String_var nil = m_orb->object_to_string(CORBA::Object::_nil());
+    RTC::ConnectorProfile profile;
+    profile.name = "nil peer";
+    profile.connector_id = "";
+    profile.ports.length(1);
+    profile.ports[0] = RTC::PortService::_duplicate(subscriber);
+    setNv(profile.properties, "dataport.dataflow_type", flow.toUtf8().constData());
+    setNv(profile.properties, peerKey.toUtf8().constData(), nil.in());
+    QCOMPARE(subscriber->connect(profile), RTC::BAD_PARAMETER);
+    RTC::ConnectorProfileList_var kept = subscriber->get_connector_profiles();
+    QCOMPARE(kept->length(), CORBA::ULong(0));
 }
 
 void TestManagerRuntime::sameDataType_data()
