@@ -67,129 +67,45 @@ std::optional<QString> SetBasicFieldCommand::normalized(const std::optional<QStr
     return m_before ? std::optional<QString>(QString()) : std::nullopt;
 }
 
-// ---- SetActionCommand
+// ---- SetActionCommand, SetComponentDocCommand, SetLanguageCommand
 
 SetActionCommand::SetActionCommand(ComponentModel *model, Profile::RtcAction action,
                                    const std::optional<Profile::RtcActionStatus> &status,
                                    const QString &mergeKey, QUndoCommand *parent)
-    : QUndoCommand(parent)
-    , m_model(model)
-    , m_action(action)
-    , m_mergeKey(mergeKey)
-    , m_before(model->action(action))
-    , m_after(status)
+    : SetPartCommand(
+        model, ActionCommandId, int(action),
+        [](ComponentModel &m, int part, const std::optional<Profile::RtcActionStatus> &value) {
+            m.setAction(Profile::RtcAction(part), value);
+        },
+        model->action(action), status, mergeKey, parent)
 {
     setText(tr("Change %1").arg(Profile::rtcActionKey(action)));
 }
 
-void SetActionCommand::undo()
-{
-    if (m_model)
-        m_model->setAction(m_action, m_before);
-}
-
-void SetActionCommand::redo()
-{
-    if (m_model)
-        m_model->setAction(m_action, m_after);
-}
-
-int SetActionCommand::id() const
-{
-    return ActionCommandId;
-}
-
-bool SetActionCommand::mergeWith(const QUndoCommand *other)
-{
-    const auto *edit = static_cast<const SetActionCommand *>(other);
-    if (edit->m_model != m_model || edit->m_action != m_action || m_mergeKey.isEmpty()
-        || edit->m_mergeKey != m_mergeKey)
-        return false;
-    m_after = edit->m_after;
-    setObsolete(m_after == m_before);
-    return true;
-}
-
-// ---- SetComponentDocCommand
-
 SetComponentDocCommand::SetComponentDocCommand(ComponentModel *model,
                                                const std::optional<Profile::RtcBasicDoc> &doc,
                                                const QString &mergeKey, QUndoCommand *parent)
-    : QUndoCommand(parent)
-    , m_model(model)
-    , m_mergeKey(mergeKey)
-    , m_before(model->profile().basicInfo.doc)
-    , m_after(doc)
+    : SetPartCommand(
+        model, ComponentDocCommandId, 0,
+        [](ComponentModel &m, int, const std::optional<Profile::RtcBasicDoc> &value) {
+            m.setComponentDoc(value);
+        },
+        model->profile().basicInfo.doc, doc, mergeKey, parent)
 {
     setText(tr("Change documentation"));
 }
 
-void SetComponentDocCommand::undo()
-{
-    if (m_model)
-        m_model->setComponentDoc(m_before);
-}
-
-void SetComponentDocCommand::redo()
-{
-    if (m_model)
-        m_model->setComponentDoc(m_after);
-}
-
-int SetComponentDocCommand::id() const
-{
-    return ComponentDocCommandId;
-}
-
-bool SetComponentDocCommand::mergeWith(const QUndoCommand *other)
-{
-    const auto *edit = static_cast<const SetComponentDocCommand *>(other);
-    if (edit->m_model != m_model || m_mergeKey.isEmpty() || edit->m_mergeKey != m_mergeKey)
-        return false;
-    m_after = edit->m_after;
-    setObsolete(m_after == m_before);
-    return true;
-}
-
-// ---- SetLanguageCommand
-
 SetLanguageCommand::SetLanguageCommand(ComponentModel *model,
                                        const std::optional<Profile::RtcLanguage> &language,
                                        const QString &mergeKey, QUndoCommand *parent)
-    : QUndoCommand(parent)
-    , m_model(model)
-    , m_mergeKey(mergeKey)
-    , m_before(model->profile().language)
-    , m_after(language)
+    : SetPartCommand(
+        model, LanguageCommandId, 0,
+        [](ComponentModel &m, int, const std::optional<Profile::RtcLanguage> &value) {
+            m.setLanguage(value);
+        },
+        model->profile().language, language, mergeKey, parent)
 {
     setText(tr("Change language and environment"));
-}
-
-void SetLanguageCommand::undo()
-{
-    if (m_model)
-        m_model->setLanguage(m_before);
-}
-
-void SetLanguageCommand::redo()
-{
-    if (m_model)
-        m_model->setLanguage(m_after);
-}
-
-int SetLanguageCommand::id() const
-{
-    return LanguageCommandId;
-}
-
-bool SetLanguageCommand::mergeWith(const QUndoCommand *other)
-{
-    const auto *edit = static_cast<const SetLanguageCommand *>(other);
-    if (edit->m_model != m_model || m_mergeKey.isEmpty() || edit->m_mergeKey != m_mergeKey)
-        return false;
-    m_after = edit->m_after;
-    setObsolete(m_after == m_before);
-    return true;
 }
 
 // ---- ReplaceProfileCommand

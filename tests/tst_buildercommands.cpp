@@ -231,12 +231,23 @@ void TestBuilderCommands::actionDocTypingMerges()
     }
     QCOMPARE(stack.count(), 1);
     QCOMPARE(model.action(RtcAction::OnReset)->doc->description, QStringLiteral("Res"));
+    // Typing into another action's description is a step of its own.
+    auto startup = model.action(RtcAction::OnStartup).value_or(Profile::RtcActionStatus());
+    startup.doc = Profile::RtcActionDoc();
+    startup.doc->description = QStringLiteral("S");
+    stack.push(
+        new SetActionCommand(&model, RtcAction::OnStartup, startup, QStringLiteral("description")));
+    QCOMPARE(stack.count(), 2);
+    QCOMPARE(model.action(RtcAction::OnReset)->doc->description, QStringLiteral("Res"));
     // Switching the action on is a step of its own.
     auto status = model.action(RtcAction::OnReset);
     status->setImplemented(true);
     stack.push(new SetActionCommand(&model, RtcAction::OnReset, status));
-    QCOMPARE(stack.count(), 2);
+    QCOMPARE(stack.count(), 3);
     stack.undo();
+    stack.undo();
+    QCOMPARE(model.action(RtcAction::OnReset)->doc->description, QStringLiteral("Res"));
+    QVERIFY(!model.action(RtcAction::OnStartup) || !model.action(RtcAction::OnStartup)->doc);
     stack.undo();
     QVERIFY(!model.action(RtcAction::OnReset)->doc);
 }
