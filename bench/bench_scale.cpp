@@ -298,68 +298,12 @@ struct Phase
     QString result;
 };
 
-} // namespace
-
-int main(int argc, char **argv)
+/// Part 2: the large system's phases, printed as they end, and the summary line; @p slaves gets
+/// the processes the master started, for the caller to wait for once the master is stopped.
+int largeSystemPhases(const Options &options, QTextStream &out, double samePer, double separatePer,
+                      QList<qint64> *slaves)
 {
-    QCoreApplication app(argc, argv);
-    QTextStream out(stdout);
-    const Options options = parseOptions(app.arguments());
-    Corba::Orb::setCallTimeout(30000);
-
-    // --- 1. creation ---
-    const QString openRtm = openRtmPrefix();
-    const double rtctlAlone = rtctlStartMs();
-    out << QStringLiteral("Creation through one `rtctl mgr … create …` call, naming on, a fresh name server and "
-                          "master each, the middle of %1 calls (rtctl alone starts and ends in %2 ms: the last "
-                          "column leaves it out); %3\n\n")
-               .arg(CreationRounds)
-               .arg(rtctlAlone, 0, 'f', 2)
-               .arg(openRtm.isEmpty() ? QStringLiteral("no OpenRTM-aist prefix (OPENRTM_ROOT), so rtmanager alone")
-                                      : QStringLiteral("OpenRTM-aist's rtcd2 side by side, per component ms"));
-    out << "| placement         |   N | call ms | per component ms | goal ms | met | beyond rtctl's start |"
-        << (openRtm.isEmpty() ? "" : " rtcd2 as it comes | rtcd2 tuned | rtcd2 tuned / ours |") << "\n";
-    out << "|-------------------|-----|---------|------------------|---------|-----|----------------------|"
-        << (openRtm.isEmpty() ? "" : "-------------------|-------------|--------------------|") << "\n";
-    double samePer = -1, separatePer = -1;
     QString error;
-    for (const bool separate : {false, true}) {
-        for (const int count : {10, 100}) {
-            const Creation c = createInFreshMasters(count, separate, &error);
-            if (c.elapsedMs < 0 && c.error.isEmpty()) {
-                out << "bench_scale: " << error << '\n';
-                return 1;
-            }
-            const double per = c.error.isEmpty() ? c.elapsedMs / count : -1;
-            const double goal = separate ? 2.5 : 0.5;
-            const double beyond = c.error.isEmpty() ? qMax(0.0, c.elapsedMs - rtctlAlone) / count : -1;
-            out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 |")
-                       .arg(separate ? QStringLiteral("own slave process") : QStringLiteral("same process"), -17)
-                       .arg(count, 3)
-                       .arg(c.elapsedMs, 7, 'f', 1)
-                       .arg(c.error.isEmpty() ? QString::number(per, 'f', 2) : c.error, 16)
-                       .arg(goal, 7, 'f', 1)
-                       .arg(per >= 0 && per <= goal ? QStringLiteral("yes") : QStringLiteral("no"), 3)
-                       .arg(beyond >= 0 ? QString::number(beyond, 'f', 2) : QStringLiteral("-"), 20);
-            if (!openRtm.isEmpty()) {
-                double plain = -1, tuned = -1;
-                const QString plainText = rtcd2PerComponent(openRtm, count, separate, false, &plain);
-                const QString tunedText = rtcd2PerComponent(openRtm, count, separate, true, &tuned);
-                out << QStringLiteral(" %1 | %2 | %3 |")
-                           .arg(plainText, 17)
-                           .arg(tunedText, 11)
-                           .arg(tuned > 0 && per > 0 ? QString::number(tuned / per, 'f', 1) + QLatin1Char('x')
-                                                     : QStringLiteral("-"),
-                                18);
-            }
-            out << '\n';
-            out.flush();
-            if (count == 100)
-                (separate ? separatePer : samePer) = per;
-        }
-    }
-
-    // --- 2. the large system ---
     LiveTest::LiveSystem live;
     LiveTest::LiveSystem secondServer;
     const quint16 masterPort = LiveTest::freePort();
@@ -464,5 +408,91 @@ int main(int argc, char **argv)
                .arg(msOf(QStringLiteral("restore + start")), msOf(QStringLiteral("teardown")), msOf(QStringLiteral("cryo")))
                .arg(profile.components.size())
                .arg(options.managers);
+    *slaves = descendants(master->processId());
     return ok ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QTextStream out(stdout);
+    const Options options = parseOptions(app.arguments());
+    Corba::Orb::setCallTimeout(30000);
+
+    // --- 1. creation ---
+    const QString openRtm = openRtmPrefix();
+    const double rtctlAlone = rtctlStartMs();
+    out << QStringLiteral("Creation through one `rtctl mgr … create …` call, naming on, a fresh "
+                          "name server and "
+                          "master each, the middle of %1 calls (rtctl alone starts and ends in %2 "
+                          "ms: the last "
+                          "column leaves it out); %3\n\n")
+               .arg(CreationRounds)
+               .arg(rtctlAlone, 0, 'f', 2)
+               .arg(
+                   openRtm.isEmpty()
+                       ? QStringLiteral("no OpenRTM-aist prefix (OPENRTM_ROOT), so rtmanager alone")
+                       : QStringLiteral("OpenRTM-aist's rtcd2 side by side, per component ms"));
+    out << "| placement         |   N | call ms | per component ms | goal ms | met | beyond "
+           "rtctl's start |"
+        << (openRtm.isEmpty() ? "" : " rtcd2 as it comes | rtcd2 tuned | rtcd2 tuned / ours |")
+        << "\n";
+    out << "|-------------------|-----|---------|------------------|---------|-----|---------------"
+           "-------|"
+        << (openRtm.isEmpty() ? "" : "-------------------|-------------|--------------------|")
+        << "\n";
+    double samePer = -1, separatePer = -1;
+    QString error;
+    for (const bool separate : {false, true}) {
+        for (const int count : {10, 100}) {
+            const Creation c = createInFreshMasters(count, separate, &error);
+            if (c.elapsedMs < 0 && c.error.isEmpty()) {
+                out << "bench_scale: " << error << '\n';
+                return 1;
+            }
+            const double per = c.error.isEmpty() ? c.elapsedMs / count : -1;
+            const double goal = separate ? 2.5 : 0.5;
+            const double beyond
+                = c.error.isEmpty() ? qMax(0.0, c.elapsedMs - rtctlAlone) / count : -1;
+            out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 |")
+                       .arg(separate ? QStringLiteral("own slave process")
+                                     : QStringLiteral("same process"),
+                            -17)
+                       .arg(count, 3)
+                       .arg(c.elapsedMs, 7, 'f', 1)
+                       .arg(c.error.isEmpty() ? QString::number(per, 'f', 2) : c.error, 16)
+                       .arg(goal, 7, 'f', 1)
+                       .arg(per >= 0 && per <= goal ? QStringLiteral("yes") : QStringLiteral("no"),
+                            3)
+                       .arg(beyond >= 0 ? QString::number(beyond, 'f', 2) : QStringLiteral("-"),
+                            20);
+            if (!openRtm.isEmpty()) {
+                double plain = -1, tuned = -1;
+                const QString plainText
+                    = rtcd2PerComponent(openRtm, count, separate, false, &plain);
+                const QString tunedText = rtcd2PerComponent(openRtm, count, separate, true, &tuned);
+                out << QStringLiteral(" %1 | %2 | %3 |")
+                           .arg(plainText, 17)
+                           .arg(tunedText, 11)
+                           .arg(tuned > 0 && per > 0
+                                    ? QString::number(tuned / per, 'f', 1) + QLatin1Char('x')
+                                    : QStringLiteral("-"),
+                                18);
+            }
+            out << '\n';
+            out.flush();
+            if (count == 100)
+                (separate ? separatePer : samePer) = per;
+        }
+    }
+
+    // --- 2. the large system ---
+    QList<qint64> slaves;
+    const int code = largeSystemPhases(options, out, samePer, separatePer, &slaves);
+    // The slaves leave within a tenth of a second of their master, and a thousand components take
+    // a while to end: a run started right after this one would measure its creations beside them.
+    waitUntilGone(slaves, 10000);
+    return code;
 }
