@@ -114,6 +114,32 @@ QSet<QString> asSet(const QStringList &list)
     return QSet<QString>(list.begin(), list.end());
 }
 
+/**
+ * Why ports answered a connect with PRECONDITION_NOT_MET. OpenRTM-aist's ports (and
+ * rtmanager's) refuse a second connection between ports already connected unless the connector
+ * says `dataport.allow_dup_connection` YES, more connections than a data port takes, and a
+ * connector id the port already holds.
+ */
+QString preconditionReason(const std::vector<PortInfo> &ports)
+{
+    for (const PortInfo &port : ports) {
+        for (const ConnectorInfo &connector : port.connectors) {
+            for (const PortInfo &other : ports) {
+                if (&other != &port
+                    && (connector.portIors.contains(other.ior)
+                        || connector.ports.contains(other.name)))
+                    return QStringLiteral(
+                               "%1 is already connected to %2 (connector %3); "
+                               "-p dataport.allow_dup_connection=YES connects them again")
+                        .arg(port.name, other.name, connector.id);
+            }
+        }
+    }
+    return QStringLiteral(
+        "a port has as many connections as it takes (dataport.inport.fan_in, "
+        "dataport.outport.fan_out; 100 unless set), or already holds this connector id");
+}
+
 RTC::PortService_ptr portService(const PortInfo &port, const QString &path)
 {
     CORBA::Object_var object = toObject(port.ior, path);
@@ -200,6 +226,10 @@ ConnectorInfo PortConnection::connectAsGiven(const std::vector<PortInfo> &ports,
         profile.ports[CORBA::ULong(i)] = portService(ports[i], path);
     RTC::PortService_var source = portService(ports.front(), path);
     const int code = call(path, [&] { return int(source->connect(profile)); });
+    if (code == int(RTC::PRECONDITION_NOT_MET))
+        throw Error(Error::Kind::Refused,
+                    QStringLiteral("%1: connect returned PRECONDITION_NOT_MET: %2")
+                        .arg(path, preconditionReason(ports)));
     checkReturnCode(code, path, QStringLiteral("connect"));
     return {toQString(profile.name.in()), toQString(profile.connector_id.in()), namesOf(ports),
             fromNVList(profile.properties), iorsOf(ports)};

@@ -3,17 +3,42 @@
 
 #include "outportconnector.h"
 
+#include <stdexcept>
+
 namespace Runtime {
 
-DataPortBase::DataPortBase(const std::string &name, const std::string &portType, const std::string &dataType)
+DataPortBase::DataPortBase(const std::string &name, const std::string &portType,
+                           const std::string &dataType)
     : PortBase(name)
     , m_dataType(dataType)
+    , m_input(portType == "DataInPort")
 {
     setProperty("port.port_type", portType);
     setProperty("dataport.data_type", dataType);
     setProperty("dataport.interface_type", "corba_cdr");
     setProperty("dataport.dataflow_type", "push,pull");
     setProperty("dataport.subscription_type", "flush,new,periodic");
+}
+
+RTC::ReturnCode_t DataPortBase::admit(const RTC::ConnectorProfile &profile)
+{
+    const char *limitKey = m_input ? "fan_in" : "fan_out";
+    const std::string connectorKey
+        = std::string(m_input ? "dataport.inport." : "dataport.outport.") + limitKey;
+    const Properties own = portProperties();
+    const std::string text = own.contains(limitKey)
+        ? own.value(limitKey)
+        : nvToProperties(profile.properties).value(connectorKey);
+    unsigned long limit = 100;
+    try {
+        if (!text.empty())
+            limit = std::stoul(text);
+    } catch (const std::exception &) {
+        // An unreadable limit keeps OpenRTM's default.
+    }
+    if (connectionCount() >= limit)
+        return RTC::PRECONDITION_NOT_MET;
+    return PortBase::admit(profile);
 }
 
 std::string DataPortBase::checkProfile(const Properties &p, bool *pull) const

@@ -29,6 +29,10 @@ public:
 protected:
     /// Empty when the profile fits this port; else why not. @p pull tells the data flow.
     std::string checkProfile(const Properties &connectorProperties, bool *pull) const;
+    /// Besides the duplicate check, OpenRTM-aist's limit on connections: an InPort takes
+    /// `dataport.inport.fan_in`, an OutPort `dataport.outport.fan_out` of them (the port's own
+    /// `fan_in` / `fan_out` first; 100 when neither says).
+    RTC::ReturnCode_t admit(const RTC::ConnectorProfile &profile) override;
 
     /// Offers @p reference in @p profile as OpenRTM's corba_cdr interface type does: its IOR under
     /// `dataport.corba_cdr.<end>_ior` and the reference itself under `<end>_ref` (@p end is
@@ -65,6 +69,7 @@ protected:
 
 private:
     std::string m_dataType;
+    bool m_input;
 };
 
 /**

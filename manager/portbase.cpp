@@ -4,6 +4,7 @@
 #include "corbautil.h"
 
 #include <cctype>
+#include <memory>
 
 namespace Runtime {
 
@@ -144,9 +145,10 @@ RTC::ReturnCode_t PortBase::connect(RTC::ConnectorProfile &connector_profile)
         id = newUuid();
         connector_profile.connector_id = id.c_str();
     } else {
+        // OpenRTM-aist answers a connector id it already holds with PRECONDITION_NOT_MET.
         RTC::ConnectorProfile existing;
         if (findProfile(id, &existing))
-            return RTC::BAD_PARAMETER;
+            return RTC::PRECONDITION_NOT_MET;
     }
     try {
         const RTC::ReturnCode_t result = connector_profile.ports[0]->notify_connect(connector_profile);
@@ -154,8 +156,9 @@ RTC::ReturnCode_t PortBase::connect(RTC::ConnectorProfile &connector_profile)
             disconnect(id.c_str());
         return result;
     } catch (const CORBA::Exception &) {
+        // A first port that cannot be reached: BAD_PARAMETER, as OpenRTM-aist answers.
         disconnect(id.c_str());
-        return RTC::RTC_ERROR;
+        return RTC::BAD_PARAMETER;
     }
 }
 
@@ -189,8 +192,32 @@ RTC::ReturnCode_t PortBase::disconnect_all()
     return result;
 }
 
+RTC::ReturnCode_t PortBase::admit(const RTC::ConnectorProfile &profile)
+{
+    const Properties connector = nvToProperties(profile.properties);
+    const bool portAllows = portProperties().isYes("allow_dup_connection");
+    if (connector.isYes("dataport.allow_dup_connection", portAllows))
+        return RTC::RTC_OK;
+    RTC::PortService_var self = reference();
+    const std::unique_ptr<RTC::ConnectorProfileList> existing(get_connector_profiles());
+    for (CORBA::ULong i = 0; i < profile.ports.length(); ++i) {
+        if (self->_is_equivalent(profile.ports[i]))
+            continue;
+        for (CORBA::ULong c = 0; c < existing->length(); ++c) {
+            const RTC::PortServiceList &ports = (*existing)[c].ports;
+            for (CORBA::ULong p = 0; p < ports.length(); ++p) {
+                if (ports[p]->_is_equivalent(profile.ports[i]))
+                    return RTC::PRECONDITION_NOT_MET;
+            }
+        }
+    }
+    return RTC::RTC_OK;
+}
+
 RTC::ReturnCode_t PortBase::notify_connect(RTC::ConnectorProfile &connector_profile)
 {
+    if (const RTC::ReturnCode_t refused = admit(connector_profile); refused != RTC::RTC_OK)
+        return refused;
     RTC::ReturnCode_t result = publishInterfaces(connector_profile);
     if (result != RTC::RTC_OK)
         return result;

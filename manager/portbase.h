@@ -52,6 +52,13 @@ public:
     RTC::ReturnCode_t notify_disconnect(const char *connector_id) override;
 
 protected:
+    /**
+     * Whether this port takes the connection @p profile describes, checked before anything is
+     * set up, as OpenRTM-aist's ports do: a second connection to a port this one is already
+     * connected to is refused with PRECONDITION_NOT_MET unless the connector's
+     * `dataport.allow_dup_connection` (else the port's `allow_dup_connection`) is YES.
+     */
+    virtual RTC::ReturnCode_t admit(const RTC::ConnectorProfile &profile);
     /// Adds this port's own interface keys to @p profile.
     virtual RTC::ReturnCode_t publishInterfaces(RTC::ConnectorProfile &profile) = 0;
     /// Connects to what the other ports published in @p profile.

@@ -436,6 +436,19 @@ void TestInteropSystem::dataCommands()
         QCOMPARE(connectors[0]["id"].toString(), id);
         QCOMPARE(connectors[0]["name"].toString(), QString("interop"));
     }
+    // OpenRTM's ports refuse a second connection between them unless the connector allows it
+    // (rtmanager's ports do the same: tst_managerruntime), and rtctl names the reason.
+    const RtctlResult again
+        = rtctl({"con", openRtm("SeqOut0.rtc:Double"), openRtm("SeqIn0.rtc:Double")});
+    QCOMPARE(again.code, 1);
+    QVERIFY2(again.err.contains(
+                 "PRECONDITION_NOT_MET: SeqOut0.Double is already connected to SeqIn0.Double"),
+             qPrintable(again.err));
+    const RtctlResult allowed
+        = rtctl({"con", "-p", "dataport.allow_dup_connection=YES", openRtm("SeqOut0.rtc:Double"),
+                 openRtm("SeqIn0.rtc:Double")});
+    QCOMPARE(allowed.code, 0);
+    QCOMPARE(rtctl({"dis", "-i", allowed.out.trimmed(), openRtm("SeqOut0.rtc:Double")}).code, 0);
     QCOMPARE(rtctl({"dis", openRtm("SeqOut0.rtc:Double"), openRtm("SeqIn0.rtc:Double")}).code, 0);
     for (const QString &port : {openRtm("SeqOut0.rtc:Double"), openRtm("SeqIn0.rtc:Double")})
         QVERIFY(rtctl({"cat", "--json", port}).json()["connectors"].toArray().isEmpty());

@@ -119,6 +119,9 @@ private slots:
     void connectRejectsMismatch();
     void connectRefusesNilPeer_data();
     void connectRefusesNilPeer();
+    void duplicateConnectionRefused();
+    void connectionLimits_data();
+    void connectionLimits();
     void sameDataType_data();
     void sameDataType();
     void connectDataTypeSpellings_data();
@@ -722,9 +725,9 @@ void TestManagerRuntime::disconnectStopsFlow()
     RTC::ConnectorProfile profile;
     QCOMPARE(connect(outPort, inPort, Properties::parseConf("dataport.dataflow_type: push\n"), &profile),
              RTC::RTC_OK);
-    // The same id twice is refused.
+    // The same id twice is refused, with OpenRTM-aist's code.
     RTC::ConnectorProfile again = profile;
-    QCOMPARE(outPort->connect(again), RTC::BAD_PARAMETER);
+    QCOMPARE(outPort->connect(again), RTC::PRECONDITION_NOT_MET);
     RTC::ExecutionContext_var sourceEc = ownedContext(in);
     RTC::ExecutionContext_var sinkEc = ownedContext(out);
     sinkEc->activate_component(out);
@@ -840,6 +843,72 @@ void TestManagerRuntime::connectRefusesNilPeer()
     QCOMPARE(subscriber->connect(profile), RTC::BAD_PARAMETER);
     RTC::ConnectorProfileList_var kept = subscriber->get_connector_profiles();
     QCOMPARE(kept->length(), CORBA::ULong(0));
+}
+
+void TestManagerRuntime::duplicateConnectionRefused()
+{
+    RtObject *source = create("ConsoleIn", "DUP0");
+    RtObject *sink = create("ConsoleOut", "DUP1");
+    RTC::RTObject_var in = source->reference();
+    RTC::RTObject_var out = sink->reference();
+    RTC::PortService_var outPort = port(in, "out");
+    RTC::PortService_var inPort = port(out, "in");
+    QCOMPARE(connect(outPort, inPort, Properties()), RTC::RTC_OK);
+    // As OpenRTM-aist's ports: a second connection between the same ports is refused, from
+    // either end, and leaves nothing behind.
+    QCOMPARE(connect(outPort, inPort, Properties()), RTC::PRECONDITION_NOT_MET);
+    QCOMPARE(connect(inPort, outPort, Properties()), RTC::PRECONDITION_NOT_MET);
+    RTC::ConnectorProfileList_var onOut = outPort->get_connector_profiles();
+    RTC::ConnectorProfileList_var onIn = inPort->get_connector_profiles();
+    QCOMPARE(onOut->length(), CORBA::ULong(1));
+    QCOMPARE(onIn->length(), CORBA::ULong(1));
+    // ... unless the connector allows it.
+    QCOMPARE(
+        connect(outPort, inPort, Properties::parseConf("dataport.allow_dup_connection: YES\n")),
+        RTC::RTC_OK);
+    onOut = outPort->get_connector_profiles();
+    onIn = inPort->get_connector_profiles();
+    QCOMPARE(onOut->length(), CORBA::ULong(2));
+    QCOMPARE(onIn->length(), CORBA::ULong(2));
+}
+
+void TestManagerRuntime::connectionLimits_data()
+{
+    QTest::addColumn<bool>("inPortLimit");
+    QTest::newRow("fan_out: one OutPort, two InPorts") << false;
+    QTest::newRow("fan_in: two OutPorts, one InPort") << true;
+}
+
+void TestManagerRuntime::connectionLimits()
+{
+    QFETCH(bool, inPortLimit);
+    const QByteArray shared = inPortLimit ? "FANIN" : "FANOUT";
+    RtObject *hub = create(inPortLimit ? "ConsoleOut" : "ConsoleIn", shared + "0");
+    RTC::RTObject_var hubRef = hub->reference();
+    RTC::PortService_var hubPort = port(hubRef, inPortLimit ? "in" : "out");
+    std::vector<RTC::PortService_var> peers;
+    for (const char *suffix : {"A", "B", "C"}) {
+        RtObject *peer
+            = create(inPortLimit ? "ConsoleIn" : "ConsoleOut", (shared + suffix).constData());
+        RTC::RTObject_var peerRef = peer->reference();
+        peers.push_back(port(peerRef, inPortLimit ? "out" : "in"));
+    }
+    const Properties limited = Properties::parseConf(inPortLimit ? "dataport.inport.fan_in: 1\n"
+                                                                 : "dataport.outport.fan_out: 1\n");
+    const auto connectPeer = [&](const RTC::PortService_var &peer, const Properties &p) {
+        return inPortLimit ? connect(peer, hubPort, p) : connect(hubPort, peer, p);
+    };
+    QCOMPARE(connectPeer(peers[0], limited), RTC::RTC_OK);
+    // A connector that allows one connection of the shared port finds it taken.
+    QCOMPARE(connectPeer(peers[1], limited), RTC::PRECONDITION_NOT_MET);
+    RTC::ConnectorProfileList_var held = hubPort->get_connector_profiles();
+    QCOMPARE(held->length(), CORBA::ULong(1));
+    RTC::ConnectorProfileList_var onRefused = peers[1]->get_connector_profiles();
+    QCOMPARE(onRefused->length(), CORBA::ULong(0));
+    // Without a limit of its own, OpenRTM's default of 100 applies.
+    QCOMPARE(connectPeer(peers[2], Properties()), RTC::RTC_OK);
+    held = hubPort->get_connector_profiles();
+    QCOMPARE(held->length(), CORBA::ULong(2));
 }
 
 void TestManagerRuntime::sameDataType_data()

@@ -378,7 +378,23 @@ void TestRtctlRt::drivesTheRealManager()
     QCOMPARE(ls.code, 0);
     QCOMPARE(ls.lines().size(), 3);
     QVERIFY(ls.lines().contains("ConsoleIn0.rtc"));
-    QCOMPARE(rtctl({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}, dir).code, 0);
+    const Result con = rtctl({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}, dir);
+    QCOMPARE(con.code, 0);
+    // A second connection between the same ports: the port refuses it, as OpenRTM-aist's do, and
+    // rtctl says why and how to ask for it.
+    const Result again = rtctl({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"}, dir);
+    QCOMPARE(again.code, 1);
+    QVERIFY2(again.err.contains(
+                 "connect returned PRECONDITION_NOT_MET: ConsoleIn0.out is already connected to "
+                 "ConsoleOut0.in (connector "
+                 + con.out.trimmed() + ")")
+                 && again.err.contains("dataport.allow_dup_connection=YES"),
+             qPrintable(again.err));
+    const Result allowed = rtctl({"con", "-p", "dataport.allow_dup_connection=YES",
+                                  "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in"},
+                                 dir);
+    QCOMPARE(allowed.code, 0);
+    QCOMPARE(rtctl({"dis", "-i", allowed.out.trimmed(), "ConsoleOut0.rtc:in"}, dir).code, 0);
     QCOMPARE(rtctl({"act", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}, dir).code, 0);
     QTRY_VERIFY(
         rtctl({"ls", "-l", "ConsoleOut0.rtc"}, dir).out.simplified().startsWith("Active 1/1 1/1"));
