@@ -2,8 +2,9 @@
 // One name server shared by OpenRTM-aist 2.x — its example components as their own programs and
 // an rtcd2 master that creates more in a slave — and rtmanager with its built-in twins of the same
 // examples. rtctl drives all of them: every command it has against OpenRTM-aist's side, data of
-// every basic type from each SeqOut to the other side's SeqIn, configuration sets written and
-// activated, service calls in both directions and a mixed system saved, torn down and restored.
+// every basic type from each SeqOut to the other side's SeqIn (and over every data flow: push with
+// flush, new and periodic, and pull), configuration sets written and activated, service calls in
+// both directions and a mixed system saved, torn down and restored.
 //
 // Needs the prefix of an OpenRTM-aist installation (CMake cache variable RTSTUDIO_OPENRTM_PREFIX,
 // ctest label "interop"); without one the test is skipped.
@@ -158,6 +159,8 @@ private slots:
     void cleanupTestCase();
     void everyRtctlCommand();
     void dataBothWays();
+    void everyDataFlow_data();
+    void everyDataFlow();
     void configuration();
     void serviceCalls();
     void mixedSystemRoundTrip();
@@ -550,6 +553,61 @@ void TestInteropSystem::dataBothWays()
     QCOMPARE(rtctl({"dis", openRtm("SeqOut0.rtc")}).code, 0);
     QCOMPARE(rtctl({"dis", ours("SeqOut0.rtc")}).code, 0);
     QVERIFY(rtctl({"ls", "-l", ours("SeqIn0.rtc")}).out.simplified().startsWith("Inactive 10/0"));
+}
+
+void TestInteropSystem::everyDataFlow_data()
+{
+    QTest::addColumn<QStringList>("properties");
+    QTest::newRow("push, flush") << QStringList {"dataport.subscription_type=flush"};
+    QTest::newRow("push, periodic")
+        << QStringList {"dataport.subscription_type=periodic", "dataport.publisher.push_rate=50"};
+    QTest::newRow("pull") << QStringList {"dataport.dataflow_type=pull"};
+}
+
+// Each data flow OpenRTM-aist offers, both ways: OpenRTM's SeqOut into our SeqIn on Short, our
+// SeqOut into OpenRTM's SeqIn on Long (a pull connector has the reading side ask the writing
+// side's OutPortCdr each cycle).
+void TestInteropSystem::everyDataFlow()
+{
+    QFETCH(QStringList, properties);
+    QStringList options;
+    for (const QString &property : properties)
+        options << "-p" << property;
+    const RtctlResult in
+        = rtctl(QStringList {"con"} + options
+                + QStringList {openRtm("SeqOut0.rtc:Short"), ours("SeqIn0.rtc:Short")});
+    QVERIFY2(in.code == 0, qPrintable(in.err));
+    const RtctlResult out
+        = rtctl(QStringList {"con"} + options
+                + QStringList {ours("SeqOut0.rtc:Long"), openRtm("SeqIn0.rtc:Long")});
+    QVERIFY2(out.code == 0, qPrintable(out.err));
+    QCOMPARE(rtctl({"act", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
+                    ours("SeqIn0.rtc")})
+                 .code,
+             0);
+
+    const long before = ourStatus("SeqIn0", "Short_count").toLong();
+    QTRY_VERIFY_WITH_TIMEOUT(ourStatus("SeqIn0", "Short_count").toLong() > before + 10, 15000);
+    // OpenRTM's SeqIn shows our counter in its Long column, growing from table to table.
+    double seen = 0;
+    const bool growing = waitForSeqInTable(
+        [&seen](const SeqInTable &table) {
+            const int column = int(table.columns.indexOf(QStringLiteral("Long")));
+            if (column < 0 || table.basic.size() != 5 || table.basic[column] <= 0)
+                return false;
+            const bool grew = seen > 0 && table.basic[column] > seen;
+            seen = table.basic[column];
+            return grew;
+        },
+        15000);
+    QVERIFY2(growing, "OpenRTM's SeqIn did not show our SeqOut's Long counter growing");
+
+    QCOMPARE(rtctl({"deact", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
+                    ours("SeqIn0.rtc")})
+                 .code,
+             0);
+    QCOMPARE(rtctl({"dis", openRtm("SeqOut0.rtc")}).code, 0);
+    QCOMPARE(rtctl({"dis", ours("SeqOut0.rtc")}).code, 0);
 }
 
 void TestInteropSystem::configuration()

@@ -120,6 +120,8 @@ private slots:
     void connectRefusesNilPeer_data();
     void connectRefusesNilPeer();
     void duplicateConnectionRefused();
+    void seqInReadsEveryFlow_data();
+    void seqInReadsEveryFlow();
     void connectionLimits_data();
     void connectionLimits();
     void sameDataType_data();
@@ -870,6 +872,34 @@ void TestManagerRuntime::duplicateConnectionRefused()
     onIn = inPort->get_connector_profiles();
     QCOMPARE(onOut->length(), CORBA::ULong(2));
     QCOMPARE(onIn->length(), CORBA::ULong(2));
+}
+
+void TestManagerRuntime::seqInReadsEveryFlow_data()
+{
+    QTest::addColumn<QString>("flow");
+    QTest::newRow("push") << "push";
+    QTest::newRow("pull") << "pull";
+}
+
+// The SeqIn twin reads every cycle, as OpenRTM-aist's SeqIn does: a pull connector, which never
+// has a sample waiting, is asked on read.
+void TestManagerRuntime::seqInReadsEveryFlow()
+{
+    QFETCH(QString, flow);
+    RtObject *source = create("SeqOut", "SO" + flow.toUtf8());
+    RtObject *sink = create("SeqIn", "SI" + flow.toUtf8());
+    RTC::RTObject_var out = source->reference();
+    RTC::RTObject_var in = sink->reference();
+    Properties p;
+    p.set("dataport.dataflow_type", flow.toStdString());
+    RTC::PortService_var outPort = port(out, "Long");
+    RTC::PortService_var inPort = port(in, "Long");
+    QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
+    RTC::ExecutionContext_var sourceEc = ownedContext(out);
+    RTC::ExecutionContext_var sinkEc = ownedContext(in);
+    QCOMPARE(sourceEc->activate_component(out), RTC::RTC_OK);
+    QCOMPARE(sinkEc->activate_component(in), RTC::RTC_OK);
+    QTRY_VERIFY(statusNumber(in, "Long_count") > 5);
 }
 
 void TestManagerRuntime::connectionLimits_data()

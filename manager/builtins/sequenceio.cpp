@@ -114,8 +114,15 @@ private:
         InPort<Sample> *port = addInPort<Sample>(name);
         auto count = std::make_shared<long>(0);
         m_readers.push_back([this, port, count, name] {
+            // Pushed samples first; then, as OpenRTM-aist's SeqIn reads every cycle, one read
+            // that asks a pull connector's OutPort.
             Sample sample;
-            while (port->isNew() && port->read(&sample))
+            bool pushed = false;
+            while (port->isNew() && port->read(&sample)) {
+                ++*count;
+                pushed = true;
+            }
+            if (!pushed && port->read(&sample))
                 ++*count;
             setStatus(name + "_count", std::to_string(*count));
         });
