@@ -23,18 +23,25 @@ bool isData(const PortInfo &port)
 }
 
 // OpenRTM lists allowed values comma-separated ("push, pull"); "Any" accepts everything.
+QStringList listedValues(const PortInfo &port, const QString &key)
+{
+    QStringList values;
+    for (const QString &entry : propertyValue(port.properties, key).split(QLatin1Char(','))) {
+        if (!entry.trimmed().isEmpty())
+            values.append(entry.trimmed());
+    }
+    return values;
+}
+
+bool allowsAny(const QStringList &listed)
+{
+    return listed.isEmpty() || listed.contains(QLatin1String("any"), Qt::CaseInsensitive);
+}
+
 bool allows(const PortInfo &port, const QString &key, const QString &value)
 {
-    if (!hasProperty(port.properties, key))
-        return true;
-    const QStringList allowed = propertyValue(port.properties, key).split(QLatin1Char(','));
-    for (const QString &entry : allowed) {
-        const QString item = entry.trimmed();
-        if (item.compare(QLatin1String("any"), Qt::CaseInsensitive) == 0
-            || item.compare(value, Qt::CaseInsensitive) == 0)
-            return true;
-    }
-    return false;
+    const QStringList listed = listedValues(port, key);
+    return allowsAny(listed) || listed.contains(value, Qt::CaseInsensitive);
 }
 
 // rtcon accepts an out port with in ports, or one in port with one out port in either order.
@@ -177,6 +184,23 @@ QString PortConnection::problem(const std::vector<PortInfo> &ports, const Proper
         return serviceProblem(ports);
     return QStringLiteral("%1 has an unknown port type '%2'")
         .arg(ports.front().name, ports.front().portType());
+}
+
+QStringList PortConnection::commonValues(const std::vector<PortInfo> &ports, const QString &key)
+{
+    QStringList common;
+    for (const PortInfo &port : ports) {
+        const QStringList listed = listedValues(port, key);
+        if (allowsAny(listed))
+            continue;
+        for (const QString &value : listed) {
+            if (std::all_of(ports.begin(), ports.end(),
+                            [&](const PortInfo &other) { return allows(other, key, value); }))
+                common.append(value);
+        }
+        break;
+    }
+    return common;
 }
 
 QString PortConnection::defaultName(const std::vector<PortInfo> &ports)

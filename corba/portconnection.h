@@ -39,6 +39,12 @@ public:
      * interface of the first port must find one with the same instance name and opposite polarity.
      */
     static QString problem(const std::vector<PortInfo> &ports, const Properties &properties);
+    /**
+     * The values of @p key (e.g. `dataport.subscription_type`) every one of @p ports allows, in
+     * the order of the first port that lists them; a port that says `Any` or lists nothing
+     * allows everything. Empty when none restricts the key or they have nothing in common.
+     */
+    static QStringList commonValues(const std::vector<PortInfo> &ports, const QString &key);
     /// rtcon's default connector name: the ports' short names joined by '_'.
     static QString defaultName(const std::vector<PortInfo> &ports);
 

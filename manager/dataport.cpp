@@ -17,7 +17,9 @@ DataPortBase::DataPortBase(const std::string &name, const std::string &portType,
     setProperty("dataport.data_type", dataType);
     setProperty("dataport.interface_type", "corba_cdr");
     setProperty("dataport.dataflow_type", "push,pull");
-    setProperty("dataport.subscription_type", "flush,new,periodic");
+    // As OpenRTM-aist's ports: the subscription type is the sending side's; an InPort takes any.
+    setProperty("dataport.subscription_type", m_input ? "Any" : "flush,new,periodic");
+    setProperty("dataport.marshaling_types", "cdr");
 }
 
 RTC::ReturnCode_t DataPortBase::admit(const RTC::ConnectorProfile &profile)
@@ -51,7 +53,8 @@ std::string DataPortBase::checkProfile(const Properties &p, bool *pull) const
         return "unsupported dataport.dataflow_type '" + flow + "'";
     *pull = flow == "pull";
     OutPortPushConnector::Mode mode;
-    if (!*pull && !OutPortPushConnector::parseMode(p.value("dataport.subscription_type", "flush"), &mode))
+    if (!m_input && !*pull
+        && !OutPortPushConnector::parseMode(p.value("dataport.subscription_type", "flush"), &mode))
         return "unsupported dataport.subscription_type '" + p.value("dataport.subscription_type") + "'";
     const std::string type = p.value("dataport.data_type");
     if (!type.empty() && !sameDataType(type, m_dataType))

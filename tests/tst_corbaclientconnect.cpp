@@ -17,6 +17,8 @@ private slots:
     void checks_data();
     void checks();
     void defaultName();
+    void commonValues_data();
+    void commonValues();
     void refusedBeforeAnyRemoteCall();
 };
 
@@ -156,6 +158,43 @@ void TestCorbaClientConnect::checks()
         QVERIFY2(found.isEmpty(), qPrintable(found));
     else
         QVERIFY2(found.startsWith(problem), qPrintable(found));
+}
+
+void TestCorbaClientConnect::commonValues_data()
+{
+    QTest::addColumn<QString>("outValues");
+    QTest::addColumn<QString>("inValues");
+    QTest::addColumn<QStringList>("common");
+    // OpenRTM-aist's OutPorts list their subscription types and its InPorts say "Any".
+    QTest::newRow("any InPort") << "block,flush,new,nonblock,periodic"
+                                << "Any"
+                                << QStringList {"block", "flush", "new", "nonblock", "periodic"};
+    QTest::newRow("any OutPort") << "ANY"
+                                 << "flush, new" << QStringList {"flush", "new"};
+    QTest::newRow("both list") << "flush,new,periodic"
+                               << "new, periodic,block" << QStringList {"new", "periodic"};
+    QTest::newRow("case") << "push,pull"
+                          << "PULL" << QStringList {"pull"};
+    QTest::newRow("nothing common") << "flush"
+                                    << "new" << QStringList {};
+    QTest::newRow("neither says") << ""
+                                  << "" << QStringList {};
+}
+
+void TestCorbaClientConnect::commonValues()
+{
+    QFETCH(QString, outValues);
+    QFETCH(QString, inValues);
+    QFETCH(QStringList, common);
+    PortInfo source = out("SeqOut0.Long");
+    PortInfo sink = in("SeqIn0.Long");
+    const QString key = QStringLiteral("dataport.subscription_type");
+    for (auto [port, values] : {std::pair {&source, outValues}, std::pair {&sink, inValues}}) {
+        port->properties.removeIf([&](const auto &p) { return p.first == key; });
+        if (!values.isEmpty())
+            port->properties.append({key, values});
+    }
+    QCOMPARE(PortConnection::commonValues({source, sink}, key), common);
 }
 
 void TestCorbaClientConnect::defaultName()

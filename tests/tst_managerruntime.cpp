@@ -120,6 +120,7 @@ private slots:
     void connectRefusesNilPeer_data();
     void connectRefusesNilPeer();
     void duplicateConnectionRefused();
+    void inPortTakesAnySubscription();
     void seqInReadsEveryFlow_data();
     void seqInReadsEveryFlow();
     void connectionLimits_data();
@@ -872,6 +873,27 @@ void TestManagerRuntime::duplicateConnectionRefused()
     onIn = inPort->get_connector_profiles();
     QCOMPARE(onOut->length(), CORBA::ULong(2));
     QCOMPARE(onIn->length(), CORBA::ULong(2));
+}
+
+void TestManagerRuntime::inPortTakesAnySubscription()
+{
+    RtObject *sink = create("ConsoleOut", "ANY0");
+    RTC::RTObject_var out = sink->reference();
+    RTC::PortService_var inPort = port(out, "in");
+    RTC::PortProfile_var profile = inPort->get_port_profile();
+    QCOMPARE(nv(profile->properties, "dataport.subscription_type"), QString("Any"));
+    QCOMPARE(nv(profile->properties, "dataport.marshaling_types"), QString("cdr"));
+    // How an OutPort sends is its own business: an InPort takes the push connector of an
+    // OpenRTM-aist OutPort whose subscription type rtmanager's OutPorts do not offer.
+    RTC::ConnectorProfile connector;
+    connector.name = "from a blocking publisher";
+    connector.connector_id = "";
+    connector.ports.length(1);
+    connector.ports[0] = RTC::PortService::_duplicate(inPort);
+    setNv(connector.properties, "dataport.dataflow_type", "push");
+    setNv(connector.properties, "dataport.subscription_type", "block");
+    QCOMPARE(inPort->connect(connector), RTC::RTC_OK);
+    QVERIFY(nv(connector.properties, "dataport.corba_cdr.inport_ior").startsWith("IOR:"));
 }
 
 void TestManagerRuntime::seqInReadsEveryFlow_data()

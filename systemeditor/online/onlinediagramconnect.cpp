@@ -14,32 +14,6 @@
 
 namespace SystemEditor {
 
-namespace {
-
-// `dataport.interface_type` of a port profile is a comma-separated list of what it supports.
-QStringList offered(const Corba::PortInfo &port, const QString &key)
-{
-    QStringList values;
-    for (const QString &v :
-         Corba::propertyValue(port.properties, key).split(QLatin1Char(','), Qt::SkipEmptyParts))
-        values.append(v.trimmed());
-    return values;
-}
-
-QStringList common(const QStringList &fallback, const QStringList &a, const QStringList &b)
-{
-    if (a.isEmpty() && b.isEmpty())
-        return fallback;
-    QStringList result;
-    for (const QString &v : a.isEmpty() ? b : a) {
-        if (b.isEmpty() || b.contains(v))
-            result.append(v);
-    }
-    return result.isEmpty() ? fallback : result;
-}
-
-} // namespace
-
 std::optional<Corba::PortInfo> OnlineDiagram::livePort(const QString &portName) const
 {
     const QString instance = portName.section(QLatin1Char('.'), 0, 0);
@@ -58,9 +32,12 @@ ConnectorDialog::Choices OnlineDiagram::choicesFor(const QString &outPort,
     const auto in = livePort(inPort);
     if (!out || !in)
         return choices;
+    // What both ports allow; the dialog's full list where they say nothing or disagree (the
+    // connect then reports why).
     auto both = [&](const QStringList &fallback, const char *key) {
-        const QString k = QString::fromLatin1(key);
-        return common(fallback, offered(*out, k), offered(*in, k));
+        const QStringList common
+            = Corba::PortConnection::commonValues({*out, *in}, QString::fromLatin1(key));
+        return common.isEmpty() ? fallback : common;
     };
     choices.interfaceTypes = both(choices.interfaceTypes, "dataport.interface_type");
     choices.dataflowTypes = both(choices.dataflowTypes, "dataport.dataflow_type");
