@@ -175,6 +175,8 @@ private:
     QString openRtm(const QString &name) const { return "openrtm.host_cxt/" + name; }
     QString ours(const QString &name) const { return "ours.host_cxt/" + name; }
     QString ourStatus(const QString &component, const QString &name) const;
+    /// rtctl's exit code of @p command (act, deact) on both sides' SeqOut0 and SeqIn0.
+    int onSeqComponents(const QString &command);
     QProcess *startExample(const QString &name, QString *error);
     bool startMaster(QString *error);
     QString state(const QString &path);
@@ -210,6 +212,13 @@ RtctlResult TestInteropSystem::rtctl(const QStringList &arguments, const QString
     if (result.code == 0 && !arguments.isEmpty() && openRtmInvolved)
         m_succeeded.insert(arguments.first());
     return result;
+}
+
+int TestInteropSystem::onSeqComponents(const QString &command)
+{
+    return rtctl({command, openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
+                  ours("SeqIn0.rtc")})
+        .code;
 }
 
 QString TestInteropSystem::ourStatus(const QString &component, const QString &name) const
@@ -513,10 +522,7 @@ void TestInteropSystem::dataBothWays()
             = rtctl({"con", ours("SeqOut0.rtc:") + port, openRtm("SeqIn0.rtc:") + port});
         QVERIFY2(out.code == 0, qPrintable(port + ": " + out.err));
     }
-    QCOMPARE(rtctl({"act", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
-                    ours("SeqIn0.rtc")})
-                 .code,
-             0);
+    QCOMPARE(onSeqComponents("act"), 0);
 
     // OpenRTM → ours: our SeqIn counts the samples of each port.
     QStringList silent = seqPorts;
@@ -546,10 +552,7 @@ void TestInteropSystem::dataBothWays()
             arrived.contains(type),
             qPrintable(QStringLiteral("OpenRTM's SeqIn did not get our %1 and %1Seq").arg(type)));
 
-    QCOMPARE(rtctl({"deact", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
-                    ours("SeqIn0.rtc")})
-                 .code,
-             0);
+    QCOMPARE(onSeqComponents("deact"), 0);
     QCOMPARE(rtctl({"dis", openRtm("SeqOut0.rtc")}).code, 0);
     QCOMPARE(rtctl({"dis", ours("SeqOut0.rtc")}).code, 0);
     QVERIFY(rtctl({"ls", "-l", ours("SeqIn0.rtc")}).out.simplified().startsWith("Inactive 10/0"));
@@ -591,10 +594,7 @@ void TestInteropSystem::everyDataFlow()
                     + QStringList {ours("SeqOut0.rtc:Long"), openRtm("SeqIn0.rtc:Long")});
         QVERIFY2(out.code == 0, qPrintable(out.err));
     }
-    QCOMPARE(rtctl({"act", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
-                    ours("SeqIn0.rtc")})
-                 .code,
-             0);
+    QCOMPARE(onSeqComponents("act"), 0);
 
     const long before = ourStatus("SeqIn0", "Short_count").toLong();
     QTRY_VERIFY_WITH_TIMEOUT(ourStatus("SeqIn0", "Short_count").toLong() > before + 10, 15000);
@@ -614,10 +614,7 @@ void TestInteropSystem::everyDataFlow()
         QVERIFY2(growing, "OpenRTM's SeqIn did not show our SeqOut's Long counter growing");
     }
 
-    QCOMPARE(rtctl({"deact", openRtm("SeqOut0.rtc"), openRtm("SeqIn0.rtc"), ours("SeqOut0.rtc"),
-                    ours("SeqIn0.rtc")})
-                 .code,
-             0);
+    QCOMPARE(onSeqComponents("deact"), 0);
     QCOMPARE(rtctl({"dis", openRtm("SeqOut0.rtc")}).code, 0);
     QCOMPARE(rtctl({"dis", ours("SeqOut0.rtc")}).code, 0);
 }

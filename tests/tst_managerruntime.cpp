@@ -138,6 +138,16 @@ private:
     RTC::ReturnCode_t connect(RTC::PortService_ptr a, RTC::PortService_ptr b, const Properties &p,
                               RTC::ConnectorProfile *result = nullptr);
     RTC::PortService_ptr port(RTC::RTObject_ptr rtc, const char *shortName);
+    /// A ConsoleIn and a ConsoleOut as most connection tests use them: the components (`in` is the
+    /// ConsoleIn, `out` the ConsoleOut) and the ports between them.
+    struct ConsolePair
+    {
+        RTC::RTObject_var in;
+        RTC::RTObject_var out;
+        RTC::PortService_var outPort;
+        RTC::PortService_var inPort;
+    };
+    ConsolePair consolePair(const char *source, const char *sink);
 
     CORBA::ORB_var m_orb;
     PortableServer::POA_var m_poa;
@@ -213,6 +223,17 @@ RTC::PortService_ptr TestManagerRuntime::port(RTC::RTObject_ptr rtc, const char 
             return RTC::PortService::_duplicate(ports[i]);
     }
     return RTC::PortService::_nil();
+}
+
+TestManagerRuntime::ConsolePair TestManagerRuntime::consolePair(const char *source,
+                                                                const char *sink)
+{
+    ConsolePair pair;
+    pair.in = create("ConsoleIn", source)->reference();
+    pair.out = create("ConsoleOut", sink)->reference();
+    pair.outPort = port(pair.in, "out");
+    pair.inPort = port(pair.out, "in");
+    return pair;
 }
 
 RTC::ReturnCode_t TestManagerRuntime::connect(RTC::PortService_ptr a, RTC::PortService_ptr b, const Properties &p,
@@ -668,12 +689,7 @@ void TestManagerRuntime::dataFlow()
     QFETCH(QString, subscription);
     QFETCH(QString, endian);
     QFETCH(bool, inFirst);
-    RtObject *source = create("ConsoleIn", "CI0");
-    RtObject *sink = create("ConsoleOut", "CO0");
-    RTC::RTObject_var in = source->reference();
-    RTC::RTObject_var out = sink->reference();
-    RTC::PortService_var outPort = port(in, "out");
-    RTC::PortService_var inPort = port(out, "in");
+    auto [in, out, outPort, inPort] = consolePair("CI0", "CO0");
     Properties p;
     p.set("dataport.interface_type", "corba_cdr");
     p.set("dataport.dataflow_type", flow.toStdString());
@@ -719,12 +735,7 @@ void TestManagerRuntime::dataFlow()
 
 void TestManagerRuntime::disconnectStopsFlow()
 {
-    RtObject *source = create("ConsoleIn", "CI1");
-    RtObject *sink = create("ConsoleOut", "CO1");
-    RTC::RTObject_var in = source->reference();
-    RTC::RTObject_var out = sink->reference();
-    RTC::PortService_var outPort = port(in, "out");
-    RTC::PortService_var inPort = port(out, "in");
+    auto [in, out, outPort, inPort] = consolePair("CI1", "CO1");
     RTC::ConnectorProfile profile;
     QCOMPARE(connect(outPort, inPort, Properties::parseConf("dataport.dataflow_type: push\n"), &profile),
              RTC::RTC_OK);
@@ -751,12 +762,7 @@ void TestManagerRuntime::disconnectStopsFlow()
 
 void TestManagerRuntime::connectorBufferPolicy()
 {
-    RtObject *source = create("ConsoleIn", "CI3");
-    RtObject *sink = create("ConsoleOut", "CO3");
-    RTC::RTObject_var in = source->reference();
-    RTC::RTObject_var out = sink->reference();
-    RTC::PortService_var outPort = port(in, "out");
-    RTC::PortService_var inPort = port(out, "in");
+    auto [in, out, outPort, inPort] = consolePair("CI3", "CO3");
     RTC::ConnectorProfile profile;
     QCOMPARE(connect(outPort, inPort,
                      Properties::parseConf("dataport.dataflow_type: push\n"
@@ -791,12 +797,7 @@ void TestManagerRuntime::connectRejectsMismatch()
 {
     QFETCH(QString, key);
     QFETCH(QString, value);
-    RtObject *source = create("ConsoleIn", "CI2");
-    RtObject *sink = create("ConsoleOut", "CO2");
-    RTC::RTObject_var in = source->reference();
-    RTC::RTObject_var out = sink->reference();
-    RTC::PortService_var outPort = port(in, "out");
-    RTC::PortService_var inPort = port(out, "in");
+    auto [in, out, outPort, inPort] = consolePair("CI2", "CO2");
     Properties p;
     p.set(key.toStdString(), value.toStdString());
     QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
@@ -850,12 +851,7 @@ void TestManagerRuntime::connectRefusesNilPeer()
 
 void TestManagerRuntime::duplicateConnectionRefused()
 {
-    RtObject *source = create("ConsoleIn", "DUP0");
-    RtObject *sink = create("ConsoleOut", "DUP1");
-    RTC::RTObject_var in = source->reference();
-    RTC::RTObject_var out = sink->reference();
-    RTC::PortService_var outPort = port(in, "out");
-    RTC::PortService_var inPort = port(out, "in");
+    auto [in, out, outPort, inPort] = consolePair("DUP0", "DUP1");
     QCOMPARE(connect(outPort, inPort, Properties()), RTC::RTC_OK);
     // As OpenRTM-aist's ports: a second connection between the same ports is refused, from
     // either end, and leaves nothing behind.
