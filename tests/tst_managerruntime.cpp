@@ -1065,6 +1065,8 @@ void TestManagerRuntime::servicePort()
     QCOMPARE(profile->interfaces[0].polarity, RTC::PROVIDED);
     RTC::ConnectorProfile connected;
     QCOMPARE(connect(cPort, pPort, {}, &connected), RTC::RTC_OK);
+    // A service port, too, refuses a second connection to the same port (as OpenRTM-aist's).
+    QCOMPARE(connect(pPort, cPort, {}), RTC::PRECONDITION_NOT_MET);
     const QString ior = nv(connected.properties, "port.SimpleService::MyService.myservice");
     QVERIFY(ior.startsWith("IOR:"));
     CORBA::Object_var service = m_orb->string_to_object(ior.toLatin1().constData());
