@@ -18,7 +18,8 @@ DataPortBase::DataPortBase(const std::string &name, const std::string &portType,
     setProperty("dataport.interface_type", "corba_cdr");
     setProperty("dataport.dataflow_type", "push,pull");
     // As OpenRTM-aist's ports: the subscription type is the sending side's; an InPort takes any.
-    setProperty("dataport.subscription_type", m_input ? "Any" : "flush,new,periodic");
+    setProperty("dataport.subscription_type",
+                m_input ? "Any" : "block,flush,new,nonblock,periodic");
     setProperty("dataport.marshaling_types", "cdr");
 }
 

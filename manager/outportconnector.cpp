@@ -26,9 +26,10 @@ bool OutPortPushConnector::parseMode(const std::string &text, Mode *mode)
 {
     std::string t = trimmed(text);
     std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (t == "flush" || t.empty())
+    // OpenRTM-aist 2.x also names flush "block" and new "nonblock" (its io_mode names).
+    if (t == "flush" || t == "block" || t.empty())
         *mode = Mode::Flush;
-    else if (t == "new")
+    else if (t == "new" || t == "nonblock")
         *mode = Mode::New;
     else if (t == "periodic")
         *mode = Mode::Periodic;

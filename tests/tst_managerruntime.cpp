@@ -679,6 +679,13 @@ void TestManagerRuntime::dataFlow_data()
     QTest::newRow("push periodic") << "push" << "periodic" << "little" << false;
     QTest::newRow("push flush big endian") << "push" << "flush" << "big" << false;
     QTest::newRow("push flush, inport first") << "push" << "flush" << "little" << true;
+    // OpenRTM-aist 2.x's other names for flush and new.
+    QTest::newRow("push block") << "push"
+                                << "block"
+                                << "little" << false;
+    QTest::newRow("push nonblock") << "push"
+                                   << "nonblock"
+                                   << "little" << false;
     QTest::newRow("pull") << "pull" << "" << "little" << false;
     QTest::newRow("pull, inport first") << "pull" << "" << "big" << true;
 }

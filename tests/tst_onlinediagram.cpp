@@ -360,6 +360,9 @@ void TestOnlineDiagram::connectsLiveByDraggingThroughTheDialog()
     const ConnectorDialog::Choices choices = diagram.choicesFor("ConsoleIn0.out", "ConsoleOut0.in");
     QVERIFY(choices.interfaceTypes.contains("corba_cdr"));
     QVERIFY(choices.dataflowTypes.contains("push"));
+    // The OutPort also lists OpenRTM's other names (block, nonblock) and the InPort takes any:
+    // the dialog offers the types it knows.
+    QCOMPARE(choices.subscriptionTypes, QStringList({"flush", "new", "periodic"}));
     ConnectorSettings asked;
     diagram.setConnectorEditor(
         [&](const ConnectorSettings &proposed, const ConnectorDialog::Choices &) {

@@ -32,12 +32,14 @@ ConnectorDialog::Choices OnlineDiagram::choicesFor(const QString &outPort,
     const auto in = livePort(inPort);
     if (!out || !in)
         return choices;
-    // What both ports allow; the dialog's full list where they say nothing or disagree (the
-    // connect then reports why).
-    auto both = [&](const QStringList &fallback, const char *key) {
-        const QStringList common
+    // What both ports allow of what the dialog offers (OpenRTM-aist's OutPorts also list `block`
+    // and `nonblock`, its other names for flush and new); the dialog's whole list where they say
+    // nothing or disagree (the connect then reports why).
+    auto both = [&](const QStringList &offered, const char *key) {
+        QStringList common
             = Corba::PortConnection::commonValues({*out, *in}, QString::fromLatin1(key));
-        return common.isEmpty() ? fallback : common;
+        common.removeIf([&](const QString &value) { return !offered.contains(value); });
+        return common.isEmpty() ? offered : common;
     };
     choices.interfaceTypes = both(choices.interfaceTypes, "dataport.interface_type");
     choices.dataflowTypes = both(choices.dataflowTypes, "dataport.dataflow_type");
