@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "componentitem.h"
 #include "componentproxy.h"
+#include "connectordialog.h"
 #include "corbaerror.h"
 #include "livesystem.h"
-#include "stoppedprocess.h"
 #include "nameservicemodel.h"
 #include "namingbrowser.h"
 #include "onlinediagram.h"
@@ -12,6 +12,7 @@
 #include "orb.h"
 #include "portconnection.h"
 #include "portitem.h"
+#include "stoppedprocess.h"
 #include "systemmodel.h"
 #include "systemscene.h"
 
@@ -365,8 +366,13 @@ void TestOnlineDiagram::connectsLiveByDraggingThroughTheDialog()
     QCOMPARE(choices.subscriptionTypes, QStringList({"flush", "new", "periodic"}));
     ConnectorSettings asked;
     diagram.setConnectorEditor(
-        [&](const ConnectorSettings &proposed, const ConnectorDialog::Choices &) {
+        [&](const ConnectorSettings &proposed, const ConnectorDialog::Choices &offered) {
             asked = proposed;
+            if (!qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT").isEmpty()) {
+                ConnectorDialog dialog(proposed, offered);
+                dialog.grab().save(qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT")
+                                   + ".connector.png");
+            }
             ConnectorSettings chosen = proposed;
             chosen.subscriptionType = QStringLiteral("new");
             return std::optional<ConnectorSettings>(chosen);
