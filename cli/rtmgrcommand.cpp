@@ -4,14 +4,12 @@
 #include "componentproxy.h"
 #include "concurrent.h"
 #include "corbaerror.h"
-#include "iorendpoint.h"
 #include "managerproxy.h"
 #include "rtjson.h"
 
 #include <QFileInfo>
 #include <QSet>
 
-#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -80,14 +78,15 @@ bool hostedByAddressedManager(const QString &request)
         && requestParameter(request, QLatin1String("manager_address")).isEmpty();
 }
 
-/**
- * Creates a manager on this machine hosts itself share its one process, its name-server
- * connection and the processors with this client, and each round trip is short: two at once keep
- * it busy (one is carried out while the next travels), more only add connections and threads. A
- * manager on another host is a network round trip away, which more at once hide; creates in
- * slaves each start or reach a process of their own.
- */
-constexpr std::size_t createsInOneNearbyProcess = 2;
+/// How many of the actions from @p first on are creates the addressed manager hosts itself.
+qsizetype createsHostedHere(const QList<QPair<QString, QString>> &actions, qsizetype first)
+{
+    qsizetype end = first;
+    while (end < actions.size() && actions.at(end).first == QLatin1String("create")
+           && hostedByAddressedManager(actions.at(end).second))
+        ++end;
+    return end - first;
+}
 
 /**
  * How many of the actions from @p first on are creates that can run side by side: each names its
@@ -121,10 +120,10 @@ QString RtMgrCommand::usage() const
         "Usage: rtctl mgr [--json] [--timeout MS] PATH|corbaloc::HOST[:PORT] ACTION...\n\n"
         "Drives an RTC manager (rtshell's rtmgr), given as a tree path (…/manager.mgr, a slave\n"
         "of it as …/manager.mgr/slave0.mgr) or directly (corbaloc::host, port 2810 and key\n"
-        "'manager' by default). Actions run in order\n"
-        "and stop at the first failure; consecutive creates that each give their own instance_name\n"
-        "are sent side by side to an rtmanager (printed in order; those after a failed one are\n"
-        "removed again):\n"
+        "'manager' by default). Actions run in order and stop at the first failure. An\n"
+        "rtmanager gets consecutive creates it hosts itself in one call, and consecutive creates\n"
+        "in slaves that each give their own instance_name side by side (printed in order; those\n"
+        "after a failed one are removed again):\n"
         "  load FILE[:INIT]     load a module (INIT defaults to <basename>Init)\n"
         "  unload FILE          unload a module\n"
         "  create 'Type?k=v&…'  create a component; prints its instance name\n"
@@ -244,7 +243,18 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
                 : node.reason);
     const ManagerProxy manager(node.ior, node.path);
     std::optional<bool> sideBySide; // asked once, when there is something to send side by side
+    bool inOneCall = true; // until the manager turns out not to take creates in one call
     for (qsizetype i = 0; i < actions.size();) {
+        const qsizetype hostedHere = createsHostedHere(actions, i);
+        if (hostedHere > 1 && inOneCall) {
+            if (createInOneCall(manager, actions.mid(i, hostedHere), streams)) {
+                i += hostedHere;
+                continue;
+            }
+            // Not an rtmanager (OpenRTM-aist's): it does not create side by side either.
+            inOneCall = false;
+            sideBySide = false;
+        }
         qsizetype creates = concurrentCreates(actions, i);
         if (creates > 1 && !sideBySide) {
             sideBySide = propertyValue(manager.profile(), QStringLiteral("rtstudio.concurrent_create"))
@@ -264,6 +274,30 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
     return ExitOk;
 }
 
+bool RtMgrCommand::createInOneCall(const ManagerProxy &manager,
+                                   const QList<QPair<QString, QString>> &creates,
+                                   Streams streams) const
+{
+    QStringList requests;
+    for (const auto &create : creates)
+        requests.append(create.second);
+    const std::optional<ManagerProxy::Created> created = manager.createComponents(requests);
+    if (!created)
+        return false;
+    for (qsizetype i = 0; i < created->iors.size(); ++i) {
+        // An rtmanager gives the instance the name asked for; one it numbers itself is asked.
+        const QString name = requestedInstanceName(requests.at(i));
+        streams.out
+            << (name.isEmpty()
+                    ? ComponentProxy(created->iors.at(i), manager.path()).profile().instanceName
+                    : name)
+            << '\n';
+    }
+    if (!created->refusal.isEmpty())
+        throw Error(Error::Kind::Refused, created->refusal);
+    return true;
+}
+
 void RtMgrCommand::createSideBySide(const ManagerProxy &manager, const QList<QPair<QString, QString>> &creates,
                                     Streams streams) const
 {
@@ -271,24 +305,16 @@ void RtMgrCommand::createSideBySide(const ManagerProxy &manager, const QList<QPa
     std::vector<QString> created(count);
     std::vector<QString> iors(count);
     std::vector<std::optional<Error>> failures(count);
-    const bool oneNearbyProcess = std::all_of(creates.cbegin(), creates.cend(),
-                                              [](const QPair<QString, QString> &create) {
-                                                  return hostedByAddressedManager(create.second);
-                                              })
-        && isThisHost(referenceHost(manager.ior()));
-    forEachConcurrently(
-        count,
-        [&](std::size_t i) {
-            try {
-                // An rtmanager gives the instance the name asked for or refuses the request, so the
-                // name needs no further call to the new component.
-                iors[i] = manager.createComponent(creates.at(qsizetype(i)).second);
-                created[i] = requestedInstanceName(creates.at(qsizetype(i)).second);
-            } catch (const Error &e) {
-                failures[i].emplace(e);
-            }
-        },
-        oneNearbyProcess ? createsInOneNearbyProcess : defaultConcurrency);
+    forEachConcurrently(count, [&](std::size_t i) {
+        try {
+            // An rtmanager gives the instance the name asked for or refuses the request, so the
+            // name needs no further call to the new component.
+            iors[i] = manager.createComponent(creates.at(qsizetype(i)).second);
+            created[i] = requestedInstanceName(creates.at(qsizetype(i)).second);
+        } catch (const Error &e) {
+            failures[i].emplace(e);
+        }
+    });
     for (std::size_t i = 0; i < count; ++i) {
         if (!failures[i]) {
             streams.out << created[i] << '\n';

@@ -28,6 +28,8 @@ protected:
 
 private:
     /// Consecutive creates with their own instance names, sent at once; see usage().
+    bool createInOneCall(const Corba::ManagerProxy &manager,
+                         const QList<QPair<QString, QString>> &creates, Streams streams) const;
     void createSideBySide(const Corba::ManagerProxy &manager, const QList<QPair<QString, QString>> &creates,
                           Streams streams) const;
     void run(const Corba::ManagerProxy &manager, const QString &action, const QString &argument,

@@ -1,16 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "iorendpoint.h"
 
-#include "rtpath.h"
-
 #include <QByteArray>
-#include <QSysInfo>
 
 #include <optional>
-
-#include <arpa/inet.h>
-#include <ifaddrs.h>
-#include <netinet/in.h>
 
 namespace Corba {
 
@@ -120,47 +113,6 @@ QString iorEndpoint(const QString &ior)
             return iiopEndpoint(*body);
     }
     return {};
-}
-
-QString referenceHost(const QString &reference)
-{
-    if (const std::optional<Corbaloc> url = Corbaloc::parse(reference))
-        return url->addresses.isEmpty() ? QString() : url->addresses.first().host();
-    const QString endpoint = iorEndpoint(reference);
-    return endpoint.left(endpoint.lastIndexOf(QLatin1Char(':')));
-}
-
-bool isThisHost(const QString &host)
-{
-    if (host.isEmpty())
-        return false;
-    if (host.compare(QLatin1String("localhost"), Qt::CaseInsensitive) == 0
-        || host.compare(QSysInfo::machineHostName(), Qt::CaseInsensitive) == 0)
-        return true;
-    const QByteArray text = host.toLatin1();
-    in_addr v4 {};
-    in6_addr v6 {};
-    const bool isV4 = inet_pton(AF_INET, text.constData(), &v4) == 1;
-    if (!isV4 && inet_pton(AF_INET6, text.constData(), &v6) != 1)
-        return false; // a name other than this machine's
-    if ((isV4 && (ntohl(v4.s_addr) >> 24) == 127) || (!isV4 && IN6_IS_ADDR_LOOPBACK(&v6)))
-        return true;
-    ifaddrs *interfaces = nullptr;
-    if (getifaddrs(&interfaces) != 0)
-        return false;
-    bool found = false;
-    for (const ifaddrs *i = interfaces; i && !found; i = i->ifa_next) {
-        if (!i->ifa_addr)
-            continue;
-        if (isV4 && i->ifa_addr->sa_family == AF_INET)
-            found
-                = reinterpret_cast<const sockaddr_in *>(i->ifa_addr)->sin_addr.s_addr == v4.s_addr;
-        else if (!isV4 && i->ifa_addr->sa_family == AF_INET6)
-            found = IN6_ARE_ADDR_EQUAL(
-                &reinterpret_cast<const sockaddr_in6 *>(i->ifa_addr)->sin6_addr, &v6);
-    }
-    freeifaddrs(interfaces);
-    return found;
 }
 
 } // namespace Corba

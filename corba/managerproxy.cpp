@@ -2,9 +2,12 @@
 #include "managerproxy.h"
 
 #include "corbacall.h"
+#include "orb.h"
 #include "rtcconversion.h"
 
-#include <Manager.hh>
+#include <RTStudioManager.hh>
+
+#include <climits>
 
 namespace Corba {
 
@@ -94,9 +97,43 @@ QString ManagerProxy::createComponent(const QString &moduleName) const
         return toIor(rtc.in());
     });
     if (ior.isEmpty())
-        throw Error(Error::Kind::Refused, QStringLiteral("%1: could not create '%2'%3")
-                                              .arg(m_path, moduleName, refusalReason(moduleName)));
+        throw Error(Error::Kind::Refused, refusal(moduleName, refusalReason(moduleName)));
     return ior;
+}
+
+std::optional<ManagerProxy::Created>
+ManagerProxy::createComponents(const QStringList &requests) const
+{
+    CORBA::Object_var object = toObject(m_ior, m_path);
+    RTStudio::Manager_var mgr = RTStudio::Manager::_unchecked_narrow(object.in());
+    RTStudio::CreateRequestList list;
+    list.length(CORBA::ULong(requests.size()));
+    for (CORBA::ULong i = 0; i < list.length(); ++i)
+        list[i] = requests.at(qsizetype(i)).toUtf8().constData();
+    const ThreadCallTimeout allCreates(
+        int(qMin(qint64(Orb::callTimeout()) * qMax(1, requests.size()), qint64(INT_MAX))));
+    CORBA::String_var reason;
+    RTC::RTCList_var made;
+    const bool served = callServed(m_path, m_ior, [&] {
+        try {
+            made = mgr->create_components(list, reason.out());
+            return true;
+        } catch (const CORBA::BAD_OPERATION &) {
+            return false;
+        }
+    });
+    if (!served)
+        return std::nullopt;
+    Created created {iors(made.in()), QString()};
+    if (created.iors.size() < requests.size())
+        created.refusal = refusal(requests.at(created.iors.size()), toQString(reason.in()));
+    return created;
+}
+
+QString ManagerProxy::refusal(const QString &request, const QString &reason) const
+{
+    return QStringLiteral("%1: could not create '%2'%3")
+        .arg(m_path, request, reason.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(reason));
 }
 
 // create_component answers a refusal with nil alone; rtmanager says why in its profile (a slave
@@ -106,10 +143,9 @@ QString ManagerProxy::refusalReason(const QString &request) const
 {
     try {
         const Properties properties = profile();
-        QString reason = propertyValue(properties, QStringLiteral("rtstudio.create_error.") + request);
-        if (reason.isEmpty())
-            reason = propertyValue(properties, QStringLiteral("last_error"));
-        return reason.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(reason);
+        const QString reason
+            = propertyValue(properties, QStringLiteral("rtstudio.create_error.") + request);
+        return reason.isEmpty() ? propertyValue(properties, QStringLiteral("last_error")) : reason;
     } catch (const Error &) {
         return QString();
     }

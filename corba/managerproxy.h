@@ -6,6 +6,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
+
 #include <vector>
 
 namespace Corba {
@@ -36,6 +38,19 @@ public:
      * the manager's reason (its profile's `last_error`) when it gives one.
      */
     QString createComponent(const QString &moduleName) const;
+    /// What createComponents() made: the new components' IORs in request order and, when there are
+    /// fewer than requests, the refusal of the next one (as createComponent() would throw it).
+    struct Created
+    {
+        QStringList iors;
+        QString refusal;
+    };
+    /**
+     * rtmanager's `create_components`: what createComponent() for each of @p requests in turn up
+     * to the first refusal would make, in one call (waited for as long as those calls would be).
+     * std::nullopt when the manager has no such operation (OpenRTM-aist's).
+     */
+    std::optional<Created> createComponents(const QStringList &requests) const;
     /**
      * `delete_component(instanceName)`. A master (OpenRTM-aist's as rtmanager) deletes only the
      * components it hosts itself; when it refuses, the slave that hosts the component is asked.
@@ -63,6 +78,8 @@ public:
 
 private:
     QString refusalReason(const QString &request) const;
+    /// The message of a refused create: "<path>: could not create '<request>' (<reason>)".
+    QString refusal(const QString &request, const QString &reason) const;
 
     QString m_ior;
     QString m_path;

@@ -297,6 +297,21 @@ RTC::RTObject_ptr Manager::createComponent(const std::string &requestText, std::
     return created;
 }
 
+RTC::RTCList Manager::createComponents(const std::vector<std::string> &requests, std::string *error)
+{
+    RTC::RTCList created;
+    created.length(0);
+    for (const std::string &request : requests) {
+        RTC::RTObject_var component = createComponent(request, error);
+        if (CORBA::is_nil(component))
+            break;
+        const CORBA::ULong n = created.length();
+        created.length(n + 1);
+        created[n] = component._retn();
+    }
+    return created;
+}
+
 RTC::RTObject_ptr Manager::createRequested(const std::string &requestText, std::string *error)
 {
     std::string text = requestText;

@@ -59,6 +59,11 @@ public:
     void registerFactory(ComponentFactory factory);
     /// Creates per `Type?k=v&…` (locally or on a slave); nil and @p error when it fails.
     RTC::RTObject_ptr createComponent(const std::string &request, std::string *error);
+    /**
+     * createComponent() for each of @p requests in turn, up to the first that fails: the list
+     * holds the components made before it, and @p error says why that one failed.
+     */
+    RTC::RTCList createComponents(const std::vector<std::string> &requests, std::string *error);
     /// How many refused create requests the profile names with their reasons, and the longest
     /// request text kept (a longer one has its reason in `last_error` only).
     static constexpr std::size_t maxKeptRefusals = 64;

@@ -29,6 +29,11 @@ ManagerServant::ManagerServant(Runtime::Manager &manager)
 {
 }
 
+const char *ManagerServant::_mostDerivedRepoId()
+{
+    return RTM::Manager::_PD_repoId;
+}
+
 RTC::ReturnCode_t ManagerServant::load_module(const char *pathname, const char *initfunc)
 {
     return code(m_manager.loadModule(pathname ? pathname : "", initfunc ? initfunc : "", nullptr));
@@ -57,6 +62,19 @@ RTM::ModuleProfileList *ManagerServant::get_factory_profiles()
 RTC::RTObject_ptr ManagerServant::create_component(const char *module_name)
 {
     return m_manager.createComponent(module_name ? module_name : "", nullptr);
+}
+
+RTC::RTCList *ManagerServant::create_components(const RTStudio::CreateRequestList &requests,
+                                                CORBA::String_out error)
+{
+    std::vector<std::string> texts;
+    texts.reserve(requests.length());
+    for (CORBA::ULong i = 0; i < requests.length(); ++i)
+        texts.emplace_back(requests[i].in());
+    std::string reason;
+    auto *created = new RTC::RTCList(m_manager.createComponents(texts, &reason));
+    error = CORBA::string_dup(reason.c_str());
+    return created;
 }
 
 RTC::ReturnCode_t ManagerServant::delete_component(const char *instance_name)

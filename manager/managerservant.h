@@ -1,17 +1,23 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <Manager.hh>
+#include <RTStudioManager.hh>
 
 namespace Runtime {
 
 class Manager;
 
-/// RTM::Manager servant: the wire face of a Manager (every operation delegates to it).
-class ManagerServant : public virtual POA_RTM::Manager
+/**
+ * RTStudio::Manager servant: the wire face of a Manager (every operation delegates to it). Its
+ * references carry RTM::Manager's repository id, as OpenRTM-aist's managers' do; the operations
+ * RTStudio::Manager adds are answered all the same to a client that calls them.
+ */
+class ManagerServant : public virtual POA_RTStudio::Manager
 {
 public:
     explicit ManagerServant(Runtime::Manager &manager);
+
+    const char *_mostDerivedRepoId() override;
 
     RTC::ReturnCode_t load_module(const char *pathname, const char *initfunc) override;
     RTC::ReturnCode_t unload_module(const char *pathname) override;
@@ -19,6 +25,8 @@ public:
     RTM::ModuleProfileList *get_loaded_modules() override;
     RTM::ModuleProfileList *get_factory_profiles() override;
     RTC::RTObject_ptr create_component(const char *module_name) override;
+    RTC::RTCList *create_components(const RTStudio::CreateRequestList &requests,
+                                    CORBA::String_out error) override;
     RTC::ReturnCode_t delete_component(const char *instance_name) override;
     RTC::RTCList *get_components() override;
     RTC::ComponentProfileList *get_component_profiles() override;

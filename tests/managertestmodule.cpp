@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 // A loadable module written against the component SDK (OpenRTM-aist's C++ API): rtmanager's
 // load_module must find its init function, which registers the "ModuleCounter" component type.
+// A create request's init_delay_ms slows its initialisation down by that many milliseconds.
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/DataOutPort.h>
 #include <rtm/Manager.h>
 
+#include <chrono>
 #include <string>
+#include <thread>
 
 namespace {
 
@@ -34,6 +37,11 @@ public:
     RTC::ReturnCode_t onInitialize() override
     {
         addOutPort("out", m_outOut);
+        // A create request's init_delay_ms makes this one of the components that take a while to
+        // start, for the tests of how long a client waits for a manager.
+        const std::string delay = getProperties().getProperty("init_delay_ms");
+        if (!delay.empty())
+            std::this_thread::sleep_for(std::chrono::milliseconds(std::stoi(delay)));
         return RTC::RTC_OK;
     }
     RTC::ReturnCode_t onExecute(RTC::UniqueId) override

@@ -339,6 +339,9 @@ void TestCorbaClient::drivesTheManager()
     QCOMPARE(kindOf([&] { manager.createComponent("Motor?instance_name=Motor7"); }),
              Error::Kind::Refused);
     QCOMPARE(kindOf([&] { manager.createComponent("NoSuchType"); }), Error::Kind::Refused);
+    // An OpenRTM-aist manager has no create_components: the caller is told so, nothing is made.
+    QVERIFY(!manager.createComponents({"Motor?instance_name=Motor8"}));
+    QVERIFY(manager.componentsByName("Motor8").isEmpty());
     manager.deleteComponent("Motor7");
     QCOMPARE(kindOf([&] { NamingBrowser::node(path("Motor7.rtc")); }), Error::Kind::NotFound);
     QCOMPARE(kindOf([&] { manager.deleteComponent("Motor7"); }), Error::Kind::Refused);

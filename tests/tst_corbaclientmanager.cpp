@@ -33,6 +33,7 @@ private slots:
     void connectsServicePorts();
     void editsConfiguration();
     void createsAndDeletesComponents();
+    void createsInOneCall();
     void timeoutsArePerThread();
 
 private:
@@ -287,6 +288,43 @@ void TestCorbaClientManager::createsAndDeletesComponents()
     QCOMPARE(manager.components().size(), before);
     QVERIFY(!manager.profile().isEmpty());
     QVERIFY(!manager.configuration().isEmpty());
+}
+
+void TestCorbaClientManager::createsInOneCall()
+{
+    const RtPath mgrPath = path("manager.mgr");
+    const ManagerProxy manager(NamingBrowser::resolve(mgrPath), mgrPath.toString());
+    std::optional<ManagerProxy::Created> created = manager.createComponents(
+        {"ConsoleOut?instance_name=One0", "ConsoleOut?instance_name=One1"});
+    QVERIFY(created);
+    QCOMPARE(created->iors.size(), 2);
+    QCOMPARE(created->refusal, QString());
+    QCOMPARE(ComponentProxy(created->iors.at(1), "One1").profile().instanceName, QString("One1"));
+    QCOMPARE(NamingBrowser::node(path("One0.rtc")).type, NodeType::Component);
+
+    // The first refusal ends the call and reads as createComponent's would.
+    created = manager.createComponents(
+        {"ConsoleOut?instance_name=One2", "NoSuchType", "ConsoleOut?instance_name=One3"});
+    QVERIFY(created);
+    QCOMPARE(created->iors.size(), 1);
+    QVERIFY2(created->refusal.endsWith("could not create 'NoSuchType' (create_component: unknown "
+                                       "component type 'NoSuchType')"),
+             qPrintable(created->refusal));
+    QVERIFY(manager.componentsByName("One3").isEmpty());
+
+    // Each create has the call timeout a call of its own would have.
+    manager.loadModule(QStringLiteral(MANAGER_TEST_MODULE), "ManagerTestModuleInit");
+    {
+        const ThreadCallTimeout timeout(600);
+        QStringList slow;
+        for (int i = 0; i < 3; ++i)
+            slow << QStringLiteral("ModuleCounter?init_delay_ms=400&instance_name=Slow%1").arg(i);
+        created = manager.createComponents(slow);
+    }
+    QVERIFY(created);
+    QCOMPARE(created->iors.size(), 3);
+    for (const QString name : {"One0", "One1", "One2", "Slow0", "Slow1", "Slow2"})
+        manager.deleteComponent(name);
 }
 
 namespace {

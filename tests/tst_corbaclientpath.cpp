@@ -1,13 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include "iorendpoint.h"
 #include "rtpath.h"
 
-#include <QSysInfo>
 #include <QTest>
-
-#include <arpa/inet.h>
-#include <ifaddrs.h>
-#include <netinet/in.h>
 
 using Corba::RtPath;
 
@@ -25,11 +19,6 @@ private slots:
     void nameServiceAddress();
     void corbalocAsksForGiop12_data();
     void corbalocAsksForGiop12();
-    void referenceHost_data();
-    void referenceHost();
-    void isThisHost_data();
-    void isThisHost();
-    void isThisHostKnowsInterfaceAddresses();
 };
 
 void TestCorbaClientPath::parses_data()
@@ -211,89 +200,6 @@ void TestCorbaClientPath::corbalocAsksForGiop12()
     QFETCH(QString, reference);
     QFETCH(QString, sent);
     QCOMPARE(Corba::corbalocWithGiop12(reference), sent);
-}
-
-// rtctl mgr sends creates side by side two at a time to a manager on this machine, eight to one
-// elsewhere: which host a reference points at, and whether that is this machine.
-void TestCorbaClientPath::referenceHost_data()
-{
-    QTest::addColumn<QString>("reference");
-    QTest::addColumn<QString>("host");
-    // An IOR with one IIOP 1.2 profile for 203.0.113.9:2810 (object key "key", no components).
-    QTest::newRow("IOR")
-        << "IOR:"
-           "010000003500000049444c3a6f70656e72746d2e616973742e676f2e6a702f4f70656e52544d2f446174614"
-           "66c6f77436f6d706f6e656e743a312e3000000000010000000000000024000000010102000c000000323033"
-           "2e302e3131332e3900fa0a0000030000006b65790000000000"
-        << "203.0.113.9";
-    QTest::newRow("normalised corbaloc") << "corbaloc:iiop:127.0.0.1:12810/manager"
-                                         << "127.0.0.1";
-    QTest::newRow("GIOP version") << "corbaloc:iiop:1.2@somehost:2810/manager"
-                                  << "somehost";
-    QTest::newRow("empty protocol, no port") << "corbaloc::somehost/manager"
-                                             << "somehost";
-    QTest::newRow("IPv6") << "corbaloc:iiop:1.2@[::1]:2810/manager"
-                          << "::1";
-    QTest::newRow("first of several") << "corbaloc:iiop:a:1,iiop:b:2/k"
-                                      << "a";
-    QTest::newRow("rir") << "corbaloc:rir:/NameService" << QString();
-    QTest::newRow("scheme in capitals") << "CORBALOC::host:2810/manager"
-                                        << "host";
-    QTest::newRow("unreadable IOR") << "IOR:0102" << QString();
-    QTest::newRow("no reference") << "manager.mgr" << QString();
-}
-
-void TestCorbaClientPath::referenceHost()
-{
-    QFETCH(QString, reference);
-    QFETCH(QString, host);
-    QCOMPARE(Corba::referenceHost(reference), host);
-}
-
-void TestCorbaClientPath::isThisHost_data()
-{
-    QTest::addColumn<QString>("host");
-    QTest::addColumn<bool>("local");
-    QTest::newRow("localhost") << "localhost" << true;
-    QTest::newRow("LOCALHOST") << "LOCALHOST" << true;
-    QTest::newRow("loopback") << "127.0.0.1" << true;
-    QTest::newRow("other loopback") << "127.1.2.3" << true;
-    QTest::newRow("IPv6 loopback") << "::1" << true;
-    QTest::newRow("host name") << QSysInfo::machineHostName() << true;
-    QTest::newRow("documentation address") << "203.0.113.9" << false;
-    QTest::newRow("IPv6 documentation address") << "2001:db8::9" << false;
-    QTest::newRow("other name") << "no-such-host.invalid" << false;
-    QTest::newRow("empty") << QString() << false;
-}
-
-void TestCorbaClientPath::isThisHost()
-{
-    QFETCH(QString, host);
-    QFETCH(bool, local);
-    QCOMPARE(Corba::isThisHost(host), local);
-}
-
-void TestCorbaClientPath::isThisHostKnowsInterfaceAddresses()
-{
-    // A manager listening on every interface publishes one of their addresses in its references.
-    ifaddrs *interfaces = nullptr;
-    QCOMPARE(getifaddrs(&interfaces), 0);
-    QStringList addresses;
-    for (const ifaddrs *i = interfaces; i; i = i->ifa_next) {
-        char text[INET6_ADDRSTRLEN] = {};
-        if (i->ifa_addr && i->ifa_addr->sa_family == AF_INET)
-            inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in *>(i->ifa_addr)->sin_addr, text,
-                      sizeof text);
-        else if (i->ifa_addr && i->ifa_addr->sa_family == AF_INET6)
-            inet_ntop(AF_INET6, &reinterpret_cast<const sockaddr_in6 *>(i->ifa_addr)->sin6_addr,
-                      text, sizeof text);
-        if (text[0])
-            addresses << QString::fromLatin1(text);
-    }
-    freeifaddrs(interfaces);
-    QVERIFY(!addresses.isEmpty());
-    for (const QString &address : std::as_const(addresses))
-        QVERIFY2(Corba::isThisHost(address), qPrintable(address));
 }
 
 QTEST_GUILESS_MAIN(TestCorbaClientPath)

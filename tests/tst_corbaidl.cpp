@@ -11,6 +11,7 @@
 #include <Manager.hh>
 #include <OpenRTM.hh>
 #include <RTC.hh>
+#include <RTStudioManager.hh>
 #include <SDOPackage.hh>
 #include <SimpleService.hh>
 
@@ -302,6 +303,7 @@ void TestCorbaIdl::interfaceRepositoryIds_data()
     row("IDL:OpenRTM/InPortCdr:1.0", OpenRTM::InPortCdr::_PD_repoId);
     row("IDL:OpenRTM/OutPortCdr:1.0", OpenRTM::OutPortCdr::_PD_repoId);
     row("IDL:RTM/Manager:1.0", RTM::Manager::_PD_repoId);
+    row("IDL:rtstudio/RTStudio/Manager:1.0", RTStudio::Manager::_PD_repoId);
     row("IDL:omg.org/RTC/ComponentObserver:1.0", RTC::ComponentObserver::_PD_repoId);
     row("IDL:SimpleService/MyService:1.0", SimpleService::MyService::_PD_repoId);
 }
@@ -704,10 +706,17 @@ void TestCorbaIdl::timedLongCdrLayout()
 void TestCorbaIdl::idlFolderHoldsEveryFile()
 {
     const QDir dir(QStringLiteral(RTSTUDIO_IDL_DIR));
-    const QStringList expected{"BasicDataType.idl",     "ComponentObserver.idl", "DataPort.idl",
-                               "ExtendedDataTypes.idl", "InterfaceDataTypes.idl", "Manager.idl",
-                               "OpenRTM.idl",           "RTC.idl",               "SDOPackage.idl",
-                               "SimpleService.idl"};
+    const QStringList expected {"BasicDataType.idl",
+                                "ComponentObserver.idl",
+                                "DataPort.idl",
+                                "ExtendedDataTypes.idl",
+                                "InterfaceDataTypes.idl",
+                                "Manager.idl",
+                                "OpenRTM.idl",
+                                "RTC.idl",
+                                "RTStudioManager.idl",
+                                "SDOPackage.idl",
+                                "SimpleService.idl"};
     QStringList actual = dir.entryList({"*.idl"}, QDir::Files, QDir::Name);
     QCOMPARE(actual, expected);
     for (const QString &name : expected) {

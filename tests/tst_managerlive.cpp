@@ -5,7 +5,7 @@
 #include "corbautil.h"
 #include "livesystem.h"
 
-#include <Manager.hh>
+#include <RTStudioManager.hh>
 #include <omniORB4/Naming.hh>
 #include <omniORB4/omniORB.h>
 
@@ -104,6 +104,7 @@ private slots:
     void badRequests_data();
     void badRequests();
     void refusalsAreKeptByRequest();
+    void createsInOneCall();
     void killedSlaveLeavesOthersWorking();
     void loadModule();
     void shutdownUnregisters();
@@ -498,6 +499,63 @@ void TestManagerLive::refusalsAreKeptByRequest()
         QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(QString("NoSuchKeptType?instance_name=n%1").arg(i)))));
     QVERIFY(reasonOf(sameName).isEmpty());
     QVERIFY(!reasonOf("NoSuchKeptType?instance_name=n63").isEmpty());
+}
+
+// RTStudio::Manager's create_components: creates in one call as one after the other would, up to
+// the first refusal. The manager's references still name RTM::Manager, as OpenRTM-aist's do.
+void TestManagerLive::createsInOneCall()
+{
+    CORBA::Object_var named = resolve(localHost() + ".host_cxt/manager.mgr");
+    CORBA::String_var ior = m_orb->object_to_string(named);
+    // An IOR's encapsulation: byte order, three octets of padding, the repository id's length, the
+    // id.
+    const QByteArray encapsulation = QByteArray::fromHex(QByteArray(ior.in()).mid(4));
+    QCOMPARE(encapsulation.mid(8, 20), QByteArray("IDL:RTM/Manager:1.0", 20));
+    QVERIFY(m_master->_is_a(RTStudio::Manager::_PD_repoId));
+
+    RTStudio::Manager_var manager = RTStudio::Manager::_unchecked_narrow(m_master);
+    const auto requests = [](const QStringList &texts) {
+        RTStudio::CreateRequestList list;
+        list.length(CORBA::ULong(texts.size()));
+        for (CORBA::ULong i = 0; i < list.length(); ++i)
+            list[i] = texts.at(int(i)).toUtf8().constData();
+        return list;
+    };
+    const QString host = localHost();
+    CORBA::String_var error;
+    RTC::RTCList_var made = manager->create_components(
+        requests({"ConsoleIn?instance_name=Batch0", "ConsoleOut?instance_name=Batch1",
+                  "ConsoleIn?instance_name=Batch2&manager_name=batchslave", "ConsoleIn"}),
+        error.out());
+    QCOMPARE(made->length(), 4u);
+    QCOMPARE(QString(error.in()), QString());
+    const QStringList names {"Batch0", "Batch1", "Batch2", "ConsoleIn0"};
+    for (CORBA::ULong i = 0; i < made->length(); ++i) {
+        RTC::ComponentProfile_var profile = made[i]->get_component_profile();
+        QCOMPARE(QString(profile->instance_name.in()), names.at(int(i)));
+        // Registered when the call returns, as create_component's are.
+        CORBA::Object_var bound = resolve(host + ".host_cxt/" + names.at(int(i)) + ".rtc");
+        QVERIFY2(!CORBA::is_nil(bound), qPrintable(names.at(int(i))));
+        QVERIFY(Runtime::sameObject(bound, made[i]));
+    }
+
+    // The first refusal ends the call: what came before stays, what comes after is not tried.
+    made = manager->create_components(
+        requests({"ConsoleIn?instance_name=Batch3", "NoSuchType?instance_name=Batch4",
+                  "ConsoleIn?instance_name=Batch5"}),
+        error.out());
+    QCOMPARE(made->length(), 1u);
+    QVERIFY2(QString(error.in()).contains("unknown component type 'NoSuchType'"), error.in());
+    QVERIFY(!CORBA::is_nil(CORBA::Object_var(resolve(host + ".host_cxt/Batch3.rtc"))));
+    QVERIFY(CORBA::is_nil(CORBA::Object_var(resolve(host + ".host_cxt/Batch5.rtc"))));
+    RTC::RTCList_var after = m_master->get_components_by_name("Batch5");
+    QCOMPARE(after->length(), 0u);
+    made = manager->create_components(requests({"ConsoleIn?instance_name=Batch3"}), error.out());
+    QCOMPARE(made->length(), 0u);
+    QVERIFY2(QString(error.in()).contains("'Batch3' is already in use"), error.in());
+    made = manager->create_components(requests({}), error.out());
+    QCOMPARE(made->length(), 0u);
+    QCOMPARE(QString(error.in()), QString());
 }
 
 void TestManagerLive::killedSlaveLeavesOthersWorking()

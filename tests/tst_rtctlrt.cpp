@@ -297,6 +297,15 @@ void TestRtctlRt::manager()
     QCOMPARE(again.code, 1);
     QVERIFY(again.err.contains("delete_component(Made0) returned BAD_PARAMETER"));
     QCOMPARE(rtctl({"mgr", "ConsoleIn0.rtc", "list"}).code, 1);
+
+    // Creates an OpenRTM-aist manager (the peer) hosts are made one by one: it has no
+    // create_components.
+    const Result two = rtctl(
+        {"mgr", direct, "create", "ConsoleOut?instance_name=Made1", "create", "ConsoleOut"});
+    QCOMPARE(two.code, 0);
+    QCOMPARE(two.lines(), QStringList({"Made1", "ConsoleOut1"}));
+    QVERIFY(rtctl({"ls"}).lines().contains("ConsoleOut1.rtc"));
+    QCOMPARE(rtctl({"mgr", direct, "delete", "Made1", "delete", "ConsoleOut1"}).code, 0);
 }
 
 void TestRtctlRt::exitRemovesAComponent()
