@@ -66,7 +66,8 @@ const CommandCoverage commandTable[] = {
     {"inject", "everyRtctlCommand", "a value OpenRTM's SeqIn0 then shows"},
     {"log", "everyRtctlCommand", "records OpenRTM's SeqOut0, plays into OpenRTM's SeqIn0"},
     {"conf", "configuration", "set, get and act on OpenRTM's ConfigSample0; it prints the values"},
-    {"mgr", "everyRtctlCommand", "rtcd2: create in a slave, list, load, unload"},
+    {"mgr", "everyRtctlCommand",
+     "rtcd2: create in a slave and several in the master, list, load, unload"},
     {"cryo", "mixedSystemRoundTrip", "saves OpenRTM's and rtmanager's components with connectors"},
     {"teardown", "mixedSystemRoundTrip", "the saved connectors are gone"},
     {"stop", "mixedSystemRoundTrip", "every saved component reads back Inactive"},
@@ -480,7 +481,8 @@ void TestInteropSystem::resetCommand()
     QTRY_COMPARE_WITH_TIMEOUT(state(openRtm("ConsoleIn0.rtc")), QString("Inactive"), 10000);
 }
 
-// mgr and exit: rtcd2 creates in a slave, loads and unloads; exit removes what it created.
+// mgr and exit: rtcd2 creates in a slave and in the master, loads and unloads; exit removes what it
+// created.
 void TestInteropSystem::managerCommands()
 {
     const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_masterPort);
@@ -507,6 +509,14 @@ void TestInteropSystem::managerCommands()
     QVERIFY2(unloaded.code == 0, qPrintable(unloaded.err));
     QVERIFY2(!unloaded.out.contains("ConfigSample.so"), qPrintable(unloaded.out));
 
+    // Several creates the master hosts itself: OpenRTM's manager has no create_components, so
+    // rtctl makes them one by one.
+    const RtctlResult two = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Made1",
+                                   "create", "ConsoleOut?instance_name=Made2"});
+    QVERIFY2(two.code == 0, qPrintable(two.err));
+    QCOMPARE(two.lines(), QStringList({"Made1", "Made2"}));
+    QVERIFY(rtctl({"mgr", direct, "list"}).lines().contains("  Made2  ConsoleOut"));
+    QCOMPARE(rtctl({"exit", "rtcd.host_cxt/Made1.rtc", "rtcd.host_cxt/Made2.rtc"}).code, 0);
     QCOMPARE(rtctl({"exit", "rtcd.host_cxt/Made0.rtc"}).code, 0);
     QTRY_VERIFY(!rtctl({"ls", "rtcd.host_cxt"}).lines().contains("Made0.rtc"));
     QTRY_VERIFY(!rtctl({"mgr", direct, "list"}).out.contains("Made0"));
