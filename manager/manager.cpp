@@ -587,7 +587,9 @@ bool Manager::setConfiguration(const std::string &key, const std::string &value)
 
 Properties Manager::profile()
 {
-    Properties p = configuration();
+    // As OpenRTM-aist's: the configuration's manager.* keys without their prefix (rtshell and
+    // OpenRTP show naming_formats, modules.load_path …), and what this runtime adds.
+    Properties p = configuration().subtree("manager");
     p.set("instance_name", m_instanceName);
     p.set("name", m_config.value("manager.name", "manager"));
     p.set("pid", std::to_string(getpid()));

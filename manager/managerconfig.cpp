@@ -21,6 +21,7 @@ Properties managerDefaults()
     p.set("manager.corba_servant", "YES");
     p.set("manager.name", "manager");
     p.set("manager.instance_name", "manager");
+    p.set("manager.modules.load_path", ".");
     p.set("exec_cxt.periodic.type", "PeriodicExecutionContext");
     p.set("exec_cxt.periodic.rate", "1000");
     p.set("exec_cxt.transition_timeout", "0.5");

@@ -509,6 +509,17 @@ void TestInteropSystem::managerCommands()
     QVERIFY2(unloaded.code == 0, qPrintable(unloaded.err));
     QVERIFY2(!unloaded.out.contains("ConfigSample.so"), qPrintable(unloaded.out));
 
+    // A manager's profile holds its configuration's manager.* keys without the prefix, on both
+    // sides.
+    for (const QString &manager :
+         {QStringLiteral("rtcd.host_cxt/manager.mgr"), ours("manager.mgr")}) {
+        const QJsonObject profile = rtctl({"cat", "--json", manager}).json()["profile"].toObject();
+        for (const char *key :
+             {"instance_name", "name", "pid", "is_master", "naming_formats", "modules.load_path"})
+            QVERIFY2(profile.contains(key), qPrintable(manager + ": " + key));
+        QVERIFY2(!profile.contains("manager.naming_formats"), qPrintable(manager));
+    }
+
     // Several creates the master hosts itself: OpenRTM's manager has no create_components, so
     // rtctl makes them one by one.
     const RtctlResult two = rtctl({"mgr", direct, "create", "ConsoleOut?instance_name=Made1",

@@ -250,6 +250,17 @@ void TestManagerLive::masterServesAndRegisters()
     QVERIFY(m_master->is_master());
     RTM::ManagerProfile_var profile = m_master->get_profile();
     QCOMPARE(nv(profile->properties, "address"), QString("127.0.0.1:%1").arg(m_masterPort));
+    // As OpenRTM-aist's, the profile holds the configuration's manager.* keys without the prefix.
+    QCOMPARE(nv(profile->properties, "naming_formats"), QString("%h.host_cxt/%n.mgr"));
+    QCOMPARE(nv(profile->properties, "modules.load_path"), QString(MANAGER_TEST_MODULE_DIR));
+    QCOMPARE(nv(profile->properties, "slave_check_interval"), QString("200"));
+    QCOMPARE(nv(profile->properties, "pid"), QString::number(m_masterProcess->processId()));
+    for (CORBA::ULong i = 0; i < profile->properties.length(); ++i) {
+        const QByteArray key(profile->properties[i].name.in());
+        QVERIFY2(!key.startsWith("manager.") && !key.startsWith("corba.")
+                     && !key.startsWith("exec_cxt."),
+                 key.constData());
+    }
     RTM::NVList_var config = m_master->get_configuration();
     QCOMPARE(nv(config.in(), "exec_cxt.periodic.rate"), QString("200")); // from the rtc.conf file
     QCOMPARE(m_master->set_configuration("user.key", "v"), RTC::RTC_OK);
