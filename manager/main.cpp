@@ -21,6 +21,20 @@ namespace {
 
 const char *const usage = "usage: rtmanager [-f rtc.conf] [-i] [-o key:value]... [-p PORT] [-d] [-a]\n";
 
+// `rtmanager --module-profile FILE`: loads the module, runs its init function and prints the
+// component types it registered (ModuleProfiler's format). A manager lists its loadable modules
+// through it, one process per module, as OpenRTM-aist's manager uses rtcprof.
+int profileModule(const char *file)
+{
+    Runtime::Manager manager(Runtime::managerDefaults());
+    RTC::Manager::attach(&manager);
+    // A module that does not load is reported on stderr by the manager.
+    if (!manager.loadModule(file, std::string(), nullptr))
+        return 1;
+    std::cout << Runtime::ModuleProfiler::format(manager.factoryProfiles()) << std::flush;
+    return 0;
+}
+
 int runManager(int argc, char **argv)
 {
     if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
@@ -85,6 +99,8 @@ int runManager(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    if (argc == 3 && std::strcmp(argv[1], "--module-profile") == 0)
+        return profileModule(argv[2]);
     // Started by a master (descriptor 3 is its connection): starts its slaves, see ForkServer.
     if (argc >= 2 && std::strcmp(argv[1], "--fork-server") == 0)
         Runtime::ForkServer::serve(3, argc, argv, runManager);

@@ -328,15 +328,25 @@ RTC::RTObject_ptr Manager::createRequested(const std::string &requestText, std::
     return createLocal(*request, error);
 }
 
+namespace {
+
+/// Whether a factory's @p profile is of the type @p request names (a full `RTC:` id also by its
+/// vendor, category, version and language).
+bool isRequestedType(const Properties &p, const CreateRequest &request)
+{
+    return p.value("implementation_id") == request.implementationId
+        && (request.vendor.empty() || p.value("vendor") == request.vendor)
+        && (request.category.empty() || p.value("category") == request.category)
+        && (request.version.empty() || p.value("version") == request.version)
+        && (request.language.empty() || p.value("language") == request.language);
+}
+
+} // namespace
+
 const ComponentFactory *Manager::findFactory(const CreateRequest &request)
 {
     for (const ComponentFactory &factory : m_factories) {
-        const Properties &p = factory.profile;
-        if (factory.implementationId() == request.implementationId
-            && (request.vendor.empty() || p.value("vendor") == request.vendor)
-            && (request.category.empty() || p.value("category") == request.category)
-            && (request.version.empty() || p.value("version") == request.version)
-            && (request.language.empty() || p.value("language") == request.language))
+        if (isRequestedType(factory.profile, request))
             return &factory;
     }
     return nullptr;
@@ -365,11 +375,18 @@ std::optional<ComponentFactory> Manager::factoryFor(const CreateRequest &request
         if (const ComponentFactory *factory = findFactory(request))
             return *factory;
     }
-    // A type nobody registered yet may be a loadable module of the load path (`<Type>.so`, as
-    // the Builder and OpenRTP name them): load it, then look again.
+    // A type nobody registered yet may be in a loadable module of the load path: `<Type>.so`, as
+    // the Builder and OpenRTP name them, else the module that lists it (as OpenRTM-aist's
+    // manager.modules.search_auto). Load it, then look again.
+    std::string module = findModuleFile(request.implementationId);
+    if (module.empty()) {
+        for (const Properties &loadable : loadableModules()) {
+            if (module.empty() && isRequestedType(loadable, request))
+                module = loadable.value("module_file_path");
+        }
+    }
     std::string loadError;
-    if (findModuleFile(request.implementationId).empty()
-        || !loadModule(request.implementationId, std::string(), &loadError))
+    if (module.empty() || !loadModule(module, std::string(), &loadError))
         return std::nullopt;
     std::lock_guard lock(m_mutex);
     const ComponentFactory *factory = findFactory(request);

@@ -4,6 +4,7 @@
 #include "componentfactory.h"
 #include "createrequest.h"
 #include "forkserver.h"
+#include "moduleprofiler.h"
 #include "namingregistrar.h"
 #include "properties.h"
 
@@ -134,6 +135,11 @@ public:
     void preloadModules();
     /// Creates `manager.components.precreate`: `Type[?k=v&…],…`.
     void precreateComponents();
+    /**
+     * The component types the modules in `manager.modules.load_path` register (each module loaded
+     * by a process of its own, see ModuleProfiler; `manager.modules.profile_timeout` ms per
+     * module): a factory profile with `module_file_name` and `module_file_path` per type.
+     */
     std::vector<Properties> loadableModules();
     std::vector<Properties> loadedModules();
     std::vector<Properties> factoryProfiles();
@@ -231,6 +237,7 @@ private:
     std::vector<std::unique_ptr<Slave>> m_slaves;
     std::vector<std::unique_ptr<Module>> m_modules;
     ModuleInitCall m_moduleInitCall;
+    ModuleProfiler m_moduleProfiler;
     LifecycleHooks m_hooks;
     RTM::ManagerList m_masters;
     std::string m_lastError;

@@ -127,22 +127,30 @@ bool Manager::unloadModule(const std::string &path, std::string *error)
 
 std::vector<Properties> Manager::loadableModules()
 {
-    std::vector<Properties> result;
+    std::vector<std::string> files;
     for (const std::string &dir : split(m_config.value("manager.modules.load_path", "."), ',')) {
         DIR *d = opendir(dir.c_str());
         if (!d)
             continue;
         while (dirent *entry = readdir(d)) {
             const std::string name = entry->d_name;
-            if (name.size() < 4 || name.compare(name.size() - 3, 3, ".so") != 0)
-                continue;
-            Properties p;
-            p.set("module_file_name", name);
-            p.set("module_file_path", dir + '/' + name);
-            p.set("language", "C++");
-            result.push_back(p);
+            if (name.size() >= 4 && name.compare(name.size() - 3, 3, ".so") == 0)
+                files.push_back(dir + '/' + name);
         }
         closedir(d);
+    }
+    std::sort(files.begin(), files.end());
+    // As OpenRTM-aist's: one entry per component type a module registers, its factory profile with
+    // the module's file; a library that holds no component is not listed.
+    const std::vector<std::vector<Properties>> profiles = m_moduleProfiler.profiles(
+        files, int(configNumber("manager.modules.profile_timeout", 5000)));
+    std::vector<Properties> result;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        for (Properties module : profiles[i]) {
+            module.set("module_file_name", files[i].substr(files[i].rfind('/') + 1));
+            module.set("module_file_path", files[i]);
+            result.push_back(std::move(module));
+        }
     }
     return result;
 }

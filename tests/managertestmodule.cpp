@@ -7,6 +7,7 @@
 #include <rtm/Manager.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <string>
 #include <thread>
 
@@ -64,6 +65,9 @@ private:
 
 extern "C" DLL_EXPORT void ManagerTestModuleInit(RTC::Manager *manager)
 {
+    // A module whose init function hangs, for the tests of a manager that lists its modules.
+    if (const char *delay = std::getenv("MANAGER_TEST_MODULE_INIT_DELAY_MS"))
+        std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(delay)));
     coil::Properties profile(moduleCounterSpec);
     manager->registerFactory(profile, RTC::Create<ModuleCounter>, RTC::Delete<ModuleCounter>);
 }

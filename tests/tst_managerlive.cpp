@@ -107,6 +107,7 @@ private slots:
     void createsInOneCall();
     void killedSlaveLeavesOthersWorking();
     void loadModule();
+    void loadableModulesNameTheirTypes();
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
     void startupKeys();
@@ -618,11 +619,76 @@ void TestManagerLive::loadModule()
              RTC::RTC_OK);
     loaded = m_master->get_loaded_modules();
     QCOMPARE(loaded->length(), CORBA::ULong(0));
-    RTC::RTObject_var gone = create("ModuleCounter");
-    QVERIFY(CORBA::is_nil(gone));
+    RTM::ModuleProfileList_var factories = m_master->get_factory_profiles();
+    for (CORBA::ULong i = 0; i < factories->length(); ++i)
+        QVERIFY(nv(factories[i].properties, "implementation_id") != "ModuleCounter");
     QCOMPARE(m_master->load_module(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", "NoSuchInit"),
              RTC::BAD_PARAMETER);
     QVERIFY(lastError(m_master).contains("no init function 'NoSuchInit'"));
+}
+
+// As OpenRTM-aist's: a loadable module is listed by the component types its init function
+// registers (found by loading it in a process of its own), a library without one is not listed.
+void TestManagerLive::loadableModulesNameTheirTypes()
+{
+    QTemporaryDir modules;
+    QVERIFY(modules.isValid());
+    const QString module = modules.filePath("ManagerTestModule.so");
+    QVERIFY(QFile::copy(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", module));
+    QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR "/manager/notamodule.so",
+                        modules.filePath("notamodule.so")));
+    QCOMPARE(m_master->set_configuration("manager.modules.load_path",
+                                         modules.path().toUtf8().constData()),
+             RTC::RTC_OK);
+    RTM::ModuleProfileList_var loadable = m_master->get_loadable_modules();
+    QCOMPARE(loadable->length(), 1u);
+    const SDOPackage::NVList &profile = loadable[0].properties;
+    QCOMPARE(nv(profile, "implementation_id"), QString("ModuleCounter"));
+    QCOMPARE(nv(profile, "type_name"), QString("ModuleCounter"));
+    QCOMPARE(nv(profile, "vendor"), QString("RTStudioTests"));
+    QCOMPARE(nv(profile, "language"), QString("C++"));
+    QCOMPARE(nv(profile, "module_file_name"), QString("ManagerTestModule.so"));
+    QCOMPARE(nv(profile, "module_file_path"), module);
+    // Listing ran the module elsewhere: it is not loaded here.
+    QCOMPARE(RTM::ModuleProfileList_var(m_master->get_loaded_modules())->length(), 0u);
+    // A type a listed module registers is created by loading that module (the file is not named
+    // after the type).
+    RTC::RTObject_var found = create("ModuleCounter?instance_name=Found0");
+    QVERIFY2(!CORBA::is_nil(found), qPrintable(lastError(m_master)));
+    RTM::ModuleProfileList_var loaded = m_master->get_loaded_modules();
+    QCOMPARE(loaded->length(), 1u);
+    QCOMPARE(nv(loaded[0].properties, "file_path"), module);
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create("NoSuchModuleType"))));
+
+    // A file that changes is looked at again.
+    QVERIFY(QFile::remove(module));
+    QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR "/manager/notamodule.so", module));
+    QCOMPARE(RTM::ModuleProfileList_var(m_master->get_loadable_modules())->length(), 0u);
+
+    // A module whose init function does not return is given manager.modules.profile_timeout.
+    m_live.reset();
+    m_live = std::make_unique<LiveTest::LiveSystem>();
+    QString error;
+    QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert("MANAGER_TEST_MODULE_INIT_DELAY_MS", "60000");
+    const quint16 port = LiveTest::freePort();
+    QProcess *hanging = m_live->startProcess(
+        QStringLiteral(RTMANAGER_PATH),
+        {"-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o",
+         "corba.nameservers=" + m_live->namingServer(), "-o",
+         QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR), "-o",
+         "manager.modules.profile_timeout=300"},
+        "rtmanager ready", &error, 10000, environment);
+    QVERIFY2(hanging, qPrintable(error));
+    CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
+    RTM::Manager_var manager = RTM::Manager::_narrow(object);
+    QElapsedTimer timer;
+    timer.start();
+    QCOMPARE(RTM::ModuleProfileList_var(manager->get_loadable_modules())->length(), 0u);
+    QVERIFY2(timer.elapsed() < 5000, qPrintable(QString::number(timer.elapsed())));
+    // Nothing of it is left running.
+    QTRY_COMPARE(QProcess::execute("pgrep", {"-f", "module-profile " MANAGER_TEST_MODULE_DIR}), 1);
 }
 
 void TestManagerLive::shutdownUnregisters()
