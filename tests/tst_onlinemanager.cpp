@@ -60,7 +60,9 @@ QProcess *TestOnlineManager::startManager(const QString &host, QString *error)
         "-o",
         QStringLiteral("manager.naming_formats=%1.host_cxt/%n.mgr").arg(host),
         "-o",
-        "manager.components.precreate=ConsoleIn"};
+        "manager.components.precreate=ConsoleIn",
+        "-o",
+        QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR)};
     return m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", error);
 }
 
@@ -113,6 +115,19 @@ void TestOnlineManager::showsFactoriesAndInstances()
     QCOMPARE(components->child(0)->text(1), QStringLiteral("ConsoleIn"));
     auto *types = view.findChild<QComboBox *>("typeCombo");
     QCOMPARE(types->count(), view.types().size());
+
+    // A loadable module shows the type it registers, which can be created (the manager loads it).
+    QTreeWidgetItem *loadable = tree->topLevelItem(4);
+    QCOMPARE(loadable->childCount(), 1);
+    QCOMPARE(loadable->child(0)->text(0), QStringLiteral("ModuleCounter"));
+    QCOMPARE(loadable->child(0)->text(1),
+             QStringLiteral(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so"));
+    QVERIFY(view.types().contains("ModuleCounter"));
+    view.setCreateForm("ModuleCounter", 0, {{"instance_name", "Counted0"}});
+    actAndWait(view, [&] { view.create(); });
+    QVERIFY(manager("mgrhost").componentsByName("Counted0").size() == 1);
+    QCOMPARE(view.tree()->topLevelItem(3)->childCount(), 1); // loaded modules
+    actAndWait(view, [&] { view.deleteComponent("Counted0"); });
 }
 
 void TestOnlineManager::buildsTheCreateArgument()

@@ -25,10 +25,12 @@ namespace {
 constexpr int KindRole = Qt::UserRole + 1; // "component", "loaded", "loadable", "slave"
 constexpr int KeyRole = Qt::UserRole + 2; // instance name or module path
 
+/// The type as create_component names it: the implementation id (the type name where a profile
+/// has none).
 QString typeOf(const Corba::Properties &factory)
 {
-    return Corba::propertyValue(factory, QStringLiteral("type_name"),
-                                Corba::propertyValue(factory, QStringLiteral("implementation_id")));
+    return Corba::propertyValue(factory, QStringLiteral("implementation_id"),
+                                Corba::propertyValue(factory, QStringLiteral("type_name")));
 }
 
 QString modulePath(const Corba::Properties &module)
@@ -223,9 +225,13 @@ void ManagerView::showSnapshot(const ManagerSnapshot &snapshot)
         add(loaded, QUrl::fromLocalFile(modulePath(m)).fileName(), modulePath(m),
             QStringLiteral("loaded"), modulePath(m));
     QTreeWidgetItem *loadable = section(tr("Loadable modules"), QStringLiteral("loadableModules"));
-    for (const Corba::Properties &m : snapshot.loadable)
-        add(loadable, QUrl::fromLocalFile(modulePath(m)).fileName(), modulePath(m),
-            QStringLiteral("loadable"), modulePath(m));
+    // A manager lists a loadable module by the component types it registers (OpenRTM-aist's and
+    // rtmanager); one that only names files shows them.
+    for (const Corba::Properties &m : snapshot.loadable) {
+        const QString type = typeOf(m);
+        add(loadable, type.isEmpty() ? QUrl::fromLocalFile(modulePath(m)).fileName() : type,
+            modulePath(m), QStringLiteral("loadable"), modulePath(m));
+    }
     m_tree->expandAll();
 
     const QString type = m_type->currentText();
@@ -241,9 +247,15 @@ void ManagerView::showSnapshot(const ManagerSnapshot &snapshot)
 
 QStringList ManagerView::types() const
 {
+    // A type a loadable module registers is created by loading that module.
     QStringList result;
-    for (const Corba::Properties &f : m_snapshot.factories)
-        result.append(typeOf(f));
+    for (const auto *list : {&m_snapshot.factories, &m_snapshot.loadable}) {
+        for (const Corba::Properties &p : *list) {
+            const QString type = typeOf(p);
+            if (!type.isEmpty() && !result.contains(type))
+                result.append(type);
+        }
+    }
     return result;
 }
 
