@@ -71,6 +71,7 @@ int runManager(int argc, char **argv)
         manager.registerFactory(std::move(factory));
     // Modules are OpenRTM-aist modules: their init function gets the SDK's RTC::Manager.
     RTC::Manager::attach(&manager);
+    manager.setModuleProfileProgram(Runtime::ownExecutable());
     if (!manager.start(&error)) {
         std::cerr << "rtmanager: " << error << std::endl;
         return 1;

@@ -138,9 +138,12 @@ public:
     /**
      * The component types the modules in `manager.modules.load_path` register (each module loaded
      * by a process of its own, see ModuleProfiler; `manager.modules.profile_timeout` ms per
-     * module): a factory profile with `module_file_name` and `module_file_path` per type.
+     * module): a factory profile with `module_file_name` and `module_file_path` per type. Without
+     * a profiling program (setModuleProfileProgram()), the `.so` files by name.
      */
     std::vector<Properties> loadableModules();
+    /// The program that answers `--module-profile FILE` (rtmanager); call before start().
+    void setModuleProfileProgram(const std::string &program);
     std::vector<Properties> loadedModules();
     std::vector<Properties> factoryProfiles();
 

@@ -47,6 +47,11 @@ std::string Manager::findModuleFile(const std::string &requested) const
     return found == candidates.end() ? std::string() : *found;
 }
 
+void Manager::setModuleProfileProgram(const std::string &program)
+{
+    m_moduleProfiler.setProgram(program);
+}
+
 void Manager::setModuleInitCall(ModuleInitCall call)
 {
     m_moduleInitCall = std::move(call);
@@ -140,11 +145,22 @@ std::vector<Properties> Manager::loadableModules()
         closedir(d);
     }
     std::sort(files.begin(), files.end());
+    std::vector<Properties> result;
+    if (!m_moduleProfiler.hasProgram()) {
+        // A process that cannot profile modules names the files.
+        for (const std::string &file : files) {
+            Properties module;
+            module.set("module_file_name", file.substr(file.rfind('/') + 1));
+            module.set("module_file_path", file);
+            module.set("language", "C++");
+            result.push_back(std::move(module));
+        }
+        return result;
+    }
     // As OpenRTM-aist's: one entry per component type a module registers, its factory profile with
     // the module's file; a library that holds no component is not listed.
     const std::vector<std::vector<Properties>> profiles = m_moduleProfiler.profiles(
         files, int(configNumber("manager.modules.profile_timeout", 5000)));
-    std::vector<Properties> result;
     for (std::size_t i = 0; i < files.size(); ++i) {
         for (Properties module : profiles[i]) {
             module.set("module_file_name", files[i].substr(files[i].rfind('/') + 1));

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "moduleprofiler.h"
 
-#include "forkserver.h"
-
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -62,14 +60,14 @@ std::vector<Properties> ModuleProfiler::parse(const std::string &text)
 }
 
 std::optional<std::vector<Properties>> ModuleProfiler::profileInProcess(const std::string &path,
-                                                                        int timeoutMs)
+                                                                        int timeoutMs) const
 {
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0)
         return std::nullopt;
     // Everything the child needs is made before fork: in a process with threads only
     // async-signal-safe calls may follow it.
-    std::string program = ownExecutable();
+    const std::string program = m_program;
     std::string name = "rtmanager", option = "--module-profile", file = path;
     char *argv[] = {name.data(), option.data(), file.data(), nullptr};
     const pid_t pid = fork();

@@ -16,11 +16,15 @@ namespace Runtime {
  * The component types loadable modules register, as get_loadable_modules lists them: each module
  * is loaded by a process of its own (`rtmanager --module-profile FILE`, as OpenRTM-aist's manager
  * runs rtcprof), so that a module never runs in the manager before it is asked to load it. What a
- * file registers is kept until the file changes.
+ * file registers is kept until the file changes. Set the program before profiles() is called.
  */
 class ModuleProfiler
 {
 public:
+    /// The program that answers `--module-profile FILE` (rtmanager); none: nothing is profiled.
+    void setProgram(std::string program) { m_program = std::move(program); }
+    bool hasProgram() const { return !m_program.empty(); }
+
     /// The factory profiles each of @p paths registers, in order: none for a file that does not
     /// load, registers nothing or takes longer than @p timeoutMs.
     std::vector<std::vector<Properties>> profiles(const std::vector<std::string> &paths,
@@ -38,9 +42,10 @@ private:
         std::vector<Properties> factories;
     };
     /// std::nullopt when the process did not end in time (asked again next time).
-    static std::optional<std::vector<Properties>> profileInProcess(const std::string &path,
-                                                                   int timeoutMs);
+    std::optional<std::vector<Properties>> profileInProcess(const std::string &path,
+                                                            int timeoutMs) const;
 
+    std::string m_program;
     std::mutex m_mutex;
     std::map<std::string, Entry> m_known;
 };

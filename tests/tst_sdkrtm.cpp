@@ -370,6 +370,7 @@ private slots:
     void serviceCallReturns();
     void managerActionListeners();
     void loggerWritesWhereConfigured();
+    void loadableModulesOfAComponentProgram();
 
 private:
     RTC::Manager *m_manager = nullptr;
@@ -378,8 +379,22 @@ private:
 void TestSdkRtm::initTestCase()
 {
     // No name server and no master: the manager serves on a free loopback port only.
-    const char *args[] = {"tst_sdkrtm", "-o", "naming.enable:NO", "-o", "corba.master_manager:",
-                          "-o", "corba.endpoints:127.0.0.1:", "-o", "logger.log_level:ERROR", "-f", "/nonexistent/rtc.conf", "-i"};
+    const QByteArray loadPath
+        = "manager.modules.load_path:" + QFileInfo(MANAGER_TEST_MODULE).path().toUtf8();
+    const char *args[] = {"tst_sdkrtm",
+                          "-o",
+                          "naming.enable:NO",
+                          "-o",
+                          "corba.master_manager:",
+                          "-o",
+                          "corba.endpoints:127.0.0.1:",
+                          "-o",
+                          "logger.log_level:ERROR",
+                          "-o",
+                          loadPath.constData(),
+                          "-f",
+                          "/nonexistent/rtc.conf",
+                          "-i"};
     std::vector<char *> argv;
     for (const char *arg : args)
         argv.push_back(const_cast<char *>(arg));
@@ -619,6 +634,18 @@ void TestSdkRtm::loggerWritesWhereConfigured()
     config = Runtime::Properties();
     config.set("logger.log_level", "ERROR");
     RTC::Sdk::LoggerSink::instance().configure(config);
+}
+
+// A component program is no rtmanager: it cannot load a module in a process of its own to see
+// which types it registers, and names the module files instead.
+void TestSdkRtm::loadableModulesOfAComponentProgram()
+{
+    QStringList files;
+    for (coil::Properties &module : m_manager->getLoadableModules()) {
+        QVERIFY(module["implementation_id"].empty());
+        files << QString::fromStdString(module["module_file_name"]);
+    }
+    QVERIFY2(files.contains("ManagerTestModule.so"), qPrintable(files.join(' ')));
 }
 
 QTEST_GUILESS_MAIN(TestSdkRtm)
