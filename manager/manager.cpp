@@ -300,7 +300,6 @@ RTC::RTObject_ptr Manager::createComponent(const std::string &requestText, std::
 RTC::RTCList Manager::createComponents(const std::vector<std::string> &requests, std::string *error)
 {
     RTC::RTCList created;
-    created.length(0);
     for (const std::string &request : requests) {
         RTC::RTObject_var component = createComponent(request, error);
         if (CORBA::is_nil(component))

@@ -132,8 +132,9 @@ bool Manager::unloadModule(const std::string &path, std::string *error)
 
 std::vector<Properties> Manager::loadableModules()
 {
+    const Properties config = configuration();
     std::vector<std::string> files;
-    for (const std::string &dir : split(m_config.value("manager.modules.load_path", "."), ',')) {
+    for (const std::string &dir : split(config.value("manager.modules.load_path", "."), ',')) {
         DIR *d = opendir(dir.c_str());
         if (!d)
             continue;
@@ -145,22 +146,16 @@ std::vector<Properties> Manager::loadableModules()
         closedir(d);
     }
     std::sort(files.begin(), files.end());
-    std::vector<Properties> result;
-    if (!m_moduleProfiler.hasProgram()) {
-        // A process that cannot profile modules names the files.
-        for (const std::string &file : files) {
-            Properties module;
-            module.set("module_file_name", file.substr(file.rfind('/') + 1));
-            module.set("module_file_path", file);
-            module.set("language", "C++");
-            result.push_back(std::move(module));
-        }
-        return result;
-    }
     // As OpenRTM-aist's: one entry per component type a module registers, its factory profile with
-    // the module's file; a library that holds no component is not listed.
-    const std::vector<std::vector<Properties>> profiles = m_moduleProfiler.profiles(
-        files, int(configNumber("manager.modules.profile_timeout", 5000)));
+    // the module's file; a library that holds no component is not listed. A process that cannot
+    // profile modules names each file once.
+    Properties unprofiled;
+    unprofiled.set("language", "C++");
+    const std::vector<std::vector<Properties>> profiles = m_moduleProfiler.hasProgram()
+        ? m_moduleProfiler.profiles(files,
+                                    int(configNumber("manager.modules.profile_timeout", 5000)))
+        : std::vector<std::vector<Properties>>(files.size(), {unprofiled});
+    std::vector<Properties> result;
     for (std::size_t i = 0; i < files.size(); ++i) {
         for (Properties module : profiles[i]) {
             module.set("module_file_name", files[i].substr(files[i].rfind('/') + 1));
