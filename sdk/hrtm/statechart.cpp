@@ -187,6 +187,27 @@ void MachineBase::add_deferred_event(EventBase *event, const std::string &name)
     deferred_names_.push_back(name);
 }
 
+void MachineBase::take_pending_transition()
+{
+    StateInfo *target = pending_state_;
+    HRTM_DEBUG(logName, current_state_->name() << ": transition to: " << target->name());
+    current_state_->on_exit(*target);
+    current_state_->set_history_super(*current_state_);
+    StateInfo *previous = current_state_;
+    current_state_ = target;
+    if (pending_data_ != nullptr)
+        current_state_->set_data(pending_data_);
+    current_state_->on_entry(*previous);
+    pending_state_ = nullptr;
+    pending_data_ = nullptr;
+    const bool history = pending_history_;
+    pending_history_ = false;
+    current_state_->on_init(history);
+    assert("init may only move on to a proper substate"
+           && (!pending_state_ || (pending_state_->is_child(*current_state_) && current_state_ != pending_state_)));
+    perform_pending_event();
+}
+
 void MachineBase::perform_pending()
 {
     assert(current_state_);
@@ -194,27 +215,14 @@ void MachineBase::perform_pending()
         perform_pending_event();
         return;
     }
-    // init actions may request further transitions (into substates): take them all.
-    while (pending_state_ != nullptr) {
-        StateInfo *target = pending_state_;
-        HRTM_DEBUG(logName, current_state_->name() << ": transition to: " << target->name());
-        current_state_->on_exit(*target);
-        current_state_->set_history_super(*current_state_);
-        StateInfo *previous = current_state_;
-        current_state_ = target;
-        if (pending_data_ != nullptr)
-            current_state_->set_data(pending_data_);
-        current_state_->on_entry(*previous);
-        pending_state_ = nullptr;
-        pending_data_ = nullptr;
-        const bool history = pending_history_;
-        pending_history_ = false;
-        current_state_->on_init(history);
-        assert("init may only move on to a proper substate"
-               && (!pending_state_ || (pending_state_->is_child(*current_state_) && current_state_ != pending_state_)));
-        perform_pending_event();
+    // init actions may request further transitions (into substates): take them all. Deferred
+    // events wait until the machine has settled, and may start the next round.
+    do {
+        while (pending_state_ != nullptr)
+            take_pending_transition();
         perform_deferred_events();
-    }
+        perform_pending_event(); // posted by a deferred event's handler
+    } while (pending_state_ != nullptr);
 }
 
 void MachineBase::perform_pending_event()

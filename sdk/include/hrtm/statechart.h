@@ -31,7 +31,7 @@
  * returns: the states that do not contain the target are left (innermost first), the target's
  * superstates that were not active are entered (outermost first), then the target itself, then
  * its on_init(). An event posted with dispatch() from an action is handled after that, and the
- * events put aside with defer() after the next transition. HISTORY() / DEEPHISTORY() make a
+ * events put aside with defer() once the next transition (with its init steps) is done. HISTORY() / DEEPHISTORY() make a
  * state remember its last active direct substate / innermost active state, which set_state()
  * then returns to instead of calling on_init() (set_state_direct() ignores the history).
  */
@@ -360,6 +360,8 @@ protected:
     void free(unsigned int count);
     void copy(StateInfo **other, unsigned int count);
     StateInfo *create_clone(Key key, StateInfo *original);
+    /*! One step of perform_pending(): leaves, enters and initialises for the pending transition. */
+    void take_pending_transition();
 
 protected:
     using EventQueue = std::map<std::string, EventBase *>;
