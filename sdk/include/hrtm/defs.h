@@ -18,8 +18,8 @@
 #define __pragma(x)
 #endif
 
-// The ORB in use, under the names HRTM code tests.
-#ifndef OMNIORB
+// The ORB in use (rtm/config_rtc.h says ORB_IS_OMNIORB), under the name HRTM code tests.
+#if defined(ORB_IS_OMNIORB) && !defined(OMNIORB)
 #define OMNIORB
 #endif
 
