@@ -5,6 +5,7 @@
 #   include/openrtm-2.1/rtm/idl/  OpenRTM's IDL, omniidl's <Name>.hh, wrapper <Name>Skel.h / <Name>Stub.h
 #   include/openrtm-2.1/rtm/ext/  (extension IDL; empty)
 #   include/openrtm-2.1/rtmruntime/  the runtime's headers (manager/*.h), which rtm/*.h include
+#   include/openrtm-2.1/hrtm/     HRTM's API (hrtm/*.h, hrtm/idls/*.h), as OpenRTM-aist installs it
 #   include/coil-2.1/coil/        coil (also as include/coil-2.0/coil/ for 2.0-era includes)
 #   lib/librtstudio_rtm.so        the runtime, coil, the component API and the IDL stubs in one library
 #   lib/cmake/openrtm-2.1/        OpenRTMConfig.cmake, OpenRTMConfigVersion.cmake (find_package(OpenRTM))
@@ -154,6 +155,8 @@ foreach(coil_dir coil-2.1 coil-2.0)
         DESTINATION "include/${coil_dir}/coil" COMPONENT sdk FILES_MATCHING PATTERN "*.h")
 endforeach()
 install(FILES ${rtsdk_idl_files} ${rtsdk_idl_headers} DESTINATION "${rtsdk_include_rtm}/idl" COMPONENT sdk)
+install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/include/hrtm/" DESTINATION "include/${RTSDK_RTM_DIR}/hrtm"
+    COMPONENT sdk FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY "${rtsdk_runtime_headers_dir}/" DESTINATION "include/${RTSDK_RTM_DIR}/rtmruntime"
     COMPONENT sdk FILES_MATCHING PATTERN "*.h" PATTERN "builtins" EXCLUDE)
 install(DIRECTORY DESTINATION "${rtsdk_include_rtm}/ext" COMPONENT sdk)

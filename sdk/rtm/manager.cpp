@@ -86,6 +86,15 @@ Manager::~Manager()
     delete d;
 }
 
+bool Sdk::adoptManager(Manager *manager)
+{
+    std::lock_guard lock(instanceMutex);
+    if (theInstance != nullptr)
+        return false;
+    theInstance = manager;
+    return true;
+}
+
 Manager *Manager::attach(Runtime::Manager *runtime)
 {
     std::lock_guard lock(instanceMutex);

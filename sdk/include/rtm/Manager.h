@@ -110,10 +110,12 @@ public:
     /// The runtime manager underneath (for RT Studio's own tools).
     ::Runtime::Manager *runtime();
 
-private:
+protected:
+    // Protected for hrtm::ComponentManager, which becomes the process's manager in its place.
     Manager();
     ~Manager();
 
+private:
     struct Private;
     Private *d;
 };
