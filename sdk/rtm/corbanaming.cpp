@@ -62,14 +62,53 @@ CosNaming::NameComponent parseComponent(const std::string &text)
     return component;
 }
 
+// The context at the first `steps` components of `name` below `from`, each made (bind_new_context)
+// where missing. A component bound to something else than a context ends the walk with
+// CannotProceed, as a name service would report it.
+CosNaming::NamingContext_ptr walkCreating(CosNaming::NamingContext_ptr from,
+                                          const CosNaming::Name &name, CORBA::ULong steps)
+{
+    CosNaming::NamingContext_var current = CosNaming::NamingContext::_duplicate(from);
+    for (CORBA::ULong i = 0; i < steps && i < name.length(); ++i) {
+        CosNaming::Name step;
+        step.length(1);
+        step[0] = name[i];
+        CosNaming::NamingContext_var next;
+        try {
+            next = current->bind_new_context(step);
+        } catch (CosNaming::NamingContext::AlreadyBound &) {
+            CORBA::Object_var bound = current->resolve(step);
+            next = CosNaming::NamingContext::_narrow(bound);
+        }
+        if (CORBA::is_nil(next)) {
+            CosNaming::Name rest;
+            rest.length(name.length() - i);
+            for (CORBA::ULong j = i; j < name.length(); ++j)
+                rest[j - i] = name[j];
+            throw CosNaming::NamingContext::CannotProceed(current, rest);
+        }
+        current = next._retn();
+    }
+    return current._retn();
+}
+
+CosNaming::Name lastOf(const CosNaming::Name &name)
+{
+    CosNaming::Name last;
+    if (name.length() == 0)
+        throw CosNaming::NamingContext::InvalidName();
+    last.length(1);
+    last[0] = name[name.length() - 1];
+    return last;
+}
+
 } // namespace
 
 CorbaNaming::CorbaNaming(CORBA::ORB_ptr orb)
     : m_ptrORB(orb)
     , m_rootContext(CosNaming::NamingContextExt::_nil())
     , m_blLength(100)
-{
-}
+{ }
 
 CorbaNaming::CorbaNaming(CORBA::ORB_ptr orb, const char *name_server)
     : CorbaNaming(orb)
@@ -86,7 +125,8 @@ CorbaNaming::~CorbaNaming() = default;
 
 void CorbaNaming::init(const char *name_server)
 {
-    m_nameServer = CORBA_RTCUtil::CorbaURI(name_server ? name_server : "", "NameService").toString();
+    m_nameServer
+        = CORBA_RTCUtil::CorbaURI(name_server ? name_server : "", "NameService").toString();
     CORBA::Object_var object = m_ptrORB->string_to_object(m_nameServer.c_str());
     m_rootContext = CosNaming::NamingContextExt::_narrow(object);
     if (CORBA::is_nil(m_rootContext))
@@ -127,16 +167,8 @@ void CorbaNaming::bindByString(const char *string_name, CORBA::Object_ptr obj, b
 void CorbaNaming::bindRecursive(CosNaming::NamingContext_ptr context, const CosNaming::Name &name,
                                 CORBA::Object_ptr obj)
 {
-    const CORBA::ULong count = name.length();
-    CosNaming::NamingContext_var current = CosNaming::NamingContext::_duplicate(context);
-    for (CORBA::ULong i = 0; i + 1 < count; ++i) {
-        CosNaming::NamingContext_var next = bindOrResolveContext(current, subName(name, i, i));
-        if (CORBA::is_nil(next))
-            throw CannotProceed(current, subName(name, CORBA::Long(i)));
-        current = next._retn();
-    }
-    if (count > 0)
-        current->bind(subName(name, CORBA::Long(count - 1)), obj);
+    CosNaming::NamingContext_var parent = walkCreating(context, name, name.length() - 1);
+    parent->bind(lastOf(name), obj);
 }
 
 void CorbaNaming::rebind(const CosNaming::Name &name, CORBA::Object_ptr obj, bool force)
@@ -162,61 +194,69 @@ void CorbaNaming::rebindByString(const char *string_name, CORBA::Object_ptr obj,
 void CorbaNaming::rebindRecursive(CosNaming::NamingContext_ptr context, const CosNaming::Name &name,
                                   CORBA::Object_ptr obj)
 {
-    const CORBA::ULong count = name.length();
-    CosNaming::NamingContext_var current = CosNaming::NamingContext::_duplicate(context);
-    for (CORBA::ULong i = 0; i + 1 < count; ++i) {
-        const CosNaming::Name step = subName(name, i, i);
-        CosNaming::NamingContext_var next;
-        try {
-            next = current->bind_new_context(step);
-        } catch (AlreadyBound &) {
-            CORBA::Object_var bound = current->resolve(step);
-            next = CosNaming::NamingContext::_narrow(bound);
-        }
-        if (CORBA::is_nil(next))
-            throw CannotProceed(current, subName(name, CORBA::Long(i)));
-        current = next._retn();
-    }
-    if (count > 0)
-        current->rebind(subName(name, CORBA::Long(count - 1)), obj);
+    CosNaming::NamingContext_var parent = walkCreating(context, name, name.length() - 1);
+    parent->rebind(lastOf(name), obj);
 }
 
 void CorbaNaming::bindContext(const CosNaming::Name &name, CosNaming::NamingContext_ptr name_cxt,
                               bool force)
 {
-    bind(name, name_cxt, force);
+    // bind_context, not bind: only context bindings take part in resolving compound names.
+    try {
+        m_rootContext->bind_context(name, name_cxt);
+    } catch (NotFound &) {
+        if (!force)
+            throw;
+        bindContextRecursive(m_rootContext, name, name_cxt);
+    } catch (CannotProceed &) {
+        if (!force)
+            throw;
+        bindContextRecursive(m_rootContext, name, name_cxt);
+    }
 }
 
 void CorbaNaming::bindContext(const char *string_name, CosNaming::NamingContext_ptr name_cxt,
                               bool force)
 {
-    bind(toName(string_name), name_cxt, force);
+    bindContext(toName(string_name), name_cxt, force);
 }
 
 void CorbaNaming::bindContextRecursive(CosNaming::NamingContext_ptr context,
                                        const CosNaming::Name &name,
                                        CosNaming::NamingContext_ptr name_cxt)
 {
-    bindRecursive(context, name, name_cxt);
+    CosNaming::NamingContext_var parent = walkCreating(context, name, name.length() - 1);
+    parent->bind_context(lastOf(name), name_cxt);
 }
 
 void CorbaNaming::rebindContext(const CosNaming::Name &name, CosNaming::NamingContext_ptr name_cxt,
                                 bool force)
 {
-    rebind(name, name_cxt, force);
+    try {
+        m_rootContext->rebind_context(name, name_cxt);
+    } catch (NotFound &) {
+        if (!force)
+            throw;
+        rebindContextRecursive(m_rootContext, name, name_cxt);
+    } catch (CannotProceed &) {
+        if (!force)
+            throw;
+        rebindContextRecursive(m_rootContext, name, name_cxt);
+    }
 }
 
 void CorbaNaming::rebindContext(const char *string_name, CosNaming::NamingContext_ptr name_cxt,
                                 bool force)
 {
-    rebind(toName(string_name), name_cxt, force);
+    rebindContext(toName(string_name), name_cxt, force);
 }
 
 void CorbaNaming::rebindContextRecursive(CosNaming::NamingContext_ptr context,
                                          const CosNaming::Name &name,
                                          CosNaming::NamingContext_ptr name_cxt)
 {
-    rebindRecursive(context, name, name_cxt);
+    CosNaming::NamingContext_var parent = walkCreating(context, name, name.length() - 1);
+    parent->rebind_context(lastOf(name), name_cxt);
 }
 
 CORBA::Object_ptr CorbaNaming::resolve(const CosNaming::Name &name)
@@ -255,15 +295,8 @@ CosNaming::NamingContext_ptr CorbaNaming::bindNewContext(const CosNaming::Name &
         if (!force)
             throw;
     }
-    // Creates the path's missing contexts, the last one included, and hands that one out.
-    CosNaming::NamingContext_var current = CosNaming::NamingContext::_duplicate(m_rootContext);
-    for (CORBA::ULong i = 0; i < name.length(); ++i) {
-        CosNaming::NamingContext_var next = bindOrResolveContext(current, subName(name, i, i));
-        if (CORBA::is_nil(next))
-            throw CannotProceed(current, subName(name, CORBA::Long(i)));
-        current = next._retn();
-    }
-    return current._retn();
+    // Makes the path's missing contexts, the last one included, and hands that one out.
+    return walkCreating(m_rootContext, name, name.length());
 }
 
 CosNaming::NamingContext_ptr CorbaNaming::bindNewContext(const char *string_name, bool force)
@@ -407,12 +440,17 @@ CORBA::Object_ptr CorbaNaming::bindOrResolve(CosNaming::NamingContext_ptr contex
     }
 }
 
-CosNaming::NamingContext_ptr CorbaNaming::bindOrResolveContext(CosNaming::NamingContext_ptr context,
-                                                               const CosNaming::Name &name,
-                                                               CosNaming::NamingContext_ptr new_context)
+CosNaming::NamingContext_ptr
+CorbaNaming::bindOrResolveContext(CosNaming::NamingContext_ptr context, const CosNaming::Name &name,
+                                  CosNaming::NamingContext_ptr new_context)
 {
-    CORBA::Object_var bound = bindOrResolve(context, name, new_context);
-    return CosNaming::NamingContext::_narrow(bound);
+    try {
+        context->bind_context(name, new_context);
+        return CosNaming::NamingContext::_duplicate(new_context);
+    } catch (AlreadyBound &) {
+        CORBA::Object_var bound = context->resolve(name);
+        return CosNaming::NamingContext::_narrow(bound);
+    }
 }
 
 CosNaming::NamingContext_ptr CorbaNaming::bindOrResolveContext(CosNaming::NamingContext_ptr context,
@@ -456,7 +494,8 @@ bool CorbaNaming::isNamingContext(const char *string_name)
     return isNamingContext(object.in());
 }
 
-CosNaming::Name CorbaNaming::subName(const CosNaming::Name &name, CORBA::Long begin, CORBA::Long end)
+CosNaming::Name CorbaNaming::subName(const CosNaming::Name &name, CORBA::Long begin,
+                                     CORBA::Long end)
 {
     if (end < 0)
         end = CORBA::Long(name.length()) - 1;
