@@ -101,7 +101,8 @@ bool toString(IOP::IOR &ior, std::string &iorstr)
 {
     cdrEncapsulationStream stream(CORBA::ULong(0), true);
     ior >>= stream;
-    iorstr = iorPrefix + hexOf(static_cast<const CORBA::Octet *>(stream.bufPtr()), stream.bufSize());
+    iorstr
+        = iorPrefix + hexOf(static_cast<const CORBA::Octet *>(stream.bufPtr()), stream.bufSize());
     return true;
 }
 
@@ -137,7 +138,8 @@ std::string formatIORinfo(const char *iorstr)
         if (profile.tag == IOP::TAG_INTERNET_IOP) {
             IIOP::ProfileBody body;
             IIOP::unmarshalProfile(profile, body);
-            out << "  IIOP profile " << int(body.version.major) << '.' << int(body.version.minor) << '\n'
+            out << "  IIOP profile " << int(body.version.major) << '.' << int(body.version.minor)
+                << '\n'
                 << "    Address: " << static_cast<const char *>(body.address.host) << ':'
                 << body.address.port << '\n'
                 << "    Object key: \"" << keyText(body.object_key) << "\"\n";

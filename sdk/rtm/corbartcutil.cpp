@@ -33,7 +33,8 @@ coil::vstring portNames(const RTC::RTObject_ptr rtc, const std::string &portType
     RTC::PortServiceList_var ports = rtc->get_ports();
     for (CORBA::ULong i = 0; i < ports->length(); ++i) {
         RTC::PortProfile_var profile = ports[i]->get_port_profile();
-        if (!portType.empty() && NVUtil::toString(profile->properties, "port.port_type") != portType)
+        if (!portType.empty()
+            && NVUtil::toString(profile->properties, "port.port_type") != portType)
             continue;
         names.emplace_back(static_cast<const char *>(profile->name));
     }
@@ -80,8 +81,8 @@ void appendObject(RTC::RTCList &found, CORBA::Object_ptr object)
 }
 
 // Depth-first through the contexts below `context` for objects bound as `id`.rtc.
-void searchContexts(CosNaming::NamingContext_ptr context, const std::string &id, RTC::RTCList &found,
-                    int depth)
+void searchContexts(CosNaming::NamingContext_ptr context, const std::string &id,
+                    RTC::RTCList &found, int depth)
 {
     const int maxDepth = 16; // name trees are shallow; this only guards against cycles
     if (depth > maxDepth)
@@ -161,7 +162,8 @@ RTC::RTCList componentsOfManager(const CORBA_RTCUtil::RTCURIObject &uri)
         return found;
     }
     try {
-        CORBA::Object_var object = manager.getORB()->string_to_object((uri.getAddress() + "/manager").c_str());
+        CORBA::Object_var object
+            = manager.getORB()->string_to_object((uri.getAddress() + "/manager").c_str());
         RTM::Manager_var remote = RTM::Manager::_narrow(object);
         if (CORBA::is_nil(remote))
             return found;
@@ -176,8 +178,7 @@ RTC::RTCList componentsOfManager(const CORBA_RTCUtil::RTCURIObject &uri)
                 // A slave that is gone has no components to offer.
             }
         }
-    } catch (const CORBA::Exception &) {
-    }
+    } catch (const CORBA::Exception &) { }
     return found;
 }
 
@@ -241,17 +242,20 @@ RTC::UniqueId get_ec_id(const RTC::RTObject_ptr rtc, const RTC::ExecutionContext
 
 RTC::ReturnCode_t activate(const RTC::RTObject_ptr rtc, const RTC::UniqueId ec_id)
 {
-    return onContext(rtc, ec_id, [rtc](RTC::ExecutionContext_ptr ec) { return ec->activate_component(rtc); });
+    return onContext(rtc, ec_id,
+                     [rtc](RTC::ExecutionContext_ptr ec) { return ec->activate_component(rtc); });
 }
 
 RTC::ReturnCode_t deactivate(const RTC::RTObject_ptr rtc, const RTC::UniqueId ec_id)
 {
-    return onContext(rtc, ec_id, [rtc](RTC::ExecutionContext_ptr ec) { return ec->deactivate_component(rtc); });
+    return onContext(rtc, ec_id,
+                     [rtc](RTC::ExecutionContext_ptr ec) { return ec->deactivate_component(rtc); });
 }
 
 RTC::ReturnCode_t reset(const RTC::RTObject_ptr rtc, const RTC::UniqueId ec_id)
 {
-    return onContext(rtc, ec_id, [rtc](RTC::ExecutionContext_ptr ec) { return ec->reset_component(rtc); });
+    return onContext(rtc, ec_id,
+                     [rtc](RTC::ExecutionContext_ptr ec) { return ec->reset_component(rtc); });
 }
 
 bool get_state(RTC::LifeCycleState &state, const RTC::RTObject_ptr rtc, const RTC::UniqueId ec_id)
@@ -302,7 +306,8 @@ CORBA::Double get_current_rate(const RTC::RTObject_ptr rtc, const RTC::UniqueId 
 RTC::ReturnCode_t set_current_rate(const RTC::RTObject_ptr rtc, const RTC::UniqueId ec_id,
                                    const CORBA::Double rate)
 {
-    return onContext(rtc, ec_id, [rate](RTC::ExecutionContext_ptr ec) { return ec->set_rate(rate); });
+    return onContext(rtc, ec_id,
+                     [rate](RTC::ExecutionContext_ptr ec) { return ec->set_rate(rate); });
 }
 
 RTC::ReturnCode_t add_rtc_to_default_ec(const RTC::RTObject_ptr localcomp,
@@ -406,7 +411,8 @@ RTC::ConnectorProfile *create_connector(const std::string &name, const coil::Pro
 
 bool already_connected(const RTC::PortService_ptr localport, const RTC::PortService_ptr otherport)
 {
-    if (CORBA::is_nil(localport) || CORBA::is_nil(otherport) || localport->_is_equivalent(otherport))
+    if (CORBA::is_nil(localport) || CORBA::is_nil(otherport)
+        || localport->_is_equivalent(otherport))
         return false;
     RTC::ConnectorProfileList_var profiles = localport->get_connector_profiles();
     for (CORBA::ULong i = 0; i < profiles->length(); ++i) {
@@ -434,11 +440,13 @@ RTC::ReturnCode_t disconnect(const RTC::ConnectorProfile connector_prof)
 {
     if (connector_prof.ports.length() == 0)
         return RTC::BAD_PARAMETER;
-    return disconnect_connector_id(connector_prof.ports[0],
-                                   std::string(static_cast<const char *>(connector_prof.connector_id)));
+    return disconnect_connector_id(
+        connector_prof.ports[0],
+        std::string(static_cast<const char *>(connector_prof.connector_id)));
 }
 
-RTC::ReturnCode_t disconnect_connector_name(const RTC::PortService_ptr port_ref, const std::string &conn_name)
+RTC::ReturnCode_t disconnect_connector_name(const RTC::PortService_ptr port_ref,
+                                            const std::string &conn_name)
 {
     if (CORBA::is_nil(port_ref))
         return RTC::BAD_PARAMETER;
@@ -450,13 +458,15 @@ RTC::ReturnCode_t disconnect_connector_name(const RTC::PortService_ptr port_ref,
     return RTC::BAD_PARAMETER;
 }
 
-RTC::ReturnCode_t disconnect_connector_name(const std::string &port_name, const std::string &conn_name)
+RTC::ReturnCode_t disconnect_connector_name(const std::string &port_name,
+                                            const std::string &conn_name)
 {
     RTC::PortService_var port = get_port_by_url(port_name);
     return disconnect_connector_name(port.in(), conn_name);
 }
 
-RTC::ReturnCode_t disconnect_connector_id(const RTC::PortService_ptr port_ref, const std::string &conn_id)
+RTC::ReturnCode_t disconnect_connector_id(const RTC::PortService_ptr port_ref,
+                                          const std::string &conn_id)
 {
     if (CORBA::is_nil(port_ref))
         return RTC::BAD_PARAMETER;
@@ -490,7 +500,8 @@ RTC::PortService_ptr get_port_by_url(const std::string &port_name)
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return RTC::PortService::_nil();
     const std::string component = port_name.substr(0, dot);
-    const std::string portOwnName = slash == std::string::npos ? port_name : port_name.substr(slash + 1);
+    const std::string portOwnName
+        = slash == std::string::npos ? port_name : port_name.substr(slash + 1);
     RTC::RTCList found;
     const RTCURIObject byName(component, true, false);
     const RTCURIObject byManager(component, false, true);
@@ -510,7 +521,8 @@ RTC::PortService_ptr get_port_by_url(const std::string &port_name)
     return RTC::PortService::_nil();
 }
 
-RTC::ReturnCode_t disconnect_name(const RTC::PortService_ptr localport, const std::string &othername)
+RTC::ReturnCode_t disconnect_name(const RTC::PortService_ptr localport,
+                                  const std::string &othername)
 {
     if (CORBA::is_nil(localport))
         return RTC::BAD_PARAMETER;

@@ -16,19 +16,24 @@ bool startsWith(const std::string &text, const std::string &prefix)
 // Endpoint spellings of omniORB, TAO and OpenRTM-aist's configuration, and what they are in
 // corbaloc. The first list is tried before the second: "iiop://" must win over "iiop:".
 const std::pair<const char *, const char *> endpointForms[] = {
-    {"giop:tcp:", "corbaloc:iiop:"},     {"giop:ssl:", "corbaloc:ssliop:"},
-    {"giop:http:", ""},                  {"giop::", "corbaloc:iiop:"},
-    {"iiop://", "corbaloc:iiop:"},       {"diop://", "corbaloc:diop:"},
-    {"uiop://", "corbaloc:uiop:"},       {"ssliop://", "corbaloc:ssliop:"},
-    {"shmiop://", "corbaloc:shmiop:"},   {"htiop://", "corbaloc:htiop:"},
+    {"giop:tcp:", "corbaloc:iiop:"},
+    {"giop:ssl:", "corbaloc:ssliop:"},
+    {"giop:http:", ""},
+    {"giop::", "corbaloc:iiop:"},
+    {"iiop://", "corbaloc:iiop:"},
+    {"diop://", "corbaloc:diop:"},
+    {"uiop://", "corbaloc:uiop:"},
+    {"ssliop://", "corbaloc:ssliop:"},
+    {"shmiop://", "corbaloc:shmiop:"},
+    {"htiop://", "corbaloc:htiop:"},
     {"inet:", "corbaloc:iiop:"},
 };
 const std::pair<const char *, const char *> shortForms[] = {
-    {"iiop:", "corbaloc:iiop:"}, {"ssliop:", "corbaloc:ssliop:"}, {"diop:", "corbaloc:diop:"},
+    {"iiop:", "corbaloc:iiop:"},     {"ssliop:", "corbaloc:ssliop:"}, {"diop:", "corbaloc:diop:"},
     {"shmiop:", "corbaloc:shmiop:"}, {"htiop:", "corbaloc:htiop:"},
 };
 
-template <size_t N>
+template<size_t N>
 bool rewritePrefix(std::string &uri, const std::pair<const char *, const char *> (&forms)[N])
 {
     for (const auto &form : forms) {
@@ -146,7 +151,8 @@ RTCURIObject::RTCURIObject(const std::string &uri, bool isrtcname, bool isrtcloc
     // "rtcname.<protocol>": iiop unless named; web protocols put the name after '#'.
     const std::string::size_type dot = scheme.find('.');
     const std::string protocol = dot == std::string::npos ? "" : scheme.substr(dot + 1);
-    const bool web = protocol == "http" || protocol == "https" || protocol == "ws" || protocol == "wss";
+    const bool web
+        = protocol == "http" || protocol == "https" || protocol == "ws" || protocol == "wss";
     const std::string rest = uri.substr(schemeEnd + 3);
     const std::string::size_type nameAt = rest.find(web ? '#' : '/');
     const std::string hostPort = rest.substr(0, nameAt);

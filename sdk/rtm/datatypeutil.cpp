@@ -10,8 +10,7 @@ namespace {
 
 // Sequence assignment copies element by element; images and byte payloads are large enough
 // that one block copy is worth it.
-template <class Octets>
-void copyOctets(Octets &to, const Octets &from)
+template<class Octets> void copyOctets(Octets &to, const Octets &from)
 {
     to.length(from.length());
     if (from.length() > 0)
@@ -20,8 +19,7 @@ void copyOctets(Octets &to, const Octets &from)
 
 } // namespace
 
-template <>
-void copyData(RTC::TimedOctetSeq &data1, const RTC::TimedOctetSeq &data2)
+template<> void copyData(RTC::TimedOctetSeq &data1, const RTC::TimedOctetSeq &data2)
 {
     if (&data1 == &data2)
         return;
@@ -29,8 +27,7 @@ void copyData(RTC::TimedOctetSeq &data1, const RTC::TimedOctetSeq &data2)
     copyOctets(data1.data, data2.data);
 }
 
-template <>
-void copyData(RTC::CameraImage &data1, const RTC::CameraImage &data2)
+template<> void copyData(RTC::CameraImage &data1, const RTC::CameraImage &data2)
 {
     if (&data1 == &data2)
         return;

@@ -6,8 +6,7 @@ namespace RTC_Utils {
 namespace {
 
 // _is_a asks the object (a remote call); a nil, unreachable or dead object is of no kind.
-template <class Interface>
-bool implements(CORBA::Object_ptr obj)
+template<class Interface> bool implements(CORBA::Object_ptr obj)
 {
     if (CORBA::is_nil(obj))
         return false;
