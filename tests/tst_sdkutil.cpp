@@ -2,6 +2,8 @@
 // OpenRTM-aist's utility headers on the component SDK: name/value lists, sequence helpers, type
 // names and IORs in process; CORBA_RTCUtil against live components of an in-process manager, and
 // CorbaNaming against a real omniNames.
+#include <rtm/ByteDataStreamBase.h>
+#include <rtm/CORBA_CdrMemoryStream.h>
 #include <rtm/CORBA_IORUtil.h>
 #include <rtm/CORBA_RTCUtil.h>
 #include <rtm/CORBA_SeqUtil.h>
@@ -199,6 +201,8 @@ private slots:
     void nvDump();
     void sequenceHelpers();
     void typeNames();
+    void cdrSerializers();
+    void serializerRegistry();
     void iorDecodeAndEncode();
     void corbaUris_data();
     void corbaUris();
@@ -451,6 +455,75 @@ void TestSdkUtil::typeNames()
     QCOMPARE(to.tm.sec, CORBA::ULong(4));
     QCOMPARE(to.data.length(), CORBA::ULong(3));
     QCOMPARE(int(to.data[2]), 0x7f);
+}
+
+void TestSdkUtil::cdrSerializers()
+{
+    RTC::TimedLong value;
+    value.tm.sec = 12;
+    value.tm.nsec = 34;
+    value.data = 0x01020304;
+    for (bool little : {true, false}) {
+        RTC::CORBA_CdrSerializer<RTC::TimedLong> out;
+        out.isLittleEndian(little);
+        QVERIFY(out.serialize(value));
+        QCOMPARE(out.getDataLength(), 12ul); // three 32-bit numbers
+        std::vector<unsigned char> bytes(out.getDataLength());
+        out.readData(bytes.data(), bytes.size());
+        // The data field is the last four octets, in the chosen order.
+        QCOMPARE(int(bytes[8]), little ? 0x04 : 0x01);
+        QCOMPARE(int(bytes[11]), little ? 0x01 : 0x04);
+
+        RTC::CORBA_CdrSerializer<RTC::TimedLong> in;
+        in.isLittleEndian(little);
+        in.writeData(bytes.data(), bytes.size());
+        RTC::TimedLong back;
+        back.data = 0;
+        QVERIFY(in.deserialize(back));
+        QCOMPARE(back.data, value.data);
+        QCOMPARE(back.tm.sec, CORBA::ULong(12));
+        QCOMPARE(back.tm.nsec, CORBA::ULong(34));
+
+        RTC::CORBA_CdrSerializer<RTC::TimedLong> copy(in);
+        RTC::TimedLong again;
+        QVERIFY(copy.deserialize(again));
+        QCOMPARE(again.data, value.data);
+    }
+    // Too few bytes for the type.
+    RTC::CORBA_CdrSerializer<RTC::TimedString> truncated;
+    const unsigned char few[] = {1, 0, 0, 0, 2, 0, 0, 0, 50, 0, 0, 0};
+    truncated.writeData(few, sizeof(few));
+    RTC::TimedString text;
+    QVERIFY(!truncated.deserialize(text));
+}
+
+void TestSdkUtil::serializerRegistry()
+{
+    QVERIFY(RTC::getSerializerList<RTC::TimedLong>().empty());
+    CdrMemoryStreamInit<RTC::TimedLong>();
+    QCOMPARE(RTC::getSerializerList<RTC::TimedLong>(), std::vector<std::string> {"cdr"});
+    QVERIFY(RTC::getSerializerList<RTC::TimedShort>().empty());
+    QCOMPARE(RTC::addDataTypeToMarshalingType<RTC::TimedLong>("cdr"),
+             std::string("IDL:RTC/TimedLong:1.0:cdr"));
+
+    RTC::ByteDataStreamBase *made = RTC::createSerializer<RTC::TimedLong>("cdr");
+    QVERIFY(made != nullptr);
+    auto *typed = dynamic_cast<RTC::ByteDataStream<RTC::TimedLong> *>(made);
+    QVERIFY(typed != nullptr);
+    RTC::TimedLong value;
+    value.tm.sec = 0;
+    value.tm.nsec = 0;
+    value.data = 77;
+    QVERIFY(typed->serialize(value));
+    QCOMPARE(made->getDataLength(), 12ul);
+    QVERIFY(RTC::SerializerFactory::instance().isProducerOf(made));
+    QCOMPARE(RTC::SerializerFactory::instance().deleteObject(made), coil::FactoryReturn::OK);
+    QVERIFY(made == nullptr);
+    QVERIFY(RTC::createSerializer<RTC::TimedLong>("json") == nullptr);
+
+    RTC::removeSerializer<RTC::TimedLong>("cdr");
+    QVERIFY(RTC::getSerializerList<RTC::TimedLong>().empty());
+    QVERIFY(RTC::createSerializer<RTC::TimedLong>("cdr") == nullptr);
 }
 
 void TestSdkUtil::iorDecodeAndEncode()

@@ -7,6 +7,7 @@ set(SDK_COIL_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/crc.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Condition.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/DynamicLib.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Factory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/File.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Guard.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Mutex.h

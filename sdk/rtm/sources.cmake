@@ -3,11 +3,13 @@
 set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferStatus.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteDataStreamBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteData.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigurationListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_CdrMemoryStream.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_IORUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_RTCUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_SeqUtil.h
@@ -65,6 +67,7 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/nvutil.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/rtcutil.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sequtil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/bytedatastream.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS
