@@ -1012,6 +1012,14 @@ void TestSdkUtil::portsByUrl()
     RTC::PortService_var anywhere
         = CORBA_RTCUtil::get_port_by_url("rtcname://" + address + "/*/" + srcName + ".out");
     QVERIFY(!CORBA::is_nil(anywhere) && anywhere->_is_equivalent(out));
+    // "*": the name servers the manager is configured with; an unreachable one is passed over.
+    coil::Properties &config = m_manager->getConfig();
+    const std::string configured = config.getProperty("corba.nameservers");
+    config.setProperty("corba.nameservers", "127.0.0.1:1, " + address);
+    RTC::PortService_var viaConfig
+        = CORBA_RTCUtil::get_port_by_url("rtcname://*/util.host_cxt/" + srcName + ".out");
+    config.setProperty("corba.nameservers", configured);
+    QVERIFY(!CORBA::is_nil(viaConfig) && viaConfig->_is_equivalent(out));
     RTC::PortService_var local
         = CORBA_RTCUtil::get_port_by_url("rtcloc://*/utiltest/" + dstName + ".in");
     QVERIFY(!CORBA::is_nil(local));
