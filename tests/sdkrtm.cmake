@@ -52,3 +52,8 @@ add_library(sdkrtm_cxx11 OBJECT sdk/rtm_cxx11.cpp)
 target_link_libraries(sdkrtm_cxx11 PRIVATE rtsdk)
 set_target_properties(sdkrtm_cxx11 PROPERTIES CXX_STANDARD 11 CXX_EXTENSIONS ON AUTOMOC OFF)
 add_dependencies(tst_sdkrtm sdkrtm_cxx11)
+
+# OpenRTM-aist's utility headers (NVUtil, CORBA_SeqUtil, CORBA_RTCUtil, CorbaNaming, …) against live
+# components in one process and a real omniNames.
+rtstudio_add_test(tst_sdkutil SOURCES tst_sdkutil.cpp LIBS rtsdk rtstudio_livetest)
+set_tests_properties(tst_sdkutil PROPERTIES LABELS sdk)

@@ -3,35 +3,47 @@
 set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferStatus.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteDataStreamBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteData.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigurationListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_CdrMemoryStream.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_IORUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_RTCUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_SeqUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CorbaConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CorbaNaming.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CorbaPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataFlowComponentBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataInPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortListeners.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataTypeUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataOutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Factory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FsmActionListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/BasicDataTypeUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/InterfaceDataTypesUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NVUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTC.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTCUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StaticFSM.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SystemLogger.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Timestamp.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Typename.h
 )
 set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sdkinternal.h
@@ -47,6 +59,15 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbaiorutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbanaming.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbartcutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbauri.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/datatypeutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/nvutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/rtcutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sequtil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/bytedatastream.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS

@@ -266,18 +266,14 @@ template<class AbstractClass,
 class GlobalFactory : public Factory<AbstractClass, Identifier, Compare, Creator, Destructor>
 {
 public:
-    /*! Owns the instance, deleting it when the program ends. */
-    struct Container
-    {
-        GlobalFactory *x;
-        ~Container() { delete x; }
-    };
-
-    /*! The instance, created on first use. */
+    /*!
+     * The instance, created on first use and kept for the life of the process: modules may still
+     * unregister from it while static objects are destroyed at exit.
+     */
     static GlobalFactory &instance()
     {
-        std::call_once(m_once, [] { m_instance.x = new GlobalFactory(); });
-        return *m_instance.x;
+        static GlobalFactory *const factory = new GlobalFactory();
+        return *factory;
     }
 
 private:
@@ -285,16 +281,7 @@ private:
     ~GlobalFactory() = default;
     GlobalFactory(const GlobalFactory &) = delete;
     GlobalFactory &operator=(const GlobalFactory &) = delete;
-
-    static std::once_flag m_once;
-    static Container m_instance;
 };
-
-template<class AbstractClass, typename Identifier, typename Compare, typename Creator, typename Destructor>
-typename GlobalFactory<AbstractClass, Identifier, Compare, Creator, Destructor>::Container
-    GlobalFactory<AbstractClass, Identifier, Compare, Creator, Destructor>::m_instance;
-template<class AbstractClass, typename Identifier, typename Compare, typename Creator, typename Destructor>
-std::once_flag GlobalFactory<AbstractClass, Identifier, Compare, Creator, Destructor>::m_once;
 } // namespace coil
 
 #endif // COIL_FACTORY_H

@@ -10,7 +10,12 @@
 
 #include <coil/Properties.h>
 
+#include <atomic>
+#include <functional>
+#include <list>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace Runtime
