@@ -3,7 +3,7 @@
 # in one file, rtm-skelwrapper's outputs and options, and projects in the IDL layouts of OpenRTP 1.2
 # (idl/ with rtm-config and rtm-skelwrapper) and 2.0 (idl/ sub-project), a hand-written one using
 # --include-dir and --output-dir, and one on the camera and manipulator extension types, configured,
-# built and run against the build tree's prefix.
+# built and run against the build tree's prefix and against an installed copy.
 rtstudio_add_test(tst_sdkidlflow SOURCES tst_sdkidlflow.cpp LIBS Qt6::Core)
 target_compile_definitions(tst_sdkidlflow PRIVATE
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"

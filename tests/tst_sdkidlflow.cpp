@@ -3,7 +3,8 @@
 // rtm/idl (OpenRTM-aist's set and its camera and manipulator extensions) compiled together as C++11,
 // the extension libraries' names linked, rtm-skelwrapper's outputs for OpenRTM-aist's options, and
 // projects in each IDL layout (OpenRTP 1.2, OpenRTP 2.0, hand-written with --include-dir, one on the
-// extension types) configured, built and run.
+// extension types) configured, built and run, against the build tree's prefix and against a copy
+// installed with cmake --install.
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -101,14 +102,17 @@ private slots:
     void project();
 
 private:
-    QProcessEnvironment environment() const;
+    QProcessEnvironment environment(const QString &prefix) const;
+    QProcessEnvironment environment() const { return environment(m_prefix); }
     QString rtmIdl() const { return m_prefix + QStringLiteral("/include/openrtm-2.1/rtm/idl"); }
     /// Runs rtm-skelwrapper in m_workDir/<folder> (made first); false and a message on failure.
     bool wrap(const QString &folder, const QStringList &arguments, QString *message);
     QStringList cflags() const;
 
     QTemporaryDir m_workDir{QDir::tempPath() + QStringLiteral("/rtsdkidlXXXXXX")};
+    QTemporaryDir m_installDir{QDir::tempPath() + QStringLiteral("/rtsdkidlinstallXXXXXX")};
     QString m_prefix;
+    QString m_installPrefix;
 };
 
 void TestSdkIdlFlow::initTestCase()
@@ -119,17 +123,27 @@ void TestSdkIdlFlow::initTestCase()
     m_prefix = QFileInfo(QStringLiteral(RTSTUDIO_BUILD_DIR)).canonicalFilePath();
     QVERIFY2(QFileInfo::exists(m_prefix + QStringLiteral("/lib/librtstudio_rtm.so")),
              "build the targets rtsdk and rtsdk_stage first");
+
+    // The SDK's own install component, into a folder elsewhere: the projects build against both.
+    QVERIFY(m_installDir.isValid());
+    m_installPrefix = QFileInfo(m_installDir.path()).canonicalFilePath();
+    const RunResult install = run(QStringLiteral(RTSTUDIO_CMAKE_COMMAND),
+                                  {QStringLiteral("--install"), QStringLiteral(RTSTUDIO_BUILD_DIR),
+                                   QStringLiteral("--prefix"), m_installPrefix, QStringLiteral("--component"),
+                                   QStringLiteral("sdk")},
+                                  QProcessEnvironment::systemEnvironment(), m_workDir.path(), buildTimeoutMs);
+    QVERIFY2(install.ok(), qPrintable(failure(QStringLiteral("cmake --install"), install)));
 }
 
 // What a user's shell has after adding the prefix: its bin on PATH, nothing from the surrounding build.
-QProcessEnvironment TestSdkIdlFlow::environment() const
+QProcessEnvironment TestSdkIdlFlow::environment(const QString &prefix) const
 {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     for (const char *name : {"CMAKE_PREFIX_PATH", "OPENRTM_DIR", "LD_LIBRARY_PATH", "PKG_CONFIG_PATH",
                              "CMAKE_GENERATOR", "CXXFLAGS", "LDFLAGS"})
         env.remove(QString::fromLatin1(name));
-    env.insert(QStringLiteral("PATH"), m_prefix + QStringLiteral("/bin:") + env.value(QStringLiteral("PATH")));
-    env.insert(QStringLiteral("PKG_CONFIG_PATH"), m_prefix + QStringLiteral("/lib/pkgconfig"));
+    env.insert(QStringLiteral("PATH"), prefix + QStringLiteral("/bin:") + env.value(QStringLiteral("PATH")));
+    env.insert(QStringLiteral("PKG_CONFIG_PATH"), prefix + QStringLiteral("/lib/pkgconfig"));
     return env;
 }
 
@@ -372,17 +386,23 @@ void TestSdkIdlFlow::project_data()
     QTest::addColumn<QString>("program");
     QTest::addColumn<bool>("prefixPath");
     QTest::addColumn<QString>("expected");
+    QTest::addColumn<bool>("installed");
     // find_package(OpenRTM) finds the prefix from the PATH (<prefix>/bin) unless told; rtm-config
     // comes from the PATH too.
-    QTest::newRow("OpenRTP 1.2: idl/ with rtm-config and rtm-skelwrapper")
-        << "openrtp12" << "RelayProbe" << false << "openrtp12 2.1.0 1250mm 7 IDL:Relay/TimedReading:1.0";
-    QTest::newRow("OpenRTP 2.0: idl/ sub-project")
-        << "openrtp20" << "RelayProbe" << true << "openrtp20 2.1.0 1250mm 7 IDL:Relay/TimedReading:1.0";
-    QTest::newRow("hand-written: --include-dir and --output-dir")
-        << "includedir" << "RangerProbe" << false << "includedir 4.5 30 IDL:Sensors/TimedRange:1.0";
-    QTest::newRow("extension IDL: camera and manipulator")
-        << "extension" << "ExtensionProbe" << true
-        << "extension 4x2 gray=1 px7=70 m33=1 joints=3 j1=-1.25 ok=0 arm:grip";
+    for (const bool installed : {false, true}) {
+        const char *kind = installed ? "installed" : "build tree";
+        QTest::addRow("OpenRTP 1.2: idl/ with rtm-config and rtm-skelwrapper, %s", kind)
+            << "openrtp12" << "RelayProbe" << false << "openrtp12 2.1.0 1250mm 7 IDL:Relay/TimedReading:1.0"
+            << installed;
+        QTest::addRow("OpenRTP 2.0: idl/ sub-project, %s", kind)
+            << "openrtp20" << "RelayProbe" << true << "openrtp20 2.1.0 1250mm 7 IDL:Relay/TimedReading:1.0"
+            << installed;
+        QTest::addRow("hand-written: --include-dir and --output-dir, %s", kind)
+            << "includedir" << "RangerProbe" << false << "includedir 4.5 30 IDL:Sensors/TimedRange:1.0" << installed;
+        QTest::addRow("extension IDL: camera and manipulator, %s", kind)
+            << "extension" << "ExtensionProbe" << true
+            << "extension 4x2 gray=1 px7=70 m33=1 joints=3 j1=-1.25 ok=0 arm:grip" << installed;
+    }
 }
 
 void TestSdkIdlFlow::project()
@@ -391,16 +411,19 @@ void TestSdkIdlFlow::project()
     QFETCH(QString, program);
     QFETCH(bool, prefixPath);
     QFETCH(QString, expected);
+    QFETCH(bool, installed);
+    const QString root = installed ? m_installPrefix : m_prefix;
     const QString source = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdkidlflow/") + fixture;
-    const QString binary = m_workDir.filePath(QStringLiteral("project-") + fixture);
-    const QProcessEnvironment env = environment();
+    const QString binary = m_workDir.filePath(QStringLiteral("project-") + fixture
+                                              + (installed ? QStringLiteral("-installed") : QString()));
+    const QProcessEnvironment env = environment(root);
     const QString cmake = QStringLiteral(RTSTUDIO_CMAKE_COMMAND);
     QStringList arguments{QStringLiteral("-S"), source, QStringLiteral("-B"), binary,
                           QStringLiteral("-G"), QStringLiteral(RTSTUDIO_CMAKE_GENERATOR),
                           QStringLiteral("-DCMAKE_MAKE_PROGRAM=" RTSTUDIO_CMAKE_MAKE_PROGRAM),
                           QStringLiteral("-DCMAKE_CXX_COMPILER=" RTSTUDIO_CXX_COMPILER)};
     if (prefixPath)
-        arguments << QStringLiteral("-DCMAKE_PREFIX_PATH=") + m_prefix;
+        arguments << QStringLiteral("-DCMAKE_PREFIX_PATH=") + root;
     const RunResult configure = run(cmake, arguments, env, m_workDir.path(), configureTimeoutMs);
     QVERIFY2(configure.ok(), qPrintable(failure(QStringLiteral("configure"), configure)));
     const RunResult build = run(cmake, {QStringLiteral("--build"), binary, QStringLiteral("-j"), QStringLiteral("2")},

@@ -4,7 +4,7 @@
 #   include/openrtm-2.1/rtm/      the component API, config_rtc.h, version.h
 #   include/openrtm-2.1/rtm/idl/  OpenRTM's IDL, omniidl's <Name>.hh, wrapper <Name>Skel.h / <Name>Stub.h;
 #                                 the extension IDL (camera, manipulator) too, where OpenRTM-aist puts it
-#   include/openrtm-2.1/rtm/ext/  (empty, as in OpenRTM-aist)
+#   include/openrtm-2.1/rtm/ext/  (empty; on OpenRTM-aist's include path, so kept)
 #   include/openrtm-2.1/rtmruntime/  the runtime's headers (manager/*.h), which rtm/*.h include
 #   include/coil-2.1/coil/        coil (also as include/coil-2.0/coil/ for 2.0-era includes)
 #   lib/librtstudio_rtm.so        the runtime, coil, the component API and the IDL stubs in one library
