@@ -162,7 +162,8 @@ void TestSdkPackage::layout()
     for (const char *file :
          {"include/openrtm-2.1/rtm/config_rtc.h", "include/openrtm-2.1/rtm/version.h",
           "include/coil-2.1/coil/config_coil.h", "include/coil-2.0/coil/config_coil.h",
-          "lib/librtstudio_rtm.so", "lib/cmake/openrtm-2.1/OpenRTMConfig.cmake",
+          "lib/librtstudio_rtm.so", "lib/librtmCamera2.so", "lib/librtmManipulator2.so", "lib/librtmCamera.so",
+          "lib/librtmManipulator.so", "lib/cmake/openrtm-2.1/OpenRTMConfig.cmake",
           "lib/cmake/openrtm-2.1/OpenRTMConfigVersion.cmake", "lib/pkgconfig/openrtm2.pc",
           "lib/pkgconfig/openrtm-aist.pc", "lib/pkgconfig/libcoil.pc"})
         QVERIFY2(QFileInfo(root + QLatin1Char('/') + QLatin1String(file)).isFile(), file);
