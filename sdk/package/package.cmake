@@ -81,6 +81,12 @@ foreach(idl IN LISTS rtsdk_idl_files)
     get_filename_component(RTSDK_IDL_NAME "${idl}" NAME_WE)
     foreach(RTSDK_WRAPPER_KIND Skel Stub)
         set(RTSDK_WRAPPER_DEPENDENCIES "")
+        set(RTSDK_WRAPPER_UTILITY "")
+        # As OpenRTM-aist's, the Skel wrapper brings the copyData() specialisations of the IDL's types.
+        if(RTSDK_WRAPPER_KIND STREQUAL "Skel"
+           AND EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/${RTSDK_IDL_NAME}Util.h")
+            set(RTSDK_WRAPPER_UTILITY "#include <rtm/idl/${RTSDK_IDL_NAME}Util.h>\n")
+        endif()
         if(RTSDK_WRAPPER_KIND STREQUAL "Skel" AND RTSDK_IDL_NAME IN_LIST rtsdk_extension_idl)
             set(RTSDK_WRAPPER_DEPENDENCIES "${rtsdk_core_skel_includes}")
         endif()

@@ -26,6 +26,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Factory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FsmActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/BasicDataTypeUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/CameraCommonInterfaceUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/InterfaceDataTypesUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h

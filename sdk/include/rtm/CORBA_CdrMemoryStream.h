@@ -6,7 +6,7 @@
 
 #include <rtm/ByteDataStreamBase.h>
 #include <rtm/RTC.h>
-#include <rtm/idl/DataPortSkel.h>
+#include <rtm/idl/DataPort_OpenRTMSkel.h>
 
 #include <omniORB4/cdrStream.h>
 
