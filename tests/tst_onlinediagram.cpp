@@ -52,6 +52,7 @@ private slots:
     void stateColoursKeepTextReadable();
     void activateTurnsTheComponentGreen();
     void actionOnAllShowsProgressAndCancels();
+    void startAndStopAllWithoutASystemActOnEachContext();
     void drawsLiveConnectors();
     void portRefreshScalesWithSize();
     void keepsTheDiagramInViewUntilTheUserNavigates();
@@ -263,6 +264,44 @@ void TestOnlineDiagram::actionOnAllShowsProgressAndCancels()
     diagram.performAll(OnlineDiagram::Action::Deactivate);
     QVERIFY(finished.wait(10000));
     QTRY_COMPARE_WITH_TIMEOUT(component("ConsoleIn0").state(), LifeCycleState::Inactive, 10000);
+}
+
+// A diagram that shows no saved system has no plan: Stop All and Start All stop and start every
+// component's context, one call each.
+void TestOnlineDiagram::startAndStopAllWithoutASystemActOnEachContext()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    dropOnto(diagram, {"ConsoleIn0", "ConsoleOut0"});
+    QVERIFY(!diagram.hasSystemPlan());
+    const QStringList names {"ConsoleIn0", "ConsoleOut0"};
+    const auto running = [&](const QString &name) {
+        const auto contexts = component(name).executionContexts();
+        return !contexts.empty() && contexts.front().running;
+    };
+    // The other tests expect the contexts running, whatever happens here.
+    const auto restart = qScopeGuard([&] {
+        for (const QString &name : names) {
+            try {
+                if (!running(name))
+                    component(name).startContext();
+            } catch (const Corba::Error &) {
+            }
+        }
+    });
+    for (const QString &name : names)
+        QVERIFY(running(name));
+    QSignalSpy finished(&diagram, &OnlineDiagram::allFinished);
+    diagram.performAll(OnlineDiagram::Action::Stop);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(0).at(0).toString(), QString("Stopping: 2 of 2 component(s) done"));
+    for (const QString &name : names)
+        QVERIFY(!running(name));
+    diagram.performAll(OnlineDiagram::Action::Start);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(1).at(0).toString(), QString("Starting: 2 of 2 component(s) done"));
+    for (const QString &name : names)
+        QVERIFY(running(name));
 }
 
 void TestOnlineDiagram::drawsLiveConnectors()
