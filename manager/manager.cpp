@@ -2,6 +2,7 @@
 #include "manager.h"
 
 #include "corbautil.h"
+#include "executioncontextfactory.h"
 #include "managerdetail.h"
 #include "managerservant.h"
 
@@ -445,9 +446,18 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
         fail(problem, error);
         return RTC::RTObject::_nil();
     }
-    const bool configured = readConfigFiles(&properties, instance, request.properties.value("config_file"), &problem);
+    bool configured = readConfigFiles(&properties, instance, request.properties.value("config_file"), &problem);
     properties.merge(request.properties);
     properties.set("instance_name", instance);
+    if (configured) {
+        // Refused before the component exists: its type of execution context must be one we make.
+        const std::string refusal =
+            ExecutionContextFactory::instance().check(ExecutionContextFactory::typeOf(properties));
+        if (!refusal.empty()) {
+            problem = "create_component: " + instance + ": " + refusal;
+            configured = false;
+        }
+    }
     if (configured && m_hooks.postConfigure)
         m_hooks.postConfigure(properties);
     auto component = std::make_unique<Component>();
@@ -480,8 +490,10 @@ RTC::RTObject_ptr Manager::initializeComponent(Component *record, const Properti
         m_hooks.postInitialize();
     if (result != RTC::RTC_OK) {
         const std::string instance = record->instanceName;
+        const std::string reason = record->servant->initializeError();
         forget(record->servant);
-        fail("create_component: " + instance + " failed to initialize", error);
+        fail("create_component: " + instance + " failed to initialize" + (reason.empty() ? "" : ": " + reason),
+             error);
         return RTC::RTObject::_nil();
     }
     record->servant->setExitHandler([this](RtObject *servant) { forget(servant); });

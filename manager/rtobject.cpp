@@ -3,9 +3,11 @@
 
 #include "corbautil.h"
 #include "executioncontext.h"
+#include "executioncontextfactory.h"
 #include "sdoconfiguration.h"
 
 #include <algorithm>
+#include <iostream>
 
 namespace Runtime {
 
@@ -172,35 +174,70 @@ RTC::ReturnCode_t RtObject::initialize()
         m_sdoConfig = new SdoConfiguration(m_config);
         PortableServer::ObjectId_var id = m_poa->activate_object(m_sdoConfig);
     }
+    // The owned context exists before onInitialize (which may ask for it) and refuses an unknown
+    // type before any user code runs.
+    if (!createOwnedContext())
+        return RTC::BAD_PARAMETER;
     const RTC::ReturnCode_t result = onInitialize();
-    if (result != RTC::RTC_OK)
+    if (result != RTC::RTC_OK) {
+        releaseOwnedContexts();
         return result;
+    }
     m_config.update();
-    startOwnedContext();
-    std::lock_guard lock(m_mutex);
-    m_created = false;
+    std::vector<ExecutionContext *> contexts;
+    {
+        std::lock_guard lock(m_mutex);
+        m_created = false;
+        contexts = m_ownedContexts;
+    }
+    for (ExecutionContext *context : contexts)
+        context->start();
     return RTC::RTC_OK;
 }
 
-void RtObject::startOwnedContext()
+bool RtObject::createOwnedContext()
 {
-    double rate = 1000.0;
-    double timeout = 0.5;
-    try {
-        rate = std::stod(properties().value("exec_cxt.periodic.rate", "1000"));
-        timeout = std::stod(properties().value("exec_cxt.transition_timeout", "0.5"));
-    } catch (...) {
-        // An unreadable rate keeps OpenRTM's default of 1000 Hz.
+    const Properties props = properties();
+    const std::string type = ExecutionContextFactory::typeOf(props);
+    std::string error;
+    ExecutionContext *context = ExecutionContextFactory::instance().create(type, props, &error);
+    if (context == nullptr) {
+        std::cerr << instanceName() << ": " << error << std::endl;
+        std::lock_guard lock(m_mutex);
+        m_initError = error;
+        return false;
     }
-    auto *context = new PeriodicExecutionContext(rate, timeout);
     PortableServer::ObjectId_var id = m_poa->activate_object(context);
     RTC::RTObject_var self = reference();
     context->addOwner(self, 0);
+    std::lock_guard lock(m_mutex);
+    m_ownedContexts.push_back(context);
+    return true;
+}
+
+void RtObject::releaseOwnedContexts()
+{
+    std::vector<ExecutionContext *> contexts;
     {
         std::lock_guard lock(m_mutex);
-        m_ownedContexts.push_back(context);
+        contexts.swap(m_ownedContexts);
     }
-    context->start();
+    for (ExecutionContext *context : contexts) {
+        context->halt(true);
+        releaseServant(m_poa, context);
+    }
+}
+
+std::string RtObject::initializeError()
+{
+    std::lock_guard lock(m_mutex);
+    return m_initError;
+}
+
+std::vector<ExecutionContext *> RtObject::ownedContexts()
+{
+    std::lock_guard lock(m_mutex);
+    return m_ownedContexts;
 }
 
 RTC::ReturnCode_t RtObject::finalize()
@@ -221,7 +258,7 @@ RTC::ReturnCode_t RtObject::finalize()
 
 void RtObject::releaseAll()
 {
-    std::vector<PeriodicExecutionContext *> contexts;
+    std::vector<ExecutionContext *> contexts;
     std::vector<PortBase *> ports;
     std::set<PortBase *> borrowed;
     {
@@ -233,14 +270,14 @@ void RtObject::releaseAll()
         ports.swap(m_ports);
         borrowed.swap(m_borrowedPorts);
     }
-    for (PeriodicExecutionContext *context : contexts)
+    for (ExecutionContext *context : contexts)
         context->halt(false);
     for (PortBase *port : ports) {
         port->disconnect_all();
         port->releaseInterfaces();
     }
     onFinalize();
-    for (PeriodicExecutionContext *context : contexts)
+    for (ExecutionContext *context : contexts)
         releaseServant(m_poa, context);
     for (PortBase *port : ports)
         releasePort(port, borrowed.count(port) > 0);
