@@ -78,7 +78,7 @@ void ExecutionContext::startThread()
         m_thread = std::thread([this] { run(); });
 }
 
-void ExecutionContext::setKind(RTC::ExecutionKind kind)
+void ExecutionContext::setExecutionKind(RTC::ExecutionKind kind)
 {
     std::lock_guard lock(m_mutex);
     m_kind = kind;

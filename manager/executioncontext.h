@@ -40,7 +40,7 @@ public:
     /// How many cycles have run so far.
     unsigned long cycles();
     /// Sets the kind get_kind() and the profile report.
-    void setKind(RTC::ExecutionKind kind);
+    void setExecutionKind(RTC::ExecutionKind kind);
 
     // RTC::ExecutionContext
     CORBA::Boolean is_running() override;

@@ -54,6 +54,14 @@ bool ExecutionContextFactory::add(const std::string &type, Create create)
     return m_creators.emplace(type, std::move(create)).second;
 }
 
+void ExecutionContextFactory::replace(const std::string &type, Create create)
+{
+    if (type.empty() || !create)
+        return;
+    std::lock_guard lock(m_mutex);
+    m_creators[type] = std::move(create);
+}
+
 bool ExecutionContextFactory::remove(const std::string &type)
 {
     std::lock_guard lock(m_mutex);

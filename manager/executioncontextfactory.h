@@ -29,6 +29,8 @@ public:
 
     /// Registers @p create for @p type; false when the type is known already.
     bool add(const std::string &type, Create create);
+    /// Registers @p create for @p type, in place of the one it had if any.
+    void replace(const std::string &type, Create create);
     bool remove(const std::string &type);
     bool contains(const std::string &type);
     /// The known type names, sorted.

@@ -544,6 +544,50 @@ void Manager::forget(RtObject *servant)
     releaseServant(m_poa, removed->servant);
 }
 
+bool Manager::adoptComponent(RtObject *servant, std::string *error)
+{
+    if (servant == nullptr)
+        return fail("register_component: no component", error);
+    const std::string instance = servant->instanceName();
+    if (instance.empty())
+        return fail("register_component: the component has no instance_name", error);
+    auto component = std::make_unique<Component>();
+    component->servant = servant;
+    component->instanceName = instance;
+    component->reference = servant->reference();
+    Component *record = component.get();
+    {
+        std::lock_guard lock(m_mutex);
+        if (!m_instanceNames.insert(instance).second)
+            return fail("register_component: instance name '" + instance + "' is taken", error);
+        // The creator's reference becomes the manager's: the object goes when it exits, as one
+        // the manager made.
+        m_components.push_back(std::move(component));
+    }
+    servant->setExitHandler([this](RtObject *s) { forget(s); });
+    registerNames(*record);
+    return true;
+}
+
+bool Manager::releaseComponent(RtObject *servant)
+{
+    std::unique_ptr<Component> removed;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = std::find_if(m_components.begin(), m_components.end(),
+                               [servant](const auto &c) { return c->servant == servant; });
+        if (it == m_components.end())
+            return false;
+        removed = std::move(*it);
+        m_components.erase(it);
+        m_instanceNames.erase(removed->instanceName);
+    }
+    servant->setExitHandler({});
+    for (const std::string &path : removed->names)
+        m_naming->unbind(path);
+    return true;
+}
+
 bool Manager::deleteComponent(const std::string &instanceName, std::string *error)
 {
     RtObject *servant = nullptr;

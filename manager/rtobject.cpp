@@ -195,6 +195,31 @@ RTC::ReturnCode_t RtObject::initialize()
     return RTC::RTC_OK;
 }
 
+RTC::ExecutionContextHandle_t RtObject::bindContext(ExecutionContext *context)
+{
+    if (context == nullptr)
+        return -1;
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_finalized)
+            return -1;
+    }
+    try {
+        PortableServer::ObjectId_var id = m_poa->activate_object(context);
+    } catch (const PortableServer::POA::ServantAlreadyActive &) {
+        // The caller asked for its reference already.
+    }
+    RTC::RTObject_var self = reference();
+    RTC::ExecutionContextHandle_t handle = 0;
+    {
+        std::lock_guard lock(m_mutex);
+        handle = RTC::ExecutionContextHandle_t(m_ownedContexts.size());
+        m_ownedContexts.push_back(context);
+    }
+    context->addOwner(self, handle);
+    return handle;
+}
+
 bool RtObject::createOwnedContext()
 {
     const Properties props = properties();
@@ -207,11 +232,7 @@ bool RtObject::createOwnedContext()
         m_initError = error;
         return false;
     }
-    PortableServer::ObjectId_var id = m_poa->activate_object(context);
-    RTC::RTObject_var self = reference();
-    context->addOwner(self, 0);
-    std::lock_guard lock(m_mutex);
-    m_ownedContexts.push_back(context);
+    bindContext(context);
     return true;
 }
 

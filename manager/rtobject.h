@@ -48,6 +48,11 @@ public:
     ConfigAdmin &configuration() { return m_config; }
     /// Why the last initialize() failed before onInitialize (an unknown context type); empty otherwise.
     std::string initializeError();
+    /**
+     * Makes @p context one of the component's own (OpenRTM's bindContext): the component takes
+     * it over (it goes with the component) and answers with its handle, or -1 once finalized.
+     */
+    RTC::ExecutionContextHandle_t bindContext(ExecutionContext *context);
     /// The contexts the component owns (its handle 0 first).
     std::vector<ExecutionContext *> ownedContexts();
     /// Finalizes without exit handler — used by the manager on shutdown.
