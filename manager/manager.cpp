@@ -556,10 +556,15 @@ bool Manager::adoptComponent(RtObject *servant, std::string *error)
     component->instanceName = instance;
     component->reference = servant->reference();
     Component *record = component.get();
+    bool taken = false;
     {
         std::lock_guard lock(m_mutex);
-        if (!m_instanceNames.insert(instance).second)
-            return fail("register_component: instance name '" + instance + "' is taken", error);
+        taken = !m_instanceNames.insert(instance).second;
+    }
+    if (taken)
+        return fail("register_component: instance name '" + instance + "' is taken", error);
+    {
+        std::lock_guard lock(m_mutex);
         // The creator's reference becomes the manager's: the object goes when it exits, as one
         // the manager made.
         m_components.push_back(std::move(component));

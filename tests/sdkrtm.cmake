@@ -57,3 +57,13 @@ add_dependencies(tst_sdkrtm sdkrtm_cxx11)
 # components in one process and a real omniNames.
 rtstudio_add_test(tst_sdkutil SOURCES tst_sdkutil.cpp LIBS rtsdk rtstudio_livetest)
 set_tests_properties(tst_sdkutil PROPERTIES LABELS sdk)
+
+# Execution contexts (ExtTrig, OpenHRP, Simulator) and the manager's internals, in this process and
+# in rtmanager.
+rtstudio_add_test(tst_sdkec SOURCES tst_sdkec.cpp LIBS rtsdk rtstudio_livetest)
+target_include_directories(tst_sdkec PRIVATE ${PROJECT_SOURCE_DIR}/manager)
+target_compile_definitions(tst_sdkec PRIVATE
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+    MANAGER_TEST_MODULE="${CMAKE_CURRENT_BINARY_DIR}/managermodules/ManagerTestModule.so")
+add_dependencies(tst_sdkec rtmanager managertestmodule)
+set_tests_properties(tst_sdkec PROPERTIES LABELS sdk)

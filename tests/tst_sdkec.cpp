@@ -1,0 +1,496 @@
+// SPDX-License-Identifier: MIT
+// Execution contexts of the component SDK and the manager's internals OpenRTM-aist code reaches:
+// ExtTrig, OpenHRP and Simulator contexts driven by tick(), the type chosen by
+// `exec_cxt.periodic.type` (in this process and in rtmanager), and the Manager's members for
+// contexts, components, modules and naming.
+#include <rtm/DataFlowComponentBase.h>
+#include <rtm/ECFactory.h>
+#include <rtm/ExtTrigExecutionContext.h>
+#include <rtm/Manager.h>
+#include <rtm/ManagerServant.h>
+#include <rtm/NamingManager.h>
+#include <rtm/ObjectManager.h>
+#include <rtm/OpenHRPExecutionContext.h>
+#include <rtm/PeriodicExecutionContext.h>
+#include <rtm/SimulatorExecutionContext.h>
+#include <rtm/CorbaConsumer.h>
+
+#include <manager.h>
+
+#include "livesystem.h"
+
+#include <QtTest>
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char *const counterSpec[] = {"implementation_id", "SdkCounter", "type_name", "SdkCounter",
+                                   "description", "counts its cycles", "version", "1.0.0", "vendor",
+                                   "RTStudioTests", "category", "test", "activity_type", "PERIODIC", "kind",
+                                   "DataFlowComponent", "max_instance", "0", "language", "C++", "lang_type",
+                                   "compile", ""};
+
+/// Counts the callbacks its contexts make.
+class SdkCounter : public RTC::DataFlowComponentBase
+{
+public:
+    explicit SdkCounter(RTC::Manager *manager)
+        : RTC::DataFlowComponentBase(manager)
+    {
+    }
+    RTC::ReturnCode_t onActivated(RTC::UniqueId) override
+    {
+        ++activations;
+        return RTC::RTC_OK;
+    }
+    RTC::ReturnCode_t onDeactivated(RTC::UniqueId) override
+    {
+        ++deactivations;
+        return RTC::RTC_OK;
+    }
+    RTC::ReturnCode_t onExecute(RTC::UniqueId) override
+    {
+        ++executions;
+        return RTC::RTC_OK;
+    }
+
+    std::atomic<int> activations{0};
+    std::atomic<int> deactivations{0};
+    std::atomic<int> executions{0};
+};
+
+/// A context type that is not one of the built-in engines: the manager must refuse it by name.
+class EnginelessContext : public RTC::ExecutionContextBase
+{
+public:
+    EnginelessContext()
+        : RTC::ExecutionContextBase("engineless")
+    {
+    }
+};
+
+/// The SDO status value @p name of @p rtc as text; empty when there is none.
+QString statusOf(RTC::RTObject_ptr rtc, const char *name)
+{
+    try {
+        CORBA::Any_var value = rtc->get_status(name);
+        const char *text = nullptr;
+        if (value >>= text)
+            return QString::fromUtf8(text);
+    } catch (const CORBA::Exception &) {
+    }
+    return {};
+}
+
+struct ByName
+{
+    explicit ByName(const std::string *object)
+        : name(*object)
+    {
+    }
+    explicit ByName(const std::string &id)
+        : name(id)
+    {
+    }
+    bool operator()(const std::string *object) const { return *object == name; }
+    std::string name;
+};
+
+} // namespace
+
+class TestSdkEc : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void extTrigRunsOneCyclePerRemoteTick();
+    void extTrigTickedLocally();
+    void synchronousTicks_data();
+    void synchronousTicks();
+    void simulatorChangesStatesAtOnce();
+    void unknownTypeRefused();
+    void registeredContextTypes();
+    void createContextFromArguments();
+    void managerMembers();
+    void namingOnManagerAndObjectManager();
+    void rtmanagerHonoursContextType();
+
+private:
+    SdkCounter *create(const QString &request);
+
+    RTC::Manager *m_manager = nullptr;
+};
+
+void TestSdkEc::initTestCase()
+{
+    const QByteArray loadPath = "manager.modules.load_path:" + QFileInfo(MANAGER_TEST_MODULE).path().toUtf8();
+    const char *args[] = {"tst_sdkec",
+                          "-o",
+                          "naming.enable:NO",
+                          "-o",
+                          "corba.master_manager:",
+                          "-o",
+                          "corba.endpoints:127.0.0.1:",
+                          "-o",
+                          "logger.log_level:ERROR",
+                          "-o",
+                          loadPath.constData(),
+                          "-f",
+                          "/nonexistent/rtc.conf",
+                          "-i"};
+    std::vector<char *> argv;
+    for (const char *arg : args)
+        argv.push_back(const_cast<char *>(arg));
+    m_manager = RTC::Manager::init(int(argv.size()), argv.data());
+    QVERIFY(m_manager != nullptr);
+    QVERIFY(m_manager->activateManager());
+    m_manager->runManager(true);
+    coil::Properties counter(counterSpec);
+    QVERIFY(m_manager->registerFactory(counter, RTC::Create<SdkCounter>, RTC::Delete<SdkCounter>));
+}
+
+void TestSdkEc::cleanupTestCase()
+{
+    if (!m_manager)
+        return;
+    for (RTC::RTObject_impl *component : m_manager->getComponents())
+        m_manager->deleteComponent(component);
+    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponents().empty(), 5000);
+    RTC::Manager::terminate();
+    m_manager->join();
+}
+
+SdkCounter *TestSdkEc::create(const QString &request)
+{
+    return dynamic_cast<SdkCounter *>(m_manager->createComponent(request.toUtf8().constData()));
+}
+
+void TestSdkEc::extTrigRunsOneCyclePerRemoteTick()
+{
+    SdkCounter *counter = create("SdkCounter?instance_name=remoteTicked&exec_cxt.periodic.type=ExtTrigExecutionContext");
+    QVERIFY(counter);
+    // As OpenRTM's ConnectorComp: the component's own context from its reference, narrowed to
+    // the ExtTrig service through a stringified reference, then activate and tick.
+    CORBA::ORB_var orb = m_manager->getORB();
+    RTC::RTObject_var rtc = counter->getObjRef();
+    CORBA::String_var ior = orb->object_to_string(rtc);
+    RTC::CorbaConsumer<RTC::RTObject> component;
+    QVERIFY(component.setObject(CORBA::Object_var(orb->string_to_object(ior)).in()));
+    RTC::ExecutionContextList_var owned = component->get_owned_contexts();
+    QCOMPARE(owned->length(), CORBA::ULong(1));
+    RTC::CorbaConsumer<OpenRTM::ExtTrigExecutionContextService> ec;
+    QVERIFY(ec.setObject(owned[CORBA::ULong(0)]));
+    QCOMPARE(owned[CORBA::ULong(0)]->activate_component(component._ptr()), RTC::RTC_OK);
+    QCOMPARE(counter->activations.load(), 1);
+    RTC::ExecutionContextProfile_var profile = ec->get_profile();
+    const char *type = nullptr;
+    QVERIFY(profile->properties.length() > 0 && (profile->properties[0].value >>= type));
+    QCOMPARE(QString(type), QString("ExtTrigExecutionContext"));
+
+    QCOMPARE(counter->executions.load(), 0);
+    for (int i = 0; i < 3; ++i)
+        ec->tick();
+    QTRY_COMPARE_WITH_TIMEOUT(counter->executions.load(), 3, 5000);
+    ec->tick();
+    QTRY_COMPARE_WITH_TIMEOUT(counter->executions.load(), 4, 5000);
+    // A context that only runs when ticked: a periodic one next to it runs many cycles meanwhile.
+    SdkCounter *periodic = create("SdkCounter?instance_name=freeRunning&exec_cxt.periodic.rate=500");
+    QVERIFY(periodic);
+    QCOMPARE(periodic->activate(0), RTC::RTC_OK);
+    QTRY_VERIFY_WITH_TIMEOUT(periodic->executions.load() >= 20, 5000);
+    QCOMPARE(counter->executions.load(), 4);
+    m_manager->deleteComponent(periodic);
+    QCOMPARE(ec->deactivate_component(component._ptr()), RTC::RTC_OK);
+    ec->tick();
+    QCOMPARE(ec->get_component_state(component._ptr()), RTC::INACTIVE_STATE);
+    m_manager->deleteComponent(counter);
+}
+
+void TestSdkEc::extTrigTickedLocally()
+{
+    SdkCounter *counter = create("SdkCounter?instance_name=localTicked&exec_cxt.periodic.type=ExtTrigExecutionContext");
+    QVERIFY(counter);
+    // The component's context is the SDK's class: C++ code reaches it as ExecutionContextBase.
+    std::vector<Runtime::ExecutionContext *> contexts = counter->ownedContexts();
+    QCOMPARE(contexts.size(), size_t(1));
+    auto *ec = dynamic_cast<RTC::ExtTrigExecutionContext *>(contexts.front());
+    QVERIFY(ec);
+    QVERIFY(ec->isRunning());
+    RTC::RTObject_var rtc = counter->getObjRef();
+    QCOMPARE(ec->activateComponent(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->getComponentState(rtc), RTC::ACTIVE_STATE);
+    ec->tick();
+    ec->tick();
+    QTRY_COMPARE_WITH_TIMEOUT(counter->executions.load(), 2, 5000);
+    // A stopped context ignores ticks.
+    QCOMPARE(ec->stop(), RTC::RTC_OK);
+    ec->tick();
+    QCOMPARE(ec->pendingTicks(), 0UL);
+    QCOMPARE(counter->executions.load(), 2);
+
+    // A context from the factory, bound to the component, runs it when ticked too.
+    RTC::ExecutionContextBase *extra = RTC::ExecutionContextFactory::instance().createObject("ExtTrigExecutionContext");
+    QVERIFY(extra);
+    QCOMPARE(extra->bindComponent(counter), RTC::RTC_OK);
+    QCOMPARE(counter->ownedContexts().size(), size_t(2));
+    QCOMPARE(extra->start(), RTC::RTC_OK);
+    QCOMPARE(extra->activateComponent(rtc), RTC::RTC_OK);
+    auto *extraTrig = dynamic_cast<RTC::ExtTrigExecutionContext *>(extra);
+    QVERIFY(extraTrig);
+    extraTrig->tick();
+    QTRY_COMPARE_WITH_TIMEOUT(counter->executions.load(), 3, 5000);
+    m_manager->deleteComponent(counter);
+}
+
+void TestSdkEc::synchronousTicks_data()
+{
+    QTest::addColumn<QString>("type");
+    QTest::newRow("OpenHRP") << "OpenHRPExecutionContext";
+    QTest::newRow("Simulator") << "SimulatorExecutionContext";
+}
+
+void TestSdkEc::synchronousTicks()
+{
+    QFETCH(QString, type);
+    SdkCounter *counter = create("SdkCounter?instance_name=sync" + type + "&exec_cxt.periodic.type=" + type);
+    QVERIFY(counter);
+    RTC::ExecutionContext_var context = counter->getExecutionContext(0);
+    OpenRTM::ExtTrigExecutionContextService_var ec = OpenRTM::ExtTrigExecutionContextService::_narrow(context);
+    QVERIFY(!CORBA::is_nil(ec));
+    RTC::RTObject_var rtc = counter->getObjRef();
+    QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    // Synchronous: the cycle is over when tick() returns.
+    for (int i = 1; i <= 5; ++i) {
+        ec->tick();
+        QCOMPARE(counter->executions.load(), i);
+    }
+    auto *base = dynamic_cast<RTC::ExecutionContextBase *>(counter->ownedContexts().front());
+    QVERIFY(base);
+    QCOMPARE(QString::fromStdString(base->getProperties().getProperty("type")).isEmpty(), false);
+    m_manager->deleteComponent(counter);
+}
+
+void TestSdkEc::simulatorChangesStatesAtOnce()
+{
+    SdkCounter *counter = create("SdkCounter?instance_name=simulated&exec_cxt.periodic.type=SimulatorExecutionContext");
+    QVERIFY(counter);
+    auto *ec = dynamic_cast<RTC::SimulatorExecutionContext *>(counter->ownedContexts().front());
+    QVERIFY(ec);
+    RTC::RTObject_var rtc = counter->getObjRef();
+    QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    QCOMPARE(counter->activations.load(), 1);
+    QCOMPARE(ec->get_component_state(rtc), RTC::ACTIVE_STATE);
+    ec->tick();
+    QCOMPARE(counter->executions.load(), 1);
+    QCOMPARE(ec->deactivate_component(rtc), RTC::RTC_OK);
+    QCOMPARE(counter->deactivations.load(), 1);
+    QCOMPARE(ec->get_component_state(rtc), RTC::INACTIVE_STATE);
+    ec->tick();
+    QCOMPARE(counter->executions.load(), 1);
+    m_manager->deleteComponent(counter);
+}
+
+void TestSdkEc::unknownTypeRefused()
+{
+    const size_t before = m_manager->getComponents().size();
+    QVERIFY(!create("SdkCounter?instance_name=refused&exec_cxt.periodic.type=NoSuchExecutionContext"));
+    QCOMPARE(m_manager->getComponents().size(), before);
+    const QString error = QString::fromStdString(m_manager->runtime()->lastError());
+    QVERIFY2(error.contains("unknown execution context type 'NoSuchExecutionContext'"), qPrintable(error));
+    for (const char *known : {"PeriodicExecutionContext", "ExtTrigExecutionContext", "OpenHRPExecutionContext",
+                              "SimulatorExecutionContext"})
+        QVERIFY2(error.contains(known), qPrintable(error));
+    QVERIFY(!RTC::ExecutionContextFactory::instance().createObject("NoSuchExecutionContext"));
+}
+
+void TestSdkEc::registeredContextTypes()
+{
+    RTC::ExecutionContextFactory &factory = RTC::ExecutionContextFactory::instance();
+    QVERIFY(factory.hasFactory("PeriodicExecutionContext"));
+    QVERIFY(!factory.hasFactory("SdkStepped"));
+    QVERIFY(m_manager->registerECFactory("SdkStepped", RTC::ECCreate<RTC::OpenHRPExecutionContext>,
+                                         RTC::ECDelete<RTC::OpenHRPExecutionContext>));
+    QVERIFY(!m_manager->registerECFactory("SdkStepped", RTC::ECCreate<RTC::OpenHRPExecutionContext>,
+                                          RTC::ECDelete<RTC::OpenHRPExecutionContext>));
+    const std::vector<std::string> ids = factory.getIdentifiers();
+    QVERIFY(std::find(ids.begin(), ids.end(), "SdkStepped") != ids.end());
+    SdkCounter *counter = create("SdkCounter?instance_name=stepped&exec_cxt.periodic.type=SdkStepped");
+    QVERIFY(counter);
+    QVERIFY(dynamic_cast<RTC::OpenHRPExecutionContext *>(counter->ownedContexts().front()));
+    m_manager->deleteComponent(counter);
+
+    // A context class without an engine is refused when a component asks for it, naming it.
+    QVERIFY(m_manager->registerECFactory("Engineless", RTC::ECCreate<EnginelessContext>,
+                                         RTC::ECDelete<EnginelessContext>));
+    QVERIFY(!create("SdkCounter?instance_name=engineless&exec_cxt.periodic.type=Engineless"));
+    const QString error = QString::fromStdString(m_manager->runtime()->lastError());
+    QVERIFY2(error.contains("'Engineless' has no runtime engine"), qPrintable(error));
+    QCOMPARE(factory.removeFactory("Engineless"), RTC::ExecutionContextFactory::FACTORY_OK);
+    QCOMPARE(factory.removeFactory("SdkStepped"), RTC::ExecutionContextFactory::FACTORY_OK);
+    QVERIFY(!factory.hasFactory("SdkStepped"));
+    // Its calls fail and say why instead of doing nothing.
+    EnginelessContext engineless;
+    QCOMPARE(engineless.start(), RTC::RTC_ERROR);
+    QVERIFY(!engineless.isRunning());
+}
+
+void TestSdkEc::createContextFromArguments()
+{
+    RTC::ExecutionContextBase *ec = m_manager->createContext("OpenHRPExecutionContext?exec_cxt.periodic.rate=50");
+    QVERIFY(ec);
+    QCOMPARE(ec->getRate(), 50.0);
+    QCOMPARE(ec->getPeriod(), std::chrono::nanoseconds(20000000));
+    QCOMPARE(ec->getKind(), RTC::PERIODIC);
+    QCOMPARE(QString(RTC::ExecutionContextBase::getKindString(ec->getKind())), QString("PERIODIC"));
+    QVERIFY(!ec->isRunning());
+    QCOMPARE(RTC::ExecutionContextFactory::instance().deleteObject(ec), RTC::ExecutionContextFactory::FACTORY_OK);
+    QVERIFY(ec == nullptr);
+    QVERIFY(!m_manager->createContext("NoSuchExecutionContext"));
+}
+
+void TestSdkEc::managerMembers()
+{
+    SdkCounter *first = create("SdkCounter?instance_name=listedA");
+    SdkCounter *second = create("SdkCounter?instance_name=listedB");
+    QVERIFY(first && second);
+    std::vector<RTC::RTObject_impl *> components = m_manager->getComponents();
+    QVERIFY(std::find(components.begin(), components.end(), first) != components.end());
+    QVERIFY(std::find(components.begin(), components.end(), second) != components.end());
+    QCOMPARE(m_manager->getComponent("listedB"), static_cast<RTC::RTObject_impl *>(second));
+    QVERIFY(!m_manager->getComponent("nobody"));
+    std::vector<std::string> factories = m_manager->getModulesFactories();
+    QVERIFY(std::find(factories.begin(), factories.end(), "SdkCounter") != factories.end());
+
+    // A component the program made itself, registered afterwards.
+    auto *own = new SdkCounter(m_manager);
+    own->setInstanceName("programMade");
+    QCOMPARE(own->initialize(), RTC::RTC_OK);
+    QVERIFY(m_manager->registerComponent(own));
+    QCOMPARE(m_manager->getComponent("programMade"), static_cast<RTC::RTObject_impl *>(own));
+    QVERIFY(!m_manager->registerComponent(own));
+    QVERIFY(m_manager->unregisterComponent(own));
+    QVERIFY(!m_manager->getComponent("programMade"));
+    QVERIFY(m_manager->registerComponent(own));
+
+    // Finalized components go at cleanupComponents().
+    m_manager->notifyFinalized(first);
+    m_manager->notifyFinalized(own);
+    QVERIFY(m_manager->getComponent("listedA"));
+    m_manager->cleanupComponents();
+    QTRY_VERIFY_WITH_TIMEOUT(!m_manager->getComponent("listedA"), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_manager->getComponent("programMade"), 5000);
+    QVERIFY(m_manager->getComponent("listedB"));
+    m_manager->deleteComponent(second);
+
+    QCOMPARE(m_manager->load(MANAGER_TEST_MODULE, ""), RTC::RTC_OK);
+    const std::vector<coil::Properties> loaded = m_manager->getLoadedModules();
+    QCOMPARE(loaded.size(), size_t(1));
+    m_manager->unload(MANAGER_TEST_MODULE);
+    QVERIFY(m_manager->getLoadedModules().empty());
+
+    PortableServer::POA_var poa = m_manager->getPOA();
+    PortableServer::POA_var shortcut = m_manager->getShortCutPOA();
+    QVERIFY(poa->_is_equivalent(shortcut));
+    RTM::Manager_var self = m_manager->getManagerServant().getObjRef();
+    QVERIFY(!CORBA::is_nil(self));
+    QCOMPARE(bool(m_manager->getManagerServant().is_master()), m_manager->runtime()->isMaster());
+}
+
+void TestSdkEc::namingOnManagerAndObjectManager()
+{
+    SdkCounter *counter = create("SdkCounter?instance_name=named");
+    QVERIFY(counter);
+    RTC::NamingManager naming(m_manager);
+    naming.registerNameServer("manager", "");
+    naming.registerNameServer("nonsense", "");
+    QCOMPARE(naming.getNameServices().size(), size_t(1));
+    RTC::RTCList found = naming.string_to_component("named");
+    QCOMPARE(found.length(), CORBA::ULong(1));
+    RTC::RTObject_var rtc = counter->getObjRef();
+    QVERIFY(found[0]->_is_equivalent(rtc));
+    naming.bindObject("named", counter);
+    QCOMPARE(naming.getObjects().size(), size_t(1));
+    naming.unbindObject("named");
+    QVERIFY(naming.getObjects().empty());
+    m_manager->deleteComponent(counter);
+
+    std::string a("a"), b("b");
+    ObjectManager<std::string, std::string, ByName> objects;
+    QVERIFY(objects.registerObject(&a));
+    QVERIFY(objects.registerObject(&b));
+    std::string again("a");
+    QVERIFY(!objects.registerObject(&again));
+    QCOMPARE(objects.find("b"), &b);
+    QCOMPARE(objects.getObjects().size(), size_t(2));
+    QCOMPARE(objects.unregisterObject("a"), &a);
+    QVERIFY(!objects.find("a"));
+    QCOMPARE(objects.getObjects().size(), size_t(1));
+}
+
+void TestSdkEc::rtmanagerHonoursContextType()
+{
+    LiveTest::LiveSystem live;
+    QString error;
+    QVERIFY2(live.startNameServer(&error), qPrintable(error));
+    const quint16 port = LiveTest::freePort();
+    // As OpenRTM's ExtTrigger example: the type for every component comes from the configuration.
+    QVERIFY2(live.startHostManager(RTMANAGER_PATH, port, "sdkec",
+                                   {"exec_cxt.periodic.type=ExtTrigExecutionContext", "exec_cxt.periodic.rate=100"},
+                                   &error),
+             qPrintable(error));
+    CORBA::ORB_var orb = m_manager->getORB();
+    CORBA::Object_var object = orb->string_to_object(LiveTest::managerLocation(port).constData());
+    RTM::Manager_var manager = RTM::Manager::_narrow(object);
+    QVERIFY(!CORBA::is_nil(manager));
+
+    RTC::RTObject_var ticked = manager->create_component("ConsoleIn?instance_name=Ticked");
+    QVERIFY(!CORBA::is_nil(ticked));
+    RTC::RTObject_var running =
+        manager->create_component("ConsoleIn?instance_name=Running&exec_cxt.periodic.type=PeriodicExecutionContext");
+    QVERIFY(!CORBA::is_nil(running));
+
+    // The named one through the name server, as ConnectorComp finds ConsoleIn0.
+    RTC::NamingManager naming(m_manager);
+    naming.registerNameServer("corba", live.namingServer().toUtf8().constData());
+    RTC::RTCList found = naming.string_to_component("sdkec.host_cxt/Ticked.rtc");
+    QCOMPARE(found.length(), CORBA::ULong(1));
+    QVERIFY(found[0]->_is_equivalent(ticked));
+
+    RTC::ExecutionContextList_var owned = ticked->get_owned_contexts();
+    QCOMPARE(owned->length(), CORBA::ULong(1));
+    OpenRTM::ExtTrigExecutionContextService_var ec =
+        OpenRTM::ExtTrigExecutionContextService::_narrow(owned[CORBA::ULong(0)]);
+    QVERIFY(!CORBA::is_nil(ec));
+    QCOMPARE(ec->activate_component(ticked), RTC::RTC_OK);
+    ec->tick();
+    ec->tick();
+    QTRY_COMPARE_WITH_TIMEOUT(statusOf(ticked, "sent_count"), QString("2"), 5000);
+
+    RTC::ExecutionContextList_var periodic = running->get_owned_contexts();
+    QVERIFY(CORBA::is_nil(OpenRTM::ExtTrigExecutionContextService::_narrow(periodic[CORBA::ULong(0)])));
+    QCOMPARE(periodic[CORBA::ULong(0)]->activate_component(running), RTC::RTC_OK);
+    QTRY_VERIFY_WITH_TIMEOUT(statusOf(running, "sent_count").toInt() >= 10, 5000);
+    QCOMPARE(statusOf(ticked, "sent_count"), QString("2"));
+
+    // Unknown types are refused, the manager saying which and what it knows.
+    RTC::RTObject_var refused = manager->create_component("ConsoleIn?exec_cxt.periodic.type=Bogus");
+    QVERIFY(CORBA::is_nil(refused));
+    RTM::ManagerProfile_var profile = manager->get_profile();
+    QString lastError;
+    for (CORBA::ULong i = 0; i < profile->properties.length(); ++i) {
+        const char *value = nullptr;
+        if (std::string(profile->properties[i].name.in()) == "last_error" && (profile->properties[i].value >>= value))
+            lastError = QString::fromUtf8(value);
+    }
+    QVERIFY2(lastError.contains("unknown execution context type 'Bogus'"), qPrintable(lastError));
+    QVERIFY2(lastError.contains("ExtTrigExecutionContext"), qPrintable(lastError));
+    live.stopAll();
+}
+
+QTEST_GUILESS_MAIN(TestSdkEc)
+#include "tst_sdkec.moc"
