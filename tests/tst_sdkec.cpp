@@ -14,6 +14,14 @@
 #include <rtm/PeriodicExecutionContext.h>
 #include <rtm/SimulatorExecutionContext.h>
 #include <rtm/CorbaConsumer.h>
+#include <rtm/DefaultConfiguration.h>
+#include <rtm/ExecutionContextProfile.h>
+#include <rtm/FactoryInit.h>
+#include <rtm/ManagerConfig.h>
+#include <rtm/ModuleManager.h>
+#include <rtm/NumberingPolicy.h>
+#include <rtm/NamingServiceNumberingPolicy.h>
+#include <rtm/NodeNumberingPolicy.h>
 
 #include <manager.h>
 
@@ -118,6 +126,10 @@ private slots:
     void createContextFromArguments();
     void managerMembers();
     void namingOnManagerAndObjectManager();
+    void numberingPolicies();
+    void moduleManager();
+    void managerConfig();
+    void executionContextProfile();
     void rtmanagerHonoursContextType();
 
 private:
@@ -430,6 +442,126 @@ void TestSdkEc::namingOnManagerAndObjectManager()
     QCOMPARE(objects.unregisterObject("a"), &a);
     QVERIFY(!objects.find("a"));
     QCOMPARE(objects.getObjects().size(), size_t(1));
+}
+
+void TestSdkEc::numberingPolicies()
+{
+    RTM::FactoryInit();
+    RTM::NumberingPolicyFactory &factory = RTM::NumberingPolicyFactory::instance();
+    for (const char *id : {"process_unique", "node_unique", "ns_unique"})
+        QVERIFY2(factory.hasFactory(id), id);
+    QVERIFY(!factory.createObject("no_such_policy"));
+
+    RTM::NumberingPolicyBase *policy = factory.createObject("process_unique");
+    QVERIFY(policy);
+    int a = 0, b = 0, c = 0;
+    QCOMPARE(policy->onCreate(&a), std::string("0"));
+    QCOMPARE(policy->onCreate(&b), std::string("1"));
+    policy->onDelete(&a);
+    // The freed number is given out again first.
+    QCOMPARE(policy->onCreate(&c), std::string("0"));
+    QVERIFY_THROWS_EXCEPTION(RTM::NumberingPolicyBase::ObjectNotFound, policy->onDelete(&a));
+    QCOMPARE(factory.deleteObject(policy), RTM::NumberingPolicyFactory::FACTORY_OK);
+
+    // node_unique skips the numbers of the components that run.
+    SdkCounter *first = create("SdkCounter?instance_name=SdkCounter0");
+    SdkCounter *second = create("SdkCounter?instance_name=SdkCounter1");
+    QVERIFY(first && second);
+    RTM::NodeNumberingPolicy node;
+    QCOMPARE(node.onCreate(first), std::string("2"));
+    node.onDelete(first);
+    m_manager->deleteComponent(first);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_manager->getComponent("SdkCounter0"), 5000);
+    QCOMPARE(node.onCreate(second), std::string("0"));
+    m_manager->deleteComponent(second);
+}
+
+void TestSdkEc::moduleManager()
+{
+    const QFileInfo module(MANAGER_TEST_MODULE);
+    coil::Properties prop;
+    prop.setProperty("manager.modules.load_path", module.path().toStdString());
+    RTC::ModuleManager modules(prop);
+    QCOMPARE(modules.getLoadPath().size(), size_t(1));
+    QCOMPARE(modules.getInitFuncName("/x/ManagerTestModule.so"), std::string("ManagerTestModuleInit"));
+    bool listed = false;
+    for (coil::Properties &loadable : modules.getLoadableModules())
+        listed = listed || loadable.getProperty("module_file_name") == module.fileName().toStdString();
+    QVERIFY(listed);
+    // Found in the load path by its stem, loaded once.
+    const std::string path = modules.load("ManagerTestModule");
+    QCOMPARE(QFileInfo(QString::fromStdString(path)).canonicalFilePath(), module.canonicalFilePath());
+    QCOMPARE(modules.getLoadedModules().size(), size_t(1));
+    QVERIFY(modules.symbol(path, "ManagerTestModuleInit") != nullptr);
+    QVERIFY_THROWS_EXCEPTION(RTC::ModuleManager::SymbolNotFound, modules.symbol(path, "noSuchFunction"));
+    QVERIFY_THROWS_EXCEPTION(RTC::ModuleManager::FileNotFound, modules.load("NoSuchModule"));
+    QVERIFY_THROWS_EXCEPTION(RTC::ModuleManager::NotAllowedOperation,
+                             modules.load(module.absoluteFilePath().toStdString()));
+    modules.allowAbsolutePath();
+    // The same file by its absolute path: still one module.
+    QCOMPARE(modules.load(module.absoluteFilePath().toStdString()), module.absoluteFilePath().toStdString());
+    QCOMPARE(modules.getLoadedModules().size(), size_t(1));
+    modules.unload(path);
+    QVERIFY(modules.getLoadedModules().empty());
+    modules.load("ManagerTestModule");
+    QCOMPARE(modules.getLoadedModules().size(), size_t(1));
+    modules.unloadAll();
+    QVERIFY(modules.getLoadedModules().empty());
+    QVERIFY_THROWS_EXCEPTION(RTC::ModuleManager::NotFound, modules.unload(path));
+}
+
+void TestSdkEc::managerConfig()
+{
+    const char *args[] = {"prog", "-o", "exec_cxt.periodic.type:ExtTrigExecutionContext", "-f", "/nonexistent/rtc.conf",
+                          "-i"};
+    std::vector<char *> argv;
+    for (const char *arg : args)
+        argv.push_back(const_cast<char *>(arg));
+    RTC::ManagerConfig config(int(argv.size()), argv.data());
+    coil::Properties prop;
+    config.configure(prop);
+    QCOMPARE(prop.getProperty("exec_cxt.periodic.type"), std::string("ExtTrigExecutionContext"));
+    QCOMPARE(prop.getProperty("exec_cxt.periodic.rate"), std::string("1000"));
+    QVERIFY(!prop.getProperty("os.name").empty());
+    QCOMPARE(config.getConfig().getProperty("exec_cxt.periodic.type"), std::string("ExtTrigExecutionContext"));
+    const char *bad[] = {"prog", "-f", "/nonexistent/rtc.conf"};
+    std::vector<char *> badArgv;
+    for (const char *arg : bad)
+        badArgv.push_back(const_cast<char *>(arg));
+    RTC::ManagerConfig refused;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, refused.init(int(badArgv.size()), badArgv.data()));
+    coil::Properties defaults(RTC::default_config);
+    QCOMPARE(defaults.getProperty("exec_cxt.periodic.type"), std::string("PeriodicExecutionContext"));
+}
+
+void TestSdkEc::executionContextProfile()
+{
+    RTC_impl::ExecutionContextProfile profile;
+    QCOMPARE(profile.getKind(), RTC::PERIODIC);
+    QCOMPARE(QString(profile.getKindString()), QString("PERIODIC"));
+    QCOMPARE(profile.setRate(0.0), RTC::BAD_PARAMETER);
+    QCOMPARE(profile.setRate(250.0), RTC::RTC_OK);
+    QCOMPARE(profile.getPeriod(), std::chrono::nanoseconds(4000000));
+    QCOMPARE(profile.setPeriod(std::chrono::milliseconds(20)), RTC::RTC_OK);
+    QCOMPARE(profile.getRate(), 50.0);
+    SdkCounter *counter = create("SdkCounter?instance_name=profiled");
+    QVERIFY(counter);
+    RTC::RTObject_var rtc = counter->getObjRef();
+    QCOMPARE(profile.addComponent(rtc), RTC::RTC_OK);
+    QCOMPARE(profile.setOwner(rtc), RTC::RTC_OK);
+    QCOMPARE(profile.getComponentList().length(), CORBA::ULong(1));
+    RTC::RTObject_var owner = profile.getOwner();
+    QVERIFY(owner->_is_equivalent(rtc));
+    coil::Properties props;
+    props.setProperty("type", "ExtTrigExecutionContext");
+    profile.setProperties(props);
+    QCOMPARE(profile.getProperties().getProperty("type"), std::string("ExtTrigExecutionContext"));
+    RTC::ExecutionContextProfile_var copy = profile.getProfile();
+    QCOMPARE(copy->rate, 50.0);
+    QCOMPARE(profile.removeComponent(rtc), RTC::RTC_OK);
+    QCOMPARE(profile.removeComponent(rtc), RTC::BAD_PARAMETER);
+    QCOMPARE(profile.getComponentList().length(), CORBA::ULong(0));
+    m_manager->deleteComponent(counter);
 }
 
 void TestSdkEc::rtmanagerHonoursContextType()

@@ -20,13 +20,16 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataInPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortListeners.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataTypeUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DefaultConfiguration.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ECFactory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataOutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextProfile.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExtTrigExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Factory.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FactoryInit.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FsmActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/BasicDataTypeUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/InterfaceDataTypesUtil.h
@@ -36,8 +39,14 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NVUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerConfig.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerServant.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ModuleManager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingManager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingServiceNumberingPolicy.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NodeNumberingPolicy.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NumberingPolicy.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NumberingPolicyBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ObjectManager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OpenHRPExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
@@ -79,6 +88,7 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/bytedatastream.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/executioncontexts.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/namingmanager.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/managerinternals.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS
