@@ -14,6 +14,12 @@
 #include <rtm/PeriodicExecutionContext.h>
 #include <rtm/SimulatorExecutionContext.h>
 #include <rtm/CorbaConsumer.h>
+#include <rtm/DefaultPeriodicTask.h>
+#include <rtm/ExecutionContextWorker.h>
+#include <rtm/PeriodicTaskFactory.h>
+#include <rtm/RTObjectStateMachine.h>
+#include <rtm/StateMachine.h>
+#include <coil/PeriodicTask.h>
 #include <rtm/DefaultConfiguration.h>
 #include <rtm/ExecutionContextProfile.h>
 #include <rtm/FactoryInit.h>
@@ -93,6 +99,16 @@ QString statusOf(RTC::RTObject_ptr rtc, const char *name)
     return {};
 }
 
+/// Records the actions a StateMachine calls.
+struct Recorder
+{
+    using States = RTC_Utils::StateHolder<int>;
+    void entry(const States &s) { log.push_back("entry" + std::to_string(s.curr)); }
+    void exit(const States &s) { log.push_back("exit" + std::to_string(s.curr)); }
+    void run(const States &s) { log.push_back("do" + std::to_string(s.curr)); }
+    std::vector<std::string> log;
+};
+
 struct ByName
 {
     explicit ByName(const std::string *object)
@@ -130,6 +146,9 @@ private slots:
     void moduleManager();
     void managerConfig();
     void executionContextProfile();
+    void stateMachine();
+    void executionContextWorker();
+    void periodicTaskFactory();
     void rtmanagerHonoursContextType();
 
 private:
@@ -562,6 +581,84 @@ void TestSdkEc::executionContextProfile()
     QCOMPARE(profile.removeComponent(rtc), RTC::BAD_PARAMETER);
     QCOMPARE(profile.getComponentList().length(), CORBA::ULong(0));
     m_manager->deleteComponent(counter);
+}
+
+void TestSdkEc::stateMachine()
+{
+    Recorder recorder;
+    RTC_Utils::StateMachine<int, Recorder> machine(3);
+    machine.setListener(&recorder);
+    QVERIFY(machine.setEntryAction(1, &Recorder::entry));
+    QVERIFY(machine.setDoAction(1, &Recorder::run));
+    QVERIFY(machine.setExitAction(1, &Recorder::exit));
+    RTC_Utils::StateHolder<int> start{0, 0, 0};
+    machine.setStartState(start);
+    machine.worker();
+    QVERIFY(recorder.log.empty());
+    machine.goTo(1);
+    QVERIFY(machine.isIn(0));
+    machine.worker();
+    QVERIFY(machine.isIn(1));
+    machine.worker();
+    machine.goTo(2);
+    machine.worker();
+    QCOMPARE(machine.getState(), 2);
+    QCOMPARE(machine.getStates().prev, 1);
+    const std::vector<std::string> expected{"entry1", "do1", "exit1"};
+    QCOMPARE(recorder.log, expected);
+}
+
+void TestSdkEc::executionContextWorker()
+{
+    SdkCounter *counter = create("SdkCounter?instance_name=worked");
+    QVERIFY(counter);
+    RTC::RTObject_var rtc = counter->getObjRef();
+    // A context of the runtime lends its reference, as a context built on the worker would.
+    RTC::ExecutionContextService_var ref = counter->ownedContexts().front()->_this();
+    RTC_impl::ExecutionContextWorker worker;
+    worker.setECRef(ref);
+    QCOMPARE(worker.addComponent(rtc), RTC::RTC_OK);
+    QCOMPARE(worker.addComponent(rtc), RTC::PRECONDITION_NOT_MET);
+    QCOMPARE(worker.start(), RTC::RTC_OK);
+    QCOMPARE(worker.getComponentState(rtc), RTC::INACTIVE_STATE);
+    RTC_impl::RTObjectStateMachine *machine = nullptr;
+    QCOMPARE(worker.activateComponent(rtc, machine), RTC::RTC_OK);
+    QVERIFY(machine);
+    QVERIFY(machine->isNextState(RTC::ACTIVE_STATE));
+    QCOMPARE(worker.waitActivateComplete(machine), RTC::RTC_OK);
+    QCOMPARE(counter->activations.load(), 1);
+    QVERIFY(worker.isAllCurrentState(RTC::ACTIVE_STATE));
+    worker.invokeWorker();
+    worker.invokeWorker();
+    QCOMPARE(counter->executions.load(), 2);
+    QCOMPARE(worker.activateComponent(rtc, machine), RTC::PRECONDITION_NOT_MET);
+    QCOMPARE(worker.deactivateComponent(rtc, machine), RTC::RTC_OK);
+    worker.invokeWorker();
+    QCOMPARE(counter->deactivations.load(), 1);
+    QCOMPARE(counter->executions.load(), 2);
+    QCOMPARE(worker.getComponentState(rtc), RTC::INACTIVE_STATE);
+    QCOMPARE(worker.removeComponent(rtc), RTC::RTC_OK);
+    worker.updateComponentList();
+    QCOMPARE(worker.getComponentState(rtc), RTC::CREATED_STATE);
+    QCOMPARE(worker.stop(), RTC::RTC_OK);
+    m_manager->deleteComponent(counter);
+}
+
+void TestSdkEc::periodicTaskFactory()
+{
+    DefaultPeriodicTaskInit();
+    RTC::PeriodicTaskFactory &factory = RTC::PeriodicTaskFactory::instance();
+    QVERIFY(factory.hasFactory("default"));
+    QVERIFY(!factory.createObject("no_such_task"));
+    coil::PeriodicTaskBase *task = factory.createObject("default");
+    QVERIFY(dynamic_cast<RTC::DefaultPeriodicTask *>(task));
+    std::atomic<int> runs{0};
+    task->setTask([&runs] { ++runs; });
+    task->setPeriod(std::chrono::milliseconds(1));
+    task->activate();
+    QTRY_VERIFY_WITH_TIMEOUT(runs.load() >= 3, 5000);
+    QCOMPARE(factory.deleteObject(task), RTC::PeriodicTaskFactory::FACTORY_OK);
+    QVERIFY(task == nullptr);
 }
 
 void TestSdkEc::rtmanagerHonoursContextType()

@@ -21,12 +21,14 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortListeners.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataTypeUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DefaultConfiguration.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DefaultPeriodicTask.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ECFactory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataOutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextProfile.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextWorker.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExtTrigExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Factory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FactoryInit.h
@@ -52,12 +54,15 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicExecutionContext.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicTaskFactory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTC.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTCUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObjectStateMachine.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SimulatorExecutionContext.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StateMachine.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StaticFSM.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SystemLogger.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Timestamp.h
@@ -89,6 +94,7 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/executioncontexts.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/namingmanager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/managerinternals.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ecworker.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS
