@@ -424,6 +424,21 @@ void TestSdkEc::managerMembers()
     m_manager->unload(MANAGER_TEST_MODULE);
     QVERIFY(m_manager->getLoadedModules().empty());
 
+    // Periodic tasks and delayed calls run on the manager's timer thread.
+    std::atomic<int> periodic{0};
+    std::atomic<int> delayed{0};
+    RTC::Manager::TaskId task = m_manager->addTask([&periodic] { ++periodic; }, std::chrono::milliseconds(100));
+    m_manager->invoke([&delayed] { ++delayed; });
+    QTRY_VERIFY_WITH_TIMEOUT(periodic.load() >= 2, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(delayed.load(), 1, 5000);
+    RTC::Manager::removeTask(task);
+    const int stoppedAt = periodic.load();
+    std::atomic<int> later{0};
+    m_manager->invoke([&later] { ++later; }, std::chrono::milliseconds(300));
+    QTRY_COMPARE_WITH_TIMEOUT(later.load(), 1, 5000);
+    QVERIFY(periodic.load() <= stoppedAt + 1);
+    QCOMPARE(delayed.load(), 1);
+
     PortableServer::POA_var poa = m_manager->getPOA();
     PortableServer::POA_var shortcut = m_manager->getShortCutPOA();
     QVERIFY(poa->_is_equivalent(shortcut));

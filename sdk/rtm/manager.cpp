@@ -91,6 +91,41 @@ struct Manager::Private
     std::unique_ptr<RTM::ManagerServant> servant;
     /// Instance names of components notifyFinalized() reported, for cleanupComponents().
     std::vector<std::string> finalized;
+    coil::Timer<coil::PeriodicFunction> scheduler;
+    coil::Timer<coil::DelayedFunction> invoker;
+    /// Ticks scheduler and invoker every `timer.tick`; started by the first addTask() / invoke().
+    std::thread timerThread;
+    std::condition_variable timerWake;
+    bool timerStopping = false;
+
+    void startTimer(std::chrono::nanoseconds tick)
+    {
+        // mutex held
+        if (timerThread.joinable())
+            return;
+        timerThread = std::thread([this, tick] {
+            std::unique_lock lock(mutex);
+            while (!timerStopping) {
+                timerWake.wait_for(lock, tick, [this] { return timerStopping; });
+                if (timerStopping)
+                    break;
+                lock.unlock();
+                invoker.tick(tick);
+                scheduler.tick(tick);
+                lock.lock();
+            }
+        });
+    }
+    void stopTimer()
+    {
+        {
+            std::lock_guard lock(mutex);
+            timerStopping = true;
+        }
+        timerWake.notify_all();
+        if (timerThread.joinable() && timerThread.get_id() != std::this_thread::get_id())
+            timerThread.join();
+    }
 };
 
 Manager::Manager()
@@ -100,7 +135,42 @@ Manager::Manager()
 
 Manager::~Manager()
 {
+    d->stopTimer();
     delete d;
+}
+
+namespace {
+
+std::chrono::nanoseconds timerTick(coil::Properties &config)
+{
+    double seconds = 0.1;
+    try {
+        const std::string text = config.getProperty("timer.tick");
+        if (!text.empty())
+            seconds = std::stod(text);
+    } catch (...) {
+        // An unreadable tick keeps OpenRTM's default.
+    }
+    if (!(seconds > 0.0))
+        seconds = 0.1;
+    return std::chrono::nanoseconds(static_cast<long long>(seconds * 1e9));
+}
+
+} // namespace
+
+Manager::TaskId Manager::addTask(std::function<void(void)> fn, std::chrono::nanoseconds period)
+{
+    TaskId id = d->scheduler.emplace(std::move(fn), period);
+    std::lock_guard lock(d->mutex);
+    d->startTimer(timerTick(d->config));
+    return id;
+}
+
+void Manager::invoke(std::function<void(void)> fn, std::chrono::nanoseconds delay)
+{
+    d->invoker.emplace(std::move(fn), delay);
+    std::lock_guard lock(d->mutex);
+    d->startTimer(timerTick(d->config));
 }
 
 bool Sdk::adoptManager(Manager *manager)
@@ -178,6 +248,7 @@ void Manager::shutdown()
     if (d->runtime == nullptr)
         return;
     d->actions.each(d->actions.manager, [](RTM::ManagerActionListener &l) { l.preShutdown(); });
+    d->stopTimer();
     d->runtime->shutdown();
 }
 

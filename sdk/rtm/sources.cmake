@@ -40,10 +40,10 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
-    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NVUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerConfig.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerServant.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ModuleManager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NVUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingManager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingServiceNumberingPolicy.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NodeNumberingPolicy.h

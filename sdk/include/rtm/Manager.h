@@ -12,6 +12,7 @@
 #include <rtm/ManagerActionListener.h>
 
 #include <coil/Properties.h>
+#include <coil/Timer.h>
 #include <coil/Signal.h>
 
 #include <atomic>
@@ -74,6 +75,17 @@ public:
     bool activateManager();
     /// Runs until shutdown; with @p no_block true returns at once and runs in the background.
     void runManager(bool no_block = false);
+
+    using TaskId = coil::Timer<coil::PeriodicFunction>::TaskId;
+    /**
+     * Calls @p fn every @p period from the manager's timer thread (its resolution is
+     * `timer.tick` seconds, 0.1 by default) until removeTask().
+     */
+    TaskId addTask(std::function<void(void)> fn, std::chrono::nanoseconds period);
+    /// Stops the task @p id; it is not called again.
+    static void removeTask(TaskId id) { id->stop(); }
+    /// Calls @p fn once from the manager's timer thread, after @p delay.
+    void invoke(std::function<void(void)> fn, std::chrono::nanoseconds delay = std::chrono::seconds::zero());
 
     /// Loads module @p fname (searched in `manager.modules.load_path`) and calls @p initfunc
     /// (default `<file stem>Init`).
