@@ -3,6 +3,9 @@
 
 #include "triggeredexecutioncontext.h"
 
+#include <algorithm>
+#include <set>
+
 namespace Runtime {
 
 namespace {
@@ -68,19 +71,35 @@ bool ExecutionContextFactory::remove(const std::string &type)
     return m_creators.erase(type) > 0;
 }
 
-bool ExecutionContextFactory::contains(const std::string &type)
+void ExecutionContextFactory::setExternal(ExternalTypes types, ExternalCreate create)
 {
     std::lock_guard lock(m_mutex);
-    return m_creators.count(type) > 0;
+    m_externalTypes = std::move(types);
+    m_externalCreate = std::move(create);
+}
+
+bool ExecutionContextFactory::contains(const std::string &type)
+{
+    const std::vector<std::string> names = types();
+    return std::find(names.begin(), names.end(), type) != names.end();
 }
 
 std::vector<std::string> ExecutionContextFactory::types()
 {
-    std::lock_guard lock(m_mutex);
-    std::vector<std::string> names;
-    for (const auto &entry : m_creators)
-        names.push_back(entry.first);
-    return names;
+    std::set<std::string> names;
+    ExternalTypes external;
+    {
+        std::lock_guard lock(m_mutex);
+        for (const auto &entry : m_creators)
+            names.insert(entry.first);
+        external = m_externalTypes;
+    }
+    // Outside the lock: the external table has a lock of its own.
+    if (external) {
+        for (const std::string &name : external())
+            names.insert(name);
+    }
+    return {names.begin(), names.end()};
 }
 
 std::string ExecutionContextFactory::typeOf(const Properties &properties)
@@ -103,12 +122,16 @@ ExecutionContext *ExecutionContextFactory::create(const std::string &type, const
                                                   std::string *error)
 {
     Create create;
+    ExternalCreate external;
     {
         std::lock_guard lock(m_mutex);
         auto it = m_creators.find(type);
         if (it != m_creators.end())
             create = it->second;
+        external = m_externalCreate;
     }
+    if (!create && external && contains(type))
+        create = [&external, &type](const Properties &p, std::string *e) { return external(type, p, e); };
     if (!create) {
         if (error)
             *error = check(type);

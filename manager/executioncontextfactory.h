@@ -16,7 +16,8 @@ class ExecutionContext;
 /**
  * The one place execution contexts are made, keyed by their type name as OpenRTM's ECFactory:
  * `PeriodicExecutionContext`, `ExtTrigExecutionContext`, `OpenHRPExecutionContext`,
- * `SimulatorExecutionContext`, plus whatever a program registers. A component's owned context is
+ * `SimulatorExecutionContext`, plus whatever a program registers here or in the external table
+ * (setExternal()). A component's owned context is
  * of the type its `exec_cxt.periodic.type` names, at `exec_cxt.periodic.rate`.
  */
 class ExecutionContextFactory
@@ -29,6 +30,14 @@ public:
 
     /// Registers @p create for @p type; false when the type is known already.
     bool add(const std::string &type, Create create);
+    /**
+     * A second table of types the factory consults after its own (the component SDK's
+     * RTC::ExecutionContextFactory): @p types lists them, @p create makes one by type name.
+     */
+    using ExternalTypes = std::function<std::vector<std::string>()>;
+    using ExternalCreate =
+        std::function<ExecutionContext *(const std::string &type, const Properties &properties, std::string *error)>;
+    void setExternal(ExternalTypes types, ExternalCreate create);
     /// Registers @p create for @p type, in place of the one it had if any.
     void replace(const std::string &type, Create create);
     bool remove(const std::string &type);
@@ -47,6 +56,8 @@ private:
 
     std::mutex m_mutex;
     std::map<std::string, Create> m_creators;
+    ExternalTypes m_externalTypes;
+    ExternalCreate m_externalCreate;
 };
 
 } // namespace Runtime

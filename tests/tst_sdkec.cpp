@@ -355,14 +355,24 @@ void TestSdkEc::registeredContextTypes()
     QVERIFY(dynamic_cast<RTC::OpenHRPExecutionContext *>(counter->ownedContexts().front()));
     m_manager->deleteComponent(counter);
 
+    // Registered as OpenRTM-aist's own context modules do, straight in the factory.
+    QCOMPARE(factory.addFactory("SdkGlobal", coil::Creator<RTC::ExecutionContextBase, RTC::ExtTrigExecutionContext>,
+                                coil::Destructor<RTC::ExecutionContextBase, RTC::ExtTrigExecutionContext>),
+             coil::FactoryReturn::OK);
+    counter = create("SdkCounter?instance_name=global&exec_cxt.periodic.type=SdkGlobal");
+    QVERIFY(counter);
+    QVERIFY(dynamic_cast<RTC::ExtTrigExecutionContext *>(counter->ownedContexts().front()));
+    m_manager->deleteComponent(counter);
+    QCOMPARE(factory.removeFactory("SdkGlobal"), coil::FactoryReturn::OK);
+
     // A context class without an engine is refused when a component asks for it, naming it.
     QVERIFY(m_manager->registerECFactory("Engineless", RTC::ECCreate<EnginelessContext>,
                                          RTC::ECDelete<EnginelessContext>));
     QVERIFY(!create("SdkCounter?instance_name=engineless&exec_cxt.periodic.type=Engineless"));
     const QString error = QString::fromStdString(m_manager->runtime()->lastError());
     QVERIFY2(error.contains("'Engineless' has no runtime engine"), qPrintable(error));
-    QCOMPARE(factory.removeFactory("Engineless"), RTC::ExecutionContextFactory::FACTORY_OK);
-    QCOMPARE(factory.removeFactory("SdkStepped"), RTC::ExecutionContextFactory::FACTORY_OK);
+    QCOMPARE(factory.removeFactory("Engineless"), coil::FactoryReturn::OK);
+    QCOMPARE(factory.removeFactory("SdkStepped"), coil::FactoryReturn::OK);
     QVERIFY(!factory.hasFactory("SdkStepped"));
     // Its calls fail and say why instead of doing nothing.
     EnginelessContext engineless;
@@ -379,7 +389,7 @@ void TestSdkEc::createContextFromArguments()
     QCOMPARE(ec->getKind(), RTC::PERIODIC);
     QCOMPARE(QString(RTC::ExecutionContextBase::getKindString(ec->getKind())), QString("PERIODIC"));
     QVERIFY(!ec->isRunning());
-    QCOMPARE(RTC::ExecutionContextFactory::instance().deleteObject(ec), RTC::ExecutionContextFactory::FACTORY_OK);
+    QCOMPARE(RTC::ExecutionContextFactory::instance().deleteObject(ec), coil::FactoryReturn::OK);
     QVERIFY(ec == nullptr);
     QVERIFY(!m_manager->createContext("NoSuchExecutionContext"));
 }
@@ -495,7 +505,7 @@ void TestSdkEc::numberingPolicies()
     // The freed number is given out again first.
     QCOMPARE(policy->onCreate(&c), std::string("0"));
     QVERIFY_THROWS_EXCEPTION(RTM::NumberingPolicyBase::ObjectNotFound, policy->onDelete(&a));
-    QCOMPARE(factory.deleteObject(policy), RTM::NumberingPolicyFactory::FACTORY_OK);
+    QCOMPARE(factory.deleteObject(policy), coil::FactoryReturn::OK);
 
     // node_unique skips the numbers of the components that run.
     SdkCounter *first = create("SdkCounter?instance_name=SdkCounter0");
@@ -672,7 +682,8 @@ void TestSdkEc::periodicTaskFactory()
     task->setPeriod(std::chrono::milliseconds(1));
     task->activate();
     QTRY_VERIFY_WITH_TIMEOUT(runs.load() >= 3, 5000);
-    QCOMPARE(factory.deleteObject(task), RTC::PeriodicTaskFactory::FACTORY_OK);
+    task->finalize();
+    QCOMPARE(factory.deleteObject(task), coil::FactoryReturn::OK);
     QVERIFY(task == nullptr);
 }
 

@@ -609,90 +609,9 @@ void ExecutionContextWorker::updateComponentList()
 
 } // namespace RTC_impl
 
-// --- Periodic tasks ---
-
-namespace RTC {
-
-struct PeriodicTaskFactory::Private
-{
-    std::mutex mutex;
-    std::map<std::string, Creator> creators;
-};
-
-PeriodicTaskFactory::PeriodicTaskFactory()
-    : d(new Private)
-{
-    d->creators["default"] = [] { return static_cast<coil::PeriodicTaskBase *>(new coil::PeriodicTask); };
-}
-
-PeriodicTaskFactory &PeriodicTaskFactory::instance()
-{
-    static PeriodicTaskFactory factory;
-    return factory;
-}
-
-bool PeriodicTaskFactory::hasFactory(const std::string &id)
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->creators.count(id) > 0;
-}
-
-std::vector<std::string> PeriodicTaskFactory::getIdentifiers()
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    std::vector<std::string> ids;
-    for (const auto &entry : d->creators)
-        ids.push_back(entry.first);
-    return ids;
-}
-
-PeriodicTaskFactory::ReturnCode PeriodicTaskFactory::addFactory(const std::string &id, Creator creator,
-                                                                Destructor destructor)
-{
-    (void)destructor; // deleteObject() finalizes and deletes every task alike
-    if (id.empty() || creator == nullptr)
-        return INVALID_ARG;
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->creators.emplace(id, creator).second ? FACTORY_OK : ALREADY_EXISTS;
-}
-
-PeriodicTaskFactory::ReturnCode PeriodicTaskFactory::removeFactory(const std::string &id)
-{
-    std::lock_guard<std::mutex> lock(d->mutex);
-    return d->creators.erase(id) > 0 ? FACTORY_OK : NOT_FOUND;
-}
-
-coil::PeriodicTaskBase *PeriodicTaskFactory::createObject(const std::string &id)
-{
-    Creator creator = nullptr;
-    {
-        std::lock_guard<std::mutex> lock(d->mutex);
-        auto it = d->creators.find(id);
-        if (it != d->creators.end())
-            creator = it->second;
-    }
-    if (creator == nullptr) {
-        std::cerr << "PeriodicTaskFactory: unknown periodic task '" << id << "'; known: "
-                  << coil::flatten(getIdentifiers()) << std::endl;
-        return nullptr;
-    }
-    return creator();
-}
-
-PeriodicTaskFactory::ReturnCode PeriodicTaskFactory::deleteObject(coil::PeriodicTaskBase *&obj)
-{
-    if (obj == nullptr)
-        return INVALID_ARG;
-    obj->finalize();
-    delete obj;
-    obj = nullptr;
-    return FACTORY_OK;
-}
-
-} // namespace RTC
-
 extern "C" void DefaultPeriodicTaskInit()
 {
-    RTC::PeriodicTaskFactory::instance().addFactory(
-        "default", [] { return static_cast<coil::PeriodicTaskBase *>(new RTC::DefaultPeriodicTask); }, nullptr);
+    RTC::PeriodicTaskFactory::instance().addFactory("default",
+                                                    coil::Creator<coil::PeriodicTaskBase, RTC::DefaultPeriodicTask>,
+                                                    coil::Destructor<coil::PeriodicTaskBase, RTC::DefaultPeriodicTask>);
 }

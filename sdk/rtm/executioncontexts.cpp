@@ -38,41 +38,55 @@ void applySettings(Runtime::ExecutionContext *engine, coil::Properties &props)
         engine->set_rate(rate);
 }
 
-/**
- * The runtime factory's entry for an SDK context type: the object @p create makes, set up from
- * the component's properties, with its engine handed to the component. A class without an engine
- * (derived from ExecutionContextBase alone) is refused, naming the type.
- */
+/// The engine of @p context, set up from the component's @p properties; null with @p error
+/// naming @p type when the class has no engine (derived from ExecutionContextBase alone).
+Runtime::ExecutionContext *engineOf(const std::string &type, ExecutionContextBase *context,
+                                    const Runtime::Properties &properties, std::string *error)
+{
+    Runtime::ExecutionContext *engine = context != nullptr ? context->engine() : nullptr;
+    if (engine == nullptr) {
+        if (error)
+            *error = "execution context type '" + type
+                     + "' has no runtime engine: derive it from one of the built-in contexts";
+        if (context != nullptr)
+            ExecutionContextFactory::instance().deleteObject(context);
+        return nullptr;
+    }
+    coil::Properties props = Sdk::toCoil(properties);
+    context->init(props);
+    return engine;
+}
+
+/// The runtime factory's entry for a built-in type: the SDK's class, so that C++ code finds
+/// ExecutionContextBase behind a component's context.
 Runtime::ExecutionContextFactory::Create engineCreator(const std::string &type, ECNewFunc create)
 {
     return [type, create](const Runtime::Properties &properties, std::string *error) -> Runtime::ExecutionContext * {
-        ExecutionContextBase *context = create();
-        Runtime::ExecutionContext *engine = context != nullptr ? context->engine() : nullptr;
-        if (engine == nullptr) {
-            if (error)
-                *error = "execution context type '" + type
-                         + "' has no runtime engine: derive it from one of the built-in contexts";
-            delete context;
-            return nullptr;
-        }
-        coil::Properties props = Sdk::toCoil(properties);
-        context->init(props);
-        return engine;
+        return engineOf(type, create(), properties, error);
     };
 }
 
-/// The built-in types make the SDK's classes, so that C++ code finds ExecutionContextBase behind
-/// a component's context.
+template <class Context>
+void registerBuiltin(const char *type)
+{
+    Runtime::ExecutionContextFactory::instance().replace(type, engineCreator(type, ECCreate<Context>));
+    ExecutionContextFactory::instance().addFactory(type, coil::Creator<ExecutionContextBase, Context>,
+                                                   coil::Destructor<ExecutionContextBase, Context>);
+}
+
+/// The built-in types in both tables, and RTC::ExecutionContextFactory as the runtime's second
+/// table: a type a program registers there is one `exec_cxt.periodic.type` can name.
 const bool builtinsRegistered = [] {
-    Runtime::ExecutionContextFactory &factory = Runtime::ExecutionContextFactory::instance();
-    factory.replace("PeriodicExecutionContext",
-                    engineCreator("PeriodicExecutionContext", ECCreate<RTC_exp::PeriodicExecutionContext>));
-    factory.replace("ExtTrigExecutionContext",
-                    engineCreator("ExtTrigExecutionContext", ECCreate<ExtTrigExecutionContext>));
-    factory.replace("OpenHRPExecutionContext",
-                    engineCreator("OpenHRPExecutionContext", ECCreate<OpenHRPExecutionContext>));
-    factory.replace("SimulatorExecutionContext",
-                    engineCreator("SimulatorExecutionContext", ECCreate<SimulatorExecutionContext>));
+    registerBuiltin<RTC_exp::PeriodicExecutionContext>("PeriodicExecutionContext");
+    registerBuiltin<ExtTrigExecutionContext>("ExtTrigExecutionContext");
+    registerBuiltin<OpenHRPExecutionContext>("OpenHRPExecutionContext");
+    registerBuiltin<SimulatorExecutionContext>("SimulatorExecutionContext");
+    Runtime::ExecutionContextFactory::instance().setExternal(
+        [] { return ExecutionContextFactory::instance().getIdentifiers(); },
+        [](const std::string &type, const Runtime::Properties &properties,
+           std::string *error) -> Runtime::ExecutionContext * {
+            return engineOf(type, ExecutionContextFactory::instance().createObject(type), properties, error);
+        });
     return true;
 }();
 
@@ -304,94 +318,6 @@ void ExecutionContextBase::invokeWorker()
         engine->runCycle();
 }
 
-// --- ExecutionContextFactory ---
-
-ExecutionContextFactory::ExecutionContextFactory() = default;
-
-ExecutionContextFactory &ExecutionContextFactory::instance()
-{
-    static ExecutionContextFactory factory;
-    return factory;
-}
-
-bool ExecutionContextFactory::hasFactory(const std::string &id)
-{
-    return Runtime::ExecutionContextFactory::instance().contains(id);
-}
-
-std::vector<std::string> ExecutionContextFactory::getIdentifiers()
-{
-    return Runtime::ExecutionContextFactory::instance().types();
-}
-
-ExecutionContextFactory::ReturnCode ExecutionContextFactory::addFactory(const std::string &id, Creator creator,
-                                                                        Destructor destructor)
-{
-    (void)destructor; // contexts are servants: they go when the ORB and their owner drop them
-    if (id.empty() || creator == nullptr)
-        return INVALID_ARG;
-    return Runtime::ExecutionContextFactory::instance().add(id, engineCreator(id, creator)) ? FACTORY_OK
-                                                                                             : ALREADY_EXISTS;
-}
-
-ExecutionContextFactory::ReturnCode ExecutionContextFactory::removeFactory(const std::string &id)
-{
-    return Runtime::ExecutionContextFactory::instance().remove(id) ? FACTORY_OK : NOT_FOUND;
-}
-
-ExecutionContextBase *ExecutionContextFactory::createObject(const std::string &id)
-{
-    std::string error;
-    Runtime::ExecutionContext *engine =
-        Runtime::ExecutionContextFactory::instance().create(id, Runtime::Properties(), &error);
-    if (engine == nullptr) {
-        std::cerr << "ExecutionContextFactory: " << error << std::endl;
-        return nullptr;
-    }
-    auto *context = dynamic_cast<ExecutionContextBase *>(engine);
-    if (context == nullptr) {
-        std::cerr << "ExecutionContextFactory: execution context type '" << id
-                  << "' is the runtime's own, not an ExecutionContextBase" << std::endl;
-        engine->_remove_ref();
-        return nullptr;
-    }
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_created.push_back(context);
-    return context;
-}
-
-ExecutionContextFactory::ReturnCode ExecutionContextFactory::deleteObject(const std::string &id,
-                                                                          ExecutionContextBase *&obj)
-{
-    (void)id;
-    return deleteObject(obj);
-}
-
-ExecutionContextFactory::ReturnCode ExecutionContextFactory::deleteObject(ExecutionContextBase *&obj)
-{
-    if (obj == nullptr)
-        return INVALID_ARG;
-    {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        m_created.erase(std::remove(m_created.begin(), m_created.end(), obj), m_created.end());
-    }
-    if (Runtime::ExecutionContext *engine = obj->engine()) {
-        engine->halt(true);
-        PortableServer::POA_var poa = Sdk::rootPoa();
-        Runtime::releaseServant(poa, engine);
-    } else {
-        delete obj;
-    }
-    obj = nullptr;
-    return FACTORY_OK;
-}
-
-std::vector<ExecutionContextBase *> ExecutionContextFactory::createdObjects()
-{
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_created;
-}
-
 // --- ECFactoryCXX ---
 
 ECFactoryCXX::ECFactoryCXX(const char *name, ECNewFunc new_func, ECDeleteFunc delete_func)
@@ -535,12 +461,14 @@ ReturnCode_t SimulatorExecutionContext::reset_component(LightweightRTObject_ptr 
 
 namespace {
 
-void registerType(RTC::Manager *manager, const char *name, RTC::ECNewFunc create)
+template <class Context>
+void registerType(RTC::Manager *manager, const char *name)
 {
     if (manager != nullptr)
-        manager->registerECFactory(name, create, RTC::ECDelete<RTC::ExecutionContextBase>);
+        manager->registerECFactory(name, RTC::ECCreate<Context>, RTC::ECDelete<Context>);
     else
-        RTC::ExecutionContextFactory::instance().addFactory(name, create, RTC::ECDelete<RTC::ExecutionContextBase>);
+        RTC::ExecutionContextFactory::instance().addFactory(name, coil::Creator<RTC::ExecutionContextBase, Context>,
+                                                            coil::Destructor<RTC::ExecutionContextBase, Context>);
 }
 
 } // namespace
@@ -549,21 +477,21 @@ extern "C" {
 
 void PeriodicExecutionContextInit(RTC::Manager *manager)
 {
-    registerType(manager, "PeriodicExecutionContext", RTC::ECCreate<RTC_exp::PeriodicExecutionContext>);
+    registerType<RTC_exp::PeriodicExecutionContext>(manager, "PeriodicExecutionContext");
 }
 
 void ExtTrigExecutionContextInit(RTC::Manager *manager)
 {
-    registerType(manager, "ExtTrigExecutionContext", RTC::ECCreate<RTC::ExtTrigExecutionContext>);
+    registerType<RTC::ExtTrigExecutionContext>(manager, "ExtTrigExecutionContext");
 }
 
 void OpenHRPExecutionContextInit(RTC::Manager *manager)
 {
-    registerType(manager, "OpenHRPExecutionContext", RTC::ECCreate<RTC::OpenHRPExecutionContext>);
+    registerType<RTC::OpenHRPExecutionContext>(manager, "OpenHRPExecutionContext");
 }
 
 void SimulatorExecutionContextInit(RTC::Manager *manager)
 {
-    registerType(manager, "SimulatorExecutionContext", RTC::ECCreate<RTC::SimulatorExecutionContext>);
+    registerType<RTC::SimulatorExecutionContext>(manager, "SimulatorExecutionContext");
 }
 }

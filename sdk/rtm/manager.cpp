@@ -377,8 +377,12 @@ bool Manager::registerECFactory(const char *name, ECNewFunc new_func, ECDeleteFu
 {
     if (name == nullptr || new_func == nullptr)
         return false;
-    return ExecutionContextFactory::instance().addFactory(name, new_func, delete_func)
-           == ExecutionContextFactory::FACTORY_OK;
+    // Contexts go with the component that owns them (through the POA), so any context the
+    // factory is asked to delete is deleted as an ExecutionContextBase.
+    (void)delete_func;
+    return ExecutionContextFactory::instance().addFactory(
+               name, new_func, coil::Destructor<ExecutionContextBase, ExecutionContextBase>)
+           == coil::FactoryReturn::OK;
 }
 
 std::vector<std::string> Manager::getModulesFactories()
@@ -455,8 +459,11 @@ ExecutionContextBase *Manager::createContext(const char *ec_args)
         return nullptr;
     }
     ExecutionContextBase *context = ExecutionContextFactory::instance().createObject(type);
-    if (context == nullptr)
+    if (context == nullptr) {
+        reportError(getLogbuf(), "createContext: execution context type '" + type
+                                     + "' is the runtime's own, not an RTC::ExecutionContextBase");
         return nullptr;
+    }
     coil::Properties props = Sdk::toCoil(properties);
     context->init(props);
     return context;

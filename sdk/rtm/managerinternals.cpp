@@ -41,83 +41,6 @@
 
 namespace RTM {
 
-struct NumberingPolicyFactory::Private
-{
-    std::mutex mutex;
-    std::map<std::string, Creator> creators;
-};
-
-NumberingPolicyFactory::NumberingPolicyFactory()
-    : d(new Private)
-{
-    d->creators["process_unique"] = [] { return static_cast<NumberingPolicyBase *>(new ProcessUniquePolicy); };
-    d->creators["node_unique"] = [] { return static_cast<NumberingPolicyBase *>(new NodeNumberingPolicy); };
-    d->creators["ns_unique"] = [] { return static_cast<NumberingPolicyBase *>(new NamingServiceNumberingPolicy); };
-}
-
-NumberingPolicyFactory &NumberingPolicyFactory::instance()
-{
-    static NumberingPolicyFactory factory;
-    return factory;
-}
-
-bool NumberingPolicyFactory::hasFactory(const std::string &id)
-{
-    std::lock_guard lock(d->mutex);
-    return d->creators.count(id) > 0;
-}
-
-std::vector<std::string> NumberingPolicyFactory::getIdentifiers()
-{
-    std::lock_guard lock(d->mutex);
-    std::vector<std::string> ids;
-    for (const auto &entry : d->creators)
-        ids.push_back(entry.first);
-    return ids;
-}
-
-NumberingPolicyFactory::ReturnCode NumberingPolicyFactory::addFactory(const std::string &id, Creator creator,
-                                                                      Destructor destructor)
-{
-    (void)destructor; // policies are plain objects: deleteObject() deletes them
-    if (id.empty() || creator == nullptr)
-        return INVALID_ARG;
-    std::lock_guard lock(d->mutex);
-    return d->creators.emplace(id, creator).second ? FACTORY_OK : ALREADY_EXISTS;
-}
-
-NumberingPolicyFactory::ReturnCode NumberingPolicyFactory::removeFactory(const std::string &id)
-{
-    std::lock_guard lock(d->mutex);
-    return d->creators.erase(id) > 0 ? FACTORY_OK : NOT_FOUND;
-}
-
-NumberingPolicyBase *NumberingPolicyFactory::createObject(const std::string &id)
-{
-    Creator creator = nullptr;
-    {
-        std::lock_guard lock(d->mutex);
-        auto it = d->creators.find(id);
-        if (it != d->creators.end())
-            creator = it->second;
-    }
-    if (creator == nullptr) {
-        std::cerr << "NumberingPolicyFactory: unknown numbering policy '" << id
-                  << "'; known: " << coil::flatten(getIdentifiers()) << std::endl;
-        return nullptr;
-    }
-    return creator();
-}
-
-NumberingPolicyFactory::ReturnCode NumberingPolicyFactory::deleteObject(NumberingPolicyBase *&obj)
-{
-    if (obj == nullptr)
-        return INVALID_ARG;
-    delete obj;
-    obj = nullptr;
-    return FACTORY_OK;
-}
-
 std::string ProcessUniquePolicy::onCreate(void *obj)
 {
     // A freed slot (null) is reused before the list grows.
@@ -270,22 +193,22 @@ extern "C" {
 void ProcessUniquePolicyInit()
 {
     RTM::NumberingPolicyFactory::instance().addFactory(
-        "process_unique", [] { return static_cast<RTM::NumberingPolicyBase *>(new RTM::ProcessUniquePolicy); },
-        nullptr);
+        "process_unique", coil::Creator<RTM::NumberingPolicyBase, RTM::ProcessUniquePolicy>,
+        coil::Destructor<RTM::NumberingPolicyBase, RTM::ProcessUniquePolicy>);
 }
 
 void NodeNumberingPolicyInit()
 {
     RTM::NumberingPolicyFactory::instance().addFactory(
-        "node_unique", [] { return static_cast<RTM::NumberingPolicyBase *>(new RTM::NodeNumberingPolicy); },
-        nullptr);
+        "node_unique", coil::Creator<RTM::NumberingPolicyBase, RTM::NodeNumberingPolicy>,
+        coil::Destructor<RTM::NumberingPolicyBase, RTM::NodeNumberingPolicy>);
 }
 
 void NamingServiceNumberingPolicyInit()
 {
     RTM::NumberingPolicyFactory::instance().addFactory(
-        "ns_unique", [] { return static_cast<RTM::NumberingPolicyBase *>(new RTM::NamingServiceNumberingPolicy); },
-        nullptr);
+        "ns_unique", coil::Creator<RTM::NumberingPolicyBase, RTM::NamingServiceNumberingPolicy>,
+        coil::Destructor<RTM::NumberingPolicyBase, RTM::NamingServiceNumberingPolicy>);
 }
 }
 

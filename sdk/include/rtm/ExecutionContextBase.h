@@ -8,6 +8,7 @@
 #include <rtm/Factory.h>
 #include <rtm/SystemLogger.h>
 
+#include <coil/Factory.h>
 #include <coil/Properties.h>
 
 #include <chrono>
@@ -100,42 +101,11 @@ private:
 };
 
 /**
- * The process's execution context types by name (OpenRTM's coil::GlobalFactory of
- * ExecutionContextBase): the same table the manager picks a component's context from with
- * `exec_cxt.periodic.type`.
+ * The process's execution context types by name (`exec_cxt.periodic.type`). The manager picks a
+ * component's context from the runtime's own types and from the ones registered here; a type
+ * registered here must derive from one of the built-in contexts (their engine runs it).
  */
-class ExecutionContextFactory
-{
-public:
-    using Creator = ExecutionContextBase *(*)();
-    using Destructor = void (*)(ExecutionContextBase *);
-    enum ReturnCode
-    {
-        FACTORY_OK,
-        FACTORY_ERROR,
-        ALREADY_EXISTS,
-        NOT_FOUND,
-        INVALID_ARG,
-        UNKNOWN_ERROR
-    };
-
-    static ExecutionContextFactory &instance();
-
-    bool hasFactory(const std::string &id);
-    std::vector<std::string> getIdentifiers();
-    ReturnCode addFactory(const std::string &id, Creator creator, Destructor destructor);
-    ReturnCode removeFactory(const std::string &id);
-    /// A new context of type @p id; null (and logged) for an unknown type.
-    ExecutionContextBase *createObject(const std::string &id);
-    ReturnCode deleteObject(const std::string &id, ExecutionContextBase *&obj);
-    ReturnCode deleteObject(ExecutionContextBase *&obj);
-    std::vector<ExecutionContextBase *> createdObjects();
-
-private:
-    ExecutionContextFactory();
-    std::mutex m_mutex;
-    std::vector<ExecutionContextBase *> m_created;
-};
+using ExecutionContextFactory = coil::GlobalFactory<ExecutionContextBase>;
 } // namespace RTC
 
 #endif // RTC_EXECUTIONCONTEXTBASE_H

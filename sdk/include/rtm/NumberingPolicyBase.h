@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <coil/Factory.h>
+
 namespace RTM
 {
 /// Gives each new object a number (as text), and takes it back when the object goes.
@@ -24,38 +26,10 @@ public:
 
 /**
  * The numbering policies by name — the values of `manager.components.naming_policy`:
- * `process_unique`, `node_unique`, `ns_unique` and what programs add (OpenRTM's
- * coil::GlobalFactory of them). The runtime's manager itself numbers as process_unique does.
+ * `process_unique`, `node_unique`, `ns_unique` (registered by RTM::FactoryInit()) and what
+ * programs add. The runtime's manager itself numbers as process_unique does.
  */
-class NumberingPolicyFactory
-{
-public:
-    using Creator = NumberingPolicyBase *(*)();
-    using Destructor = void (*)(NumberingPolicyBase *);
-    enum ReturnCode
-    {
-        FACTORY_OK,
-        FACTORY_ERROR,
-        ALREADY_EXISTS,
-        NOT_FOUND,
-        INVALID_ARG,
-        UNKNOWN_ERROR
-    };
-
-    static NumberingPolicyFactory &instance();
-    bool hasFactory(const std::string &id);
-    std::vector<std::string> getIdentifiers();
-    ReturnCode addFactory(const std::string &id, Creator creator, Destructor destructor);
-    ReturnCode removeFactory(const std::string &id);
-    /// A new policy @p id; null (and a message naming the known ones) when unknown.
-    NumberingPolicyBase *createObject(const std::string &id);
-    ReturnCode deleteObject(NumberingPolicyBase *&obj);
-
-private:
-    NumberingPolicyFactory();
-    struct Private;
-    Private *d;
-};
+using NumberingPolicyFactory = coil::GlobalFactory<NumberingPolicyBase>;
 } // namespace RTM
 
 #endif // RTC_NUMBERINGPOLICYBASE_H
