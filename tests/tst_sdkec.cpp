@@ -14,6 +14,7 @@
 #include <rtm/PeriodicExecutionContext.h>
 #include <rtm/SimulatorExecutionContext.h>
 #include <rtm/CorbaConsumer.h>
+#include <rtm/LogstreamFile.h>
 #include <rtm/DefaultPeriodicTask.h>
 #include <rtm/ExecutionContextWorker.h>
 #include <rtm/PeriodicTaskFactory.h>
@@ -149,6 +150,7 @@ private slots:
     void stateMachine();
     void executionContextWorker();
     void periodicTaskFactory();
+    void logstreamFile();
     void rtmanagerHonoursContextType();
 
 private:
@@ -685,6 +687,37 @@ void TestSdkEc::periodicTaskFactory()
     task->finalize();
     QCOMPARE(factory.deleteObject(task), coil::FactoryReturn::OK);
     QVERIFY(task == nullptr);
+}
+
+void TestSdkEc::logstreamFile()
+{
+    LogstreamFileInit();
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const std::string path = dir.filePath("rtc.log").toStdString();
+    RTC::LogstreamBase *stream = RTC::LogstreamFactory::instance().createObject("file");
+    QVERIFY(stream);
+    coil::Properties prop;
+    prop.setProperty("file_name", path);
+    QVERIFY(stream->init(prop));
+    // One stream per file.
+    RTC::LogstreamFile second;
+    QVERIFY(!second.init(prop));
+    coil::LogStreamBuffer *buffer = stream->getStreamBuffer();
+    QVERIFY(buffer);
+    buffer->write(RTC::Logger::RTL_ERROR, "sdkec", "Nov 29 01:00:00", "written through the stream");
+    buffer->flush();
+    QFile file(QString::fromStdString(path));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    QVERIFY2(text.contains("ERROR: sdkec: written through the stream"), text.constData());
+    QCOMPARE(RTC::LogstreamFactory::instance().deleteObject(stream), coil::FactoryReturn::OK);
+    // Once the first is gone the file can be opened again.
+    QVERIFY(second.init(prop));
+    coil::Properties nowhere;
+    nowhere.setProperty("file_name", "/nonexistent/dir/rtc.log");
+    RTC::LogstreamFile refused;
+    QVERIFY(!refused.init(nowhere));
 }
 
 void TestSdkEc::rtmanagerHonoursContextType()

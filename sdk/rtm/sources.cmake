@@ -37,6 +37,8 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/InterfaceDataTypesUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamFile.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
@@ -95,6 +97,7 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/namingmanager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/managerinternals.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ecworker.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/logstreamfile.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS
