@@ -33,6 +33,7 @@
 #include <manager.h>
 
 #include "livesystem.h"
+#include "sdkproject.h"
 
 #include <QtTest>
 
@@ -152,6 +153,7 @@ private slots:
     void periodicTaskFactory();
     void logstreamFile();
     void rtmanagerHonoursContextType();
+    void extTriggerExample();
 
 private:
     SdkCounter *create(const QString &request);
@@ -777,6 +779,110 @@ void TestSdkEc::rtmanagerHonoursContextType()
     }
     QVERIFY2(lastError.contains("unknown execution context type 'Bogus'"), qPrintable(lastError));
     QVERIFY2(lastError.contains("ExtTrigExecutionContext"), qPrintable(lastError));
+    live.stopAll();
+}
+
+void TestSdkEc::extTriggerExample()
+{
+    // OpenRTM-aist's ExtTrigger example, built against the SDK as it is: ConsoleIn and
+    // ConsoleOut programs reading the example's rtc.conf, driven as its ConnectorComp does.
+    const QString example = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-examples/ExtTrigger");
+    QVERIFY2(QFileInfo::exists(example + "/rtc.conf"), qPrintable(example));
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QFile cmake(dir.filePath("CMakeLists.txt"));
+    QVERIFY(cmake.open(QIODevice::WriteOnly | QIODevice::Text));
+    cmake.write(QStringLiteral("cmake_minimum_required(VERSION 3.16)\n"
+                               "project(ExtTriggerExample CXX)\n"
+                               "find_package(OpenRTM REQUIRED)\n"
+                               "set(example \"%1\")\n"
+                               "foreach(name ConsoleIn ConsoleOut)\n"
+                               "  add_executable(${name}Comp ${example}/${name}.cpp ${example}/${name}Comp.cpp)\n"
+                               "  target_include_directories(${name}Comp PRIVATE ${example})\n"
+                               "  target_link_libraries(${name}Comp OpenRTM::RTC)\n"
+                               "endforeach()\n"
+                               "add_executable(ConnectorComp ${example}/ConnectorComp.cpp)\n"
+                               "target_link_libraries(ConnectorComp OpenRTM::RTC)\n")
+                   .arg(example)
+                   .toUtf8());
+    cmake.close();
+    QString log;
+    QVERIFY2(SdkTest::buildProject(dir.path(), QStringLiteral(RTSTUDIO_BUILD_DIR), &log), qPrintable(log));
+
+    LiveTest::LiveSystem live;
+    QString error;
+    QVERIFY2(live.startNameServer(&error), qPrintable(error));
+    QFile original(example + "/rtc.conf");
+    QVERIFY(original.open(QIODevice::ReadOnly | QIODevice::Text));
+    QFile conf(dir.filePath("rtc.conf"));
+    QVERIFY(conf.open(QIODevice::WriteOnly | QIODevice::Text));
+    // The example's settings, then where this test's name server and endpoints are.
+    conf.write(original.readAll());
+    conf.write(QStringLiteral("\ncorba.nameservers: %1\ncorba.endpoints: 127.0.0.1:\ncorba.master_manager:\n")
+                   .arg(live.namingServer())
+                   .toUtf8());
+    conf.close();
+    const QStringList arguments{"-f", conf.fileName()};
+    QProcess *in = live.startProcess(dir.filePath("build/ConsoleInComp"), arguments, "succeed.", &error);
+    QVERIFY2(in, qPrintable(error));
+    QProcess *out = live.startProcess(dir.filePath("build/ConsoleOutComp"), arguments, "succeed.", &error);
+    QVERIFY2(out, qPrintable(error));
+
+    RTC::NamingManager naming(m_manager);
+    naming.registerNameServer("corba", live.namingServer().toUtf8().constData());
+    RTC::RTCList consoleIn = naming.string_to_component("ConsoleIn0.rtc");
+    RTC::RTCList consoleOut = naming.string_to_component("ConsoleOut0.rtc");
+    QCOMPARE(consoleIn.length(), CORBA::ULong(1));
+    QCOMPARE(consoleOut.length(), CORBA::ULong(1));
+    RTC::PortServiceList_var inPorts = consoleIn[0]->get_ports();
+    RTC::PortServiceList_var outPorts = consoleOut[0]->get_ports();
+    QVERIFY(inPorts->length() > 0 && outPorts->length() > 0);
+    RTC::ConnectorProfile profile;
+    profile.connector_id = CORBA::string_dup("");
+    profile.name = CORBA::string_dup("connector0");
+    profile.ports.length(2);
+    profile.ports[0] = RTC::PortService::_duplicate(inPorts[CORBA::ULong(0)]);
+    profile.ports[1] = RTC::PortService::_duplicate(outPorts[CORBA::ULong(0)]);
+    const char *const nvs[][2] = {{"dataport.interface_type", "corba_cdr"},
+                                  {"dataport.dataflow_type", "push"},
+                                  {"dataport.subscription_type", "flush"}};
+    profile.properties.length(3);
+    for (CORBA::ULong i = 0; i < 3; ++i) {
+        profile.properties[i].name = CORBA::string_dup(nvs[i][0]);
+        profile.properties[i].value <<= nvs[i][1];
+    }
+    QCOMPARE(inPorts[CORBA::ULong(0)]->connect(profile), RTC::RTC_OK);
+
+    RTC::ExecutionContextList_var inContexts = consoleIn[0]->get_owned_contexts();
+    RTC::ExecutionContextList_var outContexts = consoleOut[0]->get_owned_contexts();
+    OpenRTM::ExtTrigExecutionContextService_var ec0 =
+        OpenRTM::ExtTrigExecutionContextService::_narrow(inContexts[CORBA::ULong(0)]);
+    OpenRTM::ExtTrigExecutionContextService_var ec1 =
+        OpenRTM::ExtTrigExecutionContextService::_narrow(outContexts[CORBA::ULong(0)]);
+    QVERIFY(!CORBA::is_nil(ec0) && !CORBA::is_nil(ec1));
+    QCOMPARE(ec0->activate_component(consoleIn[0]), RTC::RTC_OK);
+    QCOMPARE(ec1->activate_component(consoleOut[0]), RTC::RTC_OK);
+
+    // Each tick of ConsoleIn asks for one number; each tick of ConsoleOut prints what came.
+    QByteArray inText, outText;
+    for (int value : {42, 7}) {
+        ec0->tick();
+        QTRY_VERIFY_WITH_TIMEOUT((inText += in->readAllStandardOutput()).count("Please input number:")
+                                     == (value == 42 ? 1 : 2),
+                                 10000);
+        in->write(QByteArray::number(value) + "\n");
+        QTRY_VERIFY_WITH_TIMEOUT((inText += in->readAllStandardOutput()).contains("Sending to subscriber: "
+                                                                                 + QByteArray::number(value)),
+                                 10000);
+        ec1->tick();
+        QTRY_VERIFY_WITH_TIMEOUT((outText += out->readAllStandardOutput()).contains("Received: "
+                                                                                   + QByteArray::number(value)),
+                                 10000);
+    }
+    // No cycle ran without a tick: two prompts for two ticks.
+    inText += in->readAllStandardOutput();
+    QCOMPARE(inText.count("Please input number:"), 2);
+    QCOMPARE(outText.count("Received:"), 2);
     live.stopAll();
 }
 
