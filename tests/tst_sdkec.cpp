@@ -453,6 +453,28 @@ void TestSdkEc::managerMembers()
     QVERIFY(periodic.load() <= stoppedAt + 1);
     QCOMPARE(delayed.load(), 1);
 
+    // What the loggers write reaches the streams added to the manager's buffer.
+    struct Capture : coil::LogStreamBuffer
+    {
+        void write(int level, const std::string &name, const std::string &, const std::string &mes) override
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            lines.push_back(std::to_string(level) + " " + name + " " + mes);
+        }
+        std::mutex mutex;
+        std::vector<std::string> lines;
+    } capture;
+    m_manager->getLogStreamBuf().addStream(&capture);
+    RTC::Logger &rtclog = m_manager->getLogbuf("sdkec");
+    RTC_ERROR(("logged %d", 42));
+    m_manager->getLogStreamBuf().removeStream(&capture);
+    RTC_ERROR(("not seen"));
+    {
+        const std::vector<std::string> expected{std::to_string(RTC::Logger::RTL_ERROR) + " sdkec logged 42"};
+        std::lock_guard<std::mutex> lock(capture.mutex);
+        QCOMPARE(capture.lines, expected);
+    }
+
     PortableServer::POA_var poa = m_manager->getPOA();
     PortableServer::POA_var shortcut = m_manager->getShortCutPOA();
     QVERIFY(poa->_is_equivalent(shortcut));

@@ -616,6 +616,11 @@ Logger &Manager::getLogbuf(const std::string &name)
     return *logger;
 }
 
+LogStreamBuf &Manager::getLogStreamBuf()
+{
+    return Sdk::LoggerSink::instance().streams();
+}
+
 std::string &Manager::getLogLevel()
 {
     return d->config["logger.log_level"];

@@ -158,6 +158,9 @@ public:
     void addLocalServiceActionListener(RTM::LocalServiceActionListener *listener, bool autoclean = true);
     void removeLocalServiceActionListener(RTM::LocalServiceActionListener *listener);
 
+    /// Every line the loggers write also goes to this buffer and the streams added to it
+    /// (addStream(), e.g. a LogstreamFile's buffer).
+    LogStreamBuf &getLogStreamBuf();
     /// A logger named @p name with the manager's logging settings.
     Logger &getLogbuf(const std::string &name = "manager");
     std::string &getLogLevel();
