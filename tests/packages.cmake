@@ -1,5 +1,7 @@
 # SPDX-License-Identifier: MIT
 # Component packages (rtctl package) and Debian repositories of them (rtctl repo) that apt-get reads.
+rtstudio_add_test(tst_debnames SOURCES tst_debnames.cpp LIBS rtpackages)
+
 rtstudio_add_test(tst_componentpackage SOURCES tst_componentpackage.cpp LIBS rtstudio_rtctlrunner rtstudio_sdkproject)
 target_compile_definitions(tst_componentpackage PRIVATE RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}")
 add_dependencies(tst_componentpackage rtctl rtsdk)
