@@ -149,6 +149,11 @@ std::optional<PackageResult> ComponentPackager::build(QString *error)
 
 bool ComponentPackager::stage(Staged *staged, QString *error)
 {
+    return readProfile(staged, error) && findBinaries(staged, error) && copyFiles(staged, error);
+}
+
+bool ComponentPackager::readProfile(Staged *staged, QString *error)
+{
     staged->projectDir = QDir(m_options.projectDir).absolutePath();
     const QString profilePath = staged->projectDir + QStringLiteral("/RTC.xml");
     if (!QFileInfo(staged->projectDir).isDir()) {
@@ -192,9 +197,12 @@ bool ComponentPackager::stage(Staged *staged, QString *error)
     staged->version = *version;
     staged->buildDir = m_options.buildDir.isEmpty() ? staged->projectDir + QStringLiteral("/build")
                                                     : QDir(m_options.buildDir).absolutePath();
-    if (!findBinaries(staged, error))
-        return false;
+    return true;
+}
 
+bool ComponentPackager::copyFiles(Staged *staged, QString *error)
+{
+    const QString profilePath = staged->projectDir + QStringLiteral("/RTC.xml");
     staged->work = std::make_unique<QTemporaryDir>();
     if (!staged->work->isValid()) {
         *error = QStringLiteral("cannot create a temporary folder: %1").arg(staged->work->errorString());
@@ -281,56 +289,99 @@ bool ComponentPackager::findBinaries(Staged *staged, QString *error)
     return true;
 }
 
+namespace {
+
+/// Runs dpkg-shlibdeps on @p binaries in @p work; the Depends entries, and in @p unpackaged the
+/// libraries they link that come from no Debian package.
+std::optional<QStringList> shlibsDepends(const QStringList &binaries, const QString &package, const QString &work,
+                                         QStringList *unpackaged, QString *error)
+{
+    // dpkg-shlibdeps reads a debian/control of a source package; a minimal one will do.
+    const QString source = work + QStringLiteral("/source");
+    QDir().mkpath(source + QStringLiteral("/debian"));
+    QFile control(source + QStringLiteral("/debian/control"));
+    const QByteArray text = "Source: " + package.toUtf8() + "\n\nPackage: " + package.toUtf8() + "\nArchitecture: any\n";
+    if (!control.open(QIODevice::WriteOnly) || control.write(text) != text.size()) {
+        *error = QStringLiteral("cannot write %1").arg(control.fileName());
+        return std::nullopt;
+    }
+    control.close();
+    // -v names the libraries that come from no package, which --ignore-missing-info passes over
+    // in silence.
+    QStringList arguments{QStringLiteral("-v"), QStringLiteral("-O"), QStringLiteral("--ignore-missing-info")};
+    for (const QString &binary : binaries)
+        arguments << QStringLiteral("-e") + binary;
+    const ToolResult result = runTool(QStringLiteral("dpkg-shlibdeps"), arguments, {source, {}, {}, 120000});
+    if (!result.ok()) {
+        *error = result.failure(QStringLiteral("dpkg-shlibdeps"));
+        return std::nullopt;
+    }
+    QStringList depends;
+    static const QRegularExpression noInfo(
+        QStringLiteral("(?:No associated package found for|no dependency information found for|cannot find "
+                       "library) (\\S+)"));
+    // dpkg-shlibdeps writes its debug lines to standard output, its warnings to standard error.
+    for (const QString &line : QString::fromUtf8(result.out + result.err).split(QLatin1Char('\n'))) {
+        if (line.startsWith(QLatin1String("shlibs:Depends=")))
+            depends << line.mid(15).split(QStringLiteral(", "), Qt::SkipEmptyParts);
+        const QRegularExpressionMatch m = noInfo.match(line);
+        const QString library = QFileInfo(m.captured(1)).fileName();
+        if (m.hasMatch() && !unpackaged->contains(library))
+            *unpackaged << library;
+    }
+    for (const QString &binary : binaries)
+        unpackaged->removeAll(QFileInfo(binary).fileName());
+    return depends;
+}
+
+/// The SONAME of the SDK library @p binaries link, or an empty string.
+QString sdkAbi(const QStringList &binaries)
+{
+    static const QRegularExpression needed(QStringLiteral("NEEDED\\s+(librtstudio_rtm\\.so\\.\\S+)"));
+    for (const QString &binary : binaries) {
+        const ToolResult dump = runTool(QStringLiteral("objdump"), {QStringLiteral("-p"), binary});
+        const QRegularExpressionMatch m = needed.match(QString::fromUtf8(dump.out));
+        if (m.hasMatch())
+            return m.captured(1);
+    }
+    return {};
+}
+
+/// Other component packages the profile names as its target environments' libraries.
+QStringList profileDepends(const Profile::RtcProfile &profile, QStringList *warnings)
+{
+    QStringList depends;
+    if (!profile.language)
+        return depends;
+    for (const Profile::RtcTargetEnvironment &target : profile.language->targets) {
+        for (const Profile::RtcLibrary &library : target.libraries) {
+            if (!isValidPackageName(library.name)) {
+                *warnings << QStringLiteral("library '%1' of the profile is not a Debian package name: not in Depends")
+                                 .arg(library.name);
+                continue;
+            }
+            const QString version = library.version.value_or(QString()).trimmed();
+            depends << (isValidVersion(version) ? QStringLiteral("%1 (>= %2)").arg(library.name, version)
+                                                : library.name);
+        }
+    }
+    return depends;
+}
+
+} // namespace
+
 bool ComponentPackager::computeDepends(Staged *staged, QString *error)
 {
     QStringList depends;
     if (!staged->binaries.isEmpty()) {
-        // dpkg-shlibdeps reads a debian/control of a source package; a minimal one will do.
-        const QString source = staged->work->filePath(QStringLiteral("source"));
-        QDir().mkpath(source + QStringLiteral("/debian"));
-        QFile control(source + QStringLiteral("/debian/control"));
-        if (!control.open(QIODevice::WriteOnly)
-            || control.write("Source: " + staged->package.toUtf8() + "\n\nPackage: " + staged->package.toUtf8()
-                             + "\nArchitecture: any\n")
-                < 0) {
-            *error = QStringLiteral("cannot write %1").arg(control.fileName());
-            return false;
-        }
-        control.close();
-        // -v names the libraries that come from no package, which --ignore-missing-info passes over
-        // in silence.
-        QStringList arguments{QStringLiteral("-v"), QStringLiteral("-O"), QStringLiteral("--ignore-missing-info")};
-        for (const QString &binary : staged->binaries)
-            arguments << QStringLiteral("-e") + binary;
-        const ToolResult result = runTool(QStringLiteral("dpkg-shlibdeps"), arguments, {source, {}, {}, 120000});
-        if (!result.ok()) {
-            *error = result.failure(QStringLiteral("dpkg-shlibdeps"));
-            return false;
-        }
-        for (const QString &line : QString::fromUtf8(result.out).split(QLatin1Char('\n'))) {
-            if (line.startsWith(QLatin1String("shlibs:Depends=")))
-                depends << line.mid(15).split(QStringLiteral(", "), Qt::SkipEmptyParts);
-        }
-        static const QRegularExpression noInfo(
-            QStringLiteral("(?:No associated package found for|no dependency information found for|cannot find "
-                           "library) (\\S+)"));
         QStringList unpackaged;
-        // dpkg-shlibdeps writes its debug lines to standard output, its warnings to standard error.
-        for (const QString &line : QString::fromUtf8(result.out + result.err).split(QLatin1Char('\n'))) {
-            const QRegularExpressionMatch m = noInfo.match(line);
-            if (m.hasMatch() && !unpackaged.contains(QFileInfo(m.captured(1)).fileName()))
-                unpackaged << QFileInfo(m.captured(1)).fileName();
-        }
-        for (const QString &binary : staged->binaries)
-            unpackaged.removeAll(QFileInfo(binary).fileName());
+        const std::optional<QStringList> shlibs =
+            shlibsDepends(staged->binaries, staged->package, staged->work->path(), &unpackaged, error);
+        if (!shlibs)
+            return false;
+        depends = *shlibs;
         // The SDK library the component links: its SONAME is the ABI the component needs.
-        for (const QString &binary : staged->binaries) {
-            const ToolResult dump = runTool(QStringLiteral("objdump"), {QStringLiteral("-p"), binary});
-            static const QRegularExpression needed(QStringLiteral("NEEDED\\s+(librtstudio_rtm\\.so\\.\\S+)"));
-            const QRegularExpressionMatch m = needed.match(QString::fromUtf8(dump.out));
-            if (m.hasMatch())
-                staged->sdkAbi = m.captured(1);
-        }
+        staged->sdkAbi = sdkAbi(staged->binaries);
         for (const QString &library : unpackaged) {
             const bool sdk = library == staged->sdkAbi;
             staged->warnings << QStringLiteral("%1 comes from no Debian package: left out of Depends%2")
@@ -340,23 +391,7 @@ bool ComponentPackager::computeDepends(Staged *staged, QString *error)
             staged->warnings << QStringLiteral("the component does not link the RT Studio SDK library: no %1 field")
                                     .arg(Field::SdkAbi);
     }
-    // Other component packages the profile names as libraries, and those given.
-    if (staged->profile.language) {
-        for (const Profile::RtcTargetEnvironment &target : staged->profile.language->targets) {
-            for (const Profile::RtcLibrary &library : target.libraries) {
-                if (!isValidPackageName(library.name)) {
-                    staged->warnings << QStringLiteral("library '%1' of the profile is not a Debian package name: "
-                                                       "not in Depends")
-                                            .arg(library.name);
-                    continue;
-                }
-                const QString version = library.version.value_or(QString()).trimmed();
-                depends << (isValidVersion(version) ? QStringLiteral("%1 (>= %2)").arg(library.name, version)
-                                                    : library.name);
-            }
-        }
-    }
-    depends << m_options.depends;
+    depends << profileDepends(staged->profile, &staged->warnings) << m_options.depends;
     depends.removeDuplicates();
     staged->depends = depends;
     return true;

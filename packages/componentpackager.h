@@ -73,6 +73,8 @@ public:
 private:
     struct Staged;
     bool stage(Staged *staged, QString *error);
+    bool readProfile(Staged *staged, QString *error);
+    bool copyFiles(Staged *staged, QString *error);
     bool findBinaries(Staged *staged, QString *error);
     bool computeDepends(Staged *staged, QString *error);
     void writeControl(Staged *staged);

@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLockFile>
 #include <QSaveFile>
 #include <QSet>
 
@@ -244,18 +245,78 @@ bool Repository::writeIndex(const QList<IndexEntry> &entries, QString *error)
 
 bool Repository::reindex(QString *error)
 {
-    const std::optional<QList<IndexEntry>> entries = packages(error);
+    QLockFile lockFile(m_root + QStringLiteral("/conf/lock"));
+    const std::optional<QList<IndexEntry>> entries = lock(&lockFile, error) ? packages(error) : std::nullopt;
     return entries && writeIndex(*entries, error);
 }
 
-std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles, bool replace, QString *error)
+/// A package to publish and the file it comes from.
+struct Incoming
 {
-    std::optional<QList<IndexEntry>> existing = packages(error);
-    if (!existing)
-        return std::nullopt;
-    QList<IndexEntry> added;
-    QSet<QString> addedKeys;
-    const RepositoryConfig before = m_config;
+    IndexEntry entry;
+    QString source;
+};
+
+namespace {
+
+/// The pool files one publish wrote or kept aside, to keep or to undo.
+struct PoolChange
+{
+    QStringList written;
+    QStringList keptAside; ///< renamed to <path>.replaced
+
+    void rollback() const
+    {
+        for (const QString &path : written)
+            QFile::remove(path);
+        for (const QString &path : keptAside)
+            QFile::rename(path + QStringLiteral(".replaced"), path);
+    }
+    void commit() const
+    {
+        for (const QString &path : keptAside)
+            QFile::remove(path + QStringLiteral(".replaced"));
+    }
+};
+
+/// Copies @p source to @p target through a partial file, the file it replaces kept aside in @p change.
+bool copyIntoPool(const QString &source, const QString &target, PoolChange *change, QString *error)
+{
+    QDir().mkpath(QFileInfo(target).absolutePath());
+    if (QFileInfo::exists(target)) {
+        QFile::remove(target + QStringLiteral(".replaced"));
+        if (!QFile::rename(target, target + QStringLiteral(".replaced"))) {
+            *error = QStringLiteral("%1: cannot replace").arg(target);
+            return false;
+        }
+        change->keptAside << target;
+    }
+    const QString partial = target + QStringLiteral(".partial");
+    QFile::remove(partial);
+    if (!QFile::copy(source, partial) || !QFile::rename(partial, target)) {
+        QFile::remove(partial);
+        *error = QStringLiteral("%1: cannot copy into the pool (%2)").arg(source, target);
+        return false;
+    }
+    change->written << target;
+    return true;
+}
+
+} // namespace
+
+bool Repository::lock(QLockFile *lockFile, QString *error) const
+{
+    // Another rtctl publishing into the same folder waits its turn.
+    if (lockFile->tryLock(30000))
+        return true;
+    *error = QStringLiteral("%1: in use by another process (%2)").arg(m_root, lockFile->fileName());
+    return false;
+}
+
+std::optional<QList<IndexEntry>> Repository::readIncoming(const QStringList &debFiles, const QList<IndexEntry> &existing,
+                                                          bool replace, QList<Incoming> *incoming, QString *error)
+{
+    QSet<QString> keys;
     for (const QString &deb : debFiles) {
         std::optional<IndexEntry> entry = readDebEntry(deb, QString(), error);
         if (!entry)
@@ -265,11 +326,11 @@ std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles
             *error = QStringLiteral("%1: invalid package name or version '%2'").arg(deb, entry->key());
             return std::nullopt;
         }
-        if (addedKeys.contains(entry->key())) {
+        if (keys.contains(entry->key())) {
             *error = QStringLiteral("%1: %2 is given twice").arg(deb, entry->key());
             return std::nullopt;
         }
-        const bool present = std::any_of(existing->cbegin(), existing->cend(),
+        const bool present = std::any_of(existing.cbegin(), existing.cend(),
                                          [&entry](const IndexEntry &e) { return e.key() == entry->key(); });
         if (present && !replace) {
             *error = QStringLiteral("%1: %2 is already in the repository (--replace to replace it)").arg(deb, entry->key());
@@ -278,62 +339,54 @@ std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles
         const QString architecture = entry->architecture();
         if (architecture != QLatin1String("all") && !m_config.architectures.contains(architecture))
             m_config.architectures << architecture;
-        addedKeys.insert(entry->key());
-        entry->control.set(QStringLiteral("X-Source-File"), deb); // dropped below, before indexing
-        added << *entry;
+        keys.insert(entry->key());
+        *incoming << Incoming{*entry, deb};
     }
-    // Into the pool first (replaced files kept aside), then the index; undone when the index fails.
-    QStringList written;
-    QStringList keptAside;
-    auto rollback = [&]() {
-        for (const QString &path : written)
-            QFile::remove(path);
-        for (const QString &path : keptAside)
-            QFile::rename(path + QStringLiteral(".replaced"), path);
+    // What stays: every entry not replaced.
+    QList<IndexEntry> kept;
+    for (const IndexEntry &entry : existing) {
+        if (!keys.contains(entry.key()))
+            kept << entry;
+    }
+    return kept;
+}
+
+std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles, bool replace, QString *error)
+{
+    QLockFile lockFile(m_root + QStringLiteral("/conf/lock"));
+    const std::optional<QList<IndexEntry>> existing = lock(&lockFile, error) ? packages(error) : std::nullopt;
+    if (!existing)
+        return std::nullopt;
+    const RepositoryConfig before = m_config;
+    QList<Incoming> incoming;
+    std::optional<QList<IndexEntry>> entries = readIncoming(debFiles, *existing, replace, &incoming, error);
+    if (!entries) {
         m_config = before;
-    };
-    QList<IndexEntry> entries;
-    for (const IndexEntry &entry : *existing) {
-        if (!addedKeys.contains(entry.key()))
-            entries << entry;
-    }
-    for (IndexEntry &entry : added) {
-        const QString source = entry.control.value(QStringLiteral("X-Source-File"));
-        entry.control.remove(QStringLiteral("X-Source-File"));
-        const QString target = m_root + QLatin1Char('/') + entry.filename();
-        QDir().mkpath(QFileInfo(target).absolutePath());
-        if (QFileInfo::exists(target)) {
-            QFile::remove(target + QStringLiteral(".replaced"));
-            if (!QFile::rename(target, target + QStringLiteral(".replaced"))) {
-                *error = QStringLiteral("%1: cannot replace").arg(target);
-                rollback();
-                return std::nullopt;
-            }
-            keptAside << target;
-        }
-        const QString partial = target + QStringLiteral(".partial");
-        QFile::remove(partial);
-        if (!QFile::copy(source, partial) || !QFile::rename(partial, target)) {
-            QFile::remove(partial);
-            *error = QStringLiteral("%1: cannot copy into the pool (%2)").arg(source, target);
-            rollback();
-            return std::nullopt;
-        }
-        written << target;
-        entries << entry;
-    }
-    if (!writeIndex(entries, error) || (m_config.architectures != before.architectures && !writeConfig(error))) {
-        rollback();
         return std::nullopt;
     }
-    for (const QString &path : keptAside)
-        QFile::remove(path + QStringLiteral(".replaced"));
+    // Into the pool first (replaced files kept aside), then the index; undone when the index fails.
+    PoolChange change;
+    QList<IndexEntry> added;
+    bool ok = true;
+    for (const Incoming &in : incoming) {
+        ok = ok && copyIntoPool(in.source, m_root + QLatin1Char('/') + in.entry.filename(), &change, error);
+        added << in.entry;
+    }
+    *entries << added;
+    ok = ok && writeIndex(*entries, error) && (m_config.architectures == before.architectures || writeConfig(error));
+    if (!ok) {
+        change.rollback();
+        m_config = before;
+        return std::nullopt;
+    }
+    change.commit();
     return added;
 }
 
 std::optional<QList<IndexEntry>> Repository::remove(const QString &package, const QString &version, QString *error)
 {
-    const std::optional<QList<IndexEntry>> existing = packages(error);
+    QLockFile lockFile(m_root + QStringLiteral("/conf/lock"));
+    const std::optional<QList<IndexEntry>> existing = lock(&lockFile, error) ? packages(error) : std::nullopt;
     if (!existing)
         return std::nullopt;
     QList<IndexEntry> kept;

@@ -9,7 +9,11 @@
 
 #include <optional>
 
+class QLockFile;
+
 namespace Packages {
+
+struct Incoming;
 
 /// How a repository is laid out and signed; kept in <repository>/conf/repository.
 struct RepositoryConfig
@@ -70,6 +74,10 @@ public:
     QString suiteFolder() const;
 
 private:
+    bool lock(QLockFile *lockFile, QString *error) const;
+    /// Reads @p debFiles into @p incoming, refusing duplicates; the existing entries that stay.
+    std::optional<QList<IndexEntry>> readIncoming(const QStringList &debFiles, const QList<IndexEntry> &existing,
+                                                  bool replace, QList<Incoming> *incoming, QString *error);
     bool writeConfig(QString *error) const;
     bool writeIndex(const QList<IndexEntry> &entries, QString *error);
     bool exportKey(QString *error) const;

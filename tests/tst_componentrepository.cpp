@@ -61,6 +61,8 @@ private slots:
     void initCreatesSignedIndex();
     void publishAndList();
     void publishSameVersionRefused();
+    void publishRefused_data();
+    void publishRefused();
     void show();
     void failedSigningLeavesRepository();
     void aptReadsRepository();
@@ -162,6 +164,28 @@ void TestComponentRepository::publishSameVersionRefused()
     const RtctlResult replaced = repo({"publish", m_repo, m_pyDeb, "--replace"});
     QVERIFY2(replaced.code == 0, qPrintable(replaced.err));
     QCOMPARE(repo({"list", m_repo}).lines().size(), 2);
+}
+
+void TestComponentRepository::publishRefused_data()
+{
+    QTest::addColumn<QStringList>("files");
+    QTest::addColumn<QString>("message");
+    const QString profile = fixtures + "pycomp/RTC.xml";
+    QTest::newRow("not a package") << QStringList{profile} << profile + ": not a Debian package";
+    QTest::newRow("missing file") << QStringList{fixtures + "none.deb"} << fixtures + "none.deb: not a Debian package";
+    QTest::newRow("given twice") << QStringList{m_nativeDeb, m_nativeDeb}
+                                 << m_nativeDeb + ": " + nativePackage + " 2.0.0 " + m_arch + " is given twice";
+}
+
+void TestComponentRepository::publishRefused()
+{
+    QFETCH(QStringList, files);
+    QFETCH(QString, message);
+    const QByteArray release = readAll(m_repo + "/dists/stable/Release");
+    const RtctlResult r = repo(QStringList{"publish", m_repo, "--replace"} + files);
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QCOMPARE(readAll(m_repo + "/dists/stable/Release"), release);
 }
 
 void TestComponentRepository::show()
