@@ -3,6 +3,8 @@
 // becomes a Debian package made by dpkg-deb, read back with dpkg-deb (fields, files), its Depends
 // from dpkg-shlibdeps; a Python component gives an Architecture: all package; projects without a
 // profile, not built, or with a name or version Debian cannot take are refused with the file named.
+// Unpacked as dpkg would install it, the package's module is found by rtmanager by its name.
+#include "livesystem.h"
 #include "rtctlrunner.h"
 #include "sdkproject.h"
 
@@ -58,6 +60,7 @@ private slots:
     void files();
     void dependsOnLinkedLibraries();
     void dependsGiven();
+    void managerFindsInstalledModule();
     void pythonComponent();
     void refused_data();
     void refused();
@@ -149,6 +152,31 @@ void TestComponentPackage::dependsGiven()
     const QString deb = m_work.filePath("given.deb");
     QVERIFY(field(deb, "Depends").endsWith(", rtc-rtstudiotests-test-other (>= 2.0)"));
     QCOMPARE(field(deb, "Maintainer"), QStringLiteral("Robot Team <team@example.org>"));
+}
+
+void TestComponentPackage::managerFindsInstalledModule()
+{
+    // The package's files below a root folder, as dpkg would install them below /.
+    const QString root = m_work.filePath("installed");
+    tool("dpkg-deb", {"-x", m_deb, root});
+    const QString packages = root + "/usr/lib/" + m_multiarch + "/rtstudio/components";
+    QVERIFY(QFile::exists(packages + "/rtc-rtstudiotests-test-sdkgreeter/SdkGreeter.so"));
+    LiveTest::LiveSystem live;
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QVERIFY2(live.startManager(RTMANAGER_PATH, port,
+                               {"naming.enable=NO", "manager.modules.load_path=" + m_work.filePath("none"),
+                                "manager.modules.package_path=" + packages},
+                               &error),
+             qPrintable(error));
+    const QString manager = QStringLiteral("corbaloc::%1:%2").arg(live.address()).arg(port);
+    // Loaded by name from its package's folder, and its type created.
+    const RtctlResult r = runRtctl({"mgr", manager, "load", "SdkGreeter", "create", "SdkGreeter"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.startsWith("SdkGreeter"), qPrintable(r.out));
+    const RtctlResult listed = runRtctl({"mgr", manager, "list"});
+    QVERIFY2(listed.out.contains(packages + "/rtc-rtstudiotests-test-sdkgreeter/SdkGreeter.so"), qPrintable(listed.out));
+    live.stopAll();
 }
 
 void TestComponentPackage::pythonComponent()
