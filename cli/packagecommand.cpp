@@ -13,8 +13,8 @@ QString parseArguments(const QStringList &arguments, Packages::PackageOptions *o
     for (int i = 0; i < arguments.size(); ++i) {
         const QString &arg = arguments.at(i);
         const bool takesValue = arg == QLatin1String("-o") || arg == QLatin1String("--output")
-                                || arg == QLatin1String("--build-dir") || arg == QLatin1String("--name")
-                                || arg == QLatin1String("--maintainer") || arg == QLatin1String("--depends");
+            || arg == QLatin1String("--build-dir") || arg == QLatin1String("--name")
+            || arg == QLatin1String("--maintainer") || arg == QLatin1String("--depends");
         if (takesValue) {
             if (i + 1 >= arguments.size())
                 return QStringLiteral("%1 needs a value").arg(arg);
@@ -78,7 +78,8 @@ int PackageCommand::run(const QStringList &arguments, Streams streams)
     if (!problem.isEmpty())
         return usageError(problem, streams);
     QString error;
-    const std::optional<Packages::PackageResult> result = Packages::ComponentPackager(options).build(&error);
+    const std::optional<Packages::PackageResult> result
+        = Packages::ComponentPackager(options).build(&error);
     if (!result) {
         streams.err << "rtctl package: " << error << '\n';
         return ExitProblems;

@@ -21,8 +21,8 @@ struct RepoOptions
 
 bool isValueOption(const QString &arg)
 {
-    static const QStringList options{"--suite", "--component", "--arch", "--key", "--gnupg-home", "--origin",
-                                     "--label", "--key-uid"};
+    static const QStringList options {"--suite",      "--component", "--arch",  "--key",
+                                      "--gnupg-home", "--origin",    "--label", "--key-uid"};
     return options.contains(arg);
 }
 
@@ -69,18 +69,20 @@ QString parseArguments(const QStringList &arguments, RepoOptions *options)
             options->operands << arg;
         }
     }
-    static const QStringList actions{"init", "publish", "remove", "list", "show"};
+    static const QStringList actions {"init", "publish", "remove", "list", "show"};
     if (!actions.contains(options->action))
-        return options->action.isEmpty() ? QStringLiteral("missing the action")
-                                         : QStringLiteral("unknown action '%1'").arg(options->action);
+        return options->action.isEmpty()
+            ? QStringLiteral("missing the action")
+            : QStringLiteral("unknown action '%1'").arg(options->action);
     if (options->repository.isEmpty())
         return QStringLiteral("missing the repository folder");
-    const bool needsOperands = options->action == QLatin1String("publish") || options->action == QLatin1String("remove")
-                               || options->action == QLatin1String("show");
+    const bool needsOperands = options->action == QLatin1String("publish")
+        || options->action == QLatin1String("remove") || options->action == QLatin1String("show");
     if (needsOperands && options->operands.isEmpty())
-        return QStringLiteral("%1 needs at least one %2").arg(options->action, options->action == QLatin1String("publish")
-                                                                                   ? QStringLiteral("FILE.deb")
-                                                                                   : QStringLiteral("NAME"));
+        return QStringLiteral("%1 needs at least one %2")
+            .arg(options->action,
+                 options->action == QLatin1String("publish") ? QStringLiteral("FILE.deb")
+                                                             : QStringLiteral("NAME"));
     if (!needsOperands && !options->operands.isEmpty())
         return QStringLiteral("unexpected '%1'").arg(options->operands.first());
     return {};
@@ -101,8 +103,8 @@ int list(const Packages::Repository &repository, Streams streams)
         return ExitProblems;
     }
     for (const Packages::IndexEntry &entry : *entries)
-        streams.out << entry.package() << ' ' << entry.version() << ' ' << entry.architecture() << ' '
-                    << typesOf(entry) << '\n';
+        streams.out << entry.package() << ' ' << entry.version() << ' ' << entry.architecture()
+                    << ' ' << typesOf(entry) << '\n';
     return ExitOk;
 }
 
@@ -130,7 +132,8 @@ int show(const Packages::Repository &repository, const QStringList &names, Strea
             streams.out << QString::fromUtf8(entry.control.toText());
         }
         if (!found) {
-            streams.err << "rtctl repo show: " << repository.root() << ": no package " << operand << '\n';
+            streams.err << "rtctl repo show: " << repository.root() << ": no package " << operand
+                        << '\n';
             code = ExitProblems;
         }
     }
@@ -141,7 +144,8 @@ int show(const Packages::Repository &repository, const QStringList &names, Strea
 
 QString RepoCommand::summary() const
 {
-    return QStringLiteral("a Debian repository of component packages: init, publish, remove, list, show");
+    return QStringLiteral(
+        "a Debian repository of component packages: init, publish, remove, list, show");
 }
 
 QString RepoCommand::usage() const
@@ -184,13 +188,15 @@ int RepoCommand::run(const QStringList &arguments, Streams streams)
     QString error;
     const QString prefix = QStringLiteral("rtctl repo %1: ").arg(options.action);
     if (options.action == QLatin1String("init")) {
-        if (!repository.init(options.config, options.newKey ? options.keyUserId : QString(), &error)) {
+        if (!repository.init(options.config, options.newKey ? options.keyUserId : QString(),
+                             &error)) {
             streams.err << prefix << error << '\n';
             return ExitProblems;
         }
         const Packages::RepositoryConfig &config = repository.config();
-        streams.out << "created " << repository.root() << " (" << config.suite << ' ' << config.component << ", "
-                    << config.architectures.join(QLatin1Char(' ')) << ")\n";
+        streams.out << "created " << repository.root() << " (" << config.suite << ' '
+                    << config.component << ", " << config.architectures.join(QLatin1Char(' '))
+                    << ")\n";
         if (config.signWith.isEmpty())
             streams.err << "warning: no signing key: apt refuses an unsigned repository\n";
         else
@@ -214,22 +220,22 @@ int RepoCommand::run(const QStringList &arguments, Streams streams)
             return ExitProblems;
         }
         for (const Packages::IndexEntry &entry : *added)
-            streams.out << "published " << entry.package() << ' ' << entry.version() << ' ' << entry.architecture()
-                        << ' ' << entry.filename() << '\n';
+            streams.out << "published " << entry.package() << ' ' << entry.version() << ' '
+                        << entry.architecture() << ' ' << entry.filename() << '\n';
         return ExitOk;
     }
     int code = ExitOk;
     for (const QString &operand : options.operands) {
-        const auto removed =
-            repository.remove(operand.section(QLatin1Char('='), 0, 0), operand.section(QLatin1Char('='), 1), &error);
+        const auto removed = repository.remove(operand.section(QLatin1Char('='), 0, 0),
+                                               operand.section(QLatin1Char('='), 1), &error);
         if (!removed) {
             streams.err << prefix << error << '\n';
             code = ExitProblems;
             continue;
         }
         for (const Packages::IndexEntry &entry : *removed)
-            streams.out << "removed " << entry.package() << ' ' << entry.version() << ' ' << entry.architecture()
-                        << '\n';
+            streams.out << "removed " << entry.package() << ' ' << entry.version() << ' '
+                        << entry.architecture() << '\n';
     }
     return code;
 }

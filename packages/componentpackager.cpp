@@ -46,8 +46,7 @@ struct ComponentPackager::Staged
 
 ComponentPackager::ComponentPackager(PackageOptions options)
     : m_options(std::move(options))
-{
-}
+{ }
 
 QString ComponentPackager::libraryFolder(const QString &multiarch, const QString &package)
 {
@@ -64,7 +63,8 @@ QString ComponentPackager::profileId(const Profile::RtcProfile &profile)
     if (!profile.id.isEmpty())
         return profile.id;
     const Profile::RtcBasicInfo &info = profile.basicInfo;
-    return QStringLiteral("RTC:%1:%2:%3:%4").arg(info.vendor, info.category, info.name, info.version);
+    return QStringLiteral("RTC:%1:%2:%3:%4")
+        .arg(info.vendor, info.category, info.name, info.version);
 }
 
 namespace {
@@ -76,12 +76,13 @@ QString firstLine(const ToolResult &result)
 
 bool isPython(const Profile::RtcProfile &profile)
 {
-    return profile.language && profile.language->kind.compare(QLatin1String("Python"), Qt::CaseInsensitive) == 0;
+    return profile.language
+        && profile.language->kind.compare(QLatin1String("Python"), Qt::CaseInsensitive) == 0;
 }
 
 /// Copies @p from to <root>/<to> with @p permissions, creating folders.
-bool install(const QString &from, const QString &root, const QString &to, QFile::Permissions permissions,
-             QStringList *files, QString *error)
+bool install(const QString &from, const QString &root, const QString &to,
+             QFile::Permissions permissions, QStringList *files, QString *error)
 {
     const QString target = root + to;
     QDir().mkpath(QFileInfo(target).absolutePath());
@@ -94,10 +95,10 @@ bool install(const QString &from, const QString &root, const QString &to, QFile:
     return true;
 }
 
-const QFile::Permissions dataPermissions =
-    QFile::ReadOwner | QFile::WriteOwner | QFile::ReadUser | QFile::WriteUser | QFile::ReadGroup | QFile::ReadOther;
-const QFile::Permissions programPermissions =
-    dataPermissions | QFile::ExeOwner | QFile::ExeUser | QFile::ExeGroup | QFile::ExeOther;
+const QFile::Permissions dataPermissions = QFile::ReadOwner | QFile::WriteOwner | QFile::ReadUser
+    | QFile::WriteUser | QFile::ReadGroup | QFile::ReadOther;
+const QFile::Permissions programPermissions
+    = dataPermissions | QFile::ExeOwner | QFile::ExeUser | QFile::ExeGroup | QFile::ExeOther;
 
 /// The Description field: the profile's description as the summary, its documentation below.
 QString description(const Profile::RtcProfile &profile, const QString &id)
@@ -111,7 +112,8 @@ QString description(const Profile::RtcProfile &profile, const QString &id)
         paragraphs << info.doc->description->trimmed();
     if (info.abstractText)
         paragraphs << info.abstractText->trimmed();
-    paragraphs << QStringLiteral("RT-Component type %1 (%2), packaged by RT Studio.").arg(info.name, id);
+    paragraphs
+        << QStringLiteral("RT-Component type %1 (%2), packaged by RT Studio.").arg(info.name, id);
     QString text = summary;
     bool first = true;
     for (const QString &paragraph : paragraphs) {
@@ -162,12 +164,14 @@ bool ComponentPackager::readProfile(Staged *staged, QString *error)
     }
     QFile profileFile(profilePath);
     if (!profileFile.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("%1: no RTC.xml (the component's profile) in the project").arg(profilePath);
+        *error = QStringLiteral("%1: no RTC.xml (the component's profile) in the project")
+                     .arg(profilePath);
         return false;
     }
     staged->profileBytes = profileFile.readAll();
     Profile::Diagnostics diagnostics;
-    const std::optional<Profile::LoadedProfile> loaded = Profile::loadProfileFile(profilePath, &diagnostics);
+    const std::optional<Profile::LoadedProfile> loaded
+        = Profile::loadProfileFile(profilePath, &diagnostics);
     if (!loaded || !loaded->rtc) {
         *error = QStringLiteral("%1: not a readable RTC Profile").arg(profilePath);
         for (const Profile::Diagnostic &d : diagnostics)
@@ -205,7 +209,8 @@ bool ComponentPackager::copyFiles(Staged *staged, QString *error)
     const QString profilePath = staged->projectDir + QStringLiteral("/RTC.xml");
     staged->work = std::make_unique<QTemporaryDir>();
     if (!staged->work->isValid()) {
-        *error = QStringLiteral("cannot create a temporary folder: %1").arg(staged->work->errorString());
+        *error = QStringLiteral("cannot create a temporary folder: %1")
+                     .arg(staged->work->errorString());
         return false;
     }
     staged->root = staged->work->filePath(QStringLiteral("root"));
@@ -217,22 +222,24 @@ bool ComponentPackager::copyFiles(Staged *staged, QString *error)
             return false;
     }
     for (const QString &source : staged->pythonSources) {
-        if (!install(source, staged->root, data + QLatin1Char('/') + QFileInfo(source).fileName(), dataPermissions,
-                     &staged->files, error))
+        if (!install(source, staged->root, data + QLatin1Char('/') + QFileInfo(source).fileName(),
+                     dataPermissions, &staged->files, error))
             return false;
     }
-    if (!install(profilePath, staged->root, data + QStringLiteral("/RTC.xml"), dataPermissions, &staged->files, error))
+    if (!install(profilePath, staged->root, data + QStringLiteral("/RTC.xml"), dataPermissions,
+                 &staged->files, error))
         return false;
     const QDir project(staged->projectDir);
-    for (const QString &conf : project.entryList({QStringLiteral("*.conf")}, QDir::Files, QDir::Name)) {
-        if (!install(project.filePath(conf), staged->root, data + QLatin1Char('/') + conf, dataPermissions,
-                     &staged->files, error))
+    for (const QString &conf :
+         project.entryList({QStringLiteral("*.conf")}, QDir::Files, QDir::Name)) {
+        if (!install(project.filePath(conf), staged->root, data + QLatin1Char('/') + conf,
+                     dataPermissions, &staged->files, error))
             return false;
     }
     const QDir idl(project.filePath(QStringLiteral("idl")));
     for (const QString &file : idl.entryList({QStringLiteral("*.idl")}, QDir::Files, QDir::Name)) {
-        if (!install(idl.filePath(file), staged->root, data + QStringLiteral("/idl/") + file, dataPermissions,
-                     &staged->files, error))
+        if (!install(idl.filePath(file), staged->root, data + QStringLiteral("/idl/") + file,
+                     dataPermissions, &staged->files, error))
             return false;
     }
     return true;
@@ -253,18 +260,20 @@ bool ComponentPackager::findBinaries(Staged *staged, QString *error)
         return true;
     }
     if (!QFileInfo(staged->buildDir).isDir()) {
-        *error = QStringLiteral("%1: not built (no build folder; build it first, e.g. rtctl build %2)")
-                     .arg(staged->buildDir, m_options.projectDir);
+        *error
+            = QStringLiteral("%1: not built (no build folder; build it first, e.g. rtctl build %2)")
+                  .arg(staged->buildDir, m_options.projectDir);
         return false;
     }
-    const QStringList wanted{name + QStringLiteral(".so"), name + QStringLiteral("Comp")};
+    const QStringList wanted {name + QStringLiteral(".so"), name + QStringLiteral("Comp")};
     QHash<QString, QString> found;
     QDirIterator it(staged->buildDir, wanted, QDir::Files, QDirIterator::Subdirectories);
     while (it.hasNext()) {
         const QString path = it.next();
         const QString file = QFileInfo(path).fileName();
         // The first one found in the build folder's order; CMake puts both in one folder.
-        if (!found.contains(file) && (file.endsWith(QLatin1String(".so")) || QFileInfo(path).isExecutable()))
+        if (!found.contains(file)
+            && (file.endsWith(QLatin1String(".so")) || QFileInfo(path).isExecutable()))
             found.insert(file, path);
     }
     for (const QString &file : wanted) {
@@ -272,13 +281,15 @@ bool ComponentPackager::findBinaries(Staged *staged, QString *error)
             staged->binaries << found.value(file);
     }
     if (staged->binaries.isEmpty()) {
-        *error = QStringLiteral("%1: not built (neither %2 nor %3 found; build it first, e.g. rtctl build %4)")
+        *error = QStringLiteral(
+                     "%1: not built (neither %2 nor %3 found; build it first, e.g. rtctl build %4)")
                      .arg(staged->buildDir, wanted.at(0), wanted.at(1), m_options.projectDir);
         return false;
     }
-    const ToolResult arch = runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")});
-    const ToolResult multiarch =
-        runTool(QStringLiteral("dpkg-architecture"), {QStringLiteral("-qDEB_HOST_MULTIARCH")});
+    const ToolResult arch
+        = runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")});
+    const ToolResult multiarch
+        = runTool(QStringLiteral("dpkg-architecture"), {QStringLiteral("-qDEB_HOST_MULTIARCH")});
     if (!arch.ok() || !multiarch.ok()) {
         *error = !arch.ok() ? arch.failure(QStringLiteral("dpkg --print-architecture"))
                             : multiarch.failure(QStringLiteral("dpkg-architecture"));
@@ -293,14 +304,16 @@ namespace {
 
 /// Runs dpkg-shlibdeps on @p binaries in @p work; the Depends entries, and in @p unpackaged the
 /// libraries they link that come from no Debian package.
-std::optional<QStringList> shlibsDepends(const QStringList &binaries, const QString &package, const QString &work,
-                                         QStringList *unpackaged, QString *error)
+std::optional<QStringList> shlibsDepends(const QStringList &binaries, const QString &package,
+                                         const QString &work, QStringList *unpackaged,
+                                         QString *error)
 {
     // dpkg-shlibdeps reads a debian/control of a source package; a minimal one will do.
     const QString source = work + QStringLiteral("/source");
     QDir().mkpath(source + QStringLiteral("/debian"));
     QFile control(source + QStringLiteral("/debian/control"));
-    const QByteArray text = "Source: " + package.toUtf8() + "\n\nPackage: " + package.toUtf8() + "\nArchitecture: any\n";
+    const QByteArray text = "Source: " + package.toUtf8() + "\n\nPackage: " + package.toUtf8()
+        + "\nArchitecture: any\n";
     if (!control.open(QIODevice::WriteOnly) || control.write(text) != text.size()) {
         *error = QStringLiteral("cannot write %1").arg(control.fileName());
         return std::nullopt;
@@ -308,20 +321,23 @@ std::optional<QStringList> shlibsDepends(const QStringList &binaries, const QStr
     control.close();
     // -v names the libraries that come from no package, which --ignore-missing-info passes over
     // in silence.
-    QStringList arguments{QStringLiteral("-v"), QStringLiteral("-O"), QStringLiteral("--ignore-missing-info")};
+    QStringList arguments {QStringLiteral("-v"), QStringLiteral("-O"),
+                           QStringLiteral("--ignore-missing-info")};
     for (const QString &binary : binaries)
         arguments << QStringLiteral("-e") + binary;
-    const ToolResult result = runTool(QStringLiteral("dpkg-shlibdeps"), arguments, {source, {}, {}, 120000});
+    const ToolResult result
+        = runTool(QStringLiteral("dpkg-shlibdeps"), arguments, {source, {}, {}, 120000});
     if (!result.ok()) {
         *error = result.failure(QStringLiteral("dpkg-shlibdeps"));
         return std::nullopt;
     }
     QStringList depends;
-    static const QRegularExpression noInfo(
-        QStringLiteral("(?:No associated package found for|no dependency information found for|cannot find "
-                       "library) (\\S+)"));
+    static const QRegularExpression noInfo(QStringLiteral(
+        "(?:No associated package found for|no dependency information found for|cannot find "
+        "library) (\\S+)"));
     // dpkg-shlibdeps writes its debug lines to standard output, its warnings to standard error.
-    for (const QString &line : QString::fromUtf8(result.out + result.err).split(QLatin1Char('\n'))) {
+    for (const QString &line :
+         QString::fromUtf8(result.out + result.err).split(QLatin1Char('\n'))) {
         if (line.startsWith(QLatin1String("shlibs:Depends=")))
             depends << line.mid(15).split(QStringLiteral(", "), Qt::SkipEmptyParts);
         const QRegularExpressionMatch m = noInfo.match(line);
@@ -337,7 +353,8 @@ std::optional<QStringList> shlibsDepends(const QStringList &binaries, const QStr
 /// The SONAME of the SDK library @p binaries link, or an empty string.
 QString sdkAbi(const QStringList &binaries)
 {
-    static const QRegularExpression needed(QStringLiteral("NEEDED\\s+(librtstudio_rtm\\.so\\.\\S+)"));
+    static const QRegularExpression needed(
+        QStringLiteral("NEEDED\\s+(librtstudio_rtm\\.so\\.\\S+)"));
     for (const QString &binary : binaries) {
         const ToolResult dump = runTool(QStringLiteral("objdump"), {QStringLiteral("-p"), binary});
         const QRegularExpressionMatch m = needed.match(QString::fromUtf8(dump.out));
@@ -356,13 +373,15 @@ QStringList profileDepends(const Profile::RtcProfile &profile, QStringList *warn
     for (const Profile::RtcTargetEnvironment &target : profile.language->targets) {
         for (const Profile::RtcLibrary &library : target.libraries) {
             if (!isValidPackageName(library.name)) {
-                *warnings << QStringLiteral("library '%1' of the profile is not a Debian package name: not in Depends")
+                *warnings << QStringLiteral("library '%1' of the profile is not a Debian package "
+                                            "name: not in Depends")
                                  .arg(library.name);
                 continue;
             }
             const QString version = library.version.value_or(QString()).trimmed();
-            depends << (isValidVersion(version) ? QStringLiteral("%1 (>= %2)").arg(library.name, version)
-                                                : library.name);
+            depends << (isValidVersion(version)
+                            ? QStringLiteral("%1 (>= %2)").arg(library.name, version)
+                            : library.name);
         }
     }
     return depends;
@@ -375,8 +394,8 @@ bool ComponentPackager::computeDepends(Staged *staged, QString *error)
     QStringList depends;
     if (!staged->binaries.isEmpty()) {
         QStringList unpackaged;
-        const std::optional<QStringList> shlibs =
-            shlibsDepends(staged->binaries, staged->package, staged->work->path(), &unpackaged, error);
+        const std::optional<QStringList> shlibs = shlibsDepends(
+            staged->binaries, staged->package, staged->work->path(), &unpackaged, error);
         if (!shlibs)
             return false;
         depends = *shlibs;
@@ -384,12 +403,17 @@ bool ComponentPackager::computeDepends(Staged *staged, QString *error)
         staged->sdkAbi = sdkAbi(staged->binaries);
         for (const QString &library : unpackaged) {
             const bool sdk = library == staged->sdkAbi;
-            staged->warnings << QStringLiteral("%1 comes from no Debian package: left out of Depends%2")
-                                    .arg(library, sdk ? QStringLiteral(" (%1 names it)").arg(Field::SdkAbi) : QString());
+            staged->warnings << QStringLiteral(
+                                    "%1 comes from no Debian package: left out of Depends%2")
+                                    .arg(library,
+                                         sdk ? QStringLiteral(" (%1 names it)").arg(Field::SdkAbi)
+                                             : QString());
         }
         if (staged->sdkAbi.isEmpty())
-            staged->warnings << QStringLiteral("the component does not link the RT Studio SDK library: no %1 field")
-                                    .arg(Field::SdkAbi);
+            staged->warnings
+                << QStringLiteral(
+                       "the component does not link the RT Studio SDK library: no %1 field")
+                       .arg(Field::SdkAbi);
     }
     depends << profileDepends(staged->profile, &staged->warnings) << m_options.depends;
     depends.removeDuplicates();
@@ -411,7 +435,9 @@ void ComponentPackager::writeControl(Staged *staged)
         if (who.isEmpty())
             who = QStringLiteral("Unknown");
         // Debian wants "Name <address>"; a profile rarely has an address, and .invalid says so.
-        maintainer = who.contains(QLatin1Char('<')) ? who : QStringLiteral("%1 <unknown@invalid>").arg(who);
+        maintainer = who.contains(QLatin1Char('<'))
+            ? who
+            : QStringLiteral("%1 <unknown@invalid>").arg(who);
     }
     const QString id = profileId(staged->profile);
     DebControl &c = staged->control;
@@ -427,7 +453,8 @@ void ComponentPackager::writeControl(Staged *staged)
     c.set(Field::RtcTypes, info.name);
     c.set(Field::RtcProfileId, id);
     c.set(Field::RtcProfileSha256,
-          QString::fromLatin1(QCryptographicHash::hash(staged->profileBytes, QCryptographicHash::Sha256).toHex()));
+          QString::fromLatin1(
+              QCryptographicHash::hash(staged->profileBytes, QCryptographicHash::Sha256).toHex()));
     if (!staged->sdkAbi.isEmpty())
         c.set(Field::SdkAbi, staged->sdkAbi);
     c.set(QStringLiteral("Description"), description(staged->profile, id));
@@ -446,8 +473,8 @@ bool ComponentPackager::buildDeb(Staged *staged, QString *error)
             *error = QStringLiteral("cannot read %1").arg(f.fileName());
             return false;
         }
-        sums += QCryptographicHash::hash(f.readAll(), QCryptographicHash::Md5).toHex() + "  " + file.mid(1).toUtf8()
-                + '\n';
+        sums += QCryptographicHash::hash(f.readAll(), QCryptographicHash::Md5).toHex() + "  "
+            + file.mid(1).toUtf8() + '\n';
     }
     if (!control.open(QIODevice::WriteOnly) || control.write(staged->control.toText()) < 0
         || !md5sums.open(QIODevice::WriteOnly) || md5sums.write(sums) < 0) {
@@ -457,13 +484,15 @@ bool ComponentPackager::buildDeb(Staged *staged, QString *error)
     control.close();
     md5sums.close();
     // Folders as dpkg expects them: 0755 all the way down.
-    QDirIterator dirs(staged->root, QDir::Dirs | QDir::NoDotAndDotDot, QDirIterator::Subdirectories);
+    QDirIterator dirs(staged->root, QDir::Dirs | QDir::NoDotAndDotDot,
+                      QDirIterator::Subdirectories);
     QFile::setPermissions(staged->root, programPermissions);
     while (dirs.hasNext())
         QFile::setPermissions(dirs.next(), programPermissions);
 
-    const QString fileName = QStringLiteral("%1_%2_%3.deb")
-                                 .arg(staged->package, versionInFileName(staged->version), staged->architecture);
+    const QString fileName
+        = QStringLiteral("%1_%2_%3.deb")
+              .arg(staged->package, versionInFileName(staged->version), staged->architecture);
     QString target = m_options.output.isEmpty() ? QDir::currentPath() : m_options.output;
     if (!target.endsWith(QLatin1String(".deb"))) {
         if (!QDir().mkpath(target)) {
@@ -475,9 +504,9 @@ bool ComponentPackager::buildDeb(Staged *staged, QString *error)
     target = QFileInfo(target).absoluteFilePath();
     // Built beside the target and renamed: a failed build leaves no partial .deb.
     const QString partial = target + QStringLiteral(".partial");
-    const ToolResult result = runTool(QStringLiteral("dpkg-deb"),
-                                      {QStringLiteral("--root-owner-group"), QStringLiteral("--build"), staged->root,
-                                       partial});
+    const ToolResult result = runTool(
+        QStringLiteral("dpkg-deb"),
+        {QStringLiteral("--root-owner-group"), QStringLiteral("--build"), staged->root, partial});
     if (!result.ok()) {
         QFile::remove(partial);
         *error = result.failure(QStringLiteral("dpkg-deb --build"));

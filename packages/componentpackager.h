@@ -17,9 +17,12 @@ namespace Packages {
 /// The custom control fields of component packages.
 namespace Field {
 inline const QString RtcTypes = QStringLiteral("X-RTC-Types"); ///< implementation ids it provides
-inline const QString RtcProfileId = QStringLiteral("X-RTC-Profile-Id"); ///< RTC:vendor:category:name:version
-inline const QString RtcProfileSha256 = QStringLiteral("X-RTC-Profile-SHA256"); ///< of the shipped RTC.xml
-inline const QString SdkAbi = QStringLiteral("X-RTStudio-SDK-ABI"); ///< SONAME of the SDK library it links
+inline const QString RtcProfileId
+    = QStringLiteral("X-RTC-Profile-Id"); ///< RTC:vendor:category:name:version
+inline const QString RtcProfileSha256
+    = QStringLiteral("X-RTC-Profile-SHA256"); ///< of the shipped RTC.xml
+inline const QString SdkAbi
+    = QStringLiteral("X-RTStudio-SDK-ABI"); ///< SONAME of the SDK library it links
 } // namespace Field
 
 /// What `rtctl package` is asked to do.

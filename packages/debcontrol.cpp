@@ -23,7 +23,8 @@ std::optional<DebControl> DebControl::parse(const QByteArray &text, QString *err
         if (line.startsWith(QLatin1Char(' ')) || line.startsWith(QLatin1Char('\t'))) {
             if (control.isEmpty()) {
                 if (error)
-                    *error = QStringLiteral("line %1: continuation before any field").arg(lineNumber);
+                    *error
+                        = QStringLiteral("line %1: continuation before any field").arg(lineNumber);
                 return std::nullopt;
             }
             control.m_fields.last().second += QLatin1Char('\n') + line;

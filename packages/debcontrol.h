@@ -23,7 +23,8 @@ public:
     /// neither a field nor a continuation.
     static std::optional<DebControl> parse(const QByteArray &text, QString *error = nullptr);
     /// Every paragraph of @p text (a Packages file); nothing when one is malformed.
-    static std::optional<QList<DebControl>> parseAll(const QByteArray &text, QString *error = nullptr);
+    static std::optional<QList<DebControl>> parseAll(const QByteArray &text,
+                                                     QString *error = nullptr);
 
     /// The value of @p name, or an empty string when absent.
     QString value(const QString &name) const;

@@ -39,7 +39,8 @@ QString namePart(const QString &text)
 {
     static const QRegularExpression notAllowed(QStringLiteral("[^a-z0-9+.]+"));
     QString part = text.toLower().replace(notAllowed, QStringLiteral("-"));
-    while (part.startsWith(QLatin1Char('-')) || part.startsWith(QLatin1Char('.')) || part.startsWith(QLatin1Char('+')))
+    while (part.startsWith(QLatin1Char('-')) || part.startsWith(QLatin1Char('.'))
+           || part.startsWith(QLatin1Char('+')))
         part.remove(0, 1);
     while (part.endsWith(QLatin1Char('-')))
         part.chop(1);
@@ -48,16 +49,17 @@ QString namePart(const QString &text)
 
 } // namespace
 
-std::optional<QString> componentPackageName(const QString &vendor, const QString &category, const QString &name,
-                                            QString *error)
+std::optional<QString> componentPackageName(const QString &vendor, const QString &category,
+                                            const QString &name, QString *error)
 {
     const QString component = namePart(name);
     if (component.isEmpty()) {
-        *error = QStringLiteral("the component name '%1' gives no package name (it needs letters or digits)")
+        *error = QStringLiteral(
+                     "the component name '%1' gives no package name (it needs letters or digits)")
                      .arg(name);
         return std::nullopt;
     }
-    QStringList parts{QStringLiteral("rtc")};
+    QStringList parts {QStringLiteral("rtc")};
     for (const QString &part : {namePart(vendor), namePart(category), component}) {
         if (!part.isEmpty())
             parts << part;
@@ -73,7 +75,8 @@ std::optional<QString> componentPackageName(const QString &vendor, const QString
 std::optional<QString> debianVersion(const QString &profileVersion, QString *error)
 {
     QString version = profileVersion.trimmed();
-    if (version.size() > 1 && (version.at(0) == QLatin1Char('v') || version.at(0) == QLatin1Char('V'))
+    if (version.size() > 1
+        && (version.at(0) == QLatin1Char('v') || version.at(0) == QLatin1Char('V'))
         && version.at(1).isDigit())
         version.remove(0, 1);
     static const QRegularExpression separators(QStringLiteral("[\\s_]+"));
@@ -83,9 +86,11 @@ std::optional<QString> debianVersion(const QString &profileVersion, QString *err
         return std::nullopt;
     }
     if (!isValidVersion(version)) {
-        *error = QStringLiteral("the version '%1' is not a valid Debian version (it must start with a digit and "
-                                "use only letters, digits and . + ~ -)")
-                     .arg(profileVersion);
+        *error
+            = QStringLiteral(
+                  "the version '%1' is not a valid Debian version (it must start with a digit and "
+                  "use only letters, digits and . + ~ -)")
+                  .arg(profileVersion);
         return std::nullopt;
     }
     return version;

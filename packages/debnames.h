@@ -21,8 +21,8 @@ bool isValidVersion(const QString &version);
  * every run of characters Debian does not allow replaced by '-' (an empty category is left out).
  * Nothing, with the reason in @p error, when the name is empty or the result is not a valid name.
  */
-std::optional<QString> componentPackageName(const QString &vendor, const QString &category, const QString &name,
-                                            QString *error);
+std::optional<QString> componentPackageName(const QString &vendor, const QString &category,
+                                            const QString &name, QString *error);
 
 /**
  * The Debian version of a profile version: trimmed, a leading 'v' before a digit dropped, spaces

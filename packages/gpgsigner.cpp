@@ -13,7 +13,7 @@ namespace {
 
 QStringList homeArguments(const QString &homeDir)
 {
-    QStringList arguments{QStringLiteral("--batch"), QStringLiteral("--no-tty")};
+    QStringList arguments {QStringLiteral("--batch"), QStringLiteral("--no-tty")};
     if (!homeDir.isEmpty())
         arguments << QStringLiteral("--homedir") << homeDir;
     return arguments;
@@ -37,10 +37,10 @@ QString firstFingerprint(const QByteArray &listing)
 GpgSigner::GpgSigner(QString keyId, QString homeDir)
     : m_keyId(std::move(keyId))
     , m_homeDir(std::move(homeDir))
-{
-}
+{ }
 
-std::optional<QString> GpgSigner::createKey(const QString &homeDir, const QString &userId, QString *error)
+std::optional<QString> GpgSigner::createKey(const QString &homeDir, const QString &userId,
+                                            QString *error)
 {
     if (!homeDir.isEmpty() && !QDir().mkpath(homeDir)) {
         *error = QStringLiteral("%1: cannot create the GnuPG home folder").arg(homeDir);
@@ -57,10 +57,11 @@ std::optional<QString> GpgSigner::createKey(const QString &homeDir, const QStrin
         *error = created.failure(QStringLiteral("gpg --quick-generate-key"));
         return std::nullopt;
     }
-    const ToolResult listed = runTool(QStringLiteral("gpg"), homeArguments(homeDir)
-                                                                 + QStringList{QStringLiteral("--with-colons"),
-                                                                               QStringLiteral("--list-secret-keys"),
-                                                                               QStringLiteral("=") + userId});
+    const ToolResult listed = runTool(QStringLiteral("gpg"),
+                                      homeArguments(homeDir)
+                                          + QStringList {QStringLiteral("--with-colons"),
+                                                         QStringLiteral("--list-secret-keys"),
+                                                         QStringLiteral("=") + userId});
     const QString fingerprint = firstFingerprint(listed.out);
     if (!listed.ok() || fingerprint.isEmpty()) {
         *error = listed.failure(QStringLiteral("gpg --list-secret-keys"));
@@ -69,14 +70,16 @@ std::optional<QString> GpgSigner::createKey(const QString &homeDir, const QStrin
     return fingerprint;
 }
 
-std::optional<QByteArray> GpgSigner::gpg(const QStringList &arguments, const QByteArray &input, const QString &step,
-                                         QString *error) const
+std::optional<QByteArray> GpgSigner::gpg(const QStringList &arguments, const QByteArray &input,
+                                         const QString &step, QString *error) const
 {
     ToolRun run;
     run.input = input;
-    const ToolResult result = runTool(QStringLiteral("gpg"), homeArguments(m_homeDir) + arguments, run);
+    const ToolResult result
+        = runTool(QStringLiteral("gpg"), homeArguments(m_homeDir) + arguments, run);
     if (!result.ok()) {
-        *error = QStringLiteral("%1 with key %2: %3").arg(step, m_keyId, result.failure(QStringLiteral("gpg")));
+        *error = QStringLiteral("%1 with key %2: %3")
+                     .arg(step, m_keyId, result.failure(QStringLiteral("gpg")));
         return std::nullopt;
     }
     return result.out;
@@ -84,25 +87,27 @@ std::optional<QByteArray> GpgSigner::gpg(const QStringList &arguments, const QBy
 
 std::optional<QByteArray> GpgSigner::clearSign(const QByteArray &data, QString *error) const
 {
-    return gpg({QStringLiteral("--local-user"), m_keyId, QStringLiteral("--digest-algo"), QStringLiteral("SHA256"),
-                QStringLiteral("--clearsign")},
+    return gpg({QStringLiteral("--local-user"), m_keyId, QStringLiteral("--digest-algo"),
+                QStringLiteral("SHA256"), QStringLiteral("--clearsign")},
                data, QStringLiteral("signing InRelease"), error);
 }
 
 std::optional<QByteArray> GpgSigner::detachSign(const QByteArray &data, QString *error) const
 {
-    return gpg({QStringLiteral("--local-user"), m_keyId, QStringLiteral("--digest-algo"), QStringLiteral("SHA256"),
-                QStringLiteral("--armor"), QStringLiteral("--detach-sign")},
+    return gpg({QStringLiteral("--local-user"), m_keyId, QStringLiteral("--digest-algo"),
+                QStringLiteral("SHA256"), QStringLiteral("--armor"),
+                QStringLiteral("--detach-sign")},
                data, QStringLiteral("signing Release.gpg"), error);
 }
 
 std::optional<QByteArray> GpgSigner::exportPublicKey(bool armored, QString *error) const
 {
-    QStringList arguments{QStringLiteral("--export")};
+    QStringList arguments {QStringLiteral("--export")};
     if (armored)
         arguments.prepend(QStringLiteral("--armor"));
     arguments << m_keyId;
-    std::optional<QByteArray> key = gpg(arguments, {}, QStringLiteral("exporting the public key"), error);
+    std::optional<QByteArray> key
+        = gpg(arguments, {}, QStringLiteral("exporting the public key"), error);
     if (key && key->isEmpty()) {
         *error = QStringLiteral("exporting the public key: gpg has no key %1").arg(m_keyId);
         return std::nullopt;
@@ -112,9 +117,9 @@ std::optional<QByteArray> GpgSigner::exportPublicKey(bool armored, QString *erro
 
 std::optional<QString> GpgSigner::fingerprint(QString *error) const
 {
-    const std::optional<QByteArray> listing =
-        gpg({QStringLiteral("--with-colons"), QStringLiteral("--list-secret-keys"), m_keyId}, {},
-            QStringLiteral("finding the secret key"), error);
+    const std::optional<QByteArray> listing
+        = gpg({QStringLiteral("--with-colons"), QStringLiteral("--list-secret-keys"), m_keyId}, {},
+              QStringLiteral("finding the secret key"), error);
     if (!listing)
         return std::nullopt;
     const QString fingerprint = firstFingerprint(*listing);

@@ -18,8 +18,10 @@ class GpgSigner
 public:
     GpgSigner(QString keyId, QString homeDir);
 
-    /// Creates a signing key without passphrase (for trials and tests) in @p homeDir; its fingerprint.
-    static std::optional<QString> createKey(const QString &homeDir, const QString &userId, QString *error);
+    /// Creates a signing key without passphrase (for trials and tests) in @p homeDir; its
+    /// fingerprint.
+    static std::optional<QString> createKey(const QString &homeDir, const QString &userId,
+                                            QString *error);
 
     /// The InRelease form of @p data: clear-signed.
     std::optional<QByteArray> clearSign(const QByteArray &data, QString *error) const;
@@ -34,8 +36,8 @@ public:
     QString homeDir() const { return m_homeDir; }
 
 private:
-    std::optional<QByteArray> gpg(const QStringList &arguments, const QByteArray &input, const QString &step,
-                                  QString *error) const;
+    std::optional<QByteArray> gpg(const QStringList &arguments, const QByteArray &input,
+                                  const QString &step, QString *error) const;
 
     QString m_keyId;
     QString m_homeDir;

@@ -43,18 +43,21 @@ bool exchange(const QString &staging, const QString &target, QString *error)
     if (!QFileInfo::exists(target)) {
         if (std::rename(from.constData(), to.constData()) == 0)
             return true;
-    } else if (renameat2(AT_FDCWD, from.constData(), AT_FDCWD, to.constData(), RENAME_EXCHANGE) == 0) {
+    } else if (renameat2(AT_FDCWD, from.constData(), AT_FDCWD, to.constData(), RENAME_EXCHANGE)
+               == 0) {
         return true;
     } else if (errno == EINVAL || errno == ENOSYS) {
         // A file system without exchange: two renames, with a moment between them.
         const QByteArray old = to + ".old";
         QDir(QFile::decodeName(old)).removeRecursively();
-        if (std::rename(to.constData(), old.constData()) == 0 && std::rename(from.constData(), to.constData()) == 0) {
+        if (std::rename(to.constData(), old.constData()) == 0
+            && std::rename(from.constData(), to.constData()) == 0) {
             QDir(QFile::decodeName(old)).removeRecursively();
             return true;
         }
     }
-    *error = QStringLiteral("%1: cannot replace the index: %2").arg(target, QString::fromLocal8Bit(std::strerror(errno)));
+    *error = QStringLiteral("%1: cannot replace the index: %2")
+                 .arg(target, QString::fromLocal8Bit(std::strerror(errno)));
     return false;
 }
 
@@ -62,8 +65,7 @@ bool exchange(const QString &staging, const QString &target, QString *error)
 
 Repository::Repository(QString root)
     : m_root(QDir(root).absolutePath())
-{
-}
+{ }
 
 void Repository::overrideSigning(const QString &keyId, const QString &gnupgHome)
 {
@@ -97,18 +99,21 @@ bool Repository::open(QString *error)
 {
     QFile file(m_root + QLatin1Char('/') + ConfigFile);
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("%1: not a repository (no %2; create one with 'rtctl repo init')").arg(m_root, ConfigFile);
+        *error = QStringLiteral("%1: not a repository (no %2; create one with 'rtctl repo init')")
+                     .arg(m_root, ConfigFile);
         return false;
     }
     QString reason;
     const std::optional<DebControl> conf = DebControl::parse(file.readAll(), &reason);
     if (!conf || conf->value(QStringLiteral("Suite")).isEmpty()) {
-        *error = QStringLiteral("%1: unreadable: %2").arg(file.fileName(), reason.isEmpty() ? QStringLiteral("no Suite") : reason);
+        *error = QStringLiteral("%1: unreadable: %2")
+                     .arg(file.fileName(), reason.isEmpty() ? QStringLiteral("no Suite") : reason);
         return false;
     }
     m_config.suite = conf->value(QStringLiteral("Suite"));
     m_config.component = conf->value(QStringLiteral("Component"));
-    m_config.architectures = conf->value(QStringLiteral("Architectures")).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    m_config.architectures
+        = conf->value(QStringLiteral("Architectures")).split(QLatin1Char(' '), Qt::SkipEmptyParts);
     m_config.origin = conf->value(QStringLiteral("Origin"));
     m_config.label = conf->value(QStringLiteral("Label"));
     m_config.signWith = conf->value(QStringLiteral("Sign-With"));
@@ -123,11 +128,13 @@ bool Repository::init(RepositoryConfig config, const QString &newKeyUserId, QStr
         return false;
     }
     if (!isValidPackageName(config.suite) || !isValidPackageName(config.component)) {
-        *error = QStringLiteral("invalid suite or component name '%1/%2'").arg(config.suite, config.component);
+        *error = QStringLiteral("invalid suite or component name '%1/%2'")
+                     .arg(config.suite, config.component);
         return false;
     }
     if (config.architectures.isEmpty()) {
-        const ToolResult arch = runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")});
+        const ToolResult arch
+            = runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")});
         if (!arch.ok()) {
             *error = arch.failure(QStringLiteral("dpkg --print-architecture"));
             return false;
@@ -135,7 +142,8 @@ bool Repository::init(RepositoryConfig config, const QString &newKeyUserId, QStr
         config.architectures << QString::fromLatin1(arch.out).trimmed();
     }
     if (!newKeyUserId.isEmpty()) {
-        const std::optional<QString> key = GpgSigner::createKey(config.gnupgHome, newKeyUserId, error);
+        const std::optional<QString> key
+            = GpgSigner::createKey(config.gnupgHome, newKeyUserId, error);
         if (!key)
             return false;
         config.signWith = *key;
@@ -143,7 +151,8 @@ bool Repository::init(RepositoryConfig config, const QString &newKeyUserId, QStr
     m_config = config;
     if (!m_config.signWith.isEmpty()) {
         // The key must sign before anything is written.
-        const std::optional<QString> fingerprint = GpgSigner(m_config.signWith, m_config.gnupgHome).fingerprint(error);
+        const std::optional<QString> fingerprint
+            = GpgSigner(m_config.signWith, m_config.gnupgHome).fingerprint(error);
         if (!fingerprint)
             return false;
     }
@@ -163,7 +172,8 @@ bool Repository::exportKey(QString *error) const
         const std::optional<QByteArray> key = signer.exportPublicKey(armored, error);
         if (!key)
             return false;
-        const QString name = armored ? QStringLiteral("/archive-key.asc") : QStringLiteral("/archive-key.gpg");
+        const QString name
+            = armored ? QStringLiteral("/archive-key.asc") : QStringLiteral("/archive-key.gpg");
         if (!writeFile(m_root + name, *key, error))
             return false;
     }
@@ -175,18 +185,20 @@ std::optional<QList<IndexEntry>> Repository::packages(QString *error) const
     QList<IndexEntry> entries;
     QSet<QString> seen;
     for (const QString &architecture : m_config.architectures) {
-        const QString path = QStringLiteral("%1/%2/binary-%3/Packages").arg(suiteFolder(), m_config.component, architecture);
+        const QString path = QStringLiteral("%1/%2/binary-%3/Packages")
+                                 .arg(suiteFolder(), m_config.component, architecture);
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly))
             continue; // an architecture added by a publish that did not finish
         QString reason;
-        const std::optional<QList<DebControl>> paragraphs = DebControl::parseAll(file.readAll(), &reason);
+        const std::optional<QList<DebControl>> paragraphs
+            = DebControl::parseAll(file.readAll(), &reason);
         if (!paragraphs) {
             *error = QStringLiteral("%1: %2").arg(path, reason);
             return std::nullopt;
         }
         for (const DebControl &paragraph : *paragraphs) {
-            IndexEntry entry{paragraph};
+            IndexEntry entry {paragraph};
             if (!seen.contains(entry.filename())) {
                 seen.insert(entry.filename());
                 entries << entry;
@@ -216,7 +228,8 @@ bool Repository::writeIndex(const QList<IndexEntry> &entries, QString *error)
     if (!files)
         return false;
     const QByteArray release = releaseText(info, *files);
-    const QString staging = m_root + QStringLiteral("/dists/.") + m_config.suite + QStringLiteral(".new");
+    const QString staging
+        = m_root + QStringLiteral("/dists/.") + m_config.suite + QStringLiteral(".new");
     QDir(staging).removeRecursively();
     auto fail = [&staging]() {
         QDir(staging).removeRecursively();
@@ -246,7 +259,8 @@ bool Repository::writeIndex(const QList<IndexEntry> &entries, QString *error)
 bool Repository::reindex(QString *error)
 {
     QLockFile lockFile(m_root + QStringLiteral("/conf/lock"));
-    const std::optional<QList<IndexEntry>> entries = lock(&lockFile, error) ? packages(error) : std::nullopt;
+    const std::optional<QList<IndexEntry>> entries
+        = lock(&lockFile, error) ? packages(error) : std::nullopt;
     return entries && writeIndex(*entries, error);
 }
 
@@ -279,7 +293,8 @@ struct PoolChange
     }
 };
 
-/// Copies @p source to @p target through a partial file, the file it replaces kept aside in @p change.
+/// Copies @p source to @p target through a partial file, the file it replaces kept aside in @p
+/// change.
 bool copyIntoPool(const QString &source, const QString &target, PoolChange *change, QString *error)
 {
     QDir().mkpath(QFileInfo(target).absolutePath());
@@ -313,8 +328,10 @@ bool Repository::lock(QLockFile *lockFile, QString *error) const
     return false;
 }
 
-std::optional<QList<IndexEntry>> Repository::readIncoming(const QStringList &debFiles, const QList<IndexEntry> &existing,
-                                                          bool replace, QList<Incoming> *incoming, QString *error)
+std::optional<QList<IndexEntry>> Repository::readIncoming(const QStringList &debFiles,
+                                                          const QList<IndexEntry> &existing,
+                                                          bool replace, QList<Incoming> *incoming,
+                                                          QString *error)
 {
     QSet<QString> keys;
     for (const QString &deb : debFiles) {
@@ -323,24 +340,27 @@ std::optional<QList<IndexEntry>> Repository::readIncoming(const QStringList &deb
             return std::nullopt;
         entry->control.set(QStringLiteral("Filename"), poolPath(m_config.component, *entry));
         if (!isValidPackageName(entry->package()) || !isValidVersion(entry->version())) {
-            *error = QStringLiteral("%1: invalid package name or version '%2'").arg(deb, entry->key());
+            *error
+                = QStringLiteral("%1: invalid package name or version '%2'").arg(deb, entry->key());
             return std::nullopt;
         }
         if (keys.contains(entry->key())) {
             *error = QStringLiteral("%1: %2 is given twice").arg(deb, entry->key());
             return std::nullopt;
         }
-        const bool present = std::any_of(existing.cbegin(), existing.cend(),
-                                         [&entry](const IndexEntry &e) { return e.key() == entry->key(); });
+        const bool present
+            = std::any_of(existing.cbegin(), existing.cend(),
+                          [&entry](const IndexEntry &e) { return e.key() == entry->key(); });
         if (present && !replace) {
-            *error = QStringLiteral("%1: %2 is already in the repository (--replace to replace it)").arg(deb, entry->key());
+            *error = QStringLiteral("%1: %2 is already in the repository (--replace to replace it)")
+                         .arg(deb, entry->key());
             return std::nullopt;
         }
         const QString architecture = entry->architecture();
         if (architecture != QLatin1String("all") && !m_config.architectures.contains(architecture))
             m_config.architectures << architecture;
         keys.insert(entry->key());
-        *incoming << Incoming{*entry, deb};
+        *incoming << Incoming {*entry, deb};
     }
     // What stays: every entry not replaced.
     QList<IndexEntry> kept;
@@ -351,15 +371,18 @@ std::optional<QList<IndexEntry>> Repository::readIncoming(const QStringList &deb
     return kept;
 }
 
-std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles, bool replace, QString *error)
+std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles, bool replace,
+                                                     QString *error)
 {
     QLockFile lockFile(m_root + QStringLiteral("/conf/lock"));
-    const std::optional<QList<IndexEntry>> existing = lock(&lockFile, error) ? packages(error) : std::nullopt;
+    const std::optional<QList<IndexEntry>> existing
+        = lock(&lockFile, error) ? packages(error) : std::nullopt;
     if (!existing)
         return std::nullopt;
     const RepositoryConfig before = m_config;
     QList<Incoming> incoming;
-    std::optional<QList<IndexEntry>> entries = readIncoming(debFiles, *existing, replace, &incoming, error);
+    std::optional<QList<IndexEntry>> entries
+        = readIncoming(debFiles, *existing, replace, &incoming, error);
     if (!entries) {
         m_config = before;
         return std::nullopt;
@@ -369,11 +392,14 @@ std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles
     QList<IndexEntry> added;
     bool ok = true;
     for (const Incoming &in : incoming) {
-        ok = ok && copyIntoPool(in.source, m_root + QLatin1Char('/') + in.entry.filename(), &change, error);
+        ok = ok
+            && copyIntoPool(in.source, m_root + QLatin1Char('/') + in.entry.filename(), &change,
+                            error);
         added << in.entry;
     }
     *entries << added;
-    ok = ok && writeIndex(*entries, error) && (m_config.architectures == before.architectures || writeConfig(error));
+    ok = ok && writeIndex(*entries, error)
+        && (m_config.architectures == before.architectures || writeConfig(error));
     if (!ok) {
         change.rollback();
         m_config = before;
@@ -383,20 +409,25 @@ std::optional<QList<IndexEntry>> Repository::publish(const QStringList &debFiles
     return added;
 }
 
-std::optional<QList<IndexEntry>> Repository::remove(const QString &package, const QString &version, QString *error)
+std::optional<QList<IndexEntry>> Repository::remove(const QString &package, const QString &version,
+                                                    QString *error)
 {
     QLockFile lockFile(m_root + QStringLiteral("/conf/lock"));
-    const std::optional<QList<IndexEntry>> existing = lock(&lockFile, error) ? packages(error) : std::nullopt;
+    const std::optional<QList<IndexEntry>> existing
+        = lock(&lockFile, error) ? packages(error) : std::nullopt;
     if (!existing)
         return std::nullopt;
     QList<IndexEntry> kept;
     QList<IndexEntry> removed;
     for (const IndexEntry &entry : *existing) {
-        const bool match = entry.package() == package && (version.isEmpty() || entry.version() == version);
+        const bool match
+            = entry.package() == package && (version.isEmpty() || entry.version() == version);
         (match ? removed : kept) << entry;
     }
     if (removed.isEmpty()) {
-        *error = QStringLiteral("%1: no package %2%3").arg(m_root, package, version.isEmpty() ? QString() : QLatin1Char('=') + version);
+        *error
+            = QStringLiteral("%1: no package %2%3")
+                  .arg(m_root, package, version.isEmpty() ? QString() : QLatin1Char('=') + version);
         return std::nullopt;
     }
     // The index first: it never names a file that is gone.

@@ -38,7 +38,8 @@ struct RepositoryConfig
  *   archive-key.asc, archive-key.gpg         the signing key's public half, for clients
  *
  * The indexes are written in full after every change into a new folder that then takes the place
- * of dists/<suite> in one rename; a failing step (gpg, a full disk) leaves the repository as it was.
+ * of dists/<suite> in one rename; a failing step (gpg, a full disk) leaves the repository as it
+ * was.
  */
 class Repository
 {
@@ -55,10 +56,12 @@ public:
      * Adds the .deb files; a package with the same name, version and architecture as one already
      * there (or twice among @p debFiles) is refused unless @p replace. Returns the entries added.
      */
-    std::optional<QList<IndexEntry>> publish(const QStringList &debFiles, bool replace, QString *error);
+    std::optional<QList<IndexEntry>> publish(const QStringList &debFiles, bool replace,
+                                             QString *error);
     /// Removes every version of @p package, or only @p version when given; the entries removed
     /// (refused when none matches).
-    std::optional<QList<IndexEntry>> remove(const QString &package, const QString &version, QString *error);
+    std::optional<QList<IndexEntry>> remove(const QString &package, const QString &version,
+                                            QString *error);
     /// The packages the index lists, by name and version.
     std::optional<QList<IndexEntry>> packages(QString *error) const;
     /// Writes the indexes again (and signs them) from the current entries.
@@ -76,8 +79,9 @@ public:
 private:
     bool lock(QLockFile *lockFile, QString *error) const;
     /// Reads @p debFiles into @p incoming, refusing duplicates; the existing entries that stay.
-    std::optional<QList<IndexEntry>> readIncoming(const QStringList &debFiles, const QList<IndexEntry> &existing,
-                                                  bool replace, QList<Incoming> *incoming, QString *error);
+    std::optional<QList<IndexEntry>> readIncoming(const QStringList &debFiles,
+                                                  const QList<IndexEntry> &existing, bool replace,
+                                                  QList<Incoming> *incoming, QString *error);
     bool writeConfig(QString *error) const;
     bool writeIndex(const QList<IndexEntry> &entries, QString *error);
     bool exportKey(QString *error) const;

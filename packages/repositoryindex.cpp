@@ -17,11 +17,13 @@ QString IndexEntry::key() const
     return QStringLiteral("%1 %2 %3").arg(package(), version(), architecture());
 }
 
-std::optional<IndexEntry> readDebEntry(const QString &debFile, const QString &poolPath, QString *error)
+std::optional<IndexEntry> readDebEntry(const QString &debFile, const QString &poolPath,
+                                       QString *error)
 {
     const ToolResult fields = runTool(QStringLiteral("dpkg-deb"), {QStringLiteral("-f"), debFile});
     if (!fields.ok()) {
-        *error = QStringLiteral("%1: not a Debian package: %2").arg(debFile, fields.failure(QStringLiteral("dpkg-deb")));
+        *error = QStringLiteral("%1: not a Debian package: %2")
+                     .arg(debFile, fields.failure(QStringLiteral("dpkg-deb")));
         return std::nullopt;
     }
     QString reason;
@@ -32,7 +34,8 @@ std::optional<IndexEntry> readDebEntry(const QString &debFile, const QString &po
     }
     for (const char *field : {"Package", "Version", "Architecture"}) {
         if (control->value(QLatin1String(field)).isEmpty()) {
-            *error = QStringLiteral("%1: the control data has no %2").arg(debFile, QLatin1String(field));
+            *error = QStringLiteral("%1: the control data has no %2")
+                         .arg(debFile, QLatin1String(field));
             return std::nullopt;
         }
     }
@@ -48,7 +51,7 @@ std::optional<IndexEntry> readDebEntry(const QString &debFile, const QString &po
         md5.addData(block);
         sha256.addData(block);
     }
-    IndexEntry entry{*control};
+    IndexEntry entry {*control};
     entry.control.set(QStringLiteral("Filename"), poolPath);
     entry.control.set(QStringLiteral("Size"), QString::number(file.size()));
     entry.control.set(QStringLiteral("MD5sum"), QString::fromLatin1(md5.result().toHex()));
@@ -66,7 +69,8 @@ QString poolPath(const QString &component, const IndexEntry &entry)
 {
     const QString name = entry.package();
     // Debian's pool splits lib* packages by their first four letters.
-    const QString prefix = name.startsWith(QLatin1String("lib")) && name.size() > 3 ? name.left(4) : name.left(1);
+    const QString prefix
+        = name.startsWith(QLatin1String("lib")) && name.size() > 3 ? name.left(4) : name.left(1);
     return QStringLiteral("pool/%1/%2/%3/%3_%4_%5.deb")
         .arg(component, prefix, name, versionInFileName(entry.version()), entry.architecture());
 }
@@ -98,7 +102,8 @@ std::optional<QByteArray> compress(const QString &program, const QByteArray &dat
 {
     ToolRun run;
     run.input = data;
-    const ToolResult result = runTool(program, {QStringLiteral("-9"), QStringLiteral("-n"), QStringLiteral("-c")}, run);
+    const ToolResult result
+        = runTool(program, {QStringLiteral("-9"), QStringLiteral("-n"), QStringLiteral("-c")}, run);
     if (!result.ok()) {
         *error = result.failure(program);
         return std::nullopt;
@@ -108,19 +113,19 @@ std::optional<QByteArray> compress(const QString &program, const QByteArray &dat
 
 } // namespace
 
-std::optional<QList<IndexFile>> packagesFiles(const QList<IndexEntry> &entries, const ReleaseInfo &info,
-                                              QString *error)
+std::optional<QList<IndexFile>> packagesFiles(const QList<IndexEntry> &entries,
+                                              const ReleaseInfo &info, QString *error)
 {
     QList<IndexFile> files;
     const bool xz = haveTool(QStringLiteral("xz"));
     for (const QString &architecture : info.architectures) {
         const QString folder = QStringLiteral("%1/binary-%2/").arg(info.component, architecture);
         const QByteArray text = packagesText(entries, architecture);
-        files << IndexFile{folder + QStringLiteral("Packages"), text};
+        files << IndexFile {folder + QStringLiteral("Packages"), text};
         const std::optional<QByteArray> gz = compress(QStringLiteral("gzip"), text, error);
         if (!gz)
             return std::nullopt;
-        files << IndexFile{folder + QStringLiteral("Packages.gz"), *gz};
+        files << IndexFile {folder + QStringLiteral("Packages.gz"), *gz};
         if (xz) {
             // xz has no -n; its output carries no name or time anyway.
             ToolRun run;
@@ -130,7 +135,7 @@ std::optional<QList<IndexFile>> packagesFiles(const QList<IndexEntry> &entries, 
                 *error = result.failure(QStringLiteral("xz"));
                 return std::nullopt;
             }
-            files << IndexFile{folder + QStringLiteral("Packages.xz"), result.out};
+            files << IndexFile {folder + QStringLiteral("Packages.xz"), result.out};
         }
     }
     return files;
@@ -145,9 +150,11 @@ QByteArray releaseText(const ReleaseInfo &info, const QList<IndexFile> &files)
         release.set(QStringLiteral("Label"), info.label);
     release.set(QStringLiteral("Suite"), info.suite);
     release.set(QStringLiteral("Codename"), info.codename.isEmpty() ? info.suite : info.codename);
-    const QDateTime date = info.date.isValid() ? info.date.toUTC() : QDateTime::currentDateTimeUtc();
+    const QDateTime date
+        = info.date.isValid() ? info.date.toUTC() : QDateTime::currentDateTimeUtc();
     release.set(QStringLiteral("Date"),
-                QLocale::c().toString(date, QStringLiteral("ddd, dd MMM yyyy HH:mm:ss")) + QStringLiteral(" UTC"));
+                QLocale::c().toString(date, QStringLiteral("ddd, dd MMM yyyy HH:mm:ss"))
+                    + QStringLiteral(" UTC"));
     release.set(QStringLiteral("Architectures"), info.architectures.join(QLatin1Char(' ')));
     release.set(QStringLiteral("Components"), info.component);
     if (!info.description.isEmpty())
@@ -157,11 +164,15 @@ QByteArray releaseText(const ReleaseInfo &info, const QList<IndexFile> &files)
     for (const IndexFile &file : files) {
         const QString size = QString::number(file.data.size()).rightJustified(10);
         md5 += QStringLiteral("\n %1 %2 %3")
-                   .arg(QString::fromLatin1(QCryptographicHash::hash(file.data, QCryptographicHash::Md5).toHex()),
+                   .arg(QString::fromLatin1(
+                            QCryptographicHash::hash(file.data, QCryptographicHash::Md5).toHex()),
                         size, file.path);
-        sha256 += QStringLiteral("\n %1 %2 %3")
-                      .arg(QString::fromLatin1(QCryptographicHash::hash(file.data, QCryptographicHash::Sha256).toHex()),
-                           size, file.path);
+        sha256
+            += QStringLiteral("\n %1 %2 %3")
+                   .arg(
+                       QString::fromLatin1(
+                           QCryptographicHash::hash(file.data, QCryptographicHash::Sha256).toHex()),
+                       size, file.path);
     }
     release.set(QStringLiteral("MD5Sum"), md5);
     release.set(QStringLiteral("SHA256"), sha256);

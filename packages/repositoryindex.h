@@ -32,12 +32,14 @@ struct IndexEntry
  * its control data read with `dpkg-deb -f`. Nothing, with the reason in @p error, when dpkg-deb
  * cannot read it or it lacks Package, Version or Architecture.
  */
-std::optional<IndexEntry> readDebEntry(const QString &debFile, const QString &poolPath, QString *error);
+std::optional<IndexEntry> readDebEntry(const QString &debFile, const QString &poolPath,
+                                       QString *error);
 
 /// "pool/<component>/<first letter or lib?>/<package>/<package>_<version>_<arch>.deb"
 QString poolPath(const QString &component, const IndexEntry &entry);
 
-/// The Packages file of @p architecture: its own packages and those of "all", sorted by name and version.
+/// The Packages file of @p architecture: its own packages and those of "all", sorted by name and
+/// version.
 QByteArray packagesText(const QList<IndexEntry> &entries, const QString &architecture);
 
 /// An index file under dists/<suite>/.
@@ -61,8 +63,8 @@ struct ReleaseInfo
 };
 
 /// Packages, Packages.gz (gzip) and Packages.xz (when xz is installed) of every architecture.
-std::optional<QList<IndexFile>> packagesFiles(const QList<IndexEntry> &entries, const ReleaseInfo &info,
-                                              QString *error);
+std::optional<QList<IndexFile>> packagesFiles(const QList<IndexEntry> &entries,
+                                              const ReleaseInfo &info, QString *error);
 
 /// The Release file listing @p files with their sizes and MD5 and SHA256 checksums.
 QByteArray releaseText(const ReleaseInfo &info, const QList<IndexFile> &files);

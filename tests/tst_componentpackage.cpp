@@ -36,7 +36,8 @@ QString field(const QString &deb, const QString &name)
 QStringList contents(const QString &deb)
 {
     QStringList paths;
-    for (const QString &line : tool(QStringLiteral("dpkg-deb"), {QStringLiteral("-c"), deb}).split('\n', Qt::SkipEmptyParts))
+    for (const QString &line : tool(QStringLiteral("dpkg-deb"), {QStringLiteral("-c"), deb})
+                                   .split('\n', Qt::SkipEmptyParts))
         paths << line.section(' ', -1).mid(1);
     return paths;
 }
@@ -44,8 +45,9 @@ QStringList contents(const QString &deb)
 QByteArray sha256(const QString &path)
 {
     QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256).toHex()
-                                          : QByteArray();
+    return file.open(QIODevice::ReadOnly)
+        ? QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256).toHex()
+        : QByteArray();
 }
 
 } // namespace
@@ -66,7 +68,10 @@ private slots:
     void refused();
 
 private:
-    RtctlResult package(const QStringList &arguments) { return runRtctl(QStringList{"package"} + arguments); }
+    RtctlResult package(const QStringList &arguments)
+    {
+        return runRtctl(QStringList {"package"} + arguments);
+    }
 
     QTemporaryDir m_work;
     QString m_project;
@@ -84,15 +89,16 @@ void TestComponentPackage::initTestCase()
     QVERIFY(!m_arch.isEmpty() && !m_multiarch.isEmpty());
     // A component with a provided service of its own IDL, generated and built as a user would.
     m_project = m_work.filePath("SdkGreeter");
-    const RtctlResult generated =
-        runRtctl({"gen", greeterFixture + "/RTC.xml", "--lang", "cpp", "-o", m_project, "--idl-dir", greeterFixture});
+    const RtctlResult generated = runRtctl({"gen", greeterFixture + "/RTC.xml", "--lang", "cpp",
+                                            "-o", m_project, "--idl-dir", greeterFixture});
     QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
     QString log;
     QVERIFY2(SdkTest::buildProject(m_project, RTSTUDIO_BUILD_DIR, &log), qPrintable(log));
     m_packaged = package({m_project, "-o", m_work.filePath("out")});
     QVERIFY2(m_packaged.code == 0, qPrintable(m_packaged.out + m_packaged.err));
     m_deb = m_packaged.lines().value(0);
-    QCOMPARE(m_deb, m_work.filePath("out/rtc-rtstudiotests-test-sdkgreeter_1.0.0_" + m_arch + ".deb"));
+    QCOMPARE(m_deb,
+             m_work.filePath("out/rtc-rtstudiotests-test-sdkgreeter_1.0.0_" + m_arch + ".deb"));
     QVERIFY(QFile::exists(m_deb));
 }
 
@@ -101,10 +107,12 @@ void TestComponentPackage::controlFields()
     QCOMPARE(field(m_deb, "Package"), QStringLiteral("rtc-rtstudiotests-test-sdkgreeter"));
     QCOMPARE(field(m_deb, "Version"), QStringLiteral("1.0.0"));
     QCOMPARE(field(m_deb, "Architecture"), m_arch);
-    QVERIFY2(field(m_deb, "Maintainer").contains(QRegularExpression("^.+ <.+@.+>$")), qPrintable(field(m_deb, "Maintainer")));
+    QVERIFY2(field(m_deb, "Maintainer").contains(QRegularExpression("^.+ <.+@.+>$")),
+             qPrintable(field(m_deb, "Maintainer")));
     QVERIFY(!field(m_deb, "Description").isEmpty());
     QCOMPARE(field(m_deb, "X-RTC-Types"), QStringLiteral("SdkGreeter"));
-    QCOMPARE(field(m_deb, "X-RTC-Profile-Id"), QStringLiteral("RTC:RTStudioTests:Test:SdkGreeter:1.0.0"));
+    QCOMPARE(field(m_deb, "X-RTC-Profile-Id"),
+             QStringLiteral("RTC:RTStudioTests:Test:SdkGreeter:1.0.0"));
     QCOMPARE(field(m_deb, "X-RTC-Profile-SHA256").toLatin1(), sha256(m_project + "/RTC.xml"));
     // The SDK ABI is the SONAME of the SDK library this build tree made.
     const QString sdk = tool("objdump", {"-p", RTSTUDIO_BUILD_DIR "/lib/librtstudio_rtm.so"});
@@ -117,37 +125,44 @@ void TestComponentPackage::controlFields()
 
 void TestComponentPackage::files()
 {
-    const QString lib = "/usr/lib/" + m_multiarch + "/rtstudio/components/rtc-rtstudiotests-test-sdkgreeter/";
+    const QString lib
+        = "/usr/lib/" + m_multiarch + "/rtstudio/components/rtc-rtstudiotests-test-sdkgreeter/";
     const QString share = "/usr/share/rtstudio/components/rtc-rtstudiotests-test-sdkgreeter/";
     const QStringList paths = contents(m_deb);
-    for (const QString &expected : {lib + "SdkGreeter.so", lib + "SdkGreeterComp", share + "RTC.xml",
-                                    share + "SdkGreeter.conf", share + "rtc.conf", share + "idl/Greeter.idl"})
+    for (const QString &expected :
+         {lib + "SdkGreeter.so", lib + "SdkGreeterComp", share + "RTC.xml",
+          share + "SdkGreeter.conf", share + "rtc.conf", share + "idl/Greeter.idl"})
         QVERIFY2(paths.contains(expected), qPrintable(expected + " not in\n" + paths.join('\n')));
     // Nothing of the build folder or the sources besides.
     for (const QString &path : paths)
-        QVERIFY2(path.endsWith('/') || path.startsWith(lib) || path.startsWith(share), qPrintable(path));
+        QVERIFY2(path.endsWith('/') || path.startsWith(lib) || path.startsWith(share),
+                 qPrintable(path));
 }
 
 void TestComponentPackage::dependsOnLinkedLibraries()
 {
     const QStringList depends = field(m_deb, "Depends").split(", ");
     // dpkg-shlibdeps's names of the Debian libraries the component links.
-    for (const QString &library : {QStringLiteral("libstdc++6"), QStringLiteral("libc6"), QStringLiteral("libomniorb4")}) {
-        const bool found = std::any_of(depends.cbegin(), depends.cend(),
-                                       [&library](const QString &d) { return d.startsWith(library); });
+    for (const QString &library :
+         {QStringLiteral("libstdc++6"), QStringLiteral("libc6"), QStringLiteral("libomniorb4")}) {
+        const bool found
+            = std::any_of(depends.cbegin(), depends.cend(),
+                          [&library](const QString &d) { return d.startsWith(library); });
         QVERIFY2(found, qPrintable(library + " not in " + depends.join(", ")));
     }
     // The SDK library of the build tree comes from no package: left out, with a warning naming it.
     for (const QString &d : depends)
         QVERIFY2(!d.contains("rtstudio"), qPrintable(d));
-    QVERIFY2(m_packaged.err.contains(QRegularExpression("warning: librtstudio_rtm\\.so\\.\\d+ comes from no Debian package")),
+    QVERIFY2(m_packaged.err.contains(QRegularExpression(
+                 "warning: librtstudio_rtm\\.so\\.\\d+ comes from no Debian package")),
              qPrintable(m_packaged.err));
 }
 
 void TestComponentPackage::dependsGiven()
 {
     const RtctlResult r = package({m_project, "-o", m_work.filePath("given.deb"), "--depends",
-                                   "rtc-rtstudiotests-test-other (>= 2.0)", "--maintainer", "Robot Team <team@example.org>"});
+                                   "rtc-rtstudiotests-test-other (>= 2.0)", "--maintainer",
+                                   "Robot Team <team@example.org>"});
     QVERIFY2(r.code == 0, qPrintable(r.err));
     const QString deb = m_work.filePath("given.deb");
     QVERIFY(field(deb, "Depends").endsWith(", rtc-rtstudiotests-test-other (>= 2.0)"));
@@ -165,7 +180,8 @@ void TestComponentPackage::managerFindsInstalledModule()
     const quint16 port = LiveTest::freePort();
     QString error;
     QVERIFY2(live.startManager(RTMANAGER_PATH, port,
-                               {"naming.enable=NO", "manager.modules.load_path=" + m_work.filePath("none"),
+                               {"naming.enable=NO",
+                                "manager.modules.load_path=" + m_work.filePath("none"),
                                 "manager.modules.package_path=" + packages},
                                &error),
              qPrintable(error));
@@ -175,7 +191,8 @@ void TestComponentPackage::managerFindsInstalledModule()
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     QVERIFY2(r.out.startsWith("SdkGreeter"), qPrintable(r.out));
     const RtctlResult listed = runRtctl({"mgr", manager, "list"});
-    QVERIFY2(listed.out.contains(packages + "/rtc-rtstudiotests-test-sdkgreeter/SdkGreeter.so"), qPrintable(listed.out));
+    QVERIFY2(listed.out.contains(packages + "/rtc-rtstudiotests-test-sdkgreeter/SdkGreeter.so"),
+             qPrintable(listed.out));
     live.stopAll();
 }
 
@@ -184,16 +201,19 @@ void TestComponentPackage::pythonComponent()
     const RtctlResult r = package({fixtures + "pycomp", "-o", m_work.filePath("py")});
     QVERIFY2(r.code == 0, qPrintable(r.err));
     const QString deb = r.lines().value(0);
-    QCOMPARE(QFileInfo(deb).fileName(), QStringLiteral("rtc-rtstudiotests-packaging-pygreeter_1.2_all.deb"));
+    QCOMPARE(QFileInfo(deb).fileName(),
+             QStringLiteral("rtc-rtstudiotests-packaging-pygreeter_1.2_all.deb"));
     QCOMPARE(field(deb, "Architecture"), QStringLiteral("all"));
     QCOMPARE(field(deb, "Version"), QStringLiteral("1.2")); // the profile's "v1_2"
-    // A library of the profile that is a package name is a dependency; others are named in a warning.
+    // A library of the profile that is a package name is a dependency; others are named in a
+    // warning.
     QCOMPARE(field(deb, "Depends"), QStringLiteral("rtc-rtstudio-example-consolein (>= 1.0.0)"));
     QVERIFY2(r.err.contains("'NumPy'"), qPrintable(r.err));
     QVERIFY(field(deb, "X-RTStudio-SDK-ABI").isEmpty());
     const QString share = "/usr/share/rtstudio/components/rtc-rtstudiotests-packaging-pygreeter/";
     const QStringList paths = contents(deb);
-    for (const QString &expected : {share + "PyGreeter.py", share + "PyGreeter.conf", share + "RTC.xml", share + "idl/Greeting.idl"})
+    for (const QString &expected : {share + "PyGreeter.py", share + "PyGreeter.conf",
+                                    share + "RTC.xml", share + "idl/Greeting.idl"})
         QVERIFY2(paths.contains(expected), qPrintable(expected + " not in\n" + paths.join('\n')));
 }
 
@@ -202,20 +222,23 @@ void TestComponentPackage::refused_data()
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<QStringList>("message"); // parts of the message, in order
 
-    QTest::newRow("no RTC.xml") << QStringList{fixtures + "noprofile"}
-                                << QStringList{fixtures + "noprofile/RTC.xml", "no RTC.xml"};
-    QTest::newRow("no such folder") << QStringList{fixtures + "missing"}
-                                    << QStringList{fixtures + "missing", "no such project folder"};
-    QTest::newRow("not built") << QStringList{fixtures + "unbuilt"} << QStringList{fixtures + "unbuilt/build", "not built"};
+    QTest::newRow("no RTC.xml") << QStringList {fixtures + "noprofile"}
+                                << QStringList {fixtures + "noprofile/RTC.xml", "no RTC.xml"};
+    QTest::newRow("no such folder") << QStringList {fixtures + "missing"}
+                                    << QStringList {fixtures + "missing", "no such project folder"};
+    QTest::newRow("not built") << QStringList {fixtures + "unbuilt"}
+                               << QStringList {fixtures + "unbuilt/build", "not built"};
     QTest::newRow("not built in the folder given")
-        << QStringList{m_project, "--build-dir", fixtures + "unbuilt"}
-        << QStringList{fixtures + "unbuilt", "not built", "SdkGreeter.so", "SdkGreeterComp"};
-    QTest::newRow("invalid version") << QStringList{fixtures + "badversion"}
-                                     << QStringList{fixtures + "badversion/RTC.xml", "invalid version", "'beta two'"};
-    QTest::newRow("name without letters") << QStringList{fixtures + "badname"}
-                                          << QStringList{fixtures + "badname/RTC.xml", "invalid package name", "'__'"};
-    QTest::newRow("invalid name given") << QStringList{m_project, "--name", "Greeter_Pkg"}
-                                        << QStringList{"invalid package name", "'Greeter_Pkg'"};
+        << QStringList {m_project, "--build-dir", fixtures + "unbuilt"}
+        << QStringList {fixtures + "unbuilt", "not built", "SdkGreeter.so", "SdkGreeterComp"};
+    QTest::newRow("invalid version")
+        << QStringList {fixtures + "badversion"}
+        << QStringList {fixtures + "badversion/RTC.xml", "invalid version", "'beta two'"};
+    QTest::newRow("name without letters")
+        << QStringList {fixtures + "badname"}
+        << QStringList {fixtures + "badname/RTC.xml", "invalid package name", "'__'"};
+    QTest::newRow("invalid name given") << QStringList {m_project, "--name", "Greeter_Pkg"}
+                                        << QStringList {"invalid package name", "'Greeter_Pkg'"};
 }
 
 void TestComponentPackage::refused()
@@ -223,7 +246,7 @@ void TestComponentPackage::refused()
     QFETCH(QStringList, arguments);
     QFETCH(QStringList, message);
     QTemporaryDir out;
-    const RtctlResult r = package(arguments + QStringList{"-o", out.path()});
+    const RtctlResult r = package(arguments + QStringList {"-o", out.path()});
     QCOMPARE(r.code, 1);
     qsizetype at = 0;
     for (const QString &part : message) {

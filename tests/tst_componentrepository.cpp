@@ -22,7 +22,8 @@ struct ToolOutput
     QString out;
 };
 
-ToolOutput tool(const QString &program, const QStringList &arguments, const QString &cwd = QString())
+ToolOutput tool(const QString &program, const QStringList &arguments,
+                const QString &cwd = QString())
 {
     QProcess process;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
@@ -72,7 +73,10 @@ private slots:
     void remove();
 
 private:
-    RtctlResult repo(const QStringList &arguments) { return runRtctl(QStringList{"repo"} + arguments); }
+    RtctlResult repo(const QStringList &arguments)
+    {
+        return runRtctl(QStringList {"repo"} + arguments);
+    }
     /// apt-get update (and, when @p show is set, apt-cache show @p show) on @p repository with
     /// @p key as signed-by, in private state folders; the output of the last command run.
     ToolOutput apt(const QString &repository, const QString &key, const QString &show = QString(),
@@ -95,14 +99,16 @@ void TestComponentRepository::initTestCase()
     m_arch = tool("dpkg", {"--print-architecture"}).out.trimmed();
     // An Architecture: all package made by rtctl package, and one of this machine's architecture
     // made from a file tree with dpkg-deb.
-    const RtctlResult py = runRtctl({"package", fixtures + "pycomp", "-o", m_work.filePath("debs")});
+    const RtctlResult py
+        = runRtctl({"package", fixtures + "pycomp", "-o", m_work.filePath("debs")});
     QVERIFY2(py.code == 0, qPrintable(py.err));
     m_pyDeb = py.lines().value(0);
     const QString tree = m_work.filePath("nativetree");
     QVERIFY(copyTree(fixtures + "debtree", tree));
     QByteArray control = readAll(tree + "/DEBIAN/control").replace("@ARCH@", m_arch.toLatin1());
     QFile file(tree + "/DEBIAN/control");
-    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(control) == control.size());
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate)
+            && file.write(control) == control.size());
     file.close();
     m_nativeDeb = m_work.filePath("debs/native.deb");
     const ToolOutput built = tool("dpkg-deb", {"--root-owner-group", "--build", tree, m_nativeDeb});
@@ -122,17 +128,21 @@ void TestComponentRepository::initCreatesSignedIndex()
 {
     const RtctlResult r = repo({"init", m_repo, "--new-key", "--gnupg-home", m_gnupg});
     QVERIFY2(r.code == 0, qPrintable(r.err));
-    for (const char *file : {"conf/repository", "archive-key.asc", "archive-key.gpg", "dists/stable/Release",
-                             "dists/stable/InRelease", "dists/stable/Release.gpg"})
+    for (const char *file :
+         {"conf/repository", "archive-key.asc", "archive-key.gpg", "dists/stable/Release",
+          "dists/stable/InRelease", "dists/stable/Release.gpg"})
         QVERIFY2(QFile::exists(m_repo + '/' + file), file);
     QVERIFY(QFile::exists(m_repo + "/dists/stable/main/binary-" + m_arch + "/Packages.gz"));
     // Debian's gpgv, with only the exported key, accepts both signatures.
     const QString keyring = m_repo + "/archive-key.gpg";
     ToolOutput v = tool("gpgv", {"--keyring", keyring, m_repo + "/dists/stable/InRelease"});
     QVERIFY2(v.code == 0, qPrintable(v.out));
-    v = tool("gpgv", {"--keyring", keyring, m_repo + "/dists/stable/Release.gpg", m_repo + "/dists/stable/Release"});
+    v = tool("gpgv",
+             {"--keyring", keyring, m_repo + "/dists/stable/Release.gpg",
+              m_repo + "/dists/stable/Release"});
     QVERIFY2(v.code == 0, qPrintable(v.out));
-    QVERIFY(readAll(m_repo + "/dists/stable/Release").contains("Architectures: " + m_arch.toLatin1()));
+    QVERIFY(
+        readAll(m_repo + "/dists/stable/Release").contains("Architectures: " + m_arch.toLatin1()));
 
     const RtctlResult again = repo({"init", m_repo});
     QCOMPARE(again.code, 1);
@@ -145,11 +155,13 @@ void TestComponentRepository::publishAndList()
     QVERIFY2(r.code == 0, qPrintable(r.err));
     const RtctlResult listed = repo({"list", m_repo});
     QCOMPARE(listed.code, 0);
-    QCOMPARE(listed.lines(), (QStringList{nativePackage + " 2.0.0 " + m_arch + " NativeProbe",
-                                          pyPackage + " 1.2 all PyGreeter"}));
+    QCOMPARE(listed.lines(),
+             (QStringList {nativePackage + " 2.0.0 " + m_arch + " NativeProbe",
+                           pyPackage + " 1.2 all PyGreeter"}));
     QVERIFY(QFile::exists(m_repo + "/pool/main/r/" + pyPackage + "/" + pyPackage + "_1.2_all.deb"));
     // The architecture's index lists the Architecture: all package too.
-    const QByteArray packages = readAll(m_repo + "/dists/stable/main/binary-" + m_arch + "/Packages");
+    const QByteArray packages
+        = readAll(m_repo + "/dists/stable/main/binary-" + m_arch + "/Packages");
     QVERIFY(packages.contains("Package: " + pyPackage.toLatin1()));
     QVERIFY(packages.contains("Package: " + nativePackage.toLatin1()));
 }
@@ -159,7 +171,8 @@ void TestComponentRepository::publishSameVersionRefused()
     const QByteArray release = readAll(m_repo + "/dists/stable/Release");
     const RtctlResult r = repo({"publish", m_repo, m_pyDeb});
     QCOMPARE(r.code, 1);
-    QVERIFY2(r.err.contains(pyPackage + " 1.2 all is already in the repository"), qPrintable(r.err));
+    QVERIFY2(r.err.contains(pyPackage + " 1.2 all is already in the repository"),
+             qPrintable(r.err));
     QCOMPARE(readAll(m_repo + "/dists/stable/Release"), release);
     const RtctlResult replaced = repo({"publish", m_repo, m_pyDeb, "--replace"});
     QVERIFY2(replaced.code == 0, qPrintable(replaced.err));
@@ -171,10 +184,12 @@ void TestComponentRepository::publishRefused_data()
     QTest::addColumn<QStringList>("files");
     QTest::addColumn<QString>("message");
     const QString profile = fixtures + "pycomp/RTC.xml";
-    QTest::newRow("not a package") << QStringList{profile} << profile + ": not a Debian package";
-    QTest::newRow("missing file") << QStringList{fixtures + "none.deb"} << fixtures + "none.deb: not a Debian package";
-    QTest::newRow("given twice") << QStringList{m_nativeDeb, m_nativeDeb}
-                                 << m_nativeDeb + ": " + nativePackage + " 2.0.0 " + m_arch + " is given twice";
+    QTest::newRow("not a package") << QStringList {profile} << profile + ": not a Debian package";
+    QTest::newRow("missing file") << QStringList {fixtures + "none.deb"}
+                                  << fixtures + "none.deb: not a Debian package";
+    QTest::newRow("given twice") << QStringList {m_nativeDeb, m_nativeDeb}
+                                 << m_nativeDeb + ": " + nativePackage + " 2.0.0 " + m_arch
+            + " is given twice";
 }
 
 void TestComponentRepository::publishRefused()
@@ -182,7 +197,7 @@ void TestComponentRepository::publishRefused()
     QFETCH(QStringList, files);
     QFETCH(QString, message);
     const QByteArray release = readAll(m_repo + "/dists/stable/Release");
-    const RtctlResult r = repo(QStringList{"publish", m_repo, "--replace"} + files);
+    const RtctlResult r = repo(QStringList {"publish", m_repo, "--replace"} + files);
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
     QCOMPARE(readAll(m_repo + "/dists/stable/Release"), release);
@@ -194,7 +209,8 @@ void TestComponentRepository::show()
     QVERIFY2(r.code == 0, qPrintable(r.err));
     QVERIFY(r.out.contains("X-RTC-Profile-Id: RTC:RTStudioTests:Packaging:PyGreeter:v1_2\n"));
     QVERIFY(r.out.contains("X-RTC-Types: PyGreeter\n"));
-    QVERIFY(r.out.contains("Filename: pool/main/r/" + pyPackage + "/" + pyPackage + "_1.2_all.deb\n"));
+    QVERIFY(
+        r.out.contains("Filename: pool/main/r/" + pyPackage + "/" + pyPackage + "_1.2_all.deb\n"));
     QVERIFY(r.out.contains(QRegularExpression("\nSHA256: [0-9a-f]{64}\n")));
     const RtctlResult missing = repo({"show", m_repo, "rtc-nobody-none-nothing"});
     QCOMPARE(missing.code, 1);
@@ -206,50 +222,61 @@ void TestComponentRepository::failedSigningLeavesRepository()
     const QString suite = m_repo + "/dists/stable/";
     const QByteArray inRelease = readAll(suite + "InRelease");
     const QByteArray packages = readAll(suite + "main/binary-" + m_arch + "/Packages");
-    const RtctlResult r = repo({"publish", m_repo, m_pyDeb, "--replace", "--key", "0000000000000000DEADBEEF"});
+    const RtctlResult r
+        = repo({"publish", m_repo, m_pyDeb, "--replace", "--key", "0000000000000000DEADBEEF"});
     QCOMPARE(r.code, 1);
-    QVERIFY2(r.err.contains("signing InRelease") && r.err.contains("0000000000000000DEADBEEF"), qPrintable(r.err));
+    QVERIFY2(r.err.contains("signing InRelease") && r.err.contains("0000000000000000DEADBEEF"),
+             qPrintable(r.err));
     QCOMPARE(readAll(suite + "InRelease"), inRelease);
     QCOMPARE(readAll(suite + "main/binary-" + m_arch + "/Packages"), packages);
     // The package kept aside for the replacement is back, nothing half-written is left.
     const QString pool = m_repo + "/pool/main/r/" + pyPackage;
-    QCOMPARE(QDir(pool).entryList(QDir::Files), QStringList{pyPackage + "_1.2_all.deb"});
-    QVERIFY(QDir(m_repo + "/dists").entryList(QDir::Dirs | QDir::NoDotAndDotDot | QDir::Hidden) == QStringList{"stable"});
+    QCOMPARE(QDir(pool).entryList(QDir::Files), QStringList {pyPackage + "_1.2_all.deb"});
+    QVERIFY(QDir(m_repo + "/dists").entryList(QDir::Dirs | QDir::NoDotAndDotDot | QDir::Hidden)
+            == QStringList {"stable"});
 }
 
-ToolOutput TestComponentRepository::apt(const QString &repository, const QString &key, const QString &show,
-                                        const QString &download)
+ToolOutput TestComponentRepository::apt(const QString &repository, const QString &key,
+                                        const QString &show, const QString &download)
 {
     // Fresh state and cache for every run: lists of an earlier run must not hide a refusal.
     static int run = 0;
     const QString root = m_work.filePath(QStringLiteral("apt%1").arg(++run));
-    for (const char *dir : {"etc/sources.list.d", "etc/trusted.gpg.d", "etc/preferences.d", "state/lists/partial",
-                            "cache/archives/partial", "download"})
+    for (const char *dir : {"etc/sources.list.d", "etc/trusted.gpg.d", "etc/preferences.d",
+                            "state/lists/partial", "cache/archives/partial", "download"})
         QDir().mkpath(root + '/' + dir);
     QFile sources(root + "/etc/sources.list");
     if (!sources.open(QIODevice::WriteOnly)
-        || sources.write(QStringLiteral("deb [signed-by=%1] file:%2 stable main\n").arg(key, repository).toUtf8()) < 0)
+        || sources.write(QStringLiteral("deb [signed-by=%1] file:%2 stable main\n")
+                             .arg(key, repository)
+                             .toUtf8())
+            < 0)
         return {};
     sources.close();
     const QString user = tool("id", {"-un"}).out.trimmed();
     // Everything apt keeps goes below root: no change to /etc or /var, no root needed.
-    const QStringList options{"-o", "Dir::Etc=" + root + "/etc", "-o", "Dir::Etc::sourcelist=" + root + "/etc/sources.list",
-                              "-o", "Dir::Etc::sourceparts=" + root + "/etc/sources.list.d", "-o",
-                              "Dir::Etc::trustedparts=" + root + "/etc/trusted.gpg.d", "-o",
-                              "Dir::State=" + root + "/state", "-o", "Dir::Cache=" + root + "/cache", "-o",
-                              "Dir::State::status=/dev/null", "-o", "APT::Get::List-Cleanup=0", "-o",
-                              "APT::Sandbox::User=" + user, "-o", "Debug::NoLocking=1"};
-    ToolOutput update = tool("apt-get", options + QStringList{"update"});
+    const QStringList options {"-o", "Dir::Etc=" + root + "/etc",
+                               "-o", "Dir::Etc::sourcelist=" + root + "/etc/sources.list",
+                               "-o", "Dir::Etc::sourceparts=" + root + "/etc/sources.list.d",
+                               "-o", "Dir::Etc::trustedparts=" + root + "/etc/trusted.gpg.d",
+                               "-o", "Dir::State=" + root + "/state",
+                               "-o", "Dir::Cache=" + root + "/cache",
+                               "-o", "Dir::State::status=/dev/null",
+                               "-o", "APT::Get::List-Cleanup=0",
+                               "-o", "APT::Sandbox::User=" + user,
+                               "-o", "Debug::NoLocking=1"};
+    ToolOutput update = tool("apt-get", options + QStringList {"update"});
     if (update.code != 0 || show.isEmpty())
         return update;
     if (!download.isEmpty()) {
-        const ToolOutput fetched = tool("apt-get", options + QStringList{"download", download}, root + "/download");
+        const ToolOutput fetched
+            = tool("apt-get", options + QStringList {"download", download}, root + "/download");
         if (fetched.code != 0)
             return fetched;
         if (QDir(root + "/download").entryList({"*.deb"}, QDir::Files).size() != 1)
             return {1, "apt-get download fetched no .deb"};
     }
-    return tool("apt-cache", options + QStringList{"show", show});
+    return tool("apt-cache", options + QStringList {"show", show});
 }
 
 void TestComponentRepository::aptReadsRepository()
@@ -258,7 +285,8 @@ void TestComponentRepository::aptReadsRepository()
     ToolOutput r = apt(m_repo, key, pyPackage, pyPackage);
     QVERIFY2(r.code == 0, qPrintable(r.out));
     QVERIFY2(r.out.contains("Package: " + pyPackage + "\n"), qPrintable(r.out));
-    QVERIFY2(r.out.contains("X-RTC-Profile-Id: RTC:RTStudioTests:Packaging:PyGreeter:v1_2"), qPrintable(r.out));
+    QVERIFY2(r.out.contains("X-RTC-Profile-Id: RTC:RTStudioTests:Packaging:PyGreeter:v1_2"),
+             qPrintable(r.out));
     r = apt(m_repo, key, nativePackage);
     QVERIFY2(r.code == 0, qPrintable(r.out));
     QVERIFY2(r.out.contains("X-RTC-Types: NativeProbe"), qPrintable(r.out));
@@ -272,12 +300,17 @@ void TestComponentRepository::aptRefusesChangedIndex()
     const QString folder = copy + "/dists/stable/main/binary-" + m_arch + "/";
     QByteArray packages = readAll(folder + "Packages").replace("Version: 1.2", "Version: 9.9");
     QFile file(folder + "Packages");
-    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(packages) == packages.size());
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate)
+            && file.write(packages) == packages.size());
     file.close();
-    QVERIFY(tool("sh", {"-c", "gzip -9nc Packages > Packages.gz && xz -c Packages > Packages.xz"}, folder).code == 0);
+    QVERIFY(tool("sh", {"-c", "gzip -9nc Packages > Packages.gz && xz -c Packages > Packages.xz"},
+                 folder)
+                .code
+            == 0);
     const ToolOutput r = apt(copy, copy + "/archive-key.gpg", pyPackage);
     QVERIFY2(r.code != 0, qPrintable(r.out));
-    QVERIFY2(r.out.contains("Hash Sum mismatch") || r.out.contains("unexpected size"), qPrintable(r.out));
+    QVERIFY2(r.out.contains("Hash Sum mismatch") || r.out.contains("unexpected size"),
+             qPrintable(r.out));
 }
 
 void TestComponentRepository::aptRefusesUnsignedIndex()
@@ -306,8 +339,9 @@ void TestComponentRepository::remove()
 {
     RtctlResult r = repo({"remove", m_repo, pyPackage + "=1.2"});
     QVERIFY2(r.code == 0, qPrintable(r.err));
-    QCOMPARE(r.lines(), QStringList{"removed " + pyPackage + " 1.2 all"});
-    QCOMPARE(repo({"list", m_repo}).lines(), QStringList{nativePackage + " 2.0.0 " + m_arch + " NativeProbe"});
+    QCOMPARE(r.lines(), QStringList {"removed " + pyPackage + " 1.2 all"});
+    QCOMPARE(repo({"list", m_repo}).lines(),
+             QStringList {nativePackage + " 2.0.0 " + m_arch + " NativeProbe"});
     QVERIFY(!QFileInfo::exists(m_repo + "/pool/main/r/" + pyPackage));
     r = repo({"remove", m_repo, pyPackage});
     QCOMPARE(r.code, 1);

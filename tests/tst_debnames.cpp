@@ -31,15 +31,38 @@ void TestDebNames::packageNames_data()
     QTest::addColumn<QString>("name");
     QTest::addColumn<QString>("expected"); // empty: refused
 
-    QTest::newRow("OpenRTM example") << "AIST" << "example" << "ConsoleIn" << "rtc-aist-example-consolein";
-    QTest::newRow("spaces and underscores") << "My Lab" << "Motor_Control" << "Wheel Driver"
+    QTest::newRow("OpenRTM example") << "AIST"
+                                     << "example"
+                                     << "ConsoleIn"
+                                     << "rtc-aist-example-consolein";
+    QTest::newRow("spaces and underscores") << "My Lab"
+                                            << "Motor_Control"
+                                            << "Wheel Driver"
                                             << "rtc-my-lab-motor-control-wheel-driver";
-    QTest::newRow("no category") << "AIST" << "" << "Sensor" << "rtc-aist-sensor";
-    QTest::newRow("plus and dot kept") << "a.b" << "c++" << "X1" << "rtc-a.b-c++-x1";
-    QTest::newRow("runs of others are one dash") << "R&D//Lab" << "?" << "Arm" << "rtc-r-d-lab-arm";
-    QTest::newRow("non-ASCII dropped") << "Ünï" << "カテゴリ" << "Nav" << "rtc-n-nav";
-    QTest::newRow("name without letters") << "AIST" << "x" << "__" << "";
-    QTest::newRow("empty name") << "AIST" << "x" << "" << "";
+    QTest::newRow("no category") << "AIST"
+                                 << ""
+                                 << "Sensor"
+                                 << "rtc-aist-sensor";
+    QTest::newRow("plus and dot kept") << "a.b"
+                                       << "c++"
+                                       << "X1"
+                                       << "rtc-a.b-c++-x1";
+    QTest::newRow("runs of others are one dash") << "R&D//Lab"
+                                                 << "?"
+                                                 << "Arm"
+                                                 << "rtc-r-d-lab-arm";
+    QTest::newRow("non-ASCII dropped") << "Ünï"
+                                       << "カテゴリ"
+                                       << "Nav"
+                                       << "rtc-n-nav";
+    QTest::newRow("name without letters") << "AIST"
+                                          << "x"
+                                          << "__"
+                                          << "";
+    QTest::newRow("empty name") << "AIST"
+                                << "x"
+                                << ""
+                                << "";
 }
 
 void TestDebNames::packageNames()
@@ -65,17 +88,28 @@ void TestDebNames::versions_data()
     QTest::addColumn<QString>("profile");
     QTest::addColumn<QString>("expected"); // empty: refused
 
-    QTest::newRow("plain") << "1.0.0" << "1.0.0";
-    QTest::newRow("leading v") << "v2.1" << "2.1";
-    QTest::newRow("underscores and spaces") << " 1_2 3 " << "1.2.3";
-    QTest::newRow("revision") << "1.0-2" << "1.0-2";
-    QTest::newRow("epoch") << "1:2.0" << "1:2.0";
-    QTest::newRow("tilde") << "2.0~rc1" << "2.0~rc1";
-    QTest::newRow("word") << "beta" << "";
-    QTest::newRow("empty") << "" << "";
-    QTest::newRow("colon without epoch") << "1.0:2" << "";
-    QTest::newRow("slash") << "1.0/2" << "";
-    QTest::newRow("empty revision") << "1.0-" << "";
+    QTest::newRow("plain") << "1.0.0"
+                           << "1.0.0";
+    QTest::newRow("leading v") << "v2.1"
+                               << "2.1";
+    QTest::newRow("underscores and spaces") << " 1_2 3 "
+                                            << "1.2.3";
+    QTest::newRow("revision") << "1.0-2"
+                              << "1.0-2";
+    QTest::newRow("epoch") << "1:2.0"
+                           << "1:2.0";
+    QTest::newRow("tilde") << "2.0~rc1"
+                           << "2.0~rc1";
+    QTest::newRow("word") << "beta"
+                          << "";
+    QTest::newRow("empty") << ""
+                           << "";
+    QTest::newRow("colon without epoch") << "1.0:2"
+                                         << "";
+    QTest::newRow("slash") << "1.0/2"
+                           << "";
+    QTest::newRow("empty revision") << "1.0-"
+                                    << "";
 }
 
 void TestDebNames::versions()
@@ -97,11 +131,13 @@ void TestDebNames::versionOrder_data()
 {
     QTest::addColumn<QString>("a");
     QTest::addColumn<QString>("b");
-    const char *pairs[][2] = {{"1.0", "1.0"},     {"1.0", "1.1"},        {"1.10", "1.9"},   {"1.0~rc1", "1.0"},
-                              {"1.0", "1.0-1"},   {"1:0.1", "9.9"},      {"1.0a", "1.0+"},  {"1.0.0", "1.0"},
-                              {"2.0-1", "2.0-10"}, {"1.0~~", "1.0~"},    {"001", "1"},      {"1.a", "1.B"}};
+    const char *pairs[][2]
+        = {{"1.0", "1.0"},      {"1.0", "1.1"},    {"1.10", "1.9"},  {"1.0~rc1", "1.0"},
+           {"1.0", "1.0-1"},    {"1:0.1", "9.9"},  {"1.0a", "1.0+"}, {"1.0.0", "1.0"},
+           {"2.0-1", "2.0-10"}, {"1.0~~", "1.0~"}, {"001", "1"},     {"1.a", "1.B"}};
     for (const auto &pair : pairs)
-        QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(pair[0], pair[1]))) << pair[0] << pair[1];
+        QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(pair[0], pair[1])))
+            << pair[0] << pair[1];
 }
 
 void TestDebNames::versionOrder()
@@ -119,8 +155,9 @@ void TestDebNames::versionOrder()
 
 void TestDebNames::controlParagraphs()
 {
-    const QByteArray text = "Package: rtc-a-b-c\nversion: 1.0\nDescription: short\n line two\n .\n line four\n\n"
-                            "Package: second\nVersion: 2\n";
+    const QByteArray text
+        = "Package: rtc-a-b-c\nversion: 1.0\nDescription: short\n line two\n .\n line four\n\n"
+          "Package: second\nVersion: 2\n";
     QString error;
     const std::optional<QList<DebControl>> all = DebControl::parseAll(text, &error);
     QVERIFY2(all, qPrintable(error));
@@ -128,7 +165,7 @@ void TestDebNames::controlParagraphs()
     const DebControl &first = all->first();
     QCOMPARE(first.value("Version"), QStringLiteral("1.0")); // names without regard to case
     QCOMPARE(first.value("description"), QStringLiteral("short\n line two\n .\n line four"));
-    QCOMPARE(first.names(), (QStringList{"Package", "version", "Description"}));
+    QCOMPARE(first.names(), (QStringList {"Package", "version", "Description"}));
     QCOMPARE(all->at(1).value("Package"), QStringLiteral("second"));
     QCOMPARE(first.toText(), text.left(text.indexOf("\n\n") + 1));
     DebControl edited = first;
