@@ -62,6 +62,7 @@ private slots:
     void files();
     void dependsOnLinkedLibraries();
     void dependsGiven();
+    void aptWouldInstall();
     void managerFindsInstalledModule();
     void pythonComponent();
     void refused_data();
@@ -167,6 +168,18 @@ void TestComponentPackage::dependsGiven()
     const QString deb = m_work.filePath("given.deb");
     QVERIFY(field(deb, "Depends").endsWith(", rtc-rtstudiotests-test-other (>= 2.0)"));
     QCOMPARE(field(deb, "Maintainer"), QStringLiteral("Robot Team <team@example.org>"));
+}
+
+void TestComponentPackage::aptWouldInstall()
+{
+    // apt takes the file as `apt install ./file.deb` does, its dependencies met on this machine.
+    QProcess apt;
+    apt.setProcessChannelMode(QProcess::MergedChannels);
+    apt.start("apt-get", {"install", "--simulate", "-o", "Debug::NoLocking=1", m_deb});
+    QVERIFY(apt.waitForFinished(120000));
+    const QString output = QString::fromUtf8(apt.readAll());
+    QVERIFY2(apt.exitCode() == 0, qPrintable(output));
+    QVERIFY2(output.contains("Inst rtc-rtstudiotests-test-sdkgreeter (1.0.0"), qPrintable(output));
 }
 
 void TestComponentPackage::managerFindsInstalledModule()
