@@ -13,6 +13,6 @@ if(TARGET rtsdk_stage)
 endif()
 set_tests_properties(tst_componentpackage PROPERTIES LABELS package TIMEOUT 600)
 
-rtstudio_add_test(tst_componentrepository SOURCES tst_componentrepository.cpp LIBS rtstudio_rtctlrunner)
+rtstudio_add_test(tst_componentrepository SOURCES tst_componentrepository.cpp LIBS rtstudio_rtctlrunner rtpackages)
 add_dependencies(tst_componentrepository rtctl)
 set_tests_properties(tst_componentrepository PROPERTIES LABELS package)

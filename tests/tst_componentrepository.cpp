@@ -3,8 +3,13 @@
 // home, two packages published, listed, shown, refused twice, removed; then apt-get itself, with
 // private state folders and the exported key as signed-by, updates from it and finds the packages,
 // and refuses the index once a Packages file is changed, once it is unsigned, and when signed-by
-// names another key. A signing failure leaves the repository as it was.
+// names another key. A signing failure leaves the repository as it was. The library's verifier
+// (for managers that install) follows apt's order: InRelease through gpgv, then indexes, then
+// packages, each refused when changed.
 #include "rtctlrunner.h"
+
+#include <releaseverifier.h>
+#include <repository.h>
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -70,6 +75,9 @@ private slots:
     void aptRefusesChangedIndex();
     void aptRefusesUnsignedIndex();
     void aptRefusesOtherKey();
+    void verifierFollowsTrust();
+    void verifierRefuses_data();
+    void verifierRefuses();
     void remove();
 
 private:
@@ -333,6 +341,80 @@ void TestComponentRepository::aptRefusesOtherKey()
     const ToolOutput r = apt(m_repo, other + "/archive-key.gpg", pyPackage);
     QVERIFY2(r.code != 0, qPrintable(r.out));
     QVERIFY2(r.out.contains("NO_PUBKEY") || r.out.contains("not signed"), qPrintable(r.out));
+}
+
+void TestComponentRepository::verifierFollowsTrust()
+{
+    QString error;
+    const std::optional<Packages::VerifiedRelease> release = Packages::VerifiedRelease::verify(
+        readAll(m_repo + "/dists/stable/InRelease"), m_repo + "/archive-key.gpg", &error);
+    QVERIFY2(release, qPrintable(error));
+    QCOMPARE(release->value("Suite"), QStringLiteral("stable"));
+    const QString index = "main/binary-" + m_arch + "/Packages";
+    QVERIFY2(release->check(index, readAll(m_repo + "/dists/stable/" + index), &error),
+             qPrintable(error));
+    // The library reads the same entries, and the pool's file matches its entry.
+    Packages::Repository repository(m_repo);
+    QVERIFY2(repository.open(&error), qPrintable(error));
+    const std::optional<QList<Packages::IndexEntry>> entries = repository.packages(&error);
+    QVERIFY2(entries && entries->size() == 2, qPrintable(error));
+    for (const Packages::IndexEntry &entry : *entries)
+        QVERIFY2(Packages::checkPackageFile(entry, m_repo + '/' + entry.filename(), &error),
+                 qPrintable(error));
+}
+
+void TestComponentRepository::verifierRefuses_data()
+{
+    QTest::addColumn<QString>("change"); // what is altered
+    QTest::addColumn<QString>("message");
+    QTest::newRow("InRelease changed") << "inrelease"
+                                       << "BAD signature";
+    QTest::newRow("another key") << "key"
+                                 << "gpgv";
+    QTest::newRow("Packages changed") << "packages"
+                                      << "does not match Release";
+    QTest::newRow("package byte flipped") << "deb"
+                                          << "does not match the index";
+}
+
+void TestComponentRepository::verifierRefuses()
+{
+    QFETCH(QString, change);
+    QFETCH(QString, message);
+    QString error;
+    QByteArray inRelease = readAll(m_repo + "/dists/stable/InRelease");
+    if (change == "inrelease")
+        inRelease.replace("Suite: stable", "Suite: stabel");
+    const QString keyring = change == "key" ? m_work.filePath("otherrepo/archive-key.gpg")
+                                            : m_repo + "/archive-key.gpg";
+    const std::optional<Packages::VerifiedRelease> release
+        = Packages::VerifiedRelease::verify(inRelease, keyring, &error);
+    if (change == "inrelease" || change == "key") {
+        QVERIFY(!release);
+        QVERIFY2(error.contains(message) && error.contains(keyring), qPrintable(error));
+        return;
+    }
+    QVERIFY2(release, qPrintable(error));
+    const QString index = "main/binary-" + m_arch + "/Packages";
+    QByteArray packages = readAll(m_repo + "/dists/stable/" + index);
+    if (change == "packages") {
+        packages.replace("Version: 2.0.0", "Version: 2.0.1");
+        QVERIFY(!release->check(index, packages, &error));
+        QVERIFY2(error.contains(index) && error.contains(message), qPrintable(error));
+        return;
+    }
+    const std::optional<QList<Packages::DebControl>> paragraphs
+        = Packages::DebControl::parseAll(packages);
+    QVERIFY(paragraphs && !paragraphs->isEmpty());
+    const Packages::IndexEntry entry {paragraphs->first()};
+    QByteArray deb = readAll(m_repo + '/' + entry.filename());
+    deb[deb.size() / 2] = char(deb.at(deb.size() / 2) ^ 1);
+    const QString flipped = m_work.filePath("flipped.deb");
+    QFile file(flipped);
+    QVERIFY(file.open(QIODevice::WriteOnly) && file.write(deb) == deb.size());
+    file.close();
+    QVERIFY(!Packages::checkPackageFile(entry, flipped, &error));
+    QVERIFY2(error.contains(entry.package()) && error.contains(message), qPrintable(error));
 }
 
 void TestComponentRepository::remove()
