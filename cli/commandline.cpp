@@ -3,7 +3,9 @@
 #include "buildcommand.h"
 #include "gencommand.h"
 #include "localcommand.h"
+#include "packagecommand.h"
 #include "profilecommand.h"
+#include "repocommand.h"
 #include "rtcatcommand.h"
 #include "rtconfcommand.h"
 #include "rtconnectcommand.h"
@@ -84,6 +86,8 @@ std::unique_ptr<CommandLine> createCommandLine()
     commandLine->addCommand(std::make_unique<ProfileCommand>());
     commandLine->addCommand(std::make_unique<GenCommand>());
     commandLine->addCommand(std::make_unique<BuildCommand>());
+    commandLine->addCommand(std::make_unique<PackageCommand>());
+    commandLine->addCommand(std::make_unique<RepoCommand>());
     commandLine->addCommand(std::make_unique<RtLsCommand>());
     commandLine->addCommand(std::make_unique<RtCatCommand>());
     commandLine->addCommand(std::make_unique<RtFindCommand>());

@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: MIT
 # The client and deployment libraries for other programs (the deployment paper's "embed to
 # applications", rtctree's role for rtshell): one shared library with the profile readers, the RTC
-# tree, component and manager proxies, port taps and the deployment engine (restore, start, stop,
-# teardown, cryo, drift, the local runtime); their headers under include/rtstudio; and a CMake
-# package:
+# tree, component and manager proxies, port taps, the deployment engine (restore, start, stop,
+# teardown, cryo, drift, the local runtime) and component packages and their repositories
+# (packages/); their headers under include/rtstudio; and a CMake package:
 #
 #   find_package(RTStudioClient REQUIRED)
 #   target_link_libraries(MyTool PRIVATE RTStudio::Client)
@@ -17,13 +17,14 @@ set_target_properties(rtstudio_client PROPERTIES OUTPUT_NAME rtstudio_client LIN
 # Every object of the three static libraries, and what they link.
 target_sources(rtstudio_client PRIVATE client.cpp)
 target_link_libraries(rtstudio_client PRIVATE
-    -Wl,--whole-archive $<TARGET_FILE:rtdeploy> $<TARGET_FILE:rtcorba> $<TARGET_FILE:rtprofile>
+    -Wl,--whole-archive $<TARGET_FILE:rtdeploy> $<TARGET_FILE:rtcorba> $<TARGET_FILE:rtpackages>
+    $<TARGET_FILE:rtprofile>
     -Wl,--no-whole-archive
     rtcorba_stubs yaml-cpp rtstudio_omniorb Qt6::Core)
-add_dependencies(rtstudio_client rtdeploy rtcorba rtprofile)
+add_dependencies(rtstudio_client rtdeploy rtcorba rtpackages rtprofile)
 
 set(rtstudio_client_headers "")
-foreach(dir profile corba corba/deployment)
+foreach(dir profile corba corba/deployment packages)
     file(GLOB headers CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/${dir}/*.h")
     list(APPEND rtstudio_client_headers ${headers})
 endforeach()

@@ -29,18 +29,48 @@ std::string baseName(const std::string &path)
     return name;
 }
 
+bool isDirectory(const std::string &path)
+{
+    struct stat info{};
+    return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
+}
+
+/// The folders modules are looked for in: manager.modules.load_path, then the folder of every
+/// component package (rtctl package) below manager.modules.package_path, by package name.
+std::vector<std::string> moduleDirs(const Properties &config)
+{
+    std::vector<std::string> dirs = split(config.value("manager.modules.load_path", "."), ',');
+    for (const std::string &root : split(config.value("manager.modules.package_path", RTSTUDIO_COMPONENT_PACKAGES_DIR), ',')) {
+        DIR *d = opendir(root.c_str());
+        if (!d)
+            continue;
+        std::vector<std::string> packages;
+        while (dirent *entry = readdir(d)) {
+            const std::string name = entry->d_name;
+            if (name.front() != '.' && isDirectory(root + '/' + name))
+                packages.push_back(root + '/' + name);
+        }
+        closedir(d);
+        std::sort(packages.begin(), packages.end());
+        dirs.insert(dirs.end(), packages.begin(), packages.end());
+    }
+    return dirs;
+}
+
 } // namespace
 
 std::string Manager::findModuleFile(const std::string &requested) const
 {
     if (requested.empty())
         return {};
-    // Relative names are looked up in manager.modules.load_path, with or without ".so".
+    // Relative names are looked up in manager.modules.load_path and the installed component
+    // packages' folders, with or without ".so".
     std::vector<std::string> candidates;
+    const std::vector<std::string> dirs = moduleDirs(m_config);
     for (const std::string &name : {requested, requested + ".so"}) {
         if (name.front() == '/')
             candidates.push_back(name);
-        for (const std::string &dir : split(m_config.value("manager.modules.load_path", "."), ','))
+        for (const std::string &dir : dirs)
             candidates.push_back(dir + '/' + name);
     }
     auto found = std::find_if(candidates.begin(), candidates.end(), isFile);
@@ -134,7 +164,7 @@ std::vector<Properties> Manager::loadableModules()
 {
     const Properties config = configuration();
     std::vector<std::string> files;
-    for (const std::string &dir : split(config.value("manager.modules.load_path", "."), ',')) {
+    for (const std::string &dir : moduleDirs(config)) {
         DIR *d = opendir(dir.c_str());
         if (!d)
             continue;

@@ -4,6 +4,8 @@
 # Installs only what is missing; safe to run again; never asks questions.
 set -euo pipefail
 
+# dpkg-dev … apt: component packages (dpkg-deb, dpkg-shlibdeps, objdump) and signed repositories
+# (gpg, gpgv; apt-get reads them in the tests).
 packages=(
     build-essential cmake ninja-build pkg-config git
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev libqt6svg6 qt6-qpa-plugins libgl-dev
@@ -11,6 +13,7 @@ packages=(
     libomniorb4-dev omniidl omniorb omniorb-nameserver omniorb-idl
     libkainjow-mustache-dev libyaml-cpp-dev libgraphviz-dev
     xvfb xauth fonts-dejavu-core ccache iproute2
+    dpkg-dev binutils gpg gpgv gpg-agent gpgconf xz-utils gzip apt
 )
 
 missing=()

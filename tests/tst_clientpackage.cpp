@@ -48,6 +48,9 @@ void TestClientPackage::initTestCase()
     QCOMPARE(run(CMAKE_COMMAND, {"--install", RTSTUDIO_BUILD_DIR, "--prefix", m_prefix.path()}, &output), 0);
     QVERIFY(QFile::exists(m_prefix.filePath("lib/cmake/RTStudioClient/RTStudioClientConfig.cmake")));
     QVERIFY(QFile::exists(m_prefix.filePath("include/rtstudio/restorer.h")));
+    // Component packages and repositories (packages/) are part of the client library's API.
+    QVERIFY(QFile::exists(m_prefix.filePath("include/rtstudio/repository.h")));
+    QVERIFY(QFile::exists(m_prefix.filePath("include/rtstudio/componentpackager.h")));
 }
 
 void TestClientPackage::headersKeepOmniOrbInside()

@@ -1,0 +1,18 @@
+# SPDX-License-Identifier: MIT
+# Component packages (rtctl package) and Debian repositories of them (rtctl repo) that apt-get reads.
+rtstudio_add_test(tst_debnames SOURCES tst_debnames.cpp LIBS rtpackages)
+
+rtstudio_add_test(tst_componentpackage SOURCES tst_componentpackage.cpp
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject)
+target_compile_definitions(tst_componentpackage PRIVATE
+    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
+add_dependencies(tst_componentpackage rtctl rtsdk rtmanager)
+if(TARGET rtsdk_stage)
+    add_dependencies(tst_componentpackage rtsdk_stage)
+endif()
+set_tests_properties(tst_componentpackage PROPERTIES LABELS package TIMEOUT 600)
+
+rtstudio_add_test(tst_componentrepository SOURCES tst_componentrepository.cpp LIBS rtstudio_rtctlrunner rtpackages)
+add_dependencies(tst_componentrepository rtctl)
+set_tests_properties(tst_componentrepository PROPERTIES LABELS package)
