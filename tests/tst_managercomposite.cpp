@@ -103,6 +103,8 @@ private slots:
     void activationRunsMembersOnOneContext();
     void exportedPortsCarryData();
     void removedMemberRunsOnItsOwnAgain();
+    void exportedPortsFollowConfiguration();
+    void exitReleasesMembers();
     void unknownMemberIsRefused();
     void rtctlShowsComposite();
 
@@ -329,6 +331,47 @@ void TestManagerComposite::removedMemberRunsOnItsOwnAgain()
     QCOMPARE(memberNames(members.in()), QStringList({"ConsoleIn0", "ConsoleOut0"}));
     QVERIFY(!own->is_running());
     QVERIFY(out->is_alive(shared));
+}
+
+void TestManagerComposite::exportedPortsFollowConfiguration()
+{
+    // Written as OpenRTM-aist's tools write it; a three-part name keeps its first and last parts.
+    SDOPackage::Configuration_var configuration = m_composite->get_configuration();
+    SDOPackage::ConfigurationSet set;
+    set.id = "default";
+    set.description = "";
+    setNv(set.configuration_data, "exported_ports", "ConsoleOut0.extra.in");
+    QVERIFY(configuration->set_configuration_set_values(set));
+    QTRY_COMPARE(portNames(m_composite), QStringList({"ConsoleOut0.in"}));
+    SDOPackage::OrganizationList_var organizations = m_composite->get_owned_organizations();
+    SDOPackage::OrganizationProperty_var property = organizations[0]->get_organization_property();
+    QCOMPARE(nv(property->properties, "exported_ports"), QStringLiteral("ConsoleOut0.in"));
+}
+
+void TestManagerComposite::exitReleasesMembers()
+{
+    RTC::ExecutionContext_var shared = ownContext(m_composite);
+    QCOMPARE(shared->activate_component(m_composite), RTC::RTC_OK);
+    RTC::RTObject_var in = component("ConsoleIn0");
+    QTRY_COMPARE(stateIn(shared, in), RTC::ACTIVE_STATE);
+
+    // An active composite that exits stops its members and gives them their own contexts back.
+    QCOMPARE(m_composite->exit(), RTC::RTC_OK);
+    QTRY_VERIFY(CORBA::is_nil(RTC::RTObject_var(component(compositeName))));
+    for (const char *name : {"ConsoleIn0", "ConsoleOut0"}) {
+        RTC::RTObject_var member = component(name);
+        RTC::ExecutionContext_var own = ownContext(member);
+        QVERIFY2(own->is_running(), name);
+        QCOMPARE(stateIn(own, member), RTC::INACTIVE_STATE);
+        RTC::ExecutionContextList_var participating = member->get_participating_contexts();
+        QCOMPARE(participating->length(), CORBA::ULong(0));
+        SDOPackage::OrganizationList_var joined = member->get_organizations();
+        QCOMPARE(joined->length(), CORBA::ULong(0));
+    }
+    // A member can now go on its own.
+    QCOMPARE(RTC::ExecutionContext_var(ownContext(in))->activate_component(in), RTC::RTC_OK);
+    const int sent = statusNumber(in, "sent_count");
+    QTRY_VERIFY(statusNumber(in, "sent_count") > sent + 3);
 }
 
 void TestManagerComposite::unknownMemberIsRefused()
