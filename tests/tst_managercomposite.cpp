@@ -331,6 +331,16 @@ void TestManagerComposite::removedMemberRunsOnItsOwnAgain()
     QCOMPARE(memberNames(members.in()), QStringList({"ConsoleIn0", "ConsoleOut0"}));
     QVERIFY(!own->is_running());
     QVERIFY(out->is_alive(shared));
+
+    // A member does not join twice, and the composite never joins itself.
+    again.length(2);
+    again[1] = SDOPackage::SDO::_duplicate(m_composite);
+    organizations[0]->add_members(again);
+    members = organizations[0]->get_members();
+    QCOMPARE(memberNames(members.in()), QStringList({"ConsoleIn0", "ConsoleOut0"}));
+    QVERIFY(shared->is_running());
+    RTC::ExecutionContextProfile_var ecProfile = RTC::ExecutionContextService::_narrow(shared)->get_profile();
+    QCOMPARE(ecProfile->participants.length(), CORBA::ULong(3));
 }
 
 void TestManagerComposite::exportedPortsFollowConfiguration()

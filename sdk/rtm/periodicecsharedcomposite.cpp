@@ -159,7 +159,7 @@ CORBA::Boolean PeriodicECOrganization::add_members(const SDOList &sdo_list)
     SDOList joined;
     for (CORBA::ULong i = 0; i < sdo_list.length(); ++i) {
         OpenRTM::DataFlowComponent_var dfc;
-        if (!sdoToDFC(sdo_list[i], dfc.out()))
+        if (!sdoToDFC(sdo_list[i], dfc.out()) || isMemberOrOwner(dfc.in()))
             continue;
         Member member(dfc.in());
         stopOwnedEC(member);
@@ -359,6 +359,21 @@ void PeriodicECOrganization::updateDelegatedPorts()
     }
     m_expPorts = newPorts;
     publishProperties();
+}
+
+bool PeriodicECOrganization::isMemberOrOwner(RTC::RTObject_ptr rtobj)
+{
+    // Joining twice would stop and attach it twice; the composite itself must keep its context.
+    try {
+        if (rtobj->_is_equivalent(RTC::RTObject_var(m_rtobj->getObjRef())))
+            return true;
+        for (const Member &member : m_rtcMembers) {
+            if (member.rtobj_->_is_equivalent(rtobj))
+                return true;
+        }
+    } catch (const CORBA::Exception &) {
+    }
+    return false;
 }
 
 void PeriodicECOrganization::publishProperties()

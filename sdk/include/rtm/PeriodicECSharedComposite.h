@@ -92,6 +92,7 @@ protected:
     PortList m_expPorts;
 
 private:
+    bool isMemberOrOwner(RTC::RTObject_ptr rtobj);
     void publishProperties();
 };
 } // namespace SDOPackage
