@@ -105,6 +105,7 @@ private slots:
     void removedMemberRunsOnItsOwnAgain();
     void exportedPortsFollowConfiguration();
     void exitReleasesMembers();
+    void requestGivesExportedPorts();
     void unknownMemberIsRefused();
     void rtctlShowsComposite();
 
@@ -356,6 +357,22 @@ void TestManagerComposite::exportedPortsFollowConfiguration()
     SDOPackage::OrganizationList_var organizations = m_composite->get_owned_organizations();
     SDOPackage::OrganizationProperty_var property = organizations[0]->get_organization_property();
     QCOMPARE(nv(property->properties, "exported_ports"), QStringLiteral("ConsoleOut0.in"));
+    SDOPackage::ConfigurationSet_var stored = configuration->get_configuration_set("default");
+    QCOMPARE(nv(stored->configuration_data, "exported_ports"), QStringLiteral("ConsoleOut0.in"));
+}
+
+void TestManagerComposite::requestGivesExportedPorts()
+{
+    // As OpenRTM-aist's manager: `exported_ports` in the request becomes the default set's value.
+    RTC::RTObject_var feed = m_manager->create_component("ConsoleIn?instance_name=Feed0");
+    QVERIFY(!CORBA::is_nil(feed));
+    RTC::RTObject_var second = m_manager->create_component(
+        "PeriodicECSharedComposite?instance_name=Second0&conf.default.members=Feed0&exported_ports=Feed0.old.out");
+    QVERIFY(!CORBA::is_nil(second));
+    QCOMPARE(portNames(second), QStringList({"Feed0.out"}));
+    SDOPackage::Configuration_var configuration = second->get_configuration();
+    SDOPackage::ConfigurationSet_var set = configuration->get_configuration_set("default");
+    QCOMPARE(nv(set->configuration_data, "exported_ports"), QStringLiteral("Feed0.out"));
 }
 
 void TestManagerComposite::exitReleasesMembers()

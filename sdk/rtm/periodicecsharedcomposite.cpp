@@ -9,6 +9,7 @@
 
 #include <corbautil.h>
 #include <manager.h>
+#include <properties.h>
 
 #include <algorithm>
 #include <iterator>
@@ -22,19 +23,10 @@ bool toMemberList(std::vector<std::string> &members, const char *text)
     return true;
 }
 
-/**
- * Port names as the manager and SDO configuration normalise them: `<instance>.<port>`, where a
- * longer dotted name keeps its first and last parts (names from before the instance prefix).
- */
+/// The port names of an `exported_ports` value, as the manager and SDO configuration store them.
 std::vector<std::string> exportedPortNames(const std::string &text)
 {
-    std::vector<std::string> names;
-    for (const std::string &entry : coil::split(text, ",", true)) {
-        const std::string name = coil::eraseBlank(entry);
-        const std::vector<std::string> parts = coil::split(name, ".");
-        names.push_back(parts.size() > 2 ? parts.front() + "." + parts.back() : name);
-    }
-    return names;
+    return coil::split(Runtime::exportedPortList(text), ",", true);
 }
 
 /// This process's component called @p name; nil when there is none.
