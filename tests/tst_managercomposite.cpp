@@ -106,6 +106,7 @@ private slots:
     void exportedPortsFollowConfiguration();
     void exitReleasesMembers();
     void requestGivesExportedPorts();
+    void composedAfterCreation();
     void unknownMemberIsRefused();
     void rtctlShowsComposite();
 
@@ -399,6 +400,34 @@ void TestManagerComposite::exitReleasesMembers()
     QCOMPARE(RTC::ExecutionContext_var(ownContext(in))->activate_component(in), RTC::RTC_OK);
     const int sent = statusNumber(in, "sent_count");
     QTRY_VERIFY(statusNumber(in, "sent_count") > sent + 3);
+}
+
+void TestManagerComposite::composedAfterCreation()
+{
+    // rtshell's rtcomp: an empty composite, then the exported ports through its configuration,
+    // then the members through its organization.
+    RTC::RTObject_var source = m_manager->create_component("ConsoleIn?instance_name=Loose0");
+    RTC::RTObject_var composite = m_manager->create_component("PeriodicECSharedComposite?&instance_name=Later0");
+    QVERIFY(!CORBA::is_nil(source) && !CORBA::is_nil(composite));
+    QCOMPARE(portNames(composite), QStringList());
+    SDOPackage::Configuration_var configuration = composite->get_configuration();
+    SDOPackage::ConfigurationSet set;
+    set.id = "default";
+    set.description = "";
+    setNv(set.configuration_data, "exported_ports", "Loose0.out");
+    QVERIFY(configuration->set_configuration_set_values(set));
+    QVERIFY(configuration->activate_configuration_set("default"));
+    SDOPackage::OrganizationList_var organizations = composite->get_owned_organizations();
+    QCOMPARE(organizations->length(), CORBA::ULong(1));
+    SDOPackage::SDOList added;
+    added.length(1);
+    added[0] = SDOPackage::SDO::_duplicate(source);
+    QVERIFY(organizations[0]->add_members(added));
+    QCOMPARE(portNames(composite), QStringList({"Loose0.out"}));
+    RTC::ExecutionContext_var shared = ownContext(composite);
+    QCOMPARE(shared->activate_component(composite), RTC::RTC_OK);
+    QTRY_VERIFY(statusNumber(source, "sent_count") > 3);
+    QVERIFY(!RTC::ExecutionContext_var(ownContext(source))->is_running());
 }
 
 void TestManagerComposite::unknownMemberIsRefused()
