@@ -147,6 +147,7 @@ Organization_ptr PeriodicECOrganization::getObjRef()
 
 CORBA::Boolean PeriodicECOrganization::add_members(const SDOList &sdo_list)
 {
+    std::lock_guard<std::recursive_mutex> lock(m_memberMutex);
     updateExportedPortsList();
     SDOList joined;
     for (CORBA::ULong i = 0; i < sdo_list.length(); ++i) {
@@ -170,6 +171,7 @@ CORBA::Boolean PeriodicECOrganization::add_members(const SDOList &sdo_list)
 
 CORBA::Boolean PeriodicECOrganization::set_members(const SDOList &sdo_list)
 {
+    std::lock_guard<std::recursive_mutex> lock(m_memberMutex);
     removeAllMembers();
     return add_members(sdo_list);
 }
@@ -178,6 +180,7 @@ CORBA::Boolean PeriodicECOrganization::remove_member(const char *id)
 {
     if (id == nullptr)
         throw InvalidParameter("nil member id");
+    std::lock_guard<std::recursive_mutex> lock(m_memberMutex);
     for (MemIt it = m_rtcMembers.begin(); it != m_rtcMembers.end(); ++it) {
         if (std::string(it->profile_->instance_name.in()) != id)
             continue;
@@ -196,6 +199,7 @@ CORBA::Boolean PeriodicECOrganization::remove_member(const char *id)
 
 void PeriodicECOrganization::removeAllMembers()
 {
+    std::lock_guard<std::recursive_mutex> lock(m_memberMutex);
     updateExportedPortsList();
     for (Member &member : m_rtcMembers) {
         removePort(member, m_expPorts);
@@ -335,6 +339,7 @@ void PeriodicECOrganization::updateExportedPortsList()
 
 void PeriodicECOrganization::updateDelegatedPorts()
 {
+    std::lock_guard<std::recursive_mutex> lock(m_memberMutex);
     PortList oldPorts = m_expPorts;
     std::sort(oldPorts.begin(), oldPorts.end());
     PortList newPorts = exportedPortNames(m_rtobj->getProperties().getProperty("conf.default.exported_ports"));
@@ -459,6 +464,8 @@ ReturnCode_t PeriodicECSharedComposite::onInitialize()
 
 ReturnCode_t PeriodicECSharedComposite::onActivated(RTC::UniqueId /*exec_handle*/)
 {
+    if (m_org == nullptr)
+        return RTC_OK;
     const SDOPackage::SDOList sdos = m_org->members();
     for (CORBA::ULong i = 0; i < sdos.length(); ++i) {
         RTObject_var member = ::RTC::RTObject::_narrow(sdos[i]);
@@ -479,6 +486,8 @@ void PeriodicECSharedComposite::activateChildComp(const RTC::RTObject_ptr rtobj)
 
 ReturnCode_t PeriodicECSharedComposite::onDeactivated(RTC::UniqueId /*exec_handle*/)
 {
+    if (m_org == nullptr)
+        return RTC_OK;
     const SDOPackage::SDOList sdos = m_org->members();
     for (CORBA::ULong i = 0; i < sdos.length(); ++i) {
         RTObject_var member = ::RTC::RTObject::_narrow(sdos[i]);
@@ -498,6 +507,8 @@ void PeriodicECSharedComposite::deactivateChildComp(const RTC::RTObject_ptr rtob
 
 ReturnCode_t PeriodicECSharedComposite::onReset(RTC::UniqueId /*exec_handle*/)
 {
+    if (m_org == nullptr)
+        return RTC_OK;
     const SDOPackage::SDOList sdos = m_org->members();
     for (CORBA::ULong i = 0; i < sdos.length(); ++i) {
         RTObject_var member = ::RTC::RTObject::_narrow(sdos[i]);

@@ -11,6 +11,7 @@
 
 #include <rtmruntime/organization.h>
 
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,6 +95,9 @@ protected:
 private:
     bool isMemberOrOwner(RTC::RTObject_ptr rtobj);
     void publishProperties();
+
+    /// Members change through CORBA calls and configuration listeners on different threads.
+    std::recursive_mutex m_memberMutex;
 };
 } // namespace SDOPackage
 
