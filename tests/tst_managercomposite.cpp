@@ -456,6 +456,12 @@ void TestManagerComposite::rtctlShowsComposite()
     QVERIFY2(cat.code == 0, qPrintable(cat.err));
     QVERIFY2(cat.out.contains("composite.PeriodicECShared"), qPrintable(cat.out));
     QVERIFY2(cat.out.contains("DataOutPort: out") && cat.out.contains("DataInPort: in"), qPrintable(cat.out));
+    // As rtshell's rtcat: the composite lists its members, a member names its composite.
+    QVERIFY2(cat.out.contains(QRegularExpression("Type +Composite\n")), qPrintable(cat.out));
+    QVERIFY2(cat.out.contains(QRegularExpression("Members +ConsoleIn0, ConsoleOut0\n")), qPrintable(cat.out));
+    const RtctlResult member = runRtctlAt(host, {"cat", "ConsoleOut0.rtc"});
+    QVERIFY2(member.out.contains(QRegularExpression("Parent +PeriodicECSharedComposite0\n")), qPrintable(member.out));
+    QVERIFY2(member.out.contains(QRegularExpression("Type +Monolithic composite member\n")), qPrintable(member.out));
     // Its ports are the members' exported ones, named after their owners.
     const RtctlResult json = runRtctlAt(host, {"cat", "--json", "PeriodicECSharedComposite0.rtc"});
     QVERIFY2(json.code == 0, qPrintable(json.err));
@@ -463,6 +469,8 @@ void TestManagerComposite::rtctlShowsComposite()
     for (const QJsonValue &port : json.json().object().value("ports").toArray())
         fullNames << port.toObject().value("fullName").toString();
     QCOMPARE(fullNames, QStringList({"ConsoleIn0.out", "ConsoleOut0.in"}));
+    QCOMPARE(json.json().object().value("members").toVariant().toStringList(),
+             QStringList({"ConsoleIn0", "ConsoleOut0"}));
 }
 
 QTEST_GUILESS_MAIN(TestManagerComposite)
