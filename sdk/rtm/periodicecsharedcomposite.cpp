@@ -154,12 +154,18 @@ CORBA::Boolean PeriodicECOrganization::add_members(const SDOList &sdo_list)
         OpenRTM::DataFlowComponent_var dfc;
         if (!sdoToDFC(sdo_list[i], dfc.out()) || isMemberOrOwner(dfc.in()))
             continue;
-        Member member(dfc.in());
-        stopOwnedEC(member);
-        addOrganizationToTarget(member);
-        addParticipantToEC(member);
-        addPort(member, m_expPorts);
-        m_rtcMembers.push_back(member);
+        try {
+            Member member(dfc.in());
+            stopOwnedEC(member);
+            addOrganizationToTarget(member);
+            addParticipantToEC(member);
+            addPort(member, m_expPorts);
+            m_rtcMembers.push_back(member);
+        } catch (const CORBA::Exception &) {
+            // Its profile could not be read (the member went away): it does not join.
+            RTC_WARN(("a member did not answer and was left out"));
+            continue;
+        }
         const CORBA::ULong n = joined.length();
         joined.length(n + 1);
         joined[n] = SDO::_duplicate(sdo_list[i]);
@@ -443,18 +449,22 @@ ReturnCode_t PeriodicECSharedComposite::onInitialize()
 
     std::vector<std::string> names;
     std::vector<std::string> unknown;
+    bool self = false;
     for (const std::string &entry : m_members) {
         const std::string name = coil::eraseBothEndsBlank(coil::replaceString(entry, "|", ""));
         if (name.empty())
             continue;
         names.push_back(name);
-        if (name == getInstanceName() || CORBA::is_nil(RTObject_var(localComponent(m_pManager, name))))
+        if (name == getInstanceName())
+            self = true;
+        else if (CORBA::is_nil(RTObject_var(localComponent(m_pManager, name))))
             unknown.push_back(name);
     }
     m_members = names;
-    if (!unknown.empty()) {
-        const std::string reason = "no component named '" + coil::flatten(unknown, "', '") + "' to be a member of "
-                                   + getInstanceName();
+    if (self || !unknown.empty()) {
+        const std::string reason = self ? std::string("a composite cannot be its own member")
+                                        : "no component named '" + coil::flatten(unknown, "', '")
+                                              + "' to be a member of " + getInstanceName();
         RTC_ERROR(("%s", reason.c_str()));
         setInitializeError(reason);
         return RTC_ERROR;
