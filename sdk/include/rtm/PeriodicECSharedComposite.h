@@ -4,6 +4,7 @@
 #ifndef RTC_PERIODICECSHAREDCOMPOSITE_H
 #define RTC_PERIODICECSHAREDCOMPOSITE_H
 
+#include <rtm/PeriodicExecutionContext.h>
 #include <rtm/RTC.h>
 #include <rtm/RTObject.h>
 #include <rtm/SystemLogger.h>
