@@ -55,6 +55,17 @@ QString ecLine(int index, const ExecutionContextInfo &ec)
         .arg(stateName(ec.state));
 }
 
+/// Where the component stands among composites; nothing for one that cannot say (no SDO
+/// organizations), so that its profile still shows.
+OrganizationInfo organizationsOf(const ComponentProxy &rtc)
+{
+    try {
+        return rtc.organizations();
+    } catch (const Error &) {
+        return {};
+    }
+}
+
 } // namespace
 
 QString RtCatCommand::summary() const
@@ -97,6 +108,18 @@ void RtCatCommand::printComponent(const ComponentProxy &rtc, const QString &port
     printField(QStringLiteral("Type name"), info.typeName, out);
     printField(QStringLiteral("Vendor"), info.vendor, out);
     printField(QStringLiteral("Version"), info.version, out);
+    // As rtshell's rtcat, composites and their members say so (plain components keep their lines).
+    const OrganizationInfo organizations = organizationsOf(rtc);
+    for (const QString &parent : organizations.parents)
+        printField(QStringLiteral("Parent"), parent, out);
+    if (organizations.composite)
+        printField(QStringLiteral("Type"), organizations.parents.isEmpty() ? QStringLiteral("Composite")
+                                                                          : QStringLiteral("Composite composite member"),
+                   out);
+    else if (!organizations.parents.isEmpty())
+        printField(QStringLiteral("Type"), QStringLiteral("Monolithic composite member"), out);
+    if (organizations.composite)
+        printField(QStringLiteral("Members"), organizations.members.join(QStringLiteral(", ")), out);
     if (detail >= 1)
         printProperties(info.properties, QStringLiteral("  "), out);
     for (size_t i = 0; i < contexts.size(); ++i)
@@ -143,6 +166,11 @@ QJsonObject RtCatCommand::componentJson(const ComponentProxy &rtc, const QString
     for (const ExecutionContextInfo &ec : rtc.executionContexts())
         contexts.append(contextToJson(ec));
     object.insert("executionContexts", contexts);
+    const OrganizationInfo organizations = organizationsOf(rtc);
+    if (organizations.composite)
+        object.insert("members", QJsonArray::fromStringList(organizations.members));
+    if (!organizations.parents.isEmpty())
+        object.insert("parents", QJsonArray::fromStringList(organizations.parents));
     object.insert("path", rtc.path());
     return object;
 }

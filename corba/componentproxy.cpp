@@ -151,6 +151,42 @@ std::vector<PortInfo> ComponentProxy::ports() const
     });
 }
 
+OrganizationInfo ComponentProxy::organizations() const
+{
+    RTC::RTObject_var rtc = component(m_ior, m_path);
+    return callServed(m_path, m_ior, [&] {
+        // An SDO names itself by its id; a member that does not answer is left out.
+        const auto sdoName = [](SDOPackage::SDO_ptr sdo) -> QString {
+            try {
+                CORBA::String_var id = sdo->get_sdo_id();
+                return QString::fromUtf8(id.in());
+            } catch (const CORBA::Exception &) {
+                return QString();
+            }
+        };
+        OrganizationInfo info;
+        SDOPackage::OrganizationList_var owned = rtc->get_owned_organizations();
+        info.composite = owned->length() > 0;
+        for (CORBA::ULong i = 0; i < owned->length(); ++i) {
+            SDOPackage::SDOList_var members = owned[i]->get_members();
+            for (CORBA::ULong j = 0; j < members->length(); ++j) {
+                const QString name = sdoName(members[j]);
+                if (!name.isEmpty())
+                    info.members.append(name);
+            }
+        }
+        SDOPackage::OrganizationList_var joined = rtc->get_organizations();
+        for (CORBA::ULong i = 0; i < joined->length(); ++i) {
+            SDOPackage::SDOSystemElement_var owner = joined[i]->get_owner();
+            SDOPackage::SDO_var sdo = SDOPackage::SDO::_narrow(owner);
+            const QString name = CORBA::is_nil(sdo) ? QString() : sdoName(sdo);
+            if (!name.isEmpty())
+                info.parents.append(name);
+        }
+        return info;
+    });
+}
+
 PortInfo ComponentProxy::port(const QString &name) const
 {
     for (PortInfo &port : ports()) {

@@ -31,6 +31,9 @@ public:
     /// The port named `name` (short `out` or full `Comp0.out`); NotFound when there is none.
     PortInfo port(const QString &name) const;
 
+    /// The composites it is a member of and, for a composite, its members (rtshell's rtcat shows them).
+    OrganizationInfo organizations() const;
+
     /// How much executionContexts() reads: Members adds each context's owner and participants
     /// (one more call per context and one per member, so the pollers stay with Basic); Saved
     /// reads only the owned contexts' handle, kind and rate (what a saved system keeps).

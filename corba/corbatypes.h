@@ -75,6 +75,18 @@ struct ComponentInfo
     std::vector<PortInfo> ports;
 };
 
+/**
+ * A component's place among composites (SDO organizations): the members of the organizations it
+ * owns (a composite's), and the owners of the organizations it belongs to (its composite), by
+ * instance name.
+ */
+struct OrganizationInfo
+{
+    bool composite = false; ///< owns an organization, even an empty one
+    QStringList members;
+    QStringList parents;
+};
+
 /// A component taking part in an execution context, as its ExecutionContextProfile names it.
 struct ContextMember
 {

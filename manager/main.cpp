@@ -9,6 +9,7 @@
 #include "managerconfig.h"
 
 #include <rtm/Manager.h>
+#include <rtm/PeriodicECSharedComposite.h>
 
 #include <cerrno>
 #include <csignal>
@@ -70,7 +71,9 @@ int runManager(int argc, char **argv)
     for (Runtime::ComponentFactory &factory : Runtime::builtinFactories())
         manager.registerFactory(std::move(factory));
     // Modules are OpenRTM-aist modules: their init function gets the SDK's RTC::Manager.
-    RTC::Manager::attach(&manager);
+    RTC::Manager *sdkManager = RTC::Manager::attach(&manager);
+    // Like OpenRTM-aist's manager, every manager offers the composite component type.
+    PeriodicECSharedCompositeInit(sdkManager);
     manager.setModuleProfileProgram(Runtime::ownExecutable());
     if (!manager.start(&error)) {
         std::cerr << "rtmanager: " << error << std::endl;

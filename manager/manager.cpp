@@ -448,6 +448,13 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     }
     bool configured = readConfigFiles(&properties, instance, request.properties.value("config_file"), &problem);
     properties.merge(request.properties);
+    // As OpenRTM-aist's manager: a composite's exported ports given with the request are its
+    // default configuration's, in today's `<instance>.<port>` form.
+    if (request.properties.contains("exported_ports")) {
+        const std::string ports = exportedPortList(request.properties.value("exported_ports"));
+        properties.set("exported_ports", ports);
+        properties.set("conf.default.exported_ports", ports);
+    }
     properties.set("instance_name", instance);
     if (configured) {
         // Refused before the component exists: its type of execution context must be one we make.

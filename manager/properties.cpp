@@ -131,4 +131,18 @@ Properties Properties::parseConf(const std::string &text, std::vector<std::strin
     return result;
 }
 
+std::string exportedPortList(const std::string &text)
+{
+    std::string list;
+    for (const std::string &entry : split(text, ',')) {
+        const std::string name = trimmed(entry);
+        const std::size_t first = name.find('.');
+        const std::size_t last = name.rfind('.');
+        if (!list.empty())
+            list += ',';
+        list += first != last ? name.substr(0, first) + name.substr(last) : name;
+    }
+    return list;
+}
+
 } // namespace Runtime

@@ -44,5 +44,11 @@ private:
 std::string trimmed(const std::string &text);
 /// Splits at @p separator; with @p skipEmpty, trimmed empty parts are dropped.
 std::vector<std::string> split(const std::string &text, char separator, bool skipEmpty = true);
+/**
+ * A composite's `exported_ports` list as OpenRTM-aist's manager and SDO configuration store it:
+ * comma-separated `<instance>.<port>` names, where a longer dotted name keeps its first and last
+ * parts (names written before ports carried their instance's name).
+ */
+std::string exportedPortList(const std::string &text);
 
 } // namespace Runtime

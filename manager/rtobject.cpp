@@ -109,6 +109,36 @@ void RtObject::releasePort(PortBase *port, bool borrowed)
     releaseServant(m_poa, port);
 }
 
+void RtObject::addPortReference(RTC::PortService_ptr port)
+{
+    if (CORBA::is_nil(port))
+        return;
+    std::lock_guard lock(m_mutex);
+    m_portReferences.emplace_back(RTC::PortService::_duplicate(port));
+}
+
+bool RtObject::removePortReference(RTC::PortService_ptr port)
+{
+    std::lock_guard lock(m_mutex);
+    for (auto it = m_portReferences.begin(); it != m_portReferences.end(); ++it) {
+        try {
+            if (!(*it)->_is_equivalent(port))
+                continue;
+        } catch (const CORBA::Exception &) {
+            continue;
+        }
+        m_portReferences.erase(it);
+        return true;
+    }
+    return false;
+}
+
+void RtObject::setInitializeError(const std::string &reason)
+{
+    std::lock_guard lock(m_mutex);
+    m_initError = reason;
+}
+
 ServicePort *RtObject::addServicePort(const std::string &name)
 {
     auto *port = new ServicePort(name, m_poa);
@@ -120,6 +150,12 @@ std::vector<PortBase *> RtObject::portList()
 {
     std::lock_guard lock(m_mutex);
     return m_ports;
+}
+
+std::vector<RTC::PortService_var> RtObject::portReferences()
+{
+    std::lock_guard lock(m_mutex);
+    return m_portReferences;
 }
 
 // --- ComponentAction: the CORBA callbacks run the user hooks, as RTObject_impl does. ---

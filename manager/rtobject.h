@@ -46,7 +46,8 @@ public:
     void setStatus(const std::string &name, const std::string &value);
     std::string status(const std::string &name);
     ConfigAdmin &configuration() { return m_config; }
-    /// Why the last initialize() failed before onInitialize (an unknown context type); empty otherwise.
+    /// Why the last initialize() failed: an unknown context type, or what onInitialize() recorded
+    /// with setInitializeError(); empty otherwise.
     std::string initializeError();
     /**
      * Makes @p context one of the component's own (OpenRTM's bindContext): the component takes
@@ -57,6 +58,13 @@ public:
     std::vector<ExecutionContext *> ownedContexts();
     /// Finalizes without exit handler — used by the manager on shutdown.
     void shutdownComponent();
+    /**
+     * Lists another component's port among this one's (get_ports, the profile's port_profiles),
+     * as a composite does with its members' exported ports: the port stays its owner's.
+     */
+    void addPortReference(RTC::PortService_ptr port);
+    /// Unlists a port added by addPortReference(); false when it is not listed.
+    bool removePortReference(RTC::PortService_ptr port);
 
     // RTC::ComponentAction
     RTC::ReturnCode_t on_initialize() override;
@@ -139,6 +147,8 @@ protected:
         return port;
     }
     ServicePort *addServicePort(const std::string &name);
+    /// Records why onInitialize() refuses, for initializeError() (the manager's refusal names it).
+    void setInitializeError(const std::string &reason);
 
 private:
     bool createOwnedContext();
@@ -146,6 +156,7 @@ private:
     void releaseAll();
     void releasePort(PortBase *port, bool borrowed);
     std::vector<PortBase *> portList();
+    std::vector<RTC::PortService_var> portReferences();
 
     PortableServer::POA_var m_poa;
     std::mutex m_mutex;
@@ -156,6 +167,7 @@ private:
     std::set<PortBase *> m_borrowedPorts;
     std::vector<ExecutionContext *> m_ownedContexts;
     std::string m_initError;
+    std::vector<RTC::PortService_var> m_portReferences;
     std::map<RTC::ExecutionContextHandle_t, RTC::ExecutionContext_var> m_participating;
     RTC::ExecutionContextHandle_t m_nextParticipatingHandle = 1000;
     std::map<std::string, std::string> m_status;

@@ -23,6 +23,17 @@ RTC::ComponentProfile *RtObject::get_component_profile()
         RTC::PortProfile_var port = ports[i]->get_port_profile();
         profile->port_profiles[i] = port.in();
     }
+    // Ports of other components listed here (a composite's exported ports) describe themselves;
+    // one whose owner is gone is left out.
+    for (const RTC::PortService_var &reference : portReferences()) {
+        try {
+            RTC::PortProfile_var port = reference->get_port_profile();
+            const CORBA::ULong n = profile->port_profiles.length();
+            profile->port_profiles.length(n + 1);
+            profile->port_profiles[n] = port.in();
+        } catch (const CORBA::Exception &) {
+        }
+    }
     profile->parent = RTC::RTObject::_nil();
     profile->properties = propertiesToNv(p);
     return profile;
@@ -35,6 +46,11 @@ RTC::PortServiceList *RtObject::get_ports()
     list->length(CORBA::ULong(ports.size()));
     for (CORBA::ULong i = 0; i < ports.size(); ++i)
         (*list)[i] = ports[i]->reference();
+    for (const RTC::PortService_var &reference : portReferences()) {
+        const CORBA::ULong n = list->length();
+        list->length(n + 1);
+        (*list)[n] = RTC::PortService::_duplicate(reference);
+    }
     return list;
 }
 

@@ -140,7 +140,11 @@ CORBA::Boolean SdoConfiguration::set_configuration_set_values(const SDOPackage::
     const std::string id(configuration_set.id);
     if (!m_admin.hasSet(id))
         throw SDOPackage::InvalidParameter("no such configuration set");
-    return m_admin.setValues(id, nvToProperties(configuration_set.configuration_data));
+    Properties values = nvToProperties(configuration_set.configuration_data);
+    // OpenRTM-aist stores a composite's exported ports in the `<instance>.<port>` form.
+    if (values.contains("exported_ports"))
+        values.set("exported_ports", exportedPortList(values.value("exported_ports")));
+    return m_admin.setValues(id, values);
 }
 
 SDOPackage::ConfigurationSet *SdoConfiguration::get_active_configuration_set()

@@ -3,6 +3,7 @@
 #include <rtm/Manager.h>
 #include <rtm/ManagerServant.h>
 #include <rtm/NamingManager.h>
+#include <rtm/PeriodicECSharedComposite.h>
 #include <rtm/RTObject.h>
 
 #include "loggersink.h"
@@ -217,6 +218,8 @@ Manager *Manager::init(int argc, char **argv)
     }
     Manager *manager = attach(runtime.get());
     manager->d->owned = std::move(runtime);
+    // OpenRTM-aist's manager offers the composite type in every program, before any module loads.
+    PeriodicECSharedCompositeInit(manager);
     return manager;
 }
 

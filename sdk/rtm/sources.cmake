@@ -56,6 +56,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OpenHRPExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicECSharedComposite.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicTaskFactory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
@@ -99,8 +100,9 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/managerinternals.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ecworker.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/logstreamfile.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/periodicecsharedcomposite.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS
-    configadmin.h dataport.h executioncontext.h inport.h inportconnector.h outport.h outportconnector.h portbase.h
-    properties.h ringbuffer.h rtobject.h serviceport.h triggeredexecutioncontext.h)
+    configadmin.h dataport.h executioncontext.h inport.h inportconnector.h organization.h outport.h outportconnector.h
+    portbase.h properties.h ringbuffer.h rtobject.h serviceport.h triggeredexecutioncontext.h)

@@ -10,6 +10,7 @@
 #include <coil/stringutil.h>
 
 #include <functional>
+#include <iostream>
 #include <string>
 
 namespace Runtime

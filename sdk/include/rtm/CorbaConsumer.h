@@ -5,6 +5,8 @@
 
 #include <rtm/RTC.h>
 
+#include <iostream>
+
 namespace RTC
 {
 /// An untyped object reference slot that a CorbaPort fills on connect and clears on disconnect.

@@ -9,6 +9,8 @@
 
 #include <rtmruntime/portbase.h>
 
+#include <iostream>
+
 namespace RTC
 {
 /// A port of a component: its profile, its connections and the connect/disconnect protocol.
