@@ -5,10 +5,31 @@
 
 #include <RTC.hh>
 
+#include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 
 namespace Runtime {
+
+/// The steps of the connect and disconnect protocol a port reports to its ConnectObserver.
+enum class ConnectStep : uint8_t {
+    NotifyConnect,         ///< notify_connect arrived (before anything is checked)
+    PublishInterfaces,     ///< this port published its interfaces (with the result)
+    ConnectNextPort,       ///< the next port of the chain answered (with its result)
+    SubscribeInterfaces,   ///< this port subscribed to the others' interfaces (with the result)
+    Connected,             ///< notify_connect ends (with its result)
+    NotifyDisconnect,      ///< notify_disconnect arrived for a connector this port holds
+    UnsubscribeInterfaces, ///< this port is about to drop the connector's interfaces
+    DisconnectNextPort,    ///< the next port of the chain was told (with the result)
+    Disconnected           ///< notify_disconnect ends (with its result)
+};
+
+/**
+ * Called at each ConnectStep with the connector profile as it stands and the step's result
+ * (RTC_OK for steps without one). The SDK turns these into OpenRTM-aist's port connect listeners.
+ */
+using ConnectObserver = std::function<void(ConnectStep, RTC::ConnectorProfile &, RTC::ReturnCode_t)>;
 
 /**
  * RTC::PortService as OpenRTM-aist implements it. connect() gives the profile an id and starts the
@@ -32,6 +53,17 @@ public:
     RTC::PortService_ptr reference();
     /// Number of stored connections.
     size_t connectionCount();
+    /// Reports the steps of notify_connect / notify_disconnect to @p observer (empty: nobody).
+    void setConnectObserver(ConnectObserver observer);
+
+    // OpenRTM-aist's PortBase accessors, which component code calls on RTC::PortBase.
+    /// The profile name: `<instance>.<port>` once the component added the port.
+    const char *getName() const;
+    /// The port profile itself (not a copy); connector profiles change as connections come and go.
+    const RTC::PortProfile &getPortProfile() const;
+    const RTC::PortProfile &getProfile() const { return getPortProfile(); }
+    /// This port's object reference, not duplicated (nil before the port is activated).
+    RTC::PortService_ptr getPortRef() const;
     /// Lets others reach what the port provides (service providers); called when the component
     /// is activated, as OpenRTM-aist's PortAdmin::activatePorts.
     virtual void activateInterfaces() {}
@@ -73,15 +105,18 @@ protected:
     std::string profileName();
 
 private:
+    RTC::ReturnCode_t connectSteps(RTC::ConnectorProfile &connector_profile);
     int ownIndex(const RTC::ConnectorProfile &profile);
     bool findProfile(const std::string &id, RTC::ConnectorProfile *profile);
     void storeProfile(const RTC::ConnectorProfile &profile);
     void eraseProfile(const std::string &id);
+    void observe(ConnectStep step, RTC::ConnectorProfile &profile, RTC::ReturnCode_t result);
 
     std::string m_name;
-    std::mutex m_mutex;
+    mutable std::mutex m_mutex;
     RTC::PortProfile m_profile;
     RTC::PortService_var m_self;
+    ConnectObserver m_observer;
 };
 
 /**

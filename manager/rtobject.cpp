@@ -172,7 +172,9 @@ RTC::ReturnCode_t RtObject::initialize()
         m_sdoConfig = new SdoConfiguration(m_config);
         PortableServer::ObjectId_var id = m_poa->activate_object(m_sdoConfig);
     }
-    const RTC::ReturnCode_t result = onInitialize();
+    // Through the ComponentAction operation, which subclasses may wrap (the SDK calls its action
+    // listeners around it).
+    const RTC::ReturnCode_t result = on_initialize();
     if (result != RTC::RTC_OK)
         return result;
     m_config.update();
@@ -239,7 +241,7 @@ void RtObject::releaseAll()
         port->disconnect_all();
         port->releaseInterfaces();
     }
-    onFinalize();
+    on_finalize();
     for (PeriodicExecutionContext *context : contexts)
         releaseServant(m_poa, context);
     for (PortBase *port : ports)
