@@ -89,6 +89,7 @@ private:
 // --- DataPortListeners ---
 
 DataPortListeners::DataPortListeners(const char *data_type)
+    : rtclog("DataPort")
 {
     m_properties.setProperty("dataport.data_type", data_type);
 }
@@ -98,6 +99,18 @@ DataPortListeners::~DataPortListeners() = default;
 void DataPortListeners::init(coil::Properties &prop)
 {
     m_properties << prop;
+}
+
+ReturnCode_t DataPortListeners::checkInterfaceType(const char *portName, const ConnectorProfile &profile)
+{
+    const Runtime::Properties p = Runtime::nvToProperties(profile.properties);
+    const std::string type = p.value("dataport.interface_type", "corba_cdr");
+    if (type == "corba_cdr")
+        return RTC_OK;
+    RTC_ERROR(("%s: connector '%s' refused: interface type '%s' is not available (RT Studio's data ports carry "
+               "corba_cdr only)",
+               portName, static_cast<const char *>(profile.name), type.c_str()));
+    return BAD_PARAMETER;
 }
 
 coil::Properties &DataPortListeners::properties()
@@ -118,6 +131,45 @@ coil::vstring DataPortListeners::getConnectorIds()
 coil::vstring DataPortListeners::getConnectorNames()
 {
     return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::name);
+}
+
+namespace {
+
+template <typename Match>
+bool findConnector(const ConnectorInfoList &infos, Match match, ConnectorInfo &prof)
+{
+    for (const ConnectorInfo &info : infos) {
+        if (match(info)) {
+            prof = info;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+bool DataPortListeners::getConnectorProfileById(const char *id, ConnectorInfo &prof)
+{
+    const std::string wanted(id ? id : "");
+    return findConnector(m_listeners.connectorInfos(), [&](const ConnectorInfo &i) { return i.id == wanted; }, prof);
+}
+
+bool DataPortListeners::getConnectorProfileByName(const char *name, ConnectorInfo &prof)
+{
+    const std::string wanted(name ? name : "");
+    return findConnector(m_listeners.connectorInfos(), [&](const ConnectorInfo &i) { return i.name == wanted; },
+                         prof);
+}
+
+bool DataPortListeners::isLittleEndian()
+{
+    // Each connection states its byte order; the port is little-endian unless one says big.
+    for (const ConnectorInfo &info : m_listeners.connectorInfos()) {
+        if (info.properties.getProperty("serializer.cdr.endian", "little").compare(0, 3, "big") == 0)
+            return false;
+    }
+    return true;
 }
 
 void DataPortListeners::addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
@@ -196,6 +248,18 @@ ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
     return result;
 }
 
+ReturnCode_t InPortBase::publishInterfaces(ConnectorProfile &connector_profile)
+{
+    const ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
+    return accepted != RTC_OK ? accepted : Runtime::InPortBase::publishInterfaces(connector_profile);
+}
+
+void InPortBase::logUnsupported(const char *operation, const std::string &name)
+{
+    RTC_ERROR(("%s: %s(\"%s\") refused: the port has several connections and takes their samples in one queue",
+               getName(), operation, name.c_str()));
+}
+
 bool InPortBase::readBytes(Runtime::SharedCdr *data, bool *littleEndian)
 {
     return readMarshalled(data, littleEndian);
@@ -229,6 +293,12 @@ ReturnCode_t OutPortBase::notify_disconnect(const char *connector_id)
     const ReturnCode_t result = Runtime::OutPortBase::notify_disconnect(connector_id);
     m_listeners.disconnected(connector_id);
     return result;
+}
+
+ReturnCode_t OutPortBase::publishInterfaces(ConnectorProfile &connector_profile)
+{
+    const ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
+    return accepted != RTC_OK ? accepted : Runtime::OutPortBase::publishInterfaces(connector_profile);
 }
 
 void OutPortBase::addDirectPeer(const std::string &connectorId, InPortBase *inport)

@@ -4,6 +4,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferStatus.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteData.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ComponentActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigurationListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorBase.h
@@ -13,6 +14,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataFlowComponentBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataInPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortListeners.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortStatus.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataOutPort.h
@@ -20,12 +22,15 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FsmActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ListenerHolder.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortCallback.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortConnectListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTC.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
@@ -38,6 +43,7 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sdkinternal.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/loggersink.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/logger.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/componentlisteners.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/connectorlisteners.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/configadmin.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ports.cpp

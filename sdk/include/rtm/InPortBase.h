@@ -5,6 +5,7 @@
 
 #include <rtm/ConnectorListener.h>
 #include <rtm/DataPortListeners.h>
+#include <rtm/DataPortStatus.h>
 #include <rtm/PortBase.h>
 
 #include <rtmruntime/inport.h>
@@ -25,8 +26,11 @@ public:
     InPortBase(const char *name, const char *data_type);
     ~InPortBase() override;
 
-    /// Takes the next sample into the bound variable; false when none was waiting.
-    virtual bool read() = 0;
+    /**
+     * Takes the next sample into the bound variable; false when none was waiting. A non-empty
+     * @p name must be the name of one of the port's connections (see InPort::read).
+     */
+    virtual bool read(std::string name = "") = 0;
     /// True when a sample waits in a push connection.
     virtual bool isNew();
     /// True when no sample waits.
@@ -42,6 +46,12 @@ public:
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
 protected:
+    /// Refuses, with a logged message, the interface types the runtime does not carry.
+    ReturnCode_t publishInterfaces(ConnectorProfile &connector_profile) override;
+
+protected:
+    /// Logs that @p operation on connection @p name cannot be done on a port with several connections.
+    void logUnsupported(const char *operation, const std::string &name);
     /// Takes one marshalled sample; false when none was waiting.
     bool readBytes(::Runtime::SharedCdr *data, bool *littleEndian);
 };

@@ -37,6 +37,8 @@ public:
     void removeDirectPeer(const std::string &connectorId);
 
 protected:
+    /// Refuses, with a logged message, the interface types the runtime does not carry.
+    ReturnCode_t publishInterfaces(ConnectorProfile &connector_profile) override;
     /// Gives @p value to the InPorts of this process connected directly (one copy, no marshalling).
     void writeDirect(const void *value, const std::type_info &type);
     /// Calls the ON_BUFFER_WRITE and ON_SEND listeners with a sample about to be sent.
