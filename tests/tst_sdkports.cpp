@@ -5,6 +5,7 @@
 // the port connect listeners, each at the moment OpenRTM-aist calls it, over real connections
 // between components of one manager.
 #include <rtm/ComponentActionListener.h>
+#include <rtm/CorbaPort.h>
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/DataInPort.h>
 #include <rtm/DataOutPort.h>
@@ -140,6 +141,7 @@ public:
     explicit PortsWriter(RTC::Manager *manager)
         : RTC::DataFlowComponentBase(manager)
         , m_outOut("out", m_out)
+        , m_servicePort("service")
     {
         using Pre = RTC::PreComponentActionListenerType;
         using Post = RTC::PostComponentActionListenerType;
@@ -174,6 +176,7 @@ public:
         eventLog().add("onInitialize");
         m_out.data = 0;
         addOutPort("out", m_outOut);
+        addPort(m_servicePort);
         return RTC::RTC_OK;
     }
     RTC::ReturnCode_t onActivated(RTC::UniqueId) override
@@ -198,6 +201,7 @@ public:
         return m_outOut.write();
     }
     RTC::OutPort<RTC::TimedLong> &outPort() { return m_outOut; }
+    RTC::CorbaPort &servicePort() { return m_servicePort; }
     void dropPort() { removeOutPort(m_outOut); }
 
 private:
@@ -255,6 +259,7 @@ private:
 
     RTC::TimedLong m_out;
     RTC::OutPort<RTC::TimedLong> m_outOut;
+    RTC::CorbaPort m_servicePort;
 };
 
 /// Reads when the test says so.
@@ -485,6 +490,12 @@ void TestSdkPorts::portApiAfterConnect()
     RTC::RTObject_var owner = m_writer->getObjRef();
     QVERIFY(owner->_is_equivalent(base.getPortProfile().owner));
     QVERIFY(out.getConnectorIds().empty());
+    // Service ports answer the same.
+    RTC::CorbaPort &service = m_writer->servicePort();
+    QCOMPARE(std::string(service.getName()), writerName + ".service");
+    QCOMPARE(std::string(service.getProfile().name), writerName + ".service");
+    RTC::PortProfile_var remoteProfile = service.getPortRef()->get_port_profile();
+    QCOMPARE(std::string(remoteProfile->name), writerName + ".service");
 
     QCOMPARE(connectWire(), RTC::RTC_OK);
     QVERIFY(!m_connectorId.empty());
@@ -529,8 +540,9 @@ void TestSdkPorts::componentActionListenersInOrder()
     // and the port added in onInitialize.
     const QStringList initialization = eventLog().matching("");
     const QString portName = QString::fromStdString(std::string(m_writer->getInstanceName()) + ".out");
-    QCOMPARE(initialization.mid(0, 4),
-             (QStringList{"pre initialize 0", "onInitialize", "add port " + portName, "post initialize 0 0"}));
+    const QString servicePortName = QString::fromStdString(std::string(m_writer->getInstanceName()) + ".service");
+    QCOMPARE(initialization.mid(0, 5), (QStringList{"pre initialize 0", "onInitialize", "add port " + portName,
+                                                    "add port " + servicePortName, "post initialize 0 0"}));
 
     eventLog().clear();
     QCOMPARE(m_writer->activate(0), RTC::RTC_OK);
