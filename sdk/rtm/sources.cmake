@@ -4,6 +4,9 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferStatus.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteData.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteDataStreamBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CdrBufferBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CdrRingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ComponentActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigurationListener.h
@@ -15,6 +18,9 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataInPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortListeners.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortStatus.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectInPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectOutPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataOutPort.h
@@ -22,18 +28,49 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FsmActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortCorbaCdrConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortCorbaCdrProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDirectConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDirectProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDSConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDSProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortPullConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortPushConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMProvider.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ListenerHolder.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortCorbaCdrConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortCorbaCdrProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDirectConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDirectProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDSConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDSProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortPullConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortPushConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMProvider.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortCallback.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortConnectListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherFlush.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherNew.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherPeriodic.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTC.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SharedMemoryPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StaticFSM.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SystemLogger.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Timestamp.h
@@ -47,6 +84,10 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/connectorlisteners.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/configadmin.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ports.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/dataportframework.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/dataconnectors.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/datatransports.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/publishers.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/rtobject.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.cpp
