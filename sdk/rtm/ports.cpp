@@ -84,6 +84,130 @@ private:
     std::map<std::string, Link> m_links;
 };
 
+/// What a connector object of a port cannot do on a port with several connections.
+DataPortStatus refuseSeveral(Logger &rtclog, const ConnectorInfo &info, const char *operation)
+{
+    RTC_ERROR(("connector '%s': %s refused: its port has several connections and its samples travel through the port",
+               info.name.c_str(), operation));
+    return DataPortStatus::PRECONDITION_NOT_MET;
+}
+
+/// A connection of an InPort of the SDK, as OpenRTM-aist's InPortConnector.
+class InPortConnection : public InPortConnector
+{
+public:
+    InPortConnection(ConnectorInfo info, ConnectorListenersBase *listeners, InPortBase *port)
+        : InPortConnector(info, listeners, nullptr)
+        , m_port(port)
+    {
+    }
+    DataPortStatus disconnect() override
+    {
+        // The port deletes this object while disconnecting: only locals are used from here on.
+        InPortBase *port = m_port;
+        const std::string id = m_profile.id;
+        return port->disconnect(id.c_str()) == RTC_OK ? DataPortStatus::PORT_OK : DataPortStatus::PORT_ERROR;
+    }
+    DataPortStatus read(ByteDataStreamBase *data) override
+    {
+        if (data == nullptr)
+            return DataPortStatus::INVALID_ARGS;
+        if (m_port->getConnectorIds().size() != 1)
+            return refuseSeveral(rtclog, m_profile, "read");
+        ByteData bytes;
+        bool littleEndian = true;
+        if (!m_port->takeMarshalled(bytes, littleEndian))
+            return DataPortStatus::BUFFER_EMPTY;
+        data->isLittleEndian(littleEndian);
+        data->writeData(bytes.getBuffer(), bytes.getDataLength());
+        return DataPortStatus::PORT_OK;
+    }
+    CdrBufferBase *getBuffer() override
+    {
+        RTC_ERROR(("connector '%s': getBuffer(): the runtime keeps the connection's samples in a buffer of its own",
+                   m_profile.name.c_str()));
+        return nullptr;
+    }
+    // The runtime's connections carry samples from connect to disconnect.
+    void activate() override {}
+    void deactivate() override {}
+
+private:
+    InPortBase *m_port;
+};
+
+/// A connection of an OutPort of the SDK, as OpenRTM-aist's OutPortConnector.
+class OutPortConnection : public OutPortConnector
+{
+public:
+    OutPortConnection(ConnectorInfo info, ConnectorListenersBase *listeners, OutPortBase *port)
+        : OutPortConnector(info, listeners)
+        , m_port(port)
+    {
+    }
+    DataPortStatus disconnect() override
+    {
+        OutPortBase *port = m_port;
+        const std::string id = m_profile.id;
+        return port->disconnect(id.c_str()) == RTC_OK ? DataPortStatus::PORT_OK : DataPortStatus::PORT_ERROR;
+    }
+    DataPortStatus write(ByteDataStreamBase *data) override
+    {
+        if (data == nullptr)
+            return DataPortStatus::INVALID_ARGS;
+        if (m_port->getConnectorIds().size() != 1)
+            return refuseSeveral(rtclog, m_profile, "write");
+        ByteData bytes;
+        bytes.setDataLength(data->getDataLength());
+        data->readData(bytes.getBuffer(), bytes.getDataLength());
+        return m_port->writeMarshalledTo(m_profile.id, bytes, m_littleEndian) ? DataPortStatus::PORT_OK
+                                                                              : DataPortStatus::PORT_ERROR;
+    }
+    CdrBufferBase *getBuffer() override
+    {
+        RTC_ERROR(("connector '%s': getBuffer(): the runtime keeps the connection's samples in a buffer of its own",
+                   m_profile.name.c_str()));
+        return nullptr;
+    }
+    void activate() override {}
+    void deactivate() override {}
+
+private:
+    OutPortBase *m_port;
+};
+
+ConnectorInfo infoOf(DataPortListeners &port, const std::string &id)
+{
+    ConnectorInfo info;
+    port.getConnectorProfileById(id.c_str(), info);
+    return info;
+}
+
+template <typename Connector>
+Connector *findIn(std::mutex &mutex, const std::vector<Connector *> &list, const char *text, bool byId)
+{
+    const std::string wanted(text ? text : "");
+    std::lock_guard<std::mutex> lock(mutex);
+    for (Connector *connector : list) {
+        if (wanted == (byId ? connector->id() : connector->name()))
+            return connector;
+    }
+    return nullptr;
+}
+
+template <typename Connector>
+void dropFrom(std::mutex &mutex, std::vector<Connector *> &list, const std::string &id)
+{
+    std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = list.begin(); it != list.end(); ++it) {
+        if (id == (*it)->id()) {
+            delete *it;
+            list.erase(it);
+            return;
+        }
+    }
+}
+
 } // namespace
 
 // --- DataPortListeners ---
@@ -211,6 +335,40 @@ InPortBase::InPortBase(const char *name, const char *data_type)
 InPortBase::~InPortBase()
 {
     setReceiveListener({});
+    std::lock_guard<std::mutex> lock(m_connectorsMutex);
+    for (InPortConnector *connector : m_connectors)
+        delete connector;
+}
+
+const std::vector<InPortConnector *> &InPortBase::connectors()
+{
+    return m_connectors;
+}
+
+InPortConnector *InPortBase::getConnectorById(const char *id)
+{
+    return findIn(m_connectorsMutex, m_connectors, id, true);
+}
+
+InPortConnector *InPortBase::getConnectorByName(const char *name)
+{
+    return findIn(m_connectorsMutex, m_connectors, name, false);
+}
+
+bool InPortBase::takeMarshalled(ByteData &data, bool &littleEndian)
+{
+    Runtime::SharedCdr bytes;
+    if (!readBytes(&bytes, &littleEndian))
+        return false;
+    data.writeData(bytes->data(), static_cast<unsigned long>(bytes->size()));
+    m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_READ, std::string(), bytes->data(),
+                           static_cast<unsigned long>(bytes->size()), littleEndian);
+    return true;
+}
+
+bool InPortBase::receiveMarshalled(const ByteData &, bool, const std::string &)
+{
+    return false;
 }
 
 bool InPortBase::isNew()
@@ -233,6 +391,11 @@ ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
     const ReturnCode_t result = Runtime::InPortBase::notify_connect(connector_profile);
     if (result == RTC_OK) {
         m_listeners.connected(connector_profile);
+        const std::string id(connector_profile.connector_id);
+        {
+            std::lock_guard<std::mutex> lock(m_connectorsMutex);
+            m_connectors.push_back(new InPortConnection(infoOf(*this, id), &m_listeners, this));
+        }
         DirectLinks::instance().offer(connector_profile, this, nullptr);
         m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
     }
@@ -242,6 +405,8 @@ ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
 ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
 {
     DirectLinks::instance().withdraw(connector_id);
+    if (connector_id != nullptr)
+        dropFrom(m_connectorsMutex, m_connectors, connector_id);
     m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
     const ReturnCode_t result = Runtime::InPortBase::notify_disconnect(connector_id);
     m_listeners.disconnected(connector_id);
@@ -273,13 +438,52 @@ OutPortBase::OutPortBase(const char *name, const char *data_type)
 {
 }
 
-OutPortBase::~OutPortBase() = default;
+OutPortBase::~OutPortBase()
+{
+    std::lock_guard<std::mutex> lock(m_connectorsMutex);
+    for (OutPortConnector *connector : m_connectors)
+        delete connector;
+}
+
+const std::vector<OutPortConnector *> &OutPortBase::connectors()
+{
+    return m_connectors;
+}
+
+OutPortConnector *OutPortBase::getConnectorById(const char *id)
+{
+    return findIn(m_connectorsMutex, m_connectors, id, true);
+}
+
+OutPortConnector *OutPortBase::getConnectorByName(const char *name)
+{
+    return findIn(m_connectorsMutex, m_connectors, name, false);
+}
+
+bool OutPortBase::writeMarshalledTo(const std::string &connectorId, const ByteData &data, bool littleEndian)
+{
+    {
+        std::lock_guard<std::mutex> lock(m_directMutex);
+        for (const auto &[id, inport] : m_directPeers) {
+            if (id == connectorId)
+                return inport->receiveMarshalled(data, littleEndian, connectorId);
+        }
+    }
+    // The bytes are in the connection's byte order already (the connector set the stream's).
+    writeMarshalled([&data](bool) { return Runtime::CdrView(data.getBuffer(), data.getDataLength()); });
+    return true;
+}
 
 ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
 {
     const ReturnCode_t result = Runtime::OutPortBase::notify_connect(connector_profile);
     if (result == RTC_OK) {
         m_listeners.connected(connector_profile);
+        const std::string id(connector_profile.connector_id);
+        {
+            std::lock_guard<std::mutex> lock(m_connectorsMutex);
+            m_connectors.push_back(new OutPortConnection(infoOf(*this, id), &m_listeners, this));
+        }
         DirectLinks::instance().offer(connector_profile, nullptr, this);
         m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
     }
@@ -289,6 +493,8 @@ ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
 ReturnCode_t OutPortBase::notify_disconnect(const char *connector_id)
 {
     DirectLinks::instance().withdraw(connector_id);
+    if (connector_id != nullptr)
+        dropFrom(m_connectorsMutex, m_connectors, connector_id);
     m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
     const ReturnCode_t result = Runtime::OutPortBase::notify_disconnect(connector_id);
     m_listeners.disconnected(connector_id);

@@ -130,6 +130,24 @@ public:
      */
     inline void setOnOverflow(OnOverflow<DataType> *on_overflow) { m_onOverflow = on_overflow; }
 
+    bool takeMarshalled(ByteData &data, bool &littleEndian) override
+    {
+        DataType sample;
+        if (takeDirect(&sample)) {
+            const std::vector<unsigned char> bytes = ::Runtime::marshal(sample, true);
+            data.writeData(bytes.data(), static_cast<unsigned long>(bytes.size()));
+            littleEndian = true;
+            return true;
+        }
+        return InPortBase::takeMarshalled(data, littleEndian);
+    }
+    bool receiveMarshalled(const ByteData &data, bool littleEndian, const std::string &connectorId) override
+    {
+        DataType sample;
+        const ::Runtime::CdrView view(data.getBuffer(), data.getDataLength());
+        return ::Runtime::unmarshal(view, littleEndian, &sample) && receiveValue(&sample, typeid(DataType), connectorId);
+    }
+
     /// Puts @p data into the port as if a connection delivered it (OpenRTM-aist's direct write).
     void write(DataType &data) { receiveValue(&data, typeid(DataType), std::string()); }
 
@@ -200,15 +218,17 @@ private:
         return false;
     }
 
-    bool readDirect()
+    bool readDirect() { return takeDirect(&m_value); }
+    // The oldest sample a connection of this process handed over, into @p sample.
+    bool takeDirect(DataType *sample)
     {
         std::lock_guard<std::mutex> lock(m_directMutex);
         if (m_directCount == 0)
             return false;
-        m_value = m_directSlots[m_directHead];
+        *sample = m_directSlots[m_directHead];
         m_directHead = (m_directHead + 1) % m_directSlots.size();
         --m_directCount;
-        notifySample(ConnectorDataListenerType::ON_BUFFER_READ, std::string(), m_value);
+        notifySample(ConnectorDataListenerType::ON_BUFFER_READ, std::string(), *sample);
         return true;
     }
     void notifySample(ConnectorDataListenerType type, const std::string &connectorId, DataType &sample)

@@ -5,13 +5,17 @@
 
 #include <rtm/ConnectorListener.h>
 #include <rtm/DataPortListeners.h>
+#include <rtm/ByteData.h>
 #include <rtm/DataPortStatus.h>
+#include <rtm/InPortConnector.h>
 #include <rtm/PortBase.h>
 
 #include <rtmruntime/inport.h>
 
+#include <mutex>
 #include <string>
 #include <typeinfo>
+#include <vector>
 
 namespace RTC
 {
@@ -42,6 +46,24 @@ public:
      */
     virtual bool receiveValue(const void *value, const std::type_info &type, const std::string &connectorId);
 
+    /**
+     * One connector object per connection (valid until the connection goes): its profile, its
+     * id and name, disconnect() and read() of the next sample (on a port with one connection).
+     */
+    const std::vector<InPortConnector *> &connectors();
+    /// The connection @p id; null when the port has none of that id.
+    InPortConnector *getConnectorById(const char *id);
+    /// The connection named @p name; null when the port has none of that name.
+    InPortConnector *getConnectorByName(const char *name);
+
+    /// RT Studio: takes the next waiting sample as bytes and their byte order; false when none waits.
+    virtual bool takeMarshalled(ByteData &data, bool &littleEndian);
+    /**
+     * RT Studio: a marshalled sample an OutPort connector object of this process writes to a
+     * connection of this port; false when it is not a sample of the port's type.
+     */
+    virtual bool receiveMarshalled(const ByteData &data, bool littleEndian, const std::string &connectorId);
+
     ReturnCode_t notify_connect(ConnectorProfile &connector_profile) override;
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
@@ -54,6 +76,10 @@ protected:
     void logUnsupported(const char *operation, const std::string &name);
     /// Takes one marshalled sample; false when none was waiting.
     bool readBytes(::Runtime::SharedCdr *data, bool *littleEndian);
+
+private:
+    std::mutex m_connectorsMutex;
+    std::vector<InPortConnector *> m_connectors;
 };
 } // namespace RTC
 
