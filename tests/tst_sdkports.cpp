@@ -20,8 +20,10 @@
 #include <rtm/OutPortCorbaCdrProvider.h>
 #include <rtm/OutPortPullConnector.h>
 #include <rtm/OutPortPushConnector.h>
+#include <rtm/PortAdmin.h>
 #include <rtm/PortCallback.h>
 #include <rtm/PortConnectListener.h>
+#include <rtm/SdoServiceProviderBase.h>
 #include <rtm/SharedMemoryPort.h>
 
 #include <corbautil.h>
@@ -305,6 +307,29 @@ private:
     RTC::InPort<RTC::TimedLong> m_inIn;
 };
 
+/// An SDO service a component offers; it counts how often it was finalized.
+class CountingSdoService : public RTC::SdoServiceProviderBase
+{
+public:
+    bool init(RTC::RTObject_impl &, const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        return true;
+    }
+    bool reinit(const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        return true;
+    }
+    const SDOPackage::ServiceProfile &getProfile() const override { return m_profile; }
+    void finalize() override { ++finalized; }
+
+    int finalized = 0;
+
+private:
+    SDOPackage::ServiceProfile m_profile;
+};
+
 /// A stream of plain bytes, as serializers fill them.
 class BytesStream : public RTC::ByteDataStreamBase
 {
@@ -404,6 +429,8 @@ private slots:
     void transportObjectsPushOverCorbaCdr();
     void transportObjectsPullOverCorbaCdr();
     void unavailableTransportObjectsRefuse();
+    void sdoServiceProvidersListed();
+    void portAdminByName();
     void unsupportedInterfaceTypeRefused_data();
     void unsupportedInterfaceTypeRefused();
 
@@ -786,6 +813,65 @@ void TestSdkPorts::unavailableTransportObjectsRefuse()
     RTC::SharedMemoryPort memory;
     QCOMPARE(memory.put(), OpenRTM::PORT_ERROR);
     QCOMPARE(memory.string_to_MemorySize("2M"), 2 * 1024 * 1024);
+}
+
+void TestSdkPorts::sdoServiceProvidersListed()
+{
+    CountingSdoService service;
+    SDOPackage::ServiceProfile profile;
+    profile.id = CORBA::string_dup("counting");
+    profile.interface_type = CORBA::string_dup("IDL:RTStudioTests/Counting:1.0");
+    QVERIFY(m_writer->addSdoServiceProvider(profile, &service));
+    QVERIFY(!m_writer->addSdoServiceProvider(profile, &service));
+    RTC::RTObject_var self = m_writer->getObjRef();
+    SDOPackage::ServiceProfileList_var listed = self->get_service_profiles();
+    QCOMPARE(listed->length(), CORBA::ULong(1));
+    QCOMPARE(std::string(listed[0].id), std::string("counting"));
+    SDOPackage::SDOService_var reached = self->get_sdo_service("counting");
+    SDOPackage::SDOService_var own = service._this();
+    QVERIFY(own->_is_equivalent(reached));
+
+    QVERIFY(m_writer->removeSdoServiceProvider("counting"));
+    QCOMPARE(service.finalized, 1);
+    QVERIFY(!m_writer->removeSdoServiceProvider("counting"));
+    listed = self->get_service_profiles();
+    QCOMPARE(listed->length(), CORBA::ULong(0));
+    PortableServer::POA_var poa = service._default_POA();
+    PortableServer::ObjectId_var id = poa->servant_to_id(&service);
+    poa->deactivate_object(id);
+
+    // Consumers come from a factory the SDK does not have: refused, saying which type.
+    QVERIFY(!m_writer->addSdoServiceConsumer(profile));
+    QTRY_VERIFY2_WITH_TIMEOUT(logText().contains("interface type 'IDL:RTStudioTests/Counting:1.0'"),
+                              qPrintable(logText()), 5000);
+}
+
+void TestSdkPorts::portAdminByName()
+{
+    RTC::PortAdmin admin(m_manager->getORB(), m_manager->getPOA());
+    RTC::OutPort<RTC::TimedLong> &out = m_writer->outPort();
+    QVERIFY(admin.addPort(out));
+    QVERIFY(!admin.addPort(out));
+    QCOMPARE(admin.getPort(out.getName()), static_cast<RTC::PortBase *>(&out));
+    QVERIFY(admin.getPortRef(out.getName())->_is_equivalent(out.getPortRef()));
+    QVERIFY(!admin.getPort("nothing"));
+    // A port known by reference only.
+    RTC::PortService_var in = m_reader->inPort().reference();
+    QVERIFY(admin.addPort(in.in()));
+    QVERIFY(!admin.getPort(m_reader->inPort().getName()));
+    RTC::PortServiceList_var refs = admin.getPortServiceList();
+    QCOMPARE(refs->length(), CORBA::ULong(2));
+    RTC::PortProfileList profiles = admin.getPortProfileList();
+    QCOMPARE(profiles.length(), CORBA::ULong(2));
+    QCOMPARE(std::string(profiles[0].name), std::string(out.getName()));
+
+    QCOMPARE(connectWire(), RTC::RTC_OK);
+    QVERIFY(admin.removePort(out));
+    QVERIFY(!admin.getPort(out.getName()));
+    QVERIFY(out.getConnectorIds().empty()); // removing disconnects
+    admin.deletePortByName(m_reader->inPort().getName());
+    refs = admin.getPortServiceList();
+    QCOMPARE(refs->length(), CORBA::ULong(0));
 }
 
 void TestSdkPorts::unsupportedInterfaceTypeRefused_data()

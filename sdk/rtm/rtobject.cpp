@@ -2,6 +2,8 @@
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/Manager.h>
 #include <rtm/RTObject.h>
+#include <rtm/LocalServiceBase.h>
+#include <rtm/SdoServiceProviderBase.h>
 
 #include "fsmactions.h"
 #include "sdkinternal.h"
@@ -80,8 +82,18 @@ ReturnCode_t RTObject_impl::on_initialize()
 
 ReturnCode_t RTObject_impl::on_finalize()
 {
-    return around(PreComponentActionListenerType::PRE_ON_FINALIZE, PostComponentActionListenerType::POST_ON_FINALIZE,
-                  0, [this] { return Runtime::RtObject::on_finalize(); });
+    const ReturnCode_t result
+        = around(PreComponentActionListenerType::PRE_ON_FINALIZE, PostComponentActionListenerType::POST_ON_FINALIZE,
+                 0, [this] { return Runtime::RtObject::on_finalize(); });
+    // The SDO services end with the component, while their owner (usually the component) lives.
+    std::vector<std::pair<SDOPackage::ServiceProfile, SdoServiceProviderBase *>> providers;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        providers.swap(m_sdoProviders);
+    }
+    for (auto &provider : providers)
+        provider.second->finalize();
+    return result;
 }
 
 ReturnCode_t RTObject_impl::on_startup(UniqueId exec_handle)
@@ -492,6 +504,72 @@ void RTObject_impl::removeConfigurationSetNameListener(ConfigurationSetNameListe
     m_configsets.removeConfigurationSetNameListener(type, listener);
 }
 
+bool RTObject_impl::addSdoServiceProvider(const SDOPackage::ServiceProfile &prof, SdoServiceProviderBase *provider)
+{
+    if (provider == nullptr)
+        return false;
+    SDOPackage::ServiceProfile profile(prof);
+    if (CORBA::is_nil(profile.service))
+        profile.service = provider->_this();
+    std::lock_guard<std::mutex> lock(m_sdoMutex);
+    for (const auto &offered : m_sdoProviders) {
+        if (std::string(offered.first.id) == std::string(prof.id))
+            return false;
+    }
+    m_sdoProviders.emplace_back(profile, provider);
+    return true;
+}
+
+bool RTObject_impl::removeSdoServiceProvider(const char *id)
+{
+    SdoServiceProviderBase *removed = nullptr;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        for (auto it = m_sdoProviders.begin(); it != m_sdoProviders.end(); ++it) {
+            if (id != nullptr && std::string(it->first.id) == id) {
+                removed = it->second;
+                m_sdoProviders.erase(it);
+                break;
+            }
+        }
+    }
+    if (removed == nullptr)
+        return false;
+    removed->finalize();
+    return true;
+}
+
+bool RTObject_impl::addSdoServiceConsumer(const SDOPackage::ServiceProfile &prof)
+{
+    RTC_ERROR(("addSdoServiceConsumer(%s): no SDO service consumer of interface type '%s' is available (RT Studio's "
+               "SDK has no consumer factory)",
+               static_cast<const char *>(prof.id), static_cast<const char *>(prof.interface_type)));
+    return false;
+}
+
+bool RTObject_impl::removeSdoServiceConsumer(const char *id)
+{
+    (void)id;
+    return false;
+}
+
+void RTObject_impl::removeSdoServiceConsumerStartThread(const char *id)
+{
+    removeSdoServiceConsumer(id);
+}
+
+SDOPackage::ServiceProfileList *RTObject_impl::get_service_profiles()
+{
+    SDOPackage::ServiceProfileList_var profiles = Runtime::RtObject::get_service_profiles();
+    std::lock_guard<std::mutex> lock(m_sdoMutex);
+    for (const auto &offered : m_sdoProviders) {
+        const CORBA::ULong n = profiles->length();
+        profiles->length(n + 1);
+        profiles[n] = offered.first;
+    }
+    return profiles._retn();
+}
+
 void RTObject_impl::addPreComponentActionListener(PreComponentActionListenerType listener_type,
                                                   PreComponentActionListener *listener, bool autoclean)
 {
@@ -562,6 +640,8 @@ void RTObject_impl::removePortConnectRetListener(PortConnectRetListenerType list
     m_portconnListeners.removeListener(listener_type, listener);
 }
 
+SdoServiceProviderBase::~SdoServiceProviderBase() = default;
+
 DataFlowComponentBase::DataFlowComponentBase(Manager *manager)
     : RTObject_impl(manager)
 {
@@ -570,3 +650,5 @@ DataFlowComponentBase::DataFlowComponentBase(Manager *manager)
 DataFlowComponentBase::~DataFlowComponentBase() = default;
 
 } // namespace RTC
+
+RTM::LocalServiceProfile::~LocalServiceProfile() = default;

@@ -42,6 +42,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMConsumer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMProvider.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ListenerHolder.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LocalServiceBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
@@ -60,6 +61,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortPushConnector.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMConsumer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortCallback.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortConnectListener.h
@@ -70,6 +72,8 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTC.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceConsumerBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceProviderBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SharedMemoryPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StaticFSM.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SystemLogger.h
@@ -83,6 +87,7 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/componentlisteners.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/connectorlisteners.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/configadmin.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/portadmin.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ports.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/dataportframework.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/dataconnectors.cpp

@@ -18,12 +18,15 @@
 #include <rtmruntime/rtobject.h>
 
 #include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RTC
 {
 class Manager;
+class SdoServiceProviderBase;
 
 namespace detail
 {
@@ -124,6 +127,25 @@ public:
     ReturnCode_t activate(UniqueId ec_id);
     ReturnCode_t deactivate(UniqueId ec_id);
     ReturnCode_t reset(UniqueId ec_id);
+
+    /**
+     * Offers SDO service @p provider (not owned) under @p prof, whose id must be new: the
+     * component's get_service_profiles() lists it and get_sdo_service(id) answers its reference
+     * (the provider's own when @p prof names none). False for an id already offered.
+     */
+    bool addSdoServiceProvider(const SDOPackage::ServiceProfile &prof, SdoServiceProviderBase *provider);
+    /// Withdraws the service @p id (its finalize() is called); false when there is none.
+    bool removeSdoServiceProvider(const char *id);
+    /**
+     * OpenRTM-aist makes an SDO service consumer from a factory by the profile's interface type;
+     * the SDK has no such factory: always false, with a logged message naming the type.
+     */
+    bool addSdoServiceConsumer(const SDOPackage::ServiceProfile &prof);
+    /// False: no consumer can have been added (see addSdoServiceConsumer).
+    bool removeSdoServiceConsumer(const char *id);
+    void removeSdoServiceConsumerStartThread(const char *id);
+    /// The component's service profiles: those given through SDO plus the providers added here.
+    SDOPackage::ServiceProfileList *get_service_profiles() override;
 
     /// Reads every InPort (before onExecute when setReadAll(true) was called).
     bool readAll();
@@ -349,6 +371,8 @@ private:
     std::string m_typeName;
     std::string m_category;
     std::vector<PortBase *> m_addedPorts;
+    std::mutex m_sdoMutex;
+    std::vector<std::pair<SDOPackage::ServiceProfile, SdoServiceProviderBase *>> m_sdoProviders;
 };
 } // namespace RTC
 
