@@ -9,13 +9,13 @@
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/DataInPort.h>
 #include <rtm/DataOutPort.h>
-#include <rtm/Manager.h>
 #include <rtm/InPortCorbaCdrConsumer.h>
 #include <rtm/InPortCorbaCdrProvider.h>
 #include <rtm/InPortDSConsumer.h>
 #include <rtm/InPortPullConnector.h>
 #include <rtm/InPortPushConnector.h>
 #include <rtm/InPortSHMConsumer.h>
+#include <rtm/Manager.h>
 #include <rtm/OutPortCorbaCdrConsumer.h>
 #include <rtm/OutPortCorbaCdrProvider.h>
 #include <rtm/OutPortPullConnector.h>
@@ -90,7 +90,10 @@ std::string number(long value)
 
 struct RecordWrite : RTC::OnWrite<RTC::TimedLong>
 {
-    void operator()(const RTC::TimedLong &value) override { eventLog().add("write " + number(value.data)); }
+    void operator()(const RTC::TimedLong &value) override
+    {
+        eventLog().add("write " + number(value.data));
+    }
 };
 
 struct TimesTen : RTC::OnWriteConvert<RTC::TimedLong>
@@ -135,21 +138,64 @@ struct SupplyOnUnderflow : RTC::OnUnderflow<RTC::TimedLong>
 
 struct RecordOverflow : RTC::OnOverflow<RTC::TimedLong>
 {
-    void operator()(const RTC::TimedLong &value) override { eventLog().add("overflow " + number(value.data)); }
+    void operator()(const RTC::TimedLong &value) override
+    {
+        eventLog().add("overflow " + number(value.data));
+    }
 };
 
 // --- components ---
 
-const char *const writerSpec[] = {"implementation_id", "PortsWriter", "type_name", "PortsWriter",
-                                  "description", "writer", "version", "1.0.0", "vendor", "RTStudioTests",
-                                  "category", "test", "activity_type", "PERIODIC", "kind", "DataFlowComponent",
-                                  "max_instance", "0", "language", "C++", "lang_type", "compile",
-                                  "exec_cxt.periodic.rate", "200", ""};
-const char *const readerSpec[] = {"implementation_id", "PortsReader", "type_name", "PortsReader",
-                                  "description", "reader", "version", "1.0.0", "vendor", "RTStudioTests",
-                                  "category", "test", "activity_type", "PERIODIC", "kind", "DataFlowComponent",
-                                  "max_instance", "0", "language", "C++", "lang_type", "compile",
-                                  "exec_cxt.periodic.rate", "200", ""};
+const char *const writerSpec[] = {"implementation_id",
+                                  "PortsWriter",
+                                  "type_name",
+                                  "PortsWriter",
+                                  "description",
+                                  "writer",
+                                  "version",
+                                  "1.0.0",
+                                  "vendor",
+                                  "RTStudioTests",
+                                  "category",
+                                  "test",
+                                  "activity_type",
+                                  "PERIODIC",
+                                  "kind",
+                                  "DataFlowComponent",
+                                  "max_instance",
+                                  "0",
+                                  "language",
+                                  "C++",
+                                  "lang_type",
+                                  "compile",
+                                  "exec_cxt.periodic.rate",
+                                  "200",
+                                  ""};
+const char *const readerSpec[] = {"implementation_id",
+                                  "PortsReader",
+                                  "type_name",
+                                  "PortsReader",
+                                  "description",
+                                  "reader",
+                                  "version",
+                                  "1.0.0",
+                                  "vendor",
+                                  "RTStudioTests",
+                                  "category",
+                                  "test",
+                                  "activity_type",
+                                  "PERIODIC",
+                                  "kind",
+                                  "DataFlowComponent",
+                                  "max_instance",
+                                  "0",
+                                  "language",
+                                  "C++",
+                                  "lang_type",
+                                  "compile",
+                                  "exec_cxt.periodic.rate",
+                                  "200",
+                                  ""};
 
 /// Writes when the test says so; its listeners (added before onInitialize) log every action.
 class PortsWriter : public RTC::DataFlowComponentBase
@@ -164,7 +210,8 @@ public:
         using Post = RTC::PostComponentActionListenerType;
         // The member-function forms, as components write them.
         addPreComponentActionListener(Pre::PRE_ON_INITIALIZE, *this, &PortsWriter::preInitialize);
-        addPostComponentActionListener(Post::POST_ON_INITIALIZE, *this, &PortsWriter::postInitialize);
+        addPostComponentActionListener(Post::POST_ON_INITIALIZE, *this,
+                                       &PortsWriter::postInitialize);
         addPreComponentActionListener(Pre::PRE_ON_ACTIVATED, *this, &PortsWriter::preActivated);
         addPostComponentActionListener(Post::POST_ON_ACTIVATED, *this, &PortsWriter::postActivated);
         addPreComponentActionListener(Pre::PRE_ON_EXECUTE, *this, &PortsWriter::preExecute);
@@ -172,20 +219,24 @@ public:
         addPreComponentActionListener(Pre::PRE_ON_DEACTIVATED, *this, &PortsWriter::preDeactivated);
         addPreComponentActionListener(Pre::PRE_ON_FINALIZE, *this, &PortsWriter::preFinalize);
         addPostComponentActionListener(Post::POST_ON_FINALIZE, *this, &PortsWriter::postFinalize);
-        addPostComponentActionListener(Post::POST_ON_DEACTIVATED, *this, &PortsWriter::postDeactivated);
-        addPortActionListener(RTC::PortActionListenerType::ADD_PORT, *this, &PortsWriter::portAdded);
-        addPortActionListener(RTC::PortActionListenerType::REMOVE_PORT, *this, &PortsWriter::portRemoved);
-        addExecutionContextActionListener(RTC::ExecutionContextActionListenerType::EC_ATTACHED, *this,
-                                          &PortsWriter::attached);
-        addExecutionContextActionListener(RTC::ExecutionContextActionListenerType::EC_DETACHED, *this,
-                                          &PortsWriter::detached);
+        addPostComponentActionListener(Post::POST_ON_DEACTIVATED, *this,
+                                       &PortsWriter::postDeactivated);
+        addPortActionListener(RTC::PortActionListenerType::ADD_PORT, *this,
+                              &PortsWriter::portAdded);
+        addPortActionListener(RTC::PortActionListenerType::REMOVE_PORT, *this,
+                              &PortsWriter::portRemoved);
+        addExecutionContextActionListener(RTC::ExecutionContextActionListenerType::EC_ATTACHED,
+                                          *this, &PortsWriter::attached);
+        addExecutionContextActionListener(RTC::ExecutionContextActionListenerType::EC_DETACHED,
+                                          *this, &PortsWriter::detached);
         using Connect = RTC::PortConnectListenerType;
         using Ret = RTC::PortConnectRetListenerType;
         for (Connect type : {Connect::ON_NOTIFY_CONNECT, Connect::ON_NOTIFY_DISCONNECT,
                              Connect::ON_UNSUBSCRIBE_INTERFACES})
             addPortConnectListener(type, new ConnectStep(type));
-        for (Ret type : {Ret::ON_PUBLISH_INTERFACES, Ret::ON_CONNECT_NEXTPORT, Ret::ON_SUBSCRIBE_INTERFACES,
-                         Ret::ON_CONNECTED, Ret::ON_DISCONNECT_NEXT, Ret::ON_DISCONNECTED})
+        for (Ret type :
+             {Ret::ON_PUBLISH_INTERFACES, Ret::ON_CONNECT_NEXTPORT, Ret::ON_SUBSCRIBE_INTERFACES,
+              Ret::ON_CONNECTED, Ret::ON_DISCONNECT_NEXT, Ret::ON_DISCONNECTED})
             addPortConnectRetListener(type, new ConnectRetStep(type));
     }
     RTC::ReturnCode_t onInitialize() override
@@ -225,7 +276,9 @@ private:
     class ConnectStep : public RTC::PortConnectListener
     {
     public:
-        explicit ConnectStep(RTC::PortConnectListenerType type) : m_type(type) {}
+        explicit ConnectStep(RTC::PortConnectListenerType type)
+            : m_type(type)
+        { }
         void operator()(const char *portname, RTC::ConnectorProfile &) override
         {
             eventLog().add(std::string("port ") + toString(m_type) + " " + portname);
@@ -237,10 +290,14 @@ private:
     class ConnectRetStep : public RTC::PortConnectRetListener
     {
     public:
-        explicit ConnectRetStep(RTC::PortConnectRetListenerType type) : m_type(type) {}
-        void operator()(const char *portname, RTC::ConnectorProfile &, RTC::ReturnCode_t ret) override
+        explicit ConnectRetStep(RTC::PortConnectRetListenerType type)
+            : m_type(type)
+        { }
+        void operator()(const char *portname, RTC::ConnectorProfile &,
+                        RTC::ReturnCode_t ret) override
         {
-            eventLog().add(std::string("port ") + toString(m_type) + " " + portname + " " + number(long(ret)));
+            eventLog().add(std::string("port ") + toString(m_type) + " " + portname + " "
+                           + number(long(ret)));
         }
 
     private:
@@ -266,7 +323,10 @@ private:
     {
         eventLog().add("post finalize " + number(long(id)) + " " + number(long(ret)));
     }
-    void portAdded(const RTC::PortProfile &profile) { eventLog().add(std::string("add port ") + profile.name.in()); }
+    void portAdded(const RTC::PortProfile &profile)
+    {
+        eventLog().add(std::string("add port ") + profile.name.in());
+    }
     void portRemoved(const RTC::PortProfile &profile)
     {
         eventLog().add(std::string("remove port ") + profile.name.in());
@@ -286,8 +346,7 @@ public:
     explicit PortsReader(RTC::Manager *manager)
         : RTC::DataFlowComponentBase(manager)
         , m_inIn("in", m_in)
-    {
-    }
+    { }
     RTC::ReturnCode_t onInitialize() override
     {
         m_in.data = 0;
@@ -335,18 +394,27 @@ class BytesStream : public RTC::ByteDataStreamBase
 {
 public:
     BytesStream() = default;
-    explicit BytesStream(const std::vector<unsigned char> &bytes) : m_bytes(bytes) {}
-    void writeData(const unsigned char *buffer, unsigned long length) override { m_bytes.assign(buffer, buffer + length); }
+    explicit BytesStream(const std::vector<unsigned char> &bytes)
+        : m_bytes(bytes)
+    { }
+    void writeData(const unsigned char *buffer, unsigned long length) override
+    {
+        m_bytes.assign(buffer, buffer + length);
+    }
     void readData(unsigned char *buffer, unsigned long length) const override
     {
         std::memcpy(buffer, m_bytes.data(), std::min<size_t>(length, m_bytes.size()));
     }
-    unsigned long getDataLength() const override { return static_cast<unsigned long>(m_bytes.size()); }
+    unsigned long getDataLength() const override
+    {
+        return static_cast<unsigned long>(m_bytes.size());
+    }
 
     std::vector<unsigned char> m_bytes;
 };
 
-// QTest would take RTC::toString(DataPortStatus) for its own (and free its static text): names compare instead.
+// QTest would take RTC::toString(DataPortStatus) for its own (and free its static text): names
+// compare instead.
 QString status(RTC::DataPortStatus value)
 {
     return QString::fromLatin1(RTC::toString(value));
@@ -386,7 +454,8 @@ SDOPackage::NVList corbaCdrProperties()
     return properties;
 }
 
-RTC::ConnectorProfile dataConnector(RTC::PortBase &out, RTC::PortBase &in, const char *interfaceType)
+RTC::ConnectorProfile dataConnector(RTC::PortBase &out, RTC::PortBase &in,
+                                    const char *interfaceType)
 {
     RTC::ConnectorProfile profile;
     profile.name = CORBA::string_dup("wire");
@@ -449,9 +518,10 @@ void TestSdkPorts::initTestCase()
 {
     QVERIFY(m_logDir.isValid());
     const QByteArray logFile = "logger.file_name:" + m_logDir.filePath("ports.log").toUtf8();
-    const char *args[] = {"tst_sdkports", "-o", "naming.enable:NO", "-o", "corba.master_manager:",
-                          "-o", "corba.endpoints:127.0.0.1:", "-o", "logger.log_level:ERROR",
-                          "-o", logFile.constData(), "-f", "/nonexistent/rtc.conf", "-i"};
+    const char *args[] = {"tst_sdkports",           "-o", "naming.enable:NO",           "-o",
+                          "corba.master_manager:",  "-o", "corba.endpoints:127.0.0.1:", "-o",
+                          "logger.log_level:ERROR", "-o", logFile.constData(),          "-f",
+                          "/nonexistent/rtc.conf",  "-i"};
     std::vector<char *> argv;
     for (const char *arg : args)
         argv.push_back(const_cast<char *>(arg));
@@ -501,7 +571,8 @@ QString TestSdkPorts::logText()
 
 RTC::ReturnCode_t TestSdkPorts::connectWire(const char *interfaceType)
 {
-    RTC::ConnectorProfile profile = dataConnector(m_writer->outPort(), m_reader->inPort(), interfaceType);
+    RTC::ConnectorProfile profile
+        = dataConnector(m_writer->outPort(), m_reader->inPort(), interfaceType);
     const RTC::ReturnCode_t result = m_writer->outPort().connect(profile);
     m_connectorId = profile.connector_id.in();
     return result;
@@ -526,13 +597,15 @@ void TestSdkPorts::callbacksAtTheirMoments()
     // OnWrite sees the value written, OnWriteConvert's result is what travels, OnRead comes
     // before the read and OnReadConvert's result is what the component gets.
     QCOMPARE(value, 31L);
-    QCOMPARE(eventLog().events(), (std::vector<std::string>{"write 3", "wconvert 3", "read", "rconvert 30"}));
+    QCOMPARE(eventLog().events(),
+             (std::vector<std::string> {"write 3", "wconvert 3", "read", "rconvert 30"}));
     QCOMPARE(status(m_reader->inPort().getStatus(0)), status(RTC::DataPortStatus::PORT_OK));
 
     eventLog().clear();
     QVERIFY(!m_reader->read(&value));
-    QCOMPARE(eventLog().events(), (std::vector<std::string>{"read"}));
-    QCOMPARE(m_reader->inPort().getStatusList(), RTC::DataPortStatusList(1, RTC::DataPortStatus::BUFFER_EMPTY));
+    QCOMPARE(eventLog().events(), (std::vector<std::string> {"read"}));
+    QCOMPARE(m_reader->inPort().getStatusList(),
+             RTC::DataPortStatusList(1, RTC::DataPortStatus::BUFFER_EMPTY));
 
     // Callbacks taken away are no longer called.
     m_writer->outPort().setOnWriteConvert(nullptr);
@@ -541,7 +614,7 @@ void TestSdkPorts::callbacksAtTheirMoments()
     QVERIFY(m_writer->write(4));
     QVERIFY(m_reader->read(&value));
     QCOMPARE(value, 4L);
-    QCOMPARE(eventLog().events(), (std::vector<std::string>{"write 4", "read"}));
+    QCOMPARE(eventLog().events(), (std::vector<std::string> {"write 4", "read"}));
 }
 
 void TestSdkPorts::underflowSuppliesData()
@@ -570,7 +643,7 @@ void TestSdkPorts::overflowSeesTheSampleThatDidNotFit()
         QVERIFY(m_writer->write(i));
     QVERIFY(eventLog().matching("overflow").isEmpty());
     QVERIFY(m_writer->write(9));
-    QCOMPARE(eventLog().matching("overflow"), QStringList{"overflow 9"});
+    QCOMPARE(eventLog().matching("overflow"), QStringList {"overflow 9"});
     // The oldest sample made room for the new one.
     long value = 0;
     QVERIFY(m_reader->read(&value));
@@ -603,9 +676,9 @@ void TestSdkPorts::portApiAfterConnect()
     QCOMPARE(connectWire(), RTC::RTC_OK);
     QVERIFY(!m_connectorId.empty());
     for (RTC::DataPortListeners *port : {static_cast<RTC::DataPortListeners *>(&out),
-                                        static_cast<RTC::DataPortListeners *>(&in)}) {
-        QCOMPARE(port->getConnectorIds(), coil::vstring{m_connectorId});
-        QCOMPARE(port->getConnectorNames(), coil::vstring{"wire"});
+                                         static_cast<RTC::DataPortListeners *>(&in)}) {
+        QCOMPARE(port->getConnectorIds(), coil::vstring {m_connectorId});
+        QCOMPARE(port->getConnectorNames(), coil::vstring {"wire"});
         RTC::ConnectorInfo info;
         QVERIFY(port->getConnectorProfileById(m_connectorId.c_str(), info));
         QCOMPARE(info.name, std::string("wire"));
@@ -642,10 +715,13 @@ void TestSdkPorts::componentActionListenersInOrder()
     // initialize() ran in createComponent(): the listeners added in the constructor saw it,
     // and the port added in onInitialize.
     const QStringList initialization = eventLog().matching("");
-    const QString portName = QString::fromStdString(std::string(m_writer->getInstanceName()) + ".out");
-    const QString servicePortName = QString::fromStdString(std::string(m_writer->getInstanceName()) + ".service");
-    QCOMPARE(initialization.mid(0, 5), (QStringList{"pre initialize 0", "onInitialize", "add port " + portName,
-                                                    "add port " + servicePortName, "post initialize 0 0"}));
+    const QString portName
+        = QString::fromStdString(std::string(m_writer->getInstanceName()) + ".out");
+    const QString servicePortName
+        = QString::fromStdString(std::string(m_writer->getInstanceName()) + ".service");
+    QCOMPARE(initialization.mid(0, 5),
+             (QStringList {"pre initialize 0", "onInitialize", "add port " + portName,
+                           "add port " + servicePortName, "post initialize 0 0"}));
 
     eventLog().clear();
     QCOMPARE(m_writer->activate(0), RTC::RTC_OK);
@@ -653,20 +729,22 @@ void TestSdkPorts::componentActionListenersInOrder()
     QCOMPARE(m_writer->deactivate(0), RTC::RTC_OK);
     QTRY_VERIFY_WITH_TIMEOUT(!eventLog().matching("post deactivated").isEmpty(), 5000);
     const QStringList events = eventLog().matching("");
-    QCOMPARE(events.mid(0, 6), (QStringList{"pre activated 0", "onActivated", "post activated 0 0", "pre execute",
-                                            "onExecute", "post execute"}));
+    QCOMPARE(events.mid(0, 6),
+             (QStringList {"pre activated 0", "onActivated", "post activated 0 0", "pre execute",
+                           "onExecute", "post execute"}));
     QCOMPARE(events.mid(events.size() - 3),
-             (QStringList{"pre deactivated", "onDeactivated", "post deactivated"}));
+             (QStringList {"pre deactivated", "onDeactivated", "post deactivated"}));
 
     eventLog().clear();
     m_writer->dropPort();
-    QCOMPARE(eventLog().matching("remove port"), QStringList{"remove port " + portName});
+    QCOMPARE(eventLog().matching("remove port"), QStringList {"remove port " + portName});
 
     eventLog().clear();
     m_manager->deleteComponent(m_writer);
     m_writer = nullptr;
-    QTRY_COMPARE_WITH_TIMEOUT(eventLog().matching("post finalize"), QStringList{"post finalize 0 0"}, 5000);
-    QCOMPARE(eventLog().matching("pre finalize"), QStringList{"pre finalize 0"});
+    QTRY_COMPARE_WITH_TIMEOUT(eventLog().matching("post finalize"),
+                              QStringList {"post finalize 0 0"}, 5000);
+    QCOMPARE(eventLog().matching("pre finalize"), QStringList {"pre finalize 0"});
 }
 
 void TestSdkPorts::executionContextListeners()
@@ -684,7 +762,7 @@ void TestSdkPorts::executionContextListeners()
     RTC::ExecutionContext_var known = m_writer->get_context(id);
     QVERIFY(context->_is_equivalent(known));
     QCOMPARE(context->remove_component(writer), RTC::RTC_OK);
-    QCOMPARE(eventLog().matching("detached "), QStringList{"detached " + QString::number(id)});
+    QCOMPARE(eventLog().matching("detached "), QStringList {"detached " + QString::number(id)});
 }
 
 void TestSdkPorts::portConnectListenersOnConnectAndDisconnect()
@@ -695,18 +773,18 @@ void TestSdkPorts::portConnectListenersOnConnectAndDisconnect()
     // The writer's port is the first of the connector: it publishes, passes the profile on to
     // the reader's port, then subscribes.
     QCOMPARE(eventLog().matching("port "),
-             (QStringList{QString::fromStdString("port ON_NOTIFY_CONNECT " + port),
-                          QString::fromStdString("port ON_PUBLISH_INTERFACES " + port + " 0"),
-                          QString::fromStdString("port ON_CONNECT_NEXTPORT " + port + " 0"),
-                          QString::fromStdString("port ON_SUBSCRIBE_INTERFACES " + port + " 0"),
-                          QString::fromStdString("port ON_CONNECTED " + port + " 0")}));
+             (QStringList {QString::fromStdString("port ON_NOTIFY_CONNECT " + port),
+                           QString::fromStdString("port ON_PUBLISH_INTERFACES " + port + " 0"),
+                           QString::fromStdString("port ON_CONNECT_NEXTPORT " + port + " 0"),
+                           QString::fromStdString("port ON_SUBSCRIBE_INTERFACES " + port + " 0"),
+                           QString::fromStdString("port ON_CONNECTED " + port + " 0")}));
     eventLog().clear();
     QCOMPARE(m_reader->inPort().disconnect(m_connectorId.c_str()), RTC::RTC_OK);
     QCOMPARE(eventLog().matching("port "),
-             (QStringList{QString::fromStdString("port ON_NOTIFY_DISCONNECT " + port),
-                          QString::fromStdString("port ON_UNSUBSCRIBE_INTERFACES " + port),
-                          QString::fromStdString("port ON_DISCONNECT_NEXT " + port + " 0"),
-                          QString::fromStdString("port ON_DISCONNECTED " + port + " 0")}));
+             (QStringList {QString::fromStdString("port ON_NOTIFY_DISCONNECT " + port),
+                           QString::fromStdString("port ON_UNSUBSCRIBE_INTERFACES " + port),
+                           QString::fromStdString("port ON_DISCONNECT_NEXT " + port + " 0"),
+                           QString::fromStdString("port ON_DISCONNECTED " + port + " 0")}));
 }
 
 void TestSdkPorts::connectorObjectsOfPorts()
@@ -724,7 +802,8 @@ void TestSdkPorts::connectorObjectsOfPorts()
     QVERIFY(!in.getConnectorByName("nothing"));
     QCOMPARE(std::string(sending->id()), m_connectorId);
     QCOMPARE(std::string(receiving->name()), std::string("wire"));
-    QCOMPARE(receiving->profile().properties.getProperty("data_type"), std::string("IDL:RTC/TimedLong:1.0"));
+    QCOMPARE(receiving->profile().properties.getProperty("data_type"),
+             std::string("IDL:RTC/TimedLong:1.0"));
     QVERIFY(receiving->isLittleEndian());
 
     // A sample written by the port is read through the connector, one written through the
@@ -775,7 +854,8 @@ void TestSdkPorts::transportObjectsPushOverCorbaCdr()
     BytesStream received;
     // Once read, a sample is gone: the condition remembers that it came.
     bool arrived = false;
-    QTRY_VERIFY_WITH_TIMEOUT(arrived || (arrived = receiving.read(&received) == RTC::DataPortStatus::PORT_OK), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        arrived || (arrived = receiving.read(&received) == RTC::DataPortStatus::PORT_OK), 5000);
     QCOMPARE(unmarshalled(received.m_bytes), 21L);
     QCOMPARE(status(receiving.read(&received)), status(RTC::DataPortStatus::BUFFER_EMPTY));
     QCOMPARE(status(sending.disconnect()), status(RTC::DataPortStatus::PORT_OK));
@@ -889,7 +969,8 @@ void TestSdkPorts::unsupportedInterfaceTypeRefused()
     QVERIFY(m_reader->inPort().getConnectorIds().empty());
     RTC::ConnectorProfileList_var left = m_writer->outPort().get_connector_profiles();
     QCOMPARE(left->length(), CORBA::ULong(0));
-    const QString expected = QString("interface type '%1' is not available").arg(QString::fromUtf8(interfaceType));
+    const QString expected
+        = QString("interface type '%1' is not available").arg(QString::fromUtf8(interfaceType));
     QTRY_VERIFY2_WITH_TIMEOUT(logText().contains(expected), qPrintable(logText()), 5000);
     QVERIFY(logText().contains(QString::fromUtf8(m_writer->outPort().getName())));
 }

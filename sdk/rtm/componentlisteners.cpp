@@ -7,16 +7,14 @@ namespace RTC {
 
 namespace {
 
-template <typename Enum, size_t N>
-const char *nameOf(Enum type, const char *const (&names)[N])
+template<typename Enum, size_t N> const char *nameOf(Enum type, const char *const (&names)[N])
 {
     const size_t index = static_cast<size_t>(type);
     return index < N ? names[index] : "";
 }
 
 // Holder index of a listener type; false for the *_NUM sentinels and beyond.
-template <typename Holders, typename Enum>
-bool validIndex(const Holders &holders, Enum type)
+template<typename Holders, typename Enum> bool validIndex(const Holders &holders, Enum type)
 {
     return static_cast<size_t>(type) < holders.size();
 }
@@ -27,8 +25,8 @@ bool validIndex(const Holders &holders, Enum type)
 
 const char *PortConnectListener::toString(PortConnectListenerType type)
 {
-    static const char *const names[]
-        = {"ON_NOTIFY_CONNECT", "ON_NOTIFY_DISCONNECT", "ON_UNSUBSCRIBE_INTERFACES", "PORT_CONNECT_LISTENER_NUM"};
+    static const char *const names[] = {"ON_NOTIFY_CONNECT", "ON_NOTIFY_DISCONNECT",
+                                        "ON_UNSUBSCRIBE_INTERFACES", "PORT_CONNECT_LISTENER_NUM"};
     return nameOf(type, names);
 }
 
@@ -36,8 +34,9 @@ PortConnectListener::~PortConnectListener() = default;
 
 const char *PortConnectRetListener::toString(PortConnectRetListenerType type)
 {
-    static const char *const names[] = {"ON_PUBLISH_INTERFACES", "ON_CONNECT_NEXTPORT", "ON_SUBSCRIBE_INTERFACES",
-                                        "ON_CONNECTED",          "ON_DISCONNECT_NEXT",  "ON_DISCONNECTED",
+    static const char *const names[] = {"ON_PUBLISH_INTERFACES",        "ON_CONNECT_NEXTPORT",
+                                        "ON_SUBSCRIBE_INTERFACES",      "ON_CONNECTED",
+                                        "ON_DISCONNECT_NEXT",           "ON_DISCONNECTED",
                                         "PORT_CONNECT_RET_LISTENER_NUM"};
     return nameOf(type, names);
 }
@@ -55,7 +54,8 @@ void PortConnectListenerHolder::notify(const char *portname, RTC::ConnectorProfi
 PortConnectRetListenerHolder::PortConnectRetListenerHolder() = default;
 PortConnectRetListenerHolder::~PortConnectRetListenerHolder() = default;
 
-void PortConnectRetListenerHolder::notify(const char *portname, RTC::ConnectorProfile &profile, ReturnCode_t ret)
+void PortConnectRetListenerHolder::notify(const char *portname, RTC::ConnectorProfile &profile,
+                                          ReturnCode_t ret)
 {
     LISTENERHOLDER_CALLBACK(operator(), (portname, profile, ret));
 }
@@ -63,7 +63,8 @@ void PortConnectRetListenerHolder::notify(const char *portname, RTC::ConnectorPr
 PortConnectListeners::PortConnectListeners() = default;
 PortConnectListeners::~PortConnectListeners() = default;
 
-bool PortConnectListeners::addListener(PortConnectListenerType type, PortConnectListener *listener, bool autoclean)
+bool PortConnectListeners::addListener(PortConnectListenerType type, PortConnectListener *listener,
+                                       bool autoclean)
 {
     if (!validIndex(portconnect_, type))
         return false;
@@ -71,7 +72,8 @@ bool PortConnectListeners::addListener(PortConnectListenerType type, PortConnect
     return true;
 }
 
-bool PortConnectListeners::removeListener(PortConnectListenerType type, PortConnectListener *listener)
+bool PortConnectListeners::removeListener(PortConnectListenerType type,
+                                          PortConnectListener *listener)
 {
     if (!validIndex(portconnect_, type))
         return false;
@@ -79,8 +81,8 @@ bool PortConnectListeners::removeListener(PortConnectListenerType type, PortConn
     return true;
 }
 
-bool PortConnectListeners::addListener(PortConnectRetListenerType type, PortConnectRetListener *listener,
-                                       bool autoclean)
+bool PortConnectListeners::addListener(PortConnectRetListenerType type,
+                                       PortConnectRetListener *listener, bool autoclean)
 {
     if (!validIndex(portconnret_, type))
         return false;
@@ -88,7 +90,8 @@ bool PortConnectListeners::addListener(PortConnectRetListenerType type, PortConn
     return true;
 }
 
-bool PortConnectListeners::removeListener(PortConnectRetListenerType type, PortConnectRetListener *listener)
+bool PortConnectListeners::removeListener(PortConnectRetListenerType type,
+                                          PortConnectRetListener *listener)
 {
     if (!validIndex(portconnret_, type))
         return false;
@@ -96,7 +99,8 @@ bool PortConnectListeners::removeListener(PortConnectRetListenerType type, PortC
     return true;
 }
 
-bool PortConnectListeners::notify(PortConnectListenerType type, const char *portname, RTC::ConnectorProfile &profile)
+bool PortConnectListeners::notify(PortConnectListenerType type, const char *portname,
+                                  RTC::ConnectorProfile &profile)
 {
     if (!validIndex(portconnect_, type))
         return false;
@@ -117,11 +121,19 @@ bool PortConnectListeners::notify(PortConnectRetListenerType type, const char *p
 
 const char *PreComponentActionListener::toString(PreComponentActionListenerType type)
 {
-    static const char *const names[]
-        = {"PRE_ON_INITIALIZE", "PRE_ON_FINALIZE", "PRE_ON_STARTUP",      "PRE_ON_SHUTDOWN",
-           "PRE_ON_ACTIVATED",  "PRE_ON_DEACTIVATED", "PRE_ON_ABORTING",  "PRE_ON_ERROR",
-           "PRE_ON_RESET",      "PRE_ON_EXECUTE",  "PRE_ON_STATE_UPDATE", "PRE_ON_RATE_CHANGED",
-           "PRE_COMPONENT_ACTION_LISTENER_NUM"};
+    static const char *const names[] = {"PRE_ON_INITIALIZE",
+                                        "PRE_ON_FINALIZE",
+                                        "PRE_ON_STARTUP",
+                                        "PRE_ON_SHUTDOWN",
+                                        "PRE_ON_ACTIVATED",
+                                        "PRE_ON_DEACTIVATED",
+                                        "PRE_ON_ABORTING",
+                                        "PRE_ON_ERROR",
+                                        "PRE_ON_RESET",
+                                        "PRE_ON_EXECUTE",
+                                        "PRE_ON_STATE_UPDATE",
+                                        "PRE_ON_RATE_CHANGED",
+                                        "PRE_COMPONENT_ACTION_LISTENER_NUM"};
     return nameOf(type, names);
 }
 
@@ -129,11 +141,19 @@ PreComponentActionListener::~PreComponentActionListener() = default;
 
 const char *PostComponentActionListener::toString(PostComponentActionListenerType type)
 {
-    static const char *const names[]
-        = {"POST_ON_INITIALIZE", "POST_ON_FINALIZE",   "POST_ON_STARTUP",      "POST_ON_SHUTDOWN",
-           "POST_ON_ACTIVATED",  "POST_ON_DEACTIVATED", "POST_ON_ABORTING",    "POST_ON_ERROR",
-           "POST_ON_RESET",      "POST_ON_EXECUTE",    "POST_ON_STATE_UPDATE", "POST_ON_RATE_CHANGED",
-           "POST_COMPONENT_ACTION_LISTENER_NUM"};
+    static const char *const names[] = {"POST_ON_INITIALIZE",
+                                        "POST_ON_FINALIZE",
+                                        "POST_ON_STARTUP",
+                                        "POST_ON_SHUTDOWN",
+                                        "POST_ON_ACTIVATED",
+                                        "POST_ON_DEACTIVATED",
+                                        "POST_ON_ABORTING",
+                                        "POST_ON_ERROR",
+                                        "POST_ON_RESET",
+                                        "POST_ON_EXECUTE",
+                                        "POST_ON_STATE_UPDATE",
+                                        "POST_ON_RATE_CHANGED",
+                                        "POST_COMPONENT_ACTION_LISTENER_NUM"};
     return nameOf(type, names);
 }
 
@@ -188,7 +208,7 @@ ComponentActionListeners::~ComponentActionListeners() = default;
 
 namespace {
 
-template <typename Holders, typename Enum, typename Listener>
+template<typename Holders, typename Enum, typename Listener>
 bool addTo(Holders &holders, Enum type, Listener *listener, bool autoclean)
 {
     if (!validIndex(holders, type))
@@ -197,7 +217,7 @@ bool addTo(Holders &holders, Enum type, Listener *listener, bool autoclean)
     return true;
 }
 
-template <typename Holders, typename Enum, typename Listener>
+template<typename Holders, typename Enum, typename Listener>
 bool removeFrom(Holders &holders, Enum type, Listener *listener)
 {
     if (!validIndex(holders, type))
@@ -208,8 +228,8 @@ bool removeFrom(Holders &holders, Enum type, Listener *listener)
 
 } // namespace
 
-bool ComponentActionListeners::addListener(PreComponentActionListenerType type, PreComponentActionListener *listener,
-                                           bool autoclean)
+bool ComponentActionListeners::addListener(PreComponentActionListenerType type,
+                                           PreComponentActionListener *listener, bool autoclean)
 {
     return addTo(preaction_, type, listener, autoclean);
 }
@@ -220,7 +240,8 @@ bool ComponentActionListeners::addListener(PostComponentActionListenerType type,
     return addTo(postaction_, type, listener, autoclean);
 }
 
-bool ComponentActionListeners::addListener(PortActionListenerType type, PortActionListener *listener, bool autoclean)
+bool ComponentActionListeners::addListener(PortActionListenerType type,
+                                           PortActionListener *listener, bool autoclean)
 {
     return addTo(portaction_, type, listener, autoclean);
 }
@@ -243,7 +264,8 @@ bool ComponentActionListeners::removeListener(PostComponentActionListenerType ty
     return removeFrom(postaction_, type, listener);
 }
 
-bool ComponentActionListeners::removeListener(PortActionListenerType type, PortActionListener *listener)
+bool ComponentActionListeners::removeListener(PortActionListenerType type,
+                                              PortActionListener *listener)
 {
     return removeFrom(portaction_, type, listener);
 }
@@ -262,7 +284,8 @@ bool ComponentActionListeners::notify(PreComponentActionListenerType type, Uniqu
     return true;
 }
 
-bool ComponentActionListeners::notify(PostComponentActionListenerType type, UniqueId ec_id, ReturnCode_t ret)
+bool ComponentActionListeners::notify(PostComponentActionListenerType type, UniqueId ec_id,
+                                      ReturnCode_t ret)
 {
     if (!validIndex(postaction_, type))
         return false;

@@ -45,15 +45,16 @@ DataPortStatus toDataPortStatus(BufferStatus status)
     }
 }
 
-void notifyData(ConnectorListenersBase *listeners, ConnectorDataListenerType type, const ConnectorInfo &info,
-                const ByteData &data, bool littleEndian)
+void notifyData(ConnectorListenersBase *listeners, ConnectorDataListenerType type,
+                const ConnectorInfo &info, const ByteData &data, bool littleEndian)
 {
     auto *holder = dynamic_cast<ConnectorListeners *>(listeners);
     if (holder != nullptr && holder->hasListeners(type))
         holder->notifyData(type, info.id, data.getBuffer(), data.getDataLength(), littleEndian);
 }
 
-void notify(ConnectorListenersBase *listeners, ConnectorListenerType type, const ConnectorInfo &info)
+void notify(ConnectorListenersBase *listeners, ConnectorListenerType type,
+            const ConnectorInfo &info)
 {
     if (auto *holder = dynamic_cast<ConnectorListeners *>(listeners))
         holder->notify(type, info.id);
@@ -110,15 +111,15 @@ ConnectorListenersBase::~ConnectorListenersBase() = default;
 
 // --- InPortConnector ---
 
-InPortConnector::InPortConnector(ConnectorInfo &info, ConnectorListenersBase *listeners, CdrBufferBase *buffer)
+InPortConnector::InPortConnector(ConnectorInfo &info, ConnectorListenersBase *listeners,
+                                 CdrBufferBase *buffer)
     : rtclog("InPortConnector")
     , m_profile(info)
     , m_listeners(listeners)
     , m_buffer(buffer)
     , m_littleEndian(Sdk::littleEndianOf(info))
     , m_marshaling_type(info.properties.getProperty("marshaling_type", "cdr"))
-{
-}
+{ }
 
 InPortConnector::~InPortConnector() = default;
 
@@ -158,9 +159,11 @@ BufferStatus InPortConnector::write(ByteData &cdr)
         return BufferStatus::PRECONDITION_NOT_MET;
     const BufferStatus status = m_buffer->write(cdr, std::chrono::nanoseconds(0));
     if (status == BufferStatus::OK)
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, m_profile, cdr, m_littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, m_profile, cdr,
+                        m_littleEndian);
     else if (status == BufferStatus::FULL)
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_FULL, m_profile, cdr, m_littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_FULL, m_profile, cdr,
+                        m_littleEndian);
     return status;
 }
 
@@ -177,8 +180,7 @@ OutPortConnector::OutPortConnector(ConnectorInfo &info, ConnectorListenersBase *
     , m_littleEndian(Sdk::littleEndianOf(info))
     , m_listeners(listeners)
     , m_marshaling_type(info.properties.getProperty("marshaling_type", "cdr"))
-{
-}
+{ }
 
 OutPortConnector::~OutPortConnector() = default;
 
@@ -258,7 +260,8 @@ DataPortStatus InPortPushConnector::read(ByteDataStreamBase *data)
     if (status == BufferStatus::OK) {
         data->isLittleEndian(m_littleEndian);
         data->writeData(bytes.getBuffer(), bytes.getDataLength());
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_READ, m_profile, bytes, m_littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_READ, m_profile, bytes,
+                        m_littleEndian);
     } else if (status == BufferStatus::EMPTY) {
         Sdk::notify(m_listeners, ConnectorListenerType::ON_BUFFER_EMPTY, m_profile);
     } else if (status == BufferStatus::TIMEOUT) {
@@ -392,7 +395,8 @@ OutPortPushConnector::~OutPortPushConnector()
 
 PublisherBase *OutPortPushConnector::createPublisher(ConnectorInfo &info)
 {
-    const std::string type = coil::normalize(info.properties.getProperty("subscription_type", "flush"));
+    const std::string type
+        = coil::normalize(info.properties.getProperty("subscription_type", "flush"));
     if (type == "flush")
         return new PublisherFlush();
     if (type == "new")
@@ -499,9 +503,11 @@ DataPortStatus OutPortPullConnector::write(ByteDataStreamBase *data)
     ByteData bytes = Sdk::bytesOf(*data);
     const BufferStatus status = m_buffer->write(bytes, std::chrono::nanoseconds(0));
     if (status == BufferStatus::OK)
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, m_profile, bytes, m_littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, m_profile, bytes,
+                        m_littleEndian);
     else if (status == BufferStatus::FULL)
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_FULL, m_profile, bytes, m_littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_FULL, m_profile, bytes,
+                        m_littleEndian);
     return Sdk::toDataPortStatus(status);
 }
 

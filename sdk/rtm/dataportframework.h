@@ -13,9 +13,10 @@ namespace RTC::Sdk {
 
 DataPortStatus toDataPortStatus(BufferStatus status);
 /// Calls the data listeners of @p type (when @p listeners is a port's ConnectorListeners).
-void notifyData(ConnectorListenersBase *listeners, ConnectorDataListenerType type, const ConnectorInfo &info,
-                const ByteData &data, bool littleEndian);
-void notify(ConnectorListenersBase *listeners, ConnectorListenerType type, const ConnectorInfo &info);
+void notifyData(ConnectorListenersBase *listeners, ConnectorDataListenerType type,
+                const ConnectorInfo &info, const ByteData &data, bool littleEndian);
+void notify(ConnectorListenersBase *listeners, ConnectorListenerType type,
+            const ConnectorInfo &info);
 /// The bytes a stream holds.
 ByteData bytesOf(const ByteDataStreamBase &stream);
 /// `serializer.cdr.endian` of a connection (little unless it says big).

@@ -93,8 +93,7 @@ DataPortStatus fromPortStatus(OpenRTM::PortStatus status)
     }
 }
 
-template <typename Servant>
-void activateOnce(Servant *servant)
+template<typename Servant> void activateOnce(Servant *servant)
 {
     PortableServer::POA_var poa = Sdk::rootPoa();
     try {
@@ -104,8 +103,7 @@ void activateOnce(Servant *servant)
     }
 }
 
-template <typename Servant>
-void deactivate(Servant *servant)
+template<typename Servant> void deactivate(Servant *servant)
 {
     try {
         PortableServer::POA_var poa = Sdk::rootPoa();
@@ -121,7 +119,8 @@ void deactivate(Servant *servant)
 void Sdk::logUnavailable(const char *what, const char *interfaceType, const char *operation)
 {
     Logger rtclog(what);
-    RTC_ERROR(("%s: interface type '%s' is not available (RT Studio's data ports carry corba_cdr only); %s refused",
+    RTC_ERROR(("%s: interface type '%s' is not available (RT Studio's data ports carry corba_cdr "
+               "only); %s refused",
                what, interfaceType, operation));
 }
 
@@ -129,8 +128,7 @@ void Sdk::logUnavailable(const char *what, const char *interfaceType, const char
 
 InPortProvider::InPortProvider()
     : rtclog("InPortProvider")
-{
-}
+{ }
 
 InPortProvider::~InPortProvider() = default;
 
@@ -269,23 +267,28 @@ OpenRTM::PortStatus InPortCorbaCdrProvider::put(const OpenRTM::CdrData &data)
         return OpenRTM::PORT_ERROR;
     ByteData bytes(data.get_buffer(), data.length());
     const bool littleEndian = Sdk::littleEndianOf(m_profile);
-    Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVED, m_profile, bytes, littleEndian);
+    Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVED, m_profile, bytes,
+                    littleEndian);
     if (m_buffer->full())
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_FULL, m_profile, bytes, littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_FULL, m_profile, bytes,
+                        littleEndian);
     const BufferStatus status = m_buffer->write(bytes, std::chrono::nanoseconds(0));
     switch (status) {
     case BufferStatus::OK:
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, m_profile, bytes, littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, m_profile, bytes,
+                        littleEndian);
         return OpenRTM::PORT_OK;
     case BufferStatus::FULL:
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVER_FULL, m_profile, bytes, littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVER_FULL, m_profile, bytes,
+                        littleEndian);
         return OpenRTM::BUFFER_FULL;
     case BufferStatus::TIMEOUT:
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVER_TIMEOUT, m_profile, bytes,
-                        littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVER_TIMEOUT, m_profile,
+                        bytes, littleEndian);
         return OpenRTM::BUFFER_TIMEOUT;
     default:
-        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVER_ERROR, m_profile, bytes, littleEndian);
+        Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVER_ERROR, m_profile, bytes,
+                        littleEndian);
         return OpenRTM::PORT_ERROR;
     }
 }
@@ -356,15 +359,16 @@ OpenRTM::PortStatus OutPortCorbaCdrProvider::get(OpenRTM::CdrData_out data)
     if (bytes.getDataLength() > 0)
         std::memcpy(data->get_buffer(), bytes.getBuffer(), bytes.getDataLength());
     const bool littleEndian = Sdk::littleEndianOf(m_profile);
-    Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_READ, m_profile, bytes, littleEndian);
-    Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_SEND, m_profile, bytes, littleEndian);
+    Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_BUFFER_READ, m_profile, bytes,
+                    littleEndian);
+    Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_SEND, m_profile, bytes,
+                    littleEndian);
     return OpenRTM::PORT_OK;
 }
 
 InPortCorbaCdrConsumer::InPortCorbaCdrConsumer()
     : rtclog("InPortCorbaCdrConsumer")
-{
-}
+{ }
 
 InPortCorbaCdrConsumer::~InPortCorbaCdrConsumer() = default;
 
@@ -410,8 +414,7 @@ OutPortCorbaCdrConsumer::OutPortCorbaCdrConsumer()
     : rtclog("OutPortCorbaCdrConsumer")
     , m_buffer(nullptr)
     , m_listeners(nullptr)
-{
-}
+{ }
 
 OutPortCorbaCdrConsumer::~OutPortCorbaCdrConsumer() = default;
 
@@ -444,7 +447,8 @@ DataPortStatus OutPortCorbaCdrConsumer::get(ByteData &data)
         return DataPortStatus::CONNECTION_LOST;
     }
     if (status != OpenRTM::PORT_OK)
-        return status == OpenRTM::BUFFER_EMPTY ? DataPortStatus::BUFFER_EMPTY : fromPortStatus(status);
+        return status == OpenRTM::BUFFER_EMPTY ? DataPortStatus::BUFFER_EMPTY
+                                               : fromPortStatus(status);
     data.writeData(cdr->get_buffer(), cdr->length());
     Sdk::notifyData(m_listeners, ConnectorDataListenerType::ON_RECEIVED, m_profile, data,
                     Sdk::littleEndianOf(m_profile));
@@ -467,119 +471,141 @@ void OutPortCorbaCdrConsumer::unsubscribeInterface(const SDOPackage::NVList &pro
 
 // Each class names its interface type in every refusal; its buffer and listeners are kept only
 // so that the setters do what they say.
-#define RTC_UNAVAILABLE_TRANSPORT(Prefix, Type)                                                                 \
-    InPort##Prefix##Provider::InPort##Prefix##Provider()                                                      \
-        : m_buffer(nullptr)                                                                                    \
-        , m_listeners(nullptr)                                                                                 \
-        , m_connector(nullptr)                                                                                 \
-    {                                                                                                          \
-        setInterfaceType(Type);                                                                                \
-        setDataFlowType("push");                                                                               \
-        setSubscriptionType("Any");                                                                            \
-    }                                                                                                          \
-    InPort##Prefix##Provider::~InPort##Prefix##Provider() = default;                                           \
-    void InPort##Prefix##Provider::init(coil::Properties &prop)                                                \
-    {                                                                                                          \
-        (void)prop;                                                                                            \
-        Sdk::logUnavailable("InPort" #Prefix "Provider", Type, "init");                                        \
-    }                                                                                                          \
-    void InPort##Prefix##Provider::setBuffer(BufferBase<ByteData> *buffer) { m_buffer = buffer; }              \
-    void InPort##Prefix##Provider::setListener(ConnectorInfo &info, ConnectorListenersBase *listeners)         \
-    {                                                                                                          \
-        m_profile = info;                                                                                      \
-        m_listeners = listeners;                                                                               \
-    }                                                                                                          \
-    void InPort##Prefix##Provider::setConnector(InPortConnector *connector) { m_connector = connector; }       \
-    bool InPort##Prefix##Provider::publishInterface(SDOPackage::NVList &prop)                                  \
-    {                                                                                                          \
-        (void)prop;                                                                                            \
-        Sdk::logUnavailable("InPort" #Prefix "Provider", Type, "publishInterface");                            \
-        return false;                                                                                          \
-    }                                                                                                          \
-    OutPort##Prefix##Provider::OutPort##Prefix##Provider()                                                    \
-        : m_buffer(nullptr)                                                                                    \
-        , m_listeners(nullptr)                                                                                 \
-        , m_connector(nullptr)                                                                                 \
-    {                                                                                                          \
-        setPortType("DataOutPort");                                                                            \
-        setInterfaceType(Type);                                                                                \
-        setDataFlowType("pull");                                                                               \
-        setSubscriptionType("Any");                                                                            \
-    }                                                                                                          \
-    OutPort##Prefix##Provider::~OutPort##Prefix##Provider() = default;                                         \
-    void OutPort##Prefix##Provider::init(coil::Properties &prop)                                               \
-    {                                                                                                          \
-        (void)prop;                                                                                            \
-        Sdk::logUnavailable("OutPort" #Prefix "Provider", Type, "init");                                       \
-    }                                                                                                          \
-    void OutPort##Prefix##Provider::setBuffer(CdrBufferBase *buffer) { m_buffer = buffer; }                    \
-    void OutPort##Prefix##Provider::setListener(ConnectorInfo &info, ConnectorListenersBase *listeners)        \
-    {                                                                                                          \
-        m_profile = info;                                                                                      \
-        m_listeners = listeners;                                                                               \
-    }                                                                                                          \
-    void OutPort##Prefix##Provider::setConnector(OutPortConnector *connector) { m_connector = connector; }     \
-    bool OutPort##Prefix##Provider::publishInterface(SDOPackage::NVList &prop)                                 \
-    {                                                                                                          \
-        (void)prop;                                                                                            \
-        Sdk::logUnavailable("OutPort" #Prefix "Provider", Type, "publishInterface");                           \
-        return false;                                                                                          \
-    }                                                                                                          \
-    InPort##Prefix##Consumer::InPort##Prefix##Consumer()                                                      \
-        : rtclog("InPort" #Prefix "Consumer")                                                                  \
-    {                                                                                                          \
-    }                                                                                                          \
-    InPort##Prefix##Consumer::~InPort##Prefix##Consumer() = default;                                           \
-    void InPort##Prefix##Consumer::init(coil::Properties &prop) { m_properties = prop; }                       \
-    DataPortStatus InPort##Prefix##Consumer::put(ByteData &data)                                               \
-    {                                                                                                          \
-        (void)data;                                                                                            \
-        Sdk::logUnavailable("InPort" #Prefix "Consumer", Type, "put");                                         \
-        return DataPortStatus::PORT_ERROR;                                                                     \
-    }                                                                                                          \
-    void InPort##Prefix##Consumer::publishInterfaceProfile(SDOPackage::NVList &properties)                     \
-    {                                                                                                          \
-        (void)properties;                                                                                      \
-    }                                                                                                          \
-    bool InPort##Prefix##Consumer::subscribeInterface(const SDOPackage::NVList &properties)                    \
-    {                                                                                                          \
-        (void)properties;                                                                                      \
-        Sdk::logUnavailable("InPort" #Prefix "Consumer", Type, "subscribeInterface");                          \
-        return false;                                                                                          \
-    }                                                                                                          \
-    void InPort##Prefix##Consumer::unsubscribeInterface(const SDOPackage::NVList &properties)                  \
-    {                                                                                                          \
-        (void)properties;                                                                                      \
-    }                                                                                                          \
-    OutPort##Prefix##Consumer::OutPort##Prefix##Consumer()                                                    \
-        : rtclog("OutPort" #Prefix "Consumer")                                                                 \
-        , m_buffer(nullptr)                                                                                    \
-        , m_listeners(nullptr)                                                                                 \
-    {                                                                                                          \
-    }                                                                                                          \
-    OutPort##Prefix##Consumer::~OutPort##Prefix##Consumer() = default;                                         \
-    void OutPort##Prefix##Consumer::init(coil::Properties &prop) { (void)prop; }                               \
-    void OutPort##Prefix##Consumer::setBuffer(CdrBufferBase *buffer) { m_buffer = buffer; }                    \
-    void OutPort##Prefix##Consumer::setListener(ConnectorInfo &info, ConnectorListenersBase *listeners)        \
-    {                                                                                                          \
-        m_profile = info;                                                                                      \
-        m_listeners = listeners;                                                                               \
-    }                                                                                                          \
-    DataPortStatus OutPort##Prefix##Consumer::get(ByteData &data)                                              \
-    {                                                                                                          \
-        (void)data;                                                                                            \
-        Sdk::logUnavailable("OutPort" #Prefix "Consumer", Type, "get");                                        \
-        return DataPortStatus::PORT_ERROR;                                                                     \
-    }                                                                                                          \
-    bool OutPort##Prefix##Consumer::subscribeInterface(const SDOPackage::NVList &properties)                   \
-    {                                                                                                          \
-        (void)properties;                                                                                      \
-        Sdk::logUnavailable("OutPort" #Prefix "Consumer", Type, "subscribeInterface");                         \
-        return false;                                                                                          \
-    }                                                                                                          \
-    void OutPort##Prefix##Consumer::unsubscribeInterface(const SDOPackage::NVList &properties)                 \
-    {                                                                                                          \
-        (void)properties;                                                                                      \
+#define RTC_UNAVAILABLE_TRANSPORT(Prefix, Type)                                                    \
+    InPort##Prefix##Provider::InPort##Prefix##Provider()                                           \
+        : m_buffer(nullptr)                                                                        \
+        , m_listeners(nullptr)                                                                     \
+        , m_connector(nullptr)                                                                     \
+    {                                                                                              \
+        setInterfaceType(Type);                                                                    \
+        setDataFlowType("push");                                                                   \
+        setSubscriptionType("Any");                                                                \
+    }                                                                                              \
+    InPort##Prefix##Provider::~InPort##Prefix##Provider() = default;                               \
+    void InPort##Prefix##Provider::init(coil::Properties &prop)                                    \
+    {                                                                                              \
+        (void)prop;                                                                                \
+        Sdk::logUnavailable("InPort" #Prefix "Provider", Type, "init");                            \
+    }                                                                                              \
+    void InPort##Prefix##Provider::setBuffer(BufferBase<ByteData> *buffer)                         \
+    {                                                                                              \
+        m_buffer = buffer;                                                                         \
+    }                                                                                              \
+    void InPort##Prefix##Provider::setListener(ConnectorInfo &info,                                \
+                                               ConnectorListenersBase *listeners)                  \
+    {                                                                                              \
+        m_profile = info;                                                                          \
+        m_listeners = listeners;                                                                   \
+    }                                                                                              \
+    void InPort##Prefix##Provider::setConnector(InPortConnector *connector)                        \
+    {                                                                                              \
+        m_connector = connector;                                                                   \
+    }                                                                                              \
+    bool InPort##Prefix##Provider::publishInterface(SDOPackage::NVList &prop)                      \
+    {                                                                                              \
+        (void)prop;                                                                                \
+        Sdk::logUnavailable("InPort" #Prefix "Provider", Type, "publishInterface");                \
+        return false;                                                                              \
+    }                                                                                              \
+    OutPort##Prefix##Provider::OutPort##Prefix##Provider()                                         \
+        : m_buffer(nullptr)                                                                        \
+        , m_listeners(nullptr)                                                                     \
+        , m_connector(nullptr)                                                                     \
+    {                                                                                              \
+        setPortType("DataOutPort");                                                                \
+        setInterfaceType(Type);                                                                    \
+        setDataFlowType("pull");                                                                   \
+        setSubscriptionType("Any");                                                                \
+    }                                                                                              \
+    OutPort##Prefix##Provider::~OutPort##Prefix##Provider() = default;                             \
+    void OutPort##Prefix##Provider::init(coil::Properties &prop)                                   \
+    {                                                                                              \
+        (void)prop;                                                                                \
+        Sdk::logUnavailable("OutPort" #Prefix "Provider", Type, "init");                           \
+    }                                                                                              \
+    void OutPort##Prefix##Provider::setBuffer(CdrBufferBase *buffer)                               \
+    {                                                                                              \
+        m_buffer = buffer;                                                                         \
+    }                                                                                              \
+    void OutPort##Prefix##Provider::setListener(ConnectorInfo &info,                               \
+                                                ConnectorListenersBase *listeners)                 \
+    {                                                                                              \
+        m_profile = info;                                                                          \
+        m_listeners = listeners;                                                                   \
+    }                                                                                              \
+    void OutPort##Prefix##Provider::setConnector(OutPortConnector *connector)                      \
+    {                                                                                              \
+        m_connector = connector;                                                                   \
+    }                                                                                              \
+    bool OutPort##Prefix##Provider::publishInterface(SDOPackage::NVList &prop)                     \
+    {                                                                                              \
+        (void)prop;                                                                                \
+        Sdk::logUnavailable("OutPort" #Prefix "Provider", Type, "publishInterface");               \
+        return false;                                                                              \
+    }                                                                                              \
+    InPort##Prefix##Consumer::InPort##Prefix##Consumer()                                           \
+        : rtclog("InPort" #Prefix "Consumer")                                                      \
+    { }                                                                                            \
+    InPort##Prefix##Consumer::~InPort##Prefix##Consumer() = default;                               \
+    void InPort##Prefix##Consumer::init(coil::Properties &prop)                                    \
+    {                                                                                              \
+        m_properties = prop;                                                                       \
+    }                                                                                              \
+    DataPortStatus InPort##Prefix##Consumer::put(ByteData &data)                                   \
+    {                                                                                              \
+        (void)data;                                                                                \
+        Sdk::logUnavailable("InPort" #Prefix "Consumer", Type, "put");                             \
+        return DataPortStatus::PORT_ERROR;                                                         \
+    }                                                                                              \
+    void InPort##Prefix##Consumer::publishInterfaceProfile(SDOPackage::NVList &properties)         \
+    {                                                                                              \
+        (void)properties;                                                                          \
+    }                                                                                              \
+    bool InPort##Prefix##Consumer::subscribeInterface(const SDOPackage::NVList &properties)        \
+    {                                                                                              \
+        (void)properties;                                                                          \
+        Sdk::logUnavailable("InPort" #Prefix "Consumer", Type, "subscribeInterface");              \
+        return false;                                                                              \
+    }                                                                                              \
+    void InPort##Prefix##Consumer::unsubscribeInterface(const SDOPackage::NVList &properties)      \
+    {                                                                                              \
+        (void)properties;                                                                          \
+    }                                                                                              \
+    OutPort##Prefix##Consumer::OutPort##Prefix##Consumer()                                         \
+        : rtclog("OutPort" #Prefix "Consumer")                                                     \
+        , m_buffer(nullptr)                                                                        \
+        , m_listeners(nullptr)                                                                     \
+    { }                                                                                            \
+    OutPort##Prefix##Consumer::~OutPort##Prefix##Consumer() = default;                             \
+    void OutPort##Prefix##Consumer::init(coil::Properties &prop)                                   \
+    {                                                                                              \
+        (void)prop;                                                                                \
+    }                                                                                              \
+    void OutPort##Prefix##Consumer::setBuffer(CdrBufferBase *buffer)                               \
+    {                                                                                              \
+        m_buffer = buffer;                                                                         \
+    }                                                                                              \
+    void OutPort##Prefix##Consumer::setListener(ConnectorInfo &info,                               \
+                                                ConnectorListenersBase *listeners)                 \
+    {                                                                                              \
+        m_profile = info;                                                                          \
+        m_listeners = listeners;                                                                   \
+    }                                                                                              \
+    DataPortStatus OutPort##Prefix##Consumer::get(ByteData &data)                                  \
+    {                                                                                              \
+        (void)data;                                                                                \
+        Sdk::logUnavailable("OutPort" #Prefix "Consumer", Type, "get");                            \
+        return DataPortStatus::PORT_ERROR;                                                         \
+    }                                                                                              \
+    bool OutPort##Prefix##Consumer::subscribeInterface(const SDOPackage::NVList &properties)       \
+    {                                                                                              \
+        (void)properties;                                                                          \
+        Sdk::logUnavailable("OutPort" #Prefix "Consumer", Type, "subscribeInterface");             \
+        return false;                                                                              \
+    }                                                                                              \
+    void OutPort##Prefix##Consumer::unsubscribeInterface(const SDOPackage::NVList &properties)     \
+    {                                                                                              \
+        (void)properties;                                                                          \
     }
 
 // In-process delivery happens between the SDK's ports themselves (on corba_cdr connections of
@@ -595,8 +621,7 @@ RTC_UNAVAILABLE_TRANSPORT(SHM, "shared_memory")
 SharedMemoryPort::SharedMemoryPort()
     : m_endian(true)
     , rtclog("SharedMemoryPort")
-{
-}
+{ }
 
 SharedMemoryPort::~SharedMemoryPort() = default;
 
@@ -679,19 +704,19 @@ void SharedMemoryPort::setEndian(::CORBA::Boolean endian)
 } // namespace RTC
 
 // OpenRTM-aist registers each transport in its factories here; the SDK's are built in.
-void InPortCorbaCdrProviderInit() {}
-void InPortCorbaCdrConsumerInit() {}
-void OutPortCorbaCdrProviderInit() {}
-void OutPortCorbaCdrConsumerInit() {}
-void InPortDirectProviderInit() {}
-void InPortDirectConsumerInit() {}
-void OutPortDirectProviderInit() {}
-void OutPortDirectConsumerInit() {}
-void InPortDSProviderInit() {}
-void InPortDSConsumerInit() {}
-void OutPortDSProviderInit() {}
-void OutPortDSConsumerInit() {}
-void InPortSHMProviderInit() {}
-void InPortSHMConsumerInit() {}
-void OutPortSHMProviderInit() {}
-void OutPortSHMConsumerInit() {}
+void InPortCorbaCdrProviderInit() { }
+void InPortCorbaCdrConsumerInit() { }
+void OutPortCorbaCdrProviderInit() { }
+void OutPortCorbaCdrConsumerInit() { }
+void InPortDirectProviderInit() { }
+void InPortDirectConsumerInit() { }
+void OutPortDirectProviderInit() { }
+void OutPortDirectConsumerInit() { }
+void InPortDSProviderInit() { }
+void InPortDSConsumerInit() { }
+void OutPortDSProviderInit() { }
+void OutPortDSConsumerInit() { }
+void InPortSHMProviderInit() { }
+void InPortSHMConsumerInit() { }
+void OutPortSHMProviderInit() { }
+void OutPortSHMConsumerInit() { }

@@ -10,8 +10,7 @@ PortAdmin::PortAdmin(CORBA::ORB_ptr orb, PortableServer::POA_ptr poa)
     : m_pORB(CORBA::ORB::_duplicate(orb))
     , m_pPOA(PortableServer::POA::_duplicate(poa))
     , rtclog("PortAdmin")
-{
-}
+{ }
 
 PortAdmin::~PortAdmin() = default;
 
@@ -86,7 +85,7 @@ bool PortAdmin::addPort(PortBase &port)
         if (entry.name == name)
             return false;
     }
-    m_ports.push_back(Entry{name, &port, ref});
+    m_ports.push_back(Entry {name, &port, ref});
     return true;
 }
 
@@ -100,7 +99,7 @@ bool PortAdmin::addPort(PortService_ptr port)
         if (entry.name == name)
             return false;
     }
-    m_ports.push_back(Entry{name, nullptr, PortService::_duplicate(port)});
+    m_ports.push_back(Entry {name, nullptr, PortService::_duplicate(port)});
     return true;
 }
 
@@ -120,7 +119,8 @@ bool PortAdmin::removePort(PortBase &port)
 {
     {
         std::lock_guard<std::mutex> lock(m_mutex);
-        auto it = std::find_if(m_ports.begin(), m_ports.end(), [&port](const Entry &e) { return e.servant == &port; });
+        auto it = std::find_if(m_ports.begin(), m_ports.end(),
+                               [&port](const Entry &e) { return e.servant == &port; });
         if (it == m_ports.end())
             return false;
         m_ports.erase(it);
@@ -200,8 +200,7 @@ void PortAdmin::finalizePorts()
     for (Entry &entry : ports) {
         try {
             entry.ref->disconnect_all();
-        } catch (const CORBA::Exception &) {
-        }
+        } catch (const CORBA::Exception &) { }
     }
 }
 

@@ -30,16 +30,20 @@ DataPortStatus send(InPortConsumer *consumer, ByteData &bytes, const ConnectorIn
     const DataPortStatus status = consumer->put(bytes);
     switch (status) {
     case DataPortStatus::PORT_OK:
-        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVED, info, bytes, littleEndian);
+        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVED, info, bytes,
+                        littleEndian);
         break;
     case DataPortStatus::SEND_FULL:
-        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVER_FULL, info, bytes, littleEndian);
+        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVER_FULL, info, bytes,
+                        littleEndian);
         break;
     case DataPortStatus::SEND_TIMEOUT:
-        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVER_TIMEOUT, info, bytes, littleEndian);
+        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVER_TIMEOUT, info, bytes,
+                        littleEndian);
         break;
     default:
-        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVER_ERROR, info, bytes, littleEndian);
+        Sdk::notifyData(listeners, ConnectorDataListenerType::ON_RECEIVER_ERROR, info, bytes,
+                        littleEndian);
         break;
     }
     return status;
@@ -55,8 +59,7 @@ PublisherFlush::PublisherFlush()
     , m_listeners(nullptr)
     , m_retcode(DataPortStatus::PORT_OK)
     , m_active(false)
-{
-}
+{ }
 
 PublisherFlush::~PublisherFlush() = default;
 
@@ -131,8 +134,7 @@ class SendingThread
 public:
     explicit SendingThread(bool periodic)
         : m_periodic(periodic)
-    {
-    }
+    { }
     ~SendingThread() { stop(); }
 
     void configure(const coil::Properties &prop)
@@ -141,7 +143,8 @@ public:
         m_policy = coil::normalize(prop.getProperty("publisher.push_policy", "new"));
         coil::stringTo(m_skipCount, prop.getProperty("publisher.skip_count", "0").c_str());
         double rate = 100.0;
-        if (coil::stringTo(rate, prop.getProperty("publisher.push_rate", "100").c_str()) && rate > 0.0)
+        if (coil::stringTo(rate, prop.getProperty("publisher.push_rate", "100").c_str())
+            && rate > 0.0)
             m_period = std::chrono::duration<double>(1.0 / rate);
     }
     void start(const std::function<void()> &round)
@@ -174,7 +177,8 @@ public:
     {
         std::vector<ByteData> all;
         ByteData bytes;
-        while (buffer->readable() > 0 && buffer->read(bytes, std::chrono::nanoseconds(0)) == BufferStatus::OK)
+        while (buffer->readable() > 0
+               && buffer->read(bytes, std::chrono::nanoseconds(0)) == BufferStatus::OK)
             all.push_back(bytes);
         std::string policy;
         int skip = 0;
@@ -228,102 +232,103 @@ private:
     std::string m_policy = "new";
     int m_skipCount = 0;
     unsigned long m_skipped = 0;
-    std::chrono::duration<double> m_period{0.01};
+    std::chrono::duration<double> m_period {0.01};
     bool m_pending = false;
     bool m_stopping = false;
 };
 
 } // namespace
 
-#define RTC_THREADED_PUBLISHER(Class, periodic)                                                                \
-    struct Class::Private                                                                                      \
-    {                                                                                                          \
-        Private()                                                                                              \
-            : thread(periodic)                                                                                 \
-        {                                                                                                      \
-        }                                                                                                      \
-        InPortConsumer *consumer = nullptr;                                                                    \
-        CdrBufferBase *buffer = nullptr;                                                                       \
-        ConnectorInfo profile;                                                                                 \
-        ConnectorListenersBase *listeners = nullptr;                                                           \
-        std::atomic<bool> active{false};                                                                       \
-        SendingThread thread;                                                                                  \
-    };                                                                                                         \
-    Class::Class()                                                                                             \
-        : rtclog(#Class)                                                                                       \
-        , d(new Private)                                                                                       \
-    {                                                                                                          \
-    }                                                                                                          \
-    Class::~Class()                                                                                            \
-    {                                                                                                          \
-        d->thread.stop();                                                                                      \
-        delete d;                                                                                              \
-    }                                                                                                          \
-    DataPortStatus Class::init(coil::Properties &prop)                                                         \
-    {                                                                                                          \
-        d->thread.configure(prop);                                                                             \
-        d->thread.start([this] { svc(); });                                                                    \
-        return DataPortStatus::PORT_OK;                                                                        \
-    }                                                                                                          \
-    DataPortStatus Class::setConsumer(InPortConsumer *consumer)                                                \
-    {                                                                                                          \
-        if (consumer == nullptr)                                                                               \
-            return DataPortStatus::INVALID_ARGS;                                                               \
-        d->consumer = consumer;                                                                                \
-        return DataPortStatus::PORT_OK;                                                                        \
-    }                                                                                                          \
-    DataPortStatus Class::setBuffer(CdrBufferBase *buffer)                                                     \
-    {                                                                                                          \
-        if (buffer == nullptr)                                                                                 \
-            return DataPortStatus::INVALID_ARGS;                                                               \
-        d->buffer = buffer;                                                                                    \
-        return DataPortStatus::PORT_OK;                                                                        \
-    }                                                                                                          \
-    DataPortStatus Class::setListener(ConnectorInfo &info, ConnectorListenersBase *listeners)                  \
-    {                                                                                                          \
-        d->profile = info;                                                                                     \
-        d->listeners = listeners;                                                                              \
-        return DataPortStatus::PORT_OK;                                                                        \
-    }                                                                                                          \
-    DataPortStatus Class::write(ByteDataStreamBase *data, std::chrono::nanoseconds timeout)                    \
-    {                                                                                                          \
-        if (d->consumer == nullptr || d->buffer == nullptr || data == nullptr)                                 \
-            return DataPortStatus::PRECONDITION_NOT_MET;                                                       \
-        if (!d->active)                                                                                        \
-            return DataPortStatus::PRECONDITION_NOT_MET;                                                       \
-        ByteData bytes = Sdk::bytesOf(*data);                                                                  \
-        const BufferStatus status = d->buffer->write(bytes, timeout);                                          \
-        const bool littleEndian = Sdk::littleEndianOf(d->profile);                                             \
-        if (status == BufferStatus::OK)                                                                        \
-            Sdk::notifyData(d->listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, d->profile, bytes,       \
-                            littleEndian);                                                                     \
-        else if (status == BufferStatus::FULL)                                                                 \
-            Sdk::notifyData(d->listeners, ConnectorDataListenerType::ON_BUFFER_FULL, d->profile, bytes,        \
-                            littleEndian);                                                                     \
-        else if (status == BufferStatus::TIMEOUT)                                                              \
-            Sdk::notifyData(d->listeners, ConnectorDataListenerType::ON_BUFFER_WRITE_TIMEOUT, d->profile,      \
-                            bytes, littleEndian);                                                              \
-        d->thread.kick();                                                                                      \
-        return Sdk::toDataPortStatus(status);                                                                  \
-    }                                                                                                          \
-    bool Class::isActive() { return d->active; }                                                               \
-    DataPortStatus Class::activate()                                                                           \
-    {                                                                                                          \
-        d->active = true;                                                                                      \
-        return DataPortStatus::PORT_OK;                                                                        \
-    }                                                                                                          \
-    DataPortStatus Class::deactivate()                                                                         \
-    {                                                                                                          \
-        d->active = false;                                                                                     \
-        return DataPortStatus::PORT_OK;                                                                        \
-    }                                                                                                          \
-    int Class::svc()                                                                                           \
-    {                                                                                                          \
-        if (!d->active || d->consumer == nullptr || d->buffer == nullptr)                                      \
-            return 0;                                                                                          \
-        for (ByteData &bytes : d->thread.take(d->buffer))                                                      \
-            send(d->consumer, bytes, d->profile, d->listeners);                                                \
-        return 0;                                                                                              \
+#define RTC_THREADED_PUBLISHER(Class, periodic)                                                    \
+    struct Class::Private                                                                          \
+    {                                                                                              \
+        Private()                                                                                  \
+            : thread(periodic)                                                                     \
+        { }                                                                                        \
+        InPortConsumer *consumer = nullptr;                                                        \
+        CdrBufferBase *buffer = nullptr;                                                           \
+        ConnectorInfo profile;                                                                     \
+        ConnectorListenersBase *listeners = nullptr;                                               \
+        std::atomic<bool> active {false};                                                          \
+        SendingThread thread;                                                                      \
+    };                                                                                             \
+    Class::Class()                                                                                 \
+        : rtclog(#Class)                                                                           \
+        , d(new Private)                                                                           \
+    { }                                                                                            \
+    Class::~Class()                                                                                \
+    {                                                                                              \
+        d->thread.stop();                                                                          \
+        delete d;                                                                                  \
+    }                                                                                              \
+    DataPortStatus Class::init(coil::Properties &prop)                                             \
+    {                                                                                              \
+        d->thread.configure(prop);                                                                 \
+        d->thread.start([this] { svc(); });                                                        \
+        return DataPortStatus::PORT_OK;                                                            \
+    }                                                                                              \
+    DataPortStatus Class::setConsumer(InPortConsumer *consumer)                                    \
+    {                                                                                              \
+        if (consumer == nullptr)                                                                   \
+            return DataPortStatus::INVALID_ARGS;                                                   \
+        d->consumer = consumer;                                                                    \
+        return DataPortStatus::PORT_OK;                                                            \
+    }                                                                                              \
+    DataPortStatus Class::setBuffer(CdrBufferBase *buffer)                                         \
+    {                                                                                              \
+        if (buffer == nullptr)                                                                     \
+            return DataPortStatus::INVALID_ARGS;                                                   \
+        d->buffer = buffer;                                                                        \
+        return DataPortStatus::PORT_OK;                                                            \
+    }                                                                                              \
+    DataPortStatus Class::setListener(ConnectorInfo &info, ConnectorListenersBase *listeners)      \
+    {                                                                                              \
+        d->profile = info;                                                                         \
+        d->listeners = listeners;                                                                  \
+        return DataPortStatus::PORT_OK;                                                            \
+    }                                                                                              \
+    DataPortStatus Class::write(ByteDataStreamBase *data, std::chrono::nanoseconds timeout)        \
+    {                                                                                              \
+        if (d->consumer == nullptr || d->buffer == nullptr || data == nullptr)                     \
+            return DataPortStatus::PRECONDITION_NOT_MET;                                           \
+        if (!d->active)                                                                            \
+            return DataPortStatus::PRECONDITION_NOT_MET;                                           \
+        ByteData bytes = Sdk::bytesOf(*data);                                                      \
+        const BufferStatus status = d->buffer->write(bytes, timeout);                              \
+        const bool littleEndian = Sdk::littleEndianOf(d->profile);                                 \
+        if (status == BufferStatus::OK)                                                            \
+            Sdk::notifyData(d->listeners, ConnectorDataListenerType::ON_BUFFER_WRITE, d->profile,  \
+                            bytes, littleEndian);                                                  \
+        else if (status == BufferStatus::FULL)                                                     \
+            Sdk::notifyData(d->listeners, ConnectorDataListenerType::ON_BUFFER_FULL, d->profile,   \
+                            bytes, littleEndian);                                                  \
+        else if (status == BufferStatus::TIMEOUT)                                                  \
+            Sdk::notifyData(d->listeners, ConnectorDataListenerType::ON_BUFFER_WRITE_TIMEOUT,      \
+                            d->profile, bytes, littleEndian);                                      \
+        d->thread.kick();                                                                          \
+        return Sdk::toDataPortStatus(status);                                                      \
+    }                                                                                              \
+    bool Class::isActive()                                                                         \
+    {                                                                                              \
+        return d->active;                                                                          \
+    }                                                                                              \
+    DataPortStatus Class::activate()                                                               \
+    {                                                                                              \
+        d->active = true;                                                                          \
+        return DataPortStatus::PORT_OK;                                                            \
+    }                                                                                              \
+    DataPortStatus Class::deactivate()                                                             \
+    {                                                                                              \
+        d->active = false;                                                                         \
+        return DataPortStatus::PORT_OK;                                                            \
+    }                                                                                              \
+    int Class::svc()                                                                               \
+    {                                                                                              \
+        if (!d->active || d->consumer == nullptr || d->buffer == nullptr)                          \
+            return 0;                                                                              \
+        for (ByteData & bytes : d->thread.take(d->buffer))                                         \
+            send(d->consumer, bytes, d->profile, d->listeners);                                    \
+        return 0;                                                                                  \
     }
 
 RTC_THREADED_PUBLISHER(PublisherNew, false)
@@ -334,6 +339,6 @@ RTC_THREADED_PUBLISHER(PublisherPeriodic, true)
 } // namespace RTC
 
 // OpenRTM-aist registers each publisher in its factory here; the SDK's are built in.
-void PublisherFlushInit() {}
-void PublisherNewInit() {}
-void PublisherPeriodicInit() {}
+void PublisherFlushInit() { }
+void PublisherNewInit() { }
+void PublisherPeriodicInit() { }

@@ -5,8 +5,7 @@
 
 #include <coil/Properties.h>
 
-namespace RTC
-{
+namespace RTC {
 /// A sample in marshalled form with its byte order.
 class ByteDataStreamBase
 {
@@ -24,8 +23,7 @@ public:
 };
 
 /// A stream that turns samples of @p DataType into bytes and back.
-template <typename DataType>
-class ByteDataStream : public ByteDataStreamBase
+template<typename DataType> class ByteDataStream : public ByteDataStreamBase
 {
 public:
     ByteDataStream() = default;

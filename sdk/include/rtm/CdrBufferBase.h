@@ -7,8 +7,7 @@
 #include <rtm/ByteData.h>
 #include <rtm/RTC.h>
 
-namespace RTC
-{
+namespace RTC {
 /// A buffer of marshalled samples (what connectors, providers and publishers keep).
 using CdrBufferBase = BufferBase<ByteData>;
 } // namespace RTC

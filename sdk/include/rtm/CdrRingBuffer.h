@@ -7,8 +7,7 @@
 #include <rtm/CdrBufferBase.h>
 #include <rtm/RingBuffer.h>
 
-namespace RTC
-{
+namespace RTC {
 /// A RingBuffer of marshalled samples, with the `buffer.*` policies of RingBuffer.
 using CdrRingBuffer = RingBuffer<ByteData>;
 } // namespace RTC

@@ -14,13 +14,11 @@
 #include <utility>
 #include <vector>
 
-namespace RTC
-{
+namespace RTC {
 using UniqueId = ExecutionContextHandle_t;
 
 /// Before which component action a PreComponentActionListener is called.
-enum class PreComponentActionListenerType : uint8_t
-{
+enum class PreComponentActionListenerType : uint8_t {
     PRE_ON_INITIALIZE,
     PRE_ON_FINALIZE,
     PRE_ON_STARTUP,
@@ -46,8 +44,7 @@ public:
 };
 
 /// After which component action a PostComponentActionListener is called.
-enum class PostComponentActionListenerType : uint8_t
-{
+enum class PostComponentActionListenerType : uint8_t {
     POST_ON_INITIALIZE,
     POST_ON_FINALIZE,
     POST_ON_STARTUP,
@@ -73,12 +70,7 @@ public:
 };
 
 /// Port events of a component.
-enum class PortActionListenerType : uint8_t
-{
-    ADD_PORT,
-    REMOVE_PORT,
-    PORT_ACTION_LISTENER_NUM
-};
+enum class PortActionListenerType : uint8_t { ADD_PORT, REMOVE_PORT, PORT_ACTION_LISTENER_NUM };
 
 /// Called with the profile of a port being added to or removed from the component.
 class PortActionListener
@@ -90,8 +82,7 @@ public:
 };
 
 /// Execution context events of a component.
-enum class ExecutionContextActionListenerType : uint8_t
-{
+enum class ExecutionContextActionListenerType : uint8_t {
     EC_ATTACHED,
     EC_DETACHED,
     EC_ACTION_LISTENER_NUM
@@ -106,7 +97,8 @@ public:
     virtual void operator()(UniqueId ec_id) = 0;
 };
 
-class PreComponentActionListenerHolder : public ::RTM::util::ListenerHolder<PreComponentActionListener>
+class PreComponentActionListenerHolder
+    : public ::RTM::util::ListenerHolder<PreComponentActionListener>
 {
 public:
     PreComponentActionListenerHolder();
@@ -114,7 +106,8 @@ public:
     void notify(UniqueId ec_id);
 };
 
-class PostComponentActionListenerHolder : public ::RTM::util::ListenerHolder<PostComponentActionListener>
+class PostComponentActionListenerHolder
+    : public ::RTM::util::ListenerHolder<PostComponentActionListener>
 {
 public:
     PostComponentActionListenerHolder();
@@ -130,7 +123,8 @@ public:
     void notify(const RTC::PortProfile &pprofile);
 };
 
-class ExecutionContextActionListenerHolder : public ::RTM::util::ListenerHolder<ExecutionContextActionListener>
+class ExecutionContextActionListenerHolder
+    : public ::RTM::util::ListenerHolder<ExecutionContextActionListener>
 {
 public:
     ExecutionContextActionListenerHolder();
@@ -144,15 +138,19 @@ class ComponentActionListeners
 public:
     ComponentActionListeners();
     ~ComponentActionListeners();
-    bool addListener(PreComponentActionListenerType type, PreComponentActionListener *listener, bool autoclean);
-    bool addListener(PostComponentActionListenerType type, PostComponentActionListener *listener, bool autoclean);
-    bool addListener(PortActionListenerType type, PortActionListener *listener, bool autoclean);
-    bool addListener(ExecutionContextActionListenerType type, ExecutionContextActionListener *listener,
+    bool addListener(PreComponentActionListenerType type, PreComponentActionListener *listener,
                      bool autoclean);
+    bool addListener(PostComponentActionListenerType type, PostComponentActionListener *listener,
+                     bool autoclean);
+    bool addListener(PortActionListenerType type, PortActionListener *listener, bool autoclean);
+    bool addListener(ExecutionContextActionListenerType type,
+                     ExecutionContextActionListener *listener, bool autoclean);
     bool removeListener(PreComponentActionListenerType type, PreComponentActionListener *listener);
-    bool removeListener(PostComponentActionListenerType type, PostComponentActionListener *listener);
+    bool removeListener(PostComponentActionListenerType type,
+                        PostComponentActionListener *listener);
     bool removeListener(PortActionListenerType type, PortActionListener *listener);
-    bool removeListener(ExecutionContextActionListenerType type, ExecutionContextActionListener *listener);
+    bool removeListener(ExecutionContextActionListenerType type,
+                        ExecutionContextActionListener *listener);
     bool notify(PreComponentActionListenerType type, UniqueId ec_id);
     bool notify(PostComponentActionListenerType type, UniqueId ec_id, ReturnCode_t ret);
     bool notify(PortActionListenerType type, const RTC::PortProfile &pprofile);
@@ -160,12 +158,15 @@ public:
 
 private:
     std::array<PreComponentActionListenerHolder,
-               static_cast<uint8_t>(PreComponentActionListenerType::PRE_COMPONENT_ACTION_LISTENER_NUM)>
+               static_cast<uint8_t>(
+                   PreComponentActionListenerType::PRE_COMPONENT_ACTION_LISTENER_NUM)>
         preaction_;
     std::array<PostComponentActionListenerHolder,
-               static_cast<uint8_t>(PostComponentActionListenerType::POST_COMPONENT_ACTION_LISTENER_NUM)>
+               static_cast<uint8_t>(
+                   PostComponentActionListenerType::POST_COMPONENT_ACTION_LISTENER_NUM)>
         postaction_;
-    std::array<PortActionListenerHolder, static_cast<uint8_t>(PortActionListenerType::PORT_ACTION_LISTENER_NUM)>
+    std::array<PortActionListenerHolder,
+               static_cast<uint8_t>(PortActionListenerType::PORT_ACTION_LISTENER_NUM)>
         portaction_;
     std::array<ExecutionContextActionListenerHolder,
                static_cast<uint8_t>(ExecutionContextActionListenerType::EC_ACTION_LISTENER_NUM)>

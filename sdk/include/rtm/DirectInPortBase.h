@@ -5,11 +5,9 @@
 
 #include <rtm/DirectPortBase.h>
 
-namespace RTC
-{
+namespace RTC {
 /// What an OutPort of the same process calls to hand a sample of @p DataType to an InPort.
-template <class DataType>
-class DirectInPortBase : public DirectPortBase
+template<class DataType> class DirectInPortBase : public DirectPortBase
 {
 public:
     ~DirectInPortBase() override = default;

@@ -5,11 +5,9 @@
 
 #include <rtm/DirectPortBase.h>
 
-namespace RTC
-{
+namespace RTC {
 /// What an InPort of the same process calls to take a sample of @p DataType from an OutPort.
-template <class DataType>
-class DirectOutPortBase : public DirectPortBase
+template<class DataType> class DirectOutPortBase : public DirectPortBase
 {
 public:
     ~DirectOutPortBase() override = default;

@@ -3,8 +3,7 @@
 #ifndef RTC_DIRECTPORTBASE_H
 #define RTC_DIRECTPORTBASE_H
 
-namespace RTC
-{
+namespace RTC {
 /// A port as a direct (in-process, unmarshalled) sender or receiver of samples.
 class DirectPortBase
 {

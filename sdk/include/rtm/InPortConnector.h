@@ -13,8 +13,7 @@
 
 #include <string>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * A connection of an InPort: where its samples wait (the buffer) and how they are taken
  * (read). The InPort makes one per connection; InPortBase::connectors() lists them.

@@ -3,13 +3,12 @@
 #ifndef RTC_INPORTCONSUMER_H
 #define RTC_INPORTCONSUMER_H
 
+#include <coil/Properties.h>
 #include <rtm/ByteData.h>
 #include <rtm/DataPortStatus.h>
 #include <rtm/RTC.h>
-#include <coil/Properties.h>
 
-namespace RTC
-{
+namespace RTC {
 /// What an OutPort push connection calls to hand a sample to the InPort on the other side.
 class InPortConsumer
 {
@@ -19,7 +18,8 @@ public:
     /// Sends one marshalled sample.
     virtual DataPortStatus put(ByteData &data) = 0;
     virtual void publishInterfaceProfile(SDOPackage::NVList &properties) = 0;
-    /// Finds the InPort's interface in connector properties @p properties; false when it is not there.
+    /// Finds the InPort's interface in connector properties @p properties; false when it is not
+    /// there.
     virtual bool subscribeInterface(const SDOPackage::NVList &properties) = 0;
     virtual void unsubscribeInterface(const SDOPackage::NVList &properties) = 0;
 };

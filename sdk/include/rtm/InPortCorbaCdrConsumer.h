@@ -3,19 +3,17 @@
 #ifndef RTC_INPORTCORBACDRCONSUMER_H
 #define RTC_INPORTCORBACDRCONSUMER_H
 
-#include <rtmruntime/inportconnector.h>
 #include <rtm/CorbaConsumer.h>
 #include <rtm/InPortConsumer.h>
 #include <rtm/Manager.h>
 #include <rtm/SystemLogger.h>
+#include <rtmruntime/inportconnector.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The OutPort side of push connections of interface type `corba_cdr`.
  */
-class InPortCorbaCdrConsumer : public InPortConsumer,
-      public CorbaConsumer< ::OpenRTM::InPortCdr>
+class InPortCorbaCdrConsumer : public InPortConsumer, public CorbaConsumer<::OpenRTM::InPortCdr>
 {
 public:
     InPortCorbaCdrConsumer();

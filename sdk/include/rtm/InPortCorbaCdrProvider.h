@@ -3,21 +3,20 @@
 #ifndef RTC_INPORTCORBACDRPROVIDER_H
 #define RTC_INPORTCORBACDRPROVIDER_H
 
-#include <rtmruntime/inportconnector.h>
 #include <rtm/BufferBase.h>
 #include <rtm/ConnectorBase.h>
 #include <rtm/ConnectorListener.h>
 #include <rtm/InPortProvider.h>
 #include <rtm/Manager.h>
+#include <rtmruntime/inportconnector.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The InPort side of push connections of interface type `corba_cdr`.
  */
 class InPortCorbaCdrProvider : public InPortProvider,
-      public virtual POA_OpenRTM::InPortCdr,
-      public virtual PortableServer::RefCountServantBase
+                               public virtual POA_OpenRTM::InPortCdr,
+                               public virtual PortableServer::RefCountServantBase
 {
 public:
     InPortCorbaCdrProvider();

@@ -8,8 +8,7 @@
 #include <rtm/Manager.h>
 #include <rtm/SystemLogger.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The OutPort side of push connections of interface type `data_service`.
  * RT Studio's runtime has no data_service transport: the class exists so that code naming it

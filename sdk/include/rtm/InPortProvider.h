@@ -10,8 +10,7 @@
 #include <rtm/SystemLogger.h>
 #include <string>
 
-namespace RTC
-{
+namespace RTC {
 class ConnectorListenersBase;
 class ConnectorInfo;
 
@@ -28,7 +27,8 @@ public:
     virtual void setBuffer(BufferBase<ByteData> *buffer) = 0;
     virtual void setListener(ConnectorInfo &info, ConnectorListenersBase *listeners) = 0;
     virtual void setConnector(InPortConnector *connector) = 0;
-    /// Adds what the provider offers (`dataport.interface_type`, ...) to a port profile's properties.
+    /// Adds what the provider offers (`dataport.interface_type`, ...) to a port profile's
+    /// properties.
     virtual void publishInterfaceProfile(SDOPackage::NVList &prop);
     /// Adds the provider's interface to connector properties @p prop when they ask for its type.
     virtual bool publishInterface(SDOPackage::NVList &prop);

@@ -8,21 +8,20 @@
 #include <rtm/InPortProvider.h>
 #include <rtm/PublisherBase.h>
 
-namespace RTC
-{
+namespace RTC {
 class OutPortConsumer;
 
 /// read() takes a sample from the OutPort side through @p consumer (owned by the connector).
 class InPortPullConnector : public InPortConnector
 {
 public:
-    InPortPullConnector(ConnectorInfo info, OutPortConsumer *consumer, ConnectorListenersBase *listeners,
-                        CdrBufferBase *buffer = nullptr);
+    InPortPullConnector(ConnectorInfo info, OutPortConsumer *consumer,
+                        ConnectorListenersBase *listeners, CdrBufferBase *buffer = nullptr);
     ~InPortPullConnector() override;
     DataPortStatus read(ByteDataStreamBase *data) override;
     DataPortStatus disconnect() override;
-    void activate() override {}
-    void deactivate() override {}
+    void activate() override { }
+    void deactivate() override { }
     void unsubscribeInterface(const coil::Properties &prop) override;
 
 protected:

@@ -7,8 +7,7 @@
 #include <rtm/InPortConsumer.h>
 #include <rtm/PublisherBase.h>
 
-namespace RTC
-{
+namespace RTC {
 class InPortProvider;
 
 /**
@@ -18,14 +17,15 @@ class InPortProvider;
 class InPortPushConnector : public InPortConnector
 {
 public:
-    /// Without @p buffer the connector makes a CdrRingBuffer with the `buffer.*` properties of @p info.
-    InPortPushConnector(ConnectorInfo info, InPortProvider *provider, ConnectorListenersBase *listeners,
-                        CdrBufferBase *buffer = nullptr);
+    /// Without @p buffer the connector makes a CdrRingBuffer with the `buffer.*` properties of @p
+    /// info.
+    InPortPushConnector(ConnectorInfo info, InPortProvider *provider,
+                        ConnectorListenersBase *listeners, CdrBufferBase *buffer = nullptr);
     ~InPortPushConnector() override;
     DataPortStatus read(ByteDataStreamBase *data) override;
     DataPortStatus disconnect() override;
-    void activate() override {}
-    void deactivate() override {}
+    void activate() override { }
+    void deactivate() override { }
 
 protected:
     virtual CdrBufferBase *createBuffer(ConnectorInfo &info);

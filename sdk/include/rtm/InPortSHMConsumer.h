@@ -3,14 +3,13 @@
 #ifndef RTC_INPORTSHMCONSUMER_H
 #define RTC_INPORTSHMCONSUMER_H
 
-#include <rtm/SharedMemoryPort.h>
 #include <rtm/CorbaConsumer.h>
 #include <rtm/InPortConsumer.h>
 #include <rtm/Manager.h>
+#include <rtm/SharedMemoryPort.h>
 #include <rtm/SystemLogger.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The OutPort side of push connections of interface type `shared_memory`.
  * RT Studio's runtime has no shared_memory transport: the class exists so that code naming it

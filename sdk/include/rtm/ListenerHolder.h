@@ -7,17 +7,14 @@
 #include <utility>
 #include <vector>
 
-namespace RTM
-{
-namespace util
-{
+namespace RTM {
+namespace util {
 /**
  * Listeners of class @p ListenerClass in the order they were added. A listener added with
  * autoclean belongs to the holder: it is deleted when removed or when the holder goes.
  * Subclasses call the listeners with LISTENERHOLDER_CALLBACK.
  */
-template <typename ListenerClass>
-class ListenerHolder
+template<typename ListenerClass> class ListenerHolder
 {
 public:
     using Entry = std::pair<ListenerClass *, bool>;
@@ -63,12 +60,12 @@ protected:
 } // namespace RTM
 
 /// Calls member @p func with @p args (in parentheses) on every listener, under the holder's lock.
-#define LISTENERHOLDER_CALLBACK(func, args)                                                                    \
-    do {                                                                                                       \
-        std::lock_guard<std::mutex> guard(m_mutex);                                                            \
-        for (auto &&listener : m_listeners) {                                                                  \
-            listener.first->func args;                                                                         \
-        }                                                                                                      \
+#define LISTENERHOLDER_CALLBACK(func, args)                                                        \
+    do {                                                                                           \
+        std::lock_guard<std::mutex> guard(m_mutex);                                                \
+        for (auto &&listener : m_listeners) {                                                      \
+            listener.first->func args;                                                             \
+        }                                                                                          \
     } while (0)
 
 #endif // RTM_UTIL_LISTENERHOLDER_H

@@ -8,8 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace RTM
-{
+namespace RTM {
 class LocalServiceBase;
 
 /// A local service as its manager lists it.

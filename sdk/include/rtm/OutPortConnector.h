@@ -14,8 +14,7 @@
 
 #include <string>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * A connection of an OutPort: how a written sample reaches the other side (write). The
  * OutPort makes one per connection; OutPortBase::connectors() lists them.
@@ -36,7 +35,8 @@ public:
     virtual void setEndian(bool endian_type);
     /// The byte order of the connection's samples (`serializer.cdr.endian`, little by default).
     virtual bool isLittleEndian();
-    /// Takes a kept sample (pull connections); push connections keep none and answer PRECONDITION_NOT_MET.
+    /// Takes a kept sample (pull connections); push connections keep none and answer
+    /// PRECONDITION_NOT_MET.
     virtual BufferStatus read(ByteData &data);
     /// Drops what the connection subscribed to in the connector profile properties @p prop.
     virtual void unsubscribeInterface(const coil::Properties &prop);

@@ -3,14 +3,13 @@
 #ifndef RTC_OUTPORTCONSUMER_H
 #define RTC_OUTPORTCONSUMER_H
 
+#include <coil/Properties.h>
 #include <rtm/CdrBufferBase.h>
 #include <rtm/DataPortStatus.h>
 #include <rtm/RTC.h>
 #include <rtm/SystemLogger.h>
-#include <coil/Properties.h>
 
-namespace RTC
-{
+namespace RTC {
 class ConnectorListenersBase;
 class ConnectorInfo;
 

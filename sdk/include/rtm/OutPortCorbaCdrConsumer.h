@@ -3,20 +3,18 @@
 #ifndef RTC_OUTPORTCORBACDRCONSUMER_H
 #define RTC_OUTPORTCORBACDRCONSUMER_H
 
-#include <rtmruntime/outportconnector.h>
 #include <rtm/ConnectorBase.h>
 #include <rtm/ConnectorListener.h>
 #include <rtm/CorbaConsumer.h>
 #include <rtm/OutPortConsumer.h>
 #include <rtm/SystemLogger.h>
+#include <rtmruntime/outportconnector.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The InPort side of pull connections of interface type `corba_cdr`.
  */
-class OutPortCorbaCdrConsumer : public OutPortConsumer,
-      public CorbaConsumer< ::OpenRTM::OutPortCdr>
+class OutPortCorbaCdrConsumer : public OutPortConsumer, public CorbaConsumer<::OpenRTM::OutPortCdr>
 {
 public:
     OutPortCorbaCdrConsumer();

@@ -3,21 +3,20 @@
 #ifndef RTC_OUTPORTCORBACDRPROVIDER_H
 #define RTC_OUTPORTCORBACDRPROVIDER_H
 
-#include <rtmruntime/outportconnector.h>
 #include <rtm/BufferBase.h>
 #include <rtm/ConnectorBase.h>
 #include <rtm/ConnectorListener.h>
 #include <rtm/Manager.h>
 #include <rtm/OutPortProvider.h>
+#include <rtmruntime/outportconnector.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The OutPort side of pull connections of interface type `corba_cdr`.
  */
 class OutPortCorbaCdrProvider : public OutPortProvider,
-      public virtual ::POA_OpenRTM::OutPortCdr,
-      public virtual PortableServer::RefCountServantBase
+                                public virtual ::POA_OpenRTM::OutPortCdr,
+                                public virtual PortableServer::RefCountServantBase
 {
 public:
     OutPortCorbaCdrProvider();

@@ -9,8 +9,7 @@
 #include <rtm/OutPortConsumer.h>
 #include <rtm/SystemLogger.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The InPort side of pull connections of interface type `data_service`.
  * RT Studio's runtime has no data_service transport: the class exists so that code naming it

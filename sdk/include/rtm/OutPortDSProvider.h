@@ -9,8 +9,7 @@
 #include <rtm/Manager.h>
 #include <rtm/OutPortProvider.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The OutPort side of pull connections of interface type `data_service`.
  * RT Studio's runtime has no data_service transport: the class exists so that code naming it

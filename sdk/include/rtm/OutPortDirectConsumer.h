@@ -9,8 +9,7 @@
 #include <rtm/OutPortConsumer.h>
 #include <rtm/SystemLogger.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The InPort side of pull connections of interface type `direct`.
  * RT Studio's runtime has no direct transport: the class exists so that code naming it

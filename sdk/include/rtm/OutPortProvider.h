@@ -9,8 +9,7 @@
 #include <rtm/SystemLogger.h>
 #include <string>
 
-namespace RTC
-{
+namespace RTC {
 class ConnectorListenersBase;
 
 /// What an OutPort offers a pull connection: the InPort side takes samples from its buffer.

@@ -6,23 +6,22 @@
 #include <rtm/ConnectorListener.h>
 #include <rtm/OutPortConnector.h>
 
-namespace RTC
-{
+namespace RTC {
 class OutPortProvider;
 
 /// write() keeps samples in the buffer, which @p provider (owned) serves to the InPort side.
 class OutPortPullConnector : public OutPortConnector
 {
 public:
-    OutPortPullConnector(ConnectorInfo info, OutPortProvider *provider, ConnectorListenersBase *listeners,
-                         CdrBufferBase *buffer = nullptr);
+    OutPortPullConnector(ConnectorInfo info, OutPortProvider *provider,
+                         ConnectorListenersBase *listeners, CdrBufferBase *buffer = nullptr);
     ~OutPortPullConnector() override;
     DataPortStatus write(ByteDataStreamBase *data) override;
     BufferStatus read(ByteData &data) override;
     DataPortStatus disconnect() override;
     CdrBufferBase *getBuffer() override;
-    void activate() override {}
-    void deactivate() override {}
+    void activate() override { }
+    void deactivate() override { }
     /// A CdrRingBuffer with the `buffer.*` properties of @p info.
     static CdrBufferBase *createBuffer(ConnectorInfo &info);
     void onConnect();

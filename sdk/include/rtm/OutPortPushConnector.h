@@ -7,8 +7,7 @@
 #include <rtm/OutPortConnector.h>
 #include <rtm/PublisherBase.h>
 
-namespace RTC
-{
+namespace RTC {
 class ConnectorListeners;
 
 /**
@@ -19,8 +18,8 @@ class ConnectorListeners;
 class OutPortPushConnector : public OutPortConnector
 {
 public:
-    OutPortPushConnector(ConnectorInfo info, InPortConsumer *consumer, ConnectorListenersBase *listeners,
-                         CdrBufferBase *buffer = nullptr);
+    OutPortPushConnector(ConnectorInfo info, InPortConsumer *consumer,
+                         ConnectorListenersBase *listeners, CdrBufferBase *buffer = nullptr);
     ~OutPortPushConnector() override;
     DataPortStatus write(RTC::ByteDataStreamBase *data) override;
     DataPortStatus disconnect() override;

@@ -3,15 +3,14 @@
 #ifndef RTC_OUTPORTSHMCONSUMER_H
 #define RTC_OUTPORTSHMCONSUMER_H
 
-#include <rtm/SharedMemoryPort.h>
 #include <rtm/ConnectorBase.h>
 #include <rtm/ConnectorListener.h>
 #include <rtm/CorbaConsumer.h>
 #include <rtm/OutPortConsumer.h>
+#include <rtm/SharedMemoryPort.h>
 #include <rtm/SystemLogger.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The InPort side of pull connections of interface type `shared_memory`.
  * RT Studio's runtime has no shared_memory transport: the class exists so that code naming it

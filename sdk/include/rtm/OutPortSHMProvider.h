@@ -3,15 +3,14 @@
 #ifndef RTC_OUTPORTSHMPROVIDER_H
 #define RTC_OUTPORTSHMPROVIDER_H
 
-#include <rtm/SharedMemoryPort.h>
 #include <rtm/BufferBase.h>
 #include <rtm/ConnectorBase.h>
 #include <rtm/ConnectorListener.h>
 #include <rtm/Manager.h>
 #include <rtm/OutPortProvider.h>
+#include <rtm/SharedMemoryPort.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The OutPort side of pull connections of interface type `shared_memory`.
  * RT Studio's runtime has no shared_memory transport: the class exists so that code naming it

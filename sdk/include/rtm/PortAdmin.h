@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * Ports by name: servants of this process (PortBase) and references to others' ports. Names
  * are the ports' profile names and must be unique. Thread-safe; the ports stay their owners'.

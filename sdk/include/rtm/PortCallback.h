@@ -7,8 +7,7 @@
 
 class cdrStream;
 
-namespace RTC
-{
+namespace RTC {
 /// Called with a connector profile at a step of connecting (PortBase::setOnConnected, …).
 class ConnectionCallback
 {
@@ -26,8 +25,7 @@ public:
 };
 
 /// OutPort<DataType>::setOnWrite: called with each value just before it is written.
-template <class DataType>
-class OnWrite
+template<class DataType> class OnWrite
 {
 public:
     virtual ~OnWrite() = default;
@@ -35,59 +33,56 @@ public:
 };
 
 /// OutPort<DataType>::setOnWriteConvert: returns the value sent in place of the one written.
-template <class DataType>
-struct OnWriteConvert
+template<class DataType> struct OnWriteConvert
 {
     virtual ~OnWriteConvert() = default;
     virtual DataType operator()(const DataType &value) = 0;
 };
 
 /// InPort<DataType>::setOnRead: called before each read.
-template <class DataType>
-struct OnRead
+template<class DataType> struct OnRead
 {
     virtual ~OnRead() = default;
     virtual void operator()() = 0;
 };
 
-/// InPort<DataType>::setOnReadConvert: returns the value the bound variable gets in place of the one read.
-template <class DataType>
-struct OnReadConvert
+/// InPort<DataType>::setOnReadConvert: returns the value the bound variable gets in place of the
+/// one read.
+template<class DataType> struct OnReadConvert
 {
     virtual ~OnReadConvert() = default;
     virtual DataType operator()(const DataType &value) = 0;
 };
 
 // The callbacks below are OpenRTM-aist 0.4's, which 2.x no longer declares; RT Studio keeps
-// them so that components of that time still build (InPort::setOnUnderflow, OutPort::setOnOverflow, …).
+// them so that components of that time still build (InPort::setOnUnderflow, OutPort::setOnOverflow,
+// …).
 
-/// InPort<DataType>::setOnUnderflow: a read that finds no data gives the bound variable what this returns.
-template <class DataType>
-struct OnUnderflow
+/// InPort<DataType>::setOnUnderflow: a read that finds no data gives the bound variable what this
+/// returns.
+template<class DataType> struct OnUnderflow
 {
     virtual ~OnUnderflow() = default;
     virtual DataType operator()() = 0;
 };
 
 /// OutPort<DataType>::setOnOverflow: called with a value a connection's buffer had no room for.
-template <class DataType>
-struct OnOverflow
+template<class DataType> struct OnOverflow
 {
     virtual ~OnOverflow() = default;
     virtual void operator()(const DataType &value) = 0;
 };
 
 /// OutPort<DataType>::setOnWriteTimeout: called with a value whose sending timed out.
-template <class DataType>
-struct OnWriteTimeout
+template<class DataType> struct OnWriteTimeout
 {
     virtual ~OnWriteTimeout() = default;
     virtual void operator()(const DataType &value) = 0;
 };
 
-/// InPort<DataType>::setOnReadTimeout: a read that timed out gives the bound variable what this returns.
-template <class DataType>
-struct OnReadTimeout
+/// InPort<DataType>::setOnReadTimeout: a read that timed out gives the bound variable what this
+/// returns.
+template<class DataType> struct OnReadTimeout
 {
     virtual ~OnReadTimeout() = default;
     virtual DataType operator()() = 0;

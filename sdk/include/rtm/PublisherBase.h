@@ -14,8 +14,7 @@
 
 #include <chrono>
 
-namespace RTC
-{
+namespace RTC {
 class InPortConsumer;
 class ConnectorListenersBase;
 class ConnectorInfo;
@@ -37,7 +36,7 @@ public:
     virtual bool isActive() = 0;
     virtual DataPortStatus activate() = 0;
     virtual DataPortStatus deactivate() = 0;
-    virtual void release() {}
+    virtual void release() { }
 };
 } // namespace RTC
 

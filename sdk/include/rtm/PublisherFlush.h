@@ -3,15 +3,14 @@
 #ifndef RTC_PUBLISHERFLUSH_H
 #define RTC_PUBLISHERFLUSH_H
 
+#include <condition_variable>
+#include <mutex>
 #include <rtm/ConnectorBase.h>
 #include <rtm/ConnectorListener.h>
 #include <rtm/PublisherBase.h>
 #include <rtm/SystemLogger.h>
-#include <condition_variable>
-#include <mutex>
 
-namespace RTC
-{
+namespace RTC {
 class InPortConsumer;
 
 /// Sends each written sample to the consumer at once (`subscription_type` flush).

@@ -3,6 +3,9 @@
 #ifndef RTC_PUBLISHERNEW_H
 #define RTC_PUBLISHERNEW_H
 
+#include <coil/PeriodicTask.h>
+#include <coil/Task.h>
+#include <condition_variable>
 #include <rtm/ByteData.h>
 #include <rtm/CdrBufferBase.h>
 #include <rtm/ConnectorBase.h>
@@ -11,12 +14,8 @@
 #include <rtm/PublisherBase.h>
 #include <rtm/RTC.h>
 #include <rtm/SystemLogger.h>
-#include <coil/PeriodicTask.h>
-#include <coil/Task.h>
-#include <condition_variable>
 
-namespace RTC
-{
+namespace RTC {
 class InPortConsumer;
 
 /**

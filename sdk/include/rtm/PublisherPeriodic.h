@@ -3,18 +3,17 @@
 #ifndef RTC_PUBLISHERPERIODIC_H
 #define RTC_PUBLISHERPERIODIC_H
 
+#include <coil/PeriodicTask.h>
+#include <coil/Task.h>
+#include <condition_variable>
 #include <rtm/CdrBufferBase.h>
 #include <rtm/ConnectorBase.h>
 #include <rtm/ConnectorListener.h>
 #include <rtm/PublisherBase.h>
 #include <rtm/RTC.h>
 #include <rtm/SystemLogger.h>
-#include <coil/PeriodicTask.h>
-#include <coil/Task.h>
-#include <condition_variable>
 
-namespace RTC
-{
+namespace RTC {
 class InPortConsumer;
 
 /**

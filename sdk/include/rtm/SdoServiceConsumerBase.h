@@ -6,8 +6,7 @@
 #include <rtm/RTC.h>
 #include <rtm/RTObject.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * A consumer of an SDO service another party attaches to the component. OpenRTM-aist makes
  * these from a factory by the profile's interface type; RT Studio's SDK has no such factory,

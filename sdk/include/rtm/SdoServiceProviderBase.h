@@ -6,8 +6,7 @@
 #include <rtm/RTC.h>
 #include <rtm/RTObject.h>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * An SDO service servant a component offers: it is listed by the component's
  * get_service_profiles() and reached with get_sdo_service(id) once added with

@@ -11,8 +11,7 @@
 
 #include <string>
 
-namespace RTC
-{
+namespace RTC {
 /**
  * The shared memory area of a `shared_memory` connection. RT Studio's data ports carry
  * corba_cdr only: the class exists so that code naming it builds, and each operation logs an
