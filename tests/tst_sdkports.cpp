@@ -708,6 +708,18 @@ void TestSdkPorts::portApiAfterConnect()
     QCOMPARE(out.disconnect(m_connectorId.c_str()), RTC::RTC_OK);
     QVERIFY(out.getConnectorIds().empty());
     QVERIFY(in.getConnectorNames().empty());
+
+    // An InPort takes samples handed to it directly, as OpenRTM-aist's direct connections do.
+    RTC::DirectInPortBase<RTC::TimedLong> &direct = in;
+    QVERIFY(direct.isEmpty());
+    RTC::TimedLong sample;
+    sample.tm.sec = 0;
+    sample.tm.nsec = 0;
+    sample.data = 77;
+    direct.write(sample);
+    QVERIFY(direct.isNew());
+    QVERIFY(m_reader->read(&value));
+    QCOMPARE(value, 77L);
 }
 
 void TestSdkPorts::componentActionListenersInOrder()

@@ -3,8 +3,11 @@
 #ifndef RTM_INPORT_H
 #define RTM_INPORT_H
 
+#include <rtm/CdrBufferBase.h>
 #include <rtm/DataPortStatus.h>
+#include <rtm/DirectInPortBase.h>
 #include <rtm/InPortBase.h>
+#include <rtm/InPortConnector.h>
 #include <rtm/PortCallback.h>
 #include <rtm/RTC.h>
 #include <rtm/Timestamp.h>
@@ -26,7 +29,7 @@ namespace RTC
  * called at the moments OpenRTM-aist calls them; the port does not own them.
  */
 template <class DataType>
-class InPort : public InPortBase
+class InPort : public InPortBase, public DirectInPortBase<DataType>
 {
 public:
     /// The extra arguments of OpenRTM-aist 1.x (buffer length, blocking, timeouts) are accepted and ignored.
@@ -149,7 +152,7 @@ public:
     }
 
     /// Puts @p data into the port as if a connection delivered it (OpenRTM-aist's direct write).
-    void write(DataType &data) { receiveValue(&data, typeid(DataType), std::string()); }
+    void write(DataType &data) override { receiveValue(&data, typeid(DataType), std::string()); }
 
     /// Reads into the bound variable (OpenRTM-aist's update()).
     virtual void update() { read(); }

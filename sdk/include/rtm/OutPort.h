@@ -3,8 +3,10 @@
 #ifndef RTM_OUTPORT_H
 #define RTM_OUTPORT_H
 
+#include <rtm/CdrBufferBase.h>
 #include <rtm/DataPortStatus.h>
 #include <rtm/OutPortBase.h>
+#include <rtm/OutPortConnector.h>
 #include <rtm/PortCallback.h>
 #include <rtm/RTC.h>
 #include <rtm/Timestamp.h>
