@@ -127,6 +127,17 @@ void PortBase::observe(ConnectStep step, RTC::ConnectorProfile &profile, RTC::Re
         observer(step, profile, result);
 }
 
+void PortBase::callHook(Hook hook, RTC::ConnectorProfile &profile)
+{
+    HookFunction function;
+    {
+        std::lock_guard lock(m_mutex);
+        function = m_hooks[hook];
+    }
+    if (function)
+        function(profile);
+}
+
 Properties PortBase::portProperties()
 {
     std::lock_guard lock(m_mutex);
@@ -207,6 +218,7 @@ RTC::ReturnCode_t PortBase::disconnect(const char *connector_id)
         return profile.ports[0]->notify_disconnect(connector_id);
     } catch (const CORBA::Exception &) {
         // The first port's process is gone: disconnect our side anyway.
+        callHook(ConnectionLost, profile);
         return notify_disconnect(connector_id);
     }
 }
@@ -260,6 +272,7 @@ RTC::ReturnCode_t PortBase::connectSteps(RTC::ConnectorProfile &connector_profil
 {
     if (const RTC::ReturnCode_t refused = admit(connector_profile); refused != RTC::RTC_OK)
         return refused;
+    callHook(Publish, connector_profile);
     RTC::ReturnCode_t result = publishInterfaces(connector_profile);
     observe(ConnectStep::PublishInterfaces, connector_profile, result);
     if (result != RTC::RTC_OK)
@@ -274,6 +287,7 @@ RTC::ReturnCode_t PortBase::connectSteps(RTC::ConnectorProfile &connector_profil
         observe(ConnectStep::ConnectNextPort, connector_profile, result);
     }
     if (result == RTC::RTC_OK) {
+        callHook(Subscribe, connector_profile);
         result = subscribeInterfaces(connector_profile);
         observe(ConnectStep::SubscribeInterfaces, connector_profile, result);
     }
@@ -282,6 +296,7 @@ RTC::ReturnCode_t PortBase::connectSteps(RTC::ConnectorProfile &connector_profil
         return result;
     }
     storeProfile(connector_profile);
+    callHook(Connected, connector_profile);
     return RTC::RTC_OK;
 }
 
@@ -292,6 +307,7 @@ RTC::ReturnCode_t PortBase::notify_disconnect(const char *connector_id)
         return RTC::BAD_PARAMETER;
     observe(ConnectStep::NotifyDisconnect, profile, RTC::RTC_OK);
     observe(ConnectStep::UnsubscribeInterfaces, profile, RTC::RTC_OK);
+    callHook(Unsubscribe, profile);
     unsubscribeInterfaces(profile);
     eraseProfile(connector_id);
     // Pass it on; a dead port in the chain is skipped so the others still disconnect.
@@ -302,8 +318,10 @@ RTC::ReturnCode_t PortBase::notify_disconnect(const char *connector_id)
             observe(ConnectStep::DisconnectNextPort, profile, next);
             break;
         } catch (const CORBA::Exception &) {
+            callHook(ConnectionLost, profile);
         }
     }
+    callHook(Disconnected, profile);
     observe(ConnectStep::Disconnected, profile, RTC::RTC_OK);
     return RTC::RTC_OK;
 }

@@ -5,6 +5,7 @@
 
 #include <RTC.hh>
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -64,6 +65,45 @@ public:
     const RTC::PortProfile &getProfile() const { return getPortProfile(); }
     /// This port's object reference, not duplicated (nil before the port is activated).
     RTC::PortService_ptr getPortRef() const;
+
+    /**
+     * OpenRTM-aist's PortBase callbacks, objects with `operator()(RTC::ConnectorProfile &)`
+     * (RTC::ConnectionCallback), not owned; null removes one. OnPublishInterfaces and
+     * OnSubscribeInterfaces come before the port publishes / subscribes, OnConnected after a
+     * connection is stored, OnUnsubscribeInterfaces before the port drops a connection's
+     * interfaces, OnDisconnected after it is gone, OnConnectionLost when a port of the
+     * connection could not be reached while disconnecting.
+     */
+    template<class Callback> void setOnPublishInterfaces(Callback *on_publish)
+    {
+        setCallback(Hook::Publish, on_publish);
+    }
+    void setOnPublishInterfaces(std::nullptr_t) { clearCallback(Hook::Publish); }
+    template<class Callback> void setOnSubscribeInterfaces(Callback *on_subscribe)
+    {
+        setCallback(Hook::Subscribe, on_subscribe);
+    }
+    void setOnSubscribeInterfaces(std::nullptr_t) { clearCallback(Hook::Subscribe); }
+    template<class Callback> void setOnConnected(Callback *on_connected)
+    {
+        setCallback(Hook::Connected, on_connected);
+    }
+    void setOnConnected(std::nullptr_t) { clearCallback(Hook::Connected); }
+    template<class Callback> void setOnUnsubscribeInterfaces(Callback *on_unsubscribe)
+    {
+        setCallback(Hook::Unsubscribe, on_unsubscribe);
+    }
+    void setOnUnsubscribeInterfaces(std::nullptr_t) { clearCallback(Hook::Unsubscribe); }
+    template<class Callback> void setOnDisconnected(Callback *on_disconnected)
+    {
+        setCallback(Hook::Disconnected, on_disconnected);
+    }
+    void setOnDisconnected(std::nullptr_t) { clearCallback(Hook::Disconnected); }
+    template<class Callback> void setOnConnectionLost(Callback *on_connection_lost)
+    {
+        setCallback(Hook::ConnectionLost, on_connection_lost);
+    }
+    void setOnConnectionLost(std::nullptr_t) { clearCallback(Hook::ConnectionLost); }
     /// Lets others reach what the port provides (service providers); called when the component
     /// is activated, as OpenRTM-aist's PortAdmin::activatePorts.
     virtual void activateInterfaces() {}
@@ -105,6 +145,22 @@ protected:
     std::string profileName();
 
 private:
+    enum Hook { Publish, Subscribe, Connected, Unsubscribe, Disconnected, ConnectionLost, HookCount };
+    using HookFunction = std::function<void(RTC::ConnectorProfile &)>;
+    template<class Callback> void setCallback(Hook hook, Callback *callback)
+    {
+        HookFunction function;
+        if (callback != nullptr)
+            function = [callback](RTC::ConnectorProfile &profile) { (*callback)(profile); };
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_hooks[hook] = function;
+    }
+    void clearCallback(Hook hook)
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_hooks[hook] = HookFunction();
+    }
+    void callHook(Hook hook, RTC::ConnectorProfile &profile);
     RTC::ReturnCode_t connectSteps(RTC::ConnectorProfile &connector_profile);
     int ownIndex(const RTC::ConnectorProfile &profile);
     bool findProfile(const std::string &id, RTC::ConnectorProfile *profile);
@@ -117,6 +173,7 @@ private:
     RTC::PortProfile m_profile;
     RTC::PortService_var m_self;
     ConnectObserver m_observer;
+    HookFunction m_hooks[HookCount];
 };
 
 /**

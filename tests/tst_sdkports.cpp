@@ -144,6 +144,17 @@ struct RecordOverflow : RTC::OnOverflow<RTC::TimedLong>
     }
 };
 
+/// A PortBase callback that logs its name and the connector's.
+struct RecordConnection : RTC::ConnectionCallback
+{
+    explicit RecordConnection(const char *what) : m_what(what) {}
+    void operator()(RTC::ConnectorProfile &profile) override
+    {
+        eventLog().add(std::string("callback ") + m_what + " " + profile.name.in());
+    }
+    std::string m_what;
+};
+
 // --- components ---
 
 const char *const writerSpec[] = {"implementation_id",
@@ -493,6 +504,7 @@ private slots:
     void componentActionListenersInOrder();
     void executionContextListeners();
     void portConnectListenersOnConnectAndDisconnect();
+    void portCallbacksOnConnectAndDisconnect();
     void connectorObjectsOfPorts();
     void transportObjectsPushOverCorbaCdr_data();
     void transportObjectsPushOverCorbaCdr();
@@ -964,6 +976,34 @@ void TestSdkPorts::portAdminByName()
     admin.deletePortByName(m_reader->inPort().getName());
     refs = admin.getPortServiceList();
     QCOMPARE(refs->length(), CORBA::ULong(0));
+}
+
+void TestSdkPorts::portCallbacksOnConnectAndDisconnect()
+{
+    RecordConnection publish("publish"), subscribe("subscribe"), connected("connected"), unsubscribe("unsubscribe"),
+        disconnected("disconnected");
+    RTC::PortBase &port = m_reader->inPort();
+    port.setOnPublishInterfaces(&publish);
+    port.setOnSubscribeInterfaces(&subscribe);
+    port.setOnConnected(&connected);
+    port.setOnUnsubscribeInterfaces(&unsubscribe);
+    port.setOnDisconnected(&disconnected);
+    eventLog().clear();
+    QCOMPARE(connectWire(), RTC::RTC_OK);
+    QCOMPARE(eventLog().matching("callback"),
+             (QStringList{"callback publish wire", "callback subscribe wire", "callback connected wire"}));
+    eventLog().clear();
+    QCOMPARE(m_writer->outPort().disconnect(m_connectorId.c_str()), RTC::RTC_OK);
+    QCOMPARE(eventLog().matching("callback"), (QStringList{"callback unsubscribe wire", "callback disconnected wire"}));
+    // Taken away, they are not called any more.
+    port.setOnConnected(nullptr);
+    eventLog().clear();
+    QCOMPARE(connectWire(), RTC::RTC_OK);
+    QCOMPARE(eventLog().matching("callback"), (QStringList{"callback publish wire", "callback subscribe wire"}));
+    port.setOnPublishInterfaces(nullptr);
+    port.setOnSubscribeInterfaces(nullptr);
+    port.setOnUnsubscribeInterfaces(nullptr);
+    port.setOnDisconnected(nullptr);
 }
 
 void TestSdkPorts::unsupportedInterfaceTypeRefused_data()
