@@ -487,6 +487,8 @@ OnlineDocument *OnlineDocks::openOnline(const Profile::RtsProfile &profile)
         return online;
     const QPointer<OnlineDiagram> diagram(online->diagram());
     const Deploy::TargetOptions options = targetOptions();
+    // Start All and Stop All of this tab run the system's plan, as rtctl start / stop do.
+    diagram->setSystem(profile, options);
     m_session->submit(
         SystemEditor::OnlineSession::deploymentHost(),
         [profile, options] { return QVariant::fromValue(Deploy::planRestore(profile, options)); },

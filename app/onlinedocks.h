@@ -88,7 +88,8 @@ public:
     /**
      * Opens `profile` online: a new online diagram tab showing the live components the system's
      * components map onto, at their saved positions. Components not found are listed in the
-     * diagram's status line.
+     * diagram's status line. The tab's Start All and Stop All run the system's start / stop plan
+     * (OnlineDiagram::setSystem()).
      */
     OnlineDocument *openOnline(const Profile::RtsProfile &profile);
     /**

@@ -120,8 +120,12 @@ QString RtSystemCommand::usage() const
             "--dry-run      print the plan and change nothing\n"
             "A failed required step undoes what this run created and connected.\n");
     if (m_action == Action::Start || m_action == Action::Stop)
-        text += QStringLiteral("Follows the file's Activation/Deactivation (and StartUp/ShutDown) "
-                               "blocks: order, WaitTime, Preceding SYNC with timeout.\n");
+        text += QStringLiteral(
+            "Follows the file's Activation/Deactivation (and StartUp/ShutDown) blocks as rtshell\n"
+            "does: plain targets by sequence and unnamed components first; every WaitTime and\n"
+            "Preceding waits side by side from the start of the plan (SYNC: until the preceding\n"
+            "components reach the state, a timeout cancels the plan; ASYNC/NO_SYNC: until their\n"
+            "action was sent).\n");
     return text
         + QStringLiteral("Exit codes: 0 done%1, 1 a required step failed%2, 2 usage error.\n")
               .arg(m_action == Action::Diff ? QStringLiteral(" (no differences)") : QString(),

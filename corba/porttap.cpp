@@ -4,7 +4,7 @@
 #include "corbacall.h"
 #include "portconnection.h"
 
-#include <DataPort.hh>
+#include <DataPort_OpenRTM.hh>
 
 #include <QDateTime>
 #include <QUuid>

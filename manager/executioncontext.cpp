@@ -21,18 +21,21 @@ RTC::ReturnCode_t guarded(Call call)
 
 } // namespace
 
-PeriodicExecutionContext::PeriodicExecutionContext(double rate, double transitionTimeoutSeconds)
+ExecutionContext::ExecutionContext(const std::string &typeName, RTC::ExecutionKind kind, double rate,
+                                   double transitionTimeoutSeconds)
     : m_rate(rate > 0 ? rate : 1000.0)
     , m_transitionTimeout(transitionTimeoutSeconds)
+    , m_typeName(typeName)
+    , m_kind(kind)
 {
 }
 
-PeriodicExecutionContext::~PeriodicExecutionContext()
+ExecutionContext::~ExecutionContext()
 {
     halt(true);
 }
 
-void PeriodicExecutionContext::addOwner(RTC::LightweightRTObject_ptr owner, RTC::ExecutionContextHandle_t handle)
+void ExecutionContext::addOwner(RTC::LightweightRTObject_ptr owner, RTC::ExecutionContextHandle_t handle)
 {
     auto p = std::make_shared<Participant>();
     p->ref = RTC::LightweightRTObject::_duplicate(owner);
@@ -44,7 +47,7 @@ void PeriodicExecutionContext::addOwner(RTC::LightweightRTObject_ptr owner, RTC:
     m_participants.push_back(p);
 }
 
-void PeriodicExecutionContext::halt(bool quiet)
+void ExecutionContext::halt(bool quiet)
 {
     std::thread thread;
     {
@@ -69,13 +72,40 @@ void PeriodicExecutionContext::halt(bool quiet)
         guarded([&] { return p->ref->on_shutdown(p->handle); });
 }
 
-CORBA::Boolean PeriodicExecutionContext::is_running()
+void ExecutionContext::startThread()
+{
+    if (!m_thread.joinable())
+        m_thread = std::thread([this] { run(); });
+}
+
+void ExecutionContext::setExecutionKind(RTC::ExecutionKind kind)
+{
+    std::lock_guard lock(m_mutex);
+    m_kind = kind;
+}
+
+unsigned long ExecutionContext::cycles()
+{
+    std::lock_guard lock(m_mutex);
+    return m_cycles;
+}
+
+void ExecutionContext::runCycle()
+{
+    std::lock_guard cycle(m_cycleMutex);
+    for (const ParticipantPtr &p : snapshot())
+        process(p);
+    std::lock_guard lock(m_mutex);
+    ++m_cycles;
+}
+
+CORBA::Boolean ExecutionContext::is_running()
 {
     std::lock_guard lock(m_mutex);
     return m_running;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::start()
+RTC::ReturnCode_t ExecutionContext::start()
 {
     {
         std::lock_guard lock(m_mutex);
@@ -86,27 +116,11 @@ RTC::ReturnCode_t PeriodicExecutionContext::start()
         guarded([&] { return p->ref->on_startup(p->handle); });
     std::lock_guard lock(m_mutex);
     m_running = true;
-    if (hasWork())
-        startThread();
+    started();
     return RTC::RTC_OK;
 }
 
-bool PeriodicExecutionContext::hasWork() const
-{
-    for (const ParticipantPtr &p : m_participants) {
-        if (p->request != Request::None || p->state == RTC::ACTIVE_STATE || p->state == RTC::ERROR_STATE)
-            return true;
-    }
-    return false;
-}
-
-void PeriodicExecutionContext::startThread()
-{
-    if (!m_thread.joinable())
-        m_thread = std::thread([this] { run(); });
-}
-
-RTC::ReturnCode_t PeriodicExecutionContext::stop()
+RTC::ReturnCode_t ExecutionContext::stop()
 {
     if (!is_running())
         return RTC::PRECONDITION_NOT_MET;
@@ -114,13 +128,13 @@ RTC::ReturnCode_t PeriodicExecutionContext::stop()
     return RTC::RTC_OK;
 }
 
-CORBA::Double PeriodicExecutionContext::get_rate()
+CORBA::Double ExecutionContext::get_rate()
 {
     std::lock_guard lock(m_mutex);
     return m_rate;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::set_rate(CORBA::Double rate)
+RTC::ReturnCode_t ExecutionContext::set_rate(CORBA::Double rate)
 {
     if (!(rate > 0.0))
         return RTC::BAD_PARAMETER;
@@ -136,7 +150,7 @@ RTC::ReturnCode_t PeriodicExecutionContext::set_rate(CORBA::Double rate)
     return RTC::RTC_OK;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::add_component(RTC::LightweightRTObject_ptr comp)
+RTC::ReturnCode_t ExecutionContext::add_component(RTC::LightweightRTObject_ptr comp)
 {
     if (CORBA::is_nil(comp))
         return RTC::BAD_PARAMETER;
@@ -156,7 +170,7 @@ RTC::ReturnCode_t PeriodicExecutionContext::add_component(RTC::LightweightRTObje
     return RTC::RTC_OK;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::remove_component(RTC::LightweightRTObject_ptr comp)
+RTC::ReturnCode_t ExecutionContext::remove_component(RTC::LightweightRTObject_ptr comp)
 {
     ParticipantPtr p = find(comp);
     if (!p || p->owner)
@@ -171,38 +185,42 @@ RTC::ReturnCode_t PeriodicExecutionContext::remove_component(RTC::LightweightRTO
     return RTC::RTC_OK;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::activate_component(RTC::LightweightRTObject_ptr comp)
+RTC::ReturnCode_t ExecutionContext::activate_component(RTC::LightweightRTObject_ptr comp)
 {
-    return requestTransition(comp, RTC::INACTIVE_STATE, Request::Activate);
+    ParticipantPtr p = find(comp);
+    return p ? requestTransition(p, RTC::INACTIVE_STATE, Request::Activate) : RTC::BAD_PARAMETER;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::deactivate_component(RTC::LightweightRTObject_ptr comp)
+RTC::ReturnCode_t ExecutionContext::deactivate_component(RTC::LightweightRTObject_ptr comp)
 {
-    return requestTransition(comp, RTC::ACTIVE_STATE, Request::Deactivate);
+    ParticipantPtr p = find(comp);
+    return p ? requestTransition(p, RTC::ACTIVE_STATE, Request::Deactivate) : RTC::BAD_PARAMETER;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::reset_component(RTC::LightweightRTObject_ptr comp)
+RTC::ReturnCode_t ExecutionContext::reset_component(RTC::LightweightRTObject_ptr comp)
 {
-    return requestTransition(comp, RTC::ERROR_STATE, Request::Reset);
+    ParticipantPtr p = find(comp);
+    return p ? requestTransition(p, RTC::ERROR_STATE, Request::Reset) : RTC::BAD_PARAMETER;
 }
 
-RTC::LifeCycleState PeriodicExecutionContext::get_component_state(RTC::LightweightRTObject_ptr comp)
+RTC::LifeCycleState ExecutionContext::get_component_state(RTC::LightweightRTObject_ptr comp)
 {
     ParticipantPtr p = find(comp);
     std::lock_guard lock(m_mutex);
     return p ? p->state : RTC::CREATED_STATE;
 }
 
-RTC::ExecutionKind PeriodicExecutionContext::get_kind()
+RTC::ExecutionKind ExecutionContext::get_kind()
 {
-    return RTC::PERIODIC;
+    std::lock_guard lock(m_mutex);
+    return m_kind;
 }
 
-RTC::ExecutionContextProfile *PeriodicExecutionContext::get_profile()
+RTC::ExecutionContextProfile *ExecutionContext::get_profile()
 {
     auto *profile = new RTC::ExecutionContextProfile;
-    profile->kind = RTC::PERIODIC;
     std::lock_guard lock(m_mutex);
+    profile->kind = m_kind;
     profile->rate = m_rate;
     profile->owner = RTC::RTObject::_duplicate(m_ownerRef);
     profile->participants.length(0);
@@ -214,11 +232,11 @@ RTC::ExecutionContextProfile *PeriodicExecutionContext::get_profile()
     }
     profile->properties.length(1);
     profile->properties[0].name = "type";
-    profile->properties[0].value <<= "PeriodicExecutionContext";
+    profile->properties[0].value <<= m_typeName.c_str();
     return profile;
 }
 
-PeriodicExecutionContext::ParticipantPtr PeriodicExecutionContext::find(RTC::LightweightRTObject_ptr comp)
+ExecutionContext::ParticipantPtr ExecutionContext::find(RTC::LightweightRTObject_ptr comp)
 {
     if (CORBA::is_nil(comp))
         return nullptr;
@@ -232,38 +250,32 @@ PeriodicExecutionContext::ParticipantPtr PeriodicExecutionContext::find(RTC::Lig
     return nullptr;
 }
 
-std::vector<PeriodicExecutionContext::ParticipantPtr> PeriodicExecutionContext::snapshot()
+std::vector<ExecutionContext::ParticipantPtr> ExecutionContext::snapshot()
 {
     std::lock_guard lock(m_mutex);
     return m_participants;
 }
 
-RTC::ReturnCode_t PeriodicExecutionContext::requestTransition(RTC::LightweightRTObject_ptr comp,
-                                                              RTC::LifeCycleState from, Request request)
+RTC::ReturnCode_t ExecutionContext::requestTransition(const ParticipantPtr &p, RTC::LifeCycleState from,
+                                                      Request request)
 {
-    ParticipantPtr p = find(comp);
-    if (!p)
-        return RTC::BAD_PARAMETER;
-    std::unique_lock lock(m_mutex);
-    if (p->state != from || p->request != Request::None)
-        return RTC::PRECONDITION_NOT_MET;
-    const bool inLoopThread = m_thread.get_id() == std::this_thread::get_id();
-    if (!m_running || inLoopThread) {
-        lock.unlock();
-        runTransition(p, request);
-        return RTC::RTC_OK;
+    return transitionNow(p, from, request);
+}
+
+RTC::ReturnCode_t ExecutionContext::transitionNow(const ParticipantPtr &p, RTC::LifeCycleState from, Request request)
+{
+    // Between cycles: a tick arriving meanwhile sees the state before or after, never half of it.
+    std::lock_guard cycle(m_cycleMutex);
+    {
+        std::lock_guard lock(m_mutex);
+        if (p->state != from || p->request != Request::None)
+            return RTC::PRECONDITION_NOT_MET;
     }
-    p->request = request;
-    startThread();
-    m_wake.notify_all();
-    // Wait a couple of periods at least, so slow rates still report the finished transition.
-    const double waitSeconds = std::max(m_transitionTimeout, 2.0 / m_rate);
-    m_transitioned.wait_for(lock, std::chrono::duration<double>(waitSeconds),
-                            [&] { return p->request == Request::None || !m_running; });
+    runTransition(p, request);
     return RTC::RTC_OK;
 }
 
-void PeriodicExecutionContext::setState(const ParticipantPtr &p, RTC::LifeCycleState state)
+void ExecutionContext::setState(const ParticipantPtr &p, RTC::LifeCycleState state)
 {
     std::lock_guard lock(m_mutex);
     p->state = state;
@@ -271,7 +283,7 @@ void PeriodicExecutionContext::setState(const ParticipantPtr &p, RTC::LifeCycleS
     m_transitioned.notify_all();
 }
 
-void PeriodicExecutionContext::runTransition(const ParticipantPtr &p, Request request)
+void ExecutionContext::runTransition(const ParticipantPtr &p, Request request)
 {
     switch (request) {
     case Request::Activate:
@@ -295,7 +307,7 @@ void PeriodicExecutionContext::runTransition(const ParticipantPtr &p, Request re
     }
 }
 
-void PeriodicExecutionContext::execute(const ParticipantPtr &p)
+void ExecutionContext::execute(const ParticipantPtr &p)
 {
     if (CORBA::is_nil(p->dataflow))
         return;
@@ -308,7 +320,7 @@ void PeriodicExecutionContext::execute(const ParticipantPtr &p)
     }
 }
 
-void PeriodicExecutionContext::process(const ParticipantPtr &p)
+void ExecutionContext::process(const ParticipantPtr &p)
 {
     Request request;
     RTC::LifeCycleState state;
@@ -327,13 +339,66 @@ void PeriodicExecutionContext::process(const ParticipantPtr &p)
         guarded([&] { return p->ref->on_error(p->handle); });
 }
 
+// --- PeriodicExecutionContext ---
+
+PeriodicExecutionContext::PeriodicExecutionContext(double rate, double transitionTimeoutSeconds)
+    : ExecutionContext("PeriodicExecutionContext", RTC::PERIODIC, rate, transitionTimeoutSeconds)
+{
+}
+
+PeriodicExecutionContext::~PeriodicExecutionContext()
+{
+    // Before the members run() uses are gone.
+    halt(true);
+}
+
+void PeriodicExecutionContext::started()
+{
+    if (hasWork())
+        startThread();
+}
+
+bool PeriodicExecutionContext::hasWork() const
+{
+    for (const ParticipantPtr &p : m_participants) {
+        if (p->request != Request::None || p->state == RTC::ACTIVE_STATE || p->state == RTC::ERROR_STATE)
+            return true;
+    }
+    return false;
+}
+
+bool PeriodicExecutionContext::hasRequest() const
+{
+    return std::any_of(m_participants.begin(), m_participants.end(),
+                       [](const ParticipantPtr &p) { return p->request != Request::None; });
+}
+
+RTC::ReturnCode_t PeriodicExecutionContext::requestTransition(const ParticipantPtr &p, RTC::LifeCycleState from,
+                                                              Request request)
+{
+    std::unique_lock lock(m_mutex);
+    if (!m_running || inOwnThread()) {
+        lock.unlock();
+        return transitionNow(p, from, request);
+    }
+    if (p->state != from || p->request != Request::None)
+        return RTC::PRECONDITION_NOT_MET;
+    p->request = request;
+    startThread();
+    m_wake.notify_all();
+    // Wait a couple of periods at least, so slow rates still report the finished transition.
+    const double waitSeconds = std::max(m_transitionTimeout, 2.0 / m_rate);
+    m_transitioned.wait_for(lock, std::chrono::duration<double>(waitSeconds),
+                            [&] { return p->request == Request::None || !m_running; });
+    return RTC::RTC_OK;
+}
+
 void PeriodicExecutionContext::run()
 {
     using Clock = std::chrono::steady_clock;
     auto next = Clock::now();
     for (;;) {
-        for (const ParticipantPtr &p : snapshot())
-            process(p);
+        runCycle();
         std::unique_lock lock(m_mutex);
         if (!m_running)
             return;
@@ -352,15 +417,7 @@ void PeriodicExecutionContext::run()
         if (next < now)
             next = now; // overrun: do not try to catch up with a burst
         // A pending transition is served at once instead of waiting out the period.
-        m_wake.wait_until(lock, next, [&] {
-            if (!m_running)
-                return true;
-            for (const ParticipantPtr &p : m_participants) {
-                if (p->request != Request::None)
-                    return true;
-            }
-            return false;
-        });
+        m_wake.wait_until(lock, next, [&] { return !m_running || hasRequest(); });
         if (!m_running)
             return;
     }

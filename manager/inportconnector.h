@@ -4,7 +4,7 @@
 #include "properties.h"
 #include "ringbuffer.h"
 
-#include <DataPort.hh>
+#include <DataPort_OpenRTM.hh>
 
 #include <atomic>
 #include <functional>

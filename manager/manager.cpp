@@ -2,6 +2,7 @@
 #include "manager.h"
 
 #include "corbautil.h"
+#include "executioncontextfactory.h"
 #include "managerdetail.h"
 #include "managerservant.h"
 
@@ -445,9 +446,18 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
         fail(problem, error);
         return RTC::RTObject::_nil();
     }
-    const bool configured = readConfigFiles(&properties, instance, request.properties.value("config_file"), &problem);
+    bool configured = readConfigFiles(&properties, instance, request.properties.value("config_file"), &problem);
     properties.merge(request.properties);
     properties.set("instance_name", instance);
+    if (configured) {
+        // Refused before the component exists: its type of execution context must be one we make.
+        const std::string refusal =
+            ExecutionContextFactory::instance().check(ExecutionContextFactory::typeOf(properties));
+        if (!refusal.empty()) {
+            problem = "create_component: " + instance + ": " + refusal;
+            configured = false;
+        }
+    }
     if (configured && m_hooks.postConfigure)
         m_hooks.postConfigure(properties);
     auto component = std::make_unique<Component>();
@@ -480,8 +490,10 @@ RTC::RTObject_ptr Manager::initializeComponent(Component *record, const Properti
         m_hooks.postInitialize();
     if (result != RTC::RTC_OK) {
         const std::string instance = record->instanceName;
+        const std::string reason = record->servant->initializeError();
         forget(record->servant);
-        fail("create_component: " + instance + " failed to initialize", error);
+        fail("create_component: " + instance + " failed to initialize" + (reason.empty() ? "" : ": " + reason),
+             error);
         return RTC::RTObject::_nil();
     }
     record->servant->setExitHandler([this](RtObject *servant) { forget(servant); });
@@ -530,6 +542,55 @@ void Manager::forget(RtObject *servant)
     if (m_hooks.postNaming)
         m_hooks.postNaming(removed->servant, removed->names, false);
     releaseServant(m_poa, removed->servant);
+}
+
+bool Manager::adoptComponent(RtObject *servant, std::string *error)
+{
+    if (servant == nullptr)
+        return fail("register_component: no component", error);
+    const std::string instance = servant->instanceName();
+    if (instance.empty())
+        return fail("register_component: the component has no instance_name", error);
+    auto component = std::make_unique<Component>();
+    component->servant = servant;
+    component->instanceName = instance;
+    component->reference = servant->reference();
+    Component *record = component.get();
+    bool taken = false;
+    {
+        std::lock_guard lock(m_mutex);
+        taken = !m_instanceNames.insert(instance).second;
+    }
+    if (taken)
+        return fail("register_component: instance name '" + instance + "' is taken", error);
+    {
+        std::lock_guard lock(m_mutex);
+        // The creator's reference becomes the manager's: the object goes when it exits, as one
+        // the manager made.
+        m_components.push_back(std::move(component));
+    }
+    servant->setExitHandler([this](RtObject *s) { forget(s); });
+    registerNames(*record);
+    return true;
+}
+
+bool Manager::releaseComponent(RtObject *servant)
+{
+    std::unique_ptr<Component> removed;
+    {
+        std::lock_guard lock(m_mutex);
+        auto it = std::find_if(m_components.begin(), m_components.end(),
+                               [servant](const auto &c) { return c->servant == servant; });
+        if (it == m_components.end())
+            return false;
+        removed = std::move(*it);
+        m_components.erase(it);
+        m_instanceNames.erase(removed->instanceName);
+    }
+    servant->setExitHandler({});
+    for (const std::string &path : removed->names)
+        m_naming->unbind(path);
+    return true;
 }
 
 bool Manager::deleteComponent(const std::string &instanceName, std::string *error)

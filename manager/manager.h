@@ -70,6 +70,14 @@ public:
     static constexpr std::size_t maxKeptRefusals = 64;
     static constexpr std::size_t maxKeptRequestLength = 1024;
     bool deleteComponent(const std::string &instanceName, std::string *error);
+    /**
+     * Takes over @p servant, created and initialized by its program (OpenRTM's
+     * registerComponent): lists it under its instance name and binds its names. False with
+     * @p error when the name is empty or taken.
+     */
+    bool adoptComponent(RtObject *servant, std::string *error);
+    /// Unlists @p servant and unbinds its names, leaving the object to its owner (unregisterComponent).
+    bool releaseComponent(RtObject *servant);
     /// This process's components.
     RTC::RTCList components();
     /**

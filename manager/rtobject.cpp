@@ -3,9 +3,11 @@
 
 #include "corbautil.h"
 #include "executioncontext.h"
+#include "executioncontextfactory.h"
 #include "sdoconfiguration.h"
 
 #include <algorithm>
+#include <iostream>
 
 namespace Runtime {
 
@@ -172,37 +174,93 @@ RTC::ReturnCode_t RtObject::initialize()
         m_sdoConfig = new SdoConfiguration(m_config);
         PortableServer::ObjectId_var id = m_poa->activate_object(m_sdoConfig);
     }
+    // The owned context exists before onInitialize (which may ask for it) and refuses an unknown
+    // type before any user code runs.
+    if (!createOwnedContext())
+        return RTC::BAD_PARAMETER;
     // Through the ComponentAction operation, which subclasses may wrap (the SDK calls its action
     // listeners around it).
     const RTC::ReturnCode_t result = on_initialize();
-    if (result != RTC::RTC_OK)
+    if (result != RTC::RTC_OK) {
+        releaseOwnedContexts();
         return result;
+    }
     m_config.update();
-    startOwnedContext();
-    std::lock_guard lock(m_mutex);
-    m_created = false;
+    std::vector<ExecutionContext *> contexts;
+    {
+        std::lock_guard lock(m_mutex);
+        m_created = false;
+        contexts = m_ownedContexts;
+    }
+    for (ExecutionContext *context : contexts)
+        context->start();
     return RTC::RTC_OK;
 }
 
-void RtObject::startOwnedContext()
+RTC::ExecutionContextHandle_t RtObject::bindContext(ExecutionContext *context)
 {
-    double rate = 1000.0;
-    double timeout = 0.5;
-    try {
-        rate = std::stod(properties().value("exec_cxt.periodic.rate", "1000"));
-        timeout = std::stod(properties().value("exec_cxt.transition_timeout", "0.5"));
-    } catch (...) {
-        // An unreadable rate keeps OpenRTM's default of 1000 Hz.
-    }
-    auto *context = new PeriodicExecutionContext(rate, timeout);
-    PortableServer::ObjectId_var id = m_poa->activate_object(context);
-    RTC::RTObject_var self = reference();
-    context->addOwner(self, 0);
+    if (context == nullptr)
+        return -1;
     {
         std::lock_guard lock(m_mutex);
+        if (m_finalized)
+            return -1;
+    }
+    try {
+        PortableServer::ObjectId_var id = m_poa->activate_object(context);
+    } catch (const PortableServer::POA::ServantAlreadyActive &) {
+        // The caller asked for its reference already.
+    }
+    RTC::RTObject_var self = reference();
+    RTC::ExecutionContextHandle_t handle = 0;
+    {
+        std::lock_guard lock(m_mutex);
+        handle = RTC::ExecutionContextHandle_t(m_ownedContexts.size());
         m_ownedContexts.push_back(context);
     }
-    context->start();
+    context->addOwner(self, handle);
+    return handle;
+}
+
+bool RtObject::createOwnedContext()
+{
+    const Properties props = properties();
+    const std::string type = ExecutionContextFactory::typeOf(props);
+    std::string error;
+    ExecutionContext *context = ExecutionContextFactory::instance().create(type, props, &error);
+    if (context == nullptr) {
+        std::cerr << instanceName() << ": " << error << std::endl;
+        std::lock_guard lock(m_mutex);
+        m_initError = error;
+        return false;
+    }
+    bindContext(context);
+    return true;
+}
+
+void RtObject::releaseOwnedContexts()
+{
+    std::vector<ExecutionContext *> contexts;
+    {
+        std::lock_guard lock(m_mutex);
+        contexts.swap(m_ownedContexts);
+    }
+    for (ExecutionContext *context : contexts) {
+        context->halt(true);
+        releaseServant(m_poa, context);
+    }
+}
+
+std::string RtObject::initializeError()
+{
+    std::lock_guard lock(m_mutex);
+    return m_initError;
+}
+
+std::vector<ExecutionContext *> RtObject::ownedContexts()
+{
+    std::lock_guard lock(m_mutex);
+    return m_ownedContexts;
 }
 
 RTC::ReturnCode_t RtObject::finalize()
@@ -223,7 +281,7 @@ RTC::ReturnCode_t RtObject::finalize()
 
 void RtObject::releaseAll()
 {
-    std::vector<PeriodicExecutionContext *> contexts;
+    std::vector<ExecutionContext *> contexts;
     std::vector<PortBase *> ports;
     std::set<PortBase *> borrowed;
     {
@@ -235,14 +293,14 @@ void RtObject::releaseAll()
         ports.swap(m_ports);
         borrowed.swap(m_borrowedPorts);
     }
-    for (PeriodicExecutionContext *context : contexts)
+    for (ExecutionContext *context : contexts)
         context->halt(false);
     for (PortBase *port : ports) {
         port->disconnect_all();
         port->releaseInterfaces();
     }
     on_finalize();
-    for (PeriodicExecutionContext *context : contexts)
+    for (ExecutionContext *context : contexts)
         releaseServant(m_poa, context);
     for (PortBase *port : ports)
         releasePort(port, borrowed.count(port) > 0);

@@ -18,14 +18,15 @@
 
 namespace Runtime {
 
-class PeriodicExecutionContext;
+class ExecutionContext;
 class SdoConfiguration;
 
 /**
  * A data-flow RT-Component servant (OpenRTM::DataFlowComponent: RTObject, LightweightRTObject,
  * SDO, DataFlowComponentAction), the base class of every component the runtime hosts. Subclasses
  * add ports and bind configuration parameters in onInitialize() and do their work in onExecute().
- * initialize() creates and starts the owned periodic execution context at `exec_cxt.periodic.rate`.
+ * initialize() creates the owned execution context of type `exec_cxt.periodic.type` at
+ * `exec_cxt.periodic.rate` (see ExecutionContextFactory) and starts it.
  */
 class RtObject : public virtual POA_OpenRTM::DataFlowComponent
 {
@@ -45,6 +46,15 @@ public:
     void setStatus(const std::string &name, const std::string &value);
     std::string status(const std::string &name);
     ConfigAdmin &configuration() { return m_config; }
+    /// Why the last initialize() failed before onInitialize (an unknown context type); empty otherwise.
+    std::string initializeError();
+    /**
+     * Makes @p context one of the component's own (OpenRTM's bindContext): the component takes
+     * it over (it goes with the component) and answers with its handle, or -1 once finalized.
+     */
+    RTC::ExecutionContextHandle_t bindContext(ExecutionContext *context);
+    /// The contexts the component owns (its handle 0 first).
+    std::vector<ExecutionContext *> ownedContexts();
     /// Finalizes without exit handler — used by the manager on shutdown.
     void shutdownComponent();
 
@@ -131,7 +141,8 @@ protected:
     ServicePort *addServicePort(const std::string &name);
 
 private:
-    void startOwnedContext();
+    bool createOwnedContext();
+    void releaseOwnedContexts();
     void releaseAll();
     void releasePort(PortBase *port, bool borrowed);
     std::vector<PortBase *> portList();
@@ -143,7 +154,8 @@ private:
     SdoConfiguration *m_sdoConfig = nullptr;
     std::vector<PortBase *> m_ports;
     std::set<PortBase *> m_borrowedPorts;
-    std::vector<PeriodicExecutionContext *> m_ownedContexts;
+    std::vector<ExecutionContext *> m_ownedContexts;
+    std::string m_initError;
     std::map<RTC::ExecutionContextHandle_t, RTC::ExecutionContext_var> m_participating;
     RTC::ExecutionContextHandle_t m_nextParticipatingHandle = 1000;
     std::map<std::string, std::string> m_status;

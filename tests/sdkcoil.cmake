@@ -3,7 +3,7 @@
 
 # The public coil headers must compile as C++11 with GNU extensions, as in components generated
 # by OpenRTP 2.0 templates; building this object library is the check.
-add_library(sdkcoil_cxx11 OBJECT sdk/coil_cxx11.cpp)
+add_library(sdkcoil_cxx11 OBJECT sdk/coil_cxx11.cpp sdk/coil21_cxx11.cpp)
 target_include_directories(sdkcoil_cxx11 PRIVATE ${PROJECT_SOURCE_DIR}/sdk/include)
 set_target_properties(sdkcoil_cxx11 PROPERTIES
     CXX_STANDARD 11

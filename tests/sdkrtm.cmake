@@ -57,3 +57,23 @@ add_library(sdkrtm_cxx11 OBJECT sdk/rtm_cxx11.cpp)
 target_link_libraries(sdkrtm_cxx11 PRIVATE rtsdk)
 set_target_properties(sdkrtm_cxx11 PROPERTIES CXX_STANDARD 11 CXX_EXTENSIONS ON AUTOMOC OFF)
 add_dependencies(tst_sdkrtm sdkrtm_cxx11)
+
+# OpenRTM-aist's utility headers (NVUtil, CORBA_SeqUtil, CORBA_RTCUtil, CorbaNaming, …) against live
+# components in one process and a real omniNames.
+rtstudio_add_test(tst_sdkutil SOURCES tst_sdkutil.cpp LIBS rtsdk rtstudio_livetest)
+set_tests_properties(tst_sdkutil PROPERTIES LABELS sdk)
+
+# Execution contexts (ExtTrig, OpenHRP, Simulator) and the manager's internals, in this process and
+# in rtmanager.
+# OpenRTM-aist's ExtTrigger example is built against the staged SDK and run.
+rtstudio_add_test(tst_sdkec SOURCES tst_sdkec.cpp LIBS rtsdk rtstudio_livetest rtstudio_sdkproject)
+target_include_directories(tst_sdkec PRIVATE ${PROJECT_SOURCE_DIR}/manager)
+target_compile_definitions(tst_sdkec PRIVATE
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
+    MANAGER_TEST_MODULE="${CMAKE_CURRENT_BINARY_DIR}/managermodules/ManagerTestModule.so")
+add_dependencies(tst_sdkec rtmanager managertestmodule)
+if(TARGET rtsdk_stage)
+    add_dependencies(tst_sdkec rtsdk_stage)
+endif()
+set_tests_properties(tst_sdkec PROPERTIES LABELS sdk TIMEOUT 900)

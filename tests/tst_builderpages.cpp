@@ -584,6 +584,11 @@ void TestBuilderPages::typeListsComeFromIdl()
     QVERIFY(catalog.dataTypes().contains(QStringLiteral("RTC::TimedLong")));
     QVERIFY(catalog.dataTypes().contains(QStringLiteral("RTC::TimedPose2D")));
     QVERIFY(catalog.interfaceTypes().contains(QStringLiteral("SimpleService::MyService")));
+    // OpenRTM-aist's extension IDL, as OpenRTP offers it.
+    QVERIFY(catalog.dataTypes().contains(QStringLiteral("Img::TimedCameraImage")));
+    QVERIFY(catalog.dataTypes().contains(QStringLiteral("JARA_ARM::TimedJointPos")));
+    QVERIFY(catalog.interfaceTypes().contains(QStringLiteral("Img::CameraCaptureService")));
+    QVERIFY(catalog.interfaceTypes().contains(QStringLiteral("JARA_ARM::ManipulatorCommonInterface_Middle")));
     QVERIFY(catalog.fileOf(QStringLiteral("RTC::TimedLong"))
                 .endsWith(QStringLiteral("BasicDataType.idl")));
 
@@ -593,6 +598,7 @@ void TestBuilderPages::typeListsComeFromIdl()
     page->inPorts()->selectItem(0);
     auto *type = qobject_cast<QComboBox *>(page->form()->editor(QStringLiteral("type")));
     QVERIFY(type->findText(QStringLiteral("RTC::TimedPose2D")) >= 0);
+    QVERIFY(type->findText(QStringLiteral("Img::TimedCameraImage")) >= 0);
     QCOMPARE(type->currentText(), QStringLiteral("RTC::TimedLong"));
     QCOMPARE(type->completer()->filterMode(), Qt::MatchContains);
 }

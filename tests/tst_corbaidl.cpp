@@ -4,15 +4,23 @@
 // signatures (parameter modes) that OpenRTM-aist 2.x peers rely on.
 
 #include <BasicDataType.hh>
+#include <CameraCommonInterface.hh>
 #include <ComponentObserver.hh>
 #include <DataPort.hh>
+#include <DataPortUDP.hh>
+#include <DataPort_OpenRTM.hh>
+#include <ExtendedFsmService.hh>
 #include <ExtendedDataTypes.hh>
 #include <InterfaceDataTypes.hh>
 #include <Manager.hh>
+#include <ManipulatorCommonInterface_Common.hh>
+#include <ManipulatorCommonInterface_DataTypes.hh>
+#include <ManipulatorCommonInterface_Middle.hh>
 #include <OpenRTM.hh>
 #include <RTC.hh>
 #include <RTStudioManager.hh>
 #include <SDOPackage.hh>
+#include <SharedMemory.hh>
 #include <SimpleService.hh>
 
 #include <QDir>
@@ -306,6 +314,16 @@ void TestCorbaIdl::interfaceRepositoryIds_data()
     row("IDL:rtstudio/RTStudio/Manager:1.0", RTStudio::Manager::_PD_repoId);
     row("IDL:omg.org/RTC/ComponentObserver:1.0", RTC::ComponentObserver::_PD_repoId);
     row("IDL:SimpleService/MyService:1.0", SimpleService::MyService::_PD_repoId);
+    row("IDL:omg.org/RTC/DataPushService:1.0", RTC::DataPushService::_PD_repoId);
+    row("IDL:omg.org/RTC/DataPullService:1.0", RTC::DataPullService::_PD_repoId);
+    row("IDL:OpenRTM/PortSharedMemory:1.0", OpenRTM::PortSharedMemory::_PD_repoId);
+    row("IDL:openrtm.aist.go.jp/OpenRTM/InPortCdrUDP:1.0", OpenRTM::InPortCdrUDP::_PD_repoId);
+    row("IDL:omg.org/RTC/ExtendedFsmService:1.0", RTC::ExtendedFsmService::_PD_repoId);
+    row("IDL:Img/CameraCaptureService:1.0", Img::CameraCaptureService::_PD_repoId);
+    row("IDL:JARA_ARM/ManipulatorCommonInterface_Common:1.0",
+        JARA_ARM::ManipulatorCommonInterface_Common::_PD_repoId);
+    row("IDL:JARA_ARM/ManipulatorCommonInterface_Middle:1.0",
+        JARA_ARM::ManipulatorCommonInterface_Middle::_PD_repoId);
 }
 
 void TestCorbaIdl::interfaceRepositoryIds()
@@ -350,6 +368,18 @@ void TestCorbaIdl::typeRepositoryIds_data()
     row("IDL:OpenRTM/PortStatus:1.0", OpenRTM::_tc_PortStatus);
     row("IDL:OpenRTM/CdrData:1.0", OpenRTM::_tc_CdrData);
     row("IDL:RTM/ModuleProfile:1.0", RTM::_tc_ModuleProfile);
+    row("IDL:omg.org/RTC/PortStatus:1.0", RTC::_tc_PortStatus);
+    row("IDL:omg.org/RTC/OctetSeq:1.0", RTC::_tc_OctetSeq);
+    row("IDL:omg.org/RTC/FsmEventProfile:1.0", RTC::_tc_FsmEventProfile);
+    row("IDL:omg.org/RTC/FsmStructure:1.0", RTC::_tc_FsmStructure);
+    row("IDL:Img/ColorFormat:1.0", Img::_tc_ColorFormat);
+    row("IDL:Img/TimedCameraImage:1.0", Img::_tc_TimedCameraImage);
+    row("IDL:Img/TimedMultiCameraImage:1.0", Img::_tc_TimedMultiCameraImage);
+    row("IDL:Img/CameraDeviceProfile:1.0", Img::_tc_CameraDeviceProfile);
+    row("IDL:JARA_ARM/TimedJointPos:1.0", JARA_ARM::_tc_TimedJointPos);
+    row("IDL:JARA_ARM/RETURN_ID:1.0", JARA_ARM::_tc_RETURN_ID);
+    row("IDL:JARA_ARM/ManipInfo:1.0", JARA_ARM::_tc_ManipInfo);
+    row("IDL:JARA_ARM/CarPosWithElbow:1.0", JARA_ARM::_tc_CarPosWithElbow);
     row("IDL:RTM/ManagerProfile:1.0", RTM::_tc_ManagerProfile);
     row("IDL:RTM/ManagerList:1.0", RTM::_tc_ManagerList);
     row("IDL:RTC/Time:1.0", RTC::_tc_Time);
@@ -707,15 +737,23 @@ void TestCorbaIdl::idlFolderHoldsEveryFile()
 {
     const QDir dir(QStringLiteral(RTSTUDIO_IDL_DIR));
     const QStringList expected {"BasicDataType.idl",
+                                "CameraCommonInterface.idl",
                                 "ComponentObserver.idl",
                                 "DataPort.idl",
+                                "DataPortUDP.idl",
+                                "DataPort_OpenRTM.idl",
                                 "ExtendedDataTypes.idl",
+                                "ExtendedFsmService.idl",
                                 "InterfaceDataTypes.idl",
                                 "Manager.idl",
+                                "ManipulatorCommonInterface_Common.idl",
+                                "ManipulatorCommonInterface_DataTypes.idl",
+                                "ManipulatorCommonInterface_Middle.idl",
                                 "OpenRTM.idl",
                                 "RTC.idl",
                                 "RTStudioManager.idl",
                                 "SDOPackage.idl",
+                                "SharedMemory.idl",
                                 "SimpleService.idl"};
     QStringList actual = dir.entryList({"*.idl"}, QDir::Files, QDir::Name);
     QCOMPARE(actual, expected);

@@ -19,6 +19,7 @@ private slots:
     void usageErrors();
     void failedResurrectRollsBack();
     void cryoReportsTwoComponentsOfOneName();
+    void startRunsWaitsSideBySide();
 
 private:
     using Result = RtctlResult;
@@ -173,6 +174,48 @@ void TestDeployRtctl::cryoReportsTwoComponentsOfOneName()
     // The same component reached twice is no clash.
     QCOMPARE(rtctl({"cryo", "-o", file, first, first}).code, 0);
     QCOMPARE(rtctl({"mgr", manager(), "delete", "Twin0"}).code, 0);
+}
+
+// rtctl start/stop execute the plan as rtshell does: the component no target names first, then the
+// targets as their waits (counted from the plan's start) run out: Fast0 (200 ms) before Slow0
+// (600 ms) though it comes later in the sequence. A SYNC timeout cancels the plan and says why.
+void TestDeployRtctl::startRunsWaitsSideBySide()
+{
+    const QString file = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/waits.xml");
+    const Result created = rtctl({"resurrect", "--create", "-m", manager(), file});
+    QVERIFY2(created.code == 0, qPrintable(created.out + created.err));
+    const auto activations = [](const Result &result, const QString &action) {
+        QStringList lines;
+        for (const QString &line : result.lines()) {
+            if (line.startsWith("done " + action + ' '))
+                lines.append(line);
+        }
+        return lines;
+    };
+    const Result started = rtctl({"start", file});
+    QVERIFY2(started.code == 0, qPrintable(started.out + started.err));
+    QCOMPARE(
+        activations(started, "activate"),
+        QStringList({"done activate Free0.0", "done activate Fast0.0", "done activate Slow0.0"}));
+    QVERIFY2(started.lines().contains("done wait Slow0: 600 ms from the start"),
+             qPrintable(started.out));
+    const Result stopped = rtctl({"stop", file});
+    QVERIFY2(stopped.code == 0, qPrintable(stopped.out + stopped.err));
+    QCOMPARE(activations(stopped, "deactivate"),
+             QStringList({"done deactivate Free0.0", "done deactivate Slow0.0",
+                          "done deactivate Fast0.0"}));
+
+    const QString timeout = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/synctimeout.xml");
+    QCOMPARE(rtctl({"resurrect", "--create", "-m", manager(), timeout}).code, 0);
+    const Result cancelled = rtctl({"start", timeout});
+    QCOMPARE(cancelled.code, 1);
+    QVERIFY2(cancelled.err.contains("rtctl start: wait Mid0: Src0 did not activate within 200 ms"),
+             qPrintable(cancelled.err));
+    QCOMPARE(activations(cancelled, "activate"), QStringList({"done activate Sink0.0"}));
+    QVERIFY2(cancelled.lines().contains("failed wait Src0: cancelled"), qPrintable(cancelled.out));
+
+    for (const char *name : {"Slow0", "Fast0", "Free0", "Src0", "Mid0", "Sink0"})
+        QCOMPARE(rtctl({"mgr", manager(), "delete", name}).code, 0);
 }
 
 QTEST_GUILESS_MAIN(TestDeployRtctl)

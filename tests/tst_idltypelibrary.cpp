@@ -3,6 +3,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -50,6 +51,8 @@ private slots:
     void reloadsChangedFolders();
     void keepsGoingPastBrokenFiles();
     void readsEachFileNameOnceAcrossFolders();
+    void bundledSetOffersOpenRtpTypes_data();
+    void bundledSetOffersOpenRtpTypes();
 };
 
 void TestIdlTypeLibrary::listsDataTypesAndInterfacesSorted()
@@ -128,6 +131,55 @@ void TestIdlTypeLibrary::readsEachFileNameOnceAcrossFolders()
     QVERIFY(dataTypeNames(library, true).contains(QStringLiteral("Sensor::TimedRange")));
     QVERIFY(library.fileOf(QStringLiteral("RTC::TimedLong")).startsWith(standard));
     QCOMPARE(library.model().files.size(), 2);
+}
+
+void TestIdlTypeLibrary::bundledSetOffersOpenRtpTypes_data()
+{
+    QTest::addColumn<QString>("type");
+    QTest::addColumn<bool>("dataType");
+    QTest::addColumn<bool>("timed");
+    QTest::addColumn<QString>("file");
+    // What OpenRTP offers from OpenRTM-aist's IDL folder, the extensions included.
+    const auto data = [](const char *type, bool timed, const char *file) {
+        QTest::newRow(type) << QString::fromLatin1(type) << true << timed << QString::fromLatin1(file);
+    };
+    const auto service = [](const char *type, const char *file) {
+        QTest::newRow(type) << QString::fromLatin1(type) << false << false << QString::fromLatin1(file);
+    };
+    data("RTC::TimedLong", true, "BasicDataType.idl");
+    data("RTC::TimedPose3D", true, "ExtendedDataTypes.idl");
+    data("RTC::RangeData", true, "InterfaceDataTypes.idl");
+    data("Img::TimedCameraImage", true, "CameraCommonInterface.idl");
+    data("Img::TimedMultiCameraImage", true, "CameraCommonInterface.idl");
+    data("Img::CameraDeviceProfile", false, "CameraCommonInterface.idl");
+    data("JARA_ARM::TimedJointPos", true, "ManipulatorCommonInterface_DataTypes.idl");
+    data("JARA_ARM::ManipInfo", false, "ManipulatorCommonInterface_Common.idl");
+    data("JARA_ARM::CarPosWithElbow", false, "ManipulatorCommonInterface_Middle.idl");
+    data("RTC::FsmStructure", false, "ExtendedFsmService.idl");
+    service("Img::CameraCaptureService", "CameraCommonInterface.idl");
+    service("JARA_ARM::ManipulatorCommonInterface_Common", "ManipulatorCommonInterface_Common.idl");
+    service("JARA_ARM::ManipulatorCommonInterface_Middle", "ManipulatorCommonInterface_Middle.idl");
+    service("RTC::ExtendedFsmService", "ExtendedFsmService.idl");
+    service("RTC::DataPushService", "DataPort.idl");
+    service("OpenRTM::InPortCdr", "DataPort_OpenRTM.idl");
+    service("OpenRTM::PortSharedMemory", "SharedMemory.idl");
+}
+
+// The Builder's catalogue is this library over the IDL folder the application bundles.
+void TestIdlTypeLibrary::bundledSetOffersOpenRtpTypes()
+{
+    QFETCH(QString, type);
+    QFETCH(bool, dataType);
+    QFETCH(bool, timed);
+    QFETCH(QString, file);
+    const IdlTypeLibrary library({QStringLiteral(RTSTUDIO_IDL_DIR)});
+    // SDOPackage.idl's #include <orb.idl> (omniORB's folder) is the one thing the folder lacks.
+    for (const Profile::Diagnostic &diagnostic : library.diagnostics())
+        QVERIFY2(diagnostic.toString().contains(QLatin1String("orb.idl")), qPrintable(diagnostic.toString()));
+    QCOMPARE(dataTypeNames(library).contains(type), dataType);
+    QCOMPARE(dataTypeNames(library, true).contains(type), timed);
+    QCOMPARE(interfaceNames(library).contains(type), !dataType);
+    QCOMPARE(QFileInfo(library.fileOf(type)).fileName(), file);
 }
 
 QTEST_GUILESS_MAIN(TestIdlTypeLibrary)

@@ -52,6 +52,8 @@ private slots:
     void stateColoursKeepTextReadable();
     void activateTurnsTheComponentGreen();
     void actionOnAllShowsProgressAndCancels();
+    void startAndStopAllWithoutASystemActOnEachContext();
+    void closingTheTabEndsARunningPlan();
     void drawsLiveConnectors();
     void portRefreshScalesWithSize();
     void keepsTheDiagramInViewUntilTheUserNavigates();
@@ -263,6 +265,100 @@ void TestOnlineDiagram::actionOnAllShowsProgressAndCancels()
     diagram.performAll(OnlineDiagram::Action::Deactivate);
     QVERIFY(finished.wait(10000));
     QTRY_COMPARE_WITH_TIMEOUT(component("ConsoleIn0").state(), LifeCycleState::Inactive, 10000);
+}
+
+// A diagram that shows no saved system has no plan: Stop All and Start All stop and start every
+// component's context, one call each.
+void TestOnlineDiagram::startAndStopAllWithoutASystemActOnEachContext()
+{
+    OnlineSession session;
+    OnlineDiagram diagram(&session);
+    dropOnto(diagram, {"ConsoleIn0", "ConsoleOut0"});
+    QVERIFY(!diagram.hasSystemPlan());
+    const QStringList names {"ConsoleIn0", "ConsoleOut0"};
+    const auto running = [&](const QString &name) {
+        const auto contexts = component(name).executionContexts();
+        return !contexts.empty() && contexts.front().running;
+    };
+    // The other tests expect the contexts running, whatever happens here.
+    const auto restart = qScopeGuard([&] {
+        for (const QString &name : names) {
+            try {
+                if (!running(name))
+                    component(name).startContext();
+            } catch (const Corba::Error &) {
+            }
+        }
+    });
+    for (const QString &name : names)
+        QVERIFY(running(name));
+    QSignalSpy finished(&diagram, &OnlineDiagram::allFinished);
+    diagram.performAll(OnlineDiagram::Action::Stop);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(0).at(0).toString(), QString("Stopping: 2 of 2 component(s) done"));
+    for (const QString &name : names)
+        QVERIFY(!running(name));
+    diagram.performAll(OnlineDiagram::Action::Start);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(1).at(0).toString(), QString("Starting: 2 of 2 component(s) done"));
+    for (const QString &name : names)
+        QVERIFY(running(name));
+}
+
+// A diagram given a saved system runs its plan on Start All; closed while the plan waits (here a
+// minute for ConsoleOut0), it cancels the plan, so the deployment worker is free again at once.
+void TestOnlineDiagram::closingTheTabEndsARunningPlan()
+{
+    Profile::RtsProfile profile;
+    profile.id = QStringLiteral("RTSystem:test:patient:1.0");
+    for (const char *type : {"ConsoleIn", "ConsoleOut"}) {
+        Profile::RtsComponent c;
+        c.id = QStringLiteral("RTC:AIST:example:%1:1.0").arg(type);
+        c.instanceName = QLatin1String(type) + QLatin1Char('0');
+        profile.components.append(c);
+    }
+    Profile::RtsCondition slow;
+    slow.sequence = QStringLiteral("0");
+    slow.targetComponent.componentId = profile.components[1].id;
+    slow.targetComponent.instanceName = QStringLiteral("ConsoleOut0");
+    slow.targetComponent.id = QStringLiteral("0");
+    slow.waitTime = Profile::RtsWaitTime {};
+    slow.waitTime->waitTime = QStringLiteral("60000");
+    profile.activation = Profile::RtsMessageSequence {};
+    profile.activation->targets.append(slow);
+    Deploy::TargetOptions options;
+    options.nameServers = {m_live.namingServer()};
+    const auto deactivate = qScopeGuard([this] {
+        try {
+            if (component("ConsoleIn0").state() == LifeCycleState::Active)
+                component("ConsoleIn0").deactivate(0);
+        } catch (const Corba::Error &) {
+        }
+    });
+
+    OnlineSession session;
+    auto diagram = std::make_unique<OnlineDiagram>(&session);
+    dropOnto(*diagram, {"ConsoleIn0", "ConsoleOut0"});
+    diagram->setSystem(profile, options);
+    QVERIFY(diagram->hasSystemPlan());
+    QStringList steps;
+    connect(diagram.get(), &OnlineDiagram::planStep, this,
+            [&](const Deploy::DeployStep &step) { steps.append(step.toString()); });
+    diagram->performAll(OnlineDiagram::Action::Start);
+    QTRY_VERIFY2_WITH_TIMEOUT(steps.contains("done activate ConsoleIn0.0")
+                                  && steps.contains("running wait ConsoleOut0"),
+                              qPrintable(steps.join('\n')), 10000);
+    diagram.reset();
+    QElapsedTimer clock;
+    clock.start();
+    bool answered = false;
+    QObject context;
+    session.submit(
+        OnlineSession::deploymentHost(), [] { return QVariant(); }, &context,
+        [&](const OnlineResult &) { answered = true; });
+    QTRY_VERIFY_WITH_TIMEOUT(answered, 10000);
+    QVERIFY2(clock.elapsed() < 5000, qPrintable(QString::number(clock.elapsed())));
+    QCOMPARE(component("ConsoleOut0").state(), LifeCycleState::Inactive);
 }
 
 void TestOnlineDiagram::drawsLiveConnectors()

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "componentitem.h"
+#include "componentproxy.h"
 #include "configurationview.h"
 #include "connectoritem.h"
 #include "documentcontroller.h"
@@ -10,6 +11,7 @@
 #include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
+#include "namingbrowser.h"
 #include "onlinediagram.h"
 #include "onlinedocks.h"
 #include "onlinedocument.h"
@@ -22,13 +24,19 @@
 #include "rtsdocument.h"
 #include "systemmodel.h"
 #include "systemscene.h"
+#include "tst_deploysupport.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QDragEnterEvent>
+#include <QElapsedTimer>
 #include <QGraphicsView>
+#include <QLabel>
 #include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QTemporaryDir>
+#include <QToolBar>
 
 #include <QSettings>
 #include <QSignalSpy>
@@ -58,6 +66,94 @@ bool showsWhole(const SystemEditor::OnlineDiagram *diagram, const QString &insta
     return item && visibleSceneRect(diagram).contains(item->sceneBoundingRect());
 }
 
+// Clicks the toolbar button of the online tab's action `name` (e.g. Start All), as a user does.
+void clickToolButton(SystemEditor::OnlineDiagram *diagram, const char *name)
+{
+    auto *action = diagram->findChild<QAction *>(QLatin1String(name));
+    auto *toolbar = diagram->findChild<QToolBar *>();
+    QVERIFY(action && toolbar);
+    QWidget *button = toolbar->widgetForAction(action);
+    QVERIFY(button && button->isVisible());
+    QTest::mouseClick(button, Qt::LeftButton);
+}
+
+/**
+ * The steps of a start / stop plan as an online tab reports them, from a click on its toolbar
+ * on: each with the engine's time since the plan's start and the time the test saw it since the
+ * click.
+ */
+class PlanRun
+{
+public:
+    void click(SystemEditor::OnlineDiagram *diagram, const char *name)
+    {
+        QObject::connect(diagram, &SystemEditor::OnlineDiagram::planStep, &m_context,
+                         [this](const Deploy::DeployStep &step) {
+                             m_steps.append(step);
+                             m_seenMs.append(m_clock.elapsed());
+                         });
+        m_clock.start();
+        clickToolButton(diagram, name);
+    }
+
+    /// The subjects of the `action` steps done, in the order the tab reported them.
+    QStringList done(const QString &action) const
+    {
+        QStringList subjects;
+        for (const Deploy::DeployStep &step : m_steps) {
+            if (step.action == action && step.status == Deploy::StepStatus::Done)
+                subjects.append(step.subject);
+        }
+        return subjects;
+    }
+    /// The engine's time (since the plan's start) of the step `action subject` that ended.
+    qint64 elapsed(const QString &action, const QString &subject) const
+    {
+        const qsizetype i = ended(action, subject);
+        return i < 0 ? -1 : m_steps.at(i).elapsedMs;
+    }
+    /// When the test saw that step, since the click.
+    qint64 seen(const QString &action, const QString &subject) const
+    {
+        const qsizetype i = ended(action, subject);
+        return i < 0 ? -1 : m_seenMs.at(i);
+    }
+    /// The message of that step.
+    QString message(const QString &action, const QString &subject) const
+    {
+        const qsizetype i = ended(action, subject);
+        return i < 0 ? QString() : m_steps.at(i).message;
+    }
+    /// Every step with both times, for failure messages.
+    QString text() const
+    {
+        QString text;
+        for (qsizetype i = 0; i < m_steps.size(); ++i)
+            text += QStringLiteral("%1 (engine %2 ms, seen %3 ms)\n")
+                        .arg(m_steps.at(i).toString())
+                        .arg(m_steps.at(i).elapsedMs)
+                        .arg(m_seenMs.at(i));
+        return text;
+    }
+
+private:
+    qsizetype ended(const QString &action, const QString &subject) const
+    {
+        for (qsizetype i = 0; i < m_steps.size(); ++i) {
+            const Deploy::DeployStep &step = m_steps.at(i);
+            if (step.action == action && step.subject == subject
+                && step.status != Deploy::StepStatus::Running)
+                return i;
+        }
+        return -1;
+    }
+
+    QObject m_context;
+    QElapsedTimer m_clock;
+    QList<Deploy::DeployStep> m_steps;
+    QList<qint64> m_seenMs;
+};
+
 } // namespace
 
 // The online views as docks of the main window, driven against a real rtmanager.
@@ -72,9 +168,13 @@ private slots:
     void choosingAComponentShowsItsConfigurationAndContexts();
     void restoresASystemThroughTheOnlineMenu();
     void dragOntoTheTabActivateAndSaveTheLiveSystem();
+    void startAndStopAllRunTheSystemPlan();
+    void startAllShowsASyncTimeout();
 
 private:
-    void showWithServer(MainWindow &window, QSize size);
+    void showWithServer(MainWindow &window, QSize size, const QString &server = {});
+    void openPlanSystem(MainWindow &window, LiveTest::LiveSystem &live, const QString &fixture,
+                        SystemEditor::OnlineDiagram **diagram);
 
     LiveTest::LiveSystem m_live;
 };
@@ -113,14 +213,14 @@ void TestOnlineDocks::init()
 }
 
 // Shows `window` at `size` in the System Editor, its name-service view listing the test's server.
-void TestOnlineDocks::showWithServer(MainWindow &window, QSize size)
+void TestOnlineDocks::showWithServer(MainWindow &window, QSize size, const QString &server)
 {
     window.resize(size);
     window.show();
     window.showPerspective(Perspective::Id::SystemEditor);
     SystemEditor::NameServiceView *view = window.onlineDocks()->nameService();
     QSignalSpy refreshed(view, &SystemEditor::NameServiceView::serverRefreshed);
-    QVERIFY(view->addServer(m_live.namingServer()));
+    QVERIFY(view->addServer(server.isEmpty() ? m_live.namingServer() : server));
     QVERIFY(refreshed.wait(15000));
 }
 
@@ -353,6 +453,167 @@ void TestOnlineDocks::dragOntoTheTabActivateAndSaveTheLiveSystem()
     QTRY_COMPARE_WITH_TIMEOUT(again->diagram()->model()->connectorIds().size(), 1, 10000);
     diagram->disconnectLive(diagram->model()->connectorIds().first());
     QTRY_COMPARE_WITH_TIMEOUT(diagram->model()->connectorIds().size(), 0, 10000);
+}
+
+// A fresh name server and manager running the components of the deployment fixture `fixture`
+// (created inactive), the fixture opened in `window` and shown online (Online → Open System
+// Online): `diagram` is the tab, once all its components are on it.
+void TestOnlineDocks::openPlanSystem(MainWindow &window, LiveTest::LiveSystem &live,
+                                     const QString &fixture, SystemEditor::OnlineDiagram **diagram)
+{
+    QString error;
+    quint16 managerPort = 0;
+    QVERIFY2(DeployTest::startManager(live, "planhost.host_cxt/%n.rtc", "planhost.host_cxt/%n.mgr",
+                                      &managerPort, &error),
+             qPrintable(error));
+    const QString file = DeployTest::dataFile(fixture);
+    const Profile::RtsProfile profile = DeployTest::loadSystem(file);
+    Deploy::TargetOptions target;
+    target.nameServers = {live.namingServer()};
+    target.manager = QStringLiteral("corbaloc::127.0.0.1:%1").arg(managerPort);
+    target.create = true;
+    const Deploy::DeployReport restored
+        = Deploy::restoreSystem(profile, Deploy::planRestore(profile, target), target);
+    QVERIFY2(restored.ok, qPrintable(restored.toText()));
+    showWithServer(window, {1300, 850}, live.namingServer());
+    if (QTest::currentTestFailed())
+        return;
+    QVERIFY(window.openFiles({file}));
+    window.findChild<QAction *>("actionOpenOnline")->trigger();
+    auto *online = qobject_cast<OnlineDocument *>(window.activeDocument());
+    QVERIFY(online && online->diagram());
+    QTRY_COMPARE_WITH_TIMEOUT(online->diagram()->model()->componentIds().size(),
+                              profile.components.size(), 15000);
+    *diagram = online->diagram();
+}
+
+// waits.xml opened online: Free0 is named by no target, Fast0 waits 200 ms and Slow0 600 ms. The
+// tab's Start All runs the file's Activation block (not the contexts one by one), Stop All its
+// Deactivation block, and Cancel ends the waits.
+void TestOnlineDocks::startAndStopAllRunTheSystemPlan()
+{
+    LiveTest::LiveSystem live;
+    MainWindow window;
+    SystemEditor::OnlineDiagram *diagram = nullptr;
+    openPlanSystem(window, live, "waits.xml", &diagram);
+    if (QTest::currentTestFailed())
+        return;
+    QVERIFY(diagram->hasSystemPlan());
+    const auto state = [&](const QString &instance) {
+        const auto path = Corba::RtPath::parse(
+            QStringLiteral("/%1/planhost.host_cxt/%2.rtc").arg(live.namingServer(), instance));
+        return Corba::ComponentProxy(Corba::NamingBrowser::resolve(*path), path->toString()).state();
+    };
+    const QStringList components {"Free0", "Fast0", "Slow0"};
+    for (const QString &name : components)
+        QCOMPARE(state(name), Corba::LifeCycleState::Inactive);
+    auto *bar = diagram->findChild<QProgressBar *>("batchProgress");
+    auto *cancel = diagram->findChild<QPushButton *>("batchCancel");
+    auto *status = diagram->findChild<QLabel *>("statusLabel");
+    QVERIFY(bar && cancel && status);
+    QSignalSpy finished(diagram, &SystemEditor::OnlineDiagram::allFinished);
+
+    PlanRun start;
+    start.click(diagram, "actionStartAll");
+    // While it runs: a busy bar, Cancel, and the components the plan waits for.
+    QVERIFY(!bar->isHidden() && !cancel->isHidden());
+    QTRY_VERIFY_WITH_TIMEOUT(status->text().contains("waiting: "), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 15000);
+    QVERIFY(bar->isHidden() && cancel->isHidden());
+    QCOMPARE(finished.at(0).at(0).toString(), QStringLiteral("Starting the system: 3 action(s) done"));
+    QCOMPARE(status->text(), QStringLiteral("Starting the system: 3 action(s) done."));
+    // Free0, which waits for nothing, first; each delayed action once its wait is over, counted
+    // from the plan's start (the engine's clock) and so after the click (the test's clock); the
+    // two waits side by side (one after the other they would end after 800 ms).
+    const QString times = start.text();
+    QCOMPARE(start.done("activate"), QStringList({"Free0.0", "Fast0.0", "Slow0.0"}));
+    QVERIFY2(start.elapsed("activate", "Free0.0") < 200, qPrintable(times));
+    QVERIFY2(start.elapsed("activate", "Fast0.0") >= 200, qPrintable(times));
+    QVERIFY2(start.elapsed("activate", "Fast0.0") < 600, qPrintable(times));
+    QVERIFY2(start.elapsed("activate", "Slow0.0") >= 600, qPrintable(times));
+    QVERIFY2(start.elapsed("activate", "Slow0.0") < 600 + 190, qPrintable(times));
+    QVERIFY2(start.seen("activate", "Fast0.0") >= 200, qPrintable(times));
+    QVERIFY2(start.seen("activate", "Slow0.0") >= 600, qPrintable(times));
+    QCOMPARE(start.message("wait", "Slow0"), QStringLiteral("600 ms from the start"));
+    const QColor active = SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active);
+    for (const QString &name : components) {
+        QCOMPARE(state(name), Corba::LifeCycleState::Active);
+        QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor(name), active, 10000);
+    }
+
+    // Stop All: Free0 at once, Slow0 after 100 ms, Fast0 after 400 ms.
+    PlanRun stop;
+    stop.click(diagram, "actionStopAll");
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 15000);
+    QCOMPARE(finished.at(1).at(0).toString(), QStringLiteral("Stopping the system: 3 action(s) done"));
+    const QString stopTimes = stop.text();
+    QCOMPARE(stop.done("deactivate"), QStringList({"Free0.0", "Slow0.0", "Fast0.0"}));
+    QVERIFY2(stop.elapsed("deactivate", "Slow0.0") >= 100, qPrintable(stopTimes));
+    QVERIFY2(stop.elapsed("deactivate", "Fast0.0") >= 400, qPrintable(stopTimes));
+    QVERIFY2(stop.seen("deactivate", "Fast0.0") >= 400, qPrintable(stopTimes));
+    const QColor inactive = SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Inactive);
+    for (const QString &name : components) {
+        QCOMPARE(state(name), Corba::LifeCycleState::Inactive);
+        QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor(name), inactive, 10000);
+    }
+
+    // The same system with Slow0 waiting a minute: Cancel ends its wait, nothing more is sent.
+    Profile::RtsProfile patient = DeployTest::loadSystem(DeployTest::dataFile("waits.xml"));
+    QVERIFY(patient.activation && patient.activation->targets.size() == 2);
+    patient.activation->targets[0].waitTime->waitTime = QStringLiteral("60000");
+    OnlineDocument *again = window.onlineDocks()->openOnline(patient);
+    QVERIFY(again && again->diagram());
+    SystemEditor::OnlineDiagram *waiting = again->diagram();
+    QTRY_COMPARE_WITH_TIMEOUT(waiting->model()->componentIds().size(), 3, 15000);
+    QSignalSpy cancelled(waiting, &SystemEditor::OnlineDiagram::allFinished);
+    PlanRun interrupted;
+    interrupted.click(waiting, "actionStartAll");
+    auto *waitingStatus = waiting->findChild<QLabel *>("statusLabel");
+    QTRY_VERIFY_WITH_TIMEOUT(interrupted.done("activate").size() == 2
+                                 && waitingStatus->text().contains("waiting: Slow0"),
+                             10000);
+    QElapsedTimer clock;
+    clock.start();
+    QTest::mouseClick(waiting->findChild<QPushButton *>("batchCancel"), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(cancelled.size(), 1, 10000);
+    QVERIFY2(clock.elapsed() < 5000, qPrintable(interrupted.text()));
+    QCOMPARE(cancelled.at(0).at(0).toString(),
+             QStringLiteral("Starting the system: cancelled after 2 action(s)"));
+    QCOMPARE(interrupted.message("wait", "Slow0"), QStringLiteral("cancelled"));
+    QCOMPARE(state("Slow0"), Corba::LifeCycleState::Inactive);
+    QCOMPARE(state("Free0"), Corba::LifeCycleState::Active);
+}
+
+// synctimeout.xml: Mid0 waits (SYNC, 200 ms) for Src0, which the plan only activates after 1.5 s.
+// Start All ends with the engine's message on the tab, no dialog; Sink0 was activated at once.
+void TestOnlineDocks::startAllShowsASyncTimeout()
+{
+    LiveTest::LiveSystem live;
+    MainWindow window;
+    SystemEditor::OnlineDiagram *diagram = nullptr;
+    openPlanSystem(window, live, "synctimeout.xml", &diagram);
+    if (QTest::currentTestFailed())
+        return;
+    QSignalSpy finished(diagram, &SystemEditor::OnlineDiagram::allFinished);
+    PlanRun start;
+    start.click(diagram, "actionStartAll");
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 15000);
+    const QString expected = QStringLiteral(
+        "Starting the system failed: wait Mid0: Src0 did not activate within 200 ms of the start");
+    QCOMPARE(finished.at(0).at(0).toString(), expected);
+    auto *status = diagram->findChild<QLabel *>("statusLabel");
+    QVERIFY(status && status->isVisible());
+    QCOMPARE(status->text(), expected + '.');
+    // Src0's wait of 1.5 s was cancelled with the plan.
+    QCOMPARE(start.done("activate"), QStringList({"Sink0.0"}));
+    QCOMPARE(start.message("wait", "Src0"), QStringLiteral("cancelled"));
+    QVERIFY2(start.elapsed("wait", "Src0") < 1500, qPrintable(start.text()));
+    QTRY_COMPARE_WITH_TIMEOUT(diagram->bodyColor("Sink0"),
+                              SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active),
+                              10000);
+    const QColor inactive = SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Inactive);
+    QCOMPARE(diagram->bodyColor("Mid0"), inactive);
+    QCOMPARE(diagram->bodyColor("Src0"), inactive);
 }
 
 QTEST_MAIN(TestOnlineDocks)

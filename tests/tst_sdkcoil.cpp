@@ -1,27 +1,34 @@
 // SPDX-License-Identifier: MIT
 // coil, the utility library of the component SDK: the OpenRTM-aist behaviour components rely on.
+#include <coil/Affinity.h>
 #include <coil/Async.h>
 #include <coil/ClockManager.h>
 #include <coil/Condition.h>
 #include <coil/DynamicLib.h>
+#include <coil/Factory.h>
 #include <coil/File.h>
 #include <coil/Guard.h>
+#include <coil/Logger.h>
 #include <coil/Mutex.h>
 #include <coil/NonCopyable.h>
 #include <coil/OS.h>
 #include <coil/PeriodicTask.h>
 #include <coil/Process.h>
 #include <coil/Properties.h>
+#include <coil/Routing.h>
+#include <coil/SharedMemory.h>
 #include <coil/Signal.h>
 #include <coil/Singleton.h>
 #include <coil/Task.h>
 #include <coil/Time.h>
 #include <coil/TimeMeasure.h>
 #include <coil/TimeValue.h>
+#include <coil/Timer.h>
 #include <coil/UUID.h>
 #include <coil/crc.h>
 #include <coil/stringutil.h>
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -34,6 +41,7 @@
 #include <algorithm>
 #include <atomic>
 #include <deque>
+#include <memory>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -136,6 +144,63 @@ public:
     std::atomic<int> finalized {0};
 };
 
+// Plug-in style classes for the factory tests.
+class Shape
+{
+public:
+    virtual ~Shape() = default;
+    virtual int corners() const = 0;
+};
+class Triangle : public Shape
+{
+public:
+    int corners() const override { return 3; }
+};
+class Square : public Shape
+{
+public:
+    int corners() const override { return 4; }
+};
+
+// A log destination that keeps the lines it receives.
+class MemoryLogBuffer : public coil::LogStreamBuffer
+{
+public:
+    explicit MemoryLogBuffer(int *destroyed = nullptr)
+        : m_destroyed(destroyed)
+    { }
+    ~MemoryLogBuffer() override
+    {
+        if (m_destroyed)
+            ++*m_destroyed;
+    }
+    void write(int level, const std::string &name, const std::string &, const std::string &mes) override
+    {
+        lines.push_back(std::to_string(level) + " " + name + ": " + mes);
+    }
+    void flush() override { ++flushes; }
+    std::vector<std::string> lines;
+    int flushes = 0;
+
+private:
+    int *m_destroyed;
+};
+
+// The smallest LogStream: lines go to the buffer under a fixed name.
+class NamedLogStream : public coil::LogStream
+{
+public:
+    NamedLogStream(coil::LogStreamBuffer *buffer, int level)
+        : coil::LogStream(buffer, 0, 8, level)
+    { }
+    ~NamedLogStream() override = default;
+    void write(int level, const std::string &mes) override
+    {
+        if (isValid(level))
+            ostream_type->write(level, "test", "now", mes);
+    }
+};
+
 } // namespace
 
 class TestSdkCoil : public QObject
@@ -208,6 +273,17 @@ private slots:
     void checksums();
     void processes();
     void signalAction();
+    void timerCallsAtTheirInterval();
+    void timerTasksMayAddTasks();
+    void factory();
+    void globalFactoryIsShared();
+    void logStreamLevels();
+    void logStreamBufferFansOut();
+    void threadAffinity();
+    void sharedMemory();
+    void sharedMemoryMissingName();
+    void routingToLoopback();
+    void deleteAsyncThread();
 };
 
 // ---------------------------------------------------------------- Properties
@@ -1295,6 +1371,366 @@ void TestSdkCoil::signalAction()
     struct sigaction restored;
     QCOMPARE(::sigaction(SIGUSR2, nullptr, &restored), 0);
     QVERIFY(restored.sa_handler == SIG_DFL);
+}
+
+// ---------------------------------------------------------------- Timer
+
+void TestSdkCoil::timerCallsAtTheirInterval()
+{
+    using std::chrono::milliseconds;
+    coil::Timer<coil::PeriodicFunction> periodic;
+    int fast = 0;
+    int slow = 0;
+    coil::Timer<coil::PeriodicFunction>::TaskId fastId = periodic.emplace([&fast] { ++fast; },
+                                                                         milliseconds(20));
+    periodic.emplace([&slow] { ++slow; }, milliseconds(50));
+    for (int i = 0; i < 10; ++i)
+        periodic.tick(milliseconds(10));
+    QCOMPARE(fast, 5);
+    QCOMPARE(slow, 2);
+    fastId->stop();
+    for (int i = 0; i < 10; ++i)
+        periodic.tick(milliseconds(10));
+    QCOMPARE(fast, 5);
+    QCOMPARE(slow, 4);
+
+    coil::Timer<coil::DelayedFunction> delayed;
+    int once = 0;
+    delayed.emplace([&once] { ++once; }, milliseconds(25));
+    delayed.tick(milliseconds(10));
+    delayed.tick(milliseconds(10));
+    QCOMPARE(once, 0);
+    delayed.tick(milliseconds(10));
+    QCOMPARE(once, 1);
+    for (int i = 0; i < 5; ++i)
+        delayed.tick(milliseconds(10));
+    QCOMPARE(once, 1);
+
+    // Driven by a thread as the manager drives its timers: a stopped task stays silent while
+    // the others go on.
+    coil::Timer<coil::PeriodicFunction> clocked;
+    std::atomic<int> stopped {0};
+    std::atomic<int> running {0};
+    coil::Timer<coil::PeriodicFunction>::TaskId stoppedId = clocked.emplace([&stopped] { ++stopped; },
+                                                                            milliseconds(2));
+    clocked.emplace([&running] { ++running; }, milliseconds(2));
+    coil::PeriodicTask driver;
+    driver.setTask([&clocked] { clocked.tick(std::chrono::milliseconds(1)); });
+    driver.setPeriod(milliseconds(1));
+    driver.activate();
+    QTRY_VERIFY(stopped.load() >= 3);
+    stoppedId->stop();
+    const int runningAtStop = running.load();
+    QTRY_VERIFY(running.load() >= runningAtStop + 2); // at least one full tick after stop()
+    const int stoppedAt = stopped.load();
+    QTRY_VERIFY(running.load() >= runningAtStop + 6);
+    QCOMPARE(stopped.load(), stoppedAt);
+    driver.finalize();
+    driver.wait();
+}
+
+void TestSdkCoil::timerTasksMayAddTasks()
+{
+    using std::chrono::milliseconds;
+    coil::Timer<coil::DelayedFunction> timer;
+    int second = 0;
+    timer.emplace([&timer, &second] { timer.emplace([&second] { ++second; }, milliseconds(10)); },
+                  milliseconds(10));
+    timer.tick(milliseconds(10)); // runs the first, which adds the second
+    QCOMPARE(second, 0);
+    timer.tick(milliseconds(10));
+    QCOMPARE(second, 1);
+
+    // Tasks held by pointer, as the manager keeps them.
+    coil::Timer<std::unique_ptr<coil::PeriodicFunction>> owned;
+    int calls = 0;
+    owned.emplace(new coil::PeriodicFunction([&calls] { ++calls; }, milliseconds(5)));
+    owned.tick(milliseconds(5));
+    owned.tick(milliseconds(5));
+    QCOMPARE(calls, 2);
+}
+
+// ---------------------------------------------------------------- Factory
+
+void TestSdkCoil::factory()
+{
+    coil::Factory<Shape> factory;
+    QVERIFY(factory.addFactory("triangle", coil::Creator<Shape, Triangle>, coil::Destructor<Shape, Triangle>)
+            == coil::FactoryReturn::OK);
+    coil::Properties squareInfo;
+    squareInfo.setProperty("corners", "4");
+    QVERIFY(factory.addFactory("square", coil::Creator<Shape, Square>, coil::Destructor<Shape, Square>,
+                               squareInfo)
+            == coil::FactoryReturn::OK);
+    QVERIFY(factory.addFactory("square", coil::Creator<Shape, Square>, coil::Destructor<Shape, Square>)
+            == coil::FactoryReturn::ALREADY_EXISTS);
+    QVERIFY(factory.addFactory("circle", nullptr, coil::Destructor<Shape, Square>)
+            == coil::FactoryReturn::INVALID_ARG);
+    QCOMPARE(factory.getIdentifiers(), (std::vector<std::string> {"square", "triangle"}));
+    QVERIFY(factory.hasFactory("square"));
+    QVERIFY(!factory.hasFactory("circle"));
+    QCOMPARE(factory.getProperties("square").getProperty("corners"), std::string("4"));
+
+    Shape *triangle = factory.createObject("triangle");
+    QVERIFY(triangle != nullptr);
+    QCOMPARE(triangle->corners(), 3);
+    QVERIFY(factory.createObject("circle") == nullptr); // unknown identifier
+    Shape *square = factory.createObject("square");
+    QCOMPARE(square->corners(), 4);
+    QCOMPARE(factory.createdObjects().size(), size_t(2));
+    QVERIFY(factory.isProducerOf(triangle));
+    std::string id;
+    QVERIFY(factory.objectToIdentifier(square, id) == coil::FactoryReturn::OK);
+    QCOMPARE(id, std::string("square"));
+    QVERIFY((factory.objectToCreator(square) == &coil::Creator<Shape, Square>));
+    QVERIFY((factory.objectToDestructor(square) == &coil::Destructor<Shape, Square>));
+
+    Shape *foreign = new Square();
+    QVERIFY(!factory.isProducerOf(foreign));
+    QVERIFY(factory.objectToIdentifier(foreign, id) == coil::FactoryReturn::NOT_FOUND);
+    QVERIFY(factory.deleteObject(foreign) == coil::FactoryReturn::NOT_FOUND);
+    QVERIFY(foreign != nullptr);
+    delete foreign;
+
+    QVERIFY(factory.deleteObject(triangle) == coil::FactoryReturn::OK);
+    QVERIFY(triangle == nullptr);
+    QVERIFY(factory.deleteObject("square", square) == coil::FactoryReturn::OK);
+    QVERIFY(square == nullptr);
+    QVERIFY(factory.createdObjects().empty());
+
+    QVERIFY(factory.removeFactory("triangle") == coil::FactoryReturn::OK);
+    QVERIFY(factory.removeFactory("triangle") == coil::FactoryReturn::NOT_FOUND);
+    QVERIFY(factory.createObject("triangle") == nullptr);
+    QCOMPARE(factory.getIdentifiers(), std::vector<std::string> {"square"});
+}
+
+void TestSdkCoil::globalFactoryIsShared()
+{
+    typedef coil::GlobalFactory<Shape> ShapeFactory;
+    QCOMPARE(&ShapeFactory::instance(), &ShapeFactory::instance());
+    QVERIFY(ShapeFactory::instance().addFactory("triangle", coil::Creator<Shape, Triangle>,
+                                                coil::Destructor<Shape, Triangle>)
+            == coil::FactoryReturn::OK);
+    Shape *shape = ShapeFactory::instance().createObject("triangle");
+    QVERIFY(shape != nullptr);
+    QVERIFY(ShapeFactory::instance().deleteObject(shape) == coil::FactoryReturn::OK);
+    QVERIFY(ShapeFactory::instance().removeFactory("triangle") == coil::FactoryReturn::OK);
+}
+
+// ---------------------------------------------------------------- Logger
+
+void TestSdkCoil::logStreamLevels()
+{
+    MemoryLogBuffer buffer;
+    NamedLogStream log(&buffer, 4); // INFO in OpenRTM's numbering
+    QCOMPARE(log.getLevel(), 4);
+    QVERIFY(log.isValid(1));
+    QVERIFY(log.isValid(4));
+    QVERIFY(!log.isValid(5));
+    log.write(3, "warning");
+    log.write(5, "debug");
+    QCOMPARE(buffer.lines, std::vector<std::string> {"3 test: warning"});
+
+    QVERIFY(!log.setLevel(9)); // above the maximum: refused
+    QCOMPARE(log.getLevel(), 4);
+    QVERIFY(!log.setLevel(-1));
+    QVERIFY(log.setLevel(6));
+    QVERIFY(log.isValid(5));
+    QVERIFY(!log.isValid(7));
+    log.write(5, "debug");
+    QCOMPARE(buffer.lines.size(), size_t(2));
+    QVERIFY(log.setLevel(0));
+    QVERIFY(!log.isValid(1));
+
+    log.flush();
+    QCOMPARE(buffer.flushes, 1);
+
+    coil::LogStream::disableLock();
+    QVERIFY(!coil::LogStream::m_lockEnable);
+    coil::LogStream::enableLock();
+    coil::LogStream::lock();
+    QVERIFY(!coil::LogStream::m_mutex.try_lock()); // held by lock()
+    coil::LogStream::unlock();
+    QVERIFY(coil::LogStream::m_mutex.try_lock());
+    coil::LogStream::m_mutex.unlock();
+}
+
+void TestSdkCoil::logStreamBufferFansOut()
+{
+    int destroyed = 0;
+    MemoryLogBuffer kept;
+    MemoryLogBuffer *owned = new MemoryLogBuffer(&destroyed);
+    {
+        coil::LogStreamBuffer root;
+        root.addStream(owned, true);
+        root.addStream(&kept);
+        // Enough entries that the list grows several times: ownership must survive that.
+        std::vector<MemoryLogBuffer *> more;
+        for (int i = 0; i < 5; ++i) {
+            more.push_back(new MemoryLogBuffer(&destroyed));
+            root.addStream(more.back(), true);
+        }
+        QCOMPARE(root.getBuffers().size(), size_t(7));
+        QVERIFY(root.getBuffers()[1] == &kept);
+        root.write(2, "comp", "date", "hello");
+        QCOMPARE(owned->lines, std::vector<std::string> {"2 comp: hello"});
+        QCOMPARE(kept.lines, std::vector<std::string> {"2 comp: hello"});
+        QCOMPARE(more.back()->lines.size(), size_t(1));
+        root.flush();
+        QCOMPARE(kept.flushes, 1);
+
+        QVERIFY(root.removeStream(&kept));
+        QVERIFY(!root.removeStream(&kept));
+        root.write(2, "comp", "date", "again");
+        QCOMPARE(kept.lines.size(), size_t(1));
+        QCOMPARE(owned->lines.size(), size_t(2));
+    }
+    QCOMPARE(destroyed, 6); // the owned ones, not the one it was only lent
+}
+
+// ---------------------------------------------------------------- Affinity
+
+void TestSdkCoil::threadAffinity()
+{
+    coil::CpuMask process;
+    QVERIFY(coil::getProcCpuAffinity(process));
+    QVERIFY(!process.empty());
+
+    // In a thread of its own, so that the test's thread keeps all its CPUs.
+    coil::CpuMask before, pinned, fromText, restored;
+    bool setOk = false, textOk = false, badText = true, empty = true, restoreOk = false;
+    std::thread worker([&] {
+        coil::getThreadCpuAffinity(before);
+        if (before.empty())
+            return;
+        setOk = coil::setThreadCpuAffinity(coil::CpuMask {before.back()});
+        coil::getThreadCpuAffinity(pinned);
+        textOk = coil::setThreadCpuAffinity(std::to_string(before.front()));
+        coil::getThreadCpuAffinity(fromText);
+        badText = coil::setThreadCpuAffinity(std::string("one,two"));
+        empty = coil::setThreadCpuAffinity(coil::CpuMask());
+        restoreOk = coil::setThreadCpuAffinity(before);
+        coil::getThreadCpuAffinity(restored);
+    });
+    worker.join();
+    QCOMPARE(before, process);
+    QVERIFY(setOk);
+    QCOMPARE(pinned, coil::CpuMask {before.back()});
+    QVERIFY(textOk);
+    QCOMPARE(fromText, coil::CpuMask {before.front()});
+    QVERIFY(!badText);
+    QVERIFY(!empty);
+    QVERIFY(restoreOk);
+    QCOMPARE(restored, before);
+}
+
+// ---------------------------------------------------------------- SharedMemory
+
+void TestSdkCoil::sharedMemory()
+{
+    const std::string name = "rtstudio_tst_sdkcoil_" + std::to_string(QCoreApplication::applicationPid());
+    coil::SharedMemory writer;
+    QCOMPARE(writer.create(name, 4096), 0);
+    QVERIFY(writer.created());
+    QCOMPARE(writer.get_size(), 4096ULL);
+    QCOMPARE(writer.get_addresss(), name);
+    QVERIFY(writer.get_data() != nullptr);
+    const char text[] = "hello over shared memory";
+    QCOMPARE(writer.write(text, 100, sizeof(text)), 0);
+    QCOMPARE(writer.write(text, 4090, sizeof(text)), -1); // past the end
+
+    coil::SharedMemory reader;
+    QCOMPARE(reader.open("/" + name, 4096), 0); // the same segment, with or without the slash
+    QVERIFY(!reader.created());
+    char back[sizeof(text)] = {0};
+    QCOMPARE(reader.read(back, 100, sizeof(back)), 0);
+    QCOMPARE(QByteArray(back), QByteArray(text));
+    QCOMPARE(reader.write("HELLO", 100, 5), 0);
+    QCOMPARE(writer.read(back, 100, sizeof(back)), 0);
+    QCOMPARE(QByteArray(back), QByteArray("HELLO over shared memory"));
+    QCOMPARE(reader.read(back, 5000, 1), -1);
+
+    coil::SharedMemory copy(reader); // a mapping of its own
+    QCOMPARE(reader.close(), 0);
+    QCOMPARE(reader.close(), -1);
+    QCOMPARE(copy.read(back, 100, 5), 0);
+    QCOMPARE(QByteArray(back, 5), QByteArray("HELLO"));
+
+    QCOMPARE(writer.unlink(), 0);
+    coil::SharedMemory late;
+    QCOMPARE(late.open(name, 4096), -1); // the name is gone
+    QCOMPARE(writer.read(back, 100, 5), 0); // the mapping itself stays valid
+    QCOMPARE(writer.close(), 0);
+}
+
+void TestSdkCoil::sharedMemoryMissingName()
+{
+    coil::SharedMemory memory;
+    QCOMPARE(memory.open("rtstudio_tst_sdkcoil_no_such_segment", 4096), -1);
+    QVERIFY(memory.get_data() == nullptr);
+    char byte = 0;
+    QCOMPARE(memory.read(&byte, 0, 1), -1);
+    QCOMPARE(memory.write(&byte, 0, 1), -1);
+    QCOMPARE(memory.unlink(), -1);
+    QCOMPARE(memory.create("", 4096), -1);
+
+    const std::string name = "rtstudio_tst_sdkcoil_small_" + std::to_string(QCoreApplication::applicationPid());
+    coil::SharedMemory small;
+    QCOMPARE(small.create(name, 16), 0);
+    coil::SharedMemory larger;
+    QCOMPARE(larger.open(name, 4096), -1); // more than the segment has
+    QCOMPARE(small.unlink(), 0);
+}
+
+// ---------------------------------------------------------------- Routing
+
+void TestSdkCoil::routingToLoopback()
+{
+    std::string endpoint;
+    QVERIFY(coil::dest_to_endpoint("127.0.0.1", endpoint));
+    QCOMPARE(endpoint, std::string("127.0.0.1"));
+    std::string ifname;
+    QVERIFY(coil::find_dest_ifname("127.0.0.1", ifname));
+    QVERIFY(!ifname.empty());
+    std::string address;
+    QVERIFY(coil::ifname_to_ipaddr(ifname, address));
+    QCOMPARE(address, std::string("127.0.0.1"));
+
+    QVERIFY(!coil::dest_to_endpoint("", endpoint));
+    QVERIFY(!coil::find_dest_ifname("", ifname));
+    QVERIFY(!coil::ifname_to_ipaddr("rtstudio-none0", address));
+}
+
+// ---------------------------------------------------------------- Async
+
+namespace {
+struct GatedCall
+{
+    std::shared_ptr<int> token;
+    std::atomic<bool> *gate;
+    void operator()(int *) const
+    {
+        while (!gate->load())
+            std::this_thread::yield();
+    }
+};
+} // namespace
+
+void TestSdkCoil::deleteAsyncThread()
+{
+    std::atomic<bool> gate {false};
+    std::shared_ptr<int> token = std::make_shared<int>(0);
+    std::weak_ptr<int> alive = token;
+    int object = 0;
+    coil::DeleteAsyncThread sweeper;
+    coil::Async *call = coil::AsyncInvoker(&object, GatedCall {token, &gate});
+    token.reset();
+    sweeper.add(call);
+    call->invoke();
+    QVERIFY(!alive.expired()); // still running: not deleted
+    gate = true;
+    QTRY_VERIFY(alive.expired()); // finished, then deleted by the sweep
+    QVERIFY(coil::DeleteAsyncThread::instance() == coil::DeleteAsyncThread::instance());
 }
 
 QTEST_APPLESS_MAIN(TestSdkCoil)

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The component SDK's prefix (sdk/package/) as users consume it: the layout, the CMake package's
-// variables, rtm-config, pkg-config and the skeleton wrapper, and small projects in four styles
-// (OpenRTP 2.0, the 1.2 era, modern CMake, plain pkg-config) configured, built and run against the
-// build tree's prefix and against an installed copy made once per run with cmake --install.
+// variables, rtm-config, pkg-config and the skeleton wrapper, and small projects in five styles
+// (OpenRTP 2.0, the 1.2 era, modern CMake, plain pkg-config, older include paths such as
+// <coil-2.0/coil/…> and hrtm/…) configured, built and run against the build tree's prefix and
+// against an installed copy made once per run with cmake --install.
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
@@ -161,7 +162,8 @@ void TestSdkPackage::layout()
     for (const char *file :
          {"include/openrtm-2.1/rtm/config_rtc.h", "include/openrtm-2.1/rtm/version.h",
           "include/coil-2.1/coil/config_coil.h", "include/coil-2.0/coil/config_coil.h",
-          "lib/librtstudio_rtm.so", "lib/cmake/openrtm-2.1/OpenRTMConfig.cmake",
+          "lib/librtstudio_rtm.so", "lib/librtmCamera2.so", "lib/librtmManipulator2.so", "lib/librtmCamera.so",
+          "lib/librtmManipulator.so", "lib/cmake/openrtm-2.1/OpenRTMConfig.cmake",
           "lib/cmake/openrtm-2.1/OpenRTMConfigVersion.cmake", "lib/pkgconfig/openrtm2.pc",
           "lib/pkgconfig/openrtm-aist.pc", "lib/pkgconfig/libcoil.pc"})
         QVERIFY2(QFileInfo(root + QLatin1Char('/') + QLatin1String(file)).isFile(), file);
@@ -179,6 +181,11 @@ void TestSdkPackage::layout()
     QCOMPARE(staged, headerNames(sources + QStringLiteral("rtm")));
     QCOMPARE(headerNames(root + QStringLiteral("/include/coil-2.1/coil")), headerNames(sources + QStringLiteral("coil")));
     QCOMPARE(headerNames(root + QStringLiteral("/include/coil-2.0/coil")), headerNames(sources + QStringLiteral("coil")));
+    // HRTM's headers where OpenRTM-aist installs them.
+    QCOMPARE(headerNames(root + QStringLiteral("/include/openrtm-2.1/hrtm")), headerNames(sources + QStringLiteral("hrtm")));
+    QCOMPARE(headerNames(root + QStringLiteral("/include/openrtm-2.1/hrtm/idls")),
+             headerNames(sources + QStringLiteral("hrtm/idls")));
+    QVERIFY(!headerNames(sources + QStringLiteral("hrtm/idls")).isEmpty());
     // The component API's headers reach the runtime's as <rtmruntime/…>.
     QCOMPARE(headerNames(root + QStringLiteral("/include/openrtm-2.1/rtmruntime")),
              headerNames(QStringLiteral(RTSTUDIO_SOURCE_DIR "/manager")));
@@ -391,7 +398,8 @@ void TestSdkPackage::consume_data()
         {"openrtp2", "GreetingProbe", "openrtp2 2.1.0 HELLO 42 2"},
         {"legacy12", "LegacyProbe", "legacy12 2.1 legacy 3 -2 1s500000us ticked"},
         {"modern", "ModernProbe", "modern 2.1.0 sdk=1 3 4 0.5 rate=1000"},
-        {"pkgconfig", "PkgConfigProbe", "pkgconfig 2.1.0 pkg-config 2"}};
+        {"pkgconfig", "PkgConfigProbe", "pkgconfig 2.1.0 pkg-config 2"},
+        {"olderpaths", "OlderPathsProbe", "olderpaths 2.1.0 ticks=3 key=value 1.5 hrtm=0.6.13"}};
     for (const char *kind : {"build", "installed"}) {
         for (const auto &style : styles)
             QTest::addRow("%s %s", style[0], kind) << style[0] << kind << style[1] << style[2];

@@ -7,7 +7,7 @@
 #include "rtsprofile.h"
 #include "steprecorder.h"
 
-#include <QDeadlineTimer>
+#include <QElapsedTimer>
 #include <QHash>
 #include <QMutex>
 #include <QSet>
@@ -26,9 +26,10 @@ using Profile::RtsSequenceKind;
 
 namespace {
 
-// Often enough that a SYNC wait ends within a few ms of the state change, rarely enough that a
-// long wait costs next to nothing.
-constexpr int pollIntervalMs = 5;
+// How often a wait looks again at its condition (rtshell polls at about 100 Hz): a SYNC wait ends
+// within a few ms of the state change, a cancel within one interval, and a long wait costs next to
+// nothing.
+constexpr int pollIntervalMs = 10;
 
 struct Target
 {
@@ -37,11 +38,34 @@ struct Target
     const RtsCondition *condition = nullptr;
 };
 
+QString targetKey(const QString &instance, const QString &ecId)
+{
+    return instance + QLatin1Char('\n') + ecId;
+}
+
 int sequenceNumber(const RtsCondition &condition)
 {
     bool ok = false;
     const int number = condition.sequence.trimmed().toInt(&ok);
     return ok ? number : INT_MAX;
+}
+
+int waitTimeMs(const RtsCondition &condition)
+{
+    return condition.waitTime ? condition.waitTime->waitTime.value_or(QString()).toInt() : 0;
+}
+
+bool isSync(const Profile::RtsPreceding &preceding)
+{
+    return preceding.sendingTiming.value_or(QString()).trimmed().toUpper() == QLatin1String("SYNC");
+}
+
+// rtshell's "delayed" actions: those that wait for time or for other components. The others
+// (no target, or a target with neither condition) are immediate.
+bool isDelayed(const Target &target)
+{
+    return target.condition
+        && (waitTimeMs(*target.condition) > 0 || target.condition->preceding.has_value());
 }
 
 QString actionName(SequenceAction action)
@@ -59,6 +83,12 @@ QString actionName(SequenceAction action)
     return QStringLiteral("stop");
 }
 
+/**
+ * One run of a message sequence, the way rtshell's rtstart/rtstop execute their plan: every
+ * delayed action waits in a thread of its own, all started with the plan, so their waits overlap
+ * and count from the plan's start; meanwhile the immediate actions are sent. The first required
+ * failure, a preceding condition that cannot be met, or the caller's cancel ends all waits.
+ */
 class SequenceRun
 {
 public:
@@ -72,29 +102,37 @@ public:
 
     void run(RtsSequenceKind kind)
     {
-        const QList<Target> all = targets(kind);
-        // Targets of the file's sequence go one after the other, in its order (they may wait for
-        // each other) ...
-        qsizetype ordered = 0;
-        for (; ordered < all.size() && all.at(ordered).condition; ++ordered) {
-            if (!m_steps.ok() || m_steps.checkCancelled())
-                return;
-            runTarget(all.at(ordered));
+        m_clock.start();
+        QList<Target> immediate;
+        QList<Target> delayed;
+        for (const Target &target : targets(kind)) {
+            (isDelayed(target) ? delayed : immediate).append(target);
+            m_planned.insert(targetKey(target.instance, target.ecId), target.instance);
         }
-        // ... the others have no order among them: several at once.
-        Corba::forEachConcurrently(std::size_t(all.size() - ordered), [&](std::size_t i) {
-            if (!m_steps.ok() || m_steps.checkCancelled())
-                return;
-            runTarget(all.at(ordered + qsizetype(i)));
-        });
+        // Task 0 sends the immediate actions; every other task is one delayed action, each on a
+        // thread of its own (as many threads as tasks) so that no wait holds up another.
+        const std::size_t tasks = std::size_t(delayed.size()) + 1;
+        Corba::forEachConcurrently(
+            tasks,
+            [&](std::size_t i) {
+                if (i == 0)
+                    runImmediate(immediate);
+                else
+                    runDelayed(delayed.at(qsizetype(i) - 1));
+            },
+            tasks);
     }
 
 private:
+    enum class WaitResult { Met, TimedOut, Stopped };
+
     bool contextsOnly() const
     {
         return m_action == SequenceAction::StartContext || m_action == SequenceAction::StopContext;
     }
 
+    // The sequence's targets by ascending `sequence`, then (activation and deactivation only)
+    // every other context of the components, in file order.
     QList<Target> targets(RtsSequenceKind kind) const
     {
         QList<const RtsCondition *> conditions;
@@ -109,7 +147,7 @@ private:
         for (const RtsCondition *condition : conditions) {
             const auto &t = condition->targetComponent;
             result.append({t.instanceName, t.id, condition});
-            covered.insert(t.instanceName + QLatin1Char('\n') + t.id);
+            covered.insert(targetKey(t.instanceName, t.id));
         }
         if (contextsOnly())
             return result;
@@ -120,11 +158,39 @@ private:
             if (ids.isEmpty())
                 ids.append(QStringLiteral("0"));
             for (const QString &id : ids) {
-                if (!covered.contains(component.instanceName + QLatin1Char('\n') + id))
+                if (!covered.contains(targetKey(component.instanceName, id)))
                     result.append({component.instanceName, id, nullptr});
             }
         }
         return result;
+    }
+
+    // The file's plain targets one after the other in their order, then the contexts the
+    // sequence does not name, which have no order among them: several at once.
+    void runImmediate(const QList<Target> &immediate)
+    {
+        qsizetype ordered = 0;
+        for (; ordered < immediate.size() && immediate.at(ordered).condition; ++ordered) {
+            if (stopped())
+                return;
+            runTarget(immediate.at(ordered));
+        }
+        Corba::forEachConcurrently(std::size_t(immediate.size() - ordered), [&](std::size_t i) {
+            if (!stopped())
+                runTarget(immediate.at(ordered + qsizetype(i)));
+        });
+    }
+
+    void runDelayed(const Target &target)
+    {
+        const bool isRequired = required(target.instance);
+        const ComponentMapping *mapping = live(target.instance);
+        if (mapping && !mapping->activate) {
+            runTarget(target);
+            return;
+        }
+        if (waitBefore(target, isRequired) && !stopped())
+            runTarget(target);
     }
 
     bool required(const QString &instance) const
@@ -147,14 +213,14 @@ private:
         const QString key = proxy.ior();
         std::vector<Corba::ExecutionContextInfo> contexts;
         {
-            QMutexLocker lock(&m_contextsMutex);
+            QMutexLocker lock(&m_mutex);
             const auto cached = m_contexts.constFind(key);
             if (cached != m_contexts.constEnd())
                 contexts = *cached;
         }
         if (contexts.empty()) {
             contexts = proxy.executionContexts();
-            QMutexLocker lock(&m_contextsMutex);
+            QMutexLocker lock(&m_mutex);
             m_contexts.insert(key, contexts);
         }
         bool numeric = false;
@@ -196,77 +262,166 @@ private:
         }
     }
 
-    // Polls `condition` until it holds, `timeoutMs` passes (0 = no limit) or the caller cancels.
-    bool waitUntil(const std::function<bool()> &condition, int timeoutMs)
+    // The plan ends early once a required step failed or the caller cancelled.
+    bool stopped() { return !m_steps.ok() || m_steps.checkCancelled(); }
+
+    // Polls `condition` until it holds, the plan's clock reaches `untilMs` (< 0 = no limit) or
+    // the plan stops.
+    WaitResult waitUntil(const std::function<bool()> &condition, qint64 untilMs)
     {
-        QDeadlineTimer deadline(timeoutMs > 0 ? qint64(timeoutMs) : -1);
-        while (!condition()) {
-            if (m_steps.checkCancelled() || deadline.hasExpired())
-                return false;
-            std::this_thread::sleep_for(std::chrono::milliseconds(pollIntervalMs));
+        for (;;) {
+            if (stopped())
+                return WaitResult::Stopped;
+            if (condition())
+                return WaitResult::Met;
+            const qint64 now = m_clock.elapsed();
+            if (untilMs >= 0 && now >= untilMs)
+                return WaitResult::TimedOut;
+            const qint64 pause
+                = untilMs >= 0 ? std::min<qint64>(pollIntervalMs, untilMs - now) : pollIntervalMs;
+            std::this_thread::sleep_for(std::chrono::milliseconds(pause));
         }
-        return true;
     }
 
     bool waitBefore(const Target &target, bool isRequired)
     {
-        const RtsCondition *condition = target.condition;
-        if (!condition)
-            return true;
-        if (condition->waitTime) {
-            const int ms = condition->waitTime->waitTime.value_or(QString()).toInt();
-            if (ms <= 0)
-                return true;
-            const int step = m_steps.begin(QStringLiteral("wait"), target.instance, isRequired);
-            waitUntil([] { return false; }, ms);
-            if (m_steps.checkCancelled()) {
-                m_steps.fail(step, QStringLiteral("cancelled"));
-                return false;
-            }
-            m_steps.finish(step, StepStatus::Done, QStringLiteral("%1 ms").arg(ms));
+        const RtsCondition &condition = *target.condition;
+        const int step = m_steps.begin(QStringLiteral("wait"), target.instance, isRequired);
+        if (const int ms = waitTimeMs(condition); ms > 0 && !condition.preceding) {
+            if (waitUntil([&] { return m_clock.elapsed() >= ms; }, -1) != WaitResult::Met)
+                return cancelled(step);
+            m_steps.finish(step, StepStatus::Done, QStringLiteral("%1 ms from the start").arg(ms));
             return true;
         }
-        if (!condition->preceding
-            || condition->preceding->sendingTiming.value_or(QString()).toUpper()
-                != QLatin1String("SYNC"))
-            return true;
-        return waitForPreceding(target, *condition->preceding, isRequired);
+        const Profile::RtsPreceding &preceding = *condition.preceding;
+        return isSync(preceding) ? waitForStates(target, preceding, step)
+                                 : waitForSent(target, preceding, step);
     }
 
-    bool waitForPreceding(const Target &target, const Profile::RtsPreceding &preceding,
-                          bool isRequired)
+    bool cancelled(int step)
+    {
+        m_steps.fail(step, QStringLiteral("cancelled"));
+        return false;
+    }
+
+    static QString names(const QList<Profile::RtsTargetExecutionContext> &components)
+    {
+        QStringList result;
+        for (const auto &component : components)
+            result.append(component.instanceName);
+        return result.join(QStringLiteral(", "));
+    }
+
+    // SYNC: until every preceding context is in the state this action leads to; the timeout
+    // counts from the plan's start and ends the whole plan.
+    bool waitForStates(const Target &target, const Profile::RtsPreceding &preceding, int step)
     {
         const int timeout = preceding.timeout.value_or(QString()).toInt();
-        for (const auto &other : preceding.precedingComponents) {
-            const int step = m_steps.begin(QStringLiteral("wait"), target.instance, isRequired);
-            const ComponentMapping *mapping = live(other.instanceName);
-            if (!mapping) {
-                m_steps.fail(step,
-                             QStringLiteral("preceding %1 is not there").arg(other.instanceName));
-                return false;
-            }
-            try {
-                const ComponentProxy proxy(mapping->ior, mapping->path);
+        struct Watched
+        {
+            Profile::RtsTargetExecutionContext component;
+            ComponentProxy proxy;
+            int index;
+        };
+        std::vector<Watched> watched;
+        try {
+            for (const auto &other : preceding.precedingComponents) {
+                const ComponentMapping *mapping = live(other.instanceName);
+                if (!mapping)
+                    return unmet(
+                        target, step,
+                        QStringLiteral("preceding %1 is not there").arg(other.instanceName));
+                ComponentProxy proxy(mapping->ior, mapping->path);
                 const int index = ecIndex(proxy, other.id);
-                if (!waitUntil([&] { return reached(proxy, index); }, timeout)) {
-                    m_steps.fail(step,
-                                 QStringLiteral("%1 did not %2 within %3 ms")
-                                     .arg(other.instanceName, actionName(m_action))
-                                     .arg(timeout));
-                    // A SYNC timeout cancels the rest of the plan, required or not.
-                    return false;
-                }
-                m_steps.finish(step, StepStatus::Done,
-                               QStringLiteral("after %1").arg(other.instanceName));
-            } catch (const Error &e) {
-                m_steps.fail(step, e.message());
-                return false;
+                watched.push_back({other, std::move(proxy), index});
             }
+            QList<Profile::RtsTargetExecutionContext> pending;
+            const auto allReached = [&] {
+                pending.clear();
+                for (const Watched &w : watched) {
+                    if (!reached(w.proxy, w.index))
+                        pending.append(w.component);
+                }
+                return pending.isEmpty();
+            };
+            switch (waitUntil(allReached, timeout > 0 ? timeout : -1)) {
+            case WaitResult::Met:
+                break;
+            case WaitResult::Stopped:
+                return cancelled(step);
+            case WaitResult::TimedOut:
+                return unmet(target, step,
+                             QStringLiteral("%1 did not %2 within %3 ms of the start")
+                                 .arg(names(pending), actionName(m_action))
+                                 .arg(timeout));
+            }
+        } catch (const Error &e) {
+            return unmet(target, step, e.message());
         }
+        m_steps.finish(step, StepStatus::Done,
+                       QStringLiteral("after %1").arg(names(preceding.precedingComponents)));
         return true;
     }
 
+    // ASYNC, NO_SYNC: until the preceding components' actions of this plan have been sent (or
+    // skipped, or failed without ending the plan).
+    bool waitForSent(const Target &target, const Profile::RtsPreceding &preceding, int step)
+    {
+        QStringList keys;
+        for (const auto &other : preceding.precedingComponents) {
+            const QStringList matching = plannedKeys(other);
+            if (matching.isEmpty())
+                return unmet(
+                    target, step,
+                    QStringLiteral("preceding %1 is not in the plan").arg(other.instanceName));
+            keys += matching;
+        }
+        const auto allSent = [&] {
+            QMutexLocker lock(&m_mutex);
+            return std::all_of(keys.cbegin(), keys.cend(),
+                               [&](const QString &key) { return m_sent.contains(key); });
+        };
+        if (waitUntil(allSent, -1) != WaitResult::Met)
+            return cancelled(step);
+        m_steps.finish(
+            step, StepStatus::Done,
+            QStringLiteral("after %1 was sent").arg(names(preceding.precedingComponents)));
+        return true;
+    }
+
+    // The actions of this plan on `other`'s context, or on any context of that component when
+    // the file names a context the plan does not have.
+    QStringList plannedKeys(const Profile::RtsTargetExecutionContext &other) const
+    {
+        const QString exact = targetKey(other.instanceName, other.id);
+        if (m_planned.contains(exact))
+            return {exact};
+        QStringList keys;
+        for (auto it = m_planned.cbegin(); it != m_planned.cend(); ++it) {
+            if (it.value() == other.instanceName)
+                keys.append(it.key());
+        }
+        return keys;
+    }
+
+    // A preceding condition that cannot be met ends the whole plan, even for optional components.
+    bool unmet(const Target &target, int step, const QString &reason)
+    {
+        m_steps.fail(step, reason);
+        if (m_steps.ok())
+            m_steps.fail(m_steps.begin(QStringLiteral("cancel"), QStringLiteral("plan")),
+                         QStringLiteral("%1: %2").arg(target.instance, reason));
+        return false;
+    }
+
     void runTarget(const Target &target)
+    {
+        sendTarget(target);
+        QMutexLocker lock(&m_mutex);
+        m_sent.insert(targetKey(target.instance, target.ecId));
+    }
+
+    void sendTarget(const Target &target)
     {
         const bool isRequired = required(target.instance);
         const QString subject = target.instance + QLatin1Char('.') + target.ecId;
@@ -274,10 +429,6 @@ private:
         if (mapping && !mapping->activate) {
             m_steps.add(actionName(m_action), subject, StepStatus::Skipped,
                         QStringLiteral("not selected"), isRequired);
-            return;
-        }
-        if (!waitBefore(target, isRequired)) {
-            forceStop();
             return;
         }
         const int step = m_steps.begin(actionName(m_action), subject, isRequired);
@@ -299,20 +450,15 @@ private:
         }
     }
 
-    // A failed SYNC wait stops the whole plan even for optional components.
-    void forceStop()
-    {
-        if (m_steps.ok())
-            m_steps.fail(m_steps.begin(QStringLiteral("cancel"), QStringLiteral("plan")),
-                         QStringLiteral("a preceding condition was not met"));
-    }
-
     const Profile::RtsProfile &m_profile;
     const RestorePlan &m_plan;
     SequenceAction m_action;
     StepRecorder &m_steps;
-    QMutex m_contextsMutex;
+    QElapsedTimer m_clock; ///< the plan's start: WaitTime and SYNC timeouts count from here
+    QHash<QString, QString> m_planned; ///< targetKey → instance, every action of the plan
+    QMutex m_mutex; ///< guards m_contexts and m_sent
     QHash<QString, std::vector<Corba::ExecutionContextInfo>> m_contexts;
+    QSet<QString> m_sent; ///< targetKeys of the actions sent, skipped or failed
 };
 
 } // namespace

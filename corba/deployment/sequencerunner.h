@@ -20,13 +20,20 @@ enum class SequenceAction {
 };
 
 /**
- * Runs `action` on every execution context of every mapped component, ordered by the message
- * sequence `kind` of `profile` (rtstart / rtstop): its targets first by `sequence`, each after its
- * `WaitTime` (ms) or, with `Preceding sendingTiming=SYNC`, once the preceding components have
- * reached the resulting state (`timeout` ms, 0 = no limit; a timeout cancels the rest of the
- * plan); ASYNC/NO_SYNC run right after the preceding action was sent. Then the components' other
- * contexts in file order. Contexts already in the wanted state are skipped; failures of optional
- * components are not fatal. Waits poll the cancel flag. Safe to call from a worker thread.
+ * Runs `action` on every execution context of every mapped component as rtshell's rtstart /
+ * rtstop execute the message sequence `kind` of `profile`:
+ * - immediate actions first: the sequence's targets without a condition, one after the other by
+ *   ascending `sequence`, then the components' contexts the sequence does not name (several at
+ *   once; none for StartUp/ShutDown, which act on their targets only);
+ * - every delayed action waits in a thread of its own, all started with the plan: `WaitTime` (ms)
+ *   counts from the plan's start; `Preceding sendingTiming=SYNC` polls the preceding contexts
+ *   (every 10 ms) until they are in the state the action leads to, its `timeout` (ms, 0 = no limit)
+ *   also counted from the plan's start, and a timeout cancels the whole plan with a message naming
+ *   the component and the preceding ones; other sendingTimings run once the preceding components'
+ *   actions were sent.
+ * Contexts already in the wanted state are skipped; failures of optional components are not
+ * fatal, the first required failure or the caller's cancel ends every wait and the actions not yet
+ * sent. Returns when all actions are done. Safe to call from a worker thread.
  */
 DeployReport runSequence(const Profile::RtsProfile &profile, const RestorePlan &plan,
                          Profile::RtsSequenceKind kind, SequenceAction action,

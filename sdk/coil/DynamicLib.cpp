@@ -81,3 +81,8 @@ const char *DynamicLib::error()
     return ::dlerror();
 }
 } // namespace coil
+
+extern "C" int ForExternTest(void)
+{
+    return coil::DynamicLib::ForExternTest();
+}

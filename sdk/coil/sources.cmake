@@ -1,14 +1,17 @@
 # SPDX-License-Identifier: MIT
 # coil: OpenRTM-aist's utility library (2.x API plus the 1.x parts published components still use).
 set(SDK_COIL_HEADERS
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Affinity.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Async.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/ClockManager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Condition.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/config_coil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/crc.h
-    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Condition.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/DynamicLib.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Factory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/File.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Guard.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Logger.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Mutex.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/NonCopyable.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/OS.h
@@ -16,27 +19,36 @@ set(SDK_COIL_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/PeriodicTaskBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Process.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Properties.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Routing.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/SharedMemory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Signal.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Singleton.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/stringutil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Task.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Time.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/TimeMeasure.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/Timer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/TimeValue.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/coil/UUID.h
 )
 set(SDK_COIL_SOURCES
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/Affinity.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/Async.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/ClockManager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/crc.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/DynamicLib.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/File.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/Logger.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/PeriodicTask.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Process.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Properties.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/Routing.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/SharedMemory.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Signal.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/stringutil.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/Task.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/TimeMeasure.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/coil/Timer.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/TimeValue.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/coil/UUID.cpp
 )

@@ -2,11 +2,16 @@
 # package: how users' projects consume the SDK. The SDK presents itself as an OpenRTM-aist 2.1 prefix:
 #
 #   include/openrtm-2.1/rtm/      the component API, config_rtc.h, version.h
-#   include/openrtm-2.1/rtm/idl/  OpenRTM's IDL, omniidl's <Name>.hh, wrapper <Name>Skel.h / <Name>Stub.h
-#   include/openrtm-2.1/rtm/ext/  (extension IDL; empty)
+#   include/openrtm-2.1/rtm/idl/  OpenRTM's IDL, omniidl's <Name>.hh, wrapper <Name>Skel.h / <Name>Stub.h;
+#                                 the extension IDL (camera, manipulator) too, where OpenRTM-aist puts it
+#   include/openrtm-2.1/rtm/ext/  (empty; on OpenRTM-aist's include path, so kept)
 #   include/openrtm-2.1/rtmruntime/  the runtime's headers (manager/*.h), which rtm/*.h include
+#   include/openrtm-2.1/hrtm/     HRTM's API (hrtm/*.h, hrtm/idls/*.h), as OpenRTM-aist installs it
 #   include/coil-2.1/coil/        coil (also as include/coil-2.0/coil/ for 2.0-era includes)
 #   lib/librtstudio_rtm.so        the runtime, coil, the component API and the IDL stubs in one library
+#   lib/librtmCamera2.so, librtmManipulator2.so (and the names without 2)
+#                                 linker scripts naming librtstudio_rtm.so, which holds the extension
+#                                 IDL's stubs: projects that link OpenRTM-aist's extension libraries link
 #   lib/cmake/openrtm-2.1/        OpenRTMConfig.cmake, OpenRTMConfigVersion.cmake (find_package(OpenRTM))
 #   lib/pkgconfig/                openrtm2.pc, openrtm-aist.pc (1.x name), libcoil.pc
 #   bin/                          rtm2-config, rtm-config, rtm2-skelwrapper, rtm-skelwrapper
@@ -60,10 +65,31 @@ configure_file("${rtsdk_package_dir}/config_rtc.h.in" "${rtsdk_generated}/rtm/co
 configure_file("${rtsdk_package_dir}/version.h.in" "${rtsdk_generated}/rtm/version.h" @ONLY)
 
 file(GLOB rtsdk_idl_files CONFIGURE_DEPENDS "${RTSTUDIO_IDL_DIR}/*.idl")
+# OpenRTM-aist builds its extension IDL (libraries rtmCamera2, rtmManipulator2) with the core IDL of
+# rtm/idl as dependencies, so their Skel headers include every core Skel header first; users of the
+# extension types may rely on that.
+set(rtsdk_core_idl BasicDataType DataPort DataPort_OpenRTM ExtendedDataTypes InterfaceDataTypes Manager
+    OpenRTM RTC SDOPackage ExtendedFsmService SharedMemory)
+set(rtsdk_extension_idl CameraCommonInterface ManipulatorCommonInterface_Common
+    ManipulatorCommonInterface_DataTypes ManipulatorCommonInterface_Middle)
+set(rtsdk_core_skel_includes "")
+foreach(core IN LISTS rtsdk_core_idl)
+    string(APPEND rtsdk_core_skel_includes "#include <rtm/idl/${core}Skel.h>\n")
+endforeach()
 set(rtsdk_idl_headers "")
 foreach(idl IN LISTS rtsdk_idl_files)
     get_filename_component(RTSDK_IDL_NAME "${idl}" NAME_WE)
     foreach(RTSDK_WRAPPER_KIND Skel Stub)
+        set(RTSDK_WRAPPER_DEPENDENCIES "")
+        set(RTSDK_WRAPPER_UTILITY "")
+        # As OpenRTM-aist's, the Skel wrapper brings the copyData() specialisations of the IDL's types.
+        if(RTSDK_WRAPPER_KIND STREQUAL "Skel"
+           AND EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/${RTSDK_IDL_NAME}Util.h")
+            set(RTSDK_WRAPPER_UTILITY "#include <rtm/idl/${RTSDK_IDL_NAME}Util.h>\n")
+        endif()
+        if(RTSDK_WRAPPER_KIND STREQUAL "Skel" AND RTSDK_IDL_NAME IN_LIST rtsdk_extension_idl)
+            set(RTSDK_WRAPPER_DEPENDENCIES "${rtsdk_core_skel_includes}")
+        endif()
         string(TOUPPER "RTM_IDL_${RTSDK_IDL_NAME}${RTSDK_WRAPPER_KIND}_H" RTSDK_WRAPPER_GUARD)
         configure_file("${rtsdk_package_dir}/idlwrapper.h.in"
             "${rtsdk_generated}/rtm/idl/${RTSDK_IDL_NAME}${RTSDK_WRAPPER_KIND}.h" @ONLY)
@@ -126,6 +152,15 @@ foreach(tool rtm2-skelwrapper rtm-skelwrapper)
     list(APPEND rtsdk_tools "${rtsdk_prefix}/bin/${tool}")
 endforeach()
 
+# OpenRTM-aist's extension libraries by name. A linker script names a library relative to its own
+# folder, so these follow the prefix wherever it is copied.
+set(rtsdk_extension_libraries "")
+foreach(extension rtmCamera2 rtmManipulator2 rtmCamera rtmManipulator)
+    set(RTSDK_EXTENSION_LIBRARY ${extension})
+    configure_file("${rtsdk_package_dir}/extensionlibrary.ld.in" "${rtsdk_prefix}/lib/lib${extension}.so" @ONLY)
+    list(APPEND rtsdk_extension_libraries "${rtsdk_prefix}/lib/lib${extension}.so")
+endforeach()
+
 # --- The build-tree prefix: headers and omniidl output are copied at build time, so edits to the
 # headers reach users' builds without re-running CMake.
 file(MAKE_DIRECTORY "${rtsdk_prefix}/include/${RTSDK_RTM_DIR}/rtm/ext"
@@ -147,6 +182,7 @@ add_dependencies(rtsdk_stage rtcorba_stubs)
 # --- The installed prefix.
 set(rtsdk_include_rtm "include/${RTSDK_RTM_DIR}/rtm")
 install(TARGETS rtsdk LIBRARY DESTINATION lib COMPONENT sdk)
+install(FILES ${rtsdk_extension_libraries} DESTINATION lib COMPONENT sdk)
 install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/" "${rtsdk_generated}/rtm/"
     DESTINATION "${rtsdk_include_rtm}" COMPONENT sdk FILES_MATCHING PATTERN "*.h")
 foreach(coil_dir coil-2.1 coil-2.0)
@@ -154,6 +190,8 @@ foreach(coil_dir coil-2.1 coil-2.0)
         DESTINATION "include/${coil_dir}/coil" COMPONENT sdk FILES_MATCHING PATTERN "*.h")
 endforeach()
 install(FILES ${rtsdk_idl_files} ${rtsdk_idl_headers} DESTINATION "${rtsdk_include_rtm}/idl" COMPONENT sdk)
+install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/include/hrtm/" DESTINATION "include/${RTSDK_RTM_DIR}/hrtm"
+    COMPONENT sdk FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY "${rtsdk_runtime_headers_dir}/" DESTINATION "include/${RTSDK_RTM_DIR}/rtmruntime"
     COMPONENT sdk FILES_MATCHING PATTERN "*.h" PATTERN "builtins" EXCLUDE)
 install(DIRECTORY DESTINATION "${rtsdk_include_rtm}/ext" COMPONENT sdk)

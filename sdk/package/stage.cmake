@@ -3,7 +3,7 @@
 # Copies only what changed, so users' builds against the build tree recompile only after real edits, and
 # removes staged headers whose source is gone.
 #
-#   RTSDK_SOURCE_INCLUDE     sdk/include (rtm/, coil/)
+#   RTSDK_SOURCE_INCLUDE     sdk/include (rtm/, coil/, hrtm/)
 #   RTSDK_RUNTIME_HEADERS    the runtime's headers (manager/), included by rtm/*.h as <rtmruntime/…>
 #   RTSDK_GENERATED_INCLUDE  configure-time headers (rtm/config_rtc.h, rtm/version.h, rtm/idl/*.h)
 #   RTSDK_IDL_DIR            the bundled IDL files
@@ -67,6 +67,7 @@ foreach(file IN LISTS idl_files)
 endforeach()
 
 rtsdk_mirror("${RTSDK_RUNTIME_HEADERS}" "${include}/${RTSDK_RTM_DIR}/rtmruntime" FLAT)
+rtsdk_mirror("${RTSDK_SOURCE_INCLUDE}/hrtm" "${include}/${RTSDK_RTM_DIR}/hrtm")
 
 foreach(coil coil-2.1 coil-2.0)
     file(MAKE_DIRECTORY "${include}/${coil}/coil")

@@ -94,19 +94,6 @@ SDOPackage::NVList toNVList(const coil::Properties &prop)
 
 } // namespace Sdk
 
-ByteDataStreamBase::ByteDataStreamBase() = default;
-ByteDataStreamBase::~ByteDataStreamBase() = default;
-
-void ByteDataStreamBase::init(const coil::Properties &prop)
-{
-    (void)prop; // a plain stream has no settings; serializers override this
-}
-
-void ByteDataStreamBase::isLittleEndian(bool little_endian)
-{
-    (void)little_endian; // a plain stream holds bytes as they are; serializers override this
-}
-
 ConnectorListenersBase::~ConnectorListenersBase() = default;
 
 // --- InPortConnector ---

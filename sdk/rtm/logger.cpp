@@ -137,11 +137,13 @@ void LoggerSink::write(int level, const std::string &name, const std::string &te
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     std::tm local{};
     localtime_r(&now, &local);
+    std::ostringstream date;
+    date << std::put_time(&local, "%b %d %H:%M:%S");
     std::ostringstream line;
-    line << std::put_time(&local, "%b %d %H:%M:%S") << ' ' << names[std::clamp(level, 0, 8)] << ": " << name << ": "
-         << text << '\n';
+    line << date.str() << ' ' << names[std::clamp(level, 0, 8)] << ": " << name << ": " << text << '\n';
     const std::string bytes = line.str();
     std::lock_guard<std::mutex> lock(m_mutex);
+    m_streams.write(level, name, date.str(), text);
     for (const auto &file : m_files)
         file->write(bytes.data(), std::streamsize(bytes.size())).flush();
     if (m_stdout)

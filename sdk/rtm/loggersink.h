@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <coil/Logger.h>
+
 #include <properties.h>
 
 #include <fstream>
@@ -25,6 +27,8 @@ public:
     void configure(const Runtime::Properties &config);
     int level();
     void write(int level, const std::string &name, const std::string &text);
+    /// Receives every line written too (with its date apart), passing it to the streams added to it.
+    coil::LogStreamBuffer &streams() { return m_streams; }
 
 private:
     std::mutex m_mutex;
@@ -33,6 +37,7 @@ private:
     std::vector<std::unique_ptr<std::ofstream>> m_files;
     bool m_stdout = false;
     bool m_stderr = true;
+    coil::LogStreamBuffer m_streams;
 };
 
 } // namespace RTC::Sdk

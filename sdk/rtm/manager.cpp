@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // RTC::Manager: OpenRTM-aist's manager interface on the runtime's Runtime::Manager.
 #include <rtm/Manager.h>
+#include <rtm/ManagerServant.h>
+#include <rtm/NamingManager.h>
 #include <rtm/RTObject.h>
 
 #include "loggersink.h"
@@ -9,6 +11,9 @@
 
 #include <componentfactory.h>
 #include <corbautil.h>
+#include <createrequest.h>
+#include <executioncontext.h>
+#include <executioncontextfactory.h>
 #include <manager.h>
 #include <managerconfig.h>
 
@@ -19,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <sstream>
 #include <thread>
 
 namespace RTC {
@@ -60,6 +66,13 @@ RTObject_impl *localServant(PortableServer::POA_ptr poa, CORBA::Object_ptr objec
     }
 }
 
+/// A failure the caller only sees as a null or false: logged and printed, so that it is never silent.
+void reportError(Logger &rtclog, const std::string &message)
+{
+    RTC_ERROR_STR(message);
+    std::cerr << message << std::endl;
+}
+
 } // namespace
 
 struct Manager::Private
@@ -74,6 +87,45 @@ struct Manager::Private
     std::condition_variable stopped;
     bool running = false;
     bool finished = false;
+    std::unique_ptr<NamingManager> naming;
+    std::unique_ptr<RTM::ManagerServant> servant;
+    /// Instance names of components notifyFinalized() reported, for cleanupComponents().
+    std::vector<std::string> finalized;
+    coil::Timer<coil::PeriodicFunction> scheduler;
+    coil::Timer<coil::DelayedFunction> invoker;
+    /// Ticks scheduler and invoker every `timer.tick`; started by the first addTask() / invoke().
+    std::thread timerThread;
+    std::condition_variable timerWake;
+    bool timerStopping = false;
+
+    void startTimer(std::chrono::nanoseconds tick)
+    {
+        // mutex held
+        if (timerThread.joinable())
+            return;
+        timerThread = std::thread([this, tick] {
+            std::unique_lock lock(mutex);
+            while (!timerStopping) {
+                timerWake.wait_for(lock, tick, [this] { return timerStopping; });
+                if (timerStopping)
+                    break;
+                lock.unlock();
+                invoker.tick(tick);
+                scheduler.tick(tick);
+                lock.lock();
+            }
+        });
+    }
+    void stopTimer()
+    {
+        {
+            std::lock_guard lock(mutex);
+            timerStopping = true;
+        }
+        timerWake.notify_all();
+        if (timerThread.joinable() && timerThread.get_id() != std::this_thread::get_id())
+            timerThread.join();
+    }
 };
 
 Manager::Manager()
@@ -83,7 +135,51 @@ Manager::Manager()
 
 Manager::~Manager()
 {
+    d->stopTimer();
     delete d;
+}
+
+namespace {
+
+std::chrono::nanoseconds timerTick(coil::Properties &config)
+{
+    double seconds = 0.1;
+    try {
+        const std::string text = config.getProperty("timer.tick");
+        if (!text.empty())
+            seconds = std::stod(text);
+    } catch (...) {
+        // An unreadable tick keeps OpenRTM's default.
+    }
+    if (!(seconds > 0.0))
+        seconds = 0.1;
+    return std::chrono::nanoseconds(static_cast<long long>(seconds * 1e9));
+}
+
+} // namespace
+
+Manager::TaskId Manager::addTask(std::function<void(void)> fn, std::chrono::nanoseconds period)
+{
+    TaskId id = d->scheduler.emplace(std::move(fn), period);
+    std::lock_guard lock(d->mutex);
+    d->startTimer(timerTick(d->config));
+    return id;
+}
+
+void Manager::invoke(std::function<void(void)> fn, std::chrono::nanoseconds delay)
+{
+    d->invoker.emplace(std::move(fn), delay);
+    std::lock_guard lock(d->mutex);
+    d->startTimer(timerTick(d->config));
+}
+
+bool Sdk::adoptManager(Manager *manager)
+{
+    std::lock_guard lock(instanceMutex);
+    if (theInstance != nullptr)
+        return false;
+    theInstance = manager;
+    return true;
 }
 
 Manager *Manager::attach(Runtime::Manager *runtime)
@@ -152,6 +248,7 @@ void Manager::shutdown()
     if (d->runtime == nullptr)
         return;
     d->actions.each(d->actions.manager, [](RTM::ManagerActionListener &l) { l.preShutdown(); });
+    d->stopTimer();
     d->runtime->shutdown();
 }
 
@@ -276,6 +373,18 @@ std::vector<coil::Properties> Manager::getFactoryProfiles()
     return toCoilList(d->runtime->factoryProfiles());
 }
 
+bool Manager::registerECFactory(const char *name, ECNewFunc new_func, ECDeleteFunc delete_func)
+{
+    if (name == nullptr || new_func == nullptr)
+        return false;
+    // Contexts go with the component that owns them (through the POA), so any context the
+    // factory is asked to delete is deleted as an ExecutionContextBase.
+    (void)delete_func;
+    return ExecutionContextFactory::instance().addFactory(
+               name, new_func, coil::Destructor<ExecutionContextBase, ExecutionContextBase>)
+           == coil::FactoryReturn::OK;
+}
+
 std::vector<std::string> Manager::getModulesFactories()
 {
     std::vector<std::string> ids;
@@ -329,6 +438,107 @@ std::vector<RTObject_impl *> Manager::getComponents()
             result.push_back(component);
     }
     return result;
+}
+
+ExecutionContextBase *Manager::createContext(const char *ec_args)
+{
+    if (ec_args == nullptr || *ec_args == '\0')
+        return nullptr;
+    std::string error;
+    const std::optional<Runtime::CreateRequest> request = Runtime::CreateRequest::parse(ec_args, &error);
+    if (!request) {
+        reportError(getLogbuf(), "createContext: " + error);
+        return nullptr;
+    }
+    Runtime::Properties properties = d->runtime != nullptr ? d->runtime->configuration() : Runtime::Properties();
+    properties.merge(request->properties);
+    std::string type = request->implementationId;
+    const std::string refusal = Runtime::ExecutionContextFactory::instance().check(type);
+    if (!refusal.empty()) {
+        reportError(getLogbuf(), "createContext: " + refusal);
+        return nullptr;
+    }
+    ExecutionContextBase *context = ExecutionContextFactory::instance().createObject(type);
+    if (context == nullptr) {
+        reportError(getLogbuf(), "createContext: execution context type '" + type
+                                     + "' is the runtime's own, not an RTC::ExecutionContextBase");
+        return nullptr;
+    }
+    coil::Properties props = Sdk::toCoil(properties);
+    context->init(props);
+    return context;
+}
+
+bool Manager::registerComponent(RTObject_impl *comp)
+{
+    if (comp == nullptr || d->runtime == nullptr)
+        return false;
+    std::string error;
+    if (!d->runtime->adoptComponent(comp, &error)) {
+        reportError(getLogbuf(), "registerComponent: " + error);
+        return false;
+    }
+    return true;
+}
+
+bool Manager::unregisterComponent(RTObject_impl *comp)
+{
+    return comp != nullptr && d->runtime != nullptr && d->runtime->releaseComponent(comp);
+}
+
+void Manager::notifyFinalized(RTObject_impl *comp)
+{
+    if (comp == nullptr)
+        return;
+    std::lock_guard lock(d->mutex);
+    d->finalized.push_back(comp->getInstanceName());
+}
+
+void Manager::cleanupComponents()
+{
+    std::vector<std::string> names;
+    {
+        std::lock_guard lock(d->mutex);
+        names.swap(d->finalized);
+    }
+    for (const std::string &name : names)
+        d->runtime->deleteComponent(name, nullptr);
+}
+
+void Manager::cleanupComponent(RTObject_impl *comp)
+{
+    unregisterComponent(comp);
+}
+
+PortableServer::POA_ptr Manager::getShortCutPOA()
+{
+    return getPOA();
+}
+
+RTM::ManagerServant &Manager::getManagerServant()
+{
+    std::lock_guard lock(d->mutex);
+    if (!d->servant)
+        d->servant = std::make_unique<RTM::ManagerServant>();
+    return *d->servant;
+}
+
+NamingManager *Manager::getNaming()
+{
+    std::lock_guard lock(d->mutex);
+    if (!d->naming) {
+        d->naming = std::make_unique<NamingManager>(this);
+        const std::string servers = d->config.getProperty("corba.nameservers");
+        std::stringstream list(servers);
+        std::string server;
+        while (std::getline(list, server, ',')) {
+            server.erase(0, server.find_first_not_of(" \t"));
+            server.erase(server.find_last_not_of(" \t") + 1);
+            if (!server.empty())
+                d->naming->registerNameServer("corba", server.c_str());
+        }
+    }
+    return d->naming.get();
 }
 
 CORBA::ORB_ptr Manager::getORB()
@@ -404,6 +614,11 @@ Logger &Manager::getLogbuf(const std::string &name)
     if (!logger)
         logger = std::make_unique<Logger>(name);
     return *logger;
+}
+
+LogStreamBuf &Manager::getLogStreamBuf()
+{
+    return Sdk::LoggerSink::instance().streams();
 }
 
 std::string &Manager::getLogLevel()

@@ -3,8 +3,8 @@
 set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferStatus.h
-    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteData.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteDataStreamBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteData.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CdrBufferBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CdrRingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ComponentActionListener.h
@@ -12,7 +12,12 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigurationListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_CdrMemoryStream.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_IORUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_RTCUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CORBA_SeqUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CorbaConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CorbaNaming.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CorbaPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataFlowComponentBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataInPort.h
@@ -21,11 +26,23 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectInPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectOutPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataTypeUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DefaultConfiguration.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DefaultPeriodicTask.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ECFactory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/EventPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataOutPort.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextProfile.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExecutionContextWorker.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ExtTrigExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Factory.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FactoryInit.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/FsmActionListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/BasicDataTypeUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/CameraCommonInterfaceUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/InterfaceDataTypesUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortConnector.h
@@ -43,9 +60,22 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMProvider.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ListenerHolder.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LocalServiceBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamFile.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Manager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerActionListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerConfig.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerServant.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ModuleManager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NVUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingManager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingServiceNumberingPolicy.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NodeNumberingPolicy.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NumberingPolicy.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NumberingPolicyBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ObjectManager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OpenHRPExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortConnector.h
@@ -62,6 +92,8 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMConsumer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMProvider.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortAdmin.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicExecutionContext.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicTaskFactory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortCallback.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortConnectListener.h
@@ -70,14 +102,19 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherNew.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherPeriodic.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTC.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTCUtil.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObjectStateMachine.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceConsumerBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceProviderBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SharedMemoryPort.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SimulatorExecutionContext.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StateMachine.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StaticFSM.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SystemLogger.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Timestamp.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Typename.h
 )
 set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sdkinternal.h
@@ -99,8 +136,22 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbaiorutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbanaming.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbartcutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbauri.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/datatypeutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/nvutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/rtcutil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sequtil.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/bytedatastream.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/executioncontexts.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/namingmanager.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/managerinternals.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ecworker.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/logstreamfile.cpp
 )
 # The runtime headers the public headers build on, installed as <rtmruntime/…>.
 set(SDK_RUNTIME_HEADERS
-    configadmin.h dataport.h inport.h inportconnector.h outport.h outportconnector.h portbase.h
-    properties.h ringbuffer.h rtobject.h serviceport.h)
+    configadmin.h dataport.h executioncontext.h inport.h inportconnector.h outport.h outportconnector.h portbase.h
+    properties.h ringbuffer.h rtobject.h serviceport.h triggeredexecutioncontext.h)

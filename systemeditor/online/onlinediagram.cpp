@@ -93,7 +93,13 @@ OnlineDiagram::OnlineDiagram(OnlineSession *session, QWidget *parent)
     connect(m_model, &SystemModel::connectorRemoved, this, &OnlineDiagram::keepDiagramInView);
 }
 
-OnlineDiagram::~OnlineDiagram() = default;
+OnlineDiagram::~OnlineDiagram()
+{
+    // A plan still waiting (a SYNC wait may have no timeout) ends with its tab instead of holding
+    // the deployment worker; the calls of a batch of single actions are still made.
+    if (m_batch.plan)
+        *m_batch.cancelled = true;
+}
 
 void OnlineDiagram::buildUi()
 {
@@ -399,24 +405,41 @@ void OnlineDiagram::performAll(Action action)
 {
     if (m_batch.running())
         return;
+    if (m_system && (action == Action::Start || action == Action::Stop)) {
+        runSystemPlan(action);
+        return;
+    }
     static const char *const doing[] = {QT_TR_NOOP("Activating"), QT_TR_NOOP("Deactivating"),
                                         QT_TR_NOOP("Resetting"), QT_TR_NOOP("Exiting"),
                                         QT_TR_NOOP("Starting"), QT_TR_NOOP("Stopping")};
     const QStringList instances = m_live.keys();
     if (instances.isEmpty())
         return;
+    startBatch(int(instances.size()), tr(doing[int(action)]));
+    m_status->setText(tr("%1 %n component(s)…", nullptr, m_batch.total).arg(m_batch.doing));
+    for (const QString &instance : instances)
+        submitAction(action, instance, m_batch.cancelled);
+}
+
+void OnlineDiagram::startBatch(int total, const QString &doing)
+{
     m_batch = Batch();
-    m_batch.total = int(instances.size());
-    m_batch.doing = tr(doing[int(action)]);
+    m_batch.total = total;
+    m_batch.doing = doing;
     m_batch.cancelled = std::make_shared<std::atomic_bool>(false);
     m_batchBar->setRange(0, m_batch.total);
     m_batchBar->setValue(0);
     m_batchBar->show();
     m_batchCancel->setEnabled(true);
     m_batchCancel->show();
-    m_status->setText(tr("%1 %n component(s)…", nullptr, m_batch.total).arg(m_batch.doing));
-    for (const QString &instance : instances)
-        submitAction(action, instance, m_batch.cancelled);
+}
+
+void OnlineDiagram::endBatch(const QString &summary)
+{
+    m_batchBar->hide();
+    m_batchCancel->hide();
+    m_batch = Batch();
+    emit allFinished(summary);
 }
 
 void OnlineDiagram::cancelAll()
@@ -425,12 +448,14 @@ void OnlineDiagram::cancelAll()
         return;
     *m_batch.cancelled = true;
     m_batchCancel->setEnabled(false);
-    m_status->setText(tr("Cancelling: the calls under way finish, the others are not made…"));
+    m_status->setText(m_batch.plan
+                          ? tr("Cancelling: the waits end, the actions not yet sent are not made…")
+                          : tr("Cancelling: the calls under way finish, the others are not made…"));
 }
 
 void OnlineDiagram::batchStepDone(bool ok, bool skipped)
 {
-    if (!m_batch.running())
+    if (!m_batch.running() || m_batch.plan)
         return;
     ++m_batch.done;
     m_batch.failed += ok ? 0 : 1;
@@ -438,8 +463,6 @@ void OnlineDiagram::batchStepDone(bool ok, bool skipped)
     m_batchBar->setValue(m_batch.done);
     if (m_batch.done < m_batch.total)
         return;
-    m_batchBar->hide();
-    m_batchCancel->hide();
     const int made = m_batch.total - m_batch.skipped;
     QString summary = tr("%1: %2 of %n component(s) done", nullptr, m_batch.total)
                           .arg(m_batch.doing)
@@ -450,8 +473,7 @@ void OnlineDiagram::batchStepDone(bool ok, bool skipped)
         summary += tr(", %n cancelled", nullptr, m_batch.skipped);
     if (m_batch.failed == 0)
         m_status->setText(summary + QLatin1Char('.'));
-    m_batch = Batch();
-    emit allFinished(summary);
+    endBatch(summary);
 }
 
 void OnlineDiagram::monitorPort(const QString &instanceName, const QString &portName)

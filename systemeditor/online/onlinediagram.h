@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "componentmapper.h"
 #include "componentproxy.h"
 #include "connectordialog.h"
 #include "connectorsettings.h"
 #include "corbatypes.h"
+#include "deployreport.h"
 #include "rtsprofile.h"
 
 #include <atomic>
@@ -97,10 +99,27 @@ public:
     int portReads() const { return m_portReads; }
 
     void perform(Action action, const QString &instanceName);
-    /// `action` on every component of the diagram, with a progress bar and Cancel (the calls not
-    /// yet made are skipped); allFinished() says how it went.
+    /**
+     * `action` on every component of the diagram, with a progress bar and Cancel (the calls not
+     * yet made are skipped); allFinished() says how it went. On a diagram that shows a saved
+     * system (setSystem()), Start and Stop run that system's plan instead (see setSystem()).
+     */
     void performAll(Action action);
     void cancelAll();
+
+    /**
+     * The saved system this diagram shows (Online → Open System Online). From then on Start All
+     * and Stop All run its plan with the deployment engine, as `rtctl start` / `rtctl stop` do:
+     * the StartUp and Activation (Deactivation and ShutDown) blocks in their order, with their
+     * WaitTime and Preceding conditions, the profile's components mapped onto the live system
+     * under `options` when the plan starts. The plan runs off the GUI thread; planStep() reports
+     * its steps, Cancel ends its waits and the actions not yet sent, and allFinished() carries
+     * the engine's message when it failed. Without a system, Start and Stop All start and stop
+     * every component's contexts one by one.
+     */
+    void setSystem(const Profile::RtsProfile &profile, const Deploy::TargetOptions &options);
+    /// True when Start All and Stop All run a saved system's plan.
+    bool hasSystemPlan() const { return m_system.has_value(); }
 
     /// Asks for the settings of a new data connector (default: the ConnectorDialog, modal).
     using ConnectorEditor = std::function<std::optional<ConnectorSettings>(
@@ -136,6 +155,8 @@ signals:
     void actionFinished(const QString &instanceName, const QString &error);
     /// A performAll() ended: how many components were done, failed or skipped by Cancel.
     void allFinished(const QString &summary);
+    /// A step of a running start / stop plan changed (delivered in the GUI thread, in order).
+    void planStep(const Deploy::DeployStep &step);
     /// A live connect or disconnect finished; `error` is empty on success.
     void connectionFinished(const QString &error);
     /// saveLiveSystem() finished: `error` is empty when the file was written; `warnings` name
@@ -166,13 +187,27 @@ private:
         int skipped = 0;
         QString doing;
         std::shared_ptr<std::atomic_bool> cancelled;
+        bool plan = false; ///< a saved system's start / stop plan, not one call per component
+        QStringList waiting; ///< the plan's components waiting for time or for others
         bool running() const { return total > 0; }
+    };
+
+    /// What setSystem() gave: the saved system and where its components are looked up.
+    struct SystemPlan
+    {
+        Profile::RtsProfile profile;
+        Deploy::TargetOptions options;
     };
 
     void buildUi();
     void submitAction(Action action, const QString &instanceName,
                       const std::shared_ptr<std::atomic_bool> &cancelled);
     void batchStepDone(bool ok, bool skipped);
+    void startBatch(int total, const QString &doing);
+    void endBatch(const QString &summary);
+    void runSystemPlan(Action action);
+    void showPlanStep(const Deploy::DeployStep &step);
+    void finishSystemPlan(const OnlineResult &result);
     QString hostOf(const Live &live) const;
     struct PollRequest
     {
@@ -200,6 +235,7 @@ private:
     bool filterViewEvent(QEvent *event);
 
     OnlineSession *m_session;
+    std::optional<SystemPlan> m_system;
     Batch m_batch;
     QProgressBar *m_batchBar = nullptr;
     QPushButton *m_batchCancel = nullptr;
@@ -222,3 +258,4 @@ private:
 } // namespace SystemEditor
 
 Q_DECLARE_METATYPE(SystemEditor::LiveComponentPoll)
+Q_DECLARE_METATYPE(Deploy::DeployStep)

@@ -13,9 +13,13 @@
 #ifndef COIL_ASYNC_H
 #define COIL_ASYNC_H
 
+#include <coil/PeriodicTask.h>
 #include <coil/Task.h>
 
+#include <iostream>
 #include <mutex>
+#include <utility>
+#include <vector>
 
 namespace coil {
 /*! An asynchronous call running in its own thread. */
@@ -30,6 +34,36 @@ public:
     virtual bool finished() = 0;
     /*! Waits for the call to return and deletes this object. */
     virtual void exit() = 0;
+};
+
+/*!
+ * Deletes finished calls in the background: add() a call that is to go once it has returned
+ * (the calls made with auto_delete delete themselves and need not be added).
+ */
+class DeleteAsyncThread
+{
+public:
+    DeleteAsyncThread();
+    /*! Stops the background sweep and deletes the calls that are still listed, waiting for them. */
+    ~DeleteAsyncThread();
+    /*! Starts the background sweep (add() does so too). */
+    void activate();
+    /*! One sweep: deletes the listed calls that have finished. */
+    int svc();
+    /*! Lists @p thread for deletion once it has finished. */
+    void add(Async *thread);
+    /*! The shared instance (instance() creates it). */
+    static DeleteAsyncThread *delasync;
+    /*! Guards the creation of the shared instance. */
+    static std::mutex mutex;
+    /*! The shared instance, created on the first call. */
+    static DeleteAsyncThread *instance();
+
+private:
+    std::vector<Async *> m_threads;
+    std::mutex m_mutex;
+    PeriodicTask m_task;
+    bool m_active;
 };
 
 namespace detail {

@@ -14,6 +14,11 @@
 /*! The dlopen() mode used when none is given. */
 #define COIL_DEFAULT_DYNLIB_MODE RTLD_LAZY
 
+extern "C" {
+/*! coil::DynamicLib::ForExternTest() under a C name, for dlsym() checks on the library itself. */
+int ForExternTest(void);
+}
+
 namespace coil {
 /*! A handle on a shared library opened with dlopen(). */
 class DynamicLib
@@ -37,6 +42,8 @@ public:
     void *symbol(const char *symbol_name);
     /*! The last dlopen/dlsym error text, or null. */
     static const char *error();
+    /*! A fixed value (0xdeadbeef) that tests look up to check that a library loaded. */
+    static int ForExternTest() { return static_cast<int>(0xdeadbeef); }
 
 private:
     std::string m_name;

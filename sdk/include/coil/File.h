@@ -10,7 +10,12 @@
 #include <coil/stringutil.h>
 
 #include <libgen.h> // may define basename as a macro: coil::basename below follows it
+#include <cstdio>
+#include <cstring>
+#include <dirent.h>
 #include <string>
+#include <sys/stat.h>
+#include <sys/types.h>
 
 namespace coil {
 /*! The last part of @p path (implementation of coil::basename). */

@@ -9,11 +9,15 @@
 #include <coil/PeriodicTaskBase.h>
 #include <coil/TimeMeasure.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <functional>
+#include <map>
 #include <mutex>
+#include <string>
+#include <vector>
 
 namespace coil {
 /*!

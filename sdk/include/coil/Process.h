@@ -7,8 +7,12 @@
 #define COIL_PROCESS_H
 
 #include <coil/config_coil.h>
+#include <coil/stringutil.h>
 
+#include <cstdlib>
+#include <libgen.h>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace coil {

@@ -8,6 +8,7 @@
 
 #include <coil/config_coil.h>
 
+#include <csignal>
 #include <signal.h>
 
 namespace coil {

@@ -6,6 +6,8 @@
 #ifndef COIL_SINGLETON_H
 #define COIL_SINGLETON_H
 
+#include <mutex>
+
 namespace coil {
 /*!
  * Derive as `class X : public coil::Singleton<X>` (with `friend class coil::Singleton<X>;`
@@ -16,6 +18,16 @@ template<class SingletonClass> class Singleton
 {
 public:
     typedef SingletonClass *SingletonClassPtr;
+
+    /*!
+     * Holds an object and deletes it when destroyed (OpenRTM-aist keeps its instances in one;
+     * instance() here never deletes its object, so that it outlives every static user).
+     */
+    struct Container
+    {
+        SingletonClass *x;
+        ~Container() { delete x; }
+    };
 
     /*! The instance, created on the first call. */
     static SingletonClass &instance()

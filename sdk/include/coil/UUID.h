@@ -8,6 +8,17 @@
 
 #include <coil/config_coil.h>
 
+#include <cstring>
+
+// OpenRTM-aist's UUID.h includes libuuid's header; where it is installed, so does this one, and
+// coil::UUID can then be made from a libuuid uuid_t.
+#if defined(__has_include)
+#if __has_include(<uuid/uuid.h>)
+#include <uuid/uuid.h>
+#define COIL_UUID_HAS_LIBUUID 1
+#endif
+#endif
+
 namespace coil {
 /*! A random UUID (RFC 4122 version 4). */
 class UUID
@@ -15,6 +26,14 @@ class UUID
 public:
     /*! A new random UUID. */
     UUID();
+#ifdef COIL_UUID_HAS_LIBUUID
+    /*! The UUID held in @p uuid. */
+    explicit UUID(uuid_t *uuid)
+        : m_text()
+    {
+        std::memcpy(m_bytes, *uuid, sizeof(m_bytes));
+    }
+#endif
     /*! The UUID as 36 characters, e.g. "1b4e28ba-2fa1-41d2-883f-0016d3cca427". */
     const char *to_string();
 

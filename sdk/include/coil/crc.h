@@ -7,6 +7,7 @@
 #define COIL_CRC_H
 
 #include <cstddef>
+#include <sys/types.h>
 
 namespace coil {
 /*! CRC-16/CCITT (polynomial 0x1021, initial value 0xFFFF, no reflection, no final XOR). */

@@ -3,14 +3,24 @@
 #ifndef RTM_MANAGER_H
 #define RTM_MANAGER_H
 
-#include <rtm/Factory.h>
-#include <rtm/ManagerActionListener.h>
 #include <rtm/RTC.h>
+
+#include <rtm/Factory.h>
+#include <rtm/ECFactory.h>
+#include <rtm/ObjectManager.h>
 #include <rtm/SystemLogger.h>
+#include <rtm/ManagerActionListener.h>
 
 #include <coil/Properties.h>
+#include <coil/Timer.h>
+#include <coil/Signal.h>
 
+#include <atomic>
+#include <functional>
+#include <list>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace Runtime
@@ -18,9 +28,15 @@ namespace Runtime
 class Manager;
 }
 
+namespace RTM
+{
+class ManagerServant;
+}
+
 namespace RTC
 {
 class Manager;
+class NamingManager;
 using ModuleInitProc = void (*)(Manager *manager);
 
 /**
@@ -60,6 +76,17 @@ public:
     /// Runs until shutdown; with @p no_block true returns at once and runs in the background.
     void runManager(bool no_block = false);
 
+    using TaskId = coil::Timer<coil::PeriodicFunction>::TaskId;
+    /**
+     * Calls @p fn every @p period from the manager's timer thread (its resolution is
+     * `timer.tick` seconds, 0.1 by default) until removeTask().
+     */
+    TaskId addTask(std::function<void(void)> fn, std::chrono::nanoseconds period);
+    /// Stops the task @p id; it is not called again.
+    static void removeTask(TaskId id) { id->stop(); }
+    /// Calls @p fn once from the manager's timer thread, after @p delay.
+    void invoke(std::function<void(void)> fn, std::chrono::nanoseconds delay = std::chrono::seconds::zero());
+
     /// Loads module @p fname (searched in `manager.modules.load_path`) and calls @p initfunc
     /// (default `<file stem>Init`).
     ReturnCode_t load(const std::string &fname, const std::string &initfunc);
@@ -72,6 +99,12 @@ public:
     /// Registers a component type: @p profile has `implementation_id`, `type_name`, …, `conf.*`.
     bool registerFactory(coil::Properties &profile, RtcNewFunc new_func, RtcDeleteFunc delete_func);
     std::vector<coil::Properties> getFactoryProfiles();
+    /**
+     * Registers execution context type @p name (what `exec_cxt.periodic.type` names); false when
+     * the type is known already. The contexts @p new_func makes must derive from one of the
+     * built-in ones (their engine runs them).
+     */
+    bool registerECFactory(const char *name, ECNewFunc new_func, ECDeleteFunc delete_func);
     std::vector<std::string> getModulesFactories();
 
     /**
@@ -83,6 +116,20 @@ public:
     void deleteComponent(const char *instance_name);
     RTObject_impl *getComponent(const char *instance_name);
     std::vector<RTObject_impl *> getComponents();
+    /// A new (not started) execution context from `Type[?key=value&…]` (exec_cxt.periodic.rate, …); null
+    /// and a message naming the known types when the type is unknown.
+    ExecutionContextBase *createContext(const char *ec_args);
+    /// Lists @p comp (created and initialized by the program) with the manager and binds its
+    /// names, as components the manager creates; false when its instance name is taken.
+    bool registerComponent(RTObject_impl *comp);
+    /// Unlists @p comp and unbinds its names; the object stays its caller's.
+    bool unregisterComponent(RTObject_impl *comp);
+    /// Notes that @p comp was finalized: cleanupComponents() deletes it.
+    void notifyFinalized(RTObject_impl *comp);
+    /// Deletes the components notifyFinalized() named.
+    void cleanupComponents();
+    /// Unlists and unbinds @p comp at once.
+    void cleanupComponent(RTObject_impl *comp);
 
     CORBA::ORB_ptr getORB();
     CORBA::ORB_ptr theORB() { return getORB(); }
@@ -90,6 +137,14 @@ public:
     PortableServer::POA_ptr thePOA() { return getPOA(); }
     PortableServer::POAManager_ptr getPOAManager();
     PortableServer::POAManager_ptr thePOAManager() { return getPOAManager(); }
+    /// The POA of same-process shortcut calls: the root POA here (omniORB calls a servant in
+    /// the same process directly already).
+    PortableServer::POA_ptr theShortCutPOA() { return getShortCutPOA(); }
+    PortableServer::POA_ptr getShortCutPOA();
+    /// The manager's RTM::Manager object.
+    RTM::ManagerServant &getManagerServant();
+    /// The name services components are bound in (`corba.nameservers`).
+    NamingManager *getNaming();
 
     /// Listeners of the manager's actions; with @p autoclean the manager deletes them when removed.
     void addManagerActionListener(RTM::ManagerActionListener *listener, bool autoclean = true);
@@ -103,6 +158,9 @@ public:
     void addLocalServiceActionListener(RTM::LocalServiceActionListener *listener, bool autoclean = true);
     void removeLocalServiceActionListener(RTM::LocalServiceActionListener *listener);
 
+    /// Every line the loggers write also goes to this buffer and the streams added to it
+    /// (addStream(), e.g. a LogstreamFile's buffer).
+    LogStreamBuf &getLogStreamBuf();
     /// A logger named @p name with the manager's logging settings.
     Logger &getLogbuf(const std::string &name = "manager");
     std::string &getLogLevel();
@@ -110,10 +168,12 @@ public:
     /// The runtime manager underneath (for RT Studio's own tools).
     ::Runtime::Manager *runtime();
 
-private:
+protected:
+    // Protected for hrtm::ComponentManager, which becomes the process's manager in its place.
     Manager();
     ~Manager();
 
+private:
     struct Private;
     Private *d;
 };

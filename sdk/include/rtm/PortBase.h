@@ -3,6 +3,8 @@
 #ifndef RTM_PORTBASE_H
 #define RTM_PORTBASE_H
 
+#include <rtm/CORBA_SeqUtil.h>
+#include <rtm/NVUtil.h>
 #include <rtm/RTC.h>
 
 #include <rtmruntime/portbase.h>

@@ -4,6 +4,7 @@
 #ifndef RTM_SYSTEMLOGGER_H
 #define RTM_SYSTEMLOGGER_H
 
+#include <coil/Logger.h>
 #include <coil/stringutil.h>
 
 #include <mutex>
@@ -13,6 +14,9 @@
 
 namespace RTC
 {
+/// Where the loggers' lines go besides the configured files (RTC::Manager::getLogStreamBuf()).
+using LogStreamBuf = ::coil::LogStreamBuffer;
+
 /**
  * A named log stream. Lines go where the manager's configuration says (`logger.enable`,
  * `logger.log_level`, `logger.file_name`; standard error when no file is named), each with the
