@@ -4,6 +4,7 @@
 // OnOverflow), the port API (names, profile, connectors), the component action listeners and
 // the port connect listeners, each at the moment OpenRTM-aist calls it, over real connections
 // between components of one manager.
+#include <rtm/CdrRingBuffer.h>
 #include <rtm/ComponentActionListener.h>
 #include <rtm/CorbaPort.h>
 #include <rtm/DataFlowComponentBase.h>
@@ -23,6 +24,8 @@
 #include <rtm/PortAdmin.h>
 #include <rtm/PortCallback.h>
 #include <rtm/PortConnectListener.h>
+#include <rtm/PublisherNew.h>
+#include <rtm/SdoServiceConsumerBase.h>
 #include <rtm/SdoServiceProviderBase.h>
 #include <rtm/SharedMemoryPort.h>
 
@@ -147,7 +150,9 @@ struct RecordOverflow : RTC::OnOverflow<RTC::TimedLong>
 /// A PortBase callback that logs its name and the connector's.
 struct RecordConnection : RTC::ConnectionCallback
 {
-    explicit RecordConnection(const char *what) : m_what(what) {}
+    explicit RecordConnection(const char *what)
+        : m_what(what)
+    { }
     void operator()(RTC::ConnectorProfile &profile) override
     {
         eventLog().add(std::string("callback ") + m_what + " " + profile.name.in());
@@ -400,6 +405,32 @@ private:
     SDOPackage::ServiceProfile m_profile;
 };
 
+/// An SDO service consumer the factory makes; it logs what happens to it.
+class LoggingSdoConsumer : public RTC::SdoServiceConsumerBase
+{
+public:
+    bool init(RTC::RTObject_impl &, const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        eventLog().add(std::string("consumer init ") + profile.id.in());
+        return true;
+    }
+    bool reinit(const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        eventLog().add(std::string("consumer reinit ") + profile.id.in());
+        return true;
+    }
+    const SDOPackage::ServiceProfile &getProfile() const override { return m_profile; }
+    void finalize() override
+    {
+        eventLog().add(std::string("consumer finalize ") + m_profile.id.in());
+    }
+
+private:
+    SDOPackage::ServiceProfile m_profile;
+};
+
 /// A stream of plain bytes, as serializers fill them.
 class BytesStream : public RTC::ByteDataStreamBase
 {
@@ -509,6 +540,7 @@ private slots:
     void transportObjectsPushOverCorbaCdr_data();
     void transportObjectsPushOverCorbaCdr();
     void transportObjectsPullOverCorbaCdr();
+    void transportsRegisterInTheirFactories();
     void unavailableTransportObjectsRefuse();
     void sdoServiceProvidersListed();
     void portAdminByName();
@@ -903,6 +935,28 @@ void TestSdkPorts::transportObjectsPullOverCorbaCdr()
     QCOMPARE(unmarshalled(received.m_bytes), 34L);
 }
 
+void TestSdkPorts::transportsRegisterInTheirFactories()
+{
+    InPortCorbaCdrProviderInit();
+    InPortSHMConsumerInit();
+    PublisherNewInit();
+    CdrRingBufferInit();
+    RTC::InPortProvider *provider
+        = RTC::InPortProviderFactory::instance().createObject("corba_cdr");
+    QVERIFY(dynamic_cast<RTC::InPortCorbaCdrProvider *>(provider));
+    RTC::InPortProviderFactory::instance().deleteObject(provider);
+    RTC::InPortConsumer *shm = RTC::InPortConsumerFactory::instance().createObject("shared_memory");
+    QVERIFY(dynamic_cast<RTC::InPortSHMConsumer *>(shm));
+    RTC::InPortConsumerFactory::instance().deleteObject(shm);
+    RTC::PublisherBase *publisher = RTC::PublisherFactory::instance().createObject("new");
+    QVERIFY(dynamic_cast<RTC::PublisherNew *>(publisher));
+    RTC::PublisherFactory::instance().deleteObject(publisher);
+    RTC::CdrBufferBase *buffer = RTC::CdrBufferFactory::instance().createObject("ring_buffer");
+    QVERIFY(dynamic_cast<RTC::CdrRingBuffer *>(buffer));
+    RTC::CdrBufferFactory::instance().deleteObject(buffer);
+    QVERIFY(!RTC::PublisherFactory::instance().createObject("nothing"));
+}
+
 void TestSdkPorts::unavailableTransportObjectsRefuse()
 {
     RTC::ByteData data;
@@ -944,10 +998,24 @@ void TestSdkPorts::sdoServiceProvidersListed()
     PortableServer::ObjectId_var id = poa->servant_to_id(&service);
     poa->deactivate_object(id);
 
-    // Consumers come from a factory the SDK does not have: refused, saying which type.
+    // Consumers come from their factory by interface type: an unknown type is refused, saying
+    // which.
     QVERIFY(!m_writer->addSdoServiceConsumer(profile));
     QTRY_VERIFY2_WITH_TIMEOUT(logText().contains("interface type 'IDL:RTStudioTests/Counting:1.0'"),
                               qPrintable(logText()), 5000);
+    RTC::SdoServiceConsumerFactory::instance().addFactory(
+        "IDL:RTStudioTests/Counting:1.0",
+        coil::Creator<RTC::SdoServiceConsumerBase, LoggingSdoConsumer>,
+        coil::Destructor<RTC::SdoServiceConsumerBase, LoggingSdoConsumer>);
+    eventLog().clear();
+    QVERIFY(m_writer->addSdoServiceConsumer(profile));
+    QVERIFY(m_writer->addSdoServiceConsumer(profile));
+    QVERIFY(m_writer->removeSdoServiceConsumer("counting"));
+    QVERIFY(!m_writer->removeSdoServiceConsumer("counting"));
+    QCOMPARE(eventLog().matching("consumer"),
+             (QStringList {"consumer init counting", "consumer reinit counting",
+                           "consumer finalize counting"}));
+    RTC::SdoServiceConsumerFactory::instance().removeFactory("IDL:RTStudioTests/Counting:1.0");
 }
 
 void TestSdkPorts::portAdminByName()
@@ -980,8 +1048,8 @@ void TestSdkPorts::portAdminByName()
 
 void TestSdkPorts::portCallbacksOnConnectAndDisconnect()
 {
-    RecordConnection publish("publish"), subscribe("subscribe"), connected("connected"), unsubscribe("unsubscribe"),
-        disconnected("disconnected");
+    RecordConnection publish("publish"), subscribe("subscribe"), connected("connected"),
+        unsubscribe("unsubscribe"), disconnected("disconnected");
     RTC::PortBase &port = m_reader->inPort();
     port.setOnPublishInterfaces(&publish);
     port.setOnSubscribeInterfaces(&subscribe);
@@ -991,15 +1059,18 @@ void TestSdkPorts::portCallbacksOnConnectAndDisconnect()
     eventLog().clear();
     QCOMPARE(connectWire(), RTC::RTC_OK);
     QCOMPARE(eventLog().matching("callback"),
-             (QStringList{"callback publish wire", "callback subscribe wire", "callback connected wire"}));
+             (QStringList {"callback publish wire", "callback subscribe wire",
+                           "callback connected wire"}));
     eventLog().clear();
     QCOMPARE(m_writer->outPort().disconnect(m_connectorId.c_str()), RTC::RTC_OK);
-    QCOMPARE(eventLog().matching("callback"), (QStringList{"callback unsubscribe wire", "callback disconnected wire"}));
+    QCOMPARE(eventLog().matching("callback"),
+             (QStringList {"callback unsubscribe wire", "callback disconnected wire"}));
     // Taken away, they are not called any more.
     port.setOnConnected(nullptr);
     eventLog().clear();
     QCOMPARE(connectWire(), RTC::RTC_OK);
-    QCOMPARE(eventLog().matching("callback"), (QStringList{"callback publish wire", "callback subscribe wire"}));
+    QCOMPARE(eventLog().matching("callback"),
+             (QStringList {"callback publish wire", "callback subscribe wire"}));
     port.setOnPublishInterfaces(nullptr);
     port.setOnSubscribeInterfaces(nullptr);
     port.setOnUnsubscribeInterfaces(nullptr);

@@ -534,5 +534,7 @@ void OutPortPullConnector::onDisconnect()
 
 void CdrRingBufferInit()
 {
-    // The SDK builds the ring buffer in: there is no buffer factory to register it in.
+    RTC::CdrBufferFactory::instance().addFactory(
+        "ring_buffer", ::coil::Creator<RTC::CdrBufferBase, RTC::CdrRingBuffer>,
+        ::coil::Destructor<RTC::CdrBufferBase, RTC::CdrRingBuffer>);
 }

@@ -703,20 +703,40 @@ void SharedMemoryPort::setEndian(::CORBA::Boolean endian)
 
 } // namespace RTC
 
-// OpenRTM-aist registers each transport in its factories here; the SDK's are built in.
-void InPortCorbaCdrProviderInit() { }
-void InPortCorbaCdrConsumerInit() { }
-void OutPortCorbaCdrProviderInit() { }
-void OutPortCorbaCdrConsumerInit() { }
-void InPortDirectProviderInit() { }
-void InPortDirectConsumerInit() { }
-void OutPortDirectProviderInit() { }
-void OutPortDirectConsumerInit() { }
-void InPortDSProviderInit() { }
-void InPortDSConsumerInit() { }
-void OutPortDSProviderInit() { }
-void OutPortDSConsumerInit() { }
-void InPortSHMProviderInit() { }
-void InPortSHMConsumerInit() { }
-void OutPortSHMProviderInit() { }
-void OutPortSHMConsumerInit() { }
+// Each transport registers under its interface type, as OpenRTM-aist's module init functions do.
+namespace {
+template<class Factory, class Abstract, class Concrete> void registerIn(const char *interfaceType)
+{
+    Factory::instance().addFactory(interfaceType, ::coil::Creator<Abstract, Concrete>,
+                                   ::coil::Destructor<Abstract, Concrete>);
+}
+} // namespace
+
+#define RTC_TRANSPORT_INIT(Prefix, Type)                                                           \
+    void InPort##Prefix##ProviderInit()                                                            \
+    {                                                                                              \
+        registerIn<RTC::InPortProviderFactory, RTC::InPortProvider,                                \
+                   RTC::InPort##Prefix##Provider>(Type);                                           \
+    }                                                                                              \
+    void InPort##Prefix##ConsumerInit()                                                            \
+    {                                                                                              \
+        registerIn<RTC::InPortConsumerFactory, RTC::InPortConsumer,                                \
+                   RTC::InPort##Prefix##Consumer>(Type);                                           \
+    }                                                                                              \
+    void OutPort##Prefix##ProviderInit()                                                           \
+    {                                                                                              \
+        registerIn<RTC::OutPortProviderFactory, RTC::OutPortProvider,                              \
+                   RTC::OutPort##Prefix##Provider>(Type);                                          \
+    }                                                                                              \
+    void OutPort##Prefix##ConsumerInit()                                                           \
+    {                                                                                              \
+        registerIn<RTC::OutPortConsumerFactory, RTC::OutPortConsumer,                              \
+                   RTC::OutPort##Prefix##Consumer>(Type);                                          \
+    }
+
+RTC_TRANSPORT_INIT(CorbaCdr, "corba_cdr")
+RTC_TRANSPORT_INIT(Direct, "direct")
+RTC_TRANSPORT_INIT(DS, "data_service")
+RTC_TRANSPORT_INIT(SHM, "shared_memory")
+
+#undef RTC_TRANSPORT_INIT

@@ -338,7 +338,24 @@ RTC_THREADED_PUBLISHER(PublisherPeriodic, true)
 
 } // namespace RTC
 
-// OpenRTM-aist registers each publisher in its factory here; the SDK's are built in.
-void PublisherFlushInit() { }
-void PublisherNewInit() { }
-void PublisherPeriodicInit() { }
+// Each publisher registers under its subscription type, as OpenRTM-aist's init functions do.
+void PublisherFlushInit()
+{
+    RTC::PublisherFactory::instance().addFactory(
+        "flush", ::coil::Creator<RTC::PublisherBase, RTC::PublisherFlush>,
+        ::coil::Destructor<RTC::PublisherBase, RTC::PublisherFlush>);
+}
+
+void PublisherNewInit()
+{
+    RTC::PublisherFactory::instance().addFactory(
+        "new", ::coil::Creator<RTC::PublisherBase, RTC::PublisherNew>,
+        ::coil::Destructor<RTC::PublisherBase, RTC::PublisherNew>);
+}
+
+void PublisherPeriodicInit()
+{
+    RTC::PublisherFactory::instance().addFactory(
+        "periodic", ::coil::Creator<RTC::PublisherBase, RTC::PublisherPeriodic>,
+        ::coil::Destructor<RTC::PublisherBase, RTC::PublisherPeriodic>);
+}

@@ -3,6 +3,7 @@
 #include <rtm/Manager.h>
 #include <rtm/RTObject.h>
 #include <rtm/LocalServiceBase.h>
+#include <rtm/SdoServiceConsumerBase.h>
 #include <rtm/SdoServiceProviderBase.h>
 
 #include "fsmactions.h"
@@ -93,6 +94,15 @@ ReturnCode_t RTObject_impl::on_finalize()
     }
     for (auto &provider : providers)
         provider.second->finalize();
+    std::vector<SdoServiceConsumerBase *> consumers;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        consumers.swap(m_sdoConsumers);
+    }
+    for (SdoServiceConsumerBase *consumer : consumers) {
+        consumer->finalize();
+        SdoServiceConsumerFactory::instance().deleteObject(consumer);
+    }
     return result;
 }
 
@@ -541,20 +551,56 @@ bool RTObject_impl::removeSdoServiceProvider(const char *id)
 
 bool RTObject_impl::addSdoServiceConsumer(const SDOPackage::ServiceProfile &prof)
 {
-    RTC_ERROR(("addSdoServiceConsumer(%s): no SDO service consumer of interface type '%s' is available (RT Studio's "
-               "SDK has no consumer factory)",
-               static_cast<const char *>(prof.id), static_cast<const char *>(prof.interface_type)));
-    return false;
+    const std::string id(prof.id);
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        for (SdoServiceConsumerBase *consumer : m_sdoConsumers) {
+            if (id == static_cast<const char *>(consumer->getProfile().id))
+                return consumer->reinit(prof);
+        }
+    }
+    const std::string type(prof.interface_type);
+    SdoServiceConsumerBase *consumer = SdoServiceConsumerFactory::instance().createObject(type);
+    if (consumer == nullptr) {
+        RTC_ERROR(("addSdoServiceConsumer(%s): no SDO service consumer of interface type '%s' is registered",
+                   id.c_str(), type.c_str()));
+        return false;
+    }
+    if (!consumer->init(*this, prof)) {
+        RTC_WARN(("addSdoServiceConsumer(%s): the consumer of interface type '%s' refused the profile", id.c_str(),
+                  type.c_str()));
+        SdoServiceConsumerFactory::instance().deleteObject(consumer);
+        return false;
+    }
+    std::lock_guard<std::mutex> lock(m_sdoMutex);
+    m_sdoConsumers.push_back(consumer);
+    return true;
 }
 
 bool RTObject_impl::removeSdoServiceConsumer(const char *id)
 {
-    (void)id;
-    return false;
+    SdoServiceConsumerBase *removed = nullptr;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        for (auto it = m_sdoConsumers.begin(); it != m_sdoConsumers.end(); ++it) {
+            if (id != nullptr && std::string((*it)->getProfile().id) == id) {
+                removed = *it;
+                m_sdoConsumers.erase(it);
+                break;
+            }
+        }
+    }
+    if (removed == nullptr)
+        return false;
+    removed->finalize();
+    SdoServiceConsumerFactory::instance().deleteObject(removed);
+    return true;
 }
 
 void RTObject_impl::removeSdoServiceConsumerStartThread(const char *id)
 {
+    // OpenRTM-aist removes from a thread of its own so that a consumer may remove itself; the
+    // removal here takes no lock the consumer could hold.
     removeSdoServiceConsumer(id);
 }
 

@@ -13,7 +13,7 @@ using CdrRingBuffer = RingBuffer<ByteData>;
 } // namespace RTC
 
 extern "C" {
-/// OpenRTM-aist registers the ring buffer in its buffer factory here; the SDK's is built in.
+/// Registers CdrRingBuffer in CdrBufferFactory as `ring_buffer`.
 void CdrRingBufferInit();
 }
 

@@ -3,6 +3,7 @@
 #ifndef RTC_INPORTCONSUMER_H
 #define RTC_INPORTCONSUMER_H
 
+#include <coil/Factory.h>
 #include <coil/Properties.h>
 #include <rtm/ByteData.h>
 #include <rtm/DataPortStatus.h>
@@ -23,6 +24,9 @@ public:
     virtual bool subscribeInterface(const SDOPackage::NVList &properties) = 0;
     virtual void unsubscribeInterface(const SDOPackage::NVList &properties) = 0;
 };
+
+/// The consumers by interface type (registered by their *Init()).
+using InPortConsumerFactory = ::coil::GlobalFactory<InPortConsumer>;
 } // namespace RTC
 
 #endif // RTC_INPORTCONSUMER_H

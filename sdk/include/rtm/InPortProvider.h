@@ -3,6 +3,7 @@
 #ifndef RTC_INPORTPROVIDER_H
 #define RTC_INPORTPROVIDER_H
 
+#include <coil/Factory.h>
 #include <rtm/BufferBase.h>
 #include <rtm/ByteData.h>
 #include <rtm/DataPortStatus.h>
@@ -46,6 +47,9 @@ private:
     std::string m_dataflowType;
     std::string m_subscriptionType;
 };
+
+/// The providers by interface type (registered by their *Init()).
+using InPortProviderFactory = ::coil::GlobalFactory<InPortProvider>;
 } // namespace RTC
 
 #endif // RTC_INPORTPROVIDER_H

@@ -3,6 +3,7 @@
 #ifndef RTM_LOCALSERVICEBASE_H
 #define RTM_LOCALSERVICEBASE_H
 
+#include <coil/Factory.h>
 #include <coil/Properties.h>
 
 #include <string>
@@ -33,6 +34,9 @@ public:
     virtual const LocalServiceProfile &getProfile() const = 0;
     virtual void finalize() = 0;
 };
+
+/// Local services by name.
+using LocalServiceFactory = ::coil::GlobalFactory<::RTM::LocalServiceBase>;
 } // namespace RTM
 
 #endif // RTM_LOCALSERVICEBASE_H

@@ -3,6 +3,7 @@
 #ifndef RTC_OUTPORTCONSUMER_H
 #define RTC_OUTPORTCONSUMER_H
 
+#include <coil/Factory.h>
 #include <coil/Properties.h>
 #include <rtm/CdrBufferBase.h>
 #include <rtm/DataPortStatus.h>
@@ -26,6 +27,9 @@ public:
     virtual bool subscribeInterface(const SDOPackage::NVList &properties) = 0;
     virtual void unsubscribeInterface(const SDOPackage::NVList &properties) = 0;
 };
+
+/// The consumers by interface type (registered by their *Init()).
+using OutPortConsumerFactory = ::coil::GlobalFactory<OutPortConsumer>;
 } // namespace RTC
 
 #endif // RTC_OUTPORTCONSUMER_H

@@ -36,7 +36,7 @@ private:
 } // namespace RTC
 
 extern "C" {
-/// OpenRTM-aist registers the class in its factory here; the SDK's are built in.
+/// Registers the class in its factory under its interface type.
 void OutPortDirectConsumerInit();
 }
 

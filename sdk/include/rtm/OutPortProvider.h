@@ -3,6 +3,7 @@
 #ifndef RTC_OUTPORTPROVIDER_H
 #define RTC_OUTPORTPROVIDER_H
 
+#include <coil/Factory.h>
 #include <rtm/BufferBase.h>
 #include <rtm/DataPortStatus.h>
 #include <rtm/OutPortConnector.h>
@@ -41,6 +42,9 @@ private:
     std::string m_dataflowType;
     std::string m_subscriptionType;
 };
+
+/// The providers by interface type (registered by their *Init()).
+using OutPortProviderFactory = ::coil::GlobalFactory<OutPortProvider>;
 } // namespace RTC
 
 #endif // RTC_OUTPORTPROVIDER_H

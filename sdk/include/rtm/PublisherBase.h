@@ -3,6 +3,7 @@
 #ifndef RTC_PUBLISHERBASE_H
 #define RTC_PUBLISHERBASE_H
 
+#include <coil/Factory.h>
 #include <rtm/BufferBase.h>
 #include <rtm/ByteData.h>
 #include <rtm/ByteDataStreamBase.h>
@@ -38,6 +39,9 @@ public:
     virtual DataPortStatus deactivate() = 0;
     virtual void release() { }
 };
+
+/// The publishers by subscription type (`flush`, `new`, `periodic`, registered by their *Init()).
+using PublisherFactory = ::coil::GlobalFactory<PublisherBase>;
 } // namespace RTC
 
 #endif // RTC_PUBLISHERBASE_H

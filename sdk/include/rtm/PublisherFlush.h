@@ -41,7 +41,7 @@ protected:
 } // namespace RTC
 
 extern "C" {
-/// OpenRTM-aist registers the publisher in its factory here; the SDK's publishers are built in.
+/// Registers the publisher in PublisherFactory under its subscription type.
 void PublisherFlushInit();
 }
 

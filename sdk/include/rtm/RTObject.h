@@ -26,6 +26,7 @@
 namespace RTC
 {
 class Manager;
+class SdoServiceConsumerBase;
 class SdoServiceProviderBase;
 
 namespace detail
@@ -137,11 +138,13 @@ public:
     /// Withdraws the service @p id (its finalize() is called); false when there is none.
     bool removeSdoServiceProvider(const char *id);
     /**
-     * OpenRTM-aist makes an SDO service consumer from a factory by the profile's interface type;
-     * the SDK has no such factory: always false, with a logged message naming the type.
+     * Attaches the SDO service consumer SdoServiceConsumerFactory makes for the profile's
+     * interface type and initialises it with @p prof (a known id re-initialises its consumer).
+     * False, with a logged message naming the type, when no consumer of that type is registered
+     * or it refuses the profile.
      */
     bool addSdoServiceConsumer(const SDOPackage::ServiceProfile &prof);
-    /// False: no consumer can have been added (see addSdoServiceConsumer).
+    /// Finalizes and deletes consumer @p id; false when there is none.
     bool removeSdoServiceConsumer(const char *id);
     void removeSdoServiceConsumerStartThread(const char *id);
     /// The component's service profiles: those given through SDO plus the providers added here.
@@ -373,6 +376,7 @@ private:
     std::vector<PortBase *> m_addedPorts;
     std::mutex m_sdoMutex;
     std::vector<std::pair<SDOPackage::ServiceProfile, SdoServiceProviderBase *>> m_sdoProviders;
+    std::vector<SdoServiceConsumerBase *> m_sdoConsumers;
 };
 } // namespace RTC
 

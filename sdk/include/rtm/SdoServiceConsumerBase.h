@@ -3,6 +3,7 @@
 #ifndef RTC_SDOSERVICECONSUMERBASE_H
 #define RTC_SDOSERVICECONSUMERBASE_H
 
+#include <coil/Factory.h>
 #include <rtm/RTC.h>
 #include <rtm/RTObject.h>
 
@@ -21,6 +22,9 @@ public:
     virtual const SDOPackage::ServiceProfile &getProfile() const = 0;
     virtual void finalize() = 0;
 };
+
+/// SDO service consumers by interface type (what addSdoServiceConsumer() makes them with).
+using SdoServiceConsumerFactory = ::coil::GlobalFactory<::RTC::SdoServiceConsumerBase>;
 } // namespace RTC
 
 #endif // RTC_SDOSERVICECONSUMERBASE_H

@@ -3,6 +3,7 @@
 #ifndef RTC_SDOSERVICEPROVIDERBASE_H
 #define RTC_SDOSERVICEPROVIDERBASE_H
 
+#include <coil/Factory.h>
 #include <rtm/RTC.h>
 #include <rtm/RTObject.h>
 
@@ -25,6 +26,9 @@ public:
     /// Called when the service is removed or the component finalizes.
     virtual void finalize() = 0;
 };
+
+/// SDO service providers by interface type.
+using SdoServiceProviderFactory = ::coil::GlobalFactory<::RTC::SdoServiceProviderBase>;
 } // namespace RTC
 
 #endif // RTC_SDOSERVICEPROVIDERBASE_H
