@@ -93,6 +93,51 @@ size_t PortBase::connectionCount()
     return m_profile.connector_profiles.length();
 }
 
+void PortBase::setConnectObserver(ConnectObserver observer)
+{
+    std::lock_guard lock(m_mutex);
+    m_observer = std::move(observer);
+}
+
+const char *PortBase::getName() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_profile.name;
+}
+
+const RTC::PortProfile &PortBase::getPortProfile() const
+{
+    return m_profile;
+}
+
+RTC::PortService_ptr PortBase::getPortRef() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_self.in();
+}
+
+void PortBase::observe(ConnectStep step, RTC::ConnectorProfile &profile, RTC::ReturnCode_t result)
+{
+    ConnectObserver observer;
+    {
+        std::lock_guard lock(m_mutex);
+        observer = m_observer;
+    }
+    if (observer)
+        observer(step, profile, result);
+}
+
+void PortBase::callHook(Hook hook, RTC::ConnectorProfile &profile)
+{
+    HookFunction function;
+    {
+        std::lock_guard lock(m_mutex);
+        function = m_hooks[hook];
+    }
+    if (function)
+        function(profile);
+}
+
 Properties PortBase::portProperties()
 {
     std::lock_guard lock(m_mutex);
@@ -173,6 +218,7 @@ RTC::ReturnCode_t PortBase::disconnect(const char *connector_id)
         return profile.ports[0]->notify_disconnect(connector_id);
     } catch (const CORBA::Exception &) {
         // The first port's process is gone: disconnect our side anyway.
+        callHook(ConnectionLost, profile);
         return notify_disconnect(connector_id);
     }
 }
@@ -216,9 +262,19 @@ RTC::ReturnCode_t PortBase::admit(const RTC::ConnectorProfile &profile)
 
 RTC::ReturnCode_t PortBase::notify_connect(RTC::ConnectorProfile &connector_profile)
 {
+    observe(ConnectStep::NotifyConnect, connector_profile, RTC::RTC_OK);
+    const RTC::ReturnCode_t result = connectSteps(connector_profile);
+    observe(ConnectStep::Connected, connector_profile, result);
+    return result;
+}
+
+RTC::ReturnCode_t PortBase::connectSteps(RTC::ConnectorProfile &connector_profile)
+{
     if (const RTC::ReturnCode_t refused = admit(connector_profile); refused != RTC::RTC_OK)
         return refused;
+    callHook(Publish, connector_profile);
     RTC::ReturnCode_t result = publishInterfaces(connector_profile);
+    observe(ConnectStep::PublishInterfaces, connector_profile, result);
     if (result != RTC::RTC_OK)
         return result;
     const int index = ownIndex(connector_profile);
@@ -228,14 +284,19 @@ RTC::ReturnCode_t PortBase::notify_connect(RTC::ConnectorProfile &connector_prof
         } catch (const CORBA::Exception &) {
             result = RTC::RTC_ERROR;
         }
+        observe(ConnectStep::ConnectNextPort, connector_profile, result);
     }
-    if (result == RTC::RTC_OK)
+    if (result == RTC::RTC_OK) {
+        callHook(Subscribe, connector_profile);
         result = subscribeInterfaces(connector_profile);
+        observe(ConnectStep::SubscribeInterfaces, connector_profile, result);
+    }
     if (result != RTC::RTC_OK) {
         unsubscribeInterfaces(connector_profile);
         return result;
     }
     storeProfile(connector_profile);
+    callHook(Connected, connector_profile);
     return RTC::RTC_OK;
 }
 
@@ -244,17 +305,24 @@ RTC::ReturnCode_t PortBase::notify_disconnect(const char *connector_id)
     RTC::ConnectorProfile profile;
     if (!connector_id || !findProfile(connector_id, &profile))
         return RTC::BAD_PARAMETER;
+    observe(ConnectStep::NotifyDisconnect, profile, RTC::RTC_OK);
+    observe(ConnectStep::UnsubscribeInterfaces, profile, RTC::RTC_OK);
+    callHook(Unsubscribe, profile);
     unsubscribeInterfaces(profile);
     eraseProfile(connector_id);
     // Pass it on; a dead port in the chain is skipped so the others still disconnect.
     const int index = ownIndex(profile);
-    for (CORBA::ULong next = CORBA::ULong(index + 1); index >= 0 && next < profile.ports.length(); ++next) {
+    for (CORBA::ULong n = CORBA::ULong(index + 1); index >= 0 && n < profile.ports.length(); ++n) {
         try {
-            profile.ports[next]->notify_disconnect(connector_id);
+            const RTC::ReturnCode_t next = profile.ports[n]->notify_disconnect(connector_id);
+            observe(ConnectStep::DisconnectNextPort, profile, next);
             break;
         } catch (const CORBA::Exception &) {
+            callHook(ConnectionLost, profile);
         }
     }
+    callHook(Disconnected, profile);
+    observe(ConnectStep::Disconnected, profile, RTC::RTC_OK);
     return RTC::RTC_OK;
 }
 

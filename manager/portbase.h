@@ -5,10 +5,32 @@
 
 #include <RTC.hh>
 
+#include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 
 namespace Runtime {
+
+/// The steps of the connect and disconnect protocol a port reports to its ConnectObserver.
+enum class ConnectStep : uint8_t {
+    NotifyConnect,         ///< notify_connect arrived (before anything is checked)
+    PublishInterfaces,     ///< this port published its interfaces (with the result)
+    ConnectNextPort,       ///< the next port of the chain answered (with its result)
+    SubscribeInterfaces,   ///< this port subscribed to the others' interfaces (with the result)
+    Connected,             ///< notify_connect ends (with its result)
+    NotifyDisconnect,      ///< notify_disconnect arrived for a connector this port holds
+    UnsubscribeInterfaces, ///< this port is about to drop the connector's interfaces
+    DisconnectNextPort,    ///< the next port of the chain was told (with the result)
+    Disconnected           ///< notify_disconnect ends (with its result)
+};
+
+/**
+ * Called at each ConnectStep with the connector profile as it stands and the step's result
+ * (RTC_OK for steps without one). The SDK turns these into OpenRTM-aist's port connect listeners.
+ */
+using ConnectObserver = std::function<void(ConnectStep, RTC::ConnectorProfile &, RTC::ReturnCode_t)>;
 
 /**
  * RTC::PortService as OpenRTM-aist implements it. connect() gives the profile an id and starts the
@@ -32,6 +54,56 @@ public:
     RTC::PortService_ptr reference();
     /// Number of stored connections.
     size_t connectionCount();
+    /// Reports the steps of notify_connect / notify_disconnect to @p observer (empty: nobody).
+    void setConnectObserver(ConnectObserver observer);
+
+    // OpenRTM-aist's PortBase accessors, which component code calls on RTC::PortBase.
+    /// The profile name: `<instance>.<port>` once the component added the port.
+    const char *getName() const;
+    /// The port profile itself (not a copy); connector profiles change as connections come and go.
+    const RTC::PortProfile &getPortProfile() const;
+    const RTC::PortProfile &getProfile() const { return getPortProfile(); }
+    /// This port's object reference, not duplicated (nil before the port is activated).
+    RTC::PortService_ptr getPortRef() const;
+
+    /**
+     * OpenRTM-aist's PortBase callbacks, objects with `operator()(RTC::ConnectorProfile &)`
+     * (RTC::ConnectionCallback), not owned; null removes one. OnPublishInterfaces and
+     * OnSubscribeInterfaces come before the port publishes / subscribes, OnConnected after a
+     * connection is stored, OnUnsubscribeInterfaces before the port drops a connection's
+     * interfaces, OnDisconnected after it is gone, OnConnectionLost when a port of the
+     * connection could not be reached while disconnecting.
+     */
+    template<class Callback> void setOnPublishInterfaces(Callback *on_publish)
+    {
+        setCallback(Hook::Publish, on_publish);
+    }
+    void setOnPublishInterfaces(std::nullptr_t) { clearCallback(Hook::Publish); }
+    template<class Callback> void setOnSubscribeInterfaces(Callback *on_subscribe)
+    {
+        setCallback(Hook::Subscribe, on_subscribe);
+    }
+    void setOnSubscribeInterfaces(std::nullptr_t) { clearCallback(Hook::Subscribe); }
+    template<class Callback> void setOnConnected(Callback *on_connected)
+    {
+        setCallback(Hook::Connected, on_connected);
+    }
+    void setOnConnected(std::nullptr_t) { clearCallback(Hook::Connected); }
+    template<class Callback> void setOnUnsubscribeInterfaces(Callback *on_unsubscribe)
+    {
+        setCallback(Hook::Unsubscribe, on_unsubscribe);
+    }
+    void setOnUnsubscribeInterfaces(std::nullptr_t) { clearCallback(Hook::Unsubscribe); }
+    template<class Callback> void setOnDisconnected(Callback *on_disconnected)
+    {
+        setCallback(Hook::Disconnected, on_disconnected);
+    }
+    void setOnDisconnected(std::nullptr_t) { clearCallback(Hook::Disconnected); }
+    template<class Callback> void setOnConnectionLost(Callback *on_connection_lost)
+    {
+        setCallback(Hook::ConnectionLost, on_connection_lost);
+    }
+    void setOnConnectionLost(std::nullptr_t) { clearCallback(Hook::ConnectionLost); }
     /// Lets others reach what the port provides (service providers); called when the component
     /// is activated, as OpenRTM-aist's PortAdmin::activatePorts.
     virtual void activateInterfaces() {}
@@ -73,15 +145,35 @@ protected:
     std::string profileName();
 
 private:
+    enum Hook { Publish, Subscribe, Connected, Unsubscribe, Disconnected, ConnectionLost, HookCount };
+    using HookFunction = std::function<void(RTC::ConnectorProfile &)>;
+    template<class Callback> void setCallback(Hook hook, Callback *callback)
+    {
+        HookFunction function;
+        if (callback != nullptr)
+            function = [callback](RTC::ConnectorProfile &profile) { (*callback)(profile); };
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_hooks[hook] = function;
+    }
+    void clearCallback(Hook hook)
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_hooks[hook] = HookFunction();
+    }
+    void callHook(Hook hook, RTC::ConnectorProfile &profile);
+    RTC::ReturnCode_t connectSteps(RTC::ConnectorProfile &connector_profile);
     int ownIndex(const RTC::ConnectorProfile &profile);
     bool findProfile(const std::string &id, RTC::ConnectorProfile *profile);
     void storeProfile(const RTC::ConnectorProfile &profile);
     void eraseProfile(const std::string &id);
+    void observe(ConnectStep step, RTC::ConnectorProfile &profile, RTC::ReturnCode_t result);
 
     std::string m_name;
-    std::mutex m_mutex;
+    mutable std::mutex m_mutex;
     RTC::PortProfile m_profile;
     RTC::PortService_var m_self;
+    ConnectObserver m_observer;
+    HookFunction m_hooks[HookCount];
 };
 
 /**

@@ -214,7 +214,9 @@ RTC::ReturnCode_t RtObject::initialize()
     // type before any user code runs.
     if (!createOwnedContext())
         return RTC::BAD_PARAMETER;
-    const RTC::ReturnCode_t result = onInitialize();
+    // Through the ComponentAction operation, which subclasses may wrap (the SDK calls its action
+    // listeners around it).
+    const RTC::ReturnCode_t result = on_initialize();
     if (result != RTC::RTC_OK) {
         releaseOwnedContexts();
         return result;
@@ -333,7 +335,7 @@ void RtObject::releaseAll()
         port->disconnect_all();
         port->releaseInterfaces();
     }
-    onFinalize();
+    on_finalize();
     for (ExecutionContext *context : contexts)
         releaseServant(m_poa, context);
     for (PortBase *port : ports)

@@ -5,6 +5,11 @@ rtstudio_add_test(tst_sdkrtm SOURCES tst_sdkrtm.cpp LIBS rtsdk)
 target_include_directories(tst_sdkrtm PRIVATE ${PROJECT_SOURCE_DIR}/manager ${PROJECT_SOURCE_DIR}/sdk/rtm)
 set_tests_properties(tst_sdkrtm PROPERTIES LABELS sdk)
 
+# Data port callbacks, the port API and component/port listeners as older OpenRTM-aist components use them.
+rtstudio_add_test(tst_sdkports SOURCES tst_sdkports.cpp LIBS rtsdk)
+target_include_directories(tst_sdkports PRIVATE ${PROJECT_SOURCE_DIR}/manager ${PROJECT_SOURCE_DIR}/sdk/rtm)
+set_tests_properties(tst_sdkports PROPERTIES LABELS sdk)
+
 rtstudio_add_test(tst_sdkgenerated SOURCES tst_sdkgenerated.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
 target_compile_definitions(tst_sdkgenerated PRIVATE
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"

@@ -84,11 +84,136 @@ private:
     std::map<std::string, Link> m_links;
 };
 
+/// What a connector object of a port cannot do on a port with several connections.
+DataPortStatus refuseSeveral(Logger &rtclog, const ConnectorInfo &info, const char *operation)
+{
+    RTC_ERROR(("connector '%s': %s refused: its port has several connections and its samples travel through the port",
+               info.name.c_str(), operation));
+    return DataPortStatus::PRECONDITION_NOT_MET;
+}
+
+/// A connection of an InPort of the SDK, as OpenRTM-aist's InPortConnector.
+class InPortConnection : public InPortConnector
+{
+public:
+    InPortConnection(ConnectorInfo info, ConnectorListenersBase *listeners, InPortBase *port)
+        : InPortConnector(info, listeners, nullptr)
+        , m_port(port)
+    {
+    }
+    DataPortStatus disconnect() override
+    {
+        // The port deletes this object while disconnecting: only locals are used from here on.
+        InPortBase *port = m_port;
+        const std::string id = m_profile.id;
+        return port->disconnect(id.c_str()) == RTC_OK ? DataPortStatus::PORT_OK : DataPortStatus::PORT_ERROR;
+    }
+    DataPortStatus read(ByteDataStreamBase *data) override
+    {
+        if (data == nullptr)
+            return DataPortStatus::INVALID_ARGS;
+        if (m_port->getConnectorIds().size() != 1)
+            return refuseSeveral(rtclog, m_profile, "read");
+        ByteData bytes;
+        bool littleEndian = true;
+        if (!m_port->takeMarshalled(bytes, littleEndian))
+            return DataPortStatus::BUFFER_EMPTY;
+        data->isLittleEndian(littleEndian);
+        data->writeData(bytes.getBuffer(), bytes.getDataLength());
+        return DataPortStatus::PORT_OK;
+    }
+    CdrBufferBase *getBuffer() override
+    {
+        RTC_ERROR(("connector '%s': getBuffer(): the runtime keeps the connection's samples in a buffer of its own",
+                   m_profile.name.c_str()));
+        return nullptr;
+    }
+    // The runtime's connections carry samples from connect to disconnect.
+    void activate() override {}
+    void deactivate() override {}
+
+private:
+    InPortBase *m_port;
+};
+
+/// A connection of an OutPort of the SDK, as OpenRTM-aist's OutPortConnector.
+class OutPortConnection : public OutPortConnector
+{
+public:
+    OutPortConnection(ConnectorInfo info, ConnectorListenersBase *listeners, OutPortBase *port)
+        : OutPortConnector(info, listeners)
+        , m_port(port)
+    {
+    }
+    DataPortStatus disconnect() override
+    {
+        OutPortBase *port = m_port;
+        const std::string id = m_profile.id;
+        return port->disconnect(id.c_str()) == RTC_OK ? DataPortStatus::PORT_OK : DataPortStatus::PORT_ERROR;
+    }
+    DataPortStatus write(ByteDataStreamBase *data) override
+    {
+        if (data == nullptr)
+            return DataPortStatus::INVALID_ARGS;
+        if (m_port->getConnectorIds().size() != 1)
+            return refuseSeveral(rtclog, m_profile, "write");
+        ByteData bytes;
+        bytes.setDataLength(data->getDataLength());
+        data->readData(bytes.getBuffer(), bytes.getDataLength());
+        return m_port->writeMarshalledTo(m_profile.id, bytes, m_littleEndian) ? DataPortStatus::PORT_OK
+                                                                              : DataPortStatus::PORT_ERROR;
+    }
+    CdrBufferBase *getBuffer() override
+    {
+        RTC_ERROR(("connector '%s': getBuffer(): the runtime keeps the connection's samples in a buffer of its own",
+                   m_profile.name.c_str()));
+        return nullptr;
+    }
+    void activate() override {}
+    void deactivate() override {}
+
+private:
+    OutPortBase *m_port;
+};
+
+ConnectorInfo infoOf(DataPortListeners &port, const std::string &id)
+{
+    ConnectorInfo info;
+    port.getConnectorProfileById(id.c_str(), info);
+    return info;
+}
+
+template <typename Connector>
+Connector *findIn(std::mutex &mutex, const std::vector<Connector *> &list, const char *text, bool byId)
+{
+    const std::string wanted(text ? text : "");
+    std::lock_guard<std::mutex> lock(mutex);
+    for (Connector *connector : list) {
+        if (wanted == (byId ? connector->id() : connector->name()))
+            return connector;
+    }
+    return nullptr;
+}
+
+template <typename Connector>
+void dropFrom(std::mutex &mutex, std::vector<Connector *> &list, const std::string &id)
+{
+    std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = list.begin(); it != list.end(); ++it) {
+        if (id == (*it)->id()) {
+            delete *it;
+            list.erase(it);
+            return;
+        }
+    }
+}
+
 } // namespace
 
 // --- DataPortListeners ---
 
 DataPortListeners::DataPortListeners(const char *data_type)
+    : rtclog("DataPort")
 {
     m_properties.setProperty("dataport.data_type", data_type);
 }
@@ -98,6 +223,18 @@ DataPortListeners::~DataPortListeners() = default;
 void DataPortListeners::init(coil::Properties &prop)
 {
     m_properties << prop;
+}
+
+ReturnCode_t DataPortListeners::checkInterfaceType(const char *portName, const ConnectorProfile &profile)
+{
+    const Runtime::Properties p = Runtime::nvToProperties(profile.properties);
+    const std::string type = p.value("dataport.interface_type", "corba_cdr");
+    if (type == "corba_cdr")
+        return RTC_OK;
+    RTC_ERROR(("%s: connector '%s' refused: interface type '%s' is not available (RT Studio's data ports carry "
+               "corba_cdr only)",
+               portName, static_cast<const char *>(profile.name), type.c_str()));
+    return BAD_PARAMETER;
 }
 
 coil::Properties &DataPortListeners::properties()
@@ -118,6 +255,45 @@ coil::vstring DataPortListeners::getConnectorIds()
 coil::vstring DataPortListeners::getConnectorNames()
 {
     return connectorField(m_listeners.connectorInfos(), &ConnectorInfo::name);
+}
+
+namespace {
+
+template <typename Match>
+bool findConnector(const ConnectorInfoList &infos, Match match, ConnectorInfo &prof)
+{
+    for (const ConnectorInfo &info : infos) {
+        if (match(info)) {
+            prof = info;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+bool DataPortListeners::getConnectorProfileById(const char *id, ConnectorInfo &prof)
+{
+    const std::string wanted(id ? id : "");
+    return findConnector(m_listeners.connectorInfos(), [&](const ConnectorInfo &i) { return i.id == wanted; }, prof);
+}
+
+bool DataPortListeners::getConnectorProfileByName(const char *name, ConnectorInfo &prof)
+{
+    const std::string wanted(name ? name : "");
+    return findConnector(m_listeners.connectorInfos(), [&](const ConnectorInfo &i) { return i.name == wanted; },
+                         prof);
+}
+
+bool DataPortListeners::isLittleEndian()
+{
+    // Each connection states its byte order; the port is little-endian unless one says big.
+    for (const ConnectorInfo &info : m_listeners.connectorInfos()) {
+        if (info.properties.getProperty("serializer.cdr.endian", "little").compare(0, 3, "big") == 0)
+            return false;
+    }
+    return true;
 }
 
 void DataPortListeners::addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
@@ -159,6 +335,40 @@ InPortBase::InPortBase(const char *name, const char *data_type)
 InPortBase::~InPortBase()
 {
     setReceiveListener({});
+    std::lock_guard<std::mutex> lock(m_connectorsMutex);
+    for (InPortConnector *connector : m_connectors)
+        delete connector;
+}
+
+const std::vector<InPortConnector *> &InPortBase::connectors()
+{
+    return m_connectors;
+}
+
+InPortConnector *InPortBase::getConnectorById(const char *id)
+{
+    return findIn(m_connectorsMutex, m_connectors, id, true);
+}
+
+InPortConnector *InPortBase::getConnectorByName(const char *name)
+{
+    return findIn(m_connectorsMutex, m_connectors, name, false);
+}
+
+bool InPortBase::takeMarshalled(ByteData &data, bool &littleEndian)
+{
+    Runtime::SharedCdr bytes;
+    if (!readBytes(&bytes, &littleEndian))
+        return false;
+    data.writeData(bytes->data(), static_cast<unsigned long>(bytes->size()));
+    m_listeners.notifyData(ConnectorDataListenerType::ON_BUFFER_READ, std::string(), bytes->data(),
+                           static_cast<unsigned long>(bytes->size()), littleEndian);
+    return true;
+}
+
+bool InPortBase::receiveMarshalled(const ByteData &, bool, const std::string &)
+{
+    return false;
 }
 
 bool InPortBase::isNew()
@@ -181,6 +391,11 @@ ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
     const ReturnCode_t result = Runtime::InPortBase::notify_connect(connector_profile);
     if (result == RTC_OK) {
         m_listeners.connected(connector_profile);
+        const std::string id(connector_profile.connector_id);
+        {
+            std::lock_guard<std::mutex> lock(m_connectorsMutex);
+            m_connectors.push_back(new InPortConnection(infoOf(*this, id), &m_listeners, this));
+        }
         DirectLinks::instance().offer(connector_profile, this, nullptr);
         m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
     }
@@ -190,10 +405,24 @@ ReturnCode_t InPortBase::notify_connect(ConnectorProfile &connector_profile)
 ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
 {
     DirectLinks::instance().withdraw(connector_id);
+    if (connector_id != nullptr)
+        dropFrom(m_connectorsMutex, m_connectors, connector_id);
     m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
     const ReturnCode_t result = Runtime::InPortBase::notify_disconnect(connector_id);
     m_listeners.disconnected(connector_id);
     return result;
+}
+
+ReturnCode_t InPortBase::publishInterfaces(ConnectorProfile &connector_profile)
+{
+    const ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
+    return accepted != RTC_OK ? accepted : Runtime::InPortBase::publishInterfaces(connector_profile);
+}
+
+void InPortBase::logUnsupported(const char *operation, const std::string &name)
+{
+    RTC_ERROR(("%s: %s(\"%s\") refused: the port has several connections and takes their samples in one queue",
+               getName(), operation, name.c_str()));
 }
 
 bool InPortBase::readBytes(Runtime::SharedCdr *data, bool *littleEndian)
@@ -209,13 +438,52 @@ OutPortBase::OutPortBase(const char *name, const char *data_type)
 {
 }
 
-OutPortBase::~OutPortBase() = default;
+OutPortBase::~OutPortBase()
+{
+    std::lock_guard<std::mutex> lock(m_connectorsMutex);
+    for (OutPortConnector *connector : m_connectors)
+        delete connector;
+}
+
+const std::vector<OutPortConnector *> &OutPortBase::connectors()
+{
+    return m_connectors;
+}
+
+OutPortConnector *OutPortBase::getConnectorById(const char *id)
+{
+    return findIn(m_connectorsMutex, m_connectors, id, true);
+}
+
+OutPortConnector *OutPortBase::getConnectorByName(const char *name)
+{
+    return findIn(m_connectorsMutex, m_connectors, name, false);
+}
+
+bool OutPortBase::writeMarshalledTo(const std::string &connectorId, const ByteData &data, bool littleEndian)
+{
+    {
+        std::lock_guard<std::mutex> lock(m_directMutex);
+        for (const auto &[id, inport] : m_directPeers) {
+            if (id == connectorId)
+                return inport->receiveMarshalled(data, littleEndian, connectorId);
+        }
+    }
+    // The bytes are in the connection's byte order already (the connector set the stream's).
+    writeMarshalled([&data](bool) { return Runtime::CdrView(data.getBuffer(), data.getDataLength()); });
+    return true;
+}
 
 ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
 {
     const ReturnCode_t result = Runtime::OutPortBase::notify_connect(connector_profile);
     if (result == RTC_OK) {
         m_listeners.connected(connector_profile);
+        const std::string id(connector_profile.connector_id);
+        {
+            std::lock_guard<std::mutex> lock(m_connectorsMutex);
+            m_connectors.push_back(new OutPortConnection(infoOf(*this, id), &m_listeners, this));
+        }
         DirectLinks::instance().offer(connector_profile, nullptr, this);
         m_listeners.notify(ConnectorListenerType::ON_CONNECT, std::string(connector_profile.connector_id));
     }
@@ -225,10 +493,18 @@ ReturnCode_t OutPortBase::notify_connect(ConnectorProfile &connector_profile)
 ReturnCode_t OutPortBase::notify_disconnect(const char *connector_id)
 {
     DirectLinks::instance().withdraw(connector_id);
+    if (connector_id != nullptr)
+        dropFrom(m_connectorsMutex, m_connectors, connector_id);
     m_listeners.notify(ConnectorListenerType::ON_DISCONNECT, connector_id);
     const ReturnCode_t result = Runtime::OutPortBase::notify_disconnect(connector_id);
     m_listeners.disconnected(connector_id);
     return result;
+}
+
+ReturnCode_t OutPortBase::publishInterfaces(ConnectorProfile &connector_profile)
+{
+    const ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
+    return accepted != RTC_OK ? accepted : Runtime::OutPortBase::publishInterfaces(connector_profile);
 }
 
 void OutPortBase::addDirectPeer(const std::string &connectorId, InPortBase *inport)

@@ -2,6 +2,9 @@
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/Manager.h>
 #include <rtm/RTObject.h>
+#include <rtm/LocalServiceBase.h>
+#include <rtm/SdoServiceConsumerBase.h>
+#include <rtm/SdoServiceProviderBase.h>
 
 #include "fsmactions.h"
 #include "sdkinternal.h"
@@ -60,14 +63,131 @@ ReturnCode_t RTObject_impl::initialize()
     return Runtime::RtObject::initialize();
 }
 
+template <typename Action>
+ReturnCode_t RTObject_impl::around(PreComponentActionListenerType pre, PostComponentActionListenerType post,
+                                   UniqueId ec_id, Action action)
+{
+    m_actionListeners.notify(pre, ec_id);
+    const ReturnCode_t result = action();
+    m_actionListeners.notify(post, ec_id, result);
+    return result;
+}
+
+// OpenRTM-aist reports on_initialize and on_finalize under execution context id 0.
+ReturnCode_t RTObject_impl::on_initialize()
+{
+    return around(PreComponentActionListenerType::PRE_ON_INITIALIZE,
+                  PostComponentActionListenerType::POST_ON_INITIALIZE, 0,
+                  [this] { return Runtime::RtObject::on_initialize(); });
+}
+
+ReturnCode_t RTObject_impl::on_finalize()
+{
+    const ReturnCode_t result
+        = around(PreComponentActionListenerType::PRE_ON_FINALIZE, PostComponentActionListenerType::POST_ON_FINALIZE,
+                 0, [this] { return Runtime::RtObject::on_finalize(); });
+    // The SDO services end with the component, while their owner (usually the component) lives.
+    std::vector<std::pair<SDOPackage::ServiceProfile, SdoServiceProviderBase *>> providers;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        providers.swap(m_sdoProviders);
+    }
+    for (auto &provider : providers)
+        provider.second->finalize();
+    std::vector<SdoServiceConsumerBase *> consumers;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        consumers.swap(m_sdoConsumers);
+    }
+    for (SdoServiceConsumerBase *consumer : consumers) {
+        consumer->finalize();
+        SdoServiceConsumerFactory::instance().deleteObject(consumer);
+    }
+    return result;
+}
+
+ReturnCode_t RTObject_impl::on_startup(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_STARTUP, PostComponentActionListenerType::POST_ON_STARTUP,
+                  exec_handle, [&] { return Runtime::RtObject::on_startup(exec_handle); });
+}
+
+ReturnCode_t RTObject_impl::on_shutdown(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_SHUTDOWN, PostComponentActionListenerType::POST_ON_SHUTDOWN,
+                  exec_handle, [&] { return Runtime::RtObject::on_shutdown(exec_handle); });
+}
+
+ReturnCode_t RTObject_impl::on_activated(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_ACTIVATED,
+                  PostComponentActionListenerType::POST_ON_ACTIVATED, exec_handle,
+                  [&] { return Runtime::RtObject::on_activated(exec_handle); });
+}
+
+ReturnCode_t RTObject_impl::on_deactivated(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_DEACTIVATED,
+                  PostComponentActionListenerType::POST_ON_DEACTIVATED, exec_handle,
+                  [&] { return Runtime::RtObject::on_deactivated(exec_handle); });
+}
+
+ReturnCode_t RTObject_impl::on_aborting(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_ABORTING, PostComponentActionListenerType::POST_ON_ABORTING,
+                  exec_handle, [&] { return Runtime::RtObject::on_aborting(exec_handle); });
+}
+
+ReturnCode_t RTObject_impl::on_error(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_ERROR, PostComponentActionListenerType::POST_ON_ERROR,
+                  exec_handle, [&] { return Runtime::RtObject::on_error(exec_handle); });
+}
+
+ReturnCode_t RTObject_impl::on_reset(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_RESET, PostComponentActionListenerType::POST_ON_RESET,
+                  exec_handle, [&] { return Runtime::RtObject::on_reset(exec_handle); });
+}
+
 ReturnCode_t RTObject_impl::on_execute(UniqueId exec_handle)
 {
-    if (m_readAll)
-        readAll();
-    const ReturnCode_t result = Runtime::RtObject::on_execute(exec_handle);
-    if (m_writeAll)
-        writeAll();
-    return result;
+    return around(PreComponentActionListenerType::PRE_ON_EXECUTE, PostComponentActionListenerType::POST_ON_EXECUTE,
+                  exec_handle, [&] {
+                      if (m_readAll)
+                          readAll();
+                      const ReturnCode_t result = Runtime::RtObject::on_execute(exec_handle);
+                      if (m_writeAll)
+                          writeAll();
+                      return result;
+                  });
+}
+
+ReturnCode_t RTObject_impl::on_state_update(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_STATE_UPDATE,
+                  PostComponentActionListenerType::POST_ON_STATE_UPDATE, exec_handle,
+                  [&] { return Runtime::RtObject::on_state_update(exec_handle); });
+}
+
+ReturnCode_t RTObject_impl::on_rate_changed(UniqueId exec_handle)
+{
+    return around(PreComponentActionListenerType::PRE_ON_RATE_CHANGED,
+                  PostComponentActionListenerType::POST_ON_RATE_CHANGED, exec_handle,
+                  [&] { return Runtime::RtObject::on_rate_changed(exec_handle); });
+}
+
+UniqueId RTObject_impl::attach_context(ExecutionContext_ptr exec_context)
+{
+    const UniqueId id = Runtime::RtObject::attach_context(exec_context);
+    m_actionListeners.notify(ExecutionContextActionListenerType::EC_ATTACHED, id);
+    return id;
+}
+
+ReturnCode_t RTObject_impl::detach_context(UniqueId ec_id)
+{
+    m_actionListeners.notify(ExecutionContextActionListenerType::EC_DETACHED, ec_id);
+    return Runtime::RtObject::detach_context(ec_id);
 }
 
 const char *RTObject_impl::getInstanceName()
@@ -115,9 +235,75 @@ void RTObject_impl::updateParameters(const char *config_set)
     m_configsets.update(config_set);
 }
 
+namespace {
+
+// OpenRTM-aist's names for the steps the runtime's ports report.
+void notifyConnectStep(PortConnectListeners &listeners, Runtime::ConnectStep step, const char *port,
+                       ConnectorProfile &profile, ReturnCode_t result)
+{
+    using Step = Runtime::ConnectStep;
+    switch (step) {
+    case Step::NotifyConnect:
+        listeners.notify(PortConnectListenerType::ON_NOTIFY_CONNECT, port, profile);
+        break;
+    case Step::NotifyDisconnect:
+        listeners.notify(PortConnectListenerType::ON_NOTIFY_DISCONNECT, port, profile);
+        break;
+    case Step::UnsubscribeInterfaces:
+        listeners.notify(PortConnectListenerType::ON_UNSUBSCRIBE_INTERFACES, port, profile);
+        break;
+    case Step::PublishInterfaces:
+        listeners.notify(PortConnectRetListenerType::ON_PUBLISH_INTERFACES, port, profile, result);
+        break;
+    case Step::ConnectNextPort:
+        listeners.notify(PortConnectRetListenerType::ON_CONNECT_NEXTPORT, port, profile, result);
+        break;
+    case Step::SubscribeInterfaces:
+        listeners.notify(PortConnectRetListenerType::ON_SUBSCRIBE_INTERFACES, port, profile, result);
+        break;
+    case Step::Connected:
+        listeners.notify(PortConnectRetListenerType::ON_CONNECTED, port, profile, result);
+        break;
+    case Step::DisconnectNextPort:
+        listeners.notify(PortConnectRetListenerType::ON_DISCONNECT_NEXT, port, profile, result);
+        break;
+    case Step::Disconnected:
+        listeners.notify(PortConnectRetListenerType::ON_DISCONNECTED, port, profile, result);
+        break;
+    }
+}
+
+} // namespace
+
+void RTObject_impl::attachPort(PortBase &port)
+{
+    PortBase *p = &port;
+    PortConnectListeners *listeners = &m_portconnListeners;
+    port.setConnectObserver([p, listeners](Runtime::ConnectStep step, ConnectorProfile &profile, ReturnCode_t result) {
+        notifyConnectStep(*listeners, step, p->getName(), profile, result);
+    });
+    // The listeners see the profile as it will be listed: under the component's instance name.
+    RTObject_var self = reference();
+    port.setOwner(self.in(), instanceName());
+    m_actionListeners.notify(PortActionListenerType::ADD_PORT, port.getPortProfile());
+    addBorrowedPort(&port);
+    m_addedPorts.push_back(&port);
+}
+
+bool RTObject_impl::detachPort(PortBase &port)
+{
+    if (std::find(m_addedPorts.begin(), m_addedPorts.end(), &port) == m_addedPorts.end())
+        return false;
+    m_actionListeners.notify(PortActionListenerType::REMOVE_PORT, port.getPortProfile());
+    m_addedPorts.erase(std::remove(m_addedPorts.begin(), m_addedPorts.end(), &port), m_addedPorts.end());
+    const bool removed = Runtime::RtObject::removePort(&port);
+    port.setConnectObserver({});
+    return removed;
+}
+
 bool RTObject_impl::addPort(PortBase &port)
 {
-    addBorrowedPort(&port);
+    attachPort(port);
     return true;
 }
 
@@ -129,7 +315,7 @@ bool RTObject_impl::addPort(CorbaPort &port)
 bool RTObject_impl::addInPort(const char *name, InPortBase &inport)
 {
     (void)name; // the port keeps the name it was constructed with, as in OpenRTM-aist
-    addBorrowedPort(&inport);
+    attachPort(inport);
     m_inports.push_back(&inport);
     return true;
 }
@@ -137,14 +323,14 @@ bool RTObject_impl::addInPort(const char *name, InPortBase &inport)
 bool RTObject_impl::addOutPort(const char *name, OutPortBase &outport)
 {
     (void)name;
-    addBorrowedPort(&outport);
+    attachPort(outport);
     m_outports.push_back(&outport);
     return true;
 }
 
 bool RTObject_impl::removePort(PortBase &port)
 {
-    return Runtime::RtObject::removePort(&port);
+    return detachPort(port);
 }
 
 bool RTObject_impl::removePort(CorbaPort &port)
@@ -162,6 +348,27 @@ bool RTObject_impl::removeOutPort(OutPortBase &port)
 {
     m_outports.erase(std::remove(m_outports.begin(), m_outports.end(), &port), m_outports.end());
     return removePort(port);
+}
+
+void RTObject_impl::finalizePorts()
+{
+    m_inports.clear();
+    m_outports.clear();
+    const std::vector<PortBase *> ports = m_addedPorts;
+    for (PortBase *port : ports)
+        detachPort(*port);
+}
+
+void RTObject_impl::finalizeContexts()
+{
+    ExecutionContextList_var owned = get_owned_contexts();
+    for (CORBA::ULong i = 0; i < owned->length(); ++i) {
+        try {
+            owned[i]->stop();
+        } catch (const CORBA::Exception &) {
+            // A context already stopped or gone: nothing left to stop.
+        }
+    }
 }
 
 ExecutionContext_ptr RTObject_impl::getExecutionContext(UniqueId ec_id)
@@ -307,6 +514,180 @@ void RTObject_impl::removeConfigurationSetNameListener(ConfigurationSetNameListe
     m_configsets.removeConfigurationSetNameListener(type, listener);
 }
 
+bool RTObject_impl::addSdoServiceProvider(const SDOPackage::ServiceProfile &prof, SdoServiceProviderBase *provider)
+{
+    if (provider == nullptr)
+        return false;
+    SDOPackage::ServiceProfile profile(prof);
+    if (CORBA::is_nil(profile.service))
+        profile.service = provider->_this();
+    std::lock_guard<std::mutex> lock(m_sdoMutex);
+    for (const auto &offered : m_sdoProviders) {
+        if (std::string(offered.first.id) == std::string(prof.id))
+            return false;
+    }
+    m_sdoProviders.emplace_back(profile, provider);
+    return true;
+}
+
+bool RTObject_impl::removeSdoServiceProvider(const char *id)
+{
+    SdoServiceProviderBase *removed = nullptr;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        for (auto it = m_sdoProviders.begin(); it != m_sdoProviders.end(); ++it) {
+            if (id != nullptr && std::string(it->first.id) == id) {
+                removed = it->second;
+                m_sdoProviders.erase(it);
+                break;
+            }
+        }
+    }
+    if (removed == nullptr)
+        return false;
+    removed->finalize();
+    return true;
+}
+
+bool RTObject_impl::addSdoServiceConsumer(const SDOPackage::ServiceProfile &prof)
+{
+    const std::string id(prof.id);
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        for (SdoServiceConsumerBase *consumer : m_sdoConsumers) {
+            if (id == static_cast<const char *>(consumer->getProfile().id))
+                return consumer->reinit(prof);
+        }
+    }
+    const std::string type(prof.interface_type);
+    SdoServiceConsumerBase *consumer = SdoServiceConsumerFactory::instance().createObject(type);
+    if (consumer == nullptr) {
+        RTC_ERROR(("addSdoServiceConsumer(%s): no SDO service consumer of interface type '%s' is registered",
+                   id.c_str(), type.c_str()));
+        return false;
+    }
+    if (!consumer->init(*this, prof)) {
+        RTC_WARN(("addSdoServiceConsumer(%s): the consumer of interface type '%s' refused the profile", id.c_str(),
+                  type.c_str()));
+        SdoServiceConsumerFactory::instance().deleteObject(consumer);
+        return false;
+    }
+    std::lock_guard<std::mutex> lock(m_sdoMutex);
+    m_sdoConsumers.push_back(consumer);
+    return true;
+}
+
+bool RTObject_impl::removeSdoServiceConsumer(const char *id)
+{
+    SdoServiceConsumerBase *removed = nullptr;
+    {
+        std::lock_guard<std::mutex> lock(m_sdoMutex);
+        for (auto it = m_sdoConsumers.begin(); it != m_sdoConsumers.end(); ++it) {
+            if (id != nullptr && std::string((*it)->getProfile().id) == id) {
+                removed = *it;
+                m_sdoConsumers.erase(it);
+                break;
+            }
+        }
+    }
+    if (removed == nullptr)
+        return false;
+    removed->finalize();
+    SdoServiceConsumerFactory::instance().deleteObject(removed);
+    return true;
+}
+
+void RTObject_impl::removeSdoServiceConsumerStartThread(const char *id)
+{
+    // OpenRTM-aist removes from a thread of its own so that a consumer may remove itself; the
+    // removal here takes no lock the consumer could hold.
+    removeSdoServiceConsumer(id);
+}
+
+SDOPackage::ServiceProfileList *RTObject_impl::get_service_profiles()
+{
+    SDOPackage::ServiceProfileList_var profiles = Runtime::RtObject::get_service_profiles();
+    std::lock_guard<std::mutex> lock(m_sdoMutex);
+    for (const auto &offered : m_sdoProviders) {
+        const CORBA::ULong n = profiles->length();
+        profiles->length(n + 1);
+        profiles[n] = offered.first;
+    }
+    return profiles._retn();
+}
+
+void RTObject_impl::addPreComponentActionListener(PreComponentActionListenerType listener_type,
+                                                  PreComponentActionListener *listener, bool autoclean)
+{
+    m_actionListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removePreComponentActionListener(PreComponentActionListenerType listener_type,
+                                                     PreComponentActionListener *listener)
+{
+    m_actionListeners.removeListener(listener_type, listener);
+}
+
+void RTObject_impl::addPostComponentActionListener(PostComponentActionListenerType listener_type,
+                                                   PostComponentActionListener *listener, bool autoclean)
+{
+    m_actionListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removePostComponentActionListener(PostComponentActionListenerType listener_type,
+                                                      PostComponentActionListener *listener)
+{
+    m_actionListeners.removeListener(listener_type, listener);
+}
+
+void RTObject_impl::addPortActionListener(PortActionListenerType listener_type, PortActionListener *listener,
+                                          bool autoclean)
+{
+    m_actionListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removePortActionListener(PortActionListenerType listener_type, PortActionListener *listener)
+{
+    m_actionListeners.removeListener(listener_type, listener);
+}
+
+void RTObject_impl::addExecutionContextActionListener(ECActionListenerType listener_type,
+                                                      ExecutionContextActionListener *listener, bool autoclean)
+{
+    m_actionListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removeExecutionContextActionListener(ECActionListenerType listener_type,
+                                                         ExecutionContextActionListener *listener)
+{
+    m_actionListeners.removeListener(listener_type, listener);
+}
+
+void RTObject_impl::addPortConnectListener(PortConnectListenerType listener_type, PortConnectListener *listener,
+                                           bool autoclean)
+{
+    m_portconnListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removePortConnectListener(PortConnectListenerType listener_type, PortConnectListener *listener)
+{
+    m_portconnListeners.removeListener(listener_type, listener);
+}
+
+void RTObject_impl::addPortConnectRetListener(PortConnectRetListenerType listener_type,
+                                              PortConnectRetListener *listener, bool autoclean)
+{
+    m_portconnListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removePortConnectRetListener(PortConnectRetListenerType listener_type,
+                                                 PortConnectRetListener *listener)
+{
+    m_portconnListeners.removeListener(listener_type, listener);
+}
+
+SdoServiceProviderBase::~SdoServiceProviderBase() = default;
+
 DataFlowComponentBase::DataFlowComponentBase(Manager *manager)
     : RTObject_impl(manager)
 {
@@ -315,3 +696,5 @@ DataFlowComponentBase::DataFlowComponentBase(Manager *manager)
 DataFlowComponentBase::~DataFlowComponentBase() = default;
 
 } // namespace RTC
+
+RTM::LocalServiceProfile::~LocalServiceProfile() = default;

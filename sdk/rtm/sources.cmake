@@ -5,6 +5,9 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/BufferStatus.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteDataStreamBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ByteData.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CdrBufferBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/CdrRingBuffer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ComponentActionListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConfigurationListener.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ConnectorBase.h
@@ -19,6 +22,10 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataFlowComponentBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataInPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortListeners.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataPortStatus.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectInPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectOutPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DirectPortBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DataTypeUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DefaultConfiguration.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/DefaultPeriodicTask.h
@@ -38,6 +45,21 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/idl/InterfaceDataTypesUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortCorbaCdrConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortCorbaCdrProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDirectConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDirectProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDSConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortDSProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortPullConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortPushConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ListenerHolder.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LocalServiceBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamFile.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/Macho.h
@@ -56,15 +78,38 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OpenHRPExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortCorbaCdrConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortCorbaCdrProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDirectConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDirectProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDSConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortDSProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortProvider.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortPullConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortPushConnector.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMConsumer.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/OutPortSHMProvider.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicECSharedComposite.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PeriodicTaskFactory.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortCallback.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PortConnectListener.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherFlush.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherNew.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/PublisherPeriodic.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTC.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTCUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObjectStateMachine.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceConsumerBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceProviderBase.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SharedMemoryPort.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SimulatorExecutionContext.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StateMachine.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/StaticFSM.h
@@ -77,9 +122,15 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sdkinternal.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/loggersink.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/logger.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/componentlisteners.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/connectorlisteners.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/configadmin.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/portadmin.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/ports.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/dataportframework.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/dataconnectors.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/datatransports.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/publishers.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/rtobject.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.cpp

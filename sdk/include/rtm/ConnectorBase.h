@@ -3,11 +3,16 @@
 #ifndef RTM_CONNECTORBASE_H
 #define RTM_CONNECTORBASE_H
 
+#include <rtm/CdrBufferBase.h>
+#include <rtm/DataPortStatus.h>
 #include <rtm/RTC.h>
+#include <rtm/SystemLogger.h>
 
+#include <coil/Properties.h>
 #include <coil/stringutil.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RTC
@@ -29,6 +34,26 @@ public:
     coil::Properties properties;
 };
 using ConnectorInfoList = std::vector<ConnectorInfo>;
+
+class ConnectorBase;
+using ConnectorList = std::vector<ConnectorBase *>;
+
+/// One connection of a data port, as the port's connectors() lists it.
+class ConnectorBase
+{
+public:
+    virtual ~ConnectorBase() = default;
+    /// The connection's name, id, ports and properties.
+    virtual const ConnectorInfo &profile() = 0;
+    virtual const char *id() = 0;
+    virtual const char *name() = 0;
+    /// Ends the connection.
+    virtual DataPortStatus disconnect() = 0;
+    /// The buffer the connection keeps samples in (null when it has none of its own).
+    virtual CdrBufferBase *getBuffer() = 0;
+    virtual void activate() = 0;
+    virtual void deactivate() = 0;
+};
 } // namespace RTC
 
 #endif // RTM_CONNECTORBASE_H

@@ -157,16 +157,23 @@ public:
     virtual ReturnCode operator()(ConnectorInfo &info) = 0;
 };
 
+/// What connectors, publishers, providers and consumers are given to reach a port's listeners.
+class ConnectorListenersBase
+{
+public:
+    virtual ~ConnectorListenersBase();
+};
+
 /**
  * The listeners of one data port and what the port knows of its connections: the ports call
  * connected()/disconnected() as connections come and go and notify…() at each event.
  * Listeners added with autoclean are deleted with the holder or when removed. Thread-safe.
  */
-class ConnectorListeners
+class ConnectorListeners : public ConnectorListenersBase
 {
 public:
     ConnectorListeners();
-    ~ConnectorListeners();
+    ~ConnectorListeners() override;
     ConnectorListeners(const ConnectorListeners &) = delete;
     ConnectorListeners &operator=(const ConnectorListeners &) = delete;
 

@@ -35,8 +35,6 @@ public:
     }
     /// Declares a required interface that @p consumer will reach.
     bool registerConsumer(const char *instance_name, const char *type_name, CorbaConsumerBase &consumer);
-    /// The port's name as given to the constructor.
-    const char *getName() const { return name().c_str(); }
 
 protected:
     ReturnCode_t subscribeInterfaces(const ConnectorProfile &profile) override;

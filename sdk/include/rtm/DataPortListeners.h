@@ -5,6 +5,7 @@
 #define RTM_DATAPORTLISTENERS_H
 
 #include <rtm/ConnectorListener.h>
+#include <rtm/SystemLogger.h>
 
 #include <coil/Properties.h>
 #include <coil/stringutil.h>
@@ -23,6 +24,12 @@ public:
     ConnectorInfoList getConnectorProfiles();
     coil::vstring getConnectorIds();
     coil::vstring getConnectorNames();
+    /// Copies the information of connection @p id into @p prof; false when there is no such connection.
+    bool getConnectorProfileById(const char *id, ConnectorInfo &prof);
+    /// The same for the connection named @p name.
+    bool getConnectorProfileByName(const char *name, ConnectorInfo &prof);
+    /// True when the samples of the port's connections travel little-endian (the default).
+    bool isLittleEndian();
 
     void addConnectorDataListener(ConnectorDataListenerType type, ConnectorDataListener *listener,
                                   bool autoclean = true);
@@ -34,8 +41,15 @@ protected:
     /// @p data_type is the repository id of the port's sample type.
     explicit DataPortListeners(const char *data_type);
 
+    /**
+     * RTC_OK when the connector's `dataport.interface_type` is one the runtime carries
+     * (corba_cdr); otherwise logs why the port @p portName refuses it and answers BAD_PARAMETER.
+     */
+    ReturnCode_t checkInterfaceType(const char *portName, const ConnectorProfile &profile);
+
     coil::Properties m_properties;
     ConnectorListeners m_listeners;
+    mutable Logger rtclog;
 };
 } // namespace RTC
 

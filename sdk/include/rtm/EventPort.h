@@ -159,7 +159,11 @@ public:
     }
 
     /// Events are taken as they arrive: there is nothing to read.
-    bool read() override { return true; }
+    bool read(std::string name = "") override
+    {
+        (void)name;
+        return true;
+    }
 
 private:
     std::string m_name;

@@ -5,12 +5,17 @@
 
 #include <rtm/ConnectorListener.h>
 #include <rtm/DataPortListeners.h>
+#include <rtm/ByteData.h>
+#include <rtm/DataPortStatus.h>
+#include <rtm/InPortConnector.h>
 #include <rtm/PortBase.h>
 
 #include <rtmruntime/inport.h>
 
+#include <mutex>
 #include <string>
 #include <typeinfo>
+#include <vector>
 
 namespace RTC
 {
@@ -25,8 +30,11 @@ public:
     InPortBase(const char *name, const char *data_type);
     ~InPortBase() override;
 
-    /// Takes the next sample into the bound variable; false when none was waiting.
-    virtual bool read() = 0;
+    /**
+     * Takes the next sample into the bound variable; false when none was waiting. A non-empty
+     * @p name must be the name of one of the port's connections (see InPort::read).
+     */
+    virtual bool read(std::string name = "") = 0;
     /// True when a sample waits in a push connection.
     virtual bool isNew();
     /// True when no sample waits.
@@ -38,12 +46,40 @@ public:
      */
     virtual bool receiveValue(const void *value, const std::type_info &type, const std::string &connectorId);
 
+    /**
+     * One connector object per connection (valid until the connection goes): its profile, its
+     * id and name, disconnect() and read() of the next sample (on a port with one connection).
+     */
+    const std::vector<InPortConnector *> &connectors();
+    /// The connection @p id; null when the port has none of that id.
+    InPortConnector *getConnectorById(const char *id);
+    /// The connection named @p name; null when the port has none of that name.
+    InPortConnector *getConnectorByName(const char *name);
+
+    /// RT Studio: takes the next waiting sample as bytes and their byte order; false when none waits.
+    virtual bool takeMarshalled(ByteData &data, bool &littleEndian);
+    /**
+     * RT Studio: a marshalled sample an OutPort connector object of this process writes to a
+     * connection of this port; false when it is not a sample of the port's type.
+     */
+    virtual bool receiveMarshalled(const ByteData &data, bool littleEndian, const std::string &connectorId);
+
     ReturnCode_t notify_connect(ConnectorProfile &connector_profile) override;
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
 protected:
+    /// Refuses, with a logged message, the interface types the runtime does not carry.
+    ReturnCode_t publishInterfaces(ConnectorProfile &connector_profile) override;
+
+protected:
+    /// Logs that @p operation on connection @p name cannot be done on a port with several connections.
+    void logUnsupported(const char *operation, const std::string &name);
     /// Takes one marshalled sample; false when none was waiting.
     bool readBytes(::Runtime::SharedCdr *data, bool *littleEndian);
+
+private:
+    std::mutex m_connectorsMutex;
+    std::vector<InPortConnector *> m_connectors;
 };
 } // namespace RTC
 

@@ -3,14 +3,22 @@
 #ifndef RTM_OUTPORT_H
 #define RTM_OUTPORT_H
 
+#include <rtm/CdrBufferBase.h>
+#include <rtm/DataPortStatus.h>
 #include <rtm/OutPortBase.h>
+#include <rtm/OutPortConnector.h>
+#include <rtm/PortCallback.h>
+#include <rtm/RTC.h>
 #include <rtm/Timestamp.h>
 
 #include <rtmruntime/dataport.h>
 
 namespace RTC
 {
-/// An OutPort of samples of @p DataType bound to the component's variable.
+/**
+ * An OutPort of samples of @p DataType bound to the component's variable. Callbacks set with
+ * setOnWrite / setOnWriteConvert are called as OpenRTM-aist calls them; the port does not own them.
+ */
 template <class DataType>
 class OutPort : public OutPortBase
 {
@@ -21,10 +29,36 @@ public:
     }
     ~OutPort() override = default;
 
+    /// The port's name as given to the constructor.
     const char *name() const { return ::Runtime::PortBase::name().c_str(); }
 
-    /// Sends @p value to every connection (push: at once or by the connection's policy).
+    /**
+     * Sends @p value to every connection (push: at once or by the connection's policy). The
+     * OnWrite callback sees @p value first; when an OnWriteConvert callback is set, what it
+     * returns is sent instead.
+     */
     virtual bool write(DataType &value)
+    {
+        if (m_onWrite != nullptr)
+            (*m_onWrite)(value);
+        if (m_onWriteConvert == nullptr)
+            return send(value);
+        DataType converted = (*m_onWriteConvert)(value);
+        return send(converted);
+    }
+    bool write() override { return write(m_value); }
+    bool operator<<(DataType &value) { return write(value); }
+
+    /// Calls @p on_write (not owned; null: none) with each value about to be written.
+    inline void setOnWrite(OnWrite<DataType> *on_write) { m_onWrite = on_write; }
+    /// Sends what @p on_wconvert returns for each value written (not owned; null: none).
+    inline void setOnWriteConvert(OnWriteConvert<DataType> *on_wconvert) { m_onWriteConvert = on_wconvert; }
+
+protected:
+    DataType &m_value;
+
+private:
+    bool send(DataType &value)
     {
         const DataType &sample = value;
         notifyWrite(&value, typeid(DataType), [&sample]() { return ::Runtime::marshal(sample, true); });
@@ -32,11 +66,9 @@ public:
         writeBytes([&sample](bool littleEndian) { return ::Runtime::marshalView(sample, littleEndian); });
         return true;
     }
-    bool write() override { return write(m_value); }
-    bool operator<<(DataType &value) { return write(value); }
 
-protected:
-    DataType &m_value;
+    OnWrite<DataType> *m_onWrite = nullptr;
+    OnWriteConvert<DataType> *m_onWriteConvert = nullptr;
 };
 } // namespace RTC
 

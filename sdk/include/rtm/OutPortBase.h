@@ -6,6 +6,7 @@
 #include <rtm/ConnectorListener.h>
 #include <rtm/DataPortListeners.h>
 #include <rtm/InPortBase.h>
+#include <rtm/OutPortConnector.h>
 #include <rtm/PortBase.h>
 
 #include <rtmruntime/outport.h>
@@ -29,6 +30,18 @@ public:
     /// Sends the bound variable to every connection.
     virtual bool write() = 0;
 
+    /**
+     * One connector object per connection (valid until the connection goes): its profile, its
+     * id and name, disconnect() and write() of a marshalled sample (on a port with one connection).
+     */
+    const std::vector<OutPortConnector *> &connectors();
+    /// The connection @p id; null when the port has none of that id.
+    OutPortConnector *getConnectorById(const char *id);
+    /// The connection named @p name; null when the port has none of that name.
+    OutPortConnector *getConnectorByName(const char *name);
+    /// RT Studio: sends a marshalled sample through connection @p connectorId (the port's only one).
+    bool writeMarshalledTo(const std::string &connectorId, const ByteData &data, bool littleEndian);
+
     ReturnCode_t notify_connect(ConnectorProfile &connector_profile) override;
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
@@ -37,6 +50,8 @@ public:
     void removeDirectPeer(const std::string &connectorId);
 
 protected:
+    /// Refuses, with a logged message, the interface types the runtime does not carry.
+    ReturnCode_t publishInterfaces(ConnectorProfile &connector_profile) override;
     /// Gives @p value to the InPorts of this process connected directly (one copy, no marshalling).
     void writeDirect(const void *value, const std::type_info &type);
     /// Calls the ON_BUFFER_WRITE and ON_SEND listeners with a sample about to be sent.
@@ -48,6 +63,8 @@ protected:
 private:
     std::mutex m_directMutex;
     std::vector<std::pair<std::string, InPortBase *>> m_directPeers;
+    std::mutex m_connectorsMutex;
+    std::vector<OutPortConnector *> m_connectors;
 };
 } // namespace RTC
 

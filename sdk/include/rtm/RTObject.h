@@ -3,6 +3,7 @@
 #ifndef RTM_RTOBJECT_H
 #define RTM_RTOBJECT_H
 
+#include <rtm/ComponentActionListener.h>
 #include <rtm/ConfigAdmin.h>
 #include <rtm/CorbaPort.h>
 #include <rtm/Factory.h>
@@ -10,18 +11,43 @@
 #include <rtm/InPortBase.h>
 #include <rtm/OutPortBase.h>
 #include <rtm/PortBase.h>
+#include <rtm/PortConnectListener.h>
 #include <rtm/RTC.h>
 #include <rtm/SystemLogger.h>
 
 #include <rtmruntime/rtobject.h>
 
 #include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RTC
 {
 class Manager;
+class SdoServiceConsumerBase;
+class SdoServiceProviderBase;
+
+namespace detail
+{
+/// A listener of class @p Base that calls @p Obj's member function with the listener's arguments.
+template <class Base, class Obj, class... Args>
+class MemberListener : public Base
+{
+public:
+    MemberListener(Obj &obj, void (Obj::*memfunc)(Args...))
+        : m_obj(obj)
+        , m_memfunc(memfunc)
+    {
+    }
+    void operator()(Args... args) override { (m_obj.*m_memfunc)(args...); }
+
+private:
+    Obj &m_obj;
+    void (Obj::*m_memfunc)(Args...);
+};
+} // namespace detail
 
 /**
  * An RT-Component (RTC::RTObject, OpenRTM::DataFlowComponent servant). Subclasses add ports and
@@ -39,9 +65,25 @@ public:
 
     using ::Runtime::RtObject::setProperties;
 
-    // RTC::LightweightRTObject and ComponentAction, extended as OpenRTM-aist does.
+    // RTC::LightweightRTObject and ComponentAction, extended as OpenRTM-aist does: each action
+    // calls the pre- and post-component action listeners around the on…() callback.
     ReturnCode_t initialize() override;
+    ReturnCode_t on_initialize() override;
+    ReturnCode_t on_finalize() override;
+    ReturnCode_t on_startup(UniqueId exec_handle) override;
+    ReturnCode_t on_shutdown(UniqueId exec_handle) override;
+    ReturnCode_t on_activated(UniqueId exec_handle) override;
+    ReturnCode_t on_deactivated(UniqueId exec_handle) override;
+    ReturnCode_t on_aborting(UniqueId exec_handle) override;
+    ReturnCode_t on_error(UniqueId exec_handle) override;
+    ReturnCode_t on_reset(UniqueId exec_handle) override;
     ReturnCode_t on_execute(UniqueId exec_handle) override;
+    ReturnCode_t on_state_update(UniqueId exec_handle) override;
+    ReturnCode_t on_rate_changed(UniqueId exec_handle) override;
+    /// Attaches @p exec_context and calls the EC_ATTACHED listeners with its id.
+    UniqueId attach_context(ExecutionContext_ptr exec_context) override;
+    /// Calls the EC_DETACHED listeners, then detaches the context.
+    ReturnCode_t detach_context(UniqueId ec_id) override;
 
     const char *getInstanceName();
     void setInstanceName(const char *instance_name);
@@ -73,6 +115,10 @@ public:
     bool removePort(CorbaPort &port);
     bool removeInPort(InPortBase &port);
     bool removeOutPort(OutPortBase &port);
+    /// Disconnects and removes every port the component added.
+    void finalizePorts();
+    /// Stops and detaches the execution contexts the component owns (as when it finalizes).
+    void finalizeContexts();
 
     /// The execution context known as @p ec_id (0: the component's own); nil when there is none.
     ExecutionContext_ptr getExecutionContext(UniqueId ec_id);
@@ -82,6 +128,27 @@ public:
     ReturnCode_t activate(UniqueId ec_id);
     ReturnCode_t deactivate(UniqueId ec_id);
     ReturnCode_t reset(UniqueId ec_id);
+
+    /**
+     * Offers SDO service @p provider (not owned) under @p prof, whose id must be new: the
+     * component's get_service_profiles() lists it and get_sdo_service(id) answers its reference
+     * (the provider's own when @p prof names none). False for an id already offered.
+     */
+    bool addSdoServiceProvider(const SDOPackage::ServiceProfile &prof, SdoServiceProviderBase *provider);
+    /// Withdraws the service @p id (its finalize() is called); false when there is none.
+    bool removeSdoServiceProvider(const char *id);
+    /**
+     * Attaches the SDO service consumer SdoServiceConsumerFactory makes for the profile's
+     * interface type and initialises it with @p prof (a known id re-initialises its consumer).
+     * False, with a logged message naming the type, when no consumer of that type is registered
+     * or it refuses the profile.
+     */
+    bool addSdoServiceConsumer(const SDOPackage::ServiceProfile &prof);
+    /// Finalizes and deletes consumer @p id; false when there is none.
+    bool removeSdoServiceConsumer(const char *id);
+    void removeSdoServiceConsumerStartThread(const char *id);
+    /// The component's service profiles: those given through SDO plus the providers added here.
+    SDOPackage::ServiceProfileList *get_service_profiles() override;
 
     /// Reads every InPort (before onExecute when setReadAll(true) was called).
     bool readAll();
@@ -100,6 +167,106 @@ public:
                                          bool autoclean = true);
     void removeConfigurationSetNameListener(ConfigurationSetNameListenerType type,
                                             ConfigurationSetNameListener *listener);
+
+    using PreCompActionListener = PreComponentActionListener;
+    using PreCompActionListenerType = PreComponentActionListenerType;
+    using PostCompActionListener = PostComponentActionListener;
+    using PostCompActionListenerType = PostComponentActionListenerType;
+    using ECActionListenerType = ExecutionContextActionListenerType;
+
+    /// Calls @p listener before the component action @p listener_type names.
+    void addPreComponentActionListener(PreComponentActionListenerType listener_type,
+                                       PreComponentActionListener *listener, bool autoclean = true);
+    /// @p memfunc of @p obj as a PreComponentActionListener (deleted with the component).
+    template <class Listener>
+    PreComponentActionListener *addPreComponentActionListener(PreCompActionListenerType listener_type,
+                                                              Listener &obj, void (Listener::*memfunc)(UniqueId ec_id))
+    {
+        PreComponentActionListener *listener
+            = new detail::MemberListener<PreComponentActionListener, Listener, UniqueId>(obj, memfunc);
+        addPreComponentActionListener(listener_type, listener, true);
+        return listener;
+    }
+    void removePreComponentActionListener(PreComponentActionListenerType listener_type,
+                                          PreComponentActionListener *listener);
+
+    /// Calls @p listener after the component action @p listener_type names, with its result.
+    void addPostComponentActionListener(PostComponentActionListenerType listener_type,
+                                        PostComponentActionListener *listener, bool autoclean = true);
+    template <class Listener>
+    PostComponentActionListener *addPostComponentActionListener(PostCompActionListenerType listener_type,
+                                                                Listener &obj,
+                                                                void (Listener::*memfunc)(UniqueId ec_id,
+                                                                                          ReturnCode_t ret))
+    {
+        PostComponentActionListener *listener
+            = new detail::MemberListener<PostComponentActionListener, Listener, UniqueId, ReturnCode_t>(obj, memfunc);
+        addPostComponentActionListener(listener_type, listener, true);
+        return listener;
+    }
+    void removePostComponentActionListener(PostComponentActionListenerType listener_type,
+                                           PostComponentActionListener *listener);
+
+    /// Calls @p listener with the profile of each port added (ADD_PORT) or removed (REMOVE_PORT).
+    void addPortActionListener(PortActionListenerType listener_type, PortActionListener *listener,
+                               bool autoclean = true);
+    template <class Listener>
+    PortActionListener *addPortActionListener(PortActionListenerType listener_type, Listener &obj,
+                                              void (Listener::*memfunc)(const RTC::PortProfile &))
+    {
+        PortActionListener *listener
+            = new detail::MemberListener<PortActionListener, Listener, const RTC::PortProfile &>(obj, memfunc);
+        addPortActionListener(listener_type, listener, true);
+        return listener;
+    }
+    void removePortActionListener(PortActionListenerType listener_type, PortActionListener *listener);
+
+    /// Calls @p listener when an execution context is attached (EC_ATTACHED) or detached (EC_DETACHED).
+    void addExecutionContextActionListener(ECActionListenerType listener_type,
+                                           ExecutionContextActionListener *listener, bool autoclean = true);
+    template <class Listener>
+    ExecutionContextActionListener *addExecutionContextActionListener(ECActionListenerType listener_type,
+                                                                      Listener &obj,
+                                                                      void (Listener::*memfunc)(UniqueId))
+    {
+        ExecutionContextActionListener *listener
+            = new detail::MemberListener<ExecutionContextActionListener, Listener, UniqueId>(obj, memfunc);
+        addExecutionContextActionListener(listener_type, listener, true);
+        return listener;
+    }
+    void removeExecutionContextActionListener(ECActionListenerType listener_type,
+                                              ExecutionContextActionListener *listener);
+
+    /// Calls @p listener at a step of connecting or disconnecting any port of the component.
+    void addPortConnectListener(PortConnectListenerType listener_type, PortConnectListener *listener,
+                                bool autoclean = true);
+    template <class Listener>
+    PortConnectListener *addPortConnectListener(PortConnectListenerType listener_type, Listener &obj,
+                                                void (Listener::*memfunc)(const char *, ConnectorProfile &))
+    {
+        PortConnectListener *listener
+            = new detail::MemberListener<PortConnectListener, Listener, const char *, ConnectorProfile &>(obj,
+                                                                                                       memfunc);
+        addPortConnectListener(listener_type, listener, true);
+        return listener;
+    }
+    void removePortConnectListener(PortConnectListenerType listener_type, PortConnectListener *listener);
+
+    /// Calls @p listener with the result of a step of connecting or disconnecting any port.
+    void addPortConnectRetListener(PortConnectRetListenerType listener_type, PortConnectRetListener *listener,
+                                   bool autoclean = true);
+    template <class Listener>
+    PortConnectRetListener *addPortConnectRetListener(PortConnectRetListenerType listener_type, Listener &obj,
+                                                      void (Listener::*memfunc)(const char *, ConnectorProfile &,
+                                                                                ReturnCode_t))
+    {
+        PortConnectRetListener *listener
+            = new detail::MemberListener<PortConnectRetListener, Listener, const char *, ConnectorProfile &,
+                                         ReturnCode_t>(obj, memfunc);
+        addPortConnectRetListener(listener_type, listener, true);
+        return listener;
+    }
+    void removePortConnectRetListener(PortConnectRetListenerType listener_type, PortConnectRetListener *listener);
 
     /// Listeners called before the FSM state actions (see the pre/postOnFsm… hooks).
     void addPreFsmActionListener(PreFsmActionListenerType listener_type, PreFsmActionListener *listener,
@@ -191,13 +358,25 @@ protected:
     bool m_writeAll;
     bool m_writeAllCompletion;
     mutable Logger rtclog;
+    ComponentActionListeners m_actionListeners;
+    PortConnectListeners m_portconnListeners;
 
 private:
+    void attachPort(PortBase &port);
+    bool detachPort(PortBase &port);
+    template <typename Action>
+    ReturnCode_t around(PreComponentActionListenerType pre, PostComponentActionListenerType post, UniqueId ec_id,
+                        Action action);
+
     struct FsmActions;
     std::unique_ptr<FsmActions> m_fsmActions;
     std::string m_instanceName;
     std::string m_typeName;
     std::string m_category;
+    std::vector<PortBase *> m_addedPorts;
+    std::mutex m_sdoMutex;
+    std::vector<std::pair<SDOPackage::ServiceProfile, SdoServiceProviderBase *>> m_sdoProviders;
+    std::vector<SdoServiceConsumerBase *> m_sdoConsumers;
 };
 } // namespace RTC
 

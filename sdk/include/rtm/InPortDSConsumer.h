@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// Sends push samples to an InPort over data_service.
+#ifndef RTC_INPORTDSCONSUMER_H
+#define RTC_INPORTDSCONSUMER_H
+
+#include <rtm/CorbaConsumer.h>
+#include <rtm/InPortConsumer.h>
+#include <rtm/Manager.h>
+#include <rtm/SystemLogger.h>
+
+namespace RTC {
+/**
+ * The OutPort side of push connections of interface type `data_service`.
+ * RT Studio's runtime has no data_service transport: the class exists so that code naming it
+ * builds; using it fails with a logged message naming the interface type.
+ */
+class InPortDSConsumer : public InPortConsumer
+{
+public:
+    InPortDSConsumer();
+    ~InPortDSConsumer() override;
+    void init(coil::Properties &prop) override;
+    DataPortStatus put(ByteData &data) override;
+    void publishInterfaceProfile(SDOPackage::NVList &properties) override;
+    bool subscribeInterface(const SDOPackage::NVList &properties) override;
+    void unsubscribeInterface(const SDOPackage::NVList &properties) override;
+
+private:
+    mutable Logger rtclog;
+    coil::Properties m_properties;
+};
+} // namespace RTC
+
+extern "C" {
+/// Registers the class in its factory under its interface type.
+void InPortDSConsumerInit();
+}
+
+#endif // RTC_INPORTDSCONSUMER_H

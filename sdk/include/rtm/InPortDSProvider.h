@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// The InPort side of data_service push connections.
+#ifndef RTC_INPORTDSPROVIDER_H
+#define RTC_INPORTDSPROVIDER_H
+
+#include <rtm/BufferBase.h>
+#include <rtm/ConnectorBase.h>
+#include <rtm/ConnectorListener.h>
+#include <rtm/InPortProvider.h>
+#include <rtm/Manager.h>
+
+namespace RTC {
+/**
+ * The InPort side of push connections of interface type `data_service`.
+ * RT Studio's runtime has no data_service transport: the class exists so that code naming it
+ * builds; using it fails with a logged message naming the interface type.
+ */
+class InPortDSProvider : public InPortProvider
+{
+public:
+    InPortDSProvider();
+    ~InPortDSProvider() override;
+    void init(coil::Properties &prop) override;
+    void setBuffer(BufferBase<ByteData> *buffer) override;
+    void setListener(ConnectorInfo &info, ConnectorListenersBase *listeners) override;
+    void setConnector(InPortConnector *connector) override;
+    bool publishInterface(SDOPackage::NVList &prop) override;
+
+private:
+    CdrBufferBase *m_buffer;
+    ConnectorInfo m_profile;
+    ConnectorListenersBase *m_listeners;
+    InPortConnector *m_connector;
+};
+} // namespace RTC
+
+extern "C" {
+/// Registers the class in its factory under its interface type.
+void InPortDSProviderInit();
+}
+
+#endif // RTC_INPORTDSPROVIDER_H

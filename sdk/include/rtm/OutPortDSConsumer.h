@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// Takes pull samples from an OutPort over data_service.
+#ifndef RTC_OUTPORTDSCONSUMER_H
+#define RTC_OUTPORTDSCONSUMER_H
+
+#include <rtm/ConnectorBase.h>
+#include <rtm/ConnectorListener.h>
+#include <rtm/CorbaConsumer.h>
+#include <rtm/OutPortConsumer.h>
+#include <rtm/SystemLogger.h>
+
+namespace RTC {
+/**
+ * The InPort side of pull connections of interface type `data_service`.
+ * RT Studio's runtime has no data_service transport: the class exists so that code naming it
+ * builds; using it fails with a logged message naming the interface type.
+ */
+class OutPortDSConsumer : public OutPortConsumer
+{
+public:
+    OutPortDSConsumer();
+    ~OutPortDSConsumer() override;
+    void init(coil::Properties &prop) override;
+    void setBuffer(CdrBufferBase *buffer) override;
+    void setListener(ConnectorInfo &info, ConnectorListenersBase *listeners) override;
+    DataPortStatus get(ByteData &data) override;
+    bool subscribeInterface(const SDOPackage::NVList &properties) override;
+    void unsubscribeInterface(const SDOPackage::NVList &properties) override;
+
+private:
+    mutable Logger rtclog;
+    CdrBufferBase *m_buffer;
+    ConnectorInfo m_profile;
+    ConnectorListenersBase *m_listeners;
+};
+} // namespace RTC
+
+extern "C" {
+/// Registers the class in its factory under its interface type.
+void OutPortDSConsumerInit();
+}
+
+#endif // RTC_OUTPORTDSCONSUMER_H
