@@ -38,6 +38,15 @@ void TriggeredExecutionContext::tick()
     m_wake.notify_all();
 }
 
+RTC::ReturnCode_t TriggeredExecutionContext::requestTransition(const ParticipantPtr &p, RTC::LifeCycleState from,
+                                                               Request request)
+{
+    const RTC::ReturnCode_t result = ExecutionContext::requestTransition(p, from, request);
+    if (result == RTC::RTC_OK && m_mode == Tick::Asynchronous)
+        tick();
+    return result;
+}
+
 void TriggeredExecutionContext::started()
 {
     if (m_mode == Tick::Asynchronous)

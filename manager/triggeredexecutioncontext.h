@@ -13,9 +13,11 @@ namespace Runtime {
  * (asynchronous: tick() returns at once and the context's thread runs one cycle per tick, none
  * lost when they come faster than the cycles) and OpenHRPExecutionContext /
  * SimulatorExecutionContext (synchronous: tick() returns after the cycle, run in the caller's
- * thread). State changes happen at once in the caller's thread, between cycles, so that a
- * driver that activates a component and then ticks sees it execute on that tick. A tick while
- * the context is stopped runs nothing.
+ * thread). State changes happen at once in the caller's thread, between cycles. As OpenRTM's
+ * ExtTrigExecutionContext wakes its thread while it waits for a requested state change, an
+ * asynchronous context runs one cycle of its own after each activation, deactivation or reset:
+ * an activated component executes once before the first tick. A tick while the context is
+ * stopped runs nothing.
  */
 class TriggeredExecutionContext : public ExecutionContext, public virtual POA_OpenRTM::ExtTrigExecutionContextService
 {
@@ -34,6 +36,7 @@ public:
     void tick() override;
 
 protected:
+    RTC::ReturnCode_t requestTransition(const ParticipantPtr &p, RTC::LifeCycleState from, Request request) override;
     void started() override;
     void run() override;
 
