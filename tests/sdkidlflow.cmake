@@ -4,7 +4,7 @@
 # (idl/ with rtm-config and rtm-skelwrapper) and 2.0 (idl/ sub-project), a hand-written one using
 # --include-dir and --output-dir, and one on the camera and manipulator extension types, configured,
 # built and run against the build tree's prefix and against an installed copy.
-rtstudio_add_test(tst_sdkidlflow SOURCES tst_sdkidlflow.cpp LIBS Qt6::Core)
+rtstudio_add_test(tst_sdkidlflow SOURCES tst_sdkidlflow.cpp LIBS Qt6::Core rtstudio_sdkproject)
 target_compile_definitions(tst_sdkidlflow PRIVATE
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
     RTSTUDIO_CMAKE_COMMAND="${CMAKE_COMMAND}"

@@ -2,7 +2,7 @@
 # The SDK's prefix (sdk/package/): layout, CMake package, pkg-config files, rtm-config and the skeleton
 # wrapper, and projects in five consumption styles built and run against the build tree's prefix and
 # against an installed copy (cmake --install --component sdk into a temporary folder).
-rtstudio_add_test(tst_sdkpackage SOURCES tst_sdkpackage.cpp LIBS Qt6::Core)
+rtstudio_add_test(tst_sdkpackage SOURCES tst_sdkpackage.cpp LIBS Qt6::Core rtstudio_sdkproject)
 target_compile_definitions(tst_sdkpackage PRIVATE
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
     RTSTUDIO_CMAKE_COMMAND="${CMAKE_COMMAND}"

@@ -2,6 +2,8 @@
 // The component SDK's PeriodicECSharedComposite in one process: an SDK program's RTC::Manager
 // offers the type, and the composite drives components written against the SDK on its own
 // execution context, in member order, from one thread.
+#include "sdkinprocess.h"
+
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/Manager.h>
 #include <rtm/PeriodicECSharedComposite.h>
@@ -88,29 +90,15 @@ private:
 
 void TestSdkComposite::initTestCase()
 {
-    const char *args[] = {"tst_sdkcomposite", "-o", "naming.enable:NO", "-o", "corba.master_manager:",
-                          "-o", "corba.endpoints:127.0.0.1:", "-o", "logger.log_level:ERROR",
-                          "-f", "/nonexistent/rtc.conf", "-i"};
-    std::vector<char *> argv;
-    for (const char *arg : args)
-        argv.push_back(const_cast<char *>(arg));
-    m_manager = RTC::Manager::init(int(argv.size()), argv.data());
+    m_manager = SdkTest::startInProcessManager("tst_sdkcomposite");
     QVERIFY(m_manager != nullptr);
-    QVERIFY(m_manager->activateManager());
-    m_manager->runManager(true);
     coil::Properties recorder(recorderSpec);
     QVERIFY(m_manager->registerFactory(recorder, RTC::Create<Recorder>, RTC::Delete<Recorder>));
 }
 
 void TestSdkComposite::cleanupTestCase()
 {
-    if (!m_manager)
-        return;
-    for (RTC::RTObject_impl *component : m_manager->getComponents())
-        m_manager->deleteComponent(component);
-    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponents().empty(), 5000);
-    RTC::Manager::terminate();
-    m_manager->join();
+    QVERIFY(SdkTest::stopInProcessManager(m_manager));
 }
 
 void TestSdkComposite::factoryIsRegistered()

@@ -4,6 +4,7 @@
 // the component's FSM hooks and FSM action listeners, an EventInPort fed by OutPorts of another
 // component (events named by connector property or connector name, TimedLong arguments), and
 // the event queue's RingBuffer.
+#include "sdkinprocess.h"
 #include "lampmachine.h"
 
 #include "../sdkmodules/trafficlight/TrafficLightFsm.h"
@@ -205,16 +206,8 @@ private:
 
 void TestSdkFsm::initTestCase()
 {
-    const char *args[] = {"tst_sdkfsm", "-o", "naming.enable:NO", "-o", "corba.master_manager:", "-o",
-                          "corba.endpoints:127.0.0.1:", "-o", "logger.log_level:ERROR", "-f", "/nonexistent/rtc.conf",
-                          "-i"};
-    std::vector<char *> argv;
-    for (const char *arg : args)
-        argv.push_back(const_cast<char *>(arg));
-    m_manager = RTC::Manager::init(int(argv.size()), argv.data());
+    m_manager = SdkTest::startInProcessManager("tst_sdkfsm");
     QVERIFY(m_manager != nullptr);
-    QVERIFY(m_manager->activateManager());
-    m_manager->runManager(true);
     coil::Properties probe(probeSpec), source(sourceSpec);
     QVERIFY(m_manager->registerFactory(probe, RTC::Create<FsmProbe>, RTC::Delete<FsmProbe>));
     QVERIFY(m_manager->registerFactory(source, RTC::Create<EventSource>, RTC::Delete<EventSource>));
@@ -222,13 +215,7 @@ void TestSdkFsm::initTestCase()
 
 void TestSdkFsm::cleanupTestCase()
 {
-    if (!m_manager)
-        return;
-    for (RTC::RTObject_impl *component : m_manager->getComponents())
-        m_manager->deleteComponent(component);
-    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponents().empty(), 5000);
-    RTC::Manager::terminate();
-    m_manager->join();
+    QVERIFY(SdkTest::stopInProcessManager(m_manager));
 }
 
 void TestSdkFsm::lampFollowsMachoSemantics()

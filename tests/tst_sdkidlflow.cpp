@@ -5,6 +5,8 @@
 // projects in each IDL layout (OpenRTP 1.2, OpenRTP 2.0, hand-written with --include-dir, one on the
 // extension types) configured, built and run, against the build tree's prefix and against a copy
 // installed with cmake --install.
+#include "sdkproject.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -20,40 +22,9 @@ constexpr int configureTimeoutMs = 120 * 1000;
 constexpr int buildTimeoutMs = 300 * 1000;
 constexpr int toolTimeoutMs = 30 * 1000;
 
-struct RunResult
-{
-    bool finished = false;
-    int exitCode = -1;
-    QString output;
-
-    bool ok() const { return finished && exitCode == 0; }
-};
-
-RunResult run(const QString &program, const QStringList &arguments, const QProcessEnvironment &environment,
-              const QString &workingDirectory, int timeoutMs)
-{
-    QProcess process;
-    process.setProcessEnvironment(environment);
-    process.setWorkingDirectory(workingDirectory);
-    process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(program, arguments);
-    RunResult result;
-    result.finished = process.waitForStarted(toolTimeoutMs) && process.waitForFinished(timeoutMs);
-    if (!result.finished) {
-        process.kill();
-        process.waitForFinished(toolTimeoutMs);
-    }
-    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    result.output = QString::fromLocal8Bit(process.readAll());
-    if (!result.finished)
-        result.output += QStringLiteral("\n[%1 did not finish: %2]").arg(program, process.errorString());
-    return result;
-}
-
-QString failure(const QString &what, const RunResult &result)
-{
-    return QStringLiteral("%1 failed (exit %2):\n%3").arg(what).arg(result.exitCode).arg(result.output.right(6000));
-}
+using SdkTest::failure;
+using SdkTest::run;
+using SdkTest::RunResult;
 
 QString readText(const QString &path)
 {

@@ -4,6 +4,8 @@
 // (OpenRTP 2.0, the 1.2 era, modern CMake, plain pkg-config, older include paths such as
 // <coil-2.0/coil/…> and hrtm/…) configured, built and run against the build tree's prefix and
 // against an installed copy made once per run with cmake --install.
+#include "sdkproject.h"
+
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
@@ -21,40 +23,9 @@ constexpr int configureTimeoutMs = 120 * 1000;
 constexpr int buildTimeoutMs = 300 * 1000;
 constexpr int toolTimeoutMs = 30 * 1000;
 
-struct RunResult
-{
-    bool finished = false;
-    int exitCode = -1;
-    QString output;
-
-    bool ok() const { return finished && exitCode == 0; }
-};
-
-RunResult run(const QString &program, const QStringList &arguments, const QProcessEnvironment &environment,
-              const QString &workingDirectory, int timeoutMs)
-{
-    QProcess process;
-    process.setProcessEnvironment(environment);
-    process.setWorkingDirectory(workingDirectory);
-    process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(program, arguments);
-    RunResult result;
-    result.finished = process.waitForStarted(toolTimeoutMs) && process.waitForFinished(timeoutMs);
-    if (!result.finished) {
-        process.kill();
-        process.waitForFinished(toolTimeoutMs);
-    }
-    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    result.output = QString::fromLocal8Bit(process.readAll());
-    if (!result.finished)
-        result.output += QStringLiteral("\n[%1 did not finish: %2]").arg(program, process.errorString());
-    return result;
-}
-
-QString failure(const QString &what, const RunResult &result)
-{
-    return QStringLiteral("%1 failed (exit %2):\n%3").arg(what).arg(result.exitCode).arg(result.output.right(6000));
-}
+using SdkTest::failure;
+using SdkTest::run;
+using SdkTest::RunResult;
 
 QString canonical(const QString &path)
 {

@@ -4,6 +4,8 @@
 // OnOverflow), the port API (names, profile, connectors), the component action listeners and
 // the port connect listeners, each at the moment OpenRTM-aist calls it, over real connections
 // between components of one manager.
+#include "sdkinprocess.h"
+
 #include <rtm/CdrRingBuffer.h>
 #include <rtm/ComponentActionListener.h>
 #include <rtm/CorbaPort.h>
@@ -562,17 +564,8 @@ void TestSdkPorts::initTestCase()
 {
     QVERIFY(m_logDir.isValid());
     const QByteArray logFile = "logger.file_name:" + m_logDir.filePath("ports.log").toUtf8();
-    const char *args[] = {"tst_sdkports",           "-o", "naming.enable:NO",           "-o",
-                          "corba.master_manager:",  "-o", "corba.endpoints:127.0.0.1:", "-o",
-                          "logger.log_level:ERROR", "-o", logFile.constData(),          "-f",
-                          "/nonexistent/rtc.conf",  "-i"};
-    std::vector<char *> argv;
-    for (const char *arg : args)
-        argv.push_back(const_cast<char *>(arg));
-    m_manager = RTC::Manager::init(int(argv.size()), argv.data());
+    m_manager = SdkTest::startInProcessManager("tst_sdkports", {logFile});
     QVERIFY(m_manager != nullptr);
-    QVERIFY(m_manager->activateManager());
-    m_manager->runManager(true);
     coil::Properties writer(writerSpec), reader(readerSpec);
     QVERIFY(m_manager->registerFactory(writer, RTC::Create<PortsWriter>, RTC::Delete<PortsWriter>));
     QVERIFY(m_manager->registerFactory(reader, RTC::Create<PortsReader>, RTC::Delete<PortsReader>));
@@ -599,10 +592,7 @@ void TestSdkPorts::cleanup()
 
 void TestSdkPorts::cleanupTestCase()
 {
-    if (!m_manager)
-        return;
-    RTC::Manager::terminate();
-    m_manager->join();
+    QVERIFY(SdkTest::stopInProcessManager(m_manager));
 }
 
 QString TestSdkPorts::logText()

@@ -2,6 +2,8 @@
 // The component SDK in one process: components written against OpenRTM-aist's C++ API are
 // created by RTC::Manager, connected through their ports, configured through SDO and called
 // through service ports, as OpenRTM-aist would do it.
+#include "sdkinprocess.h"
+
 #include <rtm/CorbaConsumer.h>
 #include <rtm/CorbaPort.h>
 #include <rtm/DataFlowComponentBase.h>
@@ -379,30 +381,10 @@ private:
 void TestSdkRtm::initTestCase()
 {
     // No name server and no master: the manager serves on a free loopback port only.
-    const QByteArray loadPath
-        = "manager.modules.load_path:" + QFileInfo(MANAGER_TEST_MODULE).path().toUtf8();
-    const char *args[] = {"tst_sdkrtm",
-                          "-o",
-                          "naming.enable:NO",
-                          "-o",
-                          "corba.master_manager:",
-                          "-o",
-                          "corba.endpoints:127.0.0.1:",
-                          "-o",
-                          "logger.log_level:ERROR",
-                          "-o",
-                          loadPath.constData(),
-                          "-f",
-                          "/nonexistent/rtc.conf",
-                          "-i"};
-    std::vector<char *> argv;
-    for (const char *arg : args)
-        argv.push_back(const_cast<char *>(arg));
-    m_manager = RTC::Manager::init(int(argv.size()), argv.data());
+    m_manager = SdkTest::startInProcessManager(
+        "tst_sdkrtm", {"manager.modules.load_path:" + QFileInfo(MANAGER_TEST_MODULE).path().toUtf8()});
     QVERIFY(m_manager != nullptr);
     QCOMPARE(&RTC::Manager::instance(), m_manager);
-    QVERIFY(m_manager->activateManager());
-    m_manager->runManager(true);
     coil::Properties source(sourceSpec), sink(sinkSpec), provider(providerSpec), consumer(consumerSpec);
     QVERIFY(m_manager->registerFactory(source, RTC::Create<SdkSource>, RTC::Delete<SdkSource>));
     QVERIFY(m_manager->registerFactory(sink, RTC::Create<SdkSink>, RTC::Delete<SdkSink>));
@@ -412,14 +394,8 @@ void TestSdkRtm::initTestCase()
 
 void TestSdkRtm::cleanupTestCase()
 {
-    if (!m_manager)
-        return;
-    for (RTC::RTObject_impl *component : m_manager->getComponents())
-        m_manager->deleteComponent(component);
-    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponents().empty(), 5000);
     // The manager shuts down like a component program's: the ORB stops and runManager() returns.
-    RTC::Manager::terminate();
-    m_manager->join();
+    QVERIFY(SdkTest::stopInProcessManager(m_manager));
 }
 
 void TestSdkRtm::managerArguments_data()

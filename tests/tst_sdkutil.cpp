@@ -2,6 +2,8 @@
 // OpenRTM-aist's utility headers on the component SDK: name/value lists, sequence helpers, type
 // names and IORs in process; CORBA_RTCUtil against live components of an in-process manager, and
 // CorbaNaming against a real omniNames.
+#include "sdkinprocess.h"
+
 #include <rtm/ByteDataStreamBase.h>
 #include <rtm/CORBA_CdrMemoryStream.h>
 #include <rtm/CORBA_IORUtil.h>
@@ -226,25 +228,8 @@ private:
 
 void TestSdkUtil::initTestCase()
 {
-    const char *args[] = {"tst_sdkutil",
-                          "-o",
-                          "naming.enable:NO",
-                          "-o",
-                          "corba.master_manager:",
-                          "-o",
-                          "corba.endpoints:127.0.0.1:",
-                          "-o",
-                          "logger.log_level:ERROR",
-                          "-f",
-                          "/nonexistent/rtc.conf",
-                          "-i"};
-    std::vector<char *> argv;
-    for (const char *arg : args)
-        argv.push_back(const_cast<char *>(arg));
-    m_manager = RTC::Manager::init(int(argv.size()), argv.data());
+    m_manager = SdkTest::startInProcessManager("tst_sdkutil");
     QVERIFY(m_manager != nullptr);
-    QVERIFY(m_manager->activateManager());
-    m_manager->runManager(true);
     coil::Properties source(sourceSpec), sink(sinkSpec);
     QVERIFY(m_manager->registerFactory(source, RTC::Create<UtilSource>, RTC::Delete<UtilSource>));
     QVERIFY(m_manager->registerFactory(sink, RTC::Create<UtilSink>, RTC::Delete<UtilSink>));
@@ -252,13 +237,7 @@ void TestSdkUtil::initTestCase()
 
 void TestSdkUtil::cleanupTestCase()
 {
-    if (!m_manager)
-        return;
-    for (RTC::RTObject_impl *component : m_manager->getComponents())
-        m_manager->deleteComponent(component);
-    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponents().empty(), 5000);
-    RTC::Manager::terminate();
-    m_manager->join();
+    QVERIFY(SdkTest::stopInProcessManager(m_manager));
 }
 
 void TestSdkUtil::init()

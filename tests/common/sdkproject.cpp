@@ -1,15 +1,47 @@
 // SPDX-License-Identifier: MIT
 #include "sdkproject.h"
 
+#include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
 
 namespace SdkTest {
 
+RunResult run(const QString &program, const QStringList &arguments, const QProcessEnvironment &environment,
+              const QString &workingDirectory, int timeoutMs)
+{
+    constexpr int startTimeoutMs = 30 * 1000;
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.setWorkingDirectory(workingDirectory);
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    process.start(program, arguments);
+    RunResult result;
+    result.finished = process.waitForStarted(startTimeoutMs) && process.waitForFinished(timeoutMs);
+    if (!result.finished) {
+        process.kill();
+        process.waitForFinished(startTimeoutMs);
+    }
+    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    result.output = QString::fromLocal8Bit(process.readAll());
+    if (!result.finished)
+        result.output += QStringLiteral("\n[%1 did not finish: %2]").arg(program, process.errorString());
+    return result;
+}
+
+QString failure(const QString &what, const RunResult &result)
+{
+    return QStringLiteral("%1 failed (exit %2):\n%3").arg(what).arg(result.exitCode).arg(result.output.right(6000));
+}
+
 bool runTool(const QString &program, const QStringList &arguments, const QString &cwd, int timeoutMs, QString *log)
 {
     QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("CCACHE_BASEDIR"), QDir::tempPath());
+    environment.insert(QStringLiteral("CCACHE_NOHASHDIR"), QStringLiteral("true"));
+    process.setProcessEnvironment(environment);
     process.setWorkingDirectory(cwd);
     process.setProcessChannelMode(QProcess::MergedChannels);
     process.start(program, arguments);
@@ -24,7 +56,7 @@ bool runTool(const QString &program, const QStringList &arguments, const QString
     return process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
 }
 
-bool buildProject(const QString &dir, const QString &sdkPrefix, QString *log)
+bool buildProject(const QString &dir, const QString &sdkPrefix, QString *log, const QStringList &cmakeArguments)
 {
     const QString cmake = QStandardPaths::findExecutable(QStringLiteral("cmake"));
     QStringList configure{"-S", dir, "-B", dir + "/build", "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
@@ -32,6 +64,7 @@ bool buildProject(const QString &dir, const QString &sdkPrefix, QString *log)
     const QString ccache = QStandardPaths::findExecutable(QStringLiteral("ccache"));
     if (!ccache.isEmpty())
         configure << "-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache;
+    configure << cmakeArguments;
     return runTool(cmake, configure, dir, 120000, log)
            && runTool(cmake, {"--build", dir + "/build", "-j2"}, dir, 600000, log);
 }
