@@ -23,6 +23,7 @@
 #include <rtm/Factory.h>
 #include <rtm/Manager.h>
 
+#include <condition_variable>
 #include <mutex>
 
 namespace RTC {

@@ -25,6 +25,8 @@
 #include <hrtm/out_port.h>
 #include <hrtm/properties.h>
 
+#include <sys/utsname.h>
+
 /*! A component's type name as a string: COMPONENT_NAME(Camera) is "Camera". */
 #define COMPONENT_NAME(comp_name) #comp_name
 

@@ -8,6 +8,8 @@
 
 #include <rtm/InPort.h>
 
+#include <sys/utsname.h>
+
 namespace hrtm {
 #ifndef CXX11
 /*! A data input port bound to @p data (see RTC::InPort). */

@@ -8,6 +8,8 @@
 
 #include <rtm/OutPort.h>
 
+#include <sys/utsname.h>
+
 namespace hrtm {
 #ifndef CXX11
 /*! A data output port bound to @p data (see RTC::OutPort). */

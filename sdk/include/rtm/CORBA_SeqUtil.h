@@ -9,6 +9,7 @@
 
 #include <coil/stringutil.h>
 
+#include <condition_variable>
 #include <string>
 
 namespace CORBA_SeqUtil

@@ -5,7 +5,11 @@
 
 #include <coil/Properties.h>
 
+#include <array>
 #include <cstdint>
+#include <mutex>
+#include <utility>
+#include <vector>
 
 namespace RTC
 {

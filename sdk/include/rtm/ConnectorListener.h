@@ -7,10 +7,14 @@
 #include <rtm/ByteData.h>
 #include <rtm/ConnectorBase.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <typeinfo>
+#include <utility>
+#include <vector>
 
 namespace RTC
 {

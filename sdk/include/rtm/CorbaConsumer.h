@@ -6,6 +6,7 @@
 #include <rtm/RTC.h>
 
 #include <iostream>
+#include <utility>
 
 namespace RTC
 {

@@ -8,7 +8,12 @@
 
 #include <rtmruntime/serviceport.h>
 
+#include <array>
+#include <compare>
+#include <condition_variable>
+#include <list>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace RTC

@@ -5,4 +5,6 @@
 
 #include <rtm/InPort.h>
 
+#include <sys/utsname.h>
+
 #endif // RTM_DATAINPORT_H

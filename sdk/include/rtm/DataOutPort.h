@@ -5,4 +5,6 @@
 
 #include <rtm/OutPort.h>
 
+#include <sys/utsname.h>
+
 #endif // RTM_DATAOUTPORT_H

@@ -5,6 +5,7 @@
 
 #include <rtm/ExecutionContextBase.h>
 
+#include <condition_variable>
 #include <string>
 
 namespace RTC

@@ -20,8 +20,12 @@
 #include <rtm/StaticFSM.h>
 #include <rtm/Timestamp.h>
 
+#include <iostream>
+#include <mutex>
 #include <string>
+#include <sys/utsname.h>
 #include <type_traits>
+#include <vector>
 
 namespace RTC
 {

@@ -12,6 +12,7 @@
 #include <coil/Properties.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <functional>
 #include <map>
 #include <mutex>

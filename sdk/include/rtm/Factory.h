@@ -5,6 +5,20 @@
 
 #include <rtm/RTC.h>
 
+#include <algorithm>
+#include <assert.h>
+#include <cassert>
+#include <ctime>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <ratio>
+#include <stdexcept>
+#include <sys/single_threaded.h>
+#include <system_error>
+#include <typeinfo>
+#include <utility>
+
 namespace RTC
 {
 class Manager;

@@ -6,7 +6,26 @@
 
 #include <rtm/RTC.h>
 
+#include <algorithm>
+#include <array>
+#include <assert.h>
+#include <cassert>
+#include <chrono>
 #include <cstdint>
+#include <cstring>
+#include <cwctype>
+#include <fstream>
+#include <functional>
+#include <ios>
+#include <iostream>
+#include <istream>
+#include <mutex>
+#include <ostream>
+#include <sstream>
+#include <streambuf>
+#include <utility>
+#include <vector>
+#include <wctype.h>
 
 namespace RTC
 {

@@ -18,6 +18,7 @@
 
 #include <mutex>
 #include <string>
+#include <sys/utsname.h>
 #include <vector>
 
 namespace RTC

@@ -11,6 +11,7 @@
 #include <rtm/DirectOutPortBase.h>
 #include <rtm/PortBase.h>
 
+#include <condition_variable>
 #include <string>
 
 namespace RTC {

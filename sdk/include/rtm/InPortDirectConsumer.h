@@ -8,6 +8,8 @@
 #include <rtm/Manager.h>
 #include <rtm/SystemLogger.h>
 
+#include <condition_variable>
+
 namespace RTC {
 /**
  * The OutPort side of push connections of interface type `direct`.

@@ -9,6 +9,8 @@
 #include <rtm/InPortProvider.h>
 #include <rtm/Manager.h>
 
+#include <condition_variable>
+
 namespace RTC {
 /**
  * The InPort side of push connections of interface type `direct`.

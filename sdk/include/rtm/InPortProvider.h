@@ -9,6 +9,7 @@
 #include <rtm/DataPortStatus.h>
 #include <rtm/InPortConnector.h>
 #include <rtm/SystemLogger.h>
+#include <condition_variable>
 #include <string>
 
 namespace RTC {

@@ -8,6 +8,8 @@
 #include <rtm/InPortProvider.h>
 #include <rtm/PublisherBase.h>
 
+#include <condition_variable>
+
 namespace RTC {
 class OutPortConsumer;
 

@@ -7,6 +7,8 @@
 #include <rtm/InPortConsumer.h>
 #include <rtm/PublisherBase.h>
 
+#include <condition_variable>
+
 namespace RTC {
 class InPortProvider;
 

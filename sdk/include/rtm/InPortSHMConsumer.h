@@ -9,6 +9,10 @@
 #include <rtm/SharedMemoryPort.h>
 #include <rtm/SystemLogger.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+
 namespace RTC {
 /**
  * The OutPort side of push connections of interface type `shared_memory`.

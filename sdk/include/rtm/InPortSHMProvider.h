@@ -10,6 +10,10 @@
 #include <rtm/Manager.h>
 #include <rtm/SharedMemoryPort.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+
 namespace RTC {
 /**
  * The InPort side of push connections of interface type `shared_memory`.

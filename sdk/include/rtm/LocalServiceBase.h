@@ -6,6 +6,10 @@
 #include <coil/Factory.h>
 #include <coil/Properties.h>
 
+#include <bit>
+#include <chrono>
+#include <list>
+#include <memory>
 #include <string>
 #include <vector>
 

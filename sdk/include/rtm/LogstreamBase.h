@@ -8,6 +8,8 @@
 #include <coil/Logger.h>
 #include <rtm/RTC.h>
 
+#include <chrono>
+
 namespace RTC
 {
 using StreambufType = coil::LogStreamBuffer;

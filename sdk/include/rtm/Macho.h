@@ -23,6 +23,7 @@
 #include <cassert>
 #include <deque>
 #include <memory>
+#include <new>
 #include <tuple>
 #include <type_traits>
 #include <vector>

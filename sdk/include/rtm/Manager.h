@@ -16,6 +16,7 @@
 #include <coil/Signal.h>
 
 #include <atomic>
+#include <condition_variable>
 #include <functional>
 #include <list>
 #include <mutex>

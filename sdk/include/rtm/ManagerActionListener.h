@@ -7,7 +7,10 @@
 #include <coil/Properties.h>
 #include <coil/stringutil.h>
 
+#include <mutex>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace RTC
 {

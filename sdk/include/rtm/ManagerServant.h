@@ -8,6 +8,8 @@
 #include <rtm/Manager.h>
 #include <rtm/SystemLogger.h>
 
+#include <condition_variable>
+#include <iostream>
 #include <string>
 #include <vector>
 

@@ -8,10 +8,11 @@
 #include <coil/Properties.h>
 #include <rtm/ObjectManager.h>
 
+#include <condition_variable>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
-#include <map>
 
 #define CONFIG_EXT "manager.modules.config_ext"
 #define CONFIG_PATH "manager.modules.config_path"

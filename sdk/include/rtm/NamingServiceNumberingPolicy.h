@@ -3,6 +3,7 @@
 #ifndef RTC_NAMINGSERVICENUMBERINGPOLICY_H
 #define RTC_NAMINGSERVICENUMBERINGPOLICY_H
 
+#include <condition_variable>
 #include <string>
 #include <vector>
 #include <rtm/RTC.h>

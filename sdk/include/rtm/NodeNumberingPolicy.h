@@ -3,6 +3,7 @@
 #ifndef RTC_NODENUMBERINGPOLICY_H
 #define RTC_NODENUMBERINGPOLICY_H
 
+#include <condition_variable>
 #include <string>
 #include <vector>
 #include <rtm/RTC.h>

@@ -11,7 +11,11 @@
 #include <rtm/RTC.h>
 #include <rtm/Timestamp.h>
 
+#include <functional>
 #include <rtmruntime/dataport.h>
+#include <string>
+#include <sys/utsname.h>
+#include <vector>
 
 namespace RTC
 {

@@ -12,6 +12,7 @@
 #include <rtm/PortBase.h>
 #include <rtm/SystemLogger.h>
 
+#include <condition_variable>
 #include <string>
 
 namespace RTC {

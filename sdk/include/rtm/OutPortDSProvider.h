@@ -9,6 +9,8 @@
 #include <rtm/Manager.h>
 #include <rtm/OutPortProvider.h>
 
+#include <condition_variable>
+
 namespace RTC {
 /**
  * The OutPort side of pull connections of interface type `data_service`.

@@ -9,6 +9,17 @@
 #include <rtm/OutPortConsumer.h>
 #include <rtm/SystemLogger.h>
 
+#include <atomic>
+#include <bit>
+#include <condition_variable>
+#include <csignal>
+#include <list>
+#include <memory>
+#include <signal.h>
+#include <sys/ucontext.h>
+#include <thread>
+#include <unistd.h>
+
 namespace RTC {
 /**
  * The InPort side of pull connections of interface type `direct`.

@@ -8,6 +8,7 @@
 #include <rtm/DataPortStatus.h>
 #include <rtm/OutPortConnector.h>
 #include <rtm/SystemLogger.h>
+#include <condition_variable>
 #include <string>
 
 namespace RTC {

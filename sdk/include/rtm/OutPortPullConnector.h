@@ -6,6 +6,8 @@
 #include <rtm/ConnectorListener.h>
 #include <rtm/OutPortConnector.h>
 
+#include <condition_variable>
+
 namespace RTC {
 class OutPortProvider;
 

@@ -7,6 +7,8 @@
 #include <rtm/OutPortConnector.h>
 #include <rtm/PublisherBase.h>
 
+#include <condition_variable>
+
 namespace RTC {
 class ConnectorListeners;
 

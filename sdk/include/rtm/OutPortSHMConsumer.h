@@ -10,6 +10,10 @@
 #include <rtm/SharedMemoryPort.h>
 #include <rtm/SystemLogger.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+
 namespace RTC {
 /**
  * The InPort side of pull connections of interface type `shared_memory`.

@@ -10,6 +10,10 @@
 #include <rtm/OutPortProvider.h>
 #include <rtm/SharedMemoryPort.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+
 namespace RTC {
 /**
  * The OutPort side of pull connections of interface type `shared_memory`.

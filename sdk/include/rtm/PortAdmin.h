@@ -7,6 +7,9 @@
 #include <rtm/RTC.h>
 #include <rtm/SystemLogger.h>
 
+#include <array>
+#include <compare>
+#include <condition_variable>
 #include <mutex>
 #include <string>
 #include <vector>

@@ -9,7 +9,11 @@
 
 #include <rtmruntime/portbase.h>
 
+#include <array>
+#include <compare>
+#include <condition_variable>
 #include <iostream>
+#include <mutex>
 
 namespace RTC
 {

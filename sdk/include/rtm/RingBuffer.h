@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <condition_variable>
+#include <iostream>
 #include <mutex>
 #include <string>
 #include <vector>

@@ -9,7 +9,10 @@
 
 #include <rtmruntime/inportconnector.h> // OpenRTM::PortStatus
 
+#include <fcntl.h>
 #include <string>
+#include <sys/mman.h>
+#include <sys/stat.h>
 
 namespace RTC {
 /**
