@@ -2217,7 +2217,7 @@
 <context>
     <name>ReplaceProfileCommand</name>
     <message>
-        <location filename="../../builder/componentcommands.cpp" line="+205"/>
+        <location filename="../../builder/componentcommands.cpp" line="+121"/>
         <source>Edit RTC.xml</source>
         <translation>RTC.xml を編集</translation>
     </message>
@@ -2241,7 +2241,7 @@
 <context>
     <name>SetActionCommand</name>
     <message>
-        <location filename="../../builder/componentcommands.cpp" line="-123"/>
+        <location filename="../../builder/componentcommands.cpp" line="-39"/>
         <source>Change %1</source>
         <translation>%1 を変更</translation>
     </message>
@@ -2265,7 +2265,7 @@
 <context>
     <name>SetComponentDocCommand</name>
     <message>
-        <location filename="../../builder/componentcommands.cpp" line="+105"/>
+        <location filename="../../builder/componentcommands.cpp" line="+76"/>
         <source>Change documentation</source>
         <translation>ドキュメントを変更</translation>
     </message>
@@ -2297,7 +2297,7 @@
 <context>
     <name>SetLanguageCommand</name>
     <message>
-        <location filename="../../builder/componentcommands.cpp" line="+41"/>
+        <location filename="../../builder/componentcommands.cpp" line="+13"/>
         <source>Change language and environment</source>
         <translation>言語・環境を変更</translation>
     </message>
@@ -2880,7 +2880,7 @@
         <translation>%1 はシステムプロファイルではありません。</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <source>Not running: %1</source>
         <translation>起動していないコンポーネント：%1</translation>
     </message>
@@ -3694,7 +3694,7 @@
 <context>
     <name>SystemEditor::ManagerView</name>
     <message>
-        <location filename="../../systemeditor/online/managerview.cpp" line="+77"/>
+        <location filename="../../systemeditor/online/managerview.cpp" line="+79"/>
         <source>No manager selected</source>
         <translation>マネージャが選択されていません</translation>
     </message>
@@ -3794,7 +3794,7 @@
         <translation>ロード可能なモジュール</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+37"/>
         <source>%1 (this manager)</source>
         <translation>%1 (このマネージャ)</translation>
     </message>
@@ -3835,7 +3835,7 @@
 <context>
     <name>SystemEditor::NameServiceView</name>
     <message>
-        <location filename="../../systemeditor/online/nameserviceview.cpp" line="+142"/>
+        <location filename="../../systemeditor/online/nameserviceview.cpp" line="+143"/>
         <source>host[:port]</source>
         <translation>ホスト[:ポート]</translation>
     </message>
@@ -3851,12 +3851,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+179"/>
+        <location line="+188"/>
         <source>Refresh</source>
         <translation>更新</translation>
     </message>
     <message>
-        <location line="-178"/>
+        <location line="-187"/>
         <source>Delete Zombies</source>
         <translation>ゾンビを削除</translation>
     </message>
@@ -3876,7 +3876,7 @@
         <translation>「%1」は新しいネームサーバのアドレスではありません</translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+122"/>
         <source>Activate</source>
         <translation>アクティブ化</translation>
     </message>
@@ -3944,7 +3944,7 @@
 <context>
     <name>SystemEditor::OnlineDiagram</name>
     <message>
-        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+114"/>
+        <location filename="../../systemeditor/online/onlinediagram.cpp" line="+120"/>
         <source>Activate All</source>
         <translation>すべてアクティブ化</translation>
     </message>
@@ -3994,7 +3994,7 @@
         <translation>到達不能：</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+86"/>
         <source>Activating</source>
         <translation>アクティブ化</translation>
     </message>
@@ -4024,19 +4024,24 @@
         <translation>停止</translation>
     </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+5"/>
         <source>%1 %n component(s)…</source>
         <translation>
             <numerusform>%1：%n 個のコンポーネントを処理中…</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+33"/>
+        <source>Cancelling: the waits end, the actions not yet sent are not made…</source>
+        <translation>取り消し中: 待機を終了し、まだ送っていない操作は行いません…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Cancelling: the calls under way finish, the others are not made…</source>
         <translation>中止しています：実行中の呼び出しは完了し、残りは行いません…</translation>
     </message>
     <message numerus="yes">
-        <location line="+16"/>
+        <location line="+14"/>
         <source>%1: %2 of %n component(s) done</source>
         <translation>
             <numerusform>%1：%n 個中 %2 個のコンポーネントが完了</numerusform>
@@ -4057,7 +4062,7 @@
         </translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+32"/>
         <source>&amp;Monitor Port</source>
         <translation>ポートをモニタ(&amp;M)</translation>
     </message>
@@ -4120,6 +4125,63 @@
         <location line="+1"/>
         <source>Saved %1 without: %2</source>
         <translation>%1を保存しました（次を除く：%2）</translation>
+    </message>
+    <message>
+        <location filename="../../systemeditor/online/onlinediagramplan.cpp" line="+36"/>
+        <source>Runs the system&apos;s StartUp and Activation plan (as rtctl start)</source>
+        <translation>システムの StartUp と Activation の計画を実行します (rtctl start と同じ)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Runs the system&apos;s Deactivation and ShutDown plan (as rtctl stop)</source>
+        <translation>システムの Deactivation と ShutDown の計画を実行します (rtctl stop と同じ)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Starting the system</source>
+        <translation>システムを開始中</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Stopping the system</source>
+        <translation>システムを停止中</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: finding its components…</source>
+        <translation>%1: コンポーネントを探しています…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+46"/>
+        <location line="+29"/>
+        <source>%1: %n action(s) done</source>
+        <translation>
+            <numerusform>%1: %n 件の操作が完了</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="-27"/>
+        <source>, waiting: %1</source>
+        <translation>、待機中: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+23"/>
+        <source>%1: cancelled after %n action(s)</source>
+        <translation>
+            <numerusform>%1: %n 件の操作の後に取り消しました</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 failed: %2</source>
+        <translation>%1 に失敗しました: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>, %n optional failed</source>
+        <translation>
+            <numerusform>、任意のもの %n 件が失敗</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5109,7 +5171,7 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../../app/main.cpp" line="+39"/>
+        <location filename="../../app/main.cpp" line="+38"/>
         <source>--export-diagram needs --output OUT.png or OUT.svg</source>
         <translation>--export-diagram には --output OUT.png または OUT.svg が必要です</translation>
     </message>
