@@ -75,6 +75,20 @@ bool asksFor(const SDOPackage::NVList &prop, const char *interfaceType)
     return coil::normalize(nvValue(prop, "dataport.interface_type")) == interfaceType;
 }
 
+// A provider answers a request for its interface type with its properties, and only that one.
+bool publishWhenAskedFor(SDOPackage::NVList &prop, const std::string &interfaceType,
+                         const SDOPackage::NVList &properties)
+{
+    if (!asksFor(prop, interfaceType.c_str()))
+        return false;
+    for (CORBA::ULong i = 0; i < properties.length(); ++i) {
+        const CORBA::ULong n = prop.length();
+        prop.length(n + 1);
+        prop[n] = properties[i];
+    }
+    return true;
+}
+
 DataPortStatus fromPortStatus(OpenRTM::PortStatus status)
 {
     switch (status) {
@@ -139,14 +153,7 @@ void InPortProvider::publishInterfaceProfile(SDOPackage::NVList &prop)
 
 bool InPortProvider::publishInterface(SDOPackage::NVList &prop)
 {
-    if (!asksFor(prop, m_interfaceType.c_str()))
-        return false;
-    for (CORBA::ULong i = 0; i < m_properties.length(); ++i) {
-        const CORBA::ULong n = prop.length();
-        prop.length(n + 1);
-        prop[n] = m_properties[i];
-    }
-    return true;
+    return publishWhenAskedFor(prop, m_interfaceType, m_properties);
 }
 
 void InPortProvider::setInterfaceType(const char *interface_type)
@@ -178,14 +185,7 @@ void OutPortProvider::publishInterfaceProfile(SDOPackage::NVList &prop)
 
 bool OutPortProvider::publishInterface(SDOPackage::NVList &prop)
 {
-    if (!asksFor(prop, m_interfaceType.c_str()))
-        return false;
-    for (CORBA::ULong i = 0; i < m_properties.length(); ++i) {
-        const CORBA::ULong n = prop.length();
-        prop.length(n + 1);
-        prop[n] = m_properties[i];
-    }
-    return true;
+    return publishWhenAskedFor(prop, m_interfaceType, m_properties);
 }
 
 void OutPortProvider::setPortType(const char *port_type)
