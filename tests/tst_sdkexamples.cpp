@@ -67,6 +67,7 @@ private slots:
     void seqProgramsExchangeData();
     void serviceExamplesCallBuiltins();
     void configSampleTakesConfiguration();
+    void serviceAndConfigurationModulesRunInRtmanager();
     void compositeExampleRuns();
 
 private:
@@ -332,8 +333,19 @@ void TestSdkExamples::serviceExamplesCallBuiltins()
     QTRY_VERIFY_WITH_TIMEOUT(printed(provider).contains(QLatin1String("MyService::echo() was called.")), runTimeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(printed(provider).contains(QLatin1String("Message: echo 1")), runTimeoutMs);
     // The example's consumer takes commands on standard input and calls the built-in provider.
-    consumer->write("set_value 4.5\nget_value\n");
-    QTRY_VERIFY_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("Current remote value: 4.5")), runTimeoutMs);
+    // set_value() runs in a thread of the consumer's own: ask for the value until it is there.
+    consumer->write("set_value 4.5\n");
+    QTRY_VERIFY_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("Set remote value: 4.5")), runTimeoutMs);
+    const bool valueSet = QTest::qWaitFor(
+        [&] {
+            const int answers = printed(consumer).count(QLatin1String("Current remote value: "));
+            consumer->write("get_value\n");
+            const bool answered = QTest::qWaitFor(
+                [&] { return printed(consumer).count(QLatin1String("Current remote value: ")) > answers; }, runTimeoutMs);
+            return answered && printed(consumer).contains(QLatin1String("Current remote value: 4.5"));
+        },
+        runTimeoutMs);
+    QVERIFY2(valueSet, qPrintable(printed(consumer).right(1000)));
     m_live.stop(consumer);
     m_live.stop(provider);
 }
@@ -352,6 +364,29 @@ void TestSdkExamples::configSampleTakesConfiguration()
     QTRY_VERIFY_WITH_TIMEOUT(printed(sample).contains(QLatin1String("int_param0:       17")), runTimeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(printed(sample).contains(QLatin1String("str_param1:       changed")), runTimeoutMs);
     m_live.stop(sample);
+}
+
+void TestSdkExamples::serviceAndConfigurationModulesRunInRtmanager()
+{
+    // The same examples as modules of rtmanager: the provider called by the built-in consumer,
+    // ConfigSample taking a configuration change; both print on the manager's output.
+    const QString manager = path(QStringLiteral("manager.mgr"));
+    RtctlResult r = rtctl({"mgr", manager, "create", "MyServiceConsumer?instance_name=ModuleCaller", "load",
+                           built("MyServiceProvider", "src/MyServiceProvider.so"), "create",
+                           "MyServiceProvider?instance_name=ModuleProvider", "load",
+                           built("ConfigSample", "ConfigSample.so"), "create", "ConfigSample?instance_name=ModuleConfig"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    r = rtctl({"con", "ModuleCaller.rtc:MyService", "ModuleProvider.rtc:MyService"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    for (const QString component : {"ModuleProvider.rtc", "ModuleCaller.rtc", "ModuleConfig.rtc"})
+        QVERIFY2(rtctl({"act", component}).code == 0, qPrintable(component));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(m_manager).contains(QLatin1String("Message: echo 1")), runTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(printed(m_manager).contains(QLatin1String("int_param1:       1")), runTimeoutMs);
+    r = rtctl({"conf", "ModuleConfig.rtc", "set", "int_param1", "23"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(m_manager).contains(QLatin1String("int_param1:       23")), runTimeoutMs);
+    for (const QString component : {"ModuleCaller.rtc", "ModuleConfig.rtc"})
+        QVERIFY(rtctl({"deact", component}).code == 0);
 }
 
 void TestSdkExamples::compositeExampleRuns()
