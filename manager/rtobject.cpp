@@ -212,13 +212,16 @@ RTC::ReturnCode_t RtObject::initialize()
     }
     // The owned context exists before onInitialize (which may ask for it) and refuses an unknown
     // type before any user code runs.
-    if (!createOwnedContext())
+    if (!createOwnedContext()) {
+        releaseSdoConfiguration();
         return RTC::BAD_PARAMETER;
+    }
     // Through the ComponentAction operation, which subclasses may wrap (the SDK calls its action
     // listeners around it).
     const RTC::ReturnCode_t result = on_initialize();
     if (result != RTC::RTC_OK) {
         releaseOwnedContexts();
+        releaseSdoConfiguration();
         return result;
     }
     m_config.update();
@@ -340,6 +343,11 @@ void RtObject::releaseAll()
         releaseServant(m_poa, context);
     for (PortBase *port : ports)
         releasePort(port, borrowed.count(port) > 0);
+    releaseSdoConfiguration();
+}
+
+void RtObject::releaseSdoConfiguration()
+{
     releaseServant(m_poa, m_sdoConfig);
     m_sdoConfig = nullptr;
 }

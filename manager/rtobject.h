@@ -153,6 +153,8 @@ protected:
 private:
     bool createOwnedContext();
     void releaseOwnedContexts();
+    /// Deactivates and releases the SDO configuration servant, when there is one.
+    void releaseSdoConfiguration();
     void releaseAll();
     void releasePort(PortBase *port, bool borrowed);
     std::vector<PortBase *> portList();
