@@ -190,6 +190,13 @@ void TestSdkIdlFlow::extensionLibraryNamesLink_data()
         QTest::newRow(name) << QString::fromLatin1(name);
 }
 
+// The sanitizer suite instruments the SDK's libraries; a program linking them needs the sanitizer runtimes
+// first, which that suite hands on in LDFLAGS (empty elsewhere).
+static QStringList sanitizerLinkFlags()
+{
+    return qEnvironmentVariable("LDFLAGS").split(QLatin1Char(' '), Qt::SkipEmptyParts);
+}
+
 // Linked by path alone, as find_library() hands it on, without -lrtstudio_rtm or a -L of the prefix.
 void TestSdkIdlFlow::extensionLibraryNamesLink()
 {
@@ -211,9 +218,10 @@ void TestSdkIdlFlow::extensionLibraryNamesLink()
     QVERIFY(QFileInfo::exists(lib));
     const QString program = m_workDir.filePath(QStringLiteral("extlib-") + library);
     const RunResult link = run(QStringLiteral(RTSTUDIO_CXX_COMPILER),
-                               {QStringLiteral("-o"), program, object, lib, QStringLiteral("-lomniORB4"),
+                               QStringList{QStringLiteral("-o"), program, object, lib, QStringLiteral("-lomniORB4"),
                                 QStringLiteral("-lomniDynamic4"), QStringLiteral("-lomnithread"),
-                                QStringLiteral("-pthread"), QStringLiteral("-Wl,-rpath,") + m_prefix + QStringLiteral("/lib")},
+                                QStringLiteral("-pthread"), QStringLiteral("-Wl,-rpath,") + m_prefix + QStringLiteral("/lib")}
+                                   + sanitizerLinkFlags(),
                                environment(), m_workDir.path(), buildTimeoutMs);
     QVERIFY2(link.ok(), qPrintable(failure(QStringLiteral("link with ") + lib, link)));
     const RunResult probe = run(program, {}, environment(), m_workDir.path(), toolTimeoutMs);
