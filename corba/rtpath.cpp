@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rtpath.h"
 
+#include <QRegularExpression>
+
 namespace Corba {
 
 namespace {
@@ -36,11 +38,38 @@ HostPort splitHostPort(const QString &text)
     return {text.left(colon), text.mid(colon + 1), true};
 }
 
+// Control characters, spaces and U+FFFD (what invalid UTF-8 decodes to) have no place in a corbaloc
+// URL: its object key escapes them as %xx. The 1-based position of the first one, or 0.
+qsizetype badCorbalocCharacter(const QString &text)
+{
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        const QChar c = text.at(i);
+        if (c.unicode() <= 0x20 || c.unicode() == 0x7f || c == QChar::ReplacementCharacter)
+            return i + 1;
+    }
+    return 0;
+}
+
+// A host name, an IPv4 address or a bracketed IPv6 address, as corbaloc's iiop addresses take.
+bool isValidHost(const QString &host, bool bracketed)
+{
+    static const QRegularExpression name(QStringLiteral("^[A-Za-z0-9_]([A-Za-z0-9._-]*[A-Za-z0-9_])?$"));
+    static const QRegularExpression ipv6(QStringLiteral("^[0-9A-Fa-f:.]+(%[A-Za-z0-9._-]+)?$"));
+    return (bracketed ? ipv6 : name).match(host).hasMatch();
+}
+
+// GIOP's major.minor before '@'.
+bool isValidGiopVersion(const QString &version)
+{
+    static const QRegularExpression pattern(QStringLiteral("^[0-9]+\\.[0-9]+$"));
+    return pattern.match(version).hasMatch();
+}
+
 // `host` or `host:port` with a port in 1…65535.
 bool isValidHostPort(const QString &address)
 {
     const HostPort split = splitHostPort(address);
-    if (split.host.isEmpty())
+    if (!isValidHost(split.host, address.startsWith(QLatin1Char('['))))
         return false;
     if (!split.hasPort)
         return true;
@@ -118,9 +147,19 @@ std::optional<QString> RtPath::normaliseCorbaloc(const QString &text, QString *e
         fail(error, QStringLiteral("not a corbaloc address: %1").arg(text));
         return std::nullopt;
     }
+    if (const qsizetype position = badCorbalocCharacter(text)) {
+        fail(error, QStringLiteral("character U+%1 at position %2 is not allowed in a corbaloc address")
+                        .arg(text.at(position - 1).unicode(), 4, 16, QLatin1Char('0'))
+                        .arg(position));
+        return std::nullopt;
+    }
     for (CorbalocAddress &address : url->addresses) {
         if (!address.isIiop()) {
             fail(error, QStringLiteral("unsupported corbaloc protocol: %1").arg(text));
+            return std::nullopt;
+        }
+        if (address.hasVersion && !isValidGiopVersion(address.version)) {
+            fail(error, QStringLiteral("bad GIOP version \"%1\" before '@' in %2").arg(address.version, text));
             return std::nullopt;
         }
         address.protocol = QStringLiteral("iiop");
@@ -183,7 +222,7 @@ bool CorbalocAddress::hasPort() const
 QString CorbalocAddress::toString() const
 {
     return protocol + QLatin1Char(':')
-        + (version.isEmpty() ? QString() : version + QLatin1Char('@')) + hostPort;
+        + (hasVersion ? version + QLatin1Char('@') : QString()) + hostPort;
 }
 
 QString Corbaloc::toString() const
@@ -212,6 +251,7 @@ std::optional<Corbaloc> Corbaloc::parse(const QString &text)
         QString rest = colon < 0 ? QString() : item.mid(colon + 1);
         const qsizetype at = address.isIiop() ? rest.indexOf(QLatin1Char('@')) : -1;
         if (at >= 0) {
+            address.hasVersion = true;
             address.version = rest.left(at);
             rest.remove(0, at + 1);
         }
@@ -227,8 +267,10 @@ QString corbalocWithGiop12(const QString &reference)
     if (!url)
         return reference;
     for (CorbalocAddress &address : url->addresses) {
-        if (address.isIiop() && address.version.isEmpty())
+        if (address.isIiop() && !address.hasVersion) {
             address.version = QStringLiteral("1.2");
+            address.hasVersion = true;
+        }
     }
     return url->toString();
 }

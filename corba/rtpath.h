@@ -51,7 +51,8 @@ struct RtPath
 struct CorbalocAddress
 {
     QString protocol; ///< `iiop`, `rir` …; empty for the `:host` form of iiop
-    QString version; ///< the GIOP version before `@` (`1.2`) of an iiop address; empty when none
+    QString version; ///< the GIOP version before `@` (`1.2`) of an iiop address
+    bool hasVersion = false; ///< whether the address has `@` (with a version, or an empty one)
     QString hostPort; ///< `host`, `host:port` or `[v6 address]:port`; empty for `rir:`
 
     bool isIiop() const { return protocol.isEmpty() || protocol == QLatin1String("iiop"); }

@@ -145,6 +145,16 @@ void TestCorbaClientPath::rejects_data()
     QTest::newRow("corbaloc empty port") << "corbaloc::h:/x" << QString() << "bad host";
     QTest::newRow("corbaloc IPv6 port") << "corbaloc::[::1]x/x" << QString() << "bad host";
     QTest::newRow("corbaloc no protocol") << "corbaloc:h/x" << QString() << "protocol";
+    // What corbaloc's grammar does not have is refused, so that what is accepted prints back the same.
+    QTest::newRow("corbaloc empty version") << "corbaloc::@@h/x" << QString() << "GIOP version";
+    QTest::newRow("corbaloc bad version") << "corbaloc:iiop:one@h/x" << QString() << "GIOP version";
+    QTest::newRow("corbaloc host character") << "corbaloc::h$st/x" << QString() << "bad host";
+    QTest::newRow("corbaloc tab in key") << "corbaloc::h/a\tb" << QString()
+                                         << "character U+0009 at position 14";
+    QTest::newRow("corbaloc NUL") << QStringLiteral("corbaloc::h\0/x") << QString()
+                                  << "character U+0000 at position 12";
+    QTest::newRow("corbaloc invalid UTF-8")
+        << QString::fromUtf8("corbaloc::\x98h") << QString() << "character U+fffd at position 11";
 }
 
 void TestCorbaClientPath::rejects()
