@@ -6,6 +6,7 @@
 #include "componenteditor.h"
 #include "componentmodel.h"
 #include "generatecontroller.h"
+#include "packagecontroller.h"
 #include "projectbuilder.h"
 #include "runcontroller.h"
 
@@ -201,6 +202,7 @@ BuildController *installBuildController(ComponentEditor *editor, GenerateControl
                          &BuildController::updateActions);
     }
     installRunController(editor, generate, controller);
+    installPackageController(editor, generate, controller);
     return controller;
 }
 

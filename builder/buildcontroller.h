@@ -94,7 +94,8 @@ private:
  * Gives `editor` its Build: a BuildController (a child of the editor) over the folder
  * `generate` writes into, its actions on the editor's tool bar, its output in the editor's
  * build output panel and its outcome through ComponentEditor::reportGeneration(). Run in
- * Manager… (installRunController()) comes with it.
+ * Manager… (installRunController()), Package and Publish… (installPackageController()) come
+ * with it.
  */
 BuildController *installBuildController(ComponentEditor *editor, GenerateController *generate);
 

@@ -16,3 +16,13 @@ set_tests_properties(tst_componentpackage PROPERTIES LABELS package TIMEOUT 600)
 rtstudio_add_test(tst_componentrepository SOURCES tst_componentrepository.cpp LIBS rtstudio_rtctlrunner rtpackages)
 add_dependencies(tst_componentrepository rtctl)
 set_tests_properties(tst_componentrepository PROPERTIES LABELS package)
+
+# The Builder's Package and Publish… (a generated project built against this tree's SDK).
+rtstudio_add_test(tst_builderpackage SOURCES tst_builderpackage.cpp
+    LIBS rtstudio_app rtstudio_rtctlrunner rtstudio_sdkproject)
+target_compile_definitions(tst_builderpackage PRIVATE RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}")
+add_dependencies(tst_builderpackage rtctl rtsdk)
+if(TARGET rtsdk_stage)
+    add_dependencies(tst_builderpackage rtsdk_stage)
+endif()
+set_tests_properties(tst_builderpackage PROPERTIES LABELS package TIMEOUT 600)

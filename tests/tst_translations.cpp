@@ -129,7 +129,7 @@ QStringList englishWords(const QString &text)
         QStringLiteral("Flush"), QStringLiteral("New"), QStringLiteral("Periodic"),
         QStringLiteral("flush"), QStringLiteral("new"), QStringLiteral("periodic"), QStringLiteral("sync"),
         QStringLiteral("xml"), QStringLiteral("yaml"), QStringLiteral("yml"), QStringLiteral("png"),
-        QStringLiteral("svg"),
+        QStringLiteral("svg"), QStringLiteral("Debian"), QStringLiteral("deb"),
     };
     // Tokens that hold a path, a file name, an identifier (snake_case, CamelCase, ACRONYM) or
     // a number are names, whatever the language around them.

@@ -284,7 +284,7 @@
 <context>
     <name>Builder::BuildController</name>
     <message>
-        <location filename="../../builder/buildcontroller.cpp" line="+35"/>
+        <location filename="../../builder/buildcontroller.cpp" line="+36"/>
         <source>&amp;Build</source>
         <translation>ビルド(&amp;B)</translation>
     </message>
@@ -1446,6 +1446,89 @@
         <location line="+14"/>
         <source>unexpected error</source>
         <translation>予期しないエラー</translation>
+    </message>
+</context>
+<context>
+    <name>Builder::PackageController</name>
+    <message>
+        <location filename="../../builder/packagecontroller.cpp" line="+50"/>
+        <source>&amp;Package</source>
+        <translation>パッケージ作成(&amp;P)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P&amp;ublish…</source>
+        <translation>公開(&amp;U)…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Make the Debian package (.deb) of the built component</source>
+        <translation>ビルドしたコンポーネントの Debian パッケージ（.deb）を作成します</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Make the package and add it to a component repository</source>
+        <translation>パッケージを作成してコンポーネントリポジトリに追加します</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Publish into Repository</source>
+        <translation>リポジトリへ公開</translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>Nothing to package: generate and build the component&apos;s project first.</source>
+        <translation>パッケージにするものがありません：先にコンポーネントのプロジェクトを生成してビルドしてください。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nothing to package: build %1 first.</source>
+        <translation>パッケージにするものがありません：先に %1 をビルドしてください。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Packaging %1…</source>
+        <translation>%1 をパッケージ化しています…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Packaging %1 for %2…</source>
+        <translation>%2 向けに %1 をパッケージ化しています…</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Cannot create the folder %1.</source>
+        <translation>フォルダ %1 を作成できません。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Packaging failed: %1</source>
+        <translation>パッケージ化に失敗しました：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Made %1</source>
+        <translation>%1 を作成しました</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Made %1.</source>
+        <translation>%1 を作成しました。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot publish %1 into %2: %3</source>
+        <translation>%1 を %2 に公開できません：%3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Published %1 into %2.</source>
+        <translation>%1 を %2 に公開しました。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>warning: %1</source>
+        <translation>警告：%1</translation>
     </message>
 </context>
 <context>
