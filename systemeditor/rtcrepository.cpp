@@ -2,12 +2,15 @@
 #include "rtcrepository.h"
 
 #include "profileio.h"
+#include "repositoryprofiles.h"
 
+#include <QCryptographicHash>
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
 #include <QMap>
 #include <QMimeData>
+#include <QStandardPaths>
 
 namespace SystemEditor {
 
@@ -90,6 +93,10 @@ void RtcRepository::readSource(const QString &path)
         readFile(path, true);
         return;
     }
+    if (QFileInfo::exists(QDir(path).filePath(QStringLiteral("conf/repository")))) {
+        readComponentRepository(path);
+        return;
+    }
     QStringList files;
     QDirIterator it(path, QDir::Files | QDir::Readable, QDirIterator::Subdirectories);
     while (it.hasNext()) {
@@ -114,12 +121,47 @@ void RtcRepository::readFile(const QString &path, bool explicitlyAdded)
     Diagnostics diagnostics;
     const std::optional<LoadedProfile> loaded = loadProfileFile(path, &diagnostics);
     if (loaded && loaded->rtc) {
-        m_entries << Entry {path, *loaded->rtc};
+        m_entries << Entry {path, *loaded->rtc, {}, {}, {}};
         return;
     }
     if (loaded && !loaded->rtc)
         diagnostics << Diagnostic::error(path, 0, 0, tr("The file is no RTC profile."));
     m_errors << FileError {path, diagnostics};
+}
+
+QString RtcRepository::cacheFolder()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::CacheLocation)
+        + QStringLiteral("/component-repositories");
+}
+
+void RtcRepository::readComponentRepository(const QString &root)
+{
+    // One cache folder per repository, so that two repositories with alike packages do not mix.
+    const QString cache = cacheFolder() + QLatin1Char('/')
+        + QString::fromLatin1(QCryptographicHash::hash(root.toUtf8(), QCryptographicHash::Sha1).toHex().left(16));
+    QStringList problems;
+    QString error;
+    const auto profiles = Packages::readRepositoryProfiles(root, cache, &problems, &error);
+    if (!profiles) {
+        m_errors << FileError{root, {Diagnostic::error(root, 0, 0, error)}};
+        return;
+    }
+    for (const QString &problem : std::as_const(problems))
+        m_errors << FileError{root, {Diagnostic::error(root, 0, 0, problem)}};
+    for (const Packages::PackagedProfile &packaged : *profiles) {
+        Diagnostics diagnostics;
+        const std::optional<LoadedProfile> loaded = loadProfileFile(packaged.profileFile, &diagnostics);
+        if (!loaded || !loaded->rtc) {
+            diagnostics.prepend(Diagnostic::error(root, 0, 0,
+                                                  tr("The RTC profile of package %1 %2 cannot be read.")
+                                                      .arg(packaged.entry.package(), packaged.entry.version())));
+            m_errors << FileError{packaged.profileFile, diagnostics};
+            continue;
+        }
+        m_entries << Entry{packaged.profileFile, *loaded->rtc, packaged.entry.package(),
+                           packaged.entry.version(), root};
+    }
 }
 
 void RtcRepository::rebuildCategories()
@@ -234,7 +276,10 @@ QVariant RtcRepository::data(const QModelIndex &index, int role) const
     case Qt::DisplayRole:
         return entry.profile.basicInfo.name;
     case Qt::ToolTipRole:
-        return tr("%1\n%2").arg(entry.profile.id, entry.filePath);
+        return entry.package.isEmpty()
+            ? tr("%1\n%2").arg(entry.profile.id, entry.filePath)
+            : tr("%1\npackage %2 %3 in %4").arg(entry.profile.id, entry.package, entry.packageVersion,
+                                               entry.repository);
     case FilePathRole:
         return entry.filePath;
     case ComponentIdRole:

@@ -17,6 +17,10 @@ namespace SystemEditor {
  * (other profiles and other XML are skipped). A file that claims to be an RTC profile but cannot
  * be read is kept as an error — listed under the "Unreadable files" branch with its
  * diagnostics as tool tip, and in errors() — so that the user sees why a component is missing.
+ *
+ * A folder that is a component repository (`rtctl repo init`: a Debian repository of component
+ * packages) lists the newest version of each of its packages, with the RTC profile read from the
+ * package (kept in the cache folder, cacheFolder()); its rows name the package and version.
  */
 class RtcRepository : public QAbstractItemModel
 {
@@ -37,6 +41,9 @@ public:
     {
         QString filePath;
         Profile::RtcProfile profile;
+        QString package; ///< from a component repository: the package that ships it
+        QString packageVersion;
+        QString repository; ///< that repository's folder
     };
     /// One file that could not be read.
     struct FileError
@@ -62,6 +69,9 @@ public:
     const Profile::RtcProfile *profileForFile(const QString &filePath) const;
     /// The entry at a component row, or null for other rows.
     const Entry *entry(const QModelIndex &index) const;
+
+    /// Where profiles read from component repositories' packages are kept.
+    static QString cacheFolder();
 
     /// The text shown for errors' branch.
     static QString errorCategoryName();
@@ -91,6 +101,7 @@ private:
 
     void readSource(const QString &path);
     void readFile(const QString &path, bool explicitlyAdded);
+    void readComponentRepository(const QString &root);
     void rebuildCategories();
 
     QStringList m_sources;

@@ -26,3 +26,9 @@ if(TARGET rtsdk_stage)
     add_dependencies(tst_builderpackage rtsdk_stage)
 endif()
 set_tests_properties(tst_builderpackage PROPERTIES LABELS package TIMEOUT 600)
+
+# The System Editor's Repository view over a component repository.
+rtstudio_add_test(tst_serepositorypackages SOURCES tst_serepositorypackages.cpp
+    LIBS rtsystemeditor rtstudio_rtctlrunner)
+add_dependencies(tst_serepositorypackages rtctl)
+set_tests_properties(tst_serepositorypackages PROPERTIES LABELS package)

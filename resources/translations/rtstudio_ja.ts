@@ -4648,7 +4648,12 @@
         <translation>再読み込み</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+4"/>
+        <source>Add a folder of RTC profiles, or a component repository folder</source>
+        <translation>RTC プロファイルのフォルダ、またはコンポーネントリポジトリのフォルダを追加します</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&quot;%1&quot; does not exist.</source>
         <translation>「%1」は存在しません。</translation>
     </message>
@@ -4846,12 +4851,17 @@
 <context>
     <name>SystemEditor::RtcRepository</name>
     <message>
-        <location filename="../../systemeditor/rtcrepository.cpp" line="+121"/>
+        <location filename="../../systemeditor/rtcrepository.cpp" line="+128"/>
         <source>The file is no RTC profile.</source>
         <translation>このファイルはRTCプロファイルではありません。</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+29"/>
+        <source>The RTC profile of package %1 %2 cannot be read.</source>
+        <translation>パッケージ %1 %2 の RTC プロファイルを読み込めません。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>(no category)</source>
         <translation>（カテゴリなし）</translation>
     </message>
@@ -4861,14 +4871,21 @@
         <translation>読み込めないファイル</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>%1
 %2</source>
         <translation>%1
 %2</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+1"/>
+        <source>%1
+package %2 %3 in %4</source>
+        <translation>%1
+%4 のパッケージ %2 %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Component</source>
         <translation>コンポーネント</translation>
     </message>

@@ -37,6 +37,7 @@ RepositoryView::RepositoryView(RtcRepository *repository, QWidget *parent)
     m_addFiles->setObjectName(QStringLiteral("actionRepositoryAddFiles"));
     m_addFolder->setObjectName(QStringLiteral("actionRepositoryAddFolder"));
     m_reload->setObjectName(QStringLiteral("actionRepositoryReload"));
+    m_addFolder->setToolTip(tr("Add a folder of RTC profiles, or a component repository folder"));
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+// The System Editor's Repository view over a component repository (`rtctl repo init` + publish):
+// the newest version of each component package, its RTC profile read from the package and
+// dragged like a local one; a package that cannot be read and a folder that is no readable
+// repository are listed as errors naming the package or the file.
+#include "rtcrepository.h"
+#include "rtctlrunner.h"
+
+#include <QAbstractItemModelTester>
+#include <QDir>
+#include <QFile>
+#include <QMimeData>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace SystemEditor;
+
+namespace {
+
+const QString pyFixture = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/packages/pycomp");
+const QString pyPackage = QStringLiteral("rtc-rtstudiotests-packaging-pygreeter");
+
+/// Copies the fixture's files into @p to, its version set to @p version ("v1_3").
+bool copyWithVersion(const QString &to, const QString &version)
+{
+    if (!QDir().mkpath(to + QStringLiteral("/idl")))
+        return false;
+    const QDir from(pyFixture);
+    for (const QString &name : {QStringLiteral("PyGreeter.conf"), QStringLiteral("PyGreeter.py"),
+                                QStringLiteral("idl/Greeting.idl")}) {
+        if (!QFile::copy(from.filePath(name), QDir(to).filePath(name)))
+            return false;
+    }
+    QFile in(from.filePath(QStringLiteral("RTC.xml")));
+    QFile out(QDir(to).filePath(QStringLiteral("RTC.xml")));
+    if (!in.open(QIODevice::ReadOnly) || !out.open(QIODevice::WriteOnly))
+        return false;
+    const QByteArray xml = in.readAll().replace("v1_2", version.toUtf8());
+    return out.write(xml) == xml.size();
+}
+
+} // namespace
+
+class TestSeRepositoryPackages : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void listsTheNewestVersionOfEachPackage();
+    void dragsThePackagedProfile();
+    void unreadablePackageIsAnError();
+    void brokenRepositoryIsAnError();
+
+private:
+    /// `rtctl package` of @p project into the work folder; the .deb, or empty.
+    QString package(const QString &project);
+
+    QTemporaryDir m_work;
+    QString m_repository;
+};
+
+QString TestSeRepositoryPackages::package(const QString &project)
+{
+    const RtctlResult r = runRtctl({"package", project, "-o", m_work.filePath("debs")});
+    return r.code == 0 ? r.lines().value(0) : QString();
+}
+
+void TestSeRepositoryPackages::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QDir(RtcRepository::cacheFolder()).removeRecursively();
+    QVERIFY(m_work.isValid());
+    QVERIFY(QDir().mkpath(m_work.filePath("debs")));
+    const QString v12 = package(pyFixture);
+    QVERIFY(QFile::exists(v12));
+    QVERIFY(copyWithVersion(m_work.filePath("v13"), "v1_3"));
+    const QString v13 = package(m_work.filePath("v13"));
+    QVERIFY(QFile::exists(v13));
+    m_repository = m_work.filePath("repo");
+    QCOMPARE(runRtctl({"repo", "init", m_repository}).code, 0);
+    const RtctlResult published = runRtctl({"repo", "publish", m_repository, v13, v12});
+    QVERIFY2(published.code == 0, qPrintable(published.err));
+}
+
+void TestSeRepositoryPackages::listsTheNewestVersionOfEachPackage()
+{
+    RtcRepository repository;
+    QAbstractItemModelTester tester(&repository, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QVERIFY(repository.addSource(m_repository));
+    QVERIFY(repository.errors().isEmpty());
+    QCOMPARE(repository.entries().size(), 1);
+    const RtcRepository::Entry entry = repository.entries().first();
+    QCOMPARE(entry.package, pyPackage);
+    QCOMPARE(entry.packageVersion, QStringLiteral("1.3"));
+    QCOMPARE(entry.profile.basicInfo.name, QStringLiteral("PyGreeter"));
+    QCOMPARE(entry.profile.basicInfo.version, QStringLiteral("v1_3"));
+    QVERIFY(entry.filePath.startsWith(RtcRepository::cacheFolder()));
+    // Category → component, the tool tip naming package, version and repository.
+    QCOMPARE(repository.rowCount(), 1);
+    const QModelIndex category = repository.index(0, 0);
+    QCOMPARE(category.data().toString(), QStringLiteral("Packaging"));
+    const QModelIndex component = repository.index(0, 0, category);
+    QCOMPARE(component.data().toString(), QStringLiteral("PyGreeter"));
+    const QString tip = component.data(Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains(pyPackage + " 1.3") && tip.contains(m_repository), qPrintable(tip));
+}
+
+void TestSeRepositoryPackages::dragsThePackagedProfile()
+{
+    RtcRepository repository;
+    QVERIFY(repository.addSource(m_repository));
+    const QModelIndex component = repository.index(0, 0, repository.index(0, 0));
+    std::unique_ptr<QMimeData> mime(repository.mimeData({component}));
+    QVERIFY(mime && mime->hasFormat(RtcRepository::MimeType));
+    const QString path = component.data(RtcRepository::FilePathRole).toString();
+    QVERIFY(QString::fromUtf8(mime->data(RtcRepository::MimeType)).contains(path));
+    QVERIFY(repository.profileForFile(path));
+    QCOMPARE(repository.profileForFile(path)->id, QStringLiteral("RTC:RTStudioTests:Packaging:PyGreeter:v1_3"));
+}
+
+void TestSeRepositoryPackages::unreadablePackageIsAnError()
+{
+    // A copy of the repository (its own cache) whose newest .deb is cut short.
+    const QString copy = m_work.filePath("cut");
+    QCOMPARE(QProcess::execute("cp", {"-a", m_repository, copy}), 0);
+    QDir pool(copy + "/pool/main/r/" + pyPackage);
+    const QStringList debs = pool.entryList({"*1.3_all.deb"});
+    QCOMPARE(debs.size(), 1);
+    QFile deb(pool.filePath(debs.first()));
+    QVERIFY(deb.resize(100));
+    RtcRepository repository;
+    QVERIFY(repository.addSource(copy));
+    QVERIFY(repository.entries().isEmpty());
+    QCOMPARE(repository.errors().size(), 1);
+    const QString message = repository.errors().first().diagnostics.value(0).message;
+    QVERIFY2(message.contains(pyPackage + " 1.3"), qPrintable(message));
+}
+
+void TestSeRepositoryPackages::brokenRepositoryIsAnError()
+{
+    const QString broken = m_work.filePath("broken");
+    QVERIFY(QDir().mkpath(broken + "/conf"));
+    QFile conf(broken + "/conf/repository");
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write("no fields here\n");
+    conf.close();
+    RtcRepository repository;
+    QVERIFY(repository.addSource(broken));
+    QVERIFY(repository.entries().isEmpty());
+    QCOMPARE(repository.errors().size(), 1);
+    const QString message = repository.errors().first().diagnostics.value(0).message;
+    QVERIFY2(message.contains(broken + "/conf/repository"), qPrintable(message));
+}
+
+QTEST_GUILESS_MAIN(TestSeRepositoryPackages)
+#include "tst_serepositorypackages.moc"
