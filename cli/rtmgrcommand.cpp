@@ -34,26 +34,6 @@ QString actionOfFlag(const QString &flag)
     return QString();
 }
 
-// A refused fork or restart reports only its return code; the manager's last_error says why.
-template<typename Action> void withManagerReason(const ManagerProxy &manager, Action action)
-{
-    try {
-        action();
-    } catch (const Error &e) {
-        if (e.kind() != Error::Kind::Refused)
-            throw;
-        QString reason;
-        try {
-            reason = propertyValue(manager.profile(), QStringLiteral("last_error"));
-        } catch (const Error &) {
-            // The refusal itself is the message then.
-        }
-        throw Error(e.kind(),
-                    reason.isEmpty() ? e.message()
-                                     : e.message() + QStringLiteral(" (") + reason + ')');
-    }
-}
-
 /// The value of @p key in a create request's query (`Type?key=value&…`); empty when not given.
 QString requestParameter(const QString &request, QLatin1String key)
 {
@@ -176,9 +156,9 @@ void RtMgrCommand::run(const ManagerProxy &manager, const QString &action, const
     if (action == QLatin1String("list")) {
         list(manager, json, streams);
     } else if (action == QLatin1String("fork")) {
-        withManagerReason(manager, [&manager] { manager.fork(); });
+        manager.fork();
     } else if (action == QLatin1String("restart")) {
-        withManagerReason(manager, [&manager] { manager.restart(); });
+        manager.restart();
     } else if (action == QLatin1String("load")) {
         const int colon = argument.lastIndexOf(QLatin1Char(':'));
         const QString file = colon < 0 ? argument : argument.left(colon);

@@ -51,7 +51,7 @@ void ManagerProxy::loadModule(const QString &pathName, const QString &initFuncti
         return int(
             mgr->load_module(pathName.toUtf8().constData(), initFunction.toUtf8().constData()));
     });
-    checkReturnCode(code, m_path, QStringLiteral("load_module(%1)").arg(pathName));
+    checkWithReason(code, QStringLiteral("load_module(%1)").arg(pathName));
 }
 
 void ManagerProxy::unloadModule(const QString &pathName) const
@@ -59,7 +59,7 @@ void ManagerProxy::unloadModule(const QString &pathName) const
     RTM::Manager_var mgr = manager(m_ior, m_path);
     const int code
         = callServed(m_path, m_ior, [&] { return int(mgr->unload_module(pathName.toUtf8().constData())); });
-    checkReturnCode(code, m_path, QStringLiteral("unload_module(%1)").arg(pathName));
+    checkWithReason(code, QStringLiteral("unload_module(%1)").arg(pathName));
 }
 
 std::vector<Properties> ManagerProxy::loadableModules() const
@@ -128,6 +128,27 @@ ManagerProxy::createComponents(const QStringList &requests) const
     if (created.iors.size() < requests.size())
         created.refusal = refusal(requests.at(created.iors.size()), toQString(reason.in()));
     return created;
+}
+
+// Manager operations answer a refusal with a return code alone; rtmanager says why in its
+// profile's last_error, which the message then carries (OpenRTM-aist's managers have none).
+void ManagerProxy::checkWithReason(int code, const QString &operation) const
+{
+    try {
+        checkReturnCode(code, m_path, operation);
+    } catch (const Error &e) {
+        if (e.kind() != Error::Kind::Refused)
+            throw;
+        QString reason;
+        try {
+            reason = propertyValue(profile(), QStringLiteral("last_error"));
+        } catch (const Error &) {
+            // The refusal alone is the message then.
+        }
+        if (reason.isEmpty())
+            throw;
+        throw Error(e.kind(), e.message() + QStringLiteral(" (") + reason + QLatin1Char(')'));
+    }
 }
 
 QString ManagerProxy::refusal(const QString &request, const QString &reason) const
@@ -296,7 +317,7 @@ void ManagerProxy::removeSlaveManager(const QString &managerIor) const
 void ManagerProxy::fork() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->fork()); }), m_path, QStringLiteral("fork"));
+    checkWithReason(callServed(m_path, m_ior, [&] { return int(mgr->fork()); }), QStringLiteral("fork"));
 }
 
 void ManagerProxy::shutdown() const
@@ -309,8 +330,7 @@ void ManagerProxy::shutdown() const
 void ManagerProxy::restart() const
 {
     RTM::Manager_var mgr = manager(m_ior, m_path);
-    checkReturnCode(callServed(m_path, m_ior, [&] { return int(mgr->restart()); }), m_path,
-                    QStringLiteral("restart"));
+    checkWithReason(callServed(m_path, m_ior, [&] { return int(mgr->restart()); }), QStringLiteral("restart"));
 }
 
 QString ManagerProxy::service(const QString &name) const

@@ -79,6 +79,8 @@ public:
 private:
     QString refusalReason(const QString &request) const;
     /// The message of a refused create: "<path>: could not create '<request>' (<reason>)".
+    /// checkReturnCode(), with the manager's last_error in the message of a refusal.
+    void checkWithReason(int code, const QString &operation) const;
     QString refusal(const QString &request, const QString &reason) const;
 
     QString m_ior;

@@ -455,6 +455,15 @@ void TestRtctlRt::forkAndRestartTheRealManager()
     QCOMPARE(refused.code, 1);
     QVERIFY2(refused.err.contains("fork returned BAD_PARAMETER (fork: this manager has no master"),
              qPrintable(refused.err));
+    // A module it cannot load, or one not loaded: the manager's reason, not only the return code.
+    const QString lone = QStringLiteral("corbaloc::127.0.0.1:%1").arg(lonePort);
+    const Result load = rtctl({"mgr", lone, "load", "/nonexistent/Missing.so"}, dir);
+    QCOMPARE(load.code, 1);
+    QVERIFY2(load.err.contains("returned BAD_PARAMETER (load_module: no module file '/nonexistent/Missing.so')"),
+             qPrintable(load.err));
+    const Result unload = rtctl({"mgr", lone, "unload", "Missing.so"}, dir);
+    QCOMPARE(unload.code, 1);
+    QVERIFY2(unload.err.contains("(unload_module: 'Missing.so' is not loaded)"), qPrintable(unload.err));
 }
 
 // Creates naming their own instances are sent at once; the output and the outcome stay those of
