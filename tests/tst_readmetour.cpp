@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// README.md's five-minute tour, run as written: its shell blocks in order in one shell, from a
+// README.md's five-minute tour, run as written (and docs/ja/README.md's, the same): its shell blocks in order in one shell, from a
 // folder laid out like the checkout after the first set-up command (build/cli and resources/),
 // with its C++ block put into the generated onExecute where step 2 says. The component is built,
 // runs in the local runtime, the saved system starts and the Doubler sends even numbers. The
@@ -63,6 +63,7 @@ class TestReadmeTour : public QObject
 private slots:
     void initTestCase();
     void tourRuns();
+    void japaneseTourIsTheSame();
     void cleanupTestCase();
 
 private:
@@ -137,6 +138,19 @@ void TestReadmeTour::tourRuns()
         ++samples;
     }
     QVERIFY2(samples == 3, qPrintable(output));
+}
+
+// docs/ja/README.md tells the same tour: the same commands and code, in the same order.
+void TestReadmeTour::japaneseTourIsTheSame()
+{
+    QFile readme(QStringLiteral(RTSTUDIO_SOURCE_DIR "/docs/ja/README.md"));
+    QVERIFY(readme.open(QIODevice::ReadOnly));
+    const QList<Block> japanese = tourBlocks(QString::fromUtf8(readme.readAll()));
+    QCOMPARE(japanese.size(), m_blocks.size());
+    for (qsizetype i = 0; i < japanese.size(); ++i) {
+        QCOMPARE(japanese.at(i).language, m_blocks.at(i).language);
+        QCOMPARE(japanese.at(i).text, m_blocks.at(i).text);
+    }
 }
 
 void TestReadmeTour::cleanupTestCase()
