@@ -15,6 +15,7 @@
 #include "rtstudioresources.h"
 #include "systemcanvas.h"
 #include "uilanguage.h"
+#include "userguide.h"
 
 #include <QActionGroup>
 #include <QCloseEvent>
@@ -169,6 +170,23 @@ void MainWindow::createActions()
         = addAction(QStringLiteral("actionAbout"), tr("&About RT Studio"), QStringLiteral("about"));
     about->setMenuRole(QAction::AboutRole);
     connect(about, &QAction::triggered, this, [this] { m_prompts->showAbout(); });
+    const auto guideAction = [this](const char *objectName, const QString &text, const QString &page) {
+        QAction *action = addAction(QLatin1String(objectName), text, QString());
+        connect(action, &QAction::triggered, this, [this, page] { showUserGuide(page); });
+        return action;
+    };
+    guideAction("actionUserGuide", tr("&User Guide"), QStringLiteral("getting-started.md"))
+        ->setShortcut(QKeySequence::HelpContents);
+    guideAction("actionTroubleshooting", tr("&Troubleshooting"), QStringLiteral("troubleshooting.md"));
+}
+
+void MainWindow::showUserGuide(const QString &page)
+{
+    if (!m_userGuide)
+        m_userGuide = new UserGuide(this);
+    m_userGuide->showPage(page, UiLanguage::resolve(UiLanguage::chosen()));
+    m_userGuide->show();
+    m_userGuide->raise();
 }
 
 void MainWindow::createFileActions()
@@ -306,6 +324,9 @@ void MainWindow::createMenus()
     m_online->fillMenu(online);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(action("actionUserGuide"));
+    help->addAction(action("actionTroubleshooting"));
+    help->addSeparator();
     help->addAction(action("actionAbout"));
     fillRecentFilesMenu();
 }

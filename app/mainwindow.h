@@ -19,6 +19,8 @@ class QUndoGroup;
 
 namespace Studio {
 
+class UserGuide;
+
 class Document;
 class DocumentController;
 class OnlineDocks;
@@ -60,6 +62,10 @@ public:
     Document *activeDocument() const;
     /// Opens files as `rtstudio FILE…` does; true when all of them opened.
     bool openFiles(const QStringList &paths);
+    /// Help → User Guide: shows @p page of docs/ (in the GUI's language where translated).
+    void showUserGuide(const QString &page);
+    /// The user guide window, once shown.
+    UserGuide *userGuide() const { return m_userGuide; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -108,6 +114,7 @@ private:
     OnlineDocks *m_online = nullptr;
     QMenu *m_recentMenu = nullptr;
     Document *m_activeDocument = nullptr;
+    UserGuide *m_userGuide = nullptr;
 };
 
 } // namespace Studio

@@ -2613,12 +2613,22 @@
 <context>
     <name>Studio::MainWindow</name>
     <message>
-        <location filename="../../app/mainwindow.cpp" line="+169"/>
+        <location filename="../../app/mainwindow.cpp" line="+170"/>
         <source>&amp;About RT Studio</source>
         <translation>RT Studio について(&amp;A)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
+        <source>&amp;User Guide</source>
+        <translation>ユーザーガイド(&amp;U)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Troubleshooting</source>
+        <translation>トラブルシューティング(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>New &amp;Component</source>
         <translation>新規コンポーネント(&amp;C)</translation>
     </message>
@@ -2733,7 +2743,7 @@
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>System Default</source>
         <translation>システムの設定に従う</translation>
     </message>
@@ -3188,6 +3198,24 @@
         <location line="+3"/>
         <source>service</source>
         <translation>サービス</translation>
+    </message>
+</context>
+<context>
+    <name>Studio::UserGuide</name>
+    <message>
+        <location filename="../../app/userguide.cpp" line="+18"/>
+        <source>RT Studio User Guide</source>
+        <translation>RT Studio ユーザーガイド</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Back</source>
+        <translation>戻る</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Forward</source>
+        <translation>進む</translation>
     </message>
 </context>
 <context>

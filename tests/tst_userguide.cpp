@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+// Help → User Guide and Help → Troubleshooting show the guide inside the program: README.md and
+// every page of docs/ are built in, links between pages are followed in the window, and a page
+// translated into the GUI's language is shown in it.
+#include "mainwindow.h"
+#include "userguide.h"
+
+#include <QAction>
+#include <QDir>
+#include <QDirIterator>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+#include <QTextBrowser>
+
+using Studio::UserGuide;
+
+namespace {
+
+/// Where in @p browser's viewport the first link to @p href is, scrolled into view; null when none.
+QPoint linkPosition(QTextBrowser *browser, const QString &href)
+{
+    for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next()) {
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextFragment fragment = it.fragment();
+            if (fragment.charFormat().anchorHref() != href)
+                continue;
+            QTextCursor cursor(browser->document());
+            cursor.setPosition(fragment.position() + fragment.length() / 2);
+            browser->setTextCursor(cursor);
+            browser->ensureCursorVisible();
+            return browser->cursorRect(cursor).center();
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+class TestUserGuide : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void everyPageIsBuiltIn();
+    void helpShowsGettingStarted();
+    void linksAreFollowed();
+    void troubleshooting();
+    void japanesePagesFirst();
+
+private:
+    QTemporaryDir m_settingsDir;
+};
+
+void TestUserGuide::initTestCase()
+{
+    QVERIFY(m_settingsDir.isValid());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    QCoreApplication::setOrganizationName(QStringLiteral("RtStudioTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_userguide"));
+}
+
+void TestUserGuide::everyPageIsBuiltIn()
+{
+    QStringList pages{QStringLiteral("README.md")};
+    QDirIterator it(QStringLiteral(RTSTUDIO_SOURCE_DIR "/docs"), {QStringLiteral("*.md")}, QDir::Files,
+                    QDirIterator::Subdirectories);
+    while (it.hasNext())
+        pages << QDir(QStringLiteral(RTSTUDIO_SOURCE_DIR)).relativeFilePath(it.next());
+    QVERIFY(pages.size() > 4);
+    for (const QString &page : std::as_const(pages))
+        QVERIFY2(QFile::exists(UserGuide::Root + page), qPrintable(page + QStringLiteral(" is not built in")));
+}
+
+void TestUserGuide::helpShowsGettingStarted()
+{
+    Studio::MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *action = window.findChild<QAction *>(QStringLiteral("actionUserGuide"));
+    QVERIFY(action);
+    QCOMPARE(action->shortcut(), QKeySequence(QKeySequence::HelpContents));
+    QVERIFY(!window.userGuide());
+    action->trigger();
+    UserGuide *guide = window.userGuide();
+    QVERIFY(guide);
+    QVERIFY(QTest::qWaitForWindowExposed(guide));
+    QVERIFY2(guide->browser()->source().path().endsWith(QStringLiteral("docs/getting-started.md")),
+             qPrintable(guide->browser()->source().toString()));
+    const QString text = guide->browser()->toPlainText();
+    QVERIFY2(text.startsWith(QStringLiteral("Getting started")), qPrintable(text.left(200)));
+    QVERIFY(!text.contains(QStringLiteral("](")));  // rendered, not shown as Markdown
+    // Asked again, the same window comes back.
+    action->trigger();
+    QCOMPARE(window.userGuide(), guide);
+}
+
+void TestUserGuide::linksAreFollowed()
+{
+    UserGuide guide;
+    guide.showPage(QStringLiteral("getting-started.md"), QStringLiteral("en"));
+    QTextBrowser *browser = guide.browser();
+    guide.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&guide));
+    // A click on the page's link to the troubleshooting page.
+    const QPoint link = linkPosition(browser, QStringLiteral("troubleshooting.md"));
+    QVERIFY(!link.isNull());
+    QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, link);
+    QVERIFY2(browser->source().path().endsWith(QStringLiteral("docs/troubleshooting.md")),
+             qPrintable(browser->source().toString()));
+    QVERIFY(browser->toPlainText().startsWith(QStringLiteral("Troubleshooting")));
+    QVERIFY(browser->isBackwardAvailable());
+    browser->backward();
+    QVERIFY(browser->toPlainText().startsWith(QStringLiteral("Getting started")));
+    // Up to the README, which links into docs/ again.
+    QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, linkPosition(browser, QStringLiteral("../README.md")));
+    QVERIFY2(browser->toPlainText().startsWith(QStringLiteral("RT Studio")), qPrintable(browser->source().toString()));
+    QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, linkPosition(browser, QStringLiteral("docs/rtctl.md")));
+    QVERIFY2(browser->toPlainText().startsWith(QStringLiteral("rtctl")), qPrintable(browser->source().toString()));
+}
+
+void TestUserGuide::troubleshooting()
+{
+    Studio::MainWindow window;
+    auto *action = window.findChild<QAction *>(QStringLiteral("actionTroubleshooting"));
+    QVERIFY(action);
+    action->trigger();
+    QVERIFY(window.userGuide());
+    QVERIFY(window.userGuide()->browser()->toPlainText().startsWith(QStringLiteral("Troubleshooting")));
+}
+
+void TestUserGuide::japanesePagesFirst()
+{
+    QCOMPARE(UserGuide::page(QStringLiteral("getting-started.md"), QStringLiteral("ja")),
+             UserGuide::Root + QStringLiteral("docs/ja/getting-started.md"));
+    // Pages without a translation are shown in English.
+    QCOMPARE(UserGuide::page(QStringLiteral("rtctl.md"), QStringLiteral("ja")),
+             UserGuide::Root + QStringLiteral("docs/rtctl.md"));
+    QCOMPARE(UserGuide::page(QStringLiteral("getting-started.md"), QStringLiteral("en")),
+             UserGuide::Root + QStringLiteral("docs/getting-started.md"));
+    QCOMPARE(UserGuide::page(QStringLiteral("nothing.md"), QStringLiteral("en")), QString());
+    UserGuide guide;
+    guide.showPage(QStringLiteral("troubleshooting.md"), QStringLiteral("ja"));
+    QVERIFY(guide.browser()->toPlainText().startsWith(QStringLiteral("トラブルシューティング")));
+    if (qEnvironmentVariableIsSet("RTSTUDIO_SCREENSHOT_DIR")) {
+        const QDir shots(qEnvironmentVariable("RTSTUDIO_SCREENSHOT_DIR"));
+        guide.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&guide));
+        guide.grab().save(shots.filePath(QStringLiteral("userguide-ja.png")));
+        guide.showPage(QStringLiteral("getting-started.md"), QStringLiteral("en"));
+        guide.grab().save(shots.filePath(QStringLiteral("userguide-en.png")));
+    }
+}
+
+QTEST_MAIN(TestUserGuide)
+#include "tst_userguide.moc"
