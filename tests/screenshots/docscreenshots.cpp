@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// Renders the pictures the documentation shows from the running application, under any Qt
+// platform (offscreen in CI), so that they show what the program shows today:
+//
+//   docscreenshots OUTPUT_DIR LANGUAGE
+//
+// writes builder-LANGUAGE.png (the tour's component in the Builder), systemeditor-LANGUAGE.png (the
+// bundled ConsoleInOut system) and userguide-LANGUAGE.png (Help → User Guide). LANGUAGE is en or ja.
+// Settings go to a temporary folder; the user's are not read or changed.
+#include "mainwindow.h"
+#include "perspective.h"
+#include "uilanguage.h"
+#include "userguide.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QMainWindow>
+#include <QStatusBar>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cstdio>
+
+namespace {
+
+bool save(QWidget *widget, const QDir &output, const QString &name, const QString &language)
+{
+    // "Opened /path/…" would put this machine's folders into the pictures.
+    if (auto *window = qobject_cast<QMainWindow *>(widget))
+        window->statusBar()->clearMessage();
+    QApplication::processEvents();
+    const QString path = output.filePath(QStringLiteral("%1-%2.png").arg(name, language));
+    if (widget->grab().save(path))
+        return true;
+    std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    const QStringList arguments = app.arguments();
+    if (arguments.size() != 3 || (arguments.at(2) != QLatin1String("en") && arguments.at(2) != QLatin1String("ja"))) {
+        std::fprintf(stderr, "usage: docscreenshots OUTPUT_DIR en|ja\n");
+        return 2;
+    }
+    const QDir output(arguments.at(1));
+    const QString language = arguments.at(2);
+    if (!QDir().mkpath(output.path())) {
+        std::fprintf(stderr, "cannot create %s\n", qPrintable(output.path()));
+        return 1;
+    }
+    QTemporaryDir settings;
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settings.path());
+    QString error;
+    if (!Studio::UiLanguage::install(&app, language, &error)) {
+        std::fprintf(stderr, "%s\n", qPrintable(error));
+        return 1;
+    }
+
+    const QDir examples(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples"));
+    Studio::MainWindow window;
+    window.resize(1200, 760);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window))
+        return 1;
+    bool ok = window.openFiles({examples.filePath(QStringLiteral("tour/Doubler.xml"))})
+        && save(&window, output, QStringLiteral("builder"), language)
+        && window.openFiles({examples.filePath(QStringLiteral("ConsoleInOut/ConsoleInOut.xml"))})
+        && save(&window, output, QStringLiteral("systemeditor"), language);
+    window.showUserGuide(QStringLiteral("getting-started.md"));
+    Studio::UserGuide *guide = window.userGuide();
+    ok = ok && guide && QTest::qWaitForWindowExposed(guide) && save(guide, output, QStringLiteral("userguide"), language);
+    if (!ok)
+        std::fprintf(stderr, "docscreenshots: an example did not open or a picture was not written\n");
+    return ok ? 0 : 1;
+}
