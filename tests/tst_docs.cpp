@@ -65,6 +65,7 @@ private slots:
     void linksExist();
     void rtctlCommandsExist_data();
     void rtctlCommandsExist();
+    void setUpCommandsAgree();
 
 private:
     QString help(const QString &command);
@@ -145,6 +146,29 @@ void TestDocs::rtctlCommandsExist()
         }
     }
     QVERIFY2(problems.isEmpty(), qPrintable(file + QStringLiteral(":\n") + problems.join('\n')));
+}
+
+// The README starts with the two set-up commands; CI runs the second one, the Japanese README
+// shows both.
+void TestDocs::setUpCommandsAgree()
+{
+    const QStringList readme = codeTexts(readText(QStringLiteral("README.md")));
+    static const QRegularExpression setUp(QStringLiteral("^scripts/install-deps\\.sh && "));
+    QStringList commands;
+    for (const QString &code : readme) {
+        if (setUp.match(code).hasMatch())
+            commands << code.trimmed();
+    }
+    QVERIFY2(commands.size() >= 2, qPrintable(commands.join('\n')));
+    const QString build = commands.at(0);
+    const QString test = commands.at(1);
+    QVERIFY2(build.contains(QStringLiteral("rtstudio")), qPrintable(build));
+    QVERIFY2(test.contains(QStringLiteral("--workflow")), qPrintable(test));
+    const QString ci = readText(QStringLiteral(".ci/run"));
+    QVERIFY2(ci.split(QLatin1Char('\n')).contains(test), qPrintable(ci));
+    const QString japanese = readText(QStringLiteral("docs/ja/README.md"));
+    QVERIFY(japanese.contains(build));
+    QVERIFY(japanese.contains(test));
 }
 
 QTEST_GUILESS_MAIN(TestDocs)
