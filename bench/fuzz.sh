@@ -8,8 +8,8 @@
 #
 # Builds what it needs with the `fuzz` preset (clang, ASan + UBSan) in build-fuzz/. Each harness
 # starts from its seeds (tests' data and tests/data/fuzz/<harness>/, listed by CMake in
-# <harness>.seeds), the corpus kept in tests/fuzz/corpus/<harness>/ and the corpus earlier runs grew
-# in build-fuzz/fuzz/corpus/<harness>/ (see tests/fuzz/runharness.sh). Findings are written to
+# <harness>.seeds, with the corpus kept in tests/fuzz/corpus/<harness>/) and the corpus earlier runs
+# grew in build-fuzz/fuzz/corpus/<harness>/ (see tests/fuzz/runharness.sh). Findings are written to
 # build-fuzz/fuzz/artifacts/<harness>/ (crash-*, leak-*, timeout-*, oom-*) and printed in base64; the
 # log of each run is build-fuzz/fuzz/<harness>.log. Exits non-zero when anything was found.
 set -eu
@@ -58,7 +58,7 @@ status=0
 for harness in "$@"; do
     nice -n 10 "$source_dir/tests/fuzz/runharness.sh" "$harness_dir/$harness" "$limit" \
         "$work_dir/corpus/$harness" "$work_dir/artifacts/$harness" "$work_dir/$harness.log" \
-        "$harness_dir/$harness.seeds" "$source_dir/tests/fuzz/corpus/$harness" >>"$table" || status=1
+        "$harness_dir/$harness.seeds" >>"$table" || status=1
 done
 
 printf '%-20s %12s %8s %8s %8s %8s %8s %8s\n' harness executions seconds coverage features crashes timeouts \

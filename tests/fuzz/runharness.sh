@@ -3,11 +3,12 @@
 # Runs one libFuzzer harness and prints its row of the fuzz table:
 #   harness executions seconds coverage features crashes timeouts leaks
 #
-#   tests/fuzz/runharness.sh [--fresh] [--row FILE] HARNESS LIMIT WORK_CORPUS ARTIFACTS LOG SEEDS_FILE [CORPUS_DIR...]
+#   tests/fuzz/runharness.sh [--fresh] [--row FILE] HARNESS LIMIT WORK_CORPUS ARTIFACTS LOG SEEDS_FILE
 #
-# LIMIT is libFuzzer's -max_total_time=S or -runs=N. The seed files SEEDS_FILE lists (one path a line)
-# and the files of each CORPUS_DIR are copied into WORK_CORPUS under their content's hash, as
-# libFuzzer names corpus files, and the harness runs on WORK_CORPUS (which it grows). Inputs are at
+# LIMIT is libFuzzer's -max_total_time=S or -runs=N. The files SEEDS_FILE lists (one path a line: the
+# seeds, regression inputs and kept corpus CMake found for the harness) are copied into WORK_CORPUS
+# under their content's hash, as libFuzzer names corpus files, and the harness runs on WORK_CORPUS
+# (which it grows). Inputs are at
 # most 4 KiB; one taking more than 1 s is a timeout. Findings go to ARTIFACTS (emptied first) and are
 # printed in base64 after the row; the exit status is 1 when there are any. With --fresh, WORK_CORPUS
 # is emptied first, so that the run starts from the seeds and the corpus directories alone; with
@@ -24,12 +25,11 @@ while [ $# -gt 0 ]; do
     shift
 done
 
-if [ $# -lt 6 ]; then
-    echo "usage: $0 [--fresh] [--row FILE] HARNESS LIMIT WORK_CORPUS ARTIFACTS LOG SEEDS_FILE [CORPUS_DIR...]" >&2
+if [ $# -ne 6 ]; then
+    echo "usage: $0 [--fresh] [--row FILE] HARNESS LIMIT WORK_CORPUS ARTIFACTS LOG SEEDS_FILE" >&2
     exit 2
 fi
 harness=$1 limit=$2 corpus=$3 artifacts=$4 log=$5 seeds=$6
-shift 6
 name=$(basename "$harness")
 
 [ "$fresh" -eq 0 ] || rm -rf "$corpus"
@@ -42,12 +42,6 @@ add_seed() {
 while IFS= read -r seed; do
     add_seed "$seed"
 done <"$seeds"
-for dir in "$@"; do
-    [ -d "$dir" ] || continue
-    for seed in "$dir"/*; do
-        add_seed "$seed"
-    done
-done
 
 "$harness" "$limit" -timeout=1 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
     -artifact_prefix="$artifacts/" "$corpus" >"$log" 2>&1 || true
