@@ -572,6 +572,8 @@ void TestOnlineDocks::startAndStopAllRunTheSystemPlan()
     QTRY_VERIFY_WITH_TIMEOUT(interrupted.done("activate").size() == 2
                                  && waitingStatus->text().contains("waiting: Slow0"),
                              10000);
+    if (const QString shot = qEnvironmentVariable("RTSTUDIO_ONLINE_SCREENSHOT"); !shot.isEmpty())
+        window.grab().save(shot + ".startall.png");
     QElapsedTimer clock;
     clock.start();
     QTest::mouseClick(waiting->findChild<QPushButton *>("batchCancel"), Qt::LeftButton);
