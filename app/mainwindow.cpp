@@ -15,6 +15,7 @@
 #include "rtstudioresources.h"
 #include "systemcanvas.h"
 #include "uilanguage.h"
+#include "onlinedocument.h"
 #include "userguide.h"
 
 #include <QActionGroup>
@@ -175,18 +176,33 @@ void MainWindow::createActions()
         connect(action, &QAction::triggered, this, [this, page] { showUserGuide(page); });
         return action;
     };
-    guideAction("actionUserGuide", tr("&User Guide"), QStringLiteral("getting-started.md"))
-        ->setShortcut(QKeySequence::HelpContents);
+    guideAction("actionUserGuide", tr("&User Guide"), QStringLiteral("getting-started.md"));
     guideAction("actionTroubleshooting", tr("&Troubleshooting"), QStringLiteral("troubleshooting.md"));
+    QAction *context = addAction(QStringLiteral("actionContextHelp"), tr("Help on This &View"), QString(),
+                                 QKeySequence::HelpContents);
+    connect(context, &QAction::triggered, this,
+            [this] { showUserGuide(QStringLiteral("rtstudio.md"), contextHelpSection()); });
 }
 
-void MainWindow::showUserGuide(const QString &page)
+QString MainWindow::contextHelpSection() const
+{
+    if (currentPerspective() && currentPerspective()->id() == Perspective::Id::Builder)
+        return QStringLiteral("Builder");
+    return qobject_cast<const OnlineDocument *>(m_activeDocument) ? QStringLiteral("Online")
+                                                                   : QStringLiteral("System Editor");
+}
+
+void MainWindow::showUserGuide(const QString &page, const QString &section)
 {
     if (!m_userGuide)
         m_userGuide = new UserGuide(this);
-    m_userGuide->showPage(page, UiLanguage::resolve(UiLanguage::chosen()));
     m_userGuide->show();
     m_userGuide->raise();
+    const QString language = UiLanguage::resolve(UiLanguage::chosen());
+    if (section.isEmpty())
+        m_userGuide->showPage(page, language);
+    else
+        m_userGuide->showSection(page, section, language);
 }
 
 void MainWindow::createFileActions()
@@ -324,6 +340,7 @@ void MainWindow::createMenus()
     m_online->fillMenu(online);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(action("actionContextHelp"));
     help->addAction(action("actionUserGuide"));
     help->addAction(action("actionTroubleshooting"));
     help->addSeparator();

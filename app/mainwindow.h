@@ -62,8 +62,11 @@ public:
     Document *activeDocument() const;
     /// Opens files as `rtstudio FILE…` does; true when all of them opened.
     bool openFiles(const QStringList &paths);
-    /// Help → User Guide: shows @p page of docs/ (in the GUI's language where translated).
-    void showUserGuide(const QString &page);
+    /// Help → User Guide: shows @p page of docs/ (in the GUI's language where translated), at
+    /// its heading @p section when given.
+    void showUserGuide(const QString &page, const QString &section = {});
+    /// What F1 shows here: the section of docs/rtstudio.md about the view in front.
+    QString contextHelpSection() const;
     /// The user guide window, once shown.
     UserGuide *userGuide() const { return m_userGuide; }
 

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "userguide.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QAction>
+#include <QScrollBar>
+#include <QTextBlock>
 #include <QFileInfo>
 #include <QTextBrowser>
 #include <QToolBar>
@@ -42,6 +45,48 @@ QString UserGuide::page(const QString &name, const QString &language)
         return translated;
     const QString english = Root + QStringLiteral("docs/") + name;
     return QFileInfo::exists(english) ? english : QString();
+}
+
+void UserGuide::showSection(const QString &name, const QString &section, const QString &language)
+{
+    showPage(name, language);
+    m_pendingSection = section;
+    if (isVisible())
+        scrollToPendingSection();
+}
+
+void UserGuide::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    scrollToPendingSection();
+}
+
+// Markdown headings get no anchors in QTextDocument: find the heading block and scroll to it, once
+// the window has its size (the scroll range depends on it).
+void UserGuide::scrollToPendingSection()
+{
+    const QString section = std::exchange(m_pendingSection, QString());
+    if (section.isEmpty())
+        return;
+    m_browser->document()->size(); // lays the whole page out, so the range covers the heading
+    for (QTextBlock block = m_browser->document()->begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() > 0 && block.text() == section) {
+            const QRectF rect = m_browser->document()->documentLayout()->blockBoundingRect(block);
+            m_browser->verticalScrollBar()->setValue(int(rect.top()));
+            return;
+        }
+    }
+}
+
+QString UserGuide::sectionAtTop() const
+{
+    const int top = m_browser->verticalScrollBar()->value();
+    QAbstractTextDocumentLayout *layout = m_browser->document()->documentLayout();
+    for (QTextBlock block = m_browser->document()->begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() > 0 && qAbs(int(layout->blockBoundingRect(block).top()) - top) <= 1)
+            return block.text();
+    }
+    return {};
 }
 
 void UserGuide::showPage(const QString &name, const QString &language)

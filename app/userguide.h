@@ -30,11 +30,22 @@ public:
 
     /// Shows @p name in @p language (see page()).
     void showPage(const QString &name, const QString &language);
+    /// Shows @p name scrolled to its heading @p section (its text, e.g. "Builder"); the top of the
+    /// page when it has no such heading.
+    void showSection(const QString &name, const QString &section, const QString &language);
+    /// The text of the heading shown at the top of the window; empty when none is.
+    QString sectionAtTop() const;
 
     QTextBrowser *browser() const { return m_browser; }
 
+protected:
+    void showEvent(QShowEvent *event) override;
+
 private:
+    void scrollToPendingSection();
+
     QTextBrowser *m_browser;
+    QString m_pendingSection;
     QAction *m_back;
     QAction *m_forward;
 };

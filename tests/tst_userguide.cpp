@@ -11,6 +11,7 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
 
@@ -48,6 +49,7 @@ private slots:
     void helpShowsGettingStarted();
     void linksAreFollowed();
     void troubleshooting();
+    void f1ShowsTheSectionOfTheViewInFront();
     void japanesePagesFirst();
 
 private:
@@ -82,7 +84,6 @@ void TestUserGuide::helpShowsGettingStarted()
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     auto *action = window.findChild<QAction *>(QStringLiteral("actionUserGuide"));
     QVERIFY(action);
-    QCOMPARE(action->shortcut(), QKeySequence(QKeySequence::HelpContents));
     QVERIFY(!window.userGuide());
     action->trigger();
     UserGuide *guide = window.userGuide();
@@ -130,6 +131,34 @@ void TestUserGuide::troubleshooting()
     action->trigger();
     QVERIFY(window.userGuide());
     QVERIFY(window.userGuide()->browser()->toPlainText().startsWith(QStringLiteral("Troubleshooting")));
+}
+
+void TestUserGuide::f1ShowsTheSectionOfTheViewInFront()
+{
+    Studio::MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *help = window.findChild<QAction *>(QStringLiteral("actionContextHelp"));
+    QVERIFY(help);
+    QCOMPARE(help->shortcut(), QKeySequence(QKeySequence::HelpContents));
+    const QString examples = QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/");
+    const auto pressF1 = [&window] {
+        QTest::keyClick(&window, Qt::Key_F1);
+        QVERIFY(window.userGuide());
+        QVERIFY(window.userGuide()->browser()->source().path().endsWith(QStringLiteral("docs/rtstudio.md")));
+    };
+    QVERIFY(window.openFiles({examples + QStringLiteral("tour/Doubler.xml")}));
+    pressF1();
+    QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("Builder"));
+    QVERIFY(window.openFiles({examples + QStringLiteral("ConsoleInOut/ConsoleInOut.xml")}));
+    window.activateWindow();
+    pressF1();
+    QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("System Editor"));
+    // A heading the page lacks shows its top.
+    UserGuide guide;
+    guide.showSection(QStringLiteral("rtstudio.md"), QStringLiteral("No Such Heading"), QStringLiteral("en"));
+    QCOMPARE(guide.browser()->verticalScrollBar()->value(), 0);
 }
 
 void TestUserGuide::japanesePagesFirst()

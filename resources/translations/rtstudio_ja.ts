@@ -2613,7 +2613,7 @@
 <context>
     <name>Studio::MainWindow</name>
     <message>
-        <location filename="../../app/mainwindow.cpp" line="+170"/>
+        <location filename="../../app/mainwindow.cpp" line="+171"/>
         <source>&amp;About RT Studio</source>
         <translation>RT Studio について(&amp;A)</translation>
     </message>
@@ -2623,12 +2623,17 @@
         <translation>ユーザーガイド(&amp;U)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>&amp;Troubleshooting</source>
         <translation>トラブルシューティング(&amp;T)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+1"/>
+        <source>Help on This &amp;View</source>
+        <translation>このビューのヘルプ(&amp;V)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>New &amp;Component</source>
         <translation>新規コンポーネント(&amp;C)</translation>
     </message>
@@ -2743,7 +2748,7 @@
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>System Default</source>
         <translation>システムの設定に従う</translation>
     </message>
@@ -3203,7 +3208,7 @@
 <context>
     <name>Studio::UserGuide</name>
     <message>
-        <location filename="../../app/userguide.cpp" line="+18"/>
+        <location filename="../../app/userguide.cpp" line="+21"/>
         <source>RT Studio User Guide</source>
         <translation>RT Studio ユーザーガイド</translation>
     </message>
