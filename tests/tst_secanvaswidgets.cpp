@@ -66,6 +66,7 @@ class TestSeCanvasWidgets : public QObject
 
 private slots:
     void dialogShowsDefaults();
+    void dialogExplainsEverySetting();
     void dialogEnablingRules_data();
     void dialogEnablingRules();
     void dialogValidation_data();
@@ -92,6 +93,24 @@ void TestSeCanvasWidgets::dialogShowsDefaults()
     QCOMPARE(edit(dialog, "pushRate")->text(), QStringLiteral("1000.0"));
     QVERIFY(okButton(dialog)->isEnabled());
     QCOMPARE(dialog.settings(), defaults());
+}
+
+// What's This on every setting names the dataport.* / buffer.* key it sets.
+void TestSeCanvasWidgets::dialogExplainsEverySetting()
+{
+    ConnectorDialog dialog(defaults());
+    const QList<std::pair<const char *, const char *>> settings = {
+        {"interfaceType", "dataport.interface_type"}, {"marshalingType", "dataport.marshaling_type"},
+        {"dataflowType", "dataport.dataflow_type"}, {"subscriptionType", "dataport.subscription_type"},
+        {"pushRate", "dataport.push_rate"}, {"pushPolicy", "dataport.publisher.push_policy"}, {"skipCount", "dataport.publisher.skip_count"},
+        {"timestampPolicy", "dataport.timestamp_policy"}, {"outBufferLength", "buffer.length"},
+        {"inBufferLength", "buffer.length"}, {"outFullPolicy", "buffer.write.full_policy"}, {"inEmptyPolicy", "buffer.read.empty_policy"},
+        {"outWriteTimeout", "buffer.write.timeout"}, {"inReadTimeout", "buffer.read.timeout"}};
+    for (const auto &[name, key] : settings) {
+        auto *widget = dialog.findChild<QWidget *>(QLatin1String(name));
+        QVERIFY2(widget, name);
+        QVERIFY2(widget->whatsThis().startsWith(QLatin1String(key)), qPrintable(QLatin1String(name) + ": " + widget->whatsThis()));
+    }
 }
 
 void TestSeCanvasWidgets::dialogEnablingRules_data()

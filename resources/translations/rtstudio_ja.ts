@@ -3449,7 +3449,7 @@
         <translation>InPort バッファ</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Data flow</source>
         <translation>データフロー</translation>
     </message>
@@ -3494,7 +3494,72 @@
         <translation>タイムスタンプポリシー(&amp;T)：</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+13"/>
+        <source>dataport.interface_type: how samples travel. corba_cdr sends them as CORBA calls between any two processes; other types need both sides to offer them.</source>
+        <translation>dataport.interface_type：データの運び方です。corba_cdr はどの二つのプロセスの間でも CORBA の呼び出しで送ります。ほかの種類は両側がそれを提供している必要があります。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dataport.marshaling_type: how samples are encoded on the way (cdr unless the components offer another serializer).</source>
+        <translation>dataport.marshaling_type：送る途中でのデータの符号化です（コンポーネントが別のシリアライザを提供していなければ cdr）。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dataport.dataflow_type: push, the OutPort sends each sample as it is written; pull, the InPort asks for the latest sample when its component reads.</source>
+        <translation>dataport.dataflow_type：push では OutPort が書き込まれたデータをそのつど送り、pull では InPort のコンポーネントが読むときに最新のデータを問い合わせます。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dataport.subscription_type (push only): flush sends at once in the writer&apos;s thread; new sends the newest from a thread of the connector, skipping what it could not send yet; periodic sends at the push rate.</source>
+        <translation>dataport.subscription_type（push のみ）：flush は書き込んだスレッドですぐに送り、new はコネクタのスレッドから最新のデータを送り（まだ送れていないものは飛ばします）、periodic はプッシュレートで送ります。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>dataport.push_rate: how many times a second a periodic subscription sends.</source>
+        <translation>dataport.push_rate：periodic のサブスクリプションが 1 秒に何回送るかです。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dataport.publisher.push_policy: what each send takes from the OutPort buffer: all of it, the oldest (fifo), every n-th (skip) or the newest (new).</source>
+        <translation>dataport.publisher.push_policy：1 回の送信で OutPort のバッファから何を取り出すかです。すべて（all）、最も古いもの（fifo）、n 個おき（skip）、最新のもの（new）。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dataport.publisher.skip_count: with the skip policy, how many samples are left out between two sent ones.</source>
+        <translation>dataport.publisher.skip_count：skip ポリシーのとき、送る二つのデータの間で飛ばす数です。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>dataport.timestamp_policy: when a sample&apos;s time stamp is set: when it is written, sent, received or read.</source>
+        <translation>dataport.timestamp_policy：データのタイムスタンプを付けるときです。書き込み時、送信時、受信時、読み出し時のいずれか。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>buffer.length: how many samples the buffer holds.</source>
+        <translation>buffer.length：バッファが保持するデータの数です。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>buffer.write.full_policy: what a write into a full buffer does: overwrite the oldest sample, do nothing (the sample is lost), or block until there is room or the write timeout passes.</source>
+        <translation>buffer.write.full_policy：満杯のバッファへの書き込みの動作です。最も古いデータを上書きする（overwrite）、何もしない（データは失われます、do_nothing）、空きができるか書き込みタイムアウトまで待つ（block）。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>buffer.write.timeout: how long a blocked write waits, in seconds.</source>
+        <translation>buffer.write.timeout：待っている書き込みが待つ時間（秒）です。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>buffer.read.empty_policy: what a read from an empty buffer does: read the last sample again (readback), do nothing, or block until a sample comes or the read timeout passes.</source>
+        <translation>buffer.read.empty_policy：空のバッファからの読み出しの動作です。最後のデータをもう一度読む（readback）、何もしない（do_nothing）、データが来るか読み出しタイムアウトまで待つ（block）。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>buffer.read.timeout: how long a blocked read waits, in seconds.</source>
+        <translation>buffer.read.timeout：待っている読み出しが待つ時間（秒）です。</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>default</source>
         <translation>デフォルト</translation>
     </message>

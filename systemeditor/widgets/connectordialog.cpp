@@ -97,6 +97,7 @@ void ConnectorDialog::buildForm(const Choices &choices)
 
     for (QLineEdit *edit : findChildren<QLineEdit *>())
         connect(edit, &QLineEdit::textChanged, this, &ConnectorDialog::refresh);
+    explainSettings();
     for (QComboBox *box : findChildren<QComboBox *>())
         connect(box, &QComboBox::currentTextChanged, this, &ConnectorDialog::refresh);
     connect(m_connectDirection, &QComboBox::currentIndexChanged, this, &ConnectorDialog::refresh);
@@ -124,6 +125,51 @@ QWidget *ConnectorDialog::buildDataflowGroup(const Choices &choices)
     form->addRow(tr("S&kip count:"), m_skipCount);
     form->addRow(tr("&Timestamp policy:"), m_timestampPolicy);
     return group;
+}
+
+// What's This (Shift+F1) on each setting: what it does, in a sentence or two. Keyed by the widget's
+// object name; buffer settings apply to both buffers (object names with the "out" / "in" prefix).
+void ConnectorDialog::explainSettings()
+{
+    static const struct
+    {
+        const char *name;
+        const char *text;
+    } explanations[] = {
+        {"interfaceType", QT_TR_NOOP("dataport.interface_type: how samples travel. corba_cdr sends them as CORBA "
+                                     "calls between any two processes; other types need both sides to offer them.")},
+        {"marshalingType", QT_TR_NOOP("dataport.marshaling_type: how samples are encoded on the way (cdr unless "
+                                      "the components offer another serializer).")},
+        {"dataflowType", QT_TR_NOOP("dataport.dataflow_type: push, the OutPort sends each sample as it is written; "
+                                    "pull, the InPort asks for the latest sample when its component reads.")},
+        {"subscriptionType", QT_TR_NOOP("dataport.subscription_type (push only): flush sends at once in the writer's "
+                                        "thread; new sends the newest from a thread of the connector, skipping what "
+                                        "it could not send yet; periodic sends at the push rate.")},
+        {"pushRate", QT_TR_NOOP("dataport.push_rate: how many times a second a periodic subscription sends.")},
+        {"pushPolicy", QT_TR_NOOP("dataport.publisher.push_policy: what each send takes from the OutPort buffer: "
+                                  "all of it, the oldest (fifo), every n-th (skip) or the newest (new).")},
+        {"skipCount", QT_TR_NOOP("dataport.publisher.skip_count: with the skip policy, how many samples are "
+                                 "left out between two sent ones.")},
+        {"timestampPolicy", QT_TR_NOOP("dataport.timestamp_policy: when a sample's time stamp is set: when it is "
+                                       "written, sent, received or read.")},
+        {"BufferLength", QT_TR_NOOP("buffer.length: how many samples the buffer holds.")},
+        {"FullPolicy", QT_TR_NOOP("buffer.write.full_policy: what a write into a full buffer does: overwrite the "
+                                  "oldest sample, do nothing (the sample is lost), or block until there is room "
+                                  "or the write timeout passes.")},
+        {"WriteTimeout", QT_TR_NOOP("buffer.write.timeout: how long a blocked write waits, in seconds.")},
+        {"EmptyPolicy", QT_TR_NOOP("buffer.read.empty_policy: what a read from an empty buffer does: read the last "
+                                   "sample again (readback), do nothing, or block until a sample comes or the "
+                                   "read timeout passes.")},
+        {"ReadTimeout", QT_TR_NOOP("buffer.read.timeout: how long a blocked read waits, in seconds.")},
+    };
+    for (QWidget *widget : findChildren<QWidget *>()) {
+        const QString name = widget->objectName();
+        for (const auto &explanation : explanations) {
+            const QLatin1String key(explanation.name);
+            if (name == key || name == QLatin1String("out") + key || name == QLatin1String("in") + key)
+                widget->setWhatsThis(tr(explanation.text));
+        }
+    }
 }
 
 QGroupBox *ConnectorDialog::buildBufferGroup(const QString &title, const QString &prefix,

@@ -71,6 +71,7 @@ private:
 
     void buildForm(const Choices &choices);
     QWidget *buildDataflowGroup(const Choices &choices);
+    void explainSettings();
     QGroupBox *buildBufferGroup(const QString &title, const QString &prefix,
                                 BufferWidgets &widgets);
     QWidget *buildFreeProperties();
