@@ -168,8 +168,14 @@ std::optional<InstalledPackage> PackageInstaller::install(const PackageSource &s
     const std::optional<IndexEntry> entry = indexEntry(source, *release, error);
     if (!entry)
         return std::nullopt;
-    if (!checkPackageFile(*entry, source.debFile, &error->reason)
-        || !checkNode(*entry, &error->reason))
+    if (!checkPackageFile(*entry, source.debFile, &error->reason)) {
+        // Its message names the package already.
+        const QString named = error->package + QStringLiteral(": ");
+        if (error->reason.startsWith(named))
+            error->reason.remove(0, named.size());
+        return std::nullopt;
+    }
+    if (!checkNode(*entry, &error->reason))
         return std::nullopt;
     return unpack(*entry, source.debFile, &error->reason);
 }

@@ -66,8 +66,12 @@ QString PackageStore::defaultRoot()
 
 bool PackageStore::prepare(QString *error) const
 {
-    if (!QDir().mkpath(m_root)) {
-        *error = QStringLiteral("cannot create the package store %1").arg(m_root);
+    // A manager that never installs leaves no store behind; the first install makes it.
+    const QFileInfo info(m_root);
+    if (!info.exists())
+        return true;
+    if (!info.isDir()) {
+        *error = QStringLiteral("the package store %1 is not a folder").arg(m_root);
         return false;
     }
     for (const QString &name : subfolders(m_root)) {

@@ -45,8 +45,8 @@ public:
     static QString defaultRoot();
 
     QString root() const { return m_root; }
-    /// Creates the store when missing and deletes leftover staging folders and empty package
-    /// folders; false with the reason when the folder cannot be made.
+    /// Deletes leftover staging folders and empty package folders; false with the reason when
+    /// the store is not a folder. A missing store is made by the first install.
     bool prepare(QString *error) const;
 
     /// Every installed version, by name, each package's newest version first.
