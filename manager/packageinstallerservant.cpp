@@ -62,7 +62,9 @@ PackageInstallerServant *PackageInstallerServant::create(Manager &manager, std::
     const QString root = qs(config.value("manager.packages.store"));
     Packages::PackageStore store(root.isEmpty() ? Packages::PackageStore::defaultRoot() : root);
     QString reason;
-    if (!store.prepare(&reason)) {
+    // A slave shares its master's store and starts while the master may be installing: only a
+    // manager a user started clears what interrupted installs left.
+    if (!config.contains("manager.spawned_by") && !store.prepare(&reason)) {
         *error = reason.toStdString();
         return nullptr;
     }

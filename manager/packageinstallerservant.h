@@ -26,7 +26,8 @@ class Manager;
  *   manager.packages.sdk_abi         the SDK's SONAME packages must be built for (default: this SDK)
  *   manager.packages.fetch_timeout   ms for each file fetched (default 60000)
  *
- * Installs run one at a time.
+ * Installs run one at a time. A store belongs to one manager (and its slaves): the manager's start
+ * deletes staging folders it finds there.
  */
 class PackageInstallerServant : public virtual POA_RTStudio::PackageInstaller
 {

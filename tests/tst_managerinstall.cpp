@@ -12,6 +12,7 @@
 #include "livesystem.h"
 #include "rtctlrunner.h"
 #include "sdkproject.h"
+#include "tmpfsmount.h"
 
 #include <componentproxy.h>
 #include <corbaerror.h>
@@ -85,6 +86,7 @@ private slots:
     void restartKeepsPackages();
     void installOverHttp();
     void killedInstallLeavesNothing();
+    void fullDiskWhileUnpacking();
     void systemdUnit();
 
 private:
@@ -500,6 +502,30 @@ void TestManagerInstall::killedInstallLeavesNothing()
     const RtctlResult listed = node({"packages", manager()});
     QVERIFY2(!listed.out.contains(" 1.0.0 "), qPrintable(listed.out));
     QVERIFY2(listed.out.startsWith(package + " 2.0.0 "), qPrintable(listed.out));
+}
+
+void TestManagerInstall::fullDiskWhileUnpacking()
+{
+    // A store on a file system smaller than the package unpacked (303 KiB).
+    const QString store = m_work.filePath("smallstore");
+    QDir().mkpath(store);
+    TestDisk::TmpfsMount disk;
+    TESTDISK_MOUNT_OR_SKIP(disk, store);
+    LiveTest::LiveSystem live;
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    QVERIFY2(live.startManager(RTMANAGER_PATH, port,
+                               {"naming.enable=NO", "manager.packages.store=" + store,
+                                "manager.packages.keyring=" + m_repo + "/archive-key.gpg"},
+                               &error),
+             qPrintable(error));
+    const QStringList before = treeOf(store);
+    const RtctlResult r = node({"install", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port),
+                                poolUrl(m_repo, m_deb1)});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(package + " 1.0.0: unpacking") && r.err.contains("No space left"),
+             qPrintable(r.err));
+    QCOMPARE(treeOf(store), before);
 }
 
 void TestManagerInstall::systemdUnit()
