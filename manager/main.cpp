@@ -93,7 +93,6 @@ int runManager(int argc, char **argv)
         return 1;
     }
     if (installer.in()) {
-        installer->_add_ref();
         CORBA::Object_var reference = manager.activate(installer.in());
         manager.setPackageInstaller(reference);
     }

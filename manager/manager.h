@@ -164,7 +164,7 @@ public:
     void setPackageModuleDirs(PackageModuleDirs dirs);
     /// The module files the running components of this process were made from (not built-ins).
     std::vector<std::string> runningModulePaths();
-    /// Serves @p servant (which the POA then owns) in this manager's POA; nil before start().
+    /// Serves @p servant in this manager's POA (which holds a reference to it); nil before start().
     CORBA::Object_ptr activate(PortableServer::ServantBase *servant);
     /// The object RTStudio::Manager::get_package_installer() answers; nil when none is set.
     void setPackageInstaller(CORBA::Object_ptr installer);

@@ -82,7 +82,6 @@ CORBA::Object_ptr Manager::activate(PortableServer::ServantBase *servant)
 {
     if (CORBA::is_nil(m_poa))
         return CORBA::Object::_nil();
-    PortableServer::ServantBase_var owned = servant;
     PortableServer::ObjectId_var id = m_poa->activate_object(servant);
     return m_poa->id_to_reference(id);
 }

@@ -33,6 +33,9 @@ rtstudio_add_test(tst_serepositorypackages SOURCES tst_serepositorypackages.cpp
 add_dependencies(tst_serepositorypackages rtctl)
 set_tests_properties(tst_serepositorypackages PROPERTIES LABELS package)
 
+rtstudio_add_test(tst_packagestore SOURCES tst_packagestore.cpp LIBS rtpackageinstall)
+set_tests_properties(tst_packagestore PROPERTIES LABELS package)
+
 # rtctl node and rtmanager's package installer: installs without root, verified as apt does.
 rtstudio_add_test(tst_managerinstall SOURCES tst_managerinstall.cpp
     LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba)

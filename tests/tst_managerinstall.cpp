@@ -79,6 +79,7 @@ private slots:
     void refused_data();
     void refused();
     void noInstallService();
+    void allowUnsigned();
     void installByFileUrl();
     void installByPushedBytes();
     void versionsSideBySide();
@@ -363,6 +364,31 @@ void TestManagerInstall::noInstallService()
     const RtctlResult r = node({"packages", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port)});
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains("has no install service"), qPrintable(r.err));
+}
+
+void TestManagerInstall::allowUnsigned()
+{
+    // A manager configured to take unsigned repositories and signatures it cannot check.
+    LiveTest::LiveSystem live;
+    const quint16 port = LiveTest::freePort();
+    const QString store = m_work.filePath("unsignedstore");
+    QString error;
+    QVERIFY2(live.startManager(RTMANAGER_PATH, port,
+                               {"naming.enable=NO", "manager.packages.store=" + store,
+                                "manager.packages.allow_unsigned=YES"},
+                               &error),
+             qPrintable(error));
+    const QString other = QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port);
+    const RtctlResult unsignedRepo = node({"install", other, poolUrl(m_unsignedRepo, m_deb1)});
+    QVERIFY2(unsignedRepo.code == 0, qPrintable(unsignedRepo.err));
+    QVERIFY(unsignedRepo.out.startsWith(package + " 1.0.0 "));
+    const RtctlResult unknownKey = node({"install", other, m_deb2, "--repo", m_otherKeyRepo});
+    QCOMPARE(unknownKey.code, 1); // 2.0.0 is not in that repository: the index still counts
+    QVERIFY2(unknownKey.err.contains("not listed in the repository's index"), qPrintable(unknownKey.err));
+    const RtctlResult removed = node({"uninstall", other, package});
+    QVERIFY2(removed.code == 0, qPrintable(removed.err));
+    const RtctlResult pushed = node({"install", other, m_deb1, "--repo", m_otherKeyRepo});
+    QVERIFY2(pushed.code == 0, qPrintable(pushed.err));
 }
 
 void TestManagerInstall::installByFileUrl()
