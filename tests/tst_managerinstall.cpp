@@ -6,9 +6,9 @@
 // run; two versions side by side, the newest used and version= picking the old; uninstall refused
 // while an instance runs; what is installed survives a restart. Refused, each with the package
 // and the reason and the store unchanged: a flipped byte, an unsigned repository, a key not in the
-// keyring, another architecture, a missing Debian dependency. A manager killed in the middle of
-// unpacking leaves a staging folder that its next start deletes. rtctl node enable writes a
-// systemd unit systemd-analyze accepts.
+// keyring, another architecture, another SDK ABI, a missing Debian dependency, a full disk. A
+// manager killed in the middle of unpacking leaves a staging folder that its next start deletes.
+// rtctl node enable writes a systemd unit systemd-analyze accepts.
 #include "livesystem.h"
 #include "rtctlrunner.h"
 #include "sdkproject.h"
@@ -120,6 +120,7 @@ private:
     QString m_deb2; ///< version 2.0.0
     QString m_wrongArch;
     QString m_missingDep;
+    QString m_otherSdk;
     QString m_repo;
     QString m_unsignedRepo;
     QString m_otherKeyRepo;
@@ -187,18 +188,20 @@ void TestManagerInstall::initTestCase()
     const RtctlResult packaged = runRtctl({"package", project, "-o", m_work.filePath("debs")});
     QVERIFY2(packaged.code == 0, qPrintable(packaged.err));
     m_deb1 = packaged.lines().value(0);
-    // The same component as version 2.0.0, for another architecture, and needing a library no
+    // The same component as version 2.0.0, for another architecture, needing a library no
     // Debian system has.
     m_deb2 = variant(package + "_2.0.0_" + m_arch, {{"Version", "2.0.0"}});
     const QString otherArch = m_arch == "arm64" ? "amd64" : "arm64";
     m_wrongArch = variant(package + "_1.0.0_" + otherArch, {{"Architecture", otherArch}});
     m_missingDep = variant(package + "_3.0.0_" + m_arch,
                            {{"Version", "3.0.0"}, {"Depends", "libc6, librtstudio-nowhere0 (>= 1.0)"}});
-    for (const QString &deb : {m_deb2, m_wrongArch, m_missingDep})
+    m_otherSdk = variant(package + "_4.0.0_" + m_arch,
+                         {{"Version", "4.0.0"}, {"X-RTStudio-SDK-ABI", "librtstudio_rtm.so.99"}});
+    for (const QString &deb : {m_deb2, m_wrongArch, m_missingDep, m_otherSdk})
         QVERIFY2(QFile::exists(deb), qPrintable(deb));
 
     m_repo = m_work.filePath("repo");
-    makeRepository(m_repo, m_work.filePath("gnupg"), {m_deb1, m_deb2, m_wrongArch, m_missingDep});
+    makeRepository(m_repo, m_work.filePath("gnupg"), {m_deb1, m_deb2, m_wrongArch, m_missingDep, m_otherSdk});
     m_unsignedRepo = m_work.filePath("unsigned");
     makeRepository(m_unsignedRepo, QString(), {m_deb1});
     m_otherKeyRepo = m_work.filePath("otherkey");
@@ -334,6 +337,10 @@ void TestManagerInstall::refused_data()
     QTest::newRow("missing Debian library")
         << poolUrl(m_repo, m_missingDep)
         << QStringList {package + " 3.0.0", "missing dependencies", "librtstudio-nowhere0 (>= 1.0)"};
+    QTest::newRow("another SDK")
+        << poolUrl(m_repo, m_otherSdk)
+        << QStringList {package + " 4.0.0", "built for the component SDK librtstudio_rtm.so.99",
+                        "this manager's SDK is librtstudio_rtm.so."};
 }
 
 void TestManagerInstall::refused()
@@ -363,7 +370,15 @@ void TestManagerInstall::noInstallService()
              qPrintable(error));
     const RtctlResult r = node({"packages", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port)});
     QCOMPARE(r.code, 1);
-    QVERIFY2(r.err.contains("has no install service"), qPrintable(r.err));
+    QVERIFY2(r.err.contains("has no install service (manager.packages.enable is NO)"), qPrintable(r.err));
+    // A manager of RTM::Manager alone, as OpenRTM-aist's, does not know the operation.
+    quint16 peerPort = 0;
+    QVERIFY2(live.startNameServer(&error), qPrintable(error));
+    QVERIFY2(live.startPeer({}, &error, &peerPort), qPrintable(error));
+    const RtctlResult openRtm = node({"install", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(peerPort),
+                                      poolUrl(m_repo, m_deb1)});
+    QCOMPARE(openRtm.code, 1);
+    QVERIFY2(openRtm.err.contains("has no install service (not an RT Studio manager)"), qPrintable(openRtm.err));
 }
 
 void TestManagerInstall::allowUnsigned()

@@ -114,12 +114,10 @@ bool PackageInstaller::checkNode(const IndexEntry &entry, QString *reason) const
         *reason = QStringLiteral("missing dependencies on this node: ") + unmet.join(QStringLiteral(", "));
         return false;
     }
-    if (!m_store.versions(entry.package()).isEmpty()) {
-        for (const InstalledPackage &installed : m_store.versions(entry.package())) {
-            if (installed.version == entry.version()) {
-                *reason = QStringLiteral("already installed");
-                return false;
-            }
+    for (const InstalledPackage &installed : m_store.versions(entry.package())) {
+        if (installed.version == entry.version()) {
+            *reason = QStringLiteral("already installed");
+            return false;
         }
     }
     return true;
