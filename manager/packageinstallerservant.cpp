@@ -79,15 +79,18 @@ PackageInstallerServant *PackageInstallerServant::create(Manager &manager, std::
     manager.setPackageModuleDirs([store](const std::string &version) {
         return toStd(store.moduleDirs(qs(version)));
     });
-    return new PackageInstallerServant(manager, std::move(store), std::move(policy), timeout);
+    return new PackageInstallerServant(manager, std::move(store), std::move(policy), timeout,
+                                       qs(config.value("manager.packages.ca_certificates")));
 }
 
 PackageInstallerServant::PackageInstallerServant(Manager &manager, Packages::PackageStore store,
-                                                 Packages::InstallPolicy policy, int fetchTimeoutMs)
+                                                 Packages::InstallPolicy policy, int fetchTimeoutMs,
+                                                 QString caCertificates)
     : m_manager(manager)
     , m_store(std::move(store))
     , m_policy(std::move(policy))
     , m_fetchTimeoutMs(fetchTimeoutMs)
+    , m_caCertificates(std::move(caCertificates))
 {
 }
 
@@ -114,7 +117,7 @@ RTStudio::InstalledPackage *PackageInstallerServant::install_url(const char *url
     std::lock_guard lock(m_mutex);
     const QUrl location = QUrl::fromUserInput(QString::fromUtf8(url ? url : ""));
     QTemporaryDir downloads;
-    const Packages::RepositoryFetcher fetcher(m_policy.architecture, m_fetchTimeoutMs);
+    const Packages::RepositoryFetcher fetcher(m_policy.architecture, m_fetchTimeoutMs, m_caCertificates);
     QString reason;
     const std::optional<Packages::PackageSource> source
         = downloads.isValid() ? fetcher.fetch(location, downloads.path(), &reason) : std::nullopt;

@@ -25,6 +25,7 @@ class Manager;
  *   manager.packages.allow_unsigned  YES takes unsigned and unverifiable repositories
  *   manager.packages.sdk_abi         the SDK's SONAME packages must be built for (default: this SDK)
  *   manager.packages.fetch_timeout   ms for each file fetched (default 60000)
+ *   manager.packages.ca_certificates a PEM file of certificate authorities trusted for https
  *
  * Installs run one at a time. A store belongs to one manager (and its slaves): the manager's start
  * deletes staging folders it finds there.
@@ -51,7 +52,8 @@ public:
 
 private:
     PackageInstallerServant(Manager &manager, Packages::PackageStore store,
-                            Packages::InstallPolicy policy, int fetchTimeoutMs);
+                            Packages::InstallPolicy policy, int fetchTimeoutMs,
+                            QString caCertificates);
     /// Installs @p source; the installed package, or InstallRefused.
     RTStudio::InstalledPackage *install(const Packages::PackageSource &source);
     [[noreturn]] void refuse(const QString &package, const QString &reason) const;
@@ -64,6 +66,7 @@ private:
     Packages::PackageStore m_store;
     Packages::InstallPolicy m_policy;
     int m_fetchTimeoutMs;
+    QString m_caCertificates;
     std::mutex m_mutex;
 };
 

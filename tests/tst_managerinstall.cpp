@@ -2,9 +2,10 @@
 // rtctl node and rtmanager's package installer: a component generated and built against this
 // build tree's SDK, packaged (rtctl package) in several versions and published in repositories
 // signed with throwaway keys (rtctl repo), installed into a manager's own package store by file
-// URL, over http and by bytes pushed through the call; its type is loadable at once, created and
-// run; two versions side by side, the newest used and version= picking the old; uninstall refused
-// while an instance runs; what is installed survives a restart. Refused, each with the package
+// URL, over http and https (a certificate authority the manager is configured to trust) and by
+// bytes pushed through the call; its type is loadable at once, created and run; two versions side
+// by side, the newest used and version= picking the old; uninstall refused while an instance runs;
+// what is installed survives a restart. Refused, each with the package
 // and the reason and the store unchanged: a flipped byte, an unsigned repository, a key not in the
 // keyring, another architecture, another SDK ABI, a missing Debian dependency, a full disk. A
 // manager killed in the middle of unpacking leaves a staging folder that its next start deletes.
@@ -86,6 +87,7 @@ private slots:
     void uninstallRefusedWhileRunning();
     void restartKeepsPackages();
     void installOverHttp();
+    void installOverHttps();
     void killedInstallLeavesNothing();
     void fullDiskWhileUnpacking();
     void systemdUnit();
@@ -501,6 +503,52 @@ void TestManagerInstall::installOverHttp()
     m_live->stop(server);
     const RtctlResult removed = node({"uninstall", manager(), package + "=1.0.0"});
     QVERIFY2(removed.code == 0, qPrintable(removed.err));
+}
+
+void TestManagerInstall::installOverHttps()
+{
+    // A repository behind https with a certificate of its own, which a manager trusts only when
+    // configured to.
+    const QString cert = m_work.filePath("cert.pem");
+    const QString key = m_work.filePath("key.pem");
+    int code = -1;
+    const QString made = tool("openssl", {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", key,
+                                          "-out", cert, "-days", "1", "-subj", "/CN=127.0.0.1",
+                                          "-addext", "subjectAltName=IP:127.0.0.1"},
+                              &code);
+    QVERIFY2(code == 0, qPrintable(made));
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    const QString server = QStringLiteral(
+        "import functools, http.server, ssl, sys\n"
+        "context = ssl.SSLContext(ssl.PROTOCOL_TLS_SERVER)\n"
+        "context.load_cert_chain(sys.argv[1], sys.argv[2])\n"
+        "handler = functools.partial(http.server.SimpleHTTPRequestHandler, directory=sys.argv[3])\n"
+        "httpd = http.server.HTTPServer(('127.0.0.1', int(sys.argv[4])), handler)\n"
+        "httpd.socket = context.wrap_socket(httpd.socket, server_side=True)\n"
+        "print('Serving HTTPS', flush=True)\n"
+        "httpd.serve_forever()\n");
+    QVERIFY2(m_live->startProcess("python3", {"-c", server, cert, key, m_repo, QString::number(port)},
+                                  "Serving HTTPS", &error),
+             qPrintable(error));
+    const QString url = QStringLiteral("https://127.0.0.1:%1%2")
+                            .arg(port)
+                            .arg(QUrl(poolUrl(m_repo, m_deb1)).toLocalFile().mid(m_repo.size()));
+    const RtctlResult untrusted = node({"install", manager(), url});
+    QCOMPARE(untrusted.code, 1);
+    QVERIFY2(untrusted.err.contains("cannot fetch https://127.0.0.1"), qPrintable(untrusted.err));
+    LiveTest::LiveSystem live;
+    const quint16 managerPort = LiveTest::freePort();
+    QVERIFY2(live.startManager(RTMANAGER_PATH, managerPort,
+                               {"naming.enable=NO", "manager.packages.store=" + m_work.filePath("httpsstore"),
+                                "manager.packages.keyring=" + m_repo + "/archive-key.gpg",
+                                "manager.packages.ca_certificates=" + cert},
+                               &error),
+             qPrintable(error));
+    const RtctlResult trusted
+        = node({"install", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(managerPort), url});
+    QVERIFY2(trusted.code == 0, qPrintable(trusted.err));
+    QVERIFY2(trusted.out.startsWith(package + " 1.0.0 "), qPrintable(trusted.out));
 }
 
 void TestManagerInstall::killedInstallLeavesNothing()

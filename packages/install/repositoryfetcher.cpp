@@ -7,6 +7,7 @@
 #include <QNetworkAccessManager>
 #include <QNetworkReply>
 #include <QNetworkRequest>
+#include <QSslConfiguration>
 
 namespace Packages {
 
@@ -41,9 +42,10 @@ bool writeFile(const QString &path, const QByteArray &data, QString *error)
 
 } // namespace
 
-RepositoryFetcher::RepositoryFetcher(QString nodeArchitecture, int timeoutMs)
+RepositoryFetcher::RepositoryFetcher(QString nodeArchitecture, int timeoutMs, QString caCertificates)
     : m_architecture(std::move(nodeArchitecture))
     , m_timeoutMs(timeoutMs)
+    , m_caCertificates(std::move(caCertificates))
 {
 }
 
@@ -62,6 +64,14 @@ std::optional<QByteArray> RepositoryFetcher::get(const QUrl &url, QString *error
     QNetworkAccessManager network;
     QNetworkRequest request(url);
     request.setTransferTimeout(m_timeoutMs);
+    if (!m_caCertificates.isEmpty() && url.scheme() == QLatin1String("https")) {
+        QSslConfiguration ssl = QSslConfiguration::defaultConfiguration();
+        if (!ssl.addCaCertificates(m_caCertificates)) {
+            *error = QStringLiteral("cannot read the certificate authorities %1").arg(m_caCertificates);
+            return std::nullopt;
+        }
+        request.setSslConfiguration(ssl);
+    }
     QNetworkReply *reply = network.get(request);
     QEventLoop loop;
     QObject::connect(reply, &QNetworkReply::finished, &loop, &QEventLoop::quit);

@@ -22,7 +22,9 @@ namespace Packages {
 class RepositoryFetcher
 {
 public:
-    RepositoryFetcher(QString nodeArchitecture, int timeoutMs);
+    /// @p caCertificates: a PEM file of certificate authorities https servers are trusted by,
+    /// besides the system's (a fleet's own); empty: the system's only.
+    RepositoryFetcher(QString nodeArchitecture, int timeoutMs, QString caCertificates = QString());
 
     /**
      * Downloads into @p folder; the PackageSource an installer takes. Nothing, with the file and
@@ -37,6 +39,7 @@ public:
 private:
     QString m_architecture;
     int m_timeoutMs;
+    QString m_caCertificates;
 };
 
 } // namespace Packages
