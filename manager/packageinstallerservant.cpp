@@ -72,8 +72,6 @@ PackageInstallerServant *PackageInstallerServant::create(Manager &manager, std::
     policy.keyring = qs(config.value("manager.packages.keyring"));
     policy.allowUnsigned = config.isYes("manager.packages.allow_unsigned");
     policy.sdkAbi = qs(config.value("manager.packages.sdk_abi", RTSTUDIO_SDK_ABI));
-    const Packages::ToolResult arch = Packages::runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")});
-    policy.architecture = QString::fromUtf8(arch.out).trimmed();
     const int timeout = std::max(1, std::atoi(config.value("manager.packages.fetch_timeout", "60000").c_str()));
     // The store is read on each lookup, so that what an install put there is loadable at once.
     manager.setPackageModuleDirs([store](const std::string &version) {
@@ -94,6 +92,17 @@ PackageInstallerServant::PackageInstallerServant(Manager &manager, Packages::Pac
 {
 }
 
+const Packages::InstallPolicy &PackageInstallerServant::policy()
+{
+    // Asked at the first install, not at every manager's (and slave's) start.
+    if (m_policy.architecture.isEmpty()) {
+        const Packages::ToolResult arch
+            = Packages::runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")});
+        m_policy.architecture = QString::fromUtf8(arch.out).trimmed();
+    }
+    return m_policy;
+}
+
 void PackageInstallerServant::refuse(const QString &package, const QString &reason) const
 {
     std::cerr << "rtmanager: install refused: "
@@ -104,7 +113,7 @@ void PackageInstallerServant::refuse(const QString &package, const QString &reas
 
 RTStudio::InstalledPackage *PackageInstallerServant::install(const Packages::PackageSource &source)
 {
-    const Packages::PackageInstaller installer(m_store, m_policy);
+    const Packages::PackageInstaller installer(m_store, policy());
     Packages::InstallError error;
     const std::optional<Packages::InstalledPackage> installed = installer.install(source, &error);
     if (!installed)
@@ -117,7 +126,7 @@ RTStudio::InstalledPackage *PackageInstallerServant::install_url(const char *url
     std::lock_guard lock(m_mutex);
     const QUrl location = QUrl::fromUserInput(QString::fromUtf8(url ? url : ""));
     QTemporaryDir downloads;
-    const Packages::RepositoryFetcher fetcher(m_policy.architecture, m_fetchTimeoutMs, m_caCertificates);
+    const Packages::RepositoryFetcher fetcher(policy().architecture, m_fetchTimeoutMs, m_caCertificates);
     QString reason;
     const std::optional<Packages::PackageSource> source
         = downloads.isValid() ? fetcher.fetch(location, downloads.path(), &reason) : std::nullopt;

@@ -54,6 +54,8 @@ private:
     PackageInstallerServant(Manager &manager, Packages::PackageStore store,
                             Packages::InstallPolicy policy, int fetchTimeoutMs,
                             QString caCertificates);
+    /// The policy, the node's architecture known (call with m_mutex held).
+    const Packages::InstallPolicy &policy();
     /// Installs @p source; the installed package, or InstallRefused.
     RTStudio::InstalledPackage *install(const Packages::PackageSource &source);
     [[noreturn]] void refuse(const QString &package, const QString &reason) const;
