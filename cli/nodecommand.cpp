@@ -88,7 +88,7 @@ QString NodeCommand::usage() const
     return QStringLiteral(
         "Usage:\n"
         "  rtctl node install MANAGER URL [--timeout MS]\n"
-        "  rtctl node install MANAGER FILE.deb --repo REPO\n"
+        "  rtctl node install MANAGER FILE.deb --repo REPO [--timeout MS]\n"
         "  rtctl node uninstall MANAGER PACKAGE[=VERSION]\n"
         "  rtctl node packages MANAGER [--json]\n"
         "  rtctl node enable [--user|--system] [--config FILE] [--unit-dir DIR] [--program FILE]\n"
@@ -107,6 +107,8 @@ QString NodeCommand::usage() const
         "Architecture, SDK ABI and Debian dependencies, and only then unpacks it. Its types are\n"
         "loadable at once; several versions stay side by side, the newest used unless a\n"
         "create request names one (\"Type?version=1.0\").\n"
+        "--timeout MS bounds each call; for an install it defaults to 120000 (fetch, gpgv,\n"
+        "unpack) instead of rtctl's default.\n"
         "uninstall refuses while components of the package run; without =VERSION it removes\n"
         "every version. packages prints NAME VERSION ARCH TYPES PATH per installed version.\n"
         "enable writes the systemd unit rtmanager.service starting rtmanager -f FILE at boot\n"
@@ -143,7 +145,10 @@ int NodeCommand::execute(const RtOptions &options, Streams streams)
                                                                                  : QStringLiteral("MANAGER and one argument")),
                           streams);
     const ManagerProxy manager = managerAt(options.positionals.at(1));
-    const PackageInstallerProxy installer(manager.ior(), manager.path());
+    PackageInstallerProxy installer(manager.ior(), manager.path());
+    // run() checked the number; an install fetches, verifies and unpacks: it waits that long.
+    if (options.values.contains(QStringLiteral("--timeout")))
+        installer.setInstallTimeout(options.value(QStringLiteral("--timeout")).toInt());
     if (action == QLatin1String("install"))
         return install(installer, options, streams);
     if (action == QLatin1String("uninstall"))
