@@ -159,11 +159,21 @@ RTStudio::InstalledPackage *PackageInstallerServant::install_package(
 
 void PackageInstallerServant::checkNotRunning(const Packages::InstalledPackage &package)
 {
+    const QString name = package.name + QLatin1Char(' ') + package.version;
     for (const std::string &module : m_manager.runningModulePaths()) {
         if (isBelow(module, package.path))
-            refuse(package.name + QLatin1Char(' ') + package.version,
-                   QStringLiteral("components made from %1 are running; delete them first")
-                       .arg(qs(module).section(QLatin1Char('/'), -1)));
+            refuse(name, QStringLiteral("components made from %1 are running; delete them first")
+                             .arg(qs(module).section(QLatin1Char('/'), -1)));
+    }
+    // Slaves share the store; what they run is known by type only, so any version counts.
+    if (!m_manager.isMaster())
+        return;
+    const RTC::ComponentProfileList profiles = m_manager.slaveComponentProfiles();
+    for (CORBA::ULong i = 0; i < profiles.length(); ++i) {
+        const QString type = QString::fromUtf8(profiles[i].type_name.in());
+        if (package.componentTypes.contains(type))
+            refuse(name, QStringLiteral("%1 components are running in a slave manager; delete them first")
+                             .arg(type));
     }
 }
 

@@ -467,10 +467,27 @@ void TestManagerInstall::uninstallRefusedWhileRunning()
              qPrintable(refused.err));
     QVERIFY(QFileInfo::exists(m_store + "/" + package + "/1.0.0"));
     deleteAll();
+    // Nor while one runs in a slave process, which uses the same store.
+    QString inSlave;
+    const QString slaveCreated = createdFrom("SdkGreeter?version=1.0.0&manager_name=packages_slave", &inSlave);
+    QVERIFY2(!slaveCreated.contains("could not create") && slaveCreated != "not active", qPrintable(slaveCreated));
+    const RtctlResult refusedForSlave = node({"uninstall", manager(), package + "=1.0.0"});
+    QCOMPARE(refusedForSlave.code, 1);
+    QVERIFY2(refusedForSlave.err.contains("SdkGreeter components are running in a slave manager"),
+             qPrintable(refusedForSlave.err));
+    try {
+        managerProxy().deleteComponent(inSlave);
+    } catch (const Corba::Error &e) {
+        QFAIL(qPrintable(e.message()));
+    }
     const RtctlResult removed = node({"uninstall", manager(), package + "=1.0.0"});
     QVERIFY2(removed.code == 0, qPrintable(removed.err));
     QVERIFY(!QFileInfo::exists(m_store + "/" + package + "/1.0.0"));
     QCOMPARE(loadable("SdkGreeter").size(), 1);
+    // Its module is no longer used, though still loaded.
+    QString none;
+    const QString refusal = createdFrom("SdkGreeter?version=1.0.0", &none);
+    QVERIFY2(refusal.contains("no installed package of version 1.0.0"), qPrintable(refusal));
 }
 
 void TestManagerInstall::restartKeepsPackages()
