@@ -77,6 +77,7 @@ private slots:
     void cleanupTestCase();
     void refused_data();
     void refused();
+    void pushedRefused();
     void noInstallService();
     void allowUnsigned();
     void installByFileUrl();
@@ -358,6 +359,23 @@ void TestManagerInstall::refused()
     }
     QCOMPARE(treeOf(m_store), before);
     QVERIFY(loadable("SdkGreeter").isEmpty());
+}
+
+void TestManagerInstall::pushedRefused()
+{
+    // Pushed through the call, the package meets the same checks: one byte changed, against the
+    // intact repository's index.
+    const QString flipped = QUrl(poolUrl(m_flippedRepo, m_deb1)).toLocalFile();
+    const QStringList before = treeOf(m_store);
+    const RtctlResult r = node({"install", manager(), flipped, "--repo", m_repo});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(package + " 1.0.0: ") && r.err.contains("does not match the index"),
+             qPrintable(r.err));
+    QCOMPARE(treeOf(m_store), before);
+    // A repository folder that is none is named.
+    const RtctlResult noRepo = node({"install", manager(), m_deb1, "--repo", m_work.filePath("none")});
+    QCOMPARE(noRepo.code, 1);
+    QVERIFY2(noRepo.err.contains(m_work.filePath("none")), qPrintable(noRepo.err));
 }
 
 void TestManagerInstall::noInstallService()

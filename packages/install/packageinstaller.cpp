@@ -167,10 +167,11 @@ std::optional<InstalledPackage> PackageInstaller::install(const PackageSource &s
     if (!entry)
         return std::nullopt;
     if (!checkPackageFile(*entry, source.debFile, &error->reason)) {
-        // Its message names the package already.
+        // Its message names the package already, and the file is the manager's download.
         const QString named = error->package + QStringLiteral(": ");
         if (error->reason.startsWith(named))
             error->reason.remove(0, named.size());
+        error->reason.replace(source.debFile, QStringLiteral("the package"));
         return std::nullopt;
     }
     if (!checkNode(*entry, &error->reason))
