@@ -7,7 +7,6 @@
 #include <repositoryfetcher.h>
 
 #include <QFile>
-#include <QTemporaryDir>
 
 #include <iostream>
 
@@ -121,17 +120,33 @@ RTStudio::InstalledPackage *PackageInstallerServant::install(const Packages::Pac
     return new RTStudio::InstalledPackage(toWire(*installed));
 }
 
+PackageInstallerServant::Download::Download(const Packages::PackageStore &store, const QString &package,
+                                            const PackageInstallerServant *servant)
+    : m_store(store)
+{
+    // A staging folder of the store: what a killed manager leaves there goes at its next start.
+    QString reason;
+    const std::optional<QString> folder = store.createStaging(&reason);
+    if (!folder)
+        servant->refuse(package, reason);
+    m_path = *folder;
+}
+
+PackageInstallerServant::Download::~Download()
+{
+    m_store.discard(m_path);
+}
+
 RTStudio::InstalledPackage *PackageInstallerServant::install_url(const char *url)
 {
     std::lock_guard lock(m_mutex);
     const QUrl location = QUrl::fromUserInput(QString::fromUtf8(url ? url : ""));
-    QTemporaryDir downloads;
+    const Download download(m_store, location.fileName(), this);
     const Packages::RepositoryFetcher fetcher(policy().architecture, m_fetchTimeoutMs, m_caCertificates);
     QString reason;
-    const std::optional<Packages::PackageSource> source
-        = downloads.isValid() ? fetcher.fetch(location, downloads.path(), &reason) : std::nullopt;
+    const std::optional<Packages::PackageSource> source = fetcher.fetch(location, download.path(), &reason);
     if (!source)
-        refuse(location.fileName(), reason.isEmpty() ? QStringLiteral("no temporary folder") : reason);
+        refuse(location.fileName(), reason);
     return install(*source);
 }
 
@@ -146,12 +161,11 @@ RTStudio::InstalledPackage *PackageInstallerServant::install_package(
     source.index = bytes(index);
     source.package = QString::fromUtf8(package ? package : "");
     source.version = QString::fromUtf8(version ? version : "");
-    QTemporaryDir downloads;
-    source.debFile = downloads.filePath(QStringLiteral("package.deb"));
+    const Download download(m_store, source.package, this);
+    source.debFile = download.path() + QStringLiteral("/package.deb");
     QFile file(source.debFile);
     const QByteArray data = bytes(deb);
-    if (!downloads.isValid() || !file.open(QIODevice::WriteOnly) || file.write(data) != data.size()
-        || !file.flush())
+    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.flush())
         refuse(source.package, QStringLiteral("cannot keep the package pushed: ") + file.errorString());
     file.close();
     return install(source);

@@ -51,6 +51,23 @@ public:
     RTStudio::InstalledPackageList *list_installed() override;
 
 private:
+    /// A folder for the files of one install, deleted with it.
+    class Download
+    {
+    public:
+        /// Refuses the install of @p package when the folder cannot be made.
+        Download(const Packages::PackageStore &store, const QString &package,
+                 const PackageInstallerServant *servant);
+        ~Download();
+        Download(const Download &) = delete;
+        Download &operator=(const Download &) = delete;
+        QString path() const { return m_path; }
+
+    private:
+        const Packages::PackageStore &m_store;
+        QString m_path;
+    };
+
     PackageInstallerServant(Manager &manager, Packages::PackageStore store,
                             Packages::InstallPolicy policy, int fetchTimeoutMs,
                             QString caCertificates);
