@@ -17,8 +17,7 @@ ManagerUnit::ManagerUnit(bool system, QString configFile, QString unitDir, QStri
     , m_configFile(std::move(configFile))
     , m_unitDir(std::move(unitDir))
     , m_program(std::move(program))
-{
-}
+{ }
 
 QString ManagerUnit::managerProgram()
 {
@@ -46,7 +45,8 @@ QString ManagerUnit::text() const
                           "RestartSec=2\n\n"
                           "[Install]\n"
                           "WantedBy=%2\n")
-        .arg(exec, m_system ? QStringLiteral("multi-user.target") : QStringLiteral("default.target"));
+        .arg(exec,
+             m_system ? QStringLiteral("multi-user.target") : QStringLiteral("default.target"));
 }
 
 QString ManagerUnit::path() const
@@ -68,7 +68,8 @@ bool ManagerUnit::systemctl(const QString &action, QString *error) const
     if (!m_system)
         arguments << QStringLiteral("--user");
     // The manager of units reads the new or removed file first.
-    Packages::runTool(QStringLiteral("systemctl"), arguments + QStringList {QStringLiteral("daemon-reload")});
+    Packages::runTool(QStringLiteral("systemctl"),
+                      arguments + QStringList {QStringLiteral("daemon-reload")});
     const Packages::ToolResult result = Packages::runTool(
         QStringLiteral("systemctl"), arguments + QStringList {action, QLatin1String(fileName)});
     if (result.ok())

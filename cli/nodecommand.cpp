@@ -141,8 +141,10 @@ int NodeCommand::execute(const RtOptions &options, Streams streams)
                           streams);
     const int wanted = action == QLatin1String("packages") ? 2 : 3;
     if (options.positionals.size() != wanted)
-        return usageError(QStringLiteral("'%1' needs %2").arg(action, wanted == 2 ? QStringLiteral("MANAGER")
-                                                                                 : QStringLiteral("MANAGER and one argument")),
+        return usageError(QStringLiteral("'%1' needs %2")
+                              .arg(action,
+                                   wanted == 2 ? QStringLiteral("MANAGER")
+                                               : QStringLiteral("MANAGER and one argument")),
                           streams);
     const ManagerProxy manager = managerAt(options.positionals.at(1));
     PackageInstallerProxy installer(manager.ior(), manager.path());
@@ -161,12 +163,13 @@ int NodeCommand::install(const PackageInstallerProxy &installer, const RtOptions
 {
     const QString what = options.positionals.at(2);
     const QString repo = options.value(QStringLiteral("--repo"));
-    const bool isFile = what.endsWith(QLatin1String(".deb")) && !what.contains(QLatin1String("://"));
+    const bool isFile
+        = what.endsWith(QLatin1String(".deb")) && !what.contains(QLatin1String("://"));
     if (isFile && repo.isEmpty())
-        return usageError(QStringLiteral("%1: a pushed package needs --repo REPO").arg(what), streams);
-    const InstalledPackageInfo installed = isFile
-        ? installer.installPackage(pushedPackage(what, repo))
-        : installer.installUrl(what);
+        return usageError(QStringLiteral("%1: a pushed package needs --repo REPO").arg(what),
+                          streams);
+    const InstalledPackageInfo installed
+        = isFile ? installer.installPackage(pushedPackage(what, repo)) : installer.installUrl(what);
     streams.out << describe(installed) << '\n';
     return ExitOk;
 }
@@ -174,7 +177,8 @@ int NodeCommand::install(const PackageInstallerProxy &installer, const RtOptions
 int NodeCommand::uninstall(const PackageInstallerProxy &installer, const QString &argument,
                            Streams streams) const
 {
-    installer.uninstall(argument.section(QLatin1Char('='), 0, 0), argument.section(QLatin1Char('='), 1));
+    installer.uninstall(argument.section(QLatin1Char('='), 0, 0),
+                        argument.section(QLatin1Char('='), 1));
     Q_UNUSED(streams)
     return ExitOk;
 }
@@ -198,9 +202,9 @@ int NodeCommand::unit(bool enable, const RtOptions &options, Streams streams) co
 {
     if (options.has(QStringLiteral("--user")) && options.has(QStringLiteral("--system")))
         return usageError(QStringLiteral("--user and --system exclude each other"), streams);
-    const ManagerUnit unit(options.has(QStringLiteral("--system")), options.value(QStringLiteral("--config")),
-                           options.value(QStringLiteral("--unit-dir")),
-                           options.value(QStringLiteral("--program")));
+    const ManagerUnit unit(
+        options.has(QStringLiteral("--system")), options.value(QStringLiteral("--config")),
+        options.value(QStringLiteral("--unit-dir")), options.value(QStringLiteral("--program")));
     QString error;
     if (!(enable ? unit.enable(&error) : unit.disable(&error))) {
         report(error, streams);

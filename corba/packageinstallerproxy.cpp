@@ -22,8 +22,11 @@ RTStudio::OctetSeq octets(const QByteArray &data)
 
 InstalledPackageInfo fromWire(const RTStudio::InstalledPackage &wire)
 {
-    InstalledPackageInfo info {toQString(wire.name), toQString(wire.version),
-                               toQString(wire.architecture), {}, toQString(wire.path)};
+    InstalledPackageInfo info {toQString(wire.name),
+                               toQString(wire.version),
+                               toQString(wire.architecture),
+                               {},
+                               toQString(wire.path)};
     for (CORBA::ULong i = 0; i < wire.component_types.length(); ++i)
         info.componentTypes << toQString(wire.component_types[i]);
     return info;
@@ -40,29 +43,29 @@ RTStudio::PackageInstaller_ptr narrow(const QString &ior, const QString &path)
 PackageInstallerProxy::PackageInstallerProxy(QString managerIor, QString path)
     : m_ior(std::move(managerIor))
     , m_path(std::move(path))
-{
-}
+{ }
 
 QString PackageInstallerProxy::installer() const
 {
     CORBA::Object_var object = toObject(m_ior, m_path);
     RTStudio::Manager_var manager = RTStudio::Manager::_unchecked_narrow(object.in());
-    const Error none(Error::Kind::WrongType,
-                     QStringLiteral("%1 has no install service (not an RT Studio manager)").arg(m_path));
+    const Error none(
+        Error::Kind::WrongType,
+        QStringLiteral("%1 has no install service (not an RT Studio manager)").arg(m_path));
     const QString ior = callServed(m_path, m_ior, [&] {
         try {
             RTStudio::PackageInstaller_var installer = manager->get_package_installer();
             return toIor(installer.in());
         } catch (const CORBA::BAD_OPERATION &) {
         } catch (const CORBA::NO_IMPLEMENT &) {
-        } catch (const CORBA::OBJECT_NOT_EXIST &) {
-        }
+        } catch (const CORBA::OBJECT_NOT_EXIST &) { }
         // OpenRTM-aist's managers do not know the operation.
         throw none;
     });
     if (ior.isEmpty())
         throw Error(Error::Kind::WrongType,
-                    QStringLiteral("%1 has no install service (manager.packages.enable is NO)").arg(m_path));
+                    QStringLiteral("%1 has no install service (manager.packages.enable is NO)")
+                        .arg(m_path));
     return ior;
 }
 
@@ -76,8 +79,10 @@ template<typename F> static auto onInstaller(const QString &path, const QString 
         } catch (const RTStudio::InstallRefused &refused) {
             const QString package = toQString(refused.package);
             throw Error(Error::Kind::Refused,
-                        QStringLiteral("%1: %2%3").arg(path, package.isEmpty() ? QString() : package + QStringLiteral(": "),
-                                                       toQString(refused.reason)));
+                        QStringLiteral("%1: %2%3")
+                            .arg(path,
+                                 package.isEmpty() ? QString() : package + QStringLiteral(": "),
+                                 toQString(refused.reason)));
         }
     });
 }

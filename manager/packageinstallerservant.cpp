@@ -71,11 +71,11 @@ PackageInstallerServant *PackageInstallerServant::create(Manager &manager, std::
     policy.keyring = qs(config.value("manager.packages.keyring"));
     policy.allowUnsigned = config.isYes("manager.packages.allow_unsigned");
     policy.sdkAbi = qs(config.value("manager.packages.sdk_abi", RTSTUDIO_SDK_ABI));
-    const int timeout = std::max(1, std::atoi(config.value("manager.packages.fetch_timeout", "60000").c_str()));
+    const int timeout
+        = std::max(1, std::atoi(config.value("manager.packages.fetch_timeout", "60000").c_str()));
     // The store is read on each lookup, so that what an install put there is loadable at once.
-    manager.setPackageModuleDirs([store](const std::string &version) {
-        return toStd(store.moduleDirs(qs(version)));
-    });
+    manager.setPackageModuleDirs(
+        [store](const std::string &version) { return toStd(store.moduleDirs(qs(version))); });
     return new PackageInstallerServant(manager, std::move(store), std::move(policy), timeout,
                                        qs(config.value("manager.packages.ca_certificates")));
 }
@@ -88,8 +88,7 @@ PackageInstallerServant::PackageInstallerServant(Manager &manager, Packages::Pac
     , m_policy(std::move(policy))
     , m_fetchTimeoutMs(fetchTimeoutMs)
     , m_caCertificates(std::move(caCertificates))
-{
-}
+{ }
 
 const Packages::InstallPolicy &PackageInstallerServant::policy()
 {
@@ -104,9 +103,10 @@ const Packages::InstallPolicy &PackageInstallerServant::policy()
 
 void PackageInstallerServant::refuse(const QString &package, const QString &reason) const
 {
-    std::cerr << "rtmanager: install refused: "
-              << (package.isEmpty() ? reason : package + QStringLiteral(": ") + reason).toStdString()
-              << std::endl;
+    std::cerr
+        << "rtmanager: install refused: "
+        << (package.isEmpty() ? reason : package + QStringLiteral(": ") + reason).toStdString()
+        << std::endl;
     throw RTStudio::InstallRefused(package.toStdString().c_str(), reason.toStdString().c_str());
 }
 
@@ -120,7 +120,8 @@ RTStudio::InstalledPackage *PackageInstallerServant::install(const Packages::Pac
     return new RTStudio::InstalledPackage(toWire(*installed));
 }
 
-PackageInstallerServant::Download::Download(const Packages::PackageStore &store, const QString &package,
+PackageInstallerServant::Download::Download(const Packages::PackageStore &store,
+                                            const QString &package,
                                             const PackageInstallerServant *servant)
     : m_store(store)
 {
@@ -142,9 +143,11 @@ RTStudio::InstalledPackage *PackageInstallerServant::install_url(const char *url
     std::lock_guard lock(m_mutex);
     const QUrl location = QUrl::fromUserInput(QString::fromUtf8(url ? url : ""));
     const Download download(m_store, location.fileName(), this);
-    const Packages::RepositoryFetcher fetcher(policy().architecture, m_fetchTimeoutMs, m_caCertificates);
+    const Packages::RepositoryFetcher fetcher(policy().architecture, m_fetchTimeoutMs,
+                                              m_caCertificates);
     QString reason;
-    const std::optional<Packages::PackageSource> source = fetcher.fetch(location, download.path(), &reason);
+    const std::optional<Packages::PackageSource> source
+        = fetcher.fetch(location, download.path(), &reason);
     if (!source)
         refuse(location.fileName(), reason);
     return install(*source);
@@ -166,7 +169,8 @@ RTStudio::InstalledPackage *PackageInstallerServant::install_package(
     QFile file(source.debFile);
     const QByteArray data = bytes(deb);
     if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.flush())
-        refuse(source.package, QStringLiteral("cannot keep the package pushed: ") + file.errorString());
+        refuse(source.package,
+               QStringLiteral("cannot keep the package pushed: ") + file.errorString());
     file.close();
     return install(source);
 }
@@ -176,8 +180,9 @@ void PackageInstallerServant::checkNotRunning(const Packages::InstalledPackage &
     const QString name = package.name + QLatin1Char(' ') + package.version;
     for (const std::string &module : m_manager.runningModulePaths()) {
         if (isBelow(module, package.path))
-            refuse(name, QStringLiteral("components made from %1 are running; delete them first")
-                             .arg(qs(module).section(QLatin1Char('/'), -1)));
+            refuse(name,
+                   QStringLiteral("components made from %1 are running; delete them first")
+                       .arg(qs(module).section(QLatin1Char('/'), -1)));
     }
     // Slaves share the store; what they run is known by type only, so any version counts.
     if (!m_manager.isMaster())
@@ -186,8 +191,9 @@ void PackageInstallerServant::checkNotRunning(const Packages::InstalledPackage &
     for (CORBA::ULong i = 0; i < profiles.length(); ++i) {
         const QString type = QString::fromUtf8(profiles[i].type_name.in());
         if (package.componentTypes.contains(type))
-            refuse(name, QStringLiteral("%1 components are running in a slave manager; delete them first")
-                             .arg(type));
+            refuse(name,
+                   QStringLiteral("%1 components are running in a slave manager; delete them first")
+                       .arg(type));
     }
 }
 
@@ -211,8 +217,9 @@ void PackageInstallerServant::uninstall(const char *package, const char *version
             removed << installed;
     }
     if (removed.isEmpty())
-        refuse(name, wanted.isEmpty() ? QStringLiteral("not installed")
-                                      : QStringLiteral("version %1 is not installed").arg(wanted));
+        refuse(name,
+               wanted.isEmpty() ? QStringLiteral("not installed")
+                                : QStringLiteral("version %1 is not installed").arg(wanted));
     for (const Packages::InstalledPackage &installed : removed)
         checkNotRunning(installed);
     for (const Packages::InstalledPackage &installed : removed) {

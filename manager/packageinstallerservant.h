@@ -23,8 +23,8 @@ class Manager;
  *   manager.packages.store           the store folder; default $XDG_DATA_HOME/rtstudio/packages
  *   manager.packages.keyring         the keyring file repositories are verified with (gpgv)
  *   manager.packages.allow_unsigned  YES takes unsigned and unverifiable repositories
- *   manager.packages.sdk_abi         the SDK's SONAME packages must be built for (default: this SDK)
- *   manager.packages.fetch_timeout   ms for each file fetched (default 60000)
+ *   manager.packages.sdk_abi         the SDK's SONAME packages must be built for (default: this
+ * SDK) manager.packages.fetch_timeout   ms for each file fetched (default 60000)
  *   manager.packages.ca_certificates a PEM file of certificate authorities trusted for https
  *
  * Installs run one at a time. A store belongs to one manager (and its slaves): the manager's start

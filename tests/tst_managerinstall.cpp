@@ -23,7 +23,6 @@
 #include <QProcess>
 #include <QtTest>
 
-
 namespace {
 
 const QString greeterFixture = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
@@ -106,7 +105,10 @@ private:
         return Corba::ManagerProxy(QString::fromLatin1(LiveTest::managerLocation(m_port)),
                                    QStringLiteral("manager"));
     }
-    RtctlResult node(const QStringList &arguments) { return runRtctl(QStringList {"node"} + arguments); }
+    RtctlResult node(const QStringList &arguments)
+    {
+        return runRtctl(QStringList {"node"} + arguments);
+    }
     /// get_loadable_modules' module_file_path of @p type.
     QStringList loadable(const QString &type) const;
     /// The module a new instance of @p request was made from (the manager's loaded modules).
@@ -143,7 +145,8 @@ QString TestManagerInstall::variant(const QString &name, const QHash<QString, QS
         return raw;
     QByteArray control = readFile(tree + "/DEBIAN/control");
     for (auto it = fields.cbegin(); it != fields.cend(); ++it) {
-        const QRegularExpression line("^" + it.key() + ": .*$", QRegularExpression::MultilineOption);
+        const QRegularExpression line("^" + it.key() + ": .*$",
+                                      QRegularExpression::MultilineOption);
         const QString value = it.key() + ": " + it.value();
         control = QString::fromUtf8(control).contains(line)
             ? QString::fromUtf8(control).replace(line, value).toUtf8()
@@ -158,9 +161,11 @@ QString TestManagerInstall::variant(const QString &name, const QHash<QString, QS
 void TestManagerInstall::makeRepository(const QString &dir, const QString &gnupg,
                                         const QStringList &debs)
 {
-    QStringList init {"repo", "init", dir, "--arch", m_arch, "--arch", m_arch == "arm64" ? "amd64" : "arm64"};
+    QStringList init {
+        "repo", "init", dir, "--arch", m_arch, "--arch", m_arch == "arm64" ? "amd64" : "arm64"};
     if (!gnupg.isEmpty()) {
-        init << "--new-key" << "--gnupg-home" << gnupg;
+        init << "--new-key"
+             << "--gnupg-home" << gnupg;
         m_gnupgHomes << gnupg;
     }
     const RtctlResult made = runRtctl(init);
@@ -171,7 +176,8 @@ void TestManagerInstall::makeRepository(const QString &dir, const QString &gnupg
 
 QString TestManagerInstall::poolUrl(const QString &repo, const QString &deb) const
 {
-    QDirIterator it(repo + "/pool", {QFileInfo(deb).fileName()}, QDir::Files, QDirIterator::Subdirectories);
+    QDirIterator it(repo + "/pool", {QFileInfo(deb).fileName()}, QDir::Files,
+                    QDirIterator::Subdirectories);
     return it.hasNext() ? QUrl::fromLocalFile(it.next()).toString() : QString();
 }
 
@@ -194,15 +200,17 @@ void TestManagerInstall::initTestCase()
     m_deb2 = variant(package + "_2.0.0_" + m_arch, {{"Version", "2.0.0"}});
     const QString otherArch = m_arch == "arm64" ? "amd64" : "arm64";
     m_wrongArch = variant(package + "_1.0.0_" + otherArch, {{"Architecture", otherArch}});
-    m_missingDep = variant(package + "_3.0.0_" + m_arch,
-                           {{"Version", "3.0.0"}, {"Depends", "libc6, librtstudio-nowhere0 (>= 1.0)"}});
+    m_missingDep
+        = variant(package + "_3.0.0_" + m_arch,
+                  {{"Version", "3.0.0"}, {"Depends", "libc6, librtstudio-nowhere0 (>= 1.0)"}});
     m_otherSdk = variant(package + "_4.0.0_" + m_arch,
                          {{"Version", "4.0.0"}, {"X-RTStudio-SDK-ABI", "librtstudio_rtm.so.99"}});
     for (const QString &deb : {m_deb2, m_wrongArch, m_missingDep, m_otherSdk})
         QVERIFY2(QFile::exists(deb), qPrintable(deb));
 
     m_repo = m_work.filePath("repo");
-    makeRepository(m_repo, m_work.filePath("gnupg"), {m_deb1, m_deb2, m_wrongArch, m_missingDep, m_otherSdk});
+    makeRepository(m_repo, m_work.filePath("gnupg"),
+                   {m_deb1, m_deb2, m_wrongArch, m_missingDep, m_otherSdk});
     m_unsignedRepo = m_work.filePath("unsigned");
     makeRepository(m_unsignedRepo, QString(), {m_deb1});
     m_otherKeyRepo = m_work.filePath("otherkey");
@@ -253,8 +261,7 @@ bool TestManagerInstall::startManager(const QStringList &extra)
         try {
             proxy.isMaster();
             return true;
-        } catch (const Corba::Error &) {
-        }
+        } catch (const Corba::Error &) { }
     }
     return false;
 }
@@ -337,11 +344,13 @@ void TestManagerInstall::refused_data()
         << QStringList {package + " 1.0.0", "built for architecture", "this node is " + m_arch};
     QTest::newRow("missing Debian library")
         << poolUrl(m_repo, m_missingDep)
-        << QStringList {package + " 3.0.0", "missing dependencies", "librtstudio-nowhere0 (>= 1.0)"};
-    QTest::newRow("another SDK")
-        << poolUrl(m_repo, m_otherSdk)
-        << QStringList {package + " 4.0.0", "built for the component SDK librtstudio_rtm.so.99",
-                        "this manager's SDK is librtstudio_rtm.so."};
+        << QStringList {package + " 3.0.0", "missing dependencies",
+                        "librtstudio-nowhere0 (>= 1.0)"};
+    QTest::newRow("another SDK") << poolUrl(m_repo, m_otherSdk)
+                                 << QStringList {
+                                        package + " 4.0.0",
+                                        "built for the component SDK librtstudio_rtm.so.99",
+                                        "this manager's SDK is librtstudio_rtm.so."};
 }
 
 void TestManagerInstall::refused()
@@ -373,7 +382,8 @@ void TestManagerInstall::pushedRefused()
              qPrintable(r.err));
     QCOMPARE(treeOf(m_store), before);
     // A repository folder that is none is named.
-    const RtctlResult noRepo = node({"install", manager(), m_deb1, "--repo", m_work.filePath("none")});
+    const RtctlResult noRepo
+        = node({"install", manager(), m_deb1, "--repo", m_work.filePath("none")});
     QCOMPARE(noRepo.code, 1);
     QVERIFY2(noRepo.err.contains(m_work.filePath("none")), qPrintable(noRepo.err));
 }
@@ -383,20 +393,24 @@ void TestManagerInstall::noInstallService()
     LiveTest::LiveSystem live;
     const quint16 port = LiveTest::freePort();
     QString error;
-    QVERIFY2(live.startManager(RTMANAGER_PATH, port, {"naming.enable=NO", "manager.packages.enable=NO"},
-                               &error),
+    QVERIFY2(live.startManager(RTMANAGER_PATH, port,
+                               {"naming.enable=NO", "manager.packages.enable=NO"}, &error),
              qPrintable(error));
-    const RtctlResult r = node({"packages", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port)});
+    const RtctlResult r
+        = node({"packages", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port)});
     QCOMPARE(r.code, 1);
-    QVERIFY2(r.err.contains("has no install service (manager.packages.enable is NO)"), qPrintable(r.err));
+    QVERIFY2(r.err.contains("has no install service (manager.packages.enable is NO)"),
+             qPrintable(r.err));
     // A manager of RTM::Manager alone, as OpenRTM-aist's, does not know the operation.
     quint16 peerPort = 0;
     QVERIFY2(live.startNameServer(&error), qPrintable(error));
     QVERIFY2(live.startPeer({}, &error, &peerPort), qPrintable(error));
-    const RtctlResult openRtm = node({"install", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(peerPort),
-                                      poolUrl(m_repo, m_deb1)});
+    const RtctlResult openRtm
+        = node({"install", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(peerPort),
+                poolUrl(m_repo, m_deb1)});
     QCOMPARE(openRtm.code, 1);
-    QVERIFY2(openRtm.err.contains("has no install service (not an RT Studio manager)"), qPrintable(openRtm.err));
+    QVERIFY2(openRtm.err.contains("has no install service (not an RT Studio manager)"),
+             qPrintable(openRtm.err));
 }
 
 void TestManagerInstall::allowUnsigned()
@@ -417,7 +431,8 @@ void TestManagerInstall::allowUnsigned()
     QVERIFY(unsignedRepo.out.startsWith(package + " 1.0.0 "));
     const RtctlResult unknownKey = node({"install", other, m_deb2, "--repo", m_otherKeyRepo});
     QCOMPARE(unknownKey.code, 1); // 2.0.0 is not in that repository: the index still counts
-    QVERIFY2(unknownKey.err.contains("not listed in the repository's index"), qPrintable(unknownKey.err));
+    QVERIFY2(unknownKey.err.contains("not listed in the repository's index"),
+             qPrintable(unknownKey.err));
     const RtctlResult removed = node({"uninstall", other, package});
     QVERIFY2(removed.code == 0, qPrintable(removed.err));
     const RtctlResult pushed = node({"install", other, m_deb1, "--repo", m_otherKeyRepo});
@@ -428,11 +443,13 @@ void TestManagerInstall::installByFileUrl()
 {
     const RtctlResult r = node({"install", manager(), poolUrl(m_repo, m_deb1)});
     QVERIFY2(r.code == 0, qPrintable(r.err));
-    QVERIFY2(r.out.startsWith(package + " 1.0.0 " + m_arch + " SdkGreeter " + m_store), qPrintable(r.out));
+    QVERIFY2(r.out.startsWith(package + " 1.0.0 " + m_arch + " SdkGreeter " + m_store),
+             qPrintable(r.out));
     // Loadable at once, from the store.
     const QStringList files = loadable("SdkGreeter");
     QCOMPARE(files.size(), 1);
-    QVERIFY2(files.first().startsWith(m_store + "/" + package + "/1.0.0/"), qPrintable(files.first()));
+    QVERIFY2(files.first().startsWith(m_store + "/" + package + "/1.0.0/"),
+             qPrintable(files.first()));
     QString instance;
     const QString from = createdFrom("SdkGreeter", &instance);
     QVERIFY2(from.contains(m_store + "/" + package + "/1.0.0/"), qPrintable(from));
@@ -487,8 +504,10 @@ void TestManagerInstall::uninstallRefusedWhileRunning()
     deleteAll();
     // Nor while one runs in a slave process, which uses the same store.
     QString inSlave;
-    const QString slaveCreated = createdFrom("SdkGreeter?version=1.0.0&manager_name=packages_slave", &inSlave);
-    QVERIFY2(!slaveCreated.contains("could not create") && slaveCreated != "not active", qPrintable(slaveCreated));
+    const QString slaveCreated
+        = createdFrom("SdkGreeter?version=1.0.0&manager_name=packages_slave", &inSlave);
+    QVERIFY2(!slaveCreated.contains("could not create") && slaveCreated != "not active",
+             qPrintable(slaveCreated));
     const RtctlResult refusedForSlave = node({"uninstall", manager(), package + "=1.0.0"});
     QCOMPARE(refusedForSlave.code, 1);
     QVERIFY2(refusedForSlave.err.contains("SdkGreeter components are running in a slave manager"),
@@ -525,12 +544,14 @@ void TestManagerInstall::installOverHttp()
 {
     const quint16 port = LiveTest::freePort();
     QString error;
-    QProcess *server = m_live->startProcess("python3", {"-u", "-m", "http.server", "--bind", "127.0.0.1",
-                                                        QString::number(port), "--directory", m_repo},
-                                           "Serving HTTP", &error);
+    QProcess *server = m_live->startProcess("python3",
+                                            {"-u", "-m", "http.server", "--bind", "127.0.0.1",
+                                             QString::number(port), "--directory", m_repo},
+                                            "Serving HTTP", &error);
     QVERIFY2(server, qPrintable(error));
     const QString path = QUrl(poolUrl(m_repo, m_deb1)).toLocalFile().mid(m_repo.size());
-    const RtctlResult r = node({"install", manager(), QStringLiteral("http://127.0.0.1:%1%2").arg(port).arg(path)});
+    const RtctlResult r
+        = node({"install", manager(), QStringLiteral("http://127.0.0.1:%1%2").arg(port).arg(path)});
     QVERIFY2(r.code == 0, qPrintable(r.err));
     QVERIFY2(r.out.startsWith(package + " 1.0.0 "), qPrintable(r.out));
     m_live->stop(server);
@@ -545,10 +566,11 @@ void TestManagerInstall::installOverHttps()
     const QString cert = m_work.filePath("cert.pem");
     const QString key = m_work.filePath("key.pem");
     int code = -1;
-    const QString made = tool("openssl", {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", key,
-                                          "-out", cert, "-days", "1", "-subj", "/CN=127.0.0.1",
-                                          "-addext", "subjectAltName=IP:127.0.0.1"},
-                              &code);
+    const QString made
+        = tool("openssl",
+               {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", key, "-out", cert,
+                "-days", "1", "-subj", "/CN=127.0.0.1", "-addext", "subjectAltName=IP:127.0.0.1"},
+               &code);
     QVERIFY2(code == 0, qPrintable(made));
     const quint16 port = LiveTest::freePort();
     QString error;
@@ -561,7 +583,8 @@ void TestManagerInstall::installOverHttps()
         "httpd.socket = context.wrap_socket(httpd.socket, server_side=True)\n"
         "print('Serving HTTPS', flush=True)\n"
         "httpd.serve_forever()\n");
-    QVERIFY2(m_live->startProcess("python3", {"-c", server, cert, key, m_repo, QString::number(port)},
+    QVERIFY2(m_live->startProcess("python3",
+                                  {"-c", server, cert, key, m_repo, QString::number(port)},
                                   "Serving HTTPS", &error),
              qPrintable(error));
     const QString url = QStringLiteral("https://127.0.0.1:%1%2")
@@ -573,7 +596,8 @@ void TestManagerInstall::installOverHttps()
     LiveTest::LiveSystem live;
     const quint16 managerPort = LiveTest::freePort();
     QVERIFY2(live.startManager(RTMANAGER_PATH, managerPort,
-                               {"naming.enable=NO", "manager.packages.store=" + m_work.filePath("httpsstore"),
+                               {"naming.enable=NO",
+                                "manager.packages.store=" + m_work.filePath("httpsstore"),
                                 "manager.packages.keyring=" + m_repo + "/archive-key.gpg",
                                 "manager.packages.ca_certificates=" + cert},
                                &error),
@@ -594,18 +618,21 @@ void TestManagerInstall::killedInstallLeavesNothing()
                       "#!/bin/sh\n"
                       "if [ \"$1\" = -x ]; then\n"
                       "  mkdir -p \"$3\" && echo partial > \"$3/partial\" && touch '"
-                          + marker.toUtf8() + "'\n"
-                      "  exec tail -f /dev/null --pid=$PPID\n"
-                      "fi\n"
-                      "exec /usr/bin/dpkg-deb \"$@\"\n"));
-    QVERIFY(QFile::setPermissions(bin + "/dpkg-deb", QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner));
+                          + marker.toUtf8()
+                          + "'\n"
+                            "  exec tail -f /dev/null --pid=$PPID\n"
+                            "fi\n"
+                            "exec /usr/bin/dpkg-deb \"$@\"\n"));
+    QVERIFY(QFile::setPermissions(bin + "/dpkg-deb",
+                                  QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner));
     const QByteArray path = qgetenv("PATH");
     qputenv("PATH", QFile::encodeName(bin) + ':' + path);
     const bool started = startManager();
     qputenv("PATH", path);
     QVERIFY(started);
     // rtctl gives up after its timeout; the manager goes on into unpacking, where it is killed.
-    const RtctlResult timedOut = node({"install", manager(), poolUrl(m_repo, m_deb1), "--timeout", "1000"});
+    const RtctlResult timedOut
+        = node({"install", manager(), poolUrl(m_repo, m_deb1), "--timeout", "1000"});
     QCOMPARE(timedOut.code, 1);
     QVERIFY2(timedOut.err.contains("no reply within 1000 ms"), qPrintable(timedOut.err));
     QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(marker), 30000);
@@ -635,8 +662,9 @@ void TestManagerInstall::fullDiskWhileUnpacking()
                                &error),
              qPrintable(error));
     const QStringList before = treeOf(store);
-    const RtctlResult r = node({"install", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port),
-                                poolUrl(m_repo, m_deb1)});
+    const RtctlResult r
+        = node({"install", QStringLiteral("corbaloc::127.0.0.1:%1/manager").arg(port),
+                poolUrl(m_repo, m_deb1)});
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains(package + " 1.0.0: unpacking") && r.err.contains("No space left"),
              qPrintable(r.err));
@@ -654,7 +682,8 @@ void TestManagerInstall::systemdUnit()
     const QString unit = units + "/rtmanager.service";
     QCOMPARE(enabled.out.trimmed(), unit);
     const QString text = QString::fromUtf8(readFile(unit));
-    QVERIFY2(text.contains(QStringLiteral("ExecStart=" RTMANAGER_PATH " -f ") + config), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("ExecStart=" RTMANAGER_PATH " -f ") + config),
+             qPrintable(text));
     if (QStandardPaths::findExecutable("systemd-analyze").isEmpty())
         QSKIP("systemd-analyze is not installed");
     int code = -1;

@@ -62,7 +62,8 @@ void TestPackageStore::versionsNewestFirst()
     const Packages::InstalledPackage newest = store.versions("rtc-a").first();
     QCOMPARE(newest.componentTypes, QStringList({"A", "B"}));
     QCOMPARE(newest.path, dir.filePath("store/rtc-a/1.10"));
-    QCOMPARE(newest.moduleDirs(), QStringList {newest.path + "/root/usr/lib/rtstudio/components/rtc-a"});
+    QCOMPARE(newest.moduleDirs(),
+             QStringList {newest.path + "/root/usr/lib/rtstudio/components/rtc-a"});
     QCOMPARE(store.moduleDirs("1.0").size(), 1);
     QCOMPARE(store.moduleDirs(QString()).first(), newest.moduleDirs().first());
 }
@@ -121,7 +122,8 @@ void TestPackageStore::dependencies_data()
     QTest::newRow("installed") << "dpkg" << QStringList();
     QTest::newRow("with arch and version") << "dpkg:any (>= 1.0)" << QStringList();
     QTest::newRow("too old") << "dpkg (>= 999)" << QStringList {"dpkg (>= 999)"};
-    QTest::newRow("missing") << "dpkg, librtstudio-nowhere0" << QStringList {"librtstudio-nowhere0"};
+    QTest::newRow("missing") << "dpkg, librtstudio-nowhere0"
+                             << QStringList {"librtstudio-nowhere0"};
     QTest::newRow("alternative met") << "librtstudio-nowhere0 | dpkg" << QStringList();
     QTest::newRow("component package in the store") << "rtc-b (>= 1.0)" << QStringList();
     QTest::newRow("component package too old")
@@ -147,13 +149,27 @@ void TestPackageStore::relations_data()
     QTest::addColumn<QString>("wanted");
     QTest::addColumn<bool>("satisfied");
 
-    QTest::newRow("any") << "1.0" << "" << "" << true;
-    QTest::newRow("<< yes") << "1.0" << "<<" << "1.1" << true;
-    QTest::newRow("<< equal") << "1.0" << "<<" << "1.0" << false;
-    QTest::newRow("<= equal") << "1.0" << "<=" << "1.0" << true;
-    QTest::newRow("= tilde") << "1.0~rc1" << "=" << "1.0" << false;
-    QTest::newRow(">= epoch") << "1:0.1" << ">=" << "2.0" << true;
-    QTest::newRow(">> no") << "2.0" << ">>" << "2.0" << false;
+    QTest::newRow("any") << "1.0"
+                         << ""
+                         << "" << true;
+    QTest::newRow("<< yes") << "1.0"
+                            << "<<"
+                            << "1.1" << true;
+    QTest::newRow("<< equal") << "1.0"
+                              << "<<"
+                              << "1.0" << false;
+    QTest::newRow("<= equal") << "1.0"
+                              << "<="
+                              << "1.0" << true;
+    QTest::newRow("= tilde") << "1.0~rc1"
+                             << "="
+                             << "1.0" << false;
+    QTest::newRow(">= epoch") << "1:0.1"
+                              << ">="
+                              << "2.0" << true;
+    QTest::newRow(">> no") << "2.0"
+                           << ">>"
+                           << "2.0" << false;
 }
 
 void TestPackageStore::relations()

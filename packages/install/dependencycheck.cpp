@@ -23,8 +23,8 @@ struct Requirement
 
 Requirement parseRequirement(const QString &text)
 {
-    static const QRegularExpression pattern(
-        QStringLiteral("^\\s*([^\\s:(]+)(?::\\S+)?\\s*(?:\\(\\s*(<<|<=|=|>=|>>|<|>)\\s*([^\\s)]+)\\s*\\))?"));
+    static const QRegularExpression pattern(QStringLiteral(
+        "^\\s*([^\\s:(]+)(?::\\S+)?\\s*(?:\\(\\s*(<<|<=|=|>=|>>|<|>)\\s*([^\\s)]+)\\s*\\))?"));
     const QRegularExpressionMatch match = pattern.match(text);
     return {match.captured(1), match.captured(2), match.captured(3)};
 }
@@ -36,10 +36,11 @@ QHash<QString, QString> installedVersions(const QStringList &names)
     if (names.isEmpty())
         return versions;
     // A name dpkg does not know makes dpkg-query fail, yet it still prints the others.
-    const ToolResult result = runTool(QStringLiteral("dpkg-query"),
-                                      QStringList {QStringLiteral("-W"), QStringLiteral("-f"),
-                                                   QStringLiteral("${Package} ${Status} ${Version}\\n")}
-                                          + names);
+    const ToolResult result
+        = runTool(QStringLiteral("dpkg-query"),
+                  QStringList {QStringLiteral("-W"), QStringLiteral("-f"),
+                               QStringLiteral("${Package} ${Status} ${Version}\\n")}
+                      + names);
     for (const QString &line : QString::fromUtf8(result.out).split(QLatin1Char('\n'))) {
         const QStringList parts = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
         // "<name> install ok installed <version>"
@@ -98,8 +99,9 @@ QStringList unmetDependencies(const QString &depends, const PackageStore &store)
     QStringList unmet;
     for (qsizetype i = 0; i < groups.size(); ++i) {
         const QList<Requirement> &alternatives = groups.at(i);
-        const bool met = std::any_of(alternatives.cbegin(), alternatives.cend(),
-                                     [&](const Requirement &r) { return satisfiedBy(r, store, system); });
+        const bool met
+            = std::any_of(alternatives.cbegin(), alternatives.cend(),
+                          [&](const Requirement &r) { return satisfiedBy(r, store, system); });
         if (!met)
             unmet << texts.at(i);
     }

@@ -39,8 +39,7 @@ QString InstallError::message() const
 PackageInstaller::PackageInstaller(const PackageStore &store, InstallPolicy policy)
     : m_store(store)
     , m_policy(std::move(policy))
-{
-}
+{ }
 
 std::optional<VerifiedRelease> PackageInstaller::trustedRelease(const QByteArray &inRelease,
                                                                 QString *reason) const
@@ -111,7 +110,8 @@ bool PackageInstaller::checkNode(const IndexEntry &entry, QString *reason) const
     const QStringList unmet
         = unmetDependencies(entry.control.value(QStringLiteral("Depends")), m_store);
     if (!unmet.isEmpty()) {
-        *reason = QStringLiteral("missing dependencies on this node: ") + unmet.join(QStringLiteral(", "));
+        *reason = QStringLiteral("missing dependencies on this node: ")
+            + unmet.join(QStringLiteral(", "));
         return false;
     }
     for (const InstalledPackage &installed : m_store.versions(entry.package())) {
@@ -123,9 +123,8 @@ bool PackageInstaller::checkNode(const IndexEntry &entry, QString *reason) const
     return true;
 }
 
-std::optional<InstalledPackage> PackageInstaller::unpack(const IndexEntry &entry,
-                                                         const QString &debFile,
-                                                         QString *reason) const
+std::optional<InstalledPackage>
+PackageInstaller::unpack(const IndexEntry &entry, const QString &debFile, QString *reason) const
 {
     const std::optional<QString> staging = m_store.createStaging(reason);
     if (!staging)
@@ -135,14 +134,17 @@ std::optional<InstalledPackage> PackageInstaller::unpack(const IndexEntry &entry
         m_store.discard(*staging);
         return std::nullopt;
     };
-    const ToolResult unpacked = runTool(QStringLiteral("dpkg-deb"),
-                                        {QStringLiteral("-x"), debFile, *staging + QStringLiteral("/root")});
+    const ToolResult unpacked
+        = runTool(QStringLiteral("dpkg-deb"),
+                  {QStringLiteral("-x"), debFile, *staging + QStringLiteral("/root")});
     if (!unpacked.ok())
         return failed(QStringLiteral("unpacking: ") + unpacked.failure(QStringLiteral("dpkg-deb")));
     QFile control(*staging + QStringLiteral("/control"));
     const QByteArray text = entry.control.toText();
-    if (!control.open(QIODevice::WriteOnly) || control.write(text) != text.size() || !control.flush())
-        return failed(QStringLiteral("cannot write %1: %2").arg(control.fileName(), control.errorString()));
+    if (!control.open(QIODevice::WriteOnly) || control.write(text) != text.size()
+        || !control.flush())
+        return failed(
+            QStringLiteral("cannot write %1: %2").arg(control.fileName(), control.errorString()));
     control.close();
     QString why;
     if (!m_store.commit(*staging, entry.package(), entry.version(), &why))

@@ -59,11 +59,12 @@ public:
     std::optional<InstalledPackage> install(const PackageSource &source, InstallError *error) const;
 
     /// The Release @p inRelease vouches for, verified as the policy requires.
-    std::optional<VerifiedRelease> trustedRelease(const QByteArray &inRelease, QString *reason) const;
+    std::optional<VerifiedRelease> trustedRelease(const QByteArray &inRelease,
+                                                  QString *reason) const;
 
 private:
-    std::optional<IndexEntry> indexEntry(const PackageSource &source, const VerifiedRelease &release,
-                                         InstallError *error) const;
+    std::optional<IndexEntry> indexEntry(const PackageSource &source,
+                                         const VerifiedRelease &release, InstallError *error) const;
     bool checkNode(const IndexEntry &entry, QString *reason) const;
     std::optional<InstalledPackage> unpack(const IndexEntry &entry, const QString &debFile,
                                            QString *reason) const;

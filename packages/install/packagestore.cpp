@@ -40,8 +40,8 @@ QStringList InstalledPackage::moduleDirs() const
     QStringList dirs;
     const QString lib = path + QLatin1Char('/') + filesFolder + QStringLiteral("/usr/lib");
     for (const QString &triplet : subfolders(lib)) {
-        const QString dir = lib + QLatin1Char('/') + triplet + QStringLiteral("/rtstudio/components/")
-            + name;
+        const QString dir
+            = lib + QLatin1Char('/') + triplet + QStringLiteral("/rtstudio/components/") + name;
         if (QFileInfo(dir).isDir())
             dirs << dir;
     }
@@ -53,8 +53,7 @@ QStringList InstalledPackage::moduleDirs() const
 
 PackageStore::PackageStore(QString root)
     : m_root(QDir::cleanPath(std::move(root)))
-{
-}
+{ }
 
 QString PackageStore::defaultRoot()
 {
@@ -84,7 +83,8 @@ bool PackageStore::prepare(QString *error) const
     return true;
 }
 
-std::optional<InstalledPackage> PackageStore::read(const QString &name, const QString &version) const
+std::optional<InstalledPackage> PackageStore::read(const QString &name,
+                                                   const QString &version) const
 {
     InstalledPackage package;
     package.path = m_root + QLatin1Char('/') + name + QLatin1Char('/') + version;
@@ -98,8 +98,9 @@ std::optional<InstalledPackage> PackageStore::read(const QString &name, const QS
     package.name = control->value(QStringLiteral("Package"));
     package.version = control->value(QStringLiteral("Version"));
     package.architecture = control->value(QStringLiteral("Architecture"));
-    package.componentTypes = control->value(Field::RtcTypes).split(QRegularExpression(QStringLiteral("[,\\s]+")),
-                                                                   Qt::SkipEmptyParts);
+    package.componentTypes
+        = control->value(Field::RtcTypes)
+              .split(QRegularExpression(QStringLiteral("[,\\s]+")), Qt::SkipEmptyParts);
     return package;
 }
 

@@ -42,14 +42,15 @@ bool writeFile(const QString &path, const QByteArray &data, QString *error)
 
 } // namespace
 
-RepositoryFetcher::RepositoryFetcher(QString nodeArchitecture, int timeoutMs, QString caCertificates)
+RepositoryFetcher::RepositoryFetcher(QString nodeArchitecture, int timeoutMs,
+                                     QString caCertificates)
     : m_architecture(std::move(nodeArchitecture))
     , m_timeoutMs(timeoutMs)
     , m_caCertificates(std::move(caCertificates))
-{
-}
+{ }
 
-std::optional<QByteArray> RepositoryFetcher::get(const QUrl &url, QString *error, bool *missing) const
+std::optional<QByteArray> RepositoryFetcher::get(const QUrl &url, QString *error,
+                                                 bool *missing) const
 {
     bool ignored = false;
     missing = missing ? missing : &ignored;
@@ -57,7 +58,8 @@ std::optional<QByteArray> RepositoryFetcher::get(const QUrl &url, QString *error
     if (url.isLocalFile())
         return readLocal(url.toLocalFile(), error, missing);
     if (url.scheme() != QLatin1String("http") && url.scheme() != QLatin1String("https")) {
-        *error = QStringLiteral("%1: only http, https and file URLs are fetched").arg(url.toString());
+        *error
+            = QStringLiteral("%1: only http, https and file URLs are fetched").arg(url.toString());
         return std::nullopt;
     }
     // A network access manager of this thread: installs run in the ORB's threads.
@@ -67,7 +69,8 @@ std::optional<QByteArray> RepositoryFetcher::get(const QUrl &url, QString *error
     if (!m_caCertificates.isEmpty() && url.scheme() == QLatin1String("https")) {
         QSslConfiguration ssl = QSslConfiguration::defaultConfiguration();
         if (!ssl.addCaCertificates(m_caCertificates)) {
-            *error = QStringLiteral("cannot read the certificate authorities %1").arg(m_caCertificates);
+            *error = QStringLiteral("cannot read the certificate authorities %1")
+                         .arg(m_caCertificates);
             return std::nullopt;
         }
         request.setSslConfiguration(ssl);
@@ -109,10 +112,12 @@ std::optional<PackageSource> RepositoryFetcher::fetch(const QUrl &url, const QSt
     const QString architecture = parts.at(2) == QLatin1String("all") ? m_architecture : parts.at(2);
     PackageSource source;
     source.poolPath = path.mid(pool + 1);
-    source.indexPath = component + QStringLiteral("/binary-") + architecture + QStringLiteral("/Packages");
+    source.indexPath
+        = component + QStringLiteral("/binary-") + architecture + QStringLiteral("/Packages");
     const QString dists = root + QStringLiteral("/dists/") + suite + QLatin1Char('/');
     bool missing = false;
-    std::optional<QByteArray> inRelease = get(withPath(url, dists + QStringLiteral("InRelease")), error, &missing);
+    std::optional<QByteArray> inRelease
+        = get(withPath(url, dists + QStringLiteral("InRelease")), error, &missing);
     // An unsigned repository has only a Release; the installer decides whether to take it.
     if (!inRelease && missing)
         inRelease = get(withPath(url, dists + QStringLiteral("Release")), error);

@@ -30,7 +30,8 @@ public:
      * Downloads into @p folder; the PackageSource an installer takes. Nothing, with the file and
      * the reason in @p error, when a file cannot be fetched or the URL names no pool file.
      */
-    std::optional<PackageSource> fetch(const QUrl &url, const QString &folder, QString *error) const;
+    std::optional<PackageSource> fetch(const QUrl &url, const QString &folder,
+                                       QString *error) const;
 
     /// The contents at @p url; nothing with the reason. @p missing is set when the server or the
     /// file system says there is no such file.
