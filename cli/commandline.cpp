@@ -15,6 +15,7 @@
 #include "rtfindcommand.h"
 #include "rtlscommand.h"
 #include "rtmgrcommand.h"
+#include "nodecommand.h"
 #include "rtstatecommand.h"
 #include "rtsystemcommand.h"
 
@@ -103,6 +104,7 @@ std::unique_ptr<CommandLine> createCommandLine()
     commandLine->addCommand(std::make_unique<RtDataCommand>(RtDataCommand::Mode::Log));
     commandLine->addCommand(std::make_unique<RtConfCommand>());
     commandLine->addCommand(std::make_unique<RtMgrCommand>());
+    commandLine->addCommand(std::make_unique<NodeCommand>());
     using System = RtSystemCommand::Action;
     for (System action :
          {System::Resurrect, System::Teardown, System::Start, System::Stop, System::Diff})

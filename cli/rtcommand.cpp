@@ -71,6 +71,24 @@ RtOptions parseOptions(const QStringList &arguments, const QStringList &flags,
 
 } // namespace
 
+Corba::ManagerProxy RtCommand::managerAt(const QString &text) const
+{
+    const RtPath target = path(text);
+    // `corbaloc::host:port` names a manager's object ("manager" key): its first call tells whether
+    // it answers, a round trip less than asking first what it is.
+    const NamingNode node = target.isDirect() && target.corbaloc.endsWith(QLatin1String("/manager"))
+                                ? NamingNode {QStringLiteral("manager.mgr"), NodeType::Manager, target.toString(),
+                                              target.corbaloc, {}, {}}
+                                : NamingBrowser::node(target);
+    if (node.type != NodeType::Manager)
+        throw Error(
+            Error::Kind::WrongType,
+            node.reason.isEmpty()
+                ? QStringLiteral("%1: not a manager (%2)").arg(node.path, nodeTypeName(node.type))
+                : node.reason);
+    return ManagerProxy(node.ior, node.path);
+}
+
 int RtCommand::run(const QStringList &arguments, Streams streams)
 {
     RtOptions options = parseOptions(arguments, flagNames(),

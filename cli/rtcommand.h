@@ -4,6 +4,7 @@
 #include "command.h"
 
 #include "componentproxy.h"
+#include "managerproxy.h"
 #include "namingbrowser.h"
 #include "rtpath.h"
 
@@ -56,6 +57,8 @@ protected:
     static QString currentDirectory();
     /// A proxy for the component at `path`; WrongType when it is no component.
     Corba::ComponentProxy component(const Corba::RtPath &path) const;
+    /// The manager at a path or `corbaloc::host:port/manager`; WrongType when it is no manager.
+    Corba::ManagerProxy managerAt(const QString &text) const;
     /// Prints "rtctl NAME: message" to the error stream.
     void report(const QString &message, Streams streams) const;
 

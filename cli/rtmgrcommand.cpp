@@ -208,20 +208,7 @@ int RtMgrCommand::execute(const RtOptions &options, Streams streams)
     }
     if (actions.isEmpty())
         actions.append({QStringLiteral("list"), QString()});
-    const RtPath target = path(options.positionals.first());
-    // `corbaloc::host:port` names a manager's object ("manager" key): its first call tells whether
-    // it answers, a round trip less than asking first what it is.
-    const NamingNode node = target.isDirect() && target.corbaloc.endsWith(QLatin1String("/manager"))
-                                ? NamingNode {QStringLiteral("manager.mgr"), NodeType::Manager, target.toString(),
-                                              target.corbaloc, {}, {}}
-                                : NamingBrowser::node(target);
-    if (node.type != NodeType::Manager)
-        throw Error(
-            Error::Kind::WrongType,
-            node.reason.isEmpty()
-                ? QStringLiteral("%1: not a manager (%2)").arg(node.path, nodeTypeName(node.type))
-                : node.reason);
-    const ManagerProxy manager(node.ior, node.path);
+    const ManagerProxy manager = managerAt(options.positionals.first());
     std::optional<bool> sideBySide; // asked once, when there is something to send side by side
     bool inOneCall = true; // until the manager turns out not to take creates in one call
     for (qsizetype i = 0; i < actions.size();) {

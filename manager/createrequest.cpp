@@ -40,6 +40,8 @@ bool applyParameter(const std::string &pair, CreateRequest *request, std::string
         request->managerAddress = value;
     else if (key == "manager_name")
         request->managerName = value;
+    else if (key == "version")
+        request->packageVersion = value;
     else
         request->properties.set(key, value);
     return true;
@@ -83,6 +85,10 @@ std::string CreateRequest::toStringWithoutManager() const
         text = "RTC:" + vendor + ':' + category + ':' + implementationId + ':'
                + (language.empty() ? std::string() : language + ':') + version;
     char separator = '?';
+    if (!packageVersion.empty()) {
+        text += "?version=" + packageVersion;
+        separator = '&';
+    }
     for (const auto &[key, value] : properties.entries()) {
         text += separator + key + '=' + value;
         separator = '&';

@@ -23,6 +23,9 @@ struct CreateRequest
     std::string version;  ///< From a full `RTC:` id; empty = any.
     std::optional<std::string> managerAddress; ///< `host:port` of the slave to create on.
     std::optional<std::string> managerName;    ///< Name of the slave to create on.
+    /// `version=`: the version of the installed component package whose module makes the
+    /// component (see Manager::setPackageModuleDirs()); empty = the newest installed.
+    std::string packageVersion;
     Properties properties;                     ///< Every other `k=v`.
 
     /// Parses @p text; on failure returns std::nullopt and sets @p error to a message naming the problem.

@@ -7,11 +7,15 @@
 #include "forkserver.h"
 #include "manager.h"
 #include "managerconfig.h"
+#include "packageinstallerservant.h"
+
+#include <QCoreApplication>
 
 #include <rtm/Manager.h>
 #include <rtm/PeriodicECSharedComposite.h>
 
 #include <cerrno>
+#include <clocale>
 #include <csignal>
 #include <cstring>
 #include <iostream>
@@ -57,12 +61,12 @@ int runManager(int argc, char **argv)
     }
 
     // Signals are taken by one thread, which shuts the manager down cleanly.
-    sigset_t signals;
-    sigemptyset(&signals);
-    sigaddset(&signals, SIGTERM);
-    sigaddset(&signals, SIGINT);
-    sigaddset(&signals, SIGHUP);
-    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    sigset_t stopSignals;
+    sigemptyset(&stopSignals);
+    sigaddset(&stopSignals, SIGTERM);
+    sigaddset(&stopSignals, SIGINT);
+    sigaddset(&stopSignals, SIGHUP);
+    pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
 
     Runtime::Manager manager(config);
@@ -75,18 +79,31 @@ int runManager(int argc, char **argv)
     // Like OpenRTM-aist's manager, every manager offers the composite component type.
     PeriodicECSharedCompositeInit(sdkManager);
     manager.setModuleProfileProgram(Runtime::ownExecutable());
+    // The package installer runs Debian's tools and fetches over the network with Qt, which wants
+    // its application object; the manager itself never runs Qt's event loop.
+    QCoreApplication application(argc, argv);
+    std::setlocale(LC_NUMERIC, "C");
+    PortableServer::ServantBase_var installer = Runtime::PackageInstallerServant::create(manager, &error);
+    if (!error.empty()) {
+        std::cerr << "rtmanager: package store: " << error << std::endl;
+        return 1;
+    }
     if (!manager.start(&error)) {
         std::cerr << "rtmanager: " << error << std::endl;
         return 1;
+    }
+    if (installer.in()) {
+        CORBA::Object_var reference = manager.activate(installer.in());
+        manager.setPackageInstaller(reference);
     }
     manager.preloadModules();
     manager.precreateComponents();
 
     // Launchers (and tests) wait for this line before talking to the manager.
     std::cout << "rtmanager ready on " << manager.address() << std::endl;
-    std::thread([&manager, signals] {
+    std::thread([&manager, stopSignals] {
         int number = 0;
-        sigwait(&signals, &number);
+        sigwait(&stopSignals, &number);
         manager.shutdown();
     }).detach();
     manager.run();

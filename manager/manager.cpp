@@ -254,8 +254,16 @@ void Manager::registerFactory(ComponentFactory factory)
 {
     std::lock_guard lock(m_mutex);
     const std::string id = factory.implementationId();
+    if (factory.modulePath.empty())
+        factory.modulePath = moduleBeingLoaded();
+    // A type registered again replaces its factory, unless two module files register it: two
+    // installed versions of one package are used side by side.
     m_factories.erase(std::remove_if(m_factories.begin(), m_factories.end(),
-                                     [&id](const ComponentFactory &f) { return f.implementationId() == id; }),
+                                     [&factory, &id](const ComponentFactory &f) {
+                                         return f.implementationId() == id
+                                             && (f.modulePath.empty() || factory.modulePath.empty()
+                                                 || f.modulePath == factory.modulePath);
+                                     }),
                       m_factories.end());
     m_factories.push_back(std::move(factory));
 }
@@ -343,11 +351,12 @@ bool isRequestedType(const Properties &p, const CreateRequest &request)
 
 } // namespace
 
+// The latest registered first: a module loaded later takes over a type.
 const ComponentFactory *Manager::findFactory(const CreateRequest &request)
 {
-    for (const ComponentFactory &factory : m_factories) {
-        if (isRequestedType(factory.profile, request))
-            return &factory;
+    for (auto it = m_factories.rbegin(); it != m_factories.rend(); ++it) {
+        if (isRequestedType(it->profile, request))
+            return &*it;
     }
     return nullptr;
 }
@@ -368,8 +377,18 @@ std::string Manager::reserveInstanceName(const std::string &requested, const std
     return name;
 }
 
-std::optional<ComponentFactory> Manager::factoryFor(const CreateRequest &request)
+std::optional<ComponentFactory> Manager::factoryFor(const CreateRequest &request, std::string *why)
 {
+    // A type of an installed package: the module of the version asked for, else of the newest.
+    const std::vector<std::string> installed = installedModuleDirs(request.packageVersion);
+    const std::string packaged = moduleInDirs(request.implementationId, installed);
+    if (!packaged.empty())
+        return factoryOfModule(request, packaged);
+    if (!request.packageVersion.empty()) {
+        *why = "create_component: no installed package of version " + request.packageVersion
+            + " provides type '" + request.implementationId + "'";
+        return std::nullopt;
+    }
     {
         std::lock_guard lock(m_mutex);
         if (const ComponentFactory *factory = findFactory(request))
@@ -426,9 +445,10 @@ bool Manager::readConfigFiles(Properties *properties, const std::string &instanc
 
 RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string *error)
 {
-    const std::optional<ComponentFactory> factory = factoryFor(request);
+    std::string why = "create_component: unknown component type '" + request.implementationId + "'";
+    const std::optional<ComponentFactory> factory = factoryFor(request, &why);
     if (!factory) {
-        fail("create_component: unknown component type '" + request.implementationId + "'", error);
+        fail(why, error);
         return RTC::RTObject::_nil();
     }
     Properties properties = factory->profile;
@@ -469,6 +489,7 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
         m_hooks.postConfigure(properties);
     auto component = std::make_unique<Component>();
     component->instanceName = instance;
+    component->modulePath = factory->modulePath;
     if (configured)
         component->servant = factory->create(m_poa);
     Component *record = component.get();

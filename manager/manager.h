@@ -150,6 +150,25 @@ public:
      * a profiling program (setModuleProfileProgram()), the `.so` files by name.
      */
     std::vector<Properties> loadableModules();
+    /**
+     * The module folders of installed component packages (a package store): for @p version empty,
+     * every installed version, each package's newest first; else the folders of that version.
+     */
+    using PackageModuleDirs = std::function<std::vector<std::string>(const std::string &version)>;
+    /**
+     * Makes the folders @p dirs gives part of the module load path, after
+     * `manager.modules.load_path`: their types are loadable at once, and a create request takes
+     * the type from the newest installed version, or from the one its `version=` names. Call
+     * before start().
+     */
+    void setPackageModuleDirs(PackageModuleDirs dirs);
+    /// The module files the running components of this process were made from (not built-ins).
+    std::vector<std::string> runningModulePaths();
+    /// Serves @p servant in this manager's POA (which holds a reference to it); nil before start().
+    CORBA::Object_ptr activate(PortableServer::ServantBase *servant);
+    /// The object RTStudio::Manager::get_package_installer() answers; nil when none is set.
+    void setPackageInstaller(CORBA::Object_ptr installer);
+    CORBA::Object_ptr packageInstaller();
     /// The program that answers `--module-profile FILE` (rtmanager); call before start().
     void setModuleProfileProgram(const std::string &program);
     std::vector<Properties> loadedModules();
@@ -191,7 +210,11 @@ private:
     RTC::RTObject_ptr initializeComponent(Component *record, const Properties &properties, std::string *error);
     const ComponentFactory *findFactory(const CreateRequest &request);
     /// The factory of the requested type (a copy), loading `<Type>.so` from the load path if needed.
-    std::optional<ComponentFactory> factoryFor(const CreateRequest &request);
+    std::optional<ComponentFactory> factoryFor(const CreateRequest &request, std::string *why);
+    /// The factory of the requested type that @p module registers, loading it if needed.
+    std::optional<ComponentFactory> factoryOfModule(const CreateRequest &request, const std::string &module);
+    /// The folders of installed packages' modules (see setPackageModuleDirs()).
+    std::vector<std::string> installedModuleDirs(const std::string &version) const;
     bool readConfigFiles(Properties *properties, const std::string &instance, const std::string &requestedFile,
                          std::string *error);
     /// Holds @p requested (or the first free `<type>N`) for a creation in progress; empty with @p error when taken.
@@ -249,6 +272,8 @@ private:
     std::vector<std::unique_ptr<Module>> m_modules;
     ModuleInitCall m_moduleInitCall;
     ModuleProfiler m_moduleProfiler;
+    PackageModuleDirs m_packageModuleDirs;
+    CORBA::Object_var m_packageInstaller;
     LifecycleHooks m_hooks;
     RTM::ManagerList m_masters;
     std::string m_lastError;

@@ -13,6 +13,7 @@ struct Manager::Component
     RTC::RTObject_var reference;
     std::string instanceName;
     std::vector<std::string> names; ///< Naming paths it was bound under.
+    std::string modulePath; ///< The module its factory came from; empty for built-in types.
 };
 
 struct Manager::Slave
@@ -29,6 +30,11 @@ struct Manager::Module
     std::string initFunction;
     void *handle = nullptr;
 };
+
+/// The module file whose init function the calling thread runs; empty when none.
+std::string moduleBeingLoaded();
+/// `<dir>/<type>.so` of the first of @p dirs that has it; empty when none does.
+std::string moduleInDirs(const std::string &type, const std::vector<std::string> &dirs);
 
 /// A manager's instance name from its `manager.instance_name` (`%p` is its process id).
 std::string expandedInstanceName(std::string format, pid_t pid);

@@ -35,11 +35,16 @@ bool isDirectory(const std::string &path)
     return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
 }
 
-/// The folders modules are looked for in: manager.modules.load_path, then the folder of every
-/// component package (rtctl package) below manager.modules.package_path, by package name.
-std::vector<std::string> moduleDirs(const Properties &config)
+/// The module a thread is loading: the factories its init function registers come from it.
+thread_local std::string loadingModule;
+
+/// The folders modules are looked for in: manager.modules.load_path, then those of the packages
+/// in the manager's package store (@p installed), then the folder of every component package
+/// (rtctl package) below manager.modules.package_path, by package name.
+std::vector<std::string> moduleDirs(const Properties &config, const std::vector<std::string> &installed)
 {
     std::vector<std::string> dirs = split(config.value("manager.modules.load_path", "."), ',');
+    dirs.insert(dirs.end(), installed.begin(), installed.end());
     for (const std::string &root : split(config.value("manager.modules.package_path", RTSTUDIO_COMPONENT_PACKAGES_DIR), ',')) {
         DIR *d = opendir(root.c_str());
         if (!d)
@@ -59,6 +64,58 @@ std::vector<std::string> moduleDirs(const Properties &config)
 
 } // namespace
 
+std::string moduleBeingLoaded()
+{
+    return loadingModule;
+}
+
+std::string moduleInDirs(const std::string &type, const std::vector<std::string> &dirs)
+{
+    for (const std::string &dir : dirs) {
+        if (isFile(dir + '/' + type + ".so"))
+            return dir + '/' + type + ".so";
+    }
+    return {};
+}
+
+void Manager::setPackageModuleDirs(PackageModuleDirs dirs)
+{
+    m_packageModuleDirs = std::move(dirs);
+}
+
+std::vector<std::string> Manager::installedModuleDirs(const std::string &version) const
+{
+    return m_packageModuleDirs ? m_packageModuleDirs(version) : std::vector<std::string>();
+}
+
+std::vector<std::string> Manager::runningModulePaths()
+{
+    std::lock_guard lock(m_mutex);
+    std::vector<std::string> paths;
+    for (const auto &component : m_components) {
+        if (!component->modulePath.empty())
+            paths.push_back(component->modulePath);
+    }
+    return paths;
+}
+
+std::optional<ComponentFactory> Manager::factoryOfModule(const CreateRequest &request, const std::string &module)
+{
+    const auto find = [this, &request, &module]() -> std::optional<ComponentFactory> {
+        std::lock_guard lock(m_mutex);
+        for (const ComponentFactory &factory : m_factories) {
+            if (factory.modulePath == module && factory.implementationId() == request.implementationId)
+                return factory;
+        }
+        return std::nullopt;
+    };
+    if (std::optional<ComponentFactory> factory = find())
+        return factory;
+    if (!loadModule(module, std::string(), nullptr))
+        return std::nullopt;
+    return find();
+}
+
 std::string Manager::findModuleFile(const std::string &requested) const
 {
     if (requested.empty())
@@ -66,7 +123,7 @@ std::string Manager::findModuleFile(const std::string &requested) const
     // Relative names are looked up in manager.modules.load_path and the installed component
     // packages' folders, with or without ".so".
     std::vector<std::string> candidates;
-    const std::vector<std::string> dirs = moduleDirs(m_config);
+    const std::vector<std::string> dirs = moduleDirs(m_config, installedModuleDirs(std::string()));
     for (const std::string &name : {requested, requested + ".so"}) {
         if (name.front() == '/')
             candidates.push_back(name);
@@ -113,11 +170,10 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
         dlclose(handle);
         return fail("load_module: '" + path + "' has no init function '" + function + "'", error);
     }
-    const size_t before = m_factories.size();
+    loadingModule = path;
     m_moduleInitCall(init);
+    loadingModule.clear();
     std::lock_guard lock(m_mutex);
-    for (size_t i = before; i < m_factories.size(); ++i)
-        m_factories[i].modulePath = path;
     m_modules.push_back(std::make_unique<Module>(Module{path, function, handle}));
     return true;
 }
@@ -164,7 +220,7 @@ std::vector<Properties> Manager::loadableModules()
 {
     const Properties config = configuration();
     std::vector<std::string> files;
-    for (const std::string &dir : moduleDirs(config)) {
+    for (const std::string &dir : moduleDirs(config, installedModuleDirs(std::string()))) {
         DIR *d = opendir(dir.c_str());
         if (!d)
             continue;

@@ -191,4 +191,10 @@ CORBA::Object_ptr ManagerServant::get_service(const char *name)
     return m_manager.service(name ? name : "");
 }
 
+RTStudio::PackageInstaller_ptr ManagerServant::get_package_installer()
+{
+    CORBA::Object_var installer = m_manager.packageInstaller();
+    return RTStudio::PackageInstaller::_unchecked_narrow(installer);
+}
+
 } // namespace Runtime

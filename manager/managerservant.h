@@ -45,6 +45,7 @@ public:
     RTC::ReturnCode_t shutdown() override;
     RTC::ReturnCode_t restart() override;
     CORBA::Object_ptr get_service(const char *name) override;
+    RTStudio::PackageInstaller_ptr get_package_installer() override;
 
 private:
     Runtime::Manager &m_manager;

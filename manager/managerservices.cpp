@@ -78,6 +78,26 @@ bool Manager::forkSlave(std::string *error)
     return true;
 }
 
+CORBA::Object_ptr Manager::activate(PortableServer::ServantBase *servant)
+{
+    if (CORBA::is_nil(m_poa))
+        return CORBA::Object::_nil();
+    PortableServer::ObjectId_var id = m_poa->activate_object(servant);
+    return m_poa->id_to_reference(id);
+}
+
+void Manager::setPackageInstaller(CORBA::Object_ptr installer)
+{
+    std::lock_guard lock(m_mutex);
+    m_packageInstaller = CORBA::Object::_duplicate(installer);
+}
+
+CORBA::Object_ptr Manager::packageInstaller()
+{
+    std::lock_guard lock(m_mutex);
+    return CORBA::Object::_duplicate(m_packageInstaller);
+}
+
 CORBA::Object_ptr Manager::service(const std::string &name)
 {
     if (name == "manager")

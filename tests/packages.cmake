@@ -32,3 +32,18 @@ rtstudio_add_test(tst_serepositorypackages SOURCES tst_serepositorypackages.cpp
     LIBS rtsystemeditor rtstudio_rtctlrunner)
 add_dependencies(tst_serepositorypackages rtctl)
 set_tests_properties(tst_serepositorypackages PROPERTIES LABELS package)
+
+rtstudio_add_test(tst_packagestore SOURCES tst_packagestore.cpp LIBS rtpackageinstall)
+set_tests_properties(tst_packagestore PROPERTIES LABELS package)
+
+# rtctl node and rtmanager's package installer: installs without root, verified as apt does.
+rtstudio_add_test(tst_managerinstall SOURCES tst_managerinstall.cpp
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba)
+target_compile_definitions(tst_managerinstall PRIVATE
+    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
+add_dependencies(tst_managerinstall rtctl rtsdk rtmanager)
+if(TARGET rtsdk_stage)
+    add_dependencies(tst_managerinstall rtsdk_stage)
+endif()
+set_tests_properties(tst_managerinstall PROPERTIES LABELS package TIMEOUT 600)

@@ -752,6 +752,7 @@ void TestCorbaIdl::idlFolderHoldsEveryFile()
                                 "OpenRTM.idl",
                                 "RTC.idl",
                                 "RTStudioManager.idl",
+                                "RTStudioPackages.idl",
                                 "SDOPackage.idl",
                                 "SharedMemory.idl",
                                 "SimpleService.idl"};
