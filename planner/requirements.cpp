@@ -82,7 +82,7 @@ void applyProperties(const PropertyMap &properties, const QString &instance, Com
 
 ComponentRequirements componentRequirements(const Profile::RtsComponent &component,
                                             const QHash<QString, Profile::RtcProfile> &typeProfiles,
-                                            QStringList *warnings)
+                                            QStringList *unprofiled, QStringList *warnings)
 {
     ComponentRequirements r;
     r.instanceName = component.instanceName;
@@ -91,9 +91,8 @@ ComponentRequirements componentRequirements(const Profile::RtsComponent &compone
     PropertyMap properties;
     if (const Profile::RtcProfile *profile = profileOf(component, typeProfiles))
         readProfile(*profile, &r, &properties);
-    else
-        *warnings << QStringLiteral("%1: no RTC profile of %2; only its own properties are required")
-                         .arg(component.instanceName, component.id);
+    else if (!unprofiled->contains(r.typeName))
+        *unprofiled << r.typeName;
     for (const Profile::RtsProperty &p : component.properties) {
         if (p.name.startsWith(QLatin1String("deploy.")))
             properties.insert(p.name, p.value.value_or(QString()));
@@ -163,8 +162,12 @@ SystemRequirements readRequirements(const Profile::RtsProfile &system,
                                     const QHash<QString, Profile::RtcProfile> &typeProfiles)
 {
     SystemRequirements result;
+    QStringList unprofiled;
     for (const Profile::RtsComponent &component : system.components)
-        result.components << componentRequirements(component, typeProfiles, &result.warnings);
+        result.components << componentRequirements(component, typeProfiles, &unprofiled, &result.warnings);
+    if (!unprofiled.isEmpty())
+        result.warnings << QStringLiteral("no RTC profile of %1: only the components' own deploy.* properties are required")
+                               .arg(unprofiled.join(QStringLiteral(", ")));
     groupComposites(system, &result.components);
     result.links = readLinks(system, typeProfiles);
     return result;
