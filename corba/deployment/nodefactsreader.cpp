@@ -20,8 +20,11 @@ NodeFactsReading readOne(const QString &address)
         const Corba::Properties configuration = manager.configuration();
         std::optional<QList<Planner::FactProperties>> modules;
         try {
+            // Types it creates already (factories: built in or loaded) and types it can load.
+            const std::vector<Corba::Properties> factories = manager.factoryProfiles();
             const std::vector<Corba::Properties> loadable = manager.loadableModules();
-            modules = QList<Planner::FactProperties>(loadable.cbegin(), loadable.cend());
+            modules = QList<Planner::FactProperties>(factories.cbegin(), factories.cend());
+            modules->append(QList<Planner::FactProperties>(loadable.cbegin(), loadable.cend()));
         } catch (const Corba::Error &) {
             // What it can load stays unknown: only installs can bring types there.
         }
