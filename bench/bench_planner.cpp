@@ -71,16 +71,17 @@ int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     QTextStream out(stdout);
-    out << "| components | nodes | solver ms | optimal | installs | cross-host Hz | goal ms |\n"
-        << "|-----------:|------:|----------:|:-------:|---------:|--------------:|--------:|\n";
+    out << "| components | nodes | solver ms | optimal | balanced | installs | cross-host Hz | goal ms |\n"
+        << "|-----------:|------:|----------:|:-------:|:--------:|---------:|--------------:|--------:|\n";
     const QList<QPair<int, int>> sizes {{100, 5}, {100, 20}, {1000, 5}, {1000, 20}};
     for (const auto &[components, nodes] : sizes) {
         const Plan plan = DeploymentPlanner({10000}).plan(problem(components, nodes));
-        out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 |\n")
+        out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 | %8 |\n")
                    .arg(components, 10)
                    .arg(nodes, 5)
                    .arg(plan.solveMs, 9, 'f', 1)
                    .arg(plan.feasible ? (plan.optimal ? "yes" : "no") : "NO PLAN", 7)
+                   .arg(plan.balanced ? "yes" : "no", 8)
                    .arg(plan.installs.size(), 8)
                    .arg(plan.crossHostRate, 13, 'f', 0)
                    .arg(components == 1000 && nodes == 20 ? QStringLiteral("1000") : QStringLiteral("-"), 7);

@@ -219,33 +219,39 @@ public:
         m_encoding.addPlacement(m_opt);
         for (const auto &capacity : m_encoding.capacities())
             m_opt.add(capacity.second);
-        m_crossings = m_encoding.addCrossings(m_opt);
     }
 
     SolverOutput run()
     {
         SolverOutput output;
-        setTimeout(m_ctx, m_opt, remaining(1.0));
-        const z3::check_result feasible = m_opt.check();
-        if (feasible == z3::unsat) {
+        // The first stage also finds out whether there is any placement at all.
+        const Outcome installs = stage(0.4, [this] { installObjective(); }, [this] { boundInstalls(); });
+        if (installs == Outcome::Unsat) {
             output.status = SolverOutput::Status::Infeasible;
             output.conflictingNodes = capacityConflict(m_input, qMax(1000, remaining(1.0)));
             return output;
         }
-        if (feasible != z3::sat || !keep(m_opt.get_model())) {
-            output.message = QString::fromUtf8(Z3_optimize_get_reason_unknown(m_ctx, m_opt));
+        if (installs == Outcome::NoModel && !anyModel()) {
+            output.message = m_reason;
             return output;
         }
-        const bool optimal = stage(0.4, [this] { installObjective(); }, [this] { boundInstalls(); })
-            && stage(0.6, [this] { linkObjective(); }, [this] { boundLinks(); })
-            && stage(1.0, [this] { m_encoding.addBalance(m_opt); }, [] {});
+        // What crosses hosts matters from here on; the first stage is smaller without it.
+        m_crossings = m_encoding.addCrossings(m_opt);
+        const Outcome links = stage(0.6, [this] { linkObjective(); }, [this] { boundLinks(); });
+        // Balance only breaks ties: it gets what is left, at most a quarter of the budget.
+        const Outcome balance = stage(qMin(1.0, 0.25 * m_input.timeoutMs / qMax(1, remaining(1.0))),
+                                      [this] { m_encoding.addBalance(m_opt); }, [] {});
         output.nodeOfUnit = m_best;
-        output.status = optimal ? SolverOutput::Status::Optimal : SolverOutput::Status::Feasible;
+        output.status = installs == Outcome::Proven && links == Outcome::Proven ? SolverOutput::Status::Optimal
+                                                                                : SolverOutput::Status::Feasible;
+        output.balanceProven = balance == Outcome::Proven;
         output.message = m_reason;
         return output;
     }
 
 private:
+    enum class Outcome { Proven, Improved, NoModel, Unsat };
+
     /// What is left of the time budget, scaled by @p part (the share this stage may take).
     int remaining(double part) const
     {
@@ -262,23 +268,35 @@ private:
         return true;
     }
 
-    template<typename Objective, typename Bound> bool stage(double part, Objective objective, Bound bound)
+    /// Any placement, without objectives, in what is left of the time.
+    bool anyModel()
+    {
+        setTimeout(m_ctx, m_opt, remaining(1.0));
+        return m_opt.check() == z3::sat && keep(m_opt.get_model());
+    }
+
+    template<typename Objective, typename Bound> Outcome stage(double part, Objective objective, Bound bound)
     {
         m_opt.push();
         objective();
         setTimeout(m_ctx, m_opt, remaining(part));
         const z3::check_result result = m_opt.check();
-        bool improved = false;
+        bool kept = false;
         try {
-            improved = result != z3::unsat && keep(m_opt.get_model());
+            kept = result != z3::unsat && keep(m_opt.get_model());
         } catch (const z3::exception &) {
             // No model in time: the previous stage's stands.
         }
         if (result != z3::sat)
             m_reason = QString::fromUtf8(Z3_optimize_get_reason_unknown(m_ctx, m_opt));
         m_opt.pop();
-        bound();
-        return result == z3::sat && improved;
+        if (result == z3::unsat)
+            return Outcome::Unsat;
+        if (!m_best.isEmpty())
+            bound();
+        if (!kept)
+            return Outcome::NoModel;
+        return result == z3::sat ? Outcome::Proven : Outcome::Improved;
     }
 
     void installObjective()

@@ -41,14 +41,16 @@ struct SolverOutput
     Status status = Status::Unknown;
     QList<int> nodeOfUnit; ///< per unit: the node chosen (when Optimal or Feasible)
     QList<int> conflictingNodes; ///< when Infeasible: nodes whose CPU capacity is too small
+    bool balanceProven = false; ///< the load balance (the last objective) is proven best too
     QString message; ///< the solver's reason when Unknown
 };
 
 /**
  * Places every unit on one of its nodes so that no node's CPU capacity is exceeded, minimising
- * in this order: installs, the weight of links between nodes, the largest balance figure. Z3
- * (its optimising solver) decides, bounded by `timeoutMs`; when time runs out the best placement
- * found so far comes back as Feasible.
+ * in this order: installs, the weight of links between nodes, how far nodes rise above the even
+ * balance figure. Z3 (its optimising solver) decides, one objective after the other, bounded by
+ * `timeoutMs`; Optimal when the first two are proven best, Feasible when time ran out first (the
+ * best placement found so far). The balance only breaks ties and gets at most a quarter of the time.
  */
 SolverOutput solvePlacement(const SolverInput &input);
 

@@ -62,6 +62,7 @@ QJsonObject planToJson(const Plan &plan)
         load.insert(it.key(), it.value());
     return QJsonObject {{QStringLiteral("feasible"), plan.feasible},
                         {QStringLiteral("optimal"), plan.optimal},
+                        {QStringLiteral("balanced"), plan.balanced},
                         {QStringLiteral("placements"), placementsJson(plan.placements)},
                         {QStringLiteral("installs"), installsJson(plan.installs)},
                         {QStringLiteral("unmet"), unmetJson(plan.unmet)},

@@ -286,6 +286,7 @@ Plan Run::plan()
     } else {
         m_plan.feasible = true;
         m_plan.optimal = output.status == SolverOutput::Status::Optimal;
+        m_plan.balanced = output.balanceProven;
         if (!m_plan.optimal)
             m_plan.warnings << QStringLiteral("the solver's time ran out: the plan is valid, perhaps not the best (%1)")
                                    .arg(output.message);
