@@ -10,6 +10,7 @@
 
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -95,6 +96,7 @@ private slots:
     void rtctlPlanJson();
     void rtctlPlanExplainsNoPlan();
     void rtctlPlanUsage();
+    void rtctlPlanInstallsFromRepository();
 };
 
 void TestPlannerInputs::requirementsFromRtcProfile()
@@ -312,6 +314,69 @@ void TestPlannerInputs::rtctlPlanUsage()
                                             QStringLiteral("--facts"), dataFile(QStringLiteral("nodes.yaml"))});
     QCOMPARE(notSystem.code, 1);
     QVERIFY2(notSystem.err.contains(QLatin1String("not an RTS profile")), qPrintable(notSystem.err));
+}
+
+/// Runs @p program, true when it exits 0; its output in @p output.
+static bool runTool(const QString &program, const QStringList &arguments, QString *output)
+{
+    QProcess process;
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    process.start(program, arguments);
+    const bool done = process.waitForFinished(60000);
+    *output = QString::fromUtf8(process.readAll());
+    return done && process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
+}
+
+// A type no node loads, in a repository for this machine's architecture only: installed once, on
+// the node of that architecture, for both components (its RTC profile comes from the package).
+void TestPlannerInputs::rtctlPlanInstallsFromRepository()
+{
+    QTemporaryDir dir;
+    QString output;
+    QVERIFY2(runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")}, &output), qPrintable(output));
+    const QString arch = output.trimmed();
+    const QString tree = dir.filePath(QStringLiteral("tree"));
+    QVERIFY(runTool(QStringLiteral("cp"), {QStringLiteral("-r"), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/packages/debtree"), tree},
+                    &output));
+    QFile control(tree + QStringLiteral("/DEBIAN/control"));
+    QVERIFY(control.open(QIODevice::ReadOnly));
+    const QByteArray text = control.readAll().replace("@ARCH@", arch.toLatin1());
+    control.close();
+    QVERIFY(control.open(QIODevice::WriteOnly | QIODevice::Truncate) && control.write(text) == text.size());
+    control.close();
+    const QString deb = dir.filePath(QStringLiteral("native.deb"));
+    QVERIFY2(runTool(QStringLiteral("dpkg-deb"), {QStringLiteral("--root-owner-group"), QStringLiteral("--build"), tree, deb},
+                     &output),
+             qPrintable(output));
+    const QString repo = dir.filePath(QStringLiteral("repo"));
+    QCOMPARE(runRtctl({QStringLiteral("repo"), QStringLiteral("init"), repo}).code, 0);
+    QCOMPARE(runRtctl({QStringLiteral("repo"), QStringLiteral("publish"), repo, deb}).code, 0);
+
+    const QByteArray nodes = QStringLiteral("- {name: other, os.name: Linux, os.arch: riscv64, supported_languages: C++}\n"
+                                            "- {name: native, os.name: Linux, os.arch: %1, supported_languages: C++}\n")
+                                 .arg(arch)
+                                 .toUtf8();
+    const RtctlResult result = runRtctl({QStringLiteral("plan"), dataFile(QStringLiteral("probe.xml")), QStringLiteral("--facts"),
+                                         factsFile(dir, nodes), QStringLiteral("--repo"), repo, QStringLiteral("--json")});
+    QVERIFY2(result.code == 0, qPrintable(result.err + result.out));
+    const QJsonObject plan = result.json().object();
+    const QJsonArray installs = plan.value(QStringLiteral("installs")).toArray();
+    QCOMPARE(installs.size(), 1);
+    QCOMPARE(installs.first().toObject().value(QStringLiteral("node")).toString(), QStringLiteral("native"));
+    QCOMPARE(installs.first().toObject().value(QStringLiteral("package")).toString(),
+             QStringLiteral("rtc-rtstudiotests-packaging-native"));
+    for (const QJsonValue &p : plan.value(QStringLiteral("placements")).toArray())
+        QCOMPARE(p.toObject().value(QStringLiteral("node")).toString(), QStringLiteral("native"));
+
+    // Its RTC profile (C++) came from the package: a node without C++ cannot take it.
+    QByteArray noCxx = nodes;
+    noCxx.replace("os.arch: " + arch.toUtf8() + ", supported_languages: C++", "os.arch: " + arch.toUtf8() + ", supported_languages: Python");
+    noCxx.replace("riscv64, supported_languages: C++", "riscv64");
+    const RtctlResult refused = runRtctl({QStringLiteral("plan"), dataFile(QStringLiteral("probe.xml")), QStringLiteral("--facts"),
+                                          factsFile(dir, noCxx), QStringLiteral("--repo"), repo});
+    QCOMPARE(refused.code, 1);
+    QVERIFY2(refused.err.contains(QLatin1String("Probe0: language C++ - no node meets it; closest native has Python")),
+             qPrintable(refused.err));
 }
 
 QTEST_GUILESS_MAIN(TestPlannerInputs)
