@@ -29,7 +29,8 @@ NodeFacts node(int index)
     for (int t = index % 2; t < Types; t += 2)
         loadable << QStringLiteral("Type%1").arg(t);
     facts.loadableTypes = loadable;
-    facts.userFacts.insert(QStringLiteral("devices"), index % 5 == 0 ? QStringLiteral("lidar0,camera0") : QString());
+    facts.userFacts.insert(QStringLiteral("devices"),
+                           index % 5 == 0 ? QStringLiteral("lidar0,camera0") : QString());
     return facts;
 }
 
@@ -57,12 +58,19 @@ PlanProblem problem(int components, int nodes)
     for (int c = 0; c < components; ++c)
         p.components << component(c);
     for (int c = 1; c < components; ++c)
-        p.links.append({p.components.at(c - 1).instanceName, p.components.at(c).instanceName, c % 4 == 0 ? 1000.0 : 10.0});
+        p.links.append({p.components.at(c - 1).instanceName, p.components.at(c).instanceName,
+                        c % 4 == 0 ? 1000.0 : 10.0});
     for (int t = 0; t < Types; ++t) {
-        p.packages.append({QStringLiteral("rtc-type%1").arg(t), QStringLiteral("1.0.0"), QStringLiteral("amd64"),
-                           QStringLiteral("librtsdk.so.0"), {QStringLiteral("Type%1").arg(t)}});
-        p.packages.append({QStringLiteral("rtc-type%1").arg(t), QStringLiteral("1.0.0"), QStringLiteral("arm64"),
-                           QStringLiteral("librtsdk.so.0"), {QStringLiteral("Type%1").arg(t)}});
+        p.packages.append({QStringLiteral("rtc-type%1").arg(t),
+                           QStringLiteral("1.0.0"),
+                           QStringLiteral("amd64"),
+                           QStringLiteral("librtsdk.so.0"),
+                           {QStringLiteral("Type%1").arg(t)}});
+        p.packages.append({QStringLiteral("rtc-type%1").arg(t),
+                           QStringLiteral("1.0.0"),
+                           QStringLiteral("arm64"),
+                           QStringLiteral("librtsdk.so.0"),
+                           {QStringLiteral("Type%1").arg(t)}});
     }
     return p;
 }
@@ -73,12 +81,14 @@ int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     QTextStream out(stdout);
-    out << "| components | nodes | budget ms | solver ms | optimal | balanced | installs | cross-host Hz | goal ms |\n"
-        << "|-----------:|------:|----------:|----------:|:-------:|:--------:|---------:|--------------:|--------:|\n";
+    out << "| components | nodes | budget ms | solver ms | optimal | balanced | installs | "
+           "cross-host Hz | goal ms |\n"
+        << "|-----------:|------:|----------:|----------:|:-------:|:--------:|---------:|---------"
+           "-----:|--------:|\n";
     // The default budget (10 s), then the largest size within the goal's second: the best plan the
     // solver found by then.
-    const QList<std::tuple<int, int, int>> runs {{100, 5, 10000}, {100, 20, 10000}, {1000, 5, 10000}, {1000, 20, 10000},
-                                                {1000, 20, 1000}};
+    const QList<std::tuple<int, int, int>> runs {
+        {100, 5, 10000}, {100, 20, 10000}, {1000, 5, 10000}, {1000, 20, 10000}, {1000, 20, 1000}};
     for (const auto &[components, nodes, budget] : runs) {
         const Plan plan = DeploymentPlanner({budget}).plan(problem(components, nodes));
         out << QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 | %7 | %8 | %9 |\n")
@@ -90,7 +100,9 @@ int main(int argc, char *argv[])
                    .arg(plan.balanced ? "yes" : "no", 8)
                    .arg(plan.installs.size(), 8)
                    .arg(plan.crossHostRate, 13, 'f', 0)
-                   .arg(components == 1000 && nodes == 20 ? QStringLiteral("1000") : QStringLiteral("-"), 7);
+                   .arg(components == 1000 && nodes == 20 ? QStringLiteral("1000")
+                                                          : QStringLiteral("-"),
+                        7);
         out.flush();
     }
     return 0;

@@ -30,7 +30,8 @@ void addProfile(const Profile::RtcProfile &profile, TypeProfiles *profiles)
 
 void readProfileFolder(const QString &folder, TypeProfiles *profiles, QStringList *warnings)
 {
-    QDirIterator it(folder, {QStringLiteral("*.xml"), QStringLiteral("*.yaml"), QStringLiteral("*.yml")},
+    QDirIterator it(folder,
+                    {QStringLiteral("*.xml"), QStringLiteral("*.yaml"), QStringLiteral("*.yml")},
                     QDir::Files, QDirIterator::Subdirectories);
     while (it.hasNext()) {
         const QString file = it.next();
@@ -39,7 +40,8 @@ void readProfileFolder(const QString &folder, TypeProfiles *profiles, QStringLis
         if (loaded && loaded->rtc)
             addProfile(*loaded->rtc, profiles);
         else if (!loaded)
-            *warnings << QStringLiteral("%1: not read (%2)").arg(file, diagnostics.value(0).toString());
+            *warnings
+                << QStringLiteral("%1: not read (%2)").arg(file, diagnostics.value(0).toString());
     }
 }
 
@@ -82,7 +84,8 @@ std::optional<Profile::RtsProfile> loadSystem(const QString &file, QString *erro
     if (loaded && loaded->rts)
         return loaded->rts;
     *error = loaded ? QStringLiteral("%1: not an RTS profile").arg(file)
-                    : (diagnostics.isEmpty() ? QStringLiteral("%1: not read").arg(file) : diagnostics.first().toString());
+                    : (diagnostics.isEmpty() ? QStringLiteral("%1: not read").arg(file)
+                                             : diagnostics.first().toString());
     return std::nullopt;
 }
 
@@ -143,7 +146,8 @@ QString PlanCommand::usage() const
         "SYSTEM runs: every requirement of its RTC profile (language, OS, architecture) and of\n"
         "the deploy.* properties (devices, node facts, CPU share, shared process, pin) must hold,\n"
         "and its type must be loadable there or installable from the repository. Among such\n"
-        "plans: fewest installs, then the least connector rate between hosts, then even CPU load.\n\n"
+        "plans: fewest installs, then the least connector rate between hosts, then even CPU "
+        "load.\n\n"
         "  --nodes M1,M2,…     managers, as rtctl mgr takes them (corbaloc::host:port, paths);\n"
         "                      their facts are read from their profiles\n"
         "  --facts FILE        node facts from a JSON or YAML file (one entry per node)\n"
@@ -164,8 +168,8 @@ QStringList PlanCommand::optionNames() const
             QStringLiteral("--profiles"), QStringLiteral("--solver-timeout")};
 }
 
-bool PlanCommand::readNodes(const RtOptions &options, Planner::PlanProblem *problem, QStringList *warnings,
-                            Streams streams) const
+bool PlanCommand::readNodes(const RtOptions &options, Planner::PlanProblem *problem,
+                            QStringList *warnings, Streams streams) const
 {
     for (const QString &file : options.values.value(QStringLiteral("--facts"))) {
         QString error;
@@ -202,10 +206,11 @@ void PlanCommand::print(const Planner::Plan &plan, Streams streams) const
     if (!plan.feasible) {
         streams.err << "rtctl plan: no plan:\n";
         for (const Planner::Unmet &u : plan.unmet)
-            streams.err << "  " << (u.instanceName.isEmpty() ? QStringLiteral("system") : u.instanceName) << ": "
-                        << u.requirement << " - no node meets it; closest "
-                        << (u.closestNode.isEmpty() ? QStringLiteral("none") : u.closestNode) << " has " << u.found
-                        << '\n';
+            streams.err << "  "
+                        << (u.instanceName.isEmpty() ? QStringLiteral("system") : u.instanceName)
+                        << ": " << u.requirement << " - no node meets it; closest "
+                        << (u.closestNode.isEmpty() ? QStringLiteral("none") : u.closestNode)
+                        << " has " << u.found << '\n';
         streams.err.flush();
         return;
     }
@@ -218,14 +223,18 @@ int PlanCommand::execute(const RtOptions &options, Streams streams)
 {
     if (options.positionals.size() != 1)
         return usageError(QStringLiteral("give one SYSTEM file"), streams);
-    if (!options.values.contains(QStringLiteral("--nodes")) && !options.values.contains(QStringLiteral("--facts")))
-        return usageError(QStringLiteral("give the nodes: --nodes M1,M2,… or --facts FILE"), streams);
+    if (!options.values.contains(QStringLiteral("--nodes"))
+        && !options.values.contains(QStringLiteral("--facts")))
+        return usageError(QStringLiteral("give the nodes: --nodes M1,M2,… or --facts FILE"),
+                          streams);
     Planner::PlanOptions planOptions;
     if (options.values.contains(QStringLiteral("--solver-timeout"))) {
         bool ok = false;
         planOptions.timeoutMs = options.value(QStringLiteral("--solver-timeout")).toInt(&ok);
         if (!ok || planOptions.timeoutMs <= 0)
-            return usageError(QStringLiteral("--solver-timeout needs a positive number of milliseconds"), streams);
+            return usageError(
+                QStringLiteral("--solver-timeout needs a positive number of milliseconds"),
+                streams);
     }
     QString error;
     const auto system = loadSystem(options.positionals.first(), &error);

@@ -19,7 +19,8 @@ std::string osReleaseValue(const std::string &text, const std::string &key)
     std::size_t at = 0;
     while (at < text.size()) {
         const std::size_t end = text.find('\n', at);
-        const std::string line = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
+        const std::string line
+            = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
         if (line.compare(0, key.size() + 1, key + "=") == 0) {
             std::string value = line.substr(key.size() + 1);
             if (value.size() >= 2 && (value.front() == '"' || value.front() == '\''))

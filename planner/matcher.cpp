@@ -56,17 +56,21 @@ bool hasFact(const NodeFacts &node, const QString &fact, const QString &value)
 void checkPlatform(const ComponentRequirements &c, const NodeFacts &node, QList<Mismatch> *out)
 {
     if (!c.oses.isEmpty() && !(node.os && c.oses.contains(*node.os, Qt::CaseInsensitive)))
-        out->append({QStringLiteral("OS %1").arg(c.oses.join(QStringLiteral(" or "))), known(node.os)});
+        out->append(
+            {QStringLiteral("OS %1").arg(c.oses.join(QStringLiteral(" or "))), known(node.os)});
     if (!c.osVersions.isEmpty() && !startsWithAny(node.distribution, c.osVersions)
         && !startsWithAny(node.osRelease, c.osVersions))
         out->append({QStringLiteral("OS version %1").arg(c.osVersions.join(QStringLiteral(" or "))),
                      node.distribution.value_or(known(node.osRelease))});
     bool archOk = c.architectures.isEmpty();
     for (const QString &arch : c.architectures)
-        archOk = archOk || (node.architecture && canonicalArchitecture(arch) == canonicalArchitecture(*node.architecture));
+        archOk = archOk
+            || (node.architecture
+                && canonicalArchitecture(arch) == canonicalArchitecture(*node.architecture));
     if (!archOk)
-        out->append({QStringLiteral("architecture %1").arg(c.architectures.join(QStringLiteral(" or "))),
-                     known(node.architecture)});
+        out->append(
+            {QStringLiteral("architecture %1").arg(c.architectures.join(QStringLiteral(" or "))),
+             known(node.architecture)});
 }
 
 void checkUserFacts(const ComponentRequirements &c, const NodeFacts &node, QList<Mismatch> *out)
@@ -75,7 +79,8 @@ void checkUserFacts(const ComponentRequirements &c, const NodeFacts &node, QList
     for (const QString &device : c.devices) {
         if (!devices.contains(device))
             out->append({QStringLiteral("device %1").arg(device),
-                         devices.isEmpty() ? QStringLiteral("no devices listed") : devices.join(QLatin1Char(','))});
+                         devices.isEmpty() ? QStringLiteral("no devices listed")
+                                           : devices.join(QLatin1Char(','))});
     }
     for (auto it = c.nodeFacts.constBegin(); it != c.nodeFacts.constEnd(); ++it) {
         if (!hasFact(node, it.key(), it.value()))
@@ -100,13 +105,14 @@ void checkPlacement(const ComponentRequirements &c, const NodeFacts &node, QList
 
 Matcher::Matcher(QList<RepositoryPackage> packages)
     : m_packages(std::move(packages))
-{
-}
+{ }
 
 bool Matcher::packageFits(const RepositoryPackage &package, const NodeFacts &node) const
 {
     const bool archOk = package.architecture == QLatin1String("all")
-        || (node.architecture && canonicalArchitecture(package.architecture) == canonicalArchitecture(*node.architecture));
+        || (node.architecture
+            && canonicalArchitecture(package.architecture)
+                == canonicalArchitecture(*node.architecture));
     const bool abiOk = package.sdkAbi.isEmpty() || (node.sdkAbi && *node.sdkAbi == package.sdkAbi);
     return archOk && abiOk;
 }
@@ -122,7 +128,8 @@ Matcher::TypeSource Matcher::typeSource(const QString &typeName, const NodeFacts
         if (!package.types.contains(typeName) || !packageFits(package, node))
             continue;
         if (!source.package
-            || QVersionNumber::fromString(package.version) > QVersionNumber::fromString(source.package->version))
+            || QVersionNumber::fromString(package.version)
+                > QVersionNumber::fromString(source.package->version))
             source.package = &package;
     }
     return source;
@@ -140,8 +147,9 @@ QList<Mismatch> Matcher::mismatches(const ComponentRequirements &c, const NodeFa
                     node.languages ? node.languages->join(QLatin1Char(',')) : Unknown});
     checkUserFacts(c, node, &out);
     if (!source.available())
-        out.append({QStringLiteral("type %1 loadable or installable").arg(c.typeName),
-                    QStringLiteral("not loadable, no package for %1").arg(known(node.architecture))});
+        out.append(
+            {QStringLiteral("type %1 loadable or installable").arg(c.typeName),
+             QStringLiteral("not loadable, no package for %1").arg(known(node.architecture))});
     return out;
 }
 

@@ -11,7 +11,8 @@ namespace Planner {
 /// One requirement a node does not meet: what was required and what the node has.
 struct Mismatch
 {
-    QString requirement; ///< "architecture aarch64", "device lidar0", "type Camera loadable or installable"
+    QString requirement; ///< "architecture aarch64", "device lidar0", "type Camera loadable or
+                         ///< installable"
     QString found; ///< "x86_64", "unknown", "not listed"
 };
 

@@ -16,7 +16,8 @@ std::optional<QString> text(const QMap<QString, QString> &values, const QString 
 }
 
 template<typename Number, typename Convert>
-std::optional<Number> number(const QMap<QString, QString> &values, const QString &key, Convert convert)
+std::optional<Number> number(const QMap<QString, QString> &values, const QString &key,
+                             Convert convert)
 {
     const std::optional<QString> value = text(values, key);
     if (!value)

@@ -32,7 +32,8 @@ struct NodeFacts
     std::optional<double> loadAverage; ///< `rtstudio.load_average` (one minute)
     std::optional<QString> sdkAbi; ///< `rtstudio.sdk_abi` (SONAME of the component SDK)
     std::optional<QStringList> languages; ///< `supported_languages` (OpenRTM-aist's key)
-    std::optional<QStringList> loadableTypes; ///< component types it can create (get_loadable_modules)
+    std::optional<QStringList>
+        loadableTypes; ///< component types it can create (get_loadable_modules)
     std::optional<QStringList> packages; ///< installed component packages (`rtstudio.packages`)
     QMap<QString, QString> userFacts; ///< the manager's `node.*` configuration, without `node.`
 
@@ -56,7 +57,8 @@ struct NodeFacts
 /// A comma- or space-separated list (`lidar0, camera0`) as its items.
 QStringList splitFactList(const QString &text);
 
-/// Architecture names as uname, Debian and RTC profiles spell them, folded onto one (amd64 → x86_64).
+/// Architecture names as uname, Debian and RTC profiles spell them, folded onto one (amd64 →
+/// x86_64).
 QString canonicalArchitecture(const QString &name);
 
 } // namespace Planner

@@ -77,13 +77,15 @@ QList<NodeFacts> readNodes(const YAML::Node &root)
 {
     const YAML::Node list = root.IsMap() ? root["nodes"] : root;
     if (!list || !list.IsSequence())
-        throw FactsError {lineOf(root), QStringLiteral("expected a list of nodes (or 'nodes:' with one)")};
+        throw FactsError {lineOf(root),
+                          QStringLiteral("expected a list of nodes (or 'nodes:' with one)")};
     QList<NodeFacts> nodes;
     QSet<QString> names;
     for (const YAML::Node &entry : list) {
         NodeFacts facts = readNode(entry);
         if (names.contains(facts.name))
-            throw FactsError {lineOf(entry), QStringLiteral("node '%1' is listed twice").arg(facts.name)};
+            throw FactsError {lineOf(entry),
+                              QStringLiteral("node '%1' is listed twice").arg(facts.name)};
         names.insert(facts.name);
         nodes << std::move(facts);
     }

@@ -31,7 +31,8 @@ public:
         for (int u = 0; u < input.units.size(); ++u) {
             z3::expr_vector x(ctx);
             for (int k = 0; k < input.units.at(u).nodes.size(); ++k)
-                x.push_back(ctx.bool_const(("x" + std::to_string(u) + "_" + std::to_string(k)).c_str()));
+                x.push_back(
+                    ctx.bool_const(("x" + std::to_string(u) + "_" + std::to_string(k)).c_str()));
             m_x.push_back(x);
         }
         for (int i = 0; i < input.installCount; ++i)
@@ -69,7 +70,8 @@ public:
                 }
             });
             if (!terms.empty())
-                result.emplace_back(n, z3::pble(terms, coefficients.data(), m_input.capacityMilli.at(n)));
+                result.emplace_back(
+                    n, z3::pble(terms, coefficients.data(), m_input.capacityMilli.at(n)));
         }
         return result;
     }
@@ -95,7 +97,8 @@ public:
     /**
      * Soft limits on each node's balance figure at levels above the even share (the average over
      * the nodes): every level a node exceeds costs one. Pseudo-Boolean, as all else, so that the
-     * optimiser stays on its SAT engine (a minimised maximum would bring in arithmetic, far slower).
+     * optimiser stays on its SAT engine (a minimised maximum would bring in arithmetic, far
+     * slower).
      */
     void addBalance(z3::optimize &opt) const
     {
@@ -162,7 +165,6 @@ private:
     z3::expr_vector m_installs;
 };
 
-
 void setTimeout(z3::context &ctx, z3::optimize &opt, int ms)
 {
     z3::params p(ctx);
@@ -225,7 +227,8 @@ public:
     {
         SolverOutput output;
         // The first stage also finds out whether there is any placement at all.
-        const Outcome installs = stage(0.4, [this] { installObjective(); }, [this] { boundInstalls(); });
+        const Outcome installs = stage(
+            0.4, [this] { installObjective(); }, [this] { boundInstalls(); });
         if (installs == Outcome::Unsat) {
             output.status = SolverOutput::Status::Infeasible;
             output.conflictingNodes = capacityConflict(m_input, qMax(1000, remaining(1.0)));
@@ -237,13 +240,16 @@ public:
         }
         // What crosses hosts matters from here on; the first stage is smaller without it.
         m_crossings = m_encoding.addCrossings(m_opt);
-        const Outcome links = stage(0.6, [this] { linkObjective(); }, [this] { boundLinks(); });
+        const Outcome links = stage(
+            0.6, [this] { linkObjective(); }, [this] { boundLinks(); });
         // Balance only breaks ties: it gets what is left, at most a quarter of the budget.
-        const Outcome balance = stage(qMin(1.0, 0.25 * m_input.timeoutMs / qMax(1, remaining(1.0))),
-                                      [this] { m_encoding.addBalance(m_opt); }, [] {});
+        const Outcome balance = stage(
+            qMin(1.0, 0.25 * m_input.timeoutMs / qMax(1, remaining(1.0))),
+            [this] { m_encoding.addBalance(m_opt); }, [] {});
         output.nodeOfUnit = m_best;
-        output.status = installs == Outcome::Proven && links == Outcome::Proven ? SolverOutput::Status::Optimal
-                                                                                : SolverOutput::Status::Feasible;
+        output.status = installs == Outcome::Proven && links == Outcome::Proven
+            ? SolverOutput::Status::Optimal
+            : SolverOutput::Status::Feasible;
         output.balanceProven = balance == Outcome::Proven;
         output.message = m_reason;
         return output;
@@ -275,7 +281,8 @@ private:
         return m_opt.check() == z3::sat && keep(m_opt.get_model());
     }
 
-    template<typename Objective, typename Bound> Outcome stage(double part, Objective objective, Bound bound)
+    template<typename Objective, typename Bound>
+    Outcome stage(double part, Objective objective, Bound bound)
     {
         m_opt.push();
         objective();

@@ -50,7 +50,8 @@ struct SolverOutput
  * in this order: installs, the weight of links between nodes, how far nodes rise above the even
  * balance figure. Z3 (its optimising solver) decides, one objective after the other, bounded by
  * `timeoutMs`; Optimal when the first two are proven best, Feasible when time ran out first (the
- * best placement found so far). The balance only breaks ties and gets at most a quarter of the time.
+ * best placement found so far). The balance only breaks ties and gets at most a quarter of the
+ * time.
  */
 SolverOutput solvePlacement(const SolverInput &input);
 

@@ -43,7 +43,8 @@ struct Unmet
 struct Plan
 {
     bool feasible = false;
-    bool optimal = false; ///< installs and connector rate proven least (false: the time ran out first)
+    bool optimal
+        = false; ///< installs and connector rate proven least (false: the time ran out first)
     bool balanced = false; ///< the CPU balance is proven best too (it only breaks ties)
     QList<Placement> placements; ///< in the system's component order
     QList<Install> installs;

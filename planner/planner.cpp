@@ -33,8 +33,7 @@ public:
         : m_problem(problem)
         , m_options(options)
         , m_matcher(problem.packages)
-    {
-    }
+    { }
 
     Plan plan();
 
@@ -141,11 +140,12 @@ bool Run::explainUnits()
         for (const int c : unit.members) {
             if (m_mismatches.at(c).at(closest).isEmpty())
                 continue;
-            m_plan.unmet.append({m_problem.components.at(c).instanceName,
-                                 QStringLiteral("same process (%1) as %2")
-                                     .arg(unit.process, m_problem.components.at(first).instanceName),
-                                 m_problem.nodes.at(closest).name,
-                                 m_mismatches.at(c).at(closest).first().requirement + QStringLiteral(" not met")});
+            m_plan.unmet.append(
+                {m_problem.components.at(c).instanceName,
+                 QStringLiteral("same process (%1) as %2")
+                     .arg(unit.process, m_problem.components.at(first).instanceName),
+                 m_problem.nodes.at(closest).name,
+                 m_mismatches.at(c).at(closest).first().requirement + QStringLiteral(" not met")});
         }
     }
     return m_plan.unmet.isEmpty();
@@ -189,7 +189,8 @@ SolverInput Run::solverInput()
     for (int n = 0; n < m_problem.nodes.size(); ++n) {
         const std::optional<double> free = m_problem.nodes.at(n).freeCpus();
         input.capacityMilli << (free ? int(std::floor(*free * 1000)) : -1);
-        input.baseBalance << int(std::lround(m_problem.nodes.at(n).loadAverage.value_or(0) * 1000 / cpusOf(n)));
+        input.baseBalance << int(
+            std::lround(m_problem.nodes.at(n).loadAverage.value_or(0) * 1000 / cpusOf(n)));
     }
     for (const Unit &unit : std::as_const(m_units)) {
         SolverUnit su;
@@ -235,8 +236,10 @@ void Run::explainCapacity(const QList<int> &nodes)
         }
     }
     m_plan.unmet.append({components.join(QStringLiteral(", ")),
-                         QStringLiteral("CPU shares together within the free CPUs of %1").arg(names.join(QStringLiteral(", "))),
-                         names.value(0), QStringLiteral("%1 CPUs free").arg(free.join(QStringLiteral(" + ")))});
+                         QStringLiteral("CPU shares together within the free CPUs of %1")
+                             .arg(names.join(QStringLiteral(", "))),
+                         names.value(0),
+                         QStringLiteral("%1 CPUs free").arg(free.join(QStringLiteral(" + ")))});
 }
 
 void Run::readSolution(const SolverOutput &output)
@@ -247,12 +250,17 @@ void Run::readSolution(const SolverOutput &output)
         const int n = output.nodeOfUnit.at(u);
         for (const int c : unit.members) {
             const ComponentRequirements &component = m_problem.components.at(c);
-            const Matcher::TypeSource source = m_matcher.typeSource(component.typeName, m_problem.nodes.at(n));
-            Placement p {component.instanceName, component.typeName, m_problem.nodes.at(n).name,
+            const Matcher::TypeSource source
+                = m_matcher.typeSource(component.typeName, m_problem.nodes.at(n));
+            Placement p {component.instanceName,
+                         component.typeName,
+                         m_problem.nodes.at(n).name,
                          unit.process.isEmpty() ? component.instanceName : unit.process,
-                         unit.members.size() > 1, source.package ? source.package->package : QString()};
+                         unit.members.size() > 1,
+                         source.package ? source.package->package : QString()};
             m_plan.placements.append(p);
-            if (source.package && !installed.contains(m_installIndex.value({source.package->package, n}))) {
+            if (source.package
+                && !installed.contains(m_installIndex.value({source.package->package, n}))) {
                 installed.insert(m_installIndex.value({source.package->package, n}));
                 m_plan.installs.append({p.node, source.package->package, source.package->version});
             }
@@ -266,7 +274,8 @@ Plan Run::plan()
     QElapsedTimer clock;
     clock.start();
     if (m_problem.nodes.isEmpty()) {
-        m_plan.unmet.append({QString(), QStringLiteral("a node to run on"), QString(), QStringLiteral("no nodes given")});
+        m_plan.unmet.append({QString(), QStringLiteral("a node to run on"), QString(),
+                             QStringLiteral("no nodes given")});
         return m_plan;
     }
     matchComponents();
@@ -274,22 +283,26 @@ Plan Run::plan()
     if (!explainComponents() || !explainUnits())
         return m_plan;
     for (int n = 0; n < m_problem.nodes.size(); ++n)
-        m_plan.cpuLoad.insert(m_problem.nodes.at(n).name, m_problem.nodes.at(n).loadAverage.value_or(0) / cpusOf(n));
+        m_plan.cpuLoad.insert(m_problem.nodes.at(n).name,
+                              m_problem.nodes.at(n).loadAverage.value_or(0) / cpusOf(n));
     const SolverInput input = solverInput();
     const SolverOutput output = solvePlacement(input);
     m_plan.solveMs = double(clock.nsecsElapsed()) / 1e6;
     if (output.status == SolverOutput::Status::Infeasible) {
         explainCapacity(output.conflictingNodes);
     } else if (output.status == SolverOutput::Status::Unknown) {
-        m_plan.unmet.append({QString(), QStringLiteral("a plan within %1 ms").arg(m_options.timeoutMs), QString(),
-                             output.message});
+        m_plan.unmet.append({QString(),
+                             QStringLiteral("a plan within %1 ms").arg(m_options.timeoutMs),
+                             QString(), output.message});
     } else {
         m_plan.feasible = true;
         m_plan.optimal = output.status == SolverOutput::Status::Optimal;
         m_plan.balanced = output.balanceProven;
         if (!m_plan.optimal)
-            m_plan.warnings << QStringLiteral("the solver's time ran out: the plan is valid, perhaps not the best (%1)")
-                                   .arg(output.message);
+            m_plan.warnings
+                << QStringLiteral(
+                       "the solver's time ran out: the plan is valid, perhaps not the best (%1)")
+                       .arg(output.message);
         readSolution(output);
         for (const SolverLink &link : input.links) {
             if (output.nodeOfUnit.at(link.a) != output.nodeOfUnit.at(link.b))
@@ -303,8 +316,7 @@ Plan Run::plan()
 
 DeploymentPlanner::DeploymentPlanner(PlanOptions options)
     : m_options(options)
-{
-}
+{ }
 
 Plan DeploymentPlanner::plan(const PlanProblem &problem) const
 {

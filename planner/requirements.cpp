@@ -35,7 +35,8 @@ void addRtcProperties(const Profile::RtcProperties &properties, PropertyMap *out
     }
 }
 
-void readProfile(const Profile::RtcProfile &profile, ComponentRequirements *r, PropertyMap *properties)
+void readProfile(const Profile::RtcProfile &profile, ComponentRequirements *r,
+                 PropertyMap *properties)
 {
     addRtcProperties(profile.basicInfo.properties, properties);
     if (!profile.language)
@@ -54,8 +55,8 @@ void readProfile(const Profile::RtcProfile &profile, ComponentRequirements *r, P
     r->architectures.removeAll(QString());
 }
 
-void applyProperties(const PropertyMap &properties, const QString &instance, ComponentRequirements *r,
-                     QStringList *warnings)
+void applyProperties(const PropertyMap &properties, const QString &instance,
+                     ComponentRequirements *r, QStringList *warnings)
 {
     for (auto it = properties.constBegin(); it != properties.constEnd(); ++it) {
         const QString &key = it.key();
@@ -143,13 +144,16 @@ double componentRate(const Profile::RtsProfile &system, const QString &instance,
     return profile ? profile->basicInfo.executionRateValue().value_or(0) : 0;
 }
 
-QList<Link> readLinks(const Profile::RtsProfile &system, const QHash<QString, Profile::RtcProfile> &typeProfiles)
+QList<Link> readLinks(const Profile::RtsProfile &system,
+                      const QHash<QString, Profile::RtcProfile> &typeProfiles)
 {
     QList<Link> links;
     for (const Profile::RtsDataPortConnector &connector : system.dataPortConnectors) {
         Link link {connector.source.instanceName, connector.target.instanceName, 0};
         bool ok = false;
-        const double rate = Profile::rtsPropertyValue(connector.properties, Key::Rate).value_or(QString()).toDouble(&ok);
+        const double rate = Profile::rtsPropertyValue(connector.properties, Key::Rate)
+                                .value_or(QString())
+                                .toDouble(&ok);
         link.rate = ok ? rate : componentRate(system, link.source, typeProfiles);
         links << link;
     }
@@ -164,9 +168,11 @@ SystemRequirements readRequirements(const Profile::RtsProfile &system,
     SystemRequirements result;
     QStringList unprofiled;
     for (const Profile::RtsComponent &component : system.components)
-        result.components << componentRequirements(component, typeProfiles, &unprofiled, &result.warnings);
+        result.components << componentRequirements(component, typeProfiles, &unprofiled,
+                                                   &result.warnings);
     if (!unprofiled.isEmpty())
-        result.warnings << QStringLiteral("no RTC profile of %1: only the components' own deploy.* properties are required")
+        result.warnings << QStringLiteral("no RTC profile of %1: only the components' own deploy.* "
+                                          "properties are required")
                                .arg(unprofiled.join(QStringLiteral(", ")));
     groupComposites(system, &result.components);
     result.links = readLinks(system, typeProfiles);

@@ -20,7 +20,8 @@ namespace Planner {
 namespace Key {
 inline const QString Devices = QStringLiteral("deploy.devices"); ///< devices the node must have
 inline const QString CpuShare = QStringLiteral("deploy.cpu_share"); ///< CPUs it needs (0.5)
-inline const QString NodeFactPrefix = QStringLiteral("deploy.node."); ///< `deploy.node.role: onboard`
+inline const QString NodeFactPrefix
+    = QStringLiteral("deploy.node."); ///< `deploy.node.role: onboard`
 inline const QString Process = QStringLiteral("deploy.process"); ///< shares the process so named
 inline const QString Pin = QStringLiteral("deploy.pin"); ///< RTS only: the node it must run on
 inline const QString Rate = QStringLiteral("deploy.rate"); ///< connectors: data rate in Hz

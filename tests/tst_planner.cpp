@@ -47,7 +47,8 @@ QString describe(const Plan &plan)
 {
     QStringList lines;
     for (const Unmet &u : plan.unmet)
-        lines << QStringLiteral("%1: %2 (closest %3: %4)").arg(u.instanceName, u.requirement, u.closestNode, u.found);
+        lines << QStringLiteral("%1: %2 (closest %3: %4)")
+                     .arg(u.instanceName, u.requirement, u.closestNode, u.found);
     return lines.join(QLatin1Char('\n'));
 }
 
@@ -128,7 +129,10 @@ void TestPlanner::singleRequirement()
     }
     PlanProblem problem;
     if (fromRepository)
-        problem.packages.append({QStringLiteral("rtc-py"), QStringLiteral("1.0"), QStringLiteral("all"), QString(),
+        problem.packages.append({QStringLiteral("rtc-py"),
+                                 QStringLiteral("1.0"),
+                                 QStringLiteral("all"),
+                                 QString(),
                                  {QStringLiteral("PyComp")}});
     problem.nodes << bad << good;
     problem.components << c;
@@ -163,7 +167,10 @@ void TestPlanner::unknownFactsNeverMatch()
     silent.loadableTypes = QStringList();
     ComponentRequirements c = component(QStringLiteral("C"), QStringLiteral("U"));
     PlanProblem problem;
-    problem.packages.append({QStringLiteral("rtc-u"), QStringLiteral("1.0"), QStringLiteral("amd64"), QString(),
+    problem.packages.append({QStringLiteral("rtc-u"),
+                             QStringLiteral("1.0"),
+                             QStringLiteral("amd64"),
+                             QString(),
                              {QStringLiteral("U")}});
     if (fact == QLatin1String("architecture")) {
         silent.architecture.reset();
@@ -225,7 +232,8 @@ void TestPlanner::cpuShareBeyondCapacityIsExplained()
     QVERIFY(!result.feasible);
     QCOMPARE(result.unmet.size(), qsizetype(1));
     QCOMPARE(result.unmet.first().instanceName, QStringLiteral("C1, C2"));
-    QVERIFY2(result.unmet.first().requirement.contains(QLatin1String("CPU")), qPrintable(describe(result)));
+    QVERIFY2(result.unmet.first().requirement.contains(QLatin1String("CPU")),
+             qPrintable(describe(result)));
     QCOMPARE(result.unmet.first().closestNode, QStringLiteral("a"));
     QCOMPARE(result.unmet.first().found, QStringLiteral("1 CPUs free"));
 }
@@ -333,10 +341,16 @@ void TestPlanner::installsWhereNotLoadable()
     b.architecture = QStringLiteral("aarch64");
     PlanProblem problem;
     problem.nodes << a << b;
-    problem.packages.append({QStringLiteral("rtc-camera"), QStringLiteral("1.0"), QStringLiteral("arm64"),
-                             QStringLiteral("librtsdk.so.0"), {QStringLiteral("Camera")}});
-    problem.packages.append({QStringLiteral("rtc-camera"), QStringLiteral("1.2"), QStringLiteral("arm64"),
-                             QStringLiteral("librtsdk.so.0"), {QStringLiteral("Camera")}});
+    problem.packages.append({QStringLiteral("rtc-camera"),
+                             QStringLiteral("1.0"),
+                             QStringLiteral("arm64"),
+                             QStringLiteral("librtsdk.so.0"),
+                             {QStringLiteral("Camera")}});
+    problem.packages.append({QStringLiteral("rtc-camera"),
+                             QStringLiteral("1.2"),
+                             QStringLiteral("arm64"),
+                             QStringLiteral("librtsdk.so.0"),
+                             {QStringLiteral("Camera")}});
     problem.components << component(QStringLiteral("Cam"), QStringLiteral("Camera"));
     const Plan result = plan(problem);
     QVERIFY2(result.feasible, qPrintable(describe(result)));
@@ -354,8 +368,11 @@ void TestPlanner::fewestInstalls()
     b.loadableTypes = QStringList {QStringLiteral("T"), QStringLiteral("Camera")};
     PlanProblem problem;
     problem.nodes << a << b;
-    problem.packages.append({QStringLiteral("rtc-camera"), QStringLiteral("1.0"), QStringLiteral("amd64"),
-                             QStringLiteral("librtsdk.so.0"), {QStringLiteral("Camera")}});
+    problem.packages.append({QStringLiteral("rtc-camera"),
+                             QStringLiteral("1.0"),
+                             QStringLiteral("amd64"),
+                             QStringLiteral("librtsdk.so.0"),
+                             {QStringLiteral("Camera")}});
     for (int i = 0; i < 4; ++i)
         problem.components << component(QStringLiteral("Cam%1").arg(i), QStringLiteral("Camera"));
     const Plan result = plan(problem);
@@ -370,14 +387,21 @@ void TestPlanner::packageForOtherArchitectureIsNoSource()
     NodeFacts a = node(QStringLiteral("a"));
     PlanProblem problem;
     problem.nodes << a;
-    problem.packages.append({QStringLiteral("rtc-camera"), QStringLiteral("1.0"), QStringLiteral("arm64"), QString(),
+    problem.packages.append({QStringLiteral("rtc-camera"),
+                             QStringLiteral("1.0"),
+                             QStringLiteral("arm64"),
+                             QString(),
                              {QStringLiteral("Camera")}});
-    problem.packages.append({QStringLiteral("rtc-camera"), QStringLiteral("1.0"), QStringLiteral("amd64"),
-                             QStringLiteral("librtsdk.so.9"), {QStringLiteral("Camera")}});
+    problem.packages.append({QStringLiteral("rtc-camera"),
+                             QStringLiteral("1.0"),
+                             QStringLiteral("amd64"),
+                             QStringLiteral("librtsdk.so.9"),
+                             {QStringLiteral("Camera")}});
     problem.components << component(QStringLiteral("Cam"), QStringLiteral("Camera"));
     const Plan result = plan(problem);
     QVERIFY(!result.feasible);
-    QCOMPARE(result.unmet.first().requirement, QStringLiteral("type Camera loadable or installable"));
+    QCOMPARE(result.unmet.first().requirement,
+             QStringLiteral("type Camera loadable or installable"));
 }
 
 void TestPlanner::highRateConnectorStaysInsideHost()
@@ -389,7 +413,8 @@ void TestPlanner::highRateConnectorStaysInsideHost()
     problem.nodes << a << b;
     // Two fit on a node. Counting connectors, A,C | B,D is best (one crosses); weighing them by
     // rate, A,B | C,D (the 1 kHz one inside, two 1 Hz ones across).
-    for (const QString &name : {QStringLiteral("A"), QStringLiteral("C"), QStringLiteral("B"), QStringLiteral("D")}) {
+    for (const QString &name :
+         {QStringLiteral("A"), QStringLiteral("C"), QStringLiteral("B"), QStringLiteral("D")}) {
         ComponentRequirements c = component(name);
         c.cpuShare = 0.45;
         problem.components << c;

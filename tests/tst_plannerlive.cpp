@@ -24,7 +24,10 @@ private slots:
     void rtctlPlanWithoutTheDeviceNode();
 
 private:
-    QString address(quint16 port) const { return QStringLiteral("corbaloc::127.0.0.1:%1").arg(port); }
+    QString address(quint16 port) const
+    {
+        return QStringLiteral("corbaloc::127.0.0.1:%1").arg(port);
+    }
 
     LiveTest::LiveSystem m_live;
     quint16 m_onboard = 0;
@@ -37,13 +40,15 @@ void TestPlannerLive::initTestCase()
     QString error;
     m_onboard = LiveTest::freePort();
     QVERIFY2(m_live.startManager(QStringLiteral(RTMANAGER_PATH), m_onboard,
-                                 {QStringLiteral("naming.enable=NO"), QStringLiteral("node.devices=lidar0,camera0"),
+                                 {QStringLiteral("naming.enable=NO"),
+                                  QStringLiteral("node.devices=lidar0,camera0"),
                                   QStringLiteral("node.role=onboard")},
                                  &error),
              qPrintable(error));
     m_base = LiveTest::freePort();
-    QVERIFY2(m_live.startManager(QStringLiteral(RTMANAGER_PATH), m_base,
-                                 {QStringLiteral("naming.enable=NO"), QStringLiteral("node.role=base")}, &error),
+    QVERIFY2(m_live.startManager(
+                 QStringLiteral(RTMANAGER_PATH), m_base,
+                 {QStringLiteral("naming.enable=NO"), QStringLiteral("node.role=base")}, &error),
              qPrintable(error));
 }
 
@@ -54,7 +59,8 @@ void TestPlannerLive::cleanupTestCase()
 
 void TestPlannerLive::readsFactsOfManagers()
 {
-    const QList<Deploy::NodeFactsReading> readings = Deploy::readNodeFacts({address(m_onboard), address(m_base)});
+    const QList<Deploy::NodeFactsReading> readings
+        = Deploy::readNodeFacts({address(m_onboard), address(m_base)});
     QCOMPARE(readings.size(), qsizetype(2));
     for (const Deploy::NodeFactsReading &reading : readings) {
         QVERIFY2(reading.error.isEmpty(), qPrintable(reading.error));
@@ -70,8 +76,10 @@ void TestPlannerLive::readsFactsOfManagers()
         QVERIFY(facts.loadableTypes && facts.loadableTypes->contains(QStringLiteral("ConsoleIn")));
     }
     QCOMPARE(readings.at(0).facts.name, address(m_onboard));
-    QCOMPARE(readings.at(0).facts.devices(), (QStringList {QStringLiteral("lidar0"), QStringLiteral("camera0")}));
-    QCOMPARE(readings.at(0).facts.userFacts.value(QStringLiteral("role")), QStringLiteral("onboard"));
+    QCOMPARE(readings.at(0).facts.devices(),
+             (QStringList {QStringLiteral("lidar0"), QStringLiteral("camera0")}));
+    QCOMPARE(readings.at(0).facts.userFacts.value(QStringLiteral("role")),
+             QStringLiteral("onboard"));
     QCOMPARE(readings.at(1).facts.userFacts.value(QStringLiteral("role")), QStringLiteral("base"));
     QVERIFY(readings.at(1).facts.devices().isEmpty());
 }
@@ -89,15 +97,17 @@ void TestPlannerLive::unreachableManagerIsAnError()
 
 void TestPlannerLive::rtctlPlanPlacesByNodeFacts()
 {
-    const RtctlResult result = runRtctl({QStringLiteral("plan"), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/live.xml"),
-                                         QStringLiteral("--nodes"),
-                                         address(m_base) + QLatin1Char(',') + address(m_onboard),
-                                         QStringLiteral("--json"), QStringLiteral("--timeout"), QStringLiteral("3000")});
+    const RtctlResult result = runRtctl(
+        {QStringLiteral("plan"), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/live.xml"),
+         QStringLiteral("--nodes"), address(m_base) + QLatin1Char(',') + address(m_onboard),
+         QStringLiteral("--json"), QStringLiteral("--timeout"), QStringLiteral("3000")});
     QVERIFY2(result.code == 0, qPrintable(result.err));
     QHash<QString, QString> nodeOf;
-    for (const QJsonValue &value : result.json().object().value(QStringLiteral("placements")).toArray()) {
+    for (const QJsonValue &value :
+         result.json().object().value(QStringLiteral("placements")).toArray()) {
         const QJsonObject p = value.toObject();
-        nodeOf.insert(p.value(QStringLiteral("component")).toString(), p.value(QStringLiteral("node")).toString());
+        nodeOf.insert(p.value(QStringLiteral("component")).toString(),
+                      p.value(QStringLiteral("node")).toString());
     }
     QCOMPARE(nodeOf.value(QStringLiteral("Scan0")), address(m_onboard));
     QCOMPARE(nodeOf.value(QStringLiteral("Sink0")), address(m_onboard));
@@ -107,12 +117,15 @@ void TestPlannerLive::rtctlPlanPlacesByNodeFacts()
 
 void TestPlannerLive::rtctlPlanWithoutTheDeviceNode()
 {
-    const RtctlResult result = runRtctl({QStringLiteral("plan"), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/live.xml"),
-                                         QStringLiteral("--nodes"), address(m_base), QStringLiteral("--timeout"),
-                                         QStringLiteral("3000")});
+    const RtctlResult result = runRtctl({QStringLiteral("plan"),
+                                         QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/live.xml"),
+                                         QStringLiteral("--nodes"), address(m_base),
+                                         QStringLiteral("--timeout"), QStringLiteral("3000")});
     QCOMPARE(result.code, 1);
-    QVERIFY2(result.err.contains(QStringLiteral("Scan0: device lidar0 - no node meets it; closest %1 has no devices listed")
-                                     .arg(address(m_base))),
+    QVERIFY2(result.err.contains(
+                 QStringLiteral(
+                     "Scan0: device lidar0 - no node meets it; closest %1 has no devices listed")
+                     .arg(address(m_base))),
              qPrintable(result.err));
 }
 

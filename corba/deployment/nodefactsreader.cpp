@@ -40,8 +40,9 @@ NodeFactsReading readOne(const QString &address)
 QList<NodeFactsReading> readNodeFacts(const QStringList &addresses)
 {
     QList<NodeFactsReading> readings(addresses.size());
-    Corba::forEachConcurrently(std::size_t(addresses.size()),
-                               [&](std::size_t i) { readings[qsizetype(i)] = readOne(addresses.at(qsizetype(i))); });
+    Corba::forEachConcurrently(std::size_t(addresses.size()), [&](std::size_t i) {
+        readings[qsizetype(i)] = readOne(addresses.at(qsizetype(i)));
+    });
     return readings;
 }
 
