@@ -682,6 +682,10 @@ Properties Manager::profile()
     const Properties node = config.subtree("node");
     for (const auto &[key, value] : node.entries())
         p.set("node." + key, value);
+    std::string packages;
+    for (const std::string &name : installedPackages())
+        packages += (packages.empty() ? "" : ",") + name;
+    p.set("rtstudio.packages", packages);
     p.set("instance_name", m_instanceName);
     p.set("name", m_config.value("manager.name", "manager"));
     p.set("pid", std::to_string(getpid()));

@@ -35,11 +35,10 @@ bool isDirectory(const std::string &path)
     return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
 }
 
-/// The folders modules are looked for in: manager.modules.load_path, then the folder of every
-/// component package (rtctl package) below manager.modules.package_path, by package name.
-std::vector<std::string> moduleDirs(const Properties &config)
+/// The folder of every component package (rtctl package) below manager.modules.package_path.
+std::vector<std::string> packageDirs(const Properties &config)
 {
-    std::vector<std::string> dirs = split(config.value("manager.modules.load_path", "."), ',');
+    std::vector<std::string> result;
     for (const std::string &root : split(config.value("manager.modules.package_path", RTSTUDIO_COMPONENT_PACKAGES_DIR), ',')) {
         DIR *d = opendir(root.c_str());
         if (!d)
@@ -52,12 +51,30 @@ std::vector<std::string> moduleDirs(const Properties &config)
         }
         closedir(d);
         std::sort(packages.begin(), packages.end());
-        dirs.insert(dirs.end(), packages.begin(), packages.end());
+        result.insert(result.end(), packages.begin(), packages.end());
     }
+    return result;
+}
+
+/// The folders modules are looked for in: manager.modules.load_path, then the folder of every
+/// component package, by package name.
+std::vector<std::string> moduleDirs(const Properties &config)
+{
+    std::vector<std::string> dirs = split(config.value("manager.modules.load_path", "."), ',');
+    const std::vector<std::string> packages = packageDirs(config);
+    dirs.insert(dirs.end(), packages.begin(), packages.end());
     return dirs;
 }
 
 } // namespace
+
+std::vector<std::string> Manager::installedPackages() const
+{
+    std::vector<std::string> names;
+    for (const std::string &dir : packageDirs(m_config))
+        names.push_back(dir.substr(dir.rfind('/') + 1));
+    return names;
+}
 
 std::string Manager::findModuleFile(const std::string &requested) const
 {

@@ -6,9 +6,11 @@
 #include "orb.h"
 #include "rtctlrunner.h"
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <QTest>
 
 class TestPlannerLive : public QObject
@@ -30,6 +32,7 @@ private:
     }
 
     LiveTest::LiveSystem m_live;
+    QTemporaryDir m_packages; ///< the onboard node's package folder, with one installed package
     quint16 m_onboard = 0;
     quint16 m_base = 0;
 };
@@ -38,12 +41,14 @@ void TestPlannerLive::initTestCase()
 {
     Corba::Orb::setCallTimeout(3000);
     QString error;
+    QVERIFY(QDir(m_packages.path()).mkpath(QStringLiteral("rtc-rtstudio-sensor-lidar")));
     m_onboard = LiveTest::freePort();
-    QVERIFY2(m_live.startManager(QStringLiteral(RTMANAGER_PATH), m_onboard,
-                                 {QStringLiteral("naming.enable=NO"),
-                                  QStringLiteral("node.devices=lidar0,camera0"),
-                                  QStringLiteral("node.role=onboard")},
-                                 &error),
+    QVERIFY2(m_live.startManager(
+                 QStringLiteral(RTMANAGER_PATH), m_onboard,
+                 {QStringLiteral("naming.enable=NO"), QStringLiteral("node.devices=lidar0,camera0"),
+                  QStringLiteral("node.role=onboard"),
+                  QStringLiteral("manager.modules.package_path=") + m_packages.path()},
+                 &error),
              qPrintable(error));
     m_base = LiveTest::freePort();
     QVERIFY2(m_live.startManager(
@@ -80,6 +85,8 @@ void TestPlannerLive::readsFactsOfManagers()
              (QStringList {QStringLiteral("lidar0"), QStringLiteral("camera0")}));
     QCOMPARE(readings.at(0).facts.userFacts.value(QStringLiteral("role")),
              QStringLiteral("onboard"));
+    QCOMPARE(readings.at(0).facts.packages,
+             QStringList {QStringLiteral("rtc-rtstudio-sensor-lidar")});
     QCOMPARE(readings.at(1).facts.userFacts.value(QStringLiteral("role")), QStringLiteral("base"));
     QVERIFY(readings.at(1).facts.devices().isEmpty());
 }
