@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace Planner {
@@ -334,13 +335,14 @@ private:
     void boundLinks()
     {
         std::vector<int> weights;
-        int crossing = 0;
+        long long crossing = 0;
         for (int l = 0; l < int(m_crossings.size()); ++l) {
             weights.push_back(m_input.links.at(l).weight);
             crossing += m_model.eval(m_crossings[l], true).is_true() ? weights.back() : 0;
         }
-        if (!m_crossings.empty())
-            m_opt.add(z3::pble(m_crossings, weights.data(), crossing));
+        // A bound beyond what an int holds bounds nothing: left out.
+        if (!m_crossings.empty() && crossing <= std::numeric_limits<int>::max())
+            m_opt.add(z3::pble(m_crossings, weights.data(), int(crossing)));
     }
 
     const SolverInput &m_input;

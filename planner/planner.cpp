@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QSet>
 
+#include <algorithm>
 #include <cmath>
 
 namespace Planner {
@@ -16,6 +17,15 @@ namespace {
 
 /// CPU counted per component for balancing when it states no share of its own.
 constexpr double NominalShare = 0.1;
+/// The solver counts in ints: CPU in thousandths up to a million CPUs, connector weights up to
+/// 1 MHz each, so that sums over a thousand units stay far from overflowing.
+constexpr double LargestMilli = 1e9;
+constexpr double LargestRate = 1e6;
+
+int milli(double cpus)
+{
+    return int(std::clamp(std::ceil(cpus * 1000), 0.0, LargestMilli));
+}
 
 /// Components placed together (one process) and the nodes where all of them may run.
 struct Unit
@@ -44,7 +54,7 @@ private:
     bool explainUnits();
     int closestNode(int component) const;
     SolverInput solverInput();
-    QList<QList<int>> installsOf(const Unit &unit, int node);
+    QList<int> installsOf(const Unit &unit, int node);
     void readSolution(const SolverOutput &output);
     void explainCapacity(const QList<int> &nodes);
     double effectiveShare(const Unit &unit) const;
@@ -151,9 +161,8 @@ bool Run::explainUnits()
     return m_plan.unmet.isEmpty();
 }
 
-QList<QList<int>> Run::installsOf(const Unit &unit, int node)
+QList<int> Run::installsOf(const Unit &unit, int node)
 {
-    QList<QList<int>> result;
     QList<int> needed;
     for (const int c : unit.members) {
         const Matcher::TypeSource source
@@ -168,8 +177,7 @@ QList<QList<int>> Run::installsOf(const Unit &unit, int node)
         if (!needed.contains(m_installIndex.value(key)))
             needed << m_installIndex.value(key);
     }
-    result << needed;
-    return result;
+    return needed;
 }
 
 double Run::effectiveShare(const Unit &unit) const
@@ -188,18 +196,19 @@ SolverInput Run::solverInput()
     input.timeoutMs = m_options.timeoutMs;
     for (int n = 0; n < m_problem.nodes.size(); ++n) {
         const std::optional<double> free = m_problem.nodes.at(n).freeCpus();
-        input.capacityMilli << (free ? int(std::floor(*free * 1000)) : -1);
-        input.baseBalance << int(
-            std::lround(m_problem.nodes.at(n).loadAverage.value_or(0) * 1000 / cpusOf(n)));
+        input.capacityMilli << (free ? int(std::clamp(std::floor(*free * 1000), 0.0, LargestMilli))
+                                     : -1);
+        input.baseBalance << milli(m_problem.nodes.at(n).loadAverage.value_or(0) / cpusOf(n));
     }
     for (const Unit &unit : std::as_const(m_units)) {
         SolverUnit su;
         su.nodes = unit.nodes;
         for (const int c : unit.members)
-            su.cpuMilli += int(std::ceil(m_problem.components.at(c).cpuShare * 1000));
+            su.cpuMilli
+                = qMin(su.cpuMilli + milli(m_problem.components.at(c).cpuShare), int(LargestMilli));
         for (const int n : unit.nodes) {
-            su.installs << installsOf(unit, n).first();
-            su.balance << int(std::lround(effectiveShare(unit) * 1000 / cpusOf(n)));
+            su.installs << installsOf(unit, n);
+            su.balance << milli(effectiveShare(unit) / cpusOf(n));
         }
         input.units << su;
     }
@@ -210,7 +219,9 @@ SolverInput Run::solverInput()
         const int b = m_unitOf.value(link.target, -1);
         if (a < 0 || b < 0 || a == b)
             continue;
-        weights[{qMin(a, b), qMax(a, b)}] += qMax(1, int(std::lround(link.rate)));
+        int &weight = weights[{qMin(a, b), qMax(a, b)}];
+        weight = qMin(weight + qMax(1, int(std::lround(std::clamp(link.rate, 0.0, LargestRate)))),
+                      int(LargestRate));
     }
     for (auto it = weights.constBegin(); it != weights.constEnd(); ++it)
         input.links.append({it.key().first, it.key().second, it.value()});

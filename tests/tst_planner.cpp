@@ -76,6 +76,7 @@ private slots:
     void highRateConnectorStaysInsideHost();
     void balancesCpuLoad();
     void noNodes();
+    void extremeFiguresStayValid();
 };
 
 // Each requirement, with two nodes of which only "good" meets it.
@@ -458,6 +459,26 @@ void TestPlanner::noNodes()
     const Plan result = plan(problem);
     QVERIFY(!result.feasible);
     QCOMPARE(result.unmet.first().found, QStringLiteral("no nodes given"));
+}
+
+// Figures far beyond real ones (facts files are typed by people) give a plan, not an overflow.
+void TestPlanner::extremeFiguresStayValid()
+{
+    NodeFacts big = node(QStringLiteral("big"));
+    big.cpuCount = 2000000000;
+    NodeFacts other = node(QStringLiteral("other"));
+    other.loadAverage = 1e12;
+    PlanProblem problem;
+    problem.nodes << big << other;
+    ComponentRequirements hungry = component(QStringLiteral("Hungry"));
+    hungry.cpuShare = 1e9;
+    problem.components << hungry << component(QStringLiteral("B"));
+    problem.links.append({QStringLiteral("Hungry"), QStringLiteral("B"), 1e12});
+    problem.links.append({QStringLiteral("B"), QStringLiteral("Hungry"), 1e12});
+    const Plan result = plan(problem);
+    QVERIFY2(result.feasible, qPrintable(describe(result)));
+    QCOMPARE(nodeOf(result, QStringLiteral("Hungry")), QStringLiteral("big"));
+    QCOMPARE(nodeOf(result, QStringLiteral("B")), QStringLiteral("big"));
 }
 
 QTEST_GUILESS_MAIN(TestPlanner)
