@@ -220,8 +220,10 @@ public:
         , m_crossings(m_ctx)
     {
         m_encoding.addPlacement(m_opt);
-        for (const auto &capacity : m_encoding.capacities())
+        for (const auto &capacity : m_encoding.capacities()) {
             m_opt.add(capacity.second);
+            m_limited = true;
+        }
     }
 
     SolverOutput run()
@@ -235,7 +237,7 @@ public:
             output.conflictingNodes = capacityConflict(m_input, qMax(1000, remaining(1.0)));
             return output;
         }
-        if (installs == Outcome::NoModel && !anyModel()) {
+        if (installs == Outcome::NoModel && !fallbackPlacement()) {
             output.message = m_reason;
             return output;
         }
@@ -275,9 +277,18 @@ private:
         return true;
     }
 
-    /// Any placement, without objectives, in what is left of the time.
-    bool anyModel()
+    /**
+     * A placement when the first stage found none in time: with no CPU limit that could bind,
+     * every unit on the first of its nodes is one; otherwise the solver looks for any, without
+     * objectives, in what is left of the time.
+     */
+    bool fallbackPlacement()
     {
+        if (!m_limited) {
+            for (const SolverUnit &unit : m_input.units)
+                m_best << unit.nodes.first();
+            return true;
+        }
         setTimeout(m_ctx, m_opt, remaining(1.0));
         return m_opt.check() == z3::sat && keep(m_opt.get_model());
     }
@@ -300,10 +311,10 @@ private:
         m_opt.pop();
         if (result == z3::unsat)
             return Outcome::Unsat;
-        if (!m_best.isEmpty())
-            bound();
         if (!kept)
             return Outcome::NoModel;
+        // Only this stage's own model tells what its objective reached.
+        bound();
         return result == z3::sat ? Outcome::Proven : Outcome::Improved;
     }
 
@@ -351,6 +362,7 @@ private:
     z3::optimize m_opt;
     Encoding m_encoding;
     z3::expr_vector m_crossings;
+    bool m_limited = false; ///< some node's CPU limit could bind
     QList<int> m_best;
     z3::model m_model {m_ctx};
     QString m_reason;

@@ -77,6 +77,7 @@ private slots:
     void balancesCpuLoad();
     void noNodes();
     void extremeFiguresStayValid();
+    void timeLimitStillGivesValidPlan();
 };
 
 // Each requirement, with two nodes of which only "good" meets it.
@@ -479,6 +480,35 @@ void TestPlanner::extremeFiguresStayValid()
     QVERIFY2(result.feasible, qPrintable(describe(result)));
     QCOMPARE(nodeOf(result, QStringLiteral("Hungry")), QStringLiteral("big"));
     QCOMPARE(nodeOf(result, QStringLiteral("B")), QStringLiteral("big"));
+}
+
+// A budget far too short to prove anything: still a plan that keeps every requirement, marked
+// as not proven best.
+void TestPlanner::timeLimitStillGivesValidPlan()
+{
+    PlanProblem problem;
+    for (int n = 0; n < 10; ++n) {
+        NodeFacts facts = node(QStringLiteral("n%1").arg(n));
+        if (n == 7)
+            facts.userFacts.insert(QStringLiteral("devices"), QStringLiteral("lidar0"));
+        problem.nodes << facts;
+    }
+    for (int c = 0; c < 400; ++c) {
+        ComponentRequirements comp = component(QStringLiteral("C%1").arg(c));
+        if (c % 10 == 0)
+            comp.devices << QStringLiteral("lidar0");
+        problem.components << comp;
+        if (c > 0)
+            problem.links.append(
+                {QStringLiteral("C%1").arg(c - 1), comp.instanceName, double(c % 7)});
+    }
+    const Plan result = DeploymentPlanner({1}).plan(problem);
+    QVERIFY2(result.feasible, qPrintable(describe(result)));
+    QVERIFY(!result.optimal);
+    QVERIFY(!result.warnings.isEmpty());
+    QCOMPARE(result.placements.size(), qsizetype(400));
+    for (int c = 0; c < 400; c += 10)
+        QCOMPARE(nodeOf(result, QStringLiteral("C%1").arg(c)), QStringLiteral("n7"));
 }
 
 QTEST_GUILESS_MAIN(TestPlanner)
