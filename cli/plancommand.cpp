@@ -130,6 +130,17 @@ void printSummary(const Planner::Plan &plan, QTextStream &out)
         << (plan.optimal ? "" : " (time limit reached: not proven best)") << '\n';
 }
 
+/// "COMPONENT: REQUIREMENT - no node meets it; closest NODE has FOUND", or the reason a whole
+/// system has no plan (the solver's time, no nodes).
+QString unmetText(const Planner::Unmet &u)
+{
+    if (u.closestNode.isEmpty())
+        return QStringLiteral("%1 (%2)").arg(u.requirement, u.found);
+    return QStringLiteral("%1: %2 - no node meets it; closest %3 has %4")
+        .arg(u.instanceName.isEmpty() ? QStringLiteral("system") : u.instanceName, u.requirement,
+             u.closestNode, u.found);
+}
+
 } // namespace
 
 QString PlanCommand::summary() const
@@ -206,11 +217,7 @@ void PlanCommand::print(const Planner::Plan &plan, Streams streams) const
     if (!plan.feasible) {
         streams.err << "rtctl plan: no plan:\n";
         for (const Planner::Unmet &u : plan.unmet)
-            streams.err << "  "
-                        << (u.instanceName.isEmpty() ? QStringLiteral("system") : u.instanceName)
-                        << ": " << u.requirement << " - no node meets it; closest "
-                        << (u.closestNode.isEmpty() ? QStringLiteral("none") : u.closestNode)
-                        << " has " << u.found << '\n';
+            streams.err << "  " << unmetText(u) << '\n';
         streams.err.flush();
         return;
     }

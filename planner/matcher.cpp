@@ -92,7 +92,8 @@ void checkUserFacts(const ComponentRequirements &c, const NodeFacts &node, QList
 void checkPlacement(const ComponentRequirements &c, const NodeFacts &node, QList<Mismatch> *out)
 {
     if (!c.pinnedNode.isEmpty() && c.pinnedNode != node.name && c.pinnedNode != node.hostname)
-        out->append({QStringLiteral("pinned to %1").arg(c.pinnedNode), node.name});
+        out->append({QStringLiteral("pinned to %1").arg(c.pinnedNode),
+                     QStringLiteral("the name %1").arg(node.name)});
     if (c.cpuShare > 0) {
         const std::optional<double> free = node.freeCpus();
         if (!free || *free < c.cpuShare)
@@ -147,9 +148,9 @@ QList<Mismatch> Matcher::mismatches(const ComponentRequirements &c, const NodeFa
                     node.languages ? node.languages->join(QLatin1Char(',')) : Unknown});
     checkUserFacts(c, node, &out);
     if (!source.available())
-        out.append(
-            {QStringLiteral("type %1 loadable or installable").arg(c.typeName),
-             QStringLiteral("not loadable, no package for %1").arg(known(node.architecture))});
+        out.append({QStringLiteral("type %1 loadable or installable").arg(c.typeName),
+                    QStringLiteral("no such type, no package for its architecture (%1) and SDK")
+                        .arg(known(node.architecture))});
     return out;
 }
 
