@@ -70,7 +70,12 @@ public:
                     coefficients.push_back(m_input.units.at(u).cpuMilli);
                 }
             });
-            if (!terms.empty())
+            // A limit the units allowed there cannot reach even all together is left out: it would
+            // only cost the solver time.
+            long long total = 0;
+            for (const int c : coefficients)
+                total += c;
+            if (total > m_input.capacityMilli.at(n))
                 result.emplace_back(
                     n, z3::pble(terms, coefficients.data(), m_input.capacityMilli.at(n)));
         }
@@ -230,8 +235,10 @@ public:
     {
         SolverOutput output;
         // The first stage also finds out whether there is any placement at all.
-        const Outcome installs = stage(
-            0.4, [this] { installObjective(); }, [this] { boundInstalls(); });
+        const Outcome installs = m_limited
+            ? stage(
+                0.4, [this] { installObjective(); }, [this] { boundInstalls(); })
+            : leastInstallsAlone();
         if (installs == Outcome::Unsat) {
             output.status = SolverOutput::Status::Infeasible;
             output.conflictingNodes = capacityConflict(m_input, qMax(1000, remaining(1.0)));
@@ -315,6 +322,62 @@ private:
             return Outcome::NoModel;
         // Only this stage's own model tells what its objective reached.
         bound();
+        return result == z3::sat ? Outcome::Proven : Outcome::Improved;
+    }
+
+    /**
+     * Without CPU limits, a unit that has a node where it needs no install never adds one: the
+     * least installs are those of the other units alone, a far smaller problem. Its answer bounds
+     * the installs of the whole and places every unit (the others on such a node).
+     */
+    Outcome leastInstallsAlone()
+    {
+        SolverInput reduced;
+        reduced.installCount = m_input.installCount;
+        QList<int> fullUnit;
+        m_best = QList<int>(m_input.units.size(), -1);
+        for (int u = 0; u < m_input.units.size(); ++u) {
+            const SolverUnit &unit = m_input.units.at(u);
+            const auto free
+                = std::find_if(unit.installs.cbegin(), unit.installs.cend(),
+                               [](const QList<int> &installs) { return installs.isEmpty(); });
+            if (free != unit.installs.cend()) {
+                m_best[u] = unit.nodes.at(int(free - unit.installs.cbegin()));
+            } else {
+                reduced.units << unit;
+                fullUnit << u;
+            }
+        }
+        z3::context ctx;
+        z3::optimize opt(ctx);
+        setTimeout(ctx, opt, remaining(0.4));
+        const Encoding encoding(ctx, reduced);
+        encoding.addPlacement(opt);
+        for (int i = 0; i < int(encoding.installs().size()); ++i)
+            addSoft(opt, !encoding.installs()[i], 1, "installs");
+        const z3::check_result result = fullUnit.isEmpty() ? z3::sat : opt.check();
+        QList<int> placement;
+        int used = 0;
+        try {
+            const z3::model model = opt.get_model();
+            placement = encoding.placement(model);
+            for (int i = 0; i < int(encoding.installs().size()); ++i)
+                used += model.eval(encoding.installs()[i], true).is_true() ? 1 : 0;
+        } catch (const z3::exception &) {
+            // No model in time.
+        }
+        if (result != z3::sat)
+            m_reason = QString::fromUtf8(Z3_optimize_get_reason_unknown(ctx, opt));
+        if (placement.size() != fullUnit.size()) {
+            m_best.clear();
+            return result == z3::unsat ? Outcome::Unsat : Outcome::NoModel;
+        }
+        for (int r = 0; r < fullUnit.size(); ++r)
+            m_best[fullUnit.at(r)] = placement.at(r);
+        const z3::expr_vector &installs = m_encoding.installs();
+        std::vector<int> ones(installs.size(), 1);
+        if (!installs.empty())
+            m_opt.add(z3::pble(installs, ones.data(), used));
         return result == z3::sat ? Outcome::Proven : Outcome::Improved;
     }
 

@@ -72,6 +72,8 @@ private slots:
     void infeasibleNamesClosestNode();
     void installsWhereNotLoadable();
     void fewestInstalls();
+    void installsOncePerNode_data();
+    void installsOncePerNode();
     void packageForOtherArchitectureIsNoSource();
     void highRateConnectorStaysInsideHost();
     void balancesCpuLoad();
@@ -382,6 +384,42 @@ void TestPlanner::fewestInstalls()
     QVERIFY(result.installs.isEmpty());
     for (int i = 0; i < 4; ++i)
         QCOMPARE(nodeOf(result, QStringLiteral("Cam%1").arg(i)), QStringLiteral("b"));
+}
+
+void TestPlanner::installsOncePerNode_data()
+{
+    QTest::addColumn<double>("share");
+    QTest::addColumn<int>("installs");
+    QTest::newRow("no CPU limit") << 0.0 << 1;
+    QTest::newRow("two fit on a node") << 0.4 << 2;
+}
+
+// Three components of a type no node loads: one install on one node, unless CPU shares spread them.
+void TestPlanner::installsOncePerNode()
+{
+    QFETCH(double, share);
+    QFETCH(int, installs);
+    NodeFacts a = node(QStringLiteral("a"));
+    NodeFacts b = node(QStringLiteral("b"));
+    a.cpuCount = b.cpuCount = 1;
+    PlanProblem problem;
+    problem.nodes << a << b;
+    problem.packages.append({QStringLiteral("rtc-camera"),
+                             QStringLiteral("1.0"),
+                             QStringLiteral("amd64"),
+                             QStringLiteral("librtsdk.so.0"),
+                             {QStringLiteral("Camera")}});
+    for (int i = 0; i < 3; ++i) {
+        ComponentRequirements c
+            = component(QStringLiteral("Cam%1").arg(i), QStringLiteral("Camera"));
+        c.cpuShare = share;
+        problem.components << c;
+    }
+    problem.components << component(QStringLiteral("Other"));
+    const Plan result = plan(problem);
+    QVERIFY2(result.feasible, qPrintable(describe(result)));
+    QVERIFY(result.optimal);
+    QCOMPARE(result.installs.size(), qsizetype(installs));
 }
 
 void TestPlanner::packageForOtherArchitectureIsNoSource()
