@@ -4,6 +4,7 @@
 #include "gencommand.h"
 #include "localcommand.h"
 #include "packagecommand.h"
+#include "plancommand.h"
 #include "profilecommand.h"
 #include "repocommand.h"
 #include "rtcatcommand.h"
@@ -111,6 +112,7 @@ std::unique_ptr<CommandLine> createCommandLine()
         commandLine->addCommand(std::make_unique<RtSystemCommand>(action));
     commandLine->addCommand(std::make_unique<RtCryoCommand>());
     commandLine->addCommand(std::make_unique<LocalCommand>());
+    commandLine->addCommand(std::make_unique<PlanCommand>());
     return commandLine;
 }
 

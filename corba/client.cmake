@@ -2,8 +2,8 @@
 # The client and deployment libraries for other programs (the deployment paper's "embed to
 # applications", rtctree's role for rtshell): one shared library with the profile readers, the RTC
 # tree, component and manager proxies, port taps, the deployment engine (restore, start, stop,
-# teardown, cryo, drift, the local runtime) and component packages and their repositories
-# (packages/); their headers under include/rtstudio; and a CMake package:
+# teardown, cryo, drift, the local runtime), component packages and their repositories
+# (packages/) and the deployment planner (planner/); their headers under include/rtstudio; and a CMake package:
 #
 #   find_package(RTStudioClient REQUIRED)
 #   target_link_libraries(MyTool PRIVATE RTStudio::Client)
@@ -14,22 +14,22 @@
 add_library(rtstudio_client SHARED)
 set_target_properties(rtstudio_client PROPERTIES OUTPUT_NAME rtstudio_client LINKER_LANGUAGE CXX
     VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR})
-# Every object of the three static libraries, and what they link.
+# Every object of the static libraries, and what they link.
 target_sources(rtstudio_client PRIVATE client.cpp)
 target_link_libraries(rtstudio_client PRIVATE
     -Wl,--whole-archive $<TARGET_FILE:rtdeploy> $<TARGET_FILE:rtcorba> $<TARGET_FILE:rtpackages>
-    $<TARGET_FILE:rtprofile>
+    $<TARGET_FILE:rtplanner> $<TARGET_FILE:rtprofile>
     -Wl,--no-whole-archive
-    rtcorba_stubs yaml-cpp rtstudio_omniorb Qt6::Core)
-add_dependencies(rtstudio_client rtdeploy rtcorba rtpackages rtprofile)
+    rtcorba_stubs yaml-cpp rtstudio_omniorb PkgConfig::Z3 Qt6::Core)
+add_dependencies(rtstudio_client rtdeploy rtcorba rtpackages rtplanner rtprofile)
 
 set(rtstudio_client_headers "")
-foreach(dir profile corba corba/deployment packages)
+foreach(dir profile corba corba/deployment packages planner)
     file(GLOB headers CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/${dir}/*.h")
     list(APPEND rtstudio_client_headers ${headers})
 endforeach()
-# The omniORB and yaml-cpp side stays inside.
-list(FILTER rtstudio_client_headers EXCLUDE REGEX "/(corbacall|rtcconversion|[a-z]+internal|[a-z]+_p)\\.h$")
+# The omniORB, yaml-cpp and Z3 side stays inside.
+list(FILTER rtstudio_client_headers EXCLUDE REGEX "/(corbacall|rtcconversion|placementsolver|[a-z]+internal|[a-z]+_p)\\.h$")
 
 include(CMakePackageConfigHelpers)
 set(rtstudio_client_config_dir "${CMAKE_CURRENT_BINARY_DIR}/client")

@@ -3,6 +3,7 @@
 
 #include "corbautil.h"
 #include "executioncontextfactory.h"
+#include "hostfacts.h"
 #include "managerdetail.h"
 #include "managerservant.h"
 
@@ -694,7 +695,18 @@ Properties Manager::profile()
 {
     // As OpenRTM-aist's: the configuration's manager.* keys without their prefix (rtshell and
     // OpenRTP show naming_formats, modules.load_path …), and what this runtime adds.
-    Properties p = configuration().subtree("manager");
+    const Properties config = configuration();
+    Properties p = config.subtree("manager");
+    // What a deployment planner needs (docs/planner.md): the host's facts and the operator's
+    // node.* facts (devices, role …) from the configuration.
+    p.merge(hostFacts());
+    const Properties node = config.subtree("node");
+    for (const auto &[key, value] : node.entries())
+        p.set("node." + key, value);
+    std::string packages;
+    for (const std::string &name : installedPackages())
+        packages += (packages.empty() ? "" : ",") + name;
+    p.set("rtstudio.packages", packages);
     p.set("instance_name", m_instanceName);
     p.set("name", m_config.value("manager.name", "manager"));
     p.set("pid", std::to_string(getpid()));

@@ -138,6 +138,9 @@ public:
     bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
     /// The module file @p name stands for: itself when absolute, else found in the load path (with or without ".so").
     std::string findModuleFile(const std::string &name) const;
+    /// The names of the component packages installed: in the package store and below
+    /// `manager.modules.package_path`.
+    std::vector<std::string> installedPackages() const;
     bool unloadModule(const std::string &path, std::string *error);
     /// Loads `manager.modules.preload` (and the older `manager.preload.modules`): `file[:init],…`.
     void preloadModules();

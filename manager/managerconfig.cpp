@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "managerconfig.h"
 
+#include "hostfacts.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -25,6 +27,9 @@ Properties managerDefaults()
     p.set("exec_cxt.periodic.type", "PeriodicExecutionContext");
     p.set("exec_cxt.periodic.rate", "1000");
     p.set("exec_cxt.transition_timeout", "0.5");
+    // What OpenRTM-aist's managers say too: the languages hosted, and the host's os.* facts.
+    p.set("manager.supported_languages", "C++");
+    p.merge(osFacts());
     return p;
 }
 

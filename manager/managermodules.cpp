@@ -38,13 +38,10 @@ bool isDirectory(const std::string &path)
 /// The module a thread is loading: the factories its init function registers come from it.
 thread_local std::string loadingModule;
 
-/// The folders modules are looked for in: manager.modules.load_path, then those of the packages
-/// in the manager's package store (@p installed), then the folder of every component package
-/// (rtctl package) below manager.modules.package_path, by package name.
-std::vector<std::string> moduleDirs(const Properties &config, const std::vector<std::string> &installed)
+/// The folder of every component package (rtctl package) below manager.modules.package_path.
+std::vector<std::string> packageDirs(const Properties &config)
 {
-    std::vector<std::string> dirs = split(config.value("manager.modules.load_path", "."), ',');
-    dirs.insert(dirs.end(), installed.begin(), installed.end());
+    std::vector<std::string> result;
     for (const std::string &root : split(config.value("manager.modules.package_path", RTSTUDIO_COMPONENT_PACKAGES_DIR), ',')) {
         DIR *d = opendir(root.c_str());
         if (!d)
@@ -57,12 +54,38 @@ std::vector<std::string> moduleDirs(const Properties &config, const std::vector<
         }
         closedir(d);
         std::sort(packages.begin(), packages.end());
-        dirs.insert(dirs.end(), packages.begin(), packages.end());
+        result.insert(result.end(), packages.begin(), packages.end());
     }
+    return result;
+}
+
+/// The folders modules are looked for in: manager.modules.load_path, then those of the packages
+/// in the manager's package store (@p installed), then the folder of every component package
+/// (rtctl package) below manager.modules.package_path, by package name.
+std::vector<std::string> moduleDirs(const Properties &config, const std::vector<std::string> &installed)
+{
+    std::vector<std::string> dirs = split(config.value("manager.modules.load_path", "."), ',');
+    dirs.insert(dirs.end(), installed.begin(), installed.end());
+    const std::vector<std::string> packages = packageDirs(config);
+    dirs.insert(dirs.end(), packages.begin(), packages.end());
     return dirs;
 }
 
 } // namespace
+
+std::vector<std::string> Manager::installedPackages() const
+{
+    // A package's module folder is named after the package, in the store as below package_path.
+    std::vector<std::string> dirs = installedModuleDirs(std::string());
+    const std::vector<std::string> system = packageDirs(m_config);
+    dirs.insert(dirs.end(), system.begin(), system.end());
+    std::vector<std::string> names;
+    for (const std::string &dir : dirs)
+        names.push_back(dir.substr(dir.rfind('/') + 1));
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    return names;
+}
 
 std::string moduleBeingLoaded()
 {

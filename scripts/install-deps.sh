@@ -6,13 +6,13 @@ set -euo pipefail
 
 # dpkg-dev … apt: component packages (dpkg-deb, dpkg-shlibdeps, objdump) and signed repositories
 # (gpg, gpgv; apt-get reads them in the tests). clang: the libFuzzer harnesses; lld links the test
-# presets' programs.
+# presets' programs. libz3-dev: the deployment planner's solver.
 packages=(
     build-essential cmake ninja-build pkg-config git
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev libqt6svg6 qt6-qpa-plugins libgl-dev
     qt6-tools-dev qt6-l10n-tools qt6-translations-l10n fonts-ipafont-gothic qt6-charts-dev libqt6opengl6-dev
     libomniorb4-dev omniidl omniorb omniorb-nameserver omniorb-idl
-    libkainjow-mustache-dev libyaml-cpp-dev libgraphviz-dev
+    libkainjow-mustache-dev libyaml-cpp-dev libgraphviz-dev libz3-dev
     xvfb xauth fonts-dejavu-core ccache iproute2 clang lld
     dpkg-dev binutils gpg gpgv gpg-agent gpgconf xz-utils gzip apt
 )
