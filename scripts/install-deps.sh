@@ -5,7 +5,7 @@
 set -euo pipefail
 
 # dpkg-dev … apt: component packages (dpkg-deb, dpkg-shlibdeps, objdump) and signed repositories
-# (gpg, gpgv; apt-get reads them in the tests).
+# (gpg, gpgv; apt-get reads them in the tests). python3-dev, pybind11-dev: the Python component API.
 packages=(
     build-essential cmake ninja-build pkg-config git
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev libqt6svg6 qt6-qpa-plugins libgl-dev
@@ -14,6 +14,7 @@ packages=(
     libkainjow-mustache-dev libyaml-cpp-dev libgraphviz-dev
     xvfb xauth fonts-dejavu-core ccache iproute2
     dpkg-dev binutils gpg gpgv gpg-agent gpgconf xz-utils gzip apt
+    python3-dev pybind11-dev
 )
 
 missing=()

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <rtm/ConnectorListener.h>
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+namespace RtPython {
+
+/**
+ * A Python connector data listener (an OpenRTM_aist.ConnectorDataListenerT: `listener(info, data)`)
+ * on a port whose samples are of the IDL type @p repositoryId: the runtime's CDR sample is decoded
+ * for it. Listeners observe; what they return is not sent on. Their exceptions are printed and
+ * do not reach the port.
+ */
+class PyDataListener : public RTC::ConnectorDataListener
+{
+public:
+    PyDataListener(pybind11::object listener, std::string repositoryId);
+    ~PyDataListener() override;
+    ReturnCode operator()(RTC::ConnectorInfo &info, RTC::ByteData &data, const std::string &marshalingtype) override;
+
+private:
+    pybind11::object m_listener;
+    std::string m_repositoryId;
+};
+
+/// A Python connector listener (an OpenRTM_aist.ConnectorListener: `listener(info)`).
+class PyConnectorListener : public RTC::ConnectorListener
+{
+public:
+    explicit PyConnectorListener(pybind11::object listener);
+    ~PyConnectorListener() override;
+    ReturnCode operator()(RTC::ConnectorInfo &info) override;
+
+private:
+    pybind11::object m_listener;
+};
+
+/// Drops @p object's reference with the GIL, or leaks it when the interpreter is gone.
+void releasePython(pybind11::object &object);
+
+} // namespace RtPython
