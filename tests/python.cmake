@@ -10,6 +10,8 @@ rtstudio_add_test(tst_python SOURCES tst_python.cpp
 target_compile_definitions(tst_python PRIVATE
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
     RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
-    RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}")
-add_dependencies(tst_python rtmanager rtctl rtpython)
+    RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
+    CMAKE_COMMAND="${CMAKE_COMMAND}")
+add_dependencies(tst_python rtmanager rtctl rtpython rtsdk)
 set_tests_properties(tst_python PROPERTIES LABELS python TIMEOUT 600)

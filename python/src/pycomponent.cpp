@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "pycomponent.h"
 #include "bindings.h"
-#include "pyerrors.h"
-#include "pylisteners.h"
-#include "pyports.h"
+#include "pyinterpreter.h"
+#include "pyinport.h"
+#include "pyoutport.h"
 
 #include <rtm/SystemLogger.h>
 

@@ -2,7 +2,7 @@
 // OpenRTM_aist.Manager: the SDK's manager, with Python module init procedures and component classes.
 #include "bindings.h"
 #include "pycomponent.h"
-#include "pyerrors.h"
+#include "pyinterpreter.h"
 
 #include <rtm/Manager.h>
 #include <rtmruntime/manager.h>

@@ -4,6 +4,7 @@
 # values survive a round trip in both byte orders, the bytes are OpenRTM's, and values that do not
 # fit their type are refused with the member named. Exits non-zero on the first failure.
 
+import os
 import sys
 
 import _rtstudio
@@ -18,7 +19,16 @@ def round_trip(value):
         assert type(back) is type(value)
 
 
+def check_prefix(arguments):
+    # With --expect-prefix PREFIX: the packages and the extension were imported from that prefix.
+    if "--expect-prefix" in arguments:
+        prefix = os.path.realpath(arguments[arguments.index("--expect-prefix") + 1])
+        for module in (_rtstudio, OpenRTM_aist, RTC):
+            assert os.path.realpath(module.__file__).startswith(prefix + os.sep), module.__file__
+
+
 def main():
+    check_prefix(sys.argv)
     sample = RTC.TimedLong(RTC.Time(1, 2), 42)
     assert sample._NP_RepositoryId == "IDL:RTC/TimedLong:1.0"
     assert _rtstudio.cdr_encode(sample).hex() == "01000000020000002a000000"

@@ -27,19 +27,4 @@ private:
     std::string m_repositoryId;
 };
 
-/// A Python connector listener (an OpenRTM_aist.ConnectorListener: `listener(info)`).
-class PyConnectorListener : public RTC::ConnectorListener
-{
-public:
-    explicit PyConnectorListener(pybind11::object listener);
-    ~PyConnectorListener() override;
-    ReturnCode operator()(RTC::ConnectorInfo &info) override;
-
-private:
-    pybind11::object m_listener;
-};
-
-/// Drops @p object's reference with the GIL, or leaks it when the interpreter is gone.
-void releasePython(pybind11::object &object);
-
 } // namespace RtPython

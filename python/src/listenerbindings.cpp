@@ -1,75 +1,15 @@
 // SPDX-License-Identifier: MIT
-#include "pylisteners.h"
+// ConnectorInfo and the listener types, with OpenRTM-aist's names.
 #include "bindings.h"
-#include "pydatatypes.h"
-#include "pyerrors.h"
+
+#include <rtm/ConnectorBase.h>
+#include <rtm/ConnectorListener.h>
 
 #include <pybind11/stl.h>
 
 namespace py = pybind11;
 
 namespace RtPython {
-
-void releasePython(py::object &object)
-{
-    if (!interpreterAlive()) {
-        object.release();
-        return;
-    }
-    py::gil_scoped_acquire gil;
-    object = py::object();
-}
-
-PyDataListener::PyDataListener(py::object listener, std::string repositoryId)
-    : m_listener(std::move(listener))
-    , m_repositoryId(std::move(repositoryId))
-{
-}
-
-PyDataListener::~PyDataListener()
-{
-    releasePython(m_listener);
-}
-
-PyDataListener::ReturnCode PyDataListener::operator()(RTC::ConnectorInfo &info, RTC::ByteData &data,
-                                                      const std::string &marshalingtype)
-{
-    if ((!marshalingtype.empty() && marshalingtype != "cdr") || !interpreterAlive())
-        return NO_CHANGE;
-    const bool little = info.properties.getProperty("serializer.cdr.endian", "little").compare(0, 6, "little") == 0;
-    py::gil_scoped_acquire gil;
-    try {
-        const py::object sample =
-            PyDataTypes::instance().decode(m_repositoryId, data.getBuffer(), data.getDataLength(), little);
-        m_listener(info, sample);
-    } catch (py::error_already_set &error) {
-        printError("connector data listener of " + info.name + ":", error);
-    }
-    return NO_CHANGE;
-}
-
-PyConnectorListener::PyConnectorListener(py::object listener)
-    : m_listener(std::move(listener))
-{
-}
-
-PyConnectorListener::~PyConnectorListener()
-{
-    releasePython(m_listener);
-}
-
-PyConnectorListener::ReturnCode PyConnectorListener::operator()(RTC::ConnectorInfo &info)
-{
-    if (!interpreterAlive())
-        return NO_CHANGE;
-    py::gil_scoped_acquire gil;
-    try {
-        m_listener(info);
-    } catch (py::error_already_set &error) {
-        printError("connector listener of " + info.name + ":", error);
-    }
-    return NO_CHANGE;
-}
 
 void bindListeners(py::module_ &module)
 {

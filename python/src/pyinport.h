@@ -2,12 +2,10 @@
 #pragma once
 
 #include <rtm/InPortBase.h>
-#include <rtm/OutPortBase.h>
 
 #include <pybind11/pybind11.h>
 
 #include <string>
-#include <vector>
 
 namespace RtPython {
 
@@ -23,6 +21,8 @@ public:
 
     /// Takes the next sample into the port's value; false when none waits. Takes the GIL.
     bool read(std::string name = "") override;
+    /// Samples arrive as CDR, also from ports of the same process.
+    bool takesValues() const override { return false; }
     /// OpenRTM-aist-Python's read(): the next sample, or the last value when none waits.
     pybind11::object readValue();
 
@@ -32,29 +32,9 @@ public:
     void addConnectorListener(RTC::ConnectorListenerType type, pybind11::object listener);
 
 private:
-    pybind11::object m_value;
-};
+    /// Takes the next sample into m_value; false when none waits. Needs the GIL.
+    bool takeSample();
 
-/**
- * OpenRTM_aist.OutPort: an SDK OutPort sending Python values of one IDL data type as CDR. The
- * GIL is released while the sample travels, so listeners and components of this process that
- * receive it run meanwhile.
- */
-class PyOutPort : public RTC::OutPortBase
-{
-public:
-    PyOutPort(const std::string &name, pybind11::object value);
-    ~PyOutPort() override;
-
-    /// Sends the port's value. Takes the GIL.
-    bool write() override;
-    /// Sends @p value (the port's value when None). Needs the GIL.
-    bool writeValue(pybind11::object value);
-
-    void addDataListener(RTC::ConnectorDataListenerType type, pybind11::object listener);
-    void addConnectorListener(RTC::ConnectorListenerType type, pybind11::object listener);
-
-private:
     pybind11::object m_value;
 };
 

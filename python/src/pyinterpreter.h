@@ -17,5 +17,7 @@ void printError(const std::string &context, pybind11::error_already_set &error);
  * and acquiring the GIL after finalization would hang them.
  */
 bool interpreterAlive();
+/// Drops @p object's reference with the GIL, or leaks it when the interpreter is gone.
+void releasePython(pybind11::object &object);
 
 } // namespace RtPython

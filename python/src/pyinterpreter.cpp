@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "pyerrors.h"
+#include "pyinterpreter.h"
 
 namespace py = pybind11;
 
@@ -29,6 +29,16 @@ bool interpreterAlive()
 #else
     return Py_IsInitialized() && !_Py_IsFinalizing();
 #endif
+}
+
+void releasePython(py::object &object)
+{
+    if (!interpreterAlive()) {
+        object.release();
+        return;
+    }
+    py::gil_scoped_acquire gil;
+    object = py::object();
 }
 
 } // namespace RtPython
