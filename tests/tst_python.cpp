@@ -269,6 +269,10 @@ void TestPython::callbackExceptionMovesComponentToError()
     QTRY_VERIFY_WITH_TIMEOUT(logged().contains(QLatin1String("RuntimeError: faulty on purpose")), runTimeoutMs);
     QVERIFY2(logged().contains(QLatin1String("PyFaulty0: onExecute() raised an exception")), qPrintable(logged()));
     QVERIFY2(logged().contains(QLatin1String("Traceback (most recent call last)")), qPrintable(logged()));
+    // The class whose constructor raised was not created, and said why.
+    QTRY_VERIFY_WITH_TIMEOUT(printed(faulty).contains(QLatin1String("PyBroken created: None\n")), runTimeoutMs);
+    QVERIFY2(logged().contains(QLatin1String("ValueError: broken on purpose")), qPrintable(logged()));
+    QVERIFY(!rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyBroken")));
     // The process lives on and the component recovers through onReset.
     QCOMPARE(faulty->state(), QProcess::Running);
     QVERIFY(rtctlSucceeds({"reset", "PyFaulty0.rtc"}));
@@ -287,6 +291,14 @@ void TestPython::componentsOfOneProcessExchangeData()
     for (const char *component : {"PySink0.rtc", "PySource0.rtc"})
         QVERIFY(rtctlSucceeds({"act", component}));
     QTRY_VERIFY_WITH_TIMEOUT(printed(pair).contains(QLatin1String("sink got 3\n")), runTimeoutMs);
+    // Components go on rtctl exit and the program ends cleanly on SIGTERM, as a C++ one.
+    QVERIFY(rtctlSucceeds({"exit", "PySink0.rtc"}));
+    QTRY_VERIFY_WITH_TIMEOUT(!rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PySink0.rtc")), runTimeoutMs);
+    QCOMPARE(pair->state(), QProcess::Running);
+    pair->terminate();
+    QVERIFY(pair->waitForFinished(runTimeoutMs));
+    QCOMPARE(pair->exitStatus(), QProcess::NormalExit);
+    QCOMPARE(pair->exitCode(), 0);
     m_live.stop(pair);
 }
 

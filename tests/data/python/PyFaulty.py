@@ -1,24 +1,20 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-# A Python component whose onExecute raises: the runtime must move it to the Error state, print the
-# traceback and keep the process (and onReset) working.
+# A Python component whose onExecute raises: the runtime must move it to the Error state, log the
+# traceback and keep the process (and onReset) working. And a component class whose constructor
+# raises: creating it fails, the process goes on.
 
 import sys
 
 import OpenRTM_aist
 import RTC
 
-faulty_spec = ["implementation_id", "PyFaulty",
-               "type_name", "PyFaulty",
-               "description", "Raises in onExecute",
-               "version", "1.0",
-               "vendor", "RT Studio tests",
-               "category", "test",
-               "activity_type", "DataFlowComponent",
-               "max_instance", "1",
-               "language", "Python",
-               "lang_type", "script",
-               ""]
+
+def spec(name):
+    return ["implementation_id", name, "type_name", name, "description", "Raises in its callbacks",
+            "version", "1.0", "vendor", "RT Studio tests", "category", "test",
+            "activity_type", "DataFlowComponent", "max_instance", "1", "language", "Python",
+            "lang_type", "script", ""]
 
 
 class PyFaulty(OpenRTM_aist.DataFlowComponentBase):
@@ -30,8 +26,15 @@ class PyFaulty(OpenRTM_aist.DataFlowComponentBase):
         return RTC.RTC_OK
 
 
+class PyBroken(OpenRTM_aist.DataFlowComponentBase):
+    def __init__(self, manager):
+        raise ValueError("broken on purpose")
+
+
 def PyFaultyInit(manager):
-    manager.registerFactory(OpenRTM_aist.Properties(defaults_str=faulty_spec), PyFaulty, OpenRTM_aist.Delete)
+    for cls in (PyFaulty, PyBroken):
+        manager.registerFactory(OpenRTM_aist.Properties(defaults_str=spec(cls.__name__)), cls, OpenRTM_aist.Delete)
+    print("PyBroken created:", manager.createComponent("PyBroken"))
     manager.createComponent("PyFaulty")
 
 
