@@ -60,6 +60,7 @@ private slots:
     void componentExchangesDataWithBuiltins();
     void callbackExceptionMovesComponentToError();
     void componentsOfOneProcessExchangeData();
+    void configurationReachesBoundVariables();
     void installedPackagesWork();
 
 private:
@@ -300,6 +301,29 @@ void TestPython::componentsOfOneProcessExchangeData()
     QCOMPARE(pair->exitStatus(), QProcess::NormalExit);
     QCOMPARE(pair->exitCode(), 0);
     m_live.stop(pair);
+}
+
+void TestPython::configurationReachesBoundVariables()
+{
+    QProcess *config = startScript(testScript(QStringLiteral("PyConfig.py")), QStringLiteral("PyConfig0.rtc"));
+    QVERIFY(config);
+    QVERIFY(rtctlSucceeds({"act", "PyConfig0.rtc"}));
+    // The defaults, converted to the types of the variables' values.
+    QTRY_VERIFY_WITH_TIMEOUT(printed(config).contains(QLatin1String(
+                                 "int_param=1 double_param=0.5 str_param='text' vector_param=[1.5, 2.5] flag_param=False\n")),
+                             runTimeoutMs);
+    for (const QStringList &change : {QStringList{"int_param", "17"}, QStringList{"vector_param", "3,4.25,5"},
+                                      QStringList{"str_param", "changed text"}, QStringList{"flag_param", "YES"}})
+        QVERIFY(rtctlSucceeds(QStringList{"conf", "PyConfig0.rtc", "set"} + change));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        printed(config).contains(QLatin1String("int_param=17 double_param=0.5 str_param='changed text' "
+                                               "vector_param=[3.0, 4.25, 5.0] flag_param=True\n")),
+        runTimeoutMs);
+    // A value that does not convert leaves the variable as it was.
+    QVERIFY(rtctlSucceeds({"conf", "PyConfig0.rtc", "set", "double_param", "abc"}));
+    QVERIFY(rtctlSucceeds({"conf", "PyConfig0.rtc", "set", "int_param", "18"}));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(config).contains(QLatin1String("int_param=18 double_param=0.5 ")), runTimeoutMs);
+    m_live.stop(config);
 }
 
 void TestPython::installedPackagesWork()

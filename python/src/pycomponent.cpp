@@ -4,6 +4,7 @@
 #include "pyinterpreter.h"
 #include "pyinport.h"
 #include "pyoutport.h"
+#include "pyparameter.h"
 
 #include <rtm/SystemLogger.h>
 
@@ -74,6 +75,22 @@ bool PyComponent::addPythonOutPort(const std::string &name, py::object port)
     return addOutPort(name.c_str(), outport);
 }
 
+bool PyComponent::bindPythonParameter(const std::string &name, py::object variable, const std::string &defaultValue,
+                                      py::object trans)
+{
+    if (trans.is_none() && !py::isinstance<py::list>(variable))
+        throw py::type_error("bindParameter: the variable of " + name + " must be a list of one value, e.g. [0]");
+    if (getConfigService().isExist(name.c_str()))
+        return false;
+    // Shared, not copied: the configuration copies its setters in threads that do not hold the GIL.
+    auto parameter = std::make_shared<PyParameter>(std::move(variable), std::move(trans));
+    if (!parameter->set(defaultValue))
+        return false;
+    getConfigService().bindSetter(name.c_str(), defaultValue.c_str(),
+                                  [parameter](const char *text) { return parameter->set(text); });
+    return true;
+}
+
 template <typename... Arguments>
 RTC::ReturnCode_t PyComponent::call(const char *callback, Arguments... arguments)
 {
@@ -126,6 +143,9 @@ void bindComponent(py::module_ &module)
     py::class_<PyComponent, std::unique_ptr<PyComponent, py::nodelete>>(module, "Component")
         .def("addInPort", &PyComponent::addPythonInPort, py::arg("name"), py::arg("inport"))
         .def("addOutPort", &PyComponent::addPythonOutPort, py::arg("name"), py::arg("outport"))
+        .def("bindParameter", &PyComponent::bindPythonParameter, py::arg("param_name"), py::arg("var"),
+             py::arg("def_val"), py::arg("trans") = py::none())
+        .def("updateParameters", &PyComponent::updateParameters, py::arg("config_set"))
         .def("getInstanceName", &PyComponent::getInstanceName)
         .def("getTypeName", &PyComponent::getTypeName)
         .def("getCategory", &PyComponent::getCategory)

@@ -35,6 +35,13 @@ public:
     /// Adds a Python InPort or OutPort and keeps it as long as the component.
     bool addPythonInPort(const std::string &name, pybind11::object port);
     bool addPythonOutPort(const std::string &name, pybind11::object port);
+    /**
+     * OpenRTM-aist-Python's bindParameter(): binds configuration parameter @p name to
+     * @p variable (a list of one element, see PyParameter) with default @p defaultValue, applied
+     * at once. False when the name is bound already or the default does not convert.
+     */
+    bool bindPythonParameter(const std::string &name, pybind11::object variable, const std::string &defaultValue,
+                             pybind11::object trans);
 
     RTC::ReturnCode_t onInitialize() override;
     RTC::ReturnCode_t onFinalize() override;
