@@ -57,6 +57,7 @@ private slots:
     void initTestCase();
     void dataTypesConvert();
     void simpleIoExamplesRunUnchanged();
+    void seqIoExamplesRunUnchanged();
     void componentExchangesDataWithBuiltins();
     void callbackExceptionMovesComponentToError();
     void componentsOfOneProcessExchangeData();
@@ -223,6 +224,41 @@ void TestPython::simpleIoExamplesRunUnchanged()
     QTRY_VERIFY_WITH_TIMEOUT(status(QStringLiteral("SimpleIoSink.rtc"), "received_count").toInt() >= 3, runTimeoutMs);
     QCOMPARE(integers(status(QStringLiteral("SimpleIoSink.rtc"), "received_values")).value(0) > 0, true);
     QVERIFY(rtctlSucceeds({"deact", "ConsoleIn0.rtc"}));
+    m_live.stop(in);
+    m_live.stop(out);
+}
+
+void TestPython::seqIoExamplesRunUnchanged()
+{
+    const QString example = corpusDir() + QStringLiteral("/SeqIO/");
+    if (!QFileInfo::exists(example + QStringLiteral("SeqIn.py")))
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
+              "project) is absent");
+    const QString manager = QStringLiteral("/%1/%2.host_cxt/manager.mgr").arg(m_live.namingServer(), hostName);
+    QVERIFY(rtctlSucceeds({"mgr", manager, "create", "SeqIn?instance_name=SeqSink"}));
+    QProcess *out = startScript(example + QStringLiteral("SeqOut.py"), QStringLiteral("SequenceOutComponent0.rtc"));
+    QVERIFY(out);
+    QProcess *in = startScript(example + QStringLiteral("SeqIn.py"), QStringLiteral("SequenceInComponent0.rtc"));
+    QVERIFY(in);
+    const QStringList ports{"Octet", "Short", "Long", "Float", "Double",
+                            "OctetSeq", "ShortSeq", "LongSeq", "FloatSeq", "DoubleSeq"};
+    for (const QString &port : ports) {
+        const QString source = QStringLiteral("SequenceOutComponent0.rtc:") + port;
+        QVERIFY(rtctlSucceeds({"con", source, "SequenceInComponent0.rtc:" + port}));
+        QVERIFY(rtctlSucceeds({"con", source, "SeqSink.rtc:" + port}));
+    }
+    for (const char *component : {"SeqSink.rtc", "SequenceInComponent0.rtc", "SequenceOutComponent0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // SeqOut.py sends letters A to J as octets; SeqIn.py prints each with its character.
+    const QRegularExpression octet(QStringLiteral(" (6[5-9]|7[0-4])\\[[A-J]\\] "));
+    QTRY_VERIFY2_WITH_TIMEOUT(octet.match(printed(in)).hasMatch(), qPrintable(printed(in).right(3000)), runTimeoutMs);
+    QVERIFY2(printed(in).contains(QLatin1String("Sequence Data")), qPrintable(printed(in).right(2000)));
+    // rtmanager's C++ SeqIn takes every one of the ten types from the Python component.
+    for (const QString &port : ports)
+        QTRY_VERIFY2_WITH_TIMEOUT(status(QStringLiteral("SeqSink.rtc"), qPrintable(port + "_count")).toInt() > 0,
+                                  qPrintable(port), runTimeoutMs);
+    for (const char *component : {"SequenceOutComponent0.rtc", "SequenceInComponent0.rtc"})
+        QVERIFY(rtctlSucceeds({"deact", component}));
     m_live.stop(in);
     m_live.stop(out);
 }
