@@ -7,7 +7,9 @@
 //   sink as well;
 // - a component of ours (data/python/PyScaler.py) between rtmanager's built-in source and sink;
 // - an exception in a callback (data/python/PyFaulty.py): Error state, traceback, process alive;
-// - the IDL types' Python classes and CDR (data/python/datatypes.py).
+// - OpenRTM-aist-Python's SeqIO example unchanged, its ten data types also reaching rtmanager's SeqIn;
+// - two Python components of one process, configuration parameters, a generated Python project;
+// - the IDL types' Python classes and CDR (data/python/datatypes.py), from the build tree and installed.
 #include "componentstatus.h"
 #include "livesystem.h"
 #include "rtctlrunner.h"
@@ -62,6 +64,7 @@ private slots:
     void callbackExceptionMovesComponentToError();
     void componentsOfOneProcessExchangeData();
     void configurationReachesBoundVariables();
+    void generatedComponentRuns();
     void installedPackagesWork();
 
 private:
@@ -360,6 +363,23 @@ void TestPython::configurationReachesBoundVariables()
     QVERIFY(rtctlSucceeds({"conf", "PyConfig0.rtc", "set", "int_param", "18"}));
     QTRY_VERIFY_WITH_TIMEOUT(printed(config).contains(QLatin1String("int_param=18 double_param=0.5 ")), runTimeoutMs);
     m_live.stop(config);
+}
+
+void TestPython::generatedComponentRuns()
+{
+    // The Builder's Python project as generated (data ports, OpenRTM_aist.instantiateDataType).
+    const QString project = m_work.filePath(QStringLiteral("generated"));
+    const RtctlResult generated = runRtctl({"gen", RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml", "--lang",
+                                            "python", "-o", project});
+    QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
+    QProcess *counter = startScript(project + QStringLiteral("/Counter.py"), QStringLiteral("Counter0.rtc"));
+    QVERIFY(counter);
+    QVERIFY(rtctlSucceeds({"act", "Counter0.rtc"}));
+    QTRY_COMPARE_WITH_TIMEOUT(state(QStringLiteral("Counter0.rtc")), QStringLiteral("Active"), runTimeoutMs);
+    const RtctlResult profile = rtctl({"cat", "Counter0.rtc"});
+    QVERIFY2(profile.out.contains(QLatin1String("DataInPort: in")) && profile.out.contains(QLatin1String("DataOutPort: count")),
+             qPrintable(profile.out));
+    m_live.stop(counter);
 }
 
 void TestPython::installedPackagesWork()

@@ -20,5 +20,10 @@ def setTimestamp(data):
     data.tm.nsec = int((now - int(now)) * 1000000000)
 
 
+def instantiateDataType(dtype):
+    """A new value of the IDL data type dtype (a class such as RTC.TimedLong) with every member zero or empty."""
+    return _rtstudio.default_value(dtype._NP_RepositoryId)
+
+
 def Delete(*args):
     """Kept for registerFactory(profile, Class, OpenRTM_aist.Delete): the runtime deletes components."""

@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <QJsonDocument>
+#include <QJsonObject>
 
 namespace py = pybind11;
 
@@ -104,6 +105,25 @@ py::object PyDataTypes::decode(const std::string &repositoryId, const unsigned c
     return converter().toPython(Codegen::IdlType::named(type), json);
 }
 
+py::object PyDataTypes::defaultValue(const std::string &repositoryId) const
+{
+    if (!m_library)
+        throw std::runtime_error("no IDL loaded");
+    const Codegen::IdlModel &model = m_library->model();
+    const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    // The codec takes members left out as zero or empty, except a timed type's time stamp, which
+    // it sets to now unless the value names it: an empty `tm` is a zero time.
+    QJsonObject members;
+    const auto declared = model.structs.constFind(type);
+    if (declared != model.structs.constEnd() && model.isTimed(*declared))
+        members.insert(QStringLiteral("tm"), QJsonObject());
+    QString error;
+    const QByteArray bytes = m_codec->encode(type, members, true, &error);
+    if (!error.isEmpty())
+        throw py::type_error("no default value for " + repositoryId + ": " + error.toStdString());
+    return decode(repositoryId, reinterpret_cast<const unsigned char *>(bytes.constData()), size_t(bytes.size()), true);
+}
+
 void bindDataTypes(py::module_ &module)
 {
     module.def("load_idl", [](const std::vector<std::string> &directories) {
@@ -117,6 +137,9 @@ void bindDataTypes(py::module_ &module)
             PyDataTypes::instance().encode(PyDataTypes::repositoryId(value), value, littleEndian);
         return py::bytes(reinterpret_cast<const char *>(bytes.data()), bytes.size());
     }, py::arg("value"), py::arg("little_endian") = true, "A value of an IDL data type as CDR bytes.");
+    module.def("default_value", [](const std::string &repositoryId) {
+        return PyDataTypes::instance().defaultValue(repositoryId);
+    }, py::arg("repository_id"), "A new value of an IDL data type with every member zero or empty.");
     module.def("cdr_decode", [](const std::string &repositoryId, const py::bytes &data, bool littleEndian) {
         const std::string bytes = data;
         return PyDataTypes::instance().decode(repositoryId, reinterpret_cast<const unsigned char *>(bytes.data()),

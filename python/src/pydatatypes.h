@@ -43,6 +43,9 @@ public:
     pybind11::object decode(const std::string &repositoryId, const unsigned char *data, size_t size,
                             bool littleEndian) const;
 
+    /// A new value of the type @p repositoryId names with every member zero or empty (OpenRTM-aist-Python's instantiateDataType()).
+    pybind11::object defaultValue(const std::string &repositoryId) const;
+
 private:
     PyDataTypes() = default;
     const PyValueConverter &converter() const;

@@ -56,6 +56,11 @@ def main():
     except TypeError as error:
         assert "data" in str(error), error
 
+    empty = OpenRTM_aist.instantiateDataType(RTC.TimedPose2D)
+    assert empty == RTC.TimedPose2D(RTC.Time(0, 0), RTC.Pose2D(RTC.Point2D(0.0, 0.0), 0.0)), empty
+    assert OpenRTM_aist.instantiateDataType(RTC.TimedOctetSeq).data == b""
+    assert OpenRTM_aist.instantiateDataType(RTC.TimedString).data == ""
+
     properties = OpenRTM_aist.Properties(defaults_str=["a", "1", "b.c", "2", ""])
     assert properties.getProperty("b.c") == "2" and properties.getProperty("x", "none") == "none"
     OpenRTM_aist.setTimestamp(sample)
