@@ -47,7 +47,8 @@ public:
         Link &link = m_links[id];
         link.in = in ? in : link.in;
         link.out = out ? out : link.out;
-        if (link.in && link.out && !link.paired && link.in->dataType() == link.out->dataType()) {
+        if (link.in && link.out && !link.paired && link.in->dataType() == link.out->dataType()
+            && link.in->takesValues() && link.out->givesValues()) {
             link.out->addDirectPeer(id, link.in);
             link.paired = true;
         }

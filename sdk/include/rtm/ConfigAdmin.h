@@ -87,8 +87,15 @@ public:
     void removeConfigurationSetNameListener(ConfigurationSetNameListenerType type,
                                             ConfigurationSetNameListener *listener);
 
-private:
+    /**
+     * RT Studio: binds parameter @p name (default @p defaultValue, which the caller has applied
+     * already) to @p setter, called with each new value when the configuration is applied; the
+     * setter answers whether the text converted. What bindParameter() uses, and language bindings
+     * whose variables are not C++ ones.
+     */
     void bindSetter(const char *name, const char *defaultValue, std::function<bool(const char *)> setter);
+
+private:
 
     struct Private;
     Private *d;

@@ -45,6 +45,12 @@ public:
      * port does not hold samples of @p type.
      */
     virtual bool receiveValue(const void *value, const std::type_info &type, const std::string &connectorId);
+    /**
+     * RT Studio: whether the port takes samples as values from OutPorts of the same process
+     * (receiveValue()). False for ports whose samples exist only as CDR (Python components'):
+     * their connections inside one process carry bytes.
+     */
+    virtual bool takesValues() const { return true; }
 
     /**
      * One connector object per connection (valid until the connection goes): its profile, its

@@ -45,6 +45,11 @@ public:
     ReturnCode_t notify_connect(ConnectorProfile &connector_profile) override;
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
+    /**
+     * RT Studio: whether the port hands samples as values to InPorts of the same process. False
+     * for ports whose samples exist only as CDR (Python components'): their connections carry bytes.
+     */
+    virtual bool givesValues() const { return true; }
     /// RT Studio: hands samples of connection @p connectorId to @p inport directly (same process).
     void addDirectPeer(const std::string &connectorId, InPortBase *inport);
     void removeDirectPeer(const std::string &connectorId);

@@ -1,0 +1,55 @@
+# SPDX-License-Identifier: MIT
+"""The base class of Python data-flow components. The runtime makes an object of the class with the
+manager, attaches the component's runtime side as _rtc and calls the on…() methods from its
+execution context; the methods of the runtime side (addInPort, addOutPort, getInstanceName, …)
+are reached through the component."""
+
+import RTC
+
+
+class DataFlowComponentBase(object):
+    def __init__(self, manager):
+        self._manager = manager
+
+    def __getattr__(self, name):
+        rtc = self.__dict__.get("_rtc")
+        if rtc is None:
+            raise AttributeError("%s has no attribute %s (the runtime attaches the component's methods"
+                                 " when the manager creates it)" % (type(self).__name__, name))
+        return getattr(rtc, name)
+
+    def onInitialize(self):
+        return RTC.RTC_OK
+
+    def onFinalize(self):
+        return RTC.RTC_OK
+
+    def onStartup(self, ec_id):
+        return RTC.RTC_OK
+
+    def onShutdown(self, ec_id):
+        return RTC.RTC_OK
+
+    def onActivated(self, ec_id):
+        return RTC.RTC_OK
+
+    def onDeactivated(self, ec_id):
+        return RTC.RTC_OK
+
+    def onAborting(self, ec_id):
+        return RTC.RTC_OK
+
+    def onError(self, ec_id):
+        return RTC.RTC_OK
+
+    def onReset(self, ec_id):
+        return RTC.RTC_OK
+
+    def onExecute(self, ec_id):
+        return RTC.RTC_OK
+
+    def onStateUpdate(self, ec_id):
+        return RTC.RTC_OK
+
+    def onRateChanged(self, ec_id):
+        return RTC.RTC_OK

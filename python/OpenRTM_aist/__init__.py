@@ -1,0 +1,29 @@
+# SPDX-License-Identifier: MIT
+"""OpenRTM-aist-Python's component API on RT Studio's runtime (no omniORBpy): the manager, data-flow
+components, data ports and connector listeners, with OpenRTM-aist-Python's names."""
+
+import time
+
+import RTC
+import _rtstudio
+from _rtstudio import ConnectorDataListenerType, ConnectorInfo, ConnectorListenerType, InPort, Manager, \
+    OutPort, Properties
+from OpenRTM_aist.DataFlowComponentBase import DataFlowComponentBase
+from OpenRTM_aist.Listeners import ConnectorDataListener, ConnectorDataListenerT, ConnectorListener, \
+    ConnectorListenerStatus
+
+
+def setTimestamp(data):
+    """Sets data.tm to the current time."""
+    now = time.time()
+    data.tm.sec = int(now)
+    data.tm.nsec = int((now - int(now)) * 1000000000)
+
+
+def instantiateDataType(dtype):
+    """A new value of the IDL data type dtype (a class such as RTC.TimedLong) with every member zero or empty."""
+    return _rtstudio.default_value(dtype._NP_RepositoryId)
+
+
+def Delete(*args):
+    """Kept for registerFactory(profile, Class, OpenRTM_aist.Delete): the runtime deletes components."""

@@ -1,0 +1,143 @@
+# SPDX-License-Identifier: MIT
+"""Python classes for OpenRTM's IDL types in omniORBpy's layout (module RTC, RTC.TimedLong,
+RTC.RTC_OK, …), made from the IDL files installed with the SDK: a struct is a class whose
+constructor takes the members in declaration order, an enum a class with one item per
+enumerator, the items and the integer constants live in the enclosing scope. The extension
+converts values of these classes to and from CDR by the same IDL."""
+
+import os
+import types
+
+import _rtstudio
+
+
+def _idl_directories():
+    # The packages live in <prefix>/lib/python3/dist-packages, OpenRTM's IDL in <prefix>/include.
+    prefix = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
+    return [os.path.join(prefix, "include", "openrtm-2.1", "rtm", "idl")]
+
+
+def _repository_id(scoped_name):
+    return "IDL:" + scoped_name.replace("::", "/") + ":1.0"
+
+
+def _python_name(scoped_name):
+    return scoped_name.replace("::", ".")
+
+
+class StructBase(object):
+    """An IDL struct: members as attributes, set positionally in declaration order."""
+
+    _NP_RepositoryId = None
+    _fields = ()
+
+    def __init__(self, *args, **kwargs):
+        if len(args) > len(self._fields):
+            raise TypeError("%s takes %d members, %d given" % (self._NP_ClassName, len(self._fields), len(args)))
+        for name, value in zip(self._fields, args):
+            setattr(self, name, value)
+        for name, value in kwargs.items():
+            if name not in self._fields:
+                raise TypeError("%s has no member %s" % (self._NP_ClassName, name))
+            setattr(self, name, value)
+        missing = [name for name in self._fields if name not in self.__dict__]
+        if missing:
+            raise TypeError("%s() misses %s" % (self._NP_ClassName, ", ".join(missing)))
+
+    def __repr__(self):
+        members = ", ".join("%s=%r" % (name, getattr(self, name, None)) for name in self._fields)
+        return "%s(%s)" % (self._NP_ClassName, members)
+
+    def __eq__(self, other):
+        return type(self) is type(other) and all(
+            getattr(self, name, None) == getattr(other, name, None) for name in self._fields)
+
+    def __ne__(self, other):
+        return not self == other
+
+    __hash__ = None
+
+
+class EnumItem(object):
+    """One enumerator: its name in _n and its value in _v, as omniORBpy's items."""
+
+    def __init__(self, name, value, parent_id):
+        self._n = name
+        self._v = value
+        self._parent_id = parent_id
+
+    def __repr__(self):
+        return self._n
+
+    __str__ = __repr__
+
+    def __eq__(self, other):
+        return isinstance(other, EnumItem) and (self._parent_id, self._v) == (other._parent_id, other._v)
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __lt__(self, other):
+        return self._v < other._v
+
+    def __hash__(self):
+        return hash((self._parent_id, self._v))
+
+
+class Enum(object):
+    """An IDL enum: its items in _items, in declaration order."""
+
+    def __init__(self, repository_id, items):
+        self._NP_RepositoryId = repository_id
+        self._items = items
+
+    def _item(self, value):
+        return self._items[value]
+
+
+def _scope(scopes, scoped_name):
+    """The namespace dict of the scope enclosing scoped_name (nested scopes become module objects)."""
+    parts = scoped_name.split("::")[:-1]
+    namespace = scopes.setdefault(parts[0], {})
+    for depth in range(1, len(parts)):
+        inner = namespace.get(parts[depth])
+        if inner is None:
+            inner = types.ModuleType("::".join(parts[:depth + 1]))
+            namespace[parts[depth]] = inner
+        namespace = inner.__dict__ if isinstance(inner, types.ModuleType) else inner.__dict__
+    return namespace
+
+
+def _make_types():
+    description = _rtstudio.load_idl(_idl_directories())
+    scopes = {}
+    classes = {}
+    for scoped_name, members in description["structs"].items():
+        leaf = scoped_name.split("::")[-1]
+        cls = type(leaf, (StructBase,), {
+            "_NP_RepositoryId": _repository_id(scoped_name),
+            "_NP_ClassName": _python_name(scoped_name),
+            "_fields": tuple(members),
+        })
+        classes[scoped_name] = cls
+        _scope(scopes, scoped_name)[leaf] = cls
+    for scoped_name, names in description["enums"].items():
+        repository_id = _repository_id(scoped_name)
+        enum = Enum(repository_id, [EnumItem(name, value, repository_id) for value, name in enumerate(names)])
+        classes[scoped_name] = enum
+        scope = _scope(scopes, scoped_name)
+        scope[scoped_name.split("::")[-1]] = enum
+        for item in enum._items:
+            scope[item._n] = item
+    for scoped_name, value in description["consts"].items():
+        _scope(scopes, scoped_name)[scoped_name.split("::")[-1]] = value
+    _rtstudio.set_idl_classes(classes)
+    return scopes
+
+
+_scopes = _make_types()
+
+
+def populate(namespace, module_name):
+    """Puts the types, enumerators and constants of IDL module module_name into namespace."""
+    namespace.update(_scopes.get(module_name, {}))

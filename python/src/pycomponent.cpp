@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+#include "pycomponent.h"
+#include "bindings.h"
+#include "pyinterpreter.h"
+#include "pyinport.h"
+#include "pyoutport.h"
+#include "pyparameter.h"
+
+#include <rtm/SystemLogger.h>
+
+namespace py = pybind11;
+
+namespace RtPython {
+
+namespace {
+
+/// A callback's result: omniORBpy's ReturnCode_t items carry their value in _v; None counts as RTC_OK.
+RTC::ReturnCode_t returnCode(const py::object &result)
+{
+    if (result.is_none())
+        return RTC::RTC_OK;
+    const py::object value = py::hasattr(result, "_v") ? result.attr("_v") : result;
+    return py::isinstance<py::int_>(value) ? RTC::ReturnCode_t(value.cast<int>()) : RTC::RTC_ERROR;
+}
+
+} // namespace
+
+PyComponent::PyComponent(RTC::Manager *manager)
+    : DataFlowComponentBase(manager)
+{
+}
+
+PyComponent *PyComponent::create(RTC::Manager *manager, const py::object &cls)
+{
+    py::gil_scoped_acquire gil;
+    auto *component = new PyComponent(manager);
+    try {
+        component->m_self = cls(py::cast(manager, py::return_value_policy::reference));
+        component->m_self.attr("_rtc") = py::cast(component, py::return_value_policy::reference);
+    } catch (py::error_already_set &error) {
+        // The runtime needs a servant; this one refuses to initialize and says why.
+        component->m_createError = traceback(error);
+        component->m_self = py::object();
+    }
+    return component;
+}
+
+PyComponent::~PyComponent()
+{
+    finalizePorts();
+    if (!interpreterAlive()) {
+        m_self.release();
+        for (py::object &port : m_ports)
+            port.release();
+        return;
+    }
+    py::gil_scoped_acquire gil;
+    if (m_self && py::hasattr(m_self, "_rtc"))
+        m_self.attr("_rtc") = py::none();
+    m_ports.clear();
+    m_self = py::object();
+}
+
+bool PyComponent::addPythonInPort(const std::string &name, py::object port)
+{
+    auto &inport = port.cast<PyInPort &>();
+    m_ports.push_back(std::move(port));
+    return addInPort(name.c_str(), inport);
+}
+
+bool PyComponent::addPythonOutPort(const std::string &name, py::object port)
+{
+    auto &outport = port.cast<PyOutPort &>();
+    m_ports.push_back(std::move(port));
+    return addOutPort(name.c_str(), outport);
+}
+
+bool PyComponent::bindPythonParameter(const std::string &name, py::object variable, const std::string &defaultValue,
+                                      py::object trans)
+{
+    if (trans.is_none() && !py::isinstance<py::list>(variable))
+        throw py::type_error("bindParameter: the variable of " + name + " must be a list of one value, e.g. [0]");
+    if (getConfigService().isExist(name.c_str()))
+        return false;
+    // Shared, not copied: the configuration copies its setters in threads that do not hold the GIL.
+    auto parameter = std::make_shared<PyParameter>(std::move(variable), std::move(trans));
+    if (!parameter->set(defaultValue))
+        return false;
+    getConfigService().bindSetter(name.c_str(), defaultValue.c_str(),
+                                  [parameter](const char *text) { return parameter->set(text); });
+    return true;
+}
+
+template <typename... Arguments>
+RTC::ReturnCode_t PyComponent::call(const char *callback, Arguments... arguments)
+{
+    if (!interpreterAlive())
+        return RTC::RTC_OK;
+    py::gil_scoped_acquire gil;
+    if (!m_self || !py::hasattr(m_self, callback))
+        return RTC::RTC_OK;
+    try {
+        return returnCode(m_self.attr(callback)(arguments...));
+    } catch (py::error_already_set &error) {
+        return fail(callback, error);
+    }
+}
+
+RTC::ReturnCode_t PyComponent::fail(const char *callback, py::error_already_set &error)
+{
+    const std::string context = std::string(getInstanceName()) + ": " + callback
+                                + "() raised an exception; the callback fails with RTC_ERROR:";
+    RTC_ERROR_STR(context + "\n" + traceback(error));
+    printError(context, error);
+    return RTC::RTC_ERROR;
+}
+
+RTC::ReturnCode_t PyComponent::onInitialize()
+{
+    if (!m_createError.empty()) {
+        RTC_ERROR_STR("the Python component could not be made:\n" + m_createError);
+        setInitializeError("the Python component could not be made: " + m_createError);
+        return RTC::RTC_ERROR;
+    }
+    return call("onInitialize");
+}
+
+RTC::ReturnCode_t PyComponent::onFinalize() { return call("onFinalize"); }
+RTC::ReturnCode_t PyComponent::onStartup(RTC::UniqueId ec_id) { return call("onStartup", ec_id); }
+RTC::ReturnCode_t PyComponent::onShutdown(RTC::UniqueId ec_id) { return call("onShutdown", ec_id); }
+RTC::ReturnCode_t PyComponent::onActivated(RTC::UniqueId ec_id) { return call("onActivated", ec_id); }
+RTC::ReturnCode_t PyComponent::onDeactivated(RTC::UniqueId ec_id) { return call("onDeactivated", ec_id); }
+RTC::ReturnCode_t PyComponent::onAborting(RTC::UniqueId ec_id) { return call("onAborting", ec_id); }
+RTC::ReturnCode_t PyComponent::onError(RTC::UniqueId ec_id) { return call("onError", ec_id); }
+RTC::ReturnCode_t PyComponent::onReset(RTC::UniqueId ec_id) { return call("onReset", ec_id); }
+RTC::ReturnCode_t PyComponent::onExecute(RTC::UniqueId ec_id) { return call("onExecute", ec_id); }
+RTC::ReturnCode_t PyComponent::onStateUpdate(RTC::UniqueId ec_id) { return call("onStateUpdate", ec_id); }
+RTC::ReturnCode_t PyComponent::onRateChanged(RTC::UniqueId ec_id) { return call("onRateChanged", ec_id); }
+
+void bindComponent(py::module_ &module)
+{
+    // Never deleted from Python: the ORB owns the bridge.
+    py::class_<PyComponent, std::unique_ptr<PyComponent, py::nodelete>>(module, "Component")
+        .def("addInPort", &PyComponent::addPythonInPort, py::arg("name"), py::arg("inport"))
+        .def("addOutPort", &PyComponent::addPythonOutPort, py::arg("name"), py::arg("outport"))
+        .def("bindParameter", &PyComponent::bindPythonParameter, py::arg("param_name"), py::arg("var"),
+             py::arg("def_val"), py::arg("trans") = py::none())
+        .def("updateParameters", &PyComponent::updateParameters, py::arg("config_set"))
+        .def("getInstanceName", &PyComponent::getInstanceName)
+        .def("getTypeName", &PyComponent::getTypeName)
+        .def("getCategory", &PyComponent::getCategory)
+        .def("getProperties", &PyComponent::getProperties, py::return_value_policy::reference_internal);
+}
+
+} // namespace RtPython

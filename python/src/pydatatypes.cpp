@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: MIT
+#include "pydatatypes.h"
+#include "bindings.h"
+
+#include <pybind11/stl.h>
+
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace py = pybind11;
+
+namespace RtPython {
+
+PyDataTypes &PyDataTypes::instance()
+{
+    // Never destroyed: it holds Python objects, and static destructors run after the interpreter is gone.
+    static PyDataTypes *types = new PyDataTypes;
+    return *types;
+}
+
+void PyDataTypes::load(const std::vector<std::string> &directories)
+{
+    QStringList folders;
+    for (const std::string &directory : directories)
+        folders << QString::fromStdString(directory);
+    auto library = std::make_unique<Codegen::IdlTypeLibrary>(folders);
+    if (library->model().structs.isEmpty())
+        throw std::runtime_error("no IDL data types found in " + folders.join(QStringLiteral(", ")).toStdString());
+    m_converter.reset();
+    m_codec = std::make_unique<Codegen::CdrCodec>(library->model());
+    m_library = std::move(library);
+}
+
+py::dict PyDataTypes::describe() const
+{
+    if (!m_library)
+        throw std::runtime_error("no IDL loaded");
+    const Codegen::IdlModel &model = m_library->model();
+    py::dict structs, enums, consts;
+    for (const Codegen::IdlStruct &type : model.structs) {
+        py::list members;
+        for (const Codegen::IdlMember &member : type.members)
+            members.append(member.name.toStdString());
+        structs[py::str(type.scopedName.toStdString())] = members;
+    }
+    for (const Codegen::IdlEnum &type : model.enums) {
+        py::list names;
+        for (const QString &name : type.enumerators)
+            names.append(name.toStdString());
+        enums[py::str(type.scopedName.toStdString())] = names;
+    }
+    for (const Codegen::IdlConst &constant : model.consts) {
+        if (const std::optional<qint64> value = constant.integerValue())
+            consts[py::str(constant.scopedName.toStdString())] = py::int_(static_cast<long long>(*value));
+    }
+    py::dict description;
+    description["structs"] = structs;
+    description["enums"] = enums;
+    description["consts"] = consts;
+    return description;
+}
+
+void PyDataTypes::setClasses(py::dict classes)
+{
+    if (!m_library)
+        throw std::runtime_error("no IDL loaded");
+    m_converter = std::make_unique<PyValueConverter>(m_library->model(), std::move(classes));
+}
+
+const PyValueConverter &PyDataTypes::converter() const
+{
+    if (!m_converter)
+        throw std::runtime_error("the IDL types are not loaded (import RTC first)");
+    return *m_converter;
+}
+
+std::string PyDataTypes::repositoryId(py::handle value)
+{
+    if (!py::hasattr(value, "_NP_RepositoryId"))
+        throw py::type_error("a value of an IDL data type (such as RTC.TimedLong) is needed");
+    return value.attr("_NP_RepositoryId").cast<std::string>();
+}
+
+std::vector<unsigned char> PyDataTypes::encode(const std::string &repositoryId, py::handle value,
+                                               bool littleEndian) const
+{
+    const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    const QJsonValue json = converter().toJson(Codegen::IdlType::named(type), value, type);
+    QString error;
+    const QByteArray bytes = m_codec->encode(type, json, littleEndian, &error);
+    if (!error.isEmpty())
+        throw py::type_error(error.toStdString());
+    return {bytes.begin(), bytes.end()};
+}
+
+py::object PyDataTypes::decode(const std::string &repositoryId, const unsigned char *data, size_t size,
+                               bool littleEndian) const
+{
+    const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    QString error;
+    const QJsonValue json = m_codec->decode(
+        type, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size)), littleEndian, &error);
+    if (!error.isEmpty())
+        throw py::value_error(error.toStdString());
+    return converter().toPython(Codegen::IdlType::named(type), json);
+}
+
+py::object PyDataTypes::defaultValue(const std::string &repositoryId) const
+{
+    if (!m_library)
+        throw std::runtime_error("no IDL loaded");
+    const Codegen::IdlModel &model = m_library->model();
+    const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    // The codec takes members left out as zero or empty, except a timed type's time stamp, which
+    // it sets to now unless the value names it: an empty `tm` is a zero time.
+    QJsonObject members;
+    const auto declared = model.structs.constFind(type);
+    if (declared != model.structs.constEnd() && model.isTimed(*declared))
+        members.insert(QStringLiteral("tm"), QJsonObject());
+    QString error;
+    const QByteArray bytes = m_codec->encode(type, members, true, &error);
+    if (!error.isEmpty())
+        throw py::type_error("no default value for " + repositoryId + ": " + error.toStdString());
+    return decode(repositoryId, reinterpret_cast<const unsigned char *>(bytes.constData()), size_t(bytes.size()), true);
+}
+
+void bindDataTypes(py::module_ &module)
+{
+    module.def("load_idl", [](const std::vector<std::string> &directories) {
+        PyDataTypes::instance().load(directories);
+        return PyDataTypes::instance().describe();
+    }, py::arg("directories"), "Reads OpenRTM's IDL files; the types they declare, for making classes.");
+    module.def("set_idl_classes", [](py::dict classes) { PyDataTypes::instance().setClasses(std::move(classes)); },
+               py::arg("classes"), "The Python class of each struct and enum, by scoped name.");
+    module.def("cdr_encode", [](py::handle value, bool littleEndian) {
+        const std::vector<unsigned char> bytes =
+            PyDataTypes::instance().encode(PyDataTypes::repositoryId(value), value, littleEndian);
+        return py::bytes(reinterpret_cast<const char *>(bytes.data()), bytes.size());
+    }, py::arg("value"), py::arg("little_endian") = true, "A value of an IDL data type as CDR bytes.");
+    module.def("default_value", [](const std::string &repositoryId) {
+        return PyDataTypes::instance().defaultValue(repositoryId);
+    }, py::arg("repository_id"), "A new value of an IDL data type with every member zero or empty.");
+    module.def("cdr_decode", [](const std::string &repositoryId, const py::bytes &data, bool littleEndian) {
+        const std::string bytes = data;
+        return PyDataTypes::instance().decode(repositoryId, reinterpret_cast<const unsigned char *>(bytes.data()),
+                                              bytes.size(), littleEndian);
+    }, py::arg("repository_id"), py::arg("data"), py::arg("little_endian") = true,
+       "A new value of the IDL data type @p repository_id from CDR bytes.");
+}
+
+} // namespace RtPython

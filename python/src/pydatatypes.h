@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "cdrcodec.h"
+#include "idltypelibrary.h"
+#include "pyvalueconverter.h"
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace RtPython {
+
+/**
+ * The IDL data types Python components exchange: the model read from OpenRTM's IDL files, the
+ * Python class of each struct and enum (made by _rtstudio_idl from describe()), and samples encoded
+ * to CDR and decoded from it by Codegen::CdrCodec. One per process; use it with the GIL held.
+ */
+class PyDataTypes
+{
+public:
+    static PyDataTypes &instance();
+
+    /// Reads every IDL file in @p directories; throws RuntimeError naming the problems.
+    void load(const std::vector<std::string> &directories);
+    /**
+     * The declared types for making classes: `structs` (scoped name → member names in
+     * declaration order), `enums` (scoped name → enumerator names), `consts` (scoped name →
+     * integer value, for those that are integers).
+     */
+    pybind11::dict describe() const;
+    /// The classes of the structs and enums, by scoped name.
+    void setClasses(pybind11::dict classes);
+
+    /// The repository id of @p value's class (its `_NP_RepositoryId`); TypeError when it has none.
+    static std::string repositoryId(pybind11::handle value);
+    /// @p value as CDR of the type @p repositoryId names; TypeError naming a member that does not fit.
+    std::vector<unsigned char> encode(const std::string &repositoryId, pybind11::handle value,
+                                      bool littleEndian) const;
+    /// A new Python value from CDR of the type @p repositoryId names; ValueError when it does not decode.
+    pybind11::object decode(const std::string &repositoryId, const unsigned char *data, size_t size,
+                            bool littleEndian) const;
+
+    /// A new value of the type @p repositoryId names with every member zero or empty (OpenRTM-aist-Python's instantiateDataType()).
+    pybind11::object defaultValue(const std::string &repositoryId) const;
+
+private:
+    PyDataTypes() = default;
+    const PyValueConverter &converter() const;
+
+    std::unique_ptr<Codegen::IdlTypeLibrary> m_library;
+    std::unique_ptr<Codegen::CdrCodec> m_codec;
+    std::unique_ptr<PyValueConverter> m_converter;
+};
+
+} // namespace RtPython

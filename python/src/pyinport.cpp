@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+#include "pyinport.h"
+#include "pyconnectorlistener.h"
+#include "pydatalistener.h"
+#include "pydatatypes.h"
+#include "pyinterpreter.h"
+
+namespace py = pybind11;
+
+namespace RtPython {
+
+PyInPort::PyInPort(const std::string &name, py::object value)
+    : InPortBase(name.c_str(), PyDataTypes::repositoryId(value).c_str())
+    , m_value(std::move(value))
+{
+}
+
+PyInPort::~PyInPort()
+{
+    releasePython(m_value);
+}
+
+bool PyInPort::read(std::string name)
+{
+    (void)name; // samples are not told apart by connection (as in the SDK's InPort with several)
+    // Also called by the runtime (readAll) from threads that do not hold the GIL.
+    py::gil_scoped_acquire gil;
+    return takeSample();
+}
+
+bool PyInPort::takeSample()
+{
+    Runtime::SharedCdr bytes;
+    bool little = true;
+    {
+        // A pull connection asks the other side here: other threads run Python meanwhile.
+        py::gil_scoped_release released;
+        if (!readBytes(&bytes, &little))
+            return false;
+    }
+    m_value = PyDataTypes::instance().decode(dataType(), bytes->data(), bytes->size(), little);
+    py::gil_scoped_release released;
+    m_listeners.notifyData(RTC::ConnectorDataListenerType::ON_BUFFER_READ, std::string(), bytes->data(),
+                           static_cast<unsigned long>(bytes->size()), little);
+    return true;
+}
+
+py::object PyInPort::readValue()
+{
+    takeSample();
+    return m_value;
+}
+
+void PyInPort::addDataListener(RTC::ConnectorDataListenerType type, py::object listener)
+{
+    addConnectorDataListener(type, new PyDataListener(std::move(listener), dataType()));
+}
+
+void PyInPort::addConnectorListener(RTC::ConnectorListenerType type, py::object listener)
+{
+    RTC::InPortBase::addConnectorListener(type, new PyConnectorListener(std::move(listener)));
+}
+
+} // namespace RtPython

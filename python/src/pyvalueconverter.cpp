@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: MIT
+#include "pyvalueconverter.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace py = pybind11;
+using Codegen::IdlType;
+
+namespace RtPython {
+
+namespace {
+
+bool isFloating(const QString &keyword)
+{
+    return keyword == QLatin1String("float") || keyword == QLatin1String("double");
+}
+
+bool isCharacter(const QString &keyword)
+{
+    return keyword == QLatin1String("char") || keyword == QLatin1String("wchar");
+}
+
+bool isBasic(const IdlType &type, const char *keyword)
+{
+    return type.kind == IdlType::Kind::Basic && type.name == QLatin1String(keyword);
+}
+
+// The codec writes non-finite floating values as these strings.
+QJsonValue floatingToJson(double number)
+{
+    if (std::isnan(number))
+        return QStringLiteral("NaN");
+    if (std::isinf(number))
+        return number > 0 ? QStringLiteral("Infinity") : QStringLiteral("-Infinity");
+    return number;
+}
+
+double floatingFromJson(const QJsonValue &value)
+{
+    if (!value.isString())
+        return value.toDouble();
+    const QString text = value.toString();
+    if (text == QLatin1String("NaN"))
+        return std::nan("");
+    return text.startsWith(QLatin1Char('-')) ? -INFINITY : INFINITY;
+}
+
+} // namespace
+
+PyValueConverter::PyValueConverter(const Codegen::IdlModel &model, py::dict classes)
+    : m_model(model)
+    , m_classes(std::move(classes))
+{
+}
+
+void PyValueConverter::refuse(const QString &path, const QString &reason)
+{
+    throw py::type_error((path + QStringLiteral(": ") + reason).toStdString());
+}
+
+QJsonValue PyValueConverter::toJson(const IdlType &written, py::handle value, const QString &path) const
+{
+    const IdlType type = m_model.resolve(written);
+    switch (type.kind) {
+    case IdlType::Kind::Basic:
+        return basicToJson(type.name, value, path);
+    case IdlType::Kind::String:
+    case IdlType::Kind::WString:
+        if (!py::isinstance<py::str>(value))
+            refuse(path, QStringLiteral("a str is needed"));
+        return QString::fromStdString(value.cast<std::string>());
+    case IdlType::Kind::Sequence:
+        return listToJson(type.element.front(), value, path);
+    case IdlType::Kind::Array: {
+        // An array of several dimensions is a list of arrays of one dimension less.
+        IdlType inner = type;
+        inner.dimensions.removeFirst();
+        return listToJson(inner.dimensions.isEmpty() ? type.element.front() : inner, value, path);
+    }
+    case IdlType::Kind::Named:
+        return namedToJson(type.name, value, path);
+    case IdlType::Kind::Fixed:
+        break;
+    }
+    refuse(path, QStringLiteral("the type %1 is not supported yet").arg(type.toString()));
+}
+
+QJsonValue PyValueConverter::basicToJson(const QString &keyword, py::handle value, const QString &path) const
+{
+    if (keyword == QLatin1String("boolean"))
+        return bool(py::bool_(py::reinterpret_borrow<py::object>(value)));
+    if (isCharacter(keyword)) {
+        if (!py::isinstance<py::str>(value) || py::len(value) != 1)
+            refuse(path, QStringLiteral("a str of one character is needed"));
+        return QString::fromStdString(value.cast<std::string>());
+    }
+    if (isFloating(keyword)) {
+        if (!py::isinstance<py::float_>(value) && !py::isinstance<py::int_>(value))
+            refuse(path, QStringLiteral("a number is needed"));
+        return floatingToJson(value.cast<double>());
+    }
+    if (keyword == QLatin1String("any") || keyword == QLatin1String("Object") || keyword == QLatin1String("long double"))
+        refuse(path, QStringLiteral("the type %1 is not supported yet").arg(keyword));
+    if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+        refuse(path, QStringLiteral("an int is needed"));
+    return QJsonValue(qint64(value.cast<long long>()));
+}
+
+QJsonValue PyValueConverter::listToJson(const IdlType &element, py::handle value, const QString &path) const
+{
+    QJsonArray items;
+    const IdlType resolved = m_model.resolve(element);
+    if (isBasic(resolved, "octet") && (py::isinstance<py::bytes>(value) || py::isinstance<py::bytearray>(value))) {
+        for (const char byte : value.cast<std::string>())
+            items.append(int(static_cast<unsigned char>(byte)));
+        return items;
+    }
+    if (resolved.kind == IdlType::Kind::Basic && isCharacter(resolved.name) && py::isinstance<py::str>(value)) {
+        for (const QChar c : QString::fromStdString(value.cast<std::string>()))
+            items.append(QString(c));
+        return items;
+    }
+    if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value))
+        refuse(path, QStringLiteral("a list is needed"));
+    int index = 0;
+    for (const py::handle item : value)
+        items.append(toJson(element, item, path + QStringLiteral("[%1]").arg(index++)));
+    return items;
+}
+
+QJsonValue PyValueConverter::namedToJson(const QString &name, py::handle value, const QString &path) const
+{
+    if (const auto it = m_model.structs.constFind(name); it != m_model.structs.constEnd()) {
+        QJsonObject object;
+        for (const Codegen::IdlMember &member : it->members) {
+            const std::string attribute = member.name.toStdString();
+            if (!py::hasattr(value, attribute.c_str()))
+                refuse(path, QStringLiteral("%1 has no member '%2'").arg(name, member.name));
+            object.insert(member.name, toJson(member.type, value.attr(attribute.c_str()),
+                                              path + QLatin1Char('.') + member.name));
+        }
+        return object;
+    }
+    if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd())
+        return enumToJson(*it, value, path);
+    refuse(path, QStringLiteral("the type %1 is not supported yet").arg(name));
+}
+
+QJsonValue PyValueConverter::enumToJson(const Codegen::IdlEnum &type, py::handle value, const QString &path) const
+{
+    // omniORBpy's enum items carry their value in _v; a plain int is taken as that value.
+    const py::object number = py::hasattr(value, "_v") ? value.attr("_v") : py::reinterpret_borrow<py::object>(value);
+    if (!py::isinstance<py::int_>(number))
+        refuse(path, QStringLiteral("an item of %1 is needed").arg(type.scopedName));
+    const long long index = number.cast<long long>();
+    if (index < 0 || index >= type.enumerators.size())
+        refuse(path, QStringLiteral("%1 has no item %2").arg(type.scopedName).arg(index));
+    return type.enumerators.at(int(index));
+}
+
+py::object PyValueConverter::toPython(const IdlType &written, const QJsonValue &value) const
+{
+    const IdlType type = m_model.resolve(written);
+    switch (type.kind) {
+    case IdlType::Kind::Basic:
+        return basicToPython(type.name, value);
+    case IdlType::Kind::String:
+    case IdlType::Kind::WString:
+        return py::str(value.toString().toStdString());
+    case IdlType::Kind::Sequence:
+        return listToPython(type.element.front(), value);
+    case IdlType::Kind::Array: {
+        IdlType inner = type;
+        inner.dimensions.removeFirst();
+        return listToPython(inner.dimensions.isEmpty() ? type.element.front() : inner, value);
+    }
+    case IdlType::Kind::Named:
+        return namedToPython(type.name, value);
+    case IdlType::Kind::Fixed:
+        break;
+    }
+    return py::none();
+}
+
+py::object PyValueConverter::basicToPython(const QString &keyword, const QJsonValue &value) const
+{
+    if (keyword == QLatin1String("boolean"))
+        return py::bool_(value.toBool());
+    if (isCharacter(keyword))
+        return py::str(value.toString().toStdString());
+    if (isFloating(keyword))
+        return py::float_(floatingFromJson(value));
+    return py::int_(static_cast<long long>(value.toInteger()));
+}
+
+py::object PyValueConverter::listToPython(const IdlType &element, const QJsonValue &value) const
+{
+    const QJsonArray items = value.toArray();
+    const IdlType resolved = m_model.resolve(element);
+    if (isBasic(resolved, "octet")) {
+        std::string bytes;
+        for (const QJsonValue &item : items)
+            bytes.push_back(char(item.toInt()));
+        return py::bytes(bytes);
+    }
+    if (resolved.kind == IdlType::Kind::Basic && isCharacter(resolved.name)) {
+        QString text;
+        for (const QJsonValue &item : items)
+            text += item.toString();
+        return py::str(text.toStdString());
+    }
+    py::list list;
+    for (const QJsonValue &item : items)
+        list.append(toPython(element, item));
+    return std::move(list);
+}
+
+py::object PyValueConverter::namedToPython(const QString &name, const QJsonValue &value) const
+{
+    if (const auto it = m_model.structs.constFind(name); it != m_model.structs.constEnd()) {
+        const py::object cls = classOf(name);
+        // Made without __init__, as omniORBpy's unmarshalling does: members are set one by one.
+        py::object object = cls.attr("__new__")(cls);
+        const QJsonObject members = value.toObject();
+        for (const Codegen::IdlMember &member : it->members)
+            py::setattr(object, member.name.toStdString().c_str(), toPython(member.type, members.value(member.name)));
+        return object;
+    }
+    if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd())
+        return classOf(name).attr("_items")[py::int_(it->enumerators.indexOf(value.toString()))];
+    return py::none();
+}
+
+py::object PyValueConverter::classOf(const QString &name) const
+{
+    const py::str key(name.toStdString());
+    if (!m_classes.contains(key))
+        throw py::type_error(("no Python class for the IDL type " + name).toStdString());
+    return m_classes[key];
+}
+
+} // namespace RtPython

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "idlmodel.h"
+
+#include <pybind11/pybind11.h>
+
+#include <QJsonValue>
+
+namespace RtPython {
+
+/**
+ * Python values to and from the JSON values of Codegen::CdrCodec, by IDL type, in omniORBpy's
+ * mapping: a struct is an object of its class with one attribute per member, an enum value one of
+ * its class's items (`RTC.RTC_OK`), integers are int, floating types float, `char` and strings str,
+ * `sequence<octet>` bytes, other sequences and arrays lists. Unions, `any` and object references
+ * are refused (not yet mapped).
+ */
+class PyValueConverter
+{
+public:
+    /// @p classes maps each struct's and enum's scoped name (`RTC::TimedLong`) to its Python class.
+    PyValueConverter(const Codegen::IdlModel &model, pybind11::dict classes);
+
+    /// @p value as the codec's value of @p type; throws pybind11::type_error naming the member.
+    QJsonValue toJson(const Codegen::IdlType &type, pybind11::handle value, const QString &path) const;
+    /// The Python value of the codec's @p value of @p type.
+    pybind11::object toPython(const Codegen::IdlType &type, const QJsonValue &value) const;
+
+private:
+    QJsonValue basicToJson(const QString &keyword, pybind11::handle value, const QString &path) const;
+    QJsonValue listToJson(const Codegen::IdlType &element, pybind11::handle value, const QString &path) const;
+    QJsonValue namedToJson(const QString &name, pybind11::handle value, const QString &path) const;
+    QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
+    pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
+    pybind11::object listToPython(const Codegen::IdlType &element, const QJsonValue &value) const;
+    pybind11::object namedToPython(const QString &name, const QJsonValue &value) const;
+    pybind11::object classOf(const QString &name) const;
+    [[noreturn]] static void refuse(const QString &path, const QString &reason);
+
+    const Codegen::IdlModel &m_model;
+    pybind11::dict m_classes;
+};
+
+} // namespace RtPython
