@@ -23,10 +23,10 @@
 
 #include "sdkinternal.h"
 
+#include <hostfacts.h>
 #include <managerconfig.h>
 #include <namingregistrar.h>
 
-#include <sys/utsname.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -276,14 +276,9 @@ coil::Properties ManagerConfig::getConfig() const
 
 void ManagerConfig::setSystemInformation(coil::Properties &prop)
 {
-    utsname info{};
-    if (uname(&info) == 0) {
-        prop.setProperty("os.name", info.sysname);
-        prop.setProperty("os.release", info.release);
-        prop.setProperty("os.version", info.version);
-        prop.setProperty("os.arch", info.machine);
-        prop.setProperty("os.hostname", info.nodename);
-    }
+    // The same host facts rtmanager's profile gives.
+    for (const auto &[key, value] : Runtime::osFacts().entries())
+        prop.setProperty(key, value);
     prop.setProperty("manager.pid", std::to_string(getpid()));
 }
 
