@@ -137,6 +137,11 @@ void ConfigAdmin::bindSetter(const char *name, const char *defaultValue, std::fu
     });
 }
 
+Runtime::ConfigAdmin &ConfigAdmin::engine()
+{
+    return d->admin;
+}
+
 void ConfigAdmin::update()
 {
     d->admin.update();

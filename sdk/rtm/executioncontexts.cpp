@@ -3,6 +3,7 @@
 #include <rtm/ECFactory.h>
 #include <rtm/ExtTrigExecutionContext.h>
 #include <rtm/Manager.h>
+#include <rtm/MultilayerCompositeEC.h>
 #include <rtm/OpenHRPExecutionContext.h>
 #include <rtm/PeriodicExecutionContext.h>
 #include <rtm/RTObject.h>
@@ -78,6 +79,7 @@ void registerBuiltin(const char *type)
 /// table: a type a program registers there is one `exec_cxt.periodic.type` can name.
 const bool builtinsRegistered = [] {
     registerBuiltin<RTC_exp::PeriodicExecutionContext>("PeriodicExecutionContext");
+    registerBuiltin<RTC_exp::MultilayerCompositeEC>("MultilayerCompositeEC");
     registerBuiltin<ExtTrigExecutionContext>("ExtTrigExecutionContext");
     registerBuiltin<OpenHRPExecutionContext>("OpenHRPExecutionContext");
     registerBuiltin<SimulatorExecutionContext>("SimulatorExecutionContext");
@@ -375,6 +377,56 @@ RTC::ReturnCode_t PeriodicExecutionContext::stop()
     return Runtime::PeriodicExecutionContext::stop();
 }
 
+MultilayerCompositeEC::MultilayerCompositeEC() = default;
+
+MultilayerCompositeEC::~MultilayerCompositeEC()
+{
+    for (auto &layer : m_layers) {
+        for (RTC::LightweightRTObject_ptr rtc : layer)
+            CORBA::release(rtc);
+    }
+}
+
+void MultilayerCompositeEC::init(coil::Properties &props)
+{
+    PeriodicExecutionContext::init(props);
+}
+
+int MultilayerCompositeEC::svc()
+{
+    RTC_ERROR(("MultilayerCompositeEC::svc: the runtime's engine runs this context's cycles in its own thread;"
+               " use start() and stop()"));
+    return -1;
+}
+
+RTC::ReturnCode_t MultilayerCompositeEC::bindComponent(RTC::RTObject_impl *rtc)
+{
+    return PeriodicExecutionContext::bindComponent(rtc);
+}
+
+RTC_impl::RTObjectStateMachine *MultilayerCompositeEC::findComponent(RTC::LightweightRTObject_ptr)
+{
+    RTC_ERROR(("MultilayerCompositeEC::findComponent: the participants' state machines belong to the runtime's"
+               " engine; use getComponentState()"));
+    return nullptr;
+}
+
+void MultilayerCompositeEC::addTask(std::vector<RTC::LightweightRTObject_ptr> rtcs)
+{
+    // The engine runs participants in the order they joined: a layer after the ones before it.
+    std::vector<RTC::LightweightRTObject_ptr> layer;
+    for (RTC::LightweightRTObject_ptr rtc : rtcs) {
+        if (CORBA::is_nil(rtc))
+            continue;
+        if (addComponent(rtc) != RTC::RTC_OK) {
+            RTC_WARN(("MultilayerCompositeEC::addTask: a member could not join the context"));
+            continue;
+        }
+        layer.push_back(RTC::LightweightRTObject::_duplicate(rtc));
+    }
+    m_layers.push_back(layer);
+}
+
 } // namespace RTC_exp
 
 namespace RTC {
@@ -478,6 +530,11 @@ extern "C" {
 void PeriodicExecutionContextInit(RTC::Manager *manager)
 {
     registerType<RTC_exp::PeriodicExecutionContext>(manager, "PeriodicExecutionContext");
+}
+
+void MultilayerCompositeECInit(RTC::Manager *manager)
+{
+    registerType<RTC_exp::MultilayerCompositeEC>(manager, "MultilayerCompositeEC");
 }
 
 void ExtTrigExecutionContextInit(RTC::Manager *manager)

@@ -87,6 +87,9 @@ public:
     void removeConfigurationSetNameListener(ConfigurationSetNameListenerType type,
                                             ConfigurationSetNameListener *listener);
 
+    /// RT Studio: the runtime's configuration underneath (what SDOPackage::Configuration_impl serves).
+    ::Runtime::ConfigAdmin &engine();
+
 private:
     void bindSetter(const char *name, const char *defaultValue, std::function<bool(const char *)> setter);
 

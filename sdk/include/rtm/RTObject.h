@@ -362,6 +362,8 @@ protected:
     PortConnectListeners m_portconnListeners;
 
 private:
+    friend class SdoServiceAdmin;
+
     void attachPort(PortBase &port);
     bool detachPort(PortBase &port);
     template <typename Action>
