@@ -143,6 +143,7 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmlisteners.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/listenerarrays.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.cpp
