@@ -320,6 +320,47 @@ void ExecutionContextBase::invokeWorker()
         engine->runCycle();
 }
 
+void ExecutionContextBase::invokeWorkerPreDo()
+{
+    if (!m_splitStepRefused) {
+        m_splitStepRefused = true;
+        RTC_ERROR(("invokeWorkerPreDo/invokeWorkerPostDo: the runtime's engine runs a cycle as one step;"
+                   " invokeWorkerDo() (or invokeWorker()) runs the whole cycle"));
+    }
+}
+
+void ExecutionContextBase::invokeWorkerDo()
+{
+    invokeWorker();
+}
+
+void ExecutionContextBase::invokeWorkerPostDo()
+{
+    invokeWorkerPreDo();
+}
+
+// --- ExtTrigExecutionContext's task interface ---
+
+int ExtTrigExecutionContext::open(void *args)
+{
+    (void)args;
+    RTC_ERROR(("ExtTrigExecutionContext::open: the runtime's engine owns the context's thread; start() starts it"));
+    return -1;
+}
+
+int ExtTrigExecutionContext::svc()
+{
+    RTC_ERROR(("ExtTrigExecutionContext::svc: the runtime's engine runs the cycles; tick() asks for one"));
+    return -1;
+}
+
+int ExtTrigExecutionContext::close(unsigned long flags)
+{
+    (void)flags;
+    RTC_ERROR(("ExtTrigExecutionContext::close: the runtime's engine owns the context's thread; stop() stops it"));
+    return -1;
+}
+
 // --- ECFactoryCXX ---
 
 ECFactoryCXX::ECFactoryCXX(const char *name, ECNewFunc new_func, ECDeleteFunc delete_func)

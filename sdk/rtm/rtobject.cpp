@@ -807,3 +807,75 @@ DataFlowComponentBase::~DataFlowComponentBase() = default;
 } // namespace RTC
 
 RTM::LocalServiceProfile::~LocalServiceProfile() = default;
+
+namespace RTC {
+
+void deleteRTObject(RTObject_impl *rtc)
+{
+    if (rtc != nullptr)
+        static_cast<PortableServer::ServantBase *>(rtc)->_remove_ref();
+}
+
+FactoryBase::FactoryBase(const coil::Properties &profile)
+    : m_Profile(profile)
+    , m_Number(-1)
+{
+}
+
+FactoryBase::~FactoryBase() = default;
+
+coil::Properties &FactoryBase::profile()
+{
+    return m_Profile;
+}
+
+int FactoryBase::number()
+{
+    return m_Number;
+}
+
+FactoryCXX::FactoryCXX(const coil::Properties &profile, RtcNewFunc new_func, RtcDeleteFunc delete_func,
+                       RTM::NumberingPolicyBase *policy)
+    : FactoryBase(profile)
+    , m_New(new_func)
+    , m_Delete(delete_func)
+    , m_policy(policy)
+{
+}
+
+FactoryCXX::~FactoryCXX()
+{
+    delete m_policy;
+}
+
+RTObject_impl *FactoryCXX::create(Manager *mgr)
+{
+    RTObject_impl *rtobj = m_New != nullptr ? m_New(mgr) : nullptr;
+    if (rtobj == nullptr)
+        return nullptr;
+    ++m_Number;
+    rtobj->setProperties(profile());
+    std::string instanceName(profile().getProperty("type_name"));
+    if (m_policy != nullptr)
+        instanceName += m_policy->onCreate(rtobj);
+    rtobj->setInstanceName(instanceName.c_str());
+    return rtobj;
+}
+
+void FactoryCXX::destroy(RTObject_impl *comp)
+{
+    if (comp == nullptr)
+        return;
+    --m_Number;
+    if (m_policy != nullptr) {
+        try {
+            m_policy->onDelete(comp);
+        } catch (...) {
+            // not numbered by this factory's policy: nothing to free
+        }
+    }
+    if (m_Delete != nullptr)
+        m_Delete(comp);
+}
+
+} // namespace RTC
