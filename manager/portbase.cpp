@@ -240,6 +240,14 @@ RTC::ReturnCode_t PortBase::disconnect_all()
 
 RTC::ReturnCode_t PortBase::admit(const RTC::ConnectorProfile &profile)
 {
+    // `connection_limit` (OpenRTM-aist's CorbaPort property): negative or unset is unlimited.
+    try {
+        const std::string limit = portProperties().value("connection_limit");
+        if (!limit.empty() && std::stol(limit) >= 0 && connectionCount() >= std::stoul(limit))
+            return RTC::PRECONDITION_NOT_MET;
+    } catch (const std::exception &) {
+        // An unreadable limit is no limit, as in OpenRTM-aist.
+    }
     const Properties connector = nvToProperties(profile.properties);
     const bool portAllows = portProperties().isYes("allow_dup_connection");
     if (connector.isYes("dataport.allow_dup_connection", portAllows))

@@ -556,6 +556,13 @@ CorbaPort::CorbaPort(const char *name)
 
 CorbaPort::~CorbaPort() = default;
 
+void CorbaPort::init(coil::Properties &prop)
+{
+    const std::string limit = prop.getProperty("connection_limit");
+    if (!limit.empty())
+        setProperty("connection_limit", limit);
+}
+
 bool CorbaPort::registerServant(const char *instance_name, const char *type_name, PortableServer::ServantBase *provider)
 {
     if (instance_name == nullptr || type_name == nullptr || provider == nullptr)
