@@ -400,8 +400,8 @@ void RTObject_impl::deletePort(PortService_ptr port)
         return;
     const std::vector<PortBase *> ports = m_addedPorts;
     for (PortBase *added : ports) {
-        PortService_var ref = added->getPortRef();
-        if (ref->_is_equivalent(port)) {
+        PortService_ptr ref = added->getPortRef(); // borrowed
+        if (!CORBA::is_nil(ref) && ref->_is_equivalent(port)) {
             removePort(*added);
             return;
         }
