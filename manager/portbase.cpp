@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "portbase.h"
 
+#include <iostream>
+
 #include "corbautil.h"
 
 #include <cctype>
@@ -69,6 +71,21 @@ void PortBase::setOwner(RTC::RTObject_ptr owner, const std::string &instanceName
     std::lock_guard lock(m_mutex);
     m_profile.owner = RTC::RTObject::_duplicate(owner);
     m_profile.name = (instanceName + '.' + m_name).c_str();
+}
+
+void PortBase::setName(const char *name)
+{
+    std::lock_guard lock(m_mutex);
+    m_profile.name = name != nullptr ? name : "";
+}
+
+void PortBase::setPortRef(RTC::PortService_ptr port_ref)
+{
+    RTC::PortService_var own = reference();
+    if (CORBA::is_nil(port_ref) || !own->_is_equivalent(port_ref))
+        std::cerr << programName() << ": port " << getName()
+                  << ": setPortRef: a port's reference is its own servant's; another reference is refused"
+                  << std::endl;
 }
 
 void PortBase::setProperty(const std::string &key, const std::string &value)

@@ -569,6 +569,13 @@ public:
     int calls = 0;
 };
 
+class CountNotifyConnect : public RTC::PortConnectListener
+{
+public:
+    void operator()(const char *, RTC::ConnectorProfile &) override { ++count; }
+    int count = 0;
+};
+
 class RecordSetName : public RTC::ConfigurationSetNameListener
 {
 public:
@@ -631,6 +638,7 @@ private slots:
     void factoryNumbersInstances();
     void nullBufferKeepsTheLatest();
     void loggerWriteAndCompParam();
+    void directConnectorsAndPortBase();
 
 private:
     QString logText();
@@ -1396,6 +1404,53 @@ void TestSdkPorts::loggerWriteAndCompParam()
     QCOMPARE(plain.impl_id(), std::string("ConsoleOut"));
     QCOMPARE(plain.language(), std::string("C++"));
     QVERIFY(plain.vendor().empty());
+}
+
+void TestSdkPorts::directConnectorsAndPortBase()
+{
+    QCOMPARE(connectWire(), RTC::RTC_OK);
+    RTC::InPortConnector *incoming = m_reader->inPort().connectors().front();
+    RTC::OutPortConnector *outgoing = m_writer->outPort().connectors().front();
+    // The reader's connection takes the writer's latest value itself.
+    RTC::TimedLong value = timedLong(0);
+    QVERIFY(!incoming->getDirectData(value));
+    QVERIFY(!incoming->setOutPort(nullptr));
+    QVERIFY(incoming->setOutPort(&m_writer->outPort()));
+    QVERIFY(m_writer->write(21));
+    QVERIFY(incoming->getDirectData(value));
+    QCOMPARE(long(value.data), 21L);
+    RTC::TimedDouble other;
+    QVERIFY(!incoming->getDirectData(other)); // not a sender of that type
+    QVERIFY(!outgoing->pullDirectMode());
+    outgoing->setPullDirectMode();
+    QVERIFY(outgoing->pullDirectMode());
+    QVERIFY(outgoing->setInPort(&m_reader->inPort()));
+    QVERIFY(!outgoing->setInPort(nullptr));
+
+    // PortBase: the typed OutPort is a direct sender, a service port is not.
+    QVERIFY(m_writer->outPort().getDirectPort() != nullptr);
+    QVERIFY(m_writer->servicePort().getDirectPort() == nullptr);
+    RTC::PortBase &service = m_writer->servicePort();
+    RTC::PortService_ptr own = service.getPortRef();
+    service.setPortRef(RTC::PortService::_nil()); // refused: the port keeps its own
+    QVERIFY(service.getPortRef() == own);
+    service.setName("renamed.service");
+    QCOMPARE(std::string(service.getName()), std::string("renamed.service"));
+
+    // A listener holder of the caller's hears the port's connect steps.
+    RTC::PortConnectListeners listeners;
+    CountNotifyConnect counter;
+    listeners.addListener(RTC::PortConnectListenerType::ON_NOTIFY_CONNECT, &counter, false);
+    service.setPortConnectListenerHolder(&listeners);
+    RTC::ConnectorProfile profile;
+    profile.name = CORBA::string_dup("alone");
+    profile.connector_id = CORBA::string_dup("");
+    profile.ports.length(1);
+    profile.ports[0] = RTC::PortService::_duplicate(service.getPortRef());
+    QCOMPARE(service.connect(profile), RTC::RTC_OK);
+    QCOMPARE(counter.count, 1);
+    QCOMPARE(service.disconnect(profile.connector_id), RTC::RTC_OK);
+    service.setPortConnectListenerHolder(nullptr);
 }
 
 QTEST_GUILESS_MAIN(TestSdkPorts)

@@ -8,6 +8,7 @@
 #include <rtm/InPortProvider.h>
 #include <rtm/InPortPullConnector.h>
 #include <rtm/InPortPushConnector.h>
+#include <rtm/OutPortBase.h>
 #include <rtm/OutPortConnector.h>
 #include <rtm/OutPortConsumer.h>
 #include <rtm/OutPortProvider.h>
@@ -106,9 +107,20 @@ InPortConnector::InPortConnector(ConnectorInfo &info, ConnectorListenersBase *li
     , m_buffer(buffer)
     , m_littleEndian(Sdk::littleEndianOf(info))
     , m_marshaling_type(info.properties.getProperty("marshaling_type", "cdr"))
+    , m_cdr(nullptr)
+    , m_directOutPort(nullptr)
 { }
 
 InPortConnector::~InPortConnector() = default;
+
+bool InPortConnector::setOutPort(OutPortBase *directOutPort)
+{
+    if (directOutPort == nullptr)
+        return false;
+    // Kept as the direct-port side, which getDirectData() narrows to the sample type.
+    m_directOutPort = dynamic_cast<DirectPortBase *>(directOutPort);
+    return m_directOutPort != nullptr;
+}
 
 const ConnectorInfo &InPortConnector::profile()
 {
@@ -167,9 +179,28 @@ OutPortConnector::OutPortConnector(ConnectorInfo &info, ConnectorListenersBase *
     , m_littleEndian(Sdk::littleEndianOf(info))
     , m_listeners(listeners)
     , m_marshaling_type(info.properties.getProperty("marshaling_type", "cdr"))
+    , m_cdr(nullptr)
+    , m_directInPort(nullptr)
+    , m_directMode(false)
 { }
 
 OutPortConnector::~OutPortConnector() = default;
+
+bool OutPortConnector::setInPort(InPortBase *directInPort)
+{
+    m_directInPort = directInPort;
+    return directInPort != nullptr;
+}
+
+void OutPortConnector::setPullDirectMode()
+{
+    m_directMode = true;
+}
+
+bool OutPortConnector::pullDirectMode()
+{
+    return m_directMode;
+}
 
 const ConnectorInfo &OutPortConnector::profile()
 {

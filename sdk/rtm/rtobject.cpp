@@ -311,13 +311,26 @@ void notifyConnectStep(PortConnectListeners &listeners, Runtime::ConnectStep ste
 
 } // namespace
 
+} // namespace RTC
+
+void Runtime::PortBase::setPortConnectListenerHolder(RTC::PortConnectListeners *portconnListeners)
+{
+    if (portconnListeners == nullptr) {
+        setConnectObserver({});
+        return;
+    }
+    PortBase *self = this;
+    setConnectObserver([self, portconnListeners](Runtime::ConnectStep step, RTC::ConnectorProfile &profile,
+                                                 RTC::ReturnCode_t result) {
+        RTC::notifyConnectStep(*portconnListeners, step, self->getName(), profile, result);
+    });
+}
+
+namespace RTC {
+
 void RTObject_impl::attachPort(PortBase &port)
 {
-    PortBase *p = &port;
-    PortConnectListeners *listeners = &m_portconnListeners;
-    port.setConnectObserver([p, listeners](Runtime::ConnectStep step, ConnectorProfile &profile, ReturnCode_t result) {
-        notifyConnectStep(*listeners, step, p->getName(), profile, result);
-    });
+    port.setPortConnectListenerHolder(&m_portconnListeners);
     // The listeners see the profile as it will be listed: under the component's instance name.
     RTObject_var self = reference();
     port.setOwner(self.in(), instanceName());

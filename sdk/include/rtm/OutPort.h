@@ -5,6 +5,7 @@
 
 #include <rtm/CdrBufferBase.h>
 #include <rtm/DataPortStatus.h>
+#include <rtm/DirectOutPortBase.h>
 #include <rtm/OutPortBase.h>
 #include <rtm/OutPortConnector.h>
 #include <rtm/PortCallback.h>
@@ -24,7 +25,7 @@ namespace RTC
  * setOnWrite / setOnWriteConvert are called as OpenRTM-aist calls them; the port does not own them.
  */
 template <class DataType>
-class OutPort : public OutPortBase
+class OutPort : public OutPortBase, public DirectOutPortBase<DataType>
 {
 public:
     OutPort(const char *name, DataType &value)
@@ -69,19 +70,21 @@ public:
         return index >= 0 && size_t(index) < list.size() ? list[size_t(index)] : DataPortStatus::PORT_ERROR;
     }
     DataPortStatusList getStatusList() { return statusList(); }
+    /// The port as the in-process sender of its samples (InPortConnector::getDirectData).
+    DirectPortBase *getDirectPort() override { return static_cast<DirectOutPortBase<DataType> *>(this); }
 
     // The latest value written, for a reader in the same process (OpenRTM-aist's pull-direct side).
     /// Copies the latest value written into @p data; isNew() is false afterwards.
-    void read(DataType &data)
+    void read(DataType &data) override
     {
         std::lock_guard<std::mutex> guard(m_latestMutex);
         m_latestNew = false;
         data = m_latest;
     }
     /// True when no value was written since the last read().
-    bool isEmpty() { return !isNew(); }
+    bool isEmpty() override { return !isNew(); }
     /// True when a value was written since the last read().
-    bool isNew()
+    bool isNew() override
     {
         std::lock_guard<std::mutex> guard(m_latestMutex);
         return m_latestNew;
