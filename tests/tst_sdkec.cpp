@@ -158,6 +158,7 @@ private slots:
     void rtmanagerHonoursContextType();
     void extTriggerExample();
     void multilayerCompositeRunsLayers();
+    void cycleStepsAndTaskInterface();
 
 private:
     SdkCounter *create(const QString &request);
@@ -923,6 +924,34 @@ void TestSdkEc::multilayerCompositeRunsLayers()
     m_manager->deleteComponent(first);
     m_manager->deleteComponent(second);
     m_manager->deleteComponent(owner);
+}
+
+void TestSdkEc::cycleStepsAndTaskInterface()
+{
+    SdkCounter *counter = create("SdkCounter?instance_name=stepped&exec_cxt.periodic.type=OpenHRPExecutionContext");
+    QVERIFY(counter);
+    auto *base = dynamic_cast<RTC::ExecutionContextBase *>(counter->ownedContexts().front());
+    QVERIFY(base);
+    RTC::RTObject_var rtc = counter->getObjRef();
+    QCOMPARE(base->activateComponent(rtc), RTC::RTC_OK);
+    const int before = counter->executions.load();
+    // The engine runs a cycle as one step: Do runs it, PreDo and PostDo refuse.
+    base->invokeWorkerPreDo();
+    base->invokeWorkerPostDo();
+    QCOMPARE(counter->executions.load(), before);
+    base->invokeWorkerDo();
+    QCOMPARE(counter->executions.load(), before + 1);
+    QCOMPARE(base->deactivateComponent(rtc), RTC::RTC_OK);
+    m_manager->deleteComponent(counter);
+
+    // ExtTrig's task interface belongs to the engine's thread: refused.
+    RTC::ExecutionContextBase *made = RTC::ExecutionContextFactory::instance().createObject("ExtTrigExecutionContext");
+    auto *extTrig = dynamic_cast<RTC::ExtTrigExecutionContext *>(made);
+    QVERIFY(extTrig);
+    QCOMPARE(extTrig->open(nullptr), -1);
+    QCOMPARE(extTrig->svc(), -1);
+    QCOMPARE(extTrig->close(0), -1);
+    QCOMPARE(RTC::ExecutionContextFactory::instance().deleteObject(made), coil::FactoryReturn::OK);
 }
 
 QTEST_GUILESS_MAIN(TestSdkEc)

@@ -85,6 +85,22 @@ CdrBufferBase *newRingBuffer(ConnectorInfo &info, const char *side)
     return buffer;
 }
 
+/**
+ * Gives a connection's transport object (a provider or a consumer) what every connector hands
+ * it on construction, in OpenRTM-aist's order: the connector's properties, its buffer and the
+ * port's listeners. Null transports (a connector made without one) are skipped.
+ */
+template <class Transport>
+void prepareTransport(Transport *transport, ConnectorInfo &profile, CdrBufferBase *buffer,
+                      ConnectorListenersBase *listeners)
+{
+    if (transport == nullptr)
+        return;
+    transport->init(profile.properties);
+    transport->setBuffer(buffer);
+    transport->setListener(profile, listeners);
+}
+
 SDOPackage::NVList toNVList(const coil::Properties &prop)
 {
     SDOPackage::NVList list;
@@ -248,12 +264,9 @@ InPortPushConnector::InPortPushConnector(ConnectorInfo info, InPortProvider *pro
 {
     if (m_buffer == nullptr)
         m_buffer = createBuffer(m_profile);
-    if (m_provider != nullptr) {
-        m_provider->init(m_profile.properties);
-        m_provider->setBuffer(m_buffer);
-        m_provider->setListener(m_profile, m_listeners);
+    Sdk::prepareTransport(m_provider, m_profile, m_buffer, m_listeners);
+    if (m_provider != nullptr)
         m_provider->setConnector(this);
-    }
     onConnect();
 }
 
@@ -318,11 +331,7 @@ InPortPullConnector::InPortPullConnector(ConnectorInfo info, OutPortConsumer *co
 {
     if (m_buffer == nullptr)
         m_buffer = createBuffer(m_profile);
-    if (m_consumer != nullptr) {
-        m_consumer->init(m_profile.properties);
-        m_consumer->setBuffer(m_buffer);
-        m_consumer->setListener(m_profile, m_listeners);
-    }
+    Sdk::prepareTransport(m_consumer, m_profile, m_buffer, m_listeners);
     onConnect();
 }
 
@@ -493,12 +502,9 @@ OutPortPullConnector::OutPortPullConnector(ConnectorInfo info, OutPortProvider *
 {
     if (m_buffer == nullptr)
         m_buffer = createBuffer(m_profile);
-    if (m_provider != nullptr) {
-        m_provider->init(m_profile.properties);
-        m_provider->setBuffer(m_buffer);
-        m_provider->setListener(m_profile, m_listeners);
+    Sdk::prepareTransport(m_provider, m_profile, m_buffer, m_listeners);
+    if (m_provider != nullptr)
         m_provider->setConnector(this);
-    }
     onConnect();
 }
 
