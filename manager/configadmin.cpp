@@ -12,6 +12,18 @@ void ConfigAdmin::bindParameter(const std::string &name, const std::string &defa
     m_dirty = true;
 }
 
+bool ConfigAdmin::unbindParameter(const std::string &name)
+{
+    std::lock_guard lock(m_mutex);
+    for (auto it = m_parameters.begin(); it != m_parameters.end(); ++it) {
+        if (it->first == name) {
+            m_parameters.erase(it);
+            return true;
+        }
+    }
+    return false;
+}
+
 void ConfigAdmin::applyProperties(const Properties &properties)
 {
     std::lock_guard lock(m_mutex);

@@ -36,6 +36,8 @@ public:
 
     /// Declares @p name with @p defaultValue in the "default" set and binds @p setter to it.
     void bindParameter(const std::string &name, const std::string &defaultValue, Setter setter);
+    /// Forgets parameter @p name's setter (the sets keep its values); false when it is not bound.
+    bool unbindParameter(const std::string &name);
     /// Applies `conf.<set>.<param>` properties: new sets start as a copy of "default".
     void applyProperties(const Properties &properties);
 

@@ -15,8 +15,10 @@ OutPortBase::OutPortBase(const std::string &name, const std::string &dataType, P
 
 OutPortBase::~OutPortBase() = default;
 
-void OutPortBase::writeMarshalled(const std::function<CdrView(bool littleEndian)> &marshalIn)
+std::vector<std::pair<std::string, SendStatus>> OutPortBase::writeMarshalled(
+    const std::function<CdrView(bool littleEndian)> &marshalIn)
 {
+    std::vector<std::pair<std::string, SendStatus>> results;
     std::vector<std::shared_ptr<OutPortConnector>> connectors;
     {
         std::lock_guard lock(m_mutex);
@@ -35,9 +37,10 @@ void OutPortBase::writeMarshalled(const std::function<CdrView(bool littleEndian)
                 continue;
             if (!marshalled)
                 view = marshalIn(littleEndian), marshalled = true;
-            connector->write(view);
+            results.emplace_back(connector->id(), connector->write(view));
         }
     }
+    return results;
 }
 
 void OutPortBase::setBypassed(const std::string &connectorId, bool bypassed)

@@ -23,7 +23,9 @@ public:
      * Sends one sample; @p marshalIn produces its bytes in the requested byte order (called at
      * most twice; each view only has to last until the next call).
      */
-    void writeMarshalled(const std::function<CdrView(bool littleEndian)> &marshalIn);
+    /// What each connection (by id) did with the sample; bypassed connections are not listed.
+    std::vector<std::pair<std::string, SendStatus>> writeMarshalled(
+        const std::function<CdrView(bool littleEndian)> &marshalIn);
     /**
      * Leaves connection @p connectorId out of writeMarshalled() (@p bypassed true) or takes it back:
      * the SDK hands such samples to an InPort of the same process itself, without marshalling.

@@ -70,33 +70,71 @@ OutPortPushConnector::~OutPortPushConnector()
         m_thread.join();
 }
 
-void OutPortPushConnector::write(const CdrView &data)
+namespace {
+
+SendStatus fromBuffer(RingBuffer::Status status)
+{
+    switch (status) {
+    case RingBuffer::Status::Ok:
+        return SendStatus::Ok;
+    case RingBuffer::Status::Full:
+        return SendStatus::BufferFull;
+    case RingBuffer::Status::Empty:
+        return SendStatus::BufferEmpty;
+    case RingBuffer::Status::Timeout:
+        return SendStatus::BufferTimeout;
+    }
+    return SendStatus::UnknownError;
+}
+
+SendStatus fromPeer(OpenRTM::PortStatus status)
+{
+    switch (status) {
+    case OpenRTM::PORT_OK:
+        return SendStatus::Ok;
+    case OpenRTM::PORT_ERROR:
+        return SendStatus::PortError;
+    case OpenRTM::BUFFER_FULL:
+        return SendStatus::BufferFull;
+    case OpenRTM::BUFFER_EMPTY:
+        return SendStatus::BufferEmpty;
+    case OpenRTM::BUFFER_TIMEOUT:
+        return SendStatus::BufferTimeout;
+    default:
+        return SendStatus::UnknownError;
+    }
+}
+
+} // namespace
+
+SendStatus OutPortPushConnector::write(const CdrView &data)
 {
     switch (m_mode) {
     case Mode::Flush:
-        send(data);
-        break;
+        return send(data);
     case Mode::New: {
+        // Handed to the connection's thread; what the peer answers is known there, not here.
         std::lock_guard lock(m_mutex);
         m_newest.assign(data.data, data.data + data.size);
         m_hasNewest = true;
         m_wake.notify_all();
-        break;
+        return SendStatus::Ok;
     }
     case Mode::Periodic:
-        m_buffer.write(data.bytes());
-        break;
+        return fromBuffer(m_buffer.write(data.bytes()));
     }
+    return SendStatus::UnknownError;
 }
 
-void OutPortPushConnector::send(const CdrView &data)
+SendStatus OutPortPushConnector::send(const CdrView &data)
 {
     // The sequence borrows the bytes (release = false): nothing is copied before the ORB sends them.
     const auto length = CORBA::ULong(data.size);
     OpenRTM::CdrData cdr(length, length, const_cast<CORBA::Octet *>(data.data), false);
     try {
-        m_peer->put(cdr);
+        const OpenRTM::PortStatus status = m_peer->put(cdr);
         m_failing = false;
+        return fromPeer(status);
     } catch (const CORBA::Exception &e) {
         // The peer is gone or slow; the sample is lost as with OpenRTM's CONNECTION_LOST. Say so
         // once: a sample over omniORB's message size limit fails here on every write.
@@ -110,6 +148,7 @@ void OutPortPushConnector::send(const CdrView &data)
                                    : "")
                       << std::endl;
         }
+        return SendStatus::ConnectionLost;
     }
 }
 
@@ -202,9 +241,9 @@ OutPortPullConnector::~OutPortPullConnector()
     releaseServant(m_poa, m_servant);
 }
 
-void OutPortPullConnector::write(const CdrView &data)
+SendStatus OutPortPullConnector::write(const CdrView &data)
 {
-    m_buffer->write(data.bytes());
+    return fromBuffer(m_buffer->write(data.bytes()));
 }
 
 OpenRTM::OutPortCdr_ptr OutPortPullConnector::reference()

@@ -15,6 +15,9 @@
 
 namespace Runtime {
 
+/// What became of one sample on one connection (OpenRTM's DataPortStatus, as far as it applies).
+enum class SendStatus { Ok, PortError, BufferFull, BufferEmpty, BufferTimeout, ConnectionLost, UnknownError };
+
 /// One connection of an OutPort: receives every written sample in its byte order.
 class OutPortConnector
 {
@@ -25,7 +28,7 @@ public:
     /// `dataport.serializer.cdr.endian` (little unless it says big).
     bool littleEndian() const { return m_littleEndian; }
     /// Sends (or keeps) one sample; @p data is only valid during the call.
-    virtual void write(const CdrView &data) = 0;
+    virtual SendStatus write(const CdrView &data) = 0;
 
 private:
     std::string m_id;
@@ -45,13 +48,13 @@ public:
 
     OutPortPushConnector(const std::string &id, const Properties &connectorProperties, OpenRTM::InPortCdr_ptr peer);
     ~OutPortPushConnector() override;
-    void write(const CdrView &data) override;
+    SendStatus write(const CdrView &data) override;
 
     /// Parses `dataport.subscription_type`; false for unknown names.
     static bool parseMode(const std::string &text, Mode *mode);
 
 private:
-    void send(const CdrView &data);
+    SendStatus send(const CdrView &data);
     void runNew();
     void runPeriodic();
     void pushBuffered();
@@ -92,7 +95,7 @@ public:
     OutPortPullConnector(const std::string &id, const Properties &connectorProperties,
                          PortableServer::POA_ptr poa);
     ~OutPortPullConnector() override;
-    void write(const CdrView &data) override;
+    SendStatus write(const CdrView &data) override;
     /// The object the InPort pulls from (published as `dataport.corba_cdr.outport_ior`).
     OpenRTM::OutPortCdr_ptr reference();
 

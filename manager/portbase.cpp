@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "portbase.h"
 
+#include <iostream>
+
 #include "corbautil.h"
 
 #include <cctype>
@@ -69,6 +71,21 @@ void PortBase::setOwner(RTC::RTObject_ptr owner, const std::string &instanceName
     std::lock_guard lock(m_mutex);
     m_profile.owner = RTC::RTObject::_duplicate(owner);
     m_profile.name = (instanceName + '.' + m_name).c_str();
+}
+
+void PortBase::setName(const char *name)
+{
+    std::lock_guard lock(m_mutex);
+    m_profile.name = name != nullptr ? name : "";
+}
+
+void PortBase::setPortRef(RTC::PortService_ptr port_ref)
+{
+    RTC::PortService_var own = reference();
+    if (CORBA::is_nil(port_ref) || !own->_is_equivalent(port_ref))
+        std::cerr << programName() << ": port " << getName()
+                  << ": setPortRef: a port's reference is its own servant's; another reference is refused"
+                  << std::endl;
 }
 
 void PortBase::setProperty(const std::string &key, const std::string &value)
@@ -240,6 +257,14 @@ RTC::ReturnCode_t PortBase::disconnect_all()
 
 RTC::ReturnCode_t PortBase::admit(const RTC::ConnectorProfile &profile)
 {
+    // `connection_limit` (OpenRTM-aist's CorbaPort property): negative or unset is unlimited.
+    try {
+        const std::string limit = portProperties().value("connection_limit");
+        if (!limit.empty() && std::stol(limit) >= 0 && connectionCount() >= std::stoul(limit))
+            return RTC::PRECONDITION_NOT_MET;
+    } catch (const std::exception &) {
+        // An unreadable limit is no limit, as in OpenRTM-aist.
+    }
     const Properties connector = nvToProperties(profile.properties);
     const bool portAllows = portProperties().isYes("allow_dup_connection");
     if (connector.isYes("dataport.allow_dup_connection", portAllows))

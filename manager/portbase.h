@@ -11,6 +11,11 @@
 #include <mutex>
 #include <string>
 
+namespace RTC {
+class DirectPortBase;
+class PortConnectListeners;
+} // namespace RTC
+
 namespace Runtime {
 
 /// The steps of the connect and disconnect protocol a port reports to its ConnectObserver.
@@ -65,6 +70,20 @@ public:
     const RTC::PortProfile &getProfile() const { return getPortProfile(); }
     /// This port's object reference, not duplicated (nil before the port is activated).
     RTC::PortService_ptr getPortRef() const;
+    /// Sets the name the port profile shows (`instance.port`), as OpenRTM-aist's setName.
+    void setName(const char *name);
+    /**
+     * The port's reference is its servant's own (reference()): @p port_ref must be that one;
+     * another is refused with a message (the port keeps its own).
+     */
+    void setPortRef(RTC::PortService_ptr port_ref);
+    /// The port as an in-process sender or receiver of samples (typed data ports); null otherwise.
+    virtual RTC::DirectPortBase *getDirectPort() { return nullptr; }
+    /**
+     * Calls @p portconnListeners (not owned) at each step of connecting and disconnecting this
+     * port, as a component does for its ports. Defined by the component SDK, which has the type.
+     */
+    void setPortConnectListenerHolder(RTC::PortConnectListeners *portconnListeners);
 
     /**
      * OpenRTM-aist's PortBase callbacks, objects with `operator()(RTC::ConnectorProfile &)`

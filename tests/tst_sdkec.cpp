@@ -9,6 +9,7 @@
 #include <rtm/ECFactory.h>
 #include <rtm/ExtTrigExecutionContext.h>
 #include <rtm/Manager.h>
+#include <rtm/MultilayerCompositeEC.h>
 #include <rtm/ManagerServant.h>
 #include <rtm/NamingManager.h>
 #include <rtm/ObjectManager.h>
@@ -156,6 +157,8 @@ private slots:
     void logstreamFile();
     void rtmanagerHonoursContextType();
     void extTriggerExample();
+    void multilayerCompositeRunsLayers();
+    void cycleStepsAndTaskInterface();
 
 private:
     SdkCounter *create(const QString &request);
@@ -890,6 +893,65 @@ void TestSdkEc::extTriggerExample()
     QCOMPARE(inText.count("Please input number:"), 2);
     QCOMPARE(outText.count("Received:"), 2);
     live.stopAll();
+}
+
+void TestSdkEc::multilayerCompositeRunsLayers()
+{
+    SdkCounter *owner = create("SdkCounter?instance_name=layersOwner&exec_cxt.periodic.type=MultilayerCompositeEC"
+                               "&exec_cxt.periodic.rate=200");
+    SdkCounter *first = create("SdkCounter?instance_name=layerOne");
+    SdkCounter *second = create("SdkCounter?instance_name=layerTwo");
+    QVERIFY(owner && first && second);
+    auto *ec = dynamic_cast<RTC_exp::MultilayerCompositeEC *>(owner->ownedContexts().front());
+    QVERIFY(ec);
+    RTC::RTObject_var firstRef = first->getObjRef();
+    RTC::RTObject_var secondRef = second->getObjRef();
+    ec->addTask({firstRef.in()});
+    ec->addTask({secondRef.in()});
+    QCOMPARE(ec->getComponentList().length(), CORBA::ULong(3));
+    // Refused with a message: the runtime's engine owns the thread and the state machines.
+    QCOMPARE(ec->svc(), -1);
+    QVERIFY(ec->findComponent(firstRef.in()) == nullptr);
+
+    RTC::RTObject_var ownerRef = owner->getObjRef();
+    for (RTC::RTObject_ptr rtc : {ownerRef.in(), firstRef.in(), secondRef.in()})
+        QCOMPARE(ec->activateComponent(rtc), RTC::RTC_OK);
+    QTRY_VERIFY_WITH_TIMEOUT(second->executions.load() >= 3, 5000);
+    QVERIFY(first->executions.load() >= 3);
+    QVERIFY(owner->executions.load() >= 3);
+    for (RTC::RTObject_ptr rtc : {secondRef.in(), firstRef.in(), ownerRef.in()})
+        QCOMPARE(ec->deactivateComponent(rtc), RTC::RTC_OK);
+    m_manager->deleteComponent(first);
+    m_manager->deleteComponent(second);
+    m_manager->deleteComponent(owner);
+}
+
+void TestSdkEc::cycleStepsAndTaskInterface()
+{
+    SdkCounter *counter = create("SdkCounter?instance_name=stepped&exec_cxt.periodic.type=OpenHRPExecutionContext");
+    QVERIFY(counter);
+    auto *base = dynamic_cast<RTC::ExecutionContextBase *>(counter->ownedContexts().front());
+    QVERIFY(base);
+    RTC::RTObject_var rtc = counter->getObjRef();
+    QCOMPARE(base->activateComponent(rtc), RTC::RTC_OK);
+    const int before = counter->executions.load();
+    // The engine runs a cycle as one step: Do runs it, PreDo and PostDo refuse.
+    base->invokeWorkerPreDo();
+    base->invokeWorkerPostDo();
+    QCOMPARE(counter->executions.load(), before);
+    base->invokeWorkerDo();
+    QCOMPARE(counter->executions.load(), before + 1);
+    QCOMPARE(base->deactivateComponent(rtc), RTC::RTC_OK);
+    m_manager->deleteComponent(counter);
+
+    // ExtTrig's task interface belongs to the engine's thread: refused.
+    RTC::ExecutionContextBase *made = RTC::ExecutionContextFactory::instance().createObject("ExtTrigExecutionContext");
+    auto *extTrig = dynamic_cast<RTC::ExtTrigExecutionContext *>(made);
+    QVERIFY(extTrig);
+    QCOMPARE(extTrig->open(nullptr), -1);
+    QCOMPARE(extTrig->svc(), -1);
+    QCOMPARE(extTrig->close(0), -1);
+    QCOMPARE(RTC::ExecutionContextFactory::instance().deleteObject(made), coil::FactoryReturn::OK);
 }
 
 QTEST_GUILESS_MAIN(TestSdkEc)

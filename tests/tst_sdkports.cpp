@@ -6,12 +6,17 @@
 // between components of one manager.
 #include "sdkinprocess.h"
 
+#include <rtm/BufferBase.h>
 #include <rtm/CdrRingBuffer.h>
 #include <rtm/ComponentActionListener.h>
+#include <rtm/ConfigAdmin.h>
+#include <rtm/ConnectorListener.h>
 #include <rtm/CorbaPort.h>
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/DataInPort.h>
 #include <rtm/DataOutPort.h>
+#include <rtm/Factory.h>
+#include <rtm/FsmActionListener.h>
 #include <rtm/InPortCorbaCdrConsumer.h>
 #include <rtm/InPortCorbaCdrProvider.h>
 #include <rtm/InPortDSConsumer.h>
@@ -19,6 +24,7 @@
 #include <rtm/InPortPushConnector.h>
 #include <rtm/InPortSHMConsumer.h>
 #include <rtm/Manager.h>
+#include <rtm/ManagerServant.h>
 #include <rtm/OutPortCorbaCdrConsumer.h>
 #include <rtm/OutPortCorbaCdrProvider.h>
 #include <rtm/OutPortPullConnector.h>
@@ -30,6 +36,7 @@
 #include <rtm/SdoServiceConsumerBase.h>
 #include <rtm/SdoServiceProviderBase.h>
 #include <rtm/SharedMemoryPort.h>
+#include <rtm/SystemLogger.h>
 
 #include <corbautil.h>
 
@@ -519,6 +526,81 @@ RTC::ConnectorProfile dataConnector(RTC::PortBase &out, RTC::PortBase &in,
     return profile;
 }
 
+/// A typed data listener that records the value and adds 100 to it (DATA_CHANGED).
+class AddHundred : public RTC::ConnectorDataListenerT<RTC::TimedLong>
+{
+public:
+    ReturnCode operator()(RTC::ConnectorInfo &, RTC::TimedLong &data) override
+    {
+        seen.push_back(data.data);
+        data.data += 100;
+        return DATA_CHANGED;
+    }
+    std::vector<long> seen;
+};
+
+/// A data listener that sees marshalled samples only and records their sizes.
+class RawSizes : public RTC::ConnectorDataListener
+{
+public:
+    ReturnCode operator()(RTC::ConnectorInfo &, RTC::ByteData &data, const std::string &) override
+    {
+        sizes.push_back(data.getDataLength());
+        return NO_CHANGE;
+    }
+    std::vector<unsigned long> sizes;
+};
+
+class CountConnects : public RTC::ConnectorListener
+{
+public:
+    ReturnCode operator()(RTC::ConnectorInfo &) override
+    {
+        ++count;
+        return INFO_CHANGED;
+    }
+    int count = 0;
+};
+
+class RecordProfile : public RTC::FsmProfileListener
+{
+public:
+    void operator()(const RTC::FsmProfile &) override { ++calls; }
+    int calls = 0;
+};
+
+class CountNotifyConnect : public RTC::PortConnectListener
+{
+public:
+    void operator()(const char *, RTC::ConnectorProfile &) override { ++count; }
+    int count = 0;
+};
+
+class RecordSetName : public RTC::ConfigurationSetNameListener
+{
+public:
+    void operator()(const char *config_set_name) override { names.push_back(config_set_name); }
+    std::vector<std::string> names;
+};
+
+RTC::TimedLong timedLong(long value)
+{
+    RTC::TimedLong sample;
+    sample.tm.sec = 0;
+    sample.tm.nsec = 0;
+    sample.data = value;
+    return sample;
+}
+
+RTC::ByteData marshalled(const RTC::TimedLong &sample)
+{
+    cdrMemoryStream stream;
+    stream.setByteSwapFlag(true);
+    sample >>= stream;
+    return RTC::ByteData(static_cast<const unsigned char *>(stream.bufPtr()),
+                         static_cast<unsigned long>(stream.bufSize()));
+}
+
 } // namespace
 
 class TestSdkPorts : public QObject
@@ -548,6 +630,15 @@ private slots:
     void portAdminByName();
     void unsupportedInterfaceTypeRefused_data();
     void unsupportedInterfaceTypeRefused();
+    void outPortStatusAndLatestValue();
+    void componentPortRegistrationAndProfile();
+    void corbaPortConnectionLimit();
+    void listenerHoldersCallInOrder();
+    void configAdminChangesAndUnbinding();
+    void factoryNumbersInstances();
+    void nullBufferKeepsTheLatest();
+    void loggerWriteAndCompParam();
+    void directConnectorsAndPortBase();
 
 private:
     QString logText();
@@ -1086,6 +1177,280 @@ void TestSdkPorts::unsupportedInterfaceTypeRefused()
         = QString("interface type '%1' is not available").arg(QString::fromUtf8(interfaceType));
     QTRY_VERIFY2_WITH_TIMEOUT(logText().contains(expected), qPrintable(logText()), 5000);
     QVERIFY(logText().contains(QString::fromUtf8(m_writer->outPort().getName())));
+}
+
+void TestSdkPorts::outPortStatusAndLatestValue()
+{
+    RTC::OutPort<RTC::TimedLong> &out = m_writer->outPort();
+    QVERIFY(out.getStatusList().empty());
+    QVERIFY(out.isEmpty());
+    QCOMPARE(connectWire(), RTC::RTC_OK);
+    QVERIFY(m_writer->write(12));
+    // One status per connection, in the order of the connectors; an index beyond is an error.
+    QCOMPARE(out.getStatusList(), RTC::DataPortStatusList(1, RTC::DataPortStatus::PORT_OK));
+    QCOMPARE(status(out.getStatus(0)), status(RTC::DataPortStatus::PORT_OK));
+    QCOMPARE(status(out.getStatus(3)), status(RTC::DataPortStatus::PORT_ERROR));
+    // The latest value, for a reader in the process.
+    QVERIFY(out.isNew());
+    QVERIFY(!out.isEmpty());
+    RTC::TimedLong latest = timedLong(0);
+    out.read(latest);
+    QCOMPARE(long(latest.data), 12L);
+    QVERIFY(!out.isNew());
+    QVERIFY(out.isEmpty());
+    QVERIFY(out.getListeners() != nullptr);
+}
+
+void TestSdkPorts::componentPortRegistrationAndProfile()
+{
+    QCOMPARE(std::string(m_writer->getDescription()), std::string("writer"));
+    QCOMPARE(std::string(m_writer->getVersion()), std::string("1.0.0"));
+    QCOMPARE(std::string(m_writer->getVendor()), std::string("RTStudioTests"));
+    coil::Properties names;
+    names.setProperty("naming.names", "a.rtc, b/c.rtc");
+    m_writer->setProperties(names);
+    QCOMPARE(m_writer->getNamingNames(), (std::vector<std::string>{"a.rtc", "b/c.rtc"}));
+    QCOMPARE(m_writer->getOutPorts().size(), size_t(1));
+    QCOMPARE(m_reader->getInPorts().size(), size_t(1));
+    QVERIFY(m_writer->getInPorts().empty());
+
+    // Another object's port listed among the writer's and taken away again by its reference.
+    RTC::PortServiceList_var before = m_writer->get_ports();
+    RTC::PortService_var readerPort = RTC::PortService::_duplicate(m_reader->inPort().getPortRef());
+    m_writer->registerPort(readerPort.in());
+    RTC::PortServiceList_var with = m_writer->get_ports();
+    QCOMPARE(with->length(), before->length() + 1);
+    m_writer->deletePort(readerPort.in());
+    RTC::PortServiceList_var without = m_writer->get_ports();
+    QCOMPARE(without->length(), before->length());
+
+    // A port of its own, removed by name: the REMOVE_PORT listener hears of it.
+    eventLog().clear();
+    m_writer->deletePortByName((std::string(m_writer->getInstanceName()) + ".out").c_str());
+    RTC::PortServiceList_var after = m_writer->get_ports();
+    QCOMPARE(after->length(), before->length() - 1);
+    QVERIFY(m_writer->getOutPorts().empty());
+    QCOMPARE(eventLog().matching("remove port").size(), 1);
+}
+
+void TestSdkPorts::corbaPortConnectionLimit()
+{
+    RTC::CorbaPort &port = m_writer->servicePort();
+    coil::Properties limit;
+    limit.setProperty("connection_limit", "0");
+    port.init(limit);
+    RTC::ConnectorProfile profile;
+    profile.name = CORBA::string_dup("alone");
+    profile.connector_id = CORBA::string_dup("");
+    profile.ports.length(1);
+    profile.ports[0] = RTC::PortService::_duplicate(port.getPortRef());
+    QCOMPARE(port.connect(profile), RTC::PRECONDITION_NOT_MET);
+    limit.setProperty("connection_limit", "-1");
+    port.init(limit);
+    QCOMPARE(port.connect(profile), RTC::RTC_OK);
+    QCOMPARE(port.disconnect(profile.connector_id), RTC::RTC_OK);
+}
+
+void TestSdkPorts::listenerHoldersCallInOrder()
+{
+    RTC::ConnectorInfo info;
+    info.properties.setProperty("serializer.cdr.endian", "little");
+    RTC::ConnectorDataListenerHolderT<RTC::TimedLong> holder;
+    auto *typed = new AddHundred;
+    auto *raw = new RawSizes;
+    holder.addListener(typed, true);
+    holder.addListener(raw, true);
+    QCOMPARE(holder.size(), size_t(2));
+    RTC::ByteData bytes = marshalled(timedLong(5));
+    const unsigned long length = bytes.getDataLength();
+    QCOMPARE(int(holder.notify(info, bytes, "cdr")), int(RTC::ConnectorListenerStatus::DATA_CHANGED));
+    QCOMPARE(typed->seen, std::vector<long>{5});
+    QCOMPARE(raw->sizes, std::vector<unsigned long>{length});
+    // What the typed listener changed travels on in the marshalled sample.
+    cdrMemoryStream in(bytes.getBuffer(), bytes.getDataLength());
+    in.setByteSwapFlag(true);
+    RTC::TimedLong changed = timedLong(0);
+    changed <<= in;
+    QCOMPARE(long(changed.data), 105L);
+    // A typed sample reaches the typed listener as it is, the others marshalled.
+    RTC::TimedLong sample = timedLong(7);
+    holder.notifyOut(info, sample);
+    QCOMPARE(typed->seen, (std::vector<long>{5, 7}));
+    QCOMPARE(raw->sizes.size(), size_t(2));
+    holder.removeListener(raw);
+    QCOMPARE(holder.size(), size_t(1));
+
+    RTC::ConnectorListenersT<RTC::TimedLong> listeners;
+    auto *connects = new CountConnects;
+    QVERIFY(listeners.addListener(RTC::ConnectorListenerType::ON_CONNECT, connects));
+    CountConnects outOfRange;
+    QVERIFY(!listeners.addListener(RTC::ConnectorListenerType::CONNECTOR_LISTENER_NUM, &outOfRange, false));
+    QCOMPARE(int(listeners.notify(RTC::ConnectorListenerType::ON_CONNECT, info)),
+             int(RTC::ConnectorListenerStatus::INFO_CHANGED));
+    QCOMPARE(connects->count, 1);
+    QCOMPARE(int(listeners.notify(RTC::ConnectorListenerType::ON_DISCONNECT, info)),
+             int(RTC::ConnectorListenerStatus::NO_CHANGE));
+
+    RTC::FsmActionListeners fsm;
+    RecordProfile profileListener;
+    QVERIFY(fsm.addListener(RTC::FsmProfileListenerType::ADD_FSM_STATE, &profileListener, false));
+    RTC::FsmProfile fsmProfile;
+    QVERIFY(fsm.notify(RTC::FsmProfileListenerType::ADD_FSM_STATE, fsmProfile));
+    QVERIFY(fsm.notify(RTC::FsmProfileListenerType::SET_FSM_PROFILE, fsmProfile));
+    QVERIFY(!fsm.notify(RTC::FsmProfileListenerType::FSM_PROFILE_LISTENER_NUM, fsmProfile));
+    QCOMPARE(profileListener.calls, 1);
+    QVERIFY(fsm.removeListener(RTC::FsmProfileListenerType::ADD_FSM_STATE, &profileListener));
+    QVERIFY(fsm.notify(RTC::FsmProfileListenerType::ADD_FSM_STATE, fsmProfile));
+    QCOMPARE(profileListener.calls, 1);
+    // The component keeps its own, for what serves its FSM.
+    m_writer->addFsmProfileListener(RTC::FsmProfileListenerType::ADD_FSM_STATE, &profileListener, false);
+    m_writer->removeFsmProfileListener(RTC::FsmProfileListenerType::ADD_FSM_STATE, &profileListener);
+}
+
+void TestSdkPorts::configAdminChangesAndUnbinding()
+{
+    RTC::ConfigAdmin &config = m_writer->getConfigService();
+    long gain = 0;
+    QVERIFY(config.bindParameter("gain", gain, "1"));
+    QCOMPARE(gain, 1L);
+    RecordSetName updated;
+    config.setOnUpdate(&updated);
+
+    coil::Properties set("default");
+    set.setProperty("gain", "2");
+    QVERIFY(config.setConfigurationSetValues(set));
+    QVERIFY(config.activateConfigurationSet("default"));
+    config.update();
+    QCOMPARE(gain, 2L);
+    QCOMPARE(config.changedParameters(), coil::vstring{"gain"});
+    QCOMPARE(updated.names, std::vector<std::string>{"default"});
+    bool listed = false;
+    for (coil::Properties *node : config.getConfigurationSets())
+        listed = listed || node->getName() == std::string("default");
+    QVERIFY(listed);
+
+    // Unbound: the variable keeps its value whatever the set says.
+    QVERIFY(config.unbindParameter("gain"));
+    QVERIFY(!config.unbindParameter("gain"));
+    QVERIFY(!config.isExist("gain"));
+    set.setProperty("gain", "3");
+    QVERIFY(config.setConfigurationSetValues(set));
+    QVERIFY(config.activateConfigurationSet("default"));
+    config.update();
+    QCOMPARE(gain, 2L);
+    QVERIFY(config.changedParameters().empty());
+    config.removeConfigurationSetNameListener(RTC::ConfigurationSetNameListenerType::ON_UPDATE_CONFIG_SET, &updated);
+
+    // A parameter object of its own tells the admin set with setCallback of each change.
+    long direct = 0;
+    RTC::Config<long> parameter("direct", direct, "4");
+    QVERIFY(parameter.update("6"));
+    QCOMPARE(direct, 6L);
+    QVERIFY(!parameter.update("not a number"));
+    QCOMPARE(direct, 4L);
+}
+
+void TestSdkPorts::factoryNumbersInstances()
+{
+    coil::Properties profile(readerSpec);
+    RTC::FactoryCXX factory(profile, RTC::Create<PortsReader>, RTC::Delete<PortsReader>);
+    QCOMPARE(factory.number(), -1);
+    RTC::RTObject_impl *first = factory.create(m_manager);
+    RTC::RTObject_impl *second = factory.create(m_manager);
+    QVERIFY(first && second);
+    QCOMPARE(std::string(first->getInstanceName()), std::string("PortsReader0"));
+    QCOMPARE(std::string(second->getInstanceName()), std::string("PortsReader1"));
+    QCOMPARE(factory.number(), 1);
+    QCOMPARE(factory.profile().getProperty("type_name"), std::string("PortsReader"));
+    factory.destroy(first);
+    factory.destroy(second);
+    QCOMPARE(factory.number(), -1);
+}
+
+void TestSdkPorts::nullBufferKeepsTheLatest()
+{
+    RTC::NullBuffer<long> buffer;
+    long value = 0;
+    QVERIFY(buffer.empty());
+    QCOMPARE(int(buffer.read(value)), int(RTC::BufferStatus::EMPTY));
+    QCOMPARE(int(buffer.write(1)), int(RTC::BufferStatus::OK));
+    QCOMPARE(int(buffer.write(2)), int(RTC::BufferStatus::OK));
+    QVERIFY(!buffer.full());
+    QCOMPARE(int(buffer.read(value)), int(RTC::BufferStatus::OK));
+    QCOMPARE(value, 2L);
+    QCOMPARE(int(buffer.read(value)), int(RTC::BufferStatus::OK)); // read again: still the latest
+    QCOMPARE(buffer.length(), size_t(1));
+    QCOMPARE(int(buffer.length(4)), int(RTC::BufferStatus::NOT_SUPPORTED));
+    QCOMPARE(int(buffer.reset()), int(RTC::BufferStatus::OK));
+    QVERIFY(buffer.empty());
+}
+
+void TestSdkPorts::loggerWriteAndCompParam()
+{
+    RTC::Logger rtclog("holders");
+    rtclog.write(RTC::Logger::RTL_ERROR, std::string("one line from write"));
+    coil::Properties prop;
+    prop.setProperty("color", "blue");
+    rtclog.write(RTC::Logger::RTL_ERROR, prop);
+    QTRY_VERIFY_WITH_TIMEOUT(logText().contains("one line from write") && logText().contains("color: blue"), 5000);
+
+    RTM::CompParam full("RTC:AIST:example:ConsoleIn:C++:1.0?instance_name=c1");
+    QCOMPARE(full.vendor(), std::string("AIST"));
+    QCOMPARE(full.category(), std::string("example"));
+    QCOMPARE(full.impl_id(), std::string("ConsoleIn"));
+    QCOMPARE(full.language(), std::string("C++"));
+    QCOMPARE(full.version(), std::string("1.0"));
+    RTM::CompParam plain("ConsoleOut?exec_cxt.periodic.rate=10");
+    QCOMPARE(plain.impl_id(), std::string("ConsoleOut"));
+    QCOMPARE(plain.language(), std::string("C++"));
+    QVERIFY(plain.vendor().empty());
+}
+
+void TestSdkPorts::directConnectorsAndPortBase()
+{
+    QCOMPARE(connectWire(), RTC::RTC_OK);
+    RTC::InPortConnector *incoming = m_reader->inPort().connectors().front();
+    RTC::OutPortConnector *outgoing = m_writer->outPort().connectors().front();
+    // The reader's connection takes the writer's latest value itself.
+    RTC::TimedLong value = timedLong(0);
+    QVERIFY(!incoming->getDirectData(value));
+    QVERIFY(!incoming->setOutPort(nullptr));
+    QVERIFY(incoming->setOutPort(&m_writer->outPort()));
+    QVERIFY(m_writer->write(21));
+    QVERIFY(incoming->getDirectData(value));
+    QCOMPARE(long(value.data), 21L);
+    RTC::TimedDouble other;
+    QVERIFY(!incoming->getDirectData(other)); // not a sender of that type
+    QVERIFY(!outgoing->pullDirectMode());
+    outgoing->setPullDirectMode();
+    QVERIFY(outgoing->pullDirectMode());
+    QVERIFY(outgoing->setInPort(&m_reader->inPort()));
+    QVERIFY(!outgoing->setInPort(nullptr));
+
+    // PortBase: the typed OutPort is a direct sender, a service port is not.
+    QVERIFY(m_writer->outPort().getDirectPort() != nullptr);
+    QVERIFY(m_writer->servicePort().getDirectPort() == nullptr);
+    RTC::PortBase &service = m_writer->servicePort();
+    RTC::PortService_ptr own = service.getPortRef();
+    service.setPortRef(RTC::PortService::_nil()); // refused: the port keeps its own
+    QVERIFY(service.getPortRef() == own);
+    service.setName("renamed.service");
+    QCOMPARE(std::string(service.getName()), std::string("renamed.service"));
+
+    // A listener holder of the caller's hears the port's connect steps.
+    RTC::PortConnectListeners listeners;
+    CountNotifyConnect counter;
+    listeners.addListener(RTC::PortConnectListenerType::ON_NOTIFY_CONNECT, &counter, false);
+    service.setPortConnectListenerHolder(&listeners);
+    RTC::ConnectorProfile profile;
+    profile.name = CORBA::string_dup("alone");
+    profile.connector_id = CORBA::string_dup("");
+    profile.ports.length(1);
+    profile.ports[0] = RTC::PortService::_duplicate(service.getPortRef());
+    QCOMPARE(service.connect(profile), RTC::RTC_OK);
+    QCOMPARE(counter.count, 1);
+    QCOMPARE(service.disconnect(profile.connector_id), RTC::RTC_OK);
+    service.setPortConnectListenerHolder(nullptr);
 }
 
 QTEST_GUILESS_MAIN(TestSdkPorts)

@@ -9,10 +9,17 @@
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/DataInPort.h>
 #include <rtm/DataOutPort.h>
+#include <rtm/LocalServiceAdmin.h>
 #include <rtm/Manager.h>
+#include <rtm/SdoConfiguration.h>
+#include <rtm/SdoOrganization.h>
+#include <rtm/SdoServiceAdmin.h>
+#include <rtm/SdoServiceConsumerBase.h>
+#include <rtm/SdoServiceProviderBase.h>
 
 #include <SimpleService.hh>
 
+#include <corbautil.h>
 #include <managerconfig.h>
 
 #include "loggersink.h"
@@ -23,6 +30,7 @@
 
 #include <atomic>
 #include <istream>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <string>
@@ -350,6 +358,74 @@ RTC::ReturnCode_t connectPorts(RTC::PortService_ptr a, RTC::PortService_ptr b, b
     return a->connect(profile);
 }
 
+/// An SDO service provider that records its calls (SdoServiceAdmin::init() makes it from the factory).
+class ProbeProvider : public RTC::SdoServiceProviderBase
+{
+public:
+    ~ProbeProvider() override { ++deleted; }
+    bool init(RTC::RTObject_impl &, const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        return true;
+    }
+    bool reinit(const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        return true;
+    }
+    const SDOPackage::ServiceProfile &getProfile() const override { return m_profile; }
+    void finalize() override { ++finalized; }
+
+    static inline std::atomic<int> finalized{0};
+    static inline std::atomic<int> deleted{0};
+
+private:
+    SDOPackage::ServiceProfile m_profile;
+};
+
+/// An SDO service consumer that takes any profile.
+class ProbeConsumer : public RTC::SdoServiceConsumerBase
+{
+public:
+    bool init(RTC::RTObject_impl &, const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        return true;
+    }
+    bool reinit(const SDOPackage::ServiceProfile &profile) override
+    {
+        m_profile = profile;
+        return true;
+    }
+    const SDOPackage::ServiceProfile &getProfile() const override { return m_profile; }
+    void finalize() override {}
+
+private:
+    SDOPackage::ServiceProfile m_profile;
+};
+
+/// A local service that records its calls (LocalServiceAdmin makes it from the factory).
+class ProbeLocalService : public RTM::LocalServiceBase
+{
+public:
+    ProbeLocalService() { m_profile.name = "ProbeLocalService"; }
+    ~ProbeLocalService() override { ++deleted; }
+    bool init(const coil::Properties &props) override
+    {
+        m_profile.properties = props;
+        return props.getProperty("refuse") != "YES";
+    }
+    bool reinit(const coil::Properties &) override { return true; }
+    const RTM::LocalServiceProfile &getProfile() const override { return m_profile; }
+    void finalize() override { ++finalized; }
+
+    static inline std::atomic<int> finalized{0};
+    static inline std::atomic<int> deleted{0};
+
+private:
+    RTM::LocalServiceProfile m_profile;
+};
+
 void activate(RTC::RTObject_impl *component)
 {
     QCOMPARE(component->activate(0), RTC::RTC_OK);
@@ -373,6 +449,10 @@ private slots:
     void managerActionListeners();
     void loggerWritesWhereConfigured();
     void loadableModulesOfAComponentProgram();
+    void sdoServiceAdminOffersFactoryProviders();
+    void sdoConfigurationServesTheComponentsSets();
+    void sdoOrganizationListsMembers();
+    void localServiceAdminRunsEnabledServices();
 
 private:
     RTC::Manager *m_manager = nullptr;
@@ -622,6 +702,177 @@ void TestSdkRtm::loadableModulesOfAComponentProgram()
         files << QString::fromStdString(module["module_file_name"]);
     }
     QVERIFY2(files.contains("ManagerTestModule.so"), qPrintable(files.join(' ')));
+}
+
+void TestSdkRtm::sdoServiceAdminOffersFactoryProviders()
+{
+    RTC::RTObject_impl *component = m_manager->createComponent("SdkSource?instance_name=sdoadmin");
+    QVERIFY(component != nullptr);
+    const char type[] = "IDL:rtstudio/tests/Probe:1.0";
+    RTC::SdoServiceProviderFactory::instance().addFactory(
+        type, coil::Creator<RTC::SdoServiceProviderBase, ProbeProvider>,
+        coil::Destructor<RTC::SdoServiceProviderBase, ProbeProvider>);
+    coil::Properties props;
+    props.setProperty("sdo.service.provider.enabled_services", "ALL");
+    props.setProperty("sdo.service.consumer.enabled_services", "OnlyThisType");
+    RTC::SdoServiceAdmin admin(*component);
+    admin.init(props);
+    RTC::SdoServiceProviderFactory::instance().removeFactory(type);
+
+    // The provider is the component's: its SDO interface lists it.
+    SDOPackage::ServiceProfileList_var offered = admin.getServiceProviderProfiles();
+    QCOMPARE(offered->length(), CORBA::ULong(1));
+    QCOMPARE(QString(offered[0].interface_type.in()), QString(type));
+    const std::string id(offered[0].id.in());
+    SDOPackage::ServiceProfileList_var listed = component->get_service_profiles();
+    QCOMPARE(listed->length(), CORBA::ULong(1));
+    QCOMPARE(QString(listed[0].id.in()), QString::fromStdString(id));
+    SDOPackage::SDOService_var service = admin.getServiceProvider(id.c_str());
+    QVERIFY(!CORBA::is_nil(service));
+    QVERIFY_THROWS_EXCEPTION(SDOPackage::InvalidParameter, admin.getServiceProviderProfile("no-such-id"));
+
+    // A consumer type the properties do not enable is refused, although a consumer is registered.
+    RTC::SdoServiceConsumerFactory::instance().addFactory(
+        type, coil::Creator<RTC::SdoServiceConsumerBase, ProbeConsumer>,
+        coil::Destructor<RTC::SdoServiceConsumerBase, ProbeConsumer>);
+    SDOPackage::ServiceProfile consumer;
+    consumer.id = CORBA::string_dup("c1");
+    consumer.interface_type = CORBA::string_dup(type);
+    QVERIFY(!admin.addSdoServiceConsumer(consumer));
+    RTC::SdoServiceAdmin acceptingAll(*component);
+    acceptingAll.init(coil::Properties());
+    QVERIFY(acceptingAll.addSdoServiceConsumer(consumer));
+    QVERIFY(acceptingAll.removeSdoServiceConsumer("c1"));
+    RTC::SdoServiceConsumerFactory::instance().removeFactory(type);
+
+    const int finalized = ProbeProvider::finalized;
+    QVERIFY(admin.removeSdoServiceProvider(id.c_str()));
+    QCOMPARE(ProbeProvider::finalized.load(), finalized + 1);
+    QVERIFY(!admin.removeSdoServiceProvider(id.c_str()));
+    offered = admin.getServiceProviderProfiles();
+    QCOMPARE(offered->length(), CORBA::ULong(0));
+    m_manager->deleteComponent("sdoadmin");
+    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponent("sdoadmin") == nullptr, 5000);
+}
+
+void TestSdkRtm::sdoConfigurationServesTheComponentsSets()
+{
+    RTC::RTObject_impl *component = m_manager->createComponent("SdkSource?instance_name=sdoconf");
+    QVERIFY(component != nullptr);
+    RTC::SdoServiceAdmin admin(*component);
+    auto *configuration = new SDOPackage::Configuration_impl(component->getConfigService(), admin);
+    {
+        SDOPackage::Configuration_var ref = configuration->getObjRef();
+        QVERIFY(!CORBA::is_nil(ref));
+        SDOPackage::ConfigurationSet_var active = ref->get_active_configuration_set();
+        QCOMPARE(QString(active->id.in()), QString("default"));
+
+        // A set added through SDO is the component's.
+        SDOPackage::ConfigurationSet extra;
+        extra.id = CORBA::string_dup("extra");
+        extra.description = CORBA::string_dup("");
+        extra.configuration_data.length(1);
+        extra.configuration_data[0].name = CORBA::string_dup("step");
+        extra.configuration_data[0].value <<= "7";
+        QVERIFY(ref->add_configuration_set(extra));
+        QVERIFY(component->getConfigService().haveConfig("extra"));
+        QCOMPARE(QString::fromStdString(component->getConfigService().getConfigurationSet("extra").getProperty("step")),
+                 QString("7"));
+
+        // A service profile attaches a consumer: none is registered for this type.
+        SDOPackage::ServiceProfile profile;
+        profile.id = CORBA::string_dup("p1");
+        profile.interface_type = CORBA::string_dup("IDL:rtstudio/tests/Unknown:1.0");
+        QVERIFY(!ref->add_service_profile(profile));
+        QVERIFY(!ref->remove_service_profile("p1"));
+
+        SDOPackage::DeviceProfile device;
+        device.device_type = CORBA::string_dup("probe");
+        QVERIFY(ref->set_device_profile(device));
+        QCOMPARE(QString(configuration->getDeviceProfile().device_type.in()), QString("probe"));
+    }
+    PortableServer::POA_var poa = configuration->_default_POA();
+    Runtime::releaseServant(poa, configuration);
+    m_manager->deleteComponent("sdoconf");
+    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponent("sdoconf") == nullptr, 5000);
+}
+
+void TestSdkRtm::sdoOrganizationListsMembers()
+{
+    RTC::RTObject_impl *owner = m_manager->createComponent("SdkSource?instance_name=orgowner");
+    RTC::RTObject_impl *member = m_manager->createComponent("SdkSource?instance_name=orgmember");
+    QVERIFY(owner != nullptr && member != nullptr);
+    RTC::RTObject_var ownerRef = owner->getObjRef();
+    auto *organization = new SDOPackage::Organization_impl(ownerRef.in());
+    {
+        SDOPackage::Organization_var ref = organization->getObjRef();
+        QVERIFY(!CORBA::is_nil(ref));
+        CORBA::String_var id = ref->get_organization_id();
+        QVERIFY(std::string(id.in()).size() > 0);
+        SDOPackage::SDOSystemElement_var got = ref->get_owner();
+        QVERIFY(got->_is_equivalent(ownerRef));
+
+        SDOPackage::SDOList members;
+        members.length(1);
+        members[0] = member->getObjRef();
+        QVERIFY(ref->add_members(members));
+        SDOPackage::SDOList_var listed = ref->get_members();
+        QCOMPARE(listed->length(), CORBA::ULong(1));
+        CORBA::String_var memberId = member->get_sdo_id();
+        QVERIFY(ref->remove_member(memberId));
+        listed = ref->get_members();
+        QCOMPARE(listed->length(), CORBA::ULong(0));
+    }
+    Runtime::releaseServant(RTC::Manager::instance().getPOA(), organization);
+    m_manager->deleteComponent("orgowner");
+    m_manager->deleteComponent("orgmember");
+    QTRY_VERIFY_WITH_TIMEOUT(m_manager->getComponent("orgmember") == nullptr, 5000);
+}
+
+void TestSdkRtm::localServiceAdminRunsEnabledServices()
+{
+    RTM::LocalServiceFactory::instance().addFactory("ProbeLocalService",
+                                                    coil::Creator<RTM::LocalServiceBase, ProbeLocalService>,
+                                                    coil::Destructor<RTM::LocalServiceBase, ProbeLocalService>);
+    RTM::LocalServiceAdmin &admin = RTM::LocalServiceAdmin::instance();
+
+    // Not enabled: nothing made.
+    coil::Properties none;
+    none.setProperty("enabled_services", "SomethingElse");
+    admin.init(none);
+    QVERIFY(admin.getService("ProbeLocalService") == nullptr);
+
+    // A service that refuses its properties is deleted at once.
+    const int deleted = ProbeLocalService::deleted;
+    coil::Properties refusing;
+    refusing.setProperty("enabled_services", "ALL");
+    refusing.setProperty("refuse", "YES");
+    admin.init(refusing);
+    QVERIFY(admin.getService("ProbeLocalService") == nullptr);
+    QCOMPARE(ProbeLocalService::deleted.load(), deleted + 1);
+
+    coil::Properties enabled;
+    enabled.setProperty("enabled_services", "ProbeLocalService");
+    enabled.setProperty("greeting", "hello");
+    admin.init(enabled);
+    QVERIFY(admin.getService("ProbeLocalService") != nullptr);
+    RTM::LocalServiceProfile profile;
+    QVERIFY(admin.getServiceProfile("ProbeLocalService", profile));
+    QCOMPARE(QString::fromStdString(profile.properties.getProperty("greeting")), QString("hello"));
+    QCOMPARE(admin.getServiceProfiles().size(), size_t(1));
+    {
+        std::unique_ptr<ProbeLocalService> second(new ProbeLocalService);
+        QVERIFY(!admin.addLocalService(second.get())); // the name is taken; the caller keeps it
+    }
+    QCOMPARE(ProbeLocalService::deleted.load(), deleted + 2);
+
+    const int finalized = ProbeLocalService::finalized;
+    QVERIFY(admin.removeLocalService("ProbeLocalService"));
+    QCOMPARE(ProbeLocalService::finalized.load(), finalized + 1);
+    QCOMPARE(ProbeLocalService::deleted.load(), deleted + 3);
+    QVERIFY(!admin.removeLocalService("ProbeLocalService"));
+    QVERIFY(admin.getServiceProfiles().empty());
+    RTM::LocalServiceFactory::instance().removeFactory("ProbeLocalService");
 }
 
 QTEST_GUILESS_MAIN(TestSdkRtm)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <rtm/ConfigAdmin.h>
 
+#include "listenerarrays.h"
 #include "listenerset.h"
 #include "sdkinternal.h"
 
@@ -33,6 +34,80 @@ const char *ConfigurationSetNameListener::toString(ConfigurationSetNameListenerT
 }
 ConfigurationSetNameListener::~ConfigurationSetNameListener() = default;
 
+ConfigurationParamListenerHolder::ConfigurationParamListenerHolder() = default;
+ConfigurationParamListenerHolder::~ConfigurationParamListenerHolder() = default;
+void ConfigurationParamListenerHolder::notify(const char *config_set_name, const char *config_param_name)
+{
+    LISTENERHOLDER_CALLBACK(operator(), (config_set_name, config_param_name));
+}
+
+ConfigurationSetListenerHolder::ConfigurationSetListenerHolder() = default;
+ConfigurationSetListenerHolder::~ConfigurationSetListenerHolder() = default;
+void ConfigurationSetListenerHolder::notify(const coil::Properties &config_set)
+{
+    LISTENERHOLDER_CALLBACK(operator(), (config_set));
+}
+
+ConfigurationSetNameListenerHolder::ConfigurationSetNameListenerHolder() = default;
+ConfigurationSetNameListenerHolder::~ConfigurationSetNameListenerHolder() = default;
+void ConfigurationSetNameListenerHolder::notify(const char *config_set_name)
+{
+    LISTENERHOLDER_CALLBACK(operator(), (config_set_name));
+}
+
+ConfigurationListeners::ConfigurationListeners() = default;
+ConfigurationListeners::~ConfigurationListeners() = default;
+
+bool ConfigurationListeners::addListener(ConfigurationParamListenerType type, ConfigurationParamListener *listener,
+                                         bool autoclean)
+{
+    return Sdk::addTo(configparam_, type, listener, autoclean);
+}
+
+bool ConfigurationListeners::addListener(ConfigurationSetListenerType type, ConfigurationSetListener *listener,
+                                         bool autoclean)
+{
+    return Sdk::addTo(configset_, type, listener, autoclean);
+}
+
+bool ConfigurationListeners::addListener(ConfigurationSetNameListenerType type,
+                                         ConfigurationSetNameListener *listener, bool autoclean)
+{
+    return Sdk::addTo(configsetname_, type, listener, autoclean);
+}
+
+bool ConfigurationListeners::removeListener(ConfigurationParamListenerType type, ConfigurationParamListener *listener)
+{
+    return Sdk::removeFrom(configparam_, type, listener);
+}
+
+bool ConfigurationListeners::removeListener(ConfigurationSetListenerType type, ConfigurationSetListener *listener)
+{
+    return Sdk::removeFrom(configset_, type, listener);
+}
+
+bool ConfigurationListeners::removeListener(ConfigurationSetNameListenerType type,
+                                            ConfigurationSetNameListener *listener)
+{
+    return Sdk::removeFrom(configsetname_, type, listener);
+}
+
+bool ConfigurationListeners::notify(ConfigurationParamListenerType type, const char *config_set_name,
+                                    const char *config_param_name)
+{
+    return Sdk::notifyIn(configparam_, type, config_set_name, config_param_name);
+}
+
+bool ConfigurationListeners::notify(ConfigurationSetListenerType type, const coil::Properties &config_set)
+{
+    return Sdk::notifyIn(configset_, type, config_set);
+}
+
+bool ConfigurationListeners::notify(ConfigurationSetNameListenerType type, const char *config_set_name)
+{
+    return Sdk::notifyIn(configsetname_, type, config_set_name);
+}
+
 struct ConfigAdmin::Private
 {
     explicit Private(Runtime::ConfigAdmin &admin)
@@ -59,6 +134,10 @@ struct ConfigAdmin::Private
     std::map<std::string, coil::Properties> sets;
     std::string activeId;
     bool changed = false;
+    /// Parameters changed by the update under way, and by the last one over.
+    coil::vstring pending;
+    coil::vstring changedParams;
+    std::vector<coil::Properties *> setList;
 };
 
 coil::Properties &ConfigAdmin::Private::cachedSet(const std::string &id)
@@ -93,6 +172,8 @@ void ConfigAdmin::Private::onEvent(Runtime::ConfigAdmin::Event event, const std:
         return;
     case Event::Updated:
         changed = false;
+        changedParams.swap(pending);
+        pending.clear();
         notifyName(ConfigurationSetNameListenerType::ON_UPDATE_CONFIG_SET, setId);
         return;
     }
@@ -130,11 +211,17 @@ void ConfigAdmin::bindSetter(const char *name, const char *defaultValue, std::fu
             return false;
         std::lock_guard lock(self->mutex);
         self->applied[parameter] = text;
+        self->pending.push_back(parameter);
         const std::string active = self->admin.activeSetId();
         self->paramListeners.forEach(
             [&](ConfigurationParamListener &listener) { listener(active.c_str(), parameter.c_str()); });
         return true;
     });
+}
+
+Runtime::ConfigAdmin &ConfigAdmin::engine()
+{
+    return d->admin;
 }
 
 void ConfigAdmin::update()
@@ -153,6 +240,71 @@ void ConfigAdmin::update(const char *config_set, const char *config_param)
     // The runtime applies a set as a whole; unchanged parameters are skipped by their setters.
     if (config_param != nullptr && isExist(config_param))
         update(config_set);
+}
+
+bool ConfigAdmin::unbindParameter(const char *param_name)
+{
+    if (param_name == nullptr || !d->admin.unbindParameter(param_name))
+        return false;
+    std::lock_guard lock(d->mutex);
+    d->applied.erase(param_name);
+    return true;
+}
+
+coil::vstring &ConfigAdmin::changedParameters()
+{
+    std::lock_guard lock(d->mutex);
+    return d->changedParams;
+}
+
+const std::vector<coil::Properties *> &ConfigAdmin::getConfigurationSets()
+{
+    std::lock_guard lock(d->mutex);
+    d->setList.clear();
+    for (const std::string &id : d->admin.setIds())
+        d->setList.push_back(&d->cachedSet(id));
+    return d->setList;
+}
+
+void ConfigAdmin::onUpdateParam(const char *config_param, const char *config_value)
+{
+    (void)config_value; // the listeners are told the set and the parameter, as for bound variables
+    if (config_param == nullptr)
+        return;
+    std::lock_guard lock(d->mutex);
+    d->changedParams.push_back(config_param);
+    const std::string active = d->admin.activeSetId();
+    d->paramListeners.forEach([&](ConfigurationParamListener &listener) { listener(active.c_str(), config_param); });
+}
+
+void ConfigAdmin::setOnUpdate(OnUpdateCallback *cb)
+{
+    addConfigurationSetNameListener(ConfigurationSetNameListenerType::ON_UPDATE_CONFIG_SET, cb, false);
+}
+
+void ConfigAdmin::setOnUpdateParam(OnUpdateParamCallback *cb)
+{
+    addConfigurationParamListener(ConfigurationParamListenerType::ON_UPDATE_CONFIG_PARAM, cb, false);
+}
+
+void ConfigAdmin::setOnSetConfigurationSet(OnSetConfigurationSetCallback *cb)
+{
+    addConfigurationSetListener(ConfigurationSetListenerType::ON_SET_CONFIG_SET, cb, false);
+}
+
+void ConfigAdmin::setOnAddConfigurationSet(OnAddConfigurationAddCallback *cb)
+{
+    addConfigurationSetListener(ConfigurationSetListenerType::ON_ADD_CONFIG_SET, cb, false);
+}
+
+void ConfigAdmin::setOnRemoveConfigurationSet(OnRemoveConfigurationSetCallback *cb)
+{
+    addConfigurationSetNameListener(ConfigurationSetNameListenerType::ON_REMOVE_CONFIG_SET, cb, false);
+}
+
+void ConfigAdmin::setOnActivateSet(OnActivateSetCallback *cb)
+{
+    addConfigurationSetNameListener(ConfigurationSetNameListenerType::ON_ACTIVATE_CONFIG_SET, cb, false);
 }
 
 bool ConfigAdmin::isExist(const char *param_name)

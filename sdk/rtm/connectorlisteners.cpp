@@ -202,3 +202,129 @@ ConnectorInfoList ConnectorListeners::connectorInfos() const
 }
 
 } // namespace RTC
+
+namespace RTC {
+
+namespace {
+
+/// Deletes the listeners of @p entries added with autoclean.
+template <typename Entries>
+void deleteOwned(Entries &entries)
+{
+    for (auto &entry : entries) {
+        if (entry.second)
+            delete entry.first;
+    }
+    entries.clear();
+}
+
+template <typename Entries, typename Listener>
+void removeEntry(Entries &entries, Listener *listener)
+{
+    for (auto it = entries.begin(); it != entries.end(); ++it) {
+        if (it->first == listener) {
+            if (it->second)
+                delete it->first;
+            entries.erase(it);
+            return;
+        }
+    }
+}
+
+} // namespace
+
+ConnectorDataListenerHolder::ConnectorDataListenerHolder() = default;
+
+ConnectorDataListenerHolder::~ConnectorDataListenerHolder()
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    deleteOwned(m_listeners);
+}
+
+void ConnectorDataListenerHolder::addListener(ConnectorDataListener *listener, bool autoclean)
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    m_listeners.emplace_back(listener, autoclean);
+}
+
+void ConnectorDataListenerHolder::removeListener(ConnectorDataListener *listener)
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    removeEntry(m_listeners, listener);
+}
+
+size_t ConnectorDataListenerHolder::size()
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    return m_listeners.size();
+}
+
+ConnectorDataListenerHolder::ReturnCode ConnectorDataListenerHolder::notify(ConnectorInfo &info, ByteData &cdrdata,
+                                                                            const std::string &marshalingtype)
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    ReturnCode ret = NO_CHANGE;
+    for (auto &entry : m_listeners)
+        ret = ret | (*entry.first)(info, cdrdata, marshalingtype);
+    return ret;
+}
+
+ConnectorDataListenerHolder::ReturnCode ConnectorDataListenerHolder::notifyIn(ConnectorInfo &info, ByteData &data)
+{
+    return notify(info, data, marshalingType(info, "inport.marshaling_type"));
+}
+
+ConnectorDataListenerHolder::ReturnCode ConnectorDataListenerHolder::notifyOut(ConnectorInfo &info, ByteData &data)
+{
+    return notify(info, data, marshalingType(info, "outport.marshaling_type"));
+}
+
+std::string ConnectorDataListenerHolder::marshalingType(ConnectorInfo &info, const char *sideKey)
+{
+    // The side's own setting wins over the connector's.
+    const std::string common = info.properties.getProperty("marshaling_type", "cdr");
+    return coil::eraseBothEndsBlank(info.properties.getProperty(sideKey, common));
+}
+
+bool ConnectorDataListenerHolder::isLittleEndian(ConnectorInfo &info)
+{
+    const std::string endian = coil::normalize(info.properties.getProperty("serializer.cdr.endian", "little"));
+    return endian.compare(0, 3, "big") != 0;
+}
+
+ConnectorListenerHolder::ConnectorListenerHolder() = default;
+
+ConnectorListenerHolder::~ConnectorListenerHolder()
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    deleteOwned(m_listeners);
+}
+
+void ConnectorListenerHolder::addListener(ConnectorListener *listener, bool autoclean)
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    m_listeners.emplace_back(listener, autoclean);
+}
+
+void ConnectorListenerHolder::removeListener(ConnectorListener *listener)
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    removeEntry(m_listeners, listener);
+}
+
+size_t ConnectorListenerHolder::size()
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    return m_listeners.size();
+}
+
+ConnectorListenerHolder::ReturnCode ConnectorListenerHolder::notify(ConnectorInfo &info)
+{
+    std::lock_guard<std::mutex> guard(m_mutex);
+    ReturnCode ret = NO_CHANGE;
+    for (auto &entry : m_listeners)
+        ret = ret | (*entry.first)(info);
+    return ret;
+}
+
+} // namespace RTC

@@ -8,6 +8,7 @@
 #include <rtm/InPortProvider.h>
 #include <rtm/InPortPullConnector.h>
 #include <rtm/InPortPushConnector.h>
+#include <rtm/OutPortBase.h>
 #include <rtm/OutPortConnector.h>
 #include <rtm/OutPortConsumer.h>
 #include <rtm/OutPortProvider.h>
@@ -84,6 +85,22 @@ CdrBufferBase *newRingBuffer(ConnectorInfo &info, const char *side)
     return buffer;
 }
 
+/**
+ * Gives a connection's transport object (a provider or a consumer) what every connector hands
+ * it on construction, in OpenRTM-aist's order: the connector's properties, its buffer and the
+ * port's listeners. Null transports (a connector made without one) are skipped.
+ */
+template <class Transport>
+void prepareTransport(Transport *transport, ConnectorInfo &profile, CdrBufferBase *buffer,
+                      ConnectorListenersBase *listeners)
+{
+    if (transport == nullptr)
+        return;
+    transport->init(profile.properties);
+    transport->setBuffer(buffer);
+    transport->setListener(profile, listeners);
+}
+
 SDOPackage::NVList toNVList(const coil::Properties &prop)
 {
     SDOPackage::NVList list;
@@ -106,9 +123,20 @@ InPortConnector::InPortConnector(ConnectorInfo &info, ConnectorListenersBase *li
     , m_buffer(buffer)
     , m_littleEndian(Sdk::littleEndianOf(info))
     , m_marshaling_type(info.properties.getProperty("marshaling_type", "cdr"))
+    , m_cdr(nullptr)
+    , m_directOutPort(nullptr)
 { }
 
 InPortConnector::~InPortConnector() = default;
+
+bool InPortConnector::setOutPort(OutPortBase *directOutPort)
+{
+    if (directOutPort == nullptr)
+        return false;
+    // Kept as the direct-port side, which getDirectData() narrows to the sample type.
+    m_directOutPort = dynamic_cast<DirectPortBase *>(directOutPort);
+    return m_directOutPort != nullptr;
+}
 
 const ConnectorInfo &InPortConnector::profile()
 {
@@ -167,9 +195,28 @@ OutPortConnector::OutPortConnector(ConnectorInfo &info, ConnectorListenersBase *
     , m_littleEndian(Sdk::littleEndianOf(info))
     , m_listeners(listeners)
     , m_marshaling_type(info.properties.getProperty("marshaling_type", "cdr"))
+    , m_cdr(nullptr)
+    , m_directInPort(nullptr)
+    , m_directMode(false)
 { }
 
 OutPortConnector::~OutPortConnector() = default;
+
+bool OutPortConnector::setInPort(InPortBase *directInPort)
+{
+    m_directInPort = directInPort;
+    return directInPort != nullptr;
+}
+
+void OutPortConnector::setPullDirectMode()
+{
+    m_directMode = true;
+}
+
+bool OutPortConnector::pullDirectMode()
+{
+    return m_directMode;
+}
 
 const ConnectorInfo &OutPortConnector::profile()
 {
@@ -217,12 +264,9 @@ InPortPushConnector::InPortPushConnector(ConnectorInfo info, InPortProvider *pro
 {
     if (m_buffer == nullptr)
         m_buffer = createBuffer(m_profile);
-    if (m_provider != nullptr) {
-        m_provider->init(m_profile.properties);
-        m_provider->setBuffer(m_buffer);
-        m_provider->setListener(m_profile, m_listeners);
+    Sdk::prepareTransport(m_provider, m_profile, m_buffer, m_listeners);
+    if (m_provider != nullptr)
         m_provider->setConnector(this);
-    }
     onConnect();
 }
 
@@ -287,11 +331,7 @@ InPortPullConnector::InPortPullConnector(ConnectorInfo info, OutPortConsumer *co
 {
     if (m_buffer == nullptr)
         m_buffer = createBuffer(m_profile);
-    if (m_consumer != nullptr) {
-        m_consumer->init(m_profile.properties);
-        m_consumer->setBuffer(m_buffer);
-        m_consumer->setListener(m_profile, m_listeners);
-    }
+    Sdk::prepareTransport(m_consumer, m_profile, m_buffer, m_listeners);
     onConnect();
 }
 
@@ -462,12 +502,9 @@ OutPortPullConnector::OutPortPullConnector(ConnectorInfo info, OutPortProvider *
 {
     if (m_buffer == nullptr)
         m_buffer = createBuffer(m_profile);
-    if (m_provider != nullptr) {
-        m_provider->init(m_profile.properties);
-        m_provider->setBuffer(m_buffer);
-        m_provider->setListener(m_profile, m_listeners);
+    Sdk::prepareTransport(m_provider, m_profile, m_buffer, m_listeners);
+    if (m_provider != nullptr)
         m_provider->setConnector(this);
-    }
     onConnect();
 }
 

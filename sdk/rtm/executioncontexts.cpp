@@ -3,6 +3,7 @@
 #include <rtm/ECFactory.h>
 #include <rtm/ExtTrigExecutionContext.h>
 #include <rtm/Manager.h>
+#include <rtm/MultilayerCompositeEC.h>
 #include <rtm/OpenHRPExecutionContext.h>
 #include <rtm/PeriodicExecutionContext.h>
 #include <rtm/RTObject.h>
@@ -78,6 +79,7 @@ void registerBuiltin(const char *type)
 /// table: a type a program registers there is one `exec_cxt.periodic.type` can name.
 const bool builtinsRegistered = [] {
     registerBuiltin<RTC_exp::PeriodicExecutionContext>("PeriodicExecutionContext");
+    registerBuiltin<RTC_exp::MultilayerCompositeEC>("MultilayerCompositeEC");
     registerBuiltin<ExtTrigExecutionContext>("ExtTrigExecutionContext");
     registerBuiltin<OpenHRPExecutionContext>("OpenHRPExecutionContext");
     registerBuiltin<SimulatorExecutionContext>("SimulatorExecutionContext");
@@ -318,6 +320,47 @@ void ExecutionContextBase::invokeWorker()
         engine->runCycle();
 }
 
+void ExecutionContextBase::invokeWorkerPreDo()
+{
+    if (!m_splitStepRefused) {
+        m_splitStepRefused = true;
+        RTC_ERROR(("invokeWorkerPreDo/invokeWorkerPostDo: the runtime's engine runs a cycle as one step;"
+                   " invokeWorkerDo() (or invokeWorker()) runs the whole cycle"));
+    }
+}
+
+void ExecutionContextBase::invokeWorkerDo()
+{
+    invokeWorker();
+}
+
+void ExecutionContextBase::invokeWorkerPostDo()
+{
+    invokeWorkerPreDo();
+}
+
+// --- ExtTrigExecutionContext's task interface ---
+
+int ExtTrigExecutionContext::open(void *args)
+{
+    (void)args;
+    RTC_ERROR(("ExtTrigExecutionContext::open: the runtime's engine owns the context's thread; start() starts it"));
+    return -1;
+}
+
+int ExtTrigExecutionContext::svc()
+{
+    RTC_ERROR(("ExtTrigExecutionContext::svc: the runtime's engine runs the cycles; tick() asks for one"));
+    return -1;
+}
+
+int ExtTrigExecutionContext::close(unsigned long flags)
+{
+    (void)flags;
+    RTC_ERROR(("ExtTrigExecutionContext::close: the runtime's engine owns the context's thread; stop() stops it"));
+    return -1;
+}
+
 // --- ECFactoryCXX ---
 
 ECFactoryCXX::ECFactoryCXX(const char *name, ECNewFunc new_func, ECDeleteFunc delete_func)
@@ -373,6 +416,56 @@ RTC::ReturnCode_t PeriodicExecutionContext::start()
 RTC::ReturnCode_t PeriodicExecutionContext::stop()
 {
     return Runtime::PeriodicExecutionContext::stop();
+}
+
+MultilayerCompositeEC::MultilayerCompositeEC() = default;
+
+MultilayerCompositeEC::~MultilayerCompositeEC()
+{
+    for (auto &layer : m_layers) {
+        for (RTC::LightweightRTObject_ptr rtc : layer)
+            CORBA::release(rtc);
+    }
+}
+
+void MultilayerCompositeEC::init(coil::Properties &props)
+{
+    PeriodicExecutionContext::init(props);
+}
+
+int MultilayerCompositeEC::svc()
+{
+    RTC_ERROR(("MultilayerCompositeEC::svc: the runtime's engine runs this context's cycles in its own thread;"
+               " use start() and stop()"));
+    return -1;
+}
+
+RTC::ReturnCode_t MultilayerCompositeEC::bindComponent(RTC::RTObject_impl *rtc)
+{
+    return PeriodicExecutionContext::bindComponent(rtc);
+}
+
+RTC_impl::RTObjectStateMachine *MultilayerCompositeEC::findComponent(RTC::LightweightRTObject_ptr)
+{
+    RTC_ERROR(("MultilayerCompositeEC::findComponent: the participants' state machines belong to the runtime's"
+               " engine; use getComponentState()"));
+    return nullptr;
+}
+
+void MultilayerCompositeEC::addTask(std::vector<RTC::LightweightRTObject_ptr> rtcs)
+{
+    // The engine runs participants in the order they joined: a layer after the ones before it.
+    std::vector<RTC::LightweightRTObject_ptr> layer;
+    for (RTC::LightweightRTObject_ptr rtc : rtcs) {
+        if (CORBA::is_nil(rtc))
+            continue;
+        if (addComponent(rtc) != RTC::RTC_OK) {
+            RTC_WARN(("MultilayerCompositeEC::addTask: a member could not join the context"));
+            continue;
+        }
+        layer.push_back(RTC::LightweightRTObject::_duplicate(rtc));
+    }
+    m_layers.push_back(layer);
 }
 
 } // namespace RTC_exp
@@ -478,6 +571,11 @@ extern "C" {
 void PeriodicExecutionContextInit(RTC::Manager *manager)
 {
     registerType<RTC_exp::PeriodicExecutionContext>(manager, "PeriodicExecutionContext");
+}
+
+void MultilayerCompositeECInit(RTC::Manager *manager)
+{
+    registerType<RTC_exp::MultilayerCompositeEC>(manager, "MultilayerCompositeEC");
 }
 
 void ExtTrigExecutionContextInit(RTC::Manager *manager)

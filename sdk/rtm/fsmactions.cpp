@@ -18,6 +18,29 @@ size_t indexOf(PostFsmActionListenerType type)
 
 } // namespace
 
+void RTObject_impl::addFsmProfileListener(FsmProfileListenerType listener_type, FsmProfileListener *listener,
+                                          bool autoclean)
+{
+    m_fsmActionListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removeFsmProfileListener(FsmProfileListenerType listener_type, FsmProfileListener *listener)
+{
+    m_fsmActionListeners.removeListener(listener_type, listener);
+}
+
+void RTObject_impl::addFsmStructureListener(FsmStructureListenerType listener_type, FsmStructureListener *listener,
+                                            bool autoclean)
+{
+    m_fsmActionListeners.addListener(listener_type, listener, autoclean);
+}
+
+void RTObject_impl::removeFsmStructureListener(FsmStructureListenerType listener_type,
+                                               FsmStructureListener *listener)
+{
+    m_fsmActionListeners.removeListener(listener_type, listener);
+}
+
 void RTObject_impl::addPreFsmActionListener(PreFsmActionListenerType listener_type, PreFsmActionListener *listener,
                                             bool autoclean)
 {

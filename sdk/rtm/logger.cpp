@@ -63,6 +63,23 @@ void Logger::unlock()
     m_mutex.unlock();
 }
 
+void Logger::write(int level, const std::string &mes)
+{
+    if (!isValid(level))
+        return;
+    lock();
+    this->level(level) << mes;
+    unlock();
+}
+
+void Logger::write(int level, const coil::Properties &prop)
+{
+    if (!isValid(level))
+        return;
+    for (const std::string &key : prop.propertyNames())
+        write(level, key + ": " + prop.getProperty(key));
+}
+
 void Logger::setLevel(int level)
 {
     m_level = level;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // RTC::Manager: OpenRTM-aist's manager interface on the runtime's Runtime::Manager.
 #include <rtm/Manager.h>
+#include <rtm/LocalServiceAdmin.h>
 #include <rtm/ManagerServant.h>
 #include <rtm/NamingManager.h>
 #include <rtm/PeriodicECSharedComposite.h>
@@ -32,8 +33,6 @@ namespace RTC {
 
 namespace {
 
-std::mutex instanceMutex;
-Manager *theInstance = nullptr;
 
 /// Signals end the manager cleanly: one thread waits for them (they are blocked everywhere else).
 void handleSignalsInOneThread()
@@ -174,36 +173,52 @@ void Manager::invoke(std::function<void(void)> fn, std::chrono::nanoseconds dela
     d->startTimer(timerTick(d->config));
 }
 
-bool Sdk::adoptManager(Manager *manager)
+Manager *Manager::manager = nullptr;
+std::mutex Manager::mutex;
+
+bool Sdk::adoptManager(Manager *adopted)
 {
-    std::lock_guard lock(instanceMutex);
-    if (theInstance != nullptr)
+    std::lock_guard lock(Manager::mutex);
+    if (Manager::manager != nullptr)
         return false;
-    theInstance = manager;
+    Manager::manager = adopted;
     return true;
 }
 
 Manager *Manager::attach(Runtime::Manager *runtime)
 {
-    std::lock_guard lock(instanceMutex);
-    if (theInstance == nullptr)
-        theInstance = new Manager;
-    Manager *manager = theInstance;
-    manager->d->runtime = runtime;
-    manager->d->config = Sdk::toCoil(runtime->configuration());
+    std::lock_guard lock(mutex);
+    if (manager == nullptr)
+        manager = new Manager;
+    Manager *self = manager;
+    self->d->runtime = runtime;
+    self->d->config = Sdk::toCoil(runtime->configuration());
     Sdk::LoggerSink::instance().configure(runtime->configuration());
-    runtime->setModuleInitCall([manager](void *function) { reinterpret_cast<ModuleInitProc>(function)(manager); });
-    manager->d->actions.install(*runtime);
-    return manager;
+    runtime->setModuleInitCall([self](void *function) { reinterpret_cast<ModuleInitProc>(function)(self); });
+    self->d->actions.install(*runtime);
+    return self;
 }
 
 Manager *Manager::init(int argc, char **argv)
 {
+    Manager *self = nullptr;
     {
-        std::lock_guard lock(instanceMutex);
-        if (theInstance != nullptr && theInstance->d->runtime != nullptr)
-            return theInstance;
+        std::lock_guard lock(mutex);
+        if (manager != nullptr && manager->d->runtime != nullptr)
+            return manager;
+        if (manager == nullptr)
+            manager = new Manager;
+        self = manager;
     }
+    self->initManager(argc, argv);
+    // OpenRTM-aist's manager offers the composite type in every program, before any module loads.
+    PeriodicECSharedCompositeInit(self);
+    self->initLocalService();
+    return self;
+}
+
+void Manager::initManager(int argc, char **argv)
+{
     Runtime::Properties config;
     std::string error;
     if (!Runtime::parseManagerArguments(argc, argv, &config, &error)) {
@@ -216,19 +231,42 @@ Manager *Manager::init(int argc, char **argv)
         std::cerr << (argc > 0 ? argv[0] : "manager") << ": " << error << std::endl;
         std::exit(1);
     }
-    Manager *manager = attach(runtime.get());
-    manager->d->owned = std::move(runtime);
-    // OpenRTM-aist's manager offers the composite type in every program, before any module loads.
-    PeriodicECSharedCompositeInit(manager);
-    return manager;
+    attach(runtime.get());
+    d->owned = std::move(runtime);
+}
+
+bool Manager::initLocalService()
+{
+    RTM::LocalServiceAdmin::instance().init(d->config.getNode("manager.local_service"));
+    return true;
+}
+
+Manager::InstanceName::InstanceName(RTObject_impl *comp)
+    : m_name(comp != nullptr ? comp->getInstanceName() : "")
+{
+}
+
+Manager::InstanceName::InstanceName(const char *name)
+    : m_name(name != nullptr ? name : "")
+{
+}
+
+Manager::InstanceName::InstanceName(std::string name)
+    : m_name(std::move(name))
+{
+}
+
+bool Manager::InstanceName::operator()(RTObject_impl *comp)
+{
+    return comp != nullptr && m_name == comp->getInstanceName();
 }
 
 Manager &Manager::instance()
 {
     {
-        std::lock_guard lock(instanceMutex);
-        if (theInstance != nullptr && theInstance->d->runtime != nullptr)
-            return *theInstance;
+        std::lock_guard lock(mutex);
+        if (manager != nullptr && manager->d->runtime != nullptr)
+            return *manager;
     }
     char program[] = "manager";
     char *argv[] = {program, nullptr};
@@ -237,13 +275,13 @@ Manager &Manager::instance()
 
 void Manager::terminate()
 {
-    Manager *manager = nullptr;
+    Manager *self = nullptr;
     {
-        std::lock_guard lock(instanceMutex);
-        manager = theInstance;
+        std::lock_guard lock(mutex);
+        self = manager;
     }
-    if (manager != nullptr)
-        manager->shutdown();
+    if (self != nullptr)
+        self->shutdown();
 }
 
 void Manager::shutdown()
@@ -252,6 +290,7 @@ void Manager::shutdown()
         return;
     d->actions.each(d->actions.manager, [](RTM::ManagerActionListener &l) { l.preShutdown(); });
     d->stopTimer();
+    RTM::LocalServiceAdmin::instance().finalize();
     d->runtime->shutdown();
 }
 

@@ -15,6 +15,154 @@ RtcLifecycleActionListener::~RtcLifecycleActionListener() = default;
 NamingActionListener::~NamingActionListener() = default;
 LocalServiceActionListener::~LocalServiceActionListener() = default;
 
+ManagerActionListenerHolder::ManagerActionListenerHolder() = default;
+ManagerActionListenerHolder::~ManagerActionListenerHolder() = default;
+
+void ManagerActionListenerHolder::preShutdown()
+{
+    LISTENERHOLDER_CALLBACK(preShutdown, ());
+}
+
+void ManagerActionListenerHolder::postShutdown()
+{
+    LISTENERHOLDER_CALLBACK(postShutdown, ());
+}
+
+void ManagerActionListenerHolder::preReinit()
+{
+    LISTENERHOLDER_CALLBACK(preReinit, ());
+}
+
+void ManagerActionListenerHolder::postReinit()
+{
+    LISTENERHOLDER_CALLBACK(postReinit, ());
+}
+
+ModuleActionListenerHolder::ModuleActionListenerHolder() = default;
+ModuleActionListenerHolder::~ModuleActionListenerHolder() = default;
+
+void ModuleActionListenerHolder::preLoad(std::string &modname, std::string &funcname)
+{
+    LISTENERHOLDER_CALLBACK(preLoad, (modname, funcname));
+}
+
+void ModuleActionListenerHolder::postLoad(std::string &modname, std::string &funcname)
+{
+    LISTENERHOLDER_CALLBACK(postLoad, (modname, funcname));
+}
+
+void ModuleActionListenerHolder::preUnload(std::string &modname)
+{
+    LISTENERHOLDER_CALLBACK(preUnload, (modname));
+}
+
+void ModuleActionListenerHolder::postUnload(std::string &modname)
+{
+    LISTENERHOLDER_CALLBACK(postUnload, (modname));
+}
+
+RtcLifecycleActionListenerHolder::RtcLifecycleActionListenerHolder() = default;
+RtcLifecycleActionListenerHolder::~RtcLifecycleActionListenerHolder() = default;
+
+void RtcLifecycleActionListenerHolder::preCreate(std::string &args)
+{
+    LISTENERHOLDER_CALLBACK(preCreate, (args));
+}
+
+void RtcLifecycleActionListenerHolder::postCreate(RTC::RTObject_impl *rtobj)
+{
+    LISTENERHOLDER_CALLBACK(postCreate, (rtobj));
+}
+
+void RtcLifecycleActionListenerHolder::preConfigure(coil::Properties &prop)
+{
+    LISTENERHOLDER_CALLBACK(preConfigure, (prop));
+}
+
+void RtcLifecycleActionListenerHolder::postConfigure(coil::Properties &prop)
+{
+    LISTENERHOLDER_CALLBACK(postConfigure, (prop));
+}
+
+void RtcLifecycleActionListenerHolder::preInitialize()
+{
+    LISTENERHOLDER_CALLBACK(preInitialize, ());
+}
+
+void RtcLifecycleActionListenerHolder::postInitialize()
+{
+    LISTENERHOLDER_CALLBACK(postInitialize, ());
+}
+
+NamingActionListenerHolder::NamingActionListenerHolder() = default;
+NamingActionListenerHolder::~NamingActionListenerHolder() = default;
+
+void NamingActionListenerHolder::preBind(RTC::RTObject_impl *rtobj, coil::vstring &name)
+{
+    LISTENERHOLDER_CALLBACK(preBind, (rtobj, name));
+}
+
+void NamingActionListenerHolder::postBind(RTC::RTObject_impl *rtobj, coil::vstring &name)
+{
+    LISTENERHOLDER_CALLBACK(postBind, (rtobj, name));
+}
+
+void NamingActionListenerHolder::preUnbind(RTC::RTObject_impl *rtobj, coil::vstring &name)
+{
+    LISTENERHOLDER_CALLBACK(preUnbind, (rtobj, name));
+}
+
+void NamingActionListenerHolder::postUnbind(RTC::RTObject_impl *rtobj, coil::vstring &name)
+{
+    LISTENERHOLDER_CALLBACK(postUnbind, (rtobj, name));
+}
+
+LocalServiceActionListenerHolder::LocalServiceActionListenerHolder() = default;
+LocalServiceActionListenerHolder::~LocalServiceActionListenerHolder() = default;
+
+void LocalServiceActionListenerHolder::preServiceRegister(std::string service_name)
+{
+    LISTENERHOLDER_CALLBACK(preServiceRegister, (service_name));
+}
+
+void LocalServiceActionListenerHolder::postServiceRegister(std::string service_name, LocalServiceBase *service)
+{
+    LISTENERHOLDER_CALLBACK(postServiceRegister, (service_name, service));
+}
+
+void LocalServiceActionListenerHolder::preServiceInit(coil::Properties &prop, LocalServiceBase *service)
+{
+    LISTENERHOLDER_CALLBACK(preServiceInit, (prop, service));
+}
+
+void LocalServiceActionListenerHolder::postServiceInit(coil::Properties &prop, LocalServiceBase *service)
+{
+    LISTENERHOLDER_CALLBACK(postServiceInit, (prop, service));
+}
+
+void LocalServiceActionListenerHolder::preServiceReinit(coil::Properties &prop, LocalServiceBase *service)
+{
+    LISTENERHOLDER_CALLBACK(preServiceReinit, (prop, service));
+}
+
+void LocalServiceActionListenerHolder::postServiceReinit(coil::Properties &prop, LocalServiceBase *service)
+{
+    LISTENERHOLDER_CALLBACK(postServiceReinit, (prop, service));
+}
+
+void LocalServiceActionListenerHolder::postServiceFinalize(std::string service_name, LocalServiceBase *service)
+{
+    LISTENERHOLDER_CALLBACK(postServiceFinalize, (service_name, service));
+}
+
+void LocalServiceActionListenerHolder::preServiceFinalize(std::string service_name, LocalServiceBase *service)
+{
+    LISTENERHOLDER_CALLBACK(preServiceFinalize, (service_name, service));
+}
+
+ManagerActionListeners::ManagerActionListeners() = default;
+ManagerActionListeners::~ManagerActionListeners() = default;
+
 } // namespace RTM
 
 namespace RTC::Sdk {

@@ -277,7 +277,8 @@ coil::Properties ManagerConfig::getConfig() const
 void ManagerConfig::setSystemInformation(coil::Properties &prop)
 {
     // The same host facts rtmanager's profile gives.
-    for (const auto &[key, value] : Runtime::osFacts().entries())
+    const Runtime::Properties facts = Runtime::osFacts();
+    for (const auto &[key, value] : facts.entries())
         prop.setProperty(key, value);
     prop.setProperty("manager.pid", std::to_string(getpid()));
 }

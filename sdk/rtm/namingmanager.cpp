@@ -411,6 +411,55 @@ void NamingManager::unregisterMgrName(const char *name)
 
 namespace RTM {
 
+const char *CompParam::prof_list[CompParam::prof_list_size]
+    = {"RTC", "vendor", "category", "implementation_id", "language", "version"};
+
+CompParam::CompParam(std::string module_name)
+    : m_type("RTC")
+    , m_language("C++")
+{
+    module_name = module_name.substr(0, module_name.find('?'));
+    const coil::vstring parts = coil::split(module_name, ":");
+    if (parts.size() < prof_list_size) {
+        m_impl_id = module_name;
+        return;
+    }
+    m_type = parts[0];
+    m_vendor = parts[1];
+    m_category = parts[2];
+    m_impl_id = parts[3];
+    if (!parts[4].empty())
+        m_language = parts[4];
+    m_version = parts[5];
+}
+
+CompParam::~CompParam() = default;
+
+std::string CompParam::vendor()
+{
+    return m_vendor;
+}
+
+std::string CompParam::category()
+{
+    return m_category;
+}
+
+std::string CompParam::impl_id()
+{
+    return m_impl_id;
+}
+
+std::string CompParam::language()
+{
+    return m_language;
+}
+
+std::string CompParam::version()
+{
+    return m_version;
+}
+
 ManagerServant::ManagerServant() = default;
 ManagerServant::~ManagerServant() = default;
 

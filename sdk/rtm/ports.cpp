@@ -471,7 +471,12 @@ bool OutPortBase::writeMarshalledTo(const std::string &connectorId, const ByteDa
         }
     }
     // The bytes are in the connection's byte order already (the connector set the stream's).
-    writeMarshalled([&data](bool) { return Runtime::CdrView(data.getBuffer(), data.getDataLength()); });
+    const auto results
+        = writeMarshalled([&data](bool) { return Runtime::CdrView(data.getBuffer(), data.getDataLength()); });
+    for (const auto &[id, result] : results) {
+        if (id == connectorId)
+            return result == Runtime::SendStatus::Ok;
+    }
     return true;
 }
 
@@ -543,9 +548,55 @@ void OutPortBase::notifyWrite(void *value, const std::type_info &type,
     }
 }
 
+namespace {
+
+DataPortStatus toDataPortStatus(Runtime::SendStatus status)
+{
+    switch (status) {
+    case Runtime::SendStatus::Ok:
+        return DataPortStatus::PORT_OK;
+    case Runtime::SendStatus::PortError:
+        return DataPortStatus::PORT_ERROR;
+    case Runtime::SendStatus::BufferFull:
+        return DataPortStatus::BUFFER_FULL;
+    case Runtime::SendStatus::BufferEmpty:
+        return DataPortStatus::BUFFER_EMPTY;
+    case Runtime::SendStatus::BufferTimeout:
+        return DataPortStatus::BUFFER_TIMEOUT;
+    case Runtime::SendStatus::ConnectionLost:
+        return DataPortStatus::CONNECTION_LOST;
+    case Runtime::SendStatus::UnknownError:
+        break;
+    }
+    return DataPortStatus::UNKNOWN_ERROR;
+}
+
+} // namespace
+
 void OutPortBase::writeBytes(const std::function<Runtime::CdrView(bool littleEndian)> &marshal)
 {
-    writeMarshalled(marshal);
+    const auto results = writeMarshalled(marshal);
+    DataPortStatusList statuses;
+    {
+        std::lock_guard<std::mutex> lock(m_connectorsMutex);
+        for (OutPortConnector *connector : m_connectors) {
+            // Connections served directly (same process) took the value in writeDirect().
+            DataPortStatus status = DataPortStatus::PORT_OK;
+            for (const auto &[id, result] : results) {
+                if (id == connector->id())
+                    status = toDataPortStatus(result);
+            }
+            statuses.push_back(status);
+        }
+    }
+    std::lock_guard<std::mutex> lock(m_statusMutex);
+    m_status = statuses;
+}
+
+DataPortStatusList OutPortBase::statusList()
+{
+    std::lock_guard<std::mutex> lock(m_statusMutex);
+    return m_status;
 }
 
 // --- CorbaPort ---
@@ -556,6 +607,13 @@ CorbaPort::CorbaPort(const char *name)
 }
 
 CorbaPort::~CorbaPort() = default;
+
+void CorbaPort::init(coil::Properties &prop)
+{
+    const std::string limit = prop.getProperty("connection_limit");
+    if (!limit.empty())
+        setProperty("connection_limit", limit);
+}
 
 bool CorbaPort::registerServant(const char *instance_name, const char *type_name, PortableServer::ServantBase *provider)
 {

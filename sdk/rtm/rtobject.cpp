@@ -180,13 +180,13 @@ ReturnCode_t RTObject_impl::on_rate_changed(UniqueId exec_handle)
 UniqueId RTObject_impl::attach_context(ExecutionContext_ptr exec_context)
 {
     const UniqueId id = Runtime::RtObject::attach_context(exec_context);
-    m_actionListeners.notify(ExecutionContextActionListenerType::EC_ATTACHED, id);
+    onAttachExecutionContext(id);
     return id;
 }
 
 ReturnCode_t RTObject_impl::detach_context(UniqueId ec_id)
 {
-    m_actionListeners.notify(ExecutionContextActionListenerType::EC_DETACHED, ec_id);
+    onDetachExecutionContext(ec_id);
     return Runtime::RtObject::detach_context(ec_id);
 }
 
@@ -212,6 +212,42 @@ const char *RTObject_impl::getTypeName()
 const char *RTObject_impl::getCategory()
 {
     return m_category.c_str();
+}
+
+const char *RTObject_impl::getDescription()
+{
+    return m_properties["description"].c_str();
+}
+
+const char *RTObject_impl::getVersion()
+{
+    return m_properties["version"].c_str();
+}
+
+const char *RTObject_impl::getVendor()
+{
+    return m_properties["vendor"].c_str();
+}
+
+std::vector<std::string> RTObject_impl::getNamingNames()
+{
+    std::vector<std::string> names;
+    for (const std::string &name : coil::split(m_properties.getProperty("naming.names"), ",", true))
+        names.push_back(coil::eraseBlank(name));
+    return names;
+}
+
+void RTObject_impl::setObjRef(RTObject_ptr rtobj)
+{
+    RTObject_var own = reference();
+    if (CORBA::is_nil(rtobj) || !own->_is_equivalent(rtobj))
+        RTC_ERROR(("setObjRef: a component's reference is its own servant's; another reference is refused"));
+}
+
+void RTObject_impl::setINSObjRef(LightweightRTObject_ptr)
+{
+    RTC_ERROR(("setINSObjRef: registration under a corbaloc (INS) key is not supported; the component is"
+               " reached through its reference and the naming service"));
 }
 
 coil::Properties &RTObject_impl::getProperties()
@@ -275,17 +311,30 @@ void notifyConnectStep(PortConnectListeners &listeners, Runtime::ConnectStep ste
 
 } // namespace
 
+} // namespace RTC
+
+void Runtime::PortBase::setPortConnectListenerHolder(RTC::PortConnectListeners *portconnListeners)
+{
+    if (portconnListeners == nullptr) {
+        setConnectObserver({});
+        return;
+    }
+    PortBase *self = this;
+    setConnectObserver([self, portconnListeners](Runtime::ConnectStep step, RTC::ConnectorProfile &profile,
+                                                 RTC::ReturnCode_t result) {
+        RTC::notifyConnectStep(*portconnListeners, step, self->getName(), profile, result);
+    });
+}
+
+namespace RTC {
+
 void RTObject_impl::attachPort(PortBase &port)
 {
-    PortBase *p = &port;
-    PortConnectListeners *listeners = &m_portconnListeners;
-    port.setConnectObserver([p, listeners](Runtime::ConnectStep step, ConnectorProfile &profile, ReturnCode_t result) {
-        notifyConnectStep(*listeners, step, p->getName(), profile, result);
-    });
+    port.setPortConnectListenerHolder(&m_portconnListeners);
     // The listeners see the profile as it will be listed: under the component's instance name.
     RTObject_var self = reference();
     port.setOwner(self.in(), instanceName());
-    m_actionListeners.notify(PortActionListenerType::ADD_PORT, port.getPortProfile());
+    onAddPort(port.getPortProfile());
     addBorrowedPort(&port);
     m_addedPorts.push_back(&port);
 }
@@ -294,7 +343,7 @@ bool RTObject_impl::detachPort(PortBase &port)
 {
     if (std::find(m_addedPorts.begin(), m_addedPorts.end(), &port) == m_addedPorts.end())
         return false;
-    m_actionListeners.notify(PortActionListenerType::REMOVE_PORT, port.getPortProfile());
+    onRemovePort(port.getPortProfile());
     m_addedPorts.erase(std::remove(m_addedPorts.begin(), m_addedPorts.end(), &port), m_addedPorts.end());
     const bool removed = Runtime::RtObject::removePort(&port);
     port.setConnectObserver({});
@@ -326,6 +375,79 @@ bool RTObject_impl::addOutPort(const char *name, OutPortBase &outport)
     attachPort(outport);
     m_outports.push_back(&outport);
     return true;
+}
+
+void RTObject_impl::registerPort(PortBase &port)
+{
+    addPort(port);
+}
+
+void RTObject_impl::registerPort(PortService_ptr port)
+{
+    addPortReference(port);
+}
+
+void RTObject_impl::registerPort(CorbaPort &port)
+{
+    addPort(port);
+}
+
+void RTObject_impl::registerInPort(const char *name, InPortBase &inport)
+{
+    addInPort(name, inport);
+}
+
+void RTObject_impl::registerOutPort(const char *name, OutPortBase &outport)
+{
+    addOutPort(name, outport);
+}
+
+void RTObject_impl::deletePort(PortBase &port)
+{
+    removePort(port);
+}
+
+void RTObject_impl::deletePort(PortService_ptr port)
+{
+    if (CORBA::is_nil(port))
+        return;
+    const std::vector<PortBase *> ports = m_addedPorts;
+    for (PortBase *added : ports) {
+        PortService_ptr ref = added->getPortRef(); // borrowed
+        if (!CORBA::is_nil(ref) && ref->_is_equivalent(port)) {
+            removePort(*added);
+            return;
+        }
+    }
+    removePortReference(port);
+}
+
+void RTObject_impl::deletePort(CorbaPort &port)
+{
+    removePort(port);
+}
+
+void RTObject_impl::deletePortByName(const char *port_name)
+{
+    if (port_name == nullptr)
+        return;
+    const std::vector<PortBase *> ports = m_addedPorts;
+    for (PortBase *port : ports) {
+        if (std::string(port->getName()) == port_name) {
+            if (auto *in = dynamic_cast<InPortBase *>(port))
+                removeInPort(*in);
+            else if (auto *out = dynamic_cast<OutPortBase *>(port))
+                removeOutPort(*out);
+            else
+                removePort(*port);
+            return;
+        }
+    }
+}
+
+void RTObject_impl::shutdown()
+{
+    shutdownComponent();
 }
 
 bool RTObject_impl::removePort(PortBase &port)
@@ -698,3 +820,75 @@ DataFlowComponentBase::~DataFlowComponentBase() = default;
 } // namespace RTC
 
 RTM::LocalServiceProfile::~LocalServiceProfile() = default;
+
+namespace RTC {
+
+void deleteRTObject(RTObject_impl *rtc)
+{
+    if (rtc != nullptr)
+        static_cast<PortableServer::ServantBase *>(rtc)->_remove_ref();
+}
+
+FactoryBase::FactoryBase(const coil::Properties &profile)
+    : m_Profile(profile)
+    , m_Number(-1)
+{
+}
+
+FactoryBase::~FactoryBase() = default;
+
+coil::Properties &FactoryBase::profile()
+{
+    return m_Profile;
+}
+
+int FactoryBase::number()
+{
+    return m_Number;
+}
+
+FactoryCXX::FactoryCXX(const coil::Properties &profile, RtcNewFunc new_func, RtcDeleteFunc delete_func,
+                       RTM::NumberingPolicyBase *policy)
+    : FactoryBase(profile)
+    , m_New(new_func)
+    , m_Delete(delete_func)
+    , m_policy(policy)
+{
+}
+
+FactoryCXX::~FactoryCXX()
+{
+    delete m_policy;
+}
+
+RTObject_impl *FactoryCXX::create(Manager *mgr)
+{
+    RTObject_impl *rtobj = m_New != nullptr ? m_New(mgr) : nullptr;
+    if (rtobj == nullptr)
+        return nullptr;
+    ++m_Number;
+    rtobj->setProperties(profile());
+    std::string instanceName(profile().getProperty("type_name"));
+    if (m_policy != nullptr)
+        instanceName += m_policy->onCreate(rtobj);
+    rtobj->setInstanceName(instanceName.c_str());
+    return rtobj;
+}
+
+void FactoryCXX::destroy(RTObject_impl *comp)
+{
+    if (comp == nullptr)
+        return;
+    --m_Number;
+    if (m_policy != nullptr) {
+        try {
+            m_policy->onDelete(comp);
+        } catch (...) {
+            // not numbered by this factory's policy: nothing to free
+        }
+    }
+    if (m_Delete != nullptr)
+        m_Delete(comp);
+}
+
+} // namespace RTC

@@ -59,6 +59,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMConsumer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/InPortSHMProvider.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ListenerHolder.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LocalServiceAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LocalServiceBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/LogstreamFile.h
@@ -68,6 +69,7 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerConfig.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ManagerServant.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/ModuleManager.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/MultilayerCompositeEC.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NVUtil.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingManager.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/NamingServiceNumberingPolicy.h
@@ -107,6 +109,9 @@ set(SDK_RTM_HEADERS
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObjectStateMachine.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RingBuffer.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/RTObject.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoConfiguration.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoOrganization.h
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceAdmin.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceConsumerBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SdoServiceProviderBase.h
     ${CMAKE_CURRENT_SOURCE_DIR}/include/rtm/SharedMemoryPort.h
@@ -132,11 +137,17 @@ set(SDK_RTM_SOURCES
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/datatransports.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/publishers.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/rtobject.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sdoconfiguration.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sdoorganization.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/sdoserviceadmin.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmactions.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/fsmlisteners.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/listenerarrays.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manager.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.h
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/manageractions.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/rtm/localserviceadmin.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbaiorutil.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbanaming.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/rtm/corbartcutil.cpp

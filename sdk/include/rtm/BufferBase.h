@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <mutex>
 
 namespace RTC
 {
@@ -47,6 +48,81 @@ public:
     virtual size_t readable() const = 0;
     virtual bool empty() const = 0;
 };
-} // namespace RTC
+/**
+ * A buffer of one slot that never fills: each write replaces the value, each read gives the
+ * latest value written (empty only before the first write or after reset()). Its length is 1
+ * and cannot change.
+ */
+template <class DataType>
+class NullBuffer : public BufferBase<DataType>
+{
+public:
+    explicit NullBuffer(long int size = 1)
+        : m_length(size)
+        , m_data()
+        , m_hasData(false)
+    {
+    }
+    ~NullBuffer() override = default;
 
+    void init(const coil::Properties &) override {}
+    size_t length() const override { return 1; }
+    BufferStatus length(size_t n) override { return n == 1 ? BufferStatus::OK : BufferStatus::NOT_SUPPORTED; }
+    BufferStatus reset() override
+    {
+        std::lock_guard<std::mutex> guard(m_mutex);
+        m_hasData = false;
+        return BufferStatus::OK;
+    }
+    DataType *wptr(long int = 0) override { return &m_data; }
+    BufferStatus advanceWptr(long int = 1, bool = true) override
+    {
+        std::lock_guard<std::mutex> guard(m_mutex);
+        m_hasData = true;
+        return BufferStatus::OK;
+    }
+    BufferStatus put(const DataType &value) override
+    {
+        std::lock_guard<std::mutex> guard(m_mutex);
+        m_data = value;
+        return BufferStatus::OK;
+    }
+    BufferStatus write(const DataType &value, std::chrono::nanoseconds = std::chrono::nanoseconds(-1)) override
+    {
+        std::lock_guard<std::mutex> guard(m_mutex);
+        m_data = value;
+        m_hasData = true;
+        return BufferStatus::OK;
+    }
+    size_t writable() const override { return 1; }
+    bool full() const override { return false; }
+    DataType *rptr(long int = 0) override { return &m_data; }
+    BufferStatus advanceRptr(long int = 1, bool = true) override { return BufferStatus::OK; }
+    BufferStatus get(DataType &value) override
+    {
+        std::lock_guard<std::mutex> guard(m_mutex);
+        if (!m_hasData)
+            return BufferStatus::EMPTY;
+        value = m_data;
+        return BufferStatus::OK;
+    }
+    DataType &get() override { return m_data; }
+    BufferStatus read(DataType &value, std::chrono::nanoseconds = std::chrono::nanoseconds(-1)) override
+    {
+        return get(value);
+    }
+    size_t readable() const override
+    {
+        std::lock_guard<std::mutex> guard(m_mutex);
+        return m_hasData ? 1 : 0;
+    }
+    bool empty() const override { return readable() == 0; }
+
+private:
+    long int m_length; // as given; the buffer holds one value whatever it is
+    DataType m_data;
+    bool m_hasData;
+    mutable std::mutex m_mutex;
+};
+} // namespace RTC
 #endif // RTM_BUFFERBASE_H

@@ -21,6 +21,88 @@ class ConfigAdmin;
 
 namespace RTC
 {
+class ConfigAdmin;
+
+// OpenRTM-aist 1.0's callback classes, now the configuration listeners.
+using OnUpdateCallback = ConfigurationSetNameListener;
+using OnUpdateParamCallback = ConfigurationParamListener;
+using OnSetConfigurationSetCallback = ConfigurationSetListener;
+using OnAddConfigurationAddCallback = ConfigurationSetListener;
+using OnRemoveConfigurationSetCallback = ConfigurationSetNameListener;
+using OnActivateSetCallback = ConfigurationSetNameListener;
+
+/**
+ * One configuration parameter bound to a variable: its name, its default and the text it was
+ * last set from. update() converts a new text into the variable and tells the ConfigAdmin set
+ * with setCallback(). The strings are not copied: @p name_ and @p def_val must outlive it.
+ */
+struct ConfigBase
+{
+    ConfigBase(const char *name_, const char *def_val)
+        : name(name_)
+        , default_value(def_val)
+        , string_value("")
+        , m_admin(nullptr)
+        , m_callback(nullptr)
+    {
+    }
+    virtual ~ConfigBase() = default;
+
+    using CallbackFunc = void (ConfigAdmin::*)(const char *, const char *);
+
+    void setCallback(ConfigAdmin *cadmin, CallbackFunc cbf)
+    {
+        m_admin = cadmin;
+        m_callback = cbf;
+    }
+    /// Tells the ConfigAdmin set with setCallback() that @p key now has @p val.
+    void notifyUpdate(const char *key, const char *val)
+    {
+        if (m_admin != nullptr && m_callback != nullptr)
+            (m_admin->*m_callback)(key, val);
+    }
+    /// Sets the variable from @p val; false (the variable takes the default) when it does not convert.
+    virtual bool update(const char *val) = 0;
+
+    const char *name;
+    const char *default_value;
+
+protected:
+    std::string string_value;
+    ConfigAdmin *m_admin;
+    CallbackFunc m_callback;
+};
+
+/// A parameter bound to a variable of type @p VarType, converted by @p TransFunc.
+template <typename VarType, typename TransFunc = bool (*)(VarType &, const char *)>
+class Config : public ConfigBase
+{
+public:
+    Config(const char *conf_name, VarType &var, const char *def_val, TransFunc trans = coil::stringTo)
+        : ConfigBase(conf_name, def_val)
+        , m_var(var)
+        , m_trans(trans)
+    {
+    }
+    ~Config() override = default;
+
+    bool update(const char *val) override
+    {
+        if (string_value == val)
+            return true;
+        string_value = val;
+        const bool converted = (*m_trans)(m_var, val);
+        if (!converted)
+            (*m_trans)(m_var, default_value);
+        notifyUpdate(name, val);
+        return converted;
+    }
+
+protected:
+    VarType &m_var;
+    TransFunc m_trans;
+};
+
 /**
  * The configuration of one component: named sets of parameter values, one of them active, and
  * the component's variables bound to the parameters. A variable changes only when the
@@ -59,6 +141,13 @@ public:
     /// Applies one parameter of @p config_set when it is the active set.
     void update(const char *config_set, const char *config_param);
 
+    /// Unbinds @p param_name: its variable no longer changes. False when it is not bound.
+    bool unbindParameter(const char *param_name);
+    /// The parameters whose variables the last update changed.
+    coil::vstring &changedParameters();
+    /// Every configuration set, as a node named by its id (the pointers stay the admin's).
+    const std::vector<coil::Properties *> &getConfigurationSets();
+
     bool isExist(const char *param_name);
     /// True when a set was changed and not applied yet.
     bool isChanged();
@@ -87,6 +176,17 @@ public:
     void removeConfigurationSetNameListener(ConfigurationSetNameListenerType type,
                                             ConfigurationSetNameListener *listener);
 
+    // OpenRTM-aist 1.0's callbacks: each adds a listener that stays the caller's.
+    void setOnUpdate(OnUpdateCallback *cb);
+    void setOnUpdateParam(OnUpdateParamCallback *cb);
+    void setOnSetConfigurationSet(OnSetConfigurationSetCallback *cb);
+    void setOnAddConfigurationSet(OnAddConfigurationAddCallback *cb);
+    void setOnRemoveConfigurationSet(OnRemoveConfigurationSetCallback *cb);
+    void setOnActivateSet(OnActivateSetCallback *cb);
+
+    /// RT Studio: the runtime's configuration underneath (what SDOPackage::Configuration_impl serves).
+    ::Runtime::ConfigAdmin &engine();
+
     /**
      * RT Studio: binds parameter @p name (default @p defaultValue, which the caller has applied
      * already) to @p setter, called with each new value when the configuration is applied; the
@@ -95,8 +195,11 @@ public:
      */
     void bindSetter(const char *name, const char *defaultValue, std::function<bool(const char *)> setter);
 
-private:
+protected:
+    /// Called by a parameter (ConfigBase) whose variable changed: the parameter listeners hear of it.
+    void onUpdateParam(const char *config_param, const char *config_value);
 
+private:
     struct Private;
     Private *d;
 };

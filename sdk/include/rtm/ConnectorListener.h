@@ -208,6 +208,229 @@ private:
     struct Private;
     Private *d;
 };
+
+/**
+ * Data listeners of one event, called in the order added; a listener added with autoclean is
+ * deleted when removed or with the holder. notify() ORs what the listeners answer.
+ */
+class ConnectorDataListenerHolder : public ConnectorListenerStatus
+{
+public:
+    USE_CONNLISTENER_STATUS;
+    ConnectorDataListenerHolder();
+    virtual ~ConnectorDataListenerHolder();
+    ConnectorDataListenerHolder(const ConnectorDataListenerHolder &) = delete;
+    ConnectorDataListenerHolder &operator=(const ConnectorDataListenerHolder &) = delete;
+
+    void addListener(ConnectorDataListener *listener, bool autoclean);
+    void removeListener(ConnectorDataListener *listener);
+    size_t size();
+    /// Calls every listener with the marshalled sample @p cdrdata.
+    virtual ReturnCode notify(ConnectorInfo &info, ByteData &cdrdata, const std::string &marshalingtype);
+    /// notify() with the marshaling type of the connector's InPort (OutPort) side.
+    virtual ReturnCode notifyIn(ConnectorInfo &info, ByteData &data);
+    virtual ReturnCode notifyOut(ConnectorInfo &info, ByteData &data);
+
+    template <class DataType>
+    ReturnCode notifyIn(ConnectorInfo &info, DataType &typeddata)
+    {
+        return notify(info, typeddata, marshalingType(info, "inport.marshaling_type"));
+    }
+    template <class DataType>
+    ReturnCode notifyOut(ConnectorInfo &info, DataType &typeddata)
+    {
+        return notify(info, typeddata, marshalingType(info, "outport.marshaling_type"));
+    }
+    /**
+     * Calls every listener with the sample @p typeddata: listeners of its type get it as it is,
+     * the others its CDR form (marshalled once, in the byte order of `serializer.cdr.endian`).
+     */
+    template <class DataType>
+    ReturnCode notify(ConnectorInfo &info, DataType &typeddata, const std::string &marshalingtype)
+    {
+        (void)marshalingtype; // CDR is the one marshaling this runtime has
+        std::lock_guard<std::mutex> guard(m_mutex);
+        ReturnCode ret = NO_CHANGE;
+        ByteData bytes;
+        bool marshalled = false;
+        for (size_t i = 0; i < m_listeners.size(); ++i) {
+            ConnectorDataListener *listener = m_listeners[i].first;
+            if (listener->acceptsValue(typeid(DataType))) {
+                ret = ret | listener->onValue(info, &typeddata);
+                continue;
+            }
+            if (!marshalled) {
+                cdrMemoryStream stream;
+                stream.setByteSwapFlag(isLittleEndian(info));
+                typeddata >>= stream;
+                bytes.writeData(static_cast<const unsigned char *>(stream.bufPtr()),
+                                static_cast<unsigned long>(stream.bufSize()));
+                marshalled = true;
+            }
+            ret = ret | (*listener)(info, bytes, "cdr");
+        }
+        return ret;
+    }
+
+protected:
+    static std::string marshalingType(ConnectorInfo &info, const char *sideKey);
+    static bool isLittleEndian(ConnectorInfo &info);
+
+    std::vector<std::pair<ConnectorDataListener *, bool>> m_listeners;
+    std::mutex m_mutex;
+};
+
+/**
+ * Data listeners for samples of type @p DataType: notify() with a marshalled sample unmarshals
+ * it once for the typed listeners (ConnectorDataListenerT<DataType>); what they change is
+ * marshalled back into the sample.
+ */
+template <class DataType>
+class ConnectorDataListenerHolderT : public ConnectorDataListenerHolder
+{
+public:
+    ConnectorDataListenerHolderT() = default;
+    ~ConnectorDataListenerHolderT() override = default;
+
+    ReturnCode notify(ConnectorInfo &info, ByteData &cdrdata, const std::string &marshalingtype) override
+    {
+        std::lock_guard<std::mutex> guard(m_mutex);
+        ReturnCode ret = NO_CHANGE;
+        const bool little = isLittleEndian(info);
+        DataType data;
+        bool unmarshalled = false;
+        for (size_t i = 0; i < m_listeners.size(); ++i) {
+            ConnectorDataListener *listener = m_listeners[i].first;
+            if (!listener->acceptsValue(typeid(DataType))) {
+                ret = ret | (*listener)(info, cdrdata, marshalingtype);
+                continue;
+            }
+            if (!unmarshalled) {
+                try {
+                    cdrMemoryStream in(cdrdata.getBuffer(), cdrdata.getDataLength());
+                    in.setByteSwapFlag(little);
+                    data <<= in;
+                } catch (const CORBA::Exception &) {
+                    continue; // not a sample of this type: the typed listeners cannot see it
+                }
+                unmarshalled = true;
+            }
+            const ReturnCode result = listener->onValue(info, &data);
+            if ((result & DATA_CHANGED) != NO_CHANGE) {
+                cdrMemoryStream out;
+                out.setByteSwapFlag(little);
+                data >>= out;
+                cdrdata.writeData(static_cast<const unsigned char *>(out.bufPtr()),
+                                  static_cast<unsigned long>(out.bufSize()));
+            }
+            ret = ret | result;
+        }
+        return ret;
+    }
+};
+
+/// Connector listeners of one event, in the order added; notify() ORs their answers.
+class ConnectorListenerHolder : public ConnectorListenerStatus
+{
+public:
+    USE_CONNLISTENER_STATUS;
+    ConnectorListenerHolder();
+    virtual ~ConnectorListenerHolder();
+    ConnectorListenerHolder(const ConnectorListenerHolder &) = delete;
+    ConnectorListenerHolder &operator=(const ConnectorListenerHolder &) = delete;
+
+    void addListener(ConnectorListener *listener, bool autoclean);
+    void removeListener(ConnectorListener *listener);
+    size_t size();
+    ReturnCode notify(ConnectorInfo &info);
+
+private:
+    std::vector<std::pair<ConnectorListener *, bool>> m_listeners;
+    std::mutex m_mutex;
+};
+
+/// The listeners of a port of data type @p DataType, one holder per event; a type out of range is refused.
+template <class DataType>
+class ConnectorListenersT : public ConnectorListenersBase
+{
+public:
+    ConnectorListenersT() {}
+    ~ConnectorListenersT() override {}
+
+    ConnectorListenerStatus::Enum notifyIn(ConnectorDataListenerType type, ConnectorInfo &info, ByteData &data)
+    {
+        return inRange(type) ? dataHolder(type).notifyIn(info, data) : ConnectorListenerStatus::NO_CHANGE;
+    }
+    ConnectorListenerStatus::Enum notifyOut(ConnectorDataListenerType type, ConnectorInfo &info, ByteData &data)
+    {
+        return inRange(type) ? dataHolder(type).notifyOut(info, data) : ConnectorListenerStatus::NO_CHANGE;
+    }
+    ConnectorListenerStatus::Enum notifyIn(ConnectorDataListenerType type, ConnectorInfo &info, DataType &data)
+    {
+        return inRange(type) ? dataHolder(type).notifyIn(info, data) : ConnectorListenerStatus::NO_CHANGE;
+    }
+    ConnectorListenerStatus::Enum notifyOut(ConnectorDataListenerType type, ConnectorInfo &info, DataType &data)
+    {
+        return inRange(type) ? dataHolder(type).notifyOut(info, data) : ConnectorListenerStatus::NO_CHANGE;
+    }
+    ConnectorListenerStatus::Enum notify(ConnectorListenerType type, ConnectorInfo &info)
+    {
+        return inRange(type) ? connector_[static_cast<uint8_t>(type)].notify(info) : ConnectorListenerStatus::NO_CHANGE;
+    }
+    bool addListener(ConnectorDataListenerType type, ConnectorDataListener *listener, bool autoclean = true)
+    {
+        if (!inRange(type))
+            return false;
+        dataHolder(type).addListener(listener, autoclean);
+        return true;
+    }
+    bool addListener(ConnectorListenerType type, ConnectorListener *listener, bool autoclean = true)
+    {
+        if (!inRange(type))
+            return false;
+        connector_[static_cast<uint8_t>(type)].addListener(listener, autoclean);
+        return true;
+    }
+    bool removeListener(ConnectorDataListenerType type, ConnectorDataListener *listener)
+    {
+        if (!inRange(type))
+            return false;
+        dataHolder(type).removeListener(listener);
+        return true;
+    }
+    bool removeListener(ConnectorListenerType type, ConnectorListener *listener)
+    {
+        if (!inRange(type))
+            return false;
+        connector_[static_cast<uint8_t>(type)].removeListener(listener);
+        return true;
+    }
+    ConnectorDataListenerHolder *getDataListenerHolder(ConnectorDataListenerType type)
+    {
+        return inRange(type) ? &dataHolder(type) : nullptr;
+    }
+    ConnectorListenerHolder *getListenerHolder(ConnectorListenerType type)
+    {
+        return inRange(type) ? &connector_[static_cast<uint8_t>(type)] : nullptr;
+    }
+
+private:
+    static bool inRange(ConnectorDataListenerType type)
+    {
+        return type < ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM;
+    }
+    static bool inRange(ConnectorListenerType type) { return type < ConnectorListenerType::CONNECTOR_LISTENER_NUM; }
+    ConnectorDataListenerHolderT<DataType> &dataHolder(ConnectorDataListenerType type)
+    {
+        return connectorData_[static_cast<uint8_t>(type)];
+    }
+
+    std::array<ConnectorDataListenerHolderT<DataType>,
+               static_cast<uint8_t>(ConnectorDataListenerType::CONNECTOR_DATA_LISTENER_NUM)>
+        connectorData_;
+    std::array<ConnectorListenerHolder, static_cast<uint8_t>(ConnectorListenerType::CONNECTOR_LISTENER_NUM)>
+        connector_;
+};
 } // namespace RTC
 
 #endif // RTM_CONNECTORLISTENER_H

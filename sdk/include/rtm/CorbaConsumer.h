@@ -35,6 +35,13 @@ public:
     /// The reference held (not duplicated); nil while unconnected.
     virtual CORBA::Object_ptr getObject() { return m_objref; }
     virtual void releaseObject() { m_objref = CORBA::Object::_nil(); }
+    /// Exchanges the references held with @p x.
+    void swap(CorbaConsumerBase &x)
+    {
+        CORBA::Object_var mine = m_objref._retn();
+        m_objref = x.m_objref._retn();
+        x.m_objref = mine._retn();
+    }
 
 protected:
     CORBA::Object_var m_objref;
@@ -76,6 +83,14 @@ public:
         }
         m_var = typed;
         return true;
+    }
+    /// Exchanges the references held (untyped and typed) with @p x.
+    void swap(CorbaConsumer &x)
+    {
+        CorbaConsumerBase::swap(x);
+        ObjectTypeVar mine = m_var._retn();
+        m_var = x.m_var._retn();
+        x.m_var = mine._retn();
     }
     ObjectTypePtr _ptr() { return m_var.inout(); }
     ObjectTypePtr operator->() { return m_var.inout(); }

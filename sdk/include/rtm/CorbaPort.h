@@ -30,6 +30,12 @@ public:
     ~CorbaPort() override;
 
     /**
+     * Applies the port's properties: `connection_limit` caps the number of connections (a
+     * connect beyond it is refused with PRECONDITION_NOT_MET); negative or unset is unlimited.
+     */
+    void init(coil::Properties &prop);
+
+    /**
      * Offers @p provider (a servant the component owns, usually a member) as interface
      * @p instance_name of IDL type @p type_name; false if it cannot be activated.
      */

@@ -22,6 +22,8 @@ public:
     virtual void init(coil::Properties &prop);
     coil::Properties &properties();
     ConnectorInfoList getConnectorProfiles();
+    /// The port's listeners, as connectors, publishers and providers are given them.
+    virtual ConnectorListenersBase *getListeners() { return &m_listeners; }
     coil::vstring getConnectorIds();
     coil::vstring getConnectorNames();
     /// Copies the information of connection @p id into @p prof; false when there is no such connection.

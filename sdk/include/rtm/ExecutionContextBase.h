@@ -81,6 +81,15 @@ public:
     bool isOneOfNextState(RTC::LifeCycleState state) { return isOneOfCurrentState(state); }
     /// One execution cycle now, in the caller's thread.
     void invokeWorker();
+    /**
+     * The three steps of a cycle, for a context that runs them apart: the pending state changes
+     * (pre-do), the active components' onExecute (do), their onStateUpdate (post-do). The
+     * runtime's engines run a cycle as one step: invokeWorkerDo() runs the whole cycle, the
+     * other two are refused (logged once per context) so that a cycle never runs twice.
+     */
+    void invokeWorkerPreDo();
+    void invokeWorkerDo();
+    void invokeWorkerPostDo();
 
     /// RT Studio: the runtime engine underneath; null for a context without one.
     ::Runtime::ExecutionContext *engine() const { return m_engine; }
@@ -99,6 +108,7 @@ private:
     coil::Properties m_properties;
     RTC::ExecutionContextService_var m_ref;
     mutable RTC::RTCList m_components;
+    bool m_splitStepRefused = false;
 };
 
 /**

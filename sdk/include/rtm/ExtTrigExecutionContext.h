@@ -27,6 +27,12 @@ public:
     void init(coil::Properties &props) override;
     RTC::ReturnCode_t start() override;
     RTC::ReturnCode_t stop() override;
+
+    /// OpenRTM-aist's thread body and its start/end: the runtime's engine owns the thread, so
+    /// each is refused (logged, -1); start(), stop() and tick() drive the context.
+    int open(void *args);
+    int svc();
+    int close(unsigned long flags);
 };
 } // namespace RTC
 

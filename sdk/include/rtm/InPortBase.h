@@ -26,6 +26,8 @@ namespace RTC
 class InPortBase : public ::Runtime::InPortBase, public DataPortListeners
 {
 public:
+    using ConnectorList = std::vector<InPortConnector *>;
+
     /// @p data_type is the repository id of the sample type (`IDL:RTC/TimedLong:1.0`).
     InPortBase(const char *name, const char *data_type);
     ~InPortBase() override;

@@ -15,6 +15,8 @@
 #include <string>
 
 namespace RTC {
+class OutPortBase;
+
 /**
  * A connection of an InPort: where its samples wait (the buffer) and how they are taken
  * (read). The InPort makes one per connection; InPortBase::connectors() lists them.
@@ -40,6 +42,21 @@ public:
     virtual BufferStatus write(ByteData &cdr);
     /// Drops what the connection subscribed to in the connector profile properties @p prop.
     virtual void unsubscribeInterface(const coil::Properties &prop);
+    /**
+     * Makes @p directOutPort (an OutPort of this process) the connection's direct sender:
+     * getDirectData() then takes its latest value. False for null.
+     */
+    bool setOutPort(OutPortBase *directOutPort);
+    /// Takes the direct sender's latest value into @p data; false without a sender of @p DataType.
+    template <typename DataType>
+    bool getDirectData(DataType &data)
+    {
+        DirectOutPortBase<DataType> *outport = dynamic_cast<DirectOutPortBase<DataType> *>(m_directOutPort);
+        if (outport == nullptr)
+            return false;
+        outport->read(data);
+        return true;
+    }
 
 protected:
     Logger rtclog;
@@ -48,6 +65,9 @@ protected:
     CdrBufferBase *m_buffer;
     bool m_littleEndian;
     std::string m_marshaling_type;
+    /// A serializer of the connection's samples, for subclasses that make one (none by default).
+    ByteDataStreamBase *m_cdr;
+    DirectPortBase *m_directOutPort;
 };
 } // namespace RTC
 

@@ -38,6 +38,10 @@ namespace RTC
 {
 class Manager;
 class NamingManager;
+namespace Sdk
+{
+bool adoptManager(Manager *manager);
+}
 using ModuleInitProc = void (*)(Manager *manager);
 
 /**
@@ -174,7 +178,34 @@ protected:
     Manager();
     ~Manager();
 
+    /**
+     * What init() does once the manager object exists: reads the command line and the
+     * configuration, starts the runtime (ORB, naming) and attaches this manager to it. On a
+     * command line or configuration it cannot use, prints why and exits with status 1.
+     */
+    void initManager(int argc, char **argv);
+    /// Starts the local services `manager.local_service.enabled_services` names (RTM::LocalServiceAdmin).
+    bool initLocalService();
+
+    /// Matches components by instance name (for ComponentManager).
+    struct InstanceName
+    {
+        explicit InstanceName(RTObject_impl *comp);
+        explicit InstanceName(const char *name);
+        explicit InstanceName(std::string name);
+        bool operator()(RTObject_impl *comp);
+        std::string m_name;
+    };
+    /// Components by instance name.
+    using ComponentManager = ObjectManager<std::string, RTObject_impl, InstanceName>;
+
+    /// The process's manager (null before init()) and the lock of its creation.
+    static Manager *manager;
+    static std::mutex mutex;
+
 private:
+    friend bool Sdk::adoptManager(Manager *manager);
+
     struct Private;
     Private *d;
 };

@@ -6,6 +6,7 @@
 
 #include <coil/Properties.h>
 #include <coil/stringutil.h>
+#include <rtm/ListenerHolder.h>
 
 #include <mutex>
 #include <string>
@@ -85,6 +86,84 @@ public:
     virtual void postServiceReinit(coil::Properties &prop, LocalServiceBase *service) = 0;
     virtual void postServiceFinalize(std::string service_name, LocalServiceBase *service) = 0;
     virtual void preServiceFinalize(std::string service_name, LocalServiceBase *service) = 0;
+};
+/// The ManagerActionListeners of a manager; each call reaches every listener in the order added.
+class ManagerActionListenerHolder : public ::RTM::util::ListenerHolder<ManagerActionListener>
+{
+public:
+    ManagerActionListenerHolder();
+    ~ManagerActionListenerHolder() override;
+    virtual void preShutdown();
+    virtual void postShutdown();
+    virtual void preReinit();
+    virtual void postReinit();
+};
+
+/// The ModuleActionListeners of a manager; each call reaches every listener in the order added.
+class ModuleActionListenerHolder : public ::RTM::util::ListenerHolder<ModuleActionListener>
+{
+public:
+    ModuleActionListenerHolder();
+    ~ModuleActionListenerHolder() override;
+    virtual void preLoad(std::string &modname, std::string &funcname);
+    virtual void postLoad(std::string &modname, std::string &funcname);
+    virtual void preUnload(std::string &modname);
+    virtual void postUnload(std::string &modname);
+};
+
+/// The RtcLifecycleActionListeners of a manager; each call reaches every listener in the order added.
+class RtcLifecycleActionListenerHolder : public ::RTM::util::ListenerHolder<RtcLifecycleActionListener>
+{
+public:
+    RtcLifecycleActionListenerHolder();
+    ~RtcLifecycleActionListenerHolder() override;
+    virtual void preCreate(std::string &args);
+    virtual void postCreate(RTC::RTObject_impl *rtobj);
+    virtual void preConfigure(coil::Properties &prop);
+    virtual void postConfigure(coil::Properties &prop);
+    virtual void preInitialize();
+    virtual void postInitialize();
+};
+
+/// The NamingActionListeners of a manager; each call reaches every listener in the order added.
+class NamingActionListenerHolder : public ::RTM::util::ListenerHolder<NamingActionListener>
+{
+public:
+    NamingActionListenerHolder();
+    ~NamingActionListenerHolder() override;
+    virtual void preBind(RTC::RTObject_impl *rtobj, coil::vstring &name);
+    virtual void postBind(RTC::RTObject_impl *rtobj, coil::vstring &name);
+    virtual void preUnbind(RTC::RTObject_impl *rtobj, coil::vstring &name);
+    virtual void postUnbind(RTC::RTObject_impl *rtobj, coil::vstring &name);
+};
+
+/// The LocalServiceActionListeners of a manager; each call reaches every listener in the order added.
+class LocalServiceActionListenerHolder : public ::RTM::util::ListenerHolder<LocalServiceActionListener>
+{
+public:
+    LocalServiceActionListenerHolder();
+    ~LocalServiceActionListenerHolder() override;
+    virtual void preServiceRegister(std::string service_name);
+    virtual void postServiceRegister(std::string service_name, LocalServiceBase *service);
+    virtual void preServiceInit(coil::Properties &prop, LocalServiceBase *service);
+    virtual void postServiceInit(coil::Properties &prop, LocalServiceBase *service);
+    virtual void preServiceReinit(coil::Properties &prop, LocalServiceBase *service);
+    virtual void postServiceReinit(coil::Properties &prop, LocalServiceBase *service);
+    virtual void postServiceFinalize(std::string service_name, LocalServiceBase *service);
+    virtual void preServiceFinalize(std::string service_name, LocalServiceBase *service);
+};
+
+/// A manager's action listeners, one holder per kind.
+class ManagerActionListeners
+{
+public:
+    ManagerActionListeners();
+    ~ManagerActionListeners();
+    ManagerActionListenerHolder manager_;
+    ModuleActionListenerHolder module_;
+    RtcLifecycleActionListenerHolder rtclifecycle_;
+    NamingActionListenerHolder naming_;
+    LocalServiceActionListenerHolder localservice_;
 };
 } // namespace RTM
 

@@ -41,6 +41,34 @@ public:
     RTC::RTCList *get_components();
     RTC::RTCList *get_components_by_name(const char *name);
 };
+
+/**
+ * The parts of a component module name `RTC:vendor:category:implementation_id:language:version`
+ * (anything after `?` ignored). A name with fewer parts is an implementation id alone, of
+ * language C++.
+ */
+class CompParam
+{
+public:
+    CompParam(std::string module_name);
+    ~CompParam();
+    static const unsigned int prof_list_size = 6;
+    /// The keys of the parts, in order: RTC, vendor, category, implementation_id, language, version.
+    static const char *prof_list[prof_list_size];
+    std::string vendor();
+    std::string category();
+    std::string impl_id();
+    std::string language();
+    std::string version();
+
+private:
+    std::string m_type;
+    std::string m_vendor;
+    std::string m_category;
+    std::string m_impl_id;
+    std::string m_language;
+    std::string m_version;
+};
 } // namespace RTM
 
 #endif // RTC_MANAGERSERVANT_H

@@ -4,6 +4,7 @@
 #define RTM_OUTPORTBASE_H
 
 #include <rtm/ConnectorListener.h>
+#include <rtm/DataPortStatus.h>
 #include <rtm/DataPortListeners.h>
 #include <rtm/InPortBase.h>
 #include <rtm/OutPortConnector.h>
@@ -23,6 +24,8 @@ namespace RTC
 class OutPortBase : public ::Runtime::OutPortBase, public DataPortListeners
 {
 public:
+    using ConnectorList = std::vector<OutPortConnector *>;
+
     /// @p data_type is the repository id of the sample type (`IDL:RTC/TimedLong:1.0`).
     OutPortBase(const char *name, const char *data_type);
     ~OutPortBase() override;
@@ -63,9 +66,14 @@ protected:
     void notifyWrite(void *value, const std::type_info &type, const std::function<std::vector<unsigned char>()> &marshal);
 
     /// Hands a sample to the connections; @p marshal gives its bytes in the byte order asked for.
+    /// What each connection did with it is kept for statusList().
     void writeBytes(const std::function<::Runtime::CdrView(bool littleEndian)> &marshal);
+    /// What the last write did on each connection, in the order of connectors().
+    DataPortStatusList statusList();
 
 private:
+    std::mutex m_statusMutex;
+    DataPortStatusList m_status;
     std::mutex m_directMutex;
     std::vector<std::pair<std::string, InPortBase *>> m_directPeers;
     std::mutex m_connectorsMutex;

@@ -16,6 +16,8 @@
 #include <string>
 
 namespace RTC {
+class InPortBase;
+
 /**
  * A connection of an OutPort: how a written sample reaches the other side (write). The
  * OutPort makes one per connection; OutPortBase::connectors() lists them.
@@ -41,6 +43,11 @@ public:
     virtual BufferStatus read(ByteData &data);
     /// Drops what the connection subscribed to in the connector profile properties @p prop.
     virtual void unsubscribeInterface(const coil::Properties &prop);
+    /// Makes @p directInPort (an InPort of this process) the connection's direct receiver; false for null.
+    bool setInPort(InPortBase *directInPort);
+    /// Marks the connection as one whose receiver takes the latest value itself (InPortConnector::getDirectData).
+    virtual void setPullDirectMode();
+    virtual bool pullDirectMode();
 
 protected:
     Logger rtclog;
@@ -48,6 +55,10 @@ protected:
     bool m_littleEndian;
     ConnectorListenersBase *m_listeners;
     std::string m_marshaling_type;
+    /// A serializer of the connection's samples, for subclasses that make one (none by default).
+    ByteDataStreamBase *m_cdr;
+    InPortBase *m_directInPort;
+    bool m_directMode;
 };
 } // namespace RTC
 

@@ -24,6 +24,13 @@
 #define WINAPI
 #endif
 
+// Servants written for the C++ mapping 1.0 derive from PortableServer::RefCountServantBase; in
+// the 1.1 mapping (omniORB 4) ServantBase counts references itself, so the name maps to it, as
+// OpenRTM-aist maps it. Defined after the ORB's headers, which declare the old name themselves.
+#ifndef RefCountServantBase
+#define RefCountServantBase ServantBase
+#endif
+
 /// Tells sources that they are built against RT Studio's SDK rather than OpenRTM-aist itself.
 #define RTSTUDIO_RTM_SDK 1
 

@@ -89,6 +89,19 @@ public:
     void setInstanceName(const char *instance_name);
     const char *getTypeName();
     const char *getCategory();
+    /// The profile's `description`, `version` and `vendor`.
+    const char *getDescription();
+    const char *getVersion();
+    const char *getVendor();
+    /// The names the component is registered under (`naming.names`, comma separated).
+    std::vector<std::string> getNamingNames();
+    /**
+     * The component's reference is the runtime's own servant activation: @p rtobj must be that
+     * reference; any other is refused with a logged error (the component keeps its own).
+     */
+    void setObjRef(RTObject_ptr rtobj);
+    /// Registration under a corbaloc (INS) key is not supported: logged as an error.
+    void setINSObjRef(RTC::LightweightRTObject_ptr obj);
     /// The component's properties (profile, `conf.*`, `exec_cxt.*`, instance_name, …).
     coil::Properties &getProperties();
     /// Merges @p prop into the component's properties.
@@ -115,6 +128,20 @@ public:
     bool removePort(CorbaPort &port);
     bool removeInPort(InPortBase &port);
     bool removeOutPort(OutPortBase &port);
+    /// OpenRTM-aist 0.4 names of addPort / addInPort / addOutPort / removePort.
+    void registerPort(PortBase &port);
+    /// Lists @p port, a port of another object, among the component's.
+    void registerPort(PortService_ptr port);
+    void registerPort(CorbaPort &port);
+    void registerInPort(const char *name, InPortBase &inport);
+    void registerOutPort(const char *name, OutPortBase &outport);
+    void deletePort(PortBase &port);
+    /// Removes the port whose reference is @p port (one of the component's or one registered).
+    void deletePort(PortService_ptr port);
+    void deletePort(CorbaPort &port);
+    void deletePortByName(const char *port_name);
+    const std::vector<InPortBase *> &getInPorts() const { return m_inports; }
+    const std::vector<OutPortBase *> &getOutPorts() const { return m_outports; }
     /// Disconnects and removes every port the component added.
     void finalizePorts();
     /// Stops and detaches the execution contexts the component owns (as when it finalizes).
@@ -173,6 +200,7 @@ public:
     using PostCompActionListener = PostComponentActionListener;
     using PostCompActionListenerType = PostComponentActionListenerType;
     using ECActionListenerType = ExecutionContextActionListenerType;
+    using ECActionListener = ExecutionContextActionListener;
 
     /// Calls @p listener before the component action @p listener_type names.
     void addPreComponentActionListener(PreComponentActionListenerType listener_type,
@@ -322,6 +350,34 @@ public:
         return listener;
     }
     void removePostFsmActionListener(PostFsmActionListenerType listener_type, PostFsmActionListener *listener);
+    /**
+     * Listeners of the component's FSM profile and structure; what serves the component's FSM
+     * (an ExtendedFsmService provider) calls them through m_fsmActionListeners.
+     */
+    void addFsmProfileListener(FsmProfileListenerType listener_type, FsmProfileListener *listener,
+                               bool autoclean = true);
+    template <class Listener>
+    FsmProfileListener *addFsmProfileListener(FsmProfileListenerType listener_type, Listener &obj,
+                                              void (Listener::*memfunc)(const FsmProfile &))
+    {
+        FsmProfileListener *listener
+            = new detail::MemberListener<FsmProfileListener, Listener, const FsmProfile &>(obj, memfunc);
+        addFsmProfileListener(listener_type, listener, true);
+        return listener;
+    }
+    void removeFsmProfileListener(FsmProfileListenerType listener_type, FsmProfileListener *listener);
+    void addFsmStructureListener(FsmStructureListenerType listener_type, FsmStructureListener *listener,
+                                 bool autoclean = true);
+    template <class Listener>
+    FsmStructureListener *addFsmStructureListener(FsmStructureListenerType listener_type, Listener &obj,
+                                                  void (Listener::*memfunc)(FsmStructure &))
+    {
+        FsmStructureListener *listener
+            = new detail::MemberListener<FsmStructureListener, Listener, FsmStructure &>(obj, memfunc);
+        addFsmStructureListener(listener_type, listener, true);
+        return listener;
+    }
+    void removeFsmStructureListener(FsmStructureListenerType listener_type, FsmStructureListener *listener);
 
     /**
      * FSM hooks, called by the states of an RTC::Machine of this component (rtm/StaticFSM.h)
@@ -346,6 +402,85 @@ public:
     std::string getFsmState() const;
 
 protected:
+    /// Finalizes the component now: its contexts stop, its ports and the component finalize.
+    void shutdown();
+
+    // The listener calls around each action, as the framework makes them; a subclass that runs
+    // an action itself calls them the same way.
+    void preOnInitialize(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_INITIALIZE, ec_id); }
+    void preOnFinalize(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_FINALIZE, ec_id); }
+    void preOnStartup(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_STARTUP, ec_id); }
+    void preOnShutdown(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_SHUTDOWN, ec_id); }
+    void preOnActivated(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_ACTIVATED, ec_id); }
+    void preOnDeactivated(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_DEACTIVATED, ec_id); }
+    void preOnAborting(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_ABORTING, ec_id); }
+    void preOnError(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_ERROR, ec_id); }
+    void preOnReset(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_RESET, ec_id); }
+    void preOnExecute(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_EXECUTE, ec_id); }
+    void preOnStateUpdate(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_STATE_UPDATE, ec_id); }
+    void preOnRateChanged(UniqueId ec_id) { notifyPre(PreComponentActionListenerType::PRE_ON_RATE_CHANGED, ec_id); }
+    void postOnInitialize(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_INITIALIZE, ec_id, ret);
+    }
+    void postOnFinalize(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_FINALIZE, ec_id, ret);
+    }
+    void postOnStartup(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_STARTUP, ec_id, ret);
+    }
+    void postOnShutdown(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_SHUTDOWN, ec_id, ret);
+    }
+    void postOnActivated(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_ACTIVATED, ec_id, ret);
+    }
+    void postOnDeactivated(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_DEACTIVATED, ec_id, ret);
+    }
+    void postOnAborting(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_ABORTING, ec_id, ret);
+    }
+    void postOnError(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_ERROR, ec_id, ret);
+    }
+    void postOnReset(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_RESET, ec_id, ret);
+    }
+    void postOnExecute(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_EXECUTE, ec_id, ret);
+    }
+    void postOnStateUpdate(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_STATE_UPDATE, ec_id, ret);
+    }
+    void postOnRateChanged(UniqueId ec_id, ReturnCode_t ret)
+    {
+        notifyPost(PostComponentActionListenerType::POST_ON_RATE_CHANGED, ec_id, ret);
+    }
+    void onAddPort(const PortProfile &pprof) { m_actionListeners.notify(PortActionListenerType::ADD_PORT, pprof); }
+    void onRemovePort(const PortProfile &pprof)
+    {
+        m_actionListeners.notify(PortActionListenerType::REMOVE_PORT, pprof);
+    }
+    void onAttachExecutionContext(UniqueId ec_id)
+    {
+        m_actionListeners.notify(ExecutionContextActionListenerType::EC_ATTACHED, ec_id);
+    }
+    void onDetachExecutionContext(UniqueId ec_id)
+    {
+        m_actionListeners.notify(ExecutionContextActionListenerType::EC_DETACHED, ec_id);
+    }
+
     Manager *m_pManager;
     CORBA::ORB_var m_pORB;
     PortableServer::POA_var m_pPOA;
@@ -360,8 +495,17 @@ protected:
     mutable Logger rtclog;
     ComponentActionListeners m_actionListeners;
     PortConnectListeners m_portconnListeners;
+    FsmActionListeners m_fsmActionListeners;
 
 private:
+    friend class SdoServiceAdmin;
+
+    void notifyPre(PreComponentActionListenerType type, UniqueId ec_id) { m_actionListeners.notify(type, ec_id); }
+    void notifyPost(PostComponentActionListenerType type, UniqueId ec_id, ReturnCode_t ret)
+    {
+        m_actionListeners.notify(type, ec_id, ret);
+    }
+
     void attachPort(PortBase &port);
     bool detachPort(PortBase &port);
     template <typename Action>

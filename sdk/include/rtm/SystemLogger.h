@@ -5,6 +5,7 @@
 #define RTM_SYSTEMLOGGER_H
 
 #include <coil/Logger.h>
+#include <coil/Properties.h>
 #include <coil/stringutil.h>
 
 #include <mutex>
@@ -16,6 +17,8 @@ namespace RTC
 {
 /// Where the loggers' lines go besides the configured files (RTC::Manager::getLogStreamBuf()).
 using LogStreamBuf = ::coil::LogStreamBuffer;
+/// The level-filtering stream class OpenRTM-aist's Logger derives from.
+using LogStream = ::coil::LogStream;
 
 /**
  * A named log stream. Lines go where the manager's configuration says (`logger.enable`,
@@ -51,6 +54,10 @@ public:
     std::ostream &level(int level);
     void lock();
     void unlock();
+    /// Writes @p mes as one line of @p level (when lines of that level are written).
+    void write(int level, const std::string &mes);
+    /// Writes each property of @p prop (`key: value`) as a line of @p level.
+    void write(int level, const coil::Properties &prop);
     /// Overrides the manager's level for this logger.
     void setLevel(int level);
     int getLevel() const;

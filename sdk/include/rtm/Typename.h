@@ -10,23 +10,30 @@
 
 namespace CORBA_Util
 {
+/// Names a type only when T has `static T::_ptr_type _nil()` (an IDL interface type).
+template <class T, typename T::_ptr_type (*)(void)>
+struct has_nil_helper
+{
+    using type = void;
+};
+
+/// false, unless the specialisation below matches (T has _nil()).
+template <class T, class U = void>
+struct has_nil_impl
+{
+    static const bool value = false;
+};
+
+template <class T>
+struct has_nil_impl<T, typename has_nil_helper<T, &T::_nil>::type>
+{
+    static const bool value = true;
+};
+
 /// Whether T is an IDL interface type: those have a static T::_nil() returning T::_ptr_type.
 template <class T>
-struct has_nil
+struct has_nil : has_nil_impl<T>
 {
-private:
-    // Only a type with `static U::_ptr_type _nil()` can name this probe: substitution fails otherwise.
-    template <class U, typename U::_ptr_type (*)()>
-    struct probe
-    {
-    };
-    template <class U>
-    static char check(probe<U, &U::_nil> *);
-    template <class U>
-    static long check(...);
-
-public:
-    static const bool value = sizeof(check<T>(0)) == sizeof(char);
 };
 
 /// Whether T is a CORBA object (interface) type rather than a data type.
