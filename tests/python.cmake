@@ -14,4 +14,15 @@ target_compile_definitions(tst_python PRIVATE
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
     CMAKE_COMMAND="${CMAKE_COMMAND}")
 add_dependencies(tst_python rtmanager rtctl rtpython rtsdk)
+# The sanitizer build's extension module needs the sanitizer runtimes loaded first into python3.
+set(python_sanitizer_preload "")
+if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=[^ ]*address")
+    foreach(runtime libasan.so libubsan.so)
+        execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=${runtime}
+                        OUTPUT_VARIABLE runtime_path OUTPUT_STRIP_TRAILING_WHITESPACE)
+        list(APPEND python_sanitizer_preload "${runtime_path}")
+    endforeach()
+endif()
+list(JOIN python_sanitizer_preload " " python_sanitizer_preload)
+target_compile_definitions(tst_python PRIVATE RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
 set_tests_properties(tst_python PROPERTIES LABELS python TIMEOUT 600)

@@ -31,12 +31,22 @@ QString testScript(const QString &name)
     return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
 }
 
-/// python3 finds the build tree's packages; output is unbuffered, so the test sees it as printed.
-QProcessEnvironment pythonEnvironment()
+/// python3 finds @p packages (the build tree's by default); output is unbuffered, so the test sees it
+/// as printed. In the sanitizer build the extension module is instrumented but python3 is not: the
+/// sanitizer runtimes are preloaded, and leaks are not checked (the interpreter keeps its objects
+/// until exit by design, which LeakSanitizer would report by the thousand).
+QProcessEnvironment pythonEnvironment(const QString &packages = QStringLiteral(RTSTUDIO_PYTHON_PATH))
 {
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(QStringLiteral("PYTHONPATH"), QStringLiteral(RTSTUDIO_PYTHON_PATH));
+    environment.insert(QStringLiteral("PYTHONPATH"), packages);
     environment.insert(QStringLiteral("PYTHONUNBUFFERED"), QStringLiteral("1"));
+    const QString preload = QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD);
+    if (!preload.isEmpty()) {
+        environment.insert(QStringLiteral("LD_PRELOAD"), preload);
+        const QString asan = environment.value(QStringLiteral("ASAN_OPTIONS"));
+        environment.insert(QStringLiteral("ASAN_OPTIONS"),
+                           asan + (asan.isEmpty() ? QString() : QStringLiteral(":")) + QStringLiteral("detect_leaks=0"));
+    }
     return environment;
 }
 
@@ -394,9 +404,7 @@ void TestPython::installedPackagesWork()
     const QString packages = prefix + QStringLiteral("/lib/python3/dist-packages");
     QVERIFY(QFileInfo::exists(packages + QStringLiteral("/OpenRTM_aist/__init__.py")));
     QProcess python;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(QStringLiteral("PYTHONPATH"), packages);
-    python.setProcessEnvironment(environment);
+    python.setProcessEnvironment(pythonEnvironment(packages));
     python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
                  {testScript(QStringLiteral("datatypes.py")), QStringLiteral("--expect-prefix"), prefix});
     QVERIFY(python.waitForFinished(runTimeoutMs));
