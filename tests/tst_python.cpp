@@ -95,7 +95,7 @@ private:
     LiveTest::LiveSystem m_live;
     QProcess *m_manager = nullptr;
     CORBA::ORB_var m_orb;
-    QHash<QProcess *, QString> m_printed;
+    LiveTest::PrintedOutput m_printed;
 };
 
 RtctlResult TestPython::rtctl(const QStringList &arguments) const
@@ -144,28 +144,17 @@ QProcess *TestPython::startScript(const QString &script, const QString &instance
 {
     QString error;
     const QString conf = writeConf(QFileInfo(script).baseName(), confLines);
-    QProcess *process = m_live.startProcess(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {script, QStringLiteral("-f"), conf},
-                                            QString(), &error, runTimeoutMs, pythonEnvironment());
-    if (!process) {
+    QProcess *process = m_live.startRegistered(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {script, QStringLiteral("-f"), conf},
+        [this, &instance] { return rtctl({QStringLiteral("ls")}).out.contains(instance); }, &error,
+        runTimeoutMs, pythonEnvironment());
+    if (!process)
         qWarning().noquote() << error;
-        return nullptr;
-    }
-    QDeadlineTimer deadline(runTimeoutMs);
-    while (!rtctl({QStringLiteral("ls")}).out.contains(instance)) {
-        if (deadline.hasExpired() || process->state() == QProcess::NotRunning) {
-            qWarning().noquote() << script << "did not register" << instance << ":" << printed(process);
-            return nullptr;
-        }
-        QTest::qWait(50);
-    }
     return process;
 }
 
 QString TestPython::printed(QProcess *process)
 {
-    QString &text = m_printed[process];
-    text += QString::fromLocal8Bit(process->readAllStandardOutput());
-    return text;
+    return m_printed.of(process);
 }
 
 void TestPython::initTestCase()

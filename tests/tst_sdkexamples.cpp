@@ -87,7 +87,7 @@ private:
     LiveTest::LiveSystem m_live;
     QProcess *m_manager = nullptr;
     CORBA::ORB_var m_orb;
-    QHash<QProcess *, QString> m_printed;
+    LiveTest::PrintedOutput m_printed;
 };
 
 RtctlResult TestSdkExamples::rtctl(const QStringList &arguments) const
@@ -204,27 +204,17 @@ QString TestSdkExamples::writeConf(const QString &name, const QStringList &extra
 QProcess *TestSdkExamples::startProgram(const QString &program, const QString &conf, const QString &instance)
 {
     QString error;
-    QProcess *process = m_live.startProcess(program, {QStringLiteral("-f"), conf}, QString(), &error);
-    if (!process) {
+    QProcess *process = m_live.startRegistered(program, {QStringLiteral("-f"), conf},
+        [this, &instance] { return rtctl({QStringLiteral("ls")}).out.contains(instance); }, &error,
+        runTimeoutMs);
+    if (!process)
         qWarning().noquote() << error;
-        return nullptr;
-    }
-    QDeadlineTimer deadline(runTimeoutMs);
-    while (!rtctl({QStringLiteral("ls")}).out.contains(instance)) {
-        if (deadline.hasExpired() || process->state() == QProcess::NotRunning) {
-            qWarning().noquote() << program << "did not register" << instance << ":" << printed(process);
-            return nullptr;
-        }
-        QTest::qWait(50);
-    }
     return process;
 }
 
 QString TestSdkExamples::printed(QProcess *process)
 {
-    QString &text = m_printed[process];
-    text += QString::fromLocal8Bit(process->readAllStandardOutput());
-    return text;
+    return m_printed.of(process);
 }
 
 void TestSdkExamples::dataPortExamplesRunInRtmanager()

@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFile>
 #include <QStandardPaths>
+#include <QTest>
 #include <QThread>
 
 #include <arpa/inet.h>
@@ -254,6 +255,32 @@ QProcess *LiveSystem::startRtcdMaster(const QString &prefix, const QString &conf
     if (master)
         m_rtcdMasters.insert(master);
     return master;
+}
+
+QString PrintedOutput::of(QProcess *process)
+{
+    QString &text = m_text[process];
+    text += QString::fromLocal8Bit(process->readAllStandardOutput());
+    return text;
+}
+
+QProcess *LiveSystem::startRegistered(const QString &program, const QStringList &arguments,
+                                      const std::function<bool()> &registered, QString *error,
+                                      int timeoutMs, const QProcessEnvironment &environment)
+{
+    QProcess *process = startProcess(program, arguments, QString(), error, timeoutMs, environment);
+    if (!process)
+        return nullptr;
+    const QDeadlineTimer deadline(timeoutMs);
+    while (!registered()) {
+        if (deadline.hasExpired() || process->state() == QProcess::NotRunning) {
+            *error = QStringLiteral("%1 did not register: %2")
+                         .arg(program, QString::fromLocal8Bit(process->readAllStandardOutput()));
+            return nullptr;
+        }
+        QTest::qWait(50);
+    }
+    return process;
 }
 
 QProcess *LiveSystem::startProcess(const QString &program, const QStringList &arguments,

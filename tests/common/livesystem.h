@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QHash>
 #include <QList>
 #include <QProcess>
 #include <QProcessEnvironment>
@@ -56,6 +57,17 @@ struct LiveHost
  * own temporary data folder. Everything started is killed and reaped in the destructor, also
  * when a test fails halfway.
  */
+/// What the processes a test started have printed so far, kept per process: each call reads what
+/// came since the last one and answers the whole text.
+class PrintedOutput
+{
+public:
+    QString of(QProcess *process);
+
+private:
+    QHash<QProcess *, QString> m_text;
+};
+
 class LiveSystem
 {
 public:
@@ -85,6 +97,14 @@ public:
     QProcess *startProcess(const QString &program, const QStringList &arguments,
                            const QString &readyText, QString *error, int timeoutMs = 20000,
                            const QProcessEnvironment &environment = {});
+    /**
+     * startProcess() without a ready line, then polls `registered` (e.g. "its instance is in the
+     * name server") until it holds; nothing, with what the program printed in `error`, when the
+     * program ends or `timeoutMs` passes first.
+     */
+    QProcess *startRegistered(const QString &program, const QStringList &arguments,
+                              const std::function<bool()> &registered, QString *error,
+                              int timeoutMs = 20000, const QProcessEnvironment &environment = {});
     /**
      * Starts the rtmanager `program` as a master (`-d`) serving on this system's address and
      * `port`, each of `options` passed as `-o KEY=VALUE` after the endpoint, and waits for
