@@ -211,14 +211,15 @@ void TestSdkStyles::timerAndTaskInComponents()
                              runTimeoutMs);
     const long timed = values(status(QStringLiteral("TimerSink.rtc"), "last_value")).first();
     QCOMPARE(timed % 1000, 1L);
-    // The task's numbers, in order, are multiples of seven.
+    // The task's numbers, in order, are multiples of seven. A late cycle writes a burst that may
+    // overflow the sink's buffer (overwrite policy), so a number may be skipped, never reordered.
     QTRY_VERIFY_WITH_TIMEOUT(values(status(QStringLiteral("TaskSink.rtc"), "received_values")).size() >= 5,
                              runTimeoutMs);
     const QList<long> produced = values(status(QStringLiteral("TaskSink.rtc"), "received_values"));
     for (int i = 0; i < produced.size(); ++i) {
         QVERIFY2(produced.at(i) % 7 == 0, qPrintable(QString::number(produced.at(i))));
         if (i > 0)
-            QCOMPARE(produced.at(i), produced.at(i - 1) + 7);
+            QVERIFY2(produced.at(i) > produced.at(i - 1), qPrintable(QString::number(produced.at(i))));
     }
     for (const QString component : {"Timed.rtc", "Producer.rtc"})
         QVERIFY(rtctl({"deact", component}).code == 0);
