@@ -108,7 +108,8 @@ std::unique_ptr<CommandLine> createCommandLine()
     commandLine->addCommand(std::make_unique<NodeCommand>());
     using System = RtSystemCommand::Action;
     for (System action :
-         {System::Resurrect, System::Teardown, System::Start, System::Stop, System::Diff})
+         {System::Resurrect, System::Teardown, System::Start, System::Stop, System::Diff,
+          System::Deploy, System::Undeploy})
         commandLine->addCommand(std::make_unique<RtSystemCommand>(action));
     commandLine->addCommand(std::make_unique<RtCryoCommand>());
     commandLine->addCommand(std::make_unique<LocalCommand>());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rtsystemcommand.h"
 
+#include "deployer.h"
 #include "drift.h"
 #include "profileio.h"
 #include "restorer.h"
@@ -76,6 +77,10 @@ QString RtSystemCommand::name() const
         return QStringLiteral("start");
     case Action::Stop:
         return QStringLiteral("stop");
+    case Action::Deploy:
+        return QStringLiteral("deploy");
+    case Action::Undeploy:
+        return QStringLiteral("undeploy");
     case Action::Diff:
         break;
     }
@@ -93,6 +98,10 @@ QString RtSystemCommand::summary() const
         return QStringLiteral("activate a system in its declared order");
     case Action::Stop:
         return QStringLiteral("deactivate a system in its declared order");
+    case Action::Deploy:
+        return QStringLiteral("install what a system needs on its nodes, restore and start it");
+    case Action::Undeploy:
+        return QStringLiteral("stop a deployed system, remove its components and packages");
     case Action::Diff:
         break;
     }
@@ -101,8 +110,13 @@ QString RtSystemCommand::summary() const
 
 QString RtSystemCommand::usage() const
 {
-    const QString extra
-        = m_action == Action::Resurrect ? QStringLiteral("[--create] [--dry-run] ") : QString();
+    QString extra;
+    if (m_action == Action::Resurrect)
+        extra = QStringLiteral("[--create] [--dry-run] ");
+    else if (m_action == Action::Deploy)
+        extra = QStringLiteral("[--repo URL] [--ca FILE] [--dry-run] ");
+    else if (m_action == Action::Undeploy)
+        extra = QStringLiteral("[--uninstall] ");
     QString text = QStringLiteral("Usage: rtctl %1 [--timeout MS] [-s SERVER]... [-m MANAGER] "
                                   "[--host-manager HOST=ADDRESS]... %2FILE\n\n%3.\n")
                        .arg(name(), extra, summary().left(1).toUpper() + summary().mid(1));
@@ -119,6 +133,19 @@ QString RtSystemCommand::usage() const
             "--create       create missing components through the manager\n"
             "--dry-run      print the plan and change nothing\n"
             "A failed required step undoes what this run created and connected.\n");
+    if (m_action == Action::Deploy)
+        text += QStringLiteral(
+            "--repo URL     component repository (http, https, file URL or folder, #SUITE\n"
+            "               picks a suite) that types a node cannot load are installed from\n"
+            "--ca FILE      certificate authorities trusted for an https repository\n"
+            "--dry-run      print what would be installed where and the restore plan\n"
+            "Components pinned with the property deploy.pin are created by that manager.\n"
+            "The nodes install side by side, then the system is restored and started; a\n"
+            "failed required step undoes everything this run did, installs included.\n");
+    if (m_action == Action::Undeploy)
+        text += QStringLiteral(
+            "--uninstall    also remove the packages providing the system's component types\n"
+            "               from the nodes that ran them (kept while other components use them)\n");
     if (m_action == Action::Start || m_action == Action::Stop)
         text += QStringLiteral(
             "Follows the file's Activation/Deactivation (and StartUp/ShutDown) blocks as rtshell\n"
@@ -136,12 +163,19 @@ QStringList RtSystemCommand::flagNames() const
 {
     if (m_action == Action::Resurrect)
         return {QStringLiteral("--create"), QStringLiteral("--dry-run")};
+    if (m_action == Action::Deploy)
+        return {QStringLiteral("--dry-run")};
+    if (m_action == Action::Undeploy)
+        return {QStringLiteral("--uninstall")};
     return {};
 }
 
 QStringList RtSystemCommand::optionNames() const
 {
-    return {QStringLiteral("-s"), QStringLiteral("-m"), QStringLiteral("--host-manager")};
+    QStringList names {QStringLiteral("-s"), QStringLiteral("-m"), QStringLiteral("--host-manager")};
+    if (m_action == Action::Deploy)
+        names << QStringLiteral("--repo") << QStringLiteral("--ca");
+    return names;
 }
 
 bool RtSystemCommand::targetOptions(const RtOptions &options, Deploy::TargetOptions *target,
@@ -171,8 +205,10 @@ int RtSystemCommand::execute(const RtOptions &options, Streams streams)
     const auto profile = loadSystem(options.positionals.first(), name(), streams);
     if (!profile)
         return ExitProblems;
-    const Deploy::RestorePlan plan = Deploy::planRestore(*profile, target);
     const Deploy::DeployControl control = printingControl(streams);
+    if (m_action == Action::Deploy)
+        return deploy(*profile, target, options, streams);
+    const Deploy::RestorePlan plan = Deploy::planRestore(*profile, target);
     switch (m_action) {
     case Action::Resurrect:
         if (options.has(QStringLiteral("--dry-run"))) {
@@ -186,6 +222,11 @@ int RtSystemCommand::execute(const RtOptions &options, Streams streams)
         return finish(Deploy::startSystem(*profile, plan, control), name(), streams);
     case Action::Stop:
         return finish(Deploy::stopSystem(*profile, plan, control), name(), streams);
+    case Action::Undeploy:
+        return finish(Deploy::undeploySystem(*profile, plan, target,
+                                             options.has(QStringLiteral("--uninstall")), control),
+                      name(), streams);
+    case Action::Deploy:
     case Action::Diff:
         break;
     }
@@ -194,6 +235,23 @@ int RtSystemCommand::execute(const RtOptions &options, Streams streams)
         streams.out << item.toString() << '\n';
     streams.out.flush();
     return drift.isEmpty() ? ExitOk : ExitProblems;
+}
+
+int RtSystemCommand::deploy(const Profile::RtsProfile &profile, const Deploy::TargetOptions &target,
+                            const RtOptions &options, Streams streams) const
+{
+    Deploy::DeployOptions deploy;
+    deploy.target = target;
+    deploy.repository = options.value(QStringLiteral("--repo"));
+    deploy.caCertificates = options.value(QStringLiteral("--ca"));
+    const Deploy::DeployPlan plan = Deploy::planDeploy(profile, deploy);
+    if (options.has(QStringLiteral("--dry-run"))) {
+        streams.out << plan.toText();
+        streams.out.flush();
+        return plan.problems.isEmpty() ? ExitOk : ExitProblems;
+    }
+    return finish(Deploy::deploySystem(profile, plan, deploy, printingControl(streams)), name(),
+                  streams);
 }
 
 } // namespace Cli

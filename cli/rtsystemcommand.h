@@ -6,6 +6,9 @@
 namespace Deploy {
 struct TargetOptions;
 }
+namespace Profile {
+struct RtsProfile;
+}
 
 namespace Cli {
 
@@ -13,12 +16,12 @@ namespace Cli {
  * The commands that apply a saved system file to the live system through the deployment engine
  * (rtsshell's rtresurrect, rtteardown, rtstart, rtstop, and a drift check):
  * `rtctl resurrect [--create] [--dry-run] FILE`, `teardown FILE`, `start FILE`, `stop FILE`,
- * `diff FILE`, each with `-s SERVER`, `-m MANAGER` and `--host-manager HOST=ADDRESS`.
+ * `diff FILE`, `deploy [--repo URL] [--dry-run] FILE`, `undeploy [--uninstall] FILE`, each with `-s SERVER`, `-m MANAGER` and `--host-manager HOST=ADDRESS`.
  */
 class RtSystemCommand : public RtCommand
 {
 public:
-    enum class Action { Resurrect, Teardown, Start, Stop, Diff };
+    enum class Action { Resurrect, Teardown, Start, Stop, Diff, Deploy, Undeploy };
     explicit RtSystemCommand(Action action)
         : m_action(action)
     { }
@@ -35,6 +38,10 @@ protected:
 private:
     bool targetOptions(const RtOptions &options, Deploy::TargetOptions *target,
                        Streams streams) const;
+
+    /// `rtctl deploy`: plans installs and the restore, prints the plan or runs it.
+    int deploy(const Profile::RtsProfile &profile, const Deploy::TargetOptions &target,
+               const RtOptions &options, Streams streams) const;
 
     Action m_action;
 };

@@ -18,13 +18,14 @@ set_target_properties(rtstudio_client PROPERTIES OUTPUT_NAME rtstudio_client LIN
 target_sources(rtstudio_client PRIVATE client.cpp)
 target_link_libraries(rtstudio_client PRIVATE
     -Wl,--whole-archive $<TARGET_FILE:rtdeploy> $<TARGET_FILE:rtcorba> $<TARGET_FILE:rtpackages>
+    $<TARGET_FILE:rtpackageinstall>
     $<TARGET_FILE:rtplanner> $<TARGET_FILE:rtprofile>
     -Wl,--no-whole-archive
-    rtcorba_stubs yaml-cpp rtstudio_omniorb PkgConfig::Z3 Qt6::Core)
-add_dependencies(rtstudio_client rtdeploy rtcorba rtpackages rtplanner rtprofile)
+    rtcorba_stubs yaml-cpp rtstudio_omniorb PkgConfig::Z3 Qt6::Network Qt6::Core)
+add_dependencies(rtstudio_client rtdeploy rtcorba rtpackages rtpackageinstall rtplanner rtprofile)
 
 set(rtstudio_client_headers "")
-foreach(dir profile corba corba/deployment packages planner)
+foreach(dir profile corba corba/deployment packages packages/install planner)
     file(GLOB headers CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/${dir}/*.h")
     list(APPEND rtstudio_client_headers ${headers})
 endforeach()

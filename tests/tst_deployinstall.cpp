@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: MIT
+// rtctl deploy and undeploy: install, then launch, in one transaction. The tour's Doubler is
+// generated, given its onExecute, built against this build tree's SDK, packaged and published in
+// a repository signed with a throwaway key; a manager whose load path and package store hold no
+// Doubler deploys a system of a counter, the Doubler and a printer from that repository: the
+// package is installed, the system restored and started, and doubled counts arrive. A dry run
+// changes nothing; undeploy --uninstall leaves the store empty; a type no repository provides, an
+// unsigned repository and a connector that cannot be made each fail with a message naming what
+// failed, and leave no component and no package behind.
+#include "componentstatus.h"
+#include "livesystem.h"
+#include "rtctlrunner.h"
+#include "sdkproject.h"
+#include "tst_deploysupport.h"
+
+#include <QDirIterator>
+#include <QtTest>
+
+namespace {
+
+const QString doublerProfile = QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/tour/Doubler.xml");
+const QString package = QStringLiteral("rtc-rtstudio-tour-doubler");
+const QStringList systemInstances {QStringLiteral("Count0"), QStringLiteral("Doubler0"),
+                                   QStringLiteral("Show0")};
+
+const SdkTest::UserEdit doubling {"src/Doubler.cpp",
+                                  "Doubler::onExecute(RTC::UniqueId /*ec_id*/)\n{\n  return RTC::RTC_OK;\n}",
+                                  "Doubler::onExecute(RTC::UniqueId /*ec_id*/)\n{\n"
+                                  "  while (m_inIn.isNew()) {\n"
+                                  "    m_inIn.read();\n"
+                                  "    m_out.data = 2 * m_in.data;\n"
+                                  "    setTimestamp(m_out);\n"
+                                  "    m_outOut.write();\n"
+                                  "  }\n"
+                                  "  return RTC::RTC_OK;\n}"};
+
+/// Every file below @p root, relative to it: what a failed deploy must leave as it was.
+QStringList filesBelow(const QString &root)
+{
+    QStringList files;
+    QDirIterator it(root, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
+    while (it.hasNext())
+        files << it.next().mid(root.size());
+    files.sort();
+    return files;
+}
+
+QList<long> numbers(const QString &text)
+{
+    QList<long> list;
+    static const QRegularExpression number(QStringLiteral("-?\\d+"));
+    for (auto it = number.globalMatch(text); it.hasNext();)
+        list << it.next().captured().toLong();
+    return list;
+}
+
+} // namespace
+
+class TestDeployInstall : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void cleanupTestCase();
+    void dryRunChangesNothing();
+    void deployInstallsRestoresAndStarts();
+    void typeNoRepositoryProvidesIsRefusedFirst();
+    void unsignedRepositoryIsRefused();
+    void failedRestoreUninstalls();
+
+private:
+    RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
+    QString manager() const { return QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_managerPort); }
+    /// The live components of the test's name server, sorted.
+    QStringList live() const { return DeployTest::liveInstances(m_live->namingServer()); }
+    void makeRepository(const QString &dir, bool signedWithKey, const QStringList &debs);
+
+    QTemporaryDir m_work;
+    QString m_deb;
+    QString m_repo;
+    QString m_unsignedRepo;
+    QString m_emptyRepo;
+    QString m_store;
+    std::unique_ptr<LiveTest::LiveSystem> m_live;
+    quint16 m_managerPort = 0;
+    CORBA::ORB_var m_orb;
+};
+
+void TestDeployInstall::makeRepository(const QString &dir, bool signedWithKey, const QStringList &debs)
+{
+    QStringList init {"repo", "init", dir};
+    if (signedWithKey)
+        init << "--new-key" << "--gnupg-home" << dir + "-gnupg";
+    const RtctlResult made = runRtctl(init);
+    QVERIFY2(made.code == 0, qPrintable(made.err));
+    if (debs.isEmpty())
+        return;
+    const RtctlResult published = runRtctl(QStringList {"repo", "publish", dir} + debs);
+    QVERIFY2(published.code == 0, qPrintable(published.err));
+}
+
+void TestDeployInstall::initTestCase()
+{
+    QVERIFY(m_work.isValid());
+    const QString project = m_work.filePath("Doubler");
+    const RtctlResult generated = runRtctl({"gen", doublerProfile, "--lang", "cpp", "-o", project});
+    QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
+    QString log;
+    QVERIFY2(SdkTest::applyEdit(project, doubling, &log), qPrintable(log));
+    QVERIFY2(SdkTest::buildProject(project, RTSTUDIO_BUILD_DIR, &log), qPrintable(log));
+    const RtctlResult packaged = runRtctl({"package", project, "-o", m_work.filePath("debs")});
+    QVERIFY2(packaged.code == 0, qPrintable(packaged.err));
+    m_deb = packaged.lines().value(0);
+    m_repo = m_work.filePath("repo");
+    makeRepository(m_repo, true, {m_deb});
+    m_unsignedRepo = m_work.filePath("unsigned");
+    makeRepository(m_unsignedRepo, false, {m_deb});
+    m_emptyRepo = m_work.filePath("empty");
+    makeRepository(m_emptyRepo, true, {});
+    m_store = m_work.filePath("store");
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
+}
+
+void TestDeployInstall::init()
+{
+    m_live = std::make_unique<LiveTest::LiveSystem>();
+    QString error;
+    QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
+    m_managerPort = LiveTest::freePort();
+    const QStringList options {"corba.nameservers=" + m_live->namingServer(),
+                               "naming.formats=deployhost.host_cxt/%n.rtc",
+                               "manager.naming_formats=deployhost.host_cxt/%n.mgr",
+                               "manager.modules.load_path=" + m_work.filePath("none"),
+                               "manager.modules.package_path=" + m_work.filePath("none"),
+                               "manager.packages.store=" + m_store,
+                               "manager.packages.keyring=" + m_repo + "/archive-key.gpg"};
+    QVERIFY2(m_live->startManager(QStringLiteral(RTMANAGER_PATH), m_managerPort, options, &error),
+             qPrintable(error));
+}
+
+void TestDeployInstall::cleanup()
+{
+    m_live.reset();
+    QDir(m_store).removeRecursively();
+}
+
+void TestDeployInstall::cleanupTestCase()
+{
+    for (const QString &repo : {m_repo, m_emptyRepo})
+        QProcess::execute("gpgconf", {"--homedir", repo + "-gnupg", "--kill", "all"});
+}
+
+RtctlResult TestDeployInstall::rtctl(const QString &command, const QString &system,
+                                     const QStringList &extra) const
+{
+    // Creating through a manager may take a while on a loaded machine.
+    return runRtctl(QStringList {command, "--timeout", "20000", "-s", m_live->namingServer(), "-m", manager()}
+                    + extra
+                    + QStringList {DeployTest::dataFile(system)});
+}
+
+void TestDeployInstall::dryRunChangesNothing()
+{
+    const RtctlResult r = rtctl("deploy", "doubled.xml", {"--repo", m_repo, "--dry-run"});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains(QStringLiteral("install %1 1.0.0 on %2 (Doubler)").arg(package, manager())),
+             qPrintable(r.out));
+    QVERIFY2(r.out.contains("component Doubler0 create"), qPrintable(r.out));
+    QVERIFY2(!r.out.contains("install rtc-aist"), qPrintable(r.out));
+    QCOMPARE(live(), QStringList());
+    QCOMPARE(filesBelow(m_store), QStringList());
+}
+
+void TestDeployInstall::deployInstallsRestoresAndStarts()
+{
+    const RtctlResult r = rtctl("deploy", "doubled.xml", {"--repo", m_repo});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains(QStringLiteral("done install %1 1.0.0 on %2").arg(package, manager())),
+             qPrintable(r.out));
+    QCOMPARE(live(), systemInstances);
+    QVERIFY(!filesBelow(m_store).isEmpty());
+    // Started: the printer receives the counter's numbers doubled.
+    const QString show = QStringLiteral("corbaname::%1#deployhost.host_cxt/Show0.rtc").arg(m_live->namingServer());
+    QTRY_VERIFY_WITH_TIMEOUT(numbers(LiveTest::componentStatus(m_orb, show, "received_values")).size() >= 3, 20000);
+    for (long value : numbers(LiveTest::componentStatus(m_orb, show, "received_values")))
+        QVERIFY2(value > 0 && value % 2 == 0, qPrintable(QString::number(value)));
+
+    const RtctlResult undeployed = rtctl("undeploy", "doubled.xml", {"--uninstall"});
+    QVERIFY2(undeployed.code == 0, qPrintable(undeployed.out + undeployed.err));
+    QVERIFY2(undeployed.out.contains(QStringLiteral("done uninstall %1 on %2").arg(package, manager())),
+             qPrintable(undeployed.out));
+    QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
+    QCOMPARE(filesBelow(m_store), QStringList());
+}
+
+void TestDeployInstall::typeNoRepositoryProvidesIsRefusedFirst()
+{
+    const RtctlResult r = rtctl("deploy", "doubled.xml", {"--repo", m_emptyRepo});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("Doubler on %1: not loadable there and no package of %2")
+                                .arg(manager(), m_emptyRepo)),
+             qPrintable(r.err));
+    QCOMPARE(live(), QStringList());
+    const RtctlResult without = rtctl("deploy", "doubled.xml");
+    QCOMPARE(without.code, 1);
+    QVERIFY2(without.err.contains("no repository given"), qPrintable(without.err));
+    QCOMPARE(live(), QStringList());
+    QCOMPARE(filesBelow(m_store), QStringList());
+}
+
+void TestDeployInstall::unsignedRepositoryIsRefused()
+{
+    const RtctlResult r = rtctl("deploy", "doubled.xml", {"--repo", m_unsignedRepo});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("install %1 1.0.0 on %2").arg(package, manager())),
+             qPrintable(r.err));
+    QVERIFY2(r.err.contains("unsigned"), qPrintable(r.err));
+    QCOMPARE(live(), QStringList());
+    QCOMPARE(filesBelow(m_store), QStringList());
+}
+
+void TestDeployInstall::failedRestoreUninstalls()
+{
+    const RtctlResult r = rtctl("deploy", "doubled-broken.xml", {"--repo", m_repo});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("connect doubler-nowhere"), qPrintable(r.err));
+    QVERIFY2(r.out.contains(QStringLiteral("rolled back install %1 1.0.0 on %2").arg(package, manager())),
+             qPrintable(r.out));
+    QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
+    QCOMPARE(filesBelow(m_store), QStringList());
+}
+
+QTEST_GUILESS_MAIN(TestDeployInstall)
+#include "tst_deployinstall.moc"
