@@ -7,7 +7,7 @@ set -euo pipefail
 # dpkg-dev … apt: component packages (dpkg-deb, dpkg-shlibdeps, objdump) and signed repositories
 # (gpg, gpgv; apt-get reads them in the tests). clang: the libFuzzer harnesses; lld links the test
 # presets' programs. libz3-dev: the deployment planner's solver. python3-dev, pybind11-dev: the Python
-# component API.
+# component API. busybox: its httpd serves a component repository in the deployment tests.
 packages=(
     build-essential cmake ninja-build pkg-config git
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev libqt6svg6 qt6-qpa-plugins libgl-dev
@@ -15,7 +15,7 @@ packages=(
     libomniorb4-dev omniidl omniorb omniorb-nameserver omniorb-idl
     libkainjow-mustache-dev libyaml-cpp-dev libgraphviz-dev libz3-dev
     xvfb xauth fonts-dejavu-core ccache iproute2 clang lld
-    dpkg-dev binutils gpg gpgv gpg-agent gpgconf xz-utils gzip apt
+    dpkg-dev binutils gpg gpgv gpg-agent gpgconf xz-utils gzip apt busybox
     python3-dev pybind11-dev
 )
 

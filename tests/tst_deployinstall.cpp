@@ -6,14 +6,21 @@
 // package is installed, the system restored and started, and doubled counts arrive. A dry run
 // changes nothing; undeploy --uninstall leaves the store empty; a type no repository provides, an
 // unsigned repository and a connector that cannot be made each fail with a message naming what
-// failed, and leave no component and no package behind.
+// failed, and leave no component and no package behind. Across two hosts simulated with network
+// namespaces, with the repository served over HTTP by busybox's web server on a third, the
+// Doubler is installed only where the system places it and data flows from host to host.
 #include "componentstatus.h"
 #include "livesystem.h"
+#include "profileio.h"
 #include "rtctlrunner.h"
+#include "rtsprofile.h"
 #include "sdkproject.h"
+#include "simulatedhosts.h"
 #include "tst_deploysupport.h"
 
 #include <QDirIterator>
+#include <QStandardPaths>
+#include <QTcpSocket>
 #include <QtTest>
 
 namespace {
@@ -70,6 +77,7 @@ private slots:
     void typeNoRepositoryProvidesIsRefusedFirst();
     void unsignedRepositoryIsRefused();
     void failedRestoreUninstalls();
+    void deploysAcrossHostsFromWebServer();
 
 private:
     RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
@@ -77,6 +85,8 @@ private:
     /// The live components of the test's name server, sorted.
     QStringList live() const { return DeployTest::liveInstances(m_live->namingServer()); }
     void makeRepository(const QString &dir, bool signedWithKey, const QStringList &debs);
+    /// The manager options of a node with its own empty package store @p store.
+    QStringList nodeOptions(const QString &store) const;
 
     QTemporaryDir m_work;
     QString m_deb;
@@ -131,15 +141,20 @@ void TestDeployInstall::init()
     QString error;
     QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
     m_managerPort = LiveTest::freePort();
-    const QStringList options {"corba.nameservers=" + m_live->namingServer(),
-                               "naming.formats=deployhost.host_cxt/%n.rtc",
-                               "manager.naming_formats=deployhost.host_cxt/%n.mgr",
-                               "manager.modules.load_path=" + m_work.filePath("none"),
-                               "manager.modules.package_path=" + m_work.filePath("none"),
-                               "manager.packages.store=" + m_store,
-                               "manager.packages.keyring=" + m_repo + "/archive-key.gpg"};
+    const QStringList options = QStringList {"corba.nameservers=" + m_live->namingServer(),
+                                             "naming.formats=deployhost.host_cxt/%n.rtc",
+                                             "manager.naming_formats=deployhost.host_cxt/%n.mgr"}
+        + nodeOptions(m_store);
     QVERIFY2(m_live->startManager(QStringLiteral(RTMANAGER_PATH), m_managerPort, options, &error),
              qPrintable(error));
+}
+
+QStringList TestDeployInstall::nodeOptions(const QString &store) const
+{
+    return {"manager.modules.load_path=" + m_work.filePath("none"),
+            "manager.modules.package_path=" + m_work.filePath("none"),
+            "manager.packages.store=" + store,
+            "manager.packages.keyring=" + m_repo + "/archive-key.gpg"};
 }
 
 void TestDeployInstall::cleanup()
@@ -232,6 +247,69 @@ void TestDeployInstall::failedRestoreUninstalls()
              qPrintable(r.out));
     QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
     QCOMPARE(filesBelow(m_store), QStringList());
+}
+
+void TestDeployInstall::deploysAcrossHostsFromWebServer()
+{
+    const QString busybox = QStandardPaths::findExecutable(QStringLiteral("busybox"));
+    if (busybox.isEmpty())
+        QSKIP("no busybox to serve the repository (scripts/install-deps.sh installs it)");
+    LiveTest::SimulatedHosts hosts;
+    QString why;
+    if (!hosts.create({"hostA", "hostB", "repohost"}, &why))
+        QSKIP(qPrintable(QStringLiteral("cannot simulate hosts: ") + why));
+    std::map<QString, std::unique_ptr<LiveTest::LiveSystem>> live;
+    for (const QString host : {"hostA", "hostB"}) {
+        live[host] = std::make_unique<LiveTest::LiveSystem>(hosts.liveHost(host));
+        QVERIFY2(live[host]->startNameServer(&why, 2809), qPrintable(why));
+        QVERIFY2(live[host]->startManager(QStringLiteral(RTMANAGER_PATH), 2810,
+                                          QStringList {"corba.nameservers=" + live[host]->namingServer()}
+                                              + nodeOptions(m_work.filePath("store-" + host)),
+                                          &why),
+                 qPrintable(why));
+    }
+    // The repository as any static web server serves it.
+    LiveTest::LiveSystem web(hosts.liveHost("repohost"));
+    const QString webAddress = hosts.address("repohost");
+    const auto serving = [&webAddress] {
+        QTcpSocket socket;
+        socket.connectToHost(webAddress, 8080);
+        return socket.waitForConnected(200);
+    };
+    QVERIFY2(web.startRegistered(busybox, {"httpd", "-f", "-p", webAddress + ":8080", "-h", m_repo}, serving, &why),
+             qPrintable(why));
+
+    // The system saved with each component where it should run: the Doubler on host B.
+    Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
+    const QHash<QString, QString> placed {{"Count0", "hostA"}, {"Doubler0", "hostB"}, {"Show0", "hostA"}};
+    for (Profile::RtsComponent &component : system.components) {
+        const QString host = placed.value(component.instanceName);
+        component.pathUri = QStringLiteral("%1/%2.host_cxt/%3.rtc")
+                                .arg(live.at(host)->namingServer(), host, component.instanceName);
+    }
+    const QString file = m_work.filePath("spanning.xml");
+    Profile::Diagnostics diagnostics;
+    QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
+
+    const QString repoUrl = QStringLiteral("http://%1:8080/").arg(webAddress);
+    const RtctlResult r = runRtctl({"deploy", "--timeout", "20000", "--repo", repoUrl, file});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    const QString hostB = QStringLiteral("/%1/hostB.host_cxt/manager.mgr").arg(live.at("hostB")->namingServer());
+    QVERIFY2(r.out.contains(QStringLiteral("done install %1 1.0.0 on %2").arg(package, hostB)), qPrintable(r.out));
+    QVERIFY2(!r.out.contains("on /" + live.at("hostA")->namingServer()), qPrintable(r.out));
+    QVERIFY(filesBelow(m_work.filePath("store-hostA")).isEmpty());
+    QVERIFY(!filesBelow(m_work.filePath("store-hostB")).isEmpty());
+    const QString show = QStringLiteral("corbaname::%1#hostA.host_cxt/Show0.rtc").arg(live.at("hostA")->namingServer());
+    QTRY_VERIFY_WITH_TIMEOUT(numbers(LiveTest::componentStatus(m_orb, show, "received_values")).size() >= 3, 20000);
+    for (long value : numbers(LiveTest::componentStatus(m_orb, show, "received_values")))
+        QVERIFY2(value > 0 && value % 2 == 0, qPrintable(QString::number(value)));
+
+    const RtctlResult undeployed = runRtctl({"undeploy", "--timeout", "20000", "--uninstall", file});
+    QVERIFY2(undeployed.code == 0, qPrintable(undeployed.out + undeployed.err));
+    for (const QString host : {"hostA", "hostB"}) {
+        QTRY_COMPARE_WITH_TIMEOUT(DeployTest::liveInstances(live.at(host)->namingServer()), QStringList(), 10000);
+        QCOMPARE(filesBelow(m_work.filePath("store-" + host)), QStringList());
+    }
 }
 
 QTEST_GUILESS_MAIN(TestDeployInstall)
