@@ -50,7 +50,7 @@ set_tests_properties(tst_managerinstall PROPERTIES LABELS package TIMEOUT 600)
 
 # rtctl deploy / undeploy: installs from a repository, restore and start as one transaction.
 rtstudio_add_test(tst_deployinstall SOURCES tst_deployinstall.cpp tst_deploysupport.h
-    LIBS rtdeploy rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
+    LIBS rtstudio_app rtdeploy rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
 target_compile_definitions(tst_deployinstall PRIVATE
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
     RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")

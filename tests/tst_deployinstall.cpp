@@ -11,15 +11,22 @@
 // Doubler is installed only where the system places it and data flows from host to host.
 #include "componentstatus.h"
 #include "livesystem.h"
+#include "onlinesession.h"
 #include "profileio.h"
+#include "restoredialog.h"
 #include "rtctlrunner.h"
 #include "rtsprofile.h"
 #include "sdkproject.h"
 #include "simulatedhosts.h"
 #include "tst_deploysupport.h"
 
+#include <QCheckBox>
 #include <QDirIterator>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTcpSocket>
 #include <QtTest>
 
@@ -77,6 +84,7 @@ private slots:
     void typeNoRepositoryProvidesIsRefusedFirst();
     void unsignedRepositoryIsRefused();
     void failedRestoreUninstalls();
+    void restoreDialogInstallsFromRepository();
     void deploysAcrossHostsFromWebServer();
 
 private:
@@ -249,6 +257,51 @@ void TestDeployInstall::failedRestoreUninstalls()
     QCOMPARE(filesBelow(m_store), QStringList());
 }
 
+// The System Editor's Restore dialog: ticking "Install missing component types" plans the
+// install (its column and the dry run name the package and the node), Restore installs and
+// creates; with an empty repository the plan names the type and Restore stays disabled.
+void TestDeployInstall::restoreDialogInstallsFromRepository()
+{
+    Deploy::TargetOptions target;
+    target.nameServers = {m_live->namingServer()};
+    SystemEditor::OnlineSession session;
+    SystemEditor::RestoreDialog dialog(&session, DeployTest::loadSystem(DeployTest::dataFile("doubled.xml")),
+                                       target);
+    QSignalSpy planned(&dialog, &SystemEditor::RestoreDialog::planned);
+    dialog.setManagers({manager()});
+    dialog.setInstallFrom(m_emptyRepo);
+    QVERIFY(planned.wait(20000));
+    QVERIFY(dialog.findChild<QCheckBox *>("createCheck")->isChecked());
+    auto *restoreButton = dialog.findChild<QPushButton *>("restoreButton");
+    QVERIFY(!restoreButton->isEnabled());
+    QVERIFY2(dialog.findChild<QLabel *>("summaryLabel")->text().contains("Doubler on " + manager()),
+             qPrintable(dialog.findChild<QLabel *>("summaryLabel")->text()));
+
+    dialog.setInstallFrom(m_repo);
+    QVERIFY(planned.wait(20000));
+    QVERIFY2(restoreButton->isEnabled(), qPrintable(dialog.findChild<QLabel *>("summaryLabel")->text()));
+    QTableWidget *components = dialog.componentTable();
+    QCOMPARE(components->item(1, SystemEditor::RestoreDialog::NameColumn)->text(), QStringLiteral("Doubler0"));
+    QCOMPARE(components->item(1, SystemEditor::RestoreDialog::InstallColumn)->text(), package + " 1.0.0");
+    QCOMPARE(components->item(0, SystemEditor::RestoreDialog::InstallColumn)->text(), QString());
+    dialog.dryRun();
+    QVERIFY(!dialog.progressList()->findItems(QStringLiteral("planned: install %1 1.0.0 on %2 (Doubler)")
+                                                  .arg(package, manager()),
+                                              Qt::MatchExactly)
+                 .isEmpty());
+    QCOMPARE(filesBelow(m_store), QStringList());
+
+    QSignalSpy restored(&dialog, &SystemEditor::RestoreDialog::restored);
+    QTest::mouseClick(restoreButton, Qt::LeftButton);
+    QVERIFY(restored.wait(30000));
+    QVERIFY2(restored.at(0).at(0).toBool(), qPrintable(dialog.report().toText()));
+    QCOMPARE(live(), systemInstances);
+    QVERIFY(!filesBelow(m_store).isEmpty());
+    QTRY_VERIFY(!dialog.progressList()->findItems(QStringLiteral("done install %1 1.0.0 on %2").arg(package, manager()),
+                                                  Qt::MatchStartsWith)
+                     .isEmpty());
+}
+
 void TestDeployInstall::deploysAcrossHostsFromWebServer()
 {
     const QString busybox = QStandardPaths::findExecutable(QStringLiteral("busybox"));
@@ -312,5 +365,5 @@ void TestDeployInstall::deploysAcrossHostsFromWebServer()
     }
 }
 
-QTEST_GUILESS_MAIN(TestDeployInstall)
+QTEST_MAIN(TestDeployInstall)
 #include "tst_deployinstall.moc"

@@ -207,6 +207,8 @@ public:
             uninstallAll();
             return merged(restored);
         }
+        if (!m_options.start)
+            return merged(restored);
         const RestorePlan live = planRestore(m_profile, target());
         const DeployReport started = startSystem(m_profile, live, m_control);
         if (started.ok)

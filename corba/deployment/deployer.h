@@ -28,6 +28,8 @@ struct DeployOptions
     QString caCertificates;
     /// How long one install may take on a manager (ms).
     int installTimeoutMs = 120000;
+    /// Start the system once restored (rtctl deploy); the Restore dialog leaves that to Start All.
+    bool start = true;
 };
 
 /// One package a deploy installs on one node.

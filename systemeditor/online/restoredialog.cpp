@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "restoredialog.h"
 
+#include "deployer.h"
 #include "onlinesession.h"
 #include "restorer.h"
 
@@ -21,6 +22,7 @@
 #include <QVBoxLayout>
 
 Q_DECLARE_METATYPE(Deploy::RestorePlan)
+Q_DECLARE_METATYPE(Deploy::DeployPlan)
 Q_DECLARE_METATYPE(Deploy::DeployReport)
 
 namespace SystemEditor {
@@ -92,11 +94,11 @@ RestoreDialog::~RestoreDialog()
 
 void RestoreDialog::buildUi()
 {
-    m_components = new QTableWidget(0, 7, this);
+    m_components = new QTableWidget(0, 8, this);
     m_components->setObjectName(QStringLiteral("componentTable"));
     m_components->setHorizontalHeaderLabels({tr("Component"), tr("Type"), tr("Mapping"),
                                              tr("Live path / note"), tr("Target manager"),
-                                             tr("Restore"), tr("Activate")});
+                                             tr("Restore"), tr("Activate"), tr("Install")});
     m_connectors = new QTableWidget(0, 4, this);
     m_connectors->setObjectName(QStringLiteral("connectorTable"));
     m_connectors->setHorizontalHeaderLabels({tr("Connector"), tr("From"), tr("To"), tr("Connect")});
@@ -164,6 +166,28 @@ void RestoreDialog::buildUi()
     auto *createRow = new QHBoxLayout;
     createRow->addWidget(m_create);
     createRow->addWidget(m_manager, 1);
+    m_install = new QCheckBox(tr("Install missing component types from repository:"), this);
+    m_install->setObjectName(QStringLiteral("installCheck"));
+    m_repository = new QLineEdit(this);
+    m_repository->setObjectName(QStringLiteral("repositoryEdit"));
+    m_repository->setPlaceholderText(tr("http://host/repo/, file:///path or a folder"));
+    m_repository->setToolTip(tr("A component repository made with rtctl repo. Each manager that "
+                                "creates components installs the packages of the types it cannot "
+                                "load, verified with its own keyring."));
+    // Installing is for components to be created, so it asks for creating too.
+    connect(m_install, &QCheckBox::toggled, this, [this](bool on) {
+        if (on && !m_create->isChecked())
+            m_create->setChecked(true);
+        else
+            createChanged();
+    });
+    connect(m_repository, &QLineEdit::editingFinished, this, [this] {
+        if (m_install->isChecked())
+            createChanged();
+    });
+    auto *installRow = new QHBoxLayout;
+    installRow->addWidget(m_install);
+    installRow->addWidget(m_repository, 1);
 
     auto *splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_components);
@@ -171,6 +195,7 @@ void RestoreDialog::buildUi()
     splitter->addWidget(m_progress);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(createRow);
+    layout->addLayout(installRow);
     layout->addWidget(splitter, 1);
     layout->addWidget(m_busy);
     layout->addWidget(m_summary);
@@ -194,6 +219,22 @@ void RestoreDialog::setCreateMissing(bool create, const QString &manager)
     createChanged();
 }
 
+void RestoreDialog::setInstallFrom(const QString &repository)
+{
+    const QSignalBlocker blockInstall(m_install);
+    const QSignalBlocker blockCreate(m_create);
+    m_install->setChecked(!repository.isEmpty());
+    m_repository->setText(repository);
+    if (!repository.isEmpty())
+        m_create->setChecked(true);
+    createChanged();
+}
+
+bool RestoreDialog::installing() const
+{
+    return m_install->isChecked() && !m_repository->text().trimmed().isEmpty();
+}
+
 void RestoreDialog::createChanged()
 {
     m_options.create = m_create->isChecked();
@@ -208,19 +249,49 @@ void RestoreDialog::plan()
 {
     const Profile::RtsProfile profile = m_profile;
     const Deploy::TargetOptions options = m_options;
+    const QString repository = installing() ? m_repository->text().trimmed() : QString();
     m_session->submit(
         OnlineSession::deploymentHost(),
-        [profile, options] { return QVariant::fromValue(Deploy::planRestore(profile, options)); },
+        [profile, options, repository] {
+            if (repository.isEmpty())
+                return QVariant::fromValue(Deploy::planRestore(profile, options));
+            Deploy::DeployOptions deploy;
+            deploy.target = options;
+            deploy.repository = repository;
+            return QVariant::fromValue(Deploy::planDeploy(profile, deploy));
+        },
         this,
         [this](const OnlineResult &result) {
             if (!result.ok) {
                 m_summary->setText(result.error);
                 return;
             }
-            m_plan = result.value.value<Deploy::RestorePlan>();
+            takePlan(result.value);
             showPlan();
             emit planned();
         });
+}
+
+void RestoreDialog::takePlan(const QVariant &value)
+{
+    if (value.canConvert<Deploy::DeployPlan>()) {
+        m_deployPlan = value.value<Deploy::DeployPlan>();
+        m_plan = m_deployPlan.restore;
+    } else {
+        m_deployPlan = {};
+        m_plan = value.value<Deploy::RestorePlan>();
+    }
+}
+
+QString RestoreDialog::installFor(const Deploy::ComponentMapping &mapping) const
+{
+    if (mapping.kind != Deploy::MappingKind::Create)
+        return {};
+    for (const Deploy::PackageInstall &install : m_deployPlan.installs) {
+        if (install.node == mapping.manager && install.types.contains(mapping.typeName))
+            return QStringLiteral("%1 %2").arg(install.package, install.version);
+    }
+    return {};
 }
 
 void RestoreDialog::showPlan()
@@ -244,6 +315,7 @@ void RestoreDialog::showPlan()
         m_components->setItem(row, RestoreColumn,
                               checkItem(c.kind != Deploy::MappingKind::Missing || c.required));
         m_components->setItem(row, ActivateColumn, checkItem(c.activate));
+        m_components->setItem(row, InstallColumn, textItem(installFor(c)));
     }
     m_connectors->setRowCount(0);
     for (const Deploy::ConnectorPlan &c : m_plan.connectors) {
@@ -255,6 +327,10 @@ void RestoreDialog::showPlan()
         m_connectors->setItem(row, 3, checkItem(c.connect));
     }
     QStringList notes = m_plan.problems;
+    for (const QString &problem : m_deployPlan.problems) {
+        if (!notes.contains(problem))
+            notes.append(problem);
+    }
     const auto missing = m_plan.missingRequired();
     for (const Deploy::ComponentMapping &c : missing)
         notes.append(tr("%1 is required but not found").arg(c.instanceName));
@@ -267,7 +343,7 @@ void RestoreDialog::showPlan()
     if (noManager)
         notes.append(tr("Choose the manager that creates the missing components."));
     m_summary->setText(notes.isEmpty() ? tr("Ready to restore.") : notes.join(QLatin1Char('\n')));
-    m_restore->setEnabled(missing.isEmpty() && !noManager);
+    m_restore->setEnabled(missing.isEmpty() && !noManager && m_deployPlan.problems.isEmpty());
     m_dryRun->setEnabled(true);
 }
 
@@ -301,6 +377,11 @@ void RestoreDialog::dryRun()
 {
     m_progress->clear();
     const Deploy::RestorePlan plan = chosenPlan();
+    for (const Deploy::PackageInstall &install : m_deployPlan.installs)
+        new QListWidgetItem(tr("planned: install %1 %2 on %3 (%4)")
+                                .arg(install.package, install.version, install.node,
+                                     install.types.join(QLatin1Char(' '))),
+                            m_progress);
     for (const QString &line : plan.toText().split(QLatin1Char('\n'), Qt::SkipEmptyParts))
         new QListWidgetItem(tr("planned: %1").arg(line), m_progress);
     for (const Deploy::ConnectorPlan &c : plan.connectors) {
@@ -319,6 +400,13 @@ void RestoreDialog::restore()
     const Profile::RtsProfile profile = m_profile;
     const Deploy::RestorePlan plan = chosenPlan();
     const Deploy::TargetOptions options = m_options;
+    Deploy::DeployPlan deployPlan = m_deployPlan;
+    deployPlan.restore = plan;
+    Deploy::DeployOptions deploy;
+    deploy.target = options;
+    deploy.repository = installing() ? m_repository->text().trimmed() : QString();
+    // The dialog restores; starting stays with Start All.
+    deploy.start = false;
     const std::shared_ptr<std::atomic_bool> cancel = m_cancel;
     // Progress is reported in the worker thread; it reaches the list through the event loop.
     const QPointer<RestoreDialog> self(this);
@@ -339,8 +427,10 @@ void RestoreDialog::restore()
     m_stop->show();
     m_session->submit(
         OnlineSession::deploymentHost(),
-        [profile, plan, options, control, cancel] {
-            return QVariant::fromValue(Deploy::restoreSystem(profile, plan, options, control));
+        [profile, plan, options, deployPlan, deploy, control, cancel] {
+            if (deploy.repository.isEmpty())
+                return QVariant::fromValue(Deploy::restoreSystem(profile, plan, options, control));
+            return QVariant::fromValue(Deploy::deploySystem(profile, deployPlan, deploy, control));
         },
         this,
         [this](const OnlineResult &result) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "componentmapper.h"
+#include "deployer.h"
 #include "deployreport.h"
 #include "restoreplan.h"
 #include "rtsprofile.h"
@@ -14,6 +15,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QLineEdit;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
@@ -31,7 +33,10 @@ class OnlineSession;
  * engine's final report. "Create missing components through a manager" plans the components
  * that are not running as created through the chosen manager (the engine's create path). A
  * failed restore is rolled back by the engine; the report says what failed and what was rolled
- * back.
+ * back. "Install missing component types from repository" plans it as a deploy: the component
+ * types a creating manager cannot load are installed there from the repository first (the
+ * Install column and the dry run say which package on which node), and a failure uninstalls them
+ * again.
  */
 class RestoreDialog : public QDialog
 {
@@ -50,7 +55,8 @@ public:
         PathColumn,
         ManagerColumn, ///< `manager_address` a created component is placed at (editable)
         RestoreColumn,
-        ActivateColumn
+        ActivateColumn,
+        InstallColumn ///< the package installed for it first, when installing from a repository
     };
 
     /// Maps the live system (asynchronously; planned() follows).
@@ -60,6 +66,11 @@ public:
     /// Plans missing components as created through `manager` (or not, with `create` false) and
     /// maps again.
     void setCreateMissing(bool create, const QString &manager);
+    /// Installs what the creating managers cannot load from @p repository (a URL or folder; empty:
+    /// installs nothing) and maps again.
+    void setInstallFrom(const QString &repository);
+    /// The installs of the current plan (empty unless installing from a repository).
+    const Deploy::DeployPlan &currentDeployPlan() const { return m_deployPlan; }
     /// Lists what the restore would do with the choices made, without doing it.
     void dryRun();
     const Deploy::RestorePlan &currentPlan() const { return m_plan; }
@@ -83,11 +94,15 @@ private:
     void addProgress(const Deploy::DeployStep &step);
     void showReport();
     void createChanged();
+    bool installing() const;
+    void takePlan(const QVariant &value);
+    QString installFor(const Deploy::ComponentMapping &mapping) const;
 
     OnlineSession *m_session;
     Profile::RtsProfile m_profile;
     Deploy::TargetOptions m_options;
     Deploy::RestorePlan m_plan;
+    Deploy::DeployPlan m_deployPlan;
     Deploy::DeployReport m_report;
     std::shared_ptr<std::atomic_bool> m_cancel;
     QTableWidget *m_components = nullptr;
@@ -100,6 +115,8 @@ private:
     QPushButton *m_dryRun = nullptr;
     QCheckBox *m_create = nullptr;
     QComboBox *m_manager = nullptr;
+    QCheckBox *m_install = nullptr;
+    QLineEdit *m_repository = nullptr;
 };
 
 } // namespace SystemEditor
