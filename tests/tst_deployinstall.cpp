@@ -300,6 +300,11 @@ void TestDeployInstall::restoreDialogInstallsFromRepository()
     QTRY_VERIFY(!dialog.progressList()->findItems(QStringLiteral("done install %1 1.0.0 on %2").arg(package, manager()),
                                                   Qt::MatchStartsWith)
                      .isEmpty());
+    // To look at what the user sees: RTSTUDIO_DEPLOY_SCREENSHOT=file.png.
+    if (qEnvironmentVariableIsSet("RTSTUDIO_DEPLOY_SCREENSHOT")) {
+        dialog.show();
+        QVERIFY(dialog.grab().save(qEnvironmentVariable("RTSTUDIO_DEPLOY_SCREENSHOT")));
+    }
 }
 
 void TestDeployInstall::deploysAcrossHostsFromWebServer()

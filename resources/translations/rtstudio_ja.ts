@@ -4774,7 +4774,7 @@
 <context>
     <name>SystemEditor::RestoreDialog</name>
     <message>
-        <location filename="../../systemeditor/online/restoredialog.cpp" line="+83"/>
+        <location filename="../../systemeditor/online/restoredialog.cpp" line="+85"/>
         <source>Restore System</source>
         <translation>システムの復元</translation>
     </message>
@@ -4815,6 +4815,11 @@
         <translation>アクティブ化</translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>Install</source>
+        <translation>インストール</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>Connector</source>
         <translation>コネクタ</translation>
@@ -4836,12 +4841,12 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+90"/>
+        <location line="+129"/>
         <source>Mapping the live system…</source>
         <translation>稼働中のシステムと対応付けています…</translation>
     </message>
     <message>
-        <location line="-85"/>
+        <location line="-124"/>
         <source>Dry Run</source>
         <translation>ドライラン</translation>
     </message>
@@ -4866,12 +4871,27 @@
         <translation>rtshellのパス（/host:2809/host.host_cxt/manager.mgr）またはcorbaloc（corbaloc::host:2810）</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+14"/>
+        <source>Install missing component types from repository:</source>
+        <translation>不足しているコンポーネント型をリポジトリからインストール:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>http://host/repo/, file:///path or a folder</source>
+        <translation>http://host/repo/、file:///path またはフォルダ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A component repository made with rtctl repo. Each manager that creates components installs the packages of the types it cannot load, verified with its own keyring.</source>
+        <translation>rtctl repo で作成したコンポーネントリポジトリ。コンポーネントを生成する各マネージャが、ロードできない型のパッケージを自身の鍵束で検証してインストールします。</translation>
+    </message>
+    <message>
+        <location line="+138"/>
         <source>host:port of the manager that runs it; empty: %1</source>
         <translation>これを実行するマネージャのホスト:ポート。空欄の場合：%1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>%1 is required but not found</source>
         <translation>%1は必須ですが見つかりません</translation>
     </message>
@@ -4897,6 +4917,11 @@
     </message>
     <message>
         <location line="+17"/>
+        <source>planned: install %1 %2 on %3 (%4)</source>
+        <translation>予定: %3 に %1 %2 をインストール (%4)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>planned: %1</source>
         <translation>予定：%1</translation>
     </message>
@@ -4911,12 +4936,12 @@
         <translation>ドライラン：何も変更していません。</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+32"/>
         <source>Restoring…</source>
         <translation>復元しています…</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>Restored.</source>
         <translation>復元しました。</translation>
     </message>
