@@ -81,6 +81,7 @@ private slots:
     void cleanupTestCase();
     void dryRunChangesNothing();
     void deployInstallsRestoresAndStarts();
+    void pinnedComponentsAreCreatedByTheirNode();
     void typeNoRepositoryProvidesIsRefusedFirst();
     void unsignedRepositoryIsRefused();
     void failedRestoreUninstalls();
@@ -218,6 +219,36 @@ void TestDeployInstall::deployInstallsRestoresAndStarts()
              qPrintable(undeployed.out));
     QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
     QCOMPARE(filesBelow(m_store), QStringList());
+}
+
+// Without -m and without live saved paths, the planner's pins (deploy.pin) name the creating node.
+void TestDeployInstall::pinnedComponentsAreCreatedByTheirNode()
+{
+    Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
+    for (Profile::RtsComponent &component : system.components) {
+        Profile::RtsProperty pin;
+        pin.name = QStringLiteral("deploy.pin");
+        pin.value = manager();
+        component.properties.append(pin);
+    }
+    const QString file = m_work.filePath("pinned.xml");
+    Profile::Diagnostics diagnostics;
+    QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
+    const RtctlResult unpinned = runRtctl({"deploy", "-s", m_live->namingServer(), "--repo", m_repo, "--dry-run",
+                                           DeployTest::dataFile("doubled.xml")});
+    QCOMPARE(unpinned.code, 1);
+    QVERIFY2(unpinned.out.contains("no manager to create it"), qPrintable(unpinned.out));
+    const RtctlResult r = runRtctl({"deploy", "-s", m_live->namingServer(), "--repo", m_repo, "--dry-run", file});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains(QStringLiteral("install %1 1.0.0 on %2 (Doubler)").arg(package, manager())),
+             qPrintable(r.out));
+    QVERIFY2(r.out.contains("component Doubler0 create (Doubler?instance_name=Doubler0"), qPrintable(r.out));
+    const RtctlResult deployed = runRtctl({"deploy", "--timeout", "20000", "-s", m_live->namingServer(), "--repo", m_repo, file});
+    QVERIFY2(deployed.code == 0, qPrintable(deployed.out + deployed.err));
+    QVERIFY2(deployed.out.contains(QStringLiteral("done create Doubler0: Doubler?instance_name=Doubler0&exec_cxt.periodic.rate=100 by %1")
+                                       .arg(manager())),
+             qPrintable(deployed.out));
+    QCOMPARE(live(), systemInstances);
 }
 
 void TestDeployInstall::typeNoRepositoryProvidesIsRefusedFirst()

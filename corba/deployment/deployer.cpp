@@ -42,8 +42,9 @@ QString pinOf(const Profile::RtsComponent &component)
     return QString();
 }
 
-/// Components the system pins to a node are created by that node's manager directly.
-void applyPins(const Profile::RtsProfile &profile, RestorePlan *plan)
+/// Components the system pins to a node are created by that node's manager directly; with
+/// @p create, also those the mapper found no manager for.
+void applyPins(const Profile::RtsProfile &profile, RestorePlan *plan, bool create)
 {
     static const QRegularExpression managerAddress(QStringLiteral("&manager_address=[^&]*"));
     for (const Profile::RtsComponent &component : profile.components) {
@@ -54,6 +55,10 @@ void applyPins(const Profile::RtsProfile &profile, RestorePlan *plan)
             if (mapping.instanceName != component.instanceName)
                 continue;
             mapping.manager = pin;
+            if (create && mapping.kind == MappingKind::Missing) {
+                mapping.kind = MappingKind::Create;
+                mapping.message = QStringLiteral("no live component named %1").arg(mapping.instanceName);
+            }
             if (mapping.kind == MappingKind::Create) {
                 mapping.createArgument.remove(managerAddress);
                 mapping.path = pin + QLatin1Char('/') + mapping.instanceName + QStringLiteral(".rtc");
@@ -382,7 +387,7 @@ DeployPlan planDeploy(const Profile::RtsProfile &profile, const DeployOptions &o
     target.create = true;
     DeployPlan plan;
     plan.restore = planRestore(profile, target);
-    applyPins(profile, &plan.restore);
+    applyPins(profile, &plan.restore, true);
     for (ComponentMapping &c : plan.restore.components) {
         if (c.kind == MappingKind::Create && c.manager.isEmpty())
             c.manager = target.manager;
@@ -404,7 +409,7 @@ DeployReport undeploySystem(const Profile::RtsProfile &profile, const RestorePla
                             const DeployControl &control)
 {
     RestorePlan pinned = plan;
-    applyPins(profile, &pinned);
+    applyPins(profile, &pinned, false);
     DeployReport report = stopSystem(profile, pinned, control);
     report.steps << teardownSystem(pinned, control).steps;
     StepRecorder steps(control);
