@@ -17,25 +17,13 @@ set_tests_properties(tst_sdkheaders PROPERTIES LABELS sdk TIMEOUT 900)
 # from the build tree and an installed copy, and run in rtmanager and as programs.
 rtstudio_add_test(tst_sdkexamples SOURCES tst_sdkexamples.cpp
     LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
-target_compile_definitions(tst_sdkexamples PRIVATE
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
-    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
-    CMAKE_COMMAND="${CMAKE_COMMAND}")
-add_dependencies(tst_sdkexamples rtmanager rtctl rtsdk)
-if(TARGET rtsdk_stage)
-    add_dependencies(tst_sdkexamples rtsdk_stage)
-endif()
+rtstudio_uses_sdk_projects(tst_sdkexamples)
+target_compile_definitions(tst_sdkexamples PRIVATE CMAKE_COMMAND="${CMAKE_COMMAND}")
 set_tests_properties(tst_sdkexamples PROPERTIES LABELS "sdk;conformance" TIMEOUT 2400)
 
 # Components in the styles OpenRTM users write beyond OpenRTM's examples (data/sdkstyles), built
 # against the SDK and run in rtmanager and as programs.
 rtstudio_add_test(tst_sdkstyles SOURCES tst_sdkstyles.cpp
     LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
-target_compile_definitions(tst_sdkstyles PRIVATE
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
-    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}")
-add_dependencies(tst_sdkstyles rtmanager rtctl rtsdk)
-if(TARGET rtsdk_stage)
-    add_dependencies(tst_sdkstyles rtsdk_stage)
-endif()
+rtstudio_uses_sdk_projects(tst_sdkstyles)
 set_tests_properties(tst_sdkstyles PROPERTIES LABELS sdk TIMEOUT 900)

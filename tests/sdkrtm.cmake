@@ -11,14 +11,8 @@ target_include_directories(tst_sdkports PRIVATE ${PROJECT_SOURCE_DIR}/manager ${
 set_tests_properties(tst_sdkports PROPERTIES LABELS sdk)
 
 rtstudio_add_test(tst_sdkgenerated SOURCES tst_sdkgenerated.cpp LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
-target_compile_definitions(tst_sdkgenerated PRIVATE
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
-    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
-    CMAKE_COMMAND="${CMAKE_COMMAND}")
-add_dependencies(tst_sdkgenerated rtmanager rtctl rtsdk)
-if(TARGET rtsdk_stage)
-    add_dependencies(tst_sdkgenerated rtsdk_stage)
-endif()
+rtstudio_uses_sdk_projects(tst_sdkgenerated)
+target_compile_definitions(tst_sdkgenerated PRIVATE CMAKE_COMMAND="${CMAKE_COMMAND}")
 set_tests_properties(tst_sdkgenerated PROPERTIES LABELS sdk TIMEOUT 900)
 
 # Shared by the tests that build generated projects against the SDK.
@@ -28,13 +22,7 @@ target_link_libraries(rtstudio_sdkproject PUBLIC Qt6::Core)
 
 rtstudio_add_test(tst_sdkfixtures SOURCES tst_sdkfixtures.cpp
     LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcodegen rtcorba_stubs)
-target_compile_definitions(tst_sdkfixtures PRIVATE
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
-    RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}")
-add_dependencies(tst_sdkfixtures rtmanager rtctl rtsdk)
-if(TARGET rtsdk_stage)
-    add_dependencies(tst_sdkfixtures rtsdk_stage)
-endif()
+rtstudio_uses_sdk_projects(tst_sdkfixtures)
 set_tests_properties(tst_sdkfixtures PROPERTIES LABELS sdk TIMEOUT 900)
 
 # A hand-written OpenRTM-style module that crashes on request, hosted by master and slaves.
