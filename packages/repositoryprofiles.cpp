@@ -64,6 +64,34 @@ std::optional<QByteArray> readPackageFile(const QString &debFile, const QString 
     return member.out;
 }
 
+QList<PackagedProfile> packagedProfiles(const QList<IndexEntry> &entries, const QString &cacheFolder,
+                                        const DebFileSource &debFile, QStringList *problems)
+{
+    QList<PackagedProfile> profiles;
+    for (const IndexEntry &entry : newestVersions(entries)) {
+        if (entry.control.value(Field::RtcProfileId).isEmpty())
+            continue; // a Debian package of other software
+        // The checksum tells a package republished under the same version from the one read before.
+        const QString cached = QDir(cacheFolder).filePath(
+            QStringLiteral("%1_%2_%3.xml")
+                .arg(entry.package(), versionInFileName(entry.version()),
+                     entry.control.value(QStringLiteral("SHA256")).left(16)));
+        if (!QFileInfo::exists(cached)) {
+            QString reason;
+            const std::optional<QString> deb = debFile(entry, &reason);
+            const std::optional<QByteArray> xml = deb ? readPackageFile(
+                *deb, ComponentPackager::dataFolder(entry.package()) + QStringLiteral("/RTC.xml"), &reason)
+                                                      : std::nullopt;
+            if (!xml || !writeFile(cached, *xml, &reason)) {
+                problems->append(QStringLiteral("%1 %2: %3").arg(entry.package(), entry.version(), reason));
+                continue;
+            }
+        }
+        profiles << PackagedProfile{entry, cached};
+    }
+    return profiles;
+}
+
 std::optional<QList<PackagedProfile>> readRepositoryProfiles(const QString &root, const QString &cacheFolder,
                                                              QStringList *problems, QString *error)
 {
@@ -73,26 +101,11 @@ std::optional<QList<PackagedProfile>> readRepositoryProfiles(const QString &root
     const std::optional<QList<IndexEntry>> entries = repository.packages(error);
     if (!entries)
         return std::nullopt;
-    QList<PackagedProfile> profiles;
-    for (const IndexEntry &entry : newestVersions(*entries)) {
-        if (entry.control.value(Field::RtcProfileId).isEmpty())
-            continue; // a Debian package of other software
-        const QString deb = QDir(root).filePath(entry.filename());
-        const QString cached = QDir(cacheFolder).filePath(
-            QStringLiteral("%1_%2.xml").arg(entry.package(), versionInFileName(entry.version())));
-        const QFileInfo cachedInfo(cached);
-        if (!cachedInfo.exists() || cachedInfo.lastModified() < QFileInfo(deb).lastModified()) {
-            QString reason;
-            const std::optional<QByteArray> xml = readPackageFile(
-                deb, ComponentPackager::dataFolder(entry.package()) + QStringLiteral("/RTC.xml"), &reason);
-            if (!xml || !writeFile(cached, *xml, &reason)) {
-                problems->append(QStringLiteral("%1 %2: %3").arg(entry.package(), entry.version(), reason));
-                continue;
-            }
-        }
-        profiles << PackagedProfile{entry, cached};
-    }
-    return profiles;
+    return packagedProfiles(*entries, cacheFolder,
+                            [&root](const IndexEntry &entry, QString *) -> std::optional<QString> {
+                                return QDir(root).filePath(entry.filename());
+                            },
+                            problems);
 }
 
 } // namespace Packages

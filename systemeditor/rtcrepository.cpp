@@ -2,15 +2,19 @@
 #include "rtcrepository.h"
 
 #include "profileio.h"
-#include "repositoryprofiles.h"
+#include "remoteindex.h"
+#include "repositoryfetcher.h"
 
 #include <QCryptographicHash>
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
+#include <QFutureWatcher>
 #include <QMap>
 #include <QMimeData>
 #include <QStandardPaths>
+#include <QUrl>
+#include <QtConcurrent>
 
 namespace SystemEditor {
 
@@ -26,6 +30,16 @@ bool isProfileFileName(const QString &path)
     const QString suffix = QFileInfo(path).suffix().toLower();
     return suffix == QLatin1String("xml") || suffix == QLatin1String("yaml")
         || suffix == QLatin1String("yml");
+}
+
+/// How long one file of a repository reached over the network may take.
+constexpr int fetchTimeoutMs = 30000;
+
+bool isUrl(const QString &source)
+{
+    const QString scheme = QUrl(source).scheme();
+    return scheme == QLatin1String("http") || scheme == QLatin1String("https")
+        || scheme == QLatin1String("file");
 }
 
 QString diagnosticsText(const Diagnostics &diagnostics)
@@ -45,9 +59,9 @@ RtcRepository::RtcRepository(QObject *parent)
 bool RtcRepository::addSource(const QString &path)
 {
     const QFileInfo info(path);
-    if (!info.exists())
+    if (!isUrl(path) && !info.exists())
         return false;
-    const QString absolute = info.absoluteFilePath();
+    const QString absolute = isUrl(path) ? path : info.absoluteFilePath();
     if (m_sources.contains(absolute))
         return true;
     m_sources << absolute;
@@ -57,8 +71,10 @@ bool RtcRepository::addSource(const QString &path)
 
 void RtcRepository::removeSource(const QString &path)
 {
-    if (m_sources.removeAll(QFileInfo(path).absoluteFilePath()) > 0)
+    if (m_sources.removeAll(isUrl(path) ? path : QFileInfo(path).absoluteFilePath()) > 0) {
+        m_reads.remove(path);
         reload();
+    }
 }
 
 void RtcRepository::clear()
@@ -69,12 +85,34 @@ void RtcRepository::clear()
 
 void RtcRepository::reload()
 {
+    ++m_generation;
+    m_reading = 0;
+    QHash<QString, SourceRead> reads;
+    for (const QString &source : std::as_const(m_sources)) {
+        if (isComponentRepository(source)) {
+            // What was read before stays shown until the new read arrives.
+            if (m_reads.contains(source))
+                reads.insert(source, m_reads.value(source));
+            readInBackground(source);
+        } else {
+            reads.insert(source, readSource(source));
+        }
+    }
+    m_reads = reads;
+    publish();
+}
+
+void RtcRepository::publish()
+{
     const QList<FileError> oldErrors = m_errors;
     beginResetModel();
     m_entries.clear();
     m_errors.clear();
-    for (const QString &source : std::as_const(m_sources))
-        readSource(source);
+    for (const QString &source : std::as_const(m_sources)) {
+        const SourceRead read = m_reads.value(source);
+        m_entries << read.entries;
+        m_errors << read.errors;
+    }
     rebuildCategories();
     endResetModel();
     const auto paths = [](const QList<FileError> &errors) {
@@ -87,15 +125,34 @@ void RtcRepository::reload()
         emit errorsChanged();
 }
 
-void RtcRepository::readSource(const QString &path)
+void RtcRepository::readInBackground(const QString &source)
 {
+    ++m_reading;
+    const quint64 generation = m_generation;
+    auto *watcher = new QFutureWatcher<SourceRead>(this);
+    connect(watcher, &QFutureWatcher<SourceRead>::finished, this, [this, watcher, source, generation] {
+        watcher->deleteLater();
+        if (generation != m_generation || !m_sources.contains(source))
+            return;
+        --m_reading;
+        m_reads.insert(source, watcher->result());
+        publish();
+        emit repositoryRead(source);
+    });
+    watcher->setFuture(QtConcurrent::run(&RtcRepository::readComponentRepository, source));
+}
+
+bool RtcRepository::isComponentRepository(const QString &source)
+{
+    return isUrl(source) || QFileInfo::exists(QDir(source).filePath(QStringLiteral("conf/repository")));
+}
+
+RtcRepository::SourceRead RtcRepository::readSource(const QString &path)
+{
+    SourceRead read;
     if (QFileInfo(path).isFile()) {
-        readFile(path, true);
-        return;
-    }
-    if (QFileInfo::exists(QDir(path).filePath(QStringLiteral("conf/repository")))) {
-        readComponentRepository(path);
-        return;
+        readFile(path, true, &read);
+        return read;
     }
     QStringList files;
     QDirIterator it(path, QDir::Files | QDir::Readable, QDirIterator::Subdirectories);
@@ -106,10 +163,11 @@ void RtcRepository::readSource(const QString &path)
     }
     files.sort(); // a stable order, independent of the file system
     for (const QString &file : std::as_const(files))
-        readFile(file, false);
+        readFile(file, false, &read);
+    return read;
 }
 
-void RtcRepository::readFile(const QString &path, bool explicitlyAdded)
+void RtcRepository::readFile(const QString &path, bool explicitlyAdded, SourceRead *read)
 {
     QFile file(path);
     QByteArray head;
@@ -121,12 +179,12 @@ void RtcRepository::readFile(const QString &path, bool explicitlyAdded)
     Diagnostics diagnostics;
     const std::optional<LoadedProfile> loaded = loadProfileFile(path, &diagnostics);
     if (loaded && loaded->rtc) {
-        m_entries << Entry {path, *loaded->rtc, {}, {}, {}};
+        read->entries << Entry {path, *loaded->rtc, {}, {}, {}};
         return;
     }
     if (loaded && !loaded->rtc)
         diagnostics << Diagnostic::error(path, 0, 0, tr("The file is no RTC profile."));
-    m_errors << FileError {path, diagnostics};
+    read->errors << FileError {path, diagnostics};
 }
 
 QString RtcRepository::cacheFolder()
@@ -135,33 +193,39 @@ QString RtcRepository::cacheFolder()
         + QStringLiteral("/component-repositories");
 }
 
-void RtcRepository::readComponentRepository(const QString &root)
+// Runs in a worker thread: no member is touched.
+RtcRepository::SourceRead RtcRepository::readComponentRepository(const QString &source)
 {
     // One cache folder per repository, so that two repositories with alike packages do not mix.
     const QString cache = cacheFolder() + QLatin1Char('/')
-        + QString::fromLatin1(QCryptographicHash::hash(root.toUtf8(), QCryptographicHash::Sha1).toHex().left(16));
+        + QString::fromLatin1(QCryptographicHash::hash(source.toUtf8(), QCryptographicHash::Sha1).toHex().left(16));
     QStringList problems;
     QString error;
-    const auto profiles = Packages::readRepositoryProfiles(root, cache, &problems, &error);
+    const auto profiles = isUrl(source)
+        ? Packages::readRemoteRepositoryProfiles(source, Packages::RepositoryFetcher(QString(), fetchTimeoutMs),
+                                                 cache, &problems, &error)
+        : Packages::readRepositoryProfiles(source, cache, &problems, &error);
+    SourceRead read;
     if (!profiles) {
-        m_errors << FileError{root, {Diagnostic::error(root, 0, 0, error)}};
-        return;
+        read.errors << FileError{source, {Diagnostic::error(source, 0, 0, error)}};
+        return read;
     }
     for (const QString &problem : std::as_const(problems))
-        m_errors << FileError{root, {Diagnostic::error(root, 0, 0, problem)}};
+        read.errors << FileError{source, {Diagnostic::error(source, 0, 0, problem)}};
     for (const Packages::PackagedProfile &packaged : *profiles) {
         Diagnostics diagnostics;
         const std::optional<LoadedProfile> loaded = loadProfileFile(packaged.profileFile, &diagnostics);
         if (!loaded || !loaded->rtc) {
-            diagnostics.prepend(Diagnostic::error(root, 0, 0,
+            diagnostics.prepend(Diagnostic::error(source, 0, 0,
                                                   tr("The RTC profile of package %1 %2 cannot be read.")
                                                       .arg(packaged.entry.package(), packaged.entry.version())));
-            m_errors << FileError{packaged.profileFile, diagnostics};
+            read.errors << FileError{packaged.profileFile, diagnostics};
             continue;
         }
-        m_entries << Entry{packaged.profileFile, *loaded->rtc, packaged.entry.package(),
-                           packaged.entry.version(), root};
+        read.entries << Entry{packaged.profileFile, *loaded->rtc, packaged.entry.package(),
+                              packaged.entry.version(), source};
     }
+    return read;
 }
 
 void RtcRepository::rebuildCategories()

@@ -5,6 +5,7 @@
 #include "rtcprofile.h"
 
 #include <QAbstractItemModel>
+#include <QHash>
 
 namespace SystemEditor {
 
@@ -18,9 +19,11 @@ namespace SystemEditor {
  * be read is kept as an error — listed under the "Unreadable files" branch with its
  * diagnostics as tool tip, and in errors() — so that the user sees why a component is missing.
  *
- * A folder that is a component repository (`rtctl repo init`: a Debian repository of component
- * packages) lists the newest version of each of its packages, with the RTC profile read from the
- * package (kept in the cache folder, cacheFolder()); its rows name the package and version.
+ * A component repository (`rtctl repo init`: a Debian repository of component packages), as a
+ * folder or by URL (http, https, file), lists the newest version of each of its packages, with
+ * the RTC profile read from the package (kept in the cache folder, cacheFolder()); its rows name
+ * the package and version. Repositories are read in a background thread (packages are downloaded
+ * and unpacked the first time); their rows appear when repositoryRead() says so.
  */
 class RtcRepository : public QAbstractItemModel
 {
@@ -43,7 +46,7 @@ public:
         Profile::RtcProfile profile;
         QString package; ///< from a component repository: the package that ships it
         QString packageVersion;
-        QString repository; ///< that repository's folder
+        QString repository; ///< that repository's folder or URL
     };
     /// One file that could not be read.
     struct FileError
@@ -54,13 +57,17 @@ public:
 
     explicit RtcRepository(QObject *parent = nullptr);
 
-    /// Adds a file or a folder (searched recursively) and reads it. False when it does not exist.
+    /// Adds a file, a folder (searched recursively) or a component repository's URL and reads it.
+    /// False when a file or folder does not exist.
     bool addSource(const QString &path);
     /// Forgets a source and what came from it.
     void removeSource(const QString &path);
     QStringList sources() const { return m_sources; }
-    /// Reads every source again (files changed on disk, new files in folders).
+    /// Reads every source again (files changed on disk, new files in folders); component
+    /// repositories in the background.
     void reload();
+    /// True while a component repository is being read.
+    bool isReading() const { return m_reading > 0; }
     void clear();
 
     QList<Entry> entries() const { return m_entries; }
@@ -90,6 +97,8 @@ public:
 signals:
     /// The list of unreadable files changed.
     void errorsChanged();
+    /// The component repository @p source was read (its rows and errors are in the model).
+    void repositoryRead(const QString &source);
 
 private:
     struct Category
@@ -99,12 +108,26 @@ private:
         bool errors = false;
     };
 
-    void readSource(const QString &path);
-    void readFile(const QString &path, bool explicitlyAdded);
-    void readComponentRepository(const QString &root);
+    /// What one source gave.
+    struct SourceRead
+    {
+        QList<Entry> entries;
+        QList<FileError> errors;
+    };
+
+    static bool isComponentRepository(const QString &source);
+    static SourceRead readSource(const QString &path);
+    static void readFile(const QString &path, bool explicitlyAdded, SourceRead *read);
+    static SourceRead readComponentRepository(const QString &source);
+    void readInBackground(const QString &source);
+    /// Shows what the sources gave, in the sources' order.
+    void publish();
     void rebuildCategories();
 
     QStringList m_sources;
+    QHash<QString, SourceRead> m_reads;
+    quint64 m_generation = 0; ///< a background read of an older reload() is dropped
+    int m_reading = 0;
     QList<Entry> m_entries;
     QList<FileError> m_errors;
     QList<Category> m_categories;

@@ -19,7 +19,7 @@ set_tests_properties(tst_builderpackage PROPERTIES LABELS package TIMEOUT 600)
 
 # The System Editor's Repository view over a component repository.
 rtstudio_add_test(tst_serepositorypackages SOURCES tst_serepositorypackages.cpp
-    LIBS rtsystemeditor rtstudio_rtctlrunner)
+    LIBS rtsystemeditor rtstudio_rtctlrunner rtstudio_livetest)
 add_dependencies(tst_serepositorypackages rtctl)
 set_tests_properties(tst_serepositorypackages PROPERTIES LABELS package)
 

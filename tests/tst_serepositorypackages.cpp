@@ -2,7 +2,10 @@
 // The System Editor's Repository view over a component repository (`rtctl repo init` + publish):
 // the newest version of each component package, its RTC profile read from the package and
 // dragged like a local one; a package that cannot be read and a folder that is no readable
-// repository are listed as errors naming the package or the file.
+// repository are listed as errors naming the package or the file. Repositories are read in the
+// background; one served over HTTP (busybox's web server) lists the same, and one that cannot be
+// reached is an error naming the URL.
+#include "livesystem.h"
 #include "rtcrepository.h"
 #include "rtctlrunner.h"
 
@@ -11,7 +14,9 @@
 #include <QFile>
 #include <QMimeData>
 #include <QProcess>
+#include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -41,6 +46,15 @@ bool copyWithVersion(const QString &to, const QString &version)
     return out.write(xml) == xml.size();
 }
 
+/// Adds the component repository @p source and waits until its background read is done.
+bool addAndRead(RtcRepository &repository, const QString &source)
+{
+    QSignalSpy read(&repository, &RtcRepository::repositoryRead);
+    if (!repository.addSource(source) || !repository.isReading())
+        return false;
+    return read.wait(60000) && read.at(0).at(0).toString() == source && !repository.isReading();
+}
+
 } // namespace
 
 class TestSeRepositoryPackages : public QObject
@@ -53,6 +67,8 @@ private slots:
     void dragsThePackagedProfile();
     void unreadablePackageIsAnError();
     void brokenRepositoryIsAnError();
+    void listsARepositoryServedOverHttp();
+    void unreachableUrlIsAnError();
 
 private:
     /// `rtctl package` of @p project into the work folder; the .deb, or empty.
@@ -89,7 +105,7 @@ void TestSeRepositoryPackages::listsTheNewestVersionOfEachPackage()
 {
     RtcRepository repository;
     QAbstractItemModelTester tester(&repository, QAbstractItemModelTester::FailureReportingMode::QtTest);
-    QVERIFY(repository.addSource(m_repository));
+    QVERIFY(addAndRead(repository, m_repository));
     QVERIFY(repository.errors().isEmpty());
     QCOMPARE(repository.entries().size(), 1);
     const RtcRepository::Entry entry = repository.entries().first();
@@ -111,7 +127,7 @@ void TestSeRepositoryPackages::listsTheNewestVersionOfEachPackage()
 void TestSeRepositoryPackages::dragsThePackagedProfile()
 {
     RtcRepository repository;
-    QVERIFY(repository.addSource(m_repository));
+    QVERIFY(addAndRead(repository, m_repository));
     const QModelIndex component = repository.index(0, 0, repository.index(0, 0));
     std::unique_ptr<QMimeData> mime(repository.mimeData({component}));
     QVERIFY(mime && mime->hasFormat(RtcRepository::MimeType));
@@ -132,7 +148,7 @@ void TestSeRepositoryPackages::unreadablePackageIsAnError()
     QFile deb(pool.filePath(debs.first()));
     QVERIFY(deb.resize(100));
     RtcRepository repository;
-    QVERIFY(repository.addSource(copy));
+    QVERIFY(addAndRead(repository, copy));
     QVERIFY(repository.entries().isEmpty());
     QCOMPARE(repository.errors().size(), 1);
     const QString message = repository.errors().first().diagnostics.value(0).message;
@@ -148,11 +164,53 @@ void TestSeRepositoryPackages::brokenRepositoryIsAnError()
     conf.write("no fields here\n");
     conf.close();
     RtcRepository repository;
-    QVERIFY(repository.addSource(broken));
+    QVERIFY(addAndRead(repository, broken));
     QVERIFY(repository.entries().isEmpty());
     QCOMPARE(repository.errors().size(), 1);
     const QString message = repository.errors().first().diagnostics.value(0).message;
     QVERIFY2(message.contains(broken + "/conf/repository"), qPrintable(message));
+}
+
+void TestSeRepositoryPackages::listsARepositoryServedOverHttp()
+{
+    const QString busybox = QStandardPaths::findExecutable(QStringLiteral("busybox"));
+    if (busybox.isEmpty())
+        QSKIP("no busybox to serve the repository (scripts/install-deps.sh installs it)");
+    LiveTest::LiveSystem live;
+    const quint16 port = LiveTest::freePort();
+    const auto serving = [port] {
+        QTcpSocket socket;
+        socket.connectToHost(QStringLiteral("127.0.0.1"), port);
+        return socket.waitForConnected(200);
+    };
+    QString error;
+    QVERIFY2(live.startRegistered(busybox, {"httpd", "-f", "-p", QStringLiteral("127.0.0.1:%1").arg(port), "-h", m_repository},
+                                  serving, &error),
+             qPrintable(error));
+    const QString url = QStringLiteral("http://127.0.0.1:%1/").arg(port);
+    RtcRepository repository;
+    QAbstractItemModelTester tester(&repository, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QVERIFY(addAndRead(repository, url));
+    QVERIFY2(repository.errors().isEmpty(), qPrintable(repository.errors().value(0).diagnostics.value(0).message));
+    QCOMPARE(repository.entries().size(), 1);
+    const RtcRepository::Entry entry = repository.entries().first();
+    QCOMPARE(entry.package, pyPackage);
+    QCOMPARE(entry.packageVersion, QStringLiteral("1.3"));
+    QCOMPARE(entry.repository, url);
+    QCOMPARE(entry.profile.id, QStringLiteral("RTC:RTStudioTests:Packaging:PyGreeter:v1_3"));
+    const QModelIndex component = repository.index(0, 0, repository.index(0, 0));
+    QCOMPARE(component.data().toString(), QStringLiteral("PyGreeter"));
+}
+
+void TestSeRepositoryPackages::unreachableUrlIsAnError()
+{
+    const QString url = QStringLiteral("http://127.0.0.1:%1/repo/").arg(LiveTest::freePort());
+    RtcRepository repository;
+    QVERIFY(addAndRead(repository, url));
+    QVERIFY(repository.entries().isEmpty());
+    QCOMPARE(repository.errors().size(), 1);
+    const QString message = repository.errors().first().diagnostics.value(0).message;
+    QVERIFY2(message.contains(url + "dists/stable/Release"), qPrintable(message));
 }
 
 QTEST_GUILESS_MAIN(TestSeRepositoryPackages)

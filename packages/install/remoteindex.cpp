@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "remoteindex.h"
 
+#include <QDir>
 #include <QFileInfo>
+#include <QSaveFile>
 #include <QSet>
 
 namespace Packages {
@@ -88,6 +90,33 @@ std::optional<RemoteIndex> readRemoteIndex(const QString &repository,
     }
     error->clear();
     return index;
+}
+
+std::optional<QList<PackagedProfile>> readRemoteRepositoryProfiles(const QString &repository,
+                                                                   const RepositoryFetcher &fetcher,
+                                                                   const QString &cacheFolder,
+                                                                   QStringList *problems, QString *error)
+{
+    const std::optional<RemoteIndex> index = readRemoteIndex(repository, fetcher, error);
+    if (!index)
+        return std::nullopt;
+    const QString downloads = QDir(cacheFolder).filePath(QStringLiteral("downloads"));
+    const auto download = [&](const IndexEntry &entry, QString *reason) -> std::optional<QString> {
+        const std::optional<QByteArray> deb = fetcher.get(below(index->root, entry.filename()), reason);
+        if (!deb)
+            return std::nullopt;
+        QSaveFile file(QDir(downloads).filePath(QFileInfo(entry.filename()).fileName()));
+        if (!QDir().mkpath(downloads) || !file.open(QIODevice::WriteOnly) || file.write(*deb) != deb->size()
+            || !file.commit()) {
+            *reason = QStringLiteral("%1: cannot write: %2").arg(file.fileName(), file.errorString());
+            return std::nullopt;
+        }
+        return file.fileName();
+    };
+    QList<PackagedProfile> profiles = packagedProfiles(index->entries, cacheFolder, download, problems);
+    // The packages were needed for their RTC.xml only.
+    QDir(downloads).removeRecursively();
+    return profiles;
 }
 
 } // namespace Packages

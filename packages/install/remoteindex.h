@@ -3,6 +3,7 @@
 
 #include "repositoryfetcher.h"
 #include "repositoryindex.h"
+#include "repositoryprofiles.h"
 
 #include <QList>
 #include <QString>
@@ -35,5 +36,15 @@ struct RemoteIndex
  */
 std::optional<RemoteIndex> readRemoteIndex(const QString &repository,
                                            const RepositoryFetcher &fetcher, QString *error);
+
+/**
+ * The RTC profiles of the component packages of the repository at @p repository (a URL or folder,
+ * see readRemoteIndex()): each package not read before is downloaded once, its RTC.xml kept in
+ * @p cacheFolder. Nothing, with the reason, when the index cannot be read.
+ */
+std::optional<QList<PackagedProfile>> readRemoteRepositoryProfiles(const QString &repository,
+                                                                   const RepositoryFetcher &fetcher,
+                                                                   const QString &cacheFolder,
+                                                                   QStringList *problems, QString *error);
 
 } // namespace Packages

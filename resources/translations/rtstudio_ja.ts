@@ -4731,7 +4731,7 @@
 <context>
     <name>SystemEditor::RepositoryView</name>
     <message>
-        <location filename="../../systemeditor/widgets/repositoryview.cpp" line="+34"/>
+        <location filename="../../systemeditor/widgets/repositoryview.cpp" line="+35"/>
         <source>Add Files…</source>
         <translation>ファイルを追加…</translation>
     </message>
@@ -4739,6 +4739,16 @@
         <location line="+1"/>
         <source>Add Folder…</source>
         <translation>フォルダを追加…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add Repository URL…</source>
+        <translation>リポジトリ URL を追加…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add a component repository served over http or https (rtctl repo)</source>
+        <translation>http または https で提供されるコンポーネントリポジトリを追加 (rtctl repo)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4751,7 +4761,12 @@
         <translation>RTC プロファイルのフォルダ、またはコンポーネントリポジトリのフォルダを追加します</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+3"/>
+        <source>Component repository %1 read.</source>
+        <translation>コンポーネントリポジトリ %1 を読み込みました。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>&quot;%1&quot; does not exist.</source>
         <translation>「%1」は存在しません。</translation>
     </message>
@@ -4769,6 +4784,21 @@
         <location line="+5"/>
         <source>Add Folder of RTC Profiles</source>
         <translation>RTCプロファイルのフォルダを追加</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Add Component Repository</source>
+        <translation>コンポーネントリポジトリを追加</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Repository URL (http, https or file):</source>
+        <translation>リポジトリ URL (http、https または file):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reading component repository %1…</source>
+        <translation>コンポーネントリポジトリ %1 を読み込み中…</translation>
     </message>
 </context>
 <context>
@@ -4974,17 +5004,17 @@
 <context>
     <name>SystemEditor::RtcRepository</name>
     <message>
-        <location filename="../../systemeditor/rtcrepository.cpp" line="+128"/>
+        <location filename="../../systemeditor/rtcrepository.cpp" line="+186"/>
         <source>The file is no RTC profile.</source>
         <translation>このファイルはRTCプロファイルではありません。</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>The RTC profile of package %1 %2 cannot be read.</source>
         <translation>パッケージ %1 %2 の RTC プロファイルを読み込めません。</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>(no category)</source>
         <translation>（カテゴリなし）</translation>
     </message>

@@ -6,6 +6,7 @@
 #include <QAction>
 #include <QFileDialog>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QToolBar>
 #include <QTreeView>
 #include <QVBoxLayout>
@@ -33,11 +34,18 @@ RepositoryView::RepositoryView(RtcRepository *repository, QWidget *parent)
     toolBar->setIconSize(QSize(16, 16));
     m_addFiles = toolBar->addAction(tr("Add Files…"), this, &RepositoryView::chooseFiles);
     m_addFolder = toolBar->addAction(tr("Add Folder…"), this, &RepositoryView::chooseFolder);
+    m_addUrl = toolBar->addAction(tr("Add Repository URL…"), this, &RepositoryView::chooseUrl);
+    m_addUrl->setObjectName(QStringLiteral("actionRepositoryAddUrl"));
+    m_addUrl->setToolTip(tr("Add a component repository served over http or https (rtctl repo)"));
     m_reload = toolBar->addAction(tr("Reload"), repository, &RtcRepository::reload);
     m_addFiles->setObjectName(QStringLiteral("actionRepositoryAddFiles"));
     m_addFolder->setObjectName(QStringLiteral("actionRepositoryAddFolder"));
     m_reload->setObjectName(QStringLiteral("actionRepositoryReload"));
     m_addFolder->setToolTip(tr("Add a folder of RTC profiles, or a component repository folder"));
+
+    connect(repository, &RtcRepository::repositoryRead, this, [this](const QString &source) {
+        emit statusMessage(tr("Component repository %1 read.").arg(source));
+    });
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -66,6 +74,17 @@ void RepositoryView::chooseFolder()
     const QString folder = QFileDialog::getExistingDirectory(this, tr("Add Folder of RTC Profiles"));
     if (!folder.isEmpty())
         addSources({folder});
+}
+
+void RepositoryView::chooseUrl()
+{
+    const QString url = QInputDialog::getText(this, tr("Add Component Repository"),
+                                              tr("Repository URL (http, https or file):"))
+                            .trimmed();
+    if (url.isEmpty())
+        return;
+    addSources({url});
+    emit statusMessage(tr("Reading component repository %1…").arg(url));
 }
 
 } // namespace SystemEditor

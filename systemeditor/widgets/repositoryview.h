@@ -12,8 +12,8 @@ class RtcRepository;
 
 /**
  * The Repository view of the offline System Editor: the RTC profiles of the repository as a
- * tree (category → component), with actions to add files and folders, reload and remove a
- * source. Components are dragged from it onto a system's canvas, which creates an instance.
+ * tree (category → component), with actions to add files, folders and component repositories
+ * by URL, reload and remove a source. Components are dragged from it onto a system's canvas, which creates an instance.
  */
 class RepositoryView : public QWidget
 {
@@ -27,6 +27,7 @@ public:
     QAction *addFilesAction() const { return m_addFiles; }
     QAction *addFolderAction() const { return m_addFolder; }
     QAction *reloadAction() const { return m_reload; }
+    QAction *addUrlAction() const { return m_addUrl; }
 
     /// Adds sources and reports those that do not exist through statusMessage().
     void addSources(const QStringList &paths);
@@ -37,12 +38,14 @@ signals:
 private:
     void chooseFiles();
     void chooseFolder();
+    void chooseUrl();
 
     RtcRepository *m_repository;
     QTreeView *m_tree;
     QAction *m_addFiles;
     QAction *m_addFolder;
     QAction *m_reload;
+    QAction *m_addUrl;
 };
 
 } // namespace SystemEditor
