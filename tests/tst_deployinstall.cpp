@@ -11,6 +11,8 @@
 // Doubler is installed only where the system places it and data flows from host to host.
 #include "componentstatus.h"
 #include "livesystem.h"
+#include "managerproxy.h"
+#include "managerview.h"
 #include "onlinesession.h"
 #include "profileio.h"
 #include "restoredialog.h"
@@ -27,6 +29,7 @@
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTableWidget>
+#include <QTreeWidget>
 #include <QTcpSocket>
 #include <QtTest>
 
@@ -86,6 +89,7 @@ private slots:
     void unsignedRepositoryIsRefused();
     void failedRestoreUninstalls();
     void restoreDialogInstallsFromRepository();
+    void managerViewInstallsAndUninstalls();
     void deploysAcrossHostsFromWebServer();
 
 private:
@@ -336,6 +340,58 @@ void TestDeployInstall::restoreDialogInstallsFromRepository()
         dialog.show();
         QVERIFY(dialog.grab().save(qEnvironmentVariable("RTSTUDIO_DEPLOY_SCREENSHOT")));
     }
+}
+
+namespace {
+
+/// The rows of the Manager view's section @p kind ("packages", "loadableModules"), as "name details".
+QStringList sectionRows(const SystemEditor::ManagerView &view, const QString &kind)
+{
+    QStringList rows;
+    for (int i = 0; i < view.tree()->topLevelItemCount(); ++i) {
+        const QTreeWidgetItem *section = view.tree()->topLevelItem(i);
+        if (section->data(0, Qt::UserRole + 1).toString() != kind)
+            continue;
+        rows << QStringLiteral("(section)");
+        for (int j = 0; j < section->childCount(); ++j)
+            rows << section->child(j)->text(0) + ' ' + section->child(j)->text(1);
+    }
+    return rows;
+}
+
+} // namespace
+
+// The online Manager view lists what the manager installed, installs by URL and uninstalls: the
+// GUI's twin of rtctl node packages / install / uninstall.
+void TestDeployInstall::managerViewInstallsAndUninstalls()
+{
+    SystemEditor::OnlineSession session;
+    SystemEditor::ManagerView view(&session);
+    QSignalSpy loaded(&view, &SystemEditor::ManagerView::loaded);
+    QSignalSpy finished(&view, &SystemEditor::ManagerView::actionFinished);
+    view.setManager(manager(), Deploy::ComponentMapper::resolveManager(manager()));
+    QVERIFY(loaded.wait(10000));
+    QCOMPARE(sectionRows(view, "packages"), QStringList {"(section)"});
+    QVERIFY(view.findChild<QPushButton *>("installPackageButton")->isEnabled());
+
+    QDirIterator deb(m_repo + "/pool", {"*.deb"}, QDir::Files, QDirIterator::Subdirectories);
+    QVERIFY(deb.hasNext());
+    view.installPackage(QUrl::fromLocalFile(deb.next()).toString());
+    QVERIFY(finished.wait(30000));
+    QCOMPARE(finished.takeFirst().at(0).toString(), QString());
+    QTRY_COMPARE_WITH_TIMEOUT(sectionRows(view, "packages"),
+                              (QStringList {"(section)", package + " 1.0.0 Doubler"}), 10000);
+    QVERIFY(sectionRows(view, "loadableModules").join('\n').contains("Doubler "));
+
+    view.uninstallPackage(package, QString());
+    QVERIFY(finished.wait(30000));
+    QCOMPARE(finished.takeFirst().at(0).toString(), QString());
+    QTRY_COMPARE_WITH_TIMEOUT(sectionRows(view, "packages"), QStringList {"(section)"}, 10000);
+    QCOMPARE(filesBelow(m_store), QStringList());
+
+    view.installPackage(QUrl::fromLocalFile(m_unsignedRepo + "/pool/none.deb").toString());
+    QVERIFY(finished.wait(30000));
+    QVERIFY2(finished.takeFirst().at(0).toString().contains("none.deb"), "a refusal names the package");
 }
 
 void TestDeployInstall::deploysAcrossHostsFromWebServer()

@@ -108,7 +108,7 @@ void TestOnlineManager::showsFactoriesAndInstances()
         sections.append(tree->topLevelItem(i)->text(0));
     QCOMPARE(sections,
              (QStringList {"Slave managers", "Components", "Factories", "Loaded modules",
-                           "Loadable modules"}));
+                           "Loadable modules", "Installed packages"}));
     QTreeWidgetItem *components = tree->topLevelItem(1);
     QCOMPARE(components->childCount(), 1);
     QCOMPARE(components->child(0)->text(0), QStringLiteral("ConsoleIn0"));

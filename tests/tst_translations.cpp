@@ -129,7 +129,8 @@ QStringList englishWords(const QString &text)
         QStringLiteral("Flush"), QStringLiteral("New"), QStringLiteral("Periodic"),
         QStringLiteral("flush"), QStringLiteral("new"), QStringLiteral("periodic"), QStringLiteral("sync"),
         QStringLiteral("xml"), QStringLiteral("yaml"), QStringLiteral("yml"), QStringLiteral("png"),
-        QStringLiteral("svg"), QStringLiteral("Debian"), QStringLiteral("deb"),
+        QStringLiteral("svg"), QStringLiteral("Debian"), QStringLiteral("deb"), QStringLiteral("http"),
+        QStringLiteral("https"),
     };
     // Tokens that hold a path, a file name, an identifier (snake_case, CamelCase, ACRONYM) or
     // a number are names, whatever the language around them.

@@ -3875,7 +3875,7 @@
 <context>
     <name>SystemEditor::ManagerView</name>
     <message>
-        <location filename="../../systemeditor/online/managerview.cpp" line="+79"/>
+        <location filename="../../systemeditor/online/managerview.cpp" line="+89"/>
         <source>No manager selected</source>
         <translation>マネージャが選択されていません</translation>
     </message>
@@ -3915,7 +3915,32 @@
         <translation>更新</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+1"/>
+        <source>Install Package…</source>
+        <translation>パッケージをインストール…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Install a component package by the URL of its .deb in a repository (rtctl node install)</source>
+        <translation>リポジトリ内の .deb の URL でコンポーネントパッケージをインストール (rtctl と同じ操作)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Uninstall</source>
+        <translation>アンインストール</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Install Component Package</source>
+        <translation>コンポーネントパッケージのインストール</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>URL of the package in a repository:</source>
+        <translation>リポジトリ内のパッケージの URL:</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Create Component</source>
         <translation>コンポーネントの生成</translation>
     </message>
@@ -3975,7 +4000,12 @@
         <translation>ロード可能なモジュール</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+12"/>
+        <source>Installed packages</source>
+        <translation>インストール済みパッケージ</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <source>%1 (this manager)</source>
         <translation>%1 (このマネージャ)</translation>
     </message>
@@ -3983,6 +4013,11 @@
         <location line="+53"/>
         <source>Done</source>
         <translation>完了</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>Installing %1…</source>
+        <translation>%1 をインストール中…</translation>
     </message>
 </context>
 <context>
@@ -4748,7 +4783,7 @@
     <message>
         <location line="+2"/>
         <source>Add a component repository served over http or https (rtctl repo)</source>
-        <translation>http または https で提供されるコンポーネントリポジトリを追加 (rtctl repo)</translation>
+        <translation>http または https で提供されるコンポーネントリポジトリ (rtctl で作成) を追加</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "managerview.h"
 
+#include "corbaerror.h"
 #include "iorendpoint.h"
 #include "managerproxy.h"
 #include "onlinesession.h"
@@ -10,6 +11,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QPushButton>
 #include <QSplitter>
@@ -22,8 +24,9 @@ namespace SystemEditor {
 
 namespace {
 
-constexpr int KindRole = Qt::UserRole + 1; // "component", "loaded", "loadable", "slave"
-constexpr int KeyRole = Qt::UserRole + 2; // instance name or module path
+constexpr int KindRole = Qt::UserRole + 1; // "component", "loaded", "loadable", "slave", "package"
+constexpr int KeyRole = Qt::UserRole + 2; // instance name, module path or package name
+constexpr int VersionRole = Qt::UserRole + 3; // a package's version
 
 /// The type as create_component names it: the implementation id (the type name where a profile
 /// has none).
@@ -54,6 +57,13 @@ ManagerSnapshot readManager(const QString &ior, const QString &path)
     s.loaded = manager.loadedModules();
     s.factories = manager.factoryProfiles();
     s.components = manager.componentProfiles();
+    try {
+        s.packages = Corba::PackageInstallerProxy(ior, path).installed();
+    } catch (const Corba::Error &e) {
+        // No install service: an OpenRTM-aist manager, or one with manager.packages.enable: NO.
+        if (e.kind() != Corba::Error::Kind::WrongType)
+            throw;
+    }
     return s;
 }
 
@@ -86,6 +96,10 @@ void ManagerView::buildUi()
     auto *unload = button(tr("Unload"), QStringLiteral("unloadModuleButton"), this);
     auto *shutdownButton = button(tr("Shutdown"), QStringLiteral("shutdownButton"), this);
     auto *reloadButton = button(tr("Refresh"), QStringLiteral("refreshButton"), this);
+    m_install = button(tr("Install Package…"), QStringLiteral("installPackageButton"), this);
+    m_install->setToolTip(tr("Install a component package by the URL of its .deb in a repository "
+                             "(rtctl node install)"));
+    m_uninstall = button(tr("Uninstall"), QStringLiteral("uninstallPackageButton"), this);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("statusLabel"));
     m_status->setWordWrap(true);
@@ -98,6 +112,11 @@ void ManagerView::buildUi()
     for (QPushButton *b : {remove, load, unload, shutdownButton, reloadButton})
         row->addWidget(b);
     leftLayout->addLayout(row);
+    auto *packageRow = new QHBoxLayout;
+    packageRow->addWidget(m_install);
+    packageRow->addWidget(m_uninstall);
+    packageRow->addStretch(1);
+    leftLayout->addLayout(packageRow);
 
     auto *splitter = new QSplitter(this);
     splitter->addWidget(left);
@@ -122,6 +141,17 @@ void ManagerView::buildUi()
             [this, selected] { unloadModule(selected(QStringLiteral("loaded"))); });
     connect(shutdownButton, &QPushButton::clicked, this, &ManagerView::shutdown);
     connect(reloadButton, &QPushButton::clicked, this, &ManagerView::reload);
+    connect(m_install, &QPushButton::clicked, this, [this] {
+        const QString url = QInputDialog::getText(this, tr("Install Component Package"),
+                                                  tr("URL of the package in a repository:"))
+                                .trimmed();
+        installPackage(url);
+    });
+    connect(m_uninstall, &QPushButton::clicked, this, [this] {
+        QTreeWidgetItem *item = m_tree->currentItem();
+        if (item && item->data(0, KindRole).toString() == QLatin1String("package"))
+            uninstallPackage(item->data(0, KeyRole).toString(), item->data(0, VersionRole).toString());
+    });
 }
 
 QWidget *ManagerView::buildCreateForm()
@@ -231,6 +261,20 @@ void ManagerView::showSnapshot(const ManagerSnapshot &snapshot)
         const QString type = typeOf(m);
         add(loadable, type.isEmpty() ? QUrl::fromLocalFile(modulePath(m)).fileName() : type,
             modulePath(m), QStringLiteral("loadable"), modulePath(m));
+    }
+    // Only a manager with an install service has packages to show and install.
+    m_install->setEnabled(snapshot.packages.has_value());
+    m_uninstall->setEnabled(snapshot.packages.has_value());
+    if (snapshot.packages) {
+        QTreeWidgetItem *packages = section(tr("Installed packages"), QStringLiteral("packages"));
+        for (const Corba::InstalledPackageInfo &p : *snapshot.packages) {
+            auto *item = new QTreeWidgetItem(packages, {QStringLiteral("%1 %2").arg(p.name, p.version),
+                                                        p.componentTypes.join(QLatin1Char(' '))});
+            item->setToolTip(1, p.path);
+            item->setData(0, KindRole, QStringLiteral("package"));
+            item->setData(0, KeyRole, p.name);
+            item->setData(0, VersionRole, p.version);
+        }
     }
     m_tree->expandAll();
 
@@ -352,6 +396,23 @@ void ManagerView::unloadModule(const QString &path)
         return;
     const Corba::ManagerProxy manager(m_ior, m_path);
     submit(m_ior, [manager, path] { manager.unloadModule(path); });
+}
+
+void ManagerView::installPackage(const QString &url)
+{
+    if (url.isEmpty() || m_ior.isEmpty())
+        return;
+    const Corba::PackageInstallerProxy installer(m_ior, m_path);
+    m_status->setText(tr("Installing %1…").arg(url));
+    submit(m_ior, [installer, url] { installer.installUrl(url); });
+}
+
+void ManagerView::uninstallPackage(const QString &package, const QString &version)
+{
+    if (package.isEmpty() || m_ior.isEmpty())
+        return;
+    const Corba::PackageInstallerProxy installer(m_ior, m_path);
+    submit(m_ior, [installer, package, version] { installer.uninstall(package, version); });
 }
 
 void ManagerView::shutdown()

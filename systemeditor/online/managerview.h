@@ -2,14 +2,18 @@
 #pragma once
 
 #include "corbatypes.h"
+#include "packageinstallerproxy.h"
 
 #include <QMetaType>
 #include <QWidget>
+
+#include <optional>
 
 #include <vector>
 
 class QComboBox;
 class QLabel;
+class QPushButton;
 class QTableWidget;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -28,13 +32,18 @@ struct ManagerSnapshot
     std::vector<Corba::Properties> loaded;
     std::vector<Corba::Properties> factories;
     std::vector<Corba::ComponentInfo> components;
+    /// The component packages installed (rtmanager's install service); nothing when the manager
+    /// has no install service (OpenRTM-aist's).
+    std::optional<QList<Corba::InstalledPackageInfo>> packages;
 };
 
 /**
  * The Manager view of one live RTM::Manager: its slaves, loadable and loaded modules, factories
  * and component instances; create a component (type, target manager, parameter table with
- * `instance_name`), delete one, load/unload a module and shut the manager down. Every call goes
- * through the worker layer and the view is read back after each action.
+ * `instance_name`), delete one, load/unload a module and shut the manager down; on a manager
+ * with an install service, its installed component packages, install one by URL and uninstall
+ * (what `rtctl node` does). Every call goes through the worker layer and the view is read back
+ * after each action.
  */
 class ManagerView : public QWidget
 {
@@ -62,6 +71,10 @@ public:
     void loadModule(const QString &path, const QString &initFunction);
     void unloadModule(const QString &path);
     void shutdown();
+    /// Installs the package at @p url (`…/pool/…/NAME_VERSION_ARCH.deb[#SUITE]`).
+    void installPackage(const QString &url);
+    /// Uninstalls @p package (every version when @p version is empty).
+    void uninstallPackage(const QString &package, const QString &version);
 
 signals:
     void loaded();
@@ -86,6 +99,8 @@ private:
     QComboBox *m_target = nullptr;
     QTableWidget *m_parameters = nullptr;
     QLabel *m_status = nullptr;
+    QPushButton *m_install = nullptr;
+    QPushButton *m_uninstall = nullptr;
 };
 
 } // namespace SystemEditor
