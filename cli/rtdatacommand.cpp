@@ -5,6 +5,7 @@
 #include "corbaerror.h"
 #include "idltypelibrary.h"
 #include "installation.h"
+#include "interruptscope.h"
 #include "porttap.h"
 
 #include <QElapsedTimer>
@@ -13,8 +14,6 @@
 #include <QJsonObject>
 #include <QThread>
 
-#include <atomic>
-#include <csignal>
 
 namespace Cli {
 
@@ -22,33 +21,7 @@ using namespace Corba;
 
 namespace {
 
-std::atomic<bool> s_interrupted {false};
-
-void onInterrupt(int)
-{
-    s_interrupted = true;
-}
-
-/// SIGINT and SIGTERM end the command's loop (and so remove its connector) while this lives.
-class InterruptScope
-{
-public:
-    InterruptScope()
-    {
-        s_interrupted = false;
-        m_int = std::signal(SIGINT, onInterrupt);
-        m_term = std::signal(SIGTERM, onInterrupt);
-    }
-    ~InterruptScope()
-    {
-        std::signal(SIGINT, m_int);
-        std::signal(SIGTERM, m_term);
-    }
-
-private:
-    void (*m_int)(int);
-    void (*m_term)(int);
-};
+const std::atomic_bool &s_interrupted = InterruptScope::interrupted();
 
 /// The port's data type as a scoped IDL name, or a Corba::Error saying which IDL is missing.
 QString portType(const Codegen::CdrCodec &codec, const PortInfo &port, const QString &where)

@@ -3,9 +3,14 @@
 
 #include "deployer.h"
 #include "drift.h"
+#include "healer.h"
+#include "interruptscope.h"
 #include "profileio.h"
 #include "restorer.h"
 #include "sequencerunner.h"
+
+#include <QDeadlineTimer>
+#include <QThread>
 
 #include <unistd.h>
 
@@ -114,7 +119,7 @@ QString RtSystemCommand::usage() const
     if (m_action == Action::Resurrect)
         extra = QStringLiteral("[--create] [--dry-run] ");
     else if (m_action == Action::Deploy)
-        extra = QStringLiteral("[--repo URL] [--ca FILE] [--dry-run] ");
+        extra = QStringLiteral("[--repo URL] [--ca FILE] [--dry-run] [--watch [--nodes M1,M2,…] [--interval MS]] ");
     else if (m_action == Action::Undeploy)
         extra = QStringLiteral("[--uninstall] ");
     QString text = QStringLiteral("Usage: rtctl %1 [--timeout MS] [-s SERVER]... [-m MANAGER] "
@@ -139,6 +144,11 @@ QString RtSystemCommand::usage() const
             "               picks a suite) that types a node cannot load are installed from\n"
             "--ca FILE      certificate authorities trusted for an https repository\n"
             "--dry-run      print what would be installed where and the restore plan\n"
+            "--watch        then keep the system as planned until Ctrl+C: when a node's manager\n"
+            "               stops answering, its components are planned anew on the nodes left\n"
+            "               (installing as needed), created, configured, connected and started\n"
+            "--nodes LIST   more nodes the system may move to (manager paths or corbalocs)\n"
+            "--interval MS  how often the nodes are checked (default 200)\n"
             "Components pinned with the property deploy.pin are created by that manager.\n"
             "The nodes install side by side, then the system is restored and started; a\n"
             "failed required step undoes everything this run did, installs included.\n");
@@ -164,7 +174,7 @@ QStringList RtSystemCommand::flagNames() const
     if (m_action == Action::Resurrect)
         return {QStringLiteral("--create"), QStringLiteral("--dry-run")};
     if (m_action == Action::Deploy)
-        return {QStringLiteral("--dry-run")};
+        return {QStringLiteral("--dry-run"), QStringLiteral("--watch")};
     if (m_action == Action::Undeploy)
         return {QStringLiteral("--uninstall")};
     return {};
@@ -174,7 +184,8 @@ QStringList RtSystemCommand::optionNames() const
 {
     QStringList names {QStringLiteral("-s"), QStringLiteral("-m"), QStringLiteral("--host-manager")};
     if (m_action == Action::Deploy)
-        names << QStringLiteral("--repo") << QStringLiteral("--ca");
+        names << QStringLiteral("--repo") << QStringLiteral("--ca") << QStringLiteral("--nodes")
+              << QStringLiteral("--interval");
     return names;
 }
 
@@ -250,8 +261,45 @@ int RtSystemCommand::deploy(const Profile::RtsProfile &profile, const Deploy::Ta
         streams.out.flush();
         return plan.problems.isEmpty() ? ExitOk : ExitProblems;
     }
-    return finish(Deploy::deploySystem(profile, plan, deploy, printingControl(streams)), name(),
-                  streams);
+    const int deployed = finish(Deploy::deploySystem(profile, plan, deploy, printingControl(streams)),
+                                name(), streams);
+    if (deployed != ExitOk || !options.has(QStringLiteral("--watch")))
+        return deployed;
+    return watch(profile, deploy, options, streams);
+}
+
+int RtSystemCommand::watch(const Profile::RtsProfile &profile, const Deploy::DeployOptions &deploy,
+                           const RtOptions &options, Streams streams) const
+{
+    bool ok = true;
+    const int interval = options.values.contains(QStringLiteral("--interval"))
+        ? options.value(QStringLiteral("--interval")).toInt(&ok)
+        : 200;
+    if (!ok || interval <= 0)
+        return usageError(QStringLiteral("--interval needs a positive number of milliseconds"), streams);
+    Deploy::WatchOptions watch;
+    watch.deploy = deploy;
+    for (const QString &list : options.values.value(QStringLiteral("--nodes")))
+        watch.nodes << list.split(QLatin1Char(','), Qt::SkipEmptyParts);
+    const InterruptScope interrupts;
+    Deploy::SystemHealer healer(profile, watch);
+    healer.start();
+    streams.out << "watching " << healer.nodes().join(QLatin1Char(' ')) << '\n';
+    streams.out.flush();
+    Deploy::DeployControl control = printingControl(streams);
+    control.cancel = &InterruptScope::interrupted();
+    while (!InterruptScope::interrupted()) {
+        const Deploy::DeployReport report = healer.check(control);
+        if (!report.ok)
+            streams.err << "rtctl " << name() << ": heal failed: " << report.error << '\n';
+        streams.err.flush();
+        const QDeadlineTimer next(interval);
+        while (!next.hasExpired() && !InterruptScope::interrupted())
+            QThread::msleep(10);
+    }
+    streams.out << "stopped watching\n";
+    streams.out.flush();
+    return ExitOk;
 }
 
 } // namespace Cli

@@ -4,6 +4,7 @@
 #include "rtcommand.h"
 
 namespace Deploy {
+struct DeployOptions;
 struct TargetOptions;
 }
 namespace Profile {
@@ -42,6 +43,10 @@ private:
     /// `rtctl deploy`: plans installs and the restore, prints the plan or runs it.
     int deploy(const Profile::RtsProfile &profile, const Deploy::TargetOptions &target,
                const RtOptions &options, Streams streams) const;
+
+    /// `rtctl deploy --watch`: heals the deployed system until interrupted.
+    int watch(const Profile::RtsProfile &profile, const Deploy::DeployOptions &deploy,
+              const RtOptions &options, Streams streams) const;
 
     Action m_action;
 };

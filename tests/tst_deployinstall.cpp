@@ -8,7 +8,9 @@
 // unsigned repository and a connector that cannot be made each fail with a message naming what
 // failed, and leave no component and no package behind. Across two hosts simulated with network
 // namespaces, with the repository served over HTTP by busybox's web server on a third, the
-// Doubler is installed only where the system places it and data flows from host to host.
+// Doubler is installed only where the system places it and data flows from host to host. With
+// --watch, killing the manager that runs the Doubler moves it to the other one, and data flows
+// again.
 #include "componentstatus.h"
 #include "livesystem.h"
 #include "managerproxy.h"
@@ -24,6 +26,7 @@
 
 #include <QCheckBox>
 #include <QDirIterator>
+#include <QScopeGuard>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
@@ -91,6 +94,7 @@ private slots:
     void restoreDialogInstallsFromRepository();
     void managerViewInstallsAndUninstalls();
     void deploysAcrossHostsFromWebServer();
+    void watchHealsWhenANodeDies();
 
 private:
     RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
@@ -455,6 +459,75 @@ void TestDeployInstall::deploysAcrossHostsFromWebServer()
         QTRY_COMPARE_WITH_TIMEOUT(DeployTest::liveInstances(live.at(host)->namingServer()), QStringList(), 10000);
         QCOMPARE(filesBelow(m_work.filePath("store-" + host)), QStringList());
     }
+}
+
+// rtctl deploy --watch: the Doubler runs on a second manager; when that manager is killed, the
+// watcher plans it anew onto the first (installing it there), and doubled counts flow again.
+void TestDeployInstall::watchHealsWhenANodeDies()
+{
+    const quint16 portB = LiveTest::freePort();
+    const QString nodeB = QStringLiteral("corbaloc::127.0.0.1:%1").arg(portB);
+    QString error;
+    QProcess *managerB = m_live->startManager(
+        QStringLiteral(RTMANAGER_PATH), portB,
+        QStringList {"corba.nameservers=" + m_live->namingServer(), "naming.formats=nodeb.host_cxt/%n.rtc",
+                     "manager.naming_formats=nodeb.host_cxt/%n.mgr"}
+            + nodeOptions(m_work.filePath("store-b")),
+        &error);
+    QVERIFY2(managerB, qPrintable(error));
+    Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
+    for (Profile::RtsComponent &component : system.components) {
+        Profile::RtsProperty pin;
+        pin.name = QStringLiteral("deploy.pin");
+        pin.value = component.instanceName == "Doubler0" ? nodeB : manager();
+        component.properties.append(pin);
+    }
+    const QString file = m_work.filePath("watched.xml");
+    Profile::Diagnostics diagnostics;
+    QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
+
+    QProcess watcher;
+    // Ended however the test ends.
+    const auto stopWatcher = qScopeGuard([&watcher] {
+        watcher.kill();
+        watcher.waitForFinished(5000);
+    });
+    watcher.setProcessChannelMode(QProcess::MergedChannels);
+    watcher.start(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli/rtctl"),
+                  {"deploy", "--timeout", "20000", "-s", m_live->namingServer(), "--repo", m_repo, "--watch",
+                   "--nodes", manager() + "," + nodeB, "--interval", "100", file});
+    QString output;
+    const auto read = [&] { return output += QString::fromUtf8(watcher.readAll()); };
+    QTRY_VERIFY2_WITH_TIMEOUT(read().contains("watching "), qPrintable(output), 30000);
+    QVERIFY2(output.contains(QStringLiteral("done install %1 1.0.0 on %2").arg(package, nodeB)), qPrintable(output));
+    const QString show = QStringLiteral("corbaname::%1#deployhost.host_cxt/Show0.rtc").arg(m_live->namingServer());
+    const auto received = [&] {
+        return LiveTest::componentStatus(m_orb, show, "received_count").toLong();
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(received() > 0, 20000);
+
+    QElapsedTimer sinceKill;
+    sinceKill.start();
+    managerB->kill();
+    m_live->stop(managerB);
+    const QString lost = QStringLiteral("done node lost %1").arg(nodeB);
+    QTRY_VERIFY2_WITH_TIMEOUT(read().contains(lost), qPrintable(output), 20000);
+    const auto healed = [&] { return read().mid(output.indexOf(lost)); };
+    QTRY_VERIFY2_WITH_TIMEOUT(healed().contains("done activate Doubler0") || healed().contains("failed"),
+                              qPrintable(output), 30000);
+    QVERIFY2(output.contains(QStringLiteral("done replan Doubler0: Doubler0 -> %1").arg(manager())), qPrintable(output));
+    QVERIFY2(output.contains(QStringLiteral("done install %1 1.0.0 on %2").arg(package, manager())), qPrintable(output));
+    const long before = received();
+    QTRY_VERIFY_WITH_TIMEOUT(received() > before + 2, 20000);
+    qInfo("from the kill to doubled counts flowing again: %lld ms", sinceKill.elapsed());
+    for (long value : numbers(LiveTest::componentStatus(m_orb, show, "received_values")))
+        QVERIFY2(value > 0 && value % 2 == 0, qPrintable(QString::number(value)));
+
+    watcher.terminate();
+    QVERIFY(watcher.waitForFinished(20000));
+    read();
+    QCOMPARE(watcher.exitCode(), 0);
+    QVERIFY2(output.contains("stopped watching"), qPrintable(output));
 }
 
 QTEST_MAIN(TestDeployInstall)

@@ -33,40 +33,6 @@ namespace {
 /// made to exit (exit finishes asynchronously).
 constexpr int uninstallSettleMs = 5000;
 
-QString pinOf(const Profile::RtsComponent &component)
-{
-    for (const Profile::RtsProperty &p : component.properties) {
-        if (p.name == Planner::Key::Pin)
-            return p.value.value_or(QString()).trimmed();
-    }
-    return QString();
-}
-
-/// Components the system pins to a node are created by that node's manager directly; with
-/// @p create, also those the mapper found no manager for.
-void applyPins(const Profile::RtsProfile &profile, RestorePlan *plan, bool create)
-{
-    static const QRegularExpression managerAddress(QStringLiteral("&manager_address=[^&]*"));
-    for (const Profile::RtsComponent &component : profile.components) {
-        const QString pin = pinOf(component);
-        if (pin.isEmpty())
-            continue;
-        for (ComponentMapping &mapping : plan->components) {
-            if (mapping.instanceName != component.instanceName)
-                continue;
-            mapping.manager = pin;
-            if (create && mapping.kind == MappingKind::Missing) {
-                mapping.kind = MappingKind::Create;
-                mapping.message = QStringLiteral("no live component named %1").arg(mapping.instanceName);
-            }
-            if (mapping.kind == MappingKind::Create) {
-                mapping.createArgument.remove(managerAddress);
-                mapping.path = pin + QLatin1Char('/') + mapping.instanceName + QStringLiteral(".rtc");
-            }
-        }
-    }
-}
-
 Corba::PackageInstallerProxy installerOf(const QString &node)
 {
     return Corba::PackageInstallerProxy(ComponentMapper::resolveManager(node), node);
@@ -88,17 +54,6 @@ QString uninstallPackage(const QString &node, const QString &package, const QStr
         }
         QThread::msleep(50);
     }
-}
-
-QList<Planner::RepositoryPackage> repositoryPackages(const Packages::RemoteIndex &index)
-{
-    QList<Planner::RepositoryPackage> packages;
-    for (const Packages::IndexEntry &entry : index.entries) {
-        packages.append({entry.package(), entry.version(), entry.architecture(),
-                         entry.control.value(Packages::Field::SdkAbi).trimmed(),
-                         Planner::splitFactList(entry.control.value(Packages::Field::RtcTypes))});
-    }
-    return packages;
 }
 
 const Packages::IndexEntry *entryOf(const Packages::RemoteIndex &index,
@@ -146,19 +101,13 @@ void planInstalls(const QHash<QString, QStringList> &types, const DeployOptions 
 {
     const QStringList nodes = plan->nodes();
     const QList<NodeFactsReading> facts = readNodeFacts(nodes);
-    std::optional<Packages::RemoteIndex> index;
-    if (!options.repository.isEmpty()) {
-        QString error;
-        const Packages::RepositoryFetcher fetcher(QString(), options.installTimeoutMs,
-                                                  options.caCertificates);
-        index = Packages::readRemoteIndex(options.repository, fetcher, &error);
-        if (!index) {
-            plan->problems << QStringLiteral("repository %1: %2").arg(options.repository, error);
-            return;
-        }
+    QString error;
+    const std::optional<Packages::RemoteIndex> index = readRepositoryIndex(options, &error);
+    if (!index) {
+        plan->problems << error;
+        return;
     }
-    const Planner::Matcher matcher(index ? repositoryPackages(*index)
-                                         : QList<Planner::RepositoryPackage>());
+    const Planner::Matcher matcher(plannerPackages(*index));
     for (const NodeFactsReading &reading : facts) {
         const QString &node = reading.facts.name;
         if (!reading.error.isEmpty()) {
@@ -172,7 +121,7 @@ void planInstalls(const QHash<QString, QStringList> &types, const DeployOptions 
             else if (!source.loadable)
                 plan->problems << QStringLiteral("%1 on %2: not loadable there and %3")
                                       .arg(type, node,
-                                           index ? QStringLiteral("no package of %1 fits it (%2)")
+                                           !options.repository.isEmpty() ? QStringLiteral("no package of %1 fits it (%2)")
                                                        .arg(options.repository,
                                                             reading.facts.architecture.value_or(
                                                                 QStringLiteral("architecture unknown")))
@@ -346,6 +295,62 @@ private:
 };
 
 } // namespace
+
+QString pinOf(const Profile::RtsComponent &component)
+{
+    for (const Profile::RtsProperty &p : component.properties) {
+        if (p.name == Planner::Key::Pin)
+            return p.value.value_or(QString()).trimmed();
+    }
+    return QString();
+}
+
+/// Components the system pins to a node are created by that node's manager directly; with
+/// @p create, also those the mapper found no manager for.
+void applyPins(const Profile::RtsProfile &profile, RestorePlan *plan, bool create)
+{
+    static const QRegularExpression managerAddress(QStringLiteral("&manager_address=[^&]*"));
+    for (const Profile::RtsComponent &component : profile.components) {
+        const QString pin = pinOf(component);
+        if (pin.isEmpty())
+            continue;
+        for (ComponentMapping &mapping : plan->components) {
+            if (mapping.instanceName != component.instanceName)
+                continue;
+            mapping.manager = pin;
+            if (create && mapping.kind == MappingKind::Missing) {
+                mapping.kind = MappingKind::Create;
+                mapping.message = QStringLiteral("no live component named %1").arg(mapping.instanceName);
+            }
+            if (mapping.kind == MappingKind::Create) {
+                mapping.createArgument.remove(managerAddress);
+                mapping.path = pin + QLatin1Char('/') + mapping.instanceName + QStringLiteral(".rtc");
+            }
+        }
+    }
+}
+
+QList<Planner::RepositoryPackage> plannerPackages(const Packages::RemoteIndex &index)
+{
+    QList<Planner::RepositoryPackage> packages;
+    for (const Packages::IndexEntry &entry : index.entries) {
+        packages.append({entry.package(), entry.version(), entry.architecture(),
+                         entry.control.value(Packages::Field::SdkAbi).trimmed(),
+                         Planner::splitFactList(entry.control.value(Packages::Field::RtcTypes))});
+    }
+    return packages;
+}
+
+std::optional<Packages::RemoteIndex> readRepositoryIndex(const DeployOptions &options, QString *error)
+{
+    if (options.repository.isEmpty())
+        return Packages::RemoteIndex();
+    const Packages::RepositoryFetcher fetcher(QString(), options.installTimeoutMs, options.caCertificates);
+    std::optional<Packages::RemoteIndex> index = Packages::readRemoteIndex(options.repository, fetcher, error);
+    if (!index)
+        *error = QStringLiteral("repository %1: %2").arg(options.repository, *error);
+    return index;
+}
 
 QString creatingNode(const ComponentMapping &mapping, const TargetOptions &target)
 {

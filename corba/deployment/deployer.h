@@ -2,6 +2,8 @@
 #pragma once
 
 #include "deployreport.h"
+#include "planproblem.h"
+#include "remoteindex.h"
 #include "restoreplan.h"
 
 #include <QList>
@@ -64,6 +66,20 @@ struct DeployPlan
 /// The node that creates @p mapping: its `deploy.pin` when the system pins it, else the manager
 /// the restore creates through (the component's own, else the target's).
 QString creatingNode(const ComponentMapping &mapping, const TargetOptions &target);
+
+/// The node @p component is pinned to (its `deploy.pin`), or an empty string.
+QString pinOf(const Profile::RtsComponent &component);
+
+/// Makes the pinned components of @p plan created by their node directly; with @p create, also
+/// those the mapper found no manager for.
+void applyPins(const Profile::RtsProfile &profile, RestorePlan *plan, bool create);
+
+/// The index of @p options' repository; nothing with the reason in @p error when it cannot be
+/// read (an empty index when no repository is given).
+std::optional<Packages::RemoteIndex> readRepositoryIndex(const DeployOptions &options, QString *error);
+
+/// The packages of @p index as the planner weighs them.
+QList<Planner::RepositoryPackage> plannerPackages(const Packages::RemoteIndex &index);
 
 /**
  * Plans the deploy of @p profile: maps it onto the live system as a restore with create does,
