@@ -489,6 +489,7 @@ OnlineDocument *OnlineDocks::openOnline(const Profile::RtsProfile &profile)
     const Deploy::TargetOptions options = targetOptions();
     // Start All and Stop All of this tab run the system's plan, as rtctl start / stop do.
     diagram->setSystem(profile, options);
+    diagram->setHealRepository(QSettings().value(SystemEditor::RestoreDialog::RepositorySettingKey).toString());
     m_session->submit(
         SystemEditor::OnlineSession::deploymentHost(),
         [profile, options] { return QVariant::fromValue(Deploy::planRestore(profile, options)); },

@@ -15,6 +15,7 @@
 #include "livesystem.h"
 #include "managerproxy.h"
 #include "managerview.h"
+#include "onlinediagram.h"
 #include "onlinesession.h"
 #include "profileio.h"
 #include "restoredialog.h"
@@ -24,6 +25,7 @@
 #include "simulatedhosts.h"
 #include "tst_deploysupport.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QDirIterator>
 #include <QScopeGuard>
@@ -95,6 +97,7 @@ private slots:
     void managerViewInstallsAndUninstalls();
     void deploysAcrossHostsFromWebServer();
     void watchHealsWhenANodeDies();
+    void keepRunningMovesTheDiagramsComponents();
 
 private:
     RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
@@ -104,6 +107,10 @@ private:
     void makeRepository(const QString &dir, bool signedWithKey, const QStringList &debs);
     /// The manager options of a node with its own empty package store @p store.
     QStringList nodeOptions(const QString &store) const;
+    /// A second manager, node B, in the test's name server under nodeb.host_cxt.
+    QProcess *startNodeB(QString *nodeB);
+    /// doubled.xml with the Doubler pinned to @p nodeB and the rest to manager(); its file.
+    QString writePinnedSystem(const QString &nodeB, Profile::RtsProfile *system);
 
     QTemporaryDir m_work;
     QString m_deb;
@@ -463,10 +470,12 @@ void TestDeployInstall::deploysAcrossHostsFromWebServer()
 
 // rtctl deploy --watch: the Doubler runs on a second manager; when that manager is killed, the
 // watcher plans it anew onto the first (installing it there), and doubled counts flow again.
-void TestDeployInstall::watchHealsWhenANodeDies()
+QProcess *TestDeployInstall::startNodeB(QString *nodeB)
 {
     const quint16 portB = LiveTest::freePort();
-    const QString nodeB = QStringLiteral("corbaloc::127.0.0.1:%1").arg(portB);
+    *nodeB = QStringLiteral("corbaloc::127.0.0.1:%1").arg(portB);
+    // Each test's node B starts with nothing installed.
+    QDir(m_work.filePath("store-b")).removeRecursively();
     QString error;
     QProcess *managerB = m_live->startManager(
         QStringLiteral(RTMANAGER_PATH), portB,
@@ -474,9 +483,15 @@ void TestDeployInstall::watchHealsWhenANodeDies()
                      "manager.naming_formats=nodeb.host_cxt/%n.mgr"}
             + nodeOptions(m_work.filePath("store-b")),
         &error);
-    QVERIFY2(managerB, qPrintable(error));
-    Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
-    for (Profile::RtsComponent &component : system.components) {
+    if (!managerB)
+        qWarning("%s", qPrintable(error));
+    return managerB;
+}
+
+QString TestDeployInstall::writePinnedSystem(const QString &nodeB, Profile::RtsProfile *system)
+{
+    *system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
+    for (Profile::RtsComponent &component : system->components) {
         Profile::RtsProperty pin;
         pin.name = QStringLiteral("deploy.pin");
         pin.value = component.instanceName == "Doubler0" ? nodeB : manager();
@@ -484,7 +499,17 @@ void TestDeployInstall::watchHealsWhenANodeDies()
     }
     const QString file = m_work.filePath("watched.xml");
     Profile::Diagnostics diagnostics;
-    QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
+    return Profile::saveRtsProfileFile(*system, file, &diagnostics) ? file : QString();
+}
+
+void TestDeployInstall::watchHealsWhenANodeDies()
+{
+    QString nodeB;
+    QProcess *managerB = startNodeB(&nodeB);
+    QVERIFY(managerB);
+    Profile::RtsProfile system;
+    const QString file = writePinnedSystem(nodeB, &system);
+    QVERIFY(!file.isEmpty());
 
     QProcess watcher;
     // Ended however the test ends.
@@ -528,6 +553,57 @@ void TestDeployInstall::watchHealsWhenANodeDies()
     read();
     QCOMPARE(watcher.exitCode(), 0);
     QVERIFY2(output.contains("stopped watching"), qPrintable(output));
+}
+
+// Keep Running on an online tab of the saved system: the same heal, and the diagram then shows
+// the Doubler where it runs now.
+void TestDeployInstall::keepRunningMovesTheDiagramsComponents()
+{
+    QString nodeB;
+    QProcess *managerB = startNodeB(&nodeB);
+    QVERIFY(managerB);
+    Profile::RtsProfile system;
+    const QString file = writePinnedSystem(nodeB, &system);
+    const RtctlResult deployed = runRtctl({"deploy", "--timeout", "20000", "-s", m_live->namingServer(), "--repo", m_repo, file});
+    QVERIFY2(deployed.code == 0, qPrintable(deployed.out + deployed.err));
+
+    Deploy::TargetOptions target;
+    target.nameServers = {m_live->namingServer()};
+    SystemEditor::OnlineSession session;
+    SystemEditor::OnlineDiagram diagram(&session);
+    QAction *keepRunning = diagram.findChild<QAction *>("actionKeepRunning");
+    QVERIFY(keepRunning && !keepRunning->isEnabled());
+    diagram.setSystem(system, target);
+    diagram.setHealRepository(m_repo);
+    QVERIFY(keepRunning->isEnabled());
+    for (const Deploy::ComponentMapping &c : Deploy::planRestore(system, target).components) {
+        QCOMPARE(c.kind, Deploy::MappingKind::Existing);
+        diagram.addComponent(c.path, c.ior, QPointF(0, 0));
+    }
+    QTRY_COMPARE(diagram.livePaths().size(), 3);
+    QVERIFY(diagram.livePaths().value("Doubler0").contains("nodeb.host_cxt"));
+
+    QSignalSpy healed(&diagram, &SystemEditor::OnlineDiagram::healed);
+    QStringList steps;
+    connect(&diagram, &SystemEditor::OnlineDiagram::healStep, this,
+            [&steps](const Deploy::DeployStep &step) { steps << step.toString(); });
+    keepRunning->setChecked(true);
+    QVERIFY(diagram.isHealing());
+    managerB->kill();
+    m_live->stop(managerB);
+    QVERIFY2(healed.wait(30000), qPrintable(steps.join('\n')));
+    const auto moved = healed.at(0).at(0).value<QHash<QString, QString>>();
+    QCOMPARE(moved.keys(), QStringList {"Doubler0"});
+    QCOMPARE(moved.value("Doubler0"), manager());
+    QVERIFY2(diagram.livePaths().value("Doubler0").contains("deployhost.host_cxt"),
+             qPrintable(diagram.livePaths().value("Doubler0")));
+    QTRY_COMPARE_WITH_TIMEOUT(diagram.state("Doubler0"), Corba::LifeCycleState::Active, 10000);
+    QVERIFY(diagram.unreachableComponents().isEmpty());
+    QVERIFY2(steps.contains(QStringLiteral("done node lost %1: it ran Doubler0").arg(nodeB)), qPrintable(steps.join('\n')));
+    QVERIFY2(diagram.findChild<QLabel *>("statusLabel")->text().contains("Doubler0 to " + manager()),
+             qPrintable(diagram.findChild<QLabel *>("statusLabel")->text()));
+    keepRunning->setChecked(false);
+    QVERIFY(!diagram.isHealing());
 }
 
 QTEST_MAIN(TestDeployInstall)

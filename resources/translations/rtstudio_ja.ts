@@ -2978,7 +2978,7 @@
         <translation>%1 はシステムプロファイルではありません。</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>Not running: %1</source>
         <translation>起動していないコンポーネント：%1</translation>
     </message>
@@ -4190,7 +4190,17 @@
         <translation>すべて終了</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
+        <source>Keep Running</source>
+        <translation>稼働を維持</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open a saved system online to keep it running when a node dies</source>
+        <translation>ノード停止時にも稼働を維持するには、保存したシステムをオンラインで開いてください</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
@@ -4353,7 +4363,12 @@
         <translation>システムの Deactivation と ShutDown の計画を実行します (rtctl stop と同じ)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>When a node of the system stops answering, move its components to the others and start them there (as rtctl deploy --watch)</source>
+        <translation>システムのノードが応答しなくなったら、そのコンポーネントを他のノードへ移して起動します (rtctl と同じ操作)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Starting the system</source>
         <translation>システムを開始中</translation>
     </message>
@@ -4398,6 +4413,36 @@
         <translation>
             <numerusform>、任意のもの %n 件が失敗</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../../systemeditor/online/onlinediagramheal.cpp" line="+51"/>
+        <source>Keep Running is off.</source>
+        <translation>稼働の維持はオフです。</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Keep Running: watching the system&apos;s nodes.</source>
+        <translation>稼働の維持: システムのノードを監視中。</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Keep Running: %1</source>
+        <translation>稼働の維持: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Keep Running could not heal the system: %1</source>
+        <translation>稼働の維持でシステムを回復できませんでした: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 to %2</source>
+        <translation>%1 を %2 へ</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Keep Running moved %1.</source>
+        <translation>稼働の維持により %1 移動しました。</translation>
     </message>
 </context>
 <context>
@@ -4839,7 +4884,7 @@
 <context>
     <name>SystemEditor::RestoreDialog</name>
     <message>
-        <location filename="../../systemeditor/online/restoredialog.cpp" line="+85"/>
+        <location filename="../../systemeditor/online/restoredialog.cpp" line="+86"/>
         <source>Restore System</source>
         <translation>システムの復元</translation>
     </message>
@@ -4906,12 +4951,12 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+129"/>
+        <location line="+130"/>
         <source>Mapping the live system…</source>
         <translation>稼働中のシステムと対応付けています…</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-125"/>
         <source>Dry Run</source>
         <translation>ドライラン</translation>
     </message>
@@ -4946,7 +4991,7 @@
         <translation>http://host/repo/、file:///path またはフォルダ</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>A component repository made with rtctl repo. Each manager that creates components installs the packages of the types it cannot load, verified with its own keyring.</source>
         <translation>rtctl repo で作成したコンポーネントリポジトリ。コンポーネントを生成する各マネージャが、ロードできない型のパッケージを自身の鍵束で検証してインストールします。</translation>
     </message>
@@ -5001,7 +5046,7 @@
         <translation>ドライラン：何も変更していません。</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+34"/>
         <source>Restoring…</source>
         <translation>復元しています…</translation>
     </message>

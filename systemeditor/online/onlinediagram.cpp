@@ -129,6 +129,13 @@ void OnlineDiagram::buildUi()
         a->setObjectName(QStringLiteral("action")
                          + QString::fromLatin1(text).remove(QLatin1Char(' ')));
     }
+    toolbar->addSeparator();
+    m_healAction = toolbar->addAction(tr("Keep Running"));
+    m_healAction->setObjectName(QStringLiteral("actionKeepRunning"));
+    m_healAction->setCheckable(true);
+    m_healAction->setEnabled(false);
+    m_healAction->setToolTip(tr("Open a saved system online to keep it running when a node dies"));
+    connect(m_healAction, &QAction::toggled, this, [this](bool on) { setHealing(on); });
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("statusLabel"));
     // An action on every component: how far it got, and Cancel for the calls not yet made.

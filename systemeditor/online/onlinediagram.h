@@ -19,6 +19,11 @@
 #include <QPointF>
 #include <QWidget>
 
+namespace Deploy {
+class SystemHealer;
+}
+
+class QAction;
 class QGraphicsView;
 class QLabel;
 class QProgressBar;
@@ -121,6 +126,19 @@ public:
     /// True when Start All and Stop All run a saved system's plan.
     bool hasSystemPlan() const { return m_system.has_value(); }
 
+    /**
+     * Keep Running (a diagram with a saved system only): while on, the nodes the system runs on
+     * are checked every @p intervalMs off the GUI thread, and when one stops answering its
+     * components are planned anew on the others, installed from the heal repository where
+     * needed, created, connected and started (Deploy::SystemHealer, as `rtctl deploy --watch`).
+     * The diagram then shows them where they run now; healStep() reports every step and
+     * healed() what moved where.
+     */
+    void setHealing(bool on, int intervalMs = 500);
+    bool isHealing() const;
+    /// The component repository a heal installs from (empty: moved types must be loadable).
+    void setHealRepository(const QString &repository) { m_healRepository = repository; }
+
     /// Asks for the settings of a new data connector (default: the ConnectorDialog, modal).
     using ConnectorEditor = std::function<std::optional<ConnectorSettings>(
         const ConnectorSettings &proposed, const ConnectorDialog::Choices &choices)>;
@@ -157,6 +175,10 @@ signals:
     void allFinished(const QString &summary);
     /// A step of a running start / stop plan changed (delivered in the GUI thread, in order).
     void planStep(const Deploy::DeployStep &step);
+    /// A step of Keep Running changed (delivered in the GUI thread, in order).
+    void healStep(const Deploy::DeployStep &step);
+    /// Keep Running moved components: instance name → the node it runs on now.
+    void healed(const QHash<QString, QString> &moved);
     /// A live connect or disconnect finished; `error` is empty on success.
     void connectionFinished(const QString &error);
     /// saveLiveSystem() finished: `error` is empty when the file was written; `warnings` name
@@ -208,6 +230,8 @@ private:
     void runSystemPlan(Action action);
     void showPlanStep(const Deploy::DeployStep &step);
     void finishSystemPlan(const OnlineResult &result);
+    void healRound();
+    void finishHealRound(const OnlineResult &result);
     QString hostOf(const Live &live) const;
     struct PollRequest
     {
@@ -236,6 +260,12 @@ private:
 
     OnlineSession *m_session;
     std::optional<SystemPlan> m_system;
+    QAction *m_healAction = nullptr;
+    QTimer *m_healTimer = nullptr;
+    std::shared_ptr<Deploy::SystemHealer> m_healer;
+    bool m_healStarted = false;
+    bool m_healBusy = false;
+    QString m_healRepository;
     Batch m_batch;
     QProgressBar *m_batchBar = nullptr;
     QPushButton *m_batchCancel = nullptr;

@@ -39,6 +39,9 @@ void OnlineDiagram::setSystem(const Profile::RtsProfile &profile,
         if (auto *action = findChild<QAction *>(QLatin1String(name)))
             action->setToolTip(tip);
     }
+    m_healAction->setEnabled(true);
+    m_healAction->setToolTip(tr("When a node of the system stops answering, move its components to the "
+                                "others and start them there (as rtctl deploy --watch)"));
 }
 
 void OnlineDiagram::runSystemPlan(Action action)

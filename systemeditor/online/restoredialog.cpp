@@ -17,6 +17,7 @@
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -171,6 +172,7 @@ void RestoreDialog::buildUi()
     m_repository = new QLineEdit(this);
     m_repository->setObjectName(QStringLiteral("repositoryEdit"));
     m_repository->setPlaceholderText(tr("http://host/repo/, file:///path or a folder"));
+    m_repository->setText(QSettings().value(RepositorySettingKey).toString());
     m_repository->setToolTip(tr("A component repository made with rtctl repo. Each manager that "
                                 "creates components installs the packages of the types it cannot "
                                 "load, verified with its own keyring."));
@@ -405,6 +407,8 @@ void RestoreDialog::restore()
     Deploy::DeployOptions deploy;
     deploy.target = options;
     deploy.repository = installing() ? m_repository->text().trimmed() : QString();
+    if (!deploy.repository.isEmpty())
+        QSettings().setValue(RepositorySettingKey, deploy.repository);
     // The dialog restores; starting stays with Start All.
     deploy.start = false;
     const std::shared_ptr<std::atomic_bool> cancel = m_cancel;

@@ -47,6 +47,9 @@ public:
                   Deploy::TargetOptions options, QWidget *parent = nullptr);
     ~RestoreDialog() override;
 
+    /// The settings key of the component repository last installed from (Keep Running uses it too).
+    static inline const QString RepositorySettingKey = QStringLiteral("deploy/repository");
+
     /// Columns of componentTable().
     enum ComponentColumn {
         NameColumn,
