@@ -119,7 +119,7 @@ QString RtSystemCommand::usage() const
     if (m_action == Action::Resurrect)
         extra = QStringLiteral("[--create] [--dry-run] ");
     else if (m_action == Action::Deploy)
-        extra = QStringLiteral("[--repo URL] [--ca FILE] [--dry-run] [--watch [--nodes M1,M2,…] [--interval MS]] ");
+        extra = QStringLiteral("[--repo URL] [--ca FILE] [--plan --nodes M1,M2,…] [--dry-run] [--watch [--interval MS]] ");
     else if (m_action == Action::Undeploy)
         extra = QStringLiteral("[--uninstall] ");
     QString text = QStringLiteral("Usage: rtctl %1 [--timeout MS] [-s SERVER]... [-m MANAGER] "
@@ -147,7 +147,9 @@ QString RtSystemCommand::usage() const
             "--watch        then keep the system as planned until Ctrl+C: when a node's manager\n"
             "               stops answering, its components are planned anew on the nodes left\n"
             "               (installing as needed), created, configured, connected and started\n"
-            "--nodes LIST   more nodes the system may move to (manager paths or corbalocs)\n"
+            "--plan         first place the components not pinned (deploy.pin) on the --nodes\n"
+            "               with the planner, as rtctl plan does, and pin them there\n"
+            "--nodes LIST   the nodes to plan on and move to (manager paths or corbalocs)\n"
             "--interval MS  how often the nodes are checked (default 200)\n"
             "Components pinned with the property deploy.pin are created by that manager.\n"
             "The nodes install side by side, then the system is restored and started; a\n"
@@ -174,7 +176,7 @@ QStringList RtSystemCommand::flagNames() const
     if (m_action == Action::Resurrect)
         return {QStringLiteral("--create"), QStringLiteral("--dry-run")};
     if (m_action == Action::Deploy)
-        return {QStringLiteral("--dry-run"), QStringLiteral("--watch")};
+        return {QStringLiteral("--dry-run"), QStringLiteral("--watch"), QStringLiteral("--plan")};
     if (m_action == Action::Undeploy)
         return {QStringLiteral("--uninstall")};
     return {};
@@ -248,13 +250,31 @@ int RtSystemCommand::execute(const RtOptions &options, Streams streams)
     return drift.isEmpty() ? ExitOk : ExitProblems;
 }
 
-int RtSystemCommand::deploy(const Profile::RtsProfile &profile, const Deploy::TargetOptions &target,
+int RtSystemCommand::deploy(Profile::RtsProfile profile, const Deploy::TargetOptions &target,
                             const RtOptions &options, Streams streams) const
 {
     Deploy::DeployOptions deploy;
     deploy.target = target;
     deploy.repository = options.value(QStringLiteral("--repo"));
     deploy.caCertificates = options.value(QStringLiteral("--ca"));
+    if (options.has(QStringLiteral("--plan"))) {
+        QStringList nodes;
+        for (const QString &list : options.values.value(QStringLiteral("--nodes")))
+            nodes << list.split(QLatin1Char(','), Qt::SkipEmptyParts);
+        if (nodes.isEmpty())
+            return usageError(QStringLiteral("--plan needs the nodes: --nodes M1,M2,…"), streams);
+        QString why;
+        const QHash<QString, QString> placement = Deploy::planPlacement(profile, nodes, deploy, {}, {}, &why);
+        if (placement.isEmpty()) {
+            report(why, streams);
+            return ExitProblems;
+        }
+        Deploy::pinPlacement(&profile, placement);
+        for (const Profile::RtsComponent &component : std::as_const(profile.components))
+            streams.out << "plan " << component.instanceName << " -> " << placement.value(component.instanceName)
+                        << '\n';
+        streams.out.flush();
+    }
     const Deploy::DeployPlan plan = Deploy::planDeploy(profile, deploy);
     if (options.has(QStringLiteral("--dry-run"))) {
         streams.out << plan.toText();

@@ -41,7 +41,7 @@ private:
                        Streams streams) const;
 
     /// `rtctl deploy`: plans installs and the restore, prints the plan or runs it.
-    int deploy(const Profile::RtsProfile &profile, const Deploy::TargetOptions &target,
+    int deploy(Profile::RtsProfile profile, const Deploy::TargetOptions &target,
                const RtOptions &options, Streams streams) const;
 
     /// `rtctl deploy --watch`: heals the deployed system until interrupted.

@@ -98,6 +98,7 @@ private slots:
     void deploysAcrossHostsFromWebServer();
     void watchHealsWhenANodeDies();
     void keepRunningMovesTheDiagramsComponents();
+    void plansDeploysAndHealsAcrossHosts();
 
 private:
     RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
@@ -604,6 +605,104 @@ void TestDeployInstall::keepRunningMovesTheDiagramsComponents()
              qPrintable(diagram.findChild<QLabel *>("statusLabel")->text()));
     keepRunning->setChecked(false);
     QVERIFY(!diagram.isHealing());
+}
+
+// Across hosts in network namespaces, with the repository on a web server: rtctl deploy --plan
+// places the free Doubler between a counter pinned to host A and a printer pinned to host B,
+// --watch heals when the manager of the Doubler's host is killed, and doubled counts arrive
+// again on the host that is left.
+void TestDeployInstall::plansDeploysAndHealsAcrossHosts()
+{
+    const QString busybox = QStandardPaths::findExecutable(QStringLiteral("busybox"));
+    if (busybox.isEmpty())
+        QSKIP("no busybox to serve the repository (scripts/install-deps.sh installs it)");
+    LiveTest::SimulatedHosts hosts;
+    QString why;
+    if (!hosts.create({"hostA", "hostB", "repohost"}, &why))
+        QSKIP(qPrintable(QStringLiteral("cannot simulate hosts: ") + why));
+    std::map<QString, std::unique_ptr<LiveTest::LiveSystem>> live;
+    std::map<QString, QProcess *> managers;
+    QHash<QString, QString> node;
+    for (const QString host : {"hostA", "hostB"}) {
+        live[host] = std::make_unique<LiveTest::LiveSystem>(hosts.liveHost(host));
+        QVERIFY2(live[host]->startNameServer(&why, 2809), qPrintable(why));
+        QDir(m_work.filePath("heal-" + host)).removeRecursively();
+        managers[host] = live[host]->startManager(QStringLiteral(RTMANAGER_PATH), 2810,
+                                                  QStringList {"corba.nameservers=" + live[host]->namingServer()}
+                                                      + nodeOptions(m_work.filePath("heal-" + host)),
+                                                  &why);
+        QVERIFY2(managers[host], qPrintable(why));
+        node[host] = QStringLiteral("corbaloc::%1:2810").arg(hosts.address(host));
+    }
+    LiveTest::LiveSystem web(hosts.liveHost("repohost"));
+    const QString webAddress = hosts.address("repohost");
+    const auto serving = [&webAddress] {
+        QTcpSocket socket;
+        socket.connectToHost(webAddress, 8080);
+        return socket.waitForConnected(200);
+    };
+    QVERIFY2(web.startRegistered(busybox, {"httpd", "-f", "-p", webAddress + ":8080", "-h", m_repo}, serving, &why),
+             qPrintable(why));
+    Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
+    for (Profile::RtsComponent &component : system.components) {
+        if (component.instanceName == "Doubler0")
+            continue;
+        Profile::RtsProperty pin;
+        pin.name = QStringLiteral("deploy.pin");
+        pin.value = node.value(component.instanceName == "Count0" ? "hostA" : "hostB");
+        component.properties.append(pin);
+    }
+    const QString file = m_work.filePath("planned.xml");
+    Profile::Diagnostics diagnostics;
+    QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
+
+    QProcess watcher;
+    const auto stopWatcher = qScopeGuard([&watcher] {
+        watcher.kill();
+        watcher.waitForFinished(5000);
+    });
+    watcher.setProcessChannelMode(QProcess::MergedChannels);
+    watcher.start(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli/rtctl"),
+                  {"deploy", "--timeout", "20000", "-s", live.at("hostA")->namingServer(), "-s",
+                   live.at("hostB")->namingServer(), "--repo", QStringLiteral("http://%1:8080/").arg(webAddress),
+                   "--plan", "--nodes", node.value("hostA") + "," + node.value("hostB"), "--watch", "--interval",
+                   "100", file});
+    QString output;
+    const auto read = [&] { return output += QString::fromUtf8(watcher.readAll()); };
+    QTRY_VERIFY2_WITH_TIMEOUT(read().contains("watching "), qPrintable(output), 30000);
+    static const QRegularExpression planned(QStringLiteral("^plan Doubler0 -> (\\S+)$"), QRegularExpression::MultilineOption);
+    const QString doublerNode = planned.match(output).captured(1);
+    QVERIFY2(node.values().contains(doublerNode), qPrintable(output));
+    const QString lostHost = node.key(doublerNode);
+    const QString leftHost = lostHost == "hostA" ? "hostB" : "hostA";
+    QVERIFY2(output.contains(QStringLiteral("done install %1 1.0.0 on %2").arg(package, doublerNode)), qPrintable(output));
+    // Data flows from host A to host B.
+    const auto received = [&](const QString &host) {
+        return LiveTest::componentStatus(
+                   m_orb, QStringLiteral("corbaname::%1#%2.host_cxt/Show0.rtc").arg(live.at(host)->namingServer(), host),
+                   "received_count")
+            .toLong();
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(received("hostB") > 0, 20000);
+
+    QElapsedTimer sinceKill;
+    sinceKill.start();
+    managers.at(lostHost)->kill();
+    live.at(lostHost)->stop(managers.at(lostHost));
+    const QString lost = QStringLiteral("done node lost %1").arg(doublerNode);
+    QTRY_VERIFY2_WITH_TIMEOUT(read().contains(lost), qPrintable(output), 20000);
+    const auto healed = [&] { return read().mid(output.indexOf(lost)); };
+    QTRY_VERIFY2_WITH_TIMEOUT(healed().contains("done activate Doubler0") || healed().contains("failed"),
+                              qPrintable(output), 30000);
+    QVERIFY2(healed().contains(QStringLiteral("Doubler0 -> %1").arg(node.value(leftHost))), qPrintable(healed()));
+    QVERIFY2(healed().contains(QStringLiteral("done install %1 1.0.0 on %2").arg(package, node.value(leftHost))),
+             qPrintable(healed()));
+    const long before = received(leftHost);
+    QTRY_VERIFY_WITH_TIMEOUT(received(leftHost) > before + 2, 20000);
+    qInfo("across hosts, from the kill to doubled counts flowing again: %lld ms", sinceKill.elapsed());
+    watcher.terminate();
+    QVERIFY(watcher.waitForFinished(20000));
+    QCOMPARE(watcher.exitCode(), 0);
 }
 
 QTEST_MAIN(TestDeployInstall)

@@ -134,14 +134,10 @@ DeployReport SystemHealer::heal(const QStringList &lost, const QSet<QString> &al
         steps.fail(planStep, why);
         return steps.report();
     }
+    pinPlacement(&m_profile, moved);
     QStringList moves;
-    for (Profile::RtsComponent &component : m_profile.components) {
-        const auto to = moved.constFind(component.instanceName);
-        if (to == moved.constEnd())
-            continue;
-        setPin(&component, *to);
-        moves << QStringLiteral("%1 -> %2").arg(component.instanceName, *to);
-    }
+    for (const QString &orphan : std::as_const(orphans))
+        moves << QStringLiteral("%1 -> %2").arg(orphan, moved.value(orphan));
     steps.finish(planStep, StepStatus::Done, moves.join(QStringLiteral(", ")));
     const DeployPlan plan = planDeploy(m_profile, m_options.deploy);
     const DeployReport deployed = deploySystem(m_profile, plan, m_options.deploy, control);
@@ -159,13 +155,29 @@ DeployReport SystemHealer::heal(const QStringList &lost, const QSet<QString> &al
 QHash<QString, QString> SystemHealer::replan(const QStringList &orphans, const QSet<QString> &alive,
                                              QString *why) const
 {
-    Planner::PlanProblem problem;
     QStringList live;
     for (const QString &node : m_nodes) {
         if (alive.contains(node))
             live.append(node);
     }
-    for (const NodeFactsReading &reading : readNodeFacts(live)) {
+    QHash<QString, QString> fixed = m_placement;
+    for (const QString &orphan : orphans)
+        fixed.remove(orphan);
+    const QHash<QString, QString> placement = planPlacement(m_profile, live, m_options.deploy, fixed, orphans, why);
+    QHash<QString, QString> moved;
+    for (const QString &orphan : orphans) {
+        if (placement.contains(orphan))
+            moved.insert(orphan, placement.value(orphan));
+    }
+    return moved;
+}
+
+QHash<QString, QString> planPlacement(const Profile::RtsProfile &profile, const QStringList &nodes,
+                                      const DeployOptions &options, const QHash<QString, QString> &fixed,
+                                      const QStringList &free, QString *why)
+{
+    Planner::PlanProblem problem;
+    for (const NodeFactsReading &reading : readNodeFacts(nodes)) {
         if (reading.error.isEmpty())
             problem.nodes << reading.facts;
     }
@@ -173,15 +185,17 @@ QHash<QString, QString> SystemHealer::replan(const QStringList &orphans, const Q
         *why = QStringLiteral("no node answers");
         return {};
     }
-    const std::optional<Packages::RemoteIndex> index = readRepositoryIndex(m_options.deploy, why);
+    const std::optional<Packages::RemoteIndex> index = readRepositoryIndex(options, why);
     if (!index)
         return {};
     problem.packages = plannerPackages(*index);
-    const Planner::SystemRequirements requirements = Planner::readRequirements(m_profile, {});
+    const Planner::SystemRequirements requirements = Planner::readRequirements(profile, {});
     problem.links = requirements.links;
     for (Planner::ComponentRequirements c : requirements.components) {
-        // The survivors stay where they run; the orphans may go wherever they fit.
-        c.pinnedNode = orphans.contains(c.instanceName) ? QString() : m_placement.value(c.instanceName);
+        if (free.contains(c.instanceName))
+            c.pinnedNode.clear();
+        else if (fixed.contains(c.instanceName))
+            c.pinnedNode = fixed.value(c.instanceName);
         problem.components << c;
     }
     const Planner::Plan plan = Planner::DeploymentPlanner().plan(problem);
@@ -189,15 +203,22 @@ QHash<QString, QString> SystemHealer::replan(const QStringList &orphans, const Q
         QStringList unmet;
         for (const Planner::Unmet &u : plan.unmet)
             unmet << QStringLiteral("%1: %2").arg(u.instanceName, u.requirement);
-        *why = QStringLiteral("no plan on the nodes left: %1").arg(unmet.join(QStringLiteral("; ")));
+        *why = QStringLiteral("no plan on %1: %2").arg(nodes.join(QLatin1Char(',')), unmet.join(QStringLiteral("; ")));
         return {};
     }
-    QHash<QString, QString> moved;
-    for (const QString &orphan : orphans) {
-        if (const Planner::Placement *p = plan.placement(orphan))
-            moved.insert(orphan, p->node);
+    QHash<QString, QString> placement;
+    for (const Planner::Placement &p : plan.placements)
+        placement.insert(p.instanceName, p.node);
+    return placement;
+}
+
+void pinPlacement(Profile::RtsProfile *profile, const QHash<QString, QString> &placement)
+{
+    for (Profile::RtsComponent &component : profile->components) {
+        const auto node = placement.constFind(component.instanceName);
+        if (node != placement.constEnd())
+            setPin(&component, *node);
     }
-    return moved;
 }
 
 } // namespace Deploy

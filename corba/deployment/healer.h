@@ -10,6 +10,20 @@
 
 namespace Deploy {
 
+/**
+ * Plans where every component of @p profile runs on @p nodes (those that answer; the planner with
+ * each type loadable or installable from @p options' repository): components in @p free may go
+ * anywhere, those in @p fixed stay on their node, the others keep their `deploy.pin` when they
+ * have one. Component instance → node; empty, with the reason in @p why, when there is no plan.
+ * Blocking: call it off the GUI thread.
+ */
+QHash<QString, QString> planPlacement(const Profile::RtsProfile &profile, const QStringList &nodes,
+                                      const DeployOptions &options, const QHash<QString, QString> &fixed,
+                                      const QStringList &free, QString *why);
+
+/// Pins each component of @p placement to its node (`deploy.pin`) in @p profile.
+void pinPlacement(Profile::RtsProfile *profile, const QHash<QString, QString> &placement);
+
 /// How a deployed system is kept as planned.
 struct WatchOptions
 {
