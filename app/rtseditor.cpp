@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rtseditor.h"
 
+#include "planview.h"
 #include "propertiespanel.h"
 #include "repositoryview.h"
 #include "rtcrepository.h"
@@ -10,6 +11,7 @@
 #include "systemoutlinemodel.h"
 #include "systemview.h"
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QDir>
 #include <QHeaderView>
@@ -88,6 +90,7 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     , m_canvas(new SystemEditor::SystemCanvas(document->model(), document->undoStack()))
     , m_properties(new SystemEditor::PropertiesPanel(document->model(), document->undoStack()))
     , m_repositoryView(new SystemEditor::RepositoryView(sharedRepository()))
+    , m_planView(new SystemEditor::PlanView(document->model(), document->undoStack()))
     , m_status(new QLabel)
     , m_splitter(new QSplitter(Qt::Horizontal, this))
 {
@@ -105,7 +108,16 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     centreLayout->setContentsMargins(0, 0, 0, 0);
     centreLayout->setSpacing(0);
     centreLayout->addWidget(buildToolBar());
-    centreLayout->addWidget(m_canvas, 1);
+    // The plan shares the canvas's column: its lanes want the width, the diagram stays in view.
+    auto *canvasAndPlan = new QSplitter(Qt::Vertical);
+    canvasAndPlan->setObjectName(QStringLiteral("systemEditorCentre"));
+    canvasAndPlan->setChildrenCollapsible(false);
+    canvasAndPlan->addWidget(m_canvas);
+    canvasAndPlan->addWidget(m_planView);
+    canvasAndPlan->setStretchFactor(0, 3);
+    canvasAndPlan->setStretchFactor(1, 2);
+    m_planView->hide();
+    centreLayout->addWidget(canvasAndPlan, 1);
     centreLayout->addWidget(m_status);
 
     // The canvas gets the room: the window's left edge belongs to the Name Service dock, so
@@ -135,6 +147,11 @@ RtsEditor::~RtsEditor()
     QSettings().setValue(RepositorySourcesKey, sharedRepository()->sources());
 }
 
+void RtsEditor::showPlanView(bool show)
+{
+    m_planAction->setChecked(show);
+}
+
 QString RtsEditor::statusText() const
 {
     return m_status->text();
@@ -147,6 +164,12 @@ QWidget *RtsEditor::buildToolBar()
     toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     for (const char *name : {"actionAutoLayout", "actionZoomFit"})
         toolBar->addAction(m_canvas->action(QLatin1String(name)));
+    toolBar->addSeparator();
+    m_planAction = toolBar->addAction(tr("Plan"));
+    m_planAction->setObjectName(QStringLiteral("actionShowPlan"));
+    m_planAction->setCheckable(true);
+    m_planAction->setToolTip(tr("Show where the planner puts each component, one lane per node"));
+    connect(m_planAction, &QAction::toggled, m_planView, &QWidget::setVisible);
     return toolBar;
 }
 

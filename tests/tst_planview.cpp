@@ -1,0 +1,333 @@
+// SPDX-License-Identifier: MIT
+// The Plan view (systemeditor/plan/): lanes built from a facts file and a system, a drag that
+// pins a component (and undo that frees it), re-planning that moves the rest, unmet requirements
+// in red, the dry run, and the Deploy button's signal.
+#include "pincommand.h"
+#include "plancarditem.h"
+#include "planscene.h"
+#include "planview.h"
+#include "profileio.h"
+#include "systemmodel.h"
+
+#include <QAction>
+#include <QGraphicsView>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace SystemEditor;
+
+namespace {
+
+const QString Onboard = QStringLiteral("corbaloc::onboard:2810");
+const QString Base = QStringLiteral("corbaloc::base:2810");
+constexpr int PlanTimeoutMs = 30000;
+
+QString dataFile(const QString &name)
+{
+    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/") + name;
+}
+
+std::optional<Profile::LoadedProfile> load(const QString &name)
+{
+    Profile::Diagnostics diagnostics;
+    return Profile::loadProfileFile(dataFile(name), &diagnostics);
+}
+
+/// The lane (its node; empty: not placed) that shows @p instance, or "?" when none does.
+QString laneOf(const PlanView &view, const QString &instance)
+{
+    for (const PlanLane &lane : view.scene()->lanes()) {
+        for (const PlanCard &card : lane.cards) {
+            if (card.instanceName == instance)
+                return lane.node;
+        }
+    }
+    return QStringLiteral("?");
+}
+
+const PlanCard *cardOf(const PlanView &view, const QString &instance)
+{
+    for (const PlanLane &lane : view.scene()->lanes()) {
+        for (const PlanCard &card : lane.cards) {
+            if (card.instanceName == instance)
+                return &card;
+        }
+    }
+    return nullptr;
+}
+
+QString describe(const PlanView &view)
+{
+    QStringList lines {view.statusText()};
+    for (int i = 0; i < view.unmetList()->count(); ++i)
+        lines << view.unmetList()->item(i)->text();
+    return lines.join(QLatin1Char('\n'));
+}
+
+} // namespace
+
+class TestPlanView : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+    void lanesFromFactsFileAndSystem();
+    void brokenFactsFileIsReported();
+    void dragPinsAndUndoFrees();
+    void dropOutsideAnotherLaneChangesNothing();
+    void replanMovesTheRest();
+    void unmetRequirementShownInRed();
+    void pinIsKeptBySavingTheSystem();
+    void dryRunListsWhatWouldHappen();
+    void deployWaitsForTheTransaction();
+    void cancelDropsTheResult();
+
+private:
+    /// Opens @p facts and waits for the plan.
+    bool planOn(const QString &facts);
+    /// Drags the card of @p instance with the mouse and drops it in the lane of @p node.
+    void drag(const QString &instance, int toLane);
+    int laneIndex(const QString &node) const;
+
+    std::unique_ptr<SystemModel> m_model;
+    std::unique_ptr<QUndoStack> m_undo;
+    std::unique_ptr<PlanView> m_view;
+};
+
+void TestPlanView::init()
+{
+    const auto robot = load(QStringLiteral("robot.xml"));
+    const auto viewer = load(QStringLiteral("profiles/Viewer.xml"));
+    QVERIFY(robot && robot->rts && viewer && viewer->rtc);
+    m_model = std::make_unique<SystemModel>();
+    m_model->setProfile(*robot->rts, {{QStringLiteral("Viewer0"), *viewer->rtc}});
+    m_undo = std::make_unique<QUndoStack>();
+    m_view = std::make_unique<PlanView>(m_model.get(), m_undo.get());
+    m_view->resize(1000, 700);
+    m_view->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
+}
+
+void TestPlanView::cleanup()
+{
+    m_view.reset();
+    m_undo.reset();
+    m_model.reset();
+}
+
+bool TestPlanView::planOn(const QString &facts)
+{
+    QSignalSpy planned(m_view.get(), &PlanView::planChanged);
+    if (!m_view->openFactsFile(dataFile(facts)))
+        return false;
+    return planned.wait(PlanTimeoutMs) && !m_view->isBusy();
+}
+
+int TestPlanView::laneIndex(const QString &node) const
+{
+    const QList<PlanLane> &lanes = m_view->scene()->lanes();
+    for (int l = 0; l < lanes.size(); ++l) {
+        if (lanes.at(l).node == node)
+            return l;
+    }
+    return -1;
+}
+
+void TestPlanView::drag(const QString &instance, int toLane)
+{
+    QGraphicsView *view = m_view->graphicsView();
+    PlanCardItem *card = m_view->scene()->card(instance);
+    QVERIFY(card);
+    const QPoint from = view->mapFromScene(card->sceneBoundingRect().center());
+    const QPoint to = view->mapFromScene(PlanScene::cardPosition(toLane, 0)
+                                         + QPointF(PlanCardItem::Width / 2, 4));
+    QTest::mousePress(view->viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(view->viewport(), (from + to) / 2);
+    QTest::mouseMove(view->viewport(), to);
+    QTest::mouseRelease(view->viewport(), Qt::LeftButton, {}, to);
+}
+
+void TestPlanView::lanesFromFactsFileAndSystem()
+{
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    QVERIFY2(m_view->plan().feasible, qPrintable(describe(*m_view)));
+    const QList<PlanLane> &lanes = m_view->scene()->lanes();
+    QCOMPARE(lanes.size(), qsizetype(2));
+    QCOMPARE(lanes.at(0).node, Onboard);
+    QCOMPARE(lanes.at(1).node, Base);
+    // The lidar's driver needs the onboard device; the Python viewer needs the base's Python;
+    // the logger is pinned to the base by the system.
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Lidar0")), Onboard);
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Viewer0")), Base);
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Logger0")), Base);
+    QVERIFY(cardOf(*m_view, QStringLiteral("Logger0"))->pinned);
+    QVERIFY(!cardOf(*m_view, QStringLiteral("Lidar0"))->pinned);
+    QCOMPARE(cardOf(*m_view, QStringLiteral("Ctrl0"))->process, QStringLiteral("Loop0"));
+    QCOMPARE(m_view->unmetList()->count(), 0);
+    // Every component has its card in the scene, where its lane says.
+    for (const QString &instance : m_model->componentIds()) {
+        PlanCardItem *item = m_view->scene()->card(instance);
+        QVERIFY2(item, qPrintable(instance));
+        QCOMPARE(m_view->scene()->laneAt(item->sceneBoundingRect().center()),
+                 laneIndex(laneOf(*m_view, instance)));
+    }
+}
+
+void TestPlanView::brokenFactsFileIsReported()
+{
+    QVERIFY(!m_view->openFactsFile(dataFile(QStringLiteral("nodes-broken.yaml"))));
+    QVERIFY2(m_view->statusText().contains(QLatin1String("nodes-broken.yaml")),
+             qPrintable(m_view->statusText()));
+    QVERIFY(m_view->facts().isEmpty());
+    QVERIFY(!m_view->isBusy());
+}
+
+void TestPlanView::dragPinsAndUndoFrees()
+{
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Onboard);
+    drag(QStringLiteral("Filter0"), laneIndex(Base));
+    QTRY_COMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), Base);
+    QCOMPARE(m_undo->count(), 1);
+    // Shown where it is pinned at once, before any re-planning; the plan is out of date.
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Base);
+    QVERIFY(cardOf(*m_view, QStringLiteral("Filter0"))->pinned);
+    QVERIFY(m_view->isOutOfDate());
+    m_undo->undo();
+    QCOMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), QString());
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Onboard);
+    QVERIFY(!cardOf(*m_view, QStringLiteral("Filter0"))->pinned);
+    m_undo->redo();
+    QCOMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), Base);
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Base);
+}
+
+void TestPlanView::dropOutsideAnotherLaneChangesNothing()
+{
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    drag(QStringLiteral("Filter0"), laneIndex(Onboard));
+    QTest::qWait(0);
+    QCoreApplication::processEvents();
+    QCOMPARE(m_undo->count(), 0);
+    QCOMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), QString());
+    PlanCardItem *card = m_view->scene()->card(QStringLiteral("Filter0"));
+    QCOMPARE(m_view->scene()->laneAt(card->sceneBoundingRect().center()), laneIndex(Onboard));
+}
+
+void TestPlanView::replanMovesTheRest()
+{
+    QVERIFY2(planOn(QStringLiteral("twins.yaml")), qPrintable(describe(*m_view)));
+    // Alike nodes: the lidar's chain goes where its pinned logger is, so nothing crosses.
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Lidar0")), Base);
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Base);
+    drag(QStringLiteral("Lidar0"), laneIndex(Onboard));
+    QTRY_COMPARE(pinnedNode(*m_model, QStringLiteral("Lidar0")), Onboard);
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Base);
+    QSignalSpy planned(m_view.get(), &PlanView::planChanged);
+    m_view->replan();
+    QVERIFY(m_view->isBusy());
+    QVERIFY(planned.wait(PlanTimeoutMs));
+    QVERIFY2(m_view->plan().feasible, qPrintable(describe(*m_view)));
+    QVERIFY(!m_view->isOutOfDate());
+    // The 1 kHz scan connector pulls the filter after its pinned source.
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Lidar0")), Onboard);
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Onboard);
+    QCOMPARE(m_view->plan().placement(QStringLiteral("Filter0"))->node, Onboard);
+}
+
+void TestPlanView::unmetRequirementShownInRed()
+{
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    drag(QStringLiteral("Lidar0"), laneIndex(Base));
+    QTRY_COMPARE(pinnedNode(*m_model, QStringLiteral("Lidar0")), Base);
+    QSignalSpy planned(m_view.get(), &PlanView::planChanged);
+    m_view->replan();
+    QVERIFY(planned.wait(PlanTimeoutMs));
+    QVERIFY(!m_view->plan().feasible);
+    // Pinned where its lidar is not: the planner says why, and the view shows it in red.
+    QVERIFY(m_view->unmetList()->count() >= 1);
+    QListWidgetItem *first = m_view->unmetList()->item(0);
+    QVERIFY2(first->text().startsWith(QLatin1String("Lidar0: ")), qPrintable(first->text()));
+    QCOMPARE(first->foreground().color(), QColor(200, 30, 30));
+    const PlanCard *card = cardOf(*m_view, QStringLiteral("Lidar0"));
+    QVERIFY(card);
+    QVERIFY(!card->unmet.isEmpty());
+    QVERIFY(cardOf(*m_view, QStringLiteral("Viewer0"))->unmet.isEmpty());
+    QVERIFY2(m_view->statusText().contains(QLatin1String("No plan")),
+             qPrintable(m_view->statusText()));
+}
+
+void TestPlanView::pinIsKeptBySavingTheSystem()
+{
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    drag(QStringLiteral("Filter0"), laneIndex(Base));
+    QTRY_COMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), Base);
+    for (const Profile::FileFormat format : {Profile::FileFormat::Xml, Profile::FileFormat::Yaml}) {
+        const QByteArray saved = Profile::serializeRtsProfile(m_model->profile(), format);
+        Profile::Diagnostics diagnostics;
+        const auto loaded = Profile::loadProfileData(saved, QStringLiteral("saved"), &diagnostics);
+        QVERIFY(loaded && loaded->rts);
+        SystemModel reloaded(*loaded->rts);
+        QCOMPARE(pinnedNode(reloaded, QStringLiteral("Filter0")), Base);
+        QCOMPARE(pinnedNode(reloaded, QStringLiteral("Lidar0")), QString());
+    }
+}
+
+void TestPlanView::dryRunListsWhatWouldHappen()
+{
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    m_view->dryRun();
+    QListWidget *list = m_view->dryRunList();
+    QCOMPARE(list->count(), m_model->componentIds().size() + m_view->plan().installs.size());
+    QStringList lines;
+    for (int i = 0; i < list->count(); ++i)
+        lines << list->item(i)->text();
+    QVERIFY2(
+        lines.contains(
+            QStringLiteral("Create Lidar0 (ConsoleIn) on %1 in a process of its own").arg(Onboard)),
+        qPrintable(lines.join(QLatin1Char('\n'))));
+    QVERIFY2(lines.contains(
+                 QStringLiteral("Create Ctrl0 (Controller) on %1 in process Loop0").arg(Onboard)),
+             qPrintable(lines.join(QLatin1Char('\n'))));
+}
+
+void TestPlanView::deployWaitsForTheTransaction()
+{
+    QAction *deploy = m_view->deployAction();
+    QVERIFY(!deploy->isEnabled());
+    QVERIFY(!deploy->toolTip().isEmpty());
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    QVERIFY(!deploy->isEnabled());
+    QSignalSpy requested(m_view.get(), &PlanView::deployRequested);
+    m_view->setDeployAvailable(true);
+    QVERIFY(deploy->isEnabled());
+    deploy->trigger();
+    QCOMPARE(requested.size(), 1);
+    QCOMPARE(requested.first().first().value<Planner::Plan>().placements.size(),
+             m_view->plan().placements.size());
+    // A system changed since the plan is not deployed as planned.
+    m_undo->push(new PinComponentCommand(m_model.get(), QStringLiteral("Filter0"), Base));
+    QVERIFY(!deploy->isEnabled());
+}
+
+void TestPlanView::cancelDropsTheResult()
+{
+    QVERIFY(m_view->openFactsFile(dataFile(QStringLiteral("robot-nodes.yaml"))));
+    QVERIFY(m_view->isBusy());
+    QSignalSpy planned(m_view.get(), &PlanView::planChanged);
+    m_view->cancel();
+    QVERIFY(!m_view->isBusy());
+    QVERIFY2(m_view->statusText().contains(QLatin1String("Cancelled")),
+             qPrintable(m_view->statusText()));
+    // The worker still ends; its plan is not shown.
+    QTRY_COMPARE_WITH_TIMEOUT(m_view->runningWorkers(), 0, PlanTimeoutMs);
+    QCOMPARE(planned.size(), 0);
+    QVERIFY(m_view->plan().placements.isEmpty());
+}
+
+QTEST_MAIN(TestPlanView)
+#include "tst_planview.moc"
