@@ -92,6 +92,7 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     , m_repositoryView(new SystemEditor::RepositoryView(sharedRepository()))
     , m_planView(new SystemEditor::PlanView(document->model(), document->undoStack()))
     , m_status(new QLabel)
+    , m_centre(new QSplitter(Qt::Vertical))
     , m_splitter(new QSplitter(Qt::Horizontal, this))
 {
     m_properties->followScene(m_canvas->scene());
@@ -109,15 +110,12 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     centreLayout->setSpacing(0);
     centreLayout->addWidget(buildToolBar());
     // The plan shares the canvas's column: its lanes want the width, the diagram stays in view.
-    auto *canvasAndPlan = new QSplitter(Qt::Vertical);
-    canvasAndPlan->setObjectName(QStringLiteral("systemEditorCentre"));
-    canvasAndPlan->setChildrenCollapsible(false);
-    canvasAndPlan->addWidget(m_canvas);
-    canvasAndPlan->addWidget(m_planView);
-    canvasAndPlan->setStretchFactor(0, 3);
-    canvasAndPlan->setStretchFactor(1, 2);
+    m_centre->setObjectName(QStringLiteral("systemEditorCentre"));
+    m_centre->setChildrenCollapsible(false);
+    m_centre->addWidget(m_canvas);
+    m_centre->addWidget(m_planView);
     m_planView->hide();
-    centreLayout->addWidget(canvasAndPlan, 1);
+    centreLayout->addWidget(m_centre, 1);
     centreLayout->addWidget(m_status);
 
     // The canvas gets the room: the window's left edge belongs to the Name Service dock, so
@@ -169,7 +167,12 @@ QWidget *RtsEditor::buildToolBar()
     m_planAction->setObjectName(QStringLiteral("actionShowPlan"));
     m_planAction->setCheckable(true);
     m_planAction->setToolTip(tr("Show where the planner puts each component, one lane per node"));
-    connect(m_planAction, &QAction::toggled, m_planView, &QWidget::setVisible);
+    connect(m_planAction, &QAction::toggled, this, [this](bool show) {
+        m_planView->setVisible(show);
+        // Opened, the plan gets most of the column: its lanes list components downwards.
+        if (show)
+            m_centre->setSizes({m_centre->height() * 2 / 5, m_centre->height() * 3 / 5});
+    });
     return toolBar;
 }
 

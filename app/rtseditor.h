@@ -73,6 +73,7 @@ private:
     SystemEditor::PlanView *m_planView;
     QAction *m_planAction = nullptr;
     QLabel *m_status;
+    QSplitter *m_centre; ///< the canvas above the Plan view
     QSplitter *m_splitter;
 };
 

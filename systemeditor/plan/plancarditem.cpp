@@ -53,12 +53,14 @@ void PlanCardItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QW
     font.setBold(true);
     painter->setFont(font);
     painter->setPen(unmet ? UnmetColour : QColor(20, 20, 20));
-    const QString pin = m_card.pinned ? QStringLiteral("\U0001F4CC ") : QString();
-    painter->drawText(rect().adjusted(8, 3, -8, -Height / 2), Qt::AlignLeft | Qt::AlignVCenter,
-                      pin + m_card.instanceName);
+    painter->drawText(rect().adjusted(8, 3, -24, -Height / 2), Qt::AlignLeft | Qt::AlignVCenter,
+                      m_card.instanceName);
+    if (m_card.pinned)
+        paintPin(painter);
     font.setBold(false);
     painter->setFont(font);
     painter->setPen(QColor(70, 70, 70));
+    painter->setBrush(Qt::NoBrush);
     QString detail = m_card.typeName;
     if (!m_card.process.isEmpty())
         detail += QStringLiteral(" · ") + m_card.process;
@@ -66,6 +68,17 @@ void PlanCardItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QW
         detail += QStringLiteral(" · +") + m_card.installPackage;
     painter->drawText(rect().adjusted(8, Height / 2 - 2, -8, -3), Qt::AlignLeft | Qt::AlignVCenter,
                       painter->fontMetrics().elidedText(detail, Qt::ElideRight, int(Width - 16)));
+}
+
+/// A drawing pin in the top right corner: the system keeps the component on this node.
+void PlanCardItem::paintPin(QPainter *painter) const
+{
+    const QPointF head(Width - 14, 11);
+    painter->setPen(QPen(QColor(60, 60, 60), 1.5));
+    painter->drawLine(head, head + QPointF(0, 11));
+    painter->setPen(QPen(QColor(120, 20, 20), 1));
+    painter->setBrush(QColor(215, 50, 50));
+    painter->drawEllipse(head, 5, 5);
 }
 
 } // namespace SystemEditor

@@ -29,6 +29,7 @@ public:
 
 private:
     QString toolTipText() const;
+    void paintPin(QPainter *painter) const;
 
     PlanCard m_card;
     int m_lane;

@@ -19,6 +19,7 @@
 #include <QListWidget>
 #include <QProgressBar>
 #include <QSplitter>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QThread>
 #include <QToolBar>
@@ -101,11 +102,17 @@ void PlanView::buildUi()
     m_details->setDocumentMode(true);
     m_details->addTab(m_unmetList, tr("Unmet Requirements"));
     m_details->addTab(m_dryRunList, tr("Dry Run"));
-    auto *splitter = new QSplitter(Qt::Vertical);
+    // Whole tab titles, as the editor's other tabs show them.
+    m_details->setUsesScrollButtons(false);
+    m_details->tabBar()->setElideMode(Qt::ElideNone);
+    m_details->setMinimumWidth(m_details->tabBar()->sizeHint().width());
+    // The lanes take the height (a lane is a column of components); the lists sit beside them.
+    auto *splitter = new QSplitter(Qt::Horizontal);
     splitter->addWidget(m_view);
     splitter->addWidget(m_details);
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 1);
+    splitter->setChildrenCollapsible(false);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("planStatus"));
     m_status->setWordWrap(true);
@@ -208,7 +215,7 @@ void PlanView::setFacts(const QList<Planner::NodeFacts> &facts, const QStringLis
 {
     m_facts = facts;
     m_factErrors = errors;
-    m_message = errors.isEmpty() ? tr("%n node(s) read.", nullptr, int(facts.size()))
+    m_message = errors.isEmpty() ? tr("Nodes read: %1.").arg(facts.size())
                                  : tr("Not read: %1").arg(errors.join(QStringLiteral("; ")));
     emit factsChanged();
     replan();
@@ -349,11 +356,12 @@ QString PlanView::planSummary() const
     if (!m_planned)
         return tr("Not planned yet.");
     if (!m_plan.feasible)
-        return tr("No plan: %n requirement(s) that no node meets, in red.", nullptr,
-                  int(m_plan.unmet.size()));
-    QString summary = tr("%n component(s) placed", nullptr, int(m_plan.placements.size()))
-        + tr(", %n install(s)", nullptr, int(m_plan.installs.size()))
-        + tr(", %1 Hz between hosts; solved in %2 ms.")
+        return tr("No plan: requirements that no node meets, in red: %1.").arg(m_plan.unmet.size());
+    QString summary
+        = tr("Components placed: %1; packages to install: %2; connectors between hosts: "
+             "%3 Hz; solved in %4 ms.")
+              .arg(m_plan.placements.size())
+              .arg(m_plan.installs.size())
               .arg(m_plan.crossHostRate)
               .arg(m_plan.solveMs, 0, 'f', 0);
     if (!m_plan.optimal)
