@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The Plan view (systemeditor/plan/): lanes built from a facts file and a system, a drag that
 // pins a component (and undo that frees it), re-planning that moves the rest, unmet requirements
-// in red, the dry run, and the Deploy button's signal.
+// in red, installs from a component repository, the dry run, and the Deploy button's signal.
+#include "nativerepository.h"
 #include "pincommand.h"
 #include "plancarditem.h"
 #include "planscene.h"
@@ -10,9 +11,11 @@
 #include "systemmodel.h"
 
 #include <QAction>
+#include <QFile>
 #include <QGraphicsView>
 #include <QListWidget>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
@@ -83,6 +86,7 @@ private slots:
     void unmetRequirementShownInRed();
     void pinIsKeptBySavingTheSystem();
     void dryRunListsWhatWouldHappen();
+    void installsFromRepositoryShownInLanes();
     void deployWaitsForTheTransaction();
     void cancelDropsTheResult();
 
@@ -293,6 +297,46 @@ void TestPlanView::dryRunListsWhatWouldHappen()
     QVERIFY2(lines.contains(
                  QStringLiteral("Create Ctrl0 (Controller) on %1 in process Loop0").arg(Onboard)),
              qPrintable(lines.join(QLatin1Char('\n'))));
+}
+
+// Probes of a type no node loads: with the repository, it is installed on the node of this
+// machine's architecture, and the lanes and the dry run say so.
+void TestPlanView::installsFromRepositoryShownInLanes()
+{
+    const auto probes = load(QStringLiteral("probe.xml"));
+    QVERIFY(probes && probes->rts);
+    m_model->setProfile(*probes->rts);
+    QTemporaryDir dir;
+    QString arch;
+    QString error;
+    const QString repo = TestSupport::makeNativeRepository(dir.path(), &arch, &error);
+    QVERIFY2(!repo.isEmpty(), qPrintable(error));
+    const QString facts = dir.filePath(QStringLiteral("facts.yaml"));
+    QFile file(facts);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QStringLiteral("- {name: other, os.name: Linux, os.arch: riscv64, "
+                              "supported_languages: C++}\n"
+                              "- {name: native, os.name: Linux, os.arch: %1, "
+                              "supported_languages: C++}\n")
+                   .arg(arch)
+                   .toUtf8());
+    file.close();
+    QSignalSpy planned(m_view.get(), &PlanView::planChanged);
+    QVERIFY(m_view->openFactsFile(facts));
+    QVERIFY(planned.wait(PlanTimeoutMs));
+    QVERIFY(!m_view->plan().feasible);
+    m_view->openRepository(repo);
+    QTRY_COMPARE_WITH_TIMEOUT(planned.size(), 2, PlanTimeoutMs);
+    QVERIFY2(m_view->plan().feasible, qPrintable(describe(*m_view)));
+    const QString package = QStringLiteral("rtc-rtstudiotests-packaging-native");
+    const PlanLane &native = m_view->scene()->lanes().at(laneIndex(QStringLiteral("native")));
+    QCOMPARE(native.installs, QStringList {package + QStringLiteral(" 2.0.0")});
+    QCOMPARE(native.cards.size(), qsizetype(2));
+    QCOMPARE(native.cards.first().installPackage, package);
+    QVERIFY(m_view->scene()->lanes().at(laneIndex(QStringLiteral("other"))).installs.isEmpty());
+    m_view->dryRun();
+    QCOMPARE(m_view->dryRunList()->item(0)->text(),
+             QStringLiteral("Install %1 2.0.0 on native").arg(package));
 }
 
 void TestPlanView::deployWaitsForTheTransaction()

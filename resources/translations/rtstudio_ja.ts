@@ -4614,18 +4614,18 @@ Installs: %1</source>
 <context>
     <name>SystemEditor::PlanView</name>
     <message>
-        <location filename="../../systemeditor/plan/planview.cpp" line="+103"/>
+        <location filename="../../systemeditor/plan/planview.cpp" line="+111"/>
         <source>Unmet Requirements</source>
         <translation>満たされない要件</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Dry Run</source>
         <translation>ドライラン</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-6"/>
         <source>Open Facts…</source>
         <translation>ファクトを開く…</translation>
     </message>
@@ -4633,6 +4633,11 @@ Installs: %1</source>
         <location line="+1"/>
         <source>Read Managers…</source>
         <translation>マネージャから読む…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Repository…</source>
+        <translation>リポジトリ…</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4658,6 +4663,26 @@ Installs: %1</source>
         <location line="+1"/>
         <source>Node facts (*.yaml *.yml *.json);;All files (*)</source>
         <translation>ノードのファクト (*.yaml *.yml *.json);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Component Repository</source>
+        <translation>コンポーネントリポジトリ</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Reading the repository…</source>
+        <translation>リポジトリを読んでいます…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Could not read the repository: %1</source>
+        <translation>リポジトリを読めませんでした：%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Packages in the repository: %1.</source>
+        <translation>リポジトリのパッケージ：%1。</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -4710,7 +4735,7 @@ Installs: %1</source>
         <translation>デプロイするものはありません：計画がありません。</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Install, create and connect the components as planned</source>
         <translation>計画どおりにコンポーネントをインストール・生成・接続します</translation>
     </message>

@@ -7,6 +7,7 @@
 #include "pincommand.h"
 #include "planlanes.h"
 #include "planner.h"
+#include "planrepository.h"
 #include "planscene.h"
 #include "requirements.h"
 #include "systemmodel.h"
@@ -36,22 +37,29 @@ namespace {
 constexpr int ManagerCallTimeoutMs = 3000;
 const QColor UnmetColour(200, 30, 30);
 
-/// The planner's input: the system's requirements (its RTC profiles as the model knows them).
-Planner::PlanProblem planProblem(const SystemModel &model, const QList<Planner::NodeFacts> &nodes)
+/// The planner's input: the system's requirements from the RTC profiles of the repository's
+/// packages and, winning over them, those the model knows.
+Planner::PlanProblem planProblem(const SystemModel &model, const QList<Planner::NodeFacts> &nodes,
+                                 const Deploy::PlanRepository &repository)
 {
-    QHash<QString, Profile::RtcProfile> types;
-    for (const Profile::RtcProfile &rtc : model.rtcProfiles()) {
-        types.insert(rtc.id, rtc);
-        types.insert(rtc.basicInfo.name, rtc);
-    }
+    QHash<QString, Profile::RtcProfile> types = repository.typeProfiles;
+    for (const Profile::RtcProfile &rtc : model.rtcProfiles())
+        Planner::addTypeProfile(rtc, &types);
     const Planner::SystemRequirements requirements
         = Planner::readRequirements(model.profile(), types);
     Planner::PlanProblem problem;
     problem.components = requirements.components;
     problem.links = requirements.links;
     problem.nodes = nodes;
+    problem.packages = repository.packages;
     return problem;
 }
+
+struct RepositoryReading
+{
+    std::optional<Deploy::PlanRepository> repository;
+    QString error;
+};
 
 struct FactsReading
 {
@@ -143,6 +151,7 @@ QWidget *PlanView::buildToolBar()
     };
     m_openFacts = add(tr("Open Facts…"), "planOpenFacts", &PlanView::askFactsFile);
     m_readManagers = add(tr("Read Managers…"), "planReadManagers", &PlanView::askManagers);
+    m_openRepository = add(tr("Repository…"), "planOpenRepository", &PlanView::askRepository);
     toolBar->addSeparator();
     m_replan = add(tr("Re-plan"), "planReplan", &PlanView::replan);
     m_cancel = add(tr("Cancel"), "planCancel", &PlanView::cancel);
@@ -160,6 +169,36 @@ void PlanView::askFactsFile()
                                        tr("Node facts (*.yaml *.yml *.json);;All files (*)"));
     if (!path.isEmpty())
         openFactsFile(path);
+}
+
+void PlanView::askRepository()
+{
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Component Repository"));
+    if (!folder.isEmpty())
+        openRepository(folder);
+}
+
+void PlanView::openRepository(const QString &folder)
+{
+    runInBackground<RepositoryReading>(
+        tr("Reading the repository…"),
+        [folder] {
+            RepositoryReading reading;
+            QStringList warnings;
+            reading.repository = Deploy::readPlanRepository(folder, &warnings, &reading.error);
+            return reading;
+        },
+        [this, folder](const RepositoryReading &reading) {
+            if (!reading.repository) {
+                m_message = tr("Could not read the repository: %1").arg(reading.error);
+                refresh();
+                return;
+            }
+            m_repository = *reading.repository;
+            m_repositoryFolder = folder;
+            m_message = tr("Packages in the repository: %1.").arg(m_repository.packages.size());
+            replan();
+        });
 }
 
 void PlanView::askManagers()
@@ -228,7 +267,7 @@ void PlanView::replan()
         refresh();
         return;
     }
-    const Planner::PlanProblem problem = planProblem(*m_model, m_facts);
+    const Planner::PlanProblem problem = planProblem(*m_model, m_facts, m_repository);
     runInBackground<Planner::Plan>(
         tr("Planning…"), [problem] { return Planner::DeploymentPlanner().plan(problem); },
         [this](const Planner::Plan &plan) { setPlan(plan); });
@@ -333,6 +372,7 @@ void PlanView::updateActions()
 {
     m_openFacts->setEnabled(!m_busy);
     m_readManagers->setEnabled(!m_busy);
+    m_openRepository->setEnabled(!m_busy);
     m_replan->setEnabled(!m_busy && !m_facts.isEmpty());
     m_cancel->setEnabled(m_busy);
     m_dryRun->setEnabled(!m_busy && m_planned);

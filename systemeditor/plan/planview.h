@@ -3,6 +3,7 @@
 
 #include "nodefacts.h"
 #include "plan.h"
+#include "planrepository.h"
 
 #include <QList>
 #include <QWidget>
@@ -26,7 +27,8 @@ class SystemModel;
  *
  * The nodes come from a facts file (openFactsFile(), as `rtctl plan --facts` reads it) or from
  * live managers (readFactsFromManagers(): a worker thread, every remote call under a timeout; the
- * GUI thread never calls a manager). Re-plan runs the planner on a worker thread with a busy bar
+ * GUI thread never calls a manager); a component repository (openRepository()) offers packages
+ * to install. Re-plan runs the planner on a worker thread with a busy bar
  * and Cancel; lanes show the components placed on each node, what gets installed there, and in
  * red the requirements no node meets with the planner's explanation (also listed below the
  * lanes). Dragging a component to another lane pins it there: an undoable command on the
@@ -46,6 +48,11 @@ public:
     bool openFactsFile(const QString &path);
     /// Reads the nodes' facts from the managers at @p addresses, off the GUI thread.
     void readFactsFromManagers(const QStringList &addresses);
+    /**
+     * Plans with the component repository folder @p folder (read off the GUI thread): its packages
+     * can be installed on the nodes, and their RTC profiles give their types' requirements.
+     */
+    void openRepository(const QString &folder);
     /// Re-plans the system on the current nodes, off the GUI thread.
     void replan();
     /// Stops waiting for the running planning or reading; its result is dropped.
@@ -83,6 +90,7 @@ private:
     QWidget *buildToolBar();
     void askFactsFile();
     void askManagers();
+    void askRepository();
     void setFacts(const QList<Planner::NodeFacts> &facts, const QStringList &errors);
     void setPlan(const Planner::Plan &plan);
     void systemChanged();
@@ -106,12 +114,15 @@ private:
     QListWidget *m_dryRunList = nullptr;
     QAction *m_openFacts = nullptr;
     QAction *m_readManagers = nullptr;
+    QAction *m_openRepository = nullptr;
     QAction *m_replan = nullptr;
     QAction *m_cancel = nullptr;
     QAction *m_dryRun = nullptr;
     QAction *m_deploy = nullptr;
     QList<Planner::NodeFacts> m_facts;
     QStringList m_factErrors; ///< managers that did not answer
+    Deploy::PlanRepository m_repository;
+    QString m_repositoryFolder;
     Planner::Plan m_plan;
     bool m_planned = false;
     bool m_outOfDate = false;
