@@ -4710,12 +4710,12 @@ Installs: %1</source>
         <translation>読んだノード：%1。</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+163"/>
         <source>Not read: %1</source>
         <translation>読めなかったもの：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-155"/>
         <source>Open a facts file or read the managers to plan on their nodes.</source>
         <translation>ファクトのファイルを開くかマネージャから読むと、そのノードへの配置を計画します。</translation>
     </message>

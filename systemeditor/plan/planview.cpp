@@ -254,8 +254,7 @@ void PlanView::setFacts(const QList<Planner::NodeFacts> &facts, const QStringLis
 {
     m_facts = facts;
     m_factErrors = errors;
-    m_message = errors.isEmpty() ? tr("Nodes read: %1.").arg(facts.size())
-                                 : tr("Not read: %1").arg(errors.join(QStringLiteral("; ")));
+    m_message = tr("Nodes read: %1.").arg(facts.size());
     emit factsChanged();
     replan();
 }
@@ -416,6 +415,9 @@ QString PlanView::statusText() const
         parts << tr("The system changed since: re-plan to see where everything goes now.");
     if (!m_message.isEmpty())
         parts << m_message;
+    // Until other facts are read: the plan is without these nodes.
+    if (!m_factErrors.isEmpty())
+        parts << tr("Not read: %1").arg(m_factErrors.join(QStringLiteral("; ")));
     return parts.join(QLatin1Char(' '));
 }
 
