@@ -8,6 +8,7 @@
 #include "planscene.h"
 #include "planview.h"
 #include "profileio.h"
+#include "requirements.h"
 #include "systemmodel.h"
 
 #include <QAction>
@@ -18,6 +19,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
+
+#include <algorithm>
 
 using namespace SystemEditor;
 
@@ -82,6 +85,7 @@ private slots:
     void brokenFactsFileIsReported();
     void dragPinsAndUndoFrees();
     void dropOutsideAnotherLaneChangesNothing();
+    void freeingUndoesToThePin();
     void replanMovesTheRest();
     void unmetRequirementShownInRed();
     void pinIsKeptBySavingTheSystem();
@@ -220,6 +224,27 @@ void TestPlanView::dropOutsideAnotherLaneChangesNothing()
     QCOMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), QString());
     PlanCardItem *card = m_view->scene()->card(QStringLiteral("Filter0"));
     QCOMPARE(m_view->scene()->laneAt(card->sceneBoundingRect().center()), laneIndex(Onboard));
+}
+
+// The command with no node frees a component: the system's own pin comes back on undo.
+void TestPlanView::freeingUndoesToThePin()
+{
+    const QString logger = QStringLiteral("Logger0");
+    QCOMPARE(pinnedNode(*m_model, logger), Base);
+    m_undo->push(new PinComponentCommand(m_model.get(), logger, QString()));
+    QCOMPARE(m_undo->undoText(), QStringLiteral("Free Logger0"));
+    QCOMPARE(pinnedNode(*m_model, logger), QString());
+    const Profile::RtsComponent *component = m_model->component(logger);
+    QVERIFY(
+        std::none_of(component->properties.cbegin(), component->properties.cend(),
+                     [](const Profile::RtsProperty &p) { return p.name == Planner::Key::Pin; }));
+    // Its other properties stay.
+    QCOMPARE(Profile::rtsPropertyValue(component->properties, QStringLiteral("deploy.cpu_share")),
+             QStringLiteral("0.25"));
+    m_undo->undo();
+    QCOMPARE(pinnedNode(*m_model, logger), Base);
+    m_undo->redo();
+    QCOMPARE(pinnedNode(*m_model, logger), QString());
 }
 
 void TestPlanView::replanMovesTheRest()
