@@ -38,15 +38,16 @@ constexpr int ManagerCallTimeoutMs = 3000;
 const QColor UnmetColour(200, 30, 30);
 
 /// The planner's input: the system's requirements from the RTC profiles of the repository's
-/// packages and, winning over them, those the model knows.
+/// packages and, winning over them, those the model knows; what could not be read in @p warnings.
 Planner::PlanProblem planProblem(const SystemModel &model, const QList<Planner::NodeFacts> &nodes,
-                                 const Deploy::PlanRepository &repository)
+                                 const Deploy::PlanRepository &repository, QStringList *warnings)
 {
     QHash<QString, Profile::RtcProfile> types = repository.typeProfiles;
     for (const Profile::RtcProfile &rtc : model.rtcProfiles())
         Planner::addTypeProfile(rtc, &types);
     const Planner::SystemRequirements requirements
         = Planner::readRequirements(model.profile(), types);
+    *warnings = requirements.warnings;
     Planner::PlanProblem problem;
     problem.components = requirements.components;
     problem.links = requirements.links;
@@ -104,8 +105,13 @@ void PlanView::buildUi()
     m_view->setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing);
     m_unmetList = new QListWidget;
     m_unmetList->setObjectName(QStringLiteral("planUnmet"));
+    // Explanations are sentences: whole, not cut at the list's edge.
+    m_unmetList->setWordWrap(true);
+    m_unmetList->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_dryRunList = new QListWidget;
     m_dryRunList->setObjectName(QStringLiteral("planDryRun"));
+    m_dryRunList->setWordWrap(true);
+    m_dryRunList->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_details = new QTabWidget;
     m_details->setDocumentMode(true);
     m_details->addTab(m_unmetList, tr("Unmet Requirements"));
@@ -266,9 +272,16 @@ void PlanView::replan()
         refresh();
         return;
     }
-    const Planner::PlanProblem problem = planProblem(*m_model, m_facts, m_repository);
+    QStringList warnings;
+    const Planner::PlanProblem problem = planProblem(*m_model, m_facts, m_repository, &warnings);
     runInBackground<Planner::Plan>(
-        tr("Planning…"), [problem] { return Planner::DeploymentPlanner().plan(problem); },
+        tr("Planning…"),
+        [problem, warnings] {
+            Planner::Plan plan = Planner::DeploymentPlanner().plan(problem);
+            // Shown with the plan: a type without its RTC profile has fewer requirements.
+            plan.warnings << warnings;
+            return plan;
+        },
         [this](const Planner::Plan &plan) { setPlan(plan); });
 }
 
