@@ -15,6 +15,7 @@
 #include <QFile>
 #include <QGraphicsView>
 #include <QListWidget>
+#include <QMenu>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -86,6 +87,7 @@ private slots:
     void dragPinsAndUndoFrees();
     void dropOutsideAnotherLaneChangesNothing();
     void freeingUndoesToThePin();
+    void cardMenuPinsHereAndFrees();
     void replanMovesTheRest();
     void unmetRequirementShownInRed();
     void pinIsKeptBySavingTheSystem();
@@ -252,6 +254,30 @@ void TestPlanView::freeingUndoesToThePin()
     QCOMPARE(pinnedNode(*m_model, logger), Base);
     m_undo->redo();
     QCOMPARE(pinnedNode(*m_model, logger), QString());
+}
+
+void TestPlanView::cardMenuPinsHereAndFrees()
+{
+    QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
+    std::unique_ptr<QMenu> menu(m_view->scene()->cardMenu(QStringLiteral("Filter0")));
+    QVERIFY(menu);
+    auto *pinHere = menu->findChild<QAction *>(QStringLiteral("planPinHere"));
+    auto *free = menu->findChild<QAction *>(QStringLiteral("planFree"));
+    QVERIFY(pinHere && free);
+    QVERIFY(pinHere->isEnabled());
+    QVERIFY(!free->isEnabled());
+    pinHere->trigger();
+    QCOMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), Onboard);
+    QCOMPARE(laneOf(*m_view, QStringLiteral("Filter0")), Onboard);
+    menu.reset(m_view->scene()->cardMenu(QStringLiteral("Logger0")));
+    free = menu->findChild<QAction *>(QStringLiteral("planFree"));
+    QVERIFY(free->isEnabled());
+    QVERIFY(!menu->findChild<QAction *>(QStringLiteral("planPinHere"))->isEnabled());
+    free->trigger();
+    QCOMPARE(pinnedNode(*m_model, QStringLiteral("Logger0")), QString());
+    QVERIFY(!cardOf(*m_view, QStringLiteral("Logger0"))->pinned);
+    QCOMPARE(m_undo->count(), 2);
+    QVERIFY(!m_view->scene()->cardMenu(QStringLiteral("Nobody")));
 }
 
 void TestPlanView::replanMovesTheRest()

@@ -4592,7 +4592,7 @@
 <context>
     <name>SystemEditor::PlanScene</name>
     <message>
-        <location filename="../../systemeditor/plan/planscene.cpp" line="+49"/>
+        <location filename="../../systemeditor/plan/planscene.cpp" line="+52"/>
         <source>Not placed</source>
         <translation>未配置</translation>
     </message>
@@ -4610,11 +4610,21 @@ Installs: %1</source>
         <translation>
 インストール：%1</translation>
     </message>
+    <message>
+        <location line="+83"/>
+        <source>Pin to %1</source>
+        <translation>%1 に固定</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Free (Let the Planner Choose)</source>
+        <translation>固定を解除（プランナーに任せる）</translation>
+    </message>
 </context>
 <context>
     <name>SystemEditor::PlanView</name>
     <message>
-        <location filename="../../systemeditor/plan/planview.cpp" line="+111"/>
+        <location filename="../../systemeditor/plan/planview.cpp" line="+117"/>
         <source>Unmet Requirements</source>
         <translation>満たされない要件</translation>
     </message>
@@ -4710,22 +4720,22 @@ Installs: %1</source>
         <translation>読んだノード：%1。</translation>
     </message>
     <message>
-        <location line="+163"/>
+        <location line="+170"/>
         <source>Not read: %1</source>
         <translation>読めなかったもの：%1</translation>
     </message>
     <message>
-        <location line="-155"/>
+        <location line="-162"/>
         <source>Open a facts file or read the managers to plan on their nodes.</source>
         <translation>ファクトのファイルを開くかマネージャから読むと、そのノードへの配置を計画します。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Planning…</source>
         <translation>計画しています…</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+36"/>
         <source>Cancelled.</source>
         <translation>キャンセルしました。</translation>
     </message>

@@ -3,12 +3,15 @@
 
 #include "plancarditem.h"
 
+#include <QGraphicsSceneContextMenuEvent>
 #include <QGraphicsSceneMouseEvent>
 #include <QGraphicsSimpleTextItem>
+#include <QMenu>
 #include <QTimer>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 namespace SystemEditor {
@@ -123,6 +126,37 @@ void PlanScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
     const QString instance = dragged->card().instanceName;
     const QString node = m_lanes.at(lane).node;
     QTimer::singleShot(0, this, [this, instance, node] { emit pinRequested(instance, node); });
+}
+
+QMenu *PlanScene::cardMenu(const QString &instanceName)
+{
+    const PlanCardItem *item = card(instanceName);
+    if (!item)
+        return nullptr;
+    const QString node = m_lanes.at(item->lane()).node;
+    auto *menu = new QMenu;
+    QAction *pin = menu->addAction(tr("Pin to %1").arg(node));
+    pin->setObjectName(QStringLiteral("planPinHere"));
+    pin->setEnabled(!node.isEmpty() && !item->card().pinned);
+    connect(pin, &QAction::triggered, this,
+            [this, instanceName, node] { emit pinRequested(instanceName, node); });
+    QAction *free = menu->addAction(tr("Free (Let the Planner Choose)"));
+    free->setObjectName(QStringLiteral("planFree"));
+    free->setEnabled(item->card().pinned);
+    connect(free, &QAction::triggered, this,
+            [this, instanceName] { emit pinRequested(instanceName, QString()); });
+    return menu;
+}
+
+void PlanScene::contextMenuEvent(QGraphicsSceneContextMenuEvent *event)
+{
+    for (QGraphicsItem *item : items(event->scenePos())) {
+        if (auto *card = dynamic_cast<PlanCardItem *>(item)) {
+            const std::unique_ptr<QMenu> menu(cardMenu(card->card().instanceName));
+            menu->exec(event->screenPos());
+            return;
+        }
+    }
 }
 
 } // namespace SystemEditor
