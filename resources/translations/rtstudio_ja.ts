@@ -4624,13 +4624,13 @@ Installs: %1</source>
 <context>
     <name>SystemEditor::PlanView</name>
     <message>
-        <location filename="../../systemeditor/plan/planview.cpp" line="+117"/>
+        <location filename="../../systemeditor/plan/planview.cpp" line="+143"/>
         <source>Unmet Requirements</source>
         <translation>満たされない要件</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+46"/>
+        <location line="+25"/>
         <source>Dry Run</source>
         <translation>ドライラン</translation>
     </message>

@@ -103,27 +103,10 @@ void PlanView::buildUi()
     m_view->setObjectName(QStringLiteral("planLanes"));
     m_view->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_view->setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing);
-    m_unmetList = new QListWidget;
-    m_unmetList->setObjectName(QStringLiteral("planUnmet"));
-    // Explanations are sentences: whole, not cut at the list's edge.
-    m_unmetList->setWordWrap(true);
-    m_unmetList->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_dryRunList = new QListWidget;
-    m_dryRunList->setObjectName(QStringLiteral("planDryRun"));
-    m_dryRunList->setWordWrap(true);
-    m_dryRunList->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_details = new QTabWidget;
-    m_details->setDocumentMode(true);
-    m_details->addTab(m_unmetList, tr("Unmet Requirements"));
-    m_details->addTab(m_dryRunList, tr("Dry Run"));
-    // Whole tab titles, as the editor's other tabs show them.
-    m_details->setUsesScrollButtons(false);
-    m_details->tabBar()->setElideMode(Qt::ElideNone);
-    m_details->setMinimumWidth(m_details->tabBar()->sizeHint().width());
     // The lanes take the height (a lane is a column of components); the lists sit beside them.
     auto *splitter = new QSplitter(Qt::Horizontal);
     splitter->addWidget(m_view);
-    splitter->addWidget(m_details);
+    splitter->addWidget(buildDetails());
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 1);
     splitter->setChildrenCollapsible(false);
@@ -142,6 +125,28 @@ void PlanView::buildUi()
     layout->addWidget(buildToolBar());
     layout->addWidget(splitter, 1);
     layout->addLayout(statusRow);
+}
+
+QWidget *PlanView::buildDetails()
+{
+    m_unmetList = new QListWidget;
+    m_unmetList->setObjectName(QStringLiteral("planUnmet"));
+    // Explanations are sentences: whole, not cut at the list's edge.
+    m_unmetList->setWordWrap(true);
+    m_unmetList->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_dryRunList = new QListWidget;
+    m_dryRunList->setObjectName(QStringLiteral("planDryRun"));
+    m_dryRunList->setWordWrap(true);
+    m_dryRunList->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_details = new QTabWidget;
+    m_details->setDocumentMode(true);
+    m_details->addTab(m_unmetList, tr("Unmet Requirements"));
+    m_details->addTab(m_dryRunList, tr("Dry Run"));
+    // Whole tab titles, as the editor's other tabs show them.
+    m_details->setUsesScrollButtons(false);
+    m_details->tabBar()->setElideMode(Qt::ElideNone);
+    m_details->setMinimumWidth(m_details->tabBar()->sizeHint().width());
+    return m_details;
 }
 
 QWidget *PlanView::buildToolBar()

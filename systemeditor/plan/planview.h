@@ -88,6 +88,7 @@ signals:
 private:
     void buildUi();
     QWidget *buildToolBar();
+    QWidget *buildDetails();
     void askFactsFile();
     void askManagers();
     void askRepository();
