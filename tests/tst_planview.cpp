@@ -227,7 +227,7 @@ void TestPlanView::dropOutsideAnotherLaneChangesNothing()
 {
     QVERIFY2(planOn(QStringLiteral("robot-nodes.yaml")), qPrintable(describe(*m_view)));
     drag(QStringLiteral("Filter0"), laneIndex(Onboard));
-    QTest::qWait(0);
+    // A pin would be asked for from a zero timer: let it run.
     QCoreApplication::processEvents();
     QCOMPARE(m_undo->count(), 0);
     QCOMPARE(pinnedNode(*m_model, QStringLiteral("Filter0")), QString());
