@@ -31,7 +31,7 @@ constexpr double BalanceLevels[] = {1.1, 1.5, 2.0};
  * solved as one. Beyond it, proving takes seconds and how far Z3 gets in a given time varies
  * from run to run: the greedy spread stands, so the same input always gives the same plan.
  */
-constexpr long long ProvenBalanceSize = 2000;
+constexpr long long ProvenBalanceSize = 1000;
 
 /// The installs @p placement needs, each once.
 QSet<int> installsUsed(const SolverInput &input, const QList<int> &placement)
