@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "pincommand.h"
 
+#include "deployer.h"
 #include "requirements.h"
 
 namespace SystemEditor {
@@ -45,9 +46,7 @@ void PinComponentCommand::apply(const std::optional<QString> &pin)
 QString pinnedNode(const SystemModel &model, const QString &instanceName)
 {
     const Profile::RtsComponent *component = model.component(instanceName);
-    return component
-        ? Profile::rtsPropertyValue(component->properties, Planner::Key::Pin).value_or(QString())
-        : QString();
+    return component ? Deploy::pinOf(*component) : QString();
 }
 
 } // namespace SystemEditor
