@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "rtseditor.h"
 
+#include "planview.h"
 #include "propertiespanel.h"
 #include "repositoryview.h"
 #include "rtcrepository.h"
@@ -10,6 +11,7 @@
 #include "systemoutlinemodel.h"
 #include "systemview.h"
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QDir>
 #include <QHeaderView>
@@ -88,7 +90,9 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     , m_canvas(new SystemEditor::SystemCanvas(document->model(), document->undoStack()))
     , m_properties(new SystemEditor::PropertiesPanel(document->model(), document->undoStack()))
     , m_repositoryView(new SystemEditor::RepositoryView(sharedRepository()))
+    , m_planView(new SystemEditor::PlanView(document->model(), document->undoStack()))
     , m_status(new QLabel)
+    , m_centre(new QSplitter(Qt::Vertical))
     , m_splitter(new QSplitter(Qt::Horizontal, this))
 {
     m_properties->followScene(m_canvas->scene());
@@ -105,7 +109,13 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     centreLayout->setContentsMargins(0, 0, 0, 0);
     centreLayout->setSpacing(0);
     centreLayout->addWidget(buildToolBar());
-    centreLayout->addWidget(m_canvas, 1);
+    // The plan shares the canvas's column: its lanes want the width, the diagram stays in view.
+    m_centre->setObjectName(QStringLiteral("systemEditorCentre"));
+    m_centre->setChildrenCollapsible(false);
+    m_centre->addWidget(m_canvas);
+    m_centre->addWidget(m_planView);
+    m_planView->hide();
+    centreLayout->addWidget(m_centre, 1);
     centreLayout->addWidget(m_status);
 
     // The canvas gets the room: the window's left edge belongs to the Name Service dock, so
@@ -135,6 +145,11 @@ RtsEditor::~RtsEditor()
     QSettings().setValue(RepositorySourcesKey, sharedRepository()->sources());
 }
 
+void RtsEditor::showPlanView(bool show)
+{
+    m_planAction->setChecked(show);
+}
+
 QString RtsEditor::statusText() const
 {
     return m_status->text();
@@ -147,6 +162,17 @@ QWidget *RtsEditor::buildToolBar()
     toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     for (const char *name : {"actionAutoLayout", "actionZoomFit"})
         toolBar->addAction(m_canvas->action(QLatin1String(name)));
+    toolBar->addSeparator();
+    m_planAction = toolBar->addAction(tr("Plan"));
+    m_planAction->setObjectName(QStringLiteral("actionShowPlan"));
+    m_planAction->setCheckable(true);
+    m_planAction->setToolTip(tr("Show where the planner puts each component, one lane per node"));
+    connect(m_planAction, &QAction::toggled, this, [this](bool show) {
+        m_planView->setVisible(show);
+        // Opened, the plan gets most of the column: its lanes list components downwards.
+        if (show)
+            m_centre->setSizes({m_centre->height() * 2 / 5, m_centre->height() * 3 / 5});
+    });
     return toolBar;
 }
 

@@ -3,12 +3,14 @@
 
 #include <QWidget>
 
+class QAction;
 class QLabel;
 class QSplitter;
 class QTabWidget;
 class QTreeView;
 
 namespace SystemEditor {
+class PlanView;
 class PropertiesPanel;
 class RepositoryView;
 class RtcRepository;
@@ -25,8 +27,9 @@ class SystemOutlineModel;
  * The System Editor's editor of one system: the canvas takes most of the width; one column on
  * the right holds the repository of RTC profiles (drag one onto the canvas to add an instance)
  * and the outline above the properties of the selection and the system info, their tab bars
- * showing whole titles. Everything listens to the document's SystemModel; edits go through the
- * document's undo stack.
+ * showing whole titles. The Plan view (where the planner puts each component) opens below the
+ * canvas from the tool bar's Plan button. Everything listens to the document's SystemModel; edits
+ * go through the document's undo stack.
  */
 class RtsEditor : public QWidget
 {
@@ -43,6 +46,9 @@ public:
     SystemEditor::SystemCanvas *canvas() const { return m_canvas; }
     SystemEditor::PropertiesPanel *propertiesPanel() const { return m_properties; }
     SystemEditor::RepositoryView *repositoryView() const { return m_repositoryView; }
+    SystemEditor::PlanView *planView() const { return m_planView; }
+    /// Shows or hides the Plan view below the canvas (the tool bar's Plan button).
+    void showPlanView(bool show);
     /// The last message the canvas gave (why a connection was refused, …).
     QString statusText() const;
 
@@ -64,7 +70,10 @@ private:
     SystemEditor::SystemCanvas *m_canvas;
     SystemEditor::PropertiesPanel *m_properties;
     SystemEditor::RepositoryView *m_repositoryView;
+    SystemEditor::PlanView *m_planView;
+    QAction *m_planAction = nullptr;
     QLabel *m_status;
+    QSplitter *m_centre; ///< the canvas above the Plan view
     QSplitter *m_splitter;
 };
 

@@ -1,32 +1,22 @@
 // SPDX-License-Identifier: MIT
 #include "plancommand.h"
 
-#include "componentpackager.h"
 #include "nodefactsfile.h"
 #include "nodefactsreader.h"
 #include "planner.h"
+#include "planrepository.h"
 #include "profileio.h"
-#include "repository.h"
-#include "repositoryprofiles.h"
 #include "rtcprofile.h"
 #include "rtsprofile.h"
 
 #include <QDirIterator>
 #include <QJsonDocument>
-#include <QTemporaryDir>
 
 namespace Cli {
 
 namespace {
 
 using TypeProfiles = QHash<QString, Profile::RtcProfile>;
-
-/// Keeps @p profile under its `RTC:…` id and its implementation id (what RTS profiles name).
-void addProfile(const Profile::RtcProfile &profile, TypeProfiles *profiles)
-{
-    profiles->insert(profile.id, profile);
-    profiles->insert(profile.basicInfo.name, profile);
-}
 
 void readProfileFolder(const QString &folder, TypeProfiles *profiles, QStringList *warnings)
 {
@@ -38,42 +28,22 @@ void readProfileFolder(const QString &folder, TypeProfiles *profiles, QStringLis
         Profile::Diagnostics diagnostics;
         const auto loaded = Profile::loadProfileFile(file, &diagnostics);
         if (loaded && loaded->rtc)
-            addProfile(*loaded->rtc, profiles);
+            Planner::addTypeProfile(*loaded->rtc, profiles);
         else if (!loaded)
             *warnings
                 << QStringLiteral("%1: not read (%2)").arg(file, diagnostics.value(0).toString());
     }
 }
 
-Planner::RepositoryPackage repositoryPackage(const Packages::IndexEntry &entry)
-{
-    return {entry.package(), entry.version(), entry.architecture(),
-            entry.control.value(Packages::Field::SdkAbi).trimmed(),
-            Planner::splitFactList(entry.control.value(Packages::Field::RtcTypes))};
-}
-
 /// The packages of the repository folder @p root and the RTC profiles they ship.
 bool readRepository(const QString &root, Planner::PlanProblem *problem, TypeProfiles *profiles,
                     QStringList *warnings, QString *error)
 {
-    Packages::Repository repository(root);
-    if (!repository.open(error))
+    const auto repository = Deploy::readPlanRepository(root, warnings, error);
+    if (!repository)
         return false;
-    const auto entries = repository.packages(error);
-    if (!entries)
-        return false;
-    for (const Packages::IndexEntry &entry : *entries)
-        problem->packages << repositoryPackage(entry);
-    QTemporaryDir cache;
-    const auto packaged = Packages::readRepositoryProfiles(root, cache.path(), warnings, error);
-    if (!packaged)
-        return false;
-    for (const Packages::PackagedProfile &p : *packaged) {
-        Profile::Diagnostics diagnostics;
-        const auto loaded = Profile::loadProfileFile(p.profileFile, &diagnostics);
-        if (loaded && loaded->rtc)
-            addProfile(*loaded->rtc, profiles);
-    }
+    problem->packages << repository->packages;
+    profiles->insert(repository->typeProfiles);
     return true;
 }
 

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "placementsolver.h"
 
+#include "nodeclasses.h"
+
 #include <QElapsedTimer>
+#include <QSet>
 
 #include <z3++.h>
 
@@ -18,6 +21,37 @@ void addSoft(z3::optimize &opt, const z3::expr &e, int weight, const char *objec
 {
     Z3_optimize_assert_soft(opt.ctx(), opt, e, std::to_string(weight).c_str(),
                             Z3_mk_string_symbol(opt.ctx(), objective));
+}
+
+/// The balance figure's levels, as multiples of the even share, above which a node costs one.
+constexpr double BalanceLevels[] = {1.1, 1.5, 2.0};
+
+/**
+ * The largest problem (units × nodes) whose balance the solver proves after the nodes alike were
+ * solved as one. Beyond it, proving takes seconds and how far Z3 gets in a given time varies
+ * from run to run: the greedy spread stands, so the same input always gives the same plan.
+ */
+constexpr long long ProvenBalanceSize = 1000;
+
+/// The installs @p placement needs, each once.
+QSet<int> installsUsed(const SolverInput &input, const QList<int> &placement)
+{
+    QSet<int> used;
+    for (int u = 0; u < placement.size(); ++u) {
+        const SolverUnit &unit = input.units.at(u);
+        for (const int install : unit.installs.at(unit.nodes.indexOf(placement.at(u))))
+            used.insert(install);
+    }
+    return used;
+}
+
+/// The weight of the links @p placement puts across nodes.
+long long crossingWeight(const SolverInput &input, const QList<int> &placement)
+{
+    long long weight = 0;
+    for (const SolverLink &link : input.links)
+        weight += placement.at(link.a) != placement.at(link.b) ? link.weight : 0;
+    return weight;
 }
 
 /// The Z3 variables of one problem: x[u][k] is "unit u runs on its k-th node".
@@ -62,6 +96,8 @@ public:
         for (int n = 0; n < m_input.capacityMilli.size(); ++n) {
             if (m_input.capacityMilli.at(n) < 0)
                 continue;
+            if (!limitCanBind(m_input, n))
+                continue;
             z3::expr_vector terms(m_ctx);
             std::vector<int> coefficients;
             forEachOn(n, [&](int u, int k) {
@@ -70,14 +106,8 @@ public:
                     coefficients.push_back(m_input.units.at(u).cpuMilli);
                 }
             });
-            // A limit the units allowed there cannot reach even all together is left out: it would
-            // only cost the solver time.
-            long long total = 0;
-            for (const int c : coefficients)
-                total += c;
-            if (total > m_input.capacityMilli.at(n))
-                result.emplace_back(
-                    n, z3::pble(terms, coefficients.data(), m_input.capacityMilli.at(n)));
+            result.emplace_back(n,
+                                z3::pble(terms, coefficients.data(), m_input.capacityMilli.at(n)));
         }
         return result;
     }
@@ -108,7 +138,6 @@ public:
      */
     void addBalance(z3::optimize &opt) const
     {
-        static const double levels[] = {1.1, 1.5, 2.0};
         const double even = evenShare();
         for (int n = 0; n < m_input.baseBalance.size(); ++n) {
             z3::expr_vector terms(m_ctx);
@@ -117,12 +146,33 @@ public:
                 terms.push_back(m_x[u][k]);
                 coefficients.push_back(m_input.units.at(u).balance.at(k));
             });
-            for (const double level : levels) {
+            for (const double level : BalanceLevels) {
                 const int room = int(std::ceil(even * level)) - m_input.baseBalance.at(n);
                 if (room >= 0 && !terms.empty())
                     addSoft(opt, z3::pble(terms, coefficients.data(), room), 1, "balance");
             }
         }
+    }
+
+    /// What addBalance() charges @p placement: the levels its nodes rise above.
+    int balanceCost(const QList<int> &placement) const
+    {
+        QList<long long> figure;
+        for (const int base : m_input.baseBalance)
+            figure << base;
+        for (int u = 0; u < placement.size(); ++u) {
+            const SolverUnit &unit = m_input.units.at(u);
+            figure[placement.at(u)] += unit.balance.at(unit.nodes.indexOf(placement.at(u)));
+        }
+        const double even = evenShare();
+        int cost = 0;
+        for (int n = 0; n < figure.size(); ++n) {
+            for (const double level : BalanceLevels) {
+                const long long room = (long long)std::ceil(even * level);
+                cost += room >= m_input.baseBalance.at(n) && figure.at(n) > room ? 1 : 0;
+            }
+        }
+        return cost;
     }
 
     const z3::expr_vector &installs() const { return m_installs; }
@@ -231,7 +281,8 @@ public:
         }
     }
 
-    SolverOutput run()
+    /// All three objectives, or only installs and connectors when @p balance is false.
+    SolverOutput run(bool balance = true)
     {
         SolverOutput output;
         // The first stage also finds out whether there is any placement at all.
@@ -250,19 +301,37 @@ public:
         }
         // What crosses hosts matters from here on; the first stage is smaller without it.
         m_crossings = m_encoding.addCrossings(m_opt);
-        const Outcome links = stage(
-            0.6, [this] { linkObjective(); }, [this] { boundLinks(); });
-        // Balance only breaks ties: it gets what is left, at most a quarter of the budget.
-        const Outcome balance = stage(
-            qMin(1.0, 0.25 * m_input.timeoutMs / qMax(1, remaining(1.0))),
-            [this] { m_encoding.addBalance(m_opt); }, [] {});
+        const Outcome links = linkStage();
         output.nodeOfUnit = m_best;
         output.status = installs == Outcome::Proven && links == Outcome::Proven
             ? SolverOutput::Status::Optimal
             : SolverOutput::Status::Feasible;
-        output.balanceProven = balance == Outcome::Proven;
+        if (balance)
+            balanceStage(output);
         output.message = m_reason;
         return output;
+    }
+
+    /**
+     * Balances @p output's placement without more installs or crossing connector weight than it
+     * has: the solver's placement replaces it when proven best or, unless @p provenOnly, better
+     * by the same measure.
+     */
+    void balanceStage(SolverOutput &output, bool provenOnly = false)
+    {
+        if (m_crossings.empty() && !m_input.links.isEmpty())
+            m_crossings = m_encoding.addCrossings(m_opt);
+        m_best = output.nodeOfUnit;
+        boundInstalls();
+        boundLinks();
+        const int before = m_encoding.balanceCost(m_best);
+        // Balance only breaks ties: it gets what is left, at most a quarter of the budget.
+        const Outcome balance = stage(
+            qMin(1.0, 0.25 * m_input.timeoutMs / qMax(1, remaining(1.0))),
+            [this] { m_encoding.addBalance(m_opt); }, [] {});
+        output.balanceProven = balance == Outcome::Proven;
+        if (output.balanceProven || (!provenOnly && m_encoding.balanceCost(m_best) < before))
+            output.nodeOfUnit = m_best;
     }
 
 private:
@@ -280,7 +349,6 @@ private:
         if (placement.isEmpty())
             return false;
         m_best = std::move(placement);
-        m_model = model;
         return true;
     }
 
@@ -320,9 +388,79 @@ private:
             return Outcome::Unsat;
         if (!kept)
             return Outcome::NoModel;
-        // Only this stage's own model tells what its objective reached.
         bound();
         return result == z3::sat ? Outcome::Proven : Outcome::Improved;
+    }
+
+    /**
+     * Connectors, starting from the installs of the best install plan: with them fixed, each
+     * unit keeps only the nodes it needs nothing more on, and most connectors either surely
+     * cross or surely need not — a far smaller problem. Its answer is the best when the solver
+     * shows no placement with those installs' count crosses less; otherwise it bounds the full
+     * search.
+     */
+    Outcome linkStage()
+    {
+        if (m_input.installCount > 0 && !m_best.isEmpty()) {
+            const QList<int> start = linksWithInstallsFixed();
+            if (!start.isEmpty()) {
+                m_best = start;
+                const bool least = nothingCrossesLess();
+                boundLinks();
+                if (least)
+                    return Outcome::Proven;
+            }
+        }
+        return stage(
+            0.6, [this] { linkObjective(); }, [this] { boundLinks(); });
+    }
+
+    /// The least crossing placement that needs no install beyond those of the current one.
+    QList<int> linksWithInstallsFixed() const
+    {
+        const QSet<int> used = installsUsed(m_input, m_best);
+        SolverInput fixed = m_input;
+        fixed.installCount = 0;
+        fixed.installKind.clear();
+        // The sub-problem ends when 30 % of what is left has passed on the same clock.
+        fixed.timeoutMs = int(m_clock.elapsed()) + remaining(0.3);
+        for (SolverUnit &unit : fixed.units) {
+            const SolverUnit full = unit;
+            unit = SolverUnit {{}, {}, {}, full.cpuMilli};
+            for (int k = 0; k < full.nodes.size(); ++k) {
+                const QList<int> &needs = full.installs.at(k);
+                if (std::all_of(needs.cbegin(), needs.cend(),
+                                [&](int i) { return used.contains(i); })) {
+                    unit.nodes << full.nodes.at(k);
+                    unit.installs << QList<int>();
+                    unit.balance << full.balance.at(k);
+                }
+            }
+        }
+        // Connectors whose ends share no node cross whatever happens: left out of the search.
+        fixed.links.removeIf([&](const SolverLink &link) {
+            const QList<int> &b = fixed.units.at(link.b).nodes;
+            const QList<int> &a = fixed.units.at(link.a).nodes;
+            return std::none_of(a.cbegin(), a.cend(), [&](int n) { return b.contains(n); });
+        });
+        const SolverOutput output = StagedOptimiser(fixed, m_clock).run(false);
+        return output.status == SolverOutput::Status::Optimal ? output.nodeOfUnit : QList<int>();
+    }
+
+    /// The solver shows that no placement within the installs' bound crosses less than m_best.
+    bool nothingCrossesLess()
+    {
+        const long long weight = crossingWeight(m_input, m_best);
+        if (weight == 0)
+            return true;
+        if (weight > std::numeric_limits<int>::max())
+            return false;
+        m_opt.push();
+        m_opt.add(z3::pble(m_crossings, linkWeights().data(), int(weight - 1)));
+        setTimeout(m_ctx, m_opt, remaining(0.5));
+        const bool none = m_opt.check() == z3::unsat;
+        m_opt.pop();
+        return none;
     }
 
     /**
@@ -357,12 +495,8 @@ private:
             addSoft(opt, !encoding.installs()[i], 1, "installs");
         const z3::check_result result = fullUnit.isEmpty() ? z3::sat : opt.check();
         QList<int> placement;
-        int used = 0;
         try {
-            const z3::model model = opt.get_model();
-            placement = encoding.placement(model);
-            for (int i = 0; i < int(encoding.installs().size()); ++i)
-                used += model.eval(encoding.installs()[i], true).is_true() ? 1 : 0;
+            placement = encoding.placement(opt.get_model());
         } catch (const z3::exception &) {
             // No model in time.
         }
@@ -374,10 +508,7 @@ private:
         }
         for (int r = 0; r < fullUnit.size(); ++r)
             m_best[fullUnit.at(r)] = placement.at(r);
-        const z3::expr_vector &installs = m_encoding.installs();
-        std::vector<int> ones(installs.size(), 1);
-        if (!installs.empty())
-            m_opt.add(z3::pble(installs, ones.data(), used));
+        boundInstalls();
         return result == z3::sat ? Outcome::Proven : Outcome::Improved;
     }
 
@@ -393,30 +524,30 @@ private:
             addSoft(m_opt, !m_crossings[l], m_input.links.at(l).weight, "links");
     }
 
-    /// No more installs than the kept model has.
+    std::vector<int> linkWeights() const
+    {
+        std::vector<int> weights;
+        for (const SolverLink &link : m_input.links)
+            weights.push_back(link.weight);
+        return weights;
+    }
+
+    /// No more installs than the kept placement needs.
     void boundInstalls()
     {
         const z3::expr_vector &installs = m_encoding.installs();
         std::vector<int> ones(installs.size(), 1);
-        int used = 0;
-        for (int i = 0; i < int(installs.size()); ++i)
-            used += m_model.eval(installs[i], true).is_true() ? 1 : 0;
         if (!installs.empty())
-            m_opt.add(z3::pble(installs, ones.data(), used));
+            m_opt.add(z3::pble(installs, ones.data(), int(installsUsed(m_input, m_best).size())));
     }
 
-    /// No more connector weight between hosts than the kept model has.
+    /// No more connector weight between hosts than the kept placement has.
     void boundLinks()
     {
-        std::vector<int> weights;
-        long long crossing = 0;
-        for (int l = 0; l < int(m_crossings.size()); ++l) {
-            weights.push_back(m_input.links.at(l).weight);
-            crossing += m_model.eval(m_crossings[l], true).is_true() ? weights.back() : 0;
-        }
+        const long long crossing = crossingWeight(m_input, m_best);
         // A bound beyond what an int holds bounds nothing: left out.
         if (!m_crossings.empty() && crossing <= std::numeric_limits<int>::max())
-            m_opt.add(z3::pble(m_crossings, weights.data(), int(crossing)));
+            m_opt.add(z3::pble(m_crossings, linkWeights().data(), int(crossing)));
     }
 
     const SolverInput &m_input;
@@ -427,17 +558,49 @@ private:
     z3::expr_vector m_crossings;
     bool m_limited = false; ///< some node's CPU limit could bind
     QList<int> m_best;
-    z3::model m_model {m_ctx};
     QString m_reason;
 };
 
+/// Installs and connectors on one node per class, then spread and balanced on all nodes.
+SolverOutput solveByClasses(const SolverInput &input, const NodeClasses &classes,
+                            const QElapsedTimer &clock)
+{
+    const SolverInput reduced = classes.reducedInput();
+    SolverOutput output = StagedOptimiser(reduced, clock).run(false);
+    if (output.nodeOfUnit.isEmpty())
+        return output;
+    output.nodeOfUnit = classes.spread(output.nodeOfUnit);
+    if (input.units.size() * input.capacityMilli.size() <= ProvenBalanceSize)
+        StagedOptimiser(input, clock).balanceStage(output, true);
+    return output;
+}
+
 } // namespace
+
+bool limitCanBind(const SolverInput &input, int node)
+{
+    if (input.capacityMilli.at(node) < 0)
+        return false;
+    // A limit the units allowed there cannot reach even all together only costs solver time.
+    long long total = 0;
+    for (const SolverUnit &unit : input.units) {
+        if (unit.cpuMilli > 0 && unit.nodes.contains(node))
+            total += unit.cpuMilli;
+    }
+    return total > input.capacityMilli.at(node);
+}
 
 SolverOutput solvePlacement(const SolverInput &input)
 {
     QElapsedTimer clock;
     clock.start();
     try {
+        bool limited = false;
+        for (int n = 0; n < input.capacityMilli.size(); ++n)
+            limited = limited || limitCanBind(input, n);
+        const NodeClasses classes(input);
+        if (!limited && classes.reduces())
+            return solveByClasses(input, classes, clock);
         return StagedOptimiser(input, clock).run();
     } catch (const z3::exception &e) {
         SolverOutput output;

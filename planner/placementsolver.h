@@ -31,6 +31,9 @@ struct SolverInput
     QList<SolverUnit> units;
     QList<SolverLink> links;
     int installCount = 0; ///< how many distinct installs (package on node) `installs` index
+    /// Per install: which package it is (the same number for one package on different nodes);
+    /// tells nodes apart that need different packages. Missing entries count as all different.
+    QList<int> installKind;
     int timeoutMs = 10000;
 };
 
@@ -52,7 +55,15 @@ struct SolverOutput
  * `timeoutMs`; Optimal when the first two are proven best, Feasible when time ran out first (the
  * best placement found so far). The balance only breaks ties and gets at most a quarter of the
  * time.
+ *
+ * When no CPU limit can bind, nodes that no unit tells apart are solved as one (NodeClasses).
+ * Connectors are first placed with the installs of the best install plan fixed (a small
+ * problem), and that placement is kept when the solver proves no placement does better.
+ * The result is the same for the same input whenever it is proven optimal.
  */
 SolverOutput solvePlacement(const SolverInput &input);
+
+/// Whether the units that may run on @p node could together exceed its CPU limit.
+bool limitCanBind(const SolverInput &input, int node);
 
 } // namespace Planner

@@ -213,6 +213,12 @@ SolverInput Run::solverInput()
         input.units << su;
     }
     input.installCount = int(m_installKeys.size());
+    QStringList packages;
+    for (const auto &[package, node] : std::as_const(m_installKeys)) {
+        if (!packages.contains(package->package))
+            packages << package->package;
+        input.installKind << int(packages.indexOf(package->package));
+    }
     QHash<QPair<int, int>, int> weights;
     for (const Link &link : m_problem.links) {
         const int a = m_unitOf.value(link.source, -1);

@@ -179,4 +179,11 @@ SystemRequirements readRequirements(const Profile::RtsProfile &system,
     return result;
 }
 
+void addTypeProfile(const Profile::RtcProfile &profile,
+                    QHash<QString, Profile::RtcProfile> *typeProfiles)
+{
+    typeProfiles->insert(profile.id, profile);
+    typeProfiles->insert(profile.basicInfo.name, profile);
+}
+
 } // namespace Planner

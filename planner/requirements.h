@@ -69,4 +69,9 @@ struct SystemRequirements
 SystemRequirements readRequirements(const Profile::RtsProfile &system,
                                     const QHash<QString, Profile::RtcProfile> &typeProfiles);
 
+/// Keeps @p profile in @p typeProfiles under its `RTC:…` id and its implementation id, the two
+/// ways an RTS profile names a type.
+void addTypeProfile(const Profile::RtcProfile &profile,
+                    QHash<QString, Profile::RtcProfile> *typeProfiles);
+
 } // namespace Planner

@@ -80,6 +80,7 @@ private slots:
     void noNodes();
     void extremeFiguresStayValid();
     void timeLimitStillGivesValidPlan();
+    void samePlanEveryTime();
 };
 
 // Each requirement, with two nodes of which only "good" meets it.
@@ -547,6 +548,37 @@ void TestPlanner::timeLimitStillGivesValidPlan()
     QCOMPARE(result.placements.size(), qsizetype(400));
     for (int c = 0; c < 400; c += 10)
         QCOMPARE(nodeOf(result, QStringLiteral("C%1").arg(c)), QStringLiteral("n7"));
+}
+
+// Nodes alike are solved as one and spread afterwards; the outcome must not depend on the run.
+void TestPlanner::samePlanEveryTime()
+{
+    PlanProblem problem;
+    for (int n = 0; n < 8; ++n) {
+        NodeFacts facts = node(QStringLiteral("n%1").arg(n));
+        facts.loadableTypes = QStringList {n % 2 ? QStringLiteral("T") : QStringLiteral("U")};
+        problem.nodes << facts;
+    }
+    for (int c = 0; c < 300; ++c) {
+        problem.components << component(QStringLiteral("C%1").arg(c),
+                                        c % 3 ? QStringLiteral("T") : QStringLiteral("U"));
+        if (c > 0)
+            problem.links.append({QStringLiteral("C%1").arg(c - 1),
+                                  problem.components.last().instanceName, double(1 + c % 5)});
+    }
+    const Plan first = plan(problem);
+    QVERIFY2(first.optimal, qPrintable(describe(first)));
+    QSet<QString> used;
+    for (const Placement &p : first.placements)
+        used.insert(p.node);
+    // Spread over the alike nodes, not piled on one of each kind.
+    QVERIFY2(used.size() > 2, qPrintable(QString::number(used.size())));
+    for (int run = 0; run < 3; ++run) {
+        const Plan again = plan(problem);
+        QCOMPARE(again.crossHostRate, first.crossHostRate);
+        for (int c = 0; c < first.placements.size(); ++c)
+            QCOMPARE(again.placements.at(c).node, first.placements.at(c).node);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestPlanner)

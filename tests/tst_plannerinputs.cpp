@@ -4,13 +4,13 @@
 #include "nodefactsfile.h"
 #include "profileio.h"
 #include "requirements.h"
+#include "nativerepository.h"
 #include "rtcprofile.h"
 #include "rtctlrunner.h"
 #include "rtsprofile.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -341,46 +341,15 @@ void TestPlannerInputs::rtctlPlanUsage()
              qPrintable(notSystem.err));
 }
 
-/// Runs @p program, true when it exits 0; its output in @p output.
-static bool runTool(const QString &program, const QStringList &arguments, QString *output)
-{
-    QProcess process;
-    process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(program, arguments);
-    const bool done = process.waitForFinished(60000);
-    *output = QString::fromUtf8(process.readAll());
-    return done && process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
-}
-
 // A type no node loads, in a repository for this machine's architecture only: installed once, on
 // the node of that architecture, for both components (its RTC profile comes from the package).
 void TestPlannerInputs::rtctlPlanInstallsFromRepository()
 {
     QTemporaryDir dir;
-    QString output;
-    QVERIFY2(runTool(QStringLiteral("dpkg"), {QStringLiteral("--print-architecture")}, &output),
-             qPrintable(output));
-    const QString arch = output.trimmed();
-    const QString tree = dir.filePath(QStringLiteral("tree"));
-    QVERIFY(runTool(
-        QStringLiteral("cp"),
-        {QStringLiteral("-r"), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/packages/debtree"), tree},
-        &output));
-    QFile control(tree + QStringLiteral("/DEBIAN/control"));
-    QVERIFY(control.open(QIODevice::ReadOnly));
-    const QByteArray text = control.readAll().replace("@ARCH@", arch.toLatin1());
-    control.close();
-    QVERIFY(control.open(QIODevice::WriteOnly | QIODevice::Truncate)
-            && control.write(text) == text.size());
-    control.close();
-    const QString deb = dir.filePath(QStringLiteral("native.deb"));
-    QVERIFY2(runTool(QStringLiteral("dpkg-deb"),
-                     {QStringLiteral("--root-owner-group"), QStringLiteral("--build"), tree, deb},
-                     &output),
-             qPrintable(output));
-    const QString repo = dir.filePath(QStringLiteral("repo"));
-    QCOMPARE(runRtctl({QStringLiteral("repo"), QStringLiteral("init"), repo}).code, 0);
-    QCOMPARE(runRtctl({QStringLiteral("repo"), QStringLiteral("publish"), repo, deb}).code, 0);
+    QString arch;
+    QString error;
+    const QString repo = TestSupport::makeNativeRepository(dir.path(), &arch, &error);
+    QVERIFY2(!repo.isEmpty(), qPrintable(error));
 
     const QByteArray nodes
         = QStringLiteral(

@@ -3,9 +3,11 @@
 // properties over the document's model and undo stack; `rtstudio --export-diagram` renders a
 // system headless with exit code 0, and fails with 1 and a message. The canvas gets most of the
 // editor's width and the side tabs show whole titles; the main window's Edit menu offers the
-// canvas's selection edits (Group as Composite, Decompose, …).
+// canvas's selection edits (Group as Composite, Decompose, …). The Plan button opens the Plan
+// view below the canvas.
 #include "documentloader.h"
 #include "mainwindow.h"
+#include "planview.h"
 #include "propertiespanel.h"
 #include "repositoryview.h"
 #include "rtcrepository.h"
@@ -36,6 +38,7 @@ private slots:
     void initTestCase();
     void editorShowsCanvasOverTheDocument();
     void canvasGetsTheRoomAndTabsShowTitles();
+    void planButtonShowsPlanBelowCanvas();
     void editMenuOffersCanvasActions();
     void repositoryRemembersItsSources();
     void exportFromCommandLine_data();
@@ -112,6 +115,29 @@ void TestSeCanvasApp::canvasGetsTheRoomAndTabsShowTitles()
             QVERIFY(bar->rect().contains(bar->tabRect(i)));
         }
     }
+}
+
+// The Plan view opens below the canvas, over the same system and undo stack.
+void TestSeCanvasApp::planButtonShowsPlanBelowCanvas()
+{
+    RtsDocument document(Profile::RtsProfile::createNew(QStringLiteral("V"), QStringLiteral("S"),
+                                                        QStringLiteral("1")));
+    RtsEditor editor(&document);
+    editor.resize(1400, 800);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QVERIFY(!editor.planView()->isVisible());
+    auto *toggle = editor.findChild<QAction *>(QStringLiteral("actionShowPlan"));
+    QVERIFY(toggle);
+    toggle->trigger();
+    QTRY_VERIFY(editor.planView()->isVisible());
+    const QPoint planTop = editor.planView()->mapTo(&editor, QPoint());
+    QVERIFY(planTop.y()
+            > editor.canvas()->mapTo(&editor, QPoint()).y() + editor.canvas()->height() / 2);
+    QVERIFY(editor.planView()->width() > editor.width() * 3 / 5);
+    editor.showPlanView(false);
+    QVERIFY(!editor.planView()->isVisible());
+    QVERIFY(!toggle->isChecked());
 }
 
 namespace {

@@ -2254,6 +2254,19 @@
     </message>
 </context>
 <context>
+    <name>PinComponentCommand</name>
+    <message>
+        <location filename="../../systemeditor/plan/pincommand.cpp" line="+18"/>
+        <source>Free %1</source>
+        <translation>%1 の固定を解除</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pin %1 to %2</source>
+        <translation>%1 を %2 に固定</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <location filename="../../builder/generatedialogprompts.cpp" line="-12"/>
@@ -3054,7 +3067,17 @@
 <context>
     <name>Studio::RtsEditor</name>
     <message>
-        <location filename="../../app/rtseditor.cpp" line="+163"/>
+        <location filename="../../app/rtseditor.cpp" line="+166"/>
+        <source>Plan</source>
+        <translation>配置計画</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Show where the planner puts each component, one lane per node</source>
+        <translation>プランナーが各コンポーネントをどこに配置するかを、ノードごとのレーンで表示します</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Repository</source>
         <translation>リポジトリ</translation>
     </message>
@@ -4548,6 +4571,258 @@
         <location line="+2"/>
         <source>&apos;%1&apos; does not satisfy %2</source>
         <translation>「%1」は%2を満たしていません</translation>
+    </message>
+</context>
+<context>
+    <name>SystemEditor::PlanCardItem</name>
+    <message>
+        <location filename="../../systemeditor/plan/plancarditem.cpp" line="+35"/>
+        <source>Runs in a process of its own</source>
+        <translation>専用のプロセスで動作します</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shares process %1</source>
+        <translation>プロセス %1 を共有します</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Installs %1 here</source>
+        <translation>ここに %1 をインストールします</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pinned here: drag it to another node to move the pin</source>
+        <translation>ここに固定されています。別のノードへドラッグすると固定先が移ります</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Free: drag it to a node to pin it there</source>
+        <translation>固定されていません。ノードへドラッグするとそこに固定します</translation>
+    </message>
+</context>
+<context>
+    <name>SystemEditor::PlanLanes</name>
+    <message>
+        <location filename="../../systemeditor/plan/planlanes.cpp" line="+79"/>
+        <source>system</source>
+        <translation>システム</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 (%3)</source>
+        <translation>%1：%2（%3）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2 — no node meets it; closest %3 has %4</source>
+        <translation>%1：%2 — 満たすノードがありません。最も近い %3 は %4</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Install %1 %2 on %3</source>
+        <translation>%3 に %1 %2 をインストール</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Create %1 (%2) on %3 in process %4</source>
+        <translation>%3 のプロセス %4 に %1（%2）を生成</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Create %1 (%2) on %3 in a process of its own</source>
+        <translation>%3 の専用プロセスに %1（%2）を生成</translation>
+    </message>
+</context>
+<context>
+    <name>SystemEditor::PlanScene</name>
+    <message>
+        <location filename="../../systemeditor/plan/planscene.cpp" line="+52"/>
+        <source>Not placed</source>
+        <translation>未配置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1
+CPU load %2 per CPU</source>
+        <translation>%1
+CPU あたりの負荷 %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>
+Installs: %1</source>
+        <translation>
+インストール：%1</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Pin to %1</source>
+        <translation>%1 に固定</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Free (Let the Planner Choose)</source>
+        <translation>固定を解除（プランナーに任せる）</translation>
+    </message>
+</context>
+<context>
+    <name>SystemEditor::PlanView</name>
+    <message>
+        <location filename="../../systemeditor/plan/planview.cpp" line="+143"/>
+        <source>Unmet Requirements</source>
+        <translation>満たされない要件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+25"/>
+        <source>Dry Run</source>
+        <translation>ドライラン</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Open Facts…</source>
+        <translation>ファクトを開く…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read Managers…</source>
+        <translation>マネージャから読む…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Repository…</source>
+        <translation>リポジトリ…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Re-plan</source>
+        <translation>再計画</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Deploy</source>
+        <translation>デプロイ</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Open Node Facts</source>
+        <translation>ノードのファクトを開く</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Node facts (*.yaml *.yml *.json);;All files (*)</source>
+        <translation>ノードのファクト (*.yaml *.yml *.json);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Component Repository</source>
+        <translation>コンポーネントリポジトリ</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Reading the repository…</source>
+        <translation>リポジトリを読んでいます…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Could not read the repository: %1</source>
+        <translation>リポジトリを読めませんでした：%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Packages in the repository: %1.</source>
+        <translation>リポジトリのパッケージ：%1。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Read Managers</source>
+        <translation>マネージャから読む</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Managers to plan on (corbaloc or name-service paths, separated by commas):</source>
+        <translation>配置先のマネージャ（corbaloc またはネームサービスのパスをコンマで区切って）：</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Could not read the node facts: %1</source>
+        <translation>ノードのファクトを読めませんでした：%1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Reading the managers…</source>
+        <translation>マネージャから読んでいます…</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Nodes read: %1.</source>
+        <translation>読んだノード：%1。</translation>
+    </message>
+    <message>
+        <location line="+170"/>
+        <source>Not read: %1</source>
+        <translation>読めなかったもの：%1</translation>
+    </message>
+    <message>
+        <location line="-162"/>
+        <source>Open a facts file or read the managers to plan on their nodes.</source>
+        <translation>ファクトのファイルを開くかマネージャから読むと、そのノードへの配置を計画します。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Planning…</source>
+        <translation>計画しています…</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Cancelled.</source>
+        <translation>キャンセルしました。</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Nothing to deploy: there is no plan.</source>
+        <translation>デプロイするものはありません：計画がありません。</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>Install, create and connect the components as planned</source>
+        <translation>計画どおりにコンポーネントをインストール・生成・接続します</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Deploying from here needs the deploy transaction, which this version does not have yet</source>
+        <translation>ここからのデプロイにはデプロイのトランザクションが必要ですが、このバージョンにはまだありません</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Not planned yet.</source>
+        <translation>まだ計画していません。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No plan: requirements that no node meets, in red: %1.</source>
+        <translation>計画なし：どのノードも満たさない要件（赤で表示）：%1。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Components placed: %1; packages to install: %2; connectors between hosts: %3 Hz; solved in %4 ms.</source>
+        <translation>配置したコンポーネント：%1、インストールするパッケージ：%2、ホスト間のコネクタ：%3 Hz、求解 %4 ms。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Not proven best: the solver&apos;s time ran out.</source>
+        <translation>最良とは証明されていません：ソルバーの時間切れです。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The system changed since: re-plan to see where everything goes now.</source>
+        <translation>その後システムが変更されました。再計画すると現在の配置がわかります。</translation>
     </message>
 </context>
 <context>

@@ -5,18 +5,27 @@
 //   docscreenshots OUTPUT_DIR LANGUAGE
 //
 // writes builder-LANGUAGE.png (the tour's component in the Builder), systemeditor-LANGUAGE.png (the
-// bundled ConsoleInOut system) and userguide-LANGUAGE.png (Help → User Guide). LANGUAGE is en or ja.
+// bundled ConsoleInOut system), planview-LANGUAGE.png (the planner's tutorial robot in the Plan
+// view) and userguide-LANGUAGE.png (Help → User Guide). LANGUAGE is en or ja.
 // Settings go to a temporary folder; the user's are not read or changed.
 #include "mainwindow.h"
 #include "perspective.h"
+#include "planview.h"
+#include "profileio.h"
+#include "rtsdocument.h"
+#include "rtseditor.h"
+#include "systemcanvas.h"
+#include "systemmodel.h"
 #include "uilanguage.h"
 #include "userguide.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QDir>
 #include <QMainWindow>
 #include <QStatusBar>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -35,6 +44,40 @@ bool save(QWidget *widget, const QDir &output, const QString &name, const QStrin
         return true;
     std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
     return false;
+}
+
+/**
+ * Opens the planner's tutorial system (tests/data/planner/robot.xml) with its Plan view planned
+ * on the tutorial's two nodes from a facts file.
+ */
+bool showPlanView(Studio::MainWindow &window)
+{
+    const QDir data(QStringLiteral(RTSTUDIO_SOURCE_DIR "/tests/data/planner"));
+    // Lanes below the diagram want the room of a larger window.
+    window.resize(1400, 900);
+    if (!window.openFiles({data.filePath(QStringLiteral("robot.xml"))}))
+        return false;
+    Studio::RtsEditor *editor = nullptr;
+    for (Studio::RtsEditor *candidate : window.findChildren<Studio::RtsEditor *>()) {
+        if (candidate->document()->filePath().endsWith(QLatin1String("robot.xml")))
+            editor = candidate;
+    }
+    Profile::Diagnostics diagnostics;
+    const auto viewer = Profile::loadProfileFile(
+        data.filePath(QStringLiteral("profiles/Viewer.xml")), &diagnostics);
+    if (!editor || !viewer || !viewer->rtc)
+        return false;
+    // The tutorial finds the viewer's RTC profile with --profiles; here the model is told.
+    editor->document()->model()->setRtcProfile(QStringLiteral("Viewer0"), *viewer->rtc);
+    // The file has no layout: laid out, the diagram above the plan shows the same system.
+    editor->canvas()->action(QStringLiteral("actionAutoLayout"))->trigger();
+    editor->showPlanView(true);
+    QApplication::processEvents();
+    editor->canvas()->action(QStringLiteral("actionZoomFit"))->trigger();
+    SystemEditor::PlanView *plan = editor->planView();
+    QSignalSpy planned(plan, &SystemEditor::PlanView::planChanged);
+    return plan->openFactsFile(data.filePath(QStringLiteral("robot-nodes.yaml")))
+        && planned.wait(30000) && plan->plan().feasible;
 }
 
 } // namespace
@@ -71,7 +114,8 @@ int main(int argc, char *argv[])
     bool ok = window.openFiles({examples.filePath(QStringLiteral("tour/Doubler.xml"))})
         && save(&window, output, QStringLiteral("builder"), language)
         && window.openFiles({examples.filePath(QStringLiteral("ConsoleInOut/ConsoleInOut.xml"))})
-        && save(&window, output, QStringLiteral("systemeditor"), language);
+        && save(&window, output, QStringLiteral("systemeditor"), language)
+        && showPlanView(window) && save(&window, output, QStringLiteral("planview"), language);
     window.showUserGuide(QStringLiteral("getting-started.md"));
     Studio::UserGuide *guide = window.userGuide();
     ok = ok && guide && QTest::qWaitForWindowExposed(guide) && save(guide, output, QStringLiteral("userguide"), language);
