@@ -41,3 +41,11 @@ if(TARGET rtpymodules)
     set_tests_properties(tst_pythonmanager PROPERTIES LABELS python TIMEOUT 600)
 endif()
 
+# The Builder's Build and Run in Manager for a generated Python project, against a live rtmanager.
+if(TARGET rtpymodules)
+    rtstudio_add_test(tst_builderpython SOURCES tst_builderpython.cpp
+        LIBS rtstudio_app rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+    target_compile_definitions(tst_builderpython PRIVATE RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
+    add_dependencies(tst_builderpython rtmanager rtctl rtpython rtpymodules rtsdk)
+    set_tests_properties(tst_builderpython PROPERTIES LABELS python TIMEOUT 600)
+endif()
