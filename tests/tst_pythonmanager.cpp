@@ -8,6 +8,7 @@
 // a manager without the Python plugin.
 #include "hostrtctl.h"
 #include "nvlist.h"
+#include "pythonsanitizer.h"
 
 #include <Manager.hh>
 
@@ -95,6 +96,8 @@ void TestPythonManager::initTestCase()
     int argc = 0;
     m_orb = CORBA::ORB_init(argc, nullptr);
     QString error;
+    // The managers (and the module profiles they and Build start) embed Python.
+    LiveTest::startChildrenWithoutLeakChecks();
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     // The modules of the test data are in the manager's load path, found by their file names.
     m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName,
