@@ -254,6 +254,8 @@ private:
     bool runSharedModule(const std::string &path, const std::string &function, void **handle, std::string *error);
     /// Runs the Python module @p path and its @p function in the embedded interpreter.
     bool runPythonModule(const std::string &path, const std::string &function, std::string *error);
+    /// Forgets the component types module @p modulePath registered. Needs m_mutex held.
+    void dropFactoriesOf(const std::string &modulePath);
 
     Properties m_config;
     bool m_isMaster = false;

@@ -225,9 +225,14 @@ bool Manager::runPythonModule(const std::string &path, const std::string &functi
     // manager.modules.Python.plugin: another build of the plugin (tests use a missing one).
     const std::string plugin = m_config.value("manager.modules.Python.plugin", PythonModuleLoader::defaultPlugin());
     std::string why;
-    if (!m_pythonModules.load(plugin, path, function, &why))
-        return fail("load_module: " + why, error);
-    return true;
+    if (m_pythonModules.load(plugin, path, function, &why))
+        return true;
+    // An init function that raised halfway may have registered types of a module that is not loaded.
+    {
+        std::lock_guard lock(m_mutex);
+        dropFactoriesOf(path);
+    }
+    return fail("load_module: " + why, error);
 }
 
 void Manager::preloadModules()
@@ -258,14 +263,18 @@ bool Manager::unloadModule(const std::string &path, std::string *error)
             *error = m_lastError;
         return false;
     }
-    const std::string modulePath = (*it)->path;
     // Components made from the module may still run its code: the library stays mapped, but
     // its types can no longer be created and it is no longer listed.
+    dropFactoriesOf((*it)->path);
+    m_modules.erase(it);
+    return true;
+}
+
+void Manager::dropFactoriesOf(const std::string &modulePath)
+{
     m_factories.erase(std::remove_if(m_factories.begin(), m_factories.end(),
                                      [&modulePath](const ComponentFactory &f) { return f.modulePath == modulePath; }),
                       m_factories.end());
-    m_modules.erase(it);
-    return true;
 }
 
 std::vector<Properties> Manager::loadableModules()

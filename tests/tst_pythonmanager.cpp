@@ -191,7 +191,9 @@ void TestPythonManager::brokenModulesAreRefused()
     {
         const char *module;
         const char *error;
-    } broken[] = {{"PyBadSyntax.py", "SyntaxError"}, {"PyRaisesOnLoad.py", "RuntimeError: module fails on purpose"}};
+    } broken[] = {{"PyBadSyntax.py", "SyntaxError"},
+                  {"PyRaisesOnLoad.py", "RuntimeError: module fails on purpose"},
+                  {"PyInitRaises.py", "RuntimeError: init fails on purpose"}};
     for (const auto &module : broken) {
         const QString file = testModule(QString::fromLatin1(module.module));
         const int line = lineOf(file, QStringLiteral("refused here"));
@@ -202,7 +204,9 @@ void TestPythonManager::brokenModulesAreRefused()
         QVERIFY2(refused.err.contains(where), qPrintable(where + QStringLiteral(" in: ") + refused.err));
     }
     const RtctlResult list = m_host.run({"mgr", m_host.managerPath(), "list"});
+    // Nothing of them is loaded, not even the type the raising init function registered.
     QVERIFY2(list.code == 0 && !list.out.contains(QLatin1String("PyBadSyntax")), qPrintable(list.out + list.err));
+    QVERIFY2(!list.out.contains(QLatin1String("PyInitRaises")), qPrintable(list.out));
     QCOMPARE(m_manager->state(), QProcess::Running);
 }
 

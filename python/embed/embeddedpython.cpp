@@ -72,25 +72,28 @@ py::module_ EmbeddedPython::runModuleFile(const std::string &path)
     return module;
 }
 
-std::string EmbeddedPython::describe(const std::string &path, py::error_already_set &error)
+std::string EmbeddedPython::location(const std::string &path, py::error_already_set &error)
 {
-    const py::module_ traceback = py::module_::import("traceback");
-    const py::list what = traceback.attr("format_exception_only")(error.type(), error.value());
-    std::string where;
+    // A syntax error is where the compiler stopped, which no frame shows.
     if (error.matches(PyExc_SyntaxError)) {
-        where = py::str(error.value().attr("filename")).cast<std::string>() + ':'
-                + py::str(error.value().attr("lineno")).cast<std::string>();
-    } else {
-        // The innermost line of the module's own file, else the innermost line of all.
-        std::string innermost;
-        for (const py::handle frame : traceback.attr("extract_tb")(error.trace())) {
-            innermost = frame.attr("filename").cast<std::string>() + ':' + py::str(frame.attr("lineno")).cast<std::string>();
-            if (frame.attr("filename").cast<std::string>() == path)
-                where = innermost;
-        }
-        if (where.empty())
+        return py::str(error.value().attr("filename")).cast<std::string>() + ':'
+            + py::str(error.value().attr("lineno")).cast<std::string>();
+    }
+    // The innermost line of the module's own file, else the innermost line of all.
+    std::string where, innermost;
+    for (const py::handle frame : py::module_::import("traceback").attr("extract_tb")(error.trace())) {
+        const std::string file = frame.attr("filename").cast<std::string>();
+        innermost = file + ':' + py::str(frame.attr("lineno")).cast<std::string>();
+        if (file == path)
             where = innermost;
     }
+    return where.empty() ? innermost : where;
+}
+
+std::string EmbeddedPython::describe(const std::string &path, py::error_already_set &error)
+{
+    const py::list what = py::module_::import("traceback").attr("format_exception_only")(error.type(), error.value());
+    const std::string where = location(path, error);
     std::string message = py::str(what[py::len(what) - 1]).cast<std::string>();
     while (!message.empty() && message.back() == '\n')
         message.pop_back();
@@ -100,9 +103,10 @@ std::string EmbeddedPython::describe(const std::string &path, py::error_already_
 bool EmbeddedPython::loadModule(const std::string &requested, const std::string &initFunction, std::string *error)
 {
     py::gil_scoped_acquire gil;
-    // Tracebacks name the file as it was run: absolute, as the manager's messages do.
-    const std::string path = py::module_::import("os.path").attr("abspath")(requested).cast<std::string>();
+    std::string path = requested;
     try {
+        // Tracebacks name the file as it was run: absolute, as the manager's messages do.
+        path = py::module_::import("os.path").attr("abspath")(requested).cast<std::string>();
         const py::module_ module = runModuleFile(path);
         if (!py::hasattr(module, initFunction.c_str())) {
             *error = "'" + path + "' has no init function '" + initFunction + "'";

@@ -22,13 +22,13 @@ public:
     static EmbeddedPython &instance();
 
     /**
-     * Runs module file @p path as `import` would (its folder put first on the path, so that it
+     * Runs module file @p requested as `import` would (its folder put first on the path, so that it
      * finds the modules beside it) and calls its function @p initFunction with the process's
      * OpenRTM_aist.Manager. False with @p error when the module or the function raises: where
      * (`file:line`, the innermost line of the module's own file when there is one) and what;
      * the traceback goes to standard error.
      */
-    bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
+    bool loadModule(const std::string &requested, const std::string &initFunction, std::string *error);
 
 private:
     EmbeddedPython();
@@ -36,6 +36,9 @@ private:
     /// The folder holding RT Studio's packages, from where this plugin lies.
     static std::string packagesDir();
     static pybind11::module_ runModuleFile(const std::string &path);
+    /// `file:line` where @p error arose, preferring the module @p path's own lines.
+    static std::string location(const std::string &path, pybind11::error_already_set &error);
+    /// What the manager says of a module @p path that raised @p error.
     static std::string describe(const std::string &path, pybind11::error_already_set &error);
 };
 
