@@ -8,6 +8,7 @@
 #include "generatecontroller.h"
 #include "packagecontroller.h"
 #include "projectbuilder.h"
+#include "pythonproject.h"
 #include "runcontroller.h"
 
 #include <QAction>
@@ -40,7 +41,8 @@ BuildController::BuildController(BuildOutputPanel *panel, std::function<QString(
     m_build->setObjectName(QStringLiteral("actionBuild"));
     m_build->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     m_build->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    m_build->setToolTip(tr("Configure and build the generated C++ project with CMake"));
+    m_build->setToolTip(tr("Configure and build the generated C++ project with CMake, or check that the "
+                           "Python component loads into a manager"));
     m_cancel->setObjectName(QStringLiteral("actionCancelBuild"));
     m_cancel->setToolTip(tr("Stop the running build"));
     m_settings->setObjectName(QStringLiteral("actionBuildSettings"));
@@ -103,7 +105,8 @@ bool BuildController::canBuild() const
 {
     const QString folder = projectFolder();
     return !isRunning() && !folder.isEmpty()
-        && QFileInfo::exists(QDir(folder).filePath(QStringLiteral("CMakeLists.txt")));
+        && (QFileInfo::exists(QDir(folder).filePath(QStringLiteral("CMakeLists.txt")))
+            || Codegen::PythonProject::inFolder(folder));
 }
 
 bool BuildController::isRunning() const

@@ -41,8 +41,8 @@ public:
                     QObject *parent = nullptr);
     ~BuildController() override;
 
-    /// Build (Ctrl+B): enabled when the project folder holds a generated CMake project and no
-    /// build runs.
+    /// Build (Ctrl+B): enabled when the project folder holds a generated CMake or Python project
+    /// and no build runs.
     QAction *buildAction() const { return m_build; }
     /// Cancel Build: enabled while a build runs.
     QAction *cancelAction() const { return m_cancel; }

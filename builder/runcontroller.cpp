@@ -5,6 +5,7 @@
 #include "componenteditor.h"
 #include "componentmodel.h"
 #include "generatecontroller.h"
+#include "pythonproject.h"
 #include "runmanagerdialog.h"
 #include "workerthread.h"
 
@@ -68,6 +69,10 @@ QString RunController::modulePath() const
     const QString name = componentName();
     if (folder.isEmpty() || name.isEmpty())
         return QString();
+    // A Python project's module is its source, which managers run as it is.
+    const Codegen::PythonProject python(folder, name);
+    if (python.exists())
+        return python.modulePath();
     // Where the generated src/CMakeLists.txt puts the module: no "lib" prefix, in build/src.
     return QDir::cleanPath(
         QDir(folder).absoluteFilePath(QStringLiteral("build/src/%1.so").arg(name)));

@@ -21,8 +21,9 @@ class GenerateController;
 class RunManagerDialog;
 
 /**
- * The Builder's Run in Manager: loads the module Build produced (`<project>/build/src/<Name>.so`)
- * into a running manager (rtmanager or OpenRTM-aist's rtcd) and creates the component from it,
+ * The Builder's Run in Manager: loads the module Build produced (`<project>/build/src/<Name>.so`),
+ * or a Python project's `<project>/<Name>.py` (which rtmanager runs in its own process), into a
+ * running manager (rtmanager or OpenRTM-aist's rtcd) and creates the component from it,
  * so that it shows up in the System Editor's online views.
  *
  * The remote calls run one after the other on the controller's own worker thread, under one
@@ -47,8 +48,8 @@ public:
 
     /// The component's name; empty when it has none.
     QString componentName() const;
-    /// The absolute path the built module has (whether or not it exists yet); empty when there is
-    /// no project folder or name.
+    /// The absolute path the built module has (whether or not it exists yet), or the Python
+    /// project's module; empty when there is no project folder or name.
     QString modulePath() const;
     bool canRun() const;
     bool isRunning() const { return m_running; }

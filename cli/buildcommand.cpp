@@ -56,7 +56,7 @@ QString parseArguments(const QStringList &arguments, BuildOptions *options)
 
 QString BuildCommand::summary() const
 {
-    return QStringLiteral("configure and build a generated C++ component project with CMake");
+    return QStringLiteral("build a generated C++ component project with CMake, or check a Python one");
 }
 
 QString BuildCommand::usage() const
@@ -73,6 +73,9 @@ QString BuildCommand::usage() const
                "Runs cmake -S DIR -B DIR/build, then cmake --build DIR/build, and prints their\n"
                "output; then lists the errors and warnings found as\n"
                "FILE:LINE:COL: severity: message.\n"
+               "A Python project (DIR/<Name>.py beside RTC.xml) has its own IDL compiled by its\n"
+               "idlcompile.sh, then the module loaded into a manager process of its own (rtmanager\n"
+               "--module-profile): it must import with RT Studio's packages and register <Name>.\n"
                "Exit codes: 0 built, 1 configure or build failed, 2 usage error.\n")
         .arg(ProjectBuilder::defaultSdkPrefix());
 }

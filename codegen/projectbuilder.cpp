@@ -2,6 +2,7 @@
 #include "projectbuilder.h"
 
 #include "installation.h"
+#include "pythonproject.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -92,10 +93,21 @@ bool ProjectBuilder::start(const BuildOptions &options)
     m_cmakeMessage.reset();
     m_pending.clear();
     m_cancelled = false;
+    m_registered.clear();
     const QString folder = nativePath(m_options.projectDir);
+    m_python = PythonProject::inFolder(m_options.projectDir);
+    if (m_python) {
+        // Nothing to compile but the project's own IDL; the module is checked by loading it
+        // into a manager process of its own, as Run in Manager will.
+        m_plan = {Step::CheckModule};
+        if (!m_python->ownIdlFiles().isEmpty())
+            m_plan.prepend(Step::CompileIdl);
+        runStep(m_plan.takeFirst());
+        return true;
+    }
     if (!QFileInfo::exists(QDir(m_options.projectDir).filePath(QStringLiteral("CMakeLists.txt")))) {
         const QString message
-            = tr("%1 has no CMakeLists.txt; generate the C++ project first.").arg(folder);
+            = tr("%1 has no CMakeLists.txt nor a Python component; generate the project first.").arg(folder);
         m_problems << Diagnostic::error(m_options.projectDir, 0, 0, message);
         emit problem(m_problems.last());
         emit finished(false, message);
@@ -106,21 +118,28 @@ bool ProjectBuilder::start(const BuildOptions &options)
         emit finished(false, message);
         return false;
     }
+    m_plan = {Step::Build};
     runStep(Step::Configure);
     return true;
 }
 
-void ProjectBuilder::runStep(Step step)
+QStringList ProjectBuilder::stepCommand(Step step, QString *program) const
 {
-    m_step = step;
+    *program = cmakeProgram();
     QStringList arguments;
-    if (step == Step::Configure) {
+    if (step == Step::CompileIdl) {
+        *program = QStringLiteral("sh");
+        arguments << m_python->idlCompileScript();
+    } else if (step == Step::CheckModule) {
+        // The manager prints the component types the module registers, or why it does not load.
+        *program = Installation::managerProgram();
+        arguments << QStringLiteral("--module-profile") << m_python->modulePath();
+    } else if (step == Step::Configure) {
         arguments << QStringLiteral("-S") << m_options.projectDir << QStringLiteral("-B")
                   << m_options.buildDir
                   << QStringLiteral("-DCMAKE_BUILD_TYPE=") + m_options.configuration;
         if (!m_options.prefixPath.isEmpty())
             arguments << QStringLiteral("-DCMAKE_PREFIX_PATH=") + m_options.prefixPath;
-        emit progress(0, 0);
     } else {
         const int jobs = m_options.jobs > 0 ? m_options.jobs : qMax(1, QThread::idealThreadCount());
         arguments << QStringLiteral("--build") << m_options.buildDir
@@ -129,6 +148,16 @@ void ProjectBuilder::runStep(Step step)
         if (m_options.clean)
             arguments << QStringLiteral("--clean-first");
     }
+    return arguments;
+}
+
+void ProjectBuilder::runStep(Step step)
+{
+    m_step = step;
+    QString program;
+    const QStringList arguments = stepCommand(step, &program);
+    if (step != Step::Build)
+        emit progress(0, 0);
     auto *process = new QProcess(this);
     m_process = process;
     process->setProcessChannelMode(QProcess::MergedChannels);
@@ -151,14 +180,15 @@ void ProjectBuilder::runStep(Step step)
         if (error == QProcess::FailedToStart && process == m_process)
             stepFinished(-1, QProcess::CrashExit);
     });
-    emit output(QStringLiteral("$ %1 %2").arg(cmakeProgram(), arguments.join(QLatin1Char(' '))));
-    process->start(cmakeProgram(), arguments);
+    emit output(QStringLiteral("$ %1 %2").arg(program, arguments.join(QLatin1Char(' '))));
+    process->start(program, arguments);
 }
 
 QString ProjectBuilder::stepDir() const
 {
-    // CMake names files relative to the source folder; compilers run in the build folder.
-    return m_step == Step::Configure ? m_options.projectDir : m_options.buildDir;
+    // CMake names files relative to the source folder; compilers run in the build folder; a
+    // Python module runs where its generated code expects its IDL modules (sys.path ".").
+    return m_step == Step::Build ? m_options.buildDir : m_options.projectDir;
 }
 
 void ProjectBuilder::readOutput()
@@ -180,6 +210,10 @@ void ProjectBuilder::handleLine(const QString &line)
 {
     emit output(line);
     const QString plain = withoutColours(line);
+    if (m_step == Step::CheckModule) {
+        handleModuleLine(plain);
+        return;
+    }
     if (handleCMakeMessage(plain))
         return;
     if (const std::optional<BuildProgress> step = parseProgressLine(plain))
@@ -224,6 +258,18 @@ bool ProjectBuilder::handleCMakeMessage(const QString &line)
     return false;
 }
 
+void ProjectBuilder::handleModuleLine(const QString &line)
+{
+    static const QRegularExpression registered(QStringLiteral("^\\d+\\.implementation_id: (.*)$"));
+    const QRegularExpressionMatch match = registered.match(line);
+    if (match.hasMatch())
+        m_registered << match.captured(1).trimmed();
+    if (std::optional<Diagnostic> found = PythonProject::parseLoadProblem(line)) {
+        m_problems << *found;
+        emit problem(*found);
+    }
+}
+
 void ProjectBuilder::flushCMakeMessage()
 {
     if (!m_cmakeMessage)
@@ -260,11 +306,27 @@ void ProjectBuilder::stepFinished(int exitCode, QProcess::ExitStatus status)
         finish(false, tr("Cannot build %1: %2").arg(folder, processError));
     } else if (status != QProcess::NormalExit || exitCode != 0) {
         finish(false, failureMessage(exitCode));
-    } else if (m_step == Step::Configure) {
-        runStep(Step::Build);
+    } else if (!m_plan.isEmpty()) {
+        runStep(m_plan.takeFirst());
+    } else if (m_python) {
+        finishPythonCheck();
     } else {
         finish(true, tr("Built %1 into %2.").arg(folder, nativePath(m_options.buildDir)));
     }
+}
+
+void ProjectBuilder::finishPythonCheck()
+{
+    const QString module = nativePath(m_python->modulePath());
+    if (!m_registered.contains(m_python->componentName())) {
+        const QString message = tr("%1 loads but does not register the component type %2 in %3().")
+                                    .arg(module, m_python->componentName(), m_python->initFunction());
+        m_problems << Diagnostic::error(m_python->modulePath(), 0, 0, message);
+        emit problem(m_problems.last());
+        finish(false, message);
+        return;
+    }
+    finish(true, tr("Checked %1: it loads into a manager and registers %2.").arg(module, m_registered.join(QStringLiteral(", "))));
 }
 
 QString ProjectBuilder::failureMessage(int exitCode) const
@@ -273,6 +335,12 @@ QString ProjectBuilder::failureMessage(int exitCode) const
     const auto isError
         = [](const Diagnostic &d) { return d.severity == Diagnostic::Severity::Error; };
     const int errors = int(std::count_if(m_problems.cbegin(), m_problems.cend(), isError));
+    if (m_step == Step::CompileIdl)
+        return tr("Compiling the IDL of %1 to Python failed (exit code %2).").arg(folder).arg(exitCode);
+    if (m_step == Step::CheckModule) {
+        return errors > 0 ? tr("Checking %1 failed with %n error(s).", nullptr, errors).arg(folder)
+                          : tr("Checking %1 failed (exit code %2).").arg(folder).arg(exitCode);
+    }
     const bool configuring = m_step == Step::Configure;
     if (errors > 0)
         return (configuring ? tr("Configuring %1 failed with %n error(s).", nullptr, errors)

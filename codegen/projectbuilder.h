@@ -2,6 +2,7 @@
 #pragma once
 
 #include "diagnostic.h"
+#include "pythonproject.h"
 
 #include <QObject>
 #include <QPointer>
@@ -47,6 +48,12 @@ struct BuildProgress
  * (`FILE:LINE[:COL]: error|warning: text`, `CMake Error at FILE:LINE`) become problem(), with
  * relative file names resolved against the folder the tool ran in. cancel() ends the whole
  * process tree (make or ninja and the compilers under it), not only the cmake process.
+ *
+ * A generated Python project (PythonProject) has nothing to build: its own IDL, if any, is
+ * compiled with its idlcompile.sh, then the module is loaded into a manager process of its own
+ * (`rtmanager --module-profile`), which imports it with RT Studio's Python packages and runs its
+ * `<Name>Init`; a module that does not load becomes a problem at the file and line it names, one
+ * that does not register its component type too.
  *
  * Qt Core only: used by the Builder's GUI and by rtctl alike.
  */
@@ -96,11 +103,16 @@ signals:
     void finished(bool ok, const QString &message);
 
 private:
-    enum class Step { Idle, Configure, Build };
+    enum class Step { Idle, Configure, Build, CompileIdl, CheckModule };
 
+    /// The program (in @p program) and arguments of @p step.
+    QStringList stepCommand(Step step, QString *program) const;
     void runStep(Step step);
     void readOutput();
     void handleLine(const QString &line);
+    /// A line of the manager that checks a Python module: the types it registers, its refusal.
+    void handleModuleLine(const QString &line);
+    void finishPythonCheck();
     bool handleCMakeMessage(const QString &line);
     void flushCMakeMessage();
     void stepFinished(int exitCode, QProcess::ExitStatus status);
@@ -115,6 +127,9 @@ private:
     qint64 m_processGroup = 0; ///< the running step's process group (its cmake's process id)
     QTimer *m_killTimer;
     Step m_step = Step::Idle;
+    QList<Step> m_plan; ///< the steps after the running one
+    std::optional<PythonProject> m_python; ///< the Python project being checked, if it is one
+    QStringList m_registered; ///< the component types the checked Python module registered
     bool m_cancelled = false;
     QByteArray m_pending;
     Profile::Diagnostics m_problems;

@@ -17,6 +17,7 @@
 #include <cerrno>
 #include <clocale>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <thread>
@@ -33,8 +34,18 @@ int profileModule(const char *file)
 {
     Runtime::Manager manager(Runtime::managerDefaults());
     RTC::Manager::attach(&manager);
+    // Standard output carries the profile alone: what the module prints while it loads (a
+    // Python module's prints among it) goes to standard error.
+    std::cout.flush();
+    const int output = dup(STDOUT_FILENO);
+    dup2(STDERR_FILENO, STDOUT_FILENO);
     // A module that does not load is reported on stderr by the manager.
-    if (!manager.loadModule(file, std::string(), nullptr))
+    const bool loaded = manager.loadModule(file, std::string(), nullptr);
+    std::cout.flush();
+    std::fflush(stdout);
+    dup2(output, STDOUT_FILENO);
+    close(output);
+    if (!loaded)
         return 1;
     std::cout << Runtime::ModuleProfiler::format(manager.factoryProfiles()) << std::flush;
     return 0;

@@ -395,7 +395,7 @@ std::optional<ComponentFactory> Manager::factoryFor(const CreateRequest &request
         if (const ComponentFactory *factory = findFactory(request))
             return *factory;
     }
-    // A type nobody registered yet may be in a loadable module of the load path: `<Type>.so`, as
+    // A type nobody registered yet may be in a loadable module of the load path: `<Type>.so` (or .py), as
     // the Builder and OpenRTP name them, else the module that lists it (as OpenRTM-aist's
     // manager.modules.search_auto). Load it, then look again.
     std::string module = findModuleFile(request.implementationId);
@@ -446,6 +446,12 @@ bool Manager::readConfigFiles(Properties *properties, const std::string &instanc
 
 RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string *error)
 {
+    // A manager that only loads modules (rtmanager --module-profile) never serves: a component
+    // made there would wait for ever on its own calls.
+    if (CORBA::is_nil(m_poa)) {
+        fail("create_component: this manager does not serve components (not started)", error);
+        return RTC::RTObject::_nil();
+    }
     std::string why = "create_component: unknown component type '" + request.implementationId + "'";
     const std::optional<ComponentFactory> factory = factoryFor(request, &why);
     if (!factory) {

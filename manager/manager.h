@@ -7,6 +7,7 @@
 #include "moduleprofiler.h"
 #include "namingregistrar.h"
 #include "properties.h"
+#include "pythonmoduleloader.h"
 
 #include <Manager.hh>
 
@@ -135,8 +136,14 @@ public:
     };
     void setLifecycleHooks(LifecycleHooks hooks);
     void setModuleInitCall(ModuleInitCall call);
+    /**
+     * Loads module @p path (found by findModuleFile()) and runs its init function (by default
+     * `<Name>Init`): a shared library, or a Python module run by the interpreter this process
+     * embeds on first use (PythonModuleLoader). False with @p error when it does not load.
+     */
     bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
-    /// The module file @p name stands for: itself when absolute, else found in the load path (with or without ".so").
+    /// The module file @p name stands for: itself when absolute, else found in the load path (with or
+    /// without ".so" or ".py").
     std::string findModuleFile(const std::string &name) const;
     /// The names of the component packages installed: in the package store and below
     /// `manager.modules.package_path`.
@@ -242,6 +249,14 @@ private:
     void watchAsSlave(pid_t parent);
     bool isLocalHost(const std::string &host) const;
 
+    // managermodules.cpp
+    /// dlopen()s @p path and calls its @p function through the module init call; its handle in @p handle.
+    bool runSharedModule(const std::string &path, const std::string &function, void **handle, std::string *error);
+    /// Runs the Python module @p path and its @p function in the embedded interpreter.
+    bool runPythonModule(const std::string &path, const std::string &function, std::string *error);
+    /// Forgets the component types module @p modulePath registered. Needs m_mutex held.
+    void dropFactoriesOf(const std::string &modulePath);
+
     Properties m_config;
     bool m_isMaster = false;
     std::string m_address;
@@ -274,6 +289,7 @@ private:
     std::vector<std::unique_ptr<Slave>> m_slaves;
     std::vector<std::unique_ptr<Module>> m_modules;
     ModuleInitCall m_moduleInitCall;
+    PythonModuleLoader m_pythonModules;
     ModuleProfiler m_moduleProfiler;
     PackageModuleDirs m_packageModuleDirs;
     CORBA::Object_var m_packageInstaller;

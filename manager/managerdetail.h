@@ -33,7 +33,7 @@ struct Manager::Module
 
 /// The module file whose init function the calling thread runs; empty when none.
 std::string moduleBeingLoaded();
-/// `<dir>/<type>.so` of the first of @p dirs that has it; empty when none does.
+/// `<dir>/<type>.so` (or `.py`) of the first of @p dirs that has it; empty when none does.
 std::string moduleInDirs(const std::string &type, const std::vector<std::string> &dirs);
 
 /// A manager's instance name from its `manager.instance_name` (`%p` is its process id).

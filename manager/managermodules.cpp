@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Loadable modules: OpenRTM-aist component modules whose init function (`extern "C" void
-// <Name>Init(RTC::Manager *)`) registers component factories; the component SDK calls it.
+// <Name>Init(RTC::Manager *)`) registers component factories; the component SDK calls it. Python
+// modules (`<Name>.py`, `def <Name>Init(manager)`) run in this process too, see PythonModuleLoader.
 #include "managerdetail.h"
 
 #include <algorithm>
@@ -24,7 +25,7 @@ std::string baseName(const std::string &path)
     const size_t dot = name.find('.');
     if (dot != std::string::npos)
         name = name.substr(0, dot);
-    if (name.compare(0, 3, "lib") == 0 && name.size() > 3)
+    if (name.compare(0, 3, "lib") == 0 && name.size() > 3 && !PythonModuleLoader::isPythonModule(path))
         name = name.substr(3);
     return name;
 }
@@ -71,6 +72,12 @@ std::vector<std::string> moduleDirs(const Properties &config, const std::vector<
     return dirs;
 }
 
+/// The language of module file @p path, as factory profiles name it.
+std::string moduleLanguage(const std::string &path)
+{
+    return PythonModuleLoader::isPythonModule(path) ? "Python" : "C++";
+}
+
 } // namespace
 
 std::vector<std::string> Manager::installedPackages() const
@@ -95,8 +102,10 @@ std::string moduleBeingLoaded()
 std::string moduleInDirs(const std::string &type, const std::vector<std::string> &dirs)
 {
     for (const std::string &dir : dirs) {
-        if (isFile(dir + '/' + type + ".so"))
-            return dir + '/' + type + ".so";
+        for (const char *suffix : {".so", ".py"}) {
+            if (isFile(dir + '/' + type + suffix))
+                return dir + '/' + type + suffix;
+        }
     }
     return {};
 }
@@ -144,10 +153,10 @@ std::string Manager::findModuleFile(const std::string &requested) const
     if (requested.empty())
         return {};
     // Relative names are looked up in manager.modules.load_path and the installed component
-    // packages' folders, with or without ".so".
+    // packages' folders, with or without ".so" (or ".py").
     std::vector<std::string> candidates;
     const std::vector<std::string> dirs = moduleDirs(m_config, installedModuleDirs(std::string()));
-    for (const std::string &name : {requested, requested + ".so"}) {
+    for (const std::string &name : {requested, requested + ".so", requested + ".py"}) {
         if (name.front() == '/')
             candidates.push_back(name);
         for (const std::string &dir : dirs)
@@ -184,21 +193,46 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
     }
     if (loaded)
         return fail("load_module: '" + path + "' is already loaded", error);
-    void *handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle)
-        return fail(std::string("load_module: '") + path + "' is not a loadable module: " + dlerror(), error);
     const std::string function = initFunction.empty() ? baseName(path) + "Init" : initFunction;
-    void *init = dlsym(handle, function.c_str());
-    if (!init) {
-        dlclose(handle);
-        return fail("load_module: '" + path + "' has no init function '" + function + "'", error);
-    }
+    void *handle = nullptr;
     loadingModule = path;
-    m_moduleInitCall(init);
+    const bool initialized = PythonModuleLoader::isPythonModule(path) ? runPythonModule(path, function, error)
+                                                                       : runSharedModule(path, function, &handle, error);
     loadingModule.clear();
+    if (!initialized)
+        return false;
     std::lock_guard lock(m_mutex);
     m_modules.push_back(std::make_unique<Module>(Module{path, function, handle}));
     return true;
+}
+
+bool Manager::runSharedModule(const std::string &path, const std::string &function, void **handle, std::string *error)
+{
+    *handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!*handle)
+        return fail(std::string("load_module: '") + path + "' is not a loadable module: " + dlerror(), error);
+    void *init = dlsym(*handle, function.c_str());
+    if (!init) {
+        dlclose(*handle);
+        return fail("load_module: '" + path + "' has no init function '" + function + "'", error);
+    }
+    m_moduleInitCall(init);
+    return true;
+}
+
+bool Manager::runPythonModule(const std::string &path, const std::string &function, std::string *error)
+{
+    // manager.modules.Python.plugin: another build of the plugin (tests use a missing one).
+    const std::string plugin = m_config.value("manager.modules.Python.plugin", PythonModuleLoader::defaultPlugin());
+    std::string why;
+    if (m_pythonModules.load(plugin, path, function, &why))
+        return true;
+    // An init function that raised halfway may have registered types of a module that is not loaded.
+    {
+        std::lock_guard lock(m_mutex);
+        dropFactoriesOf(path);
+    }
+    return fail("load_module: " + why, error);
 }
 
 void Manager::preloadModules()
@@ -229,14 +263,18 @@ bool Manager::unloadModule(const std::string &path, std::string *error)
             *error = m_lastError;
         return false;
     }
-    const std::string modulePath = (*it)->path;
     // Components made from the module may still run its code: the library stays mapped, but
     // its types can no longer be created and it is no longer listed.
+    dropFactoriesOf((*it)->path);
+    m_modules.erase(it);
+    return true;
+}
+
+void Manager::dropFactoriesOf(const std::string &modulePath)
+{
     m_factories.erase(std::remove_if(m_factories.begin(), m_factories.end(),
                                      [&modulePath](const ComponentFactory &f) { return f.modulePath == modulePath; }),
                       m_factories.end());
-    m_modules.erase(it);
-    return true;
 }
 
 std::vector<Properties> Manager::loadableModules()
@@ -249,7 +287,8 @@ std::vector<Properties> Manager::loadableModules()
             continue;
         while (dirent *entry = readdir(d)) {
             const std::string name = entry->d_name;
-            if (name.size() >= 4 && name.compare(name.size() - 3, 3, ".so") == 0)
+            if ((name.size() >= 4 && name.compare(name.size() - 3, 3, ".so") == 0)
+                || PythonModuleLoader::isPythonModule(name))
                 files.push_back(dir + '/' + name);
         }
         closedir(d);
@@ -258,12 +297,16 @@ std::vector<Properties> Manager::loadableModules()
     // As OpenRTM-aist's: one entry per component type a module registers, its factory profile with
     // the module's file; a library that holds no component is not listed. A process that cannot
     // profile modules names each file once.
-    Properties unprofiled;
-    unprofiled.set("language", "C++");
-    const std::vector<std::vector<Properties>> profiles = m_moduleProfiler.hasProgram()
-        ? m_moduleProfiler.profiles(files,
-                                    int(configNumber("manager.modules.profile_timeout", 5000)))
-        : std::vector<std::vector<Properties>>(files.size(), {unprofiled});
+    std::vector<std::vector<Properties>> profiles;
+    if (m_moduleProfiler.hasProgram()) {
+        profiles = m_moduleProfiler.profiles(files, int(configNumber("manager.modules.profile_timeout", 5000)));
+    } else {
+        for (const std::string &file : files) {
+            Properties unprofiled;
+            unprofiled.set("language", moduleLanguage(file));
+            profiles.push_back({unprofiled});
+        }
+    }
     std::vector<Properties> result;
     for (std::size_t i = 0; i < files.size(); ++i) {
         for (Properties module : profiles[i]) {
@@ -284,7 +327,7 @@ std::vector<Properties> Manager::loadedModules()
         p.set("file_path", module->path);
         p.set("module_file_path", module->path);
         p.set("init_function", module->initFunction);
-        p.set("language", "C++");
+        p.set("language", moduleLanguage(module->path));
         result.push_back(p);
     }
     return result;

@@ -5,7 +5,9 @@ constructor takes the members in declaration order, an enum a class with one ite
 enumerator, the items and the integer constants live in the enclosing scope. The extension
 converts values of these classes to and from CDR by the same IDL."""
 
+import importlib.util
 import os
+import sys
 import types
 
 import _rtstudio
@@ -136,6 +138,20 @@ def _make_types():
 
 
 _scopes = _make_types()
+
+
+def _register_modules():
+    """Makes the IDL modules without a package of their own here (Img, JARA_ARM, …) importable
+    as omniORBpy lays them out (`import Img`, `Img.TimedCameraImage`), once the types are made."""
+    for name, namespace in _scopes.items():
+        if name in sys.modules or importlib.util.find_spec(name) is not None:
+            continue
+        module = types.ModuleType(name, "IDL module %s" % name)
+        module.__dict__.update(namespace)
+        sys.modules[name] = module
+
+
+_register_modules()
 
 
 def populate(namespace, module_name):

@@ -14,6 +14,9 @@ target_compile_definitions(tst_python PRIVATE
     RTSTUDIO_BUILD_DIR="${CMAKE_BINARY_DIR}"
     CMAKE_COMMAND="${CMAKE_COMMAND}")
 add_dependencies(tst_python rtmanager rtctl rtpython rtsdk)
+if(TARGET rtpymodules)
+    add_dependencies(tst_python rtpymodules)
+endif()
 # The sanitizer build's extension module needs the sanitizer runtimes loaded first into python3.
 set(python_sanitizer_preload "")
 if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=[^ ]*address")
@@ -26,3 +29,23 @@ endif()
 list(JOIN python_sanitizer_preload " " python_sanitizer_preload)
 target_compile_definitions(tst_python PRIVATE RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
 set_tests_properties(tst_python PROPERTIES LABELS python TIMEOUT 600)
+
+# Python modules inside rtmanager (python/embed): the plugin rtmanager opens on its first .py module.
+if(TARGET rtpymodules)
+    rtstudio_add_test(tst_pythonmanager SOURCES tst_pythonmanager.cpp
+        LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+    target_compile_definitions(tst_pythonmanager PRIVATE
+        RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+        RTSTUDIO_PYTHON_PLUGIN="$<TARGET_FILE:rtpymodules>")
+    add_dependencies(tst_pythonmanager rtmanager rtctl rtpython rtpymodules rtsdk)
+    set_tests_properties(tst_pythonmanager PROPERTIES LABELS python TIMEOUT 600)
+endif()
+
+# The Builder's Build and Run in Manager for a generated Python project, against a live rtmanager.
+if(TARGET rtpymodules)
+    rtstudio_add_test(tst_builderpython SOURCES tst_builderpython.cpp
+        LIBS rtstudio_app rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+    target_compile_definitions(tst_builderpython PRIVATE RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
+    add_dependencies(tst_builderpython rtmanager rtctl rtpython rtpymodules rtsdk)
+    set_tests_properties(tst_builderpython PROPERTIES LABELS python TIMEOUT 600)
+endif()

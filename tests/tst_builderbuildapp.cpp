@@ -123,7 +123,7 @@ void TestBuilderBuildApp::buildNeedsGeneratedProject()
     QVERIFY(!opened.build->cancelAction()->isEnabled());
     QVERIFY(opened.editor->buildOutputPanel()->isHidden());
 
-    // A folder without a CMake project (e.g. Python only) does not enable it either.
+    // A folder without a generated project does not enable it either.
     QTemporaryDir empty;
     opened.generate->setOutputFolder(empty.path());
     opened.build->updateActions();

@@ -10,9 +10,8 @@
 // - OpenRTM-aist-Python's SeqIO example unchanged, its ten data types also reaching rtmanager's SeqIn;
 // - two Python components of one process, configuration parameters, a generated Python project;
 // - the IDL types' Python classes and CDR (data/python/datatypes.py), from the build tree and installed.
-#include "componentstatus.h"
-#include "livesystem.h"
-#include "rtctlrunner.h"
+#include "hostrtctl.h"
+#include "pythonsanitizer.h"
 
 #include <QtTest>
 
@@ -43,9 +42,8 @@ QProcessEnvironment pythonEnvironment(const QString &packages = QStringLiteral(R
     const QString preload = QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD);
     if (!preload.isEmpty()) {
         environment.insert(QStringLiteral("LD_PRELOAD"), preload);
-        const QString asan = environment.value(QStringLiteral("ASAN_OPTIONS"));
         environment.insert(QStringLiteral("ASAN_OPTIONS"),
-                           asan + (asan.isEmpty() ? QString() : QStringLiteral(":")) + QStringLiteral("detect_leaks=0"));
+                           LiveTest::withoutLeakChecks(environment.value(QStringLiteral("ASAN_OPTIONS"))));
     }
     return environment;
 }
@@ -93,6 +91,7 @@ private:
 
     QTemporaryDir m_work;
     LiveTest::LiveSystem m_live;
+    LiveTest::HostRtctl m_host{m_live, hostName};
     QProcess *m_manager = nullptr;
     CORBA::ORB_var m_orb;
     LiveTest::PrintedOutput m_printed;
@@ -100,31 +99,22 @@ private:
 
 RtctlResult TestPython::rtctl(const QStringList &arguments) const
 {
-    return runRtctlAt(QStringLiteral("/%1/%2.host_cxt").arg(m_live.namingServer(), hostName), arguments);
+    return m_host.run(arguments);
 }
 
 bool TestPython::rtctlSucceeds(const QStringList &arguments) const
 {
-    const RtctlResult r = rtctl(arguments);
-    if (r.code != 0)
-        qWarning().noquote() << "rtctl" << arguments.join(' ') << "failed:" << r.out << r.err;
-    return r.code == 0;
+    return m_host.succeeds(arguments);
 }
 
 QString TestPython::status(const QString &component, const char *name) const
 {
-    return LiveTest::componentStatus(
-        m_orb, QStringLiteral("corbaname::%1#%2.host_cxt/%3").arg(m_live.namingServer(), hostName, component), name);
+    return m_host.status(m_orb, component, name);
 }
 
 QString TestPython::state(const QString &component) const
 {
-    for (const QString &line : rtctl({QStringLiteral("ls"), QStringLiteral("-l")}).lines()) {
-        const QStringList fields = line.simplified().split(QLatin1Char(' '));
-        if (fields.size() > 1 && fields.last() == component)
-            return fields.first();
-    }
-    return {};
+    return m_host.state(component);
 }
 
 QString TestPython::writeConf(const QString &name, const QStringList &extraLines)
@@ -186,7 +176,7 @@ void TestPython::simpleIoExamplesRunUnchanged()
     if (!QFileInfo::exists(example + QStringLiteral("ConsoleIn.py")))
         QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
               "project) is absent");
-    const QString manager = QStringLiteral("/%1/%2.host_cxt/manager.mgr").arg(m_live.namingServer(), hostName);
+    const QString manager = m_host.managerPath();
     QVERIFY(rtctlSucceeds({"mgr", manager, "create", "ConsoleOut?instance_name=SimpleIoSink"}));
     QProcess *out = startScript(example + QStringLiteral("ConsoleOut.py"), QStringLiteral("ConsoleOut0.rtc"));
     QVERIFY(out);
@@ -236,7 +226,7 @@ void TestPython::seqIoExamplesRunUnchanged()
     if (!QFileInfo::exists(example + QStringLiteral("SeqIn.py")))
         QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
               "project) is absent");
-    const QString manager = QStringLiteral("/%1/%2.host_cxt/manager.mgr").arg(m_live.namingServer(), hostName);
+    const QString manager = m_host.managerPath();
     QVERIFY(rtctlSucceeds({"mgr", manager, "create", "SeqIn?instance_name=SeqSink"}));
     QProcess *out = startScript(example + QStringLiteral("SeqOut.py"), QStringLiteral("SequenceOutComponent0.rtc"));
     QVERIFY(out);
@@ -267,7 +257,7 @@ void TestPython::seqIoExamplesRunUnchanged()
 
 void TestPython::componentExchangesDataWithBuiltins()
 {
-    const QString manager = QStringLiteral("/%1/%2.host_cxt/manager.mgr").arg(m_live.namingServer(), hostName);
+    const QString manager = m_host.managerPath();
     QVERIFY(rtctlSucceeds({"mgr", manager, "create", "ConsoleIn?instance_name=ScalerFeed", "create",
                            "ConsoleOut?instance_name=ScalerSink"}));
     QProcess *scaler = startScript(testScript(QStringLiteral("PyScaler.py")), QStringLiteral("PyScaler0.rtc"));
