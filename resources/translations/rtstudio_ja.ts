@@ -284,7 +284,7 @@
 <context>
     <name>Builder::BuildController</name>
     <message>
-        <location filename="../../builder/buildcontroller.cpp" line="+36"/>
+        <location filename="../../builder/buildcontroller.cpp" line="+37"/>
         <source>&amp;Build</source>
         <translation>ビルド(&amp;B)</translation>
     </message>
@@ -300,11 +300,11 @@
     </message>
     <message>
         <location line="+5"/>
-        <source>Configure and build the generated C++ project with CMake</source>
-        <translation>生成した C++ プロジェクトを CMake で構成してビルドします</translation>
+        <source>Configure and build the generated C++ project with CMake, or check that the Python component loads into a manager</source>
+        <translation>生成された C++ プロジェクトを CMake で構成・ビルドするか、Python コンポーネントがマネージャにロードできるか確認します</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Stop the running build</source>
         <translation>実行中のビルドを停止します</translation>
     </message>
@@ -314,7 +314,7 @@
         <translation>SDK プレフィックス (CMAKE_PREFIX_PATH) とビルドタイプ</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+74"/>
         <source>Nothing to build: generate the component&apos;s project first.</source>
         <translation>ビルドするものがありません。先にコンポーネントのプロジェクトを生成してください。</translation>
     </message>
@@ -1765,7 +1765,7 @@
 <context>
     <name>Builder::RunController</name>
     <message>
-        <location filename="../../builder/runcontroller.cpp" line="+38"/>
+        <location filename="../../builder/runcontroller.cpp" line="+39"/>
         <source>&amp;Run in Manager…</source>
         <translation>マネージャで実行(&amp;R)…</translation>
     </message>
@@ -1775,7 +1775,7 @@
         <translation>ビルドしたモジュールを実行中のマネージャにロードし、コンポーネントを生成します</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+71"/>
         <source>Nothing to run: generate and build the component first.</source>
         <translation>実行するものがありません。先にコンポーネントのコード生成とビルドを行ってください。</translation>
     </message>
@@ -2256,7 +2256,7 @@
 <context>
     <name>PinComponentCommand</name>
     <message>
-        <location filename="../../systemeditor/plan/pincommand.cpp" line="+18"/>
+        <location filename="../../systemeditor/plan/pincommand.cpp" line="+19"/>
         <source>Free %1</source>
         <translation>%1 の固定を解除</translation>
     </message>
