@@ -11,6 +11,7 @@
 #include "problemspanel.h"
 #include "recentfiles.h"
 #include "rtsdocument.h"
+#include "restoredialog.h"
 #include "rtseditor.h"
 #include "rtstudioresources.h"
 #include "systemcanvas.h"
@@ -338,6 +339,14 @@ void MainWindow::createMenus()
             statusBar()->showMessage(tr("Open a system to restore it."), 5000);
     });
     m_online->fillMenu(online);
+    // The Plan view's Deploy opens the Restore dialog on the pinned system, installing from the
+    // plan's repository.
+    RtsEditor::setDeployHandler([this](const Profile::RtsProfile &system, const QString &repository) {
+        SystemEditor::RestoreDialog *dialog = m_online->openRestore(system);
+        dialog->setCreateMissing(true, QString());
+        if (!repository.isEmpty())
+            dialog->setInstallFrom(repository);
+    });
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action("actionContextHelp"));

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rtseditor.h"
 
+#include "healer.h"
+#include "plan.h"
 #include "planview.h"
 #include "propertiespanel.h"
 #include "repositoryview.h"
@@ -81,6 +83,33 @@ SystemEditor::RtcRepository *RtsEditor::sharedRepository()
     return repository;
 }
 
+namespace {
+
+RtsEditor::DeployHandler &deployHandler()
+{
+    static RtsEditor::DeployHandler handler;
+    return handler;
+}
+
+} // namespace
+
+void RtsEditor::setDeployHandler(DeployHandler handler)
+{
+    deployHandler() = std::move(handler);
+}
+
+void RtsEditor::deployPlan(const Planner::Plan &plan)
+{
+    if (!deployHandler())
+        return;
+    QHash<QString, QString> placement;
+    for (const Planner::Placement &p : plan.placements)
+        placement.insert(p.instanceName, p.node);
+    Profile::RtsProfile system = m_document->profile();
+    Deploy::pinPlacement(&system, placement);
+    deployHandler()(system, m_planView->repositoryFolder());
+}
+
 RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     : QWidget(parent)
     , m_document(document)
@@ -115,6 +144,8 @@ RtsEditor::RtsEditor(RtsDocument *document, QWidget *parent)
     m_centre->addWidget(m_canvas);
     m_centre->addWidget(m_planView);
     m_planView->hide();
+    m_planView->setDeployAvailable(bool(deployHandler()));
+    connect(m_planView, &SystemEditor::PlanView::deployRequested, this, &RtsEditor::deployPlan);
     centreLayout->addWidget(m_centre, 1);
     centreLayout->addWidget(m_status);
 

@@ -1,7 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "rtsprofile.h"
+
+#include <functional>
+
 #include <QWidget>
+
+namespace Planner {
+struct Plan;
+}
 
 class QAction;
 class QLabel;
@@ -58,7 +66,15 @@ public:
      */
     static SystemEditor::RtcRepository *sharedRepository();
 
+    /// Deploys a system whose components are pinned where the plan puts them, from a repository
+    /// (empty: none); set by the main window, which owns the online tools.
+    using DeployHandler = std::function<void(const Profile::RtsProfile &system, const QString &repository)>;
+    /// Makes every Plan view's Deploy call @p handler (and enables it).
+    static void setDeployHandler(DeployHandler handler);
+
 private:
+    void deployPlan(const Planner::Plan &plan);
+
     QWidget *buildToolBar();
     QWidget *buildBrowserTabs();
     QWidget *buildDetailTabs();

@@ -16,6 +16,9 @@
 #include "managerproxy.h"
 #include "managerview.h"
 #include "onlinediagram.h"
+#include "planview.h"
+#include "rtsdocument.h"
+#include "rtseditor.h"
 #include "onlinesession.h"
 #include "profileio.h"
 #include "restoredialog.h"
@@ -99,6 +102,7 @@ private slots:
     void watchHealsWhenANodeDies();
     void keepRunningMovesTheDiagramsComponents();
     void plansDeploysAndHealsAcrossHosts();
+    void planViewDeploysThroughTheRestoreDialog();
 
 private:
     RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
@@ -703,6 +707,60 @@ void TestDeployInstall::plansDeploysAndHealsAcrossHosts()
     watcher.terminate();
     QVERIFY(watcher.waitForFinished(20000));
     QCOMPARE(watcher.exitCode(), 0);
+}
+
+// The System Editor's Plan view on two live managers: the Doubler pinned (dragged) to node B, the
+// rest planned; Deploy hands the pinned system and the plan's repository to the Restore dialog,
+// which installs the Doubler on node B and creates every component on its node.
+void TestDeployInstall::planViewDeploysThroughTheRestoreDialog()
+{
+    QString nodeB;
+    QVERIFY(startNodeB(&nodeB));
+    Profile::RtsProfile system;
+    QVERIFY(!writePinnedSystem(nodeB, &system).isEmpty());
+    // Only the Doubler stays pinned; the planner places the others.
+    for (Profile::RtsComponent &component : system.components) {
+        if (component.instanceName != "Doubler0")
+            component.properties.clear();
+    }
+    Deploy::TargetOptions target;
+    target.nameServers = {m_live->namingServer()};
+    SystemEditor::OnlineSession session;
+    std::unique_ptr<SystemEditor::RestoreDialog> opened;
+    Studio::RtsEditor::setDeployHandler([&](const Profile::RtsProfile &pinned, const QString &repository) {
+        opened = std::make_unique<SystemEditor::RestoreDialog>(&session, pinned, target);
+        opened->setCreateMissing(true, QString());
+        opened->setInstallFrom(repository);
+    });
+    const auto resetHandler = qScopeGuard([] { Studio::RtsEditor::setDeployHandler({}); });
+    Studio::RtsDocument document(system);
+    Studio::RtsEditor editor(&document);
+    SystemEditor::PlanView *plan = editor.planView();
+    QSignalSpy planned(plan, &SystemEditor::PlanView::planChanged);
+    plan->openRepository(m_repo);
+    QTRY_VERIFY_WITH_TIMEOUT(!plan->isBusy(), 20000);
+    plan->readFactsFromManagers({manager(), nodeB});
+    QTRY_VERIFY_WITH_TIMEOUT(!plan->isBusy() && plan->facts().size() == 2, 20000);
+    plan->replan();
+    QTRY_VERIFY2_WITH_TIMEOUT(!plan->isBusy() && plan->plan().feasible, qPrintable(plan->statusText()), 20000);
+    QCOMPARE(plan->plan().placement("Doubler0")->node, nodeB);
+    QVERIFY(plan->deployAction()->isEnabled());
+    plan->deployAction()->trigger();
+    QVERIFY(opened);
+    QSignalSpy dialogPlanned(opened.get(), &SystemEditor::RestoreDialog::planned);
+    QTRY_VERIFY_WITH_TIMEOUT(opened->currentDeployPlan().installs.size() == 1
+                                 && opened->findChild<QPushButton *>("restoreButton")->isEnabled(),
+                             20000);
+    QCOMPARE(opened->currentDeployPlan().installs.first().node, nodeB);
+    QSignalSpy restored(opened.get(), &SystemEditor::RestoreDialog::restored);
+    opened->restore();
+    QVERIFY(restored.wait(30000));
+    QVERIFY2(restored.at(0).at(0).toBool(), qPrintable(opened->report().toText()));
+    // Each component where the plan put it: the Doubler under node B's naming context.
+    QStringList doublers;
+    for (const auto &entry : Deploy::ComponentMapper::liveComponents({"/" + m_live->namingServer()}, nullptr))
+        doublers << entry.path;
+    QVERIFY2(doublers.join(' ').contains("nodeb.host_cxt/Doubler0.rtc"), qPrintable(doublers.join(' ')));
 }
 
 QTEST_MAIN(TestDeployInstall)

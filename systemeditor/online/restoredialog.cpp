@@ -252,10 +252,11 @@ void RestoreDialog::plan()
     const Profile::RtsProfile profile = m_profile;
     const Deploy::TargetOptions options = m_options;
     const QString repository = installing() ? m_repository->text().trimmed() : QString();
+    const bool deploying = !repository.isEmpty() || hasPins();
     m_session->submit(
         OnlineSession::deploymentHost(),
-        [profile, options, repository] {
-            if (repository.isEmpty())
+        [profile, options, repository, deploying] {
+            if (!deploying)
                 return QVariant::fromValue(Deploy::planRestore(profile, options));
             Deploy::DeployOptions deploy;
             deploy.target = options;
@@ -276,13 +277,20 @@ void RestoreDialog::plan()
 
 void RestoreDialog::takePlan(const QVariant &value)
 {
-    if (value.canConvert<Deploy::DeployPlan>()) {
+    m_deploying = value.canConvert<Deploy::DeployPlan>();
+    if (m_deploying) {
         m_deployPlan = value.value<Deploy::DeployPlan>();
         m_plan = m_deployPlan.restore;
     } else {
         m_deployPlan = {};
         m_plan = value.value<Deploy::RestorePlan>();
     }
+}
+
+bool RestoreDialog::hasPins() const
+{
+    return std::any_of(m_profile.components.cbegin(), m_profile.components.cend(),
+                       [](const Profile::RtsComponent &c) { return !Deploy::pinOf(c).isEmpty(); });
 }
 
 QString RestoreDialog::installFor(const Deploy::ComponentMapping &mapping) const
@@ -338,10 +346,11 @@ void RestoreDialog::showPlan()
         notes.append(tr("%1 is required but not found").arg(c.instanceName));
     if (!missing.isEmpty() && !m_create->isChecked())
         notes.append(tr("Tick \"Create missing components\" to create them through a manager."));
-    bool creates = false;
+    // A component pinned to a node has its manager already.
+    bool unplaced = false;
     for (const Deploy::ComponentMapping &c : std::as_const(m_plan.components))
-        creates = creates || c.kind == Deploy::MappingKind::Create;
-    const bool noManager = creates && m_options.manager.isEmpty();
+        unplaced = unplaced || (c.kind == Deploy::MappingKind::Create && c.manager.isEmpty());
+    const bool noManager = unplaced && m_options.manager.isEmpty();
     if (noManager)
         notes.append(tr("Choose the manager that creates the missing components."));
     m_summary->setText(notes.isEmpty() ? tr("Ready to restore.") : notes.join(QLatin1Char('\n')));
@@ -431,8 +440,8 @@ void RestoreDialog::restore()
     m_stop->show();
     m_session->submit(
         OnlineSession::deploymentHost(),
-        [profile, plan, options, deployPlan, deploy, control, cancel] {
-            if (deploy.repository.isEmpty())
+        [profile, plan, options, deployPlan, deploy, deploying = m_deploying, control, cancel] {
+            if (!deploying)
                 return QVariant::fromValue(Deploy::restoreSystem(profile, plan, options, control));
             return QVariant::fromValue(Deploy::deploySystem(profile, deployPlan, deploy, control));
         },

@@ -33,7 +33,8 @@ class OnlineSession;
  * engine's final report. "Create missing components through a manager" plans the components
  * that are not running as created through the chosen manager (the engine's create path). A
  * failed restore is rolled back by the engine; the report says what failed and what was rolled
- * back. "Install missing component types from repository" plans it as a deploy: the component
+ * back. "Install missing component types from repository" (and a system whose components are pinned
+ * to nodes, as the Plan view's Deploy gives it) plans it as a deploy: the component
  * types a creating manager cannot load are installed there from the repository first (the
  * Install column and the dry run say which package on which node), and a failure uninstalls them
  * again.
@@ -98,6 +99,8 @@ private:
     void showReport();
     void createChanged();
     bool installing() const;
+    /// The system pins components to nodes (deploy.pin): they are created there.
+    bool hasPins() const;
     void takePlan(const QVariant &value);
     QString installFor(const Deploy::ComponentMapping &mapping) const;
 
@@ -106,6 +109,7 @@ private:
     Deploy::TargetOptions m_options;
     Deploy::RestorePlan m_plan;
     Deploy::DeployPlan m_deployPlan;
+    bool m_deploying = false; ///< planned as a deploy (installs or pins), restored as one
     Deploy::DeployReport m_report;
     std::shared_ptr<std::atomic_bool> m_cancel;
     QTableWidget *m_components = nullptr;

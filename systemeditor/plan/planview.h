@@ -77,6 +77,8 @@ public:
     QListWidget *unmetList() const { return m_unmetList; }
     QListWidget *dryRunList() const { return m_dryRunList; }
     QAction *deployAction() const { return m_deploy; }
+    /// The component repository planned with (empty when none was opened).
+    QString repositoryFolder() const { return m_repositoryFolder; }
 
 signals:
     /// The user asked to deploy @p plan (what the deploy transaction connects to).
