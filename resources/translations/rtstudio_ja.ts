@@ -2626,7 +2626,7 @@
 <context>
     <name>Studio::MainWindow</name>
     <message>
-        <location filename="../../app/mainwindow.cpp" line="+171"/>
+        <location filename="../../app/mainwindow.cpp" line="+172"/>
         <source>&amp;About RT Studio</source>
         <translation>RT Studio について(&amp;A)</translation>
     </message>
@@ -2756,7 +2756,7 @@
         <translation>復元するシステムを開いてください。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+12"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
@@ -3067,7 +3067,7 @@
 <context>
     <name>Studio::RtsEditor</name>
     <message>
-        <location filename="../../app/rtseditor.cpp" line="+166"/>
+        <location filename="../../app/rtseditor.cpp" line="+197"/>
         <source>Plan</source>
         <translation>配置計画</translation>
     </message>
@@ -4765,12 +4765,22 @@ Installs: %1</source>
         <translation>読んだノード：%1。</translation>
     </message>
     <message>
-        <location line="+170"/>
+        <location line="+131"/>
+        <source>Install, create and connect the components as planned (opens the Restore dialog)</source>
+        <translation>計画どおりにコンポーネントをインストール・生成・接続します (復元ダイアログを開きます)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Deploying needs the online tools of RT Studio&apos;s main window</source>
+        <translation>配備には RT Studio のメインウィンドウのオンラインツールが必要です</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Not read: %1</source>
         <translation>読めなかったもの：%1</translation>
     </message>
     <message>
-        <location line="-162"/>
+        <location line="-161"/>
         <source>Open a facts file or read the managers to plan on their nodes.</source>
         <translation>ファクトのファイルを開くかマネージャから読むと、そのノードへの配置を計画します。</translation>
     </message>
@@ -4790,17 +4800,7 @@ Installs: %1</source>
         <translation>デプロイするものはありません：計画がありません。</translation>
     </message>
     <message>
-        <location line="+46"/>
-        <source>Install, create and connect the components as planned</source>
-        <translation>計画どおりにコンポーネントをインストール・生成・接続します</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Deploying from here needs the deploy transaction, which this version does not have yet</source>
-        <translation>ここからのデプロイにはデプロイのトランザクションが必要ですが、このバージョンにはまだありません</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+60"/>
         <source>Not planned yet.</source>
         <translation>まだ計画していません。</translation>
     </message>
@@ -5271,7 +5271,7 @@ Installs: %1</source>
         <translation>rtctl repo で作成したコンポーネントリポジトリ。コンポーネントを生成する各マネージャが、ロードできない型のパッケージを自身の鍵束で検証してインストールします。</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+146"/>
         <source>host:port of the manager that runs it; empty: %1</source>
         <translation>これを実行するマネージャのホスト:ポート。空欄の場合：%1</translation>
     </message>
@@ -5286,7 +5286,7 @@ Installs: %1</source>
         <translation>「不足しているコンポーネントをマネージャで生成」にチェックを入れると、マネージャで生成します。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Choose the manager that creates the missing components.</source>
         <translation>不足しているコンポーネントを生成するマネージャを選択してください。</translation>
     </message>

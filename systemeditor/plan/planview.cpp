@@ -396,9 +396,8 @@ void PlanView::updateActions()
     const bool deployable = m_planned && m_plan.feasible && !m_outOfDate && !m_busy;
     m_deploy->setEnabled(m_deployAvailable && deployable);
     m_deploy->setToolTip(m_deployAvailable
-                             ? tr("Install, create and connect the components as planned")
-                             : tr("Deploying from here needs the deploy transaction, which this "
-                                  "version does not have yet"));
+                             ? tr("Install, create and connect the components as planned (opens the Restore dialog)")
+                             : tr("Deploying needs the online tools of RT Studio's main window"));
 }
 
 void PlanView::refresh()
