@@ -3,6 +3,7 @@
 
 #include "configurationview.h"
 #include "corbaerror.h"
+#include "deployer.h"
 #include "documentcontroller.h"
 #include "driftview.h"
 #include "executioncontextview.h"
@@ -37,6 +38,8 @@
 #include <QTreeView>
 
 Q_DECLARE_METATYPE(Deploy::RestorePlan)
+
+Q_DECLARE_METATYPE(Deploy::DeployReport)
 
 namespace Studio {
 
@@ -177,6 +180,16 @@ void OnlineDocks::fillMenu(QMenu *menu)
         else
             emit statusMessage(tr("Open a system to run it."));
     });
+    for (const bool uninstall : {false, true}) {
+        add(uninstall ? "actionUndeployUninstall" : "actionUndeploy",
+            uninstall ? tr("Undeploy System and Uninstall Its &Packages") : tr("&Undeploy System"),
+            [this, uninstall] {
+                if (const auto *system = qobject_cast<RtsDocument *>(m_activeDocument()))
+                    undeploy(system->profile(), uninstall);
+                else
+                    emit statusMessage(tr("Open a system to undeploy it."));
+            });
+    }
     menu->addSeparator();
     const std::pair<const char *, OnlineDiagram::Action> all[]
         = {{QT_TR_NOOP("Activate All"), OnlineDiagram::Action::Activate},
@@ -288,6 +301,43 @@ void OnlineDocks::quitting()
         Deploy::LocalRuntime().stop(nullptr);
         m_ownership->started = false;
     }
+}
+
+void OnlineDocks::undeploy(const Profile::RtsProfile &profile, bool uninstall,
+                           const std::function<void(const Deploy::DeployReport &)> &done)
+{
+    const Deploy::TargetOptions target = targetOptions();
+    emit statusMessage(tr("Undeploying %1…").arg(systemName(profile)));
+    m_session->submit(
+        SystemEditor::OnlineSession::deploymentHost(),
+        [profile, target, uninstall] {
+            return QVariant::fromValue(
+                Deploy::undeploySystem(profile, Deploy::planRestore(profile, target), target, uninstall));
+        },
+        this,
+        [this, profile, done](const SystemEditor::OnlineResult &result) {
+            Deploy::DeployReport report;
+            if (result.ok) {
+                report = result.value.value<Deploy::DeployReport>();
+            } else {
+                report.ok = false;
+                report.error = result.error;
+            }
+            const auto count = [&report](const QString &action) {
+                int n = 0;
+                for (const Deploy::DeployStep &step : std::as_const(report.steps))
+                    n += step.action == action && step.status == Deploy::StepStatus::Done ? 1 : 0;
+                return n;
+            };
+            emit statusMessage(report.ok ? tr("%1 undeployed: %2 component(s) exited, %3 package(s) uninstalled.")
+                                               .arg(systemName(profile))
+                                               .arg(count(QStringLiteral("exit")))
+                                               .arg(count(QStringLiteral("uninstall")))
+                                         : tr("%1 was not undeployed: %2").arg(systemName(profile), report.error));
+            m_nameService->refresh();
+            if (done)
+                done(report);
+        });
 }
 
 void OnlineDocks::runLocally(const Profile::RtsProfile &profile,

@@ -23,6 +23,7 @@ struct RtsProfile;
 }
 
 namespace Deploy {
+struct DeployReport;
 struct TargetOptions;
 }
 
@@ -120,6 +121,13 @@ public:
      */
     void runLocally(const Profile::RtsProfile &profile,
                     const std::function<void(const QString &error)> &done = {});
+    /**
+     * The reverse of a deploy (as `rtctl undeploy`): stops the system, disconnects its connectors,
+     * makes its components exit and, with @p uninstall, removes the packages of its component types
+     * from the nodes that ran them; off the GUI thread, the outcome in the status bar and in `done`.
+     */
+    void undeploy(const Profile::RtsProfile &profile, bool uninstall,
+                  const std::function<void(const Deploy::DeployReport &)> &done = {});
     /// Called when the application quits: stops the local runtime this window started, unless
     /// the user asked to keep it running.
     void quitting();

@@ -12,9 +12,13 @@
 // --watch, killing the manager that runs the Doubler moves it to the other one, and data flows
 // again.
 #include "componentstatus.h"
+#include "healer.h"
 #include "livesystem.h"
 #include "managerproxy.h"
 #include "managerview.h"
+#include "mainwindow.h"
+#include "nameserviceview.h"
+#include "onlinedocks.h"
 #include "onlinediagram.h"
 #include "planview.h"
 #include "rtsdocument.h"
@@ -32,6 +36,7 @@
 #include <QCheckBox>
 #include <QDirIterator>
 #include <QScopeGuard>
+#include <QSettings>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
@@ -103,6 +108,7 @@ private slots:
     void keepRunningMovesTheDiagramsComponents();
     void plansDeploysAndHealsAcrossHosts();
     void planViewDeploysThroughTheRestoreDialog();
+    void undeployFromTheOnlineMenu();
 
 private:
     RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
@@ -144,6 +150,11 @@ void TestDeployInstall::makeRepository(const QString &dir, bool signedWithKey, c
 void TestDeployInstall::initTestCase()
 {
     QVERIFY(m_work.isValid());
+    // The main window and the dialogs keep their settings in a folder of the test's own.
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_work.filePath("settings"));
+    QCoreApplication::setOrganizationName(QStringLiteral("RtStudioTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_deployinstall"));
     const QString project = m_work.filePath("Doubler");
     const RtctlResult generated = runRtctl({"gen", doublerProfile, "--lang", "cpp", "-o", project});
     QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
@@ -245,12 +256,7 @@ void TestDeployInstall::deployInstallsRestoresAndStarts()
 void TestDeployInstall::pinnedComponentsAreCreatedByTheirNode()
 {
     Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
-    for (Profile::RtsComponent &component : system.components) {
-        Profile::RtsProperty pin;
-        pin.name = QStringLiteral("deploy.pin");
-        pin.value = manager();
-        component.properties.append(pin);
-    }
+    Deploy::pinPlacement(&system, {{"Count0", manager()}, {"Doubler0", manager()}, {"Show0", manager()}});
     const QString file = m_work.filePath("pinned.xml");
     Profile::Diagnostics diagnostics;
     QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
@@ -496,12 +502,7 @@ QProcess *TestDeployInstall::startNodeB(QString *nodeB)
 QString TestDeployInstall::writePinnedSystem(const QString &nodeB, Profile::RtsProfile *system)
 {
     *system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
-    for (Profile::RtsComponent &component : system->components) {
-        Profile::RtsProperty pin;
-        pin.name = QStringLiteral("deploy.pin");
-        pin.value = component.instanceName == "Doubler0" ? nodeB : manager();
-        component.properties.append(pin);
-    }
+    Deploy::pinPlacement(system, {{"Count0", manager()}, {"Doubler0", nodeB}, {"Show0", manager()}});
     const QString file = m_work.filePath("watched.xml");
     Profile::Diagnostics diagnostics;
     return Profile::saveRtsProfileFile(*system, file, &diagnostics) ? file : QString();
@@ -648,14 +649,7 @@ void TestDeployInstall::plansDeploysAndHealsAcrossHosts()
     QVERIFY2(web.startRegistered(busybox, {"httpd", "-f", "-p", webAddress + ":8080", "-h", m_repo}, serving, &why),
              qPrintable(why));
     Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
-    for (Profile::RtsComponent &component : system.components) {
-        if (component.instanceName == "Doubler0")
-            continue;
-        Profile::RtsProperty pin;
-        pin.name = QStringLiteral("deploy.pin");
-        pin.value = node.value(component.instanceName == "Count0" ? "hostA" : "hostB");
-        component.properties.append(pin);
-    }
+    Deploy::pinPlacement(&system, {{"Count0", node.value("hostA")}, {"Show0", node.value("hostB")}});
     const QString file = m_work.filePath("planned.xml");
     Profile::Diagnostics diagnostics;
     QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
@@ -761,6 +755,26 @@ void TestDeployInstall::planViewDeploysThroughTheRestoreDialog()
     for (const auto &entry : Deploy::ComponentMapper::liveComponents({"/" + m_live->namingServer()}, nullptr))
         doublers << entry.path;
     QVERIFY2(doublers.join(' ').contains("nodeb.host_cxt/Doubler0.rtc"), qPrintable(doublers.join(' ')));
+}
+
+// Online → Undeploy System and Uninstall Its Packages: the GUI's rtctl undeploy --uninstall.
+void TestDeployInstall::undeployFromTheOnlineMenu()
+{
+    const RtctlResult deployed = rtctl("deploy", "doubled.xml", {"--repo", m_repo});
+    QVERIFY2(deployed.code == 0, qPrintable(deployed.out + deployed.err));
+    QCOMPARE(live(), systemInstances);
+    Studio::MainWindow window;
+    QVERIFY(window.onlineDocks()->nameService()->addServer(m_live->namingServer()));
+    QVERIFY(window.findChild<QAction *>("actionUndeployUninstall"));
+    // The manager that created the components, as the deploy's -m named it.
+    Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
+    Deploy::pinPlacement(&system, {{"Count0", manager()}, {"Doubler0", manager()}, {"Show0", manager()}});
+    std::optional<Deploy::DeployReport> report;
+    window.onlineDocks()->undeploy(system, true, [&report](const Deploy::DeployReport &r) { report = r; });
+    QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), 30000);
+    QVERIFY2(report->ok, qPrintable(report->toText()));
+    QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
+    QCOMPARE(filesBelow(m_store), QStringList());
 }
 
 QTEST_MAIN(TestDeployInstall)

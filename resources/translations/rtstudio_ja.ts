@@ -2820,7 +2820,7 @@
 <context>
     <name>Studio::OnlineDocks</name>
     <message>
-        <location filename="../../app/onlinedocks.cpp" line="+69"/>
+        <location filename="../../app/onlinedocks.cpp" line="+72"/>
         <source>Name Service</source>
         <translation>ネームサービス</translation>
     </message>
@@ -2901,6 +2901,16 @@
     </message>
     <message>
         <location line="+4"/>
+        <source>&amp;Undeploy System</source>
+        <translation>システムの配備を解除(&amp;U)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Open a system to undeploy it.</source>
+        <translation>配備を解除するシステムを開いてください。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Activate All</source>
         <translation>すべてアクティブ化</translation>
     </message>
@@ -2956,7 +2966,12 @@
         <translation>ローカルランタイムを起動できませんでした：%1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-67"/>
+        <source>Undeploy System and Uninstall Its &amp;Packages</source>
+        <translation>システムの配備を解除しパッケージをアンインストール(&amp;P)</translation>
+    </message>
+    <message>
+        <location line="+77"/>
         <source>Local runtime started.</source>
         <translation>ローカルランタイムを起動しました。</translation>
     </message>
@@ -2971,7 +2986,22 @@
         <translation>ローカルランタイムを停止しました。</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+20"/>
+        <source>Undeploying %1…</source>
+        <translation>%1 の配備を解除中…</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1 undeployed: %2 component(s) exited, %3 package(s) uninstalled.</source>
+        <translation>%1 の配備を解除しました: コンポーネント %2 個を終了、パッケージ %3 個をアンインストール。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 was not undeployed: %2</source>
+        <translation>%1 の配備を解除できませんでした: %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Restoring %1 on the local runtime…</source>
         <translation>%1 をローカルランタイムに復元しています…</translation>
     </message>
