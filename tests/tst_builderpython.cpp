@@ -64,15 +64,6 @@ const QHash<QString, QString> unsupportedTypes{
     {"RTC::TimedWChar", "holds a wchar"},
 };
 
-/// The values of a comma-separated list of integers.
-QList<qint64> integers(const QString &text)
-{
-    QList<qint64> values;
-    for (const QString &item : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
-        values << item.toLongLong();
-    return values;
-}
-
 } // namespace
 
 class TestBuilderPython : public QObject
@@ -97,7 +88,7 @@ private:
     /// Loads data/python/PyAllTypes.py, with m_dataTypes as its list, into the manager; activates it.
     bool loadAllTypes();
     /// The integers the C++ sink received last.
-    QList<qint64> sinkValues() const { return integers(m_host.status(m_orb, QStringLiteral("Sink.rtc"), "received_values")); }
+    QList<qint64> sinkValues() const { return LiveTest::integers(m_host.status(m_orb, QStringLiteral("Sink.rtc"), "received_values")); }
 
     QTemporaryDir m_work;
     LiveTest::LiveSystem m_live;

@@ -75,16 +75,22 @@ QStringList filesBelow(const QString &root)
     return files;
 }
 
-QList<long> numbers(const QString &text)
-{
-    QList<long> list;
-    static const QRegularExpression number(QStringLiteral("-?\\d+"));
-    for (auto it = number.globalMatch(text); it.hasNext();)
-        list << it.next().captured().toLong();
-    return list;
-}
 
 } // namespace
+
+/// Hosts A and B simulated with network namespaces, each with omniNames on 2809 and an rtmanager
+/// on 2810 whose package store starts empty, and a third host serving the repository over HTTP
+/// with busybox's web server, as any static web server would.
+struct SimulatedNodes
+{
+    LiveTest::SimulatedHosts hosts;
+    std::map<QString, std::unique_ptr<LiveTest::LiveSystem>> live;
+    std::map<QString, QProcess *> managers;
+    std::unique_ptr<LiveTest::LiveSystem> web;
+    QString repositoryUrl;
+
+    QString node(const QString &host) const { return QStringLiteral("corbaloc::%1:2810").arg(hosts.address(host)); }
+};
 
 class TestDeployInstall : public QObject
 {
@@ -118,6 +124,11 @@ private:
     void makeRepository(const QString &dir, bool signedWithKey, const QStringList &debs);
     /// The manager options of a node with its own empty package store @p store.
     QStringList nodeOptions(const QString &store) const;
+    /**
+     * Starts @p nodes, their stores below the work folder's @p storePrefix-HOST; an empty string
+     * when they run, else why not (@p skip set when this machine cannot simulate them).
+     */
+    QString startSimulatedNodes(SimulatedNodes *nodes, const QString &storePrefix, bool *skip);
     /// A second manager, node B, in the test's name server under nodeb.host_cxt.
     QProcess *startNodeB(QString *nodeB);
     /// doubled.xml with the Doubler pinned to @p nodeB and the rest to manager(); its file.
@@ -240,8 +251,8 @@ void TestDeployInstall::deployInstallsRestoresAndStarts()
     QVERIFY(!filesBelow(m_store).isEmpty());
     // Started: the printer receives the counter's numbers doubled.
     const QString show = QStringLiteral("corbaname::%1#deployhost.host_cxt/Show0.rtc").arg(m_live->namingServer());
-    QTRY_VERIFY_WITH_TIMEOUT(numbers(LiveTest::componentStatus(m_orb, show, "received_values")).size() >= 3, 20000);
-    for (long value : numbers(LiveTest::componentStatus(m_orb, show, "received_values")))
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::integers(LiveTest::componentStatus(m_orb, show, "received_values")).size() >= 3, 20000);
+    for (qint64 value : LiveTest::integers(LiveTest::componentStatus(m_orb, show, "received_values")))
         QVERIFY2(value > 0 && value % 2 == 0, qPrintable(QString::number(value)));
 
     const RtctlResult undeployed = rtctl("undeploy", "doubled.xml", {"--uninstall"});
@@ -416,35 +427,50 @@ void TestDeployInstall::managerViewInstallsAndUninstalls()
     QVERIFY2(finished.takeFirst().at(0).toString().contains("none.deb"), "a refusal names the package");
 }
 
-void TestDeployInstall::deploysAcrossHostsFromWebServer()
+QString TestDeployInstall::startSimulatedNodes(SimulatedNodes *nodes, const QString &storePrefix, bool *skip)
 {
+    *skip = true;
     const QString busybox = QStandardPaths::findExecutable(QStringLiteral("busybox"));
     if (busybox.isEmpty())
-        QSKIP("no busybox to serve the repository (scripts/install-deps.sh installs it)");
-    LiveTest::SimulatedHosts hosts;
+        return QStringLiteral("no busybox to serve the repository (scripts/install-deps.sh installs it)");
     QString why;
-    if (!hosts.create({"hostA", "hostB", "repohost"}, &why))
-        QSKIP(qPrintable(QStringLiteral("cannot simulate hosts: ") + why));
-    std::map<QString, std::unique_ptr<LiveTest::LiveSystem>> live;
+    if (!nodes->hosts.create({"hostA", "hostB", "repohost"}, &why))
+        return QStringLiteral("cannot simulate hosts: ") + why;
+    *skip = false;
     for (const QString host : {"hostA", "hostB"}) {
-        live[host] = std::make_unique<LiveTest::LiveSystem>(hosts.liveHost(host));
-        QVERIFY2(live[host]->startNameServer(&why, 2809), qPrintable(why));
-        QVERIFY2(live[host]->startManager(QStringLiteral(RTMANAGER_PATH), 2810,
-                                          QStringList {"corba.nameservers=" + live[host]->namingServer()}
-                                              + nodeOptions(m_work.filePath("store-" + host)),
-                                          &why),
-                 qPrintable(why));
+        nodes->live[host] = std::make_unique<LiveTest::LiveSystem>(nodes->hosts.liveHost(host));
+        if (!nodes->live[host]->startNameServer(&why, 2809))
+            return why;
+        const QString store = m_work.filePath(storePrefix + host);
+        QDir(store).removeRecursively();
+        nodes->managers[host] = nodes->live[host]->startManager(
+            QStringLiteral(RTMANAGER_PATH), 2810,
+            QStringList {"corba.nameservers=" + nodes->live[host]->namingServer()} + nodeOptions(store), &why);
+        if (!nodes->managers[host])
+            return why;
     }
-    // The repository as any static web server serves it.
-    LiveTest::LiveSystem web(hosts.liveHost("repohost"));
-    const QString webAddress = hosts.address("repohost");
+    nodes->web = std::make_unique<LiveTest::LiveSystem>(nodes->hosts.liveHost("repohost"));
+    const QString webAddress = nodes->hosts.address("repohost");
     const auto serving = [&webAddress] {
         QTcpSocket socket;
         socket.connectToHost(webAddress, 8080);
         return socket.waitForConnected(200);
     };
-    QVERIFY2(web.startRegistered(busybox, {"httpd", "-f", "-p", webAddress + ":8080", "-h", m_repo}, serving, &why),
-             qPrintable(why));
+    if (!nodes->web->startRegistered(busybox, {"httpd", "-f", "-p", webAddress + ":8080", "-h", m_repo}, serving, &why))
+        return why;
+    nodes->repositoryUrl = QStringLiteral("http://%1:8080/").arg(webAddress);
+    return QString();
+}
+
+void TestDeployInstall::deploysAcrossHostsFromWebServer()
+{
+    SimulatedNodes nodes;
+    bool skip = false;
+    const QString why = startSimulatedNodes(&nodes, "store-", &skip);
+    if (skip)
+        QSKIP(qPrintable(why));
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+    auto &live = nodes.live;
 
     // The system saved with each component where it should run: the Doubler on host B.
     Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
@@ -458,7 +484,7 @@ void TestDeployInstall::deploysAcrossHostsFromWebServer()
     Profile::Diagnostics diagnostics;
     QVERIFY(Profile::saveRtsProfileFile(system, file, &diagnostics));
 
-    const QString repoUrl = QStringLiteral("http://%1:8080/").arg(webAddress);
+    const QString repoUrl = nodes.repositoryUrl;
     const RtctlResult r = runRtctl({"deploy", "--timeout", "20000", "--repo", repoUrl, file});
     QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
     const QString hostB = QStringLiteral("/%1/hostB.host_cxt/manager.mgr").arg(live.at("hostB")->namingServer());
@@ -467,8 +493,8 @@ void TestDeployInstall::deploysAcrossHostsFromWebServer()
     QVERIFY(filesBelow(m_work.filePath("store-hostA")).isEmpty());
     QVERIFY(!filesBelow(m_work.filePath("store-hostB")).isEmpty());
     const QString show = QStringLiteral("corbaname::%1#hostA.host_cxt/Show0.rtc").arg(live.at("hostA")->namingServer());
-    QTRY_VERIFY_WITH_TIMEOUT(numbers(LiveTest::componentStatus(m_orb, show, "received_values")).size() >= 3, 20000);
-    for (long value : numbers(LiveTest::componentStatus(m_orb, show, "received_values")))
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::integers(LiveTest::componentStatus(m_orb, show, "received_values")).size() >= 3, 20000);
+    for (qint64 value : LiveTest::integers(LiveTest::componentStatus(m_orb, show, "received_values")))
         QVERIFY2(value > 0 && value % 2 == 0, qPrintable(QString::number(value)));
 
     const RtctlResult undeployed = runRtctl({"undeploy", "--timeout", "20000", "--uninstall", file});
@@ -551,7 +577,7 @@ void TestDeployInstall::watchHealsWhenANodeDies()
     const long before = received();
     QTRY_VERIFY_WITH_TIMEOUT(received() > before + 2, 20000);
     qInfo("from the kill to doubled counts flowing again: %lld ms", sinceKill.elapsed());
-    for (long value : numbers(LiveTest::componentStatus(m_orb, show, "received_values")))
+    for (qint64 value : LiveTest::integers(LiveTest::componentStatus(m_orb, show, "received_values")))
         QVERIFY2(value > 0 && value % 2 == 0, qPrintable(QString::number(value)));
 
     watcher.terminate();
@@ -618,36 +644,17 @@ void TestDeployInstall::keepRunningMovesTheDiagramsComponents()
 // again on the host that is left.
 void TestDeployInstall::plansDeploysAndHealsAcrossHosts()
 {
-    const QString busybox = QStandardPaths::findExecutable(QStringLiteral("busybox"));
-    if (busybox.isEmpty())
-        QSKIP("no busybox to serve the repository (scripts/install-deps.sh installs it)");
-    LiveTest::SimulatedHosts hosts;
-    QString why;
-    if (!hosts.create({"hostA", "hostB", "repohost"}, &why))
-        QSKIP(qPrintable(QStringLiteral("cannot simulate hosts: ") + why));
-    std::map<QString, std::unique_ptr<LiveTest::LiveSystem>> live;
-    std::map<QString, QProcess *> managers;
+    SimulatedNodes nodes;
+    bool skip = false;
+    const QString why = startSimulatedNodes(&nodes, "heal-", &skip);
+    if (skip)
+        QSKIP(qPrintable(why));
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+    auto &live = nodes.live;
+    auto &managers = nodes.managers;
     QHash<QString, QString> node;
-    for (const QString host : {"hostA", "hostB"}) {
-        live[host] = std::make_unique<LiveTest::LiveSystem>(hosts.liveHost(host));
-        QVERIFY2(live[host]->startNameServer(&why, 2809), qPrintable(why));
-        QDir(m_work.filePath("heal-" + host)).removeRecursively();
-        managers[host] = live[host]->startManager(QStringLiteral(RTMANAGER_PATH), 2810,
-                                                  QStringList {"corba.nameservers=" + live[host]->namingServer()}
-                                                      + nodeOptions(m_work.filePath("heal-" + host)),
-                                                  &why);
-        QVERIFY2(managers[host], qPrintable(why));
-        node[host] = QStringLiteral("corbaloc::%1:2810").arg(hosts.address(host));
-    }
-    LiveTest::LiveSystem web(hosts.liveHost("repohost"));
-    const QString webAddress = hosts.address("repohost");
-    const auto serving = [&webAddress] {
-        QTcpSocket socket;
-        socket.connectToHost(webAddress, 8080);
-        return socket.waitForConnected(200);
-    };
-    QVERIFY2(web.startRegistered(busybox, {"httpd", "-f", "-p", webAddress + ":8080", "-h", m_repo}, serving, &why),
-             qPrintable(why));
+    for (const QString host : {"hostA", "hostB"})
+        node[host] = nodes.node(host);
     Profile::RtsProfile system = DeployTest::loadSystem(DeployTest::dataFile("doubled.xml"));
     Deploy::pinPlacement(&system, {{"Count0", node.value("hostA")}, {"Show0", node.value("hostB")}});
     const QString file = m_work.filePath("planned.xml");
@@ -662,7 +669,7 @@ void TestDeployInstall::plansDeploysAndHealsAcrossHosts()
     watcher.setProcessChannelMode(QProcess::MergedChannels);
     watcher.start(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli/rtctl"),
                   {"deploy", "--timeout", "20000", "-s", live.at("hostA")->namingServer(), "-s",
-                   live.at("hostB")->namingServer(), "--repo", QStringLiteral("http://%1:8080/").arg(webAddress),
+                   live.at("hostB")->namingServer(), "--repo", nodes.repositoryUrl,
                    "--plan", "--nodes", node.value("hostA") + "," + node.value("hostB"), "--watch", "--interval",
                    "100", file});
     QString output;

@@ -48,15 +48,6 @@ QProcessEnvironment pythonEnvironment(const QString &packages = QStringLiteral(R
     return environment;
 }
 
-/// The values of a comma-separated list of integers.
-QList<qint64> integers(const QString &text)
-{
-    QList<qint64> values;
-    for (const QString &item : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
-        values << item.toLongLong();
-    return values;
-}
-
 } // namespace
 
 class TestPython : public QObject
@@ -214,7 +205,7 @@ void TestPython::simpleIoExamplesRunUnchanged()
     QVERIFY2(QRegularExpression(QStringLiteral("ON_RECEIVED\\n.*\\n.*\\nData: +[1-9][0-9]*\\n")).match(printed(out)).hasMatch(),
              qPrintable(printed(out).left(2000)));
     QTRY_VERIFY_WITH_TIMEOUT(status(QStringLiteral("SimpleIoSink.rtc"), "received_count").toInt() >= 3, runTimeoutMs);
-    QCOMPARE(integers(status(QStringLiteral("SimpleIoSink.rtc"), "received_values")).value(0) > 0, true);
+    QCOMPARE(LiveTest::integers(status(QStringLiteral("SimpleIoSink.rtc"), "received_values")).value(0) > 0, true);
     QVERIFY(rtctlSucceeds({"deact", "ConsoleIn0.rtc"}));
     m_live.stop(in);
     m_live.stop(out);
@@ -269,7 +260,7 @@ void TestPython::componentExchangesDataWithBuiltins()
 
     QTRY_VERIFY_WITH_TIMEOUT(status(QStringLiteral("ScalerSink.rtc"), "received_count").toInt() >= 3, runTimeoutMs);
     // What the C++ sink received went through the Python component: the source's counts times 1000.
-    const QList<qint64> values = integers(status(QStringLiteral("ScalerSink.rtc"), "received_values"));
+    const QList<qint64> values = LiveTest::integers(status(QStringLiteral("ScalerSink.rtc"), "received_values"));
     QVERIFY(!values.isEmpty());
     for (const qint64 value : values)
         QVERIFY2(value > 0 && value % 1000 == 0, qPrintable(QString::number(value)));

@@ -38,15 +38,6 @@ int lineOf(const QString &file, const QString &marker)
     return 0;
 }
 
-/// The values of a comma-separated list of integers.
-QList<qint64> integers(const QString &text)
-{
-    QList<qint64> values;
-    for (const QString &item : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
-        values << item.toLongLong();
-    return values;
-}
-
 } // namespace
 
 class TestPythonManager : public QObject
@@ -145,7 +136,7 @@ void TestPythonManager::moduleExchangesDataWithBuiltins()
     // C++ → Python → C++: the C++ sink gets the C++ source's counts times 1000.
     QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("Sink.rtc"), "received_count").toInt() >= 3,
                              runTimeoutMs);
-    const QList<qint64> values = integers(m_host.status(m_orb, QStringLiteral("Sink.rtc"), "received_values"));
+    const QList<qint64> values = LiveTest::integers(m_host.status(m_orb, QStringLiteral("Sink.rtc"), "received_values"));
     QVERIFY(!values.isEmpty());
     for (const qint64 value : values)
         QVERIFY2(value > 0 && value % 1000 == 0, qPrintable(QString::number(value)));

@@ -7,6 +7,7 @@
 #include <RTC.hh>
 
 #include <QByteArray>
+#include <QList>
 #include <QString>
 
 namespace LiveTest {
@@ -27,6 +28,15 @@ inline QString componentStatus(CORBA::ORB_ptr orb, const QString &ior, const cha
     } catch (const CORBA::Exception &) {
     }
     return {};
+}
+
+/// The values of a status that lists integers with commas (ConsoleOut's `received_values`).
+inline QList<qint64> integers(const QString &text)
+{
+    QList<qint64> values;
+    for (const QString &item : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
+        values << item.toLongLong();
+    return values;
 }
 
 } // namespace LiveTest
