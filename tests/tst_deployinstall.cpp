@@ -121,6 +121,8 @@ private:
     QString manager() const { return QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_managerPort); }
     /// The live components of the test's name server, sorted.
     QStringList live() const { return DeployTest::liveInstances(m_live->namingServer()); }
+    /// What a failed or undone deploy must not leave: live components and files in the store.
+    QStringList leftBehind() const { return live() + filesBelow(m_store); }
     void makeRepository(const QString &dir, bool signedWithKey, const QStringList &debs);
     /// The manager options of a node with its own empty package store @p store.
     QStringList nodeOptions(const QString &store) const;
@@ -237,8 +239,7 @@ void TestDeployInstall::dryRunChangesNothing()
              qPrintable(r.out));
     QVERIFY2(r.out.contains("component Doubler0 create"), qPrintable(r.out));
     QVERIFY2(!r.out.contains("install rtc-aist"), qPrintable(r.out));
-    QCOMPARE(live(), QStringList());
-    QCOMPARE(filesBelow(m_store), QStringList());
+    QCOMPARE(leftBehind(), QStringList());
 }
 
 void TestDeployInstall::deployInstallsRestoresAndStarts()
@@ -259,8 +260,7 @@ void TestDeployInstall::deployInstallsRestoresAndStarts()
     QVERIFY2(undeployed.code == 0, qPrintable(undeployed.out + undeployed.err));
     QVERIFY2(undeployed.out.contains(QStringLiteral("done uninstall %1 on %2").arg(package, manager())),
              qPrintable(undeployed.out));
-    QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
-    QCOMPARE(filesBelow(m_store), QStringList());
+    QTRY_COMPARE_WITH_TIMEOUT(leftBehind(), QStringList(), 10000);
 }
 
 // Without -m and without live saved paths, the planner's pins (deploy.pin) name the creating node.
@@ -299,8 +299,7 @@ void TestDeployInstall::typeNoRepositoryProvidesIsRefusedFirst()
     const RtctlResult without = rtctl("deploy", "doubled.xml");
     QCOMPARE(without.code, 1);
     QVERIFY2(without.err.contains("no repository given"), qPrintable(without.err));
-    QCOMPARE(live(), QStringList());
-    QCOMPARE(filesBelow(m_store), QStringList());
+    QCOMPARE(leftBehind(), QStringList());
 }
 
 void TestDeployInstall::unsignedRepositoryIsRefused()
@@ -310,8 +309,7 @@ void TestDeployInstall::unsignedRepositoryIsRefused()
     QVERIFY2(r.err.contains(QStringLiteral("install %1 1.0.0 on %2").arg(package, manager())),
              qPrintable(r.err));
     QVERIFY2(r.err.contains("unsigned"), qPrintable(r.err));
-    QCOMPARE(live(), QStringList());
-    QCOMPARE(filesBelow(m_store), QStringList());
+    QCOMPARE(leftBehind(), QStringList());
 }
 
 void TestDeployInstall::failedRestoreUninstalls()
@@ -321,8 +319,7 @@ void TestDeployInstall::failedRestoreUninstalls()
     QVERIFY2(r.err.contains("connect doubler-nowhere"), qPrintable(r.err));
     QVERIFY2(r.out.contains(QStringLiteral("rolled back install %1 1.0.0 on %2").arg(package, manager())),
              qPrintable(r.out));
-    QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
-    QCOMPARE(filesBelow(m_store), QStringList());
+    QTRY_COMPARE_WITH_TIMEOUT(leftBehind(), QStringList(), 10000);
 }
 
 // The System Editor's Restore dialog: ticking "Install missing component types" plans the
@@ -780,8 +777,7 @@ void TestDeployInstall::undeployFromTheOnlineMenu()
     window.onlineDocks()->undeploy(system, true, [&report](const Deploy::DeployReport &r) { report = r; });
     QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), 30000);
     QVERIFY2(report->ok, qPrintable(report->toText()));
-    QTRY_COMPARE_WITH_TIMEOUT(live(), QStringList(), 10000);
-    QCOMPARE(filesBelow(m_store), QStringList());
+    QTRY_COMPARE_WITH_TIMEOUT(leftBehind(), QStringList(), 10000);
 }
 
 QTEST_MAIN(TestDeployInstall)
