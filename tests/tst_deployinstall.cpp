@@ -132,7 +132,7 @@ private:
      */
     QString startSimulatedNodes(SimulatedNodes *nodes, const QString &storePrefix, bool *skip);
     /// A second manager, node B, in the test's name server under nodeb.host_cxt.
-    QProcess *startNodeB(QString *nodeB);
+    QProcess *startNodeB(QString *nodeB, quint16 port = 0);
     /// doubled.xml with the Doubler pinned to @p nodeB and the rest to manager(); its file.
     QString writePinnedSystem(const QString &nodeB, Profile::RtsProfile *system);
 
@@ -504,9 +504,9 @@ void TestDeployInstall::deploysAcrossHostsFromWebServer()
 
 // rtctl deploy --watch: the Doubler runs on a second manager; when that manager is killed, the
 // watcher plans it anew onto the first (installing it there), and doubled counts flow again.
-QProcess *TestDeployInstall::startNodeB(QString *nodeB)
+QProcess *TestDeployInstall::startNodeB(QString *nodeB, quint16 port)
 {
-    const quint16 portB = LiveTest::freePort();
+    const quint16 portB = port ? port : LiveTest::freePort();
     *nodeB = QStringLiteral("corbaloc::127.0.0.1:%1").arg(portB);
     // Each test's node B starts with nothing installed.
     QDir(m_work.filePath("store-b")).removeRecursively();
@@ -577,11 +577,31 @@ void TestDeployInstall::watchHealsWhenANodeDies()
     for (qint64 value : LiveTest::integers(LiveTest::componentStatus(m_orb, show, "received_values")))
         QVERIFY2(value > 0 && value % 2 == 0, qPrintable(QString::number(value)));
 
+    // Node B comes back: a candidate again, but the Doubler stays where it runs.
+    QString sameNodeB;
+    QVERIFY(startNodeB(&sameNodeB, quint16(QUrl("iiop://" + nodeB.mid(10)).port())));
+    QCOMPARE(sameNodeB, nodeB);
+    QTRY_VERIFY2_WITH_TIMEOUT(read().contains(QStringLiteral("done node back %1: nothing moved back").arg(nodeB)),
+                              qPrintable(output), 20000);
     watcher.terminate();
     QVERIFY(watcher.waitForFinished(20000));
     read();
     QCOMPARE(watcher.exitCode(), 0);
     QVERIFY2(output.contains("stopped watching"), qPrintable(output));
+
+    // rtctl cryo keeps where each component runs now (its saved path), so that a later deploy of
+    // the saved file creates the Doubler on the first manager again.
+    const QString saved = m_work.filePath("healed.xml");
+    const RtctlResult cryo = runRtctl({"cryo", "-o", saved, "/" + m_live->namingServer() + "/deployhost.host_cxt"});
+    QVERIFY2(cryo.code == 0, qPrintable(cryo.err));
+    const RtctlResult undeployed = runRtctl({"undeploy", "-s", m_live->namingServer(), "--uninstall", saved});
+    QVERIFY2(undeployed.code == 0, qPrintable(undeployed.out + undeployed.err));
+    QTRY_COMPARE_WITH_TIMEOUT(leftBehind(), QStringList(), 10000);
+    const RtctlResult again = runRtctl({"deploy", "--timeout", "20000", "-s", m_live->namingServer(), "--repo", m_repo, saved});
+    QVERIFY2(again.code == 0, qPrintable(again.out + again.err));
+    QVERIFY2(again.out.contains(QStringLiteral("done install %1 1.0.0 on /%2/deployhost.host_cxt/manager.mgr")
+                                    .arg(package, m_live->namingServer())),
+             qPrintable(again.out));
 }
 
 // Keep Running on an online tab of the saved system: the same heal, and the diagram then shows
