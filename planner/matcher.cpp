@@ -1,17 +1,22 @@
 // SPDX-License-Identifier: MIT
 #include "matcher.h"
 
+#include <QCoreApplication>
 #include <QVersionNumber>
 
 namespace Planner {
 
 namespace {
 
-const QString Unknown = QStringLiteral("unknown");
+/// What the planner says of a fact the node does not publish (translated when it is shown).
+QString unknown()
+{
+    return QCoreApplication::translate("Planner", "unknown");
+}
 
 QString known(const std::optional<QString> &value)
 {
-    return value.value_or(Unknown);
+    return value.value_or(unknown());
 }
 
 /// Language names as profiles and managers spell them (C++, cxx, Python3) folded onto one.
@@ -57,10 +62,10 @@ void checkPlatform(const ComponentRequirements &c, const NodeFacts &node, QList<
 {
     if (!c.oses.isEmpty() && !(node.os && c.oses.contains(*node.os, Qt::CaseInsensitive)))
         out->append(
-            {QStringLiteral("OS %1").arg(c.oses.join(QStringLiteral(" or "))), known(node.os)});
+            {QCoreApplication::translate("Planner", "OS %1").arg(c.oses.join(QStringLiteral(" or "))), known(node.os)});
     if (!c.osVersions.isEmpty() && !startsWithAny(node.distribution, c.osVersions)
         && !startsWithAny(node.osRelease, c.osVersions))
-        out->append({QStringLiteral("OS version %1").arg(c.osVersions.join(QStringLiteral(" or "))),
+        out->append({QCoreApplication::translate("Planner", "OS version %1").arg(c.osVersions.join(QStringLiteral(" or "))),
                      node.distribution.value_or(known(node.osRelease))});
     bool archOk = c.architectures.isEmpty();
     for (const QString &arch : c.architectures)
@@ -69,7 +74,7 @@ void checkPlatform(const ComponentRequirements &c, const NodeFacts &node, QList<
                 && canonicalArchitecture(arch) == canonicalArchitecture(*node.architecture));
     if (!archOk)
         out->append(
-            {QStringLiteral("architecture %1").arg(c.architectures.join(QStringLiteral(" or "))),
+            {QCoreApplication::translate("Planner", "architecture %1").arg(c.architectures.join(QStringLiteral(" or "))),
              known(node.architecture)});
 }
 
@@ -78,27 +83,27 @@ void checkUserFacts(const ComponentRequirements &c, const NodeFacts &node, QList
     const QStringList devices = node.devices();
     for (const QString &device : c.devices) {
         if (!devices.contains(device))
-            out->append({QStringLiteral("device %1").arg(device),
-                         devices.isEmpty() ? QStringLiteral("no devices listed")
+            out->append({QCoreApplication::translate("Planner", "device %1").arg(device),
+                         devices.isEmpty() ? QCoreApplication::translate("Planner", "no devices listed")
                                            : devices.join(QLatin1Char(','))});
     }
     for (auto it = c.nodeFacts.constBegin(); it != c.nodeFacts.constEnd(); ++it) {
         if (!hasFact(node, it.key(), it.value()))
-            out->append({QStringLiteral("node.%1 = %2").arg(it.key(), it.value()),
-                         node.userFacts.value(it.key(), Unknown)});
+            out->append({QCoreApplication::translate("Planner", "node.%1 = %2").arg(it.key(), it.value()),
+                         node.userFacts.value(it.key(), unknown())});
     }
 }
 
 void checkPlacement(const ComponentRequirements &c, const NodeFacts &node, QList<Mismatch> *out)
 {
     if (!c.pinnedNode.isEmpty() && c.pinnedNode != node.name && c.pinnedNode != node.hostname)
-        out->append({QStringLiteral("pinned to %1").arg(c.pinnedNode),
-                     QStringLiteral("the name %1").arg(node.name)});
+        out->append({QCoreApplication::translate("Planner", "pinned to %1").arg(c.pinnedNode),
+                     QCoreApplication::translate("Planner", "the name %1").arg(node.name)});
     if (c.cpuShare > 0) {
         const std::optional<double> free = node.freeCpus();
         if (!free || *free < c.cpuShare)
-            out->append({QStringLiteral("CPU share %1").arg(c.cpuShare),
-                         free ? QStringLiteral("%1 free").arg(*free) : Unknown});
+            out->append({QCoreApplication::translate("Planner", "CPU share %1").arg(c.cpuShare),
+                         free ? QCoreApplication::translate("Planner", "%1 free").arg(*free) : unknown()});
     }
 }
 
@@ -144,12 +149,12 @@ QList<Mismatch> Matcher::mismatches(const ComponentRequirements &c, const NodeFa
     const TypeSource source = typeSource(c.typeName, node);
     // A node that loads the type already hosts its language, whatever it publishes.
     if (!c.language.isEmpty() && !source.loadable && !hostsLanguage(node, c.language))
-        out.append({QStringLiteral("language %1").arg(c.language),
-                    node.languages ? node.languages->join(QLatin1Char(',')) : Unknown});
+        out.append({QCoreApplication::translate("Planner", "language %1").arg(c.language),
+                    node.languages ? node.languages->join(QLatin1Char(',')) : unknown()});
     checkUserFacts(c, node, &out);
     if (!source.available())
-        out.append({QStringLiteral("type %1 loadable or installable").arg(c.typeName),
-                    QStringLiteral("no such type, no package for its architecture (%1) and SDK")
+        out.append({QCoreApplication::translate("Planner", "type %1 loadable or installable").arg(c.typeName),
+                    QCoreApplication::translate("Planner", "no such type, no package for its architecture (%1) and SDK")
                         .arg(known(node.architecture))});
     return out;
 }

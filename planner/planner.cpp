@@ -4,6 +4,7 @@
 #include "matcher.h"
 #include "placementsolver.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QHash>
 #include <QSet>
@@ -152,10 +153,10 @@ bool Run::explainUnits()
                 continue;
             m_plan.unmet.append(
                 {m_problem.components.at(c).instanceName,
-                 QStringLiteral("same process (%1) as %2")
+                 QCoreApplication::translate("Planner", "same process (%1) as %2")
                      .arg(unit.process, m_problem.components.at(first).instanceName),
                  m_problem.nodes.at(closest).name,
-                 m_mismatches.at(c).at(closest).first().requirement + QStringLiteral(" not met")});
+                 m_mismatches.at(c).at(closest).first().requirement + QCoreApplication::translate("Planner", " not met")});
         }
     }
     return m_plan.unmet.isEmpty();
@@ -253,10 +254,10 @@ void Run::explainCapacity(const QList<int> &nodes)
         }
     }
     m_plan.unmet.append({components.join(QStringLiteral(", ")),
-                         QStringLiteral("CPU shares together within the free CPUs of %1")
+                         QCoreApplication::translate("Planner", "CPU shares together within the free CPUs of %1")
                              .arg(names.join(QStringLiteral(", "))),
                          names.value(0),
-                         QStringLiteral("%1 CPUs free").arg(free.join(QStringLiteral(" + ")))});
+                         QCoreApplication::translate("Planner", "%1 CPUs free").arg(free.join(QStringLiteral(" + ")))});
 }
 
 void Run::readSolution(const SolverOutput &output)
@@ -291,8 +292,8 @@ Plan Run::plan()
     QElapsedTimer clock;
     clock.start();
     if (m_problem.nodes.isEmpty()) {
-        m_plan.unmet.append({QString(), QStringLiteral("a node to run on"), QString(),
-                             QStringLiteral("no nodes given")});
+        m_plan.unmet.append({QString(), QCoreApplication::translate("Planner", "a node to run on"), QString(),
+                             QCoreApplication::translate("Planner", "no nodes given")});
         return m_plan;
     }
     matchComponents();
@@ -309,7 +310,7 @@ Plan Run::plan()
         explainCapacity(output.conflictingNodes);
     } else if (output.status == SolverOutput::Status::Unknown) {
         m_plan.unmet.append({QString(),
-                             QStringLiteral("a plan within %1 ms").arg(m_options.timeoutMs),
+                             QCoreApplication::translate("Planner", "a plan within %1 ms").arg(m_options.timeoutMs),
                              QString(), output.message});
     } else {
         m_plan.feasible = true;

@@ -5,6 +5,7 @@
 #include "rtcprofile.h"
 #include "rtsprofile.h"
 
+#include <QCoreApplication>
 namespace Planner {
 
 namespace {
@@ -67,7 +68,7 @@ void applyProperties(const PropertyMap &properties, const QString &instance,
             bool ok = false;
             const double share = value.toDouble(&ok);
             if (!ok || share < 0)
-                *warnings << QStringLiteral("%1: %2 '%3' is not a number of CPUs; ignored")
+                *warnings << QCoreApplication::translate("Planner", "%1: %2 '%3' is not a number of CPUs; ignored")
                                  .arg(instance, key, value);
             else
                 r->cpuShare = share;
@@ -171,7 +172,7 @@ SystemRequirements readRequirements(const Profile::RtsProfile &system,
         result.components << componentRequirements(component, typeProfiles, &unprofiled,
                                                    &result.warnings);
     if (!unprofiled.isEmpty())
-        result.warnings << QStringLiteral("no RTC profile of %1: only the components' own deploy.* "
+        result.warnings << QCoreApplication::translate("Planner", "no RTC profile of %1: only the components' own deploy.* "
                                           "properties are required")
                                .arg(unprofiled.join(QStringLiteral(", ")));
     groupComposites(system, &result.components);

@@ -2267,6 +2267,124 @@
     </message>
 </context>
 <context>
+    <name>Planner</name>
+    <message>
+        <location filename="../../planner/matcher.cpp" line="+14"/>
+        <source>unknown</source>
+        <translation>不明</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>OS %1</source>
+        <translation>OS %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>OS version %1</source>
+        <translation>OS バージョン %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>architecture %1</source>
+        <translation>アーキテクチャ %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>device %1</source>
+        <translation>デバイス %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no devices listed</source>
+        <translation>デバイスの記載なし</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>node.%1 = %2</source>
+        <translation>node.%1 = %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>pinned to %1</source>
+        <translation>%1 に固定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the name %1</source>
+        <translation>名前 %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CPU share %1</source>
+        <translation>CPU 割り当て %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 free</source>
+        <translation>%1 空き</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>language %1</source>
+        <translation>言語 %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>type %1 loadable or installable</source>
+        <translation>型 %1 がロードまたはインストール可能</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no such type, no package for its architecture (%1) and SDK</source>
+        <translation>その型はなく、アーキテクチャ (%1) と SDK に合うパッケージもありません</translation>
+    </message>
+    <message>
+        <location filename="../../planner/planner.cpp" line="+156"/>
+        <source>same process (%1) as %2</source>
+        <translation>%2 と同じプロセス (%1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> not met</source>
+        <translation> を満たしません</translation>
+    </message>
+    <message>
+        <location line="+98"/>
+        <source>CPU shares together within the free CPUs of %1</source>
+        <translation>%1 の空き CPU に収まる CPU 割り当ての合計</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 CPUs free</source>
+        <translation>空き CPU %1</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>a node to run on</source>
+        <translation>実行するノード</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no nodes given</source>
+        <translation>ノードが指定されていません</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>a plan within %1 ms</source>
+        <translation>%1 ms 以内の配置計画</translation>
+    </message>
+    <message>
+        <location filename="../../planner/requirements.cpp" line="+71"/>
+        <source>%1: %2 &apos;%3&apos; is not a number of CPUs; ignored</source>
+        <translation>%1: %2 の '%3' は CPU 数ではないため無視しました</translation>
+    </message>
+    <message>
+        <location line="+104"/>
+        <source>no RTC profile of %1: only the components&apos; own deploy.* properties are required</source>
+        <translation>%1 の RTC プロファイルがありません: コンポーネント自身の deploy.* プロパティだけを要件とします</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <location filename="../../builder/generatedialogprompts.cpp" line="-12"/>
