@@ -92,7 +92,12 @@ private:
 
 RtctlResult TestSdkExamples::rtctl(const QStringList &arguments) const
 {
-    return runRtctlAt(QStringLiteral("/%1/%2.host_cxt").arg(m_live.namingServer(), hostName), arguments);
+    // The examples built with the sanitizers answer slowly while other tests build theirs: each
+    // call gets more than rtctl's default 3 s.
+    QStringList withTimeout = arguments;
+    withTimeout.insert(1, QStringLiteral("--timeout"));
+    withTimeout.insert(2, QStringLiteral("15000"));
+    return runRtctlAt(QStringLiteral("/%1/%2.host_cxt").arg(m_live.namingServer(), hostName), withTimeout);
 }
 
 QString TestSdkExamples::path(const QString &name) const
