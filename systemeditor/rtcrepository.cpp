@@ -3,6 +3,7 @@
 
 #include "profileio.h"
 #include "remoteindex.h"
+#include "repository.h"
 #include "repositoryfetcher.h"
 
 #include <QCryptographicHash>
@@ -140,6 +141,30 @@ void RtcRepository::readInBackground(const QString &source)
         emit repositoryRead(source);
     });
     watcher->setFuture(QtConcurrent::run(&RtcRepository::readComponentRepository, source));
+}
+
+bool RtcRepository::removePackage(const QModelIndex &index)
+{
+    const Entry *row = entry(index);
+    if (!row || row->package.isEmpty() || isUrl(row->repository))
+        return false;
+    const QString root = row->repository;
+    const QString package = row->package;
+    const QString version = row->packageVersion;
+    auto *watcher = new QFutureWatcher<QString>(this);
+    connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, package, version] {
+        watcher->deleteLater();
+        reload();
+        emit packageRemoved(QStringLiteral("%1 %2").arg(package, version), watcher->result());
+    });
+    watcher->setFuture(QtConcurrent::run([root, package, version] {
+        Packages::Repository repository(root);
+        QString error;
+        if (repository.open(&error))
+            repository.remove(package, version, &error);
+        return error;
+    }));
+    return true;
 }
 
 bool RtcRepository::isComponentRepository(const QString &source)

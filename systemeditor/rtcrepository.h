@@ -68,6 +68,13 @@ public:
     void reload();
     /// True while a component repository is being read.
     bool isReading() const { return m_reading > 0; }
+    /**
+     * Removes the package of the component row @p index from its repository folder (as `rtctl
+     * repo remove REPO NAME=VERSION`: the index written and signed again), off the GUI thread;
+     * packageRemoved() says how it went and the repository is read again. False when the row
+     * comes from no repository folder.
+     */
+    bool removePackage(const QModelIndex &index);
     void clear();
 
     QList<Entry> entries() const { return m_entries; }
@@ -99,6 +106,8 @@ signals:
     void errorsChanged();
     /// The component repository @p source was read (its rows and errors are in the model).
     void repositoryRead(const QString &source);
+    /// removePackage() ended: @p error is empty when the package was removed.
+    void packageRemoved(const QString &package, const QString &error);
 
 private:
     struct Category

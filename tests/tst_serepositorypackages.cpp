@@ -69,6 +69,7 @@ private slots:
     void brokenRepositoryIsAnError();
     void listsARepositoryServedOverHttp();
     void unreachableUrlIsAnError();
+    void removesAPackageFromItsRepository();
 
 private:
     /// `rtctl package` of @p project into the work folder; the .deb, or empty.
@@ -211,6 +212,30 @@ void TestSeRepositoryPackages::unreachableUrlIsAnError()
     QCOMPARE(repository.errors().size(), 1);
     const QString message = repository.errors().first().diagnostics.value(0).message;
     QVERIFY2(message.contains(url + "dists/stable/Release"), qPrintable(message));
+}
+
+// The Repository view's Remove Package from Repository (rtctl repo remove NAME=VERSION): the
+// newest version goes, the one before it is listed again, and a URL's package cannot be removed.
+void TestSeRepositoryPackages::removesAPackageFromItsRepository()
+{
+    const QString copy = m_work.filePath("removing");
+    QCOMPARE(QProcess::execute("cp", {"-a", m_repository, copy}), 0);
+    RtcRepository repository;
+    QVERIFY(addAndRead(repository, copy));
+    QCOMPARE(repository.entries().value(0).packageVersion, QStringLiteral("1.3"));
+    QSignalSpy removed(&repository, &RtcRepository::packageRemoved);
+    QSignalSpy read(&repository, &RtcRepository::repositoryRead);
+    QVERIFY(repository.removePackage(repository.index(0, 0, repository.index(0, 0))));
+    QVERIFY(removed.wait(30000));
+    QCOMPARE(removed.at(0).at(0).toString(), pyPackage + " 1.3");
+    QCOMPARE(removed.at(0).at(1).toString(), QString());
+    QVERIFY(read.wait(30000));
+    QCOMPARE(repository.entries().size(), 1);
+    QCOMPARE(repository.entries().first().packageVersion, QStringLiteral("1.2"));
+    const RtctlResult listed = runRtctl({"repo", "list", copy});
+    QVERIFY2(listed.out.contains("1.2") && !listed.out.contains("1.3"), qPrintable(listed.out));
+    // A category row is no package.
+    QVERIFY(!repository.removePackage(repository.index(0, 0)));
 }
 
 QTEST_GUILESS_MAIN(TestSeRepositoryPackages)

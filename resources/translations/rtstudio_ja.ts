@@ -2376,7 +2376,7 @@
     <message>
         <location filename="../../planner/requirements.cpp" line="+71"/>
         <source>%1: %2 &apos;%3&apos; is not a number of CPUs; ignored</source>
-        <translation>%1: %2 の '%3' は CPU 数ではないため無視しました</translation>
+        <translation>%1: %2 の &apos;%3&apos; は CPU 数ではないため無視しました</translation>
     </message>
     <message>
         <location line="+104"/>
@@ -5269,6 +5269,26 @@ Installs: %1</source>
         <translation>コンポーネントリポジトリ %1 を読み込みました。</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>Remove Package from Repository</source>
+        <translation>パッケージをリポジトリから削除</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Only a package of a component repository folder can be removed.</source>
+        <translation>削除できるのはコンポーネントリポジトリのフォルダ内のパッケージだけです。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Package %1 removed from its repository.</source>
+        <translation>パッケージ %1 をリポジトリから削除しました。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Package %1 was not removed: %2</source>
+        <translation>パッケージ %1 を削除できませんでした: %2</translation>
+    </message>
+    <message>
         <location line="+14"/>
         <source>&quot;%1&quot; does not exist.</source>
         <translation>「%1」は存在しません。</translation>
@@ -5507,7 +5527,7 @@ Installs: %1</source>
 <context>
     <name>SystemEditor::RtcRepository</name>
     <message>
-        <location filename="../../systemeditor/rtcrepository.cpp" line="+186"/>
+        <location filename="../../systemeditor/rtcrepository.cpp" line="+211"/>
         <source>The file is no RTC profile.</source>
         <translation>このファイルはRTCプロファイルではありません。</translation>
     </message>

@@ -46,6 +46,19 @@ RepositoryView::RepositoryView(RtcRepository *repository, QWidget *parent)
     connect(repository, &RtcRepository::repositoryRead, this, [this](const QString &source) {
         emit statusMessage(tr("Component repository %1 read.").arg(source));
     });
+    // A package of a repository folder can be removed from it (rtctl repo remove).
+    m_tree->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_removePackage = new QAction(tr("Remove Package from Repository"), m_tree);
+    m_removePackage->setObjectName(QStringLiteral("actionRepositoryRemovePackage"));
+    m_tree->addAction(m_removePackage);
+    connect(m_removePackage, &QAction::triggered, this, [this] {
+        if (!m_repository->removePackage(m_tree->currentIndex()))
+            emit statusMessage(tr("Only a package of a component repository folder can be removed."));
+    });
+    connect(repository, &RtcRepository::packageRemoved, this, [this](const QString &package, const QString &error) {
+        emit statusMessage(error.isEmpty() ? tr("Package %1 removed from its repository.").arg(package)
+                                           : tr("Package %1 was not removed: %2").arg(package, error));
+    });
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -28,6 +28,7 @@ public:
     QAction *addFolderAction() const { return m_addFolder; }
     QAction *reloadAction() const { return m_reload; }
     QAction *addUrlAction() const { return m_addUrl; }
+    QAction *removePackageAction() const { return m_removePackage; }
 
     /// Adds sources and reports those that do not exist through statusMessage().
     void addSources(const QStringList &paths);
@@ -46,6 +47,7 @@ private:
     QAction *m_addFolder;
     QAction *m_reload;
     QAction *m_addUrl;
+    QAction *m_removePackage;
 };
 
 } // namespace SystemEditor
