@@ -8,6 +8,7 @@
 #include "driftview.h"
 #include "executioncontextview.h"
 #include "installation.h"
+#include "managerunit.h"
 #include "managerview.h"
 #include "nameservicemodel.h"
 #include "nameserviceview.h"
@@ -26,6 +27,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QItemSelectionModel>
 #include <QLabel>
@@ -49,6 +51,8 @@ using SystemEditor::OnlineDiagram;
 namespace {
 
 const QString KeepLocalRuntimeKey = QStringLiteral("online/keepLocalRuntime");
+/// Where Start a Manager at Boot writes its unit instead of systemd's user folder (no systemctl).
+const QString UnitDirectoryKey = QStringLiteral("node/unitDirectory");
 
 /// The name part of the system's id (`RTSystem:vendor:NAME:version`).
 QString systemName(const Profile::RtsProfile &profile)
@@ -180,6 +184,22 @@ void OnlineDocks::fillMenu(QMenu *menu)
         else
             emit statusMessage(tr("Open a system to run it."));
     });
+    add("actionManagerAtBoot", tr("Start a Manager at &Boot…"), [this] {
+        const QString config = QFileDialog::getOpenFileName(
+            m_nameService->window(), tr("The Manager's Configuration"), QString(),
+            tr("Manager configuration (*.conf);;All files (*)"));
+        if (config.isEmpty())
+            return;
+        QString error;
+        const auto path = setManagerAtBoot(true, config, &error);
+        emit statusMessage(path ? tr("rtmanager starts with your session: %1").arg(*path)
+                                : tr("No manager at boot: %1").arg(error));
+    });
+    add("actionNoManagerAtBoot", tr("Do Not Start a Manager at Boot"), [this] {
+        QString error;
+        const auto path = setManagerAtBoot(false, QString(), &error);
+        emit statusMessage(path ? tr("Removed %1.").arg(*path) : error);
+    });
     for (const bool uninstall : {false, true}) {
         add(uninstall ? "actionUndeployUninstall" : "actionUndeploy",
             uninstall ? tr("Undeploy System and Uninstall Its &Packages") : tr("&Undeploy System"),
@@ -301,6 +321,15 @@ void OnlineDocks::quitting()
         Deploy::LocalRuntime().stop(nullptr);
         m_ownership->started = false;
     }
+}
+
+std::optional<QString> OnlineDocks::setManagerAtBoot(bool start, const QString &configFile, QString *error)
+{
+    const Deploy::ManagerUnit unit(false, configFile, QSettings().value(UnitDirectoryKey).toString(),
+                                   Codegen::Installation::managerProgram());
+    if (!(start ? unit.enable(error) : unit.disable(error)))
+        return std::nullopt;
+    return unit.path();
 }
 
 void OnlineDocks::undeploy(const Profile::RtsProfile &profile, bool uninstall,

@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 class QAction;
 class QDockWidget;
@@ -128,6 +129,14 @@ public:
      */
     void undeploy(const Profile::RtsProfile &profile, bool uninstall,
                   const std::function<void(const Deploy::DeployReport &)> &done = {});
+    /**
+     * Writes (or with @p start false removes) the systemd user unit that starts an rtmanager with
+     * @p configFile (none: rtc.conf's defaults) when the user's session starts, as `rtctl node
+     * enable|disable` do, and enables it with systemctl; the unit folder of the setting
+     * `node/unitDirectory` instead, when set, without systemctl. The unit's path, or nothing with
+     * the reason in @p error.
+     */
+    std::optional<QString> setManagerAtBoot(bool start, const QString &configFile, QString *error);
     /// Called when the application quits: stops the local runtime this window started, unless
     /// the user asked to keep it running.
     void quitting();

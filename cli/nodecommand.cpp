@@ -202,7 +202,7 @@ int NodeCommand::unit(bool enable, const RtOptions &options, Streams streams) co
 {
     if (options.has(QStringLiteral("--user")) && options.has(QStringLiteral("--system")))
         return usageError(QStringLiteral("--user and --system exclude each other"), streams);
-    const ManagerUnit unit(
+    const Deploy::ManagerUnit unit(
         options.has(QStringLiteral("--system")), options.value(QStringLiteral("--config")),
         options.value(QStringLiteral("--unit-dir")), options.value(QStringLiteral("--program")));
     QString error;

@@ -115,6 +115,7 @@ private slots:
     void plansDeploysAndHealsAcrossHosts();
     void planViewDeploysThroughTheRestoreDialog();
     void undeployFromTheOnlineMenu();
+    void managerAtBootFromTheOnlineMenu();
 
 private:
     RtctlResult rtctl(const QString &command, const QString &system, const QStringList &extra = {}) const;
@@ -798,6 +799,43 @@ void TestDeployInstall::undeployFromTheOnlineMenu()
     QTRY_VERIFY_WITH_TIMEOUT(report.has_value(), 30000);
     QVERIFY2(report->ok, qPrintable(report->toText()));
     QTRY_COMPARE_WITH_TIMEOUT(leftBehind(), QStringList(), 10000);
+}
+
+// Online → Start a Manager at Boot: the unit rtctl node enable writes (here into a folder of the
+// test's own, without systemctl), accepted by systemd-analyze when it is installed; Do Not Start
+// removes it.
+void TestDeployInstall::managerAtBootFromTheOnlineMenu()
+{
+    const QString units = m_work.filePath("units");
+    QVERIFY(QDir().mkpath(units));
+    QSettings().setValue("node/unitDirectory", units);
+    const auto resetSetting = qScopeGuard([] { QSettings().remove("node/unitDirectory"); });
+    const QString config = m_work.filePath("boot.conf");
+    QFile conf(config);
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write("manager.packages.store: " + m_store.toUtf8() + "\n");
+    conf.close();
+    Studio::MainWindow window;
+    QVERIFY(window.findChild<QAction *>("actionManagerAtBoot"));
+    QString error;
+    const std::optional<QString> path = window.onlineDocks()->setManagerAtBoot(true, config, &error);
+    QVERIFY2(path, qPrintable(error));
+    QCOMPARE(*path, units + "/rtmanager.service");
+    QFile unit(*path);
+    QVERIFY(unit.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(unit.readAll());
+    QVERIFY2(text.contains(QRegularExpression("\nExecStart=/\\S*rtmanager -f " + QRegularExpression::escape(config) + "\n")),
+             qPrintable(text));
+    const QString analyze = QStandardPaths::findExecutable("systemd-analyze");
+    if (!analyze.isEmpty()) {
+        QProcess verify;
+        verify.setProcessChannelMode(QProcess::MergedChannels);
+        verify.start(analyze, {"verify", *path});
+        QVERIFY(verify.waitForFinished(60000));
+        QVERIFY2(verify.exitCode() == 0, qPrintable(QString::fromUtf8(verify.readAll())));
+    }
+    QVERIFY(window.onlineDocks()->setManagerAtBoot(false, QString(), &error));
+    QVERIFY(!QFile::exists(*path));
 }
 
 QTEST_MAIN(TestDeployInstall)

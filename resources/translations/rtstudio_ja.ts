@@ -2938,7 +2938,7 @@
 <context>
     <name>Studio::OnlineDocks</name>
     <message>
-        <location filename="../../app/onlinedocks.cpp" line="+72"/>
+        <location filename="../../app/onlinedocks.cpp" line="+76"/>
         <source>Name Service</source>
         <translation>ネームサービス</translation>
     </message>
@@ -3016,6 +3016,41 @@
         <location line="+4"/>
         <source>Open a system to run it.</source>
         <translation>実行するシステムを開いてください。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start a Manager at &amp;Boot…</source>
+        <translation>起動時にマネージャを開始(&amp;B)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The Manager&apos;s Configuration</source>
+        <translation>マネージャの設定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manager configuration (*.conf);;All files (*)</source>
+        <translation>マネージャの設定 (*.conf);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>rtmanager starts with your session: %1</source>
+        <translation>rtmanager はセッションの開始時に起動します: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No manager at boot: %1</source>
+        <translation>起動時のマネージャを設定できませんでした: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Do Not Start a Manager at Boot</source>
+        <translation>起動時にマネージャを開始しない</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Removed %1.</source>
+        <translation>%1 を削除しました。</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -3104,7 +3139,7 @@
         <translation>ローカルランタイムを停止しました。</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+29"/>
         <source>Undeploying %1…</source>
         <translation>%1 の配備を解除中…</translation>
     </message>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "managerunit.h"
 
-#include <packagetool.h>
+#include "packagetool.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -10,7 +10,7 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 
-namespace Cli {
+namespace Deploy {
 
 ManagerUnit::ManagerUnit(bool system, QString configFile, QString unitDir, QString program)
     : m_system(system)
@@ -33,7 +33,7 @@ QString ManagerUnit::text() const
     QString exec = m_program.isEmpty() ? managerProgram() : QFileInfo(m_program).absoluteFilePath();
     if (!m_configFile.isEmpty())
         exec += QStringLiteral(" -f ") + QFileInfo(m_configFile).absoluteFilePath();
-    return QStringLiteral("# Written by rtctl node enable; rtctl node disable removes it.\n"
+    return QStringLiteral("# Written by RT Studio (rtctl node enable, or Online > Start a Manager at Boot); disabling removes it.\n"
                           "[Unit]\n"
                           "Description=RT Studio component manager (rtmanager)\n"
                           "Wants=network-online.target\n"
@@ -109,4 +109,4 @@ bool ManagerUnit::disable(QString *error) const
     return true;
 }
 
-} // namespace Cli
+} // namespace Deploy

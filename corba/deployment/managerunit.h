@@ -3,7 +3,7 @@
 
 #include <QString>
 
-namespace Cli {
+namespace Deploy {
 
 /**
  * The systemd unit `rtmanager.service` that starts rtmanager at boot with its configuration file
@@ -39,4 +39,4 @@ private:
     QString m_program;
 };
 
-} // namespace Cli
+} // namespace Deploy
