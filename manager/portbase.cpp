@@ -212,15 +212,30 @@ RTC::ReturnCode_t PortBase::connect(RTC::ConnectorProfile &connector_profile)
         if (findProfile(id, &existing))
             return RTC::PRECONDITION_NOT_MET;
     }
+    RTC::ReturnCode_t result = RTC::RTC_OK;
     try {
-        const RTC::ReturnCode_t result = connector_profile.ports[0]->notify_connect(connector_profile);
-        if (result != RTC::RTC_OK)
-            disconnect(id.c_str());
-        return result;
+        result = connector_profile.ports[0]->notify_connect(connector_profile);
     } catch (const CORBA::Exception &) {
         // A first port that cannot be reached: BAD_PARAMETER, as OpenRTM-aist answers.
         disconnect(id.c_str());
         return RTC::BAD_PARAMETER;
+    }
+    if (result != RTC::RTC_OK)
+        withdraw(connector_profile);
+    return result;
+}
+
+void PortBase::withdraw(const RTC::ConnectorProfile &profile)
+{
+    // A port further along may hold the connector although the chain failed: an OpenRTM-aist port
+    // keeps it when its own subscription fails, and a port whose answer timed out may still have
+    // made it. Each port is told; one that does not hold it answers BAD_PARAMETER, one that is gone
+    // is passed over.
+    for (CORBA::ULong i = 0; i < profile.ports.length(); ++i) {
+        try {
+            profile.ports[i]->notify_disconnect(profile.connector_id);
+        } catch (const CORBA::Exception &) {
+        }
     }
 }
 

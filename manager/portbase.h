@@ -179,6 +179,8 @@ private:
         std::lock_guard<std::mutex> lock(m_mutex);
         m_hooks[hook] = HookFunction();
     }
+    /// Tells every port of a connector that failed to be made to drop it.
+    void withdraw(const RTC::ConnectorProfile &profile);
     void callHook(Hook hook, RTC::ConnectorProfile &profile);
     RTC::ReturnCode_t connectSteps(RTC::ConnectorProfile &connector_profile);
     int ownIndex(const RTC::ConnectorProfile &profile);

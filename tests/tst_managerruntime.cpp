@@ -47,6 +47,47 @@ protected:
     }
 };
 
+/// A port at the far end of a connector that keeps the connector however its notify_connect
+/// ends, as an OpenRTM-aist port keeps one whose subscription failed, and notes what it is told.
+class KeepingPort : public POA_RTC::PortService
+{
+public:
+    enum Ending { Refuse, TimeOut };
+    explicit KeepingPort(Ending ending)
+        : m_ending(ending)
+    {
+    }
+    QStringList held;
+    QStringList toldToDrop;
+
+    RTC::PortProfile *get_port_profile() override
+    {
+        auto *profile = new RTC::PortProfile;
+        profile->name = "Keeper.in";
+        return profile;
+    }
+    RTC::ConnectorProfileList *get_connector_profiles() override { return new RTC::ConnectorProfileList; }
+    RTC::ConnectorProfile *get_connector_profile(const char *) override { return new RTC::ConnectorProfile; }
+    RTC::ReturnCode_t connect(RTC::ConnectorProfile &) override { return RTC::UNSUPPORTED; }
+    RTC::ReturnCode_t disconnect(const char *) override { return RTC::UNSUPPORTED; }
+    RTC::ReturnCode_t disconnect_all() override { return RTC::UNSUPPORTED; }
+    RTC::ReturnCode_t notify_connect(RTC::ConnectorProfile &profile) override
+    {
+        held << QString::fromUtf8(profile.connector_id.in());
+        if (m_ending == TimeOut)
+            throw CORBA::TIMEOUT(0, CORBA::COMPLETED_MAYBE);
+        return RTC::RTC_ERROR;
+    }
+    RTC::ReturnCode_t notify_disconnect(const char *id) override
+    {
+        toldToDrop << QString::fromUtf8(id);
+        return held.removeAll(QString::fromUtf8(id)) ? RTC::RTC_OK : RTC::BAD_PARAMETER;
+    }
+
+private:
+    Ending m_ending;
+};
+
 QString statusOf(RTC::RTObject_ptr rtc, const char *name)
 {
     SDOPackage::NVList_var list = rtc->get_status_list();
@@ -120,6 +161,8 @@ private slots:
     void connectRefusesNilPeer_data();
     void connectRefusesNilPeer();
     void duplicateConnectionRefused();
+    void failedConnectLeavesNothingBehind_data();
+    void failedConnectLeavesNothingBehind();
     void inPortTakesAnySubscription();
     void seqInReadsEveryFlow_data();
     void seqInReadsEveryFlow();
@@ -854,6 +897,33 @@ void TestManagerRuntime::connectRefusesNilPeer()
     QCOMPARE(subscriber->connect(profile), RTC::BAD_PARAMETER);
     RTC::ConnectorProfileList_var kept = subscriber->get_connector_profiles();
     QCOMPARE(kept->length(), CORBA::ULong(0));
+}
+
+void TestManagerRuntime::failedConnectLeavesNothingBehind_data()
+{
+    QTest::addColumn<int>("ending");
+    QTest::newRow("refused after keeping it") << int(KeepingPort::Refuse);
+    QTest::newRow("answer timed out") << int(KeepingPort::TimeOut);
+}
+
+void TestManagerRuntime::failedConnectLeavesNothingBehind()
+{
+    QFETCH(int, ending);
+    RtObject *source = create("ConsoleIn", "HALF0");
+    RTC::RTObject_var rtc = source->reference();
+    RTC::PortService_var outPort = port(rtc, "out");
+    auto *keeper = new KeepingPort(KeepingPort::Ending(ending));
+    PortableServer::ObjectId_var id = m_poa->activate_object(keeper);
+    RTC::PortService_var far = keeper->_this();
+    RTC::ConnectorProfile made;
+    QCOMPARE(connect(outPort, far, Properties(), &made), RTC::RTC_ERROR);
+    // The far port was told to drop what it kept, and the near one holds nothing.
+    QCOMPARE(keeper->toldToDrop, QStringList(QString::fromUtf8(made.connector_id.in())));
+    QVERIFY(keeper->held.isEmpty());
+    RTC::ConnectorProfileList_var onOut = outPort->get_connector_profiles();
+    QCOMPARE(onOut->length(), CORBA::ULong(0));
+    m_poa->deactivate_object(id);
+    keeper->_remove_ref();
 }
 
 void TestManagerRuntime::duplicateConnectionRefused()

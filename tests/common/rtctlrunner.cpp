@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "rtctlrunner.h"
 
+#include <QCoreApplication>
+#include <QDeadlineTimer>
 #include <QProcess>
 #include <QProcessEnvironment>
 
@@ -13,7 +15,12 @@ RtctlResult runRtctl(const QStringList &arguments, const QHash<QString, QString>
     process.setProcessEnvironment(processEnvironment);
     process.start(QStringLiteral(RTCTL_PATH), arguments);
     RtctlResult result;
-    if (!process.waitForFinished(60000)) {
+    // The other programs a test started keep being read meanwhile: a manager whose output pipe
+    // fills up stops in the middle of a call rtctl is waiting for.
+    const QDeadlineTimer deadline(60000);
+    while (!process.waitForFinished(20) && process.state() != QProcess::NotRunning && !deadline.hasExpired())
+        QCoreApplication::processEvents();
+    if (process.state() != QProcess::NotRunning || process.error() == QProcess::FailedToStart) {
         process.kill();
         process.waitForFinished();
         return result;
