@@ -14,6 +14,7 @@
 #include "nameserviceview.h"
 #include "onlinediagram.h"
 #include "onlinedocument.h"
+#include "onlineservice.h"
 #include "onlinesession.h"
 #include "portmonitor.h"
 #include "profileio.h"
@@ -190,15 +191,15 @@ void OnlineDocks::fillMenu(QMenu *menu)
             tr("Manager configuration (*.conf);;All files (*)"));
         if (config.isEmpty())
             return;
-        QString error;
-        const auto path = setManagerAtBoot(true, config, &error);
-        emit statusMessage(path ? tr("rtmanager starts with your session: %1").arg(*path)
-                                : tr("No manager at boot: %1").arg(error));
+        setManagerAtBoot(true, config, [this](const SystemEditor::OnlineResult &result) {
+            emit statusMessage(result.ok ? tr("rtmanager starts with your session: %1").arg(result.value.toString())
+                                         : tr("No manager at boot: %1").arg(result.error));
+        });
     });
     add("actionNoManagerAtBoot", tr("Do Not Start a Manager at Boot"), [this] {
-        QString error;
-        const auto path = setManagerAtBoot(false, QString(), &error);
-        emit statusMessage(path ? tr("Removed %1.").arg(*path) : error);
+        setManagerAtBoot(false, QString(), [this](const SystemEditor::OnlineResult &result) {
+            emit statusMessage(result.ok ? tr("Removed %1.").arg(result.value.toString()) : result.error);
+        });
     });
     for (const bool uninstall : {false, true}) {
         add(uninstall ? "actionUndeployUninstall" : "actionUndeploy",
@@ -323,13 +324,21 @@ void OnlineDocks::quitting()
     }
 }
 
-std::optional<QString> OnlineDocks::setManagerAtBoot(bool start, const QString &configFile, QString *error)
+void OnlineDocks::setManagerAtBoot(bool start, const QString &configFile,
+                                   const std::function<void(const SystemEditor::OnlineResult &)> &done)
 {
+    // systemctl may wait on the session's systemd: it runs beside the other deployment calls.
     const Deploy::ManagerUnit unit(false, configFile, QSettings().value(UnitDirectoryKey).toString(),
                                    Codegen::Installation::managerProgram());
-    if (!(start ? unit.enable(error) : unit.disable(error)))
-        return std::nullopt;
-    return unit.path();
+    m_session->submit(
+        SystemEditor::OnlineSession::deploymentHost(),
+        [unit, start]() -> QVariant {
+            QString error;
+            if (!(start ? unit.enable(&error) : unit.disable(&error)))
+                throw std::runtime_error(error.toLocal8Bit().toStdString());
+            return unit.path();
+        },
+        this, done);
 }
 
 void OnlineDocks::undeploy(const Profile::RtsProfile &profile, bool uninstall,

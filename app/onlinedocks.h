@@ -38,6 +38,7 @@ class OnlineDiagram;
 class RestoreDialog;
 class NameServiceView;
 class OnlineSession;
+struct OnlineResult;
 } // namespace SystemEditor
 
 namespace Studio {
@@ -133,10 +134,11 @@ public:
      * Writes (or with @p start false removes) the systemd user unit that starts an rtmanager with
      * @p configFile (none: rtc.conf's defaults) when the user's session starts, as `rtctl node
      * enable|disable` do, and enables it with systemctl; the unit folder of the setting
-     * `node/unitDirectory` instead, when set, without systemctl. The unit's path, or nothing with
-     * the reason in @p error.
+     * `node/unitDirectory` instead, when set, without systemctl. Runs off the GUI thread; @p done
+     * gets the unit's path as value, or the reason.
      */
-    std::optional<QString> setManagerAtBoot(bool start, const QString &configFile, QString *error);
+    void setManagerAtBoot(bool start, const QString &configFile,
+                          const std::function<void(const SystemEditor::OnlineResult &)> &done);
     /// Called when the application quits: stops the local runtime this window started, unless
     /// the user asked to keep it running.
     void quitting();

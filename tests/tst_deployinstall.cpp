@@ -23,6 +23,7 @@
 #include "planview.h"
 #include "rtsdocument.h"
 #include "rtseditor.h"
+#include "onlineservice.h"
 #include "onlinesession.h"
 #include "profileio.h"
 #include "restoredialog.h"
@@ -817,9 +818,11 @@ void TestDeployInstall::managerAtBootFromTheOnlineMenu()
     conf.close();
     Studio::MainWindow window;
     QVERIFY(window.findChild<QAction *>("actionManagerAtBoot"));
-    QString error;
-    const std::optional<QString> path = window.onlineDocks()->setManagerAtBoot(true, config, &error);
-    QVERIFY2(path, qPrintable(error));
+    std::optional<SystemEditor::OnlineResult> enabled;
+    window.onlineDocks()->setManagerAtBoot(true, config, [&enabled](const auto &result) { enabled = result; });
+    QTRY_VERIFY_WITH_TIMEOUT(enabled, 30000);
+    QVERIFY2(enabled->ok, qPrintable(enabled->error));
+    const std::optional<QString> path = enabled->value.toString();
     QCOMPARE(*path, units + "/rtmanager.service");
     QFile unit(*path);
     QVERIFY(unit.open(QIODevice::ReadOnly));
@@ -834,7 +837,10 @@ void TestDeployInstall::managerAtBootFromTheOnlineMenu()
         QVERIFY(verify.waitForFinished(60000));
         QVERIFY2(verify.exitCode() == 0, qPrintable(QString::fromUtf8(verify.readAll())));
     }
-    QVERIFY(window.onlineDocks()->setManagerAtBoot(false, QString(), &error));
+    std::optional<SystemEditor::OnlineResult> disabled;
+    window.onlineDocks()->setManagerAtBoot(false, QString(), [&disabled](const auto &result) { disabled = result; });
+    QTRY_VERIFY_WITH_TIMEOUT(disabled, 30000);
+    QVERIFY2(disabled->ok, qPrintable(disabled->error));
     QVERIFY(!QFile::exists(*path));
 }
 
