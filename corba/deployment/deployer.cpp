@@ -298,11 +298,7 @@ private:
 
 QString pinOf(const Profile::RtsComponent &component)
 {
-    for (const Profile::RtsProperty &p : component.properties) {
-        if (p.name == Planner::Key::Pin)
-            return p.value.value_or(QString()).trimmed();
-    }
-    return QString();
+    return Profile::rtsPropertyValue(component.properties, Planner::Key::Pin).value_or(QString()).trimmed();
 }
 
 /// Components the system pins to a node are created by that node's manager directly; with

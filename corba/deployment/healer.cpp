@@ -18,20 +18,6 @@ namespace Deploy {
 
 namespace {
 
-void setPin(Profile::RtsComponent *component, const QString &node)
-{
-    for (Profile::RtsProperty &p : component->properties) {
-        if (p.name == Planner::Key::Pin) {
-            p.value = node;
-            return;
-        }
-    }
-    Profile::RtsProperty pin;
-    pin.name = Planner::Key::Pin;
-    pin.value = node;
-    component->properties.append(pin);
-}
-
 QStringList sorted(QStringList list)
 {
     list.sort();
@@ -217,7 +203,7 @@ void pinPlacement(Profile::RtsProfile *profile, const QHash<QString, QString> &p
     for (Profile::RtsComponent &component : profile->components) {
         const auto node = placement.constFind(component.instanceName);
         if (node != placement.constEnd())
-            setPin(&component, *node);
+            Profile::setRtsProperty(component.properties, Planner::Key::Pin, *node);
     }
 }
 

@@ -36,10 +36,10 @@ void PinComponentCommand::apply(const std::optional<QString> &pin)
     if (!current)
         return;
     Profile::RtsComponent component = *current;
-    component.properties.removeIf(
-        [](const Profile::RtsProperty &p) { return p.name == Planner::Key::Pin; });
     if (pin)
         Profile::setRtsProperty(component.properties, Planner::Key::Pin, *pin);
+    else
+        component.properties.removeIf([](const Profile::RtsProperty &p) { return p.name == Planner::Key::Pin; });
     m_model->setComponent(component);
 }
 
