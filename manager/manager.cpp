@@ -10,8 +10,10 @@
 #include <omniORB4/omniORB.h>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <iostream>
 #include <unistd.h>
 
@@ -406,7 +408,7 @@ std::optional<ComponentFactory> Manager::factoryFor(const CreateRequest &request
         }
     }
     std::string loadError;
-    if (module.empty() || !loadModule(module, std::string(), &loadError))
+    if (module.empty() || !loadRequestedModule(module, std::string(), &loadError))
         return std::nullopt;
     std::lock_guard lock(m_mutex);
     const ComponentFactory *factory = findFactory(request);
@@ -688,11 +690,32 @@ Properties Manager::configuration()
     return m_config;
 }
 
+namespace {
+
+/// Configuration keys a remote set_configuration may not change (prefixes), and the suffix of the
+/// per-component configuration file keys (`<category>.<type>.config_file`).
+constexpr std::array<std::string_view, 8> LocalOnlyPrefixes
+    = {"manager.modules.", "manager.packages.", "manager.preload.", "manager.components.",
+       "manager.local_service.", "manager.is_master", "corba.", "logger.file_name"};
+constexpr std::string_view ConfigFileSuffix = ".config_file";
+
+bool isLocalOnlyKey(const std::string &key)
+{
+    const auto startsWith = [&key](std::string_view prefix) { return key.compare(0, prefix.size(), prefix) == 0; };
+    const bool configFile = key.size() >= ConfigFileSuffix.size()
+                            && key.compare(key.size() - ConfigFileSuffix.size(), ConfigFileSuffix.size(), ConfigFileSuffix) == 0;
+    return configFile || std::any_of(LocalOnlyPrefixes.begin(), LocalOnlyPrefixes.end(), startsWith);
+}
+
+} // namespace
+
 bool Manager::setConfiguration(const std::string &key, const std::string &value)
 {
-    std::lock_guard lock(m_mutex);
     if (key.empty())
-        return false;
+        return fail("set_configuration: no key given", nullptr);
+    if (isLocalOnlyKey(key))
+        return fail("set_configuration: '" + key + "' is taken from the manager's own configuration only", nullptr);
+    std::lock_guard lock(m_mutex);
     m_config.set(key, value);
     return true;
 }

@@ -142,6 +142,14 @@ public:
      * embeds on first use (PythonModuleLoader). False with @p error when it does not load.
      */
     bool loadModule(const std::string &path, const std::string &initFunction, std::string *error);
+    /**
+     * loadModule() for a module a request from outside names (load_module, a create that finds its
+     * type's module): unless `manager.modules.abs_path_allowed` is YES (OpenRTM-aist's key; ours
+     * defaults to NO), the file must lie in one of the module folders — the load path, the package
+     * store, the package path — so that a caller cannot make the manager run any library on the
+     * machine.
+     */
+    bool loadRequestedModule(const std::string &path, const std::string &initFunction, std::string *error);
     /// The module file @p name stands for: itself when absolute, else found in the load path (with or
     /// without ".so" or ".py").
     std::string findModuleFile(const std::string &name) const;
@@ -193,6 +201,11 @@ public:
     bool removeSlave(RTM::Manager_ptr manager);
 
     Properties configuration();
+    /**
+     * Sets @p key for set_configuration. Keys that decide what code runs, where packages come from,
+     * which files are read or written and how the manager is reached are taken from the manager's
+     * own configuration only: refused (false, lastError()).
+     */
     bool setConfiguration(const std::string &key, const std::string &value);
     /// Configuration plus `instance_name`, `pid`, `address`, `is_master`, `last_error` and the
     /// kept refusals (`rtstudio.create_error.<request>`).
@@ -251,6 +264,8 @@ private:
 
     // managermodules.cpp
     /// dlopen()s @p path and calls its @p function through the module init call; its handle in @p handle.
+    /// True when @p path's folder is one of the module folders (see loadRequestedModule()).
+    bool inModuleFolder(const std::string &path) const;
     bool runSharedModule(const std::string &path, const std::string &function, void **handle, std::string *error);
     /// Runs the Python module @p path and its @p function in the embedded interpreter.
     bool runPythonModule(const std::string &path, const std::string &function, std::string *error);

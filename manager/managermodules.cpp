@@ -143,7 +143,7 @@ std::optional<ComponentFactory> Manager::factoryOfModule(const CreateRequest &re
     };
     if (std::optional<ComponentFactory> factory = find())
         return factory;
-    if (!loadModule(module, std::string(), nullptr))
+    if (!loadRequestedModule(module, std::string(), nullptr))
         return std::nullopt;
     return find();
 }
@@ -204,6 +204,34 @@ bool Manager::loadModule(const std::string &requested, const std::string &initFu
     std::lock_guard lock(m_mutex);
     m_modules.push_back(std::make_unique<Module>(Module{path, function, handle}));
     return true;
+}
+
+bool Manager::loadRequestedModule(const std::string &requested, const std::string &initFunction, std::string *error)
+{
+    const std::string path = findModuleFile(requested);
+    if (!path.empty() && !m_config.isYes("manager.modules.abs_path_allowed") && !inModuleFolder(path)) {
+        return fail("load_module: '" + path
+                        + "' is outside the manager's module folders (manager.modules.load_path, its package store) "
+                          "and manager.modules.abs_path_allowed is NO",
+                    error);
+    }
+    return loadModule(requested, initFunction, error);
+}
+
+bool Manager::inModuleFolder(const std::string &path) const
+{
+    // Compared as the file system resolves them, so that neither `..` nor a link leads out.
+    const auto resolved = [](const std::string &name) {
+        char *real = realpath(name.c_str(), nullptr);
+        const std::string result = real ? real : "";
+        free(real);
+        return result;
+    };
+    const std::string folder = resolved(path.substr(0, path.rfind('/') + 1));
+    if (folder.empty())
+        return false;
+    const std::vector<std::string> dirs = moduleDirs(m_config, installedModuleDirs(std::string()));
+    return std::any_of(dirs.begin(), dirs.end(), [&](const std::string &dir) { return resolved(dir) == folder; });
 }
 
 bool Manager::runSharedModule(const std::string &path, const std::string &function, void **handle, std::string *error)

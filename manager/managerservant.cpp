@@ -36,7 +36,7 @@ const char *ManagerServant::_mostDerivedRepoId()
 
 RTC::ReturnCode_t ManagerServant::load_module(const char *pathname, const char *initfunc)
 {
-    return code(m_manager.loadModule(pathname ? pathname : "", initfunc ? initfunc : "", nullptr));
+    return code(m_manager.loadRequestedModule(pathname ? pathname : "", initfunc ? initfunc : "", nullptr));
 }
 
 RTC::ReturnCode_t ManagerServant::unload_module(const char *pathname)

@@ -84,7 +84,9 @@ void TestCorbaClientManager::initTestCase()
         "manager.naming_formats=rtmhost.host_cxt/%n.mgr",
         "-o",
         "manager.components.precreate=ConsoleIn,ConsoleOut,ConfigSample,MyServiceProvider,"
-        "MyServiceConsumer"};
+        "MyServiceConsumer",
+        "-o",
+        "manager.modules.load_path=" MANAGER_TEST_MODULE_DIR};
     QVERIFY2(
         m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
         qPrintable(error));

@@ -108,6 +108,8 @@ private slots:
     void killedSlaveLeavesOthersWorking();
     void loadModule();
     void loadableModulesNameTheirTypes();
+    void modulesOutsideTheLoadPathRefused();
+    void remoteConfigurationCannotChooseCode();
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
     void startupKeys();
@@ -128,6 +130,8 @@ private slots:
 
 private:
     RTM::Manager_ptr startMaster(QString *error, QProcess **process = nullptr, const QStringList &extra = {});
+    /// Stops the name server and master of init() and starts new ones, the master with @p extra.
+    void restartMaster(const QStringList &extra);
     RTC::RTObject_ptr create(const QString &request);
     QString lastError(RTM::Manager_ptr manager);
     CORBA::Object_ptr resolve(const QString &path);
@@ -173,10 +177,12 @@ void TestManagerLive::cleanupTestCase()
 RTM::Manager_ptr TestManagerLive::startMaster(QString *error, QProcess **process, const QStringList &extra)
 {
     m_masterPort = LiveTest::freePort();
-    const QStringList args = extra + QStringList{"-f", QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/rtc.conf"),
+    // `extra` last: its keys override these.
+    const QStringList args = QStringList{"-f", QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/rtc.conf"),
                               "-o", QString("corba.endpoints=127.0.0.1:%1").arg(m_masterPort),
                               "-o", "corba.nameservers=" + m_live->namingServer(),
-                              "-o", QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR)};
+                              "-o", QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR)}
+                             + extra;
     QProcess *started = m_live->startProcess(QStringLiteral(RTMANAGER_PATH), args, "rtmanager ready", error);
     if (!started)
         return RTM::Manager::_nil();
@@ -185,6 +191,16 @@ RTM::Manager_ptr TestManagerLive::startMaster(QString *error, QProcess **process
     CORBA::Object_var object
         = m_orb->string_to_object(LiveTest::managerLocation(m_masterPort).constData());
     return RTM::Manager::_narrow(object);
+}
+
+void TestManagerLive::restartMaster(const QStringList &extra)
+{
+    cleanup();
+    m_live = std::make_unique<LiveTest::LiveSystem>();
+    QString error;
+    QVERIFY2(m_live->startNameServer(&error), qPrintable(error));
+    m_master = startMaster(&error, &m_masterProcess, extra);
+    QVERIFY2(!CORBA::is_nil(m_master), qPrintable(error));
 }
 
 RTC::RTObject_ptr TestManagerLive::create(const QString &request)
@@ -459,10 +475,10 @@ void TestManagerLive::badRequests()
     if (request.startsWith("delete:")) {
         QCOMPARE(m_master->delete_component(request.mid(7).toUtf8().constData()), RTC::BAD_PARAMETER);
     } else if (request.startsWith("load:")) {
-        const QString file = request.mid(5) == "notamodule.so"
-                                 ? QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/notamodule.so")
-                                 : request.mid(5);
-        QCOMPARE(m_master->load_module(file.toUtf8().constData(), ""), RTC::BAD_PARAMETER);
+        // The text file is looked at in a load path of its own: a module from elsewhere is refused first.
+        if (request.mid(5) == "notamodule.so")
+            restartMaster({"-o", "manager.modules.load_path=" RTSTUDIO_TEST_DATA_DIR "/manager"});
+        QCOMPARE(m_master->load_module(request.mid(5).toUtf8().constData(), ""), RTC::BAD_PARAMETER);
     } else {
         QDeadlineTimer bound(10000);
         RTC::RTObject_var result = create(request);
@@ -627,6 +643,52 @@ void TestManagerLive::loadModule()
     QVERIFY(lastError(m_master).contains("no init function 'NoSuchInit'"));
 }
 
+// A caller may not make the manager run any library on the machine: only modules in its module
+// folders load unless manager.modules.abs_path_allowed says YES (OpenRTM-aist's key; its default
+// is YES, ours NO).
+void TestManagerLive::modulesOutsideTheLoadPathRefused()
+{
+    QTemporaryDir elsewhere;
+    QVERIFY(elsewhere.isValid());
+    const QString module = elsewhere.filePath("ManagerTestModule.so");
+    QVERIFY(QFile::copy(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", module));
+    const QByteArray path = module.toUtf8();
+    QCOMPARE(m_master->load_module(path.constData(), ""), RTC::BAD_PARAMETER);
+    QVERIFY2(lastError(m_master).contains("abs_path_allowed is NO"), qPrintable(lastError(m_master)));
+    // Nor by a relative name leading out of the load path, nor by a create naming the file.
+    const QByteArray outward = QDir(MANAGER_TEST_MODULE_DIR).relativeFilePath(module).toUtf8();
+    QVERIFY(outward.startsWith("../"));
+    QCOMPARE(m_master->load_module(outward.constData(), ""), RTC::BAD_PARAMETER);
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(module.chopped(3)))));
+    QCOMPARE(RTM::ModuleProfileList_var(m_master->get_loaded_modules())->length(), 0u);
+    // The same file in the load path loads by its full path.
+    QCOMPARE(m_master->load_module(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", ""), RTC::RTC_OK);
+
+    restartMaster({"-o", "manager.modules.abs_path_allowed=YES"});
+    QCOMPARE(m_master->load_module(path.constData(), ""), RTC::RTC_OK);
+    RTM::ModuleProfileList_var loaded = m_master->get_loaded_modules();
+    QCOMPARE(loaded->length(), 1u);
+    QCOMPARE(nv(loaded[0].properties, "file_path"), module);
+}
+
+void TestManagerLive::remoteConfigurationCannotChooseCode()
+{
+    // What decides which code runs, where packages come from and how the manager is reached stays
+    // as the manager's own configuration says.
+    for (const char *key : {"manager.modules.load_path", "manager.modules.abs_path_allowed", "manager.modules.preload",
+                            "manager.packages.keyring", "manager.components.precreate", "corba.args",
+                            "example.ConsoleIn.config_file", "logger.file_name"}) {
+        QCOMPARE(m_master->set_configuration(key, "/tmp"), RTC::BAD_PARAMETER);
+        QVERIFY2(lastError(m_master).contains(QString("'%1' is taken from the manager's own configuration").arg(key)),
+                 qPrintable(lastError(m_master)));
+    }
+    RTM::NVList_var config = m_master->get_configuration();
+    QCOMPARE(nv(config, "manager.modules.load_path"), QStringLiteral(MANAGER_TEST_MODULE_DIR));
+    QCOMPARE(nv(config, "manager.modules.abs_path_allowed"), QString());
+    // Other keys stay settable, as in OpenRTM-aist.
+    QCOMPARE(m_master->set_configuration("manager.naming_formats", "%h.host_cxt/%n.mgr"), RTC::RTC_OK);
+}
+
 // As OpenRTM-aist's: a loadable module is listed by the component types its init function
 // registers (found by loading it in a process of its own), a library without one is not listed.
 void TestManagerLive::loadableModulesNameTheirTypes()
@@ -637,9 +699,7 @@ void TestManagerLive::loadableModulesNameTheirTypes()
     QVERIFY(QFile::copy(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", module));
     QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR "/manager/notamodule.so",
                         modules.filePath("notamodule.so")));
-    QCOMPARE(m_master->set_configuration("manager.modules.load_path",
-                                         modules.path().toUtf8().constData()),
-             RTC::RTC_OK);
+    restartMaster({"-o", "manager.modules.load_path=" + modules.path()});
     RTM::ModuleProfileList_var loadable = m_master->get_loadable_modules();
     QCOMPARE(loadable->length(), 1u);
     const SDOPackage::NVList &profile = loadable[0].properties;

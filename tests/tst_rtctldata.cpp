@@ -147,7 +147,7 @@ void TestRtctlData::injectedValuesPassThroughAComponent()
     const RtctlResult injected
         = rtctl({"inject", "Sensor0.rtc:in", R"({"tm":{"sec":5,"nsec":7},"data":1})", "2", "-3"});
     QVERIFY2(injected.code == 0, qPrintable(injected.err));
-    QVERIFY(print->waitForFinished(10000));
+    QVERIFY(LiveTest::waitForExit(print, 10000));
     QCOMPARE(print->exitCode(), 0);
     const QStringList lines = QString::fromUtf8(print->readAllStandardOutput()).split('\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 3);
@@ -173,7 +173,7 @@ void TestRtctlData::injectReadsWhatPrintWrote()
     QProcess *print = startPrint({"-n", "4", "Sensor0.rtc:out"});
     QVERIFY(waitForConnectors("Sensor0.rtc", "out", 1));
     QCOMPARE(rtctl({"inject", "--from", file, "-n", "2", "-r", "200", "Sensor0.rtc:in"}).code, 0);
-    QVERIFY(print->waitForFinished(10000));
+    QVERIFY(LiveTest::waitForExit(print, 10000));
     QCOMPARE(QString::fromUtf8(print->readAllStandardOutput()).split('\n', Qt::SkipEmptyParts),
              QStringList({"[1.000000000] data=10", "[2.000000000] data=20", "[1.000000000] data=10",
                           "[2.000000000] data=20"}));
@@ -185,7 +185,7 @@ void TestRtctlData::interruptRemovesTheConnector()
     QVERIFY(waitForConnectors("SeqOut0.rtc", "Short", 1));
     QVERIFY(print->waitForReadyRead(10000)); // samples are flowing
     ::kill(pid_t(print->processId()), SIGINT);
-    QVERIFY(print->waitForFinished(10000));
+    QVERIFY(LiveTest::waitForExit(print, 10000));
     QCOMPARE(print->exitStatus(), QProcess::NormalExit);
     QCOMPARE(print->exitCode(), 0);
     QCOMPARE(connectors("SeqOut0.rtc", "Short"), 0);
@@ -233,7 +233,7 @@ void TestRtctlData::logRecordsAndPlaysBack()
     QVERIFY(waitForConnectors("Sensor0.rtc", "out", 1));
     const RtctlResult played = rtctl({"log", "--play", longs, "Sensor0.rtc:in"});
     QVERIFY2(played.code == 0, qPrintable(played.err));
-    QVERIFY(print->waitForFinished(10000));
+    QVERIFY(LiveTest::waitForExit(print, 10000));
     QStringList seen;
     for (const QString &line : QString::fromUtf8(print->readAllStandardOutput()).split('\n', Qt::SkipEmptyParts))
         seen.append(QString::number(QJsonDocument::fromJson(line.toUtf8())["data"].toInteger()));

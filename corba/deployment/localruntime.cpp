@@ -242,10 +242,14 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *er
     state.nameServer.running = true;
 
     const QString managerLog = folder.filePath(QStringLiteral("rtmanager.log"));
+    // The local runtime is this user's trial bench: reachable from this machine only, so it may
+    // load the modules the Builder builds wherever their projects are.
     state.manager.pid = startDetached(
         managerProgram,
-        {QStringLiteral("-d"), QStringLiteral("-p"), QString::number(state.manager.port), QStringLiteral("-o"),
-         QStringLiteral("corba.nameservers=") + state.nameServerAddress()},
+        {QStringLiteral("-d"), QStringLiteral("-o"),
+         QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(state.manager.port), QStringLiteral("-o"),
+         QStringLiteral("corba.nameservers=") + state.nameServerAddress(), QStringLiteral("-o"),
+         QStringLiteral("manager.modules.abs_path_allowed=YES")},
         managerLog);
     writeState(state);
     if (state.manager.pid == 0 || !waitUntilListening(state.manager, ManagerProgram, deadline))

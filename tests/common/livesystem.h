@@ -18,6 +18,13 @@ namespace LiveTest {
 
 /// A loopback TCP port that was free a moment ago (bound to port 0 and released).
 quint16 freePort();
+/// Waits up to @p timeoutMs for @p process to end; true also when it has ended already (an event
+/// loop the test ran meanwhile, e.g. while rtctl ran, may have seen it end, and then
+/// QProcess::waitForFinished() answers false).
+inline bool waitForExit(QProcess *process, int timeoutMs)
+{
+    return process->state() == QProcess::NotRunning || process->waitForFinished(timeoutMs);
+}
 /// True when something accepts TCP connections on 127.0.0.1:`port`.
 bool isListening(quint16 port);
 /// True when something accepts TCP connections on `address`:`port` (an IPv4 address).
