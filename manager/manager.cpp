@@ -454,6 +454,14 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
         fail("create_component: this manager does not serve components (not started)", error);
         return RTC::RTObject::_nil();
     }
+    // Against exhaustion: a caller creating without end is refused, the manager serves on.
+    const double limit = configNumber("manager.components.max", DefaultComponentLimit);
+    if (const size_t hosted = components().length(); double(hosted) >= limit) {
+        fail("create_component: this manager hosts " + std::to_string(hosted)
+                 + " components, as many as manager.components.max allows",
+             error);
+        return RTC::RTObject::_nil();
+    }
     std::string why = "create_component: unknown component type '" + request.implementationId + "'";
     const std::optional<ComponentFactory> factory = factoryFor(request, &why);
     if (!factory) {
@@ -694,8 +702,8 @@ namespace {
 
 /// Configuration keys a remote set_configuration may not change (prefixes), and the suffix of the
 /// per-component configuration file keys (`<category>.<type>.config_file`).
-constexpr std::array<std::string_view, 8> LocalOnlyPrefixes
-    = {"manager.modules.", "manager.packages.", "manager.preload.", "manager.components.",
+constexpr std::array<std::string_view, 9> LocalOnlyPrefixes
+    = {"manager.modules.", "manager.packages.", "manager.preload.", "manager.components.", "manager.slaves.",
        "manager.local_service.", "manager.is_master", "corba.", "logger.file_name"};
 constexpr std::string_view ConfigFileSuffix = ".config_file";
 

@@ -221,6 +221,10 @@ private:
     /// A number from the configuration, within [0, 1e9] (times, pids); a malformed value is
     /// reported and @p fallback used, one out of range is reported and clamped.
     double configNumber(const std::string &key, double fallback) const;
+    /// Defaults of `manager.components.max` and `manager.slaves.max`: far above what a robot runs,
+    /// low enough that a runaway client is refused before the host's memory or processes run out.
+    static constexpr double DefaultComponentLimit = 4096;
+    static constexpr double DefaultSlaveLimit = 256;
     struct Component;
     struct Slave;
     struct Module;

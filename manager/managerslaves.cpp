@@ -180,6 +180,19 @@ RTM::Manager_ptr Manager::spawnSlave(const std::string &host, int port, const st
         fail("create_component: only a master manager starts slaves", error);
         return RTM::Manager::_nil();
     }
+    size_t running = 0;
+    {
+        std::lock_guard lock(m_mutex);
+        // This one may be among those starting already (its port reserved).
+        running = m_slaves.size() + m_startingSlaves.size() - m_startingSlaves.count(address);
+    }
+    if (double(running) >= configNumber("manager.slaves.max", DefaultSlaveLimit)) {
+        release();
+        fail("create_component: this master runs " + std::to_string(running)
+                 + " slaves, as many as manager.slaves.max allows",
+             error);
+        return RTM::Manager::_nil();
+    }
     const pid_t pid = startSlaveProcess(address, name, m_address);
     if (pid > 0) {
         std::lock_guard lock(m_mutex);

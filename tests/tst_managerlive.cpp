@@ -110,6 +110,7 @@ private slots:
     void loadableModulesNameTheirTypes();
     void modulesOutsideTheLoadPathRefused();
     void remoteConfigurationCannotChooseCode();
+    void limitsRefuseRunawayClients();
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
     void startupKeys();
@@ -687,6 +688,32 @@ void TestManagerLive::remoteConfigurationCannotChooseCode()
     QCOMPARE(nv(config, "manager.modules.abs_path_allowed"), QString());
     // Other keys stay settable, as in OpenRTM-aist.
     QCOMPARE(m_master->set_configuration("manager.naming_formats", "%h.host_cxt/%n.mgr"), RTC::RTC_OK);
+}
+
+void TestManagerLive::limitsRefuseRunawayClients()
+{
+    restartMaster({"-o", "manager.components.max=3", "-o", "manager.slaves.max=1"});
+    const CORBA::ULong before = RTC::RTCList_var(m_master->get_components())->length();
+    QVERIFY(before < 3);
+    for (CORBA::ULong n = before; n < 3; ++n)
+        QVERIFY2(!CORBA::is_nil(RTC::RTObject_var(create("ConsoleIn"))), qPrintable(lastError(m_master)));
+    // The next one is refused with the reason; the manager serves on and takes one again when
+    // one goes.
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create("ConsoleIn"))));
+    QVERIFY2(lastError(m_master).contains("hosts 3 components, as many as manager.components.max allows"),
+             qPrintable(lastError(m_master)));
+    QCOMPARE(RTC::RTCList_var(m_master->get_components())->length(), 3u);
+    QCOMPARE(m_master->delete_component("ConsoleIn0"), RTC::RTC_OK);
+    QVERIFY2(!CORBA::is_nil(RTC::RTObject_var(create("ConsoleIn"))), qPrintable(lastError(m_master)));
+
+    // One slave may run; a second is refused, the first keeps taking components.
+    QCOMPARE(m_master->delete_component("ConsoleIn1"), RTC::RTC_OK);
+    QVERIFY2(!CORBA::is_nil(RTC::RTObject_var(create("ConsoleOut?manager_name=first"))), qPrintable(lastError(m_master)));
+    QVERIFY(CORBA::is_nil(RTC::RTObject_var(create("ConsoleOut?manager_name=second"))));
+    QVERIFY2(lastError(m_master).contains("runs 1 slaves, as many as manager.slaves.max allows"),
+             qPrintable(lastError(m_master)));
+    QCOMPARE(RTM::ManagerList_var(m_master->get_slave_managers())->length(), 1u);
+    QVERIFY2(!CORBA::is_nil(RTC::RTObject_var(create("ConsoleOut?manager_name=first"))), qPrintable(lastError(m_master)));
 }
 
 // As OpenRTM-aist's: a loadable module is listed by the component types its init function
