@@ -20,6 +20,7 @@
 #include "userguide.h"
 
 #include <QActionGroup>
+#include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -187,8 +188,23 @@ void MainWindow::createActions()
 
 QString MainWindow::contextHelpSection() const
 {
-    if (currentPerspective() && currentPerspective()->id() == Perspective::Id::Builder)
-        return QStringLiteral("Builder");
+    const Perspective *perspective = currentPerspective();
+    if (perspective && perspective->id() == Perspective::Id::Builder) {
+        const auto *component
+            = qobject_cast<const Builder::ComponentEditor *>(perspective->editor(perspective->currentDocument()));
+        return component ? component->helpSection() : QStringLiteral("Builder");
+    }
+    // A view with a section of its own, when the focus is in it (or in one of its windows).
+    static const std::pair<const char *, const char *> views[]
+        = {{"SystemEditor::PortMonitor", "Port Monitor"}, {"SystemEditor::PlanView", "Plan view"},
+           {"SystemEditor::NameServiceView", "Online"},   {"SystemEditor::ManagerView", "Online"},
+           {"SystemEditor::ConfigurationView", "Online"}, {"SystemEditor::ExecutionContextView", "Online"}};
+    for (const QWidget *widget = QApplication::focusWidget(); widget; widget = widget->parentWidget()) {
+        for (const auto &[className, section] : views) {
+            if (widget->inherits(className))
+                return QLatin1String(section);
+        }
+    }
     return qobject_cast<const OnlineDocument *>(m_activeDocument) ? QStringLiteral("Online")
                                                                    : QStringLiteral("System Editor");
 }

@@ -21,6 +21,8 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include <iterator>
+
 namespace Builder {
 
 ComponentEditor::ComponentEditor(ComponentModel *model, QUndoStack *undoStack, TypeCatalog *types,
@@ -68,16 +70,41 @@ ComponentEditor::ComponentEditor(ComponentModel *model, QUndoStack *undoStack, T
             &ComponentEditor::clearBackupsRequested);
 }
 
+namespace {
+
+/// The pages' titles in tab order, untranslated: the user guide's sections are named after them.
+constexpr const char *PageTitles[] = {QT_TRANSLATE_NOOP("Builder::ComponentEditor", "Basic"),
+                                      QT_TRANSLATE_NOOP("Builder::ComponentEditor", "Activity"),
+                                      QT_TRANSLATE_NOOP("Builder::ComponentEditor", "Data Ports"),
+                                      QT_TRANSLATE_NOOP("Builder::ComponentEditor", "Service Ports"),
+                                      QT_TRANSLATE_NOOP("Builder::ComponentEditor", "Configuration"),
+                                      QT_TRANSLATE_NOOP("Builder::ComponentEditor", "Documentation"),
+                                      QT_TRANSLATE_NOOP("Builder::ComponentEditor", "Language/Environment"),
+                                      QT_TRANSLATE_NOOP("Builder::ComponentEditor", "RTC.xml")};
+
+} // namespace
+
 void ComponentEditor::addPages()
 {
-    m_pages->addTab(m_basicPage, tr("Basic"));
-    m_pages->addTab(new ActivityPage(m_model, m_undoStack), tr("Activity"));
-    m_pages->addTab(new DataPortsPage(m_model, m_undoStack, m_types), tr("Data Ports"));
-    m_pages->addTab(new ServicePortsPage(m_model, m_undoStack, m_types), tr("Service Ports"));
-    m_pages->addTab(new ConfigurationPage(m_model, m_undoStack), tr("Configuration"));
-    m_pages->addTab(new DocumentationPage(m_model, m_undoStack), tr("Documentation"));
-    m_pages->addTab(new LanguagePage(m_model, m_undoStack), tr("Language/Environment"));
-    m_pages->addTab(new RtcXmlPage(m_model, m_undoStack), tr("RTC.xml"));
+    QWidget *pages[] = {m_basicPage,
+                        new ActivityPage(m_model, m_undoStack),
+                        new DataPortsPage(m_model, m_undoStack, m_types),
+                        new ServicePortsPage(m_model, m_undoStack, m_types),
+                        new ConfigurationPage(m_model, m_undoStack),
+                        new DocumentationPage(m_model, m_undoStack),
+                        new LanguagePage(m_model, m_undoStack),
+                        new RtcXmlPage(m_model, m_undoStack)};
+    static_assert(std::size(pages) == std::size(PageTitles));
+    for (size_t i = 0; i < std::size(pages); ++i)
+        m_pages->addTab(pages[i], tr(PageTitles[i]));
+}
+
+QString ComponentEditor::helpSection() const
+{
+    const int current = m_pages->currentIndex();
+    return current >= 0 && size_t(current) < std::size(PageTitles)
+               ? QLatin1String(PageTitles[current]) + QLatin1String(" page")
+               : QStringLiteral("Builder");
 }
 
 QWidget *ComponentEditor::page(const QString &title) const

@@ -53,6 +53,8 @@ public:
     TypeCatalog *typeCatalog() const { return m_types; }
     /// The page with the given tab title (e.g. "Data Ports"); null when there is none.
     QWidget *page(const QString &title) const;
+    /// The user guide's section about the page in front ("Data Ports page"…), for F1.
+    QString helpSection() const;
 
     /// True when something listens to generationReported() (then no summary dialog is needed).
     bool reportsGeneration() const;

@@ -2,7 +2,10 @@
 // Help → User Guide and Help → Troubleshooting show the guide inside the program: README.md and
 // every page of docs/ are built in, links between pages are followed in the window, and a page
 // translated into the GUI's language is shown in it.
+#include "componenteditor.h"
 #include "mainwindow.h"
+#include "planview.h"
+#include "rtseditor.h"
 #include "userguide.h"
 
 #include <QAction>
@@ -150,11 +153,33 @@ void TestUserGuide::f1ShowsTheSectionOfTheViewInFront()
     };
     QVERIFY(window.openFiles({examples + QStringLiteral("tour/Doubler.xml")}));
     pressF1();
-    QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("Builder"));
+    QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("Basic page"));
+    // Each Builder page has its section.
+    auto *editor = window.findChild<Builder::ComponentEditor *>();
+    QVERIFY(editor);
+    for (int page = 0; page < editor->pages()->count(); ++page) {
+        editor->pages()->setCurrentIndex(page);
+        window.activateWindow();
+        pressF1();
+        QCOMPARE(window.userGuide()->sectionAtTop(), editor->helpSection());
+        QVERIFY(editor->helpSection().endsWith(QLatin1String(" page")));
+    }
     QVERIFY(window.openFiles({examples + QStringLiteral("ConsoleInOut/ConsoleInOut.xml")}));
     window.activateWindow();
     pressF1();
     QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("System Editor"));
+    // A view with a section of its own, when it has the focus.
+    Studio::RtsEditor *system = nullptr;
+    for (Studio::RtsEditor *candidate : window.findChildren<Studio::RtsEditor *>())
+        system = candidate->isVisible() ? candidate : system;
+    QVERIFY(system);
+    system->showPlanView(true);
+    QApplication::processEvents();
+    system->planView()->setFocus();
+    QTRY_VERIFY(system->planView()->hasFocus() || system->planView()->isAncestorOf(QApplication::focusWidget()));
+    window.activateWindow();
+    pressF1();
+    QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("Plan view"));
     // A heading the page lacks shows its top.
     UserGuide guide;
     guide.showSection(QStringLiteral("rtstudio.md"), QStringLiteral("No Such Heading"), QStringLiteral("en"));
