@@ -34,7 +34,7 @@ void TestScreenshots::render()
     process.start(QStringLiteral(DOCSCREENSHOTS_PATH), {output.path(), language});
     QVERIFY(process.waitForFinished(60000));
     QVERIFY2(process.exitCode() == 0, process.readAll().constData());
-    for (const char *name : {"builder", "systemeditor", "planview", "userguide"}) {
+    for (const char *name : {"builder", "systemeditor", "planview", "online", "userguide"}) {
         const QString path = QDir(output.path()).filePath(QStringLiteral("%1-%2.png").arg(QLatin1String(name), language));
         const QImage image(path);
         QVERIFY2(!image.isNull(), qPrintable(path));
@@ -52,7 +52,8 @@ void TestScreenshots::committedPicturesAreRendered()
 {
     const QDir images(QStringLiteral(RTSTUDIO_SOURCE_DIR "/docs/images"));
     const QSet<QString> made{"builder-en.png", "builder-ja.png", "systemeditor-en.png", "systemeditor-ja.png",
-                             "planview-en.png", "planview-ja.png", "userguide-en.png", "userguide-ja.png"};
+                             "planview-en.png", "planview-ja.png", "online-en.png", "online-ja.png",
+                             "userguide-en.png", "userguide-ja.png"};
     for (const QString &file : images.entryList(QDir::Files))
         QVERIFY2(made.contains(file), qPrintable(file + QStringLiteral(" in docs/images is made by nothing")));
 }

@@ -489,6 +489,10 @@ void PortMonitor::refreshView()
     m_timeAxis->setRange(-m_window->value(), 0);
     const double margin = high > low ? (high - low) * 0.05 : 1.0;
     m_valueAxis->setRange(low - margin, high + margin);
+    // As many ticks as labels fit one above the other: in a low plot Qt Charts would draw them as
+    // "…" rather than overlap them.
+    const qreal labelPitch = m_chartView->fontMetrics().height() * 1.5;
+    m_valueAxis->setTickCount(std::clamp(int(m_chart->plotArea().height() / labelPitch) + 1, 2, 5));
     // Ticks at round values (…, 2000, 4000, 6000) rather than at fifths of the data's range, with
     // as many decimals as the step between them needs.
     m_valueAxis->applyNiceNumbers();

@@ -6,9 +6,18 @@
 //
 // writes builder-LANGUAGE.png (the tour's component in the Builder), systemeditor-LANGUAGE.png (the
 // bundled ConsoleInOut system), planview-LANGUAGE.png (the planner's tutorial robot in the Plan
-// view) and userguide-LANGUAGE.png (Help → User Guide). LANGUAGE is en or ja.
+// view), online-LANGUAGE.png (the ConsoleInOut system running on a live rtmanager, its OutPort in
+// the Port Monitor) and userguide-LANGUAGE.png (Help → User Guide). LANGUAGE is en or ja.
 // Settings go to a temporary folder; the user's are not read or changed.
+#include "restorer.h"
+#include "livesystem.h"
 #include "mainwindow.h"
+#include "nameserviceview.h"
+#include "onlinediagram.h"
+#include "onlinedocks.h"
+#include "onlinedocument.h"
+#include "onlineicons.h"
+#include "portmonitor.h"
 #include "perspective.h"
 #include "planview.h"
 #include "profileio.h"
@@ -80,6 +89,62 @@ bool showPlanView(Studio::MainWindow &window)
         && planned.wait(30000) && plan->plan().feasible;
 }
 
+/**
+ * Starts a name server and an rtmanager on free loopback ports, restores the bundled ConsoleInOut
+ * system there, opens it online, starts it and watches ConsoleIn0's OutPort in the Port Monitor.
+ */
+bool showOnline(Studio::MainWindow &window, LiveTest::LiveSystem &live, const QString &systemFile)
+{
+    QString error;
+    const quint16 managerPort = LiveTest::freePort();
+    if (!live.startNameServer(&error)
+        || !live.startHostManager(QStringLiteral(RTMANAGER_PATH), managerPort, QStringLiteral("robot"), {}, &error)) {
+        std::fprintf(stderr, "docscreenshots: %s\n", qPrintable(error));
+        return false;
+    }
+    Profile::Diagnostics diagnostics;
+    const auto loaded = Profile::loadProfileFile(systemFile, &diagnostics);
+    if (!loaded || !loaded->rts)
+        return false;
+    Deploy::TargetOptions target;
+    target.nameServers = {live.namingServer()};
+    target.manager = QStringLiteral("corbaloc::127.0.0.1:%1").arg(managerPort);
+    target.create = true;
+    const Deploy::DeployReport restored
+        = Deploy::restoreSystem(*loaded->rts, Deploy::planRestore(*loaded->rts, target), target);
+    if (!restored.ok) {
+        std::fprintf(stderr, "docscreenshots: %s\n", qPrintable(restored.toText()));
+        return false;
+    }
+    window.showPerspective(Studio::Perspective::Id::SystemEditor);
+    SystemEditor::NameServiceView *names = window.onlineDocks()->nameService();
+    QSignalSpy refreshed(names, &SystemEditor::NameServiceView::serverRefreshed);
+    if (!names->addServer(live.namingServer()) || !refreshed.wait(15000) || !window.openFiles({systemFile}))
+        return false;
+    window.findChild<QAction *>(QStringLiteral("actionOpenOnline"))->trigger();
+    auto *online = qobject_cast<Studio::OnlineDocument *>(window.activeDocument());
+    if (!online || !online->diagram())
+        return false;
+    SystemEditor::OnlineDiagram *diagram = online->diagram();
+    const int components = int(loaded->rts->components.size());
+    if (!QTest::qWaitFor([&] { return diagram->model()->componentIds().size() == components; }, 15000))
+        return false;
+    diagram->findChild<QAction *>(QStringLiteral("actionStartAll"))->trigger();
+    const QColor active = SystemEditor::OnlineIcons::stateColor(Corba::LifeCycleState::Active);
+    if (!QTest::qWaitFor([&] { return diagram->bodyColor(QStringLiteral("ConsoleOut0")) == active; }, 15000))
+        return false;
+    diagram->monitorPort(QStringLiteral("ConsoleIn0"), QStringLiteral("out"));
+    SystemEditor::PortMonitor *monitor = window.onlineDocks()->portMonitor();
+    // A plot of about two seconds of samples (ConsoleIn sends a thousand a second), by when the
+    // Name Service view has polled the new states too.
+    return QTest::qWaitFor(
+        [&] {
+            const QStringList watched = monitor->watched();
+            return !watched.isEmpty() && monitor->received(watched.first()) >= 1500;
+        },
+        30000);
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -116,6 +181,10 @@ int main(int argc, char *argv[])
         && window.openFiles({examples.filePath(QStringLiteral("ConsoleInOut/ConsoleInOut.xml"))})
         && save(&window, output, QStringLiteral("systemeditor"), language)
         && showPlanView(window) && save(&window, output, QStringLiteral("planview"), language);
+    LiveTest::LiveSystem live;
+    window.resize(1400, 900);
+    ok = ok && showOnline(window, live, examples.filePath(QStringLiteral("ConsoleInOut/ConsoleInOut.xml")))
+        && save(&window, output, QStringLiteral("online"), language);
     window.showUserGuide(QStringLiteral("getting-started.md"));
     Studio::UserGuide *guide = window.userGuide();
     ok = ok && guide && QTest::qWaitForWindowExposed(guide) && save(guide, output, QStringLiteral("userguide"), language);
