@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "manager.h"
 
+#include "connectionlimit.h"
 #include "corbautil.h"
 #include "executioncontextfactory.h"
 #include "hostfacts.h"
@@ -127,6 +128,10 @@ bool Manager::initOrb(std::string *error)
         *error = "cannot start the ORB on " + listening + ": " + describeException(e);
         return false;
     }
+    std::vector<int> ports;
+    for (const auto &endpoint : endpoints)
+        ports.push_back(endpoint.second);
+    ConnectionLimit::install(int(configNumber("corba.max_connections", DefaultConnectionLimit)), ports);
     // No remote call may block forever: every outgoing call and connect is bounded.
     omniORB::setClientCallTimeout(CORBA::ULong(configNumber("corba.call_timeout", 5000)));
     omniORB::setClientConnectTimeout(CORBA::ULong(configNumber("corba.connect_timeout", 2000)));

@@ -225,6 +225,9 @@ private:
     /// low enough that a runaway client is refused before the host's memory or processes run out.
     static constexpr double DefaultComponentLimit = 4096;
     static constexpr double DefaultSlaveLimit = 256;
+    /// Default of `corba.max_connections`: TCP connections accepted at once, well below the
+    /// usual 1,024 open files of a process.
+    static constexpr double DefaultConnectionLimit = 512;
     struct Component;
     struct Slave;
     struct Module;

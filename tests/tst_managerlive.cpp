@@ -12,6 +12,8 @@
 #include "common/nvlist.h"
 
 #include <QtTest>
+#include <QHostAddress>
+#include <QTcpSocket>
 
 #include <algorithm>
 #include <csignal>
@@ -111,6 +113,7 @@ private slots:
     void modulesOutsideTheLoadPathRefused();
     void remoteConfigurationCannotChooseCode();
     void limitsRefuseRunawayClients();
+    void connectionsBeyondTheLimitAreClosed();
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
     void startupKeys();
@@ -714,6 +717,27 @@ void TestManagerLive::limitsRefuseRunawayClients()
              qPrintable(lastError(m_master)));
     QCOMPARE(RTM::ManagerList_var(m_master->get_slave_managers())->length(), 1u);
     QVERIFY2(!CORBA::is_nil(RTC::RTObject_var(create("ConsoleOut?manager_name=first"))), qPrintable(lastError(m_master)));
+}
+
+void TestManagerLive::connectionsBeyondTheLimitAreClosed()
+{
+    restartMaster({"-o", "corba.max_connections=4"});
+    // This test's ORB holds one of the four connections.
+    QCOMPARE(m_master->is_master(), CORBA::Boolean(true));
+    std::vector<std::unique_ptr<QTcpSocket>> sockets;
+    for (int i = 0; i < 6; ++i) {
+        sockets.push_back(std::make_unique<QTcpSocket>());
+        sockets.back()->connectToHost(QHostAddress::LocalHost, m_masterPort);
+        QVERIFY(sockets.back()->waitForConnected(5000));
+    }
+    // The manager closes those beyond four as it accepts them; three of these stay open.
+    const auto count = [&sockets](QAbstractSocket::SocketState state) {
+        return std::count_if(sockets.begin(), sockets.end(), [state](const auto &s) { return s->state() == state; });
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(count(QAbstractSocket::UnconnectedState), 3, 5000);
+    QCOMPARE(count(QAbstractSocket::ConnectedState), 3);
+    // It serves on over the connection it had.
+    QCOMPARE(m_master->is_master(), CORBA::Boolean(true));
 }
 
 // As OpenRTM-aist's: a loadable module is listed by the component types its init function
