@@ -49,3 +49,15 @@ if(TARGET rtpymodules)
     add_dependencies(tst_builderpython rtmanager rtctl rtpython rtpymodules rtsdk)
     set_tests_properties(tst_builderpython PROPERTIES LABELS python TIMEOUT 600)
 endif()
+
+# Service ports of Python components: rtctl idl --lang python, Python providers and consumers,
+# OpenRTM-aist-Python's SimpleService example unchanged, calls both ways with rtmanager's C++ built-ins.
+rtstudio_add_test(tst_pythonservice SOURCES tst_pythonservice.cpp
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+target_compile_definitions(tst_pythonservice PRIVATE
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+    RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
+    RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+    RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
+add_dependencies(tst_pythonservice rtmanager rtctl rtpython rtsdk)
+set_tests_properties(tst_pythonservice PROPERTIES LABELS python TIMEOUT 600)
