@@ -20,11 +20,12 @@ QString parentOf(const QString &scopedName)
     return scopedName.contains(Separator) ? scopedName.section(Separator, 0, -2) : QString();
 }
 
-/// The top-level Python package of a declaration: its outermost module, or _GlobalIDL.
-QString topModule(const QString &scopedName)
+/// omniORBpy's servant module of an IDL module: `Outer__POA.Inner` for `Outer::Inner`.
+QString poaModuleName(const QString &moduleScope)
 {
-    return scopedName.contains(Separator) ? scopedName.section(Separator, 0, 0)
-                                          : QStringLiteral("_GlobalIDL");
+    QStringList parts = moduleScope.split(Separator);
+    parts.first() += QStringLiteral("__POA");
+    return parts.join(QLatin1Char('.'));
 }
 
 /// @p text as a Python string literal.
@@ -117,12 +118,10 @@ QString PythonStubWriter::stubFile(const QString &path, const QString &text,
             includes = true;
             continue;
         }
-        const QString top = decl.kind == IdlDeclaration::Kind::Module
-            ? decl.scopedName.section(Separator, 0, 0)
-            : topModule(decl.scopedName);
+        const QString top = packageOf(decl.scopedName);
         if (!modules->contains(top))
             modules->append(top);
-        if (decl.kind == IdlDeclaration::Kind::Module || !decl.scopedName.contains(Separator)) {
+        if (decl.kind == IdlDeclaration::Kind::Module || top == QLatin1String("_GlobalIDL")) {
             const QString scope = decl.kind == IdlDeclaration::Kind::Module ? decl.scopedName : top;
             if (!opened.contains(scope)) {
                 opened.insert(scope);
@@ -130,7 +129,7 @@ QString PythonStubWriter::stubFile(const QString &path, const QString &text,
                                        "omniORB.openModule(%4, %3)\n\n")
                             .arg(moduleVariable(scope), quoted(pythonModuleName(scope)),
                                  quoted(fileName),
-                                 quoted(pythonModuleName(scope) + QStringLiteral("__POA")));
+                                 quoted(poaModuleName(scope)));
             }
             if (decl.kind == IdlDeclaration::Kind::Module)
                 continue;
@@ -270,15 +269,11 @@ QString PythonStubWriter::interfaceClasses(const IdlInterface &type) const
 {
     const QString name = leaf(type.scopedName);
     const QString scope = scopeExpression(parentOf(type.scopedName));
-    const QString poaScope
-        = moduleVariable(topModule(type.scopedName) == QLatin1String("_GlobalIDL")
-                             ? QStringLiteral("_GlobalIDL")
-                             : parentOf(type.scopedName))
-        + QStringLiteral("__POA");
+    const QString poaScope = poaScopeOf(type.scopedName);
     QStringList objrefBases, servantBases;
     for (const QString &base : type.bases) {
         objrefBases << scopeExpression(parentOf(base)) + QStringLiteral("._objref_") + leaf(base);
-        servantBases << moduleVariable(parentOf(base)) + QStringLiteral("__POA.") + leaf(base);
+        servantBases << poaScopeOf(base) + QLatin1Char('.') + leaf(base);
     }
     if (objrefBases.isEmpty()) {
         objrefBases << QStringLiteral("CORBA.Object");
@@ -320,6 +315,20 @@ QString PythonStubWriter::constant(const IdlConst &constant) const
     return QStringLiteral("%1.%2 = %3\n\n")
         .arg(scopeExpression(parentOf(constant.scopedName)), leaf(constant.scopedName),
              literal(constant.value));
+}
+
+QString PythonStubWriter::packageOf(const QString &scopedName) const
+{
+    const QString outermost = scopedName.section(Separator, 0, 0);
+    const std::optional<IdlDeclaration> declaration = m_model.find(outermost);
+    return declaration && declaration->kind == IdlDeclaration::Kind::Module ? outermost
+                                                                            : QStringLiteral("_GlobalIDL");
+}
+
+QString PythonStubWriter::poaScopeOf(const QString &interfaceName) const
+{
+    const QString parent = parentOf(interfaceName);
+    return moduleVariable(parent.isEmpty() ? QStringLiteral("_GlobalIDL") : parent) + QStringLiteral("__POA");
 }
 
 QString PythonStubWriter::scopeExpression(const QString &scope) const

@@ -52,6 +52,11 @@ private:
     QString typedefClass(const QString &scopedName) const;
     QString interfaceClasses(const IdlInterface &type) const;
     QString constant(const IdlConst &constant) const;
+    /// The top-level package of a declaration: its outermost module, or `_GlobalIDL`.
+    QString packageOf(const QString &scopedName) const;
+    /// The variable of the servant module holding interface @p interfaceName's `__POA` class.
+    QString poaScopeOf(const QString &interfaceName) const;
+    /// The Python expression of a scope: a module's variable, or a class of an enclosing interface.
     QString scopeExpression(const QString &scope) const;
     QString literal(const QString &idlValue) const;
 

@@ -48,8 +48,8 @@ private slots:
 private:
     RtctlResult rtctl(const QStringList &arguments) const { return m_host.run(arguments); }
     bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
-    /// Compiles @p idl into a folder of its own under the test's; empty when rtctl idl fails.
-    QString compileIdl(const QString &idl);
+    /// Compiles @p idls into a folder of the first one's name under the test's; empty when rtctl idl fails.
+    QString compileIdl(const QStringList &idls);
     /// Starts `python3 @p script -f <conf>` with the stubs in @p stubs; waits until @p instance is
     /// registered.
     QProcess *startScript(const QString &script, const QString &stubs, const QString &instance,
@@ -80,10 +80,10 @@ void TestPythonService::initTestCase()
     QVERIFY2(m_manager, qPrintable(error));
 }
 
-QString TestPythonService::compileIdl(const QString &idl)
+QString TestPythonService::compileIdl(const QStringList &idls)
 {
-    const QString output = m_work.filePath(QFileInfo(idl).completeBaseName());
-    const RtctlResult compiled = runRtctl({"idl", "--lang", "python", "-o", output, idl});
+    const QString output = m_work.filePath(QFileInfo(idls.value(0)).completeBaseName());
+    const RtctlResult compiled = runRtctl(QStringList{"idl", "--lang", "python", "-o", output} + idls);
     if (compiled.code != 0) {
         qWarning().noquote() << compiled.out << compiled.err;
         return {};
@@ -129,9 +129,10 @@ bool TestPythonService::commandAnswers(QProcess *consumer, const QByteArray &com
 
 void TestPythonService::stubsOfEveryConstructImportAndConvert()
 {
-    const QString stubs = compileIdl(dataFile(QStringLiteral("Calc.idl")));
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Calc.idl")), dataFile(QStringLiteral("Scopes.idl"))});
     QVERIFY(!stubs.isEmpty());
-    for (const char *file : {"Calc_idl.py", "PyCalc/__init__.py", "PyCalc__POA/__init__.py"})
+    for (const char *file : {"Calc_idl.py", "PyCalc/__init__.py", "PyCalc__POA/__init__.py", "Scopes_idl.py",
+                             "Outer/__init__.py", "Outer__POA/__init__.py", "_GlobalIDL/__init__.py"})
         QVERIFY2(QFileInfo::exists(stubs + QLatin1Char('/') + QLatin1String(file)), file);
     QProcess python;
     python.setProcessEnvironment(
@@ -145,6 +146,9 @@ void TestPythonService::stubsOfEveryConstructImportAndConvert()
     QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0,
              qPrintable(output));
     QVERIFY2(output.contains(QLatin1String("stubs: ok")), qPrintable(output));
+    QVERIFY2(output.contains(QLatin1String("scopes: ok")), qPrintable(output));
+    // Only the modules the files declare: no package for an interface's name.
+    QVERIFY(!QFileInfo::exists(stubs + QStringLiteral("/GlobalThing")));
 }
 
 void TestPythonService::badIdlIsReportedWithItsLine()
@@ -161,7 +165,7 @@ void TestPythonService::badIdlIsReportedWithItsLine()
 
 void TestPythonService::pythonProviderAndConsumerExchangeCalls()
 {
-    const QString stubs = compileIdl(dataFile(QStringLiteral("Calc.idl")));
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Calc.idl"))});
     QVERIFY(!stubs.isEmpty());
     QProcess *provider = startScript(dataFile(QStringLiteral("PyCalcProvider.py")), stubs,
                                      QStringLiteral("PyCalcProvider0.rtc"));
@@ -190,7 +194,7 @@ void TestPythonService::pythonProviderAndConsumerExchangeCalls()
 
 void TestPythonService::pythonAndCxxComponentsCallEachOther()
 {
-    const QString stubs = compileIdl(dataFile(QStringLiteral("SimpleService.idl")));
+    const QString stubs = compileIdl({dataFile(QStringLiteral("SimpleService.idl"))});
     QVERIFY(!stubs.isEmpty());
     QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "create",
                            "MyServiceProvider?instance_name=CxxProvider", "create",
@@ -230,7 +234,7 @@ void TestPythonService::simpleServiceExamplesRunUnchanged()
         QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples "
               "beside the "
               "project) is absent");
-    const QString stubs = compileIdl(simpleServiceDir() + QStringLiteral("MyService.idl"));
+    const QString stubs = compileIdl({simpleServiceDir() + QStringLiteral("MyService.idl")});
     QVERIFY(!stubs.isEmpty());
     QProcess *provider = startScript(simpleServiceDir() + QStringLiteral("MyServiceProvider.py"),
                                      stubs, QStringLiteral("MyServiceProvider0.rtc"));

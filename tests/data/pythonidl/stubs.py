@@ -59,3 +59,19 @@ check(not hasattr(PyCalc._objref_Calculator, "_set_calls"), "readonly attribute"
 check(PyCalc.Calculator._NP_RepositoryId == "IDL:PyCalc/Calculator:1.0", "interface id")
 check(CORBA.is_nil(PyCalc.Calculator._nil), "nil reference")
 print("stubs: ok")
+
+# Scopes.idl, compiled with Calc.idl into the same folder.
+import _GlobalIDL
+import _GlobalIDL__POA
+import Outer
+import Outer__POA
+
+check(_GlobalIDL.TOP == 3 and _GlobalIDL.GPoint(1).x == 1, "global declarations")
+check(issubclass(_GlobalIDL__POA.GlobalThing, PortableServer.Servant), "global servant base")
+deep = Outer.Inner.Deep(_GlobalIDL.GPoint(2), 5)
+check(round_trip(deep) == deep and deep._NP_RepositoryId == "IDL:Outer/Inner/Deep:1.0", "nested module struct")
+check(Outer.Inner.Holder.LIMIT == 9 and Outer.Inner.Holder.Item(4).v == 4, "declarations inside an interface")
+check(Outer.FAVOURITE == Outer.GREEN, "enumerator constant")
+check(issubclass(Outer__POA.Inner.Holder, _GlobalIDL__POA.GlobalThing), "servant inheritance across modules")
+check(issubclass(Outer.Inner._objref_Holder, _GlobalIDL._objref_GlobalThing), "reference inheritance across modules")
+print("scopes: ok")
