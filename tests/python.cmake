@@ -52,10 +52,11 @@ endif()
 
 # Service ports of Python components: rtctl idl --lang python, Python providers and consumers,
 # OpenRTM-aist-Python's SimpleService example unchanged, calls both ways with rtmanager's C++ built-ins.
+# OpenRTM-aist's C++ MyServiceProvider / MyServiceConsumer examples are built against the SDK for it.
 rtstudio_add_test(tst_pythonservice SOURCES tst_pythonservice.cpp
-    LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
+rtstudio_uses_sdk_projects(tst_pythonservice)
 target_compile_definitions(tst_pythonservice PRIVATE
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
     RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
     RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
     RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")

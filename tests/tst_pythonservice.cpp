@@ -9,10 +9,12 @@
 //   attributes and a user exception;
 // - OpenRTM-aist-Python's SimpleService example unchanged (shared corpus; skipped with the reason
 //   when absent): its consumer's commands reach its provider and the answers come back;
-// - a Python component of ours calls rtmanager's C++ MyServiceProvider built-in, and the C++
-//   MyServiceConsumer built-in calls its Python servant.
+// - a Python component of ours calls rtmanager's C++ MyServiceProvider built-in and OpenRTM-aist's
+//   C++ MyServiceProvider example built against the SDK; the C++ MyServiceConsumer built-in and
+//   example call its Python servant.
 #include "hostrtctl.h"
 #include "pythonenvironment.h"
+#include "sdkproject.h"
 
 #include <QtTest>
 
@@ -43,6 +45,7 @@ private slots:
     void badIdlIsReportedWithItsLine();
     void pythonProviderAndConsumerExchangeCalls();
     void pythonAndCxxComponentsCallEachOther();
+    void pythonComponentAndSdkExamplesCallEachOther();
     void simpleServiceExamplesRunUnchanged();
 
 private:
@@ -50,11 +53,18 @@ private:
     bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
     /// Compiles @p idls into a folder of the first one's name under the test's; empty when rtctl idl fails.
     QString compileIdl(const QStringList &idls);
+    /// An rtc.conf registering in the test's name server, @p extraConf after.
+    QString writeConf(const QString &name, const QString &extraConf = {});
     /// Starts `python3 @p script -f <conf>` with the stubs in @p stubs; waits until @p instance is
     /// registered.
     QProcess *startScript(const QString &script, const QString &stubs, const QString &instance,
                           const QString &extraConf = {});
     QString printed(QProcess *process) { return m_printed.of(process); }
+    /**
+     * Ends @p components with `rtctl exit` and waits until their names have left the name server,
+     * so that a later test's components of the same names are not mistaken for them.
+     */
+    bool endComponents(const QStringList &components);
     /// Writes @p command to @p consumer (OpenRTM's SimpleService consumer); true once it printed @p
     /// answer.
     bool commandAnswers(QProcess *consumer, const QByteArray &command, const QString &answer);
@@ -91,19 +101,23 @@ QString TestPythonService::compileIdl(const QStringList &idls)
     return output;
 }
 
-QProcess *TestPythonService::startScript(const QString &script, const QString &stubs,
-                                         const QString &instance, const QString &extraConf)
+QString TestPythonService::writeConf(const QString &name, const QString &extraConf)
 {
-    const QString conf = m_work.filePath(QFileInfo(script).baseName() + QStringLiteral(".conf"));
+    const QString conf = m_work.filePath(name + QStringLiteral(".conf"));
     QFile file(conf);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-        return nullptr;
-    file.write(QStringLiteral(
-                   "corba.nameservers: %1\nnaming.formats: %2.host_cxt/%n.rtc\nlogger.enable: NO\n")
+        return {};
+    file.write(QStringLiteral("corba.nameservers: %1\nnaming.formats: %2.host_cxt/%n.rtc\nlogger.enable: NO\n")
                    .arg(m_live.namingServer(), hostName)
                    .toUtf8()
                + extraConf.toUtf8());
-    file.close();
+    return conf;
+}
+
+QProcess *TestPythonService::startScript(const QString &script, const QString &stubs, const QString &instance,
+                                         const QString &extraConf)
+{
+    const QString conf = writeConf(QFileInfo(script).baseName(), extraConf);
     QString error;
     const QProcessEnvironment environment = LiveTest::pythonEnvironment(
         stubs + QLatin1Char(':') + QStringLiteral(RTSTUDIO_PYTHON_PATH),
@@ -115,6 +129,21 @@ QProcess *TestPythonService::startScript(const QString &script, const QString &s
     if (!process)
         qWarning().noquote() << error;
     return process;
+}
+
+bool TestPythonService::endComponents(const QStringList &components)
+{
+    for (const QString &component : components) {
+        if (!rtctlSucceeds({QStringLiteral("exit"), component}))
+            return false;
+    }
+    return QTest::qWaitFor(
+        [&] {
+            const QString listed = rtctl({QStringLiteral("ls")}).out;
+            return std::none_of(components.begin(), components.end(),
+                                [&listed](const QString &component) { return listed.contains(component); });
+        },
+        runTimeoutMs);
 }
 
 bool TestPythonService::commandAnswers(QProcess *consumer, const QByteArray &command,
@@ -188,6 +217,7 @@ void TestPythonService::pythonProviderAndConsumerExchangeCalls()
     QVERIFY2(provider->state() == QProcess::Running, "the provider ended");
     QVERIFY2(printed(provider).contains(QLatin1String("provider: total of ['a', 'b', 'c']")),
              qPrintable(printed(provider)));
+    QVERIFY(endComponents({QStringLiteral("PyCalcConsumer0.rtc"), QStringLiteral("PyCalcProvider0.rtc")}));
     m_live.stop(consumer);
     m_live.stop(provider);
 }
@@ -225,6 +255,63 @@ void TestPythonService::pythonAndCxxComponentsCallEachOther()
     QVERIFY2(printed(python).contains(QLatin1String("servant: echo echo 1\n")),
              qPrintable(printed(python)));
     QVERIFY(rtctlSucceeds({"deact", "CxxConsumer.rtc"}));
+    QVERIFY(endComponents({QStringLiteral("PyMyService0.rtc")}));
+    m_live.stop(python);
+}
+
+void TestPythonService::pythonComponentAndSdkExamplesCallEachOther()
+{
+    // OpenRTM-aist's C++ MyServiceProvider and MyServiceConsumer examples, built against the SDK.
+    const QString corpus = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-examples/");
+    if (!QFileInfo::exists(corpus + QStringLiteral("MyServiceProvider/CMakeLists.txt")))
+        QSKIP("the OpenRTM-aist examples corpus (shared/conformance/openrtm-examples beside the project) is absent");
+    QStringList programs;
+    for (const char *example : {"MyServiceProvider", "MyServiceConsumer"}) {
+        const QString dir = m_work.filePath(QStringLiteral("sdk/") + QLatin1String(example));
+        QVERIFY(SdkTest::copyTree(corpus + QLatin1String(example), dir));
+        QString log;
+        QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log), qPrintable(log.right(4000)));
+        programs << dir + QStringLiteral("/build/src/") + QLatin1String(example) + QStringLiteral("Comp");
+    }
+    const QString stubs = compileIdl({dataFile(QStringLiteral("SimpleService.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QString error;
+    QProcess *provider = m_live.startRegistered(
+        programs.at(0), {QStringLiteral("-f"), writeConf(QStringLiteral("sdkprovider"))},
+        [this] { return rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("MyServiceProvider0.rtc")); },
+        &error, runTimeoutMs);
+    QVERIFY2(provider, qPrintable(error));
+    QProcess *consumer = m_live.startRegistered(
+        programs.at(1), {QStringLiteral("-f"), writeConf(QStringLiteral("sdkconsumer"))},
+        [this] { return rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("MyServiceConsumer0.rtc")); },
+        &error, runTimeoutMs);
+    QVERIFY2(consumer, qPrintable(error));
+    // The C++ provider's echo() takes ten seconds: longer than the runtime's default call timeout.
+    // (An earlier test's PyMyService0 has gone from the name server with its process.)
+    QTRY_VERIFY_WITH_TIMEOUT(!rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyMyService0.rtc")), runTimeoutMs);
+    QProcess *python = startScript(dataFile(QStringLiteral("PyMyService.py")), stubs, QStringLiteral("PyMyService0.rtc"),
+                                   QStringLiteral("corba.call_timeout: 20000\n"));
+    QVERIFY(python);
+    QVERIFY(rtctlSucceeds({"con", "MyServiceConsumer0.rtc:MyService", "PyMyService0.rtc:Provided"}));
+    QVERIFY(rtctlSucceeds({"con", "PyMyService0.rtc:Required", "MyServiceProvider0.rtc:MyService"}));
+    for (const char *component : {"MyServiceProvider0.rtc", "PyMyService0.rtc", "MyServiceConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // Python consumer → the C++ provider example.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(python).contains(QLatin1String("consumer: echoes ['from python']\n")),
+                              qPrintable(printed(python) + printed(provider).right(1000)), runTimeoutMs);
+    QVERIFY2(printed(python).contains(QLatin1String("consumer: value 2.5 history [1.25, 2.5]\n")),
+             qPrintable(printed(python)));
+    // The C++ consumer example's commands → the Python servant.
+    QVERIFY2(commandAnswers(consumer, "set_value 4.5", QStringLiteral("Set remote value: 4.5")),
+             qPrintable(printed(consumer).right(1000)));
+    QVERIFY2(commandAnswers(consumer, "get_value", QStringLiteral("Current remote value: 4.5")),
+             qPrintable(printed(consumer).right(1000)));
+    // The consumer example waits for its next command in onExecute: at the end of its input it goes on.
+    consumer->closeWriteChannel();
+    QVERIFY(endComponents({QStringLiteral("MyServiceConsumer0.rtc"), QStringLiteral("PyMyService0.rtc"),
+                           QStringLiteral("MyServiceProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(provider);
     m_live.stop(python);
 }
 
