@@ -51,7 +51,8 @@ private slots:
 private:
     RtctlResult rtctl(const QStringList &arguments) const { return m_host.run(arguments); }
     bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
-    /// Compiles @p idls into a folder of the first one's name under the test's; empty when rtctl idl fails.
+    /// Compiles @p idls into a folder of the first one's name under the test's; empty when rtctl
+    /// idl fails.
     QString compileIdl(const QStringList &idls);
     /// An rtc.conf registering in the test's name server, @p extraConf after.
     QString writeConf(const QString &name, const QString &extraConf = {});
@@ -93,7 +94,8 @@ void TestPythonService::initTestCase()
 QString TestPythonService::compileIdl(const QStringList &idls)
 {
     const QString output = m_work.filePath(QFileInfo(idls.value(0)).completeBaseName());
-    const RtctlResult compiled = runRtctl(QStringList{"idl", "--lang", "python", "-o", output} + idls);
+    const RtctlResult compiled
+        = runRtctl(QStringList {"idl", "--lang", "python", "-o", output} + idls);
     if (compiled.code != 0) {
         qWarning().noquote() << compiled.out << compiled.err;
         return {};
@@ -107,15 +109,16 @@ QString TestPythonService::writeConf(const QString &name, const QString &extraCo
     QFile file(conf);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
         return {};
-    file.write(QStringLiteral("corba.nameservers: %1\nnaming.formats: %2.host_cxt/%n.rtc\nlogger.enable: NO\n")
+    file.write(QStringLiteral(
+                   "corba.nameservers: %1\nnaming.formats: %2.host_cxt/%n.rtc\nlogger.enable: NO\n")
                    .arg(m_live.namingServer(), hostName)
                    .toUtf8()
                + extraConf.toUtf8());
     return conf;
 }
 
-QProcess *TestPythonService::startScript(const QString &script, const QString &stubs, const QString &instance,
-                                         const QString &extraConf)
+QProcess *TestPythonService::startScript(const QString &script, const QString &stubs,
+                                         const QString &instance, const QString &extraConf)
 {
     const QString conf = writeConf(QFileInfo(script).baseName(), extraConf);
     QString error;
@@ -140,8 +143,9 @@ bool TestPythonService::endComponents(const QStringList &components)
     return QTest::qWaitFor(
         [&] {
             const QString listed = rtctl({QStringLiteral("ls")}).out;
-            return std::none_of(components.begin(), components.end(),
-                                [&listed](const QString &component) { return listed.contains(component); });
+            return std::none_of(
+                components.begin(), components.end(),
+                [&listed](const QString &component) { return listed.contains(component); });
         },
         runTimeoutMs);
 }
@@ -158,10 +162,12 @@ bool TestPythonService::commandAnswers(QProcess *consumer, const QByteArray &com
 
 void TestPythonService::stubsOfEveryConstructImportAndConvert()
 {
-    const QString stubs = compileIdl({dataFile(QStringLiteral("Calc.idl")), dataFile(QStringLiteral("Scopes.idl"))});
+    const QString stubs = compileIdl(
+        {dataFile(QStringLiteral("Calc.idl")), dataFile(QStringLiteral("Scopes.idl"))});
     QVERIFY(!stubs.isEmpty());
-    for (const char *file : {"Calc_idl.py", "PyCalc/__init__.py", "PyCalc__POA/__init__.py", "Scopes_idl.py",
-                             "Outer/__init__.py", "Outer__POA/__init__.py", "_GlobalIDL/__init__.py"})
+    for (const char *file :
+         {"Calc_idl.py", "PyCalc/__init__.py", "PyCalc__POA/__init__.py", "Scopes_idl.py",
+          "Outer/__init__.py", "Outer__POA/__init__.py", "_GlobalIDL/__init__.py"})
         QVERIFY2(QFileInfo::exists(stubs + QLatin1Char('/') + QLatin1String(file)), file);
     QProcess python;
     python.setProcessEnvironment(
@@ -217,7 +223,8 @@ void TestPythonService::pythonProviderAndConsumerExchangeCalls()
     QVERIFY2(provider->state() == QProcess::Running, "the provider ended");
     QVERIFY2(printed(provider).contains(QLatin1String("provider: total of ['a', 'b', 'c']")),
              qPrintable(printed(provider)));
-    QVERIFY(endComponents({QStringLiteral("PyCalcConsumer0.rtc"), QStringLiteral("PyCalcProvider0.rtc")}));
+    QVERIFY(endComponents(
+        {QStringLiteral("PyCalcConsumer0.rtc"), QStringLiteral("PyCalcProvider0.rtc")}));
     m_live.stop(consumer);
     m_live.stop(provider);
 }
@@ -264,41 +271,57 @@ void TestPythonService::pythonComponentAndSdkExamplesCallEachOther()
     // OpenRTM-aist's C++ MyServiceProvider and MyServiceConsumer examples, built against the SDK.
     const QString corpus = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-examples/");
     if (!QFileInfo::exists(corpus + QStringLiteral("MyServiceProvider/CMakeLists.txt")))
-        QSKIP("the OpenRTM-aist examples corpus (shared/conformance/openrtm-examples beside the project) is absent");
+        QSKIP("the OpenRTM-aist examples corpus (shared/conformance/openrtm-examples beside the "
+              "project) is absent");
     QStringList programs;
     for (const char *example : {"MyServiceProvider", "MyServiceConsumer"}) {
         const QString dir = m_work.filePath(QStringLiteral("sdk/") + QLatin1String(example));
         QVERIFY(SdkTest::copyTree(corpus + QLatin1String(example), dir));
         QString log;
-        QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log), qPrintable(log.right(4000)));
-        programs << dir + QStringLiteral("/build/src/") + QLatin1String(example) + QStringLiteral("Comp");
+        QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log),
+                 qPrintable(log.right(4000)));
+        programs << dir + QStringLiteral("/build/src/") + QLatin1String(example)
+                + QStringLiteral("Comp");
     }
     const QString stubs = compileIdl({dataFile(QStringLiteral("SimpleService.idl"))});
     QVERIFY(!stubs.isEmpty());
     QString error;
     QProcess *provider = m_live.startRegistered(
         programs.at(0), {QStringLiteral("-f"), writeConf(QStringLiteral("sdkprovider"))},
-        [this] { return rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("MyServiceProvider0.rtc")); },
+        [this] {
+            return rtctl({QStringLiteral("ls")})
+                .out.contains(QLatin1String("MyServiceProvider0.rtc"));
+        },
         &error, runTimeoutMs);
     QVERIFY2(provider, qPrintable(error));
     QProcess *consumer = m_live.startRegistered(
         programs.at(1), {QStringLiteral("-f"), writeConf(QStringLiteral("sdkconsumer"))},
-        [this] { return rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("MyServiceConsumer0.rtc")); },
+        [this] {
+            return rtctl({QStringLiteral("ls")})
+                .out.contains(QLatin1String("MyServiceConsumer0.rtc"));
+        },
         &error, runTimeoutMs);
     QVERIFY2(consumer, qPrintable(error));
     // The C++ provider's echo() takes ten seconds: longer than the runtime's default call timeout.
     // (An earlier test's PyMyService0 has gone from the name server with its process.)
-    QTRY_VERIFY_WITH_TIMEOUT(!rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyMyService0.rtc")), runTimeoutMs);
-    QProcess *python = startScript(dataFile(QStringLiteral("PyMyService.py")), stubs, QStringLiteral("PyMyService0.rtc"),
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyMyService0.rtc")),
+        runTimeoutMs);
+    QProcess *python = startScript(dataFile(QStringLiteral("PyMyService.py")), stubs,
+                                   QStringLiteral("PyMyService0.rtc"),
                                    QStringLiteral("corba.call_timeout: 20000\n"));
     QVERIFY(python);
-    QVERIFY(rtctlSucceeds({"con", "MyServiceConsumer0.rtc:MyService", "PyMyService0.rtc:Provided"}));
-    QVERIFY(rtctlSucceeds({"con", "PyMyService0.rtc:Required", "MyServiceProvider0.rtc:MyService"}));
-    for (const char *component : {"MyServiceProvider0.rtc", "PyMyService0.rtc", "MyServiceConsumer0.rtc"})
+    QVERIFY(
+        rtctlSucceeds({"con", "MyServiceConsumer0.rtc:MyService", "PyMyService0.rtc:Provided"}));
+    QVERIFY(
+        rtctlSucceeds({"con", "PyMyService0.rtc:Required", "MyServiceProvider0.rtc:MyService"}));
+    for (const char *component :
+         {"MyServiceProvider0.rtc", "PyMyService0.rtc", "MyServiceConsumer0.rtc"})
         QVERIFY(rtctlSucceeds({"act", component}));
     // Python consumer → the C++ provider example.
-    QTRY_VERIFY2_WITH_TIMEOUT(printed(python).contains(QLatin1String("consumer: echoes ['from python']\n")),
-                              qPrintable(printed(python) + printed(provider).right(1000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        printed(python).contains(QLatin1String("consumer: echoes ['from python']\n")),
+        qPrintable(printed(python) + printed(provider).right(1000)), runTimeoutMs);
     QVERIFY2(printed(python).contains(QLatin1String("consumer: value 2.5 history [1.25, 2.5]\n")),
              qPrintable(printed(python)));
     // The C++ consumer example's commands → the Python servant.
@@ -306,10 +329,12 @@ void TestPythonService::pythonComponentAndSdkExamplesCallEachOther()
              qPrintable(printed(consumer).right(1000)));
     QVERIFY2(commandAnswers(consumer, "get_value", QStringLiteral("Current remote value: 4.5")),
              qPrintable(printed(consumer).right(1000)));
-    // The consumer example waits for its next command in onExecute: at the end of its input it goes on.
+    // The consumer example waits for its next command in onExecute: at the end of its input it goes
+    // on.
     consumer->closeWriteChannel();
-    QVERIFY(endComponents({QStringLiteral("MyServiceConsumer0.rtc"), QStringLiteral("PyMyService0.rtc"),
-                           QStringLiteral("MyServiceProvider0.rtc")}));
+    QVERIFY(
+        endComponents({QStringLiteral("MyServiceConsumer0.rtc"), QStringLiteral("PyMyService0.rtc"),
+                       QStringLiteral("MyServiceProvider0.rtc")}));
     m_live.stop(consumer);
     m_live.stop(provider);
     m_live.stop(python);
