@@ -25,9 +25,12 @@ public:
     explicit PyServant(pybind11::object servant);
     ~PyServant() override;
 
-    /// Calls the Python method @p operation with @p arguments; the GIL is taken here.
+    /// The Python servant object (use with the GIL).
     pybind11::object servant() const { return m_servant; }
+    /// The type id of its interface.
     const std::string &repositoryId() const { return m_repositoryId; }
+
+    /// Answers an operation of the interface (or its bases); false leaves the others to omniServant.
 
     CORBA::Boolean _dispatch(omniCallHandle &handle) override;
     void *_ptrToInterface(const char *repositoryId) override;

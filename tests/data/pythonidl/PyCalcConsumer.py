@@ -51,6 +51,10 @@ class PyCalcConsumer(OpenRTM_aist.DataFlowComponentBase):
             print("consumer: no exception")
         except PyCalc.TooMany as error:
             print("consumer: TooMany", error.limit, error.reason)
+        try:
+            calc.later(RTC.Time(0, 0), -1)
+        except CORBA.UNKNOWN:
+            print("consumer: UNKNOWN")
         print("consumer: done")
         return RTC.RTC_OK
 

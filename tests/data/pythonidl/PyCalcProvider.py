@@ -52,6 +52,8 @@ class CalculatorServant(PyCalc__POA.Calculator):
         return PyCalc.MULTIPLY if mode == PyCalc.ADD else PyCalc.ADD
 
     def later(self, time, seconds):
+        if seconds < 0:
+            raise ValueError("no time before")  # not declared: the caller gets CORBA.UNKNOWN
         self._calls += 1
         return RTC.Time(time.sec + seconds, time.nsec)
 
