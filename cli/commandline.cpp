@@ -2,6 +2,7 @@
 #include "commandline.h"
 #include "buildcommand.h"
 #include "gencommand.h"
+#include "idlcommand.h"
 #include "localcommand.h"
 #include "packagecommand.h"
 #include "plancommand.h"
@@ -87,6 +88,7 @@ std::unique_ptr<CommandLine> createCommandLine()
     auto commandLine = std::make_unique<CommandLine>();
     commandLine->addCommand(std::make_unique<ProfileCommand>());
     commandLine->addCommand(std::make_unique<GenCommand>());
+    commandLine->addCommand(std::make_unique<IdlCommand>());
     commandLine->addCommand(std::make_unique<BuildCommand>());
     commandLine->addCommand(std::make_unique<PackageCommand>());
     commandLine->addCommand(std::make_unique<RepoCommand>());

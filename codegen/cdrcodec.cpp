@@ -118,9 +118,9 @@ protected:
 class Reader : public TypeWalker
 {
 public:
-    Reader(const IdlModel &model, const QByteArray &bytes, bool little)
+    Reader(const IdlModel &model, CdrInput &input, bool little)
         : TypeWalker(model)
-        , m_bytes(bytes)
+        , m_input(input)
         , m_little(little)
     { }
 
@@ -136,17 +136,18 @@ public:
         }
         case IdlType::Kind::String: {
             const quint32 length = quint32(readUnsigned(4));
-            if (length == 0 || length > remaining())
-                fail(QStringLiteral("string of %1 bytes where %2 remain").arg(length).arg(remaining()));
-            const QByteArray text = m_bytes.mid(m_position, length - 1);
-            m_position += length;
+            if (length == 0 || !m_input.available(length))
+                fail(QStringLiteral("string of %1 bytes where %2 remain").arg(length).arg(left()));
+            QByteArray text(qsizetype(length), Qt::Uninitialized);
+            m_input.read(reinterpret_cast<uchar *>(text.data()), int(length), 1);
+            text.chop(1);
             return QString::fromUtf8(text);
         }
         case IdlType::Kind::WString: {
             // GIOP 1.2: the length in bytes, then UTF-16 code units in the stream's byte order.
             const quint32 length = quint32(readUnsigned(4));
-            if (length % 2 != 0 || length > remaining())
-                fail(QStringLiteral("wide string of %1 bytes where %2 remain").arg(length).arg(remaining()));
+            if (length % 2 != 0 || !m_input.available(length))
+                fail(QStringLiteral("wide string of %1 bytes where %2 remain").arg(length).arg(left()));
             QString text;
             for (quint32 i = 0; i < length / 2; ++i)
                 text.append(QChar(char16_t(readUnsigned(2, /*align=*/false))));
@@ -155,8 +156,8 @@ public:
         case IdlType::Kind::Sequence: {
             const quint32 count = quint32(readUnsigned(4));
             // Every element takes at least one byte: a count beyond what remains is malformed.
-            if (count > remaining())
-                fail(QStringLiteral("sequence of %1 elements where %2 bytes remain").arg(count).arg(remaining()));
+            if (!m_input.available(count))
+                fail(QStringLiteral("sequence of %1 elements where %2 remain").arg(count).arg(left()));
             if (!type.bound.isEmpty() && count > type.bound.toUInt())
                 fail(QStringLiteral("sequence of %1 elements exceeds its bound %2").arg(count).arg(type.bound));
             QJsonArray items;
@@ -176,8 +177,6 @@ public:
         }
         fail(QStringLiteral("unknown type"));
     }
-
-    qsizetype remaining() const { return m_bytes.size() - m_position; }
 
 private:
     QJsonValue readArray(const IdlType &element, const QStringList &dimensions, int level)
@@ -240,21 +239,18 @@ private:
         return object;
     }
 
-    void align(int size)
+    /// What remains, for messages: "12 bytes", or "fewer" when the input cannot tell.
+    QString left() const
     {
-        m_position = (m_position + size - 1) / size * size;
-        if (m_position > m_bytes.size())
-            fail(QStringLiteral("the sample ends early (%1 bytes)").arg(m_bytes.size()));
+        const qint64 bytes = m_input.remaining();
+        return bytes < 0 ? QStringLiteral("fewer") : QStringLiteral("%1 bytes").arg(bytes);
     }
 
     quint64 readUnsigned(int size, bool aligned = true)
     {
-        if (aligned)
-            align(size);
-        if (remaining() < size)
-            fail(QStringLiteral("the sample ends early (%1 bytes)").arg(m_bytes.size()));
-        const uchar *at = reinterpret_cast<const uchar *>(m_bytes.constData()) + m_position;
-        m_position += size;
+        uchar at[8];
+        if (!m_input.read(at, size, aligned ? size : 1))
+            fail(QStringLiteral("the sample ends early"));
         quint64 value = 0;
         for (int i = 0; i < size; ++i)
             value |= quint64(at[m_little ? i : size - 1 - i]) << (8 * i);
@@ -297,20 +293,18 @@ private:
         return {};
     }
 
-    const QByteArray &m_bytes;
+    CdrInput &m_input;
     const bool m_little;
-    qsizetype m_position = 0;
 };
 
 class Writer : public TypeWalker
 {
 public:
-    Writer(const IdlModel &model, bool little)
+    Writer(const IdlModel &model, CdrOutput &output, bool little)
         : TypeWalker(model)
+        , m_output(output)
         , m_little(little)
     { }
-
-    QByteArray bytes() const { return m_bytes; }
 
     void write(const IdlType &written, const QJsonValue &value)
     {
@@ -330,8 +324,7 @@ public:
             if (!type.bound.isEmpty() && text.size() > type.bound.toInt())
                 fail(QStringLiteral("the string is longer than its bound %1").arg(type.bound));
             writeUnsigned(4, quint64(text.size() + 1));
-            m_bytes.append(text);
-            m_bytes.append('\0');
+            m_output.write(reinterpret_cast<const uchar *>(text.constData()), int(text.size()) + 1, 1);
             return;
         }
         case IdlType::Kind::WString: {
@@ -426,20 +419,14 @@ private:
         fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));
     }
 
-    void align(int size)
-    {
-        while (m_bytes.size() % size != 0)
-            m_bytes.append('\0');
-    }
-
     void writeUnsigned(int size, quint64 value, bool aligned = true)
     {
-        if (aligned)
-            align(size);
+        uchar bytes[8];
         for (int i = 0; i < size; ++i) {
             const int shift = 8 * (m_little ? i : size - 1 - i);
-            m_bytes.append(char((value >> shift) & 0xff));
+            bytes[i] = uchar((value >> shift) & 0xff);
         }
+        m_output.write(bytes, size, aligned ? size : 1);
     }
 
     double number(const QJsonValue &value)
@@ -526,7 +513,44 @@ private:
         }
     }
 
+    CdrOutput &m_output;
     const bool m_little;
+};
+
+/// A sample in memory, alignment counted from its first byte.
+class ByteInput : public CdrInput
+{
+public:
+    explicit ByteInput(const QByteArray &bytes)
+        : m_bytes(bytes)
+    { }
+
+    bool read(uchar *to, int size, int alignment) override
+    {
+        const qsizetype start = (m_position + alignment - 1) / alignment * alignment;
+        if (start + size > m_bytes.size())
+            return false;
+        std::memcpy(to, m_bytes.constData() + start, size_t(size));
+        m_position = start + size;
+        return true;
+    }
+    bool available(quint64 bytes) const override { return bytes <= quint64(remaining()); }
+    qint64 remaining() const override { return m_bytes.size() - m_position; }
+
+private:
+    const QByteArray &m_bytes;
+    qsizetype m_position = 0;
+};
+
+class ByteOutput : public CdrOutput
+{
+public:
+    void write(const uchar *from, int size, int alignment) override
+    {
+        while (m_bytes.size() % alignment != 0)
+            m_bytes.append('\0');
+        m_bytes.append(reinterpret_cast<const char *>(from), size);
+    }
     QByteArray m_bytes;
 };
 
@@ -646,10 +670,11 @@ QJsonValue CdrCodec::decode(const QString &type, const QByteArray &cdr, bool lit
                             QString *error) const
 {
     try {
-        Reader reader(m_model, cdr, littleEndian);
+        ByteInput input(cdr);
+        Reader reader(m_model, input, littleEndian);
         const QJsonValue value = reader.read(IdlType::named(type));
-        if (reader.remaining() > 7) // at most the padding of a last member
-            throw Failure {QStringLiteral("%1 bytes left over after a %2").arg(reader.remaining()).arg(type)};
+        if (input.remaining() > 7) // at most the padding of a last member
+            throw Failure {QStringLiteral("%1 bytes left over after a %2").arg(input.remaining()).arg(type)};
         return value;
     } catch (const Failure &failure) {
         if (error)
@@ -661,14 +686,33 @@ QJsonValue CdrCodec::decode(const QString &type, const QByteArray &cdr, bool lit
 QByteArray CdrCodec::encode(const QString &type, const QJsonValue &value, bool littleEndian,
                             QString *error) const
 {
+    ByteOutput output;
+    if (!write(IdlType::named(type), value, output, littleEndian, error))
+        return {};
+    return output.m_bytes;
+}
+
+QJsonValue CdrCodec::read(const IdlType &type, CdrInput &input, bool littleEndian, QString *error) const
+{
     try {
-        Writer writer(m_model, littleEndian);
-        writer.write(IdlType::named(type), value);
-        return writer.bytes();
+        return Reader(m_model, input, littleEndian).read(type);
     } catch (const Failure &failure) {
         if (error)
             *error = failure.message;
-        return {};
+        return QJsonValue(QJsonValue::Undefined);
+    }
+}
+
+bool CdrCodec::write(const IdlType &type, const QJsonValue &value, CdrOutput &output, bool littleEndian,
+                     QString *error) const
+{
+    try {
+        Writer(m_model, output, littleEndian).write(type, value);
+        return true;
+    } catch (const Failure &failure) {
+        if (error)
+            *error = failure.message;
+        return false;
     }
 }
 

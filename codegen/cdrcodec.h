@@ -9,6 +9,28 @@
 
 namespace Codegen {
 
+/// Where CdrCodec::read() takes bytes from: a sample in memory, or an ORB's request stream.
+class CdrInput
+{
+public:
+    virtual ~CdrInput() = default;
+    /// Skips to the next multiple of @p alignment (counted as CDR counts it), then copies
+    /// @p size bytes to @p to; false when fewer remain.
+    virtual bool read(uchar *to, int size, int alignment) = 0;
+    /// False when fewer than @p bytes remain (sizes read from the data are checked with it).
+    virtual bool available(quint64 bytes) const = 0;
+    /// The bytes left, or -1 when the input cannot tell (a stream still arriving).
+    virtual qint64 remaining() const { return -1; }
+};
+
+/// Where CdrCodec::write() puts bytes: padding up to @p alignment first, then @p size bytes.
+class CdrOutput
+{
+public:
+    virtual ~CdrOutput() = default;
+    virtual void write(const uchar *from, int size, int alignment) = 0;
+};
+
 /**
  * Data port samples as values: the CDR bytes an OutPort sends (OpenRTM's `corba_cdr` interface,
  * serializer `cdr`, alignment counted from the start of the sample) decoded by the IDL type of
@@ -38,6 +60,13 @@ public:
     /// timed type's `tm`, which is the current time.
     QByteArray encode(const QString &type, const QJsonValue &value, bool littleEndian,
                       QString *error) const;
+
+    /// Reads one value of @p type from @p input (an operation's parameter, say); on failure an
+    /// undefined value and the reason.
+    QJsonValue read(const IdlType &type, CdrInput &input, bool littleEndian, QString *error) const;
+    /// Writes one value of @p type to @p output; false and the reason when it does not fit the type.
+    bool write(const IdlType &type, const QJsonValue &value, CdrOutput &output, bool littleEndian,
+               QString *error) const;
 
     /// A value read from a command line: a JSON value, or for a type with one member besides
     /// `tm` (TimedLong, TimedString, TimedDoubleSeq, …) that member's value alone (`42`,

@@ -37,4 +37,11 @@ QString managerProgram()
     return QDir(prefix()).filePath(QStringLiteral("bin/rtmanager"));
 }
 
+QString rtctlProgram()
+{
+    if (runsFromBuildTree())
+        return QDir(QStringLiteral(RTSTUDIO_BUILD_TREE)).filePath(QStringLiteral("cli/rtctl"));
+    return QDir(prefix()).filePath(QStringLiteral("bin/rtctl"));
+}
+
 } // namespace Codegen::Installation

@@ -21,4 +21,7 @@ QString bundledIdlDirectory();
 /// The rtmanager program: `<prefix>/bin/rtmanager`, or the build tree's.
 QString managerProgram();
 
+/// The rtctl program: `<prefix>/bin/rtctl`, or the build tree's (a Python project's idlcompile.sh runs `rtctl idl`).
+QString rtctlProgram();
+
 } // namespace Codegen::Installation

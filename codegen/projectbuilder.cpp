@@ -167,6 +167,9 @@ void ProjectBuilder::runStep(Step step)
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.remove(QStringLiteral("LC_ALL"));
     environment.insert(QStringLiteral("LC_MESSAGES"), QStringLiteral("C"));
+    // A Python project's idlcompile.sh runs this installation's IDL compiler, unless told otherwise.
+    if (step == Step::CompileIdl && !environment.contains(QStringLiteral("RTCTL")))
+        environment.insert(QStringLiteral("RTCTL"), Installation::rtctlProgram());
     process->setProcessEnvironment(environment);
 #ifdef Q_OS_UNIX
     // A group of its own, so that cancel() reaches make/ninja and the compilers too.

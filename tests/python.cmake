@@ -49,3 +49,16 @@ if(TARGET rtpymodules)
     add_dependencies(tst_builderpython rtmanager rtctl rtpython rtpymodules rtsdk)
     set_tests_properties(tst_builderpython PROPERTIES LABELS python TIMEOUT 600)
 endif()
+
+# Service ports of Python components: rtctl idl --lang python, Python providers and consumers,
+# OpenRTM-aist-Python's SimpleService example unchanged, calls both ways with rtmanager's C++ built-ins.
+# OpenRTM-aist's C++ MyServiceProvider / MyServiceConsumer examples are built against the SDK for it.
+rtstudio_add_test(tst_pythonservice SOURCES tst_pythonservice.cpp
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtstudio_sdkproject rtcorba_stubs)
+rtstudio_uses_sdk_projects(tst_pythonservice)
+target_compile_definitions(tst_pythonservice PRIVATE
+    RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
+    RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+    RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
+add_dependencies(tst_pythonservice rtmanager rtctl rtpython rtsdk)
+set_tests_properties(tst_pythonservice PROPERTIES LABELS python TIMEOUT 600)

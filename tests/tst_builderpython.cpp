@@ -4,8 +4,9 @@
 // generate → Build (the module loaded into a manager process of its own; `rtctl build` alike) →
 // Run in Manager into a live rtmanager → data flows both ways with C++ built-ins and a
 // configuration change reaches the bound variables. A module that does not load fails Build at
-// its file and line; a project's own IDL is compiled first. Every data type the Builder offers
-// crosses a pair of Python ports in the manager.
+// its file and line; a project's own IDL is compiled first, and a project with service ports
+// (data/pythonidl/PyService.xml) calls and answers C++ built-ins. Every data type the Builder
+// offers crosses a pair of Python ports in the manager.
 #include "buildcontroller.h"
 #include "hostrtctl.h"
 #include "pythonsanitizer.h"
@@ -75,14 +76,16 @@ private slots:
     void generatedProjectBuildsRunsAndIsConfigured();
     void moduleThatDoesNotLoadFailsBuildAtItsLine();
     void ownIdlIsCompiledFirst();
+    void serviceProjectBuildsAndCallsReturn();
     void everyBuilderDataTypeCrossesPorts_data();
     void everyBuilderDataTypeCrossesPorts();
 
 private:
     /// Generates PyRelay's Python project into a new folder below the test's; empty on failure.
     QString generate(const QString &name);
-    /// Replaces @p from by @p to in the project's module.
-    static bool edit(const QString &project, const QByteArray &from, const QByteArray &to);
+    /// Replaces @p from by @p to in the project's module (or in its file @p file).
+    static bool edit(const QString &project, const QByteArray &from, const QByteArray &to,
+                     const QString &file = componentName + QStringLiteral(".py"));
     static GenerateOutcome buildAndWait(BuildController &build);
     bool connectAndActivate();
     /// Loads data/python/PyAllTypes.py, with m_dataTypes as its list, into the manager; activates it.
@@ -131,9 +134,9 @@ QString TestBuilderPython::generate(const QString &name)
     return project;
 }
 
-bool TestBuilderPython::edit(const QString &project, const QByteArray &from, const QByteArray &to)
+bool TestBuilderPython::edit(const QString &project, const QByteArray &from, const QByteArray &to, const QString &file)
 {
-    QFile module(QDir(project).filePath(componentName + QStringLiteral(".py")));
+    QFile module(QDir(project).filePath(file));
     if (!module.open(QIODevice::ReadOnly))
         return false;
     QByteArray text = module.readAll();
@@ -273,6 +276,50 @@ void TestBuilderPython::ownIdlIsCompiledFirst()
     const GenerateOutcome failed = buildAndWait(build);
     QVERIFY(!failed.succeeded);
     QVERIFY2(failed.summary.contains(QLatin1String("Compiling the IDL")), qPrintable(failed.summary));
+}
+
+void TestBuilderPython::serviceProjectBuildsAndCallsReturn()
+{
+    // A project with a provided and a required SimpleService::MyService and its own IDL: Build
+    // compiles the IDL with rtctl idl, and in rtmanager its servant answers the C++ built-in
+    // consumer while its consumer calls the C++ built-in provider, all in one process.
+    const QString project = m_work.filePath(QStringLiteral("service"));
+    const RtctlResult generated = runRtctl(
+        {"gen", RTSTUDIO_TEST_DATA_DIR "/pythonidl/PyService.xml", "--lang", "python", "-o", project});
+    QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
+    QVERIFY(edit(project,
+                 "        # TODO: implement echo; it returns result\n"
+                 "        raise CORBA.NO_IMPLEMENT(0, CORBA.COMPLETED_NO)",
+                 "        return 'generated says ' + msg", QStringLiteral("SimpleService_idl_example.py")));
+    QVERIFY(edit(project, "    def onExecute(self, ec_id):\n        return RTC.RTC_OK",
+                 "    def onExecute(self, ec_id):\n"
+                 "        remote = self._remote._ptr()\n"
+                 "        if remote is not None and not getattr(self, '_called', False):\n"
+                 "            self._called = True\n"
+                 "            print('generated consumer:', remote.echo('from generated'), flush=True)\n"
+                 "        return RTC.RTC_OK",
+                 QStringLiteral("PyService.py")));
+    BuildController build(nullptr, [&project] { return project; });
+    const GenerateOutcome built = buildAndWait(build);
+    QVERIFY2(built.succeeded, qPrintable(built.summary));
+    QVERIFY(QFileInfo::exists(QDir(project).filePath(QStringLiteral("SimpleService/__init__.py"))));
+
+    const QString manager = m_host.managerPath();
+    QVERIFY(m_host.succeeds({"mgr", manager, "load", project + QStringLiteral("/PyService.py"), "create", "PyService"}));
+    QVERIFY(m_host.succeeds({"mgr", manager, "create", "MyServiceProvider?instance_name=ServiceProvider", "create",
+                             "MyServiceConsumer?instance_name=ServiceConsumer"}));
+    QVERIFY(m_host.succeeds({"con", "ServiceConsumer.rtc:MyService", "PyService0.rtc:Provided"}));
+    QVERIFY(m_host.succeeds({"con", "PyService0.rtc:Required", "ServiceProvider.rtc:MyService"}));
+    for (const char *component : {"ServiceProvider.rtc", "PyService0.rtc", "ServiceConsumer.rtc"})
+        QVERIFY(m_host.succeeds({"act", component}));
+    QTRY_VERIFY_WITH_TIMEOUT(m_printed.of(m_manager).contains(QLatin1String("generated consumer: from generated")),
+                             runTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("ServiceConsumer.rtc"), "echo_count").toInt() >= 1,
+                             runTimeoutMs);
+    QVERIFY2(m_host.status(m_orb, QStringLiteral("ServiceConsumer.rtc"), "last_reply")
+                 .startsWith(QLatin1String("generated says echo ")),
+             qPrintable(m_host.status(m_orb, QStringLiteral("ServiceConsumer.rtc"), "last_reply")));
+    QVERIFY(m_host.succeeds({"deact", "ServiceConsumer.rtc"}));
 }
 
 bool TestBuilderPython::loadAllTypes()

@@ -11,7 +11,7 @@
 // - two Python components of one process, configuration parameters, a generated Python project;
 // - the IDL types' Python classes and CDR (data/python/datatypes.py), from the build tree and installed.
 #include "hostrtctl.h"
-#include "pythonsanitizer.h"
+#include "pythonenvironment.h"
 
 #include <QtTest>
 
@@ -30,22 +30,9 @@ QString testScript(const QString &name)
     return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
 }
 
-/// python3 finds @p packages (the build tree's by default); output is unbuffered, so the test sees it
-/// as printed. In the sanitizer build the extension module is instrumented but python3 is not: the
-/// sanitizer runtimes are preloaded, and leaks are not checked (the interpreter keeps its objects
-/// until exit by design, which LeakSanitizer would report by the thousand).
 QProcessEnvironment pythonEnvironment(const QString &packages = QStringLiteral(RTSTUDIO_PYTHON_PATH))
 {
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(QStringLiteral("PYTHONPATH"), packages);
-    environment.insert(QStringLiteral("PYTHONUNBUFFERED"), QStringLiteral("1"));
-    const QString preload = QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD);
-    if (!preload.isEmpty()) {
-        environment.insert(QStringLiteral("LD_PRELOAD"), preload);
-        environment.insert(QStringLiteral("ASAN_OPTIONS"),
-                           LiveTest::withoutLeakChecks(environment.value(QStringLiteral("ASAN_OPTIONS"))));
-    }
-    return environment;
+    return LiveTest::pythonEnvironment(packages, QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD));
 }
 
 } // namespace

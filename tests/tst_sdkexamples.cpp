@@ -37,19 +37,6 @@ QStringList standaloneProjects()
     return names;
 }
 
-/// Copies the folder @p from into @p to (the corpus stays as it is whatever a build writes).
-bool copyTree(const QString &from, const QString &to)
-{
-    QDir().mkpath(to);
-    const QDir source(from);
-    for (const QFileInfo &entry : source.entryInfoList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden)) {
-        const QString target = to + QLatin1Char('/') + entry.fileName();
-        if (entry.isDir() ? !copyTree(entry.filePath(), target) : !QFile::copy(entry.filePath(), target))
-            return false;
-    }
-    return true;
-}
-
 } // namespace
 
 class TestSdkExamples : public QObject
@@ -156,7 +143,8 @@ void TestSdkExamples::standaloneProjectBuilds()
     QFETCH(QString, project);
     QFETCH(bool, installed);
     const QString dir = m_work.filePath((installed ? QStringLiteral("installed/") : QStringLiteral("build/")) + project);
-    QVERIFY(copyTree(corpusDir() + QLatin1Char('/') + project, dir));
+    // A copy: the corpus stays as it is whatever a build writes.
+    QVERIFY(SdkTest::copyTree(corpusDir() + QLatin1Char('/') + project, dir));
     QString log;
     QVERIFY2(SdkTest::buildProject(dir, installed ? m_installPrefix : QStringLiteral(RTSTUDIO_BUILD_DIR), &log),
              qPrintable(project + QStringLiteral(":\n") + log.right(8000)));
@@ -180,7 +168,7 @@ void TestSdkExamples::treeOnlyExampleBuilds()
     QFETCH(QString, components);
     QFETCH(QString, programs);
     const QString dir = m_work.filePath(QStringLiteral("build/") + example);
-    QVERIFY(copyTree(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/openrtm/examplesources"), dir));
+    QVERIFY(SdkTest::copyTree(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/openrtm/examplesources"), dir));
     QString log;
     QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log,
                                    {"-DEXAMPLE_DIR=" + corpusDir() + '/' + example, "-DCOMPONENTS=" + components,

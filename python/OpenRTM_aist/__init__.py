@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """OpenRTM-aist-Python's component API on RT Studio's runtime (no omniORBpy): the manager, data-flow
-components, data ports and connector listeners, with OpenRTM-aist-Python's names."""
+components, data ports, service ports and connector listeners, with OpenRTM-aist-Python's names."""
 
 import time
 
@@ -8,6 +8,10 @@ import RTC
 import _rtstudio
 from _rtstudio import ConnectorDataListenerType, ConnectorInfo, ConnectorListenerType, InPort, Manager, \
     OutPort, Properties
+from OpenRTM_aist import CORBA_SeqUtil
+from OpenRTM_aist.Async import Async_tInvoker
+from OpenRTM_aist.CorbaConsumer import CorbaConsumer
+from OpenRTM_aist.CorbaPort import CorbaPort
 from OpenRTM_aist.DataFlowComponentBase import DataFlowComponentBase
 from OpenRTM_aist.Listeners import ConnectorDataListener, ConnectorDataListenerT, ConnectorListener, \
     ConnectorListenerStatus

@@ -14,6 +14,10 @@ void bindDataTypes(pybind11::module_ &module);
 void bindListeners(pybind11::module_ &module);
 /// InPort and OutPort.
 void bindPorts(pybind11::module_ &module);
+/// ObjectRef, the references Python consumers call through.
+void bindObjectRef(pybind11::module_ &module);
+/// CorbaPort and the consumers' reference slots.
+void bindServicePorts(pybind11::module_ &module);
 /// The component bridge that DataFlowComponentBase delegates to.
 void bindComponent(pybind11::module_ &module);
 /// Manager.

@@ -9,6 +9,8 @@ PYBIND11_MODULE(_rtstudio, module)
     RtPython::bindDataTypes(module);
     RtPython::bindListeners(module);
     RtPython::bindPorts(module);
+    RtPython::bindObjectRef(module);
+    RtPython::bindServicePorts(module);
     RtPython::bindComponent(module);
     RtPython::bindManager(module);
 }

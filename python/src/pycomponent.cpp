@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "pycomponent.h"
 #include "bindings.h"
+#include "pycorbaport.h"
 #include "pyinterpreter.h"
 #include "pyinport.h"
 #include "pyoutport.h"
@@ -75,6 +76,21 @@ bool PyComponent::addPythonOutPort(const std::string &name, py::object port)
     return addOutPort(name.c_str(), outport);
 }
 
+bool PyComponent::addPythonPort(py::object port)
+{
+    if (py::isinstance<PyInPort>(port)) {
+        const std::string name = port.cast<PyInPort &>().Runtime::PortBase::name();
+        return addPythonInPort(name, std::move(port));
+    }
+    if (py::isinstance<PyOutPort>(port)) {
+        const std::string name = port.cast<PyOutPort &>().Runtime::PortBase::name();
+        return addPythonOutPort(name, std::move(port));
+    }
+    auto &service = port.cast<PyCorbaPort &>();
+    m_ports.push_back(std::move(port));
+    return addPort(static_cast<RTC::CorbaPort &>(service));
+}
+
 bool PyComponent::bindPythonParameter(const std::string &name, py::object variable, const std::string &defaultValue,
                                       py::object trans)
 {
@@ -143,6 +159,7 @@ void bindComponent(py::module_ &module)
     py::class_<PyComponent, std::unique_ptr<PyComponent, py::nodelete>>(module, "Component")
         .def("addInPort", &PyComponent::addPythonInPort, py::arg("name"), py::arg("inport"))
         .def("addOutPort", &PyComponent::addPythonOutPort, py::arg("name"), py::arg("outport"))
+        .def("addPort", &PyComponent::addPythonPort, py::arg("port"))
         .def("bindParameter", &PyComponent::bindPythonParameter, py::arg("param_name"), py::arg("var"),
              py::arg("def_val"), py::arg("trans") = py::none())
         .def("updateParameters", &PyComponent::updateParameters, py::arg("config_set"))

@@ -35,6 +35,8 @@ public:
     /// Adds a Python InPort or OutPort and keeps it as long as the component.
     bool addPythonInPort(const std::string &name, pybind11::object port);
     bool addPythonOutPort(const std::string &name, pybind11::object port);
+    /// OpenRTM-aist-Python's addPort(): a CorbaPort (service port), InPort or OutPort, kept as long as the component.
+    bool addPythonPort(pybind11::object port);
     /**
      * OpenRTM-aist-Python's bindParameter(): binds configuration parameter @p name to
      * @p variable (a list of one element, see PyParameter) with default @p defaultValue, applied

@@ -2,6 +2,8 @@
 #include "pydatatypes.h"
 #include "bindings.h"
 
+#include "idlparser.h"
+
 #include <pybind11/stl.h>
 
 #include <QJsonDocument>
@@ -27,8 +29,70 @@ void PyDataTypes::load(const std::vector<std::string> &directories)
     if (library->model().structs.isEmpty())
         throw std::runtime_error("no IDL data types found in " + folders.join(QStringLiteral(", ")).toStdString());
     m_converter.reset();
-    m_codec = std::make_unique<Codegen::CdrCodec>(library->model());
+    m_model = library->model();
+    m_codec = std::make_unique<Codegen::CdrCodec>(m_model);
     m_library = std::move(library);
+}
+
+namespace {
+
+template <typename Map>
+void insertAll(Map &into, const Map &from)
+{
+    for (auto it = from.constBegin(); it != from.constEnd(); ++it)
+        into.insert(it.key(), it.value());
+}
+
+} // namespace
+
+void PyDataTypes::addIdl(const std::string &fileName, const std::string &text)
+{
+    if (!m_library)
+        throw std::runtime_error("no IDL loaded (import RTC first)");
+    Codegen::IdlParser parser;
+    parser.setSearchDirectories(m_library->directories());
+    if (!parser.parseText(QString::fromStdString(text), QString::fromStdString(fileName))) {
+        QStringList messages;
+        for (const Profile::Diagnostic &diagnostic : parser.diagnostics())
+            messages << diagnostic.toString();
+        throw std::runtime_error(messages.join(QLatin1Char('\n')).toStdString());
+    }
+    const Codegen::IdlModel &added = parser.model();
+    insertAll(m_model.structs, added.structs);
+    insertAll(m_model.unions, added.unions);
+    insertAll(m_model.enums, added.enums);
+    insertAll(m_model.typedefs, added.typedefs);
+    insertAll(m_model.consts, added.consts);
+    insertAll(m_model.exceptions, added.exceptions);
+    insertAll(m_model.interfaces, added.interfaces);
+    for (const Codegen::IdlException &exception : added.exceptions)
+        m_model.structs.insert(exception.scopedName, {exception.scopedName, exception.members, exception.source});
+    rebuild();
+}
+
+void PyDataTypes::addClasses(const py::dict &classes)
+{
+    for (auto item : classes)
+        m_classes[item.first] = item.second;
+    rebuild();
+}
+
+void PyDataTypes::rebuild()
+{
+    m_codec = std::make_unique<Codegen::CdrCodec>(m_model);
+    m_converter = std::make_unique<PyValueConverter>(m_model, m_classes);
+}
+
+const Codegen::IdlModel &PyDataTypes::model() const
+{
+    return m_model;
+}
+
+const Codegen::CdrCodec &PyDataTypes::codec() const
+{
+    if (!m_codec)
+        throw std::runtime_error("the IDL types are not loaded (import RTC first)");
+    return *m_codec;
 }
 
 py::dict PyDataTypes::describe() const
@@ -64,7 +128,8 @@ void PyDataTypes::setClasses(py::dict classes)
 {
     if (!m_library)
         throw std::runtime_error("no IDL loaded");
-    m_converter = std::make_unique<PyValueConverter>(m_library->model(), std::move(classes));
+    m_classes = std::move(classes);
+    rebuild();
 }
 
 const PyValueConverter &PyDataTypes::converter() const
@@ -109,7 +174,7 @@ py::object PyDataTypes::defaultValue(const std::string &repositoryId) const
 {
     if (!m_library)
         throw std::runtime_error("no IDL loaded");
-    const Codegen::IdlModel &model = m_library->model();
+    const Codegen::IdlModel &model = m_model;
     const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
     // The codec takes members left out as zero or empty, except a timed type's time stamp, which
     // it sets to now unless the value names it: an empty `tm` is a zero time.
@@ -132,6 +197,11 @@ void bindDataTypes(py::module_ &module)
     }, py::arg("directories"), "Reads OpenRTM's IDL files; the types they declare, for making classes.");
     module.def("set_idl_classes", [](py::dict classes) { PyDataTypes::instance().setClasses(std::move(classes)); },
                py::arg("classes"), "The Python class of each struct and enum, by scoped name.");
+    module.def("add_idl", [](const std::string &fileName, const std::string &text) {
+        PyDataTypes::instance().addIdl(fileName, text);
+    }, py::arg("file_name"), py::arg("text"), "Adds the declarations of a stub module's IDL.");
+    module.def("add_idl_classes", [](const py::dict &classes) { PyDataTypes::instance().addClasses(classes); },
+               py::arg("classes"), "More Python classes of IDL types, by scoped name.");
     module.def("cdr_encode", [](py::handle value, bool littleEndian) {
         const std::vector<unsigned char> bytes =
             PyDataTypes::instance().encode(PyDataTypes::repositoryId(value), value, littleEndian);

@@ -33,6 +33,18 @@ public:
     pybind11::dict describe() const;
     /// The classes of the structs and enums, by scoped name.
     void setClasses(pybind11::dict classes);
+    /**
+     * Adds the declarations of IDL @p text (a stub module's, named @p fileName in messages; its
+     * includes are looked up with OpenRTM's IDL); throws RuntimeError with the parser's messages.
+     * Exceptions are kept as structs too, so that their members convert as a struct's.
+     */
+    void addIdl(const std::string &fileName, const std::string &text);
+    /// Adds classes (scoped name → class) to those of setClasses().
+    void addClasses(const pybind11::dict &classes);
+
+    const Codegen::IdlModel &model() const;
+    const Codegen::CdrCodec &codec() const;
+    const PyValueConverter &converter() const;
 
     /// The repository id of @p value's class (its `_NP_RepositoryId`); TypeError when it has none.
     static std::string repositoryId(pybind11::handle value);
@@ -48,9 +60,12 @@ public:
 
 private:
     PyDataTypes() = default;
-    const PyValueConverter &converter() const;
+    void rebuild();
 
     std::unique_ptr<Codegen::IdlTypeLibrary> m_library;
+    /// The library's model with the stub modules' declarations added.
+    Codegen::IdlModel m_model;
+    pybind11::dict m_classes;
     std::unique_ptr<Codegen::CdrCodec> m_codec;
     std::unique_ptr<PyValueConverter> m_converter;
 };

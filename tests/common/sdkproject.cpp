@@ -3,6 +3,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QStandardPaths>
 
@@ -33,6 +34,18 @@ RunResult run(const QString &program, const QStringList &arguments, const QProce
 QString failure(const QString &what, const RunResult &result)
 {
     return QStringLiteral("%1 failed (exit %2):\n%3").arg(what).arg(result.exitCode).arg(result.output.right(6000));
+}
+
+bool copyTree(const QString &from, const QString &to)
+{
+    QDir().mkpath(to);
+    const QDir source(from);
+    for (const QFileInfo &entry : source.entryInfoList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden)) {
+        const QString target = to + QLatin1Char('/') + entry.fileName();
+        if (entry.isDir() ? !copyTree(entry.filePath(), target) : !QFile::copy(entry.filePath(), target))
+            return false;
+    }
+    return true;
 }
 
 bool runTool(const QString &program, const QStringList &arguments, const QString &cwd, int timeoutMs, QString *log)

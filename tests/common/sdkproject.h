@@ -37,6 +37,9 @@ struct UserEdit
 /// cannot be read or written or has no such generated text.
 bool applyEdit(const QString &root, const UserEdit &edit, QString *error);
 
+/// Copies the folder @p from with everything in it to @p to (created); false when a file cannot be copied.
+bool copyTree(const QString &from, const QString &to);
+
 /// Runs a tool in @p cwd; false with its output in @p log when it fails or runs past @p timeoutMs.
 bool runTool(const QString &program, const QStringList &arguments, const QString &cwd, int timeoutMs, QString *log);
 

@@ -1,6 +1,7 @@
 #!/bin/sh
-# Compiles the IDL files of DocumentedComp into Python stubs and skeletons with omniidl.
-# Set RTM_IDL_DIR to OpenRTM-aist's IDL folder when the project IDL includes its files.
+# Compiles the IDL files of DocumentedComp into Python stubs and skeletons (omniORBpy's layout) with
+# RT Studio's IDL compiler, `rtctl idl --lang python` (set RTCTL to use another rtctl). OpenRTM's
+# IDL is always on its include path; set RTM_IDL_DIR to add another folder.
 cd "$(dirname "$0")" || exit 1
-omniidl -bpython -Iidl ${RTM_IDL_DIR:+-I"$RTM_IDL_DIR"} "idl/SampleService.idl" || exit 1
+"${RTCTL:-rtctl}" idl --lang python -Iidl ${RTM_IDL_DIR:+-I"$RTM_IDL_DIR"} -o . "idl/SampleService.idl" || exit 1
 exit 0

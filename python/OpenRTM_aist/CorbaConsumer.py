@@ -1,0 +1,27 @@
+# SPDX-License-Identifier: MIT
+"""OpenRTM_aist.CorbaConsumer: the far end of a required interface, filled in when the service
+port connects. _ptr() is the provider's reference as the interface's generated _objref_ class."""
+
+import _rtstudio
+import omniORB
+
+
+class CorbaConsumer(object):
+    def __init__(self, interfaceType=None, consumer=None):
+        self._interfaceType = interfaceType
+        self._slot = _rtstudio.ConsumerSlot()
+
+    def _ptr(self, get_ref=False):
+        """The provider's reference, or None while the port is not connected."""
+        reference = self._slot.reference()
+        if reference is None:
+            return None
+        if self._interfaceType is None:
+            return omniORB.CORBA.Object(reference)
+        return omniORB.objrefClass(self._interfaceType._NP_RepositoryId)(reference)
+
+    def getObject(self):
+        return self._ptr()
+
+    def releaseObject(self):
+        self._slot.releaseObject()

@@ -1,0 +1,385 @@
+// SPDX-License-Identifier: MIT
+// Service ports of Python components on RT Studio's runtime: IDL compiled by `rtctl idl --lang
+// python` (omniORBpy's layout), Python servants behind a dynamic skeleton, Python consumers calling
+// through the runtime, all ordinary CORBA on the wire:
+// - the stubs of data/pythonidl/Calc.idl (every construct) import and convert values to CDR and
+// back;
+// - bad IDL is reported with its file and line;
+// - a Python provider and consumer of ours exchange results, out/inout values, sequences,
+//   attributes and a user exception; an undeclared exception in a servant comes back as UNKNOWN;
+// - OpenRTM-aist-Python's SimpleService example unchanged (shared corpus; skipped with the reason
+//   when absent): its consumer's commands reach its provider and the answers come back;
+// - a Python component of ours calls rtmanager's C++ MyServiceProvider built-in and OpenRTM-aist's
+//   C++ MyServiceProvider example built against the SDK; the C++ MyServiceConsumer built-in and
+//   example call its Python servant.
+#include "hostrtctl.h"
+#include "pythonenvironment.h"
+#include "sdkproject.h"
+
+#include <QtTest>
+
+namespace {
+
+constexpr int runTimeoutMs = 30 * 1000;
+const QString hostName = QStringLiteral("pysvchost");
+
+QString dataFile(const QString &name)
+{
+    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/pythonidl/") + name;
+}
+
+QString simpleServiceDir()
+{
+    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples/SimpleService/");
+}
+
+} // namespace
+
+class TestPythonService : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void stubsOfEveryConstructImportAndConvert();
+    void badIdlIsReportedWithItsLine();
+    void pythonProviderAndConsumerExchangeCalls();
+    void pythonAndCxxComponentsCallEachOther();
+    void pythonComponentAndSdkExamplesCallEachOther();
+    void simpleServiceExamplesRunUnchanged();
+
+private:
+    RtctlResult rtctl(const QStringList &arguments) const { return m_host.run(arguments); }
+    bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
+    /// Compiles @p idls into a folder of the first one's name under the test's; empty when rtctl
+    /// idl fails.
+    QString compileIdl(const QStringList &idls);
+    /// An rtc.conf registering in the test's name server, @p extraConf after.
+    QString writeConf(const QString &name, const QString &extraConf = {});
+    /// Starts `python3 @p script -f <conf>` with the stubs in @p stubs; waits until @p instance is
+    /// registered.
+    QProcess *startScript(const QString &script, const QString &stubs, const QString &instance,
+                          const QString &extraConf = {});
+    QString printed(QProcess *process) { return m_printed.of(process); }
+    /**
+     * Ends @p components with `rtctl exit` and waits until their names have left the name server,
+     * so that a later test's components of the same names are not mistaken for them.
+     */
+    bool endComponents(const QStringList &components);
+    /// Writes @p command to @p consumer (OpenRTM's SimpleService consumer); true once it printed @p
+    /// answer.
+    bool commandAnswers(QProcess *consumer, const QByteArray &command, const QString &answer);
+
+    QTemporaryDir m_work;
+    LiveTest::LiveSystem m_live;
+    LiveTest::HostRtctl m_host {m_live, hostName};
+    QProcess *m_manager = nullptr;
+    CORBA::ORB_var m_orb;
+    LiveTest::PrintedOutput m_printed;
+};
+
+void TestPythonService::initTestCase()
+{
+    QVERIFY(m_work.isValid());
+    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH "/omniORB/__init__.py"),
+             "build rtpython first");
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName, {}, &error);
+    QVERIFY2(m_manager, qPrintable(error));
+}
+
+QString TestPythonService::compileIdl(const QStringList &idls)
+{
+    const QString output = m_work.filePath(QFileInfo(idls.value(0)).completeBaseName());
+    const RtctlResult compiled
+        = runRtctl(QStringList {"idl", "--lang", "python", "-o", output} + idls);
+    if (compiled.code != 0) {
+        qWarning().noquote() << compiled.out << compiled.err;
+        return {};
+    }
+    return output;
+}
+
+QString TestPythonService::writeConf(const QString &name, const QString &extraConf)
+{
+    const QString conf = m_work.filePath(name + QStringLiteral(".conf"));
+    QFile file(conf);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+        return {};
+    file.write(QStringLiteral(
+                   "corba.nameservers: %1\nnaming.formats: %2.host_cxt/%n.rtc\nlogger.enable: NO\n")
+                   .arg(m_live.namingServer(), hostName)
+                   .toUtf8()
+               + extraConf.toUtf8());
+    return conf;
+}
+
+QProcess *TestPythonService::startScript(const QString &script, const QString &stubs,
+                                         const QString &instance, const QString &extraConf)
+{
+    const QString conf = writeConf(QFileInfo(script).baseName(), extraConf);
+    QString error;
+    const QProcessEnvironment environment = LiveTest::pythonEnvironment(
+        stubs + QLatin1Char(':') + QStringLiteral(RTSTUDIO_PYTHON_PATH),
+        QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD));
+    QProcess *process = m_live.startRegistered(
+        QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {script, QStringLiteral("-f"), conf},
+        [this, &instance] { return rtctl({QStringLiteral("ls")}).out.contains(instance); }, &error,
+        runTimeoutMs, environment);
+    if (!process)
+        qWarning().noquote() << error;
+    return process;
+}
+
+bool TestPythonService::endComponents(const QStringList &components)
+{
+    for (const QString &component : components) {
+        if (!rtctlSucceeds({QStringLiteral("exit"), component}))
+            return false;
+    }
+    return QTest::qWaitFor(
+        [&] {
+            const QString listed = rtctl({QStringLiteral("ls")}).out;
+            return std::none_of(
+                components.begin(), components.end(),
+                [&listed](const QString &component) { return listed.contains(component); });
+        },
+        runTimeoutMs);
+}
+
+bool TestPythonService::commandAnswers(QProcess *consumer, const QByteArray &command,
+                                       const QString &answer)
+{
+    // The consumer reads one command per execution from its standard input.
+    const qsizetype before = printed(consumer).size();
+    consumer->write(command + '\n');
+    return QTest::qWaitFor([&] { return printed(consumer).indexOf(answer, before) >= 0; },
+                           runTimeoutMs);
+}
+
+void TestPythonService::stubsOfEveryConstructImportAndConvert()
+{
+    const QString stubs = compileIdl(
+        {dataFile(QStringLiteral("Calc.idl")), dataFile(QStringLiteral("Scopes.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    for (const char *file :
+         {"Calc_idl.py", "PyCalc/__init__.py", "PyCalc__POA/__init__.py", "Scopes_idl.py",
+          "Outer/__init__.py", "Outer__POA/__init__.py", "_GlobalIDL/__init__.py"})
+        QVERIFY2(QFileInfo::exists(stubs + QLatin1Char('/') + QLatin1String(file)), file);
+    QProcess python;
+    python.setProcessEnvironment(
+        LiveTest::pythonEnvironment(stubs + QLatin1Char(':') + QStringLiteral(RTSTUDIO_PYTHON_PATH),
+                                    QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD)));
+    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+                 {dataFile(QStringLiteral("stubs.py"))});
+    QVERIFY(python.waitForFinished(runTimeoutMs));
+    const QString output
+        = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
+    QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0,
+             qPrintable(output));
+    QVERIFY2(output.contains(QLatin1String("stubs: ok")), qPrintable(output));
+    QVERIFY2(output.contains(QLatin1String("scopes: ok")), qPrintable(output));
+    // Only the modules the files declare: no package for an interface's name.
+    QVERIFY(!QFileInfo::exists(stubs + QStringLiteral("/GlobalThing")));
+}
+
+void TestPythonService::badIdlIsReportedWithItsLine()
+{
+    const QString broken = dataFile(QStringLiteral("Broken.idl"));
+    const RtctlResult compiled
+        = runRtctl({"idl", "--lang", "python", "-o", m_work.filePath("broken"), broken});
+    QCOMPARE(compiled.code, 1);
+    QVERIFY2(compiled.err.contains(broken + QStringLiteral(":7:3: error:")),
+             qPrintable(compiled.err));
+    QVERIFY(!QFileInfo::exists(m_work.filePath("broken")));
+    QCOMPARE(runRtctl({"idl", "--lang", "cobol", broken}).code, 2);
+}
+
+void TestPythonService::pythonProviderAndConsumerExchangeCalls()
+{
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Calc.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QProcess *provider = startScript(dataFile(QStringLiteral("PyCalcProvider.py")), stubs,
+                                     QStringLiteral("PyCalcProvider0.rtc"));
+    QVERIFY(provider);
+    QProcess *consumer = startScript(dataFile(QStringLiteral("PyCalcConsumer.py")), stubs,
+                                     QStringLiteral("PyCalcConsumer0.rtc"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds({"con", "PyCalcConsumer0.rtc:Calc", "PyCalcProvider0.rtc:Calc"}));
+    // A provider's object answers while its component is active.
+    for (const char *component : {"PyCalcProvider0.rtc", "PyCalcConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
+                              qPrintable(printed(consumer) + printed(provider)), runTimeoutMs);
+    const QString out = printed(consumer);
+    for (const char *line : {"consumer: total 6.0 7.5\n", "consumer: split (3, 0.25)\n",
+                             "consumer: accumulate (10, [1, 2, 3, 4])\n",
+                             "consumer: flip MULTIPLY\n", "consumer: later 120 7\n",
+                             "consumer: name renamed calls 6\n", "consumer: TooMany 4 6 terms\n",
+                             "consumer: UNKNOWN\n"})
+        QVERIFY2(out.contains(QLatin1String(line)), qPrintable(QLatin1String(line) + out));
+    QVERIFY2(provider->state() == QProcess::Running, "the provider ended");
+    QVERIFY2(printed(provider).contains(QLatin1String("provider: total of ['a', 'b', 'c']")),
+             qPrintable(printed(provider)));
+    QVERIFY(endComponents(
+        {QStringLiteral("PyCalcConsumer0.rtc"), QStringLiteral("PyCalcProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+void TestPythonService::pythonAndCxxComponentsCallEachOther()
+{
+    const QString stubs = compileIdl({dataFile(QStringLiteral("SimpleService.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "create",
+                           "MyServiceProvider?instance_name=CxxProvider", "create",
+                           "MyServiceConsumer?instance_name=CxxConsumer"}));
+    QProcess *python = startScript(dataFile(QStringLiteral("PyMyService.py")), stubs,
+                                   QStringLiteral("PyMyService0.rtc"));
+    QVERIFY(python);
+    QVERIFY(rtctlSucceeds({"con", "CxxConsumer.rtc:MyService", "PyMyService0.rtc:Provided"}));
+    QVERIFY(rtctlSucceeds({"con", "PyMyService0.rtc:Required", "CxxProvider.rtc:MyService"}));
+    // Providers first: their objects answer from their component's activation on.
+    for (const char *component : {"CxxProvider.rtc", "PyMyService0.rtc", "CxxConsumer.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // Python consumer → C++ provider: a string, floats, and the two sequences back.
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        printed(python).contains(QLatin1String("consumer: echoes ['from python']\n")),
+        qPrintable(printed(python)), runTimeoutMs);
+    QVERIFY2(printed(python).contains(QLatin1String("consumer: echo from python\n")),
+             qPrintable(printed(python)));
+    QVERIFY2(printed(python).contains(QLatin1String("consumer: value 2.5 history [1.25, 2.5]\n")),
+             qPrintable(printed(python)));
+    // C++ consumer (it calls echo("echo <n>") every hundredth execution) → Python servant.
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_host.status(m_orb, QStringLiteral("CxxConsumer.rtc"), "echo_count").toInt() >= 2,
+        runTimeoutMs);
+    QVERIFY2(m_host.status(m_orb, QStringLiteral("CxxConsumer.rtc"), "last_reply")
+                 .startsWith(QLatin1String("python says echo ")),
+             qPrintable(m_host.status(m_orb, QStringLiteral("CxxConsumer.rtc"), "last_reply")));
+    QVERIFY2(printed(python).contains(QLatin1String("servant: echo echo 1\n")),
+             qPrintable(printed(python)));
+    QVERIFY(rtctlSucceeds({"deact", "CxxConsumer.rtc"}));
+    QVERIFY(endComponents({QStringLiteral("PyMyService0.rtc")}));
+    m_live.stop(python);
+}
+
+void TestPythonService::pythonComponentAndSdkExamplesCallEachOther()
+{
+    // OpenRTM-aist's C++ MyServiceProvider and MyServiceConsumer examples, built against the SDK.
+    const QString corpus = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-examples/");
+    if (!QFileInfo::exists(corpus + QStringLiteral("MyServiceProvider/CMakeLists.txt")))
+        QSKIP("the OpenRTM-aist examples corpus (shared/conformance/openrtm-examples beside the "
+              "project) is absent");
+    QStringList programs;
+    for (const char *example : {"MyServiceProvider", "MyServiceConsumer"}) {
+        const QString dir = m_work.filePath(QStringLiteral("sdk/") + QLatin1String(example));
+        QVERIFY(SdkTest::copyTree(corpus + QLatin1String(example), dir));
+        QString log;
+        QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log),
+                 qPrintable(log.right(4000)));
+        programs << dir + QStringLiteral("/build/src/") + QLatin1String(example)
+                + QStringLiteral("Comp");
+    }
+    const QString stubs = compileIdl({dataFile(QStringLiteral("SimpleService.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QString error;
+    QProcess *provider = m_live.startRegistered(
+        programs.at(0), {QStringLiteral("-f"), writeConf(QStringLiteral("sdkprovider"))},
+        [this] {
+            return rtctl({QStringLiteral("ls")})
+                .out.contains(QLatin1String("MyServiceProvider0.rtc"));
+        },
+        &error, runTimeoutMs);
+    QVERIFY2(provider, qPrintable(error));
+    QProcess *consumer = m_live.startRegistered(
+        programs.at(1), {QStringLiteral("-f"), writeConf(QStringLiteral("sdkconsumer"))},
+        [this] {
+            return rtctl({QStringLiteral("ls")})
+                .out.contains(QLatin1String("MyServiceConsumer0.rtc"));
+        },
+        &error, runTimeoutMs);
+    QVERIFY2(consumer, qPrintable(error));
+    // The C++ provider's echo() takes ten seconds: longer than the runtime's default call timeout.
+    // (An earlier test's PyMyService0 has gone from the name server with its process.)
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyMyService0.rtc")),
+        runTimeoutMs);
+    QProcess *python = startScript(dataFile(QStringLiteral("PyMyService.py")), stubs,
+                                   QStringLiteral("PyMyService0.rtc"),
+                                   QStringLiteral("corba.call_timeout: 20000\n"));
+    QVERIFY(python);
+    QVERIFY(
+        rtctlSucceeds({"con", "MyServiceConsumer0.rtc:MyService", "PyMyService0.rtc:Provided"}));
+    QVERIFY(
+        rtctlSucceeds({"con", "PyMyService0.rtc:Required", "MyServiceProvider0.rtc:MyService"}));
+    for (const char *component :
+         {"MyServiceProvider0.rtc", "PyMyService0.rtc", "MyServiceConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // Python consumer → the C++ provider example.
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        printed(python).contains(QLatin1String("consumer: echoes ['from python']\n")),
+        qPrintable(printed(python) + printed(provider).right(1000)), runTimeoutMs);
+    QVERIFY2(printed(python).contains(QLatin1String("consumer: value 2.5 history [1.25, 2.5]\n")),
+             qPrintable(printed(python)));
+    // The C++ consumer example's commands → the Python servant.
+    QVERIFY2(commandAnswers(consumer, "set_value 4.5", QStringLiteral("Set remote value: 4.5")),
+             qPrintable(printed(consumer).right(1000)));
+    QVERIFY2(commandAnswers(consumer, "get_value", QStringLiteral("Current remote value: 4.5")),
+             qPrintable(printed(consumer).right(1000)));
+    // The consumer example waits for its next command in onExecute: at the end of its input it goes
+    // on.
+    consumer->closeWriteChannel();
+    QVERIFY(
+        endComponents({QStringLiteral("MyServiceConsumer0.rtc"), QStringLiteral("PyMyService0.rtc"),
+                       QStringLiteral("MyServiceProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(provider);
+    m_live.stop(python);
+}
+
+void TestPythonService::simpleServiceExamplesRunUnchanged()
+{
+    if (!QFileInfo::exists(simpleServiceDir() + QStringLiteral("MyServiceProvider.py")))
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples "
+              "beside the "
+              "project) is absent");
+    const QString stubs = compileIdl({simpleServiceDir() + QStringLiteral("MyService.idl")});
+    QVERIFY(!stubs.isEmpty());
+    QProcess *provider = startScript(simpleServiceDir() + QStringLiteral("MyServiceProvider.py"),
+                                     stubs, QStringLiteral("MyServiceProvider0.rtc"));
+    QVERIFY(provider);
+    // The provider's echo() takes ten seconds: longer than the runtime's default call timeout.
+    QProcess *consumer = startScript(simpleServiceDir() + QStringLiteral("MyServiceConsumer.py"),
+                                     stubs, QStringLiteral("MyServiceConsumer0.rtc"),
+                                     QStringLiteral("corba.call_timeout: 20000\n"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds(
+        {"con", "MyServiceConsumer0.rtc:MyService", "MyServiceProvider0.rtc:MyService"}));
+    for (const char *component : {"MyServiceProvider0.rtc", "MyServiceConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+
+    // The consumer's commands: a float there and back, and the sequences of history.
+    QVERIFY(commandAnswers(consumer, "set_value 2.5", QStringLiteral("Set remote value:  2.5")));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(provider).contains(QLatin1String("Current value:  2.5")),
+                             runTimeoutMs);
+    QVERIFY(commandAnswers(consumer, "get_value", QStringLiteral("Current remote value:  2.5")));
+    QVERIFY(commandAnswers(consumer, "get_value_history", QStringLiteral("0 :  2.5")));
+    // echo() takes ten seconds in the provider; the consumer calls it in a thread of its own.
+    QVERIFY(commandAnswers(consumer, "echo hello", QStringLiteral("> ")));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(provider).contains(QLatin1String("Message:  hello")),
+                             runTimeoutMs);
+    QVERIFY(commandAnswers(consumer, "get_echo_history", QStringLiteral("0 :  hello")));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        printed(provider).contains(QLatin1String("MyService::echo() was finished.")), runTimeoutMs);
+    QVERIFY2(commandAnswers(consumer, "get_value", QStringLiteral("echo() finished:  hello")),
+             qPrintable(printed(consumer).right(1000)));
+    m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+QTEST_GUILESS_MAIN(TestPythonService)
+#include "tst_pythonservice.moc"
