@@ -10,5 +10,7 @@ PYBIND11_MODULE(_rtstudio, module)
     RtPython::bindListeners(module);
     RtPython::bindPorts(module);
     RtPython::bindComponent(module);
+    RtPython::bindConfiguration(module);
+    RtPython::bindObjectReferences(module);
     RtPython::bindManager(module);
 }

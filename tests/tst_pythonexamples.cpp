@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// OpenRTM-aist-Python's examples beyond SimpleIO and SeqIO, unchanged from the shared conformance
+// corpus (each skipped with the reason when it is absent), run with python3 on RT Studio's runtime
+// and driven with rtctl:
+// - ConfigSample: its configuration sets and bound parameters of every kind, its parameter
+//   listener, activating itself through its execution context's object reference;
+// and the same abilities through components of ours (data/python) that need no corpus.
+#include "hostrtctl.h"
+#include "pythonscripts.h"
+
+#include <QtTest>
+
+namespace {
+
+constexpr int runTimeoutMs = 30 * 1000;
+const QString hostName = QStringLiteral("pyexamples");
+
+QString corpusDir()
+{
+    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples");
+}
+
+QString testScript(const QString &name)
+{
+    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
+}
+
+} // namespace
+
+class TestPythonExamples : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void configSampleRunsUnchanged();
+    void configurationSetsAndListeners();
+
+private:
+    /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
+    static QString example(const QString &file);
+    bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
+    QString printed(QProcess *process) { return m_printed.of(process); }
+
+    QTemporaryDir m_work;
+    LiveTest::LiveSystem m_live;
+    LiveTest::HostRtctl m_host{m_live, hostName};
+    LiveTest::PythonScripts m_scripts{m_live,
+                                      m_host,
+                                      hostName,
+                                      QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+                                      QStringLiteral(RTSTUDIO_PYTHON_PATH),
+                                      QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
+                                      m_work.path()};
+    LiveTest::PrintedOutput m_printed;
+};
+
+QString TestPythonExamples::example(const QString &file)
+{
+    const QString path = corpusDir() + QLatin1Char('/') + file;
+    return QFileInfo::exists(path) ? path : QString();
+}
+
+void TestPythonExamples::initTestCase()
+{
+    QVERIFY(m_work.isValid());
+    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH "/OpenRTM_aist/__init__.py"), "build rtpython first");
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+}
+
+void TestPythonExamples::configSampleRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("ConfigSample/ConfigSample.py"));
+    if (script.isEmpty())
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
+              "project) is absent");
+    // Its own configuration file: sets default, mode0 and mode1, mode1 active.
+    QProcess *sample = m_scripts.start(script, {QStringLiteral("ConfigSample0.rtc")}, runTimeoutMs,
+        {QStringLiteral("example.ConfigSample.config_file: ") + corpusDir() + QStringLiteral("/ConfigSample/configsample.conf")});
+    QVERIFY(sample);
+    // ConfigSample activates itself through get_owned_contexts() and prints its variables each cycle.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("Active Configuration Set:  mode1")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QVERIFY2(printed(sample).contains(QLatin1String("int_param0:        [-999]")), qPrintable(printed(sample).right(2000)));
+    QVERIFY2(printed(sample).contains(QLatin1String("vector_param0[ 8 ]:  9.0")), qPrintable(printed(sample).right(2000)));
+
+    QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "set", "int_param0", "17"}));
+    QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "set", "str_param1", "changed"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("int_param0:        [17]")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("str_param1:        ['changed']")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    // Its ConfigurationParamListener, told of each parameter that changed.
+    QVERIFY2(printed(sample).contains(QLatin1String("Changed config_set_name:  mode1  config_param_name:  int_param0")),
+             qPrintable(printed(sample).right(2000)));
+
+    // Switching the set: mode0's values reach the variables.
+    QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "-s", "mode0", "act"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("Active Configuration Set:  mode0")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("str_param0:        ['mode0']")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QVERIFY2(printed(sample).contains(QLatin1String("int_param0:        [12345]")), qPrintable(printed(sample).right(2000)));
+    m_live.stop(sample);
+}
+
+void TestPythonExamples::configurationSetsAndListeners()
+{
+    QProcess *sets = m_scripts.start(testScript(QStringLiteral("PyConfigSets.py")), {QStringLiteral("PyConfigSets0.rtc")},
+                                     runTimeoutMs);
+    QVERIFY(sets);
+    // PyConfigSets activates itself (self._objref through its own context) and reports its state.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("state ACTIVE_STATE rate 20.0\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("set default gain=[2] names=['a', 'b']\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"conf", "PyConfigSets0.rtc", "set", "gain", "5"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("set default gain=[5] names=['a', 'b']\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    QVERIFY(printed(sets).contains(QLatin1String("param default gain\n")));
+    QVERIFY(rtctlSucceeds({"conf", "PyConfigSets0.rtc", "-s", "fast", "act"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("set fast gain=[40] names=['x']\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    // The set listeners: the written set with its values, each activation by name.
+    QVERIFY2(printed(sets).contains(QLatin1String("activated fast\n")), qPrintable(printed(sets)));
+    QVERIFY2(printed(sets).contains(QLatin1String("set changed gain=5\n")), qPrintable(printed(sets)));
+    m_live.stop(sets);
+}
+
+QTEST_GUILESS_MAIN(TestPythonExamples)
+#include "tst_pythonexamples.moc"
