@@ -34,6 +34,7 @@ set_tests_properties(tst_python PROPERTIES LABELS python TIMEOUT 600)
 rtstudio_add_test(tst_pythonexamples SOURCES tst_pythonexamples.cpp
     LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
 target_compile_definitions(tst_pythonexamples PRIVATE
+    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
     RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
     RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
     RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")

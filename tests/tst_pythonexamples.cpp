@@ -4,6 +4,9 @@
 // and driven with rtctl:
 // - ConfigSample: its configuration sets and bound parameters of every kind, its parameter
 //   listener, activating itself through its execution context's object reference;
+// - Composite: Sensor, Controller and Motor (Python modules the program's manager preloads) as
+//   members of the SDK's PeriodicECSharedComposite, fed and read by rtmanager's built-ins through
+//   the composite's exported ports;
 // and the same abilities through components of ours (data/python) that need no corpus.
 #include "hostrtctl.h"
 #include "pythonscripts.h"
@@ -35,6 +38,7 @@ private slots:
     void initTestCase();
     void configSampleRunsUnchanged();
     void configurationSetsAndListeners();
+    void compositeRunsUnchanged();
 
 private:
     /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
@@ -53,6 +57,8 @@ private:
                                       QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
                                       m_work.path()};
     LiveTest::PrintedOutput m_printed;
+    QProcess *m_manager = nullptr;
+    CORBA::ORB_var m_orb;
 };
 
 QString TestPythonExamples::example(const QString &file)
@@ -65,8 +71,12 @@ void TestPythonExamples::initTestCase()
 {
     QVERIFY(m_work.isValid());
     QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH "/OpenRTM_aist/__init__.py"), "build rtpython first");
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName, {}, &error);
+    QVERIFY2(m_manager, qPrintable(error));
 }
 
 void TestPythonExamples::configSampleRunsUnchanged()
@@ -126,6 +136,52 @@ void TestPythonExamples::configurationSetsAndListeners()
     QVERIFY2(printed(sets).contains(QLatin1String("activated fast\n")), qPrintable(printed(sets)));
     QVERIFY2(printed(sets).contains(QLatin1String("set changed gain=5\n")), qPrintable(printed(sets)));
     m_live.stop(sets);
+}
+
+void TestPythonExamples::compositeRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("Composite/Composite.py"));
+    if (script.isEmpty())
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
+              "project) is absent");
+    // The example's rtc.conf, with its module folder for "." and its composite.conf by path.
+    const QString folder = QFileInfo(script).absolutePath();
+    QProcess *server = m_scripts.start(script, {QStringLiteral("PeriodicECSharedComposite0.rtc")}, runTimeoutMs,
+        {QStringLiteral("manager.modules.load_path: ") + folder,
+         QStringLiteral("manager.modules.preload: Controller, Motor, Sensor"),
+         QStringLiteral("manager.components.precreate: Controller, Motor, Sensor, PeriodicECSharedComposite"),
+         QStringLiteral("composite.PeriodicECShared.PeriodicECSharedComposite0.config_file: ") + folder
+             + QStringLiteral("/composite.conf")});
+    QVERIFY(server);
+    const RtctlResult cat = m_host.run({"cat", "PeriodicECSharedComposite0.rtc"});
+    QVERIFY2(cat.out.contains(QRegularExpression(QStringLiteral("Members +Sensor0, Controller0, Motor0\n"))),
+             qPrintable(cat.out));
+    QVERIFY(rtctlSucceeds({"con", "Sensor0.rtc:out", "Controller0.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "Controller0.rtc:out", "Motor0.rtc:in"}));
+    // Through the composite's exported ports (Sensor0.in, Motor0.out), from and to rtmanager's built-ins.
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "create", "ConsoleIn?instance_name=CompositeFeed", "create",
+                           "ConsoleOut?instance_name=CompositeSink"}));
+    QVERIFY(rtctlSucceeds({"con", "CompositeFeed.rtc:out", "PeriodicECSharedComposite0.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "PeriodicECSharedComposite0.rtc:out", "CompositeSink.rtc:in"}));
+    for (const char *component : {"CompositeSink.rtc", "PeriodicECSharedComposite0.rtc", "CompositeFeed.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // Activating the composite activated its Python members; on the composite's context each passes
+    // the feed's numbers on (Sensor and Controller double them, Motor doubles and truncates).
+    // Members are active in the composite's context (`rtctl ls` shows their own one).
+    const auto motorActive = [this] { return m_host.run({"cat", "Motor0.rtc"}).out.contains(QLatin1String("Active")); };
+    QTRY_VERIFY_WITH_TIMEOUT(motorActive(), runTimeoutMs);
+    for (const char *member : {"Sensor Received data: ", "Controller Received data: ", "Motor Received data: "})
+        QTRY_VERIFY2_WITH_TIMEOUT(printed(server).contains(QLatin1String(member)), qPrintable(printed(server).right(2000)),
+                                  runTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("CompositeSink.rtc"), "received_count").toInt() > 0,
+                             runTimeoutMs);
+    // Eight times the number fed: what left Motor0.out is a multiple of 8.
+    const QList<qint64> values = LiveTest::integers(m_host.status(m_orb, QStringLiteral("CompositeSink.rtc"), "received_values"));
+    QVERIFY(!values.isEmpty());
+    QVERIFY2(values.first() > 0 && values.first() % 8 == 0, qPrintable(QString::number(values.first())));
+    QVERIFY(rtctlSucceeds({"deact", "PeriodicECSharedComposite0.rtc"}));
+    QTRY_VERIFY_WITH_TIMEOUT(!motorActive(), runTimeoutMs);
+    m_live.stop(server);
 }
 
 QTEST_GUILESS_MAIN(TestPythonExamples)
