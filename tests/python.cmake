@@ -30,17 +30,6 @@ list(JOIN python_sanitizer_preload " " python_sanitizer_preload)
 target_compile_definitions(tst_python PRIVATE RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
 set_tests_properties(tst_python PROPERTIES LABELS python TIMEOUT 600)
 
-# OpenRTM-aist-Python's other examples unchanged (shared corpus) and our components of the same abilities.
-rtstudio_add_test(tst_pythonexamples SOURCES tst_pythonexamples.cpp
-    LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
-target_compile_definitions(tst_pythonexamples PRIVATE
-    RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
-    RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
-    RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
-    RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
-add_dependencies(tst_pythonexamples rtmanager rtctl rtpython rtsdk)
-set_tests_properties(tst_pythonexamples PROPERTIES LABELS python TIMEOUT 600)
-
 # Python modules inside rtmanager (python/embed): the plugin rtmanager opens on its first .py module.
 if(TARGET rtpymodules)
     rtstudio_add_test(tst_pythonmanager SOURCES tst_pythonmanager.cpp
@@ -59,4 +48,18 @@ if(TARGET rtpymodules)
     target_compile_definitions(tst_builderpython PRIVATE RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
     add_dependencies(tst_builderpython rtmanager rtctl rtpython rtpymodules rtsdk)
     set_tests_properties(tst_builderpython PROPERTIES LABELS python TIMEOUT 600)
+endif()
+
+# OpenRTM-aist-Python's other examples unchanged (shared corpus) and components of ours with the same
+# abilities, standalone and as modules of rtmanager.
+if(TARGET rtpymodules)
+    rtstudio_add_test(tst_pythonexamples SOURCES tst_pythonexamples.cpp
+        LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+    target_compile_definitions(tst_pythonexamples PRIVATE
+        RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+        RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
+        RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+        RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
+    add_dependencies(tst_pythonexamples rtmanager rtctl rtpython rtpymodules rtsdk)
+    set_tests_properties(tst_pythonexamples PROPERTIES LABELS python TIMEOUT 600)
 endif()

@@ -7,7 +7,9 @@
 // - Composite: Sensor, Controller and Motor (Python modules the program's manager preloads) as
 //   members of the SDK's PeriodicECSharedComposite, fed and read by rtmanager's built-ins through
 //   the composite's exported ports;
-// and the same abilities through components of ours (data/python) that need no corpus.
+// and the same abilities through components of ours (data/python) that need no corpus: a component
+// with two configuration sets and every configuration listener; a Python module's component as
+// the member of a PeriodicECSharedComposite of rtmanager.
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
@@ -39,6 +41,7 @@ private slots:
     void configSampleRunsUnchanged();
     void configurationSetsAndListeners();
     void compositeRunsUnchanged();
+    void pythonMemberOfCompositeInManager();
 
 private:
     /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
@@ -182,6 +185,28 @@ void TestPythonExamples::compositeRunsUnchanged()
     QVERIFY(rtctlSucceeds({"deact", "PeriodicECSharedComposite0.rtc"}));
     QTRY_VERIFY_WITH_TIMEOUT(!motorActive(), runTimeoutMs);
     m_live.stop(server);
+}
+
+void TestPythonExamples::pythonMemberOfCompositeInManager()
+{
+    // PyScaler (x1000) in rtmanager, the only member of a composite that exports both its ports.
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "load", testScript(QStringLiteral("PyScaler.py")), "create",
+                           "PyScaler?instance_name=ScalerMember", "create",
+                           "PeriodicECSharedComposite?instance_name=ScalerComposite&conf.default.members=ScalerMember"
+                           "&conf.default.exported_ports=ScalerMember.in,ScalerMember.out",
+                           "create", "ConsoleIn?instance_name=MemberFeed", "create",
+                           "ConsoleOut?instance_name=MemberSink"}));
+    QVERIFY(rtctlSucceeds({"con", "MemberFeed.rtc:out", "ScalerComposite.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "ScalerComposite.rtc:out", "MemberSink.rtc:in"}));
+    for (const char *component : {"MemberSink.rtc", "ScalerComposite.rtc", "MemberFeed.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("MemberSink.rtc"), "received_count").toInt() > 0,
+                             runTimeoutMs);
+    const QList<qint64> values = LiveTest::integers(m_host.status(m_orb, QStringLiteral("MemberSink.rtc"), "received_values"));
+    QVERIFY(!values.isEmpty());
+    QVERIFY2(values.first() > 0 && values.first() % 1000 == 0, qPrintable(QString::number(values.first())));
+    for (const char *component : {"MemberFeed.rtc", "ScalerComposite.rtc"})
+        QVERIFY(rtctlSucceeds({"deact", component}));
 }
 
 QTEST_GUILESS_MAIN(TestPythonExamples)
