@@ -7,11 +7,16 @@
 // - Composite: Sensor, Controller and Motor (Python modules the program's manager preloads) as
 //   members of the SDK's PeriodicECSharedComposite, fed and read by rtmanager's built-ins through
 //   the composite's exported ports;
+// - ExtTrigger: ConsoleIn and ConsoleOut on ExtTrigExecutionContexts, each stepping once per tick
+//   the test sends (the example's Connector.py, which needs omniORBpy, does the same);
 // and the same abilities through components of ours (data/python) that need no corpus: a component
 // with two configuration sets and every configuration listener; a Python module's component as
-// the member of a PeriodicECSharedComposite of rtmanager.
+// the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
+// ExtTrigExecutionContext.
 #include "hostrtctl.h"
 #include "pythonscripts.h"
+
+#include <OpenRTM.hh>
 
 #include <QtTest>
 
@@ -42,12 +47,16 @@ private slots:
     void configurationSetsAndListeners();
     void compositeRunsUnchanged();
     void pythonMemberOfCompositeInManager();
+    void extTriggerStepsOnlyWhenTicked();
+    void componentTicksItsOwnContext();
 
 private:
     /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
     static QString example(const QString &file);
     bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
     QString printed(QProcess *process) { return m_printed.of(process); }
+    /// Ticks the ExtTrigExecutionContext @p component owns, as OpenRTM's Connector.py does.
+    bool tick(const QString &component) const;
 
     QTemporaryDir m_work;
     LiveTest::LiveSystem m_live;
@@ -68,6 +77,25 @@ QString TestPythonExamples::example(const QString &file)
 {
     const QString path = corpusDir() + QLatin1Char('/') + file;
     return QFileInfo::exists(path) ? path : QString();
+}
+
+bool TestPythonExamples::tick(const QString &component) const
+{
+    try {
+        const QString name = QStringLiteral("corbaname::%1#%2.host_cxt/%3").arg(m_live.namingServer(), hostName, component);
+        CORBA::Object_var object = m_orb->string_to_object(name.toUtf8().constData());
+        RTC::RTObject_var rtc = RTC::RTObject::_narrow(object);
+        RTC::ExecutionContextList_var contexts = rtc->get_owned_contexts();
+        OpenRTM::ExtTrigExecutionContextService_var context =
+            OpenRTM::ExtTrigExecutionContextService::_narrow(contexts[0].in());
+        if (CORBA::is_nil(context))
+            return false;
+        context->tick();
+        return true;
+    } catch (const CORBA::Exception &error) {
+        qWarning() << "tick" << component << error._name();
+        return false;
+    }
 }
 
 void TestPythonExamples::initTestCase()
@@ -207,6 +235,60 @@ void TestPythonExamples::pythonMemberOfCompositeInManager()
     QVERIFY2(values.first() > 0 && values.first() % 1000 == 0, qPrintable(QString::number(values.first())));
     for (const char *component : {"MemberFeed.rtc", "ScalerComposite.rtc"})
         QVERIFY(rtctlSucceeds({"deact", component}));
+}
+
+void TestPythonExamples::extTriggerStepsOnlyWhenTicked()
+{
+    const QString in = example(QStringLiteral("ExtTrigger/ConsoleIn.py"));
+    if (in.isEmpty())
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
+              "project) is absent");
+    // The example's rtc.conf: every component on an ExtTrigExecutionContext.
+    const QStringList conf{QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext"),
+                           QStringLiteral("exec_cxt.periodic.rate: 1000")};
+    QProcess *out = m_scripts.start(example(QStringLiteral("ExtTrigger/ConsoleOut.py")), {QStringLiteral("ConsoleOut0.rtc")},
+                                    runTimeoutMs, conf);
+    QVERIFY(out);
+    QProcess *source = m_scripts.start(in, {QStringLiteral("ConsoleIn0.rtc")}, runTimeoutMs, conf);
+    QVERIFY(source);
+    source->write("11\n22\n33\n");
+    QVERIFY(rtctlSucceeds({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in", "-p", "dataport.subscription_type=flush"}));
+    const auto sent = [&] { return printed(source).count(QLatin1String("Sending to subscriber:")); };
+    const auto received = [&] { return printed(out).count(QLatin1String("Received:")); };
+    // As OpenRTM's ExtTrigExecutionContext, activating runs one cycle; after it, one cycle per tick.
+    QVERIFY(rtctlSucceeds({"act", "ConsoleIn0.rtc"}));
+    QTRY_COMPARE_WITH_TIMEOUT(sent(), 1, runTimeoutMs);
+    QVERIFY(tick(QStringLiteral("ConsoleIn0.rtc")));
+    QVERIFY(tick(QStringLiteral("ConsoleIn0.rtc")));
+    QTRY_COMPARE_WITH_TIMEOUT(sent(), 3, runTimeoutMs);
+    QVERIFY2(printed(source).contains(QLatin1String("Sending to subscriber:  33\n")), qPrintable(printed(source)));
+    // ConsoleOut, inactive meanwhile, takes one sample per cycle: its activation's, then a tick's.
+    QCOMPARE(received(), 0);
+    QVERIFY(rtctlSucceeds({"act", "ConsoleOut0.rtc"}));
+    QTRY_COMPARE_WITH_TIMEOUT(received(), 1, runTimeoutMs);
+    QVERIFY(tick(QStringLiteral("ConsoleOut0.rtc")));
+    QTRY_COMPARE_WITH_TIMEOUT(received(), 2, runTimeoutMs);
+    QVERIFY2(printed(out).contains(QLatin1String("Received:  11\n")), qPrintable(printed(out)));
+    // ConsoleIn, not ticked meanwhile, has not stepped.
+    QCOMPARE(sent(), 3);
+    QVERIFY(rtctlSucceeds({"deact", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}));
+    m_live.stop(source);
+    m_live.stop(out);
+}
+
+void TestPythonExamples::componentTicksItsOwnContext()
+{
+    QProcess *ticked = m_scripts.start(testScript(QStringLiteral("PyTicked.py")), {QStringLiteral("PyTicked0.rtc")},
+                                       runTimeoutMs, {QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext")});
+    QVERIFY(ticked);
+    // Its activation's cycle and its three ticks; then one from here.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(ticked).contains(QLatin1String("cycle 4\n")), qPrintable(printed(ticked)),
+                              runTimeoutMs);
+    QVERIFY(tick(QStringLiteral("PyTicked0.rtc")));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(ticked).contains(QLatin1String("cycle 5\n")), qPrintable(printed(ticked)),
+                              runTimeoutMs);
+    QVERIFY2(!printed(ticked).contains(QLatin1String("cycle 6\n")), qPrintable(printed(ticked)));
+    m_live.stop(ticked);
 }
 
 QTEST_GUILESS_MAIN(TestPythonExamples)
