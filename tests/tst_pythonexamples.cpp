@@ -12,11 +12,15 @@
 // and the same abilities through components of ours (data/python) that need no corpus: a component
 // with two configuration sets and every configuration listener; a Python module's component as
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
-// ExtTrigExecutionContext.
+// ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
+// leaves the master serving.
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
+#include <Manager.hh>
 #include <OpenRTM.hh>
+
+#include <csignal>
 
 #include <QtTest>
 
@@ -49,12 +53,15 @@ private slots:
     void pythonMemberOfCompositeInManager();
     void extTriggerStepsOnlyWhenTicked();
     void componentTicksItsOwnContext();
+    void pythonComponentInSlaveOfItsOwn();
 
 private:
     /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
     static QString example(const QString &file);
     bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
     QString printed(QProcess *process) { return m_printed.of(process); }
+    /// The process id of the slave manager named @p name (0 when the master has none such).
+    qint64 slavePid(const QString &name) const;
     /// Ticks the ExtTrigExecutionContext @p component owns, as OpenRTM's Connector.py does.
     bool tick(const QString &component) const;
 
@@ -98,6 +105,35 @@ bool TestPythonExamples::tick(const QString &component) const
     }
 }
 
+qint64 TestPythonExamples::slavePid(const QString &name) const
+{
+    RTM::ManagerList_var slaves;
+    try {
+        const QString path = QStringLiteral("corbaname::%1#%2.host_cxt/manager.mgr").arg(m_live.namingServer(), hostName);
+        CORBA::Object_var object = m_orb->string_to_object(path.toUtf8().constData());
+        slaves = RTM::Manager::_narrow(object)->get_slave_managers();
+    } catch (const CORBA::Exception &error) {
+        qWarning() << "slaves of the manager:" << error._name();
+        return 0;
+    }
+    for (CORBA::ULong i = 0; i < slaves->length(); ++i) {
+        try {
+            RTM::ManagerProfile_var profile = slaves[i]->get_profile();
+            QHash<QString, QString> properties;
+            for (CORBA::ULong j = 0; j < profile->properties.length(); ++j) {
+                const char *text = nullptr;
+                if (profile->properties[j].value >>= text)
+                    properties.insert(QString::fromUtf8(profile->properties[j].name.in()), QString::fromUtf8(text));
+            }
+            if (properties.value(QStringLiteral("instance_name")) == name)
+                return properties.value(QStringLiteral("pid")).toLongLong();
+        } catch (const CORBA::Exception &) {
+            // A slave that has just ended, not yet dropped by the master.
+        }
+    }
+    return 0;
+}
+
 void TestPythonExamples::initTestCase()
 {
     QVERIFY(m_work.isValid());
@@ -106,7 +142,10 @@ void TestPythonExamples::initTestCase()
     m_orb = CORBA::ORB_init(argc, nullptr);
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
-    m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName, {}, &error);
+    // Our Python modules are in the load path, found by their type names (in slaves too).
+    m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName,
+                                        {QStringLiteral("manager.modules.load_path=" RTSTUDIO_TEST_DATA_DIR "/python")},
+                                        &error);
     QVERIFY2(m_manager, qPrintable(error));
 }
 
@@ -289,6 +328,40 @@ void TestPythonExamples::componentTicksItsOwnContext()
                               runTimeoutMs);
     QVERIFY2(!printed(ticked).contains(QLatin1String("cycle 6\n")), qPrintable(printed(ticked)));
     m_live.stop(ticked);
+}
+
+void TestPythonExamples::pythonComponentInSlaveOfItsOwn()
+{
+    // PyScaler.py in a slave started for it (manager_name), fed by the master's built-in ConsoleIn.
+    const QString manager = m_host.managerPath();
+    QVERIFY(rtctlSucceeds({"mgr", manager, "create", "PyScaler?instance_name=SlaveScaler&manager_name=pyslave", "create",
+                           "ConsoleIn?instance_name=SlaveFeed", "create", "ConsoleOut?instance_name=SlaveSink"}));
+    const qint64 pid = slavePid(QStringLiteral("pyslave"));
+    QVERIFY(pid > 0);
+    QVERIFY(pid != m_manager->processId());
+    QVERIFY(rtctlSucceeds({"con", "SlaveFeed.rtc:out", "SlaveScaler.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "SlaveScaler.rtc:out", "SlaveSink.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"act", "SlaveSink.rtc", "SlaveScaler.rtc", "SlaveFeed.rtc"}));
+    QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("SlaveSink.rtc"), "received_count").toInt() > 0,
+                             runTimeoutMs);
+    const QList<qint64> values = LiveTest::integers(m_host.status(m_orb, QStringLiteral("SlaveSink.rtc"), "received_values"));
+    QVERIFY(!values.isEmpty() && values.first() % 1000 == 0);
+
+    // The slave's end takes its Python component with it; the master serves on.
+    QCOMPARE(::kill(pid_t(pid), SIGKILL), 0);
+    const auto listed = [&] {
+        const RtctlResult list = m_host.run({"mgr", manager, "list"});
+        return list.code == 0 ? list.out : QString();
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(listed().contains(QLatin1String("SlaveFeed")) && !listed().contains(QLatin1String("SlaveScaler")),
+                             runTimeoutMs);
+    QVERIFY(m_host.run({"cat", "SlaveScaler.rtc"}).code != 0);
+    QCOMPARE(m_manager->state(), QProcess::Running);
+    QCOMPARE(m_host.state(QStringLiteral("SlaveFeed.rtc")), QStringLiteral("Active"));
+    // And makes another slave for the next such request.
+    QVERIFY(rtctlSucceeds({"mgr", manager, "create", "PyScaler?instance_name=SlaveScaler2&manager_name=pyslave"}));
+    QVERIFY(slavePid(QStringLiteral("pyslave")) > 0);
+    QVERIFY(rtctlSucceeds({"deact", "SlaveFeed.rtc"}));
 }
 
 QTEST_GUILESS_MAIN(TestPythonExamples)
