@@ -129,6 +129,8 @@ public:
         const IdlType type = resolved(written);
         switch (type.kind) {
         case IdlType::Kind::Basic: {
+            if (type.name == QLatin1String("wchar"))
+                return readWChar();
             const std::optional<Primitive> kind = primitive(type.name);
             if (!kind)
                 fail(QStringLiteral("values of type '%1' cannot be shown").arg(type.name));
@@ -143,14 +145,11 @@ public:
             return QString::fromUtf8(text);
         }
         case IdlType::Kind::WString: {
-            // GIOP 1.2: the length in bytes, then UTF-16 code units in the stream's byte order.
+            // GIOP 1.2: the length in bytes, then UTF-16 (see readUtf16).
             const quint32 length = quint32(readUnsigned(4));
             if (length % 2 != 0 || length > remaining())
                 fail(QStringLiteral("wide string of %1 bytes where %2 remain").arg(length).arg(remaining()));
-            QString text;
-            for (quint32 i = 0; i < length / 2; ++i)
-                text.append(QChar(char16_t(readUnsigned(2, /*align=*/false))));
-            return text;
+            return readUtf16(length);
         }
         case IdlType::Kind::Sequence: {
             const quint32 count = quint32(readUnsigned(4));
@@ -180,6 +179,37 @@ public:
     qsizetype remaining() const { return m_bytes.size() - m_position; }
 
 private:
+    /// GIOP 1.2's wchar: its length in one octet, then UTF-16 (see readUtf16); one character.
+    QJsonValue readWChar()
+    {
+        const quint32 length = quint32(readUnsigned(1));
+        if (length % 2 != 0 || length > remaining())
+            fail(QStringLiteral("wide character of %1 bytes where %2 remain").arg(length).arg(remaining()));
+        const QString text = readUtf16(length);
+        if (text.size() != 1)
+            fail(QStringLiteral("a wide character of %1 code units").arg(text.size()));
+        return text;
+    }
+
+    /// @p length bytes of UTF-16: big-endian whatever the stream's byte order, unless a byte-order
+    /// mark comes first (omniORB writes wide strings in the machine's order after one).
+    QString readUtf16(quint32 length)
+    {
+        const uchar *at = reinterpret_cast<const uchar *>(m_bytes.constData()) + m_position;
+        m_position += length;
+        bool big = true;
+        QString text;
+        for (quint32 i = 0; i + 1 < length; i += 2) {
+            const char16_t unit = big ? char16_t(at[i] << 8 | at[i + 1]) : char16_t(at[i + 1] << 8 | at[i]);
+            if (i == 0 && (unit == 0xFEFF || unit == 0xFFFE)) {
+                big = unit == 0xFEFF;
+                continue;
+            }
+            text.append(QChar(unit));
+        }
+        return text;
+    }
+
     QJsonValue readArray(const IdlType &element, const QStringList &dimensions, int level)
     {
         const int count = dimensions.value(level).toInt();
@@ -317,6 +347,10 @@ public:
         const IdlType type = resolved(written);
         switch (type.kind) {
         case IdlType::Kind::Basic: {
+            if (type.name == QLatin1String("wchar")) {
+                writeWChar(value);
+                return;
+            }
             const std::optional<Primitive> kind = primitive(type.name);
             if (!kind)
                 fail(QStringLiteral("values of type '%1' cannot be written").arg(type.name));
@@ -337,8 +371,7 @@ public:
         case IdlType::Kind::WString: {
             const QString text = value.toString();
             writeUnsigned(4, quint64(text.size() * 2));
-            for (const QChar c : text)
-                writeUnsigned(2, c.unicode(), /*align=*/false);
+            writeUtf16(text);
             return;
         }
         case IdlType::Kind::Sequence: {
@@ -367,6 +400,25 @@ public:
     }
 
 private:
+    /// GIOP 1.2's wchar: two octets of big-endian UTF-16 after their length, as omniORB writes it.
+    void writeWChar(const QJsonValue &value)
+    {
+        const QString text = value.isUndefined() || value.isNull() ? QString(QChar(0)) : value.toString();
+        if (text.size() != 1)
+            fail(QStringLiteral("one wide character is expected"));
+        writeUnsigned(1, 2);
+        writeUtf16(text);
+    }
+
+    /// Big-endian UTF-16 without a byte-order mark: how GIOP 1.2 reads UTF-16 that has none.
+    void writeUtf16(const QString &text)
+    {
+        for (const QChar c : text) {
+            m_bytes.append(char(c.unicode() >> 8));
+            m_bytes.append(char(c.unicode() & 0xff));
+        }
+    }
+
     void writeArray(const IdlType &element, const QStringList &dimensions, int level,
                     const QJsonValue &value)
     {

@@ -61,7 +61,6 @@ const QHash<QString, QString> unsupportedTypes{
     {"SDOPackage::RangeType", "holds a union"},
     {"SDOPackage::NameValue", "holds an any"},
     {"SDOPackage::Parameter", "holds a TypeCode"},
-    {"RTC::TimedWChar", "holds a wchar"},
 };
 
 } // namespace

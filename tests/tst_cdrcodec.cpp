@@ -53,6 +53,8 @@ private slots:
     void cleanupTestCase();
     void typeNames();
     void matchesOmniOrb();
+    void wideCharactersMatchOmniOrb_data();
+    void wideCharactersMatchOmniOrb();
     void bigEndianRoundTrip();
     void malformedSamplesAreReported_data();
     void malformedSamplesAreReported();
@@ -164,6 +166,46 @@ void TestCdrCodec::matchesOmniOrb()
                  .toString(),
              QString("x"));
     QVERIFY2(error.isEmpty(), qPrintable(error));
+}
+
+void TestCdrCodec::wideCharactersMatchOmniOrb_data()
+{
+    QTest::addColumn<bool>("littleEndian");
+    QTest::newRow("little-endian") << true;
+    QTest::newRow("big-endian") << false;
+}
+
+void TestCdrCodec::wideCharactersMatchOmniOrb()
+{
+    // omniORB writes a wchar as big-endian UTF-16 after its length octet, a wstring in the machine's
+    // order after a byte-order mark; it reads UTF-16 without a mark as big-endian.
+    QFETCH(bool, littleEndian);
+    const CdrCodec codec(m_library.model());
+    QString error;
+    const auto theirs = [littleEndian](const auto &value) {
+        cdrMemoryStream stream;
+        stream.setByteSwapFlag(littleEndian);
+        value >>= stream;
+        return QByteArray(static_cast<const char *>(stream.bufPtr()), int(stream.bufSize()));
+    };
+    const RTC::TimedWChar wchar{{5, 6}, CORBA::WChar(0x3042)};
+    const QJsonObject wcharValue = json(R"({"tm":{"sec":5,"nsec":6},"data":"\u3042"})");
+    QCOMPARE(codec.decode("RTC::TimedWChar", theirs(wchar), littleEndian, &error), QJsonValue(wcharValue));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(codec.encode("RTC::TimedWChar", wcharValue, littleEndian, &error), theirs(wchar));
+
+    RTC::TimedWString wstring{{7, 8}, CORBA::wstring_dup(L"h\u3042!")};
+    const QJsonObject wstringValue = json(R"({"tm":{"sec":7,"nsec":8},"data":"h\u3042!"})");
+    QCOMPARE(codec.decode("RTC::TimedWString", theirs(wstring), littleEndian, &error), QJsonValue(wstringValue));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    const QByteArray ours = codec.encode("RTC::TimedWString", wstringValue, littleEndian, &error);
+    cdrMemoryStream stream;
+    stream.setByteSwapFlag(littleEndian);
+    stream.put_octet_array(reinterpret_cast<const CORBA::Octet *>(ours.constData()), CORBA::ULong(ours.size()));
+    RTC::TimedWString decoded;
+    decoded <<= stream;
+    QCOMPARE(QString::fromWCharArray(decoded.data.in()), QStringLiteral("h\u3042!"));
+    QCOMPARE(decoded.tm.nsec, CORBA::ULong(8));
 }
 
 void TestCdrCodec::bigEndianRoundTrip()

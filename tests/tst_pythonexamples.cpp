@@ -13,7 +13,7 @@
 // with two configuration sets and every configuration listener; a Python module's component as
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
-// leaves the master serving.
+// leaves the master serving; wide characters in samples (data/python/widechars.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
@@ -54,6 +54,7 @@ private slots:
     void extTriggerStepsOnlyWhenTicked();
     void componentTicksItsOwnContext();
     void pythonComponentInSlaveOfItsOwn();
+    void wideCharactersCross();
 
 private:
     /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
@@ -362,6 +363,17 @@ void TestPythonExamples::pythonComponentInSlaveOfItsOwn()
     QVERIFY(rtctlSucceeds({"mgr", manager, "create", "PyScaler?instance_name=SlaveScaler2&manager_name=pyslave"}));
     QVERIFY(slavePid(QStringLiteral("pyslave")) > 0);
     QVERIFY(rtctlSucceeds({"deact", "SlaveFeed.rtc"}));
+}
+
+void TestPythonExamples::wideCharactersCross()
+{
+    QProcess python;
+    python.setProcessEnvironment(m_scripts.environment());
+    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {testScript(QStringLiteral("widechars.py"))});
+    QVERIFY(python.waitForFinished(runTimeoutMs));
+    const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
+    QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0, qPrintable(output));
+    QVERIFY2(output.contains(QLatin1String("widechars: ok")), qPrintable(output));
 }
 
 QTEST_GUILESS_MAIN(TestPythonExamples)
