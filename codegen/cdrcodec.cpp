@@ -248,19 +248,7 @@ private:
     QJsonValue readUnion(const IdlUnion &type)
     {
         const QJsonValue discriminator = read(type.discriminator);
-        const QString label = discriminator.isString()
-            ? discriminator.toString()
-            : discriminator.isBool() ? (discriminator.toBool() ? QStringLiteral("TRUE") : QStringLiteral("FALSE"))
-                                     : QString::number(discriminator.toInteger());
-        const IdlUnionCase *chosen = nullptr;
-        for (const IdlUnionCase &c : type.cases) {
-            for (const QString &l : c.labels) {
-                if (l == label || l.section(QStringLiteral("::"), -1) == label)
-                    chosen = &c;
-            }
-            if (!chosen && c.isDefault)
-                chosen = &c;
-        }
+        const IdlUnionCase *chosen = CdrCodec::unionCase(type, discriminator);
         QJsonObject object {{QStringLiteral("_d"), discriminator}};
         if (chosen) {
             enter(QLatin1Char('.') + chosen->member.name);
@@ -400,6 +388,26 @@ public:
     }
 
 private:
+    /// A union as {"_d": discriminator, "<member>": value}: the discriminator, then the member it
+    /// selects. Without "_d", the first case's first label.
+    void writeUnion(const IdlUnion &type, const QJsonValue &value)
+    {
+        if (!value.isObject() && !value.isUndefined() && !value.isNull())
+            fail(QStringLiteral("an object {\"_d\": …} is expected for %1").arg(type.scopedName));
+        const QJsonObject object = value.toObject();
+        QJsonValue discriminator = object.value(QStringLiteral("_d"));
+        if (discriminator.isUndefined() && !type.cases.isEmpty() && !type.cases.front().labels.isEmpty())
+            discriminator = CdrCodec::labelValue(m_model, type, type.cases.front().labels.front());
+        enter(QStringLiteral("._d"));
+        write(type.discriminator, discriminator);
+        leave();
+        if (const IdlUnionCase *chosen = CdrCodec::unionCase(type, discriminator)) {
+            enter(QLatin1Char('.') + chosen->member.name);
+            write(chosen->member.type, object.value(chosen->member.name));
+            leave();
+        }
+    }
+
     /// GIOP 1.2's wchar: two octets of big-endian UTF-16 after their length, as omniORB writes it.
     void writeWChar(const QJsonValue &value)
     {
@@ -473,8 +481,10 @@ private:
             writeUnsigned(4, quint64(index));
             return;
         }
-        if (m_model.unions.contains(name))
-            fail(QStringLiteral("union values cannot be written"));
+        if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd()) {
+            writeUnion(*it, value);
+            return;
+        }
         fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));
     }
 
@@ -678,6 +688,36 @@ QString CdrCodec::jsonText(const QJsonValue &value)
 CdrCodec::CdrCodec(const IdlModel &model)
     : m_model(model)
 { }
+
+const IdlUnionCase *CdrCodec::unionCase(const IdlUnion &type, const QJsonValue &discriminator)
+{
+    const QString label = discriminator.isString()
+        ? discriminator.toString().section(QStringLiteral("::"), -1)
+        : discriminator.isBool() ? (discriminator.toBool() ? QStringLiteral("TRUE") : QStringLiteral("FALSE"))
+                                 : QString::number(discriminator.toInteger());
+    const IdlUnionCase *fallback = nullptr;
+    for (const IdlUnionCase &c : type.cases) {
+        for (const QString &l : c.labels) {
+            if (l.section(QStringLiteral("::"), -1) == label)
+                return &c;
+        }
+        if (c.isDefault)
+            fallback = &c;
+    }
+    return fallback;
+}
+
+QJsonValue CdrCodec::labelValue(const IdlModel &model, const IdlUnion &type, const QString &label)
+{
+    const IdlType discriminator = model.resolve(type.discriminator);
+    if (discriminator.kind == IdlType::Kind::Named)
+        return label.section(QStringLiteral("::"), -1);
+    if (discriminator.name == QLatin1String("boolean"))
+        return label == QLatin1String("TRUE");
+    if (discriminator.name == QLatin1String("char") || discriminator.name == QLatin1String("wchar"))
+        return label.mid(1, label.size() - 2);
+    return label.toLongLong(nullptr, 0);
+}
 
 QString CdrCodec::typeName(const QString &dataType)
 {

@@ -8,6 +8,7 @@
 #include <BasicDataType.hh>
 #include <ExtendedDataTypes.hh>
 #include <InterfaceDataTypes.hh>
+#include <SDOPackage.hh>
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -55,6 +56,7 @@ private slots:
     void matchesOmniOrb();
     void wideCharactersMatchOmniOrb_data();
     void wideCharactersMatchOmniOrb();
+    void unionsMatchOmniOrb();
     void bigEndianRoundTrip();
     void malformedSamplesAreReported_data();
     void malformedSamplesAreReported();
@@ -206,6 +208,36 @@ void TestCdrCodec::wideCharactersMatchOmniOrb()
     decoded <<= stream;
     QCOMPARE(QString::fromWCharArray(decoded.data.in()), QStringLiteral("h\u3042!"));
     QCOMPARE(decoded.tm.nsec, CORBA::ULong(8));
+}
+
+void TestCdrCodec::unionsMatchOmniOrb()
+{
+    const CdrCodec codec(m_library.model());
+    QString error;
+    SDOPackage::Numeric numeric;
+    numeric.double_value(2.5);
+    const QJsonObject numericValue = json(R"({"_d":"DOUBLE_TYPE","double_value":2.5})");
+    QCOMPARE(codec.decode("SDOPackage::Numeric", marshal(numeric), true, &error), QJsonValue(numericValue));
+    QVERIFY(sameSample(codec, "SDOPackage::Numeric", codec.encode("SDOPackage::Numeric", numericValue, true, &error),
+                       marshal(numeric)));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    // Unions as struct members; the discriminator picks the member written.
+    SDOPackage::RangeType range;
+    range.min.short_value(-3);
+    range.max.long_value(70000);
+    range.min_inclusive = true;
+    range.max_inclusive = false;
+    const QJsonObject rangeValue = json(R"({"min":{"_d":"SHORT_TYPE","short_value":-3},)"
+                                        R"("max":{"_d":"LONG_TYPE","long_value":70000},)"
+                                        R"("min_inclusive":true,"max_inclusive":false})");
+    QCOMPARE(codec.decode("SDOPackage::RangeType", marshal(range), true, &error), QJsonValue(rangeValue));
+    QVERIFY(sameSample(codec, "SDOPackage::RangeType", codec.encode("SDOPackage::RangeType", rangeValue, true, &error),
+                       marshal(range)));
+    // No discriminator given: the first case.
+    QCOMPARE(codec.decode("SDOPackage::Numeric", codec.encode("SDOPackage::Numeric", QJsonObject(), true, &error), true,
+                          &error),
+             QJsonValue(json(R"({"_d":"SHORT_TYPE","short_value":0})")));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
 }
 
 void TestCdrCodec::bigEndianRoundTrip()
