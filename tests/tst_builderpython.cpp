@@ -57,8 +57,6 @@ const QHash<QString, QString> unsupportedTypes{
     {"RTC::FsmBehaviorProfile", "holds an object reference"},
     {"RTC::PortProfile", "holds an object reference"},
     {"SDOPackage::ServiceProfile", "holds an object reference"},
-    {"SDOPackage::IntervalType", "holds a union"},
-    {"SDOPackage::RangeType", "holds a union"},
     {"SDOPackage::NameValue", "holds an any"},
     {"SDOPackage::Parameter", "holds a TypeCode"},
 };

@@ -13,7 +13,8 @@
 // with two configuration sets and every configuration listener; a Python module's component as
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
-// leaves the master serving; wide characters in samples (data/python/widechars.py).
+// leaves the master serving; wide characters and unions in samples (data/python/widechars.py,
+// unions.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
@@ -54,7 +55,8 @@ private slots:
     void extTriggerStepsOnlyWhenTicked();
     void componentTicksItsOwnContext();
     void pythonComponentInSlaveOfItsOwn();
-    void wideCharactersCross();
+    void dataTypesConvert_data();
+    void dataTypesConvert();
 
 private:
     /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
@@ -365,15 +367,24 @@ void TestPythonExamples::pythonComponentInSlaveOfItsOwn()
     QVERIFY(rtctlSucceeds({"deact", "SlaveFeed.rtc"}));
 }
 
-void TestPythonExamples::wideCharactersCross()
+void TestPythonExamples::dataTypesConvert_data()
 {
+    QTest::addColumn<QString>("script");
+    QTest::newRow("wide characters") << QStringLiteral("widechars");
+    QTest::newRow("unions") << QStringLiteral("unions");
+}
+
+void TestPythonExamples::dataTypesConvert()
+{
+    // Each script checks its values and prints "<script>: ok".
+    QFETCH(QString, script);
     QProcess python;
     python.setProcessEnvironment(m_scripts.environment());
-    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {testScript(QStringLiteral("widechars.py"))});
+    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {testScript(script + QStringLiteral(".py"))});
     QVERIFY(python.waitForFinished(runTimeoutMs));
     const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
     QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0, qPrintable(output));
-    QVERIFY2(output.contains(QLatin1String("widechars: ok")), qPrintable(output));
+    QVERIFY2(output.contains(script + QStringLiteral(": ok")), qPrintable(output));
 }
 
 QTEST_GUILESS_MAIN(TestPythonExamples)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "pyvalueconverter.h"
 
+#include "cdrcodec.h"
+
 #include <QJsonArray>
 #include <QJsonObject>
 
@@ -146,7 +148,21 @@ QJsonValue PyValueConverter::namedToJson(const QString &name, py::handle value, 
     }
     if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd())
         return enumToJson(*it, value, path);
+    if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd())
+        return unionToJson(*it, value, path);
     refuse(path, QStringLiteral("the type %1 is not supported yet").arg(name));
+}
+
+QJsonValue PyValueConverter::unionToJson(const Codegen::IdlUnion &type, py::handle value, const QString &path) const
+{
+    if (!py::hasattr(value, "_d") || !py::hasattr(value, "_v"))
+        refuse(path, QStringLiteral("a %1 (with _d and _v) is needed").arg(type.scopedName));
+    const QJsonValue discriminator = toJson(type.discriminator, value.attr("_d"), path + QStringLiteral("._d"));
+    QJsonObject object{{QStringLiteral("_d"), discriminator}};
+    if (const Codegen::IdlUnionCase *chosen = Codegen::CdrCodec::unionCase(type, discriminator))
+        object.insert(chosen->member.name,
+                      toJson(chosen->member.type, value.attr("_v"), path + QLatin1Char('.') + chosen->member.name));
+    return object;
 }
 
 QJsonValue PyValueConverter::enumToJson(const Codegen::IdlEnum &type, py::handle value, const QString &path) const
@@ -231,6 +247,15 @@ py::object PyValueConverter::namedToPython(const QString &name, const QJsonValue
     }
     if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd())
         return classOf(name).attr("_items")[py::int_(it->enumerators.indexOf(value.toString()))];
+    if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd()) {
+        const py::object cls = classOf(name);
+        py::object object = cls.attr("__new__")(cls);
+        const QJsonValue discriminator = value[QStringLiteral("_d")];
+        const Codegen::IdlUnionCase *chosen = Codegen::CdrCodec::unionCase(*it, discriminator);
+        py::setattr(object, "_d", toPython(it->discriminator, discriminator));
+        py::setattr(object, "_v", chosen ? toPython(chosen->member.type, value[chosen->member.name]) : py::none());
+        return object;
+    }
     return py::none();
 }
 
