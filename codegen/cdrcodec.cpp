@@ -79,6 +79,14 @@ QJsonValue floatValue(double value)
     return value;
 }
 
+/// `string`, as an IOR's type id is written.
+IdlType plainString()
+{
+    IdlType type;
+    type.kind = IdlType::Kind::String;
+    return type;
+}
+
 /// The failure of one decode or encode, with the member path where it happened.
 struct Failure
 {
@@ -131,6 +139,8 @@ public:
         case IdlType::Kind::Basic: {
             if (type.name == QLatin1String("wchar"))
                 return readWChar();
+            if (type.name == QLatin1String("Object"))
+                return readObjectReference();
             const std::optional<Primitive> kind = primitive(type.name);
             if (!kind)
                 fail(QStringLiteral("values of type '%1' cannot be shown").arg(type.name));
@@ -242,7 +252,31 @@ private:
         }
         if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd())
             return readUnion(*it);
+        if (m_model.interfaces.contains(name))
+            return readObjectReference();
         fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));
+    }
+
+    /// An IOR: null when nil (no type id, no profiles), else its type id and tagged profiles.
+    QJsonValue readObjectReference()
+    {
+        const QJsonValue typeId = read(plainString());
+        const quint32 count = quint32(readUnsigned(4));
+        if (count > remaining())
+            fail(QStringLiteral("object reference of %1 profiles where %2 bytes remain").arg(count).arg(remaining()));
+        QJsonArray profiles;
+        for (quint32 i = 0; i < count; ++i) {
+            const qint64 tag = qint64(readUnsigned(4));
+            const quint32 length = quint32(readUnsigned(4));
+            if (length > remaining())
+                fail(QStringLiteral("profile of %1 bytes where %2 remain").arg(length).arg(remaining()));
+            profiles.append(QJsonObject{{QStringLiteral("tag"), tag},
+                                        {QStringLiteral("data"), QString::fromLatin1(m_bytes.mid(m_position, length).toHex())}});
+            m_position += length;
+        }
+        if (typeId.toString().isEmpty() && profiles.isEmpty())
+            return QJsonValue::Null;
+        return QJsonObject{{QStringLiteral("type_id"), typeId}, {QStringLiteral("profiles"), profiles}};
     }
 
     QJsonValue readUnion(const IdlUnion &type)
@@ -339,6 +373,10 @@ public:
                 writeWChar(value);
                 return;
             }
+            if (type.name == QLatin1String("Object")) {
+                writeObjectReference(value);
+                return;
+            }
             const std::optional<Primitive> kind = primitive(type.name);
             if (!kind)
                 fail(QStringLiteral("values of type '%1' cannot be written").arg(type.name));
@@ -388,6 +426,23 @@ public:
     }
 
 private:
+    /// An IOR from readObjectReference()'s form; null (or nothing) is the nil reference.
+    void writeObjectReference(const QJsonValue &value)
+    {
+        if (!value.isObject() && !value.isUndefined() && !value.isNull())
+            fail(QStringLiteral("an object reference {\"type_id\": …, \"profiles\": […]} or null is expected"));
+        const QJsonObject object = value.toObject();
+        write(plainString(), object.value(QStringLiteral("type_id")));
+        const QJsonArray profiles = object.value(QStringLiteral("profiles")).toArray();
+        writeUnsigned(4, quint64(profiles.size()));
+        for (const QJsonValue &profile : profiles) {
+            writeUnsigned(4, quint64(profile[QStringLiteral("tag")].toInteger()));
+            const QByteArray data = QByteArray::fromHex(profile[QStringLiteral("data")].toString().toLatin1());
+            writeUnsigned(4, quint64(data.size()));
+            m_bytes.append(data);
+        }
+    }
+
     /// A union as {"_d": discriminator, "<member>": value}: the discriminator, then the member it
     /// selects. Without "_d", the first case's first label.
     void writeUnion(const IdlUnion &type, const QJsonValue &value)
@@ -483,6 +538,10 @@ private:
         }
         if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd()) {
             writeUnion(*it, value);
+            return;
+        }
+        if (m_model.interfaces.contains(name)) {
+            writeObjectReference(value);
             return;
         }
         fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));

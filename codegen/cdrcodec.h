@@ -17,8 +17,9 @@ namespace Codegen {
  * integers, and non-finite floats the strings "NaN", "Infinity" and "-Infinity".
  *
  * Types are the scoped names of an IdlModel (`RTC::TimedLong`); a union is
- * `{"_d": discriminator, "<member>": value}` with the member the discriminator selects; `any`,
- * object references, `fixed` and `long double` are refused with an error naming the member.
+ * `{"_d": discriminator, "<member>": value}` with the member the discriminator selects; an object
+ * reference is null when nil, else its IOR as `{"type_id": …, "profiles": [{"tag": n, "data": hex}]}`;
+ * `any`, TypeCode, `fixed` and `long double` are refused with an error naming the member.
  */
 class CdrCodec
 {

@@ -15,6 +15,27 @@ class Interface(object):
         return "<interface %s>" % self._NP_RepositoryId
 
 
+class ObjectReference(object):
+    """An object reference carried in a data type (RTC.PortProfile's port_ref, …) as its IOR: the type id
+    and the tagged profiles, kept to be sent on as they came. A nil reference is None, as in omniORBpy."""
+
+    def __init__(self, type_id, profiles):
+        self._NP_RepositoryId = type_id
+        self._profiles = list(profiles)
+
+    def __repr__(self):
+        return "<object reference %s>" % self._NP_RepositoryId
+
+    def __eq__(self, other):
+        return isinstance(other, ObjectReference) and (self._NP_RepositoryId, self._profiles) == (
+            other._NP_RepositoryId, other._profiles)
+
+    def __ne__(self, other):
+        return not self == other
+
+    __hash__ = None
+
+
 _REFERENCES = {
     "RTC": ["LightweightRTObject", "RTObject", "DataFlowComponent", "ExecutionContext",
             "ExecutionContextService"],

@@ -8,6 +8,7 @@
 #include <BasicDataType.hh>
 #include <ExtendedDataTypes.hh>
 #include <InterfaceDataTypes.hh>
+#include <RTC.hh>
 #include <SDOPackage.hh>
 
 #include <QDateTime>
@@ -57,6 +58,7 @@ private slots:
     void wideCharactersMatchOmniOrb_data();
     void wideCharactersMatchOmniOrb();
     void unionsMatchOmniOrb();
+    void objectReferencesMatchOmniOrb();
     void bigEndianRoundTrip();
     void malformedSamplesAreReported_data();
     void malformedSamplesAreReported();
@@ -238,6 +240,37 @@ void TestCdrCodec::unionsMatchOmniOrb()
                           &error),
              QJsonValue(json(R"({"_d":"SHORT_TYPE","short_value":0})")));
     QVERIFY2(error.isEmpty(), qPrintable(error));
+}
+
+void TestCdrCodec::objectReferencesMatchOmniOrb()
+{
+    // A port profile with nil references, and one holding a reference to a live object of this ORB.
+    const CdrCodec codec(m_library.model());
+    QString error;
+    RTC::PortProfile nilProfile;
+    nilProfile.name = CORBA::string_dup("in");
+    const QJsonValue nilValue = codec.decode("RTC::PortProfile", marshal(nilProfile), true, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QVERIFY(nilValue["port_ref"].isNull() && nilValue["owner"].isNull());
+    QVERIFY(sameSample(codec, "RTC::PortProfile", codec.encode("RTC::PortProfile", nilValue, true, &error),
+                       marshal(nilProfile)));
+
+    RTC::PortProfile profile;
+    profile.name = CORBA::string_dup("out");
+    CORBA::Object_var object = m_orb->string_to_object("corbaloc::127.0.0.1:2809/NameService");
+    profile.owner = RTC::RTObject::_unchecked_narrow(object);
+    const QByteArray theirs = marshal(profile);
+    const QJsonValue value = codec.decode("RTC::PortProfile", theirs, true, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(value["owner"]["profiles"].toArray().size(), 1);
+    const QByteArray ours = codec.encode("RTC::PortProfile", value, true, &error);
+    QVERIFY(sameSample(codec, "RTC::PortProfile", ours, theirs));
+    // omniORB reads the reference we wrote as the object it wrote.
+    cdrMemoryStream stream;
+    stream.put_octet_array(reinterpret_cast<const CORBA::Octet *>(ours.constData()), CORBA::ULong(ours.size()));
+    RTC::PortProfile decoded;
+    decoded <<= stream;
+    QVERIFY(decoded.owner->_is_equivalent(object));
 }
 
 void TestCdrCodec::bigEndianRoundTrip()

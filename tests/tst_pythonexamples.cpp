@@ -13,8 +13,8 @@
 // with two configuration sets and every configuration listener; a Python module's component as
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
-// leaves the master serving; wide characters and unions in samples (data/python/widechars.py,
-// unions.py).
+// leaves the master serving; wide characters, unions and object references in samples
+// (data/python/widechars.py, unions.py, references.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
@@ -372,6 +372,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::addColumn<QString>("script");
     QTest::newRow("wide characters") << QStringLiteral("widechars");
     QTest::newRow("unions") << QStringLiteral("unions");
+    QTest::newRow("object references") << QStringLiteral("references");
 }
 
 void TestPythonExamples::dataTypesConvert()

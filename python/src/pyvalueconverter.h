@@ -14,8 +14,9 @@ namespace RtPython {
  * mapping: a struct is an object of its class with one attribute per member, an enum value one of
  * its class's items (`RTC.RTC_OK`), integers are int, floating types float, `char` and strings str,
  * `sequence<octet>` bytes, other sequences and arrays lists, a union an object of its class with
- * the discriminator in `_d` and the value in `_v`. `any`, TypeCode and object references are
- * refused (not yet mapped).
+ * the discriminator in `_d` and the value in `_v`, an object reference None when nil and else a
+ * `_rtstudio_interfaces.ObjectReference` holding its IOR. `any` and TypeCode are refused (not yet
+ * mapped).
  */
 class PyValueConverter
 {
@@ -33,6 +34,9 @@ private:
     QJsonValue listToJson(const Codegen::IdlType &element, pybind11::handle value, const QString &path) const;
     QJsonValue namedToJson(const QString &name, pybind11::handle value, const QString &path) const;
     QJsonValue unionToJson(const Codegen::IdlUnion &type, pybind11::handle value, const QString &path) const;
+    QJsonValue referenceToJson(pybind11::handle value, const QString &path) const;
+    pybind11::object referenceToPython(const QJsonValue &value) const;
+    static pybind11::object referenceClass();
     QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
     pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
     pybind11::object listToPython(const Codegen::IdlType &element, const QJsonValue &value) const;
