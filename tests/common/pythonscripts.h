@@ -36,12 +36,13 @@ public:
     {
     }
 
-    /// python3 finds the packages; output is unbuffered, so the test sees it as printed. Leaks are
-    /// not checked under the sanitizers (the interpreter keeps its objects until exit by design).
-    QProcessEnvironment environment() const
+    /// python3 finds the packages (at @p packages, by default those given above); output is
+    /// unbuffered, so the test sees it as printed. Leaks are not checked under the sanitizers (the
+    /// interpreter keeps its objects until exit by design).
+    QProcessEnvironment environment(const QString &packages = {}) const
     {
         QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-        environment.insert(QStringLiteral("PYTHONPATH"), m_packages);
+        environment.insert(QStringLiteral("PYTHONPATH"), packages.isEmpty() ? m_packages : packages);
         environment.insert(QStringLiteral("PYTHONUNBUFFERED"), QStringLiteral("1"));
         if (!m_preload.isEmpty()) {
             environment.insert(QStringLiteral("LD_PRELOAD"), m_preload);
