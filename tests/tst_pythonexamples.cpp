@@ -165,8 +165,10 @@ void TestPythonExamples::configSampleRunsUnchanged()
     // ConfigSample activates itself through get_owned_contexts() and prints its variables each cycle.
     QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("Active Configuration Set:  mode1")),
                               qPrintable(printed(sample).right(2000)), runTimeoutMs);
-    QVERIFY2(printed(sample).contains(QLatin1String("int_param0:        [-999]")), qPrintable(printed(sample).right(2000)));
-    QVERIFY2(printed(sample).contains(QLatin1String("vector_param0[ 8 ]:  9.0")), qPrintable(printed(sample).right(2000)));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("int_param0:        [-999]")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("vector_param0[ 8 ]:  9.0")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
 
     QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "set", "int_param0", "17"}));
     QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "set", "str_param1", "changed"}));
