@@ -256,6 +256,7 @@ void TestPythonExamples::compositeRunsUnchanged()
     QVERIFY2(values.first() > 0 && values.first() % 8 == 0, qPrintable(QString::number(values.first())));
     QVERIFY(rtctlSucceeds({"deact", "PeriodicECSharedComposite0.rtc"}));
     QTRY_VERIFY_WITH_TIMEOUT(!motorActive(), runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"deact", "CompositeFeed.rtc"}));
     m_live.stop(server);
 }
 
