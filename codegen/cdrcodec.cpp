@@ -205,12 +205,12 @@ private:
     /// mark comes first (omniORB writes wide strings in the machine's order after one).
     QString readUtf16(quint32 length)
     {
-        const uchar *at = reinterpret_cast<const uchar *>(m_bytes.constData()) + m_position;
-        m_position += length;
+        const QByteArray bytes = readOctets(length);
         bool big = true;
         QString text;
         for (quint32 i = 0; i + 1 < length; i += 2) {
-            const char16_t unit = big ? char16_t(at[i] << 8 | at[i + 1]) : char16_t(at[i + 1] << 8 | at[i]);
+            const uchar high = uchar(bytes[i]), low = uchar(bytes[i + 1]);
+            const char16_t unit = big ? char16_t(high << 8 | low) : char16_t(low << 8 | high);
             if (i == 0 && (unit == 0xFEFF || unit == 0xFFFE)) {
                 big = unit == 0xFEFF;
                 continue;
@@ -218,6 +218,16 @@ private:
             text.append(QChar(unit));
         }
         return text;
+    }
+
+    /// @p length octets as they are (the caller has checked that they remain).
+    QByteArray readOctets(quint32 length)
+    {
+        QByteArray bytes;
+        bytes.reserve(qsizetype(length));
+        for (quint32 i = 0; i < length; ++i)
+            bytes.append(char(readUnsigned(1, /*aligned=*/false)));
+        return bytes;
     }
 
     QJsonValue readArray(const IdlType &element, const QStringList &dimensions, int level)
@@ -271,8 +281,7 @@ private:
             if (length > remaining())
                 fail(QStringLiteral("profile of %1 bytes where %2 remain").arg(length).arg(remaining()));
             profiles.append(QJsonObject{{QStringLiteral("tag"), tag},
-                                        {QStringLiteral("data"), QString::fromLatin1(m_bytes.mid(m_position, length).toHex())}});
-            m_position += length;
+                                        {QStringLiteral("data"), QString::fromLatin1(readOctets(length).toHex())}});
         }
         if (typeId.toString().isEmpty() && profiles.isEmpty())
             return QJsonValue::Null;
