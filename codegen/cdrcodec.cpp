@@ -79,6 +79,14 @@ QJsonValue floatValue(double value)
     return value;
 }
 
+/// `string`, as an IOR's type id is written.
+IdlType plainString()
+{
+    IdlType type;
+    type.kind = IdlType::Kind::String;
+    return type;
+}
+
 /// The failure of one decode or encode, with the member path where it happened.
 struct Failure
 {
@@ -129,6 +137,10 @@ public:
         const IdlType type = resolved(written);
         switch (type.kind) {
         case IdlType::Kind::Basic: {
+            if (type.name == QLatin1String("wchar"))
+                return readWChar();
+            if (type.name == QLatin1String("Object"))
+                return readObjectReference();
             const std::optional<Primitive> kind = primitive(type.name);
             if (!kind)
                 fail(QStringLiteral("values of type '%1' cannot be shown").arg(type.name));
@@ -144,14 +156,11 @@ public:
             return QString::fromUtf8(text);
         }
         case IdlType::Kind::WString: {
-            // GIOP 1.2: the length in bytes, then UTF-16 code units in the stream's byte order.
+            // GIOP 1.2: the length in bytes, then UTF-16 (see readUtf16).
             const quint32 length = quint32(readUnsigned(4));
             if (length % 2 != 0 || !m_input.available(length))
                 fail(QStringLiteral("wide string of %1 bytes where %2 remain").arg(length).arg(left()));
-            QString text;
-            for (quint32 i = 0; i < length / 2; ++i)
-                text.append(QChar(char16_t(readUnsigned(2, /*align=*/false))));
-            return text;
+            return readUtf16(length);
         }
         case IdlType::Kind::Sequence: {
             const quint32 count = quint32(readUnsigned(4));
@@ -179,6 +188,47 @@ public:
     }
 
 private:
+    /// GIOP 1.2's wchar: its length in one octet, then UTF-16 (see readUtf16); one character.
+    QJsonValue readWChar()
+    {
+        const quint32 length = quint32(readUnsigned(1));
+        if (length % 2 != 0 || !m_input.available(length))
+            fail(QStringLiteral("wide character of %1 bytes where %2 remain").arg(length).arg(left()));
+        const QString text = readUtf16(length);
+        if (text.size() != 1)
+            fail(QStringLiteral("a wide character of %1 code units").arg(text.size()));
+        return text;
+    }
+
+    /// @p length bytes of UTF-16: big-endian whatever the stream's byte order, unless a byte-order
+    /// mark comes first (omniORB writes wide strings in the machine's order after one).
+    QString readUtf16(quint32 length)
+    {
+        const QByteArray bytes = readOctets(length);
+        bool big = true;
+        QString text;
+        for (quint32 i = 0; i + 1 < length; i += 2) {
+            const uchar high = uchar(bytes[i]), low = uchar(bytes[i + 1]);
+            const char16_t unit = big ? char16_t(high << 8 | low) : char16_t(low << 8 | high);
+            if (i == 0 && (unit == 0xFEFF || unit == 0xFFFE)) {
+                big = unit == 0xFEFF;
+                continue;
+            }
+            text.append(QChar(unit));
+        }
+        return text;
+    }
+
+    /// @p length octets as they are (the caller has checked that they remain).
+    QByteArray readOctets(quint32 length)
+    {
+        QByteArray bytes;
+        bytes.reserve(qsizetype(length));
+        for (quint32 i = 0; i < length; ++i)
+            bytes.append(char(readUnsigned(1, /*aligned=*/false)));
+        return bytes;
+    }
+
     QJsonValue readArray(const IdlType &element, const QStringList &dimensions, int level)
     {
         const int count = dimensions.value(level).toInt();
@@ -211,25 +261,36 @@ private:
         }
         if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd())
             return readUnion(*it);
+        if (m_model.interfaces.contains(name))
+            return readObjectReference();
         fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));
+    }
+
+    /// An IOR: null when nil (no type id, no profiles), else its type id and tagged profiles.
+    QJsonValue readObjectReference()
+    {
+        const QJsonValue typeId = read(plainString());
+        const quint32 count = quint32(readUnsigned(4));
+        if (!m_input.available(count))
+            fail(QStringLiteral("object reference of %1 profiles where %2 remain").arg(count).arg(left()));
+        QJsonArray profiles;
+        for (quint32 i = 0; i < count; ++i) {
+            const qint64 tag = qint64(readUnsigned(4));
+            const quint32 length = quint32(readUnsigned(4));
+            if (!m_input.available(length))
+                fail(QStringLiteral("profile of %1 bytes where %2 remain").arg(length).arg(left()));
+            profiles.append(QJsonObject{{QStringLiteral("tag"), tag},
+                                        {QStringLiteral("data"), QString::fromLatin1(readOctets(length).toHex())}});
+        }
+        if (typeId.toString().isEmpty() && profiles.isEmpty())
+            return QJsonValue::Null;
+        return QJsonObject{{QStringLiteral("type_id"), typeId}, {QStringLiteral("profiles"), profiles}};
     }
 
     QJsonValue readUnion(const IdlUnion &type)
     {
         const QJsonValue discriminator = read(type.discriminator);
-        const QString label = discriminator.isString()
-            ? discriminator.toString()
-            : discriminator.isBool() ? (discriminator.toBool() ? QStringLiteral("TRUE") : QStringLiteral("FALSE"))
-                                     : QString::number(discriminator.toInteger());
-        const IdlUnionCase *chosen = nullptr;
-        for (const IdlUnionCase &c : type.cases) {
-            for (const QString &l : c.labels) {
-                if (l == label || l.section(QStringLiteral("::"), -1) == label)
-                    chosen = &c;
-            }
-            if (!chosen && c.isDefault)
-                chosen = &c;
-        }
+        const IdlUnionCase *chosen = CdrCodec::unionCase(type, discriminator);
         QJsonObject object {{QStringLiteral("_d"), discriminator}};
         if (chosen) {
             enter(QLatin1Char('.') + chosen->member.name);
@@ -311,6 +372,14 @@ public:
         const IdlType type = resolved(written);
         switch (type.kind) {
         case IdlType::Kind::Basic: {
+            if (type.name == QLatin1String("wchar")) {
+                writeWChar(value);
+                return;
+            }
+            if (type.name == QLatin1String("Object")) {
+                writeObjectReference(value);
+                return;
+            }
             const std::optional<Primitive> kind = primitive(type.name);
             if (!kind)
                 fail(QStringLiteral("values of type '%1' cannot be written").arg(type.name));
@@ -330,8 +399,7 @@ public:
         case IdlType::Kind::WString: {
             const QString text = value.toString();
             writeUnsigned(4, quint64(text.size() * 2));
-            for (const QChar c : text)
-                writeUnsigned(2, c.unicode(), /*align=*/false);
+            writeUtf16(text);
             return;
         }
         case IdlType::Kind::Sequence: {
@@ -360,6 +428,62 @@ public:
     }
 
 private:
+    /// An IOR from readObjectReference()'s form; null (or nothing) is the nil reference.
+    void writeObjectReference(const QJsonValue &value)
+    {
+        if (!value.isObject() && !value.isUndefined() && !value.isNull())
+            fail(QStringLiteral("an object reference {\"type_id\": …, \"profiles\": […]} or null is expected"));
+        const QJsonObject object = value.toObject();
+        write(plainString(), object.value(QStringLiteral("type_id")));
+        const QJsonArray profiles = object.value(QStringLiteral("profiles")).toArray();
+        writeUnsigned(4, quint64(profiles.size()));
+        for (const QJsonValue &profile : profiles) {
+            writeUnsigned(4, quint64(profile[QStringLiteral("tag")].toInteger()));
+            const QByteArray data = QByteArray::fromHex(profile[QStringLiteral("data")].toString().toLatin1());
+            writeUnsigned(4, quint64(data.size()));
+            m_bytes.append(data);
+        }
+    }
+
+    /// A union as {"_d": discriminator, "<member>": value}: the discriminator, then the member it
+    /// selects. Without "_d", the first case's first label.
+    void writeUnion(const IdlUnion &type, const QJsonValue &value)
+    {
+        if (!value.isObject() && !value.isUndefined() && !value.isNull())
+            fail(QStringLiteral("an object {\"_d\": …} is expected for %1").arg(type.scopedName));
+        const QJsonObject object = value.toObject();
+        QJsonValue discriminator = object.value(QStringLiteral("_d"));
+        if (discriminator.isUndefined() && !type.cases.isEmpty() && !type.cases.front().labels.isEmpty())
+            discriminator = CdrCodec::labelValue(m_model, type, type.cases.front().labels.front());
+        enter(QStringLiteral("._d"));
+        write(type.discriminator, discriminator);
+        leave();
+        if (const IdlUnionCase *chosen = CdrCodec::unionCase(type, discriminator)) {
+            enter(QLatin1Char('.') + chosen->member.name);
+            write(chosen->member.type, object.value(chosen->member.name));
+            leave();
+        }
+    }
+
+    /// GIOP 1.2's wchar: two octets of big-endian UTF-16 after their length, as omniORB writes it.
+    void writeWChar(const QJsonValue &value)
+    {
+        const QString text = value.isUndefined() || value.isNull() ? QString(QChar(0)) : value.toString();
+        if (text.size() != 1)
+            fail(QStringLiteral("one wide character is expected"));
+        writeUnsigned(1, 2);
+        writeUtf16(text);
+    }
+
+    /// Big-endian UTF-16 without a byte-order mark: how GIOP 1.2 reads UTF-16 that has none.
+    void writeUtf16(const QString &text)
+    {
+        for (const QChar c : text) {
+            m_bytes.append(char(c.unicode() >> 8));
+            m_bytes.append(char(c.unicode() & 0xff));
+        }
+    }
+
     void writeArray(const IdlType &element, const QStringList &dimensions, int level,
                     const QJsonValue &value)
     {
@@ -414,8 +538,14 @@ private:
             writeUnsigned(4, quint64(index));
             return;
         }
-        if (m_model.unions.contains(name))
-            fail(QStringLiteral("union values cannot be written"));
+        if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd()) {
+            writeUnion(*it, value);
+            return;
+        }
+        if (m_model.interfaces.contains(name)) {
+            writeObjectReference(value);
+            return;
+        }
         fail(QStringLiteral("type '%1' is not declared in the IDL files").arg(name));
     }
 
@@ -650,6 +780,36 @@ QString CdrCodec::jsonText(const QJsonValue &value)
 CdrCodec::CdrCodec(const IdlModel &model)
     : m_model(model)
 { }
+
+const IdlUnionCase *CdrCodec::unionCase(const IdlUnion &type, const QJsonValue &discriminator)
+{
+    const QString label = discriminator.isString()
+        ? discriminator.toString().section(QStringLiteral("::"), -1)
+        : discriminator.isBool() ? (discriminator.toBool() ? QStringLiteral("TRUE") : QStringLiteral("FALSE"))
+                                 : QString::number(discriminator.toInteger());
+    const IdlUnionCase *fallback = nullptr;
+    for (const IdlUnionCase &c : type.cases) {
+        for (const QString &l : c.labels) {
+            if (l.section(QStringLiteral("::"), -1) == label)
+                return &c;
+        }
+        if (c.isDefault)
+            fallback = &c;
+    }
+    return fallback;
+}
+
+QJsonValue CdrCodec::labelValue(const IdlModel &model, const IdlUnion &type, const QString &label)
+{
+    const IdlType discriminator = model.resolve(type.discriminator);
+    if (discriminator.kind == IdlType::Kind::Named)
+        return label.section(QStringLiteral("::"), -1);
+    if (discriminator.name == QLatin1String("boolean"))
+        return label == QLatin1String("TRUE");
+    if (discriminator.name == QLatin1String("char") || discriminator.name == QLatin1String("wchar"))
+        return label.mid(1, label.size() - 2);
+    return label.toLongLong(nullptr, 0);
+}
 
 QString CdrCodec::typeName(const QString &dataType)
 {

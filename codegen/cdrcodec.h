@@ -38,8 +38,10 @@ public:
  * are arrays, enums are their enumerator names, `char` a one-letter string, `long long` exact
  * integers, and non-finite floats the strings "NaN", "Infinity" and "-Infinity".
  *
- * Types are the scoped names of an IdlModel (`RTC::TimedLong`); `any`, object references,
- * `fixed` and `long double` are refused with an error naming the member.
+ * Types are the scoped names of an IdlModel (`RTC::TimedLong`); a union is
+ * `{"_d": discriminator, "<member>": value}` with the member the discriminator selects; an object
+ * reference is null when nil, else its IOR as `{"type_id": …, "profiles": [{"tag": n, "data": hex}]}`;
+ * `any`, TypeCode, `fixed` and `long double` are refused with an error naming the member.
  */
 class CdrCodec
 {
@@ -49,6 +51,13 @@ public:
     /// The scoped name of an OpenRTM data type id: `IDL:RTC/TimedLong:1.0` → `RTC::TimedLong`;
     /// a scoped name is returned as it is.
     static QString typeName(const QString &dataType);
+
+    /// The case of @p type that @p discriminator (a value of the union's discriminator) selects:
+    /// the one with its label, else the default case; null when none.
+    static const IdlUnionCase *unionCase(const IdlUnion &type, const QJsonValue &discriminator);
+    /// Case label @p label of @p type as a value of its discriminator (an enumerator's name, a
+    /// number, a boolean or a character).
+    static QJsonValue labelValue(const IdlModel &model, const IdlUnion &type, const QString &label);
 
     /// True when the model declares @p type (a struct, union, enum or typedef).
     bool knows(const QString &type) const;

@@ -224,6 +224,7 @@ RTC::ReturnCode_t RtObject::initialize()
         releaseSdoConfiguration();
         return result;
     }
+    activateConfiguredSet();
     m_config.update();
     std::vector<ExecutionContext *> contexts;
     {
@@ -234,6 +235,15 @@ RTC::ReturnCode_t RtObject::initialize()
     for (ExecutionContext *context : contexts)
         context->start();
     return RTC::RTC_OK;
+}
+
+void RtObject::activateConfiguredSet()
+{
+    // As OpenRTM-aist: a component's configuration file may name the set it starts with
+    // (configuration.active_config); without one, or naming a set it does not define, nothing changes.
+    const std::string configured = properties().value("configuration.active_config");
+    if (!configured.empty() && configured != m_config.activeSetId() && m_config.hasSet(configured))
+        m_config.activate(configured);
 }
 
 RTC::ExecutionContextHandle_t RtObject::bindContext(ExecutionContext *context)

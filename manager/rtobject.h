@@ -152,6 +152,8 @@ protected:
 
 private:
     bool createOwnedContext();
+    /// Activates the configuration set that configuration.active_config names, when there is one.
+    void activateConfiguredSet();
     void releaseOwnedContexts();
     /// Deactivates and releases the SDO configuration servant, when there is one.
     void releaseSdoConfiguration();

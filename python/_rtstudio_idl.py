@@ -97,6 +97,69 @@ class Enum(object):
         return self._items[value]
 
 
+class UnionBase(object):
+    """An IDL union as omniORBpy has it: the discriminator in _d, the value in _v, made as
+    Numeric(_d, _v) or Numeric(long_value=5); a member's name reads or sets the value of its case."""
+
+    _NP_RepositoryId = None
+    _cases = ()  # (member, discriminator values, is default)
+
+    def __init__(self, *args, **kwargs):
+        if len(args) == 2 and not kwargs:
+            self._d, self._v = args
+        elif not args and len(kwargs) == 1:
+            name, value = next(iter(kwargs.items()))
+            setattr(self, name, value)
+        else:
+            raise TypeError("%s() takes (_d, _v) or one member=value" % self._NP_ClassName)
+
+    @classmethod
+    def _case(cls, name):
+        for member, labels, is_default in cls._cases:
+            if member == name:
+                return labels, is_default
+        return None
+
+    def _member(self):
+        """The member the discriminator selects (None when no case does)."""
+        default = None
+        for member, labels, is_default in self._cases:
+            if self._d in labels:
+                return member
+            if is_default:
+                default = member
+        return default
+
+    def __getattr__(self, name):
+        if name.startswith("_") or self._case(name) is None:
+            raise AttributeError(name)
+        if self._member() != name:
+            raise ValueError("%s holds %s, not %s" % (self._NP_ClassName, self._member(), name))
+        return self._v
+
+    def __setattr__(self, name, value):
+        case = None if name.startswith("_") else self._case(name)
+        if case is None:
+            object.__setattr__(self, name, value)
+            return
+        labels, _ = case
+        if not labels:
+            raise ValueError("%s.%s is the default case: set _d and _v" % (self._NP_ClassName, name))
+        object.__setattr__(self, "_d", labels[0])
+        object.__setattr__(self, "_v", value)
+
+    def __repr__(self):
+        return "%s(_d=%r, _v=%r)" % (self._NP_ClassName, self._d, self._v)
+
+    def __eq__(self, other):
+        return type(self) is type(other) and (self._d, self._v) == (other._d, other._v)
+
+    def __ne__(self, other):
+        return not self == other
+
+    __hash__ = None
+
+
 def _scope(scopes, scoped_name):
     """The namespace dict of the scope enclosing scoped_name (nested scopes become module objects)."""
     parts = scoped_name.split("::")[:-1]
@@ -131,6 +194,18 @@ def _make_types():
         scope[scoped_name.split("::")[-1]] = enum
         for item in enum._items:
             scope[item._n] = item
+    for scoped_name, (enum_name, _, cases) in description["unions"].items():
+        leaf = scoped_name.split("::")[-1]
+        enum = classes.get(enum_name)
+        cls = type(leaf, (UnionBase,), {
+            "_NP_RepositoryId": _repository_id(scoped_name),
+            "_NP_ClassName": _python_name(scoped_name),
+            "_cases": tuple((member, [enum._items[[item._n for item in enum._items].index(label)]
+                                      if enum else label for label in labels], is_default)
+                            for member, labels, is_default in cases),
+        })
+        classes[scoped_name] = cls
+        _scope(scopes, scoped_name)[leaf] = cls
     for scoped_name, value in description["consts"].items():
         _scope(scopes, scoped_name)[scoped_name.split("::")[-1]] = value
     _rtstudio.set_idl_classes(classes)

@@ -62,3 +62,16 @@ target_compile_definitions(tst_pythonservice PRIVATE
     RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
 add_dependencies(tst_pythonservice rtmanager rtctl rtpython rtsdk)
 set_tests_properties(tst_pythonservice PROPERTIES LABELS python TIMEOUT 600)
+# OpenRTM-aist-Python's other examples unchanged (shared corpus) and components of ours with the same
+# abilities, standalone and as modules of rtmanager.
+if(TARGET rtpymodules)
+    rtstudio_add_test(tst_pythonexamples SOURCES tst_pythonexamples.cpp
+        LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
+    target_compile_definitions(tst_pythonexamples PRIVATE
+        RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+        RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
+        RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+        RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
+    add_dependencies(tst_pythonexamples rtmanager rtctl rtpython rtpymodules rtsdk)
+    set_tests_properties(tst_pythonexamples PROPERTIES LABELS python TIMEOUT 600)
+endif()

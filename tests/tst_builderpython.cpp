@@ -51,18 +51,10 @@ const char userCode[] = R"(    def onExecute(self, ec_id):
 const char generatedExecute[] = "    def onExecute(self, ec_id):\n        return RTC.RTC_OK\n";
 
 /// The Builder's data types that Python cannot carry yet, and why (the CDR conversion by IDL type
-/// knows no object references, unions, any, TypeCode or wchar).
+/// knows no any or TypeCode: their values carry a TypeCode, which it does not read or write).
 const QHash<QString, QString> unsupportedTypes{
-    {"RTC::ComponentProfile", "holds an object reference"},
-    {"RTC::ExecutionContextProfile", "holds an object reference"},
-    {"RTC::FsmBehaviorProfile", "holds an object reference"},
-    {"RTC::PortProfile", "holds an object reference"},
-    {"SDOPackage::ServiceProfile", "holds an object reference"},
-    {"SDOPackage::IntervalType", "holds a union"},
-    {"SDOPackage::RangeType", "holds a union"},
     {"SDOPackage::NameValue", "holds an any"},
     {"SDOPackage::Parameter", "holds a TypeCode"},
-    {"RTC::TimedWChar", "holds a wchar"},
 };
 
 } // namespace

@@ -8,6 +8,8 @@
 #include <BasicDataType.hh>
 #include <ExtendedDataTypes.hh>
 #include <InterfaceDataTypes.hh>
+#include <RTC.hh>
+#include <SDOPackage.hh>
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -53,6 +55,10 @@ private slots:
     void cleanupTestCase();
     void typeNames();
     void matchesOmniOrb();
+    void wideCharactersMatchOmniOrb_data();
+    void wideCharactersMatchOmniOrb();
+    void unionsMatchOmniOrb();
+    void objectReferencesMatchOmniOrb();
     void bigEndianRoundTrip();
     void malformedSamplesAreReported_data();
     void malformedSamplesAreReported();
@@ -164,6 +170,107 @@ void TestCdrCodec::matchesOmniOrb()
                  .toString(),
              QString("x"));
     QVERIFY2(error.isEmpty(), qPrintable(error));
+}
+
+void TestCdrCodec::wideCharactersMatchOmniOrb_data()
+{
+    QTest::addColumn<bool>("littleEndian");
+    QTest::newRow("little-endian") << true;
+    QTest::newRow("big-endian") << false;
+}
+
+void TestCdrCodec::wideCharactersMatchOmniOrb()
+{
+    // omniORB writes a wchar as big-endian UTF-16 after its length octet, a wstring in the machine's
+    // order after a byte-order mark; it reads UTF-16 without a mark as big-endian.
+    QFETCH(bool, littleEndian);
+    const CdrCodec codec(m_library.model());
+    QString error;
+    const auto theirs = [littleEndian](const auto &value) {
+        cdrMemoryStream stream;
+        stream.setByteSwapFlag(littleEndian);
+        value >>= stream;
+        return QByteArray(static_cast<const char *>(stream.bufPtr()), int(stream.bufSize()));
+    };
+    const RTC::TimedWChar wchar{{5, 6}, CORBA::WChar(0x3042)};
+    const QJsonObject wcharValue = json(R"({"tm":{"sec":5,"nsec":6},"data":"\u3042"})");
+    QCOMPARE(codec.decode("RTC::TimedWChar", theirs(wchar), littleEndian, &error), QJsonValue(wcharValue));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(codec.encode("RTC::TimedWChar", wcharValue, littleEndian, &error), theirs(wchar));
+
+    RTC::TimedWString wstring{{7, 8}, CORBA::wstring_dup(L"h\u3042!")};
+    const QJsonObject wstringValue = json(R"({"tm":{"sec":7,"nsec":8},"data":"h\u3042!"})");
+    QCOMPARE(codec.decode("RTC::TimedWString", theirs(wstring), littleEndian, &error), QJsonValue(wstringValue));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    const QByteArray ours = codec.encode("RTC::TimedWString", wstringValue, littleEndian, &error);
+    cdrMemoryStream stream;
+    stream.setByteSwapFlag(littleEndian);
+    stream.put_octet_array(reinterpret_cast<const CORBA::Octet *>(ours.constData()), CORBA::ULong(ours.size()));
+    RTC::TimedWString decoded;
+    decoded <<= stream;
+    QCOMPARE(QString::fromWCharArray(decoded.data.in()), QStringLiteral("h\u3042!"));
+    QCOMPARE(decoded.tm.nsec, CORBA::ULong(8));
+}
+
+void TestCdrCodec::unionsMatchOmniOrb()
+{
+    const CdrCodec codec(m_library.model());
+    QString error;
+    SDOPackage::Numeric numeric;
+    numeric.double_value(2.5);
+    const QJsonObject numericValue = json(R"({"_d":"DOUBLE_TYPE","double_value":2.5})");
+    QCOMPARE(codec.decode("SDOPackage::Numeric", marshal(numeric), true, &error), QJsonValue(numericValue));
+    QVERIFY(sameSample(codec, "SDOPackage::Numeric", codec.encode("SDOPackage::Numeric", numericValue, true, &error),
+                       marshal(numeric)));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    // Unions as struct members; the discriminator picks the member written.
+    SDOPackage::RangeType range;
+    range.min.short_value(-3);
+    range.max.long_value(70000);
+    range.min_inclusive = true;
+    range.max_inclusive = false;
+    const QJsonObject rangeValue = json(R"({"min":{"_d":"SHORT_TYPE","short_value":-3},)"
+                                        R"("max":{"_d":"LONG_TYPE","long_value":70000},)"
+                                        R"("min_inclusive":true,"max_inclusive":false})");
+    QCOMPARE(codec.decode("SDOPackage::RangeType", marshal(range), true, &error), QJsonValue(rangeValue));
+    QVERIFY(sameSample(codec, "SDOPackage::RangeType", codec.encode("SDOPackage::RangeType", rangeValue, true, &error),
+                       marshal(range)));
+    // No discriminator given: the first case.
+    QCOMPARE(codec.decode("SDOPackage::Numeric", codec.encode("SDOPackage::Numeric", QJsonObject(), true, &error), true,
+                          &error),
+             QJsonValue(json(R"({"_d":"SHORT_TYPE","short_value":0})")));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+}
+
+void TestCdrCodec::objectReferencesMatchOmniOrb()
+{
+    // A port profile with nil references, and one holding a reference to a live object of this ORB.
+    const CdrCodec codec(m_library.model());
+    QString error;
+    RTC::PortProfile nilProfile;
+    nilProfile.name = CORBA::string_dup("in");
+    const QJsonValue nilValue = codec.decode("RTC::PortProfile", marshal(nilProfile), true, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QVERIFY(nilValue["port_ref"].isNull() && nilValue["owner"].isNull());
+    QVERIFY(sameSample(codec, "RTC::PortProfile", codec.encode("RTC::PortProfile", nilValue, true, &error),
+                       marshal(nilProfile)));
+
+    RTC::PortProfile profile;
+    profile.name = CORBA::string_dup("out");
+    CORBA::Object_var object = m_orb->string_to_object("corbaloc::127.0.0.1:2809/NameService");
+    profile.owner = RTC::RTObject::_unchecked_narrow(object);
+    const QByteArray theirs = marshal(profile);
+    const QJsonValue value = codec.decode("RTC::PortProfile", theirs, true, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(value["owner"]["profiles"].toArray().size(), 1);
+    const QByteArray ours = codec.encode("RTC::PortProfile", value, true, &error);
+    QVERIFY(sameSample(codec, "RTC::PortProfile", ours, theirs));
+    // omniORB reads the reference we wrote as the object it wrote.
+    cdrMemoryStream stream;
+    stream.put_octet_array(reinterpret_cast<const CORBA::Octet *>(ours.constData()), CORBA::ULong(ours.size()));
+    RTC::PortProfile decoded;
+    decoded <<= stream;
+    QVERIFY(decoded.owner->_is_equivalent(object));
 }
 
 void TestCdrCodec::bigEndianRoundTrip()

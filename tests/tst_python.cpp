@@ -11,7 +11,7 @@
 // - two Python components of one process, configuration parameters, a generated Python project;
 // - the IDL types' Python classes and CDR (data/python/datatypes.py), from the build tree and installed.
 #include "hostrtctl.h"
-#include "pythonenvironment.h"
+#include "pythonscripts.h"
 
 #include <QtTest>
 
@@ -28,11 +28,6 @@ QString corpusDir()
 QString testScript(const QString &name)
 {
     return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
-}
-
-QProcessEnvironment pythonEnvironment(const QString &packages = QStringLiteral(RTSTUDIO_PYTHON_PATH))
-{
-    return LiveTest::pythonEnvironment(packages, QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD));
 }
 
 } // namespace
@@ -60,8 +55,6 @@ private:
     QString status(const QString &component, const char *name) const;
     /// The state `rtctl ls -l` shows for @p component (Active, Inactive, Error); empty when not listed.
     QString state(const QString &component) const;
-    /// Writes an rtc.conf registering components in the test's name server, @p extraLines after.
-    QString writeConf(const QString &name, const QStringList &extraLines);
     /// Starts `python3 @p script -f <conf>`; waits until @p instance is in the name server.
     QProcess *startScript(const QString &script, const QString &instance, const QStringList &confLines = {});
     /// What @p process printed so far on standard output (kept across calls).
@@ -73,6 +66,13 @@ private:
     QProcess *m_manager = nullptr;
     CORBA::ORB_var m_orb;
     LiveTest::PrintedOutput m_printed;
+    LiveTest::PythonScripts m_scripts{m_live,
+                                      m_host,
+                                      hostName,
+                                      QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+                                      QStringLiteral(RTSTUDIO_PYTHON_PATH),
+                                      QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
+                                      m_work.path()};
 };
 
 RtctlResult TestPython::rtctl(const QStringList &arguments) const
@@ -95,29 +95,9 @@ QString TestPython::state(const QString &component) const
     return m_host.state(component);
 }
 
-QString TestPython::writeConf(const QString &name, const QStringList &extraLines)
-{
-    const QString file = m_work.filePath(name + QStringLiteral(".conf"));
-    QFile conf(file);
-    if (!conf.open(QIODevice::WriteOnly | QIODevice::Text))
-        return {};
-    const QStringList lines{QStringLiteral("corba.nameservers: ") + m_live.namingServer(),
-                            QStringLiteral("naming.formats: %1.host_cxt/%n.rtc").arg(hostName),
-                            QStringLiteral("logger.enable: NO")};
-    conf.write(((lines + extraLines).join('\n') + '\n').toUtf8());
-    return file;
-}
-
 QProcess *TestPython::startScript(const QString &script, const QString &instance, const QStringList &confLines)
 {
-    QString error;
-    const QString conf = writeConf(QFileInfo(script).baseName(), confLines);
-    QProcess *process = m_live.startRegistered(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {script, QStringLiteral("-f"), conf},
-        [this, &instance] { return rtctl({QStringLiteral("ls")}).out.contains(instance); }, &error,
-        runTimeoutMs, pythonEnvironment());
-    if (!process)
-        qWarning().noquote() << error;
-    return process;
+    return m_scripts.start(script, {instance}, runTimeoutMs, confLines);
 }
 
 QString TestPython::printed(QProcess *process)
@@ -140,7 +120,7 @@ void TestPython::initTestCase()
 void TestPython::dataTypesConvert()
 {
     QProcess python;
-    python.setProcessEnvironment(pythonEnvironment());
+    python.setProcessEnvironment(m_scripts.environment());
     python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {testScript(QStringLiteral("datatypes.py"))});
     QVERIFY(python.waitForFinished(runTimeoutMs));
     const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
@@ -361,7 +341,7 @@ void TestPython::installedPackagesWork()
     const QString packages = prefix + QStringLiteral("/lib/python3/dist-packages");
     QVERIFY(QFileInfo::exists(packages + QStringLiteral("/OpenRTM_aist/__init__.py")));
     QProcess python;
-    python.setProcessEnvironment(pythonEnvironment(packages));
+    python.setProcessEnvironment(m_scripts.environment(packages));
     python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
                  {testScript(QStringLiteral("datatypes.py")), QStringLiteral("--expect-prefix"), prefix});
     QVERIFY(python.waitForFinished(runTimeoutMs));

@@ -5,6 +5,7 @@ execution context; the methods of the runtime side (addInPort, addOutPort, getIn
 are reached through the component."""
 
 import RTC
+from OpenRTM_aist.POA import POA
 
 
 class DataFlowComponentBase(object):
@@ -17,6 +18,10 @@ class DataFlowComponentBase(object):
             raise AttributeError("%s has no attribute %s (the runtime attaches the component's methods"
                                  " when the manager creates it)" % (type(self).__name__, name))
         return getattr(rtc, name)
+
+    def _default_POA(self):
+        """The POA that turns the component into its reference (servant_to_reference)."""
+        return POA()
 
     def onInitialize(self):
         return RTC.RTC_OK

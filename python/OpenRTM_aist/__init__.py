@@ -6,15 +6,23 @@ import time
 
 import RTC
 import _rtstudio
-from _rtstudio import ConnectorDataListenerType, ConnectorInfo, ConnectorListenerType, InPort, Manager, \
-    OutPort, Properties
+from _rtstudio import ConfigurationParamListenerType, ConfigurationSetListenerType, \
+    ConfigurationSetNameListenerType, ConnectorDataListenerType, ConnectorInfo, ConnectorListenerType, InPort, \
+    Manager, OutPort, Properties
 from OpenRTM_aist import CORBA_SeqUtil
 from OpenRTM_aist.Async import Async_tInvoker
+from OpenRTM_aist.ConfigurationListeners import ConfigurationParamListener, ConfigurationSetListener, \
+    ConfigurationSetNameListener
 from OpenRTM_aist.CorbaConsumer import CorbaConsumer
 from OpenRTM_aist.CorbaPort import CorbaPort
 from OpenRTM_aist.DataFlowComponentBase import DataFlowComponentBase
+from OpenRTM_aist.POA import POA
 from OpenRTM_aist.Listeners import ConnectorDataListener, ConnectorDataListenerT, ConnectorListener, \
     ConnectorListenerStatus
+
+
+# The manager activates every component on one POA of its own.
+Manager.getPOA = lambda manager: POA()
 
 
 def setTimestamp(data):

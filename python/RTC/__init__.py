@@ -4,3 +4,7 @@
 import _rtstudio_idl
 
 _rtstudio_idl.populate(globals(), "RTC")
+
+import _rtstudio_interfaces
+
+_rtstudio_interfaces.populate(globals(), "RTC")

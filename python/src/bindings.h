@@ -20,6 +20,10 @@ void bindObjectRef(pybind11::module_ &module);
 void bindServicePorts(pybind11::module_ &module);
 /// The component bridge that DataFlowComponentBase delegates to.
 void bindComponent(pybind11::module_ &module);
+/// Configuration sets and configuration listeners of the component.
+void bindConfiguration(pybind11::module_ &module);
+/// Object references of components and execution contexts (after bindComponent).
+void bindObjectReferences(pybind11::module_ &module);
 /// Manager.
 void bindManager(pybind11::module_ &module);
 

@@ -12,5 +12,7 @@ PYBIND11_MODULE(_rtstudio, module)
     RtPython::bindObjectRef(module);
     RtPython::bindServicePorts(module);
     RtPython::bindComponent(module);
+    RtPython::bindConfiguration(module);
+    RtPython::bindObjectReferences(module);
     RtPython::bindManager(module);
 }

@@ -38,6 +38,7 @@ PyComponent *PyComponent::create(RTC::Manager *manager, const py::object &cls)
     try {
         component->m_self = cls(py::cast(manager, py::return_value_policy::reference));
         component->m_self.attr("_rtc") = py::cast(component, py::return_value_policy::reference);
+        component->findOwnCallbacks();
     } catch (py::error_already_set &error) {
         // The runtime needs a servant; this one refuses to initialize and says why.
         component->m_createError = traceback(error);
@@ -107,10 +108,25 @@ bool PyComponent::bindPythonParameter(const std::string &name, py::object variab
     return true;
 }
 
+void PyComponent::findOwnCallbacks()
+{
+    const py::object base = py::module_::import("OpenRTM_aist").attr("DataFlowComponentBase");
+    const py::object cls = py::type::of(m_self);
+    const py::dict own = m_self.attr("__dict__");
+    for (const char *callback : {"onInitialize", "onFinalize", "onStartup", "onShutdown", "onActivated",
+                                 "onDeactivated", "onAborting", "onError", "onReset", "onExecute", "onStateUpdate",
+                                 "onRateChanged"}) {
+        const bool inherited = py::hasattr(base, callback) && py::hasattr(cls, callback)
+            && cls.attr(callback).is(base.attr(callback)) && !own.contains(callback);
+        if (!inherited && py::hasattr(m_self, callback))
+            m_ownCallbacks.insert(callback);
+    }
+}
+
 template <typename... Arguments>
 RTC::ReturnCode_t PyComponent::call(const char *callback, Arguments... arguments)
 {
-    if (!interpreterAlive())
+    if (!interpreterAlive() || !m_ownCallbacks.count(callback))
         return RTC::RTC_OK;
     py::gil_scoped_acquire gil;
     if (!m_self || !py::hasattr(m_self, callback))

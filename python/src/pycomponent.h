@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,8 @@ public:
 private:
     explicit PyComponent(RTC::Manager *manager);
 
+    /// Records which on…() callbacks the class implements itself (with the GIL, at creation).
+    void findOwnCallbacks();
     /// Calls the Python method @p callback (if the class has one) with @p arguments.
     template <typename... Arguments>
     RTC::ReturnCode_t call(const char *callback, Arguments... arguments);
@@ -68,6 +71,9 @@ private:
 
     pybind11::object m_self;
     std::vector<pybind11::object> m_ports;
+    /// The callbacks the class implements; the others are DataFlowComponentBase's, which only return
+    /// RTC_OK, so the execution context skips them without taking the GIL.
+    std::set<std::string> m_ownCallbacks;
     std::string m_createError; ///< why the Python object could not be made (onInitialize then fails)
 };
 

@@ -118,10 +118,46 @@ py::dict PyDataTypes::describe() const
             consts[py::str(constant.scopedName.toStdString())] = py::int_(static_cast<long long>(*value));
     }
     py::dict description;
+    description["unions"] = describeUnions(model);
     description["structs"] = structs;
     description["enums"] = enums;
     description["consts"] = consts;
     return description;
+}
+
+namespace {
+
+/// A case label as Python has it before the enum classes exist: an enumerator's name, bool or int.
+py::object labelObject(const QJsonValue &label)
+{
+    if (label.isString())
+        return py::str(label.toString().toStdString());
+    if (label.isBool())
+        return py::bool_(label.toBool());
+    return py::int_(static_cast<long long>(label.toInteger()));
+}
+
+} // namespace
+
+py::dict PyDataTypes::describeUnions(const Codegen::IdlModel &model)
+{
+    // Each union: the enum of its discriminator (empty for a number, boolean or character) and its
+    // cases as (member, discriminator values of the labels, whether it is the default).
+    py::dict unions;
+    for (const Codegen::IdlUnion &type : model.unions) {
+        const Codegen::IdlType discriminator = model.resolve(type.discriminator);
+        py::list cases;
+        for (const Codegen::IdlUnionCase &c : type.cases) {
+            py::list labels;
+            for (const QString &label : c.labels)
+                labels.append(labelObject(Codegen::CdrCodec::labelValue(model, type, label)));
+            cases.append(py::make_tuple(c.member.name.toStdString(), labels, c.isDefault));
+        }
+        const bool isEnum = discriminator.kind == Codegen::IdlType::Kind::Named;
+        unions[py::str(type.scopedName.toStdString())] =
+            py::make_tuple(isEnum ? discriminator.name.toStdString() : std::string(), discriminator.name.toStdString(), cases);
+    }
+    return unions;
 }
 
 void PyDataTypes::setClasses(py::dict classes)

@@ -28,7 +28,8 @@ public:
     /**
      * The declared types for making classes: `structs` (scoped name → member names in
      * declaration order), `enums` (scoped name → enumerator names), `consts` (scoped name →
-     * integer value, for those that are integers).
+     * integer value, for those that are integers), `unions` (scoped name → (the enum of the
+     * discriminator or "", the discriminator's type, [(member, [label values], is default)])).
      */
     pybind11::dict describe() const;
     /// The classes of the structs and enums, by scoped name.
@@ -61,6 +62,8 @@ public:
 private:
     PyDataTypes() = default;
     void rebuild();
+    static pybind11::dict describeUnions(const Codegen::IdlModel &model);
+    const PyValueConverter &converter() const;
 
     std::unique_ptr<Codegen::IdlTypeLibrary> m_library;
     /// The library's model with the stub modules' declarations added.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "pyvalueconverter.h"
 
+#include "cdrcodec.h"
+
 #include <QJsonArray>
 #include <QJsonObject>
 
@@ -102,7 +104,9 @@ QJsonValue PyValueConverter::basicToJson(const QString &keyword, py::handle valu
             refuse(path, QStringLiteral("a number is needed"));
         return floatingToJson(value.cast<double>());
     }
-    if (keyword == QLatin1String("any") || keyword == QLatin1String("Object") || keyword == QLatin1String("long double"))
+    if (keyword == QLatin1String("Object"))
+        return referenceToJson(value, path);
+    if (keyword == QLatin1String("any") || keyword == QLatin1String("long double"))
         refuse(path, QStringLiteral("the type %1 is not supported yet").arg(keyword));
     if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
         refuse(path, QStringLiteral("an int is needed"));
@@ -146,7 +150,56 @@ QJsonValue PyValueConverter::namedToJson(const QString &name, py::handle value, 
     }
     if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd())
         return enumToJson(*it, value, path);
+    if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd())
+        return unionToJson(*it, value, path);
+    if (m_model.interfaces.contains(name))
+        return referenceToJson(value, path);
     refuse(path, QStringLiteral("the type %1 is not supported yet").arg(name));
+}
+
+QJsonValue PyValueConverter::unionToJson(const Codegen::IdlUnion &type, py::handle value, const QString &path) const
+{
+    if (!py::hasattr(value, "_d") || !py::hasattr(value, "_v"))
+        refuse(path, QStringLiteral("a %1 (with _d and _v) is needed").arg(type.scopedName));
+    const QJsonValue discriminator = toJson(type.discriminator, value.attr("_d"), path + QStringLiteral("._d"));
+    QJsonObject object{{QStringLiteral("_d"), discriminator}};
+    if (const Codegen::IdlUnionCase *chosen = Codegen::CdrCodec::unionCase(type, discriminator))
+        object.insert(chosen->member.name,
+                      toJson(chosen->member.type, value.attr("_v"), path + QLatin1Char('.') + chosen->member.name));
+    return object;
+}
+
+QJsonValue PyValueConverter::referenceToJson(py::handle value, const QString &path) const
+{
+    if (value.is_none())
+        return QJsonValue::Null;
+    if (!py::isinstance(value, referenceClass()))
+        refuse(path, QStringLiteral("None or an object reference received in a sample is needed"));
+    QJsonArray profiles;
+    for (const py::handle profile : value.attr("_profiles")) {
+        const py::tuple pair = py::reinterpret_borrow<py::tuple>(profile);
+        profiles.append(QJsonObject{{QStringLiteral("tag"), qint64(pair[0].cast<long long>())},
+                                    {QStringLiteral("data"), QString::fromStdString(pair[1].attr("hex")().cast<std::string>())}});
+    }
+    return QJsonObject{{QStringLiteral("type_id"), QString::fromStdString(value.attr("_NP_RepositoryId").cast<std::string>())},
+                       {QStringLiteral("profiles"), profiles}};
+}
+
+py::object PyValueConverter::referenceToPython(const QJsonValue &value) const
+{
+    if (!value.isObject())
+        return py::none();
+    py::list profiles;
+    for (const QJsonValue &profile : value[QStringLiteral("profiles")].toArray()) {
+        const QByteArray data = QByteArray::fromHex(profile[QStringLiteral("data")].toString().toLatin1());
+        profiles.append(py::make_tuple(profile[QStringLiteral("tag")].toInteger(), py::bytes(data.constData(), size_t(data.size()))));
+    }
+    return referenceClass()(value[QStringLiteral("type_id")].toString().toStdString(), profiles);
+}
+
+py::object PyValueConverter::referenceClass()
+{
+    return py::module_::import("_rtstudio_interfaces").attr("ObjectReference");
 }
 
 QJsonValue PyValueConverter::enumToJson(const Codegen::IdlEnum &type, py::handle value, const QString &path) const
@@ -191,6 +244,8 @@ py::object PyValueConverter::basicToPython(const QString &keyword, const QJsonVa
         return py::bool_(value.toBool());
     if (isCharacter(keyword))
         return py::str(value.toString().toStdString());
+    if (keyword == QLatin1String("Object"))
+        return referenceToPython(value);
     if (isFloating(keyword))
         return py::float_(floatingFromJson(value));
     return py::int_(static_cast<long long>(value.toInteger()));
@@ -231,6 +286,17 @@ py::object PyValueConverter::namedToPython(const QString &name, const QJsonValue
     }
     if (const auto it = m_model.enums.constFind(name); it != m_model.enums.constEnd())
         return classOf(name).attr("_items")[py::int_(it->enumerators.indexOf(value.toString()))];
+    if (const auto it = m_model.unions.constFind(name); it != m_model.unions.constEnd()) {
+        const py::object cls = classOf(name);
+        py::object object = cls.attr("__new__")(cls);
+        const QJsonValue discriminator = value[QStringLiteral("_d")];
+        const Codegen::IdlUnionCase *chosen = Codegen::CdrCodec::unionCase(*it, discriminator);
+        py::setattr(object, "_d", toPython(it->discriminator, discriminator));
+        py::setattr(object, "_v", chosen ? toPython(chosen->member.type, value[chosen->member.name]) : py::none());
+        return object;
+    }
+    if (m_model.interfaces.contains(name))
+        return referenceToPython(value);
     return py::none();
 }
 

@@ -13,8 +13,10 @@ namespace RtPython {
  * Python values to and from the JSON values of Codegen::CdrCodec, by IDL type, in omniORBpy's
  * mapping: a struct is an object of its class with one attribute per member, an enum value one of
  * its class's items (`RTC.RTC_OK`), integers are int, floating types float, `char` and strings str,
- * `sequence<octet>` bytes, other sequences and arrays lists. Unions, `any` and object references
- * are refused (not yet mapped).
+ * `sequence<octet>` bytes, other sequences and arrays lists, a union an object of its class with
+ * the discriminator in `_d` and the value in `_v`, an object reference None when nil and else a
+ * `_rtstudio_interfaces.ObjectReference` holding its IOR. `any` and TypeCode are refused (not yet
+ * mapped).
  */
 class PyValueConverter
 {
@@ -31,6 +33,10 @@ private:
     QJsonValue basicToJson(const QString &keyword, pybind11::handle value, const QString &path) const;
     QJsonValue listToJson(const Codegen::IdlType &element, pybind11::handle value, const QString &path) const;
     QJsonValue namedToJson(const QString &name, pybind11::handle value, const QString &path) const;
+    QJsonValue unionToJson(const Codegen::IdlUnion &type, pybind11::handle value, const QString &path) const;
+    QJsonValue referenceToJson(pybind11::handle value, const QString &path) const;
+    pybind11::object referenceToPython(const QJsonValue &value) const;
+    static pybind11::object referenceClass();
     QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
     pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
     pybind11::object listToPython(const Codegen::IdlType &element, const QJsonValue &value) const;

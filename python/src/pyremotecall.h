@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <omniORB4/CORBA.h>
+
+#include <pybind11/pybind11.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace RtPython {
+
+/**
+ * Runs @p call (a call on a CORBA object) without the GIL, so that the servant it reaches — often a
+ * Python component of this very process — can take it; a CORBA exception becomes a Python
+ * RuntimeError naming it, as omniORBpy raises CORBA exceptions.
+ */
+template <typename Call>
+auto remoteCall(const char *operation, Call &&call) -> decltype(call())
+{
+    pybind11::gil_scoped_release released;
+    try {
+        return call();
+    } catch (const CORBA::Exception &error) {
+        throw std::runtime_error(std::string(operation) + ": " + error._name());
+    }
+}
+
+} // namespace RtPython

@@ -1,0 +1,395 @@
+// SPDX-License-Identifier: MIT
+// OpenRTM-aist-Python's examples beyond SimpleIO and SeqIO, unchanged from the shared conformance
+// corpus (each skipped with the reason when it is absent), run with python3 on RT Studio's runtime
+// and driven with rtctl:
+// - ConfigSample: its configuration sets and bound parameters of every kind, its parameter
+//   listener, activating itself through its execution context's object reference;
+// - Composite: Sensor, Controller and Motor (Python modules the program's manager preloads) as
+//   members of the SDK's PeriodicECSharedComposite, fed and read by rtmanager's built-ins through
+//   the composite's exported ports;
+// - ExtTrigger: ConsoleIn and ConsoleOut on ExtTrigExecutionContexts, each stepping once per tick
+//   the test sends (the example's Connector.py, which needs omniORBpy, does the same);
+// and the same abilities through components of ours (data/python) that need no corpus: a component
+// with two configuration sets and every configuration listener; a Python module's component as
+// the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
+// ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
+// leaves the master serving; wide characters, unions and object references in samples
+// (data/python/widechars.py, unions.py, references.py).
+#include "hostrtctl.h"
+#include "pythonscripts.h"
+
+#include <Manager.hh>
+#include <OpenRTM.hh>
+
+#include <csignal>
+
+#include <QtTest>
+
+namespace {
+
+constexpr int runTimeoutMs = 30 * 1000;
+const QString hostName = QStringLiteral("pyexamples");
+
+QString corpusDir()
+{
+    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples");
+}
+
+QString testScript(const QString &name)
+{
+    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
+}
+
+} // namespace
+
+class TestPythonExamples : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void configSampleRunsUnchanged();
+    void configurationSetsAndListeners();
+    void compositeRunsUnchanged();
+    void pythonMemberOfCompositeInManager();
+    void extTriggerStepsOnlyWhenTicked();
+    void componentTicksItsOwnContext();
+    void pythonComponentInSlaveOfItsOwn();
+    void dataTypesConvert_data();
+    void dataTypesConvert();
+
+private:
+    /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
+    static QString example(const QString &file);
+    bool rtctlSucceeds(const QStringList &arguments) const { return m_host.succeeds(arguments); }
+    QString printed(QProcess *process) { return m_printed.of(process); }
+    /// The process id of the slave manager named @p name (0 when the master has none such).
+    qint64 slavePid(const QString &name) const;
+    /// Ticks the ExtTrigExecutionContext @p component owns, as OpenRTM's Connector.py does.
+    bool tick(const QString &component) const;
+
+    QTemporaryDir m_work;
+    LiveTest::LiveSystem m_live;
+    LiveTest::HostRtctl m_host{m_live, hostName};
+    LiveTest::PythonScripts m_scripts{m_live,
+                                      m_host,
+                                      hostName,
+                                      QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+                                      QStringLiteral(RTSTUDIO_PYTHON_PATH),
+                                      QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
+                                      m_work.path()};
+    LiveTest::PrintedOutput m_printed;
+    QProcess *m_manager = nullptr;
+    CORBA::ORB_var m_orb;
+};
+
+QString TestPythonExamples::example(const QString &file)
+{
+    const QString path = corpusDir() + QLatin1Char('/') + file;
+    return QFileInfo::exists(path) ? path : QString();
+}
+
+bool TestPythonExamples::tick(const QString &component) const
+{
+    try {
+        const QString name = QStringLiteral("corbaname::%1#%2.host_cxt/%3").arg(m_live.namingServer(), hostName, component);
+        CORBA::Object_var object = m_orb->string_to_object(name.toUtf8().constData());
+        RTC::RTObject_var rtc = RTC::RTObject::_narrow(object);
+        RTC::ExecutionContextList_var contexts = rtc->get_owned_contexts();
+        OpenRTM::ExtTrigExecutionContextService_var context =
+            OpenRTM::ExtTrigExecutionContextService::_narrow(contexts[0].in());
+        if (CORBA::is_nil(context))
+            return false;
+        context->tick();
+        return true;
+    } catch (const CORBA::Exception &error) {
+        qWarning() << "tick" << component << error._name();
+        return false;
+    }
+}
+
+qint64 TestPythonExamples::slavePid(const QString &name) const
+{
+    RTM::ManagerList_var slaves;
+    try {
+        const QString path = QStringLiteral("corbaname::%1#%2.host_cxt/manager.mgr").arg(m_live.namingServer(), hostName);
+        CORBA::Object_var object = m_orb->string_to_object(path.toUtf8().constData());
+        slaves = RTM::Manager::_narrow(object)->get_slave_managers();
+    } catch (const CORBA::Exception &error) {
+        qWarning() << "slaves of the manager:" << error._name();
+        return 0;
+    }
+    for (CORBA::ULong i = 0; i < slaves->length(); ++i) {
+        try {
+            RTM::ManagerProfile_var profile = slaves[i]->get_profile();
+            QHash<QString, QString> properties;
+            for (CORBA::ULong j = 0; j < profile->properties.length(); ++j) {
+                const char *text = nullptr;
+                if (profile->properties[j].value >>= text)
+                    properties.insert(QString::fromUtf8(profile->properties[j].name.in()), QString::fromUtf8(text));
+            }
+            if (properties.value(QStringLiteral("instance_name")) == name)
+                return properties.value(QStringLiteral("pid")).toLongLong();
+        } catch (const CORBA::Exception &) {
+            // A slave that has just ended, not yet dropped by the master.
+        }
+    }
+    return 0;
+}
+
+void TestPythonExamples::initTestCase()
+{
+    QVERIFY(m_work.isValid());
+    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH "/OpenRTM_aist/__init__.py"), "build rtpython first");
+    int argc = 0;
+    m_orb = CORBA::ORB_init(argc, nullptr);
+    QString error;
+    QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
+    // Our Python modules are in the load path, found by their type names (in slaves too).
+    m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName,
+                                        {QStringLiteral("manager.modules.load_path=" RTSTUDIO_TEST_DATA_DIR "/python")},
+                                        &error);
+    QVERIFY2(m_manager, qPrintable(error));
+}
+
+void TestPythonExamples::configSampleRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("ConfigSample/ConfigSample.py"));
+    if (script.isEmpty())
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
+              "project) is absent");
+    // Its own configuration file: sets default, mode0 and mode1, mode1 active.
+    QProcess *sample = m_scripts.start(script, {QStringLiteral("ConfigSample0.rtc")}, runTimeoutMs,
+        {QStringLiteral("example.ConfigSample.config_file: ") + corpusDir() + QStringLiteral("/ConfigSample/configsample.conf")});
+    QVERIFY(sample);
+    // ConfigSample activates itself through get_owned_contexts() and prints its variables each cycle.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("Active Configuration Set:  mode1")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("int_param0:        [-999]")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("vector_param0[ 8 ]:  9.0")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+
+    QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "set", "int_param0", "17"}));
+    QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "set", "str_param1", "changed"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("int_param0:        [17]")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("str_param1:        ['changed']")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    // Its ConfigurationParamListener, told of each parameter that changed.
+    QVERIFY2(printed(sample).contains(QLatin1String("Changed config_set_name:  mode1  config_param_name:  int_param0")),
+             qPrintable(printed(sample).right(2000)));
+
+    // Switching the set: mode0's values reach the variables.
+    QVERIFY(rtctlSucceeds({"conf", "ConfigSample0.rtc", "-s", "mode0", "act"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("Active Configuration Set:  mode0")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("str_param0:        ['mode0']")),
+                              qPrintable(printed(sample).right(2000)), runTimeoutMs);
+    QVERIFY2(printed(sample).contains(QLatin1String("int_param0:        [12345]")), qPrintable(printed(sample).right(2000)));
+    m_live.stop(sample);
+}
+
+void TestPythonExamples::configurationSetsAndListeners()
+{
+    QProcess *sets = m_scripts.start(testScript(QStringLiteral("PyConfigSets.py")), {QStringLiteral("PyConfigSets0.rtc")},
+                                     runTimeoutMs);
+    QVERIFY(sets);
+    // PyConfigSets activates itself (self._objref through its own context) and reports its state.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("state ACTIVE_STATE rate 20.0\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("set default gain=[2] names=['a', 'b']\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"conf", "PyConfigSets0.rtc", "set", "gain", "5"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("set default gain=[5] names=['a', 'b']\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    QVERIFY(printed(sets).contains(QLatin1String("param default gain\n")));
+    QVERIFY(rtctlSucceeds({"conf", "PyConfigSets0.rtc", "-s", "fast", "act"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("set fast gain=[40] names=['x']\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    // The set listeners: the written set with its values, each activation by name.
+    QVERIFY2(printed(sets).contains(QLatin1String("activated fast\n")), qPrintable(printed(sets)));
+    QVERIFY2(printed(sets).contains(QLatin1String("set changed gain=5\n")), qPrintable(printed(sets)));
+    m_live.stop(sets);
+}
+
+void TestPythonExamples::compositeRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("Composite/Composite.py"));
+    if (script.isEmpty())
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
+              "project) is absent");
+    // The example's rtc.conf, with its module folder for "." and its composite.conf by path.
+    const QString folder = QFileInfo(script).absolutePath();
+    QProcess *server = m_scripts.start(script, {QStringLiteral("PeriodicECSharedComposite0.rtc")}, runTimeoutMs,
+        {QStringLiteral("manager.modules.load_path: ") + folder,
+         QStringLiteral("manager.modules.preload: Controller, Motor, Sensor"),
+         QStringLiteral("manager.components.precreate: Controller, Motor, Sensor, PeriodicECSharedComposite"),
+         QStringLiteral("composite.PeriodicECShared.PeriodicECSharedComposite0.config_file: ") + folder
+             + QStringLiteral("/composite.conf")});
+    QVERIFY(server);
+    const RtctlResult cat = m_host.run({"cat", "PeriodicECSharedComposite0.rtc"});
+    QVERIFY2(cat.out.contains(QRegularExpression(QStringLiteral("Members +Sensor0, Controller0, Motor0\n"))),
+             qPrintable(cat.out));
+    QVERIFY(rtctlSucceeds({"con", "Sensor0.rtc:out", "Controller0.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "Controller0.rtc:out", "Motor0.rtc:in"}));
+    // Through the composite's exported ports (Sensor0.in, Motor0.out), from and to rtmanager's built-ins.
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "create", "ConsoleIn?instance_name=CompositeFeed", "create",
+                           "ConsoleOut?instance_name=CompositeSink"}));
+    QVERIFY(rtctlSucceeds({"con", "CompositeFeed.rtc:out", "PeriodicECSharedComposite0.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "PeriodicECSharedComposite0.rtc:out", "CompositeSink.rtc:in"}));
+    for (const char *component : {"CompositeSink.rtc", "PeriodicECSharedComposite0.rtc", "CompositeFeed.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // Activating the composite activated its Python members; on the composite's context each passes
+    // the feed's numbers on (Sensor and Controller double them, Motor doubles and truncates).
+    // Members are active in the composite's context (`rtctl ls` shows their own one).
+    const auto motorActive = [this] { return m_host.run({"cat", "Motor0.rtc"}).out.contains(QLatin1String("Active")); };
+    QTRY_VERIFY_WITH_TIMEOUT(motorActive(), runTimeoutMs);
+    for (const char *member : {"Sensor Received data: ", "Controller Received data: ", "Motor Received data: "})
+        QTRY_VERIFY2_WITH_TIMEOUT(printed(server).contains(QLatin1String(member)), qPrintable(printed(server).right(2000)),
+                                  runTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("CompositeSink.rtc"), "received_count").toInt() > 0,
+                             runTimeoutMs);
+    // Eight times the number fed: what left Motor0.out is a multiple of 8.
+    const QList<qint64> values = LiveTest::integers(m_host.status(m_orb, QStringLiteral("CompositeSink.rtc"), "received_values"));
+    QVERIFY(!values.isEmpty());
+    QVERIFY2(values.first() > 0 && values.first() % 8 == 0, qPrintable(QString::number(values.first())));
+    QVERIFY(rtctlSucceeds({"deact", "PeriodicECSharedComposite0.rtc"}));
+    QTRY_VERIFY_WITH_TIMEOUT(!motorActive(), runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"deact", "CompositeFeed.rtc"}));
+    m_live.stop(server);
+}
+
+void TestPythonExamples::pythonMemberOfCompositeInManager()
+{
+    // PyScaler (x1000) in rtmanager, the only member of a composite that exports both its ports.
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "load", testScript(QStringLiteral("PyScaler.py")), "create",
+                           "PyScaler?instance_name=ScalerMember", "create",
+                           "PeriodicECSharedComposite?instance_name=ScalerComposite&conf.default.members=ScalerMember"
+                           "&conf.default.exported_ports=ScalerMember.in,ScalerMember.out",
+                           "create", "ConsoleIn?instance_name=MemberFeed", "create",
+                           "ConsoleOut?instance_name=MemberSink"}));
+    QVERIFY(rtctlSucceeds({"con", "MemberFeed.rtc:out", "ScalerComposite.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "ScalerComposite.rtc:out", "MemberSink.rtc:in"}));
+    for (const char *component : {"MemberSink.rtc", "ScalerComposite.rtc", "MemberFeed.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("MemberSink.rtc"), "received_count").toInt() > 0,
+                             runTimeoutMs);
+    const QList<qint64> values = LiveTest::integers(m_host.status(m_orb, QStringLiteral("MemberSink.rtc"), "received_values"));
+    QVERIFY(!values.isEmpty());
+    QVERIFY2(values.first() > 0 && values.first() % 1000 == 0, qPrintable(QString::number(values.first())));
+    for (const char *component : {"MemberFeed.rtc", "ScalerComposite.rtc"})
+        QVERIFY(rtctlSucceeds({"deact", component}));
+}
+
+void TestPythonExamples::extTriggerStepsOnlyWhenTicked()
+{
+    const QString in = example(QStringLiteral("ExtTrigger/ConsoleIn.py"));
+    if (in.isEmpty())
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
+              "project) is absent");
+    // The example's rtc.conf: every component on an ExtTrigExecutionContext.
+    const QStringList conf{QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext"),
+                           QStringLiteral("exec_cxt.periodic.rate: 1000")};
+    QProcess *out = m_scripts.start(example(QStringLiteral("ExtTrigger/ConsoleOut.py")), {QStringLiteral("ConsoleOut0.rtc")},
+                                    runTimeoutMs, conf);
+    QVERIFY(out);
+    QProcess *source = m_scripts.start(in, {QStringLiteral("ConsoleIn0.rtc")}, runTimeoutMs, conf);
+    QVERIFY(source);
+    source->write("11\n22\n33\n");
+    QVERIFY(rtctlSucceeds({"con", "ConsoleIn0.rtc:out", "ConsoleOut0.rtc:in", "-p", "dataport.subscription_type=flush"}));
+    const auto sent = [&] { return printed(source).count(QLatin1String("Sending to subscriber:")); };
+    const auto received = [&] { return printed(out).count(QLatin1String("Received:")); };
+    // As OpenRTM's ExtTrigExecutionContext, activating runs one cycle; after it, one cycle per tick.
+    QVERIFY(rtctlSucceeds({"act", "ConsoleIn0.rtc"}));
+    QTRY_COMPARE_WITH_TIMEOUT(sent(), 1, runTimeoutMs);
+    QVERIFY(tick(QStringLiteral("ConsoleIn0.rtc")));
+    QVERIFY(tick(QStringLiteral("ConsoleIn0.rtc")));
+    QTRY_COMPARE_WITH_TIMEOUT(sent(), 3, runTimeoutMs);
+    QVERIFY2(printed(source).contains(QLatin1String("Sending to subscriber:  33\n")), qPrintable(printed(source)));
+    // ConsoleOut, inactive meanwhile, takes one sample per cycle: its activation's, then a tick's.
+    QCOMPARE(received(), 0);
+    QVERIFY(rtctlSucceeds({"act", "ConsoleOut0.rtc"}));
+    QTRY_COMPARE_WITH_TIMEOUT(received(), 1, runTimeoutMs);
+    QVERIFY(tick(QStringLiteral("ConsoleOut0.rtc")));
+    QTRY_COMPARE_WITH_TIMEOUT(received(), 2, runTimeoutMs);
+    QVERIFY2(printed(out).contains(QLatin1String("Received:  11\n")), qPrintable(printed(out)));
+    // ConsoleIn, not ticked meanwhile, has not stepped.
+    QCOMPARE(sent(), 3);
+    QVERIFY(rtctlSucceeds({"deact", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}));
+    m_live.stop(source);
+    m_live.stop(out);
+}
+
+void TestPythonExamples::componentTicksItsOwnContext()
+{
+    QProcess *ticked = m_scripts.start(testScript(QStringLiteral("PyTicked.py")), {QStringLiteral("PyTicked0.rtc")},
+                                       runTimeoutMs, {QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext")});
+    QVERIFY(ticked);
+    // Its activation's cycle and its three ticks; then one from here.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(ticked).contains(QLatin1String("cycle 4\n")), qPrintable(printed(ticked)),
+                              runTimeoutMs);
+    QVERIFY(tick(QStringLiteral("PyTicked0.rtc")));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(ticked).contains(QLatin1String("cycle 5\n")), qPrintable(printed(ticked)),
+                              runTimeoutMs);
+    QVERIFY2(!printed(ticked).contains(QLatin1String("cycle 6\n")), qPrintable(printed(ticked)));
+    m_live.stop(ticked);
+}
+
+void TestPythonExamples::pythonComponentInSlaveOfItsOwn()
+{
+    // PyScaler.py in a slave started for it (manager_name), fed by the master's built-in ConsoleIn.
+    const QString manager = m_host.managerPath();
+    QVERIFY(rtctlSucceeds({"mgr", manager, "create", "PyScaler?instance_name=SlaveScaler&manager_name=pyslave", "create",
+                           "ConsoleIn?instance_name=SlaveFeed", "create", "ConsoleOut?instance_name=SlaveSink"}));
+    const qint64 pid = slavePid(QStringLiteral("pyslave"));
+    QVERIFY(pid > 0);
+    QVERIFY(pid != m_manager->processId());
+    QVERIFY(rtctlSucceeds({"con", "SlaveFeed.rtc:out", "SlaveScaler.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"con", "SlaveScaler.rtc:out", "SlaveSink.rtc:in"}));
+    QVERIFY(rtctlSucceeds({"act", "SlaveSink.rtc", "SlaveScaler.rtc", "SlaveFeed.rtc"}));
+    QTRY_VERIFY_WITH_TIMEOUT(m_host.status(m_orb, QStringLiteral("SlaveSink.rtc"), "received_count").toInt() > 0,
+                             runTimeoutMs);
+    const QList<qint64> values = LiveTest::integers(m_host.status(m_orb, QStringLiteral("SlaveSink.rtc"), "received_values"));
+    QVERIFY(!values.isEmpty() && values.first() % 1000 == 0);
+
+    // The slave's end takes its Python component with it; the master serves on.
+    QCOMPARE(::kill(pid_t(pid), SIGKILL), 0);
+    const auto listed = [&] {
+        const RtctlResult list = m_host.run({"mgr", manager, "list"});
+        return list.code == 0 ? list.out : QString();
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(listed().contains(QLatin1String("SlaveFeed")) && !listed().contains(QLatin1String("SlaveScaler")),
+                             runTimeoutMs);
+    QVERIFY(m_host.run({"cat", "SlaveScaler.rtc"}).code != 0);
+    QCOMPARE(m_manager->state(), QProcess::Running);
+    QCOMPARE(m_host.state(QStringLiteral("SlaveFeed.rtc")), QStringLiteral("Active"));
+    // And makes another slave for the next such request.
+    QVERIFY(rtctlSucceeds({"mgr", manager, "create", "PyScaler?instance_name=SlaveScaler2&manager_name=pyslave"}));
+    QVERIFY(slavePid(QStringLiteral("pyslave")) > 0);
+    QVERIFY(rtctlSucceeds({"deact", "SlaveFeed.rtc"}));
+}
+
+void TestPythonExamples::dataTypesConvert_data()
+{
+    QTest::addColumn<QString>("script");
+    QTest::newRow("wide characters") << QStringLiteral("widechars");
+    QTest::newRow("unions") << QStringLiteral("unions");
+    QTest::newRow("object references") << QStringLiteral("references");
+}
+
+void TestPythonExamples::dataTypesConvert()
+{
+    // Each script checks its values and prints "<script>: ok".
+    QFETCH(QString, script);
+    QProcess python;
+    python.setProcessEnvironment(m_scripts.environment());
+    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {testScript(script + QStringLiteral(".py"))});
+    QVERIFY(python.waitForFinished(runTimeoutMs));
+    const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
+    QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0, qPrintable(output));
+    QVERIFY2(output.contains(script + QStringLiteral(": ok")), qPrintable(output));
+}
+
+QTEST_GUILESS_MAIN(TestPythonExamples)
+#include "tst_pythonexamples.moc"
