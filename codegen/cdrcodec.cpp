@@ -441,7 +441,7 @@ private:
             writeUnsigned(4, quint64(profile[QStringLiteral("tag")].toInteger()));
             const QByteArray data = QByteArray::fromHex(profile[QStringLiteral("data")].toString().toLatin1());
             writeUnsigned(4, quint64(data.size()));
-            m_bytes.append(data);
+            m_output.write(reinterpret_cast<const uchar *>(data.constData()), int(data.size()), 1);
         }
     }
 
@@ -479,8 +479,8 @@ private:
     void writeUtf16(const QString &text)
     {
         for (const QChar c : text) {
-            m_bytes.append(char(c.unicode() >> 8));
-            m_bytes.append(char(c.unicode() & 0xff));
+            const uchar unit[2] = {uchar(c.unicode() >> 8), uchar(c.unicode() & 0xff)};
+            m_output.write(unit, 2, 1);
         }
     }
 

@@ -63,7 +63,6 @@ private:
     PyDataTypes() = default;
     void rebuild();
     static pybind11::dict describeUnions(const Codegen::IdlModel &model);
-    const PyValueConverter &converter() const;
 
     std::unique_ptr<Codegen::IdlTypeLibrary> m_library;
     /// The library's model with the stub modules' declarations added.

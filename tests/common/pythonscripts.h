@@ -36,14 +36,10 @@ public:
     {
     }
 
-    /// python3 finds the packages (at @p packages, by default those given above); output is
-    /// unbuffered, so the test sees it as printed. Leaks are not checked under the sanitizers (the
-    /// interpreter keeps its objects until exit by design).
+    /// pythonEnvironment() with the packages at @p packages, by default those given above.
     QProcessEnvironment environment(const QString &packages = {}) const
     {
         return pythonEnvironment(packages.isEmpty() ? m_packages : packages, m_preload);
-    }
-        return environment;
     }
 
     /// Writes `<name>.conf` registering components under the host context, @p extraLines after.
