@@ -421,12 +421,12 @@
 <context>
     <name>Builder::ComponentEditor</name>
     <message>
-        <location filename="../../builder/componenteditor.cpp" line="+35"/>
+        <location filename="../../builder/componenteditor.cpp" line="+37"/>
         <source>Builder</source>
         <translation>ビルダ</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Basic</source>
         <translation>基本</translation>
     </message>
@@ -466,7 +466,7 @@
         <translation>RTC.xml</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+61"/>
         <source>The interface type &apos;%1&apos; is not declared in any parsed IDL file.</source>
         <translation>インターフェース型「%1」は、読み込んだどの IDL ファイルにも宣言されていません。</translation>
     </message>
@@ -2184,7 +2184,7 @@
         <translation>omniNames がポート %1 で起動しませんでした：%2</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>rtmanager did not start on port %1: %2</source>
         <translation>rtmanager がポート %1 で起動しませんでした：%2</translation>
     </message>
@@ -2744,7 +2744,7 @@
 <context>
     <name>Studio::MainWindow</name>
     <message>
-        <location filename="../../app/mainwindow.cpp" line="+172"/>
+        <location filename="../../app/mainwindow.cpp" line="+173"/>
         <source>&amp;About RT Studio</source>
         <translation>RT Studio について(&amp;A)</translation>
     </message>
@@ -2764,7 +2764,7 @@
         <translation>このビューのヘルプ(&amp;V)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+44"/>
         <source>New &amp;Component</source>
         <translation>新規コンポーネント(&amp;C)</translation>
     </message>
@@ -2938,7 +2938,7 @@
 <context>
     <name>Studio::OnlineDocks</name>
     <message>
-        <location filename="../../app/onlinedocks.cpp" line="+76"/>
+        <location filename="../../app/onlinedocks.cpp" line="+77"/>
         <source>Name Service</source>
         <translation>ネームサービス</translation>
     </message>
@@ -3033,7 +3033,7 @@
         <translation>マネージャの設定 (*.conf);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>rtmanager starts with your session: %1</source>
         <translation>rtmanager はセッションの開始時に起動します: %1</translation>
     </message>
@@ -3043,17 +3043,17 @@
         <translation>起動時のマネージャを設定できませんでした: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Do Not Start a Manager at Boot</source>
         <translation>起動時にマネージャを開始しない</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Removed %1.</source>
         <translation>%1 を削除しました。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Undeploy System</source>
         <translation>システムの配備を解除(&amp;U)</translation>
     </message>
@@ -3139,7 +3139,7 @@
         <translation>ローカルランタイムを停止しました。</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+37"/>
         <source>Undeploying %1…</source>
         <translation>%1 の配備を解除中…</translation>
     </message>
@@ -5136,7 +5136,7 @@ Installs: %1</source>
         </translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+78"/>
         <source>%1 is not watched.</source>
         <translation>%1 はモニタしていません。</translation>
     </message>
