@@ -20,16 +20,6 @@ namespace {
 constexpr int runTimeoutMs = 30 * 1000;
 const QString hostName = QStringLiteral("pyhost");
 
-QString corpusDir()
-{
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples");
-}
-
-QString testScript(const QString &name)
-{
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
-}
-
 } // namespace
 
 class TestPython : public QObject
@@ -121,7 +111,7 @@ void TestPython::dataTypesConvert()
 {
     QProcess python;
     python.setProcessEnvironment(m_scripts.environment());
-    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {testScript(QStringLiteral("datatypes.py"))});
+    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {LiveTest::pythonTestScript(QStringLiteral("datatypes.py"))});
     QVERIFY(python.waitForFinished(runTimeoutMs));
     const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
     QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0, qPrintable(output));
@@ -130,7 +120,7 @@ void TestPython::dataTypesConvert()
 
 void TestPython::simpleIoExamplesRunUnchanged()
 {
-    const QString example = corpusDir() + QStringLiteral("/SimpleIO/");
+    const QString example = LiveTest::pythonCorpusDir() + QStringLiteral("/SimpleIO/");
     if (!QFileInfo::exists(example + QStringLiteral("ConsoleIn.py")))
         QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
               "project) is absent");
@@ -180,7 +170,7 @@ void TestPython::simpleIoExamplesRunUnchanged()
 
 void TestPython::seqIoExamplesRunUnchanged()
 {
-    const QString example = corpusDir() + QStringLiteral("/SeqIO/");
+    const QString example = LiveTest::pythonCorpusDir() + QStringLiteral("/SeqIO/");
     if (!QFileInfo::exists(example + QStringLiteral("SeqIn.py")))
         QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
               "project) is absent");
@@ -218,7 +208,7 @@ void TestPython::componentExchangesDataWithBuiltins()
     const QString manager = m_host.managerPath();
     QVERIFY(rtctlSucceeds({"mgr", manager, "create", "ConsoleIn?instance_name=ScalerFeed", "create",
                            "ConsoleOut?instance_name=ScalerSink"}));
-    QProcess *scaler = startScript(testScript(QStringLiteral("PyScaler.py")), QStringLiteral("PyScaler0.rtc"));
+    QProcess *scaler = startScript(LiveTest::pythonTestScript(QStringLiteral("PyScaler.py")), QStringLiteral("PyScaler0.rtc"));
     QVERIFY(scaler);
     QVERIFY(rtctlSucceeds({"con", "ScalerFeed.rtc:out", "PyScaler0.rtc:in"}));
     QVERIFY(rtctlSucceeds({"con", "PyScaler0.rtc:out", "ScalerSink.rtc:in"}));
@@ -243,7 +233,7 @@ void TestPython::callbackExceptionMovesComponentToError()
 {
     // The component's logger writes to a file: the traceback must be logged there.
     const QString log = m_work.filePath(QStringLiteral("faulty.log"));
-    QProcess *faulty = startScript(testScript(QStringLiteral("PyFaulty.py")), QStringLiteral("PyFaulty0.rtc"),
+    QProcess *faulty = startScript(LiveTest::pythonTestScript(QStringLiteral("PyFaulty.py")), QStringLiteral("PyFaulty0.rtc"),
                                    {QStringLiteral("logger.enable: YES"), QStringLiteral("logger.file_name: ") + log});
     QVERIFY(faulty);
     QCOMPARE(state(QStringLiteral("PyFaulty0.rtc")), QStringLiteral("Inactive"));
@@ -270,7 +260,7 @@ void TestPython::callbackExceptionMovesComponentToError()
 
 void TestPython::componentsOfOneProcessExchangeData()
 {
-    QProcess *pair = startScript(testScript(QStringLiteral("PyPair.py")), QStringLiteral("PySink0.rtc"));
+    QProcess *pair = startScript(LiveTest::pythonTestScript(QStringLiteral("PyPair.py")), QStringLiteral("PySink0.rtc"));
     QVERIFY(pair);
     // flush is the subscription the SDK short-cuts between C++ ports of one process; Python's
     // samples, which exist only as CDR, must still arrive.
@@ -291,7 +281,7 @@ void TestPython::componentsOfOneProcessExchangeData()
 
 void TestPython::configurationReachesBoundVariables()
 {
-    QProcess *config = startScript(testScript(QStringLiteral("PyConfig.py")), QStringLiteral("PyConfig0.rtc"));
+    QProcess *config = startScript(LiveTest::pythonTestScript(QStringLiteral("PyConfig.py")), QStringLiteral("PyConfig0.rtc"));
     QVERIFY(config);
     QVERIFY(rtctlSucceeds({"act", "PyConfig0.rtc"}));
     // The defaults, converted to the types of the variables' values.
@@ -343,7 +333,7 @@ void TestPython::installedPackagesWork()
     QProcess python;
     python.setProcessEnvironment(m_scripts.environment(packages));
     python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
-                 {testScript(QStringLiteral("datatypes.py")), QStringLiteral("--expect-prefix"), prefix});
+                 {LiveTest::pythonTestScript(QStringLiteral("datatypes.py")), QStringLiteral("--expect-prefix"), prefix});
     QVERIFY(python.waitForFinished(runTimeoutMs));
     const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
     QVERIFY2(python.exitCode() == 0 && output.contains(QLatin1String("datatypes: ok")), qPrintable(output));

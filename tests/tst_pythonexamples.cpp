@@ -30,16 +30,6 @@ namespace {
 constexpr int runTimeoutMs = 30 * 1000;
 const QString hostName = QStringLiteral("pyexamples");
 
-QString corpusDir()
-{
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples");
-}
-
-QString testScript(const QString &name)
-{
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
-}
-
 } // namespace
 
 class TestPythonExamples : public QObject
@@ -85,7 +75,7 @@ private:
 
 QString TestPythonExamples::example(const QString &file)
 {
-    const QString path = corpusDir() + QLatin1Char('/') + file;
+    const QString path = LiveTest::pythonCorpusDir() + QLatin1Char('/') + file;
     return QFileInfo::exists(path) ? path : QString();
 }
 
@@ -160,7 +150,7 @@ void TestPythonExamples::configSampleRunsUnchanged()
               "project) is absent");
     // Its own configuration file: sets default, mode0 and mode1, mode1 active.
     QProcess *sample = m_scripts.start(script, {QStringLiteral("ConfigSample0.rtc")}, runTimeoutMs,
-        {QStringLiteral("example.ConfigSample.config_file: ") + corpusDir() + QStringLiteral("/ConfigSample/configsample.conf")});
+        {QStringLiteral("example.ConfigSample.config_file: ") + LiveTest::pythonCorpusDir() + QStringLiteral("/ConfigSample/configsample.conf")});
     QVERIFY(sample);
     // ConfigSample activates itself through get_owned_contexts() and prints its variables each cycle.
     QTRY_VERIFY2_WITH_TIMEOUT(printed(sample).contains(QLatin1String("Active Configuration Set:  mode1")),
@@ -192,7 +182,7 @@ void TestPythonExamples::configSampleRunsUnchanged()
 
 void TestPythonExamples::configurationSetsAndListeners()
 {
-    QProcess *sets = m_scripts.start(testScript(QStringLiteral("PyConfigSets.py")), {QStringLiteral("PyConfigSets0.rtc")},
+    QProcess *sets = m_scripts.start(LiveTest::pythonTestScript(QStringLiteral("PyConfigSets.py")), {QStringLiteral("PyConfigSets0.rtc")},
                                      runTimeoutMs);
     QVERIFY(sets);
     // PyConfigSets activates itself (self._objref through its own context) and reports its state.
@@ -263,7 +253,7 @@ void TestPythonExamples::compositeRunsUnchanged()
 void TestPythonExamples::pythonMemberOfCompositeInManager()
 {
     // PyScaler (x1000) in rtmanager, the only member of a composite that exports both its ports.
-    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "load", testScript(QStringLiteral("PyScaler.py")), "create",
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "load", LiveTest::pythonTestScript(QStringLiteral("PyScaler.py")), "create",
                            "PyScaler?instance_name=ScalerMember", "create",
                            "PeriodicECSharedComposite?instance_name=ScalerComposite&conf.default.members=ScalerMember"
                            "&conf.default.exported_ports=ScalerMember.in,ScalerMember.out",
@@ -323,7 +313,7 @@ void TestPythonExamples::extTriggerStepsOnlyWhenTicked()
 
 void TestPythonExamples::componentTicksItsOwnContext()
 {
-    QProcess *ticked = m_scripts.start(testScript(QStringLiteral("PyTicked.py")), {QStringLiteral("PyTicked0.rtc")},
+    QProcess *ticked = m_scripts.start(LiveTest::pythonTestScript(QStringLiteral("PyTicked.py")), {QStringLiteral("PyTicked0.rtc")},
                                        runTimeoutMs, {QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext")});
     QVERIFY(ticked);
     // Its activation's cycle and its three ticks; then one from here.
@@ -384,7 +374,7 @@ void TestPythonExamples::dataTypesConvert()
     QFETCH(QString, script);
     QProcess python;
     python.setProcessEnvironment(m_scripts.environment());
-    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {testScript(script + QStringLiteral(".py"))});
+    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {LiveTest::pythonTestScript(script + QStringLiteral(".py"))});
     QVERIFY(python.waitForFinished(runTimeoutMs));
     const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
     QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0, qPrintable(output));

@@ -16,6 +16,20 @@
 
 namespace LiveTest {
 
+#if defined(RTSTUDIO_CONFORMANCE_DIR) && defined(RTSTUDIO_TEST_DATA_DIR)
+/// OpenRTM-aist-Python's examples in the shared corpus (absent on a clone with nothing beside it).
+inline QString pythonCorpusDir()
+{
+    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples");
+}
+
+/// A Python program of the tests' own data.
+inline QString pythonTestScript(const QString &name)
+{
+    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
+}
+#endif
+
 class PythonScripts
 {
 public:
