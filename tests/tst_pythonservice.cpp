@@ -28,6 +28,11 @@ QString dataFile(const QString &name)
     return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/pythonidl/") + name;
 }
 
+QString autoTestDir()
+{
+    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples/AutoTest/");
+}
+
 QString simpleServiceDir()
 {
     return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples/SimpleService/");
@@ -47,6 +52,7 @@ private slots:
     void pythonAndCxxComponentsCallEachOther();
     void pythonComponentAndSdkExamplesCallEachOther();
     void simpleServiceExamplesRunUnchanged();
+    void autoTestExamplesRunUnchanged();
 
 private:
     RtctlResult rtctl(const QStringList &arguments) const { return m_host.run(arguments); }
@@ -379,6 +385,65 @@ void TestPythonService::simpleServiceExamplesRunUnchanged()
              qPrintable(printed(consumer).right(1000)));
     m_live.stop(consumer);
     m_live.stop(provider);
+}
+
+// OpenRTM-aist-Python's AutoTest: AutoTestOut reads records from `original-data` in its working
+// folder and sends each as a float, a sequence of five floats and an echo() call; AutoTestIn
+// writes what it receives to `received-data`. Both files are the same when every record came
+// through, which is how OpenRTM-aist's own ConnectTest checks a port of the middleware.
+void TestPythonService::autoTestExamplesRunUnchanged()
+{
+    if (!QFileInfo::exists(autoTestDir() + QStringLiteral("AutoTestIn.py")))
+        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples "
+              "beside the project) is absent");
+    const QString stubs = compileIdl({autoTestDir() + QStringLiteral("AutoTestService.idl")});
+    QVERIFY(!stubs.isEmpty());
+    QDir folder(m_work.filePath(QStringLiteral("autotest")));
+    QVERIFY(folder.mkpath(QStringLiteral(".")));
+    QByteArray records;
+    for (int i = 0; i < 4; ++i) {
+        records += QByteArray::number(i, 'f', 6) + '\n';
+        QByteArrayList floats;
+        for (int j = 1; j <= 5; ++j)
+            floats << QByteArray::number(i + j / 10.0, 'f', 6);
+        records += floats.join(' ') + "\nmessage" + QByteArray::number(i) + '\n';
+    }
+    QFile original(folder.filePath(QStringLiteral("original-data")));
+    QVERIFY(original.open(QIODevice::WriteOnly));
+    original.write(records);
+    original.close();
+    // The examples open their files in the working folder, which they inherit.
+    const QString previous = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(folder.path()));
+    const auto back = qScopeGuard([&previous] { QDir::setCurrent(previous); });
+    // As the example's rtc.conf and autotestin.conf: ten cycles a second, the newest sample kept.
+    const QString slow = QStringLiteral("exec_cxt.periodic.rate: 10\n");
+    QProcess *in = startScript(autoTestDir() + QStringLiteral("AutoTestIn.py"), stubs, QStringLiteral("AutoTestIn0.rtc"),
+                               slow + QStringLiteral("port.inport.in.buffer.length: 1\n"
+                                                     "port.inport.seqin.buffer.length: 1\n"));
+    QVERIFY(in);
+    QProcess *out = startScript(autoTestDir() + QStringLiteral("AutoTestOut.py"), stubs,
+                                QStringLiteral("AutoTestOut0.rtc"), slow);
+    QVERIFY(out);
+    for (const QStringList &link : {QStringList{"AutoTestOut0.rtc:out", "AutoTestIn0.rtc:in"},
+                                    QStringList{"AutoTestOut0.rtc:seqout", "AutoTestIn0.rtc:seqin"},
+                                    QStringList{"AutoTestOut0.rtc:MyService", "AutoTestIn0.rtc:MyService"}})
+        QVERIFY2(rtctlSucceeds(QStringList{"con"} + link), qPrintable(link.join(' ')));
+    QVERIFY(rtctlSucceeds({"act", "AutoTestIn0.rtc"}));
+    QVERIFY(rtctlSucceeds({"act", "AutoTestOut0.rtc"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(in).contains(QLatin1String("fdata: 3.000000")), qPrintable(printed(in)),
+                              runTimeoutMs);
+    // AutoTestIn closes its file when deactivated.
+    QVERIFY(rtctlSucceeds({"deact", "AutoTestOut0.rtc"}));
+    QVERIFY(rtctlSucceeds({"deact", "AutoTestIn0.rtc"}));
+    const auto received = [&folder] {
+        QFile file(folder.filePath(QStringLiteral("received-data")));
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(received(), records, runTimeoutMs);
+    QVERIFY(endComponents({QStringLiteral("AutoTestIn0.rtc"), QStringLiteral("AutoTestOut0.rtc")}));
+    m_live.stop(out);
+    m_live.stop(in);
 }
 
 QTEST_GUILESS_MAIN(TestPythonService)

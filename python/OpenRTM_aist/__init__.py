@@ -9,7 +9,7 @@ import _rtstudio
 from _rtstudio import ConfigurationParamListenerType, ConfigurationSetListenerType, \
     ConfigurationSetNameListenerType, ConnectorDataListenerType, ConnectorInfo, ConnectorListenerType, InPort, \
     Manager, OutPort, Properties
-from OpenRTM_aist import CORBA_SeqUtil
+from OpenRTM_aist import BufferStatus, CORBA_SeqUtil
 from OpenRTM_aist.Async import Async_tInvoker
 from OpenRTM_aist.ConfigurationListeners import ConfigurationParamListener, ConfigurationSetListener, \
     ConfigurationSetNameListener
@@ -17,6 +17,7 @@ from OpenRTM_aist.CorbaConsumer import CorbaConsumer
 from OpenRTM_aist.CorbaPort import CorbaPort
 from OpenRTM_aist.DataFlowComponentBase import DataFlowComponentBase
 from OpenRTM_aist.POA import POA
+from OpenRTM_aist.RingBuffer import RingBuffer
 from OpenRTM_aist.Listeners import ConnectorDataListener, ConnectorDataListenerT, ConnectorListener, \
     ConnectorListenerStatus
 

@@ -95,6 +95,10 @@ void bindManager(py::module_ &module)
     using Release = py::call_guard<py::gil_scoped_release>;
     py::class_<RTC::Manager, std::unique_ptr<RTC::Manager, py::nodelete>>(module, "Manager")
         .def_static("init", &initManager, py::arg("argv"), py::return_value_policy::reference, Release())
+        // The older form, Manager.init(len(sys.argv), sys.argv): the count adds nothing.
+        .def_static(
+            "init", [](int, const std::vector<std::string> &arguments) { return initManager(arguments); },
+            py::arg("argc"), py::arg("argv"), py::return_value_policy::reference, Release())
         .def_static("instance", &RTC::Manager::instance, py::return_value_policy::reference)
         .def("setModuleInitProc", [](RTC::Manager &manager, py::object proc) {
             if (moduleInitProc == nullptr)
