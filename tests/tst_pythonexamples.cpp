@@ -366,6 +366,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("wide characters") << QStringLiteral("widechars");
     QTest::newRow("unions") << QStringLiteral("unions");
     QTest::newRow("object references") << QStringLiteral("references");
+    QTest::newRow("ring buffer") << QStringLiteral("ringbuffer");
 }
 
 void TestPythonExamples::dataTypesConvert()
