@@ -198,7 +198,9 @@ void TestCdrCodec::wideCharactersMatchOmniOrb()
     QVERIFY2(error.isEmpty(), qPrintable(error));
     QCOMPARE(codec.encode("RTC::TimedWChar", wcharValue, littleEndian, &error), theirs(wchar));
 
-    RTC::TimedWString wstring{{7, 8}, CORBA::wstring_dup(L"h\u3042!")};
+    RTC::TimedWString wstring;
+    wstring.tm = {7, 8};
+    wstring.data = CORBA::wstring_dup(L"h\u3042!"); // the member adopts it
     const QJsonObject wstringValue = json(R"({"tm":{"sec":7,"nsec":8},"data":"h\u3042!"})");
     QCOMPARE(codec.decode("RTC::TimedWString", theirs(wstring), littleEndian, &error), QJsonValue(wstringValue));
     QVERIFY2(error.isEmpty(), qPrintable(error));
