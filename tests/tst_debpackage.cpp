@@ -43,7 +43,9 @@ int TestDebPackage::run(const QString &program, const QStringList &arguments, QS
     if (!directory.isEmpty())
         process.setWorkingDirectory(directory);
     process.start(program, arguments);
-    if (!process.waitForFinished(120000)) {
+    // cpack runs dpkg-shlibdeps on every program and library: minutes for the sanitizer build on
+    // a busy machine.
+    if (!process.waitForFinished(400000)) {
         process.kill();
         process.waitForFinished();
         *output = QString::fromLocal8Bit(process.readAll());
