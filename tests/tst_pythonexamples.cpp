@@ -27,6 +27,10 @@
 
 namespace {
 
+constexpr const char *NoPythonCorpus
+    = "the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the project) "
+      "is absent";
+
 constexpr int runTimeoutMs = 30 * 1000;
 const QString hostName = QStringLiteral("pyexamples");
 
@@ -155,8 +159,7 @@ void TestPythonExamples::configSampleRunsUnchanged()
 {
     const QString script = example(QStringLiteral("ConfigSample/ConfigSample.py"));
     if (script.isEmpty())
-        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
-              "project) is absent");
+        QSKIP(NoPythonCorpus);
     // Its own configuration file: sets default, mode0 and mode1, mode1 active.
     QProcess *sample = m_scripts.start(script, {QStringLiteral("ConfigSample0.rtc")}, runTimeoutMs,
         {QStringLiteral("example.ConfigSample.config_file: ") + LiveTest::pythonCorpusDir() + QStringLiteral("/ConfigSample/configsample.conf")});
@@ -216,8 +219,7 @@ void TestPythonExamples::compositeRunsUnchanged()
 {
     const QString script = example(QStringLiteral("Composite/Composite.py"));
     if (script.isEmpty())
-        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
-              "project) is absent");
+        QSKIP(NoPythonCorpus);
     // The example's rtc.conf, with its module folder for "." and its composite.conf by path.
     const QString folder = QFileInfo(script).absolutePath();
     QProcess *server = m_scripts.start(script, {QStringLiteral("PeriodicECSharedComposite0.rtc")}, runTimeoutMs,
@@ -285,8 +287,7 @@ void TestPythonExamples::extTriggerStepsOnlyWhenTicked()
 {
     const QString in = example(QStringLiteral("ExtTrigger/ConsoleIn.py"));
     if (in.isEmpty())
-        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
-              "project) is absent");
+        QSKIP(NoPythonCorpus);
     // The example's rtc.conf: every component on an ExtTrigExecutionContext.
     const QStringList conf{QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext"),
                            QStringLiteral("exec_cxt.periodic.rate: 1000")};

@@ -20,6 +20,10 @@
 
 namespace {
 
+constexpr const char *NoPythonCorpus
+    = "the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the project) "
+      "is absent";
+
 constexpr int runTimeoutMs = 30 * 1000;
 const QString hostName = QStringLiteral("pysvchost");
 
@@ -350,9 +354,7 @@ void TestPythonService::pythonComponentAndSdkExamplesCallEachOther()
 void TestPythonService::simpleServiceExamplesRunUnchanged()
 {
     if (!QFileInfo::exists(simpleServiceDir() + QStringLiteral("MyServiceProvider.py")))
-        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples "
-              "beside the "
-              "project) is absent");
+        QSKIP(NoPythonCorpus);
     const QString stubs = compileIdl({simpleServiceDir() + QStringLiteral("MyService.idl")});
     QVERIFY(!stubs.isEmpty());
     QProcess *provider = startScript(simpleServiceDir() + QStringLiteral("MyServiceProvider.py"),
@@ -394,8 +396,7 @@ void TestPythonService::simpleServiceExamplesRunUnchanged()
 void TestPythonService::autoTestExamplesRunUnchanged()
 {
     if (!QFileInfo::exists(autoTestDir() + QStringLiteral("AutoTestIn.py")))
-        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples "
-              "beside the project) is absent");
+        QSKIP(NoPythonCorpus);
     const QString stubs = compileIdl({autoTestDir() + QStringLiteral("AutoTestService.idl")});
     QVERIFY(!stubs.isEmpty());
     QDir folder(m_work.filePath(QStringLiteral("autotest")));
