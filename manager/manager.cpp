@@ -461,7 +461,12 @@ RTC::RTObject_ptr Manager::createLocal(const CreateRequest &request, std::string
     }
     // Against exhaustion: a caller creating without end is refused, the manager serves on.
     const double limit = configNumber("manager.components.max", DefaultComponentLimit);
-    if (const size_t hosted = components().length(); double(hosted) >= limit) {
+    size_t hosted = 0;
+    {
+        std::lock_guard lock(m_mutex);
+        hosted = m_components.size();
+    }
+    if (double(hosted) >= limit) {
         fail("create_component: this manager hosts " + std::to_string(hosted)
                  + " components, as many as manager.components.max allows",
              error);
