@@ -69,7 +69,9 @@ private:
     /// What @p process printed so far (kept across calls).
     QString printed(QProcess *process);
 
-    QTemporaryDir m_work;
+    // No "-" in the name: OpenRTP's templates split the SDK's paths at "-I", "-L" and "-l", and a random
+    // suffix starting with one of those letters would break every installed-prefix build.
+    QTemporaryDir m_work{QDir::tempPath() + QStringLiteral("/rtsdkexamplesXXXXXX")};
     QString m_installPrefix;
     LiveTest::LiveSystem m_live;
     QProcess *m_manager = nullptr;

@@ -54,6 +54,7 @@ private slots:
     void layout();
     void cmakePackage_data();
     void cmakePackage();
+    void prefixThatTemplatesSplitIsReported();
     void rtmConfig_data();
     void rtmConfig();
     void pkgConfig_data();
@@ -228,6 +229,35 @@ void TestSdkPackage::cmakePackage()
     QCOMPARE(vars.value(QStringLiteral("RTSTUDIO_SDK")), QStringLiteral("TRUE"));
     QCOMPARE(vars.value(QStringLiteral("target OpenRTM::RTC")), root + QStringLiteral("/lib/librtstudio_rtm.so"));
     QCOMPARE(vars.value(QStringLiteral("OpenRTM 3 found")), QStringLiteral("0"));
+}
+
+void TestSdkPackage::prefixThatTemplatesSplitIsReported()
+{
+    // The package file derives the prefix from where it lies; a copy under a folder named with "-I"
+    // stands for an SDK installed there.
+    const QString moved = m_workDir.filePath(QStringLiteral("sdk-Include"));
+    const QString packageDir = QStringLiteral("/lib/cmake/openrtm-2.1");
+    QVERIFY(QDir().mkpath(moved + packageDir));
+    for (const QString &file : QDir(m_installPrefix + packageDir).entryList(QDir::Files))
+        QVERIFY(QFile::copy(m_installPrefix + packageDir + QLatin1Char('/') + file,
+                            moved + packageDir + QLatin1Char('/') + file));
+    const RunResult configure = run(QStringLiteral(RTSTUDIO_CMAKE_COMMAND),
+                                    {QStringLiteral("-S"), dataDir(QStringLiteral("variables")), QStringLiteral("-B"),
+                                     m_workDir.filePath(QStringLiteral("variables-moved")),
+                                     QStringLiteral("-DCMAKE_PREFIX_PATH=") + moved},
+                                    environment(moved), m_workDir.path(), configureTimeoutMs);
+    QVERIFY2(configure.ok(), qPrintable(failure(QStringLiteral("configure"), configure)));
+    QVERIFY2(configure.output.contains(QStringLiteral("contains \"-I\"")), qPrintable(configure.output));
+    QVERIFY2(configure.output.contains(moved), qPrintable(configure.output));
+
+    // Where the prefix has none of them, nothing is said.
+    const RunResult plain = run(QStringLiteral(RTSTUDIO_CMAKE_COMMAND),
+                                {QStringLiteral("-S"), dataDir(QStringLiteral("variables")), QStringLiteral("-B"),
+                                 m_workDir.filePath(QStringLiteral("variables-plain")),
+                                 QStringLiteral("-DCMAKE_PREFIX_PATH=") + m_installPrefix},
+                                environment(m_installPrefix), m_workDir.path(), configureTimeoutMs);
+    QVERIFY2(plain.ok(), qPrintable(failure(QStringLiteral("configure"), plain)));
+    QVERIFY2(!plain.output.contains(QStringLiteral("OpenRTP split")), qPrintable(plain.output));
 }
 
 void TestSdkPackage::rtmConfig_data()
