@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "clienttls.h"
 #include "diagramexport.h"
 #include "interruptsignals.h"
 #include "mainwindow.h"
@@ -8,6 +9,7 @@
 #include "uilanguage.h"
 
 #include <QApplication>
+#include <QStatusBar>
 #include <QByteArray>
 #include <QCommandLineParser>
 #include <QIcon>
@@ -113,7 +115,14 @@ int main(int argc, char *argv[])
     if (parser.isSet(exportOption))
         return exportDiagram(parser, outputOption);
 
+    // Before any remote call: TLS as the environment or a local runtime started with --tls says.
+    QString tlsError;
+    const bool tlsUsable = Deploy::configureClientTls(&tlsError);
     Studio::MainWindow window;
+    if (!tlsUsable)
+        window.statusBar()->showMessage(QApplication::translate("main", "TLS: %1").arg(tlsError));
+    if (!tlsUsable)
+        std::fprintf(stderr, "rtstudio: TLS: %s\n", qPrintable(tlsError));
     Codegen::InterruptSignals interrupts;
     closeOnSignals(&interrupts, &window);
     window.show();

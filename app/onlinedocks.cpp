@@ -8,6 +8,7 @@
 #include "driftview.h"
 #include "executioncontextview.h"
 #include "installation.h"
+#include "orb.h"
 #include "managerunit.h"
 #include "managerview.h"
 #include "nameservicemodel.h"
@@ -236,7 +237,8 @@ void OnlineDocks::showLocalRuntime(const QString &failure)
     // reason is in its tooltip.
     m_localRuntimeLabel->setText(
         m_localRuntime.running()
-            ? tr("Local runtime: name server %1, manager port %2")
+            ? (m_localRuntime.tls ? tr("Local runtime (TLS): name server %1, manager port %2")
+                                  : tr("Local runtime: name server %1, manager port %2"))
                   .arg(m_localRuntime.nameServerAddress())
                   .arg(m_localRuntime.manager.port)
         : failure.isEmpty() ? tr("Local runtime: stopped")
@@ -255,7 +257,7 @@ void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::Local
         [ownership = m_ownership] {
             QString error;
             const Deploy::LocalRuntimeState state
-                = Deploy::LocalRuntime().start(Codegen::Installation::managerProgram(), &error);
+                = Deploy::LocalRuntime().start(Codegen::Installation::managerProgram(), Corba::Orb::usesTls(), &error);
             if (!error.isEmpty())
                 throw Corba::Error(Corba::Error::Kind::System, error);
             std::lock_guard lock(ownership->mutex);

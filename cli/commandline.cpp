@@ -4,6 +4,7 @@
 #include "gencommand.h"
 #include "idlcommand.h"
 #include "localcommand.h"
+#include "tlscommand.h"
 #include "packagecommand.h"
 #include "plancommand.h"
 #include "profilecommand.h"
@@ -115,6 +116,7 @@ std::unique_ptr<CommandLine> createCommandLine()
         commandLine->addCommand(std::make_unique<RtSystemCommand>(action));
     commandLine->addCommand(std::make_unique<RtCryoCommand>());
     commandLine->addCommand(std::make_unique<LocalCommand>());
+    commandLine->addCommand(std::make_unique<TlsCommand>());
     commandLine->addCommand(std::make_unique<PlanCommand>());
     return commandLine;
 }

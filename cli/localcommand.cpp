@@ -24,6 +24,7 @@ void print(const Deploy::LocalRuntimeState &state, bool json, QTextStream &out)
         out << QJsonDocument(QJsonObject {{QStringLiteral("running"), state.running()},
                                           {QStringLiteral("nameServer"), processJson(state.nameServer)},
                                           {QStringLiteral("manager"), processJson(state.manager)},
+                                          {QStringLiteral("tls"), state.tls},
                                           {QStringLiteral("folder"), state.folder}})
                    .toJson(QJsonDocument::Compact)
             << '\n';
@@ -41,6 +42,9 @@ void print(const Deploy::LocalRuntimeState &state, bool json, QTextStream &out)
     };
     line("name server", state.nameServer, state.nameServerAddress());
     line("manager    ", state.manager, state.managerAddress());
+    if (state.tls)
+        out << "TLS         on: certificates in " << Deploy::LocalRuntime(state.folder).tls().certificateAuthorityFile
+            << " and beside it; rtctl and RT Studio use them\n";
 }
 
 } // namespace
@@ -53,17 +57,21 @@ QString LocalCommand::summary() const
 QString LocalCommand::usage() const
 {
     return QStringLiteral(
-        "Usage: rtctl local start|stop|status [--json]\n\n"
+        "Usage: rtctl local start [--tls]|stop|status [--json]\n\n"
         "The local runtime: omniNames on port 2809 (or the next free one) and an rtmanager master\n"
         "on 2810 (or the next free one) registered in it, both running on after rtctl exits, their\n"
         "data and logs in $XDG_RUNTIME_DIR/rtstudio. start reuses a running one; RT Studio's\n"
-        "Online menu finds the same. status exits 0 when both run, 1 otherwise.\n");
+        "Online menu finds the same. status exits 0 when both run, 1 otherwise.\n\n"
+        "--tls  both speak TLS only and require a certificate of the runtime's own certificate\n"
+        "       authority, made with openssl on first use (tls/ in the runtime's folder) with one for\n"
+        "       the servers and one for you, which rtctl and RT Studio then present by themselves.\n");
 }
 
 int LocalCommand::run(const QStringList &arguments, Streams streams)
 {
     QStringList words = arguments;
     const bool json = words.removeAll(QStringLiteral("--json")) > 0;
+    const bool tls = words.removeAll(QStringLiteral("--tls")) > 0;
     if (words.size() != 1)
         return usageError(QStringLiteral("local needs one of start, stop, status"), streams);
     Deploy::LocalRuntime runtime;
@@ -75,7 +83,7 @@ int LocalCommand::run(const QStringList &arguments, Streams streams)
     }
     if (action == QLatin1String("start")) {
         QString error;
-        const Deploy::LocalRuntimeState state = runtime.start(Codegen::Installation::managerProgram(), &error);
+        const Deploy::LocalRuntimeState state = runtime.start(Codegen::Installation::managerProgram(), tls, &error);
         if (!error.isEmpty()) {
             streams.err << "rtctl local: " << error << '\n';
             return ExitProblems;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "clienttls.h"
 #include "commandline.h"
 
 #include <QCoreApplication>
@@ -23,6 +24,12 @@ int main(int argc, char *argv[])
 
     QTextStream out(stdout);
     QTextStream err(stderr);
+    // Before any remote call: TLS as the environment or the local runtime says.
+    QString tlsError;
+    if (!Deploy::configureClientTls(&tlsError)) {
+        err << "rtctl: TLS: " << tlsError << '\n';
+        return Cli::ExitUsage;
+    }
     const int code = Cli::createCommandLine()->run(app.arguments().mid(1), Cli::Streams{out, err});
     out.flush();
     err.flush();

@@ -4,6 +4,7 @@
 #include "corbacall.h"
 #include "iorendpoint.h"
 #include "rtpath.h"
+#include "tlstransport.h"
 
 #include <omniORB4/minorCode.h>
 
@@ -42,8 +43,12 @@ void createOrb()
         QMutexLocker locker(&s_argumentsMutex);
         arguments += s_arguments;
     }
+    if (Tls::Transport::installed()) {
+        for (const std::string &argument : Tls::Transport::orbArguments())
+            arguments << QString::fromStdString(argument);
+    }
     std::vector<QByteArray> storage;
-    for (const QString &argument : arguments)
+    for (const QString &argument : std::as_const(arguments))
         storage.push_back(argument.toLocal8Bit());
     std::vector<char *> argv;
     for (QByteArray &bytes : storage)
@@ -102,6 +107,28 @@ bool Orb::isInitialised()
     return s_initialised;
 }
 
+bool Orb::setTls(const QString &certificateAuthorityFile, const QString &keyFile, const QString &keyFilePassword,
+                 QString *error)
+{
+    if (s_initialised) {
+        *error = QStringLiteral("TLS must be chosen before the first remote call");
+        return false;
+    }
+    std::string reason;
+    if (!Tls::Transport::install({certificateAuthorityFile.toStdString(), keyFile.toStdString(),
+                                  keyFilePassword.toStdString()},
+                                 &reason)) {
+        *error = QString::fromStdString(reason);
+        return false;
+    }
+    return true;
+}
+
+bool Orb::usesTls()
+{
+    return Tls::Transport::installed();
+}
+
 namespace Internal {
 
 CORBA::ORB_ptr orb()
@@ -133,6 +160,14 @@ QString systemExceptionText(const CORBA::SystemException &e)
                                                         : QStringLiteral("maybe completed"));
 }
 
+// Why the TLS handshake of this thread's call failed, when one did: the ORB itself only says the
+// connection could not be made.
+QString tlsFailure()
+{
+    const std::string reason = Tls::Transport::lastFailure();
+    return reason.empty() ? QString() : QStringLiteral(": ") + QString::fromStdString(reason);
+}
+
 } // namespace
 
 void rethrowAsError(const QString &target)
@@ -153,10 +188,10 @@ void rethrowAsError(const QString &target)
         const QString why = e.minor() == omni::TRANSIENT_ConnectFailed
             ? QStringLiteral("cannot connect")
             : systemExceptionText(e);
-        throw fail(Kind::Transient, QStringLiteral("unreachable (%1)").arg(why));
+        throw fail(Kind::Transient, QStringLiteral("unreachable (%1)%2").arg(why, tlsFailure()));
     } catch (const CORBA::COMM_FAILURE &e) {
         throw fail(Kind::CommFailure,
-                   QStringLiteral("connection failed (%1)").arg(systemExceptionText(e)));
+                   QStringLiteral("connection failed (%1)%2").arg(systemExceptionText(e), tlsFailure()));
     } catch (const CORBA::OBJECT_NOT_EXIST &) {
         throw fail(Kind::ObjectNotExist, QStringLiteral("object does not exist"));
     } catch (const CORBA::SystemException &e) {
@@ -188,7 +223,8 @@ CORBA::Object_ptr toObject(const QString &reference, const QString &target)
 {
     return call(target, [&] {
         try {
-            return orb()->string_to_object(corbalocWithGiop12(reference).toLatin1().constData());
+            const QString address = Orb::usesTls() ? corbalocOverTls(reference) : corbalocWithGiop12(reference);
+            return orb()->string_to_object(address.toLatin1().constData());
         } catch (const CORBA::BAD_PARAM &) {
             throw Error(Error::Kind::BadPath,
                         QStringLiteral("%1: not an object reference: %2").arg(target, reference));

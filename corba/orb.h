@@ -24,6 +24,17 @@ public:
     static int callTimeout();
     /// True once the ORB has been created.
     static bool isInitialised();
+    /**
+     * TLS for every connection, before first use, with OpenRTM-aist's corba.ssl.* meanings: the
+     * authority whose certificates are trusted, this user's private key and certificate in one PEM
+     * file (none: the servers, which require one, refuse the connection) and the key's password.
+     * Addresses `host:port` and `corbaloc:iiop:` are then reached over TLS (`corbaloc:ssliop:`).
+     * False with the file and the reason in @p error when the files are not usable.
+     */
+    static bool setTls(const QString &certificateAuthorityFile, const QString &keyFile,
+                       const QString &keyFilePassword, QString *error);
+    /// True once setTls() succeeded.
+    static bool usesTls();
 
     static constexpr int defaultCallTimeout = 3000;
 };

@@ -275,4 +275,18 @@ QString corbalocWithGiop12(const QString &reference)
     return url->toString();
 }
 
+QString corbalocOverTls(const QString &reference)
+{
+    std::optional<Corbaloc> url = Corbaloc::parse(reference);
+    if (!url)
+        return reference;
+    for (CorbalocAddress &address : url->addresses) {
+        if (address.isIiop()) {
+            address.protocol = QStringLiteral("ssliop");
+            address.hasVersion = false;
+        }
+    }
+    return url->toString();
+}
+
 } // namespace Corba

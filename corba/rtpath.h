@@ -74,6 +74,9 @@ struct Corbaloc
     static std::optional<Corbaloc> parse(const QString &text);
 };
 
+/// @p reference with each `iiop` corbaloc address made `ssliop` (TLS); anything else unchanged.
+QString corbalocOverTls(const QString &reference);
+
 /**
  * @p reference with GIOP 1.2 for each corbaloc address that names no version (`corbaloc:iiop:h:p/k`
  * becomes `corbaloc:iiop:1.2@h:p/k`); anything else unchanged. With corbaloc's default 1.0, omniORB

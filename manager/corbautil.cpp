@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "corbautil.h"
 
+#include "tlstransport.h"
+
 #include <omniORB4/IIOP.h>
 #include <omniORB4/omniIOR.h>
 
@@ -119,7 +121,9 @@ CORBA::ORB_var theOrb()
 
 CORBA::Object_ptr corbalocObject(const std::string &address, const std::string &key)
 {
-    return theOrb()->string_to_object(("corbaloc:iiop:1.2@" + address + '/' + key).c_str());
+    // A TLS process reaches its peers over TLS only (OpenRTM-aist's `corbaloc:ssliop:`).
+    const char *protocol = Tls::Transport::installed() ? "corbaloc:ssliop:" : "corbaloc:iiop:1.2@";
+    return theOrb()->string_to_object((protocol + address + '/' + key).c_str());
 }
 
 // A port nobody listens on right now, for a slave we start ourselves.

@@ -7,6 +7,7 @@
 #include "hostfacts.h"
 #include "managerdetail.h"
 #include "managerservant.h"
+#include "tlstransport.h"
 
 #include <omniORB4/omniORB.h>
 
@@ -56,6 +57,12 @@ void Manager::destroyOrb()
     }
 }
 
+Tls::Settings Manager::tlsSettings() const
+{
+    return {m_config.value("corba.ssl.certificate_authority_file"), m_config.value("corba.ssl.key_file"),
+            m_config.value("corba.ssl.key_file_password")};
+}
+
 bool Manager::initOrb(std::string *error)
 {
     // Where to listen: every entry of corba.endpoints ("all" or a blank host: every interface; no
@@ -87,17 +94,29 @@ bool Manager::initOrb(std::string *error)
         endpoints.emplace_back(std::string(), 0);
     std::vector<std::string> args = {"rtmanager"};
     std::string listening;
+    const Tls::Settings tls = tlsSettings();
+    if (tls.enabled() && !Tls::Transport::install(tls, error))
+        return false;
+    std::vector<std::string> addresses;
     for (auto &[host, port] : endpoints) {
         if (port == 0)
             port = freeLoopbackPort();
-        const std::string giop = "giop:tcp:" + host + ':' + std::to_string(port);
-        args.insert(args.end(), {"-ORBendPoint", giop});
+        addresses.push_back(host + ':' + std::to_string(port));
+        const std::string giop = (tls.enabled() ? "giop:ssl:" : "giop:tcp:") + addresses.back();
         listening += (listening.empty() ? "" : ", ") + giop;
+    }
+    if (tls.enabled()) {
+        const std::vector<std::string> tlsArgs = Tls::Transport::orbArguments(addresses);
+        args.insert(args.end(), tlsArgs.begin(), tlsArgs.end());
+    } else {
+        for (const std::string &address : addresses)
+            args.insert(args.end(), {"-ORBendPoint", "giop:tcp:" + address});
     }
     // Peers on the same host (omniORB prefers a Unix socket over TCP when an object's reference
     // offers one) reach this process without the TCP stack: a few microseconds per call instead of
-    // tens. Remote peers ignore the socket and use TCP as before.
-    if (m_config.isYes("corba.unix_socket", true)) {
+    // tens. Remote peers ignore the socket and use TCP as before. Not with TLS: a socket would let
+    // local peers in without a certificate.
+    if (!tls.enabled() && m_config.isYes("corba.unix_socket", true)) {
         // A slave's master cleared the folder when it started: slaves started side by side need
         // not each read it again.
         const std::string folder = localSocketFolder(!m_config.contains("manager.spawned_by"));

@@ -25,6 +25,10 @@
 #include <thread>
 #include <vector>
 
+namespace Tls {
+struct Settings;
+}
+
 namespace Runtime {
 
 class RtObject;
@@ -234,6 +238,8 @@ private:
 
     // manager.cpp
     bool initOrb(std::string *error);
+    /// OpenRTM-aist's corba.ssl.* keys: TLS for every connection when set.
+    Tls::Settings tlsSettings() const;
     RTC::RTObject_ptr createRequested(const std::string &request, std::string *error);
     void destroyOrb();
     RTC::RTObject_ptr createLocal(const CreateRequest &request, std::string *error);

@@ -8,6 +8,7 @@ set -euo pipefail
 # (gpg, gpgv; apt-get reads them in the tests). clang: the libFuzzer harnesses; lld links the test
 # presets' programs. libz3-dev: the deployment planner's solver. python3-dev, pybind11-dev: the Python
 # component API. busybox: its httpd serves a component repository in the deployment tests.
+# libssl-dev, openssl: TLS (omniORB's SSL transport; certificates made with the openssl command).
 packages=(
     build-essential cmake ninja-build pkg-config git
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev libqt6svg6 qt6-qpa-plugins libgl-dev
@@ -17,6 +18,7 @@ packages=(
     xvfb xauth fonts-dejavu-core ccache iproute2 clang lld
     dpkg-dev binutils gpg gpgv gpg-agent gpgconf xz-utils gzip apt busybox
     python3-dev pybind11-dev
+    libssl-dev openssl
 )
 
 missing=()

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "localruntime.h"
 
+#include "certificateauthority.h"
+#include "tlstransport.h"
+
 #include <QDeadlineTimer>
 #include <QDir>
 #include <QFile>
@@ -93,11 +96,13 @@ QJsonObject writeProcess(const LocalProcess &process)
 }
 
 /// Starts `program` detached with its output in `log`; 0 when it did not start.
-qint64 startDetached(const QString &program, const QStringList &arguments, const QString &log)
+qint64 startDetached(const QString &program, const QStringList &arguments, const QString &log,
+                     const QProcessEnvironment &environment)
 {
     QProcess process;
     process.setProgram(program);
     process.setArguments(arguments);
+    process.setProcessEnvironment(environment);
     process.setStandardInputFile(QProcess::nullDevice());
     process.setStandardOutputFile(log, QIODevice::Append);
     process.setStandardErrorFile(log, QIODevice::Append);
@@ -178,7 +183,41 @@ LocalRuntimeState LocalRuntime::status() const
     const QJsonObject object = QJsonDocument::fromJson(file.readAll()).object();
     state.nameServer = readProcess(object.value(QStringLiteral("nameServer")).toObject(), NameServerProgram);
     state.manager = readProcess(object.value(QStringLiteral("manager")).toObject(), ManagerProgram);
+    state.tls = object.value(QStringLiteral("tls")).toBool();
     return state;
+}
+
+LocalRuntimeTls LocalRuntime::tls() const
+{
+    LocalRuntimeTls files;
+    const CertificateAuthority authority(QDir(m_folder).filePath(QStringLiteral("tls")));
+    files.enabled = status().tls;
+    files.certificateAuthorityFile = authority.certificatePath();
+    files.nodeKeyFile = authority.issuedPath(QStringLiteral("localhost"));
+    files.userKeyFile = authority.issuedPath(QStringLiteral("user"));
+    return files;
+}
+
+bool LocalRuntime::prepareTls(LocalRuntimeTls *files, QString *error) const
+{
+    CertificateAuthority authority(QDir(m_folder).filePath(QStringLiteral("tls")));
+    const auto expired = [](const QString &path) {
+        Tls::CertificateInfo info;
+        std::string ignored;
+        return !Tls::readCertificate(path.toStdString(), &info, &ignored) || info.expired;
+    };
+    if (authority.exists() && expired(authority.certificatePath()))
+        QDir(QDir(m_folder).filePath(QStringLiteral("tls"))).removeRecursively();
+    if (!authority.exists() && !authority.init(QStringLiteral("RT Studio local runtime"), 3650, error))
+        return false;
+    for (const QString &name : {QStringLiteral("localhost"), QStringLiteral("user")}) {
+        if (expired(authority.issuedPath(name))
+            && !authority.issue(name, 825, {QStringLiteral("127.0.0.1")}, nullptr, error))
+            return false;
+    }
+    *files = tls();
+    files->enabled = true;
+    return true;
 }
 
 void LocalRuntime::writeState(const LocalRuntimeState &state) const
@@ -187,21 +226,28 @@ void LocalRuntime::writeState(const LocalRuntimeState &state) const
     if (!file.open(QIODevice::WriteOnly))
         return;
     file.write(QJsonDocument(QJsonObject {{QStringLiteral("nameServer"), writeProcess(state.nameServer)},
-                                          {QStringLiteral("manager"), writeProcess(state.manager)}})
+                                          {QStringLiteral("manager"), writeProcess(state.manager)},
+                                          {QStringLiteral("tls"), state.tls}})
                    .toJson());
     file.commit();
 }
 
 LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *error, int timeoutMs)
 {
+    return start(managerProgram, false, error, timeoutMs);
+}
+
+LocalRuntimeState LocalRuntime::start(const QString &managerProgram, bool tls, QString *error, int timeoutMs)
+{
     LocalRuntimeState state = status();
-    if (state.running())
+    if (state.running() && state.tls == tls)
         return state;
-    // Half a runtime (one of the two gone) is started afresh.
+    // Half a runtime (one of the two gone), or one running the other way, is started afresh.
     if (state.nameServer.running || state.manager.running)
         stop(nullptr);
     state = LocalRuntimeState();
     state.folder = m_folder;
+    state.tls = tls;
     const auto fail = [&](const QString &message) {
         if (error)
             *error = message;
@@ -228,12 +274,22 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *er
     state.manager.port = firstFree(DefaultManagerPort, state.nameServer.port);
     if (state.nameServer.port == 0 || state.manager.port == 0)
         return fail(tr("no free port from 2809 on"));
+    LocalRuntimeTls files;
+    if (tls && !prepareTls(&files, error))
+        return fail(tr("cannot prepare TLS: %1").arg(*error));
     const QString namingLog = folder.filePath(QStringLiteral("omniNames.log"));
-    state.nameServer.pid
-        = startDetached(omniNames,
-                        {QStringLiteral("-start"), QString::number(state.nameServer.port), QStringLiteral("-datadir"),
-                         data, QStringLiteral("-logdir"), data},
-                        namingLog);
+    QStringList namingArguments {QStringLiteral("-start"), QString::number(state.nameServer.port),
+                                 QStringLiteral("-datadir"), data, QStringLiteral("-logdir"), data};
+    QProcessEnvironment namingEnvironment = QProcessEnvironment::systemEnvironment();
+    if (tls) {
+        const Tls::Settings settings {files.certificateAuthorityFile.toStdString(), files.nodeKeyFile.toStdString(), {}};
+        for (const auto &[name, value] : Tls::Transport::nameServerEnvironment(settings))
+            namingEnvironment.insert(QString::fromStdString(name), QString::fromStdString(value));
+        for (const std::string &argument :
+             Tls::Transport::nameServerArguments("127.0.0.1:" + std::to_string(state.nameServer.port)))
+            namingArguments << QString::fromStdString(argument);
+    }
+    state.nameServer.pid = startDetached(omniNames, namingArguments, namingLog, namingEnvironment);
     writeState(state);
     if (state.nameServer.pid == 0 || !waitUntilListening(state.nameServer, NameServerProgram, deadline))
         return fail(tr("omniNames did not start on port %1: %2")
@@ -244,13 +300,16 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, QString *er
     const QString managerLog = folder.filePath(QStringLiteral("rtmanager.log"));
     // The local runtime is this user's trial bench: reachable from this machine only, so it may
     // load the modules the Builder builds wherever their projects are.
-    state.manager.pid = startDetached(
-        managerProgram,
-        {QStringLiteral("-d"), QStringLiteral("-o"),
-         QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(state.manager.port), QStringLiteral("-o"),
-         QStringLiteral("corba.nameservers=") + state.nameServerAddress(), QStringLiteral("-o"),
-         QStringLiteral("manager.modules.abs_path_allowed=YES")},
-        managerLog);
+    QStringList managerArguments {QStringLiteral("-d"), QStringLiteral("-o"),
+                                  QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(state.manager.port),
+                                  QStringLiteral("-o"), QStringLiteral("corba.nameservers=") + state.nameServerAddress(),
+                                  QStringLiteral("-o"), QStringLiteral("manager.modules.abs_path_allowed=YES")};
+    if (tls)
+        managerArguments << QStringLiteral("-o")
+                         << QStringLiteral("corba.ssl.certificate_authority_file=") + files.certificateAuthorityFile
+                         << QStringLiteral("-o") << QStringLiteral("corba.ssl.key_file=") + files.nodeKeyFile;
+    state.manager.pid = startDetached(managerProgram, managerArguments, managerLog,
+                                      QProcessEnvironment::systemEnvironment());
     writeState(state);
     if (state.manager.pid == 0 || !waitUntilListening(state.manager, ManagerProgram, deadline))
         return fail(tr("rtmanager did not start on port %1: %2")

@@ -22,12 +22,22 @@ struct LocalRuntimeState
     LocalProcess manager;
     QString folder; ///< where the runtime keeps its state, the name server's data and the logs
     bool startedNow = false; ///< start() launched the processes (rather than finding them running)
+    bool tls = false; ///< both speak TLS only, with the runtime's own certificate authority
 
     bool running() const { return nameServer.running && manager.running; }
     /// `127.0.0.1:PORT` of the name server, as rtshell paths and the Name Service view name it.
     QString nameServerAddress() const;
     /// `corbaloc:iiop:127.0.0.1:PORT/manager`.
     QString managerAddress() const;
+};
+
+/// The files of a local runtime that runs with TLS (in its folder's `tls/`).
+struct LocalRuntimeTls
+{
+    bool enabled = false;
+    QString certificateAuthorityFile; ///< the runtime's own authority, `tls/ca.pem`
+    QString nodeKeyFile; ///< the name server's and the manager's key and certificate, `tls/localhost.pem`
+    QString userKeyFile; ///< the user's, which rtctl and rtstudio present, `tls/user.pem`
 };
 
 /**
@@ -56,11 +66,22 @@ public:
      * puts the reason in `error`; a half-started runtime is stopped again.
      */
     LocalRuntimeState start(const QString &managerProgram, QString *error, int timeoutMs = 20000);
+    /**
+     * As start(), with @p tls: both processes speak TLS only and require a certificate of the
+     * runtime's own authority, which is created with the name server's and the user's certificates
+     * on first use (and again when one has expired). A runtime already running the other way is
+     * stopped and started afresh.
+     */
+    LocalRuntimeState start(const QString &managerProgram, bool tls, QString *error, int timeoutMs = 20000);
+    /// The TLS files of the runtime when it was started with TLS; disabled otherwise.
+    LocalRuntimeTls tls() const;
     /// Stops both processes (TERM, then KILL after a grace time) and forgets them.
     bool stop(QString *error);
 
 private:
     QString statePath() const;
+    /// Creates what TLS needs that does not exist yet or has expired.
+    bool prepareTls(LocalRuntimeTls *files, QString *error) const;
     void writeState(const LocalRuntimeState &state) const;
 
     QString m_folder;

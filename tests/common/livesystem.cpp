@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "livesystem.h"
 
+#include "tlstransport.h"
+
 #include <QDeadlineTimer>
 #include <QDir>
 #include <QFile>
@@ -159,21 +161,41 @@ QString LiveSystem::namingServer() const
 
 bool LiveSystem::startNameServer(QString *error, quint16 port)
 {
+    m_namingPort = port ? port : freePort();
+    return startOmniNames({QStringLiteral("-ORBendPoint"), QStringLiteral("giop:tcp:") + namingServer()},
+                          QProcessEnvironment::systemEnvironment(), error);
+}
+
+bool LiveSystem::startTlsNameServer(const QString &caFile, const QString &keyFile, QString *error)
+{
+    m_namingPort = freePort();
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const auto &[name, value] :
+         Tls::Transport::nameServerEnvironment({caFile.toStdString(), keyFile.toStdString(), {}}))
+        environment.insert(QString::fromStdString(name), QString::fromStdString(value));
+    QStringList arguments;
+    for (const std::string &argument : Tls::Transport::nameServerArguments(namingServer().toStdString()))
+        arguments << QString::fromStdString(argument);
+    return startOmniNames(arguments, environment, error);
+}
+
+bool LiveSystem::startOmniNames(const QStringList &endpointArguments, const QProcessEnvironment &environment,
+                                QString *error)
+{
     const QString program = QStandardPaths::findExecutable(QStringLiteral("omniNames"));
     if (program.isEmpty()) {
         *error = QStringLiteral("omniNames is not installed (package omniorb-nameserver)");
         return false;
     }
     m_dataDir = std::make_unique<QTemporaryDir>();
-    m_namingPort = port ? port : freePort();
-    const QString portText = QString::number(m_namingPort);
     auto process = std::make_unique<QProcess>();
     prepareChild(*process, m_host.enterChild);
     process->setProcessChannelMode(QProcess::MergedChannels);
-    process->start(program, {QStringLiteral("-start"), portText, QStringLiteral("-datadir"),
-                             m_dataDir->path(), QStringLiteral("-logdir"), m_dataDir->path(),
-                             QStringLiteral("-ORBendPoint"),
-                             QStringLiteral("giop:tcp:%1:%2").arg(m_host.address, portText)});
+    process->setProcessEnvironment(environment);
+    process->start(program, QStringList {QStringLiteral("-start"), QString::number(m_namingPort),
+                                         QStringLiteral("-datadir"), m_dataDir->path(), QStringLiteral("-logdir"),
+                                         m_dataDir->path()}
+                                + endpointArguments);
     if (!process->waitForStarted(10000)) {
         *error = QStringLiteral("omniNames did not start: %1").arg(process->errorString());
         return false;

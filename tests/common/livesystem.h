@@ -87,6 +87,11 @@ public:
     QString address() const { return m_host.address; }
     /// Starts omniNames on `port` (0: a free loopback port) and waits until it accepts connections.
     bool startNameServer(QString *error, quint16 port = 0);
+    /**
+     * As startNameServer(), serving over TLS only with the certificate authority @p caFile and the
+     * key and certificate @p keyFile (omniNames with omniORB's SSL transport preloaded).
+     */
+    bool startTlsNameServer(const QString &caFile, const QString &keyFile, QString *error);
     quint16 namingPort() const { return m_namingPort; }
     /// `ADDRESS:PORT` of the name server, as an rtshell path element.
     QString namingServer() const;
@@ -141,6 +146,8 @@ public:
     void stopAll();
 
 private:
+    bool startOmniNames(const QStringList &endpointArguments, const QProcessEnvironment &environment,
+                        QString *error);
     LiveHost m_host;
     std::vector<std::unique_ptr<QProcess>> m_processes;
     std::unique_ptr<QTemporaryDir> m_dataDir;

@@ -1,0 +1,323 @@
+// SPDX-License-Identifier: MIT
+// TLS for a whole system: a certificate authority and certificates made with `rtctl tls`, omniNames,
+// an rtmanager master and its slaves serving over TLS only, rtctl and this test calling them with an
+// operator's certificate; connections without a certificate, with one of another authority or with
+// an expired one refused while they are set up, with the reason; and `rtctl local start --tls`.
+#include "componentstatus.h"
+#include "livesystem.h"
+#include "rtctlrunner.h"
+#include "tlstransport.h"
+
+#include <RTC.hh>
+
+#include <QJsonObject>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
+
+#include <unistd.h>
+
+namespace {
+
+constexpr int ReadyTimeoutMs = 20000;
+
+QString hostName()
+{
+    char name[256] = {};
+    gethostname(name, sizeof name - 1);
+    return QString::fromLocal8Bit(name);
+}
+
+} // namespace
+
+class TestTls : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void certificatesSayWhatTheyAre();
+    void badCertificateFilesAreNamed();
+    void systemRunsOverTls();
+    void refusedPeers_data();
+    void refusedPeers();
+    void plainClientGetsNoService();
+    void localRuntimeWithTls();
+
+private:
+    QString path(const QString &name) const { return m_dir.filePath(name); }
+    RtctlResult rtctl(const QStringList &arguments, const QString &ca, const QString &key = {}) const;
+    RtctlResult operatorRtctl(const QStringList &arguments) const
+    {
+        return rtctl(arguments, path("fleet/ca.pem"), path("fleet/operator.pem"));
+    }
+    bool startMaster(QString *error);
+    /// What the master printed so far.
+    QString masterOutput();
+
+    QTemporaryDir m_dir {QDir::tempPath() + QStringLiteral("/rttlsXXXXXX")};
+    LiveTest::LiveSystem m_live;
+    std::unique_ptr<QProcess> m_master;
+    QString m_masterOutput;
+    quint16 m_masterPort = 0;
+    CORBA::ORB_var m_orb;
+};
+
+RtctlResult TestTls::rtctl(const QStringList &arguments, const QString &ca, const QString &key) const
+{
+    // No local runtime of the user's: only what is given here.
+    return runRtctl(arguments, {{"RTSTUDIO_TLS_CA", ca}, {"RTSTUDIO_TLS_KEY", key},
+                                {"XDG_RUNTIME_DIR", m_dir.filePath(QStringLiteral("runtime"))}});
+}
+
+void TestTls::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    QVERIFY(QDir(m_dir.path()).mkpath(QStringLiteral("runtime")));
+    QFile::setPermissions(m_dir.filePath(QStringLiteral("runtime")),
+                          QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    if (QStandardPaths::findExecutable(QStringLiteral("openssl")).isEmpty())
+        QFAIL("openssl is not installed (Debian package openssl)");
+
+    // One authority for the fleet, a certificate for the node and one for the operator; another
+    // authority and its own certificate; an operator's certificate that expires at once.
+    const QList<QStringList> steps {
+        {"tls", "init", path("fleet"), "--name", "Fleet CA"},
+        {"tls", "issue", path("fleet"), "node", "--host", "127.0.0.1"},
+        {"tls", "issue", path("fleet"), "operator"},
+        {"tls", "issue", path("fleet"), "former", "--days", "0"},
+        {"tls", "init", path("other"), "--name", "Other CA"},
+        {"tls", "issue", path("other"), "intruder"},
+    };
+    for (const QStringList &step : steps) {
+        const RtctlResult r = runRtctl(step);
+        QVERIFY2(r.code == 0, qPrintable(step.join(' ') + ": " + r.err));
+    }
+
+    QString error;
+    QVERIFY2(m_live.startTlsNameServer(path("fleet/ca.pem"), path("fleet/node.pem"), &error), qPrintable(error));
+    QVERIFY2(startMaster(&error), qPrintable(error));
+
+    // This test calls the components too, as the operator.
+    std::string reason;
+    QVERIFY2(Tls::Transport::install({path("fleet/ca.pem").toStdString(), path("fleet/operator.pem").toStdString(), {}},
+                                     &reason),
+             reason.c_str());
+    std::vector<std::string> arguments {"tst_tls"};
+    for (const std::string &argument : Tls::Transport::orbArguments())
+        arguments.push_back(argument);
+    std::vector<char *> argv;
+    for (std::string &argument : arguments)
+        argv.push_back(argument.data());
+    int argc = int(argv.size());
+    m_orb = CORBA::ORB_init(argc, argv.data());
+}
+
+void TestTls::cleanupTestCase()
+{
+    runRtctl({"local", "stop"}, {{"XDG_RUNTIME_DIR", m_dir.filePath(QStringLiteral("runtime"))}});
+    if (m_master) {
+        m_master->kill();
+        m_master->waitForFinished();
+    }
+    if (!CORBA::is_nil(m_orb))
+        m_orb->destroy();
+}
+
+bool TestTls::startMaster(QString *error)
+{
+    m_masterPort = LiveTest::freePort();
+    m_master = std::make_unique<QProcess>();
+    m_master->setProcessChannelMode(QProcess::MergedChannels);
+    const QStringList options {
+        QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_masterPort),
+        QStringLiteral("corba.nameservers=") + m_live.namingServer(),
+        QStringLiteral("corba.ssl.certificate_authority_file=") + path("fleet/ca.pem"),
+        QStringLiteral("corba.ssl.key_file=") + path("fleet/node.pem"),
+    };
+    QStringList arguments {QStringLiteral("-d")};
+    for (const QString &option : options)
+        arguments << QStringLiteral("-o") << option;
+    m_master->start(QStringLiteral(RTMANAGER_PATH), arguments);
+    if (!m_master->waitForStarted(ReadyTimeoutMs)) {
+        *error = QStringLiteral("rtmanager did not start: ") + m_master->errorString();
+        return false;
+    }
+    QDeadlineTimer deadline(ReadyTimeoutMs);
+    while (!masterOutput().contains(QLatin1String("rtmanager ready"))) {
+        if (deadline.hasExpired() || m_master->state() != QProcess::Running) {
+            *error = QStringLiteral("rtmanager did not start: ") + masterOutput();
+            return false;
+        }
+        m_master->waitForReadyRead(50);
+    }
+    return true;
+}
+
+QString TestTls::masterOutput()
+{
+    m_masterOutput += QString::fromLocal8Bit(m_master->readAll());
+    return m_masterOutput;
+}
+
+void TestTls::certificatesSayWhatTheyAre()
+{
+    const RtctlResult shown = runRtctl({"tls", "show", path("fleet/operator.pem"), path("fleet/ca.pem")});
+    QVERIFY2(shown.code == 0, qPrintable(shown.err));
+    QVERIFY2(shown.out.contains("subject   /CN=operator"), qPrintable(shown.out));
+    QVERIFY2(shown.out.contains("issuer    /CN=Fleet CA"), qPrintable(shown.out));
+    QVERIFY2(shown.out.contains("certificate authority"), qPrintable(shown.out));
+    QVERIFY2(shown.out.contains("(valid)"), qPrintable(shown.out));
+
+    // Issued with no days left: expired within a second.
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"tls", "show", path("fleet/former.pem")}).code == 1, 5000);
+    QVERIFY(runRtctl({"tls", "show", path("fleet/former.pem")}).out.contains("EXPIRED"));
+
+    // The key files keep their secrets from other users.
+    QCOMPARE(QFile::permissions(path("fleet/ca.key")) & (QFile::ReadOther | QFile::ReadGroup), QFile::Permissions());
+    QCOMPARE(QFile::permissions(path("fleet/operator.pem")) & (QFile::ReadOther | QFile::ReadGroup),
+             QFile::Permissions());
+
+    const RtctlResult again = runRtctl({"tls", "init", path("fleet")});
+    QCOMPARE(again.code, 1);
+    QVERIFY2(again.err.contains("there is a certificate authority already"), qPrintable(again.err));
+    const RtctlResult badName = runRtctl({"tls", "issue", path("fleet"), "../escape"});
+    QCOMPARE(badName.code, 1);
+    QVERIFY2(badName.err.contains("cannot name a certificate"), qPrintable(badName.err));
+}
+
+void TestTls::badCertificateFilesAreNamed()
+{
+    // Refused before any connection is tried, naming the file and what is wrong with it.
+    const RtctlResult missing = rtctl({"ls", "/" + m_live.namingServer()}, path("fleet/none.pem"));
+    QCOMPARE(missing.code, 2);
+    QVERIFY2(missing.err.contains(path("fleet/none.pem") + ": cannot be read"), qPrintable(missing.err));
+    const RtctlResult foreign
+        = rtctl({"ls", "/" + m_live.namingServer()}, path("fleet/ca.pem"), path("other/intruder.pem"));
+    QCOMPARE(foreign.code, 2);
+    QVERIFY2(foreign.err.contains("does not verify against"), qPrintable(foreign.err));
+    const RtctlResult expired
+        = rtctl({"ls", "/" + m_live.namingServer()}, path("fleet/ca.pem"), path("fleet/former.pem"));
+    QCOMPARE(expired.code, 2);
+    QVERIFY2(expired.err.contains("certificate has expired"), qPrintable(expired.err));
+    const RtctlResult notAKey = rtctl({"ls", "/" + m_live.namingServer()}, path("fleet/ca.pem"), path("fleet/ca.pem"));
+    QCOMPARE(notAKey.code, 2);
+    QVERIFY2(notAKey.err.contains("no private key"), qPrintable(notAKey.err));
+}
+
+void TestTls::systemRunsOverTls()
+{
+    const QString server = QLatin1Char('/') + m_live.namingServer();
+    const QString managerPath = server + QLatin1Char('/') + hostName() + QStringLiteral(".host_cxt/manager.mgr");
+    QTRY_VERIFY_WITH_TIMEOUT(operatorRtctl({"ls", "-R", server}).out.contains("manager.mgr"), 10000);
+
+    // Components in two slaves: the master starts them with its TLS settings.
+    for (const char *type : {"ConsoleIn?manager_name=slaveA", "ConsoleOut?manager_name=slaveB"}) {
+        const RtctlResult created = operatorRtctl({"mgr", managerPath, "create", type});
+        QVERIFY2(created.code == 0, qPrintable(created.err + masterOutput()));
+    }
+    const QString context = server + QLatin1Char('/') + hostName() + QStringLiteral(".host_cxt/");
+    const QString source = context + QStringLiteral("ConsoleIn0.rtc");
+    const QString sink = context + QStringLiteral("ConsoleOut0.rtc");
+    QTRY_VERIFY_WITH_TIMEOUT(operatorRtctl({"ls", context}).out.contains("ConsoleOut0.rtc"), 10000);
+    RtctlResult r = operatorRtctl({"con", source + ":out", sink + ":in"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    r = operatorRtctl({"act", sink, source});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+
+    // Data from one slave to the other, and to rtctl, which serves its own port over TLS.
+    const QString sinkReference = QStringLiteral("corbaname:ssliop:%1#%2.host_cxt/ConsoleOut0.rtc")
+                                .arg(m_live.namingServer(), hostName());
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::componentStatus(m_orb, sinkReference, "received_count").toLong() > 5, 10000);
+    r = operatorRtctl({"print", "-n", "3", source + ":out"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.lines().size(), 3);
+    r = operatorRtctl({"deact", source});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+}
+
+void TestTls::refusedPeers_data()
+{
+    QTest::addColumn<QString>("certificate");
+    QTest::addColumn<QString>("serverSays");
+    QTest::newRow("no certificate") << QString() << "certificate required";
+    QTest::newRow("another authority") << "other/intruder.pem" << "unable to get local issuer certificate";
+    QTest::newRow("expired") << "fleet/former.pem" << "certificate has expired";
+}
+
+void TestTls::refusedPeers()
+{
+    QFETCH(QString, certificate);
+    QFETCH(QString, serverSays);
+    // A TLS client of its own (OpenSSL's), since rtctl checks its files before it connects: the
+    // master refuses during the handshake, before a single request, and says why in its log.
+    QStringList arguments {QStringLiteral("s_client"), QStringLiteral("-connect"),
+                           QStringLiteral("127.0.0.1:%1").arg(m_masterPort), QStringLiteral("-CAfile"),
+                           path("fleet/ca.pem")};
+    if (!certificate.isEmpty())
+        arguments << QStringLiteral("-cert") << path(certificate) << QStringLiteral("-key") << path(certificate);
+    const qsizetype before = masterOutput().size();
+    QProcess client;
+    client.setProcessChannelMode(QProcess::MergedChannels);
+    client.start(QStringLiteral("openssl"), arguments);
+    client.closeWriteChannel();
+    QVERIFY(LiveTest::waitForExit(&client, 20000));
+    const auto logged = [&] { return masterOutput().mid(before); };
+    QTRY_VERIFY2_WITH_TIMEOUT(logged().contains("TLS: refused the connection of 127.0.0.1:") && logged().contains(serverSays),
+                              qPrintable(logged() + QString::fromLocal8Bit(client.readAll())), 5000);
+}
+
+void TestTls::plainClientGetsNoService()
+{
+    // No TLS at all: the servers accept no plain connection.
+    const RtctlResult plain = runRtctl({"ls", "/" + m_live.namingServer()},
+                                       {{"XDG_RUNTIME_DIR", m_dir.filePath(QStringLiteral("runtime"))}});
+    QCOMPARE(plain.code, 1);
+    QVERIFY2(plain.err.contains("connection failed") || plain.err.contains("unreachable"), qPrintable(plain.err));
+    // With the authority but no certificate of its own, the name server refuses the handshake.
+    const RtctlResult anonymous = rtctl({"ls", "/" + m_live.namingServer()}, path("fleet/ca.pem"));
+    QCOMPARE(anonymous.code, 1);
+    QVERIFY2(anonymous.err.contains("certificate required") || anonymous.err.contains("presents no certificate"),
+             qPrintable(anonymous.err));
+}
+
+void TestTls::localRuntimeWithTls()
+{
+    const QHash<QString, QString> environment {{"XDG_RUNTIME_DIR", m_dir.filePath(QStringLiteral("runtime"))}};
+    const RtctlResult started = runRtctl({"local", "start", "--tls", "--json"}, environment);
+    QVERIFY2(started.code == 0, qPrintable(started.err));
+    const QJsonObject state = started.json().object();
+    QVERIFY(state["tls"].toBool());
+    const QString server = QStringLiteral("/127.0.0.1:%1").arg(state["nameServer"].toObject()["port"].toInt());
+
+    // rtctl finds the runtime's certificates by itself.
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"ls", "-R", server}, environment).out.contains("manager.mgr"), 10000);
+    const RtctlResult shown = runRtctl({"tls", "show"}, environment);
+    QVERIFY2(shown.code == 0 && shown.out.contains("TLS of the local runtime"), qPrintable(shown.out + shown.err));
+    const RtctlResult status = runRtctl({"local", "status"}, environment);
+    QVERIFY2(status.out.contains("TLS         on"), qPrintable(status.out));
+
+    // Without the user's certificate the runtime refuses.
+    QHash<QString, QString> anonymous = environment;
+    anonymous.insert("RTSTUDIO_TLS_CA", state["folder"].toString() + "/tls/ca.pem");
+    const RtctlResult refused = runRtctl({"ls", server}, anonymous);
+    QCOMPARE(refused.code, 1);
+    QVERIFY2(refused.err.contains("certificate required") || refused.err.contains("presents no certificate"),
+             qPrintable(refused.err));
+
+    // Started again without --tls, the runtime is plain again.
+    const RtctlResult plain = runRtctl({"local", "start", "--json"}, environment);
+    QVERIFY2(plain.code == 0, qPrintable(plain.err));
+    QVERIFY(!plain.json().object()["tls"].toBool());
+    const QString plainServer
+        = QStringLiteral("/127.0.0.1:%1").arg(plain.json().object()["nameServer"].toObject()["port"].toInt());
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"ls", "-R", plainServer}, environment).out.contains("manager.mgr"), 10000);
+    QCOMPARE(runRtctl({"local", "stop"}, environment).code, 0);
+}
+
+QTEST_GUILESS_MAIN(TestTls)
+#include "tst_tls.moc"
