@@ -44,7 +44,7 @@ void createOrb()
         arguments += s_arguments;
     }
     if (Tls::Transport::installed()) {
-        for (const std::string &argument : Tls::Transport::orbArguments())
+        for (const std::string &argument : Tls::orbArguments())
             arguments << QString::fromStdString(argument);
     }
     std::vector<QByteArray> storage;

@@ -106,7 +106,7 @@ bool Manager::initOrb(std::string *error)
         listening += (listening.empty() ? "" : ", ") + giop;
     }
     if (tls.enabled()) {
-        const std::vector<std::string> tlsArgs = Tls::Transport::orbArguments(addresses);
+        const std::vector<std::string> tlsArgs = Tls::orbArguments(addresses);
         args.insert(args.end(), tlsArgs.begin(), tlsArgs.end());
     } else {
         for (const std::string &address : addresses)

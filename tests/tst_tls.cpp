@@ -108,7 +108,7 @@ void TestTls::initTestCase()
                                      &reason),
              reason.c_str());
     std::vector<std::string> arguments {"tst_tls"};
-    for (const std::string &argument : Tls::Transport::orbArguments())
+    for (const std::string &argument : Tls::orbArguments())
         arguments.push_back(argument);
     std::vector<char *> argv;
     for (std::string &argument : arguments)

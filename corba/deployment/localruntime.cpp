@@ -283,10 +283,10 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, bool tls, Q
     QProcessEnvironment namingEnvironment = QProcessEnvironment::systemEnvironment();
     if (tls) {
         const Tls::Settings settings {files.certificateAuthorityFile.toStdString(), files.nodeKeyFile.toStdString(), {}};
-        for (const auto &[name, value] : Tls::Transport::nameServerEnvironment(settings))
+        for (const auto &[name, value] : Tls::nameServerEnvironment(settings))
             namingEnvironment.insert(QString::fromStdString(name), QString::fromStdString(value));
         for (const std::string &argument :
-             Tls::Transport::nameServerArguments("127.0.0.1:" + std::to_string(state.nameServer.port)))
+             Tls::nameServerArguments("127.0.0.1:" + std::to_string(state.nameServer.port)))
             namingArguments << QString::fromStdString(argument);
     }
     state.nameServer.pid = startDetached(omniNames, namingArguments, namingLog, namingEnvironment);

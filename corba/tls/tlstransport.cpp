@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tlstransport.h"
 
-#include <omniORB4/CORBA.h>
-#include <omniORB4/sslContext.h>
+#include "omniorbssl.h"
 
 #include <openssl/err.h>
 #include <openssl/pem.h>
@@ -275,15 +274,8 @@ bool Transport::install(const Settings &settings, std::string *error)
         return false;
     Settings &kept = installedSettings();
     kept = settings;
-    sslContext::certificate_authority_file = kept.certificateAuthorityFile.c_str();
-    sslContext::key_file = kept.keyFile.empty() ? nullptr : kept.keyFile.c_str();
-    // omniORB loads the private key only when a password is set (an unencrypted key ignores it), and
-    // fails to start when it is set without a key file.
-    sslContext::key_file_password = kept.keyFile.empty() ? nullptr : kept.keyFilePassword.c_str();
-    // Both ends present a certificate; one without is refused during the handshake.
-    sslContext::verify_mode = SSL_VERIFY_PEER | SSL_VERIFY_FAIL_IF_NO_PEER_CERT;
-    sslContext::verify_callback = verifyCallback;
-    sslContext::info_callback = infoCallback;
+    if (!Internal::configureOmniOrbSsl(kept, verifyCallback, infoCallback, error))
+        return false;
     s_installed = true;
     return true;
 }
@@ -291,34 +283,6 @@ bool Transport::install(const Settings &settings, std::string *error)
 bool Transport::installed()
 {
     return s_installed;
-}
-
-std::vector<std::string> Transport::orbArguments(const std::vector<std::string> &listen)
-{
-    std::vector<std::string> arguments;
-    for (const std::string &address : listen.empty() ? std::vector<std::string> {":"} : listen)
-        arguments.insert(arguments.end(), {"-ORBendPoint", "giop:ssl:" + address});
-    // Nothing but TLS in either direction: a reference offering only plain TCP is not used, and a
-    // plain connection to our endpoints is not accepted.
-    arguments.insert(arguments.end(), {"-ORBserverTransportRule", "* ssl", "-ORBclientTransportRule", "* ssl"});
-    return arguments;
-}
-
-std::vector<std::pair<std::string, std::string>> Transport::nameServerEnvironment(const Settings &settings)
-{
-    return {{"LD_PRELOAD", RTSTUDIO_OMNIORB_SSL_SONAME},
-            {"ORBsslCAFile", settings.certificateAuthorityFile},
-            {"ORBsslKeyFile", settings.keyFile},
-            // omniORB loads the key only when a password is given; an unencrypted key ignores it.
-            {"ORBsslKeyPassword", settings.keyFilePassword.empty() ? "-" : settings.keyFilePassword}};
-}
-
-std::vector<std::string> Transport::nameServerArguments(const std::string &address)
-{
-    std::vector<std::string> arguments {"-ignoreport"};
-    const std::vector<std::string> orb = orbArguments({address});
-    arguments.insert(arguments.end(), orb.begin(), orb.end());
-    return arguments;
 }
 
 std::string Transport::lastFailure()

@@ -1,27 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "tlsarguments.h"
+
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace Tls {
-
-/**
- * How a process takes part in TLS, with OpenRTM-aist's rtc.conf keys and meanings: the certificate
- * authority whose certificates it trusts (`corba.ssl.certificate_authority_file`), its own private key
- * and certificate in one PEM file (`corba.ssl.key_file`) and the key's password
- * (`corba.ssl.key_file_password`, empty for an unencrypted key).
- */
-struct Settings
-{
-    std::string certificateAuthorityFile;
-    std::string keyFile;
-    std::string keyFilePassword;
-
-    /// True when any key is set: the process then speaks TLS only.
-    bool enabled() const { return !certificateAuthorityFile.empty() || !keyFile.empty(); }
-};
 
 /**
  * omniORB's SSL transport for the whole process. Every connection made or accepted is TLS, and
@@ -42,22 +26,6 @@ public:
 
     /// True once install() succeeded.
     static bool installed();
-
-    /**
-     * ORB_init options for a TLS process: an SSL endpoint per `host:port` of @p listen (for a
-     * client, none given: one on every interface and a port of the system's choosing, for the
-     * objects it serves such as a port tap's), and transport rules that accept and use SSL only.
-     */
-    static std::vector<std::string> orbArguments(const std::vector<std::string> &listen = {});
-
-    /**
-     * How Debian's omniNames serves over TLS with @p settings: the environment variables to add
-     * (the SSL transport's library preloaded, its files in omniORB's ORBssl* variables, which other
-     * users cannot read as they could a command line) and the options to add after its own
-     * (`-ignoreport`, the SSL endpoint at @p address `host:port`, TLS only).
-     */
-    static std::vector<std::pair<std::string, std::string>> nameServerEnvironment(const Settings &settings);
-    static std::vector<std::string> nameServerArguments(const std::string &address);
 
     /**
      * Why the last TLS connection set-up of this process failed, as OpenSSL names it: the peer's

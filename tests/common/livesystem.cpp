@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "livesystem.h"
 
-#include "tlstransport.h"
+#include "tlsarguments.h"
 
 #include <QDeadlineTimer>
 #include <QDir>
@@ -171,10 +171,10 @@ bool LiveSystem::startTlsNameServer(const QString &caFile, const QString &keyFil
     m_namingPort = freePort();
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     for (const auto &[name, value] :
-         Tls::Transport::nameServerEnvironment({caFile.toStdString(), keyFile.toStdString(), {}}))
+         Tls::nameServerEnvironment({caFile.toStdString(), keyFile.toStdString(), {}}))
         environment.insert(QString::fromStdString(name), QString::fromStdString(value));
     QStringList arguments;
-    for (const std::string &argument : Tls::Transport::nameServerArguments(namingServer().toStdString()))
+    for (const std::string &argument : Tls::nameServerArguments(namingServer().toStdString()))
         arguments << QString::fromStdString(argument);
     return startOmniNames(arguments, environment, error);
 }
