@@ -174,6 +174,7 @@ void OnlineDocks::fillMenu(QMenu *menu)
     });
     menu->addSeparator();
     add("actionStartLocalRuntime", tr("Start &Local Runtime"), [this] { startLocalRuntime(); });
+    add("actionStartLocalRuntimeTls", tr("Start Local Runtime with &TLS"), [this] { startLocalRuntimeWithTls(); });
     add("actionStopLocalRuntime", tr("Stop Local Runtime"), [this] { stopLocalRuntime(); });
     m_keepLocalRuntime = add("actionKeepLocalRuntime", tr("&Keep Local Runtime After Quit"), [] {});
     m_keepLocalRuntime->setCheckable(true);
@@ -248,18 +249,41 @@ void OnlineDocks::showLocalRuntime(const QString &failure)
                                         : tr("The local runtime did not start: %1").arg(failure));
 }
 
+void OnlineDocks::startLocalRuntimeWithTls()
+{
+    if (!Corba::Orb::usesTls() && Corba::Orb::isInitialised()) {
+        // The process's connections are plain TCP from their first one on.
+        emit statusMessage(tr("RT Studio talks plain TCP since it started: quit it, run \"rtctl local start "
+                              "--tls\" and start RT Studio again."));
+        return;
+    }
+    startLocalRuntime({}, {}, true);
+}
+
 void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then,
                                     const std::function<void(const QString &)> &failed)
+{
+    startLocalRuntime(then, failed, Corba::Orb::usesTls());
+}
+
+void OnlineDocks::startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then,
+                                    const std::function<void(const QString &)> &failed, bool tls)
 {
     emit statusMessage(tr("Starting the local runtime…"));
     m_session->submit(
         SystemEditor::OnlineSession::deploymentHost(),
-        [ownership = m_ownership] {
+        [ownership = m_ownership, tls] {
             QString error;
             const Deploy::LocalRuntimeState state
-                = Deploy::LocalRuntime().start(Codegen::Installation::managerProgram(), Corba::Orb::usesTls(), &error);
+                = Deploy::LocalRuntime().start(Codegen::Installation::managerProgram(), tls, &error);
             if (!error.isEmpty())
                 throw Corba::Error(Corba::Error::Kind::System, error);
+            // Before this program's first remote call: present the user's certificate of the runtime.
+            if (tls && !Corba::Orb::usesTls()) {
+                const Deploy::LocalRuntimeTls files = Deploy::LocalRuntime().tls();
+                if (!Corba::Orb::setTls(files.certificateAuthorityFile, files.userKeyFile, QString(), &error))
+                    throw Corba::Error(Corba::Error::Kind::System, error);
+            }
             std::lock_guard lock(ownership->mutex);
             ownership->started = ownership->started || state.startedNow;
             if (ownership->quitting && ownership->started) {

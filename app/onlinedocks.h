@@ -114,6 +114,11 @@ public:
      */
     void startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then = {},
                            const std::function<void(const QString &)> &failed = {});
+    /**
+     * As startLocalRuntime(), over TLS only with the runtime's own certificates, which RT Studio then
+     * presents; possible while RT Studio has not yet talked to any server in plain TCP.
+     */
+    void startLocalRuntimeWithTls();
     void stopLocalRuntime();
     /**
      * Runs `profile` on the local runtime as a newcomer wants it: starts the runtime, restores the
@@ -157,6 +162,8 @@ private:
     Deploy::TargetOptions targetOptions() const;
     QStringList knownManagers() const;
     void showLocalRuntime(const QString &failure = QString());
+    void startLocalRuntime(const std::function<void(const Deploy::LocalRuntimeState &)> &then,
+                           const std::function<void(const QString &)> &failed, bool tls);
     void watchFirstConnection(OnlineDocument *online, const Profile::RtsProfile &profile);
     void placeMapped(SystemEditor::OnlineDiagram *diagram, const Profile::RtsProfile &profile,
                      const QVariant &plan);

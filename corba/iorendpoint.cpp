@@ -75,15 +75,42 @@ private:
     bool m_little = false;
 };
 
+// The port of a TAG_SSL_SEC_TRANS component (CORBA Security, SSLIOP): its encapsulation holds the
+// association options the target supports and requires, then the port.
+std::optional<quint16> sslPort(const QByteArray &component)
+{
+    CdrReader reader(component);
+    if (!reader.ushort() || !reader.ushort())
+        return std::nullopt;
+    return reader.ushort();
+}
+
 QString iiopEndpoint(const QByteArray &profile)
 {
     CdrReader reader(profile);
-    if (!reader.skip(2)) // IIOP version
-        return {};
+    const auto major = reader.octet();
+    const auto minor = reader.octet();
     const auto host = reader.bytes();
-    const auto port = reader.ushort();
-    if (!host || !port)
+    auto port = reader.ushort();
+    if (!major || !minor || !host || !port)
         return {};
+    // A TLS-only server publishes port 0 and its TLS port in a component (IIOP 1.1 and later).
+    constexpr quint32 tagSslSecTrans = 20;
+    if (*port == 0 && (*major > 1 || *minor >= 1) && reader.bytes()) {
+        const auto components = reader.ulong();
+        for (quint32 i = 0; components && i < *components && i < 64; ++i) {
+            const auto tag = reader.ulong();
+            const auto data = reader.bytes();
+            if (!tag || !data)
+                break;
+            if (*tag == tagSslSecTrans) {
+                port = sslPort(*data);
+                break;
+            }
+        }
+        if (!port)
+            return {};
+    }
     QByteArray name = *host;
     if (name.endsWith('\0'))
         name.chop(1);

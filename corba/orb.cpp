@@ -7,7 +7,9 @@
 #include "tlstransport.h"
 
 #include <omniORB4/minorCode.h>
+#include <omniORB4/omniInterceptors.h>
 
+#include <QHash>
 #include <QMutex>
 
 #include <atomic>
@@ -34,6 +36,23 @@ void applyDefaultTimeout(int milliseconds)
 {
     omniORB::setClientCallTimeout(CORBA::ULong(milliseconds));
     omniORB::setClientConnectTimeout(0);
+}
+
+QMutex s_peersMutex;
+QHash<QString, QString> s_peerIdentities;
+
+// Remembers who each TLS server proved to be (its certificate's common name), by its address.
+CORBA::Boolean recordPeer(omni::omniInterceptors::clientOpenConnection_T::info_T &info)
+{
+    QString address = QString::fromLatin1(info.peeraddress());
+    const QLatin1String scheme("giop:ssl:");
+    if (!address.startsWith(scheme))
+        return true;
+    address.remove(0, scheme.size());
+    const char *identity = info.peeridentity();
+    QMutexLocker locker(&s_peersMutex);
+    s_peerIdentities.insert(address, identity ? QString::fromUtf8(identity) : QString());
+    return true;
 }
 
 void createOrb()
@@ -67,6 +86,8 @@ void createOrb()
                                 {"verifyObjectExistsAndType", "0"},
                                 {nullptr, nullptr}};
     s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
+    if (Tls::Transport::installed())
+        omniORB::getInterceptors()->clientOpenConnection.add(recordPeer);
     s_initialised = true;
     applyDefaultTimeout(s_callTimeout);
 }
@@ -127,6 +148,12 @@ bool Orb::setTls(const QString &certificateAuthorityFile, const QString &keyFile
 bool Orb::usesTls()
 {
     return Tls::Transport::installed();
+}
+
+QString Orb::peerIdentity(const QString &hostPort)
+{
+    QMutexLocker locker(&s_peersMutex);
+    return s_peerIdentities.value(hostPort);
 }
 
 namespace Internal {

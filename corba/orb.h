@@ -35,6 +35,11 @@ public:
                        const QString &keyFilePassword, QString *error);
     /// True once setTls() succeeded.
     static bool usesTls();
+    /**
+     * Who the TLS server at @p hostPort (numeric, as in object references) proved to be when this
+     * process connected to it: its certificate's common name; empty before a connection or without TLS.
+     */
+    static QString peerIdentity(const QString &hostPort);
 
     static constexpr int defaultCallTimeout = 3000;
 };

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "iorendpoint.h"
 #include "rtpath.h"
 
 #include <QTest>
@@ -19,6 +20,9 @@ private slots:
     void nameServiceAddress();
     void corbalocAsksForGiop12_data();
     void corbalocAsksForGiop12();
+    void corbalocOverTls_data();
+    void corbalocOverTls();
+    void tlsServersEndpointIsItsTlsPort();
 };
 
 void TestCorbaClientPath::parses_data()
@@ -210,6 +214,40 @@ void TestCorbaClientPath::corbalocAsksForGiop12()
     QFETCH(QString, reference);
     QFETCH(QString, sent);
     QCOMPARE(Corba::corbalocWithGiop12(reference), sent);
+}
+
+void TestCorbaClientPath::corbalocOverTls_data()
+{
+    QTest::addColumn<QString>("reference");
+    QTest::addColumn<QString>("sent");
+    QTest::newRow("iiop") << "corbaloc:iiop:127.0.0.1:2809/NameService" << "corbaloc:ssliop:127.0.0.1:2809/NameService";
+    QTest::newRow("empty protocol") << "corbaloc::host:2810/manager" << "corbaloc:ssliop:host:2810/manager";
+    QTest::newRow("version dropped") << "corbaloc:iiop:1.2@host:1/k" << "corbaloc:ssliop:host:1/k";
+    QTest::newRow("several addresses") << "corbaloc:iiop:a:1,:b:2/k" << "corbaloc:ssliop:a:1,ssliop:b:2/k";
+    QTest::newRow("ssliop already") << "corbaloc:ssliop:host:1/k" << "corbaloc:ssliop:host:1/k";
+    QTest::newRow("rir") << "corbaloc:rir:/NameService" << "corbaloc:rir:/NameService";
+    QTest::newRow("IOR") << "IOR:0100" << "IOR:0100";
+}
+
+void TestCorbaClientPath::corbalocOverTls()
+{
+    QFETCH(QString, reference);
+    QFETCH(QString, sent);
+    QCOMPARE(Corba::corbalocOverTls(reference), sent);
+}
+
+void TestCorbaClientPath::tlsServersEndpointIsItsTlsPort()
+{
+    // omniNames serving on giop:ssl:127.0.0.1:2809 only: its IIOP profile says port 0, the
+    // TAG_SSL_SEC_TRANS component 2809 (0x0af9).
+    const QString ior = QStringLiteral(
+        "IOR:010000002b00000049444c3a6f6d672e6f72672f436f734e616d696e672f4e616d696e67436f6e746578744578743a312e3000"
+        "0001000000000000007c000000010102000a0000003132372e302e302e310000000b0000004e616d655365727669636500040000"
+        "0000000000080000000100000000545441010000001c000000010000000100010001000000010001050901010001000000090101"
+        "001400000008000000010066006600f90a03545441080000000b2b0c6b010002d3");
+    QCOMPARE(Corba::iorEndpoint(ior), QStringLiteral("127.0.0.1:2809"));
+    // Cut inside the components: no endpoint rather than a wrong one.
+    QCOMPARE(Corba::iorEndpoint(ior.left(ior.size() - 40)), QString());
 }
 
 QTEST_GUILESS_MAIN(TestCorbaClientPath)

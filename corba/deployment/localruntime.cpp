@@ -158,9 +158,13 @@ QString LocalRuntimeState::managerAddress() const
 
 QString LocalRuntime::defaultFolder()
 {
-    const QString runtime = QStandardPaths::writableLocation(QStandardPaths::RuntimeLocation);
-    if (!runtime.isEmpty())
-        return QDir(runtime).filePath(QStringLiteral("rtstudio"));
+    // Without XDG_RUNTIME_DIR Qt would pick a folder of its own and say so on standard error, in
+    // every rtctl command (each looks whether the local runtime runs with TLS).
+    if (!qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        const QString runtime = QStandardPaths::writableLocation(QStandardPaths::RuntimeLocation);
+        if (!runtime.isEmpty())
+            return QDir(runtime).filePath(QStringLiteral("rtstudio"));
+    }
     return QDir::temp().filePath(QStringLiteral("rtstudio-%1").arg(::getuid()));
 }
 

@@ -2,6 +2,7 @@
 #include "nameservicemodel.h"
 
 #include "iorendpoint.h"
+#include "orb.h"
 #include "onlineicons.h"
 
 #include <QMimeData>
@@ -285,10 +286,41 @@ QVariant NameServiceModel::displayData(const Item *item, int column) const
     case NodeType::Zombie:
         return tr("zombie");
     case NodeType::Server:
-        return unreachable(item) ? tr("unreachable") : QString();
+        return unreachable(item) ? tr("unreachable") : tlsLabel(item);
     default:
         return OnlineIcons::nodeTypeLabel(item->node.type);
     }
+}
+
+QString NameServiceModel::serverIdentity(const Item *item) const
+{
+    // The identity is recorded by the numeric address the connection went to.
+    const QString byEndpoint = Corba::Orb::peerIdentity(item->endpoint);
+    if (!byEndpoint.isEmpty())
+        return byEndpoint;
+    QString server = item->server;
+    if (server.startsWith(QLatin1String("localhost")))
+        server.replace(0, int(qstrlen("localhost")), QStringLiteral("127.0.0.1"));
+    if (!server.contains(QLatin1Char(':')))
+        server += QStringLiteral(":2809");
+    return Corba::Orb::peerIdentity(server);
+}
+
+QString NameServiceModel::tlsLabel(const Item *item) const
+{
+    if (!Corba::Orb::usesTls())
+        return {};
+    const QString identity = serverIdentity(item);
+    return identity.isEmpty() ? tr("TLS") : tr("TLS: %1").arg(identity);
+}
+
+QString NameServiceModel::tlsToolTip(const Item *item) const
+{
+    const QString identity = serverIdentity(item);
+    return identity.isEmpty()
+        ? tr("%1\nEncrypted with TLS").arg(item->node.path)
+        : tr("%1\nEncrypted with TLS; the server proved to be \"%2\" with a certificate of your authority")
+              .arg(item->node.path, identity);
 }
 
 QVariant NameServiceModel::decoration(const Item *item) const
@@ -314,6 +346,8 @@ QVariant NameServiceModel::data(const QModelIndex &index, int role) const
             return item->node.reason;
         if (unreachable(item))
             return m_unreachable.value(item->server, m_unreachable.value(item->endpoint));
+        if (item->node.type == NodeType::Server && Corba::Orb::usesTls())
+            return tlsToolTip(item);
         return item->node.path;
     case PathRole:
         return item->node.path;

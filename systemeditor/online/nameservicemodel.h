@@ -86,6 +86,10 @@ private:
     void appendChildren(Item *parent, const Corba::NamingNode &node);
     QVariant displayData(const Item *item, int column) const;
     QVariant decoration(const Item *item) const;
+    /// A server's certificate name when this program reached it over TLS.
+    QString serverIdentity(const Item *item) const;
+    QString tlsLabel(const Item *item) const;
+    QString tlsToolTip(const Item *item) const;
     bool unreachable(const Item *item) const;
     Corba::LifeCycleState stateOf(const Item *item) const;
     void touchSubtree(Item *parent);
