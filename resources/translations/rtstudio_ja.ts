@@ -2159,7 +2159,7 @@
 <context>
     <name>Deploy::LocalRuntime</name>
     <message>
-        <location filename="../../corba/deployment/localruntime.cpp" line="+216"/>
+        <location filename="../../corba/deployment/localruntime.cpp" line="+266"/>
         <source>omniNames is not installed (Debian package omniorb-nameserver)</source>
         <translation>omniNames がインストールされていません（Debian パッケージ omniorb-nameserver）</translation>
     </message>
@@ -2179,12 +2179,17 @@
         <translation>2809 以降に空きポートがありません</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+3"/>
+        <source>cannot prepare TLS: %1</source>
+        <translation>TLS を準備できません: %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>omniNames did not start on port %1: %2</source>
         <translation>omniNames がポート %1 で起動しませんでした：%2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+20"/>
         <source>rtmanager did not start on port %1: %2</source>
         <translation>rtmanager がポート %1 で起動しませんでした：%2</translation>
     </message>
@@ -2938,7 +2943,7 @@
 <context>
     <name>Studio::OnlineDocks</name>
     <message>
-        <location filename="../../app/onlinedocks.cpp" line="+77"/>
+        <location filename="../../app/onlinedocks.cpp" line="+78"/>
         <source>Name Service</source>
         <translation>ネームサービス</translation>
     </message>
@@ -2996,6 +3001,11 @@
         <location line="+6"/>
         <source>Start &amp;Local Runtime</source>
         <translation>ローカルランタイムを起動(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start Local Runtime with &amp;TLS</source>
+        <translation>TLS でローカルランタイムを起動(&amp;T)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3094,6 +3104,11 @@
     </message>
     <message>
         <location line="+18"/>
+        <source>Local runtime (TLS): name server %1, manager port %2</source>
+        <translation>ローカルランタイム (TLS): ネームサーバ %1、マネージャのポート %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Local runtime: name server %1, manager port %2</source>
         <translation>ローカルランタイム：ネームサーバ %1、マネージャのポート %2</translation>
     </message>
@@ -3108,23 +3123,28 @@
         <translation>ローカルランタイム：起動できませんでした</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
+        <source>RT Studio talks plain TCP since it started: quit it, run &quot;rtctl local start --tls&quot; and start RT Studio again.</source>
+        <translation>RT Studio は起動時から平文の TCP で通信しています。終了して &quot;rtctl local start --tls&quot; を実行し、RT Studio を起動し直してください。</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Starting the local runtime…</source>
         <translation>ローカルランタイムを起動しています…</translation>
     </message>
     <message>
-        <location line="-6"/>
-        <location line="+27"/>
+        <location line="-23"/>
+        <location line="+50"/>
         <source>The local runtime did not start: %1</source>
         <translation>ローカルランタイムを起動できませんでした：%1</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-91"/>
         <source>Undeploy System and Uninstall Its &amp;Packages</source>
         <translation>システムの配備を解除しパッケージをアンインストール(&amp;P)</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+101"/>
         <source>Local runtime started.</source>
         <translation>ローカルランタイムを起動しました。</translation>
     </message>
@@ -4229,7 +4249,7 @@
 <context>
     <name>SystemEditor::NameServiceModel</name>
     <message>
-        <location filename="../../systemeditor/online/nameservicemodel.cpp" line="+281"/>
+        <location filename="../../systemeditor/online/nameservicemodel.cpp" line="+282"/>
         <source>not answering</source>
         <translation>応答なし</translation>
     </message>
@@ -4242,6 +4262,30 @@
         <location line="+2"/>
         <source>unreachable</source>
         <translation>到達不能</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>TLS</source>
+        <translation>TLS</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>TLS: %1</source>
+        <translation>TLS: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1
+Encrypted with TLS</source>
+        <translation>%1
+TLS で暗号化されています</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1
+Encrypted with TLS; the server proved to be &quot;%2&quot; with a certificate of your authority</source>
+        <translation>%1
+TLS で暗号化されています。サーバは認証局の証明書で &quot;%2&quot; であることを示しました</translation>
     </message>
     <message>
         <location line="+53"/>
@@ -5982,7 +6026,7 @@ package %2 %3 in %4</source>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../app/main.cpp" line="+38"/>
+        <location filename="../../app/main.cpp" line="+40"/>
         <source>--export-diagram needs --output OUT.png or OUT.svg</source>
         <translation>--export-diagram には --output OUT.png または OUT.svg が必要です</translation>
     </message>
@@ -6010,6 +6054,11 @@ package %2 %3 in %4</source>
         <location line="+8"/>
         <source>RTC or RTS profiles to open (XML or YAML).</source>
         <translation>開くRTCプロファイルまたはRTSプロファイル（XMLまたはYAML）。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>TLS: %1</source>
+        <translation>TLS: %1</translation>
     </message>
 </context>
 </TS>
