@@ -43,7 +43,9 @@ CORBA::Boolean acceptConnection(omni::omniInterceptors::serverAcceptConnection_T
 {
     const std::string peer = info.peeraddress() ? info.peeraddress() : "";
     std::lock_guard lock(s_mutex);
-    if (s_maximum <= 0 || peer.rfind("giop:tcp:", 0) != 0)
+    // TCP and TLS connections count alike (a TLS server listens on TCP ports too); the Unix socket's
+    // peers are on this host.
+    if (s_maximum <= 0 || (peer.rfind("giop:tcp:", 0) != 0 && peer.rfind("giop:ssl:", 0) != 0))
         return true;
     // Closed connections are dropped from the count first: what the kernel no longer lists as
     // established to one of our ports has gone.

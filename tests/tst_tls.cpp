@@ -46,6 +46,7 @@ private slots:
     void refusedPeers_data();
     void refusedPeers();
     void plainClientGetsNoService();
+    void connectionLimitCountsTlsConnections();
     void localRuntimeWithTls();
 
 private:
@@ -56,6 +57,8 @@ private:
         return rtctl(arguments, path("fleet/ca.pem"), path("fleet/operator.pem"));
     }
     bool startMaster(QString *error);
+    /// A TLS master of its own on a free port with @p options added, its output merged.
+    std::unique_ptr<QProcess> startTlsManager(quint16 port, const QStringList &options, QString *error);
     /// What the master printed so far.
     QString masterOutput();
 
@@ -128,34 +131,41 @@ void TestTls::cleanupTestCase()
         m_orb->destroy();
 }
 
+std::unique_ptr<QProcess> TestTls::startTlsManager(quint16 port, const QStringList &options, QString *error)
+{
+    auto manager = std::make_unique<QProcess>();
+    manager->setProcessChannelMode(QProcess::MergedChannels);
+    const QStringList all = QStringList {
+        QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
+        QStringLiteral("corba.ssl.certificate_authority_file=") + path("fleet/ca.pem"),
+        QStringLiteral("corba.ssl.key_file=") + path("fleet/node.pem"),
+    } + options;
+    QStringList arguments {QStringLiteral("-d")};
+    for (const QString &option : all)
+        arguments << QStringLiteral("-o") << option;
+    manager->start(QStringLiteral(RTMANAGER_PATH), arguments);
+    if (!manager->waitForStarted(ReadyTimeoutMs)) {
+        *error = QStringLiteral("rtmanager did not start: ") + manager->errorString();
+        return nullptr;
+    }
+    QByteArray output;
+    QDeadlineTimer deadline(ReadyTimeoutMs);
+    while (!output.contains("rtmanager ready")) {
+        if (deadline.hasExpired() || manager->state() != QProcess::Running) {
+            *error = QStringLiteral("rtmanager did not start: ") + QString::fromLocal8Bit(output);
+            return nullptr;
+        }
+        manager->waitForReadyRead(50);
+        output += manager->peek(1 << 20);
+    }
+    return manager;
+}
+
 bool TestTls::startMaster(QString *error)
 {
     m_masterPort = LiveTest::freePort();
-    m_master = std::make_unique<QProcess>();
-    m_master->setProcessChannelMode(QProcess::MergedChannels);
-    const QStringList options {
-        QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_masterPort),
-        QStringLiteral("corba.nameservers=") + m_live.namingServer(),
-        QStringLiteral("corba.ssl.certificate_authority_file=") + path("fleet/ca.pem"),
-        QStringLiteral("corba.ssl.key_file=") + path("fleet/node.pem"),
-    };
-    QStringList arguments {QStringLiteral("-d")};
-    for (const QString &option : options)
-        arguments << QStringLiteral("-o") << option;
-    m_master->start(QStringLiteral(RTMANAGER_PATH), arguments);
-    if (!m_master->waitForStarted(ReadyTimeoutMs)) {
-        *error = QStringLiteral("rtmanager did not start: ") + m_master->errorString();
-        return false;
-    }
-    QDeadlineTimer deadline(ReadyTimeoutMs);
-    while (!masterOutput().contains(QLatin1String("rtmanager ready"))) {
-        if (deadline.hasExpired() || m_master->state() != QProcess::Running) {
-            *error = QStringLiteral("rtmanager did not start: ") + masterOutput();
-            return false;
-        }
-        m_master->waitForReadyRead(50);
-    }
-    return true;
+    m_master = startTlsManager(m_masterPort, {QStringLiteral("corba.nameservers=") + m_live.namingServer()}, error);
+    return m_master != nullptr;
 }
 
 QString TestTls::masterOutput()
@@ -283,6 +293,41 @@ void TestTls::plainClientGetsNoService()
     QCOMPARE(anonymous.code, 1);
     QVERIFY2(anonymous.err.contains("certificate required") || anonymous.err.contains("presents no certificate"),
              qPrintable(anonymous.err));
+}
+
+void TestTls::connectionLimitCountsTlsConnections()
+{
+    // corba.max_connections bounds TLS connections as it bounds TCP ones.
+    const quint16 port = LiveTest::freePort();
+    QString error;
+    std::unique_ptr<QProcess> manager = startTlsManager(port, {"corba.max_connections=2", "naming.enable=NO"}, &error);
+    QVERIFY2(manager, qPrintable(error));
+    std::vector<std::unique_ptr<QProcess>> clients;
+    QByteArray said;
+    for (int i = 0; i < 4 && !said.contains("as many as corba.max_connections allows"); ++i) {
+        auto client = std::make_unique<QProcess>();
+        client->setProcessChannelMode(QProcess::MergedChannels);
+        // Stays connected while its input is open.
+        client->start(QStringLiteral("openssl"),
+                      {"s_client", "-connect", QStringLiteral("127.0.0.1:%1").arg(port), "-CAfile", path("fleet/ca.pem"),
+                       "-cert", path("fleet/operator.pem"), "-key", path("fleet/operator.pem")});
+        QVERIFY(client->waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(client->peek(1 << 16).contains("CONNECTED") || client->state() != QProcess::Running,
+                                 10000);
+        clients.push_back(std::move(client));
+        QTest::qWait(0);
+        manager->waitForReadyRead(500);
+        said += manager->readAll();
+    }
+    QTRY_VERIFY2_WITH_TIMEOUT((said += manager->readAll()).contains("as many as corba.max_connections allows"),
+                              said.constData(), 10000);
+    QVERIFY2(said.contains("refused a connection from giop:ssl:127.0.0.1:"), said.constData());
+    for (auto &client : clients)
+        client->kill();
+    for (auto &client : clients)
+        client->waitForFinished();
+    manager->kill();
+    manager->waitForFinished();
 }
 
 void TestTls::localRuntimeWithTls()
