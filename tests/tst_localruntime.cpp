@@ -18,6 +18,30 @@
 
 #include <csignal>
 
+namespace {
+
+/// The local addresses (hex, as the kernel lists them) of the sockets listening on TCP @p port.
+QStringList listeningAddresses(int port)
+{
+    QStringList addresses;
+    for (const char *table : {"/proc/net/tcp", "/proc/net/tcp6"}) {
+        QFile file {QString::fromLatin1(table)};
+        if (!file.open(QIODevice::ReadOnly))
+            continue;
+        for (const QByteArray &line : file.readAll().split('\n').mid(1)) {
+            const QList<QByteArray> fields = line.simplified().split(' ');
+            if (fields.size() < 4 || fields.at(3) != "0A") // LISTEN
+                continue;
+            const QList<QByteArray> local = fields.at(1).split(':');
+            if (local.size() == 2 && local.at(1).toInt(nullptr, 16) == port)
+                addresses << QString::fromLatin1(local.at(0));
+        }
+    }
+    return addresses;
+}
+
+} // namespace
+
 class TestLocalRuntime : public QObject
 {
     Q_OBJECT
@@ -66,6 +90,11 @@ void TestLocalRuntime::startsReusesAndStops()
     const int namingPort = started["nameServer"]["port"].toInt();
     const int managerPort = started["manager"]["port"].toInt();
     QVERIFY(namingPort >= 2809 && managerPort >= 2810 && namingPort != managerPort);
+    // Both serve this machine only.
+    for (const int port : {namingPort, managerPort}) {
+        const QStringList addresses = listeningAddresses(port);
+        QVERIFY2(addresses == QStringList {QStringLiteral("0100007F")}, qPrintable(addresses.join(' ')));
+    }
 
     // The manager is registered in the name server and creates components.
     const QString server = QStringLiteral("/127.0.0.1:%1").arg(namingPort);

@@ -681,7 +681,9 @@ void TestManagerLive::remoteConfigurationCannotChooseCode()
     // as the manager's own configuration says.
     for (const char *key : {"manager.modules.load_path", "manager.modules.abs_path_allowed", "manager.modules.preload",
                             "manager.packages.keyring", "manager.components.precreate", "corba.args",
-                            "example.ConsoleIn.config_file", "logger.file_name"}) {
+                            "example.ConsoleIn.config_file", "logger.file_name", "manager.slaves.max",
+                            "manager.local_service.modules", "manager.is_master",
+                            "corba.ssl.certificate_authority_file", "corba.ssl.key_file"}) {
         QCOMPARE(m_master->set_configuration(key, "/tmp"), RTC::BAD_PARAMETER);
         QVERIFY2(lastError(m_master).contains(QString("'%1' is taken from the manager's own configuration").arg(key)),
                  qPrintable(lastError(m_master)));

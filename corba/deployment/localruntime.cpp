@@ -285,6 +285,10 @@ LocalRuntimeState LocalRuntime::start(const QString &managerProgram, bool tls, Q
     QStringList namingArguments {QStringLiteral("-start"), QString::number(state.nameServer.port),
                                  QStringLiteral("-datadir"), data, QStringLiteral("-logdir"), data};
     QProcessEnvironment namingEnvironment = QProcessEnvironment::systemEnvironment();
+    // This machine only, as the manager below.
+    if (!tls)
+        namingArguments << QStringLiteral("-ignoreport") << QStringLiteral("-ORBendPoint")
+                        << QStringLiteral("giop:tcp:127.0.0.1:%1").arg(state.nameServer.port);
     if (tls) {
         const Tls::Settings settings {files.certificateAuthorityFile.toStdString(), files.nodeKeyFile.toStdString(), {}};
         for (const auto &[name, value] : Tls::nameServerEnvironment(settings))
