@@ -6,6 +6,7 @@
 #include "componentstatus.h"
 #include "livesystem.h"
 #include "rtctlrunner.h"
+#include "simulatedhosts.h"
 #include "tlstransport.h"
 
 #include <RTC.hh>
@@ -47,6 +48,7 @@ private slots:
     void refusedPeers();
     void plainClientGetsNoService();
     void connectionLimitCountsTlsConnections();
+    void dataFlowsBetweenTwoHosts();
     void localRuntimeWithTls();
 
 private:
@@ -328,6 +330,47 @@ void TestTls::connectionLimitCountsTlsConnections()
         client->waitForFinished();
     manager->kill();
     manager->waitForFinished();
+}
+
+void TestTls::dataFlowsBetweenTwoHosts()
+{
+    // Two hosts of their own (network namespaces), each with a TLS name server and manager.
+    LiveTest::SimulatedHosts hosts;
+    QString why;
+    if (!hosts.create({"tlsA", "tlsB"}, &why))
+        QSKIP(qPrintable(QStringLiteral("cannot simulate hosts: ") + why));
+    std::map<QString, std::unique_ptr<LiveTest::LiveSystem>> live;
+    for (const QString host : {"tlsA", "tlsB"}) {
+        live[host] = std::make_unique<LiveTest::LiveSystem>(hosts.liveHost(host));
+        QString error;
+        QVERIFY2(live[host]->startTlsNameServer(path("fleet/ca.pem"), path("fleet/node.pem"), &error),
+                 qPrintable(error));
+        QVERIFY2(live[host]->startHostManager(QStringLiteral(RTMANAGER_PATH), 2810, host,
+                                              {"corba.ssl.certificate_authority_file=" + path("fleet/ca.pem"),
+                                               "corba.ssl.key_file=" + path("fleet/node.pem")},
+                                              &error),
+                 qPrintable(error));
+    }
+    const auto context = [&](const QString &host) {
+        return QStringLiteral("/%1/%2.host_cxt/").arg(live[host]->namingServer(), host);
+    };
+    RtctlResult r = operatorRtctl({"mgr", context("tlsA") + "manager.mgr", "create", "ConsoleIn"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    r = operatorRtctl({"mgr", context("tlsB") + "manager.mgr", "create", "ConsoleOut"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    const QString source = context("tlsA") + "ConsoleIn0.rtc";
+    const QString sink = context("tlsB") + "ConsoleOut0.rtc";
+    r = operatorRtctl({"con", source + ":out", sink + ":in"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    r = operatorRtctl({"act", sink, source});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    const QString sinkReference
+        = QStringLiteral("corbaname:ssliop:%1#tlsB.host_cxt/ConsoleOut0.rtc").arg(live["tlsB"]->namingServer());
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::componentStatus(m_orb, sinkReference, "received_count").toLong() > 5, 10000);
+    r = operatorRtctl({"deact", source});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    live.clear();
+    hosts.remove();
 }
 
 void TestTls::localRuntimeWithTls()
