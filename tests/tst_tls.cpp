@@ -44,6 +44,7 @@ private slots:
     void certificatesSayWhatTheyAre();
     void badCertificateFilesAreNamed();
     void systemRunsOverTls();
+    void savesAndRestoresOverTls();
     void refusedPeers_data();
     void refusedPeers();
     void plainClientGetsNoService();
@@ -250,6 +251,30 @@ void TestTls::systemRunsOverTls()
     QCOMPARE(r.lines().size(), 3);
     r = operatorRtctl({"deact", source});
     QVERIFY2(r.code == 0, qPrintable(r.err));
+}
+
+void TestTls::savesAndRestoresOverTls()
+{
+    // The deployment engine over TLS: save the live system, lose a component, restore and start it.
+    const QString server = QLatin1Char('/') + m_live.namingServer();
+    const QString context = server + QLatin1Char('/') + hostName() + QStringLiteral(".host_cxt");
+    const QString file = path("system.xml");
+    RtctlResult r = operatorRtctl({"cryo", "-n", "TlsSystem", "-o", file, context});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    r = operatorRtctl({"mgr", context + "/manager.mgr", "delete", "ConsoleOut0"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QTRY_VERIFY_WITH_TIMEOUT(!operatorRtctl({"ls", context}).out.contains("ConsoleOut0.rtc"), 10000);
+    r = operatorRtctl({"resurrect", "--create", "-s", m_live.namingServer(), "-m", context + "/manager.mgr", file});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    r = operatorRtctl({"start", "-s", m_live.namingServer(), file});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    r = operatorRtctl({"diff", "-s", m_live.namingServer(), file});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+    const QString sinkReference = QStringLiteral("corbaname:ssliop:%1#%2.host_cxt/ConsoleOut0.rtc")
+                                      .arg(m_live.namingServer(), hostName());
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::componentStatus(m_orb, sinkReference, "received_count").toLong() > 5, 10000);
+    r = operatorRtctl({"stop", "-s", m_live.namingServer(), file});
+    QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
 }
 
 void TestTls::refusedPeers_data()
