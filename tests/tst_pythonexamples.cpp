@@ -9,12 +9,16 @@
 //   the composite's exported ports;
 // - ExtTrigger: ConsoleIn and ConsoleOut on ExtTrigExecutionContexts, each stepping once per tick
 //   the test sends (the example's Connector.py, which needs omniORBpy, does the same);
+// - AutoControl: the velocities it answers to range samples, read with rtctl print;
+// - Throughput: its own OutPort feeding its InPort, the measurements file it writes per size;
+// - StaticFsm: Inputbutton's commands driving Microwave's static state machine through event
+//   ports;
 // and the same abilities through components of ours (data/python) that need no corpus: a component
 // with two configuration sets and every configuration listener; a Python module's component as
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
 // leaves the master serving; wide characters, unions and object references in samples
-// (data/python/widechars.py, unions.py, references.py).
+// (data/python/widechars.py, unions.py, references.py), and static FSMs (staticfsm.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
@@ -49,6 +53,9 @@ private slots:
     void extTriggerStepsOnlyWhenTicked();
     void componentTicksItsOwnContext();
     void pythonComponentInSlaveOfItsOwn();
+    void autoControlRunsUnchanged();
+    void throughputRunsUnchanged();
+    void staticFsmRunsUnchanged();
     void dataTypesConvert_data();
     void dataTypesConvert();
 
@@ -68,6 +75,8 @@ private:
     qint64 slavePid(const QString &name) const;
     /// Ticks the ExtTrigExecutionContext @p component owns, as OpenRTM's Connector.py does.
     bool tick(const QString &component) const;
+    /// `rtctl @p arguments` left running in the host's context (stopped with the test's processes).
+    QProcess *startRtctl(const QStringList &arguments);
 
     QTemporaryDir m_work;
     LiveTest::LiveSystem m_live;
@@ -107,6 +116,18 @@ bool TestPythonExamples::tick(const QString &component) const
         qWarning() << "tick" << component << error._name();
         return false;
     }
+}
+
+QProcess *TestPythonExamples::startRtctl(const QStringList &arguments)
+{
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("RTCSH_CWD"), QStringLiteral("/%1/%2.host_cxt").arg(m_live.namingServer(), hostName));
+    environment.insert(QStringLiteral("RTCTREE_NAMESERVERS"), QString());
+    QString error;
+    QProcess *process = m_live.startProcess(QStringLiteral(RTCTL_PATH), arguments, QString(), &error, runTimeoutMs, environment);
+    if (!process)
+        qWarning().noquote() << error;
+    return process;
 }
 
 qint64 TestPythonExamples::slavePid(const QString &name) const
@@ -370,6 +391,118 @@ void TestPythonExamples::pythonComponentInSlaveOfItsOwn()
     QVERIFY(rtctlSucceeds({"deact", "SlaveFeed.rtc"}));
 }
 
+void TestPythonExamples::autoControlRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("AutoControl/AutoControl.py"));
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    QProcess *control = m_scripts.start(script, {QStringLiteral("AutoControl0.rtc")}, runTimeoutMs);
+    QVERIFY(control);
+    QVERIFY(rtctlSucceeds({"act", "AutoControl0.rtc"}));
+    QProcess *print = startRtctl({"print", "-n", "4", "AutoControl0.rtc:vel"});
+    QVERIFY(print);
+    // Range samples until the printer has its four: an obstacle at 20 (within distance_to_env, 40)
+    // turns on the spot, one at 50 goes straight at velocity 80.
+    const auto printed4 = [&] {
+        if (print->state() == QProcess::NotRunning)
+            return true;
+        m_host.run({"inject", "AutoControl0.rtc:sens", "[10,10,10,20]", "[10,10,10,50]"});
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(printed4(), runTimeoutMs);
+    const QString velocities = printed(print);
+    QVERIFY2(velocities.contains(QLatin1String("data=[80, -80]")), qPrintable(velocities));
+    QVERIFY2(velocities.contains(QLatin1String("data=[80, 80]")), qPrintable(velocities));
+    QVERIFY(rtctlSucceeds({"deact", "AutoControl0.rtc"}));
+    m_live.stop(control);
+}
+
+void TestPythonExamples::throughputRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("Throughput/Throughput_py.py"));
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    // It writes its measurements into the working folder; the example's rtc.conf settings, with
+    // sizes up to 300 floats, five samples each, and little pause.
+    const QString folder = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(m_work.path()));
+    QProcess *throughput = m_scripts.start(script, {QStringLiteral("Throughput_py0.rtc")}, runTimeoutMs,
+        {QStringLiteral("example.Throughput_py.conf.default.datatype: float"),
+         QStringLiteral("example.Throughput_py.conf.default.filesuffix: -samecomp"),
+         QStringLiteral("example.Throughput_py.conf.default.maxsize: 300"),
+         QStringLiteral("example.Throughput_py.conf.default.maxsample: 5"),
+         QStringLiteral("example.Throughput_py.conf.default.sleep_time: 0.01")});
+    QVERIFY(QDir::setCurrent(folder));
+    QVERIFY(throughput);
+    // Its rtc.conf's preconnect: its OutPort to its InPort (OpenRTM's default subscription, flush).
+    QVERIFY(rtctlSucceeds({"con", "Throughput_py0.rtc:out", "Throughput_py0.rtc:in", "-p", "interface_type=corba_cdr", "-p",
+                           "subscription_type=flush"}));
+    QVERIFY(rtctlSucceeds({"act", "Throughput_py0.rtc"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(throughput).contains(QLatin1String("Exiting\n")), qPrintable(printed(throughput).right(2000)),
+                              runTimeoutMs);
+    // The connector's profile that its listener printed, and a line per size sent (1, 2, 5, …, 100).
+    QVERIFY2(printed(throughput).contains(QLatin1String("Profile::name:        out_in\n")), qPrintable(printed(throughput).left(2000)));
+    QFile measurements(m_work.filePath(QStringLiteral("float-corba_cdr-samecomp.dat")));
+    QTRY_VERIFY_WITH_TIMEOUT(measurements.exists(), runTimeoutMs);
+    const auto sizes = [&measurements] {
+        QList<int> found;
+        if (!measurements.open(QIODevice::ReadOnly | QIODevice::Text))
+            return found;
+        for (const QByteArray &line : measurements.readAll().split('\n')) {
+            const QList<QByteArray> fields = line.split('\t');
+            if (fields.size() == 6 && !line.startsWith('#') && fields.first() != "size[byte]")
+                found.append(fields.first().toInt());
+        }
+        measurements.close();
+        return found;
+    };
+    const QList<int> expected{1, 2, 5, 10, 20, 50, 100};
+    QTRY_VERIFY_WITH_TIMEOUT(sizes().mid(0, expected.size()) == expected, runTimeoutMs);
+    QVERIFY(measurements.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QByteArray text = measurements.readAll();
+    QVERIFY2(text.contains("# - interface_type: corba_cdr\n") && text.contains("# - data_type: IDL:RTC/TimedFloatSeq:1.0\n"),
+             text.constData());
+    m_live.stop(throughput);
+}
+
+void TestPythonExamples::staticFsmRunsUnchanged()
+{
+    // (Its Microwave_pyfsm.py names a module it does not import, MicrowaveFsm: it cannot run anywhere.)
+    const QString script = example(QStringLiteral("StaticFsm/Microwave.py"));
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    QProcess *oven = m_scripts.start(script, {QStringLiteral("Microwave0.rtc")}, runTimeoutMs);
+    QVERIFY(oven);
+    QProcess *buttons = m_scripts.start(example(QStringLiteral("StaticFsm/Inputbutton.py")), {QStringLiteral("Inputbutton0.rtc")},
+                                        runTimeoutMs);
+    QVERIFY(buttons);
+    // The example's rtc.conf: each button's OutPort to the event port, named by fsm_event_name.
+    for (const char *event : {"open", "close", "minute", "start", "stop", "tick"})
+        QVERIFY(rtctlSucceeds({"con", QStringLiteral("Inputbutton0.rtc:") + event, "Microwave0.rtc:event", "-p",
+                               QStringLiteral("fsm_event_name=") + event}));
+    QVERIFY(rtctlSucceeds({"act", "Microwave0.rtc", "Inputbutton0.rtc"}));
+    buttons->write("minute 3\nstart\ntick\nopen\nclose\ntick\ntick\n");
+    // What the states print as the machine goes through them: the door opened while cooking and
+    // closed again goes back to cooking (Operational's deep history).
+    const QStringList steps{QStringLiteral("  Microwave ready"), QStringLiteral(" Timer set to  3  minutes"),
+                            QStringLiteral("  Heating on"), QStringLiteral("  Clock tick"),
+                            QStringLiteral(" Timer set to  2  minutes"), QStringLiteral("  Heating off"),
+                            QStringLiteral("  Microwave opened"), QStringLiteral("  Microwave closed"),
+                            QStringLiteral("  Heating on"), QStringLiteral("  Clock tick"),
+                            QStringLiteral(" Timer set to  1  minutes"), QStringLiteral("  Clock tick"),
+                            QStringLiteral("  Finished"), QStringLiteral("  Heating off"),
+                            QStringLiteral("  Microwave ready")};
+    const auto lines = [&] {
+        QStringList found = printed(oven).split(QLatin1Char('\n'));
+        found.removeIf([&steps](const QString &line) { return !steps.contains(line); });
+        return found;
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(lines(), steps, runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"deact", "Inputbutton0.rtc", "Microwave0.rtc"}));
+    m_live.stop(buttons);
+    m_live.stop(oven);
+}
+
 void TestPythonExamples::dataTypesConvert_data()
 {
     QTest::addColumn<QString>("script");
@@ -377,6 +510,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("unions") << QStringLiteral("unions");
     QTest::newRow("object references") << QStringLiteral("references");
     QTest::newRow("ring buffer") << QStringLiteral("ringbuffer");
+    QTest::newRow("static FSM") << QStringLiteral("staticfsm");
 }
 
 void TestPythonExamples::dataTypesConvert()
