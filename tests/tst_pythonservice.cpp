@@ -53,6 +53,7 @@ private slots:
     void stubsOfEveryConstructImportAndConvert();
     void badIdlIsReportedWithItsLine();
     void pythonProviderAndConsumerExchangeCalls();
+    void stubsOfIncludingIdlWithPrefixesCall();
     void pythonAndCxxComponentsCallEachOther();
     void pythonComponentAndSdkExamplesCallEachOther();
     void simpleServiceExamplesRunUnchanged();
@@ -236,6 +237,33 @@ void TestPythonService::pythonProviderAndConsumerExchangeCalls()
              qPrintable(printed(provider)));
     QVERIFY(endComponents(
         {QStringLiteral("PyCalcConsumer0.rtc"), QStringLiteral("PyCalcProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+void TestPythonService::stubsOfIncludingIdlWithPrefixesCall()
+{
+    // Canvas.idl includes Shapes.idl of its folder, whose type ids have a #pragma prefix.
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Canvas.idl")), dataFile(QStringLiteral("Shapes.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QProcess *provider = startScript(dataFile(QStringLiteral("PyPainterProvider.py")), stubs,
+                                     QStringLiteral("PyPainterProvider0.rtc"));
+    QVERIFY(provider);
+    QProcess *consumer = startScript(dataFile(QStringLiteral("PyPainterConsumer.py")), stubs,
+                                     QStringLiteral("PyPainterConsumer0.rtc"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds({"con", "PyPainterConsumer0.rtc:Paint", "PyPainterProvider0.rtc:Paint"}));
+    for (const char *component : {"PyPainterProvider0.rtc", "PyPainterConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
+                              qPrintable(printed(consumer) + printed(provider)), runTimeoutMs);
+    const QString out = printed(consumer);
+    // A user exception of the base interface crosses under its prefixed id, raised as its class.
+    for (const char *line : {"consumer: ids IDL:example.org/PyShapes/Circle:1.0 IDL:PyCanvas/Scene:1.0\n",
+                             "consumer: total 15.7080\n", "consumer: Degenerate radius 0\n"})
+        QVERIFY2(out.contains(QLatin1String(line)), qPrintable(QLatin1String(line) + out));
+    QVERIFY2(printed(provider).contains(QLatin1String("provider: total of two circles")), qPrintable(printed(provider)));
+    QVERIFY(endComponents({QStringLiteral("PyPainterConsumer0.rtc"), QStringLiteral("PyPainterProvider0.rtc")}));
     m_live.stop(consumer);
     m_live.stop(provider);
 }

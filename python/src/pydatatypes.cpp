@@ -6,6 +6,8 @@
 
 #include <pybind11/stl.h>
 
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -50,7 +52,7 @@ void PyDataTypes::addIdl(const std::string &fileName, const std::string &text)
     if (!m_library)
         throw std::runtime_error("no IDL loaded (import RTC first)");
     Codegen::IdlParser parser;
-    parser.setSearchDirectories(m_library->directories());
+    parser.setSearchDirectories(QStringList{keepIdlText(fileName, text)} + m_library->directories());
     if (!parser.parseText(QString::fromStdString(text), QString::fromStdString(fileName))) {
         QStringList messages;
         for (const Profile::Diagnostic &diagnostic : parser.diagnostics())
@@ -65,9 +67,36 @@ void PyDataTypes::addIdl(const std::string &fileName, const std::string &text)
     insertAll(m_model.consts, added.consts);
     insertAll(m_model.exceptions, added.exceptions);
     insertAll(m_model.interfaces, added.interfaces);
+    insertAll(m_model.prefixes, added.prefixes);
+    for (const Codegen::IdlDeclaration &declaration : added.declarations) {
+        if (!m_model.find(declaration.scopedName))
+            m_model.declarations.append(declaration);
+    }
     for (const Codegen::IdlException &exception : added.exceptions)
         m_model.structs.insert(exception.scopedName, {exception.scopedName, exception.members, exception.source});
     rebuild();
+}
+
+QString PyDataTypes::keepIdlText(const std::string &fileName, const std::string &text)
+{
+    if (!m_addedIdl)
+        m_addedIdl = std::make_unique<QTemporaryDir>();
+    QFile file(m_addedIdl->filePath(QFileInfo(QString::fromStdString(fileName)).fileName()));
+    if (!file.open(QIODevice::WriteOnly) || file.write(QByteArray::fromStdString(text)) != qint64(text.size()))
+        throw std::runtime_error("cannot keep the IDL text of " + fileName + " in " + m_addedIdl->path().toStdString());
+    return m_addedIdl->path();
+}
+
+QString PyDataTypes::scopedNameOf(const std::string &repositoryId) const
+{
+    const QString id = QString::fromStdString(repositoryId);
+    const QString scopedName = m_model.scopedNameOf(id);
+    return scopedName.isEmpty() ? Codegen::CdrCodec::typeName(id) : scopedName;
+}
+
+std::string PyDataTypes::repositoryIdOf(const QString &scopedName) const
+{
+    return m_model.repositoryId(scopedName).toStdString();
 }
 
 void PyDataTypes::addClasses(const py::dict &classes)

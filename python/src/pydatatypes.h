@@ -5,6 +5,8 @@
 #include "idltypelibrary.h"
 #include "pyvalueconverter.h"
 
+#include <QTemporaryDir>
+
 #include <pybind11/pybind11.h>
 
 #include <memory>
@@ -35,8 +37,9 @@ public:
     /// The classes of the structs and enums, by scoped name.
     void setClasses(pybind11::dict classes);
     /**
-     * Adds the declarations of IDL @p text (a stub module's, named @p fileName in messages; its
-     * includes are looked up with OpenRTM's IDL); throws RuntimeError with the parser's messages.
+     * Adds the declarations of IDL @p text (a stub module's, named @p fileName); throws RuntimeError
+     * with the parser's messages. Its includes are the IDL texts added before (a stub module imports
+     * those of its own folder's included files first, as omniidl's do), then OpenRTM's IDL.
      * Exceptions are kept as structs too, so that their members convert as a struct's.
      */
     void addIdl(const std::string &fileName, const std::string &text);
@@ -44,6 +47,10 @@ public:
     void addClasses(const pybind11::dict &classes);
 
     const Codegen::IdlModel &model() const;
+    /// The scoped name of the type id @p repositoryId, with its `#pragma prefix` if any.
+    QString scopedNameOf(const std::string &repositoryId) const;
+    /// The type id of @p scopedName, with its `#pragma prefix` if any.
+    std::string repositoryIdOf(const QString &scopedName) const;
     const Codegen::CdrCodec &codec() const;
     const PyValueConverter &converter() const;
 
@@ -64,7 +71,12 @@ private:
     void rebuild();
     static pybind11::dict describeUnions(const Codegen::IdlModel &model);
 
+    /// Writes @p text as @p fileName into the folder where added IDL texts find each other.
+    QString keepIdlText(const std::string &fileName, const std::string &text);
+
     std::unique_ptr<Codegen::IdlTypeLibrary> m_library;
+    /// The texts addIdl() was given, as files (by their names) that later texts may include.
+    std::unique_ptr<QTemporaryDir> m_addedIdl;
     /// The library's model with the stub modules' declarations added.
     Codegen::IdlModel m_model;
     pybind11::dict m_classes;
