@@ -54,6 +54,7 @@ private slots:
     void badIdlIsReportedWithItsLine();
     void pythonProviderAndConsumerExchangeCalls();
     void stubsOfIncludingIdlWithPrefixesCall();
+    void callsCarryEveryParameterKind();
     void pythonAndCxxComponentsCallEachOther();
     void pythonComponentAndSdkExamplesCallEachOther();
     void simpleServiceExamplesRunUnchanged();
@@ -264,6 +265,39 @@ void TestPythonService::stubsOfIncludingIdlWithPrefixesCall()
         QVERIFY2(out.contains(QLatin1String(line)), qPrintable(QLatin1String(line) + out));
     QVERIFY2(printed(provider).contains(QLatin1String("provider: total of two circles")), qPrintable(printed(provider)));
     QVERIFY(endComponents({QStringLiteral("PyPainterConsumer0.rtc"), QStringLiteral("PyPainterProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+void TestPythonService::callsCarryEveryParameterKind()
+{
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Kinds.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QProcess *provider = startScript(dataFile(QStringLiteral("PyKindsProvider.py")), stubs,
+                                     QStringLiteral("PyKindsProvider0.rtc"));
+    QVERIFY(provider);
+    QProcess *consumer = startScript(dataFile(QStringLiteral("PyKindsConsumer.py")), stubs,
+                                     QStringLiteral("PyKindsConsumer0.rtc"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds({"con", "PyKindsConsumer0.rtc:Echo", "PyKindsProvider0.rtc:Echo"}));
+    for (const char *component : {"PyKindsProvider0.rtc", "PyKindsConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
+                              qPrintable(printed(consumer) + printed(provider)), runTimeoutMs);
+    const QString out = printed(consumer);
+    // Wide characters and strings, a union in and inout, references in, out and as the result: the
+    // consumer's own servant (_this()) reaches the provider, which calls it back, and comes back
+    // callable; the provider's own reference too; the ORB's string_to_object of an IOR.
+    for (const QString &line : {QStringLiteral("consumer: letter ('\u00c9', '\u00e9\u00e9\u00e9')\n"),
+                                QStringLiteral("consumer: reversed \u4e16 oll\u00e9h\n"),
+                                QStringLiteral("consumer: swap (PyKinds.Pick(2, 't'), PyKinds.Pick(1, 5))\n"),
+                                QStringLiteral("consumer: string_to_object _objref_Echo 42\n"),
+                                QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
+                                QStringLiteral("consumer: relay nil None\n")})
+        QVERIFY2(out.contains(line), qPrintable(line + out));
+    QVERIFY2(printed(provider).contains(QLatin1String("provider: relay of a reference that answers calls() 42\n")),
+             qPrintable(printed(provider)));
+    QVERIFY(endComponents({QStringLiteral("PyKindsConsumer0.rtc"), QStringLiteral("PyKindsProvider0.rtc")}));
     m_live.stop(consumer);
     m_live.stop(provider);
 }

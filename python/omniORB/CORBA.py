@@ -3,6 +3,7 @@
 _objref_ classes), is_nil, and the exceptions."""
 
 COMPLETED_YES, COMPLETED_NO, COMPLETED_MAYBE = 0, 1, 2
+TRUE, FALSE = True, False
 
 
 class Exception(Exception):  # noqa: A001 (CORBA.Exception, as omniORBpy names it)
@@ -77,6 +78,47 @@ class Object(object):
         if not self._obj.is_a(interface._NP_RepositoryId):
             return None
         return omniORB.objrefClass(interface._NP_RepositoryId)(self._obj)
+
+
+def _reference(ref):
+    """The object reference for the runtime's ref: None when nil, else of the generated _objref_
+    class of its type id when its stub module is imported (CORBA.Object otherwise), as omniORBpy's."""
+    if ref.is_nil():
+        return None
+    import _rtstudio
+    import omniORB
+    return omniORB.objrefClass(_rtstudio.ior_type_id(ref.ior()))(ref)
+
+
+class ORB(object):
+    """The process's ORB (the one its manager runs), as omniORBpy's CORBA.ORB."""
+
+    def string_to_object(self, text):
+        """The reference named by an IOR, corbaloc: or corbaname: text."""
+        import _rtstudio
+        return _reference(_rtstudio.string_to_object(text))
+
+    def object_to_string(self, obj):
+        return obj._obj.ior() if obj is not None else "IOR:01000000010000000000000000000000"
+
+    def resolve_initial_references(self, identifier):
+        """The reference of an initial service (NameService, RootPOA, …)."""
+        import _rtstudio
+        return _reference(_rtstudio.resolve_initial_references(identifier))
+
+    def shutdown(self, wait_for_completion=True):
+        """The manager owns the ORB and shuts it down with itself."""
+
+    def destroy(self):
+        """The manager owns the ORB and destroys it with itself."""
+
+
+_orb = ORB()
+
+
+def ORB_init(argv=None, orb_identifier="omniORB4"):
+    """The process's ORB; its arguments are the manager's (Manager.init(argv) reads -ORB… options)."""
+    return _orb
 
 
 def is_nil(obj):

@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "pyvalueconverter.h"
+#include "pyiorform.h"
+#include "pyobjectref.h"
+
+#include <rtmruntime/corbautil.h>
 
 #include "cdrcodec.h"
 
@@ -173,8 +177,12 @@ QJsonValue PyValueConverter::referenceToJson(py::handle value, const QString &pa
 {
     if (value.is_none())
         return QJsonValue::Null;
+    // A reference to call (a generated _objref_ class, as a call or string_to_object gives it).
+    if (py::isinstance(value, py::module_::import("omniORB.CORBA").attr("Object"))
+        && py::isinstance<PyObjectRef>(value.attr("_obj")))
+        return IorForm::fromIor(value.attr("_obj").cast<const PyObjectRef &>().ior());
     if (!py::isinstance(value, referenceClass()))
-        refuse(path, QStringLiteral("None or an object reference received in a sample is needed"));
+        refuse(path, QStringLiteral("None or an object reference is needed"));
     QJsonArray profiles;
     for (const py::handle profile : value.attr("_profiles")) {
         const py::tuple pair = py::reinterpret_borrow<py::tuple>(profile);
@@ -185,10 +193,19 @@ QJsonValue PyValueConverter::referenceToJson(py::handle value, const QString &pa
                        {QStringLiteral("profiles"), profiles}};
 }
 
-py::object PyValueConverter::referenceToPython(const QJsonValue &value) const
+py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QString &interfaceName) const
 {
     if (!value.isObject())
         return py::none();
+    // A reference of an interface whose stub module is imported is one to call, as omniORBpy gives it.
+    if (!interfaceName.isEmpty()) {
+        const py::object omniORB = py::module_::import("omniORB");
+        const py::object cls = omniORB.attr("objrefClass")(m_model.repositoryId(interfaceName).toStdString());
+        if (!cls.is(omniORB.attr("CORBA").attr("Object"))) {
+            CORBA::Object_var object = Runtime::theOrb()->string_to_object(IorForm::toIor(value).c_str());
+            return cls(py::cast(PyObjectRef(object.in())));
+        }
+    }
     py::list profiles;
     for (const QJsonValue &profile : value[QStringLiteral("profiles")].toArray()) {
         const QByteArray data = QByteArray::fromHex(profile[QStringLiteral("data")].toString().toLatin1());
@@ -296,7 +313,7 @@ py::object PyValueConverter::namedToPython(const QString &name, const QJsonValue
         return object;
     }
     if (m_model.interfaces.contains(name))
-        return referenceToPython(value);
+        return referenceToPython(value, name);
     return py::none();
 }
 

@@ -35,7 +35,9 @@ private:
     QJsonValue namedToJson(const QString &name, pybind11::handle value, const QString &path) const;
     QJsonValue unionToJson(const Codegen::IdlUnion &type, pybind11::handle value, const QString &path) const;
     QJsonValue referenceToJson(pybind11::handle value, const QString &path) const;
-    pybind11::object referenceToPython(const QJsonValue &value) const;
+    /// A received reference: one to call when @p interfaceName's stub module is imported, else
+    /// kept as its IOR (an _rtstudio_interfaces.ObjectReference).
+    pybind11::object referenceToPython(const QJsonValue &value, const QString &interfaceName = {}) const;
     static pybind11::object referenceClass();
     QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
     pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
