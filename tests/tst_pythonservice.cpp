@@ -7,6 +7,10 @@
 // - bad IDL is reported with its file and line;
 // - a Python provider and consumer of ours exchange results, out/inout values, sequences,
 //   attributes and a user exception; an undeclared exception in a servant comes back as UNKNOWN;
+// - stubs of IDL including IDL of its own folder (Canvas.idl, Shapes.idl) under `#pragma prefix`
+//   call across processes, a base interface's user exception coming back under its prefixed id;
+// - wide characters, unions and object references as parameters and results (Kinds.idl): a
+//   servant's _this() passed to the provider, which calls it back, the ORB's string_to_object;
 // - OpenRTM-aist-Python's SimpleService example unchanged (shared corpus; skipped with the reason
 //   when absent): its consumer's commands reach its provider and the answers come back;
 // - a Python component of ours calls rtmanager's C++ MyServiceProvider built-in and OpenRTM-aist's
