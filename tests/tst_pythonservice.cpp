@@ -10,7 +10,8 @@
 // - stubs of IDL including IDL of its own folder (Canvas.idl, Shapes.idl) under `#pragma prefix`
 //   call across processes, a base interface's user exception coming back under its prefixed id;
 // - wide characters, unions and object references as parameters and results (Kinds.idl): a
-//   servant's _this() passed to the provider, which calls it back, the ORB's string_to_object;
+//   servant's _this() passed to the provider, which calls it back, the ORB's string_to_object; and
+//   the same both ways with a C++ component of ours built against the SDK (data/sdkkinds);
 // - OpenRTM-aist-Python's SimpleService example unchanged (shared corpus; skipped with the reason
 //   when absent): its consumer's commands reach its provider and the answers come back;
 // - a Python component of ours calls rtmanager's C++ MyServiceProvider built-in and OpenRTM-aist's
@@ -59,6 +60,7 @@ private slots:
     void pythonProviderAndConsumerExchangeCalls();
     void stubsOfIncludingIdlWithPrefixesCall();
     void callsCarryEveryParameterKind();
+    void everyParameterKindToAndFromCxx();
     void pythonAndCxxComponentsCallEachOther();
     void pythonComponentAndSdkExamplesCallEachOther();
     void simpleServiceExamplesRunUnchanged();
@@ -303,6 +305,65 @@ void TestPythonService::callsCarryEveryParameterKind()
              qPrintable(printed(provider)));
     QVERIFY(endComponents({QStringLiteral("PyKindsConsumer0.rtc"), QStringLiteral("PyKindsProvider0.rtc")}));
     m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+void TestPythonService::everyParameterKindToAndFromCxx()
+{
+    // CxxKinds (data/sdkkinds), a C++ component of ours built against the SDK: it provides Echo to
+    // PyKindsConsumer and calls PyKindsProvider's.
+    const QString dir = m_work.filePath(QStringLiteral("sdk/CxxKinds"));
+    QVERIFY(SdkTest::copyTree(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdkkinds"), dir));
+    QString log;
+    QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log,
+                                   {QStringLiteral("-DKINDS_IDL=") + dataFile(QStringLiteral("Kinds.idl"))}),
+             qPrintable(log.right(4000)));
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Kinds.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    // (The previous test's Python components have gone from the name server with their processes.)
+    QTRY_VERIFY_WITH_TIMEOUT(!rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyKinds")), runTimeoutMs);
+    QString error;
+    QProcess *cxx = m_live.startRegistered(
+        dir + QStringLiteral("/build/CxxKindsComp"), {QStringLiteral("-f"), writeConf(QStringLiteral("cxxkinds"))},
+        [this] { return rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("CxxKinds0.rtc")); }, &error,
+        runTimeoutMs);
+    QVERIFY2(cxx, qPrintable(error));
+    QProcess *provider = startScript(dataFile(QStringLiteral("PyKindsProvider.py")), stubs,
+                                     QStringLiteral("PyKindsProvider0.rtc"));
+    QVERIFY(provider);
+    QProcess *consumer = startScript(dataFile(QStringLiteral("PyKindsConsumer.py")), stubs,
+                                     QStringLiteral("PyKindsConsumer0.rtc"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds({"con", "PyKindsConsumer0.rtc:Echo", "CxxKinds0.rtc:Provided"}));
+    QVERIFY(rtctlSucceeds({"con", "CxxKinds0.rtc:Required", "PyKindsProvider0.rtc:Echo"}));
+    for (const char *component : {"PyKindsProvider0.rtc", "CxxKinds0.rtc", "PyKindsConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // C++ consumer → Python provider: what the Python servant answered, and its call back of the
+    // C++ servant whose reference it was given.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(cxx).contains(QLatin1String("cxx consumer: done")),
+                              qPrintable(printed(cxx) + printed(provider)), runTimeoutMs);
+    for (const QString &line : {QStringLiteral("cxx consumer: letter \u00c9 \u00e9\u00e9\u00e9\n"),
+                                QStringLiteral("cxx consumer: reversed \u4e16 oll\u00e9h\n"),
+                                QStringLiteral("cxx consumer: swap text t, number 5\n"),
+                                QStringLiteral("cxx consumer: relay 7 True\n")})
+        QVERIFY2(printed(cxx).contains(line), qPrintable(line + printed(cxx)));
+    QVERIFY2(printed(provider).contains(QLatin1String("provider: relay of a reference that answers calls() 7\n")),
+             qPrintable(printed(provider)));
+    // Python consumer → C++ provider.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
+                              qPrintable(printed(consumer) + printed(cxx)), runTimeoutMs);
+    for (const QString &line : {QStringLiteral("consumer: letter ('\u00c9', '\u00e9\u00e9\u00e9')\n"),
+                                QStringLiteral("consumer: reversed \u4e16 oll\u00e9h\n"),
+                                QStringLiteral("consumer: swap (PyKinds.Pick(2, 't'), PyKinds.Pick(1, 5))\n"),
+                                QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
+                                QStringLiteral("consumer: relay nil None\n")})
+        QVERIFY2(printed(consumer).contains(line), qPrintable(line + printed(consumer)));
+    QVERIFY2(printed(cxx).contains(QLatin1String("cxx provider: relay of a reference that answers calls() 42\n")),
+             qPrintable(printed(cxx)));
+    QVERIFY(endComponents({QStringLiteral("PyKindsConsumer0.rtc"), QStringLiteral("CxxKinds0.rtc"),
+                           QStringLiteral("PyKindsProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(cxx);
     m_live.stop(provider);
 }
 
