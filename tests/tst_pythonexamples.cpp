@@ -18,7 +18,8 @@
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
 // leaves the master serving; wide characters, unions and object references in samples
-// (data/python/widechars.py, unions.py, references.py), and static FSMs (staticfsm.py).
+// (data/python/widechars.py, unions.py, references.py), static FSMs (staticfsm.py), and anys and
+// NVLists (anys.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
@@ -511,6 +512,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("object references") << QStringLiteral("references");
     QTest::newRow("ring buffer") << QStringLiteral("ringbuffer");
     QTest::newRow("static FSM") << QStringLiteral("staticfsm");
+    QTest::newRow("anys and NVLists") << QStringLiteral("anys");
 }
 
 void TestPythonExamples::dataTypesConvert()

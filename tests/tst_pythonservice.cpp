@@ -9,7 +9,7 @@
 //   attributes and a user exception; an undeclared exception in a servant comes back as UNKNOWN;
 // - stubs of IDL including IDL of its own folder (Canvas.idl, Shapes.idl) under `#pragma prefix`
 //   call across processes, a base interface's user exception coming back under its prefixed id;
-// - wide characters, unions and object references as parameters and results (Kinds.idl): a
+// - wide characters, unions, object references and any as parameters and results (Kinds.idl): a
 //   servant's _this() passed to the provider, which calls it back, the ORB's string_to_object; and
 //   the same both ways with a C++ component of ours built against the SDK (data/sdkkinds);
 // - OpenRTM-aist-Python's SimpleService example unchanged (shared corpus; skipped with the reason
@@ -291,12 +291,16 @@ void TestPythonService::callsCarryEveryParameterKind()
     QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
                               qPrintable(printed(consumer) + printed(provider)), runTimeoutMs);
     const QString out = printed(consumer);
-    // Wide characters and strings, a union in and inout, references in, out and as the result: the
+    // Wide characters and strings, a union in and inout, anys of a double, a string and an unsigned
+    // short in, out and as the result, references in, out and as the result: the
     // consumer's own servant (_this()) reaches the provider, which calls it back, and comes back
     // callable; the provider's own reference too; the ORB's string_to_object of an IOR.
     for (const QString &line : {QStringLiteral("consumer: letter ('\u00c9', '\u00e9\u00e9\u00e9')\n"),
                                 QStringLiteral("consumer: reversed \u4e16 oll\u00e9h\n"),
                                 QStringLiteral("consumer: swap (PyKinds.Pick(2, 't'), PyKinds.Pick(1, 5))\n"),
+                                QStringLiteral("consumer: wrap True double 2.5\n"),
+                                QStringLiteral("consumer: wrap True string 'corba_cdr'\n"),
+                                QStringLiteral("consumer: wrap True unsigned short 7\n"),
                                 QStringLiteral("consumer: string_to_object _objref_Echo 42\n"),
                                 QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
                                 QStringLiteral("consumer: relay nil None\n")})
@@ -345,6 +349,7 @@ void TestPythonService::everyParameterKindToAndFromCxx()
     for (const QString &line : {QStringLiteral("cxx consumer: letter \u00c9 \u00e9\u00e9\u00e9\n"),
                                 QStringLiteral("cxx consumer: reversed \u4e16 oll\u00e9h\n"),
                                 QStringLiteral("cxx consumer: swap text t, number 5\n"),
+                                QStringLiteral("cxx consumer: wrap -12 long -12\n"),
                                 QStringLiteral("cxx consumer: relay 7 True\n")})
         QVERIFY2(printed(cxx).contains(line), qPrintable(line + printed(cxx)));
     QVERIFY2(printed(provider).contains(QLatin1String("provider: relay of a reference that answers calls() 7\n")),
@@ -355,6 +360,9 @@ void TestPythonService::everyParameterKindToAndFromCxx()
     for (const QString &line : {QStringLiteral("consumer: letter ('\u00c9', '\u00e9\u00e9\u00e9')\n"),
                                 QStringLiteral("consumer: reversed \u4e16 oll\u00e9h\n"),
                                 QStringLiteral("consumer: swap (PyKinds.Pick(2, 't'), PyKinds.Pick(1, 5))\n"),
+                                QStringLiteral("consumer: wrap True double 2.500000\n"),
+                                QStringLiteral("consumer: wrap True string corba_cdr\n"),
+                                QStringLiteral("consumer: wrap True unsigned short 7\n"),
                                 QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
                                 QStringLiteral("consumer: relay nil None\n")})
         QVERIFY2(printed(consumer).contains(line), qPrintable(line + printed(consumer)));

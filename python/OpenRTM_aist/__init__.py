@@ -9,7 +9,7 @@ import _rtstudio
 from _rtstudio import ConfigurationParamListenerType, ConfigurationSetListenerType, \
     ConfigurationSetNameListenerType, ConnectorDataListenerType, ConnectorInfo, ConnectorListenerType, InPort, \
     Manager, OutPort, Properties
-from OpenRTM_aist import BufferStatus, CORBA_SeqUtil, StringUtil
+from OpenRTM_aist import BufferStatus, CORBA_SeqUtil, NVUtil, StringUtil
 from OpenRTM_aist.StringUtil import eraseBlank, eraseBothEndsBlank, eraseHeadBlank, eraseTailBlank, normalize, \
     split, stringTo, toBool
 from OpenRTM_aist.TimeValue import Time, TimeValue

@@ -14,8 +14,8 @@ namespace {
 
 /**
  * OpenRTM-aist-Python's get_connector_profiles(): an RTC.ConnectorProfile for each connection of
- * @p port with its name, id and properties (each value as the text it holds). The port references
- * are left out: Python components hold no references to ports.
+ * @p port with its name, id and properties (each a CORBA.Any of the text it holds). The port
+ * references are left out: Python components hold no references to ports.
  */
 py::list connectorProfiles(Runtime::PortBase &port)
 {
@@ -26,6 +26,8 @@ py::list connectorProfiles(Runtime::PortBase &port)
     }
     const py::object profileClass = py::module_::import("RTC").attr("ConnectorProfile");
     const py::object nameValue = py::module_::import("SDOPackage").attr("NameValue");
+    const py::object corba = py::module_::import("omniORB.CORBA");
+    const py::object stringType = corba.attr("TC_string");
     py::list result;
     for (CORBA::ULong i = 0; i < profiles->length(); ++i) {
         const RTC::ConnectorProfile &profile = (*profiles)[i];
@@ -33,7 +35,7 @@ py::list connectorProfiles(Runtime::PortBase &port)
         for (CORBA::ULong j = 0; j < profile.properties.length(); ++j) {
             const char *text = "";
             profile.properties[j].value >>= text;
-            properties.append(nameValue(profile.properties[j].name.in(), text));
+            properties.append(nameValue(profile.properties[j].name.in(), corba.attr("Any")(stringType, text)));
         }
         result.append(profileClass(profile.name.in(), profile.connector_id.in(), py::list(), properties));
     }

@@ -110,7 +110,9 @@ QJsonValue PyValueConverter::basicToJson(const QString &keyword, py::handle valu
     }
     if (keyword == QLatin1String("Object"))
         return referenceToJson(value, path);
-    if (keyword == QLatin1String("any") || keyword == QLatin1String("long double"))
+    if (keyword == QLatin1String("any"))
+        return anyToJson(value, path);
+    if (keyword == QLatin1String("long double"))
         refuse(path, QStringLiteral("the type %1 is not supported yet").arg(keyword));
     if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
         refuse(path, QStringLiteral("an int is needed"));
@@ -214,6 +216,31 @@ py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QS
     return referenceClass()(value[QStringLiteral("type_id")].toString().toStdString(), profiles);
 }
 
+QJsonValue PyValueConverter::anyToJson(py::handle value, const QString &path) const
+{
+    // omniORBpy's CORBA.Any: its TypeCode (here the IDL type it names) and its value.
+    if (value.is_none())
+        return QJsonValue::Null;
+    if (!py::hasattr(value, "_t") || !py::hasattr(value, "_v") || !py::hasattr(value.attr("_t"), "_name"))
+        refuse(path, QStringLiteral("a CORBA.Any is needed (CORBA.Any(CORBA.TC_long, 5), omniORB.any.to_any(5))"));
+    const QString name = QString::fromStdString(value.attr("_t").attr("_name").cast<std::string>());
+    std::optional<IdlType> type;
+    if (!Codegen::CdrCodec::anyValueType(name, &type))
+        refuse(path, QStringLiteral("an any of type %1 is not supported yet (basic types and strings only)").arg(name));
+    return QJsonObject{{QStringLiteral("type"), name},
+                       {QStringLiteral("value"), type ? toJson(*type, value.attr("_v"), path) : QJsonValue::Null}};
+}
+
+py::object PyValueConverter::anyToPython(const QJsonValue &value) const
+{
+    const py::object corba = py::module_::import("omniORB.CORBA");
+    const QString name = value[QStringLiteral("type")].toString(QStringLiteral("null"));
+    std::optional<IdlType> type;
+    Codegen::CdrCodec::anyValueType(name, &type);
+    const py::object content = type ? toPython(*type, value[QStringLiteral("value")]) : py::none();
+    return corba.attr("Any")(corba.attr("TypeCode")(name.toStdString()), content);
+}
+
 py::object PyValueConverter::referenceClass()
 {
     return py::module_::import("_rtstudio_interfaces").attr("ObjectReference");
@@ -263,6 +290,8 @@ py::object PyValueConverter::basicToPython(const QString &keyword, const QJsonVa
         return py::str(value.toString().toStdString());
     if (keyword == QLatin1String("Object"))
         return referenceToPython(value);
+    if (keyword == QLatin1String("any"))
+        return anyToPython(value);
     if (isFloating(keyword))
         return py::float_(floatingFromJson(value));
     return py::int_(static_cast<long long>(value.toInteger()));

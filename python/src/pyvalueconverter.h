@@ -39,6 +39,9 @@ private:
     /// kept as its IOR (an _rtstudio_interfaces.ObjectReference).
     pybind11::object referenceToPython(const QJsonValue &value, const QString &interfaceName = {}) const;
     static pybind11::object referenceClass();
+    /// An `any` as omniORBpy's CORBA.Any (holding a basic type or a string) and back.
+    QJsonValue anyToJson(pybind11::handle value, const QString &path) const;
+    pybind11::object anyToPython(const QJsonValue &value) const;
     QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
     pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
     pybind11::object listToPython(const Codegen::IdlType &element, const QJsonValue &value) const;

@@ -10,7 +10,7 @@ import OpenRTM_aist
 import PyKinds
 import PyKinds__POA
 import RTC
-from omniORB import CORBA
+from omniORB import CORBA, any
 
 consumer_spec = ["implementation_id", "PyKindsConsumer",
                  "type_name", "PyKindsConsumer",
@@ -49,6 +49,9 @@ class PyKindsConsumer(OpenRTM_aist.DataFlowComponentBase):
         print("consumer: letter", echo.letter("\u00e9"))
         print("consumer: reversed", echo.reversed("h\u00e9llo \u4e16"))
         print("consumer: swap", echo.swap(PyKinds.Pick(number=5), PyKinds.Pick(text="t")))
+        for value in (any.to_any(2.5), any.to_any("corba_cdr"), CORBA.Any(CORBA.TC_ushort, 7)):
+            same, described = echo.wrap(value)
+            print("consumer: wrap", same == value, any.from_any(described))
         orb = CORBA.ORB_init(sys.argv)
         local = LocalEcho()._this()
         again = orb.string_to_object(orb.object_to_string(local))

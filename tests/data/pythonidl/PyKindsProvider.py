@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 # A Python component providing PyKinds::Echo (Kinds.idl) on its service port "Echo": wide
-# characters and strings, unions and object references as parameters and results.
+# characters and strings, unions, object references and any as parameters and results.
 
 import sys
 
 import OpenRTM_aist
 import PyKinds__POA
 import RTC
+from omniORB import CORBA, any
 
 provider_spec = ["implementation_id", "PyKindsProvider",
                  "type_name", "PyKindsProvider",
@@ -44,6 +45,11 @@ class Echo(PyKinds__POA.Echo):
         self._calls += 1
         print("provider: relay of a reference that answers calls()", other.calls() if other else None)
         return other, self._this()
+
+    def wrap(self, value):
+        """The value as it came, and a string naming its type and value."""
+        self._calls += 1
+        return value, any.to_any("%s %r" % (value.typecode()._name, any.from_any(value)))
 
     def calls(self):
         return self._calls

@@ -84,6 +84,21 @@ public:
         self = _this();
         return PyKinds::Echo::_duplicate(other);
     }
+    CORBA::Any *wrap(const CORBA::Any &value, CORBA::Any_out described) override
+    {
+        ++m_calls;
+        described = new CORBA::Any;
+        CORBA::Double number = 0;
+        const char *text = nullptr;
+        CORBA::UShort small = 0;
+        if (value >>= number)
+            *described <<= ("double " + std::to_string(number)).c_str();
+        else if (value >>= text)
+            *described <<= (std::string("string ") + text).c_str();
+        else if (value >>= small)
+            *described <<= ("unsigned short " + std::to_string(small)).c_str();
+        return new CORBA::Any(value);
+    }
     CORBA::Long calls() override { return m_calls; }
 
 private:
@@ -142,6 +157,14 @@ private:
         q.text("t");
         PyKinds::Pick_var result = m_peer->swap(p, q);
         printLine("cxx consumer: swap " + describe(result.in()) + ", " + describe(q));
+        CORBA::Any value;
+        value <<= CORBA::Long(-12);
+        CORBA::Any_var described;
+        CORBA::Any_var same = m_peer->wrap(value, described.out());
+        CORBA::Long back = 0;
+        const char *text = nullptr;
+        if ((same.in() >>= back) && (described.in() >>= text))
+            printLine("cxx consumer: wrap " + std::to_string(back) + ' ' + text);
         PyKinds::Echo_var local = m_local._this();
         PyKinds::Echo_var self;
         PyKinds::Echo_var relayed = m_peer->relay(local.in(), self.out());
