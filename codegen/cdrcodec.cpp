@@ -88,8 +88,9 @@ IdlType plainString()
 }
 
 /// The values an `any` carries here, by CORBA's TypeCode kind (TCKind) and the IDL type named in
-/// their form `{"type": "long", "value": 5}`: the basic types and strings; no TypeCode parameters
-/// beyond a string's bound (0, unbounded).
+/// their form `{"type": "long", "value": 5}`: the basic types, strings and object references; no
+/// TypeCode parameters beyond a string's bound (0, unbounded) and an object reference's id and name
+/// (read past; written as omniORB writes CORBA::Object's).
 struct AnyKind
 {
     quint32 kind;
@@ -98,9 +99,11 @@ struct AnyKind
 constexpr AnyKind AnyKinds[] = {
     {0, "null"},    {1, "void"},    {2, "short"},    {3, "long"},       {4, "unsigned short"},
     {5, "unsigned long"}, {6, "float"}, {7, "double"}, {8, "boolean"}, {9, "char"},
-    {10, "octet"},  {18, "string"}, {23, "long long"}, {24, "unsigned long long"}, {26, "wchar"},
-    {27, "wstring"},
+    {10, "octet"},  {14, "Object"}, {18, "string"}, {23, "long long"}, {24, "unsigned long long"},
+    {26, "wchar"},  {27, "wstring"},
 };
+
+constexpr quint32 ObjectReferenceKind = 14;
 
 const AnyKind *anyKindOf(quint32 kind)
 {
@@ -250,6 +253,13 @@ private:
             fail(QStringLiteral("an any of TypeCode kind %1 cannot be shown (basic types and strings only)").arg(code));
         if (hasBound(*kind))
             readUnsigned(4);
+        if (kind->kind == ObjectReferenceKind) {
+            // The interface's id and name, in an encapsulation of their own: the value's IOR has the id.
+            const quint32 length = quint32(readUnsigned(4));
+            if (!m_input.available(length))
+                fail(QStringLiteral("TypeCode parameters of %1 bytes where %2 remain").arg(length).arg(left()));
+            readOctets(length);
+        }
         const std::optional<IdlType> type = anyValueType(*kind);
         return QJsonObject{{QStringLiteral("type"), QLatin1String(kind->type)},
                            {QStringLiteral("value"), type ? read(*type) : QJsonValue::Null}};
@@ -511,8 +521,29 @@ private:
         writeUnsigned(4, kind->kind);
         if (hasBound(*kind))
             writeUnsigned(4, 0);
+        if (kind->kind == ObjectReferenceKind)
+            writeObjectTypeCodeParameters();
         if (const std::optional<IdlType> type = anyValueType(*kind))
             write(*type, value[QStringLiteral("value")]);
+    }
+
+    /// CORBA::Object's TypeCode parameters (tk_objref): an encapsulation of its id and name (empty,
+    /// as omniORB writes it).
+    void writeObjectTypeCodeParameters()
+    {
+        QByteArray encapsulation(1, m_little ? '\1' : '\0');
+        const auto appendString = [this, &encapsulation](const QByteArray &text) {
+            while (encapsulation.size() % 4 != 0)
+                encapsulation.append('\0');
+            const quint32 length = quint32(text.size() + 1);
+            for (int i = 0; i < 4; ++i)
+                encapsulation.append(char((length >> (8 * (m_little ? i : 3 - i))) & 0xff));
+            encapsulation.append(text).append('\0');
+        };
+        appendString(QByteArrayLiteral("IDL:omg.org/CORBA/Object:1.0"));
+        appendString(QByteArray());
+        writeUnsigned(4, quint64(encapsulation.size()));
+        m_output.write(reinterpret_cast<const uchar *>(encapsulation.constData()), int(encapsulation.size()), 1);
     }
 
     /// An IOR from readObjectReference()'s form; null (or nothing) is the nil reference.

@@ -43,7 +43,8 @@ public:
  * Types are the scoped names of an IdlModel (`RTC::TimedLong`); a union is
  * `{"_d": discriminator, "<member>": value}` with the member the discriminator selects; an object
  * reference is null when nil, else its IOR as `{"type_id": …, "profiles": [{"tag": n, "data": hex}]}`;
- * an `any` holding a basic type or a string is `{"type": "long", "value": 5}` (null when empty); an
+ * an `any` holding a basic type, a string or an object reference is `{"type": "long", "value": 5}`
+ * (`"Object"` for a reference; null when empty); an
  * `any` of another TypeCode, TypeCode itself, `fixed` and `long double` are refused with an error
  * naming the member.
  */

@@ -227,6 +227,7 @@ void TestCdrCodec::anysMatchOmniOrb_data()
     QTest::newRow("boolean") << 3 << R"({"name":"n","value":{"type":"boolean","value":true}})";
     QTest::newRow("wstring") << 4 << R"({"name":"n","value":{"type":"wstring","value":"h\u3042"}})";
     QTest::newRow("empty") << 5 << R"({"name":"n","value":{"type":"null","value":null}})";
+    QTest::newRow("nil object reference") << 6 << R"({"name":"n","value":{"type":"Object","value":null}})";
 }
 
 void TestCdrCodec::anysMatchOmniOrb()
@@ -242,6 +243,7 @@ void TestCdrCodec::anysMatchOmniOrb()
     case 2: nv.value <<= "corba_cdr"; break;
     case 3: nv.value <<= CORBA::Any::from_boolean(true); break;
     case 4: nv.value <<= L"h\u3042"; break;
+    case 6: nv.value <<= CORBA::Object::_nil(); break;
     default: break;
     }
     const CdrCodec codec(m_library.model());

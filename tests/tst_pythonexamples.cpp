@@ -8,7 +8,8 @@
 //   members of the SDK's PeriodicECSharedComposite, fed and read by rtmanager's built-ins through
 //   the composite's exported ports;
 // - ExtTrigger: ConsoleIn and ConsoleOut on ExtTrigExecutionContexts, each stepping once per tick
-//   the test sends (the example's Connector.py, which needs omniORBpy, does the same);
+//   the test sends, and driven as the example's Connector.py drives them, through the ORB from
+//   Python (data/python/PyConnector.py: Connector.py itself asks localhost's default name server);
 // - AutoControl: the velocities it answers to range samples, read with rtctl print;
 // - Throughput: its own OutPort feeding its InPort, the measurements file it writes per size;
 // - StaticFsm: Inputbutton's commands driving Microwave's static state machine through event
@@ -51,6 +52,7 @@ private slots:
     void configurationSetsAndListeners();
     void compositeRunsUnchanged();
     void pythonMemberOfCompositeInManager();
+    void connectorDrivesExtTriggerThroughTheOrb();
     void extTriggerStepsOnlyWhenTicked();
     void componentTicksItsOwnContext();
     void pythonComponentInSlaveOfItsOwn();
@@ -303,6 +305,52 @@ void TestPythonExamples::pythonMemberOfCompositeInManager()
     QVERIFY2(values.first() > 0 && values.first() % 1000 == 0, qPrintable(QString::number(values.first())));
     for (const char *component : {"MemberFeed.rtc", "ScalerComposite.rtc"})
         QVERIFY(rtctlSucceeds({"deact", component}));
+}
+
+void TestPythonExamples::connectorDrivesExtTriggerThroughTheOrb()
+{
+    const QString in = example(QStringLiteral("ExtTrigger/ConsoleIn.py"));
+    if (in.isEmpty())
+        QSKIP(NoPythonCorpus);
+    const QStringList conf{QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext"),
+                           QStringLiteral("exec_cxt.periodic.rate: 1000")};
+    QProcess *out = m_scripts.start(example(QStringLiteral("ExtTrigger/ConsoleOut.py")), {QStringLiteral("ConsoleOut0.rtc")},
+                                    runTimeoutMs, conf);
+    QVERIFY(out);
+    QProcess *source = m_scripts.start(in, {QStringLiteral("ConsoleIn0.rtc")}, runTimeoutMs, conf);
+    QVERIFY(source);
+    source->write("41\n42\n");
+    // Names resolved, ports found, disconnected, connected and components activated through their
+    // references; contexts narrowed to OpenRTM.ExtTrigExecutionContextService and ticked.
+    QString error;
+    QProcess *connector = m_live.startProcess(
+        QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+        {LiveTest::pythonTestScript(QStringLiteral("PyConnector.py")), m_live.namingServer(),
+         hostName + QStringLiteral(".host_cxt/"), QStringLiteral("-f"), m_scripts.writeConf(QStringLiteral("connector"), {})},
+        QString(), &error, runTimeoutMs, m_scripts.environment());
+    QVERIFY2(connector, qPrintable(error));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(connector).contains(QLatin1String("connector: connect RTC_OK connector0 True\n")),
+                              qPrintable(printed(connector)), runTimeoutMs);
+    QVERIFY2(printed(connector).contains(QLatin1String("connector: ConsoleIn0.rtc activated RTC_OK\n"))
+                 && printed(connector).contains(QLatin1String("connector: ConsoleOut0.rtc activated RTC_OK\n")),
+             qPrintable(printed(connector)));
+    QCOMPARE(m_host.state(QStringLiteral("ConsoleIn0.rtc")), QStringLiteral("Active"));
+    // Activating ran one cycle of each; ticking ConsoleIn sends the next number, ticking ConsoleOut
+    // takes it.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  41\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("0\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  42\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("1\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(out).contains(QLatin1String("Received:  42\n")), qPrintable(printed(out)),
+                              runTimeoutMs);
+    connector->write("q\n");
+    QVERIFY(LiveTest::waitForExit(connector, runTimeoutMs));
+    // Their names go with them, for the next test's programs of the same names.
+    QVERIFY(rtctlSucceeds({"exit", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}));
+    m_live.stop(source);
+    m_live.stop(out);
 }
 
 void TestPythonExamples::extTriggerStepsOnlyWhenTicked()

@@ -17,6 +17,7 @@ from OpenRTM_aist.Async import Async_tInvoker
 from OpenRTM_aist.ConfigurationListeners import ConfigurationParamListener, ConfigurationSetListener, \
     ConfigurationSetNameListener
 from OpenRTM_aist.CorbaConsumer import CorbaConsumer
+from OpenRTM_aist.CorbaNaming import CorbaNaming
 from OpenRTM_aist.CorbaPort import CorbaPort
 from OpenRTM_aist.DataFlowComponentBase import DataFlowComponentBase
 from OpenRTM_aist.POA import POA

@@ -77,18 +77,18 @@ class Object(object):
         import omniORB
         if not self._obj.is_a(interface._NP_RepositoryId):
             return None
-        return omniORB.objrefClass(interface._NP_RepositoryId)(self._obj)
+        return omniORB.objrefClass(interface._NP_RepositoryId, True)(self._obj)
 
 
 # TypeCodes of the values an Any carries here (basic types and strings), by the IDL type they name,
 # with CORBA's TCKind numbers.
 tk_null, tk_void, tk_short, tk_long, tk_ushort, tk_ulong, tk_float, tk_double, tk_boolean, tk_char, tk_octet, \
     tk_any, tk_TypeCode = range(13)
-tk_string, tk_longlong, tk_ulonglong, tk_wchar, tk_wstring = 18, 23, 24, 26, 27
+tk_objref, tk_string, tk_longlong, tk_ulonglong, tk_wchar, tk_wstring = 14, 18, 23, 24, 26, 27
 _KINDS = {"null": tk_null, "void": tk_void, "short": tk_short, "long": tk_long, "unsigned short": tk_ushort,
           "unsigned long": tk_ulong, "float": tk_float, "double": tk_double, "boolean": tk_boolean, "char": tk_char,
           "octet": tk_octet, "string": tk_string, "long long": tk_longlong, "unsigned long long": tk_ulonglong,
-          "wchar": tk_wchar, "wstring": tk_wstring}
+          "wchar": tk_wchar, "wstring": tk_wstring, "Object": tk_objref}
 
 
 class TypeCode(object):
@@ -118,10 +118,10 @@ class TypeCode(object):
 
 
 TC_null, TC_void, TC_short, TC_long, TC_ushort, TC_ulong, TC_float, TC_double, TC_boolean, TC_char, TC_octet, \
-    TC_string, TC_longlong, TC_ulonglong, TC_wchar, TC_wstring = (
+    TC_string, TC_longlong, TC_ulonglong, TC_wchar, TC_wstring, TC_Object = (
         TypeCode(name) for name in ("null", "void", "short", "long", "unsigned short", "unsigned long", "float",
                                     "double", "boolean", "char", "octet", "string", "long long",
-                                    "unsigned long long", "wchar", "wstring"))
+                                    "unsigned long long", "wchar", "wstring", "Object"))
 
 
 class Any(object):
@@ -156,7 +156,7 @@ def _reference(ref):
         return None
     import _rtstudio
     import omniORB
-    return omniORB.objrefClass(_rtstudio.ior_type_id(ref.ior()))(ref)
+    return omniORB.objrefClass(_rtstudio.ior_type_id(ref.ior()), True)(ref)
 
 
 class ORB(object):

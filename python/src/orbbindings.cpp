@@ -3,6 +3,7 @@
 // resolve_initial_references) and a servant's implicit activation (_this()), over the ORB and
 // root POA of the process's manager; omniORB/CORBA.py and PortableServer.py wrap them.
 #include "bindings.h"
+#include "pydatatypes.h"
 #include "pyiorform.h"
 #include "pyobjectref.h"
 #include "pyservant.h"
@@ -66,6 +67,21 @@ void bindOrb(py::module_ &module)
     module.def("string_to_object", &stringToObject, py::arg("text"));
     module.def("resolve_initial_references", &initialReference, py::arg("identifier"));
     module.def("activate_servant", &activateServant, py::arg("servant"));
+    module.def("knows_interface", [](const std::string &repositoryId) {
+        const PyDataTypes &types = PyDataTypes::instance();
+        return types.model().interfaces.contains(types.scopedNameOf(repositoryId));
+    }, py::arg("repository_id"));
+    module.def("interface_ids", [](const std::string &moduleName) {
+        // The interfaces declared directly in IDL module moduleName, by name, with their type ids.
+        const PyDataTypes &types = PyDataTypes::instance();
+        const QString prefix = QString::fromStdString(moduleName) + QStringLiteral("::");
+        py::dict ids;
+        for (const QString &name : types.model().interfaces.keys()) {
+            if (name.startsWith(prefix) && !name.mid(prefix.size()).contains(QLatin1Char(':')))
+                ids[py::str(name.mid(prefix.size()).toStdString())] = types.repositoryIdOf(name);
+        }
+        return ids;
+    }, py::arg("module"));
     module.def("ior_type_id", [](const std::string &ior) {
         return IorForm::fromIor(ior)[QStringLiteral("type_id")].toString().toStdString();
     }, py::arg("ior"));

@@ -68,6 +68,7 @@ private:
         py::gil_scoped_acquire gil;
         const PyValueConverter &converter = PyDataTypes::instance().converter();
         try {
+            const PyValueConverter::CallableReferences callable;
             py::tuple arguments(m_inputs.size());
             size_t next = 0;
             for (const IdlParameter &parameter : m_operation.parameters) {

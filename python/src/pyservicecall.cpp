@@ -154,6 +154,7 @@ py::object resultObject(const IdlOperation &operation, const std::vector<QJsonVa
     }
     if (types.empty() || outputs.size() != types.size())
         return py::none();
+    const PyValueConverter::CallableReferences callable;
     if (types.size() == 1)
         return converter.toPython(types.front(), outputs.front());
     py::tuple values(types.size());

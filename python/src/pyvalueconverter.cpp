@@ -8,6 +8,7 @@
 #include "cdrcodec.h"
 
 #include <QJsonArray>
+#include <utility>
 #include <QJsonObject>
 
 #include <cmath>
@@ -195,6 +196,22 @@ QJsonValue PyValueConverter::referenceToJson(py::handle value, const QString &pa
                        {QStringLiteral("profiles"), profiles}};
 }
 
+namespace {
+
+/// Set while a CallableReferences lives in this thread.
+thread_local bool t_callableReferences = false;
+
+} // namespace
+
+PyValueConverter::CallableReferences::CallableReferences()
+    : m_before(std::exchange(t_callableReferences, true))
+{ }
+
+PyValueConverter::CallableReferences::~CallableReferences()
+{
+    t_callableReferences = m_before;
+}
+
 py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QString &interfaceName) const
 {
     if (!value.isObject())
@@ -202,7 +219,8 @@ py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QS
     // A reference of an interface whose stub module is imported is one to call, as omniORBpy gives it.
     if (!interfaceName.isEmpty()) {
         const py::object omniORB = py::module_::import("omniORB");
-        const py::object cls = omniORB.attr("objrefClass")(m_model.repositoryId(interfaceName).toStdString());
+        const py::object cls
+            = omniORB.attr("objrefClass")(m_model.repositoryId(interfaceName).toStdString(), t_callableReferences);
         if (!cls.is(omniORB.attr("CORBA").attr("Object"))) {
             CORBA::Object_var object = Runtime::theOrb()->string_to_object(IorForm::toIor(value).c_str());
             return cls(py::cast(PyObjectRef(object.in())));

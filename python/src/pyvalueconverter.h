@@ -29,6 +29,24 @@ public:
     /// The Python value of the codec's @p value of @p type.
     pybind11::object toPython(const Codegen::IdlType &type, const QJsonValue &value) const;
 
+    /**
+     * While one lives in a thread, the references toPython() makes there are ones to call (a service
+     * call's arguments and results), also of interfaces without a generated stub module (OpenRTM's
+     * own RTC::PortService, …), whose operations are then called by name. Elsewhere (data samples)
+     * such a reference is kept as its IOR.
+     */
+    class CallableReferences
+    {
+    public:
+        CallableReferences();
+        ~CallableReferences();
+        CallableReferences(const CallableReferences &) = delete;
+        CallableReferences &operator=(const CallableReferences &) = delete;
+
+    private:
+        bool m_before;
+    };
+
 private:
     QJsonValue basicToJson(const QString &keyword, pybind11::handle value, const QString &path) const;
     QJsonValue listToJson(const Codegen::IdlType &element, pybind11::handle value, const QString &path) const;
