@@ -9,7 +9,8 @@
 //   the composite's exported ports;
 // - ExtTrigger: ConsoleIn and ConsoleOut on ExtTrigExecutionContexts, each stepping once per tick
 //   the test sends, and driven as the example's Connector.py drives them, through the ORB from
-//   Python (data/python/PyConnector.py: Connector.py itself asks localhost's default name server);
+//   Python: the example's Connector.py itself on a simulated host of its own, whose localhost has the
+//   default name server it asks, and data/python/PyConnector.py, its calls against the test's;
 // - AutoControl: the velocities it answers to range samples, read with rtctl print;
 // - Throughput: its own OutPort feeding its InPort, the measurements file it writes per size;
 // - StaticFsm: Inputbutton's commands driving Microwave's static state machine through event
@@ -23,12 +24,14 @@
 // NVLists (anys.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
+#include "simulatedhosts.h"
 
 #include <Manager.hh>
 #include <OpenRTM.hh>
 
 #include <csignal>
 
+#include <QStandardPaths>
 #include <QtTest>
 
 namespace {
@@ -53,6 +56,7 @@ private slots:
     void compositeRunsUnchanged();
     void pythonMemberOfCompositeInManager();
     void connectorDrivesExtTriggerThroughTheOrb();
+    void connectorRunsUnchangedOnAHostOfItsOwn();
     void extTriggerStepsOnlyWhenTicked();
     void componentTicksItsOwnContext();
     void pythonComponentInSlaveOfItsOwn();
@@ -351,6 +355,63 @@ void TestPythonExamples::connectorDrivesExtTriggerThroughTheOrb()
     QVERIFY(rtctlSucceeds({"exit", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}));
     m_live.stop(source);
     m_live.stop(out);
+}
+
+void TestPythonExamples::connectorRunsUnchangedOnAHostOfItsOwn()
+{
+    const QString connectorScript = example(QStringLiteral("ExtTrigger/Connector.py"));
+    if (connectorScript.isEmpty())
+        QSKIP(NoPythonCorpus);
+    // Connector.py asks localhost's default name server (port 2809): a host of its own has one.
+    LiveTest::SimulatedHosts hosts;
+    QString error;
+    if (!hosts.create({QStringLiteral("pyexthost")}, &error))
+        QSKIP(qPrintable(QStringLiteral("cannot simulate a host: ") + error));
+    const QString address = hosts.address(QStringLiteral("pyexthost"));
+    LiveTest::LiveSystem host(hosts.liveHost(QStringLiteral("pyexthost")));
+    QTemporaryDir names;
+    QProcess *nameServer = host.startProcess(
+        QStandardPaths::findExecutable(QStringLiteral("omniNames")),
+        {QStringLiteral("-start"), QStringLiteral("2809"), QStringLiteral("-datadir"), names.path(), QStringLiteral("-logdir"),
+         names.path(), QStringLiteral("-ORBendPoint"), QStringLiteral("giop:tcp:127.0.0.1:2809"),
+         QStringLiteral("-ORBendPoint"), QStringLiteral("giop:tcp:%1:2809").arg(address)},
+        QString(), &error, runTimeoutMs);
+    QVERIFY2(nameServer, qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::isListening(address, 2809), runTimeoutMs);
+    // The example's rtc.conf: the default name server, names at its root, ExtTrigExecutionContexts.
+    QFile conf(m_work.filePath(QStringLiteral("exttrigger.conf")));
+    QVERIFY(conf.open(QIODevice::WriteOnly | QIODevice::Text));
+    conf.write("corba.nameservers: localhost\nnaming.formats: %n.rtc\nlogger.enable: NO\n"
+               "exec_cxt.periodic.type: ExtTrigExecutionContext\nexec_cxt.periodic.rate: 1000\n");
+    conf.close();
+    const auto startExample = [&](const QString &file) {
+        return host.startProcess(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {example(file), QStringLiteral("-f"), conf.fileName()},
+                                 QString(), &error, runTimeoutMs, m_scripts.environment());
+    };
+    QProcess *out = startExample(QStringLiteral("ExtTrigger/ConsoleOut.py"));
+    QVERIFY2(out, qPrintable(error));
+    QProcess *source = startExample(QStringLiteral("ExtTrigger/ConsoleIn.py"));
+    QVERIFY2(source, qPrintable(error));
+    source->write("51\n52\n");
+    const auto listed = [&] { return runRtctlAt(QStringLiteral("/%1:2809").arg(address), {QStringLiteral("ls")}).out; };
+    QTRY_VERIFY2_WITH_TIMEOUT(listed().contains(QLatin1String("ConsoleIn0.rtc")) && listed().contains(QLatin1String("ConsoleOut0.rtc")),
+                              qPrintable(listed()), runTimeoutMs);
+    QProcess *connector = startExample(QStringLiteral("ExtTrigger/Connector.py"));
+    QVERIFY2(connector, qPrintable(error));
+    // It activates both (one cycle each) and connects them, then ticks on its commands.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(connector).contains(QLatin1String("cmd? >")), qPrintable(printed(connector)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  51\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("0\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  52\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("1\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(out).contains(QLatin1String("Received:  52\n")), qPrintable(printed(out)), runTimeoutMs);
+    QVERIFY2(!printed(connector).contains(QLatin1String("Exception.")), qPrintable(printed(connector)));
+    connector->write("q\n");
+    QVERIFY(LiveTest::waitForExit(connector, runTimeoutMs));
+    host.stop(source);
+    host.stop(out);
 }
 
 void TestPythonExamples::extTriggerStepsOnlyWhenTicked()
