@@ -20,8 +20,8 @@
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
 // leaves the master serving; wide characters, unions and object references in samples
-// (data/python/widechars.py, unions.py, references.py), static FSMs (staticfsm.py), and anys and
-// NVLists (anys.py).
+// (data/python/widechars.py, unions.py, references.py), static FSMs (staticfsm.py), anys and
+// NVLists (anys.py), and values straight to CDR and back as through the converter (directcdr.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 #include "simulatedhosts.h"
@@ -622,6 +622,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("ring buffer") << QStringLiteral("ringbuffer");
     QTest::newRow("static FSM") << QStringLiteral("staticfsm");
     QTest::newRow("anys and NVLists") << QStringLiteral("anys");
+    QTest::newRow("straight to CDR") << QStringLiteral("directcdr");
 }
 
 void TestPythonExamples::dataTypesConvert()

@@ -110,6 +110,7 @@ void PyDataTypes::rebuild()
 {
     m_codec = std::make_unique<Codegen::CdrCodec>(m_model);
     m_converter = std::make_unique<PyValueConverter>(m_model, m_classes);
+    m_direct = std::make_unique<PyDirectCdr>(m_model, m_classes);
 }
 
 const Codegen::IdlModel &PyDataTypes::model() const
@@ -212,21 +213,29 @@ std::string PyDataTypes::repositoryId(py::handle value)
 }
 
 std::vector<unsigned char> PyDataTypes::encode(const std::string &repositoryId, py::handle value,
-                                               bool littleEndian) const
+                                               bool littleEndian, bool direct) const
 {
     const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    std::vector<unsigned char> bytes;
+    if (direct && m_direct && m_direct->handles(type) && m_direct->encode(type, value, littleEndian, &bytes))
+        return bytes;
+    // What the direct way does not take, and values that do not fit (the converter says why).
     const QJsonValue json = converter().toJson(Codegen::IdlType::named(type), value, type);
     QString error;
-    const QByteArray bytes = m_codec->encode(type, json, littleEndian, &error);
+    const QByteArray encoded = m_codec->encode(type, json, littleEndian, &error);
     if (!error.isEmpty())
         throw py::type_error(error.toStdString());
-    return {bytes.begin(), bytes.end()};
+    return {encoded.begin(), encoded.end()};
 }
 
 py::object PyDataTypes::decode(const std::string &repositoryId, const unsigned char *data, size_t size,
-                               bool littleEndian) const
+                               bool littleEndian, bool direct) const
 {
     const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    if (direct && m_direct && m_direct->handles(type)) {
+        if (std::optional<py::object> value = m_direct->decode(type, data, size, littleEndian))
+            return std::move(*value);
+    }
     QString error;
     const QJsonValue json = m_codec->decode(
         type, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size)), littleEndian, &error);
@@ -267,19 +276,20 @@ void bindDataTypes(py::module_ &module)
     }, py::arg("file_name"), py::arg("text"), "Adds the declarations of a stub module's IDL.");
     module.def("add_idl_classes", [](const py::dict &classes) { PyDataTypes::instance().addClasses(classes); },
                py::arg("classes"), "More Python classes of IDL types, by scoped name.");
-    module.def("cdr_encode", [](py::handle value, bool littleEndian) {
+    module.def("cdr_encode", [](py::handle value, bool littleEndian, bool direct) {
         const std::vector<unsigned char> bytes =
-            PyDataTypes::instance().encode(PyDataTypes::repositoryId(value), value, littleEndian);
+            PyDataTypes::instance().encode(PyDataTypes::repositoryId(value), value, littleEndian, direct);
         return py::bytes(reinterpret_cast<const char *>(bytes.data()), bytes.size());
-    }, py::arg("value"), py::arg("little_endian") = true, "A value of an IDL data type as CDR bytes.");
+    }, py::arg("value"), py::arg("little_endian") = true, py::arg("direct") = true,
+       "A value of an IDL data type as CDR bytes (direct=False: through the converter, to compare).");
     module.def("default_value", [](const std::string &repositoryId) {
         return PyDataTypes::instance().defaultValue(repositoryId);
     }, py::arg("repository_id"), "A new value of an IDL data type with every member zero or empty.");
-    module.def("cdr_decode", [](const std::string &repositoryId, const py::bytes &data, bool littleEndian) {
+    module.def("cdr_decode", [](const std::string &repositoryId, const py::bytes &data, bool littleEndian, bool direct) {
         const std::string bytes = data;
         return PyDataTypes::instance().decode(repositoryId, reinterpret_cast<const unsigned char *>(bytes.data()),
-                                              bytes.size(), littleEndian);
-    }, py::arg("repository_id"), py::arg("data"), py::arg("little_endian") = true,
+                                              bytes.size(), littleEndian, direct);
+    }, py::arg("repository_id"), py::arg("data"), py::arg("little_endian") = true, py::arg("direct") = true,
        "A new value of the IDL data type @p repository_id from CDR bytes.");
 }
 

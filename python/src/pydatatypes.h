@@ -3,6 +3,7 @@
 
 #include "cdrcodec.h"
 #include "idltypelibrary.h"
+#include "pydirectcdr.h"
 #include "pyvalueconverter.h"
 
 #include <QTemporaryDir>
@@ -56,12 +57,15 @@ public:
 
     /// The repository id of @p value's class (its `_NP_RepositoryId`); TypeError when it has none.
     static std::string repositoryId(pybind11::handle value);
-    /// @p value as CDR of the type @p repositoryId names; TypeError naming a member that does not fit.
+    /**
+     * @p value as CDR of the type @p repositoryId names; TypeError naming a member that does not fit.
+     * Straight from the Python objects where PyDirectCdr can (@p direct), else through the converter.
+     */
     std::vector<unsigned char> encode(const std::string &repositoryId, pybind11::handle value,
-                                      bool littleEndian) const;
+                                      bool littleEndian, bool direct = true) const;
     /// A new Python value from CDR of the type @p repositoryId names; ValueError when it does not decode.
     pybind11::object decode(const std::string &repositoryId, const unsigned char *data, size_t size,
-                            bool littleEndian) const;
+                            bool littleEndian, bool direct = true) const;
 
     /// A new value of the type @p repositoryId names with every member zero or empty (OpenRTM-aist-Python's instantiateDataType()).
     pybind11::object defaultValue(const std::string &repositoryId) const;
@@ -82,6 +86,8 @@ private:
     pybind11::dict m_classes;
     std::unique_ptr<Codegen::CdrCodec> m_codec;
     std::unique_ptr<PyValueConverter> m_converter;
+    /// The way straight between Python objects and CDR, taken first where it can be.
+    std::unique_ptr<PyDirectCdr> m_direct;
 };
 
 } // namespace RtPython
