@@ -271,11 +271,44 @@ QList<IdlAttribute> IdlModel::allAttributes(const QString &scopedName) const
     return result;
 }
 
+QString IdlModel::repositoryId(const QString &scopedName) const
+{
+    QString prefix;
+    if (const std::optional<IdlDeclaration> declaration = find(scopedName)) {
+        const QMap<int, QString> lines = prefixes.value(declaration->source.file);
+        auto after = lines.upperBound(declaration->source.line);
+        if (after != lines.constBegin())
+            prefix = std::prev(after).value();
+    }
+    const QString path = QString(scopedName).replace(QStringLiteral("::"), QStringLiteral("/"));
+    return QStringLiteral("IDL:%1%2:1.0").arg(prefix.isEmpty() ? QString() : prefix + QLatin1Char('/'), path);
+}
+
+QString IdlModel::scopedNameOf(const QString &repositoryId) const
+{
+    if (!repositoryId.startsWith(QLatin1String("IDL:")))
+        return {};
+    // Most ids have no prefix: their path is the scoped name.
+    QString path = repositoryId.mid(4);
+    path = path.left(path.lastIndexOf(QLatin1Char(':')));
+    const QString plain = QString(path).replace(QLatin1Char('/'), QStringLiteral("::"));
+    if (find(plain) && this->repositoryId(plain) == repositoryId)
+        return plain;
+    // A prefixed id ends with the scoped name's path; the prefix may itself contain '/'.
+    for (qsizetype slash = path.indexOf(QLatin1Char('/')); slash >= 0; slash = path.indexOf(QLatin1Char('/'), slash + 1)) {
+        const QString candidate = path.mid(slash + 1).replace(QLatin1Char('/'), QStringLiteral("::"));
+        if (find(candidate) && this->repositoryId(candidate) == repositoryId)
+            return candidate;
+    }
+    return {};
+}
+
 bool IdlModel::operator==(const IdlModel &other) const
 {
     return declarations == other.declarations && structs == other.structs && unions == other.unions
         && enums == other.enums && typedefs == other.typedefs && consts == other.consts
-        && exceptions == other.exceptions && interfaces == other.interfaces && files == other.files;
+        && exceptions == other.exceptions && interfaces == other.interfaces && files == other.files
+        && prefixes == other.prefixes;
 }
 
 } // namespace Codegen

@@ -240,11 +240,21 @@ struct IdlModel
     QMap<QString, IdlException> exceptions;
     QMap<QString, IdlInterface> interfaces;
     QStringList files; ///< every file read, in reading order
+    /// `#pragma prefix` of each file that has one: line → prefix in effect from that line on.
+    QMap<QString, QMap<int, QString>> prefixes;
 
     /// The declaration of `scopedName`, if any.
     std::optional<IdlDeclaration> find(const QString &scopedName) const;
     /// Direct children of a scope ("" = global), in declaration order.
     QList<IdlDeclaration> children(const QString &scope) const;
+
+    /**
+     * The type id of `scopedName`: `IDL:Mod/Name:1.0`, or `IDL:acme.com/Mod/Name:1.0` when its file
+     * declares it after `#pragma prefix "acme.com"`.
+     */
+    QString repositoryId(const QString &scopedName) const;
+    /// The scoped name whose repositoryId() is @p repositoryId (`Mod::Name`); empty when none is.
+    QString scopedNameOf(const QString &repositoryId) const;
 
     /// Follows typedefs (and value boxes) until the type is no typedef; stops on cycles.
     IdlType resolve(const IdlType &type) const;

@@ -70,6 +70,7 @@ bool IdlParser::parseTokens(qsizetype errorsBefore)
     IdlSyntax syntax(m_preprocessor.takeTokens(), m_preprocessor.files(), &m_model, &m_diagnostics);
     syntax.parse();
     m_model.files = m_preprocessor.files();
+    m_model.prefixes = m_preprocessor.prefixes();
     return errorCount(m_diagnostics) == errorsBefore;
 }
 

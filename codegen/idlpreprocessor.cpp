@@ -128,12 +128,23 @@ void IdlPreprocessor::directive(const IdlToken &token, int depth, QList<Conditio
         m_macros.remove(argument);
     else if (keyword == QLatin1String("error"))
         report(Diagnostic::Severity::Error, fileName, token, QStringLiteral("#error %1").arg(argument));
-    else if (keyword == QLatin1String("pragma") || keyword == QLatin1String("line")
-             || keyword == QLatin1String("warning") || keyword.isEmpty())
-        return; // pragmas (prefix, version, ID, omniORB's hh) do not change what the types are
+    else if (keyword == QLatin1String("pragma"))
+        pragma(argument, token);
+    else if (keyword == QLatin1String("line") || keyword == QLatin1String("warning") || keyword.isEmpty())
+        return;
     else
         report(Diagnostic::Severity::Warning, fileName, token,
                QStringLiteral("unknown preprocessor directive '#%1' ignored").arg(keyword));
+}
+
+void IdlPreprocessor::pragma(const QString &argument, const IdlToken &token)
+{
+    // `#pragma prefix "acme.com"` prefixes the type ids of what the file declares after it; the
+    // other pragmas (version, ID, omniORB's hh) do not change what the types are.
+    static const QRegularExpression prefix(QStringLiteral("^prefix\\s+\"([^\"]*)\"$"));
+    const QRegularExpressionMatch match = prefix.match(argument);
+    if (match.hasMatch())
+        m_prefixes[m_files.at(token.file)].insert(token.line, match.captured(1));
 }
 
 void IdlPreprocessor::conditional(const QString &keyword, const QString &argument, const IdlToken &token,

@@ -6,6 +6,7 @@
 
 #include <QList>
 #include <QSet>
+#include <QMap>
 #include <QString>
 #include <QStringList>
 
@@ -13,7 +14,8 @@ namespace Codegen {
 
 /// Turns IDL files into one token stream: `#include` is replaced by the included file's tokens (each
 /// file only once over the preprocessor's lifetime, so cycles are safe), `#ifdef`/`#ifndef`/`#if`/
-/// `#else`/`#elif`/`#endif` on macros defined by `#define` select what is kept, `#pragma` is ignored.
+/// `#else`/`#elif`/`#endif` on macros defined by `#define` select what is kept; of the pragmas only
+/// `#pragma prefix "…"` counts (prefixes()), the others are ignored.
 /// Macros are only tested, never substituted.
 class IdlPreprocessor
 {
@@ -34,6 +36,8 @@ public:
     QList<IdlToken> takeTokens();
     /// Every file read so far, as opened; IdlToken::file indexes this list.
     const QStringList &files() const { return m_files; }
+    /// The `#pragma prefix` lines read so far: file as opened → line → prefix from there on.
+    const QMap<QString, QMap<int, QString>> &prefixes() const { return m_prefixes; }
 
 private:
     struct Condition
@@ -51,6 +55,7 @@ private:
     void conditional(const QString &keyword, const QString &argument, const IdlToken &token,
                      QList<Condition> *conditions);
     void include(const QString &argument, const IdlToken &token, int depth);
+    void pragma(const QString &argument, const IdlToken &token);
     QString findInclude(const QString &name, bool quoted, const QString &fileName) const;
     bool evaluateIf(const QString &expression, const IdlToken &token);
     void report(Profile::Diagnostic::Severity severity, const QString &fileName, const IdlToken &token,
@@ -61,6 +66,7 @@ private:
     QSet<QString> m_macros;
     QSet<QString> m_seen; ///< canonical paths already read
     QStringList m_files;
+    QMap<QString, QMap<int, QString>> m_prefixes;
     QList<IdlToken> m_tokens;
 };
 

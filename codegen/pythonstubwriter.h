@@ -18,9 +18,11 @@ namespace Codegen {
  * constants, enums, structs, unions, typedefs, exceptions, `_objref_<I>` client classes and the
  * `SimpleService__POA.<I>` servant bases), and the packages `SimpleService/__init__.py` and
  * `SimpleService__POA/__init__.py` that import it; global declarations go to `_GlobalIDL`. Type ids
- * are omniORBpy's (`IDL:SimpleService/MyService:1.0`). The stub file carries the IDL text, which
- * the runtime reads to marshal calls and values by their IDL types; declarations of included files
- * (OpenRTM's BasicDataType.idl, …) are taken from the modules that already exist (RTC).
+ * are omniORBpy's (`IDL:SimpleService/MyService:1.0`, `IDL:acme.com/Mod/I:1.0` after
+ * `#pragma prefix "acme.com"`). The stub file carries the IDL text, which the runtime reads to
+ * marshal calls and values by their IDL types; declarations of included files are taken from the
+ * modules that already exist (OpenRTM's BasicDataType.idl, … from RTC), and those of included files
+ * of the IDL file's own folder from their stub modules, which it imports (as omniidl's do).
  *
  * \code
  * IdlParser parser;
@@ -39,8 +41,8 @@ public:
      */
     QMap<QString, QString> write(const QStringList &paths, const QStringList &texts) const;
 
-    /// `IDL:Mod/Name:1.0` for the scoped name `Mod::Name`.
-    static QString repositoryId(const QString &scopedName);
+    /// `IDL:Mod/Name:1.0` for the scoped name `Mod::Name` (with its file's `#pragma prefix`, if any).
+    QString repositoryId(const QString &scopedName) const;
 
 private:
     QString stubFile(const QString &path, const QString &text, QStringList *modules) const;

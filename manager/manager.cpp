@@ -442,31 +442,40 @@ std::optional<ComponentFactory> Manager::factoryFor(const CreateRequest &request
 bool Manager::readConfigFiles(Properties *properties, const std::string &instance, const std::string &requestedFile,
                               std::string *error)
 {
-    // OpenRTM's per-component configuration files: rtc.conf's `<category>.<type>.config_file`,
-    // then `<category>.<instance>.config_file`, then the request's own `config_file`.
+    // OpenRTM's per-component settings: for the type, then for the instance, rtc.conf's
+    // `<category>.<name>.config_file` and then rtc.conf's own `<category>.<name>.*` keys
+    // (`example.Throughput_py.conf.default.maxsize: 300`); last the request's own `config_file`.
     const Properties config = configuration();
     const std::string category = properties->value("category");
-    const std::pair<std::string, bool> files[] = {
-        {config.value(category + '.' + properties->value("type_name") + ".config_file"), false},
-        {config.value(category + '.' + instance + ".config_file"), false},
-        {requestedFile, true}};
-    for (const auto &[file, requested] : files) {
-        if (file.empty())
-            continue;
-        std::ifstream in(file);
-        if (!in && requested) {
-            *error = "create_component: cannot read config_file '" + file + "'";
+    for (const std::string &name : {properties->value("type_name"), instance}) {
+        const std::string prefix = category + '.' + name;
+        if (!mergeConfigFile(properties, instance, config.value(prefix + ".config_file"), false, error))
             return false;
-        }
-        if (!in) {
-            // As in OpenRTM-aist, a file named in rtc.conf that is not there only costs its settings.
-            std::cerr << programName() << ": " << instance << ": cannot read config_file '" << file << "'" << std::endl;
-            continue;
-        }
-        std::stringstream text;
-        text << in.rdbuf();
-        properties->merge(Properties::parseConf(text.str()));
+        Properties keys = config.subtree(prefix);
+        keys.remove("config_file");
+        properties->merge(keys);
     }
+    return mergeConfigFile(properties, instance, requestedFile, true, error);
+}
+
+bool Manager::mergeConfigFile(Properties *properties, const std::string &instance, const std::string &file,
+                              bool requested, std::string *error)
+{
+    if (file.empty())
+        return true;
+    std::ifstream in(file);
+    if (!in && requested) {
+        *error = "create_component: cannot read config_file '" + file + "'";
+        return false;
+    }
+    if (!in) {
+        // As in OpenRTM-aist, a file named in rtc.conf that is not there only costs its settings.
+        std::cerr << programName() << ": " << instance << ": cannot read config_file '" << file << "'" << std::endl;
+        return true;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    properties->merge(Properties::parseConf(text.str()));
     return true;
 }
 
@@ -570,7 +579,7 @@ RTC::RTObject_ptr Manager::initializeComponent(Component *record, const Properti
              error);
         return RTC::RTObject::_nil();
     }
-    record->servant->setExitHandler([this](RtObject *servant) { forget(servant); });
+    record->servant->setExitHandler([this](RtObject *servant) { componentExited(servant); });
     registerNames(*record);
     if (m_hooks.postCreate)
         m_hooks.postCreate(record->servant);
@@ -594,6 +603,15 @@ void Manager::registerNames(Component &component)
         std::cerr << programName() << ": " << message << std::endl;
     if (m_hooks.postNaming)
         m_hooks.postNaming(component.servant, component.names, true);
+}
+
+void Manager::componentExited(RtObject *servant)
+{
+    forget(servant);
+    // OpenRTM's manager.shutdown_on_nortcs also holds when the last component exits by itself
+    // (rtctl exit, or a component calling exit(), as OpenRTM-aist's Throughput example does).
+    if (m_config.isYes("manager.shutdown_on_nortcs") && components().length() == 0)
+        shutdown();
 }
 
 void Manager::forget(RtObject *servant)
@@ -643,7 +661,7 @@ bool Manager::adoptComponent(RtObject *servant, std::string *error)
         // the manager made.
         m_components.push_back(std::move(component));
     }
-    servant->setExitHandler([this](RtObject *s) { forget(s); });
+    servant->setExitHandler([this](RtObject *s) { componentExited(s); });
     registerNames(*record);
     return true;
 }

@@ -253,9 +253,16 @@ private:
     std::vector<std::string> installedModuleDirs(const std::string &version) const;
     bool readConfigFiles(Properties *properties, const std::string &instance, const std::string &requestedFile,
                          std::string *error);
+    /// Merges the configuration file @p file (none when empty) into @p properties; one that cannot
+    /// be read is an error when @p requested, else only reported.
+    bool mergeConfigFile(Properties *properties, const std::string &instance, const std::string &file, bool requested,
+                         std::string *error);
     /// Holds @p requested (or the first free `<type>N`) for a creation in progress; empty with @p error when taken.
     std::string reserveInstanceName(const std::string &requested, const std::string &typeName, std::string *error);
     void forget(RtObject *component);
+    /// A component's exit: forgets it, and shuts down when it was the last one and
+    /// manager.shutdown_on_nortcs says so.
+    void componentExited(RtObject *component);
     void registerNames(Component &component);
     void cleanup();
 

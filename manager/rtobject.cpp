@@ -385,6 +385,15 @@ RTC::ReturnCode_t RtObject::exit()
             // A context that went away no longer holds us.
         }
     }
+    // As OpenRTM-aist's exit(), the component leaves the Active state in its own contexts too before
+    // they stop: onDeactivated runs (and closes what onActivated opened). Refused where it is not active.
+    for (ExecutionContext *context : ownedContexts()) {
+        try {
+            context->deactivate_component(self);
+        } catch (const CORBA::Exception &) {
+            // A context that is going away already.
+        }
+    }
     shutdownComponent();
     std::function<void(RtObject *)> handler;
     {

@@ -223,6 +223,9 @@ def _register_modules():
             continue
         module = types.ModuleType(name, "IDL module %s" % name)
         module.__dict__.update(namespace)
+        # Its interfaces, to _narrow() references to (OpenRTM.ExtTrigExecutionContextService, …).
+        import _rtstudio_interfaces
+        _rtstudio_interfaces.populate(module.__dict__, name)
         sys.modules[name] = module
 
 

@@ -43,6 +43,11 @@ _REFERENCES = {
 
 
 def populate(namespace, module_name):
-    """Adds the interfaces of module_name that the runtime's references stand for, unless defined."""
+    """Adds the interfaces of module_name that the runtime's references stand for, and the other
+    interfaces its IDL declares (to _narrow() references to, which then call their operations by
+    name), unless defined."""
+    import _rtstudio
     for name in _REFERENCES.get(module_name, []):
         namespace.setdefault(name, Interface("IDL:omg.org/%s/%s:1.0" % (module_name, name)))
+    for name, repository_id in _rtstudio.interface_ids(module_name).items():
+        namespace.setdefault(name, Interface(repository_id))

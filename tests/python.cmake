@@ -69,6 +69,7 @@ if(TARGET rtpymodules)
         LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
     target_compile_definitions(tst_pythonexamples PRIVATE
         RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+        RTCTL_PATH="$<TARGET_FILE:rtctl>"
         RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
         RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
         RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")

@@ -51,9 +51,8 @@ const char userCode[] = R"(    def onExecute(self, ec_id):
 const char generatedExecute[] = "    def onExecute(self, ec_id):\n        return RTC.RTC_OK\n";
 
 /// The Builder's data types that Python cannot carry yet, and why (the CDR conversion by IDL type
-/// knows no any or TypeCode: their values carry a TypeCode, which it does not read or write).
+/// knows no TypeCode values, only the TypeCodes of the basic types and strings an any holds).
 const QHash<QString, QString> unsupportedTypes{
-    {"SDOPackage::NameValue", "holds an any"},
     {"SDOPackage::Parameter", "holds a TypeCode"},
 };
 

@@ -8,21 +8,31 @@
 //   members of the SDK's PeriodicECSharedComposite, fed and read by rtmanager's built-ins through
 //   the composite's exported ports;
 // - ExtTrigger: ConsoleIn and ConsoleOut on ExtTrigExecutionContexts, each stepping once per tick
-//   the test sends (the example's Connector.py, which needs omniORBpy, does the same);
+//   the test sends, and driven as the example's Connector.py drives them, through the ORB from
+//   Python: the example's Connector.py itself on a simulated host of its own, whose localhost has the
+//   default name server it asks, and data/python/PyConnector.py, its calls against the test's;
+// - AutoControl: the velocities it answers to range samples, read with rtctl print;
+// - Throughput: its own OutPort feeding its InPort, the measurements file it writes per size, its
+//   exit() at the end taking the program with it;
+// - StaticFsm: Inputbutton's commands driving Microwave's static state machine through event
+//   ports;
 // and the same abilities through components of ours (data/python) that need no corpus: a component
 // with two configuration sets and every configuration listener; a Python module's component as
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
 // leaves the master serving; wide characters, unions and object references in samples
-// (data/python/widechars.py, unions.py, references.py).
+// (data/python/widechars.py, unions.py, references.py), static FSMs (staticfsm.py), anys and
+// NVLists (anys.py), and values straight to CDR and back as through the converter (directcdr.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
+#include "simulatedhosts.h"
 
 #include <Manager.hh>
 #include <OpenRTM.hh>
 
 #include <csignal>
 
+#include <QStandardPaths>
 #include <QtTest>
 
 namespace {
@@ -46,9 +56,14 @@ private slots:
     void configurationSetsAndListeners();
     void compositeRunsUnchanged();
     void pythonMemberOfCompositeInManager();
+    void connectorDrivesExtTriggerThroughTheOrb();
+    void connectorRunsUnchangedOnAHostOfItsOwn();
     void extTriggerStepsOnlyWhenTicked();
     void componentTicksItsOwnContext();
     void pythonComponentInSlaveOfItsOwn();
+    void autoControlRunsUnchanged();
+    void throughputRunsUnchanged();
+    void staticFsmRunsUnchanged();
     void dataTypesConvert_data();
     void dataTypesConvert();
 
@@ -68,6 +83,8 @@ private:
     qint64 slavePid(const QString &name) const;
     /// Ticks the ExtTrigExecutionContext @p component owns, as OpenRTM's Connector.py does.
     bool tick(const QString &component) const;
+    /// `rtctl @p arguments` left running in the host's context (stopped with the test's processes).
+    QProcess *startRtctl(const QStringList &arguments);
 
     QTemporaryDir m_work;
     LiveTest::LiveSystem m_live;
@@ -107,6 +124,18 @@ bool TestPythonExamples::tick(const QString &component) const
         qWarning() << "tick" << component << error._name();
         return false;
     }
+}
+
+QProcess *TestPythonExamples::startRtctl(const QStringList &arguments)
+{
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("RTCSH_CWD"), QStringLiteral("/%1/%2.host_cxt").arg(m_live.namingServer(), hostName));
+    environment.insert(QStringLiteral("RTCTREE_NAMESERVERS"), QString());
+    QString error;
+    QProcess *process = m_live.startProcess(QStringLiteral(RTCTL_PATH), arguments, QString(), &error, runTimeoutMs, environment);
+    if (!process)
+        qWarning().noquote() << error;
+    return process;
 }
 
 qint64 TestPythonExamples::slavePid(const QString &name) const
@@ -283,6 +312,109 @@ void TestPythonExamples::pythonMemberOfCompositeInManager()
         QVERIFY(rtctlSucceeds({"deact", component}));
 }
 
+void TestPythonExamples::connectorDrivesExtTriggerThroughTheOrb()
+{
+    const QString in = example(QStringLiteral("ExtTrigger/ConsoleIn.py"));
+    if (in.isEmpty())
+        QSKIP(NoPythonCorpus);
+    const QStringList conf{QStringLiteral("exec_cxt.periodic.type: ExtTrigExecutionContext"),
+                           QStringLiteral("exec_cxt.periodic.rate: 1000")};
+    QProcess *out = m_scripts.start(example(QStringLiteral("ExtTrigger/ConsoleOut.py")), {QStringLiteral("ConsoleOut0.rtc")},
+                                    runTimeoutMs, conf);
+    QVERIFY(out);
+    QProcess *source = m_scripts.start(in, {QStringLiteral("ConsoleIn0.rtc")}, runTimeoutMs, conf);
+    QVERIFY(source);
+    source->write("41\n42\n");
+    // Names resolved, ports found, disconnected, connected and components activated through their
+    // references; contexts narrowed to OpenRTM.ExtTrigExecutionContextService and ticked.
+    QString error;
+    QProcess *connector = m_live.startProcess(
+        QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+        {LiveTest::pythonTestScript(QStringLiteral("PyConnector.py")), m_live.namingServer(),
+         hostName + QStringLiteral(".host_cxt/"), QStringLiteral("-f"), m_scripts.writeConf(QStringLiteral("connector"), {})},
+        QString(), &error, runTimeoutMs, m_scripts.environment());
+    QVERIFY2(connector, qPrintable(error));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(connector).contains(QLatin1String("connector: connect RTC_OK connector0 True\n")),
+                              qPrintable(printed(connector)), runTimeoutMs);
+    QVERIFY2(printed(connector).contains(QLatin1String("connector: ConsoleIn0.rtc activated RTC_OK\n"))
+                 && printed(connector).contains(QLatin1String("connector: ConsoleOut0.rtc activated RTC_OK\n")),
+             qPrintable(printed(connector)));
+    QCOMPARE(m_host.state(QStringLiteral("ConsoleIn0.rtc")), QStringLiteral("Active"));
+    // Activating ran one cycle of each; ticking ConsoleIn sends the next number, ticking ConsoleOut
+    // takes it.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  41\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("0\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  42\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("1\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(out).contains(QLatin1String("Received:  42\n")), qPrintable(printed(out)),
+                              runTimeoutMs);
+    connector->write("q\n");
+    QVERIFY(LiveTest::waitForExit(connector, runTimeoutMs));
+    // Their names go with them, for the next test's programs of the same names.
+    QVERIFY(rtctlSucceeds({"exit", "ConsoleIn0.rtc", "ConsoleOut0.rtc"}));
+    m_live.stop(source);
+    m_live.stop(out);
+}
+
+void TestPythonExamples::connectorRunsUnchangedOnAHostOfItsOwn()
+{
+    const QString connectorScript = example(QStringLiteral("ExtTrigger/Connector.py"));
+    if (connectorScript.isEmpty())
+        QSKIP(NoPythonCorpus);
+    // Connector.py asks localhost's default name server (port 2809): a host of its own has one.
+    LiveTest::SimulatedHosts hosts;
+    QString error;
+    if (!hosts.create({QStringLiteral("pyexthost")}, &error))
+        QSKIP(qPrintable(QStringLiteral("cannot simulate a host: ") + error));
+    const QString address = hosts.address(QStringLiteral("pyexthost"));
+    LiveTest::LiveSystem host(hosts.liveHost(QStringLiteral("pyexthost")));
+    QTemporaryDir names;
+    QProcess *nameServer = host.startProcess(
+        QStandardPaths::findExecutable(QStringLiteral("omniNames")),
+        {QStringLiteral("-start"), QStringLiteral("2809"), QStringLiteral("-datadir"), names.path(), QStringLiteral("-logdir"),
+         names.path(), QStringLiteral("-ORBendPoint"), QStringLiteral("giop:tcp:127.0.0.1:2809"),
+         QStringLiteral("-ORBendPoint"), QStringLiteral("giop:tcp:%1:2809").arg(address)},
+        QString(), &error, runTimeoutMs);
+    QVERIFY2(nameServer, qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::isListening(address, 2809), runTimeoutMs);
+    // The example's rtc.conf: the default name server, names at its root, ExtTrigExecutionContexts.
+    QFile conf(m_work.filePath(QStringLiteral("exttrigger.conf")));
+    QVERIFY(conf.open(QIODevice::WriteOnly | QIODevice::Text));
+    conf.write("corba.nameservers: localhost\nnaming.formats: %n.rtc\nlogger.enable: NO\n"
+               "exec_cxt.periodic.type: ExtTrigExecutionContext\nexec_cxt.periodic.rate: 1000\n");
+    conf.close();
+    const auto startExample = [&](const QString &file) {
+        return host.startProcess(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {example(file), QStringLiteral("-f"), conf.fileName()},
+                                 QString(), &error, runTimeoutMs, m_scripts.environment());
+    };
+    QProcess *out = startExample(QStringLiteral("ExtTrigger/ConsoleOut.py"));
+    QVERIFY2(out, qPrintable(error));
+    QProcess *source = startExample(QStringLiteral("ExtTrigger/ConsoleIn.py"));
+    QVERIFY2(source, qPrintable(error));
+    source->write("51\n52\n");
+    const auto listed = [&] { return runRtctlAt(QStringLiteral("/%1:2809").arg(address), {QStringLiteral("ls")}).out; };
+    QTRY_VERIFY2_WITH_TIMEOUT(listed().contains(QLatin1String("ConsoleIn0.rtc")) && listed().contains(QLatin1String("ConsoleOut0.rtc")),
+                              qPrintable(listed()), runTimeoutMs);
+    QProcess *connector = startExample(QStringLiteral("ExtTrigger/Connector.py"));
+    QVERIFY2(connector, qPrintable(error));
+    // It activates both (one cycle each) and connects them, then ticks on its commands.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(connector).contains(QLatin1String("cmd? >")), qPrintable(printed(connector)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  51\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("0\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(source).contains(QLatin1String("Sending to subscriber:  52\n")),
+                              qPrintable(printed(source)), runTimeoutMs);
+    connector->write("1\n");
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(out).contains(QLatin1String("Received:  52\n")), qPrintable(printed(out)), runTimeoutMs);
+    QVERIFY2(!printed(connector).contains(QLatin1String("Exception.")), qPrintable(printed(connector)));
+    connector->write("q\n");
+    QVERIFY(LiveTest::waitForExit(connector, runTimeoutMs));
+    host.stop(source);
+    host.stop(out);
+}
+
 void TestPythonExamples::extTriggerStepsOnlyWhenTicked()
 {
     const QString in = example(QStringLiteral("ExtTrigger/ConsoleIn.py"));
@@ -370,6 +502,122 @@ void TestPythonExamples::pythonComponentInSlaveOfItsOwn()
     QVERIFY(rtctlSucceeds({"deact", "SlaveFeed.rtc"}));
 }
 
+void TestPythonExamples::autoControlRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("AutoControl/AutoControl.py"));
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    QProcess *control = m_scripts.start(script, {QStringLiteral("AutoControl0.rtc")}, runTimeoutMs);
+    QVERIFY(control);
+    QVERIFY(rtctlSucceeds({"act", "AutoControl0.rtc"}));
+    QProcess *print = startRtctl({"print", "-n", "4", "AutoControl0.rtc:vel"});
+    QVERIFY(print);
+    // Range samples until the printer has its four: an obstacle at 20 (within distance_to_env, 40)
+    // turns on the spot, one at 50 goes straight at velocity 80.
+    const auto printed4 = [&] {
+        if (print->state() == QProcess::NotRunning)
+            return true;
+        m_host.run({"inject", "AutoControl0.rtc:sens", "[10,10,10,20]", "[10,10,10,50]"});
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(printed4(), runTimeoutMs);
+    const QString velocities = printed(print);
+    QVERIFY2(velocities.contains(QLatin1String("data=[80, -80]")), qPrintable(velocities));
+    QVERIFY2(velocities.contains(QLatin1String("data=[80, 80]")), qPrintable(velocities));
+    QVERIFY(rtctlSucceeds({"deact", "AutoControl0.rtc"}));
+    m_live.stop(control);
+}
+
+void TestPythonExamples::throughputRunsUnchanged()
+{
+    const QString script = example(QStringLiteral("Throughput/Throughput_py.py"));
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    // It writes its measurements into the working folder; the example's rtc.conf settings, with
+    // sizes up to 300 floats, five samples each, and little pause.
+    const QString folder = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(m_work.path()));
+    QProcess *throughput = m_scripts.start(script, {QStringLiteral("Throughput_py0.rtc")}, runTimeoutMs,
+        {QStringLiteral("example.Throughput_py.conf.default.datatype: float"),
+         QStringLiteral("example.Throughput_py.conf.default.filesuffix: -samecomp"),
+         QStringLiteral("example.Throughput_py.conf.default.maxsize: 300"),
+         QStringLiteral("example.Throughput_py.conf.default.maxsample: 5"),
+         QStringLiteral("example.Throughput_py.conf.default.sleep_time: 0.01"),
+         // OpenRTM-aist's default: the program ends with its last component.
+         QStringLiteral("manager.shutdown_on_nortcs: YES")});
+    QVERIFY(QDir::setCurrent(folder));
+    QVERIFY(throughput);
+    // Its rtc.conf's preconnect: its OutPort to its InPort (OpenRTM's default subscription, flush).
+    QVERIFY(rtctlSucceeds({"con", "Throughput_py0.rtc:out", "Throughput_py0.rtc:in", "-p",
+                           "dataport.interface_type=corba_cdr", "-p", "dataport.subscription_type=flush"}));
+    QVERIFY(rtctlSucceeds({"act", "Throughput_py0.rtc"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(throughput).contains(QLatin1String("Exiting\n")), qPrintable(printed(throughput).right(2000)),
+                              runTimeoutMs);
+    // The connector's profile that its listener printed, and a line per size sent (1, 2, 5, …, 100).
+    QVERIFY2(printed(throughput).contains(QLatin1String("Profile::name:        out_in\n")), qPrintable(printed(throughput).left(2000)));
+    QFile measurements(m_work.filePath(QStringLiteral("float-corba_cdr-samecomp.dat")));
+    QTRY_VERIFY_WITH_TIMEOUT(measurements.exists(), runTimeoutMs);
+    const auto sizes = [&measurements] {
+        QList<int> found;
+        if (!measurements.open(QIODevice::ReadOnly | QIODevice::Text))
+            return found;
+        for (const QByteArray &line : measurements.readAll().split('\n')) {
+            const QList<QByteArray> fields = line.split('\t');
+            if (fields.size() == 6 && !line.startsWith('#') && fields.first() != "size[byte]")
+                found.append(fields.first().toInt());
+        }
+        measurements.close();
+        return found;
+    };
+    // After the last size (200; 500 is past maxsize) it sends one element, which makes the receiving
+    // side write that size's line and exit() the component from a thread of its own: the program ends.
+    QVERIFY(LiveTest::waitForExit(throughput, runTimeoutMs));
+    QVERIFY(measurements.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QByteArray text = measurements.readAll();
+    measurements.close();
+    QVERIFY2(sizes() == (QList<int>{1, 2, 5, 10, 20, 50, 100, 200}), text.constData());
+    QVERIFY2(text.contains("# - interface_type: corba_cdr\n") && text.contains("# - data_type: IDL:RTC/TimedFloatSeq:1.0\n"),
+             text.constData());
+}
+
+void TestPythonExamples::staticFsmRunsUnchanged()
+{
+    // (Its Microwave_pyfsm.py names a module it does not import, MicrowaveFsm: it cannot run anywhere.)
+    const QString script = example(QStringLiteral("StaticFsm/Microwave.py"));
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    QProcess *oven = m_scripts.start(script, {QStringLiteral("Microwave0.rtc")}, runTimeoutMs);
+    QVERIFY(oven);
+    QProcess *buttons = m_scripts.start(example(QStringLiteral("StaticFsm/Inputbutton.py")), {QStringLiteral("Inputbutton0.rtc")},
+                                        runTimeoutMs);
+    QVERIFY(buttons);
+    // The example's rtc.conf: each button's OutPort to the event port, named by fsm_event_name.
+    for (const char *event : {"open", "close", "minute", "start", "stop", "tick"})
+        QVERIFY(rtctlSucceeds({"con", QStringLiteral("Inputbutton0.rtc:") + event, "Microwave0.rtc:event", "-p",
+                               QStringLiteral("fsm_event_name=") + event}));
+    QVERIFY(rtctlSucceeds({"act", "Microwave0.rtc", "Inputbutton0.rtc"}));
+    buttons->write("minute 3\nstart\ntick\nopen\nclose\ntick\ntick\n");
+    // What the states print as the machine goes through them: the door opened while cooking and
+    // closed again goes back to cooking (Operational's deep history).
+    const QStringList steps{QStringLiteral("  Microwave ready"), QStringLiteral(" Timer set to  3  minutes"),
+                            QStringLiteral("  Heating on"), QStringLiteral("  Clock tick"),
+                            QStringLiteral(" Timer set to  2  minutes"), QStringLiteral("  Heating off"),
+                            QStringLiteral("  Microwave opened"), QStringLiteral("  Microwave closed"),
+                            QStringLiteral("  Heating on"), QStringLiteral("  Clock tick"),
+                            QStringLiteral(" Timer set to  1  minutes"), QStringLiteral("  Clock tick"),
+                            QStringLiteral("  Finished"), QStringLiteral("  Heating off"),
+                            QStringLiteral("  Microwave ready")};
+    const auto lines = [&] {
+        QStringList found = printed(oven).split(QLatin1Char('\n'));
+        found.removeIf([&steps](const QString &line) { return !steps.contains(line); });
+        return found;
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(lines(), steps, runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"deact", "Inputbutton0.rtc", "Microwave0.rtc"}));
+    m_live.stop(buttons);
+    m_live.stop(oven);
+}
+
 void TestPythonExamples::dataTypesConvert_data()
 {
     QTest::addColumn<QString>("script");
@@ -377,6 +625,9 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("unions") << QStringLiteral("unions");
     QTest::newRow("object references") << QStringLiteral("references");
     QTest::newRow("ring buffer") << QStringLiteral("ringbuffer");
+    QTest::newRow("static FSM") << QStringLiteral("staticfsm");
+    QTest::newRow("anys and NVLists") << QStringLiteral("anys");
+    QTest::newRow("straight to CDR") << QStringLiteral("directcdr");
 }
 
 void TestPythonExamples::dataTypesConvert()

@@ -7,6 +7,11 @@
 // - bad IDL is reported with its file and line;
 // - a Python provider and consumer of ours exchange results, out/inout values, sequences,
 //   attributes and a user exception; an undeclared exception in a servant comes back as UNKNOWN;
+// - stubs of IDL including IDL of its own folder (Canvas.idl, Shapes.idl) under `#pragma prefix`
+//   call across processes, a base interface's user exception coming back under its prefixed id;
+// - wide characters, unions, object references and any as parameters and results (Kinds.idl): a
+//   servant's _this() passed to the provider, which calls it back, the ORB's string_to_object; and
+//   the same both ways with a C++ component of ours built against the SDK (data/sdkkinds);
 // - OpenRTM-aist-Python's SimpleService example unchanged (shared corpus; skipped with the reason
 //   when absent): its consumer's commands reach its provider and the answers come back;
 // - a Python component of ours calls rtmanager's C++ MyServiceProvider built-in and OpenRTM-aist's
@@ -53,6 +58,9 @@ private slots:
     void stubsOfEveryConstructImportAndConvert();
     void badIdlIsReportedWithItsLine();
     void pythonProviderAndConsumerExchangeCalls();
+    void stubsOfIncludingIdlWithPrefixesCall();
+    void callsCarryEveryParameterKind();
+    void everyParameterKindToAndFromCxx();
     void pythonAndCxxComponentsCallEachOther();
     void pythonComponentAndSdkExamplesCallEachOther();
     void simpleServiceExamplesRunUnchanged();
@@ -237,6 +245,133 @@ void TestPythonService::pythonProviderAndConsumerExchangeCalls()
     QVERIFY(endComponents(
         {QStringLiteral("PyCalcConsumer0.rtc"), QStringLiteral("PyCalcProvider0.rtc")}));
     m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+void TestPythonService::stubsOfIncludingIdlWithPrefixesCall()
+{
+    // Canvas.idl includes Shapes.idl of its folder, whose type ids have a #pragma prefix.
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Canvas.idl")), dataFile(QStringLiteral("Shapes.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QProcess *provider = startScript(dataFile(QStringLiteral("PyPainterProvider.py")), stubs,
+                                     QStringLiteral("PyPainterProvider0.rtc"));
+    QVERIFY(provider);
+    QProcess *consumer = startScript(dataFile(QStringLiteral("PyPainterConsumer.py")), stubs,
+                                     QStringLiteral("PyPainterConsumer0.rtc"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds({"con", "PyPainterConsumer0.rtc:Paint", "PyPainterProvider0.rtc:Paint"}));
+    for (const char *component : {"PyPainterProvider0.rtc", "PyPainterConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
+                              qPrintable(printed(consumer) + printed(provider)), runTimeoutMs);
+    const QString out = printed(consumer);
+    // A user exception of the base interface crosses under its prefixed id, raised as its class.
+    for (const char *line : {"consumer: ids IDL:example.org/PyShapes/Circle:1.0 IDL:PyCanvas/Scene:1.0\n",
+                             "consumer: total 15.7080\n", "consumer: Degenerate radius 0\n"})
+        QVERIFY2(out.contains(QLatin1String(line)), qPrintable(QLatin1String(line) + out));
+    QVERIFY2(printed(provider).contains(QLatin1String("provider: total of two circles")), qPrintable(printed(provider)));
+    QVERIFY(endComponents({QStringLiteral("PyPainterConsumer0.rtc"), QStringLiteral("PyPainterProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+void TestPythonService::callsCarryEveryParameterKind()
+{
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Kinds.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    QProcess *provider = startScript(dataFile(QStringLiteral("PyKindsProvider.py")), stubs,
+                                     QStringLiteral("PyKindsProvider0.rtc"));
+    QVERIFY(provider);
+    QProcess *consumer = startScript(dataFile(QStringLiteral("PyKindsConsumer.py")), stubs,
+                                     QStringLiteral("PyKindsConsumer0.rtc"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds({"con", "PyKindsConsumer0.rtc:Echo", "PyKindsProvider0.rtc:Echo"}));
+    for (const char *component : {"PyKindsProvider0.rtc", "PyKindsConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
+                              qPrintable(printed(consumer) + printed(provider)), runTimeoutMs);
+    const QString out = printed(consumer);
+    // Wide characters and strings, a union in and inout, anys of a double, a string and an unsigned
+    // short in, out and as the result, references in, out and as the result: the
+    // consumer's own servant (_this()) reaches the provider, which calls it back, and comes back
+    // callable; the provider's own reference too; the ORB's string_to_object of an IOR.
+    for (const QString &line : {QStringLiteral("consumer: letter ('\u00c9', '\u00e9\u00e9\u00e9')\n"),
+                                QStringLiteral("consumer: reversed \u4e16 oll\u00e9h\n"),
+                                QStringLiteral("consumer: swap (PyKinds.Pick(2, 't'), PyKinds.Pick(1, 5))\n"),
+                                QStringLiteral("consumer: wrap True double 2.5\n"),
+                                QStringLiteral("consumer: wrap True string 'corba_cdr'\n"),
+                                QStringLiteral("consumer: wrap True unsigned short 7\n"),
+                                QStringLiteral("consumer: string_to_object _objref_Echo 42\n"),
+                                QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
+                                QStringLiteral("consumer: relay nil None\n")})
+        QVERIFY2(out.contains(line), qPrintable(line + out));
+    QVERIFY2(printed(provider).contains(QLatin1String("provider: relay of a reference that answers calls() 42\n")),
+             qPrintable(printed(provider)));
+    QVERIFY(endComponents({QStringLiteral("PyKindsConsumer0.rtc"), QStringLiteral("PyKindsProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(provider);
+}
+
+void TestPythonService::everyParameterKindToAndFromCxx()
+{
+    // CxxKinds (data/sdkkinds), a C++ component of ours built against the SDK: it provides Echo to
+    // PyKindsConsumer and calls PyKindsProvider's.
+    const QString dir = m_work.filePath(QStringLiteral("sdk/CxxKinds"));
+    QVERIFY(SdkTest::copyTree(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdkkinds"), dir));
+    QString log;
+    QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log,
+                                   {QStringLiteral("-DKINDS_IDL=") + dataFile(QStringLiteral("Kinds.idl"))}),
+             qPrintable(log.right(4000)));
+    const QString stubs = compileIdl({dataFile(QStringLiteral("Kinds.idl"))});
+    QVERIFY(!stubs.isEmpty());
+    // (The previous test's Python components have gone from the name server with their processes.)
+    QTRY_VERIFY_WITH_TIMEOUT(!rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyKinds")), runTimeoutMs);
+    QString error;
+    QProcess *cxx = m_live.startRegistered(
+        dir + QStringLiteral("/build/CxxKindsComp"), {QStringLiteral("-f"), writeConf(QStringLiteral("cxxkinds"))},
+        [this] { return rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("CxxKinds0.rtc")); }, &error,
+        runTimeoutMs);
+    QVERIFY2(cxx, qPrintable(error));
+    QProcess *provider = startScript(dataFile(QStringLiteral("PyKindsProvider.py")), stubs,
+                                     QStringLiteral("PyKindsProvider0.rtc"));
+    QVERIFY(provider);
+    QProcess *consumer = startScript(dataFile(QStringLiteral("PyKindsConsumer.py")), stubs,
+                                     QStringLiteral("PyKindsConsumer0.rtc"));
+    QVERIFY(consumer);
+    QVERIFY(rtctlSucceeds({"con", "PyKindsConsumer0.rtc:Echo", "CxxKinds0.rtc:Provided"}));
+    QVERIFY(rtctlSucceeds({"con", "CxxKinds0.rtc:Required", "PyKindsProvider0.rtc:Echo"}));
+    for (const char *component : {"PyKindsProvider0.rtc", "CxxKinds0.rtc", "PyKindsConsumer0.rtc"})
+        QVERIFY(rtctlSucceeds({"act", component}));
+    // C++ consumer → Python provider: what the Python servant answered, and its call back of the
+    // C++ servant whose reference it was given.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(cxx).contains(QLatin1String("cxx consumer: done")),
+                              qPrintable(printed(cxx) + printed(provider)), runTimeoutMs);
+    for (const QString &line : {QStringLiteral("cxx consumer: letter \u00c9 \u00e9\u00e9\u00e9\n"),
+                                QStringLiteral("cxx consumer: reversed \u4e16 oll\u00e9h\n"),
+                                QStringLiteral("cxx consumer: swap text t, number 5\n"),
+                                QStringLiteral("cxx consumer: wrap -12 long -12\n"),
+                                QStringLiteral("cxx consumer: relay 7 True\n")})
+        QVERIFY2(printed(cxx).contains(line), qPrintable(line + printed(cxx)));
+    QVERIFY2(printed(provider).contains(QLatin1String("provider: relay of a reference that answers calls() 7\n")),
+             qPrintable(printed(provider)));
+    // Python consumer → C++ provider.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
+                              qPrintable(printed(consumer) + printed(cxx)), runTimeoutMs);
+    for (const QString &line : {QStringLiteral("consumer: letter ('\u00c9', '\u00e9\u00e9\u00e9')\n"),
+                                QStringLiteral("consumer: reversed \u4e16 oll\u00e9h\n"),
+                                QStringLiteral("consumer: swap (PyKinds.Pick(2, 't'), PyKinds.Pick(1, 5))\n"),
+                                QStringLiteral("consumer: wrap True double 2.500000\n"),
+                                QStringLiteral("consumer: wrap True string corba_cdr\n"),
+                                QStringLiteral("consumer: wrap True unsigned short 7\n"),
+                                QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
+                                QStringLiteral("consumer: relay nil None\n")})
+        QVERIFY2(printed(consumer).contains(line), qPrintable(line + printed(consumer)));
+    QVERIFY2(printed(cxx).contains(QLatin1String("cxx provider: relay of a reference that answers calls() 42\n")),
+             qPrintable(printed(cxx)));
+    QVERIFY(endComponents({QStringLiteral("PyKindsConsumer0.rtc"), QStringLiteral("CxxKinds0.rtc"),
+                           QStringLiteral("PyKindsProvider0.rtc")}));
+    m_live.stop(consumer);
+    m_live.stop(cxx);
     m_live.stop(provider);
 }
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Codegen::PythonStubWriter, the Python back end of rtctl idl: which files it writes for which IDL
 // modules, omniORBpy's names and type ids, and that declarations of included files (OpenRTM's) are
-// left to the modules that have them. tst_pythonservice imports what it writes into python3.
+// left to the modules that have them; IDL including IDL of its own folder (its stub imports theirs)
+// and `#pragma prefix` in type ids, both ways between ids and scoped names. tst_pythonservice imports
+// what it writes into python3.
 #include "idlparser.h"
 #include "pythonstubwriter.h"
 
@@ -36,10 +38,17 @@ private slots:
     void usesOmniOrbPyNamesAndIds();
     void leavesIncludedDeclarationsOut();
     void carriesItsIdlText();
+    void importsStubsOfItsFolderIncludes();
+    void prefixesTypeIds_data();
+    void prefixesTypeIds();
+    void findsScopedNamesOfPrefixedIds();
 
 private:
     IdlParser m_parser;
     QMap<QString, QString> m_files;
+    /// Canvas.idl (which includes Shapes.idl of its folder) and Shapes.idl, compiled together.
+    IdlParser m_canvasParser;
+    QMap<QString, QString> m_canvasFiles;
 };
 
 void TestPythonStubWriter::initTestCase()
@@ -50,6 +59,11 @@ void TestPythonStubWriter::initTestCase()
     QVERIFY2(m_parser.parseFiles(paths), qPrintable(m_parser.diagnostics().value(0).toString()));
     m_files = PythonStubWriter(m_parser.model())
                   .write(paths, {readText(paths.at(0)), readText(paths.at(1))});
+
+    m_canvasParser.addSearchDirectory(QStringLiteral(RTSTUDIO_IDL_DIR));
+    const QStringList canvas{dataFile(QStringLiteral("Canvas.idl")), dataFile(QStringLiteral("Shapes.idl"))};
+    QVERIFY2(m_canvasParser.parseFiles(canvas), qPrintable(m_canvasParser.diagnostics().value(0).toString()));
+    m_canvasFiles = PythonStubWriter(m_canvasParser.model()).write(canvas, {readText(canvas.at(0)), readText(canvas.at(1))});
 }
 
 void TestPythonStubWriter::writesOmniOrbPyLayout()
@@ -130,6 +144,55 @@ void TestPythonStubWriter::carriesItsIdlText()
     QVERIFY(stub.contains(
         QLatin1String("omniORB.loadIdl(\"Scopes.idl\", \"// SPDX-License-Identifier: MIT\\n")));
     QVERIFY(stub.contains(QLatin1String("struct GPoint { long x; };\\n")));
+}
+
+void TestPythonStubWriter::importsStubsOfItsFolderIncludes()
+{
+    const QString stub = m_canvasFiles.value("Canvas_idl.py");
+    // Shapes_idl is imported before the runtime reads Canvas.idl, whose #include it answers.
+    const qsizetype imported = stub.indexOf(QLatin1String("\nimport Shapes_idl\n"));
+    QVERIFY2(imported > 0, qPrintable(stub));
+    QVERIFY(imported < stub.indexOf(QLatin1String("omniORB.loadIdl(\"Canvas.idl\"")));
+    QVERIFY(!stub.contains(QLatin1String("class Circle(")));
+    // The included file's modules, as omniidl opens them, for the base interface in another module.
+    QVERIFY2(stub.contains(QLatin1String("_0_PyShapes = omniORB.openModule(\"PyShapes\")\n")), qPrintable(stub));
+    QVERIFY(stub.contains(QLatin1String("class _objref_Painter(_0_PyShapes._objref_Drawer):")));
+    QVERIFY(m_canvasFiles.value("PyShapes/__init__.py").contains(QLatin1String("import Shapes_idl\n")));
+    QVERIFY(!m_canvasFiles.value("PyShapes/__init__.py").contains(QLatin1String("import Canvas_idl")));
+    // Includes from elsewhere (OpenRTM's IDL) stay with the modules that have them.
+    QVERIFY(!m_files.value("Calc_idl.py").contains(QLatin1String("import BasicDataType_idl")));
+    QVERIFY(!m_canvasFiles.value("Shapes_idl.py").contains(QLatin1String("import Canvas_idl")));
+}
+
+void TestPythonStubWriter::prefixesTypeIds_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QString>("text");
+    QTest::newRow("struct under a prefix") << "Shapes_idl.py" << "_NP_RepositoryId = \"IDL:example.org/PyShapes/Circle:1.0\"";
+    QTest::newRow("exception under a prefix")
+        << "Shapes_idl.py" << "_NP_RepositoryId = \"IDL:example.org/PyShapes/Degenerate:1.0\"";
+    QTest::newRow("interface under a prefix") << "Shapes_idl.py" << "\"IDL:example.org/PyShapes/Drawer:1.0\"";
+    // A prefix holds in its own file only.
+    QTest::newRow("including file without one") << "Canvas_idl.py" << "_NP_RepositoryId = \"IDL:PyCanvas/Scene:1.0\"";
+}
+
+void TestPythonStubWriter::prefixesTypeIds()
+{
+    QFETCH(QString, file);
+    QFETCH(QString, text);
+    QVERIFY2(m_canvasFiles.value(file).contains(text), qPrintable(m_canvasFiles.value(file)));
+}
+
+void TestPythonStubWriter::findsScopedNamesOfPrefixedIds()
+{
+    const IdlModel &model = m_canvasParser.model();
+    QCOMPARE(model.repositoryId("PyShapes::Drawer"), QStringLiteral("IDL:example.org/PyShapes/Drawer:1.0"));
+    QCOMPARE(model.scopedNameOf("IDL:example.org/PyShapes/Drawer:1.0"), QStringLiteral("PyShapes::Drawer"));
+    QCOMPARE(model.scopedNameOf("IDL:PyCanvas/Painter:1.0"), QStringLiteral("PyCanvas::Painter"));
+    // The id without its prefix is no id of this model.
+    QCOMPARE(model.scopedNameOf("IDL:PyShapes/Drawer:1.0"), QString());
+    QCOMPARE(model.scopedNameOf("IDL:example.org/PyShapes/Nothing:1.0"), QString());
+    QCOMPARE(model.repositoryId("RTC::Time"), QStringLiteral("IDL:RTC/Time:1.0"));
 }
 
 QTEST_GUILESS_MAIN(TestPythonStubWriter)

@@ -23,6 +23,21 @@ class DataFlowComponentBase(object):
         """The POA that turns the component into its reference (servant_to_reference)."""
         return POA()
 
+    # Methods a class names itself (Class.exit, as OpenRTM-aist-Python's Throughput example hands
+    # to Async_tInvoker), so they are methods of the class rather than reached through _rtc.
+    def exit(self):
+        """Finalizes the component and leaves its contexts; the manager then forgets it."""
+        return self._rtc.exit()
+
+    def activate(self, ec_id):
+        return self._rtc.activate(ec_id)
+
+    def deactivate(self, ec_id):
+        return self._rtc.deactivate(ec_id)
+
+    def reset(self, ec_id):
+        return self._rtc.reset(ec_id)
+
     def onInitialize(self):
         return RTC.RTC_OK
 

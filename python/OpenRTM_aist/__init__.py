@@ -9,17 +9,21 @@ import _rtstudio
 from _rtstudio import ConfigurationParamListenerType, ConfigurationSetListenerType, \
     ConfigurationSetNameListenerType, ConnectorDataListenerType, ConnectorInfo, ConnectorListenerType, InPort, \
     Manager, OutPort, Properties
-from OpenRTM_aist import BufferStatus, CORBA_SeqUtil
+from OpenRTM_aist import BufferStatus, CORBA_SeqUtil, NVUtil, StringUtil
+from OpenRTM_aist.StringUtil import eraseBlank, eraseBothEndsBlank, eraseHeadBlank, eraseTailBlank, normalize, \
+    split, stringTo, toBool
+from OpenRTM_aist.TimeValue import Time, TimeValue
 from OpenRTM_aist.Async import Async_tInvoker
 from OpenRTM_aist.ConfigurationListeners import ConfigurationParamListener, ConfigurationSetListener, \
     ConfigurationSetNameListener
 from OpenRTM_aist.CorbaConsumer import CorbaConsumer
+from OpenRTM_aist.CorbaNaming import CorbaNaming
 from OpenRTM_aist.CorbaPort import CorbaPort
 from OpenRTM_aist.DataFlowComponentBase import DataFlowComponentBase
 from OpenRTM_aist.POA import POA
 from OpenRTM_aist.RingBuffer import RingBuffer
 from OpenRTM_aist.Listeners import ConnectorDataListener, ConnectorDataListenerT, ConnectorListener, \
-    ConnectorListenerStatus
+    ConnectorListenerStatus, PortType
 
 
 # The manager activates every component on one POA of its own.

@@ -3,6 +3,7 @@
 _objref_ classes), is_nil, and the exceptions."""
 
 COMPLETED_YES, COMPLETED_NO, COMPLETED_MAYBE = 0, 1, 2
+TRUE, FALSE = True, False
 
 
 class Exception(Exception):  # noqa: A001 (CORBA.Exception, as omniORBpy names it)
@@ -76,7 +77,117 @@ class Object(object):
         import omniORB
         if not self._obj.is_a(interface._NP_RepositoryId):
             return None
-        return omniORB.objrefClass(interface._NP_RepositoryId)(self._obj)
+        return omniORB.objrefClass(interface._NP_RepositoryId, True)(self._obj)
+
+
+# TypeCodes of the values an Any carries here (basic types and strings), by the IDL type they name,
+# with CORBA's TCKind numbers.
+tk_null, tk_void, tk_short, tk_long, tk_ushort, tk_ulong, tk_float, tk_double, tk_boolean, tk_char, tk_octet, \
+    tk_any, tk_TypeCode = range(13)
+tk_objref, tk_string, tk_longlong, tk_ulonglong, tk_wchar, tk_wstring = 14, 18, 23, 24, 26, 27
+_KINDS = {"null": tk_null, "void": tk_void, "short": tk_short, "long": tk_long, "unsigned short": tk_ushort,
+          "unsigned long": tk_ulong, "float": tk_float, "double": tk_double, "boolean": tk_boolean, "char": tk_char,
+          "octet": tk_octet, "string": tk_string, "long long": tk_longlong, "unsigned long long": tk_ulonglong,
+          "wchar": tk_wchar, "wstring": tk_wstring, "Object": tk_objref}
+
+
+class TypeCode(object):
+    """The type of an Any's value, named by its IDL type ("long", "string", …)."""
+
+    def __init__(self, name):
+        if name not in _KINDS:
+            raise BAD_PARAM(0, COMPLETED_NO)
+        self._name = name
+
+    def kind(self):
+        return _KINDS[self._name]
+
+    def equal(self, other):
+        return isinstance(other, TypeCode) and other._name == self._name
+
+    __eq__ = equal
+
+    def __ne__(self, other):
+        return not self.equal(other)
+
+    def __hash__(self):
+        return hash(self._name)
+
+    def __repr__(self):
+        return "CORBA.TypeCode(%r)" % self._name
+
+
+TC_null, TC_void, TC_short, TC_long, TC_ushort, TC_ulong, TC_float, TC_double, TC_boolean, TC_char, TC_octet, \
+    TC_string, TC_longlong, TC_ulonglong, TC_wchar, TC_wstring, TC_Object = (
+        TypeCode(name) for name in ("null", "void", "short", "long", "unsigned short", "unsigned long", "float",
+                                    "double", "boolean", "char", "octet", "string", "long long",
+                                    "unsigned long long", "wchar", "wstring", "Object"))
+
+
+class Any(object):
+    """omniORBpy's CORBA.Any: a TypeCode and a value of its type."""
+
+    def __init__(self, typecode, value):
+        self._t = typecode
+        self._v = value
+
+    def typecode(self):
+        return self._t
+
+    def value(self):
+        return self._v
+
+    def __eq__(self, other):
+        return isinstance(other, Any) and self._t == other._t and self._v == other._v
+
+    def __ne__(self, other):
+        return not self == other
+
+    __hash__ = None
+
+    def __repr__(self):
+        return "CORBA.Any(%r, %r)" % (self._t, self._v)
+
+
+def _reference(ref):
+    """The object reference for the runtime's ref: None when nil, else of the generated _objref_
+    class of its type id when its stub module is imported (CORBA.Object otherwise), as omniORBpy's."""
+    if ref.is_nil():
+        return None
+    import _rtstudio
+    import omniORB
+    return omniORB.objrefClass(_rtstudio.ior_type_id(ref.ior()), True)(ref)
+
+
+class ORB(object):
+    """The process's ORB (the one its manager runs), as omniORBpy's CORBA.ORB."""
+
+    def string_to_object(self, text):
+        """The reference named by an IOR, corbaloc: or corbaname: text."""
+        import _rtstudio
+        return _reference(_rtstudio.string_to_object(text))
+
+    def object_to_string(self, obj):
+        return obj._obj.ior() if obj is not None else "IOR:01000000010000000000000000000000"
+
+    def resolve_initial_references(self, identifier):
+        """The reference of an initial service (NameService, RootPOA, …)."""
+        import _rtstudio
+        return _reference(_rtstudio.resolve_initial_references(identifier))
+
+    def shutdown(self, wait_for_completion=True):
+        """The manager owns the ORB and shuts it down with itself."""
+
+    def destroy(self):
+        """The manager owns the ORB and destroys it with itself."""
+
+
+_orb = ORB()
+
+
+def ORB_init(argv=None, orb_identifier="omniORB4"):
+    """The process's ORB; its arguments are the manager's (Manager.init(argv) reads -ORB… options)."""
+    return _orb
 
 
 def is_nil(obj):

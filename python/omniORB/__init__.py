@@ -49,9 +49,26 @@ def registerObjref(repository_id, cls):
     _objref_classes[repository_id] = cls
 
 
-def objrefClass(repository_id):
-    """The generated _objref_ class of an interface type id (CORBA.Object when not generated)."""
-    return _objref_classes.get(repository_id, CORBA.Object)
+def objrefClass(repository_id, dynamic=False):
+    """The generated _objref_ class of an interface type id; with dynamic, for an interface of the
+    runtime's IDL without a generated stub (OpenRTM's RTC.RTObject, …) a class calling its operations
+    by name; else CORBA.Object."""
+    cls = _objref_classes.get(repository_id)
+    if cls is None and dynamic and _rtstudio.knows_interface(repository_id):
+        cls = type("_objref_" + repository_id.split(":")[1].split("/")[-1], (_DynamicObject,),
+                   {"_NP_RepositoryId": repository_id})
+        _objref_classes[repository_id] = cls
+    return cls if cls is not None else CORBA.Object
+
+
+class _DynamicObject(CORBA.Object):
+    """A reference to an interface of the runtime's IDL without a generated stub module: its
+    operations (and attributes' _get_x / _set_x) are called by name, marshalled by the IDL."""
+
+    def __getattr__(self, name):
+        if name.startswith("__") or name in ("_obj", "_NP_RepositoryId"):
+            raise AttributeError(name)
+        return lambda *args: self._invoke(name, args)
 
 
 class Union(object):

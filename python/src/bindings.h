@@ -24,6 +24,8 @@ void bindComponent(pybind11::module_ &module);
 void bindConfiguration(pybind11::module_ &module);
 /// Object references of components and execution contexts (after bindComponent).
 void bindObjectReferences(pybind11::module_ &module);
+/// The ORB's own calls and servants' activation (after bindObjectRef).
+void bindOrb(pybind11::module_ &module);
 /// Manager.
 void bindManager(pybind11::module_ &module);
 

@@ -10,6 +10,7 @@ PYBIND11_MODULE(_rtstudio, module)
     RtPython::bindListeners(module);
     RtPython::bindPorts(module);
     RtPython::bindObjectRef(module);
+    RtPython::bindOrb(module);
     RtPython::bindServicePorts(module);
     RtPython::bindComponent(module);
     RtPython::bindConfiguration(module);

@@ -5,6 +5,7 @@
 #include "bindings.h"
 #include "pycomponent.h"
 #include "pyexecutioncontextref.h"
+#include "pyremotecall.h"
 #include "pyrtobjectref.h"
 
 #include <pybind11/stl.h>
@@ -32,6 +33,29 @@ py::object executionContext(PyComponent &component, RTC::UniqueId ec_id)
         context = component.getExecutionContext(ec_id);
     }
     return CORBA::is_nil(context) ? py::none() : py::cast(PyExecutionContextRef(context.in()));
+}
+
+/// A state change of the component itself (activate, deactivate, reset in context @p ec_id, exit):
+/// made without the GIL, since the context runs the component's Python callbacks on the way.
+template <RTC::ReturnCode_t (RTC::RTObject_impl::*change)(RTC::UniqueId)>
+py::object changeState(PyComponent &component, RTC::UniqueId ec_id)
+{
+    RTC::ReturnCode_t code;
+    {
+        py::gil_scoped_release released;
+        code = (component.*change)(ec_id);
+    }
+    return returnCode(code);
+}
+
+py::object exitComponent(PyComponent &component)
+{
+    RTC::ReturnCode_t code;
+    {
+        py::gil_scoped_release released;
+        code = component.exit();
+    }
+    return returnCode(code);
 }
 
 void bindReferences(py::module_ &module)
@@ -66,7 +90,11 @@ void bindComponentReferences(py::module_ &module)
         .def("get_participating_contexts",
              [](PyComponent &self) { return reference(self).get_participating_contexts(); })
         .def("getExecutionContext", &executionContext, py::arg("ec_id"))
-        .def("get_context", &executionContext, py::arg("ec_id"));
+        .def("get_context", &executionContext, py::arg("ec_id"))
+        .def("activate", &changeState<&PyComponent::activate>, py::arg("ec_id"))
+        .def("deactivate", &changeState<&PyComponent::deactivate>, py::arg("ec_id"))
+        .def("reset", &changeState<&PyComponent::reset>, py::arg("ec_id"))
+        .def("exit", &exitComponent);
 }
 
 } // namespace

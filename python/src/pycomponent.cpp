@@ -105,6 +105,9 @@ bool PyComponent::bindPythonParameter(const std::string &name, py::object variab
         return false;
     getConfigService().bindSetter(name.c_str(), defaultValue.c_str(),
                                   [parameter](const char *text) { return parameter->set(text); });
+    // As OpenRTM-aist-Python's bindParameter: the variable takes the active set's value at once
+    // (rtc.conf's `<category>.<type>.conf.default.<name>`), so onInitialize can use it.
+    getConfigService().update(getConfigService().getActiveId(), name.c_str());
     return true;
 }
 

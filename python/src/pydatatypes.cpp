@@ -6,6 +6,8 @@
 
 #include <pybind11/stl.h>
 
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -50,7 +52,7 @@ void PyDataTypes::addIdl(const std::string &fileName, const std::string &text)
     if (!m_library)
         throw std::runtime_error("no IDL loaded (import RTC first)");
     Codegen::IdlParser parser;
-    parser.setSearchDirectories(m_library->directories());
+    parser.setSearchDirectories(QStringList{keepIdlText(fileName, text)} + m_library->directories());
     if (!parser.parseText(QString::fromStdString(text), QString::fromStdString(fileName))) {
         QStringList messages;
         for (const Profile::Diagnostic &diagnostic : parser.diagnostics())
@@ -65,9 +67,36 @@ void PyDataTypes::addIdl(const std::string &fileName, const std::string &text)
     insertAll(m_model.consts, added.consts);
     insertAll(m_model.exceptions, added.exceptions);
     insertAll(m_model.interfaces, added.interfaces);
+    insertAll(m_model.prefixes, added.prefixes);
+    for (const Codegen::IdlDeclaration &declaration : added.declarations) {
+        if (!m_model.find(declaration.scopedName))
+            m_model.declarations.append(declaration);
+    }
     for (const Codegen::IdlException &exception : added.exceptions)
         m_model.structs.insert(exception.scopedName, {exception.scopedName, exception.members, exception.source});
     rebuild();
+}
+
+QString PyDataTypes::keepIdlText(const std::string &fileName, const std::string &text)
+{
+    if (!m_addedIdl)
+        m_addedIdl = std::make_unique<QTemporaryDir>();
+    QFile file(m_addedIdl->filePath(QFileInfo(QString::fromStdString(fileName)).fileName()));
+    if (!file.open(QIODevice::WriteOnly) || file.write(QByteArray::fromStdString(text)) != qint64(text.size()))
+        throw std::runtime_error("cannot keep the IDL text of " + fileName + " in " + m_addedIdl->path().toStdString());
+    return m_addedIdl->path();
+}
+
+QString PyDataTypes::scopedNameOf(const std::string &repositoryId) const
+{
+    const QString id = QString::fromStdString(repositoryId);
+    const QString scopedName = m_model.scopedNameOf(id);
+    return scopedName.isEmpty() ? Codegen::CdrCodec::typeName(id) : scopedName;
+}
+
+std::string PyDataTypes::repositoryIdOf(const QString &scopedName) const
+{
+    return m_model.repositoryId(scopedName).toStdString();
 }
 
 void PyDataTypes::addClasses(const py::dict &classes)
@@ -81,6 +110,7 @@ void PyDataTypes::rebuild()
 {
     m_codec = std::make_unique<Codegen::CdrCodec>(m_model);
     m_converter = std::make_unique<PyValueConverter>(m_model, m_classes);
+    m_direct = std::make_unique<PyDirectCdr>(m_model, m_classes);
 }
 
 const Codegen::IdlModel &PyDataTypes::model() const
@@ -183,21 +213,29 @@ std::string PyDataTypes::repositoryId(py::handle value)
 }
 
 std::vector<unsigned char> PyDataTypes::encode(const std::string &repositoryId, py::handle value,
-                                               bool littleEndian) const
+                                               bool littleEndian, bool direct) const
 {
     const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    std::vector<unsigned char> bytes;
+    if (direct && m_direct && m_direct->handles(type) && m_direct->encode(type, value, littleEndian, &bytes))
+        return bytes;
+    // What the direct way does not take, and values that do not fit (the converter says why).
     const QJsonValue json = converter().toJson(Codegen::IdlType::named(type), value, type);
     QString error;
-    const QByteArray bytes = m_codec->encode(type, json, littleEndian, &error);
+    const QByteArray encoded = m_codec->encode(type, json, littleEndian, &error);
     if (!error.isEmpty())
         throw py::type_error(error.toStdString());
-    return {bytes.begin(), bytes.end()};
+    return {encoded.begin(), encoded.end()};
 }
 
 py::object PyDataTypes::decode(const std::string &repositoryId, const unsigned char *data, size_t size,
-                               bool littleEndian) const
+                               bool littleEndian, bool direct) const
 {
     const QString type = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    if (direct && m_direct && m_direct->handles(type)) {
+        if (std::optional<py::object> value = m_direct->decode(type, data, size, littleEndian))
+            return std::move(*value);
+    }
     QString error;
     const QJsonValue json = m_codec->decode(
         type, QByteArray::fromRawData(reinterpret_cast<const char *>(data), qsizetype(size)), littleEndian, &error);
@@ -238,19 +276,20 @@ void bindDataTypes(py::module_ &module)
     }, py::arg("file_name"), py::arg("text"), "Adds the declarations of a stub module's IDL.");
     module.def("add_idl_classes", [](const py::dict &classes) { PyDataTypes::instance().addClasses(classes); },
                py::arg("classes"), "More Python classes of IDL types, by scoped name.");
-    module.def("cdr_encode", [](py::handle value, bool littleEndian) {
+    module.def("cdr_encode", [](py::handle value, bool littleEndian, bool direct) {
         const std::vector<unsigned char> bytes =
-            PyDataTypes::instance().encode(PyDataTypes::repositoryId(value), value, littleEndian);
+            PyDataTypes::instance().encode(PyDataTypes::repositoryId(value), value, littleEndian, direct);
         return py::bytes(reinterpret_cast<const char *>(bytes.data()), bytes.size());
-    }, py::arg("value"), py::arg("little_endian") = true, "A value of an IDL data type as CDR bytes.");
+    }, py::arg("value"), py::arg("little_endian") = true, py::arg("direct") = true,
+       "A value of an IDL data type as CDR bytes (direct=False: through the converter, to compare).");
     module.def("default_value", [](const std::string &repositoryId) {
         return PyDataTypes::instance().defaultValue(repositoryId);
     }, py::arg("repository_id"), "A new value of an IDL data type with every member zero or empty.");
-    module.def("cdr_decode", [](const std::string &repositoryId, const py::bytes &data, bool littleEndian) {
+    module.def("cdr_decode", [](const std::string &repositoryId, const py::bytes &data, bool littleEndian, bool direct) {
         const std::string bytes = data;
         return PyDataTypes::instance().decode(repositoryId, reinterpret_cast<const unsigned char *>(bytes.data()),
-                                              bytes.size(), littleEndian);
-    }, py::arg("repository_id"), py::arg("data"), py::arg("little_endian") = true,
+                                              bytes.size(), littleEndian, direct);
+    }, py::arg("repository_id"), py::arg("data"), py::arg("little_endian") = true, py::arg("direct") = true,
        "A new value of the IDL data type @p repository_id from CDR bytes.");
 }
 

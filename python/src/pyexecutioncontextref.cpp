@@ -16,12 +16,12 @@ py::object rtcEnumItem(const char *enumName, int value)
     return py::module_::import("RTC").attr(enumName).attr("_item")(value);
 }
 
+} // namespace
+
 py::object returnCode(RTC::ReturnCode_t code)
 {
     return rtcEnumItem("ReturnCode_t", int(code));
 }
-
-} // namespace
 
 PyExecutionContextRef::PyExecutionContextRef(RTC::ExecutionContext_ptr context)
     : m_context(RTC::ExecutionContext::_duplicate(context))

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <omniORB4/CORBA.h>
+#include <rtm/idl/RTCSkel.h>
 
 #include <pybind11/pybind11.h>
 
@@ -25,5 +25,8 @@ auto remoteCall(const char *operation, Call &&call) -> decltype(call())
         throw std::runtime_error(std::string(operation) + ": " + error._name());
     }
 }
+
+/// The item of RTC.ReturnCode_t for @p code (RTC.RTC_OK, …), as omniORBpy returns it. Needs the GIL.
+pybind11::object returnCode(RTC::ReturnCode_t code);
 
 } // namespace RtPython

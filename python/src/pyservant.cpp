@@ -68,6 +68,7 @@ private:
         py::gil_scoped_acquire gil;
         const PyValueConverter &converter = PyDataTypes::instance().converter();
         try {
+            const PyValueConverter::CallableReferences callable;
             py::tuple arguments(m_inputs.size());
             size_t next = 0;
             for (const IdlParameter &parameter : m_operation.parameters) {
@@ -107,8 +108,8 @@ private:
     {
         const py::object value = error.value();
         if (py::hasattr(value, "_NP_RepositoryId")) {
-            const QString scopedName = Codegen::CdrCodec::typeName(
-                QString::fromStdString(value.attr("_NP_RepositoryId").cast<std::string>()));
+            const QString scopedName =
+                PyDataTypes::instance().scopedNameOf(value.attr("_NP_RepositoryId").cast<std::string>());
             if (m_operation.raises.contains(scopedName)) {
                 const QJsonValue members = PyDataTypes::instance().converter().toJson(
                     IdlType::named(scopedName), value, scopedName);
@@ -165,11 +166,9 @@ CORBA::Boolean PyServant::_is_a(const char *repositoryId)
 {
     if (m_repositoryId == repositoryId || std::string(repositoryId) == CORBA::Object::_PD_repoId)
         return true;
-    const QString interface = Codegen::CdrCodec::typeName(QString::fromStdString(m_repositoryId));
-    for (const QString &base : PyDataTypes::instance().model().allBases(interface)) {
-        if (QStringLiteral("IDL:%1:1.0")
-                .arg(QString(base).replace(QStringLiteral("::"), QStringLiteral("/")))
-            == QLatin1String(repositoryId))
+    const PyDataTypes &types = PyDataTypes::instance();
+    for (const QString &base : types.model().allBases(types.scopedNameOf(m_repositoryId))) {
+        if (types.repositoryIdOf(base) == repositoryId)
             return true;
     }
     return false;

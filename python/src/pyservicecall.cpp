@@ -107,7 +107,7 @@ public:
 
     void userException(cdrStream &stream, omni::IOP_C *client, const char *repositoryId) override
     {
-        const QString scopedName = Codegen::CdrCodec::typeName(QString::fromLatin1(repositoryId));
+        const QString scopedName = PyDataTypes::instance().scopedNameOf(repositoryId);
         if (!m_operation.raises.contains(scopedName)) {
             if (client)
                 client->RequestCompleted(1);
@@ -154,19 +154,13 @@ py::object resultObject(const IdlOperation &operation, const std::vector<QJsonVa
     }
     if (types.empty() || outputs.size() != types.size())
         return py::none();
+    const PyValueConverter::CallableReferences callable;
     if (types.size() == 1)
         return converter.toPython(types.front(), outputs.front());
     py::tuple values(types.size());
     for (size_t i = 0; i < types.size(); ++i)
         values[i] = converter.toPython(types[i], outputs[i]);
     return std::move(values);
-}
-
-std::string repositoryIdOf(const QString &scopedName)
-{
-    return QStringLiteral("IDL:%1:1.0")
-        .arg(QString(scopedName).replace(QStringLiteral("::"), QStringLiteral("/")))
-        .toStdString();
 }
 
 size_t inputCount(const IdlOperation &operation)
@@ -181,7 +175,7 @@ std::optional<IdlOperation> findOperation(const Codegen::IdlModel &model,
                                           const std::string &repositoryId,
                                           const std::string &operation)
 {
-    const QString interface = Codegen::CdrCodec::typeName(QString::fromStdString(repositoryId));
+    const QString interface = PyDataTypes::instance().scopedNameOf(repositoryId);
     const QString name = QString::fromStdString(operation);
     for (const IdlOperation &candidate : model.allOperations(interface)) {
         if (candidate.name == name)
@@ -221,7 +215,7 @@ ExceptionIds::ExceptionIds(const IdlOperation &operation)
     auto [list, added] = lists->try_emplace(key);
     if (added) {
         for (const QString &exception : operation.raises)
-            list->second.push_back(ids->insert(repositoryIdOf(exception)).first->c_str());
+            list->second.push_back(ids->insert(PyDataTypes::instance().repositoryIdOf(exception)).first->c_str());
     }
     m_pointers = &list->second;
 }
@@ -248,7 +242,7 @@ void writeValue(cdrStream &stream, const IdlType &type, const QJsonValue &value)
 
 DynamicUserException::DynamicUserException(const QString &scopedName, const QJsonValue &members)
     : m_scopedName(scopedName)
-    , m_repositoryId(repositoryIdOf(scopedName))
+    , m_repositoryId(PyDataTypes::instance().repositoryIdOf(scopedName))
     , m_members(members)
 { }
 

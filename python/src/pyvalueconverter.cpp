@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "pyvalueconverter.h"
+#include "pyiorform.h"
+#include "pyobjectref.h"
+
+#include <rtmruntime/corbautil.h>
 
 #include "cdrcodec.h"
 
 #include <QJsonArray>
+#include <utility>
 #include <QJsonObject>
 
 #include <cmath>
@@ -106,7 +111,9 @@ QJsonValue PyValueConverter::basicToJson(const QString &keyword, py::handle valu
     }
     if (keyword == QLatin1String("Object"))
         return referenceToJson(value, path);
-    if (keyword == QLatin1String("any") || keyword == QLatin1String("long double"))
+    if (keyword == QLatin1String("any"))
+        return anyToJson(value, path);
+    if (keyword == QLatin1String("long double"))
         refuse(path, QStringLiteral("the type %1 is not supported yet").arg(keyword));
     if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
         refuse(path, QStringLiteral("an int is needed"));
@@ -173,8 +180,12 @@ QJsonValue PyValueConverter::referenceToJson(py::handle value, const QString &pa
 {
     if (value.is_none())
         return QJsonValue::Null;
+    // A reference to call (a generated _objref_ class, as a call or string_to_object gives it).
+    if (py::isinstance(value, py::module_::import("omniORB.CORBA").attr("Object"))
+        && py::isinstance<PyObjectRef>(value.attr("_obj")))
+        return IorForm::fromIor(value.attr("_obj").cast<const PyObjectRef &>().ior());
     if (!py::isinstance(value, referenceClass()))
-        refuse(path, QStringLiteral("None or an object reference received in a sample is needed"));
+        refuse(path, QStringLiteral("None or an object reference is needed"));
     QJsonArray profiles;
     for (const py::handle profile : value.attr("_profiles")) {
         const py::tuple pair = py::reinterpret_borrow<py::tuple>(profile);
@@ -185,16 +196,67 @@ QJsonValue PyValueConverter::referenceToJson(py::handle value, const QString &pa
                        {QStringLiteral("profiles"), profiles}};
 }
 
-py::object PyValueConverter::referenceToPython(const QJsonValue &value) const
+namespace {
+
+/// Set while a CallableReferences lives in this thread.
+thread_local bool t_callableReferences = false;
+
+} // namespace
+
+PyValueConverter::CallableReferences::CallableReferences()
+    : m_before(std::exchange(t_callableReferences, true))
+{ }
+
+PyValueConverter::CallableReferences::~CallableReferences()
+{
+    t_callableReferences = m_before;
+}
+
+py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QString &interfaceName) const
 {
     if (!value.isObject())
         return py::none();
+    // A reference of an interface whose stub module is imported is one to call, as omniORBpy gives it.
+    if (!interfaceName.isEmpty()) {
+        const py::object omniORB = py::module_::import("omniORB");
+        const py::object cls
+            = omniORB.attr("objrefClass")(m_model.repositoryId(interfaceName).toStdString(), t_callableReferences);
+        if (!cls.is(omniORB.attr("CORBA").attr("Object"))) {
+            CORBA::Object_var object = Runtime::theOrb()->string_to_object(IorForm::toIor(value).c_str());
+            return cls(py::cast(PyObjectRef(object.in())));
+        }
+    }
     py::list profiles;
     for (const QJsonValue &profile : value[QStringLiteral("profiles")].toArray()) {
         const QByteArray data = QByteArray::fromHex(profile[QStringLiteral("data")].toString().toLatin1());
         profiles.append(py::make_tuple(profile[QStringLiteral("tag")].toInteger(), py::bytes(data.constData(), size_t(data.size()))));
     }
     return referenceClass()(value[QStringLiteral("type_id")].toString().toStdString(), profiles);
+}
+
+QJsonValue PyValueConverter::anyToJson(py::handle value, const QString &path) const
+{
+    // omniORBpy's CORBA.Any: its TypeCode (here the IDL type it names) and its value.
+    if (value.is_none())
+        return QJsonValue::Null;
+    if (!py::hasattr(value, "_t") || !py::hasattr(value, "_v") || !py::hasattr(value.attr("_t"), "_name"))
+        refuse(path, QStringLiteral("a CORBA.Any is needed (CORBA.Any(CORBA.TC_long, 5), omniORB.any.to_any(5))"));
+    const QString name = QString::fromStdString(value.attr("_t").attr("_name").cast<std::string>());
+    std::optional<IdlType> type;
+    if (!Codegen::CdrCodec::anyValueType(name, &type))
+        refuse(path, QStringLiteral("an any of type %1 is not supported yet (basic types and strings only)").arg(name));
+    return QJsonObject{{QStringLiteral("type"), name},
+                       {QStringLiteral("value"), type ? toJson(*type, value.attr("_v"), path) : QJsonValue::Null}};
+}
+
+py::object PyValueConverter::anyToPython(const QJsonValue &value) const
+{
+    const py::object corba = py::module_::import("omniORB.CORBA");
+    const QString name = value[QStringLiteral("type")].toString(QStringLiteral("null"));
+    std::optional<IdlType> type;
+    Codegen::CdrCodec::anyValueType(name, &type);
+    const py::object content = type ? toPython(*type, value[QStringLiteral("value")]) : py::none();
+    return corba.attr("Any")(corba.attr("TypeCode")(name.toStdString()), content);
 }
 
 py::object PyValueConverter::referenceClass()
@@ -246,6 +308,8 @@ py::object PyValueConverter::basicToPython(const QString &keyword, const QJsonVa
         return py::str(value.toString().toStdString());
     if (keyword == QLatin1String("Object"))
         return referenceToPython(value);
+    if (keyword == QLatin1String("any"))
+        return anyToPython(value);
     if (isFloating(keyword))
         return py::float_(floatingFromJson(value));
     return py::int_(static_cast<long long>(value.toInteger()));
@@ -296,7 +360,7 @@ py::object PyValueConverter::namedToPython(const QString &name, const QJsonValue
         return object;
     }
     if (m_model.interfaces.contains(name))
-        return referenceToPython(value);
+        return referenceToPython(value, name);
     return py::none();
 }
 

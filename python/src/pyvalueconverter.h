@@ -29,14 +29,37 @@ public:
     /// The Python value of the codec's @p value of @p type.
     pybind11::object toPython(const Codegen::IdlType &type, const QJsonValue &value) const;
 
+    /**
+     * While one lives in a thread, the references toPython() makes there are ones to call (a service
+     * call's arguments and results), also of interfaces without a generated stub module (OpenRTM's
+     * own RTC::PortService, …), whose operations are then called by name. Elsewhere (data samples)
+     * such a reference is kept as its IOR.
+     */
+    class CallableReferences
+    {
+    public:
+        CallableReferences();
+        ~CallableReferences();
+        CallableReferences(const CallableReferences &) = delete;
+        CallableReferences &operator=(const CallableReferences &) = delete;
+
+    private:
+        bool m_before;
+    };
+
 private:
     QJsonValue basicToJson(const QString &keyword, pybind11::handle value, const QString &path) const;
     QJsonValue listToJson(const Codegen::IdlType &element, pybind11::handle value, const QString &path) const;
     QJsonValue namedToJson(const QString &name, pybind11::handle value, const QString &path) const;
     QJsonValue unionToJson(const Codegen::IdlUnion &type, pybind11::handle value, const QString &path) const;
     QJsonValue referenceToJson(pybind11::handle value, const QString &path) const;
-    pybind11::object referenceToPython(const QJsonValue &value) const;
+    /// A received reference: one to call when @p interfaceName's stub module is imported, else
+    /// kept as its IOR (an _rtstudio_interfaces.ObjectReference).
+    pybind11::object referenceToPython(const QJsonValue &value, const QString &interfaceName = {}) const;
     static pybind11::object referenceClass();
+    /// An `any` as omniORBpy's CORBA.Any (holding a basic type or a string) and back.
+    QJsonValue anyToJson(pybind11::handle value, const QString &path) const;
+    pybind11::object anyToPython(const QJsonValue &value) const;
     QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
     pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
     pybind11::object listToPython(const Codegen::IdlType &element, const QJsonValue &value) const;
