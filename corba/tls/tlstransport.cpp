@@ -49,31 +49,21 @@ void recordFailure(const std::string &reason)
     s_lastFailureTime = std::chrono::steady_clock::now();
 }
 
-struct FileCloser
+// OpenSSL's and the C library's objects, each freed by its own function.
+template<auto release>
+struct Freeing
 {
-    void operator()(FILE *file) const { std::fclose(file); }
+    template<typename T>
+    void operator()(T *object) const
+    {
+        release(object);
+    }
 };
-using File = std::unique_ptr<FILE, FileCloser>;
-struct X509Free
-{
-    void operator()(X509 *x) const { X509_free(x); }
-};
-using Certificate = std::unique_ptr<X509, X509Free>;
-struct KeyFree
-{
-    void operator()(EVP_PKEY *k) const { EVP_PKEY_free(k); }
-};
-using PrivateKey = std::unique_ptr<EVP_PKEY, KeyFree>;
-struct StoreFree
-{
-    void operator()(X509_STORE *s) const { X509_STORE_free(s); }
-};
-using Store = std::unique_ptr<X509_STORE, StoreFree>;
-struct StoreContextFree
-{
-    void operator()(X509_STORE_CTX *c) const { X509_STORE_CTX_free(c); }
-};
-using StoreContext = std::unique_ptr<X509_STORE_CTX, StoreContextFree>;
+using File = std::unique_ptr<FILE, Freeing<::fclose>>;
+using Certificate = std::unique_ptr<X509, Freeing<X509_free>>;
+using PrivateKey = std::unique_ptr<EVP_PKEY, Freeing<EVP_PKEY_free>>;
+using Store = std::unique_ptr<X509_STORE, Freeing<X509_STORE_free>>;
+using StoreContext = std::unique_ptr<X509_STORE_CTX, Freeing<X509_STORE_CTX_free>>;
 
 std::string openSslError()
 {
