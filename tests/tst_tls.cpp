@@ -17,13 +17,12 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <csignal>
 #include <memory>
 
 #include <unistd.h>
 
 namespace {
-
-constexpr int ReadyTimeoutMs = 20000;
 
 QString hostName()
 {
@@ -60,14 +59,14 @@ private:
         return rtctl(arguments, path("fleet/ca.pem"), path("fleet/operator.pem"));
     }
     bool startMaster(QString *error);
-    /// A TLS master of its own on a free port with @p options added, its output merged.
-    std::unique_ptr<QProcess> startTlsManager(quint16 port, const QStringList &options, QString *error);
+    /// A TLS master of its own on @p port with @p options added, its standard error read with its output.
+    QProcess *startTlsManager(quint16 port, const QStringList &options, QString *error);
     /// What the master printed so far.
     QString masterOutput();
 
     QTemporaryDir m_dir {QDir::tempPath() + QStringLiteral("/rttlsXXXXXX")};
     LiveTest::LiveSystem m_live;
-    std::unique_ptr<QProcess> m_master;
+    QProcess *m_master = nullptr;
     QString m_masterOutput;
     quint16 m_masterPort = 0;
     CORBA::ORB_var m_orb;
@@ -126,42 +125,19 @@ void TestTls::initTestCase()
 void TestTls::cleanupTestCase()
 {
     runRtctl({"local", "stop"}, {{"XDG_RUNTIME_DIR", m_dir.filePath(QStringLiteral("runtime"))}});
-    if (m_master) {
-        m_master->kill();
-        m_master->waitForFinished();
-    }
+    m_live.stopAll();
     if (!CORBA::is_nil(m_orb))
         m_orb->destroy();
 }
 
-std::unique_ptr<QProcess> TestTls::startTlsManager(quint16 port, const QStringList &options, QString *error)
+QProcess *TestTls::startTlsManager(quint16 port, const QStringList &options, QString *error)
 {
-    auto manager = std::make_unique<QProcess>();
-    manager->setProcessChannelMode(QProcess::MergedChannels);
-    const QStringList all = QStringList {
-        QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(port),
-        QStringLiteral("corba.ssl.certificate_authority_file=") + path("fleet/ca.pem"),
-        QStringLiteral("corba.ssl.key_file=") + path("fleet/node.pem"),
-    } + options;
-    QStringList arguments {QStringLiteral("-d")};
-    for (const QString &option : all)
-        arguments << QStringLiteral("-o") << option;
-    manager->start(QStringLiteral(RTMANAGER_PATH), arguments);
-    if (!manager->waitForStarted(ReadyTimeoutMs)) {
-        *error = QStringLiteral("rtmanager did not start: ") + manager->errorString();
-        return nullptr;
-    }
-    QByteArray output;
-    QDeadlineTimer deadline(ReadyTimeoutMs);
-    while (!output.contains("rtmanager ready")) {
-        if (deadline.hasExpired() || manager->state() != QProcess::Running) {
-            *error = QStringLiteral("rtmanager did not start: ") + QString::fromLocal8Bit(output);
-            return nullptr;
-        }
-        manager->waitForReadyRead(50);
-        output += manager->peek(1 << 20);
-    }
-    return manager;
+    m_live.setErrorsRead(true);
+    return m_live.startManager(QStringLiteral(RTMANAGER_PATH), port,
+                               QStringList {QStringLiteral("corba.ssl.certificate_authority_file=") + path("fleet/ca.pem"),
+                                            QStringLiteral("corba.ssl.key_file=") + path("fleet/node.pem")}
+                                   + options,
+                               error);
 }
 
 bool TestTls::startMaster(QString *error)
@@ -327,7 +303,7 @@ void TestTls::connectionLimitCountsTlsConnections()
     // corba.max_connections bounds TLS connections as it bounds TCP ones.
     const quint16 port = LiveTest::freePort();
     QString error;
-    std::unique_ptr<QProcess> manager = startTlsManager(port, {"corba.max_connections=2", "naming.enable=NO"}, &error);
+    QProcess *manager = startTlsManager(port, {"corba.max_connections=2", "naming.enable=NO"}, &error);
     QVERIFY2(manager, qPrintable(error));
     std::vector<std::unique_ptr<QProcess>> clients;
     QByteArray said;
@@ -353,8 +329,7 @@ void TestTls::connectionLimitCountsTlsConnections()
         client->kill();
     for (auto &client : clients)
         client->waitForFinished();
-    manager->kill();
-    manager->waitForFinished();
+    m_live.stop(manager);
 }
 
 void TestTls::dataFlowsBetweenTwoHosts()
@@ -421,6 +396,10 @@ void TestTls::localRuntimeWithTls()
     QCOMPARE(refused.code, 1);
     QVERIFY2(refused.err.contains("certificate required") || refused.err.contains("presents no certificate"),
              qPrintable(refused.err));
+
+    // A runtime whose manager died leaves its state file behind: rtctl no longer takes its TLS.
+    ::kill(pid_t(state["manager"].toObject()["pid"].toInteger()), SIGKILL);
+    QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"tls", "show"}, environment).out.startsWith("TLS off"), 10000);
 
     // Started again without --tls, the runtime is plain again.
     const RtctlResult plain = runRtctl({"local", "start", "--json"}, environment);

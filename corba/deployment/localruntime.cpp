@@ -177,14 +177,19 @@ QString LocalRuntime::statePath() const
     return QDir(m_folder).filePath(QStringLiteral("state.json"));
 }
 
+QJsonObject LocalRuntime::readStateFile() const
+{
+    QFile file(statePath());
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
 LocalRuntimeState LocalRuntime::status() const
 {
     LocalRuntimeState state;
     state.folder = m_folder;
-    QFile file(statePath());
-    if (!file.open(QIODevice::ReadOnly))
-        return state;
-    const QJsonObject object = QJsonDocument::fromJson(file.readAll()).object();
+    const QJsonObject object = readStateFile();
     state.nameServer = readProcess(object.value(QStringLiteral("nameServer")).toObject(), NameServerProgram);
     state.manager = readProcess(object.value(QStringLiteral("manager")).toObject(), ManagerProgram);
     state.tls = object.value(QStringLiteral("tls")).toBool();
@@ -195,7 +200,11 @@ LocalRuntimeTls LocalRuntime::tls() const
 {
     LocalRuntimeTls files;
     const CertificateAuthority authority(QDir(m_folder).filePath(QStringLiteral("tls")));
-    files.enabled = status().tls;
+    // Every rtctl command asks this before its first call: the state file and the manager's process
+    // tell without a connection to either port.
+    const QJsonObject object = readStateFile();
+    const qint64 managerPid = object.value(QStringLiteral("manager")).toObject().value(QStringLiteral("pid")).toInteger();
+    files.enabled = object.value(QStringLiteral("tls")).toBool() && alive(managerPid, ManagerProgram);
     files.certificateAuthorityFile = authority.certificatePath();
     files.nodeKeyFile = authority.issuedPath(QStringLiteral("localhost"));
     files.userKeyFile = authority.issuedPath(QStringLiteral("user"));

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QJsonObject>
 #include <QMetaType>
 #include <QString>
 
@@ -80,6 +81,8 @@ public:
 
 private:
     QString statePath() const;
+    /// The state file's contents, empty when there is none.
+    QJsonObject readStateFile() const;
     /// Creates what TLS needs that does not exist yet or has expired.
     bool prepareTls(LocalRuntimeTls *files, QString *error) const;
     void writeState(const LocalRuntimeState &state) const;

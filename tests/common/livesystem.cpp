@@ -316,7 +316,7 @@ QProcess *LiveSystem::startProcess(const QString &program, const QStringList &ar
     prepareChild(*process, m_host.enterChild);
     if (!environment.isEmpty())
         process->setProcessEnvironment(environment);
-    process->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    process->setProcessChannelMode(m_errorsRead ? QProcess::MergedChannels : QProcess::ForwardedErrorChannel);
     process->start(program, arguments);
     QProcess *raw = process.get();
     m_processes.push_back(std::move(process));

@@ -140,6 +140,12 @@ public:
      */
     QProcess *startRtcdMaster(const QString &prefix, const QString &confFile, quint16 masterPort,
                               const QString &host, const QStringList &extraLines, QString *error);
+    /**
+     * Whether the processes started from now on merge their standard error into their standard
+     * output, where a test reads it (a server's refusals are logged there), rather than forward it
+     * to the test's own.
+     */
+    void setErrorsRead(bool read) { m_errorsRead = read; }
     /// Kills and reaps one process started here (and first the slaves of an rtcd2 master).
     void stop(QProcess *process);
     /// Kills and reaps everything started here.
@@ -154,6 +160,7 @@ private:
     quint16 m_namingPort = 0;
     QProcess *m_nameServer = nullptr;
     std::set<QProcess *> m_rtcdMasters; ///< whose children (slaves) are stopped with them
+    bool m_errorsRead = false;
 };
 
 } // namespace LiveTest
