@@ -119,11 +119,29 @@ CORBA::ORB_var theOrb()
     return CORBA::ORB_init(argc, nullptr);
 }
 
+std::string objectUrl(const std::string &address, const std::string &key, bool tls)
+{
+    static const std::pair<const char *, const char *> prefixes[] = {
+        {"giop:tcp:", "corbaloc:iiop:1.2@"}, {"giop:ssl:", "corbaloc:ssliop:"}, {"giop::", "corbaloc:iiop:1.2@"},
+        {"iiop://", "corbaloc:iiop:1.2@"},   {"ssliop://", "corbaloc:ssliop:"}, {"inet:", "corbaloc:iiop:1.2@"},
+        {"iiop:", "corbaloc:iiop:1.2@"},     {"ssliop:", "corbaloc:ssliop:"},
+    };
+    if (address.rfind("corbaloc:", 0) == 0)
+        return address + '/' + key;
+    if (address.rfind("corbaname:", 0) == 0)
+        return address + '#' + key;
+    for (const auto &[prefix, url] : prefixes) {
+        const size_t length = std::strlen(prefix);
+        if (address.compare(0, length, prefix) == 0)
+            return url + address.substr(length) + '/' + key;
+    }
+    // A TLS process reaches its peers over TLS only.
+    return (tls ? "corbaloc:ssliop:" : "corbaloc:iiop:1.2@") + address + '/' + key;
+}
+
 CORBA::Object_ptr corbalocObject(const std::string &address, const std::string &key)
 {
-    // A TLS process reaches its peers over TLS only (OpenRTM-aist's `corbaloc:ssliop:`).
-    const char *protocol = Tls::Transport::installed() ? "corbaloc:ssliop:" : "corbaloc:iiop:1.2@";
-    return theOrb()->string_to_object((protocol + address + '/' + key).c_str());
+    return theOrb()->string_to_object(objectUrl(address, key, Tls::Transport::installed()).c_str());
 }
 
 // A port nobody listens on right now, for a slave we start ourselves.

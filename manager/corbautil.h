@@ -43,11 +43,17 @@ void releaseServant(PortableServer::POA_ptr poa, PortableServer::ServantBase *se
 CORBA::ORB_var theOrb();
 
 /**
- * The reference `corbaloc:iiop:1.2@<address>/<key>` (address as host:port). GIOP 1.2 from the first
- * call: with corbaloc's default 1.0, omniORB talks to the object over one connection and to the
- * references it hands out (a naming context, a new slave) over a second one, a connection and a
- * server thread more on both sides.
+ * The URL of the object @p key at @p address, in any of the forms OpenRTM-aist's rtc.conf accepts
+ * for name servers and managers: `host:port`; `giop:tcp:`, `giop::`, `inet:`, `iiop:`, `iiop://`
+ * before it (TCP) or `giop:ssl:`, `ssliop:`, `ssliop://` (TLS); a `corbaloc:` URL the key is added to
+ * after `/`, a `corbaname:` URL after `#`. A bare `host:port` is reached over TLS when @p tls, else
+ * as `corbaloc:iiop:1.2@`: GIOP 1.2 from the first call, because with corbaloc's default 1.0 omniORB
+ * talks to the object over one connection and to the references it hands out (a naming context, a
+ * new slave) over a second one, a connection and a server thread more on both sides.
  */
+std::string objectUrl(const std::string &address, const std::string &key, bool tls);
+
+/// The reference objectUrl() names, over TLS when this process uses it.
 CORBA::Object_ptr corbalocObject(const std::string &address, const std::string &key);
 
 /// A loopback TCP port nobody listens on right now (for a manager process we start ourselves).

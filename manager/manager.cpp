@@ -132,9 +132,11 @@ bool Manager::initOrb(std::string *error)
     // master, peers' ports): one round trip less each; a gone object still fails that first call.
     args.insert(args.end(), {"-ORBverifyObjectExistsAndType", "0"});
     // OpenRTM's corba.args: extra ORB options such as `-ORBgiopMaxMsgSize 209715200`.
-    std::istringstream extra(m_config.value("corba.args"));
-    for (std::string word; extra >> word;)
-        args.push_back(word);
+    // Quoted as OpenRTM-aist's do: `-ORBserverTransportRule "* ssl"` is one option and its value.
+    for (const std::string &word : splitArguments(m_config.value("corba.args"))) {
+        if (!word.empty())
+            args.push_back(word);
+    }
     std::vector<char *> argv;
     for (std::string &arg : args)
         argv.push_back(arg.data());

@@ -145,4 +145,53 @@ std::string exportedPortList(const std::string &text)
     return list;
 }
 
+std::vector<std::string> splitArguments(const std::string &args)
+{
+    // Blanks separate arguments unless quoted or escaped; quotes are removed, and a
+    // backslash inside quotes is kept unless it escapes the other quote character.
+    std::vector<std::string> out;
+    std::string current;
+    bool inArg = false, escaped = false;
+    char quote = 0;
+    for (char c : args) {
+        if (escaped) {
+            escaped = false;
+            if (quote != 0 && c != quote && c != '\\')
+                current += '\\';
+            current += c;
+            inArg = true;
+            continue;
+        }
+        if (c == '\\') {
+            escaped = true;
+            inArg = true;
+            continue;
+        }
+        if (quote != 0) {
+            if (c == quote)
+                quote = 0;
+            else
+                current += c;
+            continue;
+        }
+        if (c == '"' || c == '\'') {
+            quote = c;
+            inArg = true;
+            continue;
+        }
+        if ((c == ' ' || c == '\t')) {
+            if (inArg)
+                out.push_back(current);
+            current.clear();
+            inArg = false;
+            continue;
+        }
+        current += c;
+        inArg = true;
+    }
+    if (inArg || out.empty())
+        out.push_back(current);
+    return out;
+}
+
 } // namespace Runtime

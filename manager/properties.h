@@ -45,6 +45,11 @@ std::string trimmed(const std::string &text);
 /// Splits at @p separator; with @p skipEmpty, trimmed empty parts are dropped.
 std::vector<std::string> split(const std::string &text, char separator, bool skipEmpty = true);
 /**
+ * Splits a command line as OpenRTM-aist's coil::parseArgs does (corba.args, manager_cmd): blanks
+ * separate arguments unless quoted ('…' or "…") or escaped; an empty text gives one empty argument.
+ */
+std::vector<std::string> splitArguments(const std::string &args);
+/**
  * A composite's `exported_ports` list as OpenRTM-aist's manager and SDO configuration store it:
  * comma-separated `<instance>.<port>` names, where a longer dotted name keeps its first and last
  * parts (names written before ports carried their instance's name).

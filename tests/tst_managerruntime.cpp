@@ -3,6 +3,7 @@
 // context's state machine, configuration sets, data ports (push flush/new/periodic, pull, both
 // byte orders) and service ports, driven through their CORBA interfaces as tools would.
 #include "builtins.h"
+#include "corbautil.h"
 #include "createrequest.h"
 #include "inportconnector.h"
 #include "namingregistrar.h"
@@ -136,6 +137,10 @@ private slots:
     void cleanupTestCase();
 
     void confParsing();
+    void objectUrls_data();
+    void objectUrls();
+    void argumentsSplitAsOpenRtm_data();
+    void argumentsSplitAsOpenRtm();
     void formatCodes_data();
     void formatCodes();
     void createRequest_data();
@@ -322,6 +327,55 @@ void TestManagerRuntime::confParsing()
     QCOMPARE(numbers.number("c", 5000, &problem), 5000.0);
     QCOMPARE(problem, std::string("c: 'abc' is not a number; 5000 is used"));
     QCOMPARE(numbers.number("d", 3, &problem), 3.0);
+}
+
+void TestManagerRuntime::objectUrls_data()
+{
+    // The address forms of OpenRTM-aist's corba.nameservers and corba.master_manager.
+    QTest::addColumn<QString>("address");
+    QTest::addColumn<bool>("tls");
+    QTest::addColumn<QString>("url");
+    QTest::newRow("host:port") << "robot1:2809" << false << "corbaloc:iiop:1.2@robot1:2809/NameService";
+    QTest::newRow("host:port, TLS") << "robot1:2809" << true << "corbaloc:ssliop:robot1:2809/NameService";
+    QTest::newRow("giop:tcp:") << "giop:tcp:robot1:2809" << true << "corbaloc:iiop:1.2@robot1:2809/NameService";
+    QTest::newRow("giop::") << "giop::robot1:2809" << false << "corbaloc:iiop:1.2@robot1:2809/NameService";
+    QTest::newRow("giop:ssl:") << "giop:ssl:robot1:2809" << false << "corbaloc:ssliop:robot1:2809/NameService";
+    QTest::newRow("iiop://") << "iiop://robot1:2809" << false << "corbaloc:iiop:1.2@robot1:2809/NameService";
+    QTest::newRow("ssliop://") << "ssliop://robot1:2809" << false << "corbaloc:ssliop:robot1:2809/NameService";
+    QTest::newRow("ssliop:") << "ssliop:robot1:2809" << false << "corbaloc:ssliop:robot1:2809/NameService";
+    QTest::newRow("inet:") << "inet:robot1:2809" << false << "corbaloc:iiop:1.2@robot1:2809/NameService";
+    QTest::newRow("corbaloc") << "corbaloc:ssliop:robot1:2809" << false << "corbaloc:ssliop:robot1:2809/NameService";
+    QTest::newRow("corbaname") << "corbaname::robot1:2809" << false << "corbaname::robot1:2809#NameService";
+}
+
+void TestManagerRuntime::objectUrls()
+{
+    QFETCH(QString, address);
+    QFETCH(bool, tls);
+    QFETCH(QString, url);
+    QCOMPARE(QString::fromStdString(Runtime::objectUrl(address.toStdString(), "NameService", tls)), url);
+}
+
+void TestManagerRuntime::argumentsSplitAsOpenRtm_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QStringList>("arguments");
+    QTest::newRow("blanks") << " -ORBa  1\t-b " << QStringList {"-ORBa", "1", "-b"};
+    QTest::newRow("double quotes") << "-ORBserverTransportRule \"* ssl\" -ORBendPoint giop:ssl::"
+                                   << QStringList {"-ORBserverTransportRule", "* ssl", "-ORBendPoint", "giop:ssl::"};
+    QTest::newRow("single quotes") << "a 'b c'd" << QStringList {"a", "b cd"};
+    QTest::newRow("escaped blank") << "a\\ b" << QStringList {"a b"};
+    QTest::newRow("empty") << "" << QStringList {""};
+}
+
+void TestManagerRuntime::argumentsSplitAsOpenRtm()
+{
+    QFETCH(QString, text);
+    QFETCH(QStringList, arguments);
+    QStringList split;
+    for (const std::string &argument : Runtime::splitArguments(text.toStdString()))
+        split << QString::fromStdString(argument);
+    QCOMPARE(split, arguments);
 }
 
 void TestManagerRuntime::formatCodes_data()

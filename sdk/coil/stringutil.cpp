@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <coil/stringutil.h>
 
+#include <properties.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdarg>
@@ -304,51 +306,7 @@ mapstring urlparam2map(const std::string &str)
 
 vstring parseArgs(const std::string &args)
 {
-    // Blanks separate arguments unless quoted or escaped; quotes are removed, and a
-    // backslash inside quotes is kept unless it escapes the other quote character.
-    vstring out;
-    std::string current;
-    bool inArg = false, escaped = false;
-    char quote = 0;
-    for (char c : args) {
-        if (escaped) {
-            escaped = false;
-            if (quote != 0 && c != quote && c != '\\')
-                current += '\\';
-            current += c;
-            inArg = true;
-            continue;
-        }
-        if (c == '\\') {
-            escaped = true;
-            inArg = true;
-            continue;
-        }
-        if (quote != 0) {
-            if (c == quote)
-                quote = 0;
-            else
-                current += c;
-            continue;
-        }
-        if (c == '"' || c == '\'') {
-            quote = c;
-            inArg = true;
-            continue;
-        }
-        if (isBlank(c)) {
-            if (inArg)
-                out.push_back(current);
-            current.clear();
-            inArg = false;
-            continue;
-        }
-        current += c;
-        inArg = true;
-    }
-    if (inArg || out.empty())
-        out.push_back(current);
-    return out;
+    return Runtime::splitArguments(args);
 }
 
 template<> bool stringTo<std::string>(std::string &val, const char *str)
