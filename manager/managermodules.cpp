@@ -3,8 +3,10 @@
 // <Name>Init(RTC::Manager *)`) registers component factories; the component SDK calls it. Python
 // modules (`<Name>.py`, `def <Name>Init(manager)`) run in this process too, see PythonModuleLoader.
 #include "managerdetail.h"
+#include "tlsarguments.h"
 
 #include <algorithm>
+#include <iostream>
 #include <dirent.h>
 #include <dlfcn.h>
 #include <sys/stat.h>
@@ -268,7 +270,15 @@ void Manager::preloadModules()
     for (const char *key : {"manager.modules.preload", "manager.preload.modules"}) {
         for (const std::string &module : split(m_config.value(key), ',')) {
             const size_t colon = module.find(':');
-            loadModule(module.substr(0, colon), colon == std::string::npos ? "" : module.substr(colon + 1), nullptr);
+            const std::string name = module.substr(0, colon);
+            // An rtc.conf shared with OpenRTM-aist preloads its TLS module, a library of OpenRTM-aist's
+            // own: here TLS is part of the runtime and follows the same corba.ssl.* keys.
+            if (baseName(name) == "SSLTransport") {
+                std::cerr << programName() << ": " << name << " (OpenRTM-aist's TLS module) is not loaded: TLS is "
+                          << (tlsSettings().enabled() ? "on" : "off") << " by the corba.ssl.* keys" << std::endl;
+                continue;
+            }
+            loadModule(name, colon == std::string::npos ? "" : module.substr(colon + 1), nullptr);
         }
     }
 }

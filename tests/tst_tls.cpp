@@ -50,6 +50,7 @@ private slots:
     void connectionLimitCountsTlsConnections();
     void dataFlowsBetweenTwoHosts();
     void localRuntimeWithTls();
+    void openRtmTlsConfigurationServes();
 
 private:
     QString path(const QString &name) const { return m_dir.filePath(name); }
@@ -409,6 +410,29 @@ void TestTls::localRuntimeWithTls()
         = QStringLiteral("/127.0.0.1:%1").arg(plain.json().object()["nameServer"].toObject()["port"].toInt());
     QTRY_VERIFY_WITH_TIMEOUT(runRtctl({"ls", "-R", plainServer}, environment).out.contains("manager.mgr"), 10000);
     QCOMPARE(runRtctl({"local", "stop"}, environment).code, 0);
+}
+
+void TestTls::openRtmTlsConfigurationServes()
+{
+    // The lines OpenRTM-aist's TLS sample puts in rtc.conf, so that one file serves both: its TLS
+    // module preloaded, the name server as a corbaloc:ssliop URL, quoted transport rules.
+    QString error;
+    QProcess *manager = startTlsManager(
+        LiveTest::freePort(),
+        {QStringLiteral("corba.nameservers=corbaloc:ssliop:127.0.0.1:%1").arg(m_live.namingPort()),
+         QStringLiteral("naming.formats=shared.host_cxt/%n.rtc"), QStringLiteral("manager.naming_formats=shared.host_cxt/%n.mgr"),
+         QStringLiteral("manager.preload.modules=SSLTransport.so"),
+         QStringLiteral("corba.args=-ORBserverTransportRule \"* ssl\" -ORBclientTransportRule \"* ssl\""),
+         QStringLiteral("manager.components.precreate=ConsoleOut")},
+        &error);
+    QVERIFY2(manager, qPrintable(error));
+    const QString started = QString::fromLocal8Bit(m_live.printedWhileStarting(manager));
+    QVERIFY2(started.contains("SSLTransport.so (OpenRTM-aist's TLS module) is not loaded: TLS is on"), qPrintable(started));
+    QVERIFY2(!started.contains("load_module"), qPrintable(started));
+    const QString context = "/" + m_live.namingServer() + "/shared.host_cxt";
+    QTRY_VERIFY_WITH_TIMEOUT(operatorRtctl({"ls", context}).out.contains("ConsoleOut0.rtc"), 10000);
+    QCOMPARE(operatorRtctl({"act", context + "/ConsoleOut0.rtc"}).code, 0);
+    m_live.stop(manager);
 }
 
 QTEST_GUILESS_MAIN(TestTls)

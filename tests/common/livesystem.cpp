@@ -337,6 +337,7 @@ QProcess *LiveSystem::startProcess(const QString &program, const QStringList &ar
         if (raw->waitForReadyRead(int(qMax<qint64>(1, deadline.remainingTime()))))
             output += raw->readAllStandardOutput();
     }
+    m_startOutput.insert(raw, output);
     return raw;
 }
 
@@ -361,6 +362,7 @@ void LiveSystem::stopAll()
     for (auto it = m_processes.rbegin(); it != m_processes.rend(); ++it)
         stop(it->get());
     m_processes.clear();
+    m_startOutput.clear();
     m_nameServer = nullptr;
 }
 

@@ -146,6 +146,8 @@ public:
      * to the test's own.
      */
     void setErrorsRead(bool read) { m_errorsRead = read; }
+    /// What @p process printed until it was ready (startProcess() read it while it waited).
+    QByteArray printedWhileStarting(QProcess *process) const { return m_startOutput.value(process); }
     /// Kills and reaps one process started here (and first the slaves of an rtcd2 master).
     void stop(QProcess *process);
     /// Kills and reaps everything started here.
@@ -161,6 +163,7 @@ private:
     QProcess *m_nameServer = nullptr;
     std::set<QProcess *> m_rtcdMasters; ///< whose children (slaves) are stopped with them
     bool m_errorsRead = false;
+    QHash<QProcess *, QByteArray> m_startOutput;
 };
 
 } // namespace LiveTest

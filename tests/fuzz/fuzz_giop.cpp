@@ -184,6 +184,15 @@ void sendAll(int fd, const std::vector<uint8_t> &message)
     }
 }
 
+// Where every thread of the server waits, when gdb is installed: what a hang's cause is seen in.
+void printThreads()
+{
+    const std::string command = "gdb -p " + std::to_string(getpid())
+        + " -batch -nx -ex 'thread apply all bt 30' </dev/null >&2 2>/dev/null";
+    if (std::system(command.c_str()) != 0)
+        std::fprintf(stderr, "fuzz_giop: (no thread stacks: gdb is not installed or cannot attach)\n");
+}
+
 // Reads until @p wanted bytes arrived (true) or the ORB closed the connection (false); a server that
 // neither answers nor closes within the bound is a hang.
 bool readBytes(int fd, uint8_t *buffer, size_t wanted)
@@ -196,6 +205,7 @@ bool readBytes(int fd, uint8_t *buffer, size_t wanted)
                          ReplyTimeoutMs);
             for (const std::string &request : s_recent)
                 std::fprintf(stderr, "  %s\n", request.c_str());
+            printThreads();
             std::abort();
         }
         const ssize_t n = recv(fd, buffer + have, wanted - have, 0);
