@@ -36,3 +36,7 @@ rtstudio_add_interop_test(tst_interopsystem SOURCES tst_interopsystem.cpp
 # The online System Editor's Name Service view and Manager view against the same kind of mixed system.
 rtstudio_add_interop_test(tst_interoponline SOURCES tst_interoponline.cpp
     LIBS rtsystemeditor rtstudio_livetest rtstudio_rtctlrunner)
+
+# OpenRTM-aist built with SSL_ENABLE and RT Studio on one certificate authority and one rtc.conf.
+rtstudio_add_interop_test(tst_interoptls SOURCES tst_interoptls.cpp
+    LIBS rtstudio_livetest rtstudio_rtctlrunner rtcorba_tls_loaded rtcorba_stubs)
