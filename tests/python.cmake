@@ -76,3 +76,14 @@ if(TARGET rtpymodules)
     add_dependencies(tst_pythonexamples rtmanager rtctl rtpython rtpymodules rtsdk)
     set_tests_properties(tst_pythonexamples PROPERTIES LABELS python TIMEOUT 600)
 endif()
+
+# Python components and OpenRTM-aist 2.x's C++ examples exchange samples and service calls (interop).
+if(COMMAND rtstudio_add_interop_test)
+    rtstudio_add_interop_test(tst_interoppython SOURCES tst_interoppython.cpp
+        LIBS rtstudio_livetest rtstudio_rtctlrunner)
+    target_compile_definitions(tst_interoppython PRIVATE
+        RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
+        RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+        RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
+    add_dependencies(tst_interoppython rtpython)
+endif()
