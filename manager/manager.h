@@ -274,7 +274,8 @@ private:
     int reserveLoopbackPort();
     pid_t startSlaveProcess(const std::string &address, const std::string &name, const std::string &master);
     RTM::Manager_ptr waitForSlave(pid_t pid, const std::string &address);
-    std::string requestJoin(RTM::Manager_ptr master, bool *retry);
+    /// Asks @p master to take this manager as a slave: empty, or the problem; @p absent when nobody listens there.
+    std::string requestJoin(RTM::Manager_ptr master, bool *retry, bool *absent);
     void dropSlave(RTM::Manager_ptr manager);
     void joinMaster();
     void leaveMaster();

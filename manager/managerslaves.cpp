@@ -404,9 +404,10 @@ void Manager::joinMaster()
     // back here, and may call create_component at once: list it as the master before asking.
     addMaster(manager);
     std::string problem;
+    bool absent = false;
     for (;;) {
         bool retry = false;
-        problem = requestJoin(manager, &retry);
+        problem = requestJoin(manager, &retry, &absent);
         if (problem.empty())
             return;
         const bool parentAlive = parent > 0 && getppid() == parent;
@@ -418,10 +419,13 @@ void Manager::joinMaster()
     // A master that went down meanwhile took this slave's parent with it: it goes too, quietly.
     if (parent > 0 && getppid() != parent)
         return;
+    // A program started on its own where no master runs is a standalone one, as in OpenRTM-aist.
+    if (parent <= 0 && absent)
+        return;
     std::cerr << programName() << ": cannot join master " << master << ": " << problem << std::endl;
 }
 
-std::string Manager::requestJoin(RTM::Manager_ptr master, bool *retry)
+std::string Manager::requestJoin(RTM::Manager_ptr master, bool *retry, bool *absent)
 {
     try {
         if (master->add_slave_manager(m_self) == RTC::RTC_OK)
@@ -432,6 +436,7 @@ std::string Manager::requestJoin(RTM::Manager_ptr master, bool *retry)
     } catch (const CORBA::Exception &e) {
         // Nobody listening means no master; a timeout or a broken connection means a busy one.
         *retry = CORBA::TIMEOUT::_downcast(&e) || CORBA::COMM_FAILURE::_downcast(&e);
+        *absent = CORBA::TRANSIENT::_downcast(&e) != nullptr;
         return describeException(e);
     }
 }

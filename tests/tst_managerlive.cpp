@@ -867,6 +867,19 @@ void TestManagerLive::commandLine()
     RTM::Manager_var manager = RTM::Manager::_narrow(object);
     QVERIFY(manager->is_master());
 
+    // A manager that is not a master and finds no master runs on its own, quietly (a standalone
+    // component program).
+    m_live->setErrorsRead(true);
+    QProcess *standalone = m_live->startProcess(
+        QStringLiteral(RTMANAGER_PATH),
+        {"-o", "naming.enable=NO", "-o", QStringLiteral("corba.master_manager=127.0.0.1:%1").arg(LiveTest::freePort())},
+        QStringLiteral("rtmanager ready"), &error);
+    m_live->setErrorsRead(false);
+    QVERIFY2(standalone, qPrintable(error));
+    QVERIFY2(!m_live->printedWhileStarting(standalone).contains("cannot join master"),
+             m_live->printedWhileStarting(standalone).constData());
+    m_live->stop(standalone);
+
     for (const QStringList &bad : {QStringList{"--bogus"}, QStringList{"-f", "/nonexistent/rtc.conf"},
                                    QStringList{"-o", "novalue"}}) {
         QProcess refused;
