@@ -91,6 +91,12 @@ void TestSeCanvasWidgets::dialogShowsDefaults()
     QCOMPARE(combo(dialog, "dataflowType")->currentText(), QStringLiteral("push"));
     QCOMPARE(combo(dialog, "subscriptionType")->currentText(), QStringLiteral("flush"));
     QCOMPARE(edit(dialog, "pushRate")->text(), QStringLiteral("1000.0"));
+    // Settings left to the ports say "default", combo boxes as well as fields.
+    for (const char *name : {"marshalingType", "outFullPolicy", "inEmptyPolicy"}) {
+        QCOMPARE(combo(dialog, name)->currentText(), QString());
+        QCOMPARE(combo(dialog, name)->lineEdit()->placeholderText(), QStringLiteral("default"));
+    }
+    QCOMPARE(edit(dialog, "outBufferLength")->placeholderText(), QStringLiteral("default"));
     QVERIFY(okButton(dialog)->isEnabled());
     QCOMPARE(dialog.settings(), defaults());
 }

@@ -2184,7 +2184,7 @@
         <translation>TLS を準備できません: %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
         <source>omniNames did not start on port %1: %2</source>
         <translation>omniNames がポート %1 で起動しませんでした：%2</translation>
     </message>
@@ -3189,7 +3189,7 @@
         <translation>%1 はローカルランタイムで実行中です。</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+125"/>
         <source>%1 is not a system profile.</source>
         <translation>%1 はシステムプロファイルではありません。</translation>
     </message>
@@ -3675,7 +3675,7 @@
         <translation>InPort バッファ</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+33"/>
         <source>Data flow</source>
         <translation>データフロー</translation>
     </message>
@@ -3785,7 +3785,8 @@
         <translation>buffer.read.timeout：待っている読み出しが待つ時間（秒）です。</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="-64"/>
+        <location line="+89"/>
         <source>default</source>
         <translation>デフォルト</translation>
     </message>
@@ -5406,7 +5407,22 @@ Installs: %1</source>
 <context>
     <name>SystemEditor::RestoreDialog</name>
     <message>
-        <location filename="../../systemeditor/online/restoredialog.cpp" line="+86"/>
+        <location filename="../../systemeditor/online/restoredialog.cpp" line="+46"/>
+        <source>existing</source>
+        <translation>既存</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>create</source>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>missing</source>
+        <translation>不足</translation>
+    </message>
+    <message>
+        <location line="+48"/>
         <source>Restore System</source>
         <translation>システムの復元</translation>
     </message>

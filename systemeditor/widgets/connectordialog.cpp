@@ -98,6 +98,11 @@ void ConnectorDialog::buildForm(const Choices &choices)
     for (QLineEdit *edit : findChildren<QLineEdit *>())
         connect(edit, &QLineEdit::textChanged, this, &ConnectorDialog::refresh);
     explainSettings();
+    // An empty choice leaves the setting to the ports, as an empty buffer field does: say so alike.
+    for (QComboBox *box : findChildren<QComboBox *>()) {
+        if (box->isEditable() && box->itemText(0).isEmpty())
+            box->lineEdit()->setPlaceholderText(tr("default"));
+    }
     for (QComboBox *box : findChildren<QComboBox *>())
         connect(box, &QComboBox::currentTextChanged, this, &ConnectorDialog::refresh);
     connect(m_connectDirection, &QComboBox::currentIndexChanged, this, &ConnectorDialog::refresh);
