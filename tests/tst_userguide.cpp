@@ -17,6 +17,8 @@
 #include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
+#include <QImage>
+#include <QPixmap>
 
 using Studio::UserGuide;
 
@@ -51,6 +53,8 @@ private slots:
     void everyPageIsBuiltIn();
     void helpShowsGettingStarted();
     void linksAreFollowed();
+    void picturesAreShown_data();
+    void picturesAreShown();
     void troubleshooting();
     void f1ShowsTheSectionOfTheViewInFront();
     void japanesePagesFirst();
@@ -100,6 +104,47 @@ void TestUserGuide::helpShowsGettingStarted()
     // Asked again, the same window comes back.
     action->trigger();
     QCOMPARE(window.userGuide(), guide);
+}
+
+void TestUserGuide::picturesAreShown_data()
+{
+    QTest::addColumn<QString>("page");
+    QTest::addColumn<QString>("language");
+    QTest::newRow("getting started") << QStringLiteral("getting-started.md") << QStringLiteral("en");
+    QTest::newRow("はじめに") << QStringLiteral("getting-started.md") << QStringLiteral("ja");
+    QTest::newRow("the IDE") << QStringLiteral("rtstudio.md") << QStringLiteral("en");
+}
+
+// The screenshots a page shows are built in with it: each image of the page loads.
+void TestUserGuide::picturesAreShown()
+{
+    QFETCH(QString, page);
+    QFETCH(QString, language);
+    UserGuide guide;
+    guide.showPage(page, language);
+    QTextBrowser *browser = guide.browser();
+    QStringList images;
+    QStringList missing;
+    for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next()) {
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextCharFormat format = it.fragment().charFormat();
+            if (!format.isImageFormat())
+                continue;
+            const QString name = format.toImageFormat().name();
+            images << name;
+            const QVariant image = browser->loadResource(QTextDocument::ImageResource, QUrl(name));
+            if (image.value<QImage>().isNull() && image.value<QPixmap>().isNull()
+                && image.toByteArray().isEmpty())
+                missing << name;
+        }
+    }
+    QVERIFY2(images.size() >= 2, qPrintable(images.join(", ")));
+    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("not built in: ") + missing.join(", ")));
+    // Shown, each fits the window's width: nothing to scroll sideways for.
+    guide.resize(900, 700);
+    guide.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&guide));
+    QCOMPARE(browser->horizontalScrollBar()->maximum(), 0);
 }
 
 void TestUserGuide::linksAreFollowed()
