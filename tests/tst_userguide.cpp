@@ -4,11 +4,20 @@
 // translated into the GUI's language is shown in it.
 #include "componenteditor.h"
 #include "mainwindow.h"
+#include "onlinediagram.h"
+#include "onlinedocks.h"
+#include "onlinedocument.h"
+#include "portmonitor.h"
+#include "nameserviceview.h"
 #include "planview.h"
 #include "rtseditor.h"
 #include "userguide.h"
 
+#include <QAbstractItemView>
+#include <QAbstractTextDocumentLayout>
 #include <QAction>
+#include <QDockWidget>
+#include <QGraphicsView>
 #include <QDir>
 #include <QDirIterator>
 #include <QSettings>
@@ -40,6 +49,22 @@ QPoint linkPosition(QTextBrowser *browser, const QString &href)
         }
     }
     return {};
+}
+
+/// True when @p browser shows the heading @p section: at the top, or on screen when the page ends too
+/// soon after it to scroll it there.
+bool showsHeading(QTextBrowser *browser, const QString &section)
+{
+    QAbstractTextDocumentLayout *layout = browser->document()->documentLayout();
+    const int top = browser->verticalScrollBar()->value();
+    for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() == 0 || block.text() != section)
+            continue;
+        const int at = int(layout->blockBoundingRect(block).top());
+        return qAbs(at - top) <= 1
+            || (top == browser->verticalScrollBar()->maximum() && at > top && at < top + browser->viewport()->height());
+    }
+    return false;
 }
 
 } // namespace
@@ -225,6 +250,27 @@ void TestUserGuide::f1ShowsTheSectionOfTheViewInFront()
     window.activateWindow();
     pressF1();
     QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("Plan view"));
+    // The online views: the Name Service dock, the Port Monitor and an online diagram's tab.
+    window.findChild<QAction *>(QStringLiteral("actionNewOnlineDiagram"))->trigger();
+    auto *online = qobject_cast<Studio::OnlineDocument *>(window.activeDocument());
+    QVERIFY(online);
+    const std::pair<QWidget *, QString> views[]
+        = {{window.onlineDocks()->nameService(), QStringLiteral("Online")},
+           {window.onlineDocks()->portMonitor(), QStringLiteral("Port Monitor")},
+           {online->diagram()->view(), QStringLiteral("Online")}};
+    for (const auto &[view, section] : views) {
+        for (QDockWidget *dock : window.onlineDocks()->docks()) {
+            if (dock->isAncestorOf(view))
+                dock->show();
+        }
+        QWidget *target = view->focusPolicy() != Qt::NoFocus ? view : view->findChild<QAbstractItemView *>();
+        QVERIFY(target);
+        target->setFocus();
+        QTRY_VERIFY(target->hasFocus());
+        window.activateWindow();
+        pressF1();
+        QVERIFY2(showsHeading(window.userGuide()->browser(), section), qPrintable(section));
+    }
     // A heading the page lacks shows its top.
     UserGuide guide;
     guide.showSection(QStringLiteral("rtstudio.md"), QStringLiteral("No Such Heading"), QStringLiteral("en"));

@@ -3434,7 +3434,7 @@
 <context>
     <name>Studio::UserGuide</name>
     <message>
-        <location filename="../../app/userguide.cpp" line="+21"/>
+        <location filename="../../app/userguide.cpp" line="+26"/>
         <source>RT Studio User Guide</source>
         <translation>RT Studio ユーザーガイド</translation>
     </message>
@@ -3721,6 +3721,21 @@
     </message>
     <message>
         <location line="+13"/>
+        <source>The connector&apos;s name (rtctl con -n): the system file and the live ports know it by this name; by default the two ports&apos; names joined by &apos;_&apos;.</source>
+        <translation>コネクタの名前（rtctl con -n）です。システムファイルと稼働中のポートはこの名前でコネクタを識別します。既定では 2 つのポートの名前を「_」でつないだものです。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Which port calls connect(). The system file records that port as the connector&apos;s source; data flows from the OutPort either way.</source>
+        <translation>どちらのポートが connect() を呼ぶかです。システムファイルはそのポートをコネクタの接続元として記録します。データはどちらの場合も OutPort から InPort へ流れます。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Properties without a field above, sent with the connector as they are (rtctl con -p KEY=VALUE): dataport.* settings of other connector types, or your own.</source>
+        <translation>上の欄にないプロパティで、そのままコネクタとともに送られます（rtctl con -p KEY=VALUE）。他のコネクタ型の dataport.* 設定や独自のプロパティに使います。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>dataport.interface_type: how samples travel. corba_cdr sends them as CORBA calls between any two processes; other types need both sides to offer them.</source>
         <translation>dataport.interface_type：データの運び方です。corba_cdr はどの二つのプロセスの間でも CORBA の呼び出しで送ります。ほかの種類は両側がそれを提供している必要があります。</translation>
     </message>
@@ -3785,8 +3800,8 @@
         <translation>buffer.read.timeout：待っている読み出しが待つ時間（秒）です。</translation>
     </message>
     <message>
-        <location line="-64"/>
-        <location line="+89"/>
+        <location line="-71"/>
+        <location line="+96"/>
         <source>default</source>
         <translation>デフォルト</translation>
     </message>
