@@ -51,6 +51,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLineEdit>
+#include <QLockFile>
 #include <QMainWindow>
 #include <QPushButton>
 #include <QTableWidget>
@@ -157,6 +158,23 @@ bool showGenerateDialogs(Studio::MainWindow &window, const Pictures &pictures, c
         static_cast<Builder::RegenerationDialog *>(dialog)->button(Codegen::FileDecision::Merge)->click();
     };
     return answerModals([&] { generate->click(); }, {options(false), merge}) && saved;
+}
+
+/**
+ * showGenerateDialogs() into a fixed folder, not a random one: the Generate dialog shows it, and
+ * its picture should not change with every run. Runs at the same time (both languages, other
+ * checkouts) take turns through a lock file.
+ */
+bool generateInFixedFolder(Studio::MainWindow &window, const Pictures &pictures)
+{
+    QLockFile lock(QDir::temp().filePath(QStringLiteral("rtstudio-docs.lock")));
+    if (!lock.tryLock(120000))
+        return false;
+    QDir project(QDir::temp().filePath(QStringLiteral("rtstudio-docs/Doubler")));
+    project.removeRecursively();
+    const bool shown = showGenerateDialogs(window, pictures, project);
+    project.removeRecursively();
+    return shown;
 }
 
 /// The connector dialog as a drop of ConsoleIn0's OutPort on ConsoleOut0's InPort opens it.
@@ -341,21 +359,16 @@ int main(int argc, char *argv[])
     const Pictures pictures{output, language};
     const QDir examples(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples"));
     const QString system = examples.filePath(QStringLiteral("ConsoleInOut/ConsoleInOut.xml"));
-    // A fixed folder, not a random one: the Generate dialog shows it, and the picture should not
-    // change with every run.
-    QDir project(QDir::temp().filePath(QStringLiteral("rtstudio-docs/Doubler")));
-    project.removeRecursively();
     Studio::MainWindow window;
     window.resize(1200, 760);
     window.show();
     if (!QTest::qWaitForWindowExposed(&window))
         return 1;
     bool ok = window.openFiles({examples.filePath(QStringLiteral("tour/Doubler.xml"))})
-        && pictures.save(&window, QStringLiteral("builder")) && showGenerateDialogs(window, pictures, project)
+        && pictures.save(&window, QStringLiteral("builder")) && generateInFixedFolder(window, pictures)
         && window.openFiles({system}) && pictures.save(&window, QStringLiteral("systemeditor"))
         && showConnectorDialog(window, pictures) && showPlanView(window)
         && pictures.save(&window, QStringLiteral("planview"));
-    project.removeRecursively();
     LiveTest::LiveSystem live;
     window.resize(1400, 900);
     ok = ok && showOnline(window, pictures, live, system) && pictures.save(&window, QStringLiteral("online"))
