@@ -23,7 +23,8 @@ QString escapeLine(const QString &line)
         else if (c == U'-')
             out += QStringLiteral("\\-"); // a minus, so that options copied from the page work
         else if (c > 0x7e)
-            out += QStringLiteral("\\[u%1]").arg(QString::number(uint(c), 16).toUpper().rightJustified(4, QLatin1Char('0')));
+            out += QStringLiteral("\\[u%1]").arg(
+                QString::number(uint(c), 16).toUpper().rightJustified(4, QLatin1Char('0')));
         else
             out += QChar(char16_t(c));
     }
@@ -42,8 +43,9 @@ QString ManPage::escape(const QString &text)
 
 QString ManPage::commandsSection(const CommandLine &commandLine)
 {
-    QString roff = QStringLiteral(".SH COMMANDS\n"
-                                  "Each command's usage, as\n.BI \"rtctl \" COMMAND \" \\-\\-help\"\nprints it.\n");
+    QString roff = QStringLiteral(
+        ".SH COMMANDS\n"
+        "Each command's usage, as\n.BI \"rtctl \" COMMAND \" \\-\\-help\"\nprints it.\n");
     for (const auto &command : commandLine.commands()) {
         roff += QStringLiteral(".SS \"rtctl %1\"\n%2\n.PP\n.RS 4\n.nf\n")
                     .arg(escape(command->name()), escape(command->summary()));

@@ -16,7 +16,8 @@ class CommandLine;
 class ManPage
 {
 public:
-    /// The whole page, in roff (man macros), for @p commandLine's commands and RT Studio @p version.
+    /// The whole page, in roff (man macros), for @p commandLine's commands and RT Studio @p
+    /// version.
     static QString roff(const CommandLine &commandLine, const QString &version);
     /// The COMMANDS section alone.
     static QString commandsSection(const CommandLine &commandLine);

@@ -43,7 +43,8 @@ QString readText(const QString &path)
 /// The options a help text names (`-f`, `--export-diagram`), as roff writes them (`\-f`).
 QSet<QString> optionsInRoff(const QString &help)
 {
-    static const QRegularExpression option(QStringLiteral("(?:^|[\\s\\[(|,])(--?[a-zA-Z][a-zA-Z0-9-]*)"));
+    static const QRegularExpression option(
+        QStringLiteral("(?:^|[\\s\\[(|,])(--?[a-zA-Z][a-zA-Z0-9-]*)"));
     QSet<QString> options;
     for (auto it = option.globalMatch(help); it.hasNext();)
         options.insert(it.next().captured(1).replace(QLatin1Char('-'), QStringLiteral("\\-")));
@@ -91,7 +92,8 @@ void TestManPages::rtctlPageHasEveryCommandAndOption()
 {
     const QString page = readText(QStringLiteral(RTCTL_MAN_PAGE));
     const Run help = run(rtctl, {QStringLiteral("--help")});
-    static const QRegularExpression line(QStringLiteral("^  ([a-z]+)  "), QRegularExpression::MultilineOption);
+    static const QRegularExpression line(QStringLiteral("^  ([a-z]+)  "),
+                                         QRegularExpression::MultilineOption);
     QStringList commands;
     for (auto it = line.globalMatch(help.out); it.hasNext();)
         commands << it.next().captured(1);
@@ -104,20 +106,24 @@ void TestManPages::rtctlPageHasEveryCommandAndOption()
             continue;
         }
         const QString section = page.mid(at, page.indexOf(QStringLiteral(".SS "), at + 1) - at);
-        for (const QString &option : optionsInRoff(run(rtctl, {command, QStringLiteral("--help")}).out)) {
+        for (const QString &option :
+             optionsInRoff(run(rtctl, {command, QStringLiteral("--help")}).out)) {
             if (!names(section, option))
                 missing << command + QLatin1Char(' ') + option;
         }
     }
-    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("not in rtctl(1): ") + missing.join(", ")));
+    QVERIFY2(missing.isEmpty(),
+             qPrintable(QStringLiteral("not in rtctl(1): ") + missing.join(", ")));
 }
 
 void TestManPages::pagesNameEveryOptionOfHelp_data()
 {
     QTest::addColumn<QString>("program");
     QTest::addColumn<QString>("page");
-    QTest::newRow("rtstudio") << QStringLiteral(RTSTUDIO_PATH) << QStringLiteral(MAN_PAGE_DIR "/rtstudio.1");
-    QTest::newRow("rtmanager") << QStringLiteral(RTMANAGER_PATH) << QStringLiteral(MAN_PAGE_DIR "/rtmanager.1");
+    QTest::newRow("rtstudio") << QStringLiteral(RTSTUDIO_PATH)
+                              << QStringLiteral(MAN_PAGE_DIR "/rtstudio.1");
+    QTest::newRow("rtmanager") << QStringLiteral(RTMANAGER_PATH)
+                               << QStringLiteral(MAN_PAGE_DIR "/rtmanager.1");
 }
 
 void TestManPages::pagesNameEveryOptionOfHelp()
@@ -153,7 +159,8 @@ void TestManPages::groffFormatsWithoutWarnings()
     if (groff.isEmpty())
         QSKIP("groff is not installed (Debian's groff-base, which man-db brings)");
     QVERIFY(QFile::exists(page));
-    const Run formatted = run(groff, {QStringLiteral("-man"), QStringLiteral("-ww"), QStringLiteral("-z"), page});
+    const Run formatted
+        = run(groff, {QStringLiteral("-man"), QStringLiteral("-ww"), QStringLiteral("-z"), page});
     QCOMPARE(formatted.code, 0);
     QVERIFY2(formatted.err.isEmpty(), qPrintable(formatted.err));
 }

@@ -310,7 +310,10 @@ bool showOnline(Studio::MainWindow &window, const Pictures &pictures, LiveTest::
     if (!online || !online->diagram())
         return false;
     SystemEditor::OnlineDiagram *diagram = online->diagram();
-    const int components = int(editorOf(window, QFileInfo(systemFile).fileName())->document()->model()->componentIds().size());
+    const Studio::RtsEditor *system = editorOf(window, QFileInfo(systemFile).fileName());
+    if (!system)
+        return false;
+    const int components = int(system->document()->model()->componentIds().size());
     if (!QTest::qWaitFor([&] { return diagram->model()->componentIds().size() == components; }, 15000))
         return false;
     diagram->findChild<QAction *>(QStringLiteral("actionStartAll"))->trigger();
