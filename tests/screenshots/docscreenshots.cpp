@@ -267,21 +267,27 @@ bool restoreThroughDialog(Studio::MainWindow &window, const Pictures &pictures, 
     return listed.wait(15000);
 }
 
+QDockWidget *dockOf(const Studio::MainWindow &window, const QWidget *view)
+{
+    for (QDockWidget *dock : window.onlineDocks()->docks()) {
+        if (dock->widget() == view)
+            return dock;
+    }
+    return nullptr;
+}
+
 /// The Port Monitor's dock alone, for its own section, taller than beside the diagram.
 bool savePortMonitor(Studio::MainWindow &window, const Pictures &pictures)
 {
-    const QList<QDockWidget *> docks = window.onlineDocks()->docks();
-    const auto dock = std::find_if(docks.begin(), docks.end(), [&](QDockWidget *d) {
-        return d->widget() == window.onlineDocks()->portMonitor();
-    });
-    if (dock == docks.end())
+    QDockWidget *const dock = dockOf(window, window.onlineDocks()->portMonitor());
+    if (!dock)
         return false;
     // The diagram above keeps its minimum height: the window grows for the taller dock.
     window.resize(window.width(), window.height() + 160);
     QApplication::processEvents();
-    window.resizeDocks({*dock}, {340}, Qt::Vertical);
-    return QTest::qWaitFor([&] { return (*dock)->height() >= 300; }, 5000)
-        && pictures.save(*dock, QStringLiteral("portmonitor"));
+    window.resizeDocks({dock}, {340}, Qt::Vertical);
+    return QTest::qWaitFor([&] { return dock->height() >= 300; }, 5000)
+        && pictures.save(dock, QStringLiteral("portmonitor"));
 }
 
 /**
@@ -300,6 +306,9 @@ bool showOnline(Studio::MainWindow &window, const Pictures &pictures, LiveTest::
     }
     window.showPerspective(Studio::Perspective::Id::SystemEditor);
     SystemEditor::NameServiceView *names = window.onlineDocks()->nameService();
+    // Wide enough for the components below the manager with their states, in either language.
+    if (QDockWidget *dock = dockOf(window, names))
+        window.resizeDocks({dock}, {340}, Qt::Horizontal);
     QSignalSpy refreshed(names, &SystemEditor::NameServiceView::serverRefreshed);
     if (!names->addServer(live.namingServer()) || !refreshed.wait(15000)
         || !restoreThroughDialog(window, pictures, systemFile,
