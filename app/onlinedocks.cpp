@@ -528,6 +528,9 @@ SystemEditor::RestoreDialog *OnlineDocks::openRestore(const Profile::RtsProfile 
     dialog->setObjectName(QStringLiteral("restoreDialog"));
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setManagers(knownManagers());
+    // A restore registers the components it creates: the tree shows them without a Refresh.
+    connect(dialog, &SystemEditor::RestoreDialog::restored, m_nameService,
+            &SystemEditor::NameServiceView::refresh);
     dialog->show();
     dialog->plan();
     return dialog;

@@ -6,6 +6,11 @@
 #include <QScrollBar>
 #include <QTextBlock>
 #include <QFileInfo>
+#include <QImage>
+#include <QTextCursor>
+#include <QTextDocument>
+#include <QTextFragment>
+#include <QTextList>
 #include <QTextBrowser>
 #include <QToolBar>
 #include <QUrl>
@@ -31,6 +36,7 @@ UserGuide::UserGuide(QWidget *parent)
     m_forward->setEnabled(false);
     connect(m_browser, &QTextBrowser::backwardAvailable, m_back, &QAction::setEnabled);
     connect(m_browser, &QTextBrowser::forwardAvailable, m_forward, &QAction::setEnabled);
+    connect(m_browser, &QTextBrowser::sourceChanged, this, &UserGuide::fitPictures);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
@@ -58,7 +64,62 @@ void UserGuide::showSection(const QString &name, const QString &section, const Q
 void UserGuide::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    fitPictures();
     scrollToPendingSection();
+}
+
+void UserGuide::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    fitPictures();
+}
+
+// Screenshots are as wide as the windows they show: scaled down to the page's width (less a list's
+// indent), each is seen whole without scrolling sideways. Smaller ones keep their size.
+void UserGuide::fitPictures()
+{
+    QTextDocument *document = m_browser->document();
+    const qreal width = m_browser->viewport()->width() - document->documentMargin();
+    if (width <= 0)
+        return;
+    struct Picture
+    {
+        QTextFragment fragment;
+        QTextImageFormat format;
+        qreal room;
+    };
+    // Collected first: changing a fragment's format while iterating would split the fragments.
+    QList<Picture> pictures;
+    for (QTextBlock block = document->begin(); block.isValid(); block = block.next()) {
+        // A picture in a list item starts at the item's indent.
+        const QTextBlockFormat format = block.blockFormat();
+        qreal left = document->documentLayout()->blockBoundingRect(block).left() + format.leftMargin()
+            + format.indent() * document->indentWidth();
+        if (const QTextList *list = block.textList())
+            left += list->format().indent() * document->indentWidth();
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            if (it.fragment().charFormat().isImageFormat())
+                pictures.append({it.fragment(), it.fragment().charFormat().toImageFormat(), width - left});
+        }
+    }
+    QTextCursor cursor(document);
+    bool changed = false;
+    for (Picture &picture : pictures) {
+        const QVariant data = m_browser->loadResource(QTextDocument::ImageResource, QUrl(picture.format.name()));
+        const QSize natural = data.typeId() == QMetaType::QByteArray ? QImage::fromData(data.toByteArray()).size()
+                                                                     : data.value<QImage>().size();
+        const qreal shown = std::min<qreal>(natural.width(), picture.room);
+        if (natural.isEmpty() || shown <= 0 || qFuzzyCompare(picture.format.width(), shown))
+            continue;
+        picture.format.setWidth(shown);
+        picture.format.setHeight(natural.height() * shown / natural.width());
+        cursor.setPosition(picture.fragment.position());
+        cursor.setPosition(picture.fragment.position() + picture.fragment.length(), QTextCursor::KeepAnchor);
+        cursor.setCharFormat(picture.format);
+        changed = true;
+    }
+    if (changed)
+        document->size(); // lays the page out again now: link and heading positions are read from it
 }
 
 // Markdown headings get no anchors in QTextDocument: find the heading block and scroll to it, once

@@ -40,9 +40,11 @@ public:
 
 protected:
     void showEvent(QShowEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     void scrollToPendingSection();
+    void fitPictures();
 
     QTextBrowser *m_browser;
     QString m_pendingSection;

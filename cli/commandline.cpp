@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "commandline.h"
+#include "manpage.h"
 #include "buildcommand.h"
 #include "gencommand.h"
 #include "idlcommand.h"
@@ -65,6 +66,11 @@ int CommandLine::run(const QStringList &arguments, Streams streams)
     if (first == QLatin1String("--help") || first == QLatin1String("-h")
         || first == QLatin1String("help")) {
         streams.out << help();
+        return ExitOk;
+    }
+    // Not in --help: the build writes rtctl(1) with it.
+    if (first == QLatin1String("--man")) {
+        streams.out << ManPage::roff(*this, QStringLiteral(RTSTUDIO_VERSION));
         return ExitOk;
     }
     if (first == QLatin1String("--version")) {

@@ -21,6 +21,8 @@ public:
     int run(const QStringList &arguments, Streams streams);
 
     QString help() const;
+    /// The commands in the order `rtctl --help` lists them.
+    const std::vector<std::unique_ptr<Command>> &commands() const { return m_commands; }
 
 private:
     Command *find(const QString &name) const;

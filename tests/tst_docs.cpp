@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The documentation stays true: every relative link and image of README.md and docs/ names a file
-// that exists, and every `rtctl COMMAND --option` the pages show is a command and an option that
-// `rtctl COMMAND --help` describes.
+// that exists, every `rtctl COMMAND --option` the pages show is a command and an option that
+// `rtctl COMMAND --help` describes, and the other way round docs/rtctl.md shows every command of
+// `rtctl --help` and names every long option of its `--help`.
 #include "rtctlrunner.h"
 
 #include <QDir>
@@ -53,6 +54,24 @@ QStringList codeTexts(const QString &markdown)
     return texts;
 }
 
+/// The long options a command's --help offers: those of its usage lines (`rtctl …`) and of its
+/// option table (lines starting with an option), not ones of other programs its prose mentions.
+QStringList longOptions(const QString &help)
+{
+    static const QRegularExpression option(QStringLiteral("(?:^|[\\s\\[(|,])(--[a-z][a-z0-9-]*)"));
+    static const QRegularExpression optionLine(QStringLiteral("^\\s*[-\\[]"));
+    QStringList options;
+    for (const QString &line : help.split(QLatin1Char('\n'))) {
+        if (!line.contains(QLatin1String("rtctl ")) && !optionLine.match(line).hasMatch())
+            continue;
+        for (auto it = option.globalMatch(line); it.hasNext();)
+            options << it.next().captured(1);
+    }
+    options.removeAll(QStringLiteral("--help"));
+    options.removeDuplicates();
+    return options;
+}
+
 } // namespace
 
 class TestDocs : public QObject
@@ -65,6 +84,7 @@ private slots:
     void linksExist();
     void rtctlCommandsExist_data();
     void rtctlCommandsExist();
+    void rtctlReferenceIsComplete();
     void setUpCommandsAgree();
 
 private:
@@ -146,6 +166,26 @@ void TestDocs::rtctlCommandsExist()
         }
     }
     QVERIFY2(problems.isEmpty(), qPrintable(file + QStringLiteral(":\n") + problems.join('\n')));
+}
+
+void TestDocs::rtctlReferenceIsComplete()
+{
+    const QString reference = readText(QStringLiteral("docs/rtctl.md"));
+    const QString code = codeTexts(reference).join(QLatin1Char('\n'));
+    QStringList missing;
+    for (const QString &command : std::as_const(m_commands)) {
+        // `rtctl act|deact|reset` shows three.
+        const QRegularExpression shown(QStringLiteral("rtctl\\s+(?:[a-z]+\\|)*%1(?![a-z])").arg(command));
+        if (!shown.match(code).hasMatch())
+            missing << QStringLiteral("rtctl ") + command;
+        for (const QString &name : longOptions(help(command))) {
+            const QRegularExpression named(QStringLiteral("%1(?![a-z0-9-])").arg(name));
+            if (!named.match(reference).hasMatch())
+                missing << QStringLiteral("rtctl %1 %2").arg(command, name);
+        }
+    }
+    missing.removeDuplicates();
+    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("docs/rtctl.md does not show: ") + missing.join(", ")));
 }
 
 // The README starts with the two set-up commands; CI runs the second one, the Japanese README

@@ -330,7 +330,10 @@ void TestOnlineDocks::restoresASystemThroughTheOnlineMenu()
     QVERIFY(!window.statusBar()->currentMessage().isEmpty());
     QVERIFY(!window.findChild<SystemEditor::RestoreDialog *>("restoreDialog"));
 
+    QSignalSpy refreshed(window.onlineDocks()->nameService(), &SystemEditor::NameServiceView::serverRefreshed);
     window.onlineDocks()->nameService()->addServer(m_live.namingServer());
+    QVERIFY(refreshed.wait(15000));
+    refreshed.clear();
     Profile::RtsProfile profile;
     Profile::RtsComponent in;
     in.id = QStringLiteral("RTC:AIST:example:ConsoleIn:1.0");
@@ -342,6 +345,10 @@ void TestOnlineDocks::restoresASystemThroughTheOnlineMenu()
     QCOMPARE(dialog->componentTable()->rowCount(), 1);
     QCOMPARE(dialog->componentTable()->item(0, 2)->text(), QStringLiteral("existing"));
     QVERIFY(dialog->componentTable()->item(0, 3)->text().contains("dockhost.host_cxt"));
+    // What a restore created is in the tree at once.
+    QCOMPARE(refreshed.size(), 0);
+    emit dialog->restored(true);
+    QVERIFY(refreshed.wait(15000));
     dialog->close();
 }
 

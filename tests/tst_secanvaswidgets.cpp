@@ -21,6 +21,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QWhatsThis>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QLabel>
@@ -91,15 +92,23 @@ void TestSeCanvasWidgets::dialogShowsDefaults()
     QCOMPARE(combo(dialog, "dataflowType")->currentText(), QStringLiteral("push"));
     QCOMPARE(combo(dialog, "subscriptionType")->currentText(), QStringLiteral("flush"));
     QCOMPARE(edit(dialog, "pushRate")->text(), QStringLiteral("1000.0"));
+    // Settings left to the ports say "default", combo boxes as well as fields.
+    for (const char *name : {"marshalingType", "outFullPolicy", "inEmptyPolicy"}) {
+        QCOMPARE(combo(dialog, name)->currentText(), QString());
+        QCOMPARE(combo(dialog, name)->lineEdit()->placeholderText(), QStringLiteral("default"));
+    }
+    QCOMPARE(edit(dialog, "outBufferLength")->placeholderText(), QStringLiteral("default"));
     QVERIFY(okButton(dialog)->isEnabled());
     QCOMPARE(dialog.settings(), defaults());
 }
 
-// What's This on every setting names the dataport.* / buffer.* key it sets.
+// What's This on every setting says what it is; on each dataport.* / buffer.* field it names that key.
 void TestSeCanvasWidgets::dialogExplainsEverySetting()
 {
     ConnectorDialog dialog(defaults());
     const QList<std::pair<const char *, const char *>> settings = {
+        {"name", "The connector's name"}, {"connectDirection", "Which port calls connect()"},
+        {"properties", "Properties without a field"},
         {"interfaceType", "dataport.interface_type"}, {"marshalingType", "dataport.marshaling_type"},
         {"dataflowType", "dataport.dataflow_type"}, {"subscriptionType", "dataport.subscription_type"},
         {"pushRate", "dataport.push_rate"}, {"pushPolicy", "dataport.publisher.push_policy"}, {"skipCount", "dataport.publisher.skip_count"},
@@ -111,6 +120,22 @@ void TestSeCanvasWidgets::dialogExplainsEverySetting()
         QVERIFY2(widget, name);
         QVERIFY2(widget->whatsThis().startsWith(QLatin1String(key)), qPrintable(QLatin1String(name) + ": " + widget->whatsThis()));
     }
+    // Shift+F1 in a field shows its text.
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    QLineEdit *length = edit(dialog, "outBufferLength");
+    length->setFocus();
+    QTRY_VERIFY(length->hasFocus());
+    QTest::keyClick(length, Qt::Key_F1, Qt::ShiftModifier);
+    const auto shown = [] {
+        for (QWidget *window : QApplication::topLevelWidgets()) {
+            if (window->inherits("QWhatsThat") && window->isVisible())
+                return true;
+        }
+        return false;
+    };
+    QTRY_VERIFY(shown());
+    QWhatsThis::hideText();
 }
 
 void TestSeCanvasWidgets::dialogEnablingRules_data()

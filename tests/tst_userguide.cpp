@@ -4,11 +4,20 @@
 // translated into the GUI's language is shown in it.
 #include "componenteditor.h"
 #include "mainwindow.h"
+#include "onlinediagram.h"
+#include "onlinedocks.h"
+#include "onlinedocument.h"
+#include "portmonitor.h"
+#include "nameserviceview.h"
 #include "planview.h"
 #include "rtseditor.h"
 #include "userguide.h"
 
+#include <QAbstractItemView>
+#include <QAbstractTextDocumentLayout>
 #include <QAction>
+#include <QDockWidget>
+#include <QGraphicsView>
 #include <QDir>
 #include <QDirIterator>
 #include <QSettings>
@@ -17,6 +26,8 @@
 #include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
+#include <QImage>
+#include <QPixmap>
 
 using Studio::UserGuide;
 
@@ -40,6 +51,22 @@ QPoint linkPosition(QTextBrowser *browser, const QString &href)
     return {};
 }
 
+/// True when @p browser shows the heading @p section: at the top, or on screen when the page ends too
+/// soon after it to scroll it there.
+bool showsHeading(QTextBrowser *browser, const QString &section)
+{
+    QAbstractTextDocumentLayout *layout = browser->document()->documentLayout();
+    const int top = browser->verticalScrollBar()->value();
+    for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() == 0 || block.text() != section)
+            continue;
+        const int at = int(layout->blockBoundingRect(block).top());
+        return qAbs(at - top) <= 1
+            || (top == browser->verticalScrollBar()->maximum() && at > top && at < top + browser->viewport()->height());
+    }
+    return false;
+}
+
 } // namespace
 
 class TestUserGuide : public QObject
@@ -51,6 +78,8 @@ private slots:
     void everyPageIsBuiltIn();
     void helpShowsGettingStarted();
     void linksAreFollowed();
+    void picturesAreShown_data();
+    void picturesAreShown();
     void troubleshooting();
     void f1ShowsTheSectionOfTheViewInFront();
     void japanesePagesFirst();
@@ -100,6 +129,47 @@ void TestUserGuide::helpShowsGettingStarted()
     // Asked again, the same window comes back.
     action->trigger();
     QCOMPARE(window.userGuide(), guide);
+}
+
+void TestUserGuide::picturesAreShown_data()
+{
+    QTest::addColumn<QString>("page");
+    QTest::addColumn<QString>("language");
+    QTest::newRow("getting started") << QStringLiteral("getting-started.md") << QStringLiteral("en");
+    QTest::newRow("はじめに") << QStringLiteral("getting-started.md") << QStringLiteral("ja");
+    QTest::newRow("the IDE") << QStringLiteral("rtstudio.md") << QStringLiteral("en");
+}
+
+// The screenshots a page shows are built in with it: each image of the page loads.
+void TestUserGuide::picturesAreShown()
+{
+    QFETCH(QString, page);
+    QFETCH(QString, language);
+    UserGuide guide;
+    guide.showPage(page, language);
+    QTextBrowser *browser = guide.browser();
+    QStringList images;
+    QStringList missing;
+    for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next()) {
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextCharFormat format = it.fragment().charFormat();
+            if (!format.isImageFormat())
+                continue;
+            const QString name = format.toImageFormat().name();
+            images << name;
+            const QVariant image = browser->loadResource(QTextDocument::ImageResource, QUrl(name));
+            if (image.value<QImage>().isNull() && image.value<QPixmap>().isNull()
+                && image.toByteArray().isEmpty())
+                missing << name;
+        }
+    }
+    QVERIFY2(images.size() >= 2, qPrintable(images.join(", ")));
+    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("not built in: ") + missing.join(", ")));
+    // Shown, each fits the window's width: nothing to scroll sideways for.
+    guide.resize(900, 700);
+    guide.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&guide));
+    QCOMPARE(browser->horizontalScrollBar()->maximum(), 0);
 }
 
 void TestUserGuide::linksAreFollowed()
@@ -180,6 +250,27 @@ void TestUserGuide::f1ShowsTheSectionOfTheViewInFront()
     window.activateWindow();
     pressF1();
     QCOMPARE(window.userGuide()->sectionAtTop(), QStringLiteral("Plan view"));
+    // The online views: the Name Service dock, the Port Monitor and an online diagram's tab.
+    window.findChild<QAction *>(QStringLiteral("actionNewOnlineDiagram"))->trigger();
+    auto *online = qobject_cast<Studio::OnlineDocument *>(window.activeDocument());
+    QVERIFY(online);
+    const std::pair<QWidget *, QString> views[]
+        = {{window.onlineDocks()->nameService(), QStringLiteral("Online")},
+           {window.onlineDocks()->portMonitor(), QStringLiteral("Port Monitor")},
+           {online->diagram()->view(), QStringLiteral("Online")}};
+    for (const auto &[view, section] : views) {
+        for (QDockWidget *dock : window.onlineDocks()->docks()) {
+            if (dock->isAncestorOf(view))
+                dock->show();
+        }
+        QWidget *target = view->focusPolicy() != Qt::NoFocus ? view : view->findChild<QAbstractItemView *>();
+        QVERIFY(target);
+        target->setFocus();
+        QTRY_VERIFY(target->hasFocus());
+        window.activateWindow();
+        pressF1();
+        QVERIFY2(showsHeading(window.userGuide()->browser(), section), qPrintable(section));
+    }
     // A heading the page lacks shows its top.
     UserGuide guide;
     guide.showSection(QStringLiteral("rtstudio.md"), QStringLiteral("No Such Heading"), QStringLiteral("en"));

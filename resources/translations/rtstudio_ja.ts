@@ -2184,7 +2184,7 @@
         <translation>TLS を準備できません: %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
         <source>omniNames did not start on port %1: %2</source>
         <translation>omniNames がポート %1 で起動しませんでした：%2</translation>
     </message>
@@ -3189,7 +3189,7 @@
         <translation>%1 はローカルランタイムで実行中です。</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+125"/>
         <source>%1 is not a system profile.</source>
         <translation>%1 はシステムプロファイルではありません。</translation>
     </message>
@@ -3434,7 +3434,7 @@
 <context>
     <name>Studio::UserGuide</name>
     <message>
-        <location filename="../../app/userguide.cpp" line="+21"/>
+        <location filename="../../app/userguide.cpp" line="+26"/>
         <source>RT Studio User Guide</source>
         <translation>RT Studio ユーザーガイド</translation>
     </message>
@@ -3675,7 +3675,7 @@
         <translation>InPort バッファ</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+33"/>
         <source>Data flow</source>
         <translation>データフロー</translation>
     </message>
@@ -3721,6 +3721,21 @@
     </message>
     <message>
         <location line="+13"/>
+        <source>The connector&apos;s name (rtctl con -n): the system file and the live ports know it by this name; by default the two ports&apos; names joined by &apos;_&apos;.</source>
+        <translation>コネクタの名前（rtctl con -n）です。システムファイルと稼働中のポートはこの名前でコネクタを識別します。既定では 2 つのポートの名前を「_」でつないだものです。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Which port calls connect(). The system file records that port as the connector&apos;s source; data flows from the OutPort either way.</source>
+        <translation>どちらのポートが connect() を呼ぶかです。システムファイルはそのポートをコネクタの接続元として記録します。データはどちらの場合も OutPort から InPort へ流れます。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Properties without a field above, sent with the connector as they are (rtctl con -p KEY=VALUE): dataport.* settings of other connector types, or your own.</source>
+        <translation>上の欄にないプロパティで、そのままコネクタとともに送られます（rtctl con -p KEY=VALUE）。他のコネクタ型の dataport.* 設定や独自のプロパティに使います。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>dataport.interface_type: how samples travel. corba_cdr sends them as CORBA calls between any two processes; other types need both sides to offer them.</source>
         <translation>dataport.interface_type：データの運び方です。corba_cdr はどの二つのプロセスの間でも CORBA の呼び出しで送ります。ほかの種類は両側がそれを提供している必要があります。</translation>
     </message>
@@ -3785,7 +3800,8 @@
         <translation>buffer.read.timeout：待っている読み出しが待つ時間（秒）です。</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="-71"/>
+        <location line="+96"/>
         <source>default</source>
         <translation>デフォルト</translation>
     </message>
@@ -5406,7 +5422,22 @@ Installs: %1</source>
 <context>
     <name>SystemEditor::RestoreDialog</name>
     <message>
-        <location filename="../../systemeditor/online/restoredialog.cpp" line="+86"/>
+        <location filename="../../systemeditor/online/restoredialog.cpp" line="+46"/>
+        <source>existing</source>
+        <translation>既存</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>create</source>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>missing</source>
+        <translation>不足</translation>
+    </message>
+    <message>
+        <location line="+48"/>
         <source>Restore System</source>
         <translation>システムの復元</translation>
     </message>

@@ -38,6 +38,20 @@ QTableWidgetItem *checkItem(bool checked)
     return item;
 }
 
+/// The mapping in the UI's language (rtctl prints the engine's English names).
+QString mappingText(Deploy::MappingKind kind)
+{
+    switch (kind) {
+    case Deploy::MappingKind::Existing:
+        return RestoreDialog::tr("existing");
+    case Deploy::MappingKind::Create:
+        return RestoreDialog::tr("create");
+    case Deploy::MappingKind::Missing:
+        break;
+    }
+    return RestoreDialog::tr("missing");
+}
+
 QTableWidgetItem *textItem(const QString &text)
 {
     auto *item = new QTableWidgetItem(text);
@@ -312,7 +326,7 @@ void RestoreDialog::showPlan()
         m_components->insertRow(row);
         m_components->setItem(row, NameColumn, textItem(c.instanceName));
         m_components->setItem(row, TypeColumn, textItem(c.typeName));
-        m_components->setItem(row, MappingColumn, textItem(Deploy::mappingKindName(c.kind)));
+        m_components->setItem(row, MappingColumn, textItem(mappingText(c.kind)));
         m_components->setItem(row, PathColumn, textItem(c.message.isEmpty() ? c.path : c.message));
         // Only a component still to be created has a manager to choose.
         QTableWidgetItem *manager = textItem(managerAddress(c.createArgument));

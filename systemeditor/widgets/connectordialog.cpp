@@ -98,6 +98,11 @@ void ConnectorDialog::buildForm(const Choices &choices)
     for (QLineEdit *edit : findChildren<QLineEdit *>())
         connect(edit, &QLineEdit::textChanged, this, &ConnectorDialog::refresh);
     explainSettings();
+    // An empty choice leaves the setting to the ports, as an empty buffer field does: say so alike.
+    for (QComboBox *box : findChildren<QComboBox *>()) {
+        if (box->isEditable() && box->itemText(0).isEmpty())
+            box->lineEdit()->setPlaceholderText(tr("default"));
+    }
     for (QComboBox *box : findChildren<QComboBox *>())
         connect(box, &QComboBox::currentTextChanged, this, &ConnectorDialog::refresh);
     connect(m_connectDirection, &QComboBox::currentIndexChanged, this, &ConnectorDialog::refresh);
@@ -136,6 +141,13 @@ void ConnectorDialog::explainSettings()
         const char *name;
         const char *text;
     } explanations[] = {
+        {"name", QT_TR_NOOP("The connector's name (rtctl con -n): the system file and the live ports know it by "
+                            "this name; by default the two ports' names joined by '_'.")},
+        {"connectDirection", QT_TR_NOOP("Which port calls connect(). The system file records that port as the "
+                                        "connector's source; data flows from the OutPort either way.")},
+        {"properties", QT_TR_NOOP("Properties without a field above, sent with the connector as they are (rtctl "
+                                  "con -p KEY=VALUE): dataport.* settings of other connector types, or your "
+                                  "own.")},
         {"interfaceType", QT_TR_NOOP("dataport.interface_type: how samples travel. corba_cdr sends them as CORBA "
                                      "calls between any two processes; other types need both sides to offer them.")},
         {"marshalingType", QT_TR_NOOP("dataport.marshaling_type: how samples are encoded on the way (cdr unless "
