@@ -87,3 +87,10 @@ if(COMMAND rtstudio_add_interop_test)
         RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
     add_dependencies(tst_interoppython rtpython)
 endif()
+
+# A Python component over TLS (tst_tls runs the case when the Python runtime is built).
+target_compile_definitions(tst_tls PRIVATE
+    RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
+    RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+    RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
+add_dependencies(tst_tls rtpython)

@@ -4,6 +4,7 @@
 // operator's certificate; connections without a certificate, with one of another authority or with
 // an expired one refused while they are set up, with the reason; and `rtctl local start --tls`.
 #include "componentstatus.h"
+#include "pythonenvironment.h"
 #include "livesystem.h"
 #include "rtctlrunner.h"
 #include "simulatedhosts.h"
@@ -51,6 +52,7 @@ private slots:
     void dataFlowsBetweenTwoHosts();
     void localRuntimeWithTls();
     void openRtmTlsConfigurationServes();
+    void pythonComponentOverTls();
 
 private:
     QString path(const QString &name) const { return m_dir.filePath(name); }
@@ -433,6 +435,58 @@ void TestTls::openRtmTlsConfigurationServes()
     QTRY_VERIFY_WITH_TIMEOUT(operatorRtctl({"ls", context}).out.contains("ConsoleOut0.rtc"), 10000);
     QCOMPARE(operatorRtctl({"act", context + "/ConsoleOut0.rtc"}).code, 0);
     m_live.stop(manager);
+}
+
+void TestTls::pythonComponentOverTls()
+{
+#ifndef RTSTUDIO_PYTHON_PATH
+    QSKIP("the Python runtime is not built (pybind11-dev, python3-dev)");
+#else
+    // A Python component with the node's certificate in its rtc.conf, between two components of the
+    // TLS master: samples go in, are multiplied by 1000 in Python, and come out over TLS.
+    QFile conf(path("pyscaler.conf"));
+    QVERIFY(conf.open(QIODevice::WriteOnly | QIODevice::Text));
+    // Its manager named apart from the master's, which it would replace in the name server.
+    conf.write(QStringLiteral("corba.nameservers: %1\nnaming.formats: pytls.host_cxt/%n.rtc\nlogger.enable: NO\n"
+                              "manager.naming_formats: pytls.host_cxt/%n.mgr\n"
+                              "corba.ssl.certificate_authority_file: %2\ncorba.ssl.key_file: %3\n")
+                   .arg(m_live.namingServer(), path("fleet/ca.pem"), path("fleet/node.pem"))
+                   .toUtf8());
+    conf.close();
+    const QString server = QLatin1Char('/') + m_live.namingServer();
+    QString error;
+    QProcess *python = m_live.startRegistered(
+        QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+        {QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/PyScaler.py"), QStringLiteral("-f"), conf.fileName()},
+        [&] { return operatorRtctl({"ls", server + "/pytls.host_cxt"}).out.contains("PyScaler0.rtc"); }, &error, 20000,
+        LiveTest::pythonEnvironment(QStringLiteral(RTSTUDIO_PYTHON_PATH), QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD)));
+    QVERIFY2(python, qPrintable(error));
+
+    const QString managerPath = server + QLatin1Char('/') + hostName() + QStringLiteral(".host_cxt/manager.mgr");
+    const RtctlResult created = operatorRtctl(
+        {"mgr", managerPath, "create", "ConsoleIn?instance_name=PyTlsSource&manager_name=pyslave", "create",
+         "ConsoleOut?instance_name=PyTlsSink&manager_name=pyslave"});
+    QVERIFY2(created.code == 0, qPrintable(created.err + masterOutput()));
+    const QString context = server + QLatin1Char('/') + hostName() + QStringLiteral(".host_cxt/");
+    const QString scaler = server + QStringLiteral("/pytls.host_cxt/PyScaler0.rtc");
+    QTRY_VERIFY_WITH_TIMEOUT(operatorRtctl({"ls", context}).out.contains("PyTlsSink.rtc"), 10000);
+    for (const QStringList &ports : {QStringList {context + "PyTlsSource.rtc:out", scaler + ":in"},
+                                     QStringList {scaler + ":out", context + "PyTlsSink.rtc:in"}}) {
+        const RtctlResult connected = operatorRtctl(QStringList {"con"} + ports);
+        QVERIFY2(connected.code == 0, qPrintable(connected.err));
+    }
+    const RtctlResult activated = operatorRtctl({"act", context + "PyTlsSink.rtc", scaler, context + "PyTlsSource.rtc"});
+    QVERIFY2(activated.code == 0, qPrintable(activated.err));
+    const QString sink = QStringLiteral("corbaname:ssliop:%1#%2.host_cxt/PyTlsSink.rtc").arg(m_live.namingServer(), hostName());
+    QTRY_VERIFY_WITH_TIMEOUT(LiveTest::componentStatus(m_orb, sink, "received_count").toLong() >= 3, 15000);
+    const QList<qint64> values = LiveTest::integers(LiveTest::componentStatus(m_orb, sink, "received_values"));
+    QVERIFY(!values.isEmpty());
+    for (const qint64 value : values)
+        QVERIFY2(value != 0 && value % 1000 == 0, qPrintable(QString::number(value)));
+    const RtctlResult deactivated = operatorRtctl({"deact", context + "PyTlsSource.rtc"});
+    QVERIFY2(deactivated.code == 0, qPrintable(deactivated.err));
+    m_live.stop(python);
+#endif
 }
 
 QTEST_GUILESS_MAIN(TestTls)
