@@ -104,6 +104,7 @@ private slots:
     void cleanupTestCase();
     void dryRunChangesNothing();
     void deployInstallsRestoresAndStarts();
+    void deploysOverTls();
     void pinnedComponentsAreCreatedByTheirNode();
     void typeNoRepositoryProvidesIsRefusedFirst();
     void unsignedRepositoryIsRefused();
@@ -263,6 +264,65 @@ void TestDeployInstall::deployInstallsRestoresAndStarts()
     QVERIFY2(undeployed.out.contains(QStringLiteral("done uninstall %1 on %2").arg(package, manager())),
              qPrintable(undeployed.out));
     QTRY_COMPARE_WITH_TIMEOUT(leftBehind(), QStringList(), 10000);
+}
+
+void TestDeployInstall::deploysOverTls()
+{
+    // The same life cycle with every connection over TLS: the node's name server, manager and install
+    // service serve TLS only, and rtctl presents an operator's certificate of the fleet's authority.
+    const QString fleet = m_work.filePath("fleet");
+    if (!QFileInfo::exists(fleet + "/ca.pem")) {
+        for (const QStringList &step : {QStringList {"tls", "init", fleet}, {"tls", "issue", fleet, "node", "--host", "127.0.0.1"},
+                                        QStringList {"tls", "issue", fleet, "operator"}}) {
+            const RtctlResult made = runRtctl(step);
+            QVERIFY2(made.code == 0, qPrintable(made.err));
+        }
+    }
+    m_live = std::make_unique<LiveTest::LiveSystem>();
+    QString error;
+    QVERIFY2(m_live->startTlsNameServer(fleet + "/ca.pem", fleet + "/node.pem", &error), qPrintable(error));
+    m_managerPort = LiveTest::freePort();
+    const QStringList options = QStringList {"corba.nameservers=" + m_live->namingServer(),
+                                             "naming.formats=deployhost.host_cxt/%n.rtc",
+                                             "manager.naming_formats=deployhost.host_cxt/%n.mgr",
+                                             "corba.ssl.certificate_authority_file=" + fleet + "/ca.pem",
+                                             "corba.ssl.key_file=" + fleet + "/node.pem"}
+        + nodeOptions(m_store);
+    QVERIFY2(m_live->startManager(QStringLiteral(RTMANAGER_PATH), m_managerPort, options, &error), qPrintable(error));
+    const QHash<QString, QString> operatorTls {{"RTSTUDIO_TLS_CA", fleet + "/ca.pem"},
+                                               {"RTSTUDIO_TLS_KEY", fleet + "/operator.pem"},
+                                               {"XDG_RUNTIME_DIR", m_work.path()}};
+    const QStringList target {"--timeout", "20000", "-s", m_live->namingServer(), "-m", manager()};
+    const QString system = DeployTest::dataFile("doubled.xml");
+
+    // Without a certificate nothing is installed.
+    const RtctlResult anonymous = runRtctl(QStringList {"deploy"} + target + QStringList {"--repo", m_repo, system},
+                                           {{"RTSTUDIO_TLS_CA", fleet + "/ca.pem"}, {"XDG_RUNTIME_DIR", m_work.path()}});
+    QCOMPARE(anonymous.code, 1);
+    QVERIFY2(anonymous.err.contains("certificate"), qPrintable(anonymous.err));
+    QVERIFY(filesBelow(m_store).isEmpty());
+
+    const RtctlResult deployed
+        = runRtctl(QStringList {"deploy"} + target + QStringList {"--repo", m_repo, system}, operatorTls);
+    QVERIFY2(deployed.code == 0, qPrintable(deployed.out + deployed.err));
+    QVERIFY2(deployed.out.contains(QStringLiteral("done install %1 1.0.0 on %2").arg(package, manager())),
+             qPrintable(deployed.out));
+    QVERIFY(!filesBelow(m_store).isEmpty());
+    // Started: the packaged Doubler sends the counter's numbers doubled, over TLS to rtctl's port.
+    const QString doubler = QStringLiteral("/%1/deployhost.host_cxt/Doubler0.rtc:out").arg(m_live->namingServer());
+    const RtctlResult printed = runRtctl({"print", "-n", "3", doubler}, operatorTls);
+    QVERIFY2(printed.code == 0 && printed.lines().size() == 3, qPrintable(printed.out + printed.err));
+    for (const QString &line : printed.lines()) {
+        const qint64 value = line.section(QStringLiteral("data="), 1).toLongLong();
+        QVERIFY2(value > 0 && value % 2 == 0, qPrintable(line));
+    }
+
+    const RtctlResult undeployed
+        = runRtctl(QStringList {"undeploy"} + target + QStringList {"--uninstall", system}, operatorTls);
+    QVERIFY2(undeployed.code == 0, qPrintable(undeployed.out + undeployed.err));
+    QVERIFY2(undeployed.out.contains(QStringLiteral("done uninstall %1 on %2").arg(package, manager())),
+             qPrintable(undeployed.out));
+    QTRY_COMPARE_WITH_TIMEOUT(filesBelow(m_store), QStringList(), 10000);
 }
 
 // Without -m and without live saved paths, the planner's pins (deploy.pin) name the creating node.
