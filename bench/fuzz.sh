@@ -3,8 +3,8 @@
 # Runs every libFuzzer harness of tests/fuzz for SECONDS each (or until each has run N inputs), one
 # after the other, and prints a table of executions, coverage and findings.
 #
-#   bench/fuzz.sh SECONDS [HARNESS...]
-#   bench/fuzz.sh --runs N [HARNESS...]
+#   bench/fuzz.sh [--seeds-only] SECONDS [HARNESS...]
+#   bench/fuzz.sh [--seeds-only] --runs N [HARNESS...]
 #
 # Builds what it needs with the `fuzz` preset (clang, ASan + UBSan) in build-fuzz/. Each harness
 # starts from its seeds (tests' data and tests/data/fuzz/<harness>/, listed by CMake in
@@ -12,9 +12,16 @@
 # grew in build-fuzz/fuzz/corpus/<harness>/ (see tests/fuzz/runharness.sh). Findings are written to
 # build-fuzz/fuzz/artifacts/<harness>/ (crash-*, leak-*, timeout-*, oom-*) and printed in base64; the
 # log of each run is build-fuzz/fuzz/<harness>.log. Exits non-zero when anything was found.
+# With --seeds-only each harness starts from its seeds alone, in build-fuzz/fuzz/seeds-only/<harness>/
+# (emptied first), so a run shows what a fresh start finds; the grown corpora stay as they are.
 set -eu
 
-usage="usage: $0 SECONDS [HARNESS...] | $0 --runs N [HARNESS...]"
+usage="usage: $0 [--seeds-only] SECONDS [HARNESS...] | $0 [--seeds-only] --runs N [HARNESS...]"
+fresh= corpus_folder=corpus
+if [ "${1:-}" = --seeds-only ]; then
+    fresh=--fresh corpus_folder=seeds-only
+    shift
+fi
 if [ $# -lt 1 ]; then
     echo "$usage" >&2
     exit 2
@@ -56,8 +63,8 @@ mkdir -p "$work_dir"
 : >"$table"
 status=0
 for harness in "$@"; do
-    nice -n 10 "$source_dir/tests/fuzz/runharness.sh" "$harness_dir/$harness" "$limit" \
-        "$work_dir/corpus/$harness" "$work_dir/artifacts/$harness" "$work_dir/$harness.log" \
+    nice -n 10 "$source_dir/tests/fuzz/runharness.sh" $fresh "$harness_dir/$harness" "$limit" \
+        "$work_dir/$corpus_folder/$harness" "$work_dir/artifacts/$harness" "$work_dir/$harness.log" \
         "$harness_dir/$harness.seeds" >>"$table" || status=1
 done
 
