@@ -208,6 +208,9 @@ def _make_types():
         _scope(scopes, scoped_name)[leaf] = cls
     for scoped_name, value in description["consts"].items():
         _scope(scopes, scoped_name)[scoped_name.split("::")[-1]] = value
+    from omniORB import CORBA
+    for scoped_name in description["typecodes"]:
+        _scope(scopes, scoped_name)["_tc_" + scoped_name.split("::")[-1]] = CORBA.TypeCode(scoped_name)
     _rtstudio.set_idl_classes(classes)
     return scopes
 

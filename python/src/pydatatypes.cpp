@@ -147,7 +147,20 @@ py::dict PyDataTypes::describe() const
         if (const std::optional<qint64> value = constant.integerValue())
             consts[py::str(constant.scopedName.toStdString())] = py::int_(static_cast<long long>(*value));
     }
+    // Every named type, for its `_tc_<Name>` TypeCode in its module.
+    py::list named;
+    const auto addNames = [&named](const auto &types) {
+        for (auto it = types.keyBegin(); it != types.keyEnd(); ++it)
+            named.append(it->toStdString());
+    };
+    addNames(model.structs);
+    addNames(model.unions);
+    addNames(model.enums);
+    addNames(model.typedefs);
+    addNames(model.exceptions);
+    addNames(model.interfaces);
     py::dict description;
+    description["typecodes"] = named;
     description["unions"] = describeUnions(model);
     description["structs"] = structs;
     description["enums"] = enums;

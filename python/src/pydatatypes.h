@@ -32,7 +32,8 @@ public:
      * The declared types for making classes: `structs` (scoped name → member names in
      * declaration order), `enums` (scoped name → enumerator names), `consts` (scoped name →
      * integer value, for those that are integers), `unions` (scoped name → (the enum of the
-     * discriminator or "", the discriminator's type, [(member, [label values], is default)])).
+     * discriminator or "", the discriminator's type, [(member, [label values], is default)])), `typecodes`
+     * (the scoped names of every named type, for their TypeCodes).
      */
     pybind11::dict describe() const;
     /// The classes of the structs and enums, by scoped name.
