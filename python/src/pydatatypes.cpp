@@ -10,6 +10,8 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
+#include <QSet>
 
 namespace py = pybind11;
 
@@ -160,6 +162,7 @@ py::dict PyDataTypes::describe() const
     addNames(model.exceptions);
     addNames(model.interfaces);
     py::dict description;
+    description["files"] = describeFiles(model);
     description["typecodes"] = named;
     description["unions"] = describeUnions(model);
     description["structs"] = structs;
@@ -181,6 +184,29 @@ py::object labelObject(const QJsonValue &label)
 }
 
 } // namespace
+
+py::dict PyDataTypes::describeFiles(const Codegen::IdlModel &model)
+{
+    // Each file's base name → the top-level modules it declares things in (omniidl's <Base>_idl).
+    QMap<QString, QSet<QString>> modules;
+    for (const Codegen::IdlDeclaration &declaration : model.declarations) {
+        if (declaration.kind == Codegen::IdlDeclaration::Kind::Module || declaration.source.file.isEmpty())
+            continue;
+        const QString top = declaration.scopedName.contains(QStringLiteral("::"))
+            ? declaration.scopedName.section(QStringLiteral("::"), 0, 0) : QStringLiteral("_GlobalIDL");
+        modules[QFileInfo(declaration.source.file).completeBaseName()].insert(top);
+    }
+    py::dict files;
+    for (auto it = modules.constBegin(); it != modules.constEnd(); ++it) {
+        QStringList names = it.value().values();
+        names.sort();
+        py::list list;
+        for (const QString &name : std::as_const(names))
+            list.append(name.toStdString());
+        files[py::str(it.key().toStdString())] = list;
+    }
+    return files;
+}
 
 py::dict PyDataTypes::describeUnions(const Codegen::IdlModel &model)
 {

@@ -219,12 +219,14 @@ py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QS
 {
     if (!value.isObject())
         return py::none();
-    // A reference of an interface whose stub module is imported is one to call, as omniORBpy gives it.
-    if (!interfaceName.isEmpty()) {
+    // A reference of an interface whose stub module is imported is one to call, as omniORBpy gives it;
+    // so is any reference a call returns (a CORBA::Object of the type its IOR names, to _narrow).
+    if (!interfaceName.isEmpty() || t_callableReferences) {
         const py::object omniORB = py::module_::import("omniORB");
-        const py::object cls
-            = omniORB.attr("objrefClass")(m_model.repositoryId(interfaceName).toStdString(), t_callableReferences);
-        if (!cls.is(omniORB.attr("CORBA").attr("Object"))) {
+        const QString typeId = interfaceName.isEmpty() ? value[QStringLiteral("type_id")].toString()
+                                                       : m_model.repositoryId(interfaceName);
+        const py::object cls = omniORB.attr("objrefClass")(typeId.toStdString(), t_callableReferences);
+        if (!cls.is(omniORB.attr("CORBA").attr("Object")) || t_callableReferences) {
             CORBA::Object_var object = Runtime::theOrb()->string_to_object(IorForm::toIor(value).c_str());
             return cls(py::cast(PyObjectRef(object.in())));
         }
