@@ -883,12 +883,17 @@ bool CdrCodec::knows(const QString &type) const
 QJsonValue CdrCodec::decode(const QString &type, const QByteArray &cdr, bool littleEndian,
                             QString *error) const
 {
+    return decodeValue(IdlType::named(type), cdr, littleEndian, error);
+}
+
+QJsonValue CdrCodec::decodeValue(const IdlType &type, const QByteArray &cdr, bool littleEndian, QString *error) const
+{
     try {
         ByteInput input(cdr);
         Reader reader(m_model, input, littleEndian);
-        const QJsonValue value = reader.read(IdlType::named(type));
+        const QJsonValue value = reader.read(type);
         if (input.remaining() > 7) // at most the padding of a last member
-            throw Failure {QStringLiteral("%1 bytes left over after a %2").arg(input.remaining()).arg(type)};
+            throw Failure {QStringLiteral("%1 bytes left over after a %2").arg(input.remaining()).arg(type.toString())};
         return value;
     } catch (const Failure &failure) {
         if (error)
@@ -900,8 +905,13 @@ QJsonValue CdrCodec::decode(const QString &type, const QByteArray &cdr, bool lit
 QByteArray CdrCodec::encode(const QString &type, const QJsonValue &value, bool littleEndian,
                             QString *error) const
 {
+    return encodeValue(IdlType::named(type), value, littleEndian, error);
+}
+
+QByteArray CdrCodec::encodeValue(const IdlType &type, const QJsonValue &value, bool littleEndian, QString *error) const
+{
     ByteOutput output;
-    if (!write(IdlType::named(type), value, output, littleEndian, error))
+    if (!write(type, value, output, littleEndian, error))
         return {};
     return output.m_bytes;
 }

@@ -76,6 +76,11 @@ public:
     QByteArray encode(const QString &type, const QJsonValue &value, bool littleEndian,
                       QString *error) const;
 
+    /// decode() and encode() of a value of any type (`sequence<long>`, a basic type, …), as
+    /// omniORB's cdrMarshal writes it.
+    QJsonValue decodeValue(const IdlType &type, const QByteArray &cdr, bool littleEndian, QString *error) const;
+    QByteArray encodeValue(const IdlType &type, const QJsonValue &value, bool littleEndian, QString *error) const;
+
     /// Reads one value of @p type from @p input (an operation's parameter, say); on failure an
     /// undefined value and the reason.
     QJsonValue read(const IdlType &type, CdrInput &input, bool littleEndian, QString *error) const;

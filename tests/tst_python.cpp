@@ -383,7 +383,8 @@ void TestPython::rtcHandleWalksTheNameServer()
                                 QStringLiteral("rtchandle: state ACTIVE_STATE\n"),
                                 QStringLiteral("rtchandle: deactivate RTC_OK\n"),
                                 QStringLiteral("rtchandle: by name True\n"),
-                                QStringLiteral("rtchandle: nvlist {'a': 'b', 'n': 3}\n")})
+                                QStringLiteral("rtchandle: nvlist {'a': 'b', 'n': 3}\n"),
+                                QStringLiteral("rtchandle: rtc_handle10_11 RtcHandle\n")})
         QVERIFY2(output.contains(line), qPrintable(line + output));
     QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "delete", "HandleFeed"}));
     stopConfigComponent(config);

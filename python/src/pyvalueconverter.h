@@ -28,6 +28,8 @@ public:
     QJsonValue toJson(const Codegen::IdlType &type, pybind11::handle value, const QString &path) const;
     /// The Python value of the codec's @p value of @p type.
     pybind11::object toPython(const Codegen::IdlType &type, const QJsonValue &value) const;
+    /// The model's type @p name names; refused (TypeError naming @p path) when it names none.
+    Codegen::IdlType typeNamed(const QString &name, const QString &path) const;
 
     /**
      * While one lives in a thread, the references toPython() makes there are ones to call (a service
@@ -63,8 +65,6 @@ private:
     /// A CORBA.TypeCode as the name of its IDL type (Codegen::CdrTypeCode's text) and back.
     QJsonValue typeCodeToJson(pybind11::handle value, const QString &path) const;
     static pybind11::object typeCodeToPython(const QString &name);
-    /// The model's type @p name names; refused (TypeError naming @p path) when it names none.
-    Codegen::IdlType typeNamed(const QString &name, const QString &path) const;
     QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
     pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
     pybind11::object listToPython(const Codegen::IdlType &element, const QJsonValue &value) const;

@@ -4,7 +4,10 @@
 #include "bindings.h"
 #include "pydatatypes.h"
 
+#include "cdrcodec.h"
 #include "cdrtypecode.h"
+
+#include <QJsonValue>
 
 namespace py = pybind11;
 using Codegen::IdlType;
@@ -98,10 +101,40 @@ py::dict typeCodeInfo(const std::string &text)
     return info;
 }
 
+/// omniORBpy's cdrMarshal(): @p value of the type @p name names as plain CDR (no byte-order octet).
+py::bytes marshal(const std::string &name, py::handle value, bool littleEndian)
+{
+    const PyDataTypes &types = PyDataTypes::instance();
+    const QString text = QString::fromStdString(name);
+    const IdlType type = types.converter().typeNamed(text, text);
+    QString error;
+    const QByteArray bytes = types.codec().encodeValue(type, types.converter().toJson(type, value, text), littleEndian, &error);
+    if (!error.isEmpty())
+        throw py::type_error(error.toStdString());
+    return py::bytes(bytes.constData(), size_t(bytes.size()));
+}
+
+/// omniORBpy's cdrUnmarshal(): a value of the type @p name names from plain CDR.
+py::object unmarshal(const std::string &name, const py::bytes &data, bool littleEndian)
+{
+    const PyDataTypes &types = PyDataTypes::instance();
+    const QString text = QString::fromStdString(name);
+    const IdlType type = types.converter().typeNamed(text, text);
+    QString error;
+    const QJsonValue value = types.codec().decodeValue(type, QByteArray::fromStdString(data), littleEndian, &error);
+    if (!error.isEmpty())
+        throw py::value_error(error.toStdString());
+    return types.converter().toPython(type, value);
+}
+
 } // namespace
 
 void bindTypeCodes(py::module_ &module)
 {
+    module.def("cdr_marshal", &marshal, py::arg("name"), py::arg("value"), py::arg("little_endian"),
+               "@p value of the type @p name names as CDR bytes.");
+    module.def("cdr_unmarshal", &unmarshal, py::arg("name"), py::arg("data"), py::arg("little_endian"),
+               "A value of the type @p name names from CDR bytes.");
     module.def("typecode_info", &typeCodeInfo, py::arg("name"),
                "The kind, id, name, members, content and length of the type @p name names; ValueError "
                "when the IDL declares no such type.");

@@ -3,7 +3,8 @@
 # CORBA.Any as omniORBpy's (a TypeCode and a value; omniORB.any.to_any / from_any) in data types:
 # SDOPackage.NameValue and NVLists convert to CDR and back with basic values, strings, structs,
 # enums, unions, sequences, anys and TypeCodes; CORBA.TypeCode values (CORBA.TC_*, RTC._tc_<Type>)
-# tell their kind and members, SDOPackage.Parameter carries one; an Any of an undeclared type is
+# tell their kind and members, SDOPackage.Parameter carries one, omniORB.cdrMarshal / cdrUnmarshal
+# write and read values by TypeCode; an Any of an undeclared type is
 # refused; and OpenRTM_aist.NVUtil makes and reads NVLists. Exits non-zero on the first failure.
 
 import _rtstudio
@@ -74,6 +75,17 @@ def typecodes():
     assert back.type == RTC._tc_TimedDoubleSeq and back.allowed_values.allowed_enum.enumerated_values == ["a"]
 
 
+def cdr():
+    import omniORB
+    sample = RTC.TimedShort(RTC.Time(1, 2), -3)
+    data = omniORB.cdrMarshal(RTC._tc_TimedShort, sample, 1)
+    assert data == _rtstudio.cdr_encode(sample), data
+    assert omniORB.cdrUnmarshal(RTC._tc_TimedShort, data, 1) == sample
+    big = omniORB.cdrMarshal(CORBA.TypeCode("sequence<long>"), [1, -2], 0)
+    assert big == b"\0\0\0\2\0\0\0\1\xff\xff\xff\xfe", big
+    assert omniORB.cdrUnmarshal(CORBA.TypeCode("sequence<long>"), big, 0) == [1, -2]
+
+
 def nvlists():
     nv = [NVUtil.newNV("dataport.interface_type", "corba_cdr"), NVUtil.newNV("count", 3)]
     assert NVUtil.find_index(nv, "count") == 1 and NVUtil.find_index(nv, "none") == -1
@@ -93,6 +105,7 @@ def main():
     anys()
     constructed()
     typecodes()
+    cdr()
     nvlists()
     print("anys: ok")
 

@@ -27,6 +27,9 @@ def main():
     print("rtchandle: deactivate", handle.deactivate())
     print("rtchandle: by name", ns.get_object_by_name(path)._is_a("IDL:omg.org/RTC/RTObject:1.0"))
     print("rtchandle: nvlist", rtc_handle.nvlist2dict(rtc_handle.dict2nvlist({"a": "b", "n": 3})))
+    # Its OpenRTM-aist 1.0 / 1.1 variant (AutoTestComposite.py's) imports omniORB.cdrMarshal too.
+    import rtc_handle10_11
+    print("rtchandle: rtc_handle10_11", rtc_handle10_11.RtcHandle.__name__)
 
 
 if __name__ == "__main__":
