@@ -64,6 +64,7 @@ private slots:
     void autoControlRunsUnchanged();
     void throughputRunsUnchanged();
     void staticFsmRunsUnchanged();
+    void serializerExampleRunsUnchanged();
     void dataTypesConvert_data();
     void dataTypesConvert();
 
@@ -81,6 +82,11 @@ private:
     QString printed(QProcess *process) { return m_printed.of(process); }
     /// The process id of the slave manager named @p name (0 when the master has none such).
     qint64 slavePid(const QString &name) const;
+    /// The port @p port of @p component in the host's context; nil when not found.
+    RTC::PortService_ptr portOf(const QString &component, const QString &port) const;
+    /// Connects @p from to @p to (ports as `Comp0.rtc:out`) with @p properties through their
+    /// references, as a manager's preconnect does (rtctl con checks data types first).
+    bool connectThroughOrb(const QString &from, const QString &to, const QList<std::pair<QString, QString>> &properties) const;
     /// Ticks the ExtTrigExecutionContext @p component owns, as OpenRTM's Connector.py does.
     bool tick(const QString &component) const;
     /// `rtctl @p arguments` left running in the host's context (stopped with the test's processes).
@@ -122,6 +128,45 @@ bool TestPythonExamples::tick(const QString &component) const
         return true;
     } catch (const CORBA::Exception &error) {
         qWarning() << "tick" << component << error._name();
+        return false;
+    }
+}
+
+RTC::PortService_ptr TestPythonExamples::portOf(const QString &component, const QString &port) const
+{
+    const QString name = QStringLiteral("corbaname::%1#%2.host_cxt/%3").arg(m_live.namingServer(), hostName, component);
+    CORBA::Object_var object = m_orb->string_to_object(name.toUtf8().constData());
+    RTC::RTObject_var rtc = RTC::RTObject::_narrow(object);
+    RTC::PortServiceList_var ports = rtc->get_ports();
+    const QString wanted = component.section(QLatin1Char('.'), 0, 0) + QLatin1Char('.') + port;
+    for (CORBA::ULong i = 0; i < ports->length(); ++i) {
+        RTC::PortProfile_var profile = ports[i]->get_port_profile();
+        if (wanted == QLatin1String(profile->name.in()))
+            return RTC::PortService::_duplicate(ports[i]);
+    }
+    return RTC::PortService::_nil();
+}
+
+bool TestPythonExamples::connectThroughOrb(const QString &from, const QString &to,
+                                           const QList<std::pair<QString, QString>> &properties) const
+{
+    try {
+        RTC::ConnectorProfile profile;
+        profile.name = "serializer";
+        profile.connector_id = "";
+        profile.ports.length(2);
+        profile.ports[0] = portOf(from.section(QLatin1Char(':'), 0, 0), from.section(QLatin1Char(':'), 1));
+        profile.ports[1] = portOf(to.section(QLatin1Char(':'), 0, 0), to.section(QLatin1Char(':'), 1));
+        if (CORBA::is_nil(profile.ports[0]) || CORBA::is_nil(profile.ports[1]))
+            return false;
+        profile.properties.length(CORBA::ULong(properties.size()));
+        for (qsizetype i = 0; i < properties.size(); ++i) {
+            profile.properties[CORBA::ULong(i)].name = properties.at(i).first.toUtf8().constData();
+            profile.properties[CORBA::ULong(i)].value <<= properties.at(i).second.toUtf8().constData();
+        }
+        return profile.ports[0]->connect(profile) == RTC::RTC_OK;
+    } catch (const CORBA::Exception &error) {
+        qWarning() << "connect" << from << to << error._name();
         return false;
     }
 }
@@ -625,6 +670,52 @@ void TestPythonExamples::staticFsmRunsUnchanged()
     m_live.stop(oven);
 }
 
+void TestPythonExamples::serializerExampleRunsUnchanged()
+{
+    // Its rtc.conf: ConsoleOutDouble's process loads ShortToDoubleDeserializer.py, whose serializer
+    // turns the TimedShort samples of ConsoleInShort's OutPort into TimedDouble ones for the InPort of
+    // ConsoleOutDouble, named by the connection's inport.marshaling_type. (The runtime's manager reads
+    // no preconnect: the test connects the ports as that line says.)
+    const QString in = example(QStringLiteral("Serializer/ConsoleInShort.py"));
+    if (in.isEmpty())
+        QSKIP(NoPythonCorpus);
+    const QString folder = QFileInfo(in).absolutePath();
+    QProcess *sink = m_scripts.start(example(QStringLiteral("Serializer/ConsoleOutDouble.py")), {QStringLiteral("ConsoleOutDouble0.rtc")},
+                                     runTimeoutMs,
+                                     {QStringLiteral("manager.modules.load_path: ") + folder,
+                                      QStringLiteral("manager.modules.preload: ShortToDoubleDeserializer")});
+    QVERIFY(sink);
+    QProcess *source = m_scripts.start(in, {QStringLiteral("ConsoleInShort0.rtc")}, runTimeoutMs);
+    QVERIFY(source);
+    QVERIFY(connectThroughOrb(QStringLiteral("ConsoleInShort0.rtc:out"), QStringLiteral("ConsoleOutDouble0.rtc:in"),
+                              {{"dataport.data_type", "IDL:RTC/TimedShort:1.0"},
+                               {"dataport.interface_type", "corba_cdr"},
+                               {"dataport.dataflow_type", "push"},
+                               {"dataport.subscription_type", "flush"},
+                               {"dataport.inport.marshaling_type", "cdr:RTC/TimedShort:RTC/TimedDouble"},
+                               {"dataport.outport.marshaling_type", "cdr"}}));
+    QVERIFY(rtctlSucceeds({"act", "ConsoleOutDouble0.rtc", "ConsoleInShort0.rtc"}));
+    QByteArray numbers;
+    for (int i = 1; i <= 200; ++i)
+        numbers += QByteArray::number(i * 3 - 300) + '\n';
+    source->write(numbers);
+    // What arrives is a TimedDouble: its value printed as a float (and the short's value, so negative
+    // numbers too), with the time stamp the source set.
+    const QRegularExpression received(QStringLiteral("Received:  RTC\\.TimedDouble\\(tm=RTC\\.Time\\(sec=[1-9]\\d*, nsec=\\d+\\), "
+                                                     "data=(-?\\d+)\\.0\\)\nReceived:  -?\\d+\\.0\n"));
+    QTRY_VERIFY2_WITH_TIMEOUT(received.globalMatch(printed(sink)).hasNext(), qPrintable(printed(sink).right(3000)), runTimeoutMs);
+    const int value = received.match(printed(sink)).captured(1).toInt();
+    QVERIFY2(value >= -297 && value <= 300 && value % 3 == 0, qPrintable(printed(sink).right(3000)));
+    // Its InPort's data listeners are given the converted value too; the source's, the short.
+    QVERIFY2(QRegularExpression(QStringLiteral("ON_RECEIVED\n.*\n.*\nData: +-?\\d+\\.0\n")).match(printed(sink)).hasMatch(),
+             qPrintable(printed(sink).right(3000)));
+    QVERIFY2(QRegularExpression(QStringLiteral("ON_SEND\n.*\n.*\nData: +-?\\d+\n")).match(printed(source)).hasMatch(),
+             qPrintable(printed(source).right(2000)));
+    QVERIFY(rtctlSucceeds({"deact", "ConsoleInShort0.rtc", "ConsoleOutDouble0.rtc"}));
+    m_live.stop(source);
+    m_live.stop(sink);
+}
+
 void TestPythonExamples::dataTypesConvert_data()
 {
     QTest::addColumn<QString>("script");
@@ -635,6 +726,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("static FSM") << QStringLiteral("staticfsm");
     QTest::newRow("anys and NVLists") << QStringLiteral("anys");
     QTest::newRow("straight to CDR") << QStringLiteral("directcdr");
+    QTest::newRow("serializers") << QStringLiteral("serializers");
 }
 
 void TestPythonExamples::dataTypesConvert()
