@@ -39,6 +39,7 @@ private slots:
     void componentExchangesDataWithBuiltins();
     void callbackExceptionMovesComponentToError();
     void componentsOfOneProcessExchangeData();
+    void serializerReadsAnotherDataType();
     void configurationReachesBoundVariables();
     void namingContextsFromPython();
     void rtcHandleWalksTheNameServer();
@@ -298,6 +299,26 @@ void TestPython::componentsOfOneProcessExchangeData()
     QVERIFY(pair->waitForFinished(runTimeoutMs));
     QCOMPARE(pair->exitStatus(), QProcess::NormalExit);
     QCOMPARE(pair->exitCode(), 0);
+    m_live.stop(pair);
+}
+
+void TestPython::serializerReadsAnotherDataType()
+{
+    // PySerialized.py's serializer reads the source's TimedLong samples as quarters, TimedDouble, for
+    // the sink's InPort and its data listener; without it the two types do not connect.
+    QProcess *pair = startScript(LiveTest::pythonTestScript(QStringLiteral("PySerialized.py")), QStringLiteral("PyDoubleSink0.rtc"));
+    QVERIFY(pair);
+    QList<std::pair<QString, QString>> properties{{"dataport.data_type", "IDL:RTC/TimedLong:1.0"},
+                                                  {"dataport.interface_type", "corba_cdr"},
+                                                  {"dataport.dataflow_type", "push"},
+                                                  {"dataport.subscription_type", "flush"}};
+    QVERIFY(!m_host.connectThroughOrb(m_orb, QStringLiteral("PyLongSource0.rtc:out"), QStringLiteral("PyDoubleSink0.rtc:in"), properties));
+    properties.append(std::pair<QString, QString>("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble"));
+    QVERIFY(m_host.connectThroughOrb(m_orb, QStringLiteral("PyLongSource0.rtc:out"), QStringLiteral("PyDoubleSink0.rtc:in"), properties));
+    QVERIFY(rtctlSucceeds({"act", "PyDoubleSink0.rtc", "PyLongSource0.rtc"}));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(pair).contains(QLatin1String("sink got 0.75\n")), runTimeoutMs);
+    QVERIFY2(printed(pair).contains(QLatin1String("listener got 0.75\n")), qPrintable(printed(pair)));
+    QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSink0.rtc"}));
     m_live.stop(pair);
 }
 

@@ -82,11 +82,6 @@ private:
     QString printed(QProcess *process) { return m_printed.of(process); }
     /// The process id of the slave manager named @p name (0 when the master has none such).
     qint64 slavePid(const QString &name) const;
-    /// The port @p port of @p component in the host's context; nil when not found.
-    RTC::PortService_ptr portOf(const QString &component, const QString &port) const;
-    /// Connects @p from to @p to (ports as `Comp0.rtc:out`) with @p properties through their
-    /// references, as a manager's preconnect does (rtctl con checks data types first).
-    bool connectThroughOrb(const QString &from, const QString &to, const QList<std::pair<QString, QString>> &properties) const;
     /// Ticks the ExtTrigExecutionContext @p component owns, as OpenRTM's Connector.py does.
     bool tick(const QString &component) const;
     /// `rtctl @p arguments` left running in the host's context (stopped with the test's processes).
@@ -128,45 +123,6 @@ bool TestPythonExamples::tick(const QString &component) const
         return true;
     } catch (const CORBA::Exception &error) {
         qWarning() << "tick" << component << error._name();
-        return false;
-    }
-}
-
-RTC::PortService_ptr TestPythonExamples::portOf(const QString &component, const QString &port) const
-{
-    const QString name = QStringLiteral("corbaname::%1#%2.host_cxt/%3").arg(m_live.namingServer(), hostName, component);
-    CORBA::Object_var object = m_orb->string_to_object(name.toUtf8().constData());
-    RTC::RTObject_var rtc = RTC::RTObject::_narrow(object);
-    RTC::PortServiceList_var ports = rtc->get_ports();
-    const QString wanted = component.section(QLatin1Char('.'), 0, 0) + QLatin1Char('.') + port;
-    for (CORBA::ULong i = 0; i < ports->length(); ++i) {
-        RTC::PortProfile_var profile = ports[i]->get_port_profile();
-        if (wanted == QLatin1String(profile->name.in()))
-            return RTC::PortService::_duplicate(ports[i]);
-    }
-    return RTC::PortService::_nil();
-}
-
-bool TestPythonExamples::connectThroughOrb(const QString &from, const QString &to,
-                                           const QList<std::pair<QString, QString>> &properties) const
-{
-    try {
-        RTC::ConnectorProfile profile;
-        profile.name = "serializer";
-        profile.connector_id = "";
-        profile.ports.length(2);
-        profile.ports[0] = portOf(from.section(QLatin1Char(':'), 0, 0), from.section(QLatin1Char(':'), 1));
-        profile.ports[1] = portOf(to.section(QLatin1Char(':'), 0, 0), to.section(QLatin1Char(':'), 1));
-        if (CORBA::is_nil(profile.ports[0]) || CORBA::is_nil(profile.ports[1]))
-            return false;
-        profile.properties.length(CORBA::ULong(properties.size()));
-        for (qsizetype i = 0; i < properties.size(); ++i) {
-            profile.properties[CORBA::ULong(i)].name = properties.at(i).first.toUtf8().constData();
-            profile.properties[CORBA::ULong(i)].value <<= properties.at(i).second.toUtf8().constData();
-        }
-        return profile.ports[0]->connect(profile) == RTC::RTC_OK;
-    } catch (const CORBA::Exception &error) {
-        qWarning() << "connect" << from << to << error._name();
         return false;
     }
 }
@@ -687,7 +643,7 @@ void TestPythonExamples::serializerExampleRunsUnchanged()
     QVERIFY(sink);
     QProcess *source = m_scripts.start(in, {QStringLiteral("ConsoleInShort0.rtc")}, runTimeoutMs);
     QVERIFY(source);
-    QVERIFY(connectThroughOrb(QStringLiteral("ConsoleInShort0.rtc:out"), QStringLiteral("ConsoleOutDouble0.rtc:in"),
+    QVERIFY(m_host.connectThroughOrb(m_orb, QStringLiteral("ConsoleInShort0.rtc:out"), QStringLiteral("ConsoleOutDouble0.rtc:in"),
                               {{"dataport.data_type", "IDL:RTC/TimedShort:1.0"},
                                {"dataport.interface_type", "corba_cdr"},
                                {"dataport.dataflow_type", "push"},
