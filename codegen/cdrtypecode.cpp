@@ -395,13 +395,13 @@ private:
         if (name.isEmpty() || (!CdrCodec(m_model).knows(name) && !m_model.exceptions.contains(name)))
             fail(QStringLiteral("an any of type %1, which the IDL files do not declare").arg(id));
         m_seen.insert(start, IdlType::named(name));
-        skipParameters(kind, name);
+        skipParameters(kind);
         return IdlType::named(name);
     }
 
     /// The rest of a named type's parameters: the model already describes it, but nested
     /// TypeCodes are read so that later indirections find them.
-    void skipParameters(quint32 kind, const QString &name)
+    void skipParameters(quint32 kind)
     {
         if (kind == TkAlias) {
             typeCode();
@@ -425,7 +425,6 @@ private:
             if (kind != TkEnum)
                 typeCode();
         }
-        Q_UNUSED(name);
     }
 
     template <typename Body>
