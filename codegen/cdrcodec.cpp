@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "cdrcodec.h"
+#include "cdrtypecode.h"
 
 #include <QDateTime>
 #include <QJsonArray>
@@ -87,60 +88,6 @@ IdlType plainString()
     return type;
 }
 
-/// The values an `any` carries here, by CORBA's TypeCode kind (TCKind) and the IDL type named in
-/// their form `{"type": "long", "value": 5}`: the basic types, strings and object references; no
-/// TypeCode parameters beyond a string's bound (0, unbounded) and an object reference's id and name
-/// (read past; written as omniORB writes CORBA::Object's).
-struct AnyKind
-{
-    quint32 kind;
-    const char *type;
-};
-constexpr AnyKind AnyKinds[] = {
-    {0, "null"},    {1, "void"},    {2, "short"},    {3, "long"},       {4, "unsigned short"},
-    {5, "unsigned long"}, {6, "float"}, {7, "double"}, {8, "boolean"}, {9, "char"},
-    {10, "octet"},  {14, "Object"}, {18, "string"}, {23, "long long"}, {24, "unsigned long long"},
-    {26, "wchar"},  {27, "wstring"},
-};
-
-constexpr quint32 ObjectReferenceKind = 14;
-
-const AnyKind *anyKindOf(quint32 kind)
-{
-    for (const AnyKind &entry : AnyKinds) {
-        if (entry.kind == kind)
-            return &entry;
-    }
-    return nullptr;
-}
-
-const AnyKind *anyKindOf(const QString &type)
-{
-    for (const AnyKind &entry : AnyKinds) {
-        if (type == QLatin1String(entry.type))
-            return &entry;
-    }
-    return nullptr;
-}
-
-/// The IDL type of the value an `any` of @p kind holds; none for null and void.
-std::optional<IdlType> anyValueType(const AnyKind &kind)
-{
-    if (kind.kind <= 1)
-        return std::nullopt;
-    IdlType type = IdlType::basic(QLatin1String(kind.type));
-    if (kind.kind == 18)
-        type.kind = IdlType::Kind::String;
-    else if (kind.kind == 27)
-        type.kind = IdlType::Kind::WString;
-    return type;
-}
-
-bool hasBound(const AnyKind &kind)
-{
-    return kind.kind == 18 || kind.kind == 27;
-}
-
 /// The failure of one decode or encode, with the member path where it happened.
 struct Failure
 {
@@ -189,6 +136,8 @@ public:
     QJsonValue read(const IdlType &written)
     {
         const IdlType type = resolved(written);
+        if (CdrTypeCode::isTypeCode(type))
+            return readTypeCode().toString();
         switch (type.kind) {
         case IdlType::Kind::Basic: {
             if (type.name == QLatin1String("wchar"))
@@ -247,22 +196,18 @@ private:
     /// An `any`: its TypeCode, then its value; `{"type": "long", "value": 5}`.
     QJsonValue readAny()
     {
-        const quint32 code = quint32(readUnsigned(4));
-        const AnyKind *kind = anyKindOf(code);
-        if (!kind)
-            fail(QStringLiteral("an any of TypeCode kind %1 cannot be shown (basic types and strings only)").arg(code));
-        if (hasBound(*kind))
-            readUnsigned(4);
-        if (kind->kind == ObjectReferenceKind) {
-            // The interface's id and name, in an encapsulation of their own: the value's IOR has the id.
-            const quint32 length = quint32(readUnsigned(4));
-            if (!m_input.available(length))
-                fail(QStringLiteral("TypeCode parameters of %1 bytes where %2 remain").arg(length).arg(left()));
-            readOctets(length);
+        const IdlType type = readTypeCode();
+        return QJsonObject{{QStringLiteral("type"), type.toString()},
+                           {QStringLiteral("value"), CdrTypeCode::isEmpty(type) ? QJsonValue::Null : read(type)}};
+    }
+
+    IdlType readTypeCode()
+    {
+        try {
+            return CdrTypeCode::read(m_model, m_input, m_little);
+        } catch (const CdrTypeCode::Error &error) {
+            fail(error.message);
         }
-        const std::optional<IdlType> type = anyValueType(*kind);
-        return QJsonObject{{QStringLiteral("type"), QLatin1String(kind->type)},
-                           {QStringLiteral("value"), type ? read(*type) : QJsonValue::Null}};
     }
 
     /// GIOP 1.2's wchar: its length in one octet, then UTF-16 (see readUtf16); one character.
@@ -447,6 +392,10 @@ public:
     void write(const IdlType &written, const QJsonValue &value)
     {
         const IdlType type = resolved(written);
+        if (CdrTypeCode::isTypeCode(type)) {
+            writeTypeCode(value);
+            return;
+        }
         switch (type.kind) {
         case IdlType::Kind::Basic: {
             if (type.name == QLatin1String("wchar")) {
@@ -514,36 +463,23 @@ private:
     {
         if (!value.isObject() && !value.isUndefined() && !value.isNull())
             fail(QStringLiteral("an any {\"type\": \"long\", \"value\": …} or null is expected"));
-        const QString typeName = value[QStringLiteral("type")].toString(QStringLiteral("null"));
-        const AnyKind *kind = anyKindOf(typeName);
-        if (!kind)
-            fail(QStringLiteral("an any of type '%1' cannot be written (basic types and strings only)").arg(typeName));
-        writeUnsigned(4, kind->kind);
-        if (hasBound(*kind))
-            writeUnsigned(4, 0);
-        if (kind->kind == ObjectReferenceKind)
-            writeObjectTypeCodeParameters();
-        if (const std::optional<IdlType> type = anyValueType(*kind))
-            write(*type, value[QStringLiteral("value")]);
+        const IdlType type = writeTypeCode(value[QStringLiteral("type")]);
+        if (!CdrTypeCode::isEmpty(type))
+            write(type, value[QStringLiteral("value")]);
     }
 
-    /// CORBA::Object's TypeCode parameters (tk_objref): an encapsulation of its id and name (empty,
-    /// as omniORB writes it).
-    void writeObjectTypeCodeParameters()
+    /// The TypeCode of the type named by @p name (IdlType::toString()'s form; none is `null`).
+    IdlType writeTypeCode(const QJsonValue &name)
     {
-        QByteArray encapsulation(1, m_little ? '\1' : '\0');
-        const auto appendString = [this, &encapsulation](const QByteArray &text) {
-            while (encapsulation.size() % 4 != 0)
-                encapsulation.append('\0');
-            const quint32 length = quint32(text.size() + 1);
-            for (int i = 0; i < 4; ++i)
-                encapsulation.append(char((length >> (8 * (m_little ? i : 3 - i))) & 0xff));
-            encapsulation.append(text).append('\0');
-        };
-        appendString(QByteArrayLiteral("IDL:omg.org/CORBA/Object:1.0"));
-        appendString(QByteArray());
-        writeUnsigned(4, quint64(encapsulation.size()));
-        m_output.write(reinterpret_cast<const uchar *>(encapsulation.constData()), int(encapsulation.size()), 1);
+        if (!name.isString() && !name.isUndefined() && !name.isNull())
+            fail(QStringLiteral("a type name such as \"RTC::Time\" is expected"));
+        try {
+            const IdlType type = CdrTypeCode::fromText(m_model, name.toString(QStringLiteral("null")));
+            CdrTypeCode::write(m_model, type, m_output, m_little);
+            return type;
+        } catch (const CdrTypeCode::Error &error) {
+            fail(error.message);
+        }
     }
 
     /// An IOR from readObjectReference()'s form; null (or nothing) is the nil reference.
@@ -929,15 +865,6 @@ QJsonValue CdrCodec::labelValue(const IdlModel &model, const IdlUnion &type, con
     return label.toLongLong(nullptr, 0);
 }
 
-bool CdrCodec::anyValueType(const QString &name, std::optional<IdlType> *type)
-{
-    const AnyKind *kind = anyKindOf(name);
-    if (!kind)
-        return false;
-    *type = Codegen::anyValueType(*kind);
-    return true;
-}
-
 QString CdrCodec::typeName(const QString &dataType)
 {
     if (!dataType.startsWith(QLatin1String("IDL:")))
@@ -956,12 +883,17 @@ bool CdrCodec::knows(const QString &type) const
 QJsonValue CdrCodec::decode(const QString &type, const QByteArray &cdr, bool littleEndian,
                             QString *error) const
 {
+    return decodeValue(IdlType::named(type), cdr, littleEndian, error);
+}
+
+QJsonValue CdrCodec::decodeValue(const IdlType &type, const QByteArray &cdr, bool littleEndian, QString *error) const
+{
     try {
         ByteInput input(cdr);
         Reader reader(m_model, input, littleEndian);
-        const QJsonValue value = reader.read(IdlType::named(type));
+        const QJsonValue value = reader.read(type);
         if (input.remaining() > 7) // at most the padding of a last member
-            throw Failure {QStringLiteral("%1 bytes left over after a %2").arg(input.remaining()).arg(type)};
+            throw Failure {QStringLiteral("%1 bytes left over after a %2").arg(input.remaining()).arg(type.toString())};
         return value;
     } catch (const Failure &failure) {
         if (error)
@@ -973,8 +905,13 @@ QJsonValue CdrCodec::decode(const QString &type, const QByteArray &cdr, bool lit
 QByteArray CdrCodec::encode(const QString &type, const QJsonValue &value, bool littleEndian,
                             QString *error) const
 {
+    return encodeValue(IdlType::named(type), value, littleEndian, error);
+}
+
+QByteArray CdrCodec::encodeValue(const IdlType &type, const QJsonValue &value, bool littleEndian, QString *error) const
+{
     ByteOutput output;
-    if (!write(IdlType::named(type), value, output, littleEndian, error))
+    if (!write(type, value, output, littleEndian, error))
         return {};
     return output.m_bytes;
 }

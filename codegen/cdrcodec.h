@@ -43,10 +43,11 @@ public:
  * Types are the scoped names of an IdlModel (`RTC::TimedLong`); a union is
  * `{"_d": discriminator, "<member>": value}` with the member the discriminator selects; an object
  * reference is null when nil, else its IOR as `{"type_id": …, "profiles": [{"tag": n, "data": hex}]}`;
- * an `any` holding a basic type, a string or an object reference is `{"type": "long", "value": 5}`
- * (`"Object"` for a reference; null when empty); an
- * `any` of another TypeCode, TypeCode itself, `fixed` and `long double` are refused with an error
- * naming the member.
+ * an `any` is `{"type": "long", "value": 5}` with its type named as IdlType::toString() writes it
+ * (`"RTC::Time"`, `"sequence<long>"`, `"Object"` for CORBA::Object; null when empty) and its value
+ * as a value of that type; a `TypeCode` value is such a type name (CdrTypeCode). An any whose
+ * TypeCode names a type the model does not declare, `fixed` and `long double` are refused with an
+ * error naming the member.
  */
 class CdrCodec
 {
@@ -55,12 +56,6 @@ public:
 
     /// The scoped name of an OpenRTM data type id: `IDL:RTC/TimedLong:1.0` → `RTC::TimedLong`;
     /// a scoped name is returned as it is.
-    /**
-     * The type of the value an `any` of type @p name holds (`long`, `string`, …; see the class
-     * comment): false when an any here cannot hold such values; true with @p type empty for `null`
-     * and `void`.
-     */
-    static bool anyValueType(const QString &name, std::optional<IdlType> *type);
     static QString typeName(const QString &dataType);
 
     /// The case of @p type that @p discriminator (a value of the union's discriminator) selects:
@@ -80,6 +75,11 @@ public:
     /// timed type's `tm`, which is the current time.
     QByteArray encode(const QString &type, const QJsonValue &value, bool littleEndian,
                       QString *error) const;
+
+    /// decode() and encode() of a value of any type (`sequence<long>`, a basic type, …), as
+    /// omniORB's cdrMarshal writes it.
+    QJsonValue decodeValue(const IdlType &type, const QByteArray &cdr, bool littleEndian, QString *error) const;
+    QByteArray encodeValue(const IdlType &type, const QJsonValue &value, bool littleEndian, QString *error) const;
 
     /// Reads one value of @p type from @p input (an operation's parameter, say); on failure an
     /// undefined value and the reason.

@@ -194,6 +194,17 @@ QString PythonStubWriter::stubFile(const QString &path, const QString &text,
 
 QString PythonStubWriter::declaration(const IdlDeclaration &declaration, QStringList *classes) const
 {
+    const QString text = declarationClasses(declaration, classes);
+    if (text.isEmpty() || declaration.kind == IdlDeclaration::Kind::Const)
+        return text;
+    // The type's TypeCode, `Mod._tc_Name`, as omniidl's stubs have it.
+    return text + QStringLiteral("%1._tc_%2 = CORBA.TypeCode(%3)\n\n")
+                      .arg(scopeExpression(parentOf(declaration.scopedName)), leaf(declaration.scopedName),
+                           quoted(declaration.scopedName));
+}
+
+QString PythonStubWriter::declarationClasses(const IdlDeclaration &declaration, QStringList *classes) const
+{
     const QString name = declaration.scopedName;
     const QString target = scopeExpression(parentOf(name)) + QLatin1Char('.') + leaf(name);
     auto registered = [&](const QString &text) {

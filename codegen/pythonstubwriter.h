@@ -46,7 +46,9 @@ public:
 
 private:
     QString stubFile(const QString &path, const QString &text, QStringList *modules) const;
+    /// declarationClasses() and, for a type, its TypeCode `Mod._tc_Name`.
     QString declaration(const IdlDeclaration &declaration, QStringList *classes) const;
+    QString declarationClasses(const IdlDeclaration &declaration, QStringList *classes) const;
     QString structClass(const QString &scopedName, const QList<IdlMember> &members,
                         const QString &base) const;
     QString unionClass(const IdlUnion &type) const;

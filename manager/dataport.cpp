@@ -44,6 +44,20 @@ RTC::ReturnCode_t DataPortBase::admit(const RTC::ConnectorProfile &profile)
     return PortBase::admit(profile);
 }
 
+namespace {
+
+/// A connection's marshaling type for one side (`inport`, `outport`): the side's own, else the
+/// connection's, else plain `cdr`.
+std::string marshalingType(const Properties &p, const std::string &side)
+{
+    std::string type = p.value("dataport." + side + ".marshaling_type", p.value("dataport.marshaling_type", "cdr"));
+    type.erase(0, type.find_first_not_of(" \t"));
+    type.erase(type.find_last_not_of(" \t") + 1);
+    return type.empty() ? std::string("cdr") : type;
+}
+
+} // namespace
+
 std::string DataPortBase::checkProfile(const Properties &p, bool *pull) const
 {
     const std::string interfaceType = p.value("dataport.interface_type", "corba_cdr");
@@ -57,8 +71,12 @@ std::string DataPortBase::checkProfile(const Properties &p, bool *pull) const
     if (!m_input && !*pull
         && !OutPortPushConnector::parseMode(p.value("dataport.subscription_type", "flush"), &mode))
         return "unsupported dataport.subscription_type '" + p.value("dataport.subscription_type") + "'";
+    // OpenRTM's user serializers: an InPort's (`inport.marshaling_type=cdr:RTC/TimedShort:RTC/TimedDouble`)
+    // may read another data type than its own; OutPorts write plain CDR.
+    if (!m_input && marshalingType(p, "outport") != "cdr")
+        return "no serializer '" + marshalingType(p, "outport") + "' for an OutPort (they write plain cdr)";
     const std::string type = p.value("dataport.data_type");
-    if (!type.empty() && !sameDataType(type, m_dataType))
+    if (!type.empty() && !sameDataType(type, m_dataType) && marshalingType(p, "inport") == "cdr")
         return "data type '" + type + "' does not match '" + m_dataType + "'";
     return {};
 }

@@ -175,6 +175,7 @@ def _scope(scopes, scoped_name):
 
 def _make_types():
     description = _rtstudio.load_idl(_idl_directories())
+    _description["files"] = description["files"]
     scopes = {}
     classes = {}
     for scoped_name, members in description["structs"].items():
@@ -208,10 +209,14 @@ def _make_types():
         _scope(scopes, scoped_name)[leaf] = cls
     for scoped_name, value in description["consts"].items():
         _scope(scopes, scoped_name)[scoped_name.split("::")[-1]] = value
+    from omniORB import CORBA
+    for scoped_name in description["typecodes"]:
+        _scope(scopes, scoped_name)["_tc_" + scoped_name.split("::")[-1]] = CORBA.TypeCode(scoped_name)
     _rtstudio.set_idl_classes(classes)
     return scopes
 
 
+_description = {}
 _scopes = _make_types()
 
 
@@ -230,6 +235,45 @@ def _register_modules():
 
 
 _register_modules()
+
+
+def _file_module(base, modules):
+    """omniidl's module <base>_idl of an IDL file: omniORB, CORBA and PortableServer, and _0_<Module>
+    for each module the file declares in (found as it is first asked for)."""
+    import omniORB
+    module = types.ModuleType(base + "_idl", "Python stubs of %s.idl" % base)
+    module.__dict__.update({"omniORB": omniORB, "CORBA": omniORB.CORBA, "PortableServer": omniORB.PortableServer,
+                            "_exported_modules": tuple(modules), "__all__": ["omniORB", "CORBA", "PortableServer"]})
+
+    def module_getattr(name):
+        if name.startswith("_0_") and name[3:] in modules:
+            return importlib.import_module(name[3:])
+        raise AttributeError(name)
+
+    module.__getattr__ = module_getattr
+    return module
+
+
+class _FileModuleFinder(object):
+    """Finds omniidl's <File>_idl modules of the runtime's IDL files (BasicDataType_idl, …) on import."""
+
+    @staticmethod
+    def find_spec(name, path=None, target=None):
+        if path is not None or not name.endswith("_idl") or name[:-4] not in _description["files"]:
+            return None
+        return importlib.util.spec_from_loader(name, _FileModuleFinder)
+
+    @staticmethod
+    def create_module(spec):
+        base = spec.name[:-4]
+        return _file_module(base, _description["files"][base])
+
+    @staticmethod
+    def exec_module(module):
+        pass
+
+
+sys.meta_path.append(_FileModuleFinder)
 
 
 def populate(namespace, module_name):

@@ -163,6 +163,7 @@ private slots:
     void connectorBufferPolicy();
     void connectRejectsMismatch_data();
     void connectRejectsMismatch();
+    void convertingMarshalingTypeTakesAnotherDataType();
     void connectRefusesNilPeer_data();
     void connectRefusesNilPeer();
     void duplicateConnectionRefused();
@@ -912,6 +913,22 @@ void TestManagerRuntime::connectRejectsMismatch()
     // A bare OpenRTM 1.x type name still matches.
     p = Properties();
     p.set("dataport.data_type", "TimedLong");
+    QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
+}
+
+void TestManagerRuntime::convertingMarshalingTypeTakesAnotherDataType()
+{
+    // OpenRTM's user serializers (`inport.marshaling_type=cdr:RTC/TimedLong:RTC/TimedDouble`) let an
+    // InPort read another data type: such a connection is not held to one. OutPorts write plain CDR.
+    auto [in, out, outPort, inPort] = consolePair("CI4", "CO4");
+    Properties p;
+    p.set("dataport.data_type", "IDL:RTC/TimedDouble:1.0");
+    p.set("dataport.inport.marshaling_type", "cdr");
+    QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
+    p.set("dataport.outport.marshaling_type", "cdr:RTC/TimedDouble:RTC/TimedLong");
+    p.set("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble");
+    QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
+    p.set("dataport.outport.marshaling_type", "cdr");
     QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
 }
 

@@ -9,7 +9,9 @@
 // - an exception in a callback (data/python/PyFaulty.py): Error state, traceback, process alive;
 // - OpenRTM-aist-Python's SeqIO example unchanged, its ten data types also reaching rtmanager's SeqIn;
 // - two Python components of one process, configuration parameters, a generated Python project;
-// - the IDL types' Python classes and CDR (data/python/datatypes.py), from the build tree and installed.
+// - the IDL types' Python classes and CDR (data/python/datatypes.py), from the build tree and installed;
+// - a name server's contexts walked from Python (data/python/naming.py), and OpenRTM-aist-Python's
+//   AutoTest/rtc_handle.py unchanged doing so (data/python/rtchandle.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 
@@ -19,6 +21,9 @@ namespace {
 
 constexpr int runTimeoutMs = 30 * 1000;
 const QString hostName = QStringLiteral("pyhost");
+constexpr const char *NoPythonCorpus
+    = "the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the project) "
+      "is absent";
 
 } // namespace
 
@@ -34,7 +39,10 @@ private slots:
     void componentExchangesDataWithBuiltins();
     void callbackExceptionMovesComponentToError();
     void componentsOfOneProcessExchangeData();
+    void serializerReadsAnotherDataType();
     void configurationReachesBoundVariables();
+    void namingContextsFromPython();
+    void rtcHandleWalksTheNameServer();
     void generatedComponentRuns();
     void installedPackagesWork();
 
@@ -47,6 +55,13 @@ private:
     QString state(const QString &component) const;
     /// Starts `python3 @p script -f <conf>`; waits until @p instance is in the name server.
     QProcess *startScript(const QString &script, const QString &instance, const QStringList &confLines = {});
+    /// Runs python3 @p script @p arguments to its end; what it printed (both streams), and in
+    /// @p ok whether it exited with 0.
+    QString runPython(const QString &script, const QStringList &arguments, bool *ok);
+    /// Starts data/python/PyConfig.py (a component without ports) once the previous one is gone.
+    QProcess *startConfigComponent();
+    /// Ends PyConfig0 and its process.
+    void stopConfigComponent(QProcess *config);
     /// What @p process printed so far on standard output (kept across calls).
     QString printed(QProcess *process);
 
@@ -107,14 +122,24 @@ void TestPython::initTestCase()
     QVERIFY2(m_manager, qPrintable(error));
 }
 
-void TestPython::dataTypesConvert()
+QString TestPython::runPython(const QString &script, const QStringList &arguments, bool *ok)
 {
     QProcess python;
     python.setProcessEnvironment(m_scripts.environment());
-    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {LiveTest::pythonTestScript(QStringLiteral("datatypes.py"))});
-    QVERIFY(python.waitForFinished(runTimeoutMs));
-    const QString output = QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
-    QVERIFY2(python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0, qPrintable(output));
+    python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), QStringList{script} + arguments);
+    const bool finished = python.waitForFinished(runTimeoutMs);
+    if (!finished)
+        python.kill();
+    python.waitForFinished();
+    *ok = finished && python.exitStatus() == QProcess::NormalExit && python.exitCode() == 0;
+    return QString::fromLocal8Bit(python.readAllStandardOutput() + python.readAllStandardError());
+}
+
+void TestPython::dataTypesConvert()
+{
+    bool ok = false;
+    const QString output = runPython(LiveTest::pythonTestScript(QStringLiteral("datatypes.py")), {}, &ok);
+    QVERIFY2(ok, qPrintable(output));
     QVERIFY2(output.contains(QLatin1String("datatypes: ok")), qPrintable(output));
 }
 
@@ -122,8 +147,7 @@ void TestPython::simpleIoExamplesRunUnchanged()
 {
     const QString example = LiveTest::pythonCorpusDir() + QStringLiteral("/SimpleIO/");
     if (!QFileInfo::exists(example + QStringLiteral("ConsoleIn.py")))
-        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
-              "project) is absent");
+        QSKIP(NoPythonCorpus);
     const QString manager = m_host.managerPath();
     QVERIFY(rtctlSucceeds({"mgr", manager, "create", "ConsoleOut?instance_name=SimpleIoSink"}));
     QProcess *out = startScript(example + QStringLiteral("ConsoleOut.py"), QStringLiteral("ConsoleOut0.rtc"));
@@ -172,8 +196,7 @@ void TestPython::seqIoExamplesRunUnchanged()
 {
     const QString example = LiveTest::pythonCorpusDir() + QStringLiteral("/SeqIO/");
     if (!QFileInfo::exists(example + QStringLiteral("SeqIn.py")))
-        QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
-              "project) is absent");
+        QSKIP(NoPythonCorpus);
     const QString manager = m_host.managerPath();
     QVERIFY(rtctlSucceeds({"mgr", manager, "create", "SeqIn?instance_name=SeqSink"}));
     QProcess *out = startScript(example + QStringLiteral("SeqOut.py"), QStringLiteral("SequenceOutComponent0.rtc"));
@@ -279,9 +302,29 @@ void TestPython::componentsOfOneProcessExchangeData()
     m_live.stop(pair);
 }
 
+void TestPython::serializerReadsAnotherDataType()
+{
+    // PySerialized.py's serializer reads the source's TimedLong samples as quarters, TimedDouble, for
+    // the sink's InPort and its data listener; without it the two types do not connect.
+    QProcess *pair = startScript(LiveTest::pythonTestScript(QStringLiteral("PySerialized.py")), QStringLiteral("PyDoubleSink0.rtc"));
+    QVERIFY(pair);
+    QList<std::pair<QString, QString>> properties{{"dataport.data_type", "IDL:RTC/TimedLong:1.0"},
+                                                  {"dataport.interface_type", "corba_cdr"},
+                                                  {"dataport.dataflow_type", "push"},
+                                                  {"dataport.subscription_type", "flush"}};
+    QVERIFY(!m_host.connectThroughOrb(m_orb, QStringLiteral("PyLongSource0.rtc:out"), QStringLiteral("PyDoubleSink0.rtc:in"), properties));
+    properties.append(std::pair<QString, QString>("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble"));
+    QVERIFY(m_host.connectThroughOrb(m_orb, QStringLiteral("PyLongSource0.rtc:out"), QStringLiteral("PyDoubleSink0.rtc:in"), properties));
+    QVERIFY(rtctlSucceeds({"act", "PyDoubleSink0.rtc", "PyLongSource0.rtc"}));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(pair).contains(QLatin1String("sink got 0.75\n")), runTimeoutMs);
+    QVERIFY2(printed(pair).contains(QLatin1String("listener got 0.75\n")), qPrintable(printed(pair)));
+    QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSink0.rtc"}));
+    m_live.stop(pair);
+}
+
 void TestPython::configurationReachesBoundVariables()
 {
-    QProcess *config = startScript(LiveTest::pythonTestScript(QStringLiteral("PyConfig.py")), QStringLiteral("PyConfig0.rtc"));
+    QProcess *config = startConfigComponent();
     QVERIFY(config);
     QVERIFY(rtctlSucceeds({"act", "PyConfig0.rtc"}));
     // The defaults, converted to the types of the variables' values.
@@ -299,7 +342,73 @@ void TestPython::configurationReachesBoundVariables()
     QVERIFY(rtctlSucceeds({"conf", "PyConfig0.rtc", "set", "double_param", "abc"}));
     QVERIFY(rtctlSucceeds({"conf", "PyConfig0.rtc", "set", "int_param", "18"}));
     QTRY_VERIFY_WITH_TIMEOUT(printed(config).contains(QLatin1String("int_param=18 double_param=0.5 ")), runTimeoutMs);
+    stopConfigComponent(config);
+}
+
+QProcess *TestPython::startConfigComponent()
+{
+    const auto gone = [this] { return !rtctl({QStringLiteral("ls")}).out.contains(QLatin1String("PyConfig0")); };
+    if (!QTest::qWaitFor(gone, runTimeoutMs))
+        return nullptr;
+    return startScript(LiveTest::pythonTestScript(QStringLiteral("PyConfig.py")), QStringLiteral("PyConfig0.rtc"));
+}
+
+void TestPython::stopConfigComponent(QProcess *config)
+{
+    // Its exit takes its name out of the name server, which a killed process would leave there.
+    rtctlSucceeds({"exit", "PyConfig0.rtc"});
     m_live.stop(config);
+}
+
+void TestPython::namingContextsFromPython()
+{
+    // naming.py lists the name server's bindings through CosNaming (two at a time, so through the
+    // BindingIterator too), resolves PyConfig0 by its name and sets int_param through its reference.
+    QProcess *config = startConfigComponent();
+    QVERIFY(config);
+    QVERIFY(rtctlSucceeds({"act", "PyConfig0.rtc"}));
+    bool ok = false;
+    const QString output = runPython(LiveTest::pythonTestScript(QStringLiteral("naming.py")),
+                                     {m_live.namingServer(), QStringLiteral("PyConfig0.rtc"), QStringLiteral("int_param"),
+                                      QStringLiteral("23")}, &ok);
+    QVERIFY2(ok && output.contains(QLatin1String("naming: ok\n")), qPrintable(output));
+    QVERIFY2(output.contains(QStringLiteral("naming: object %1.host_cxt/PyConfig0.rtc RTC\n").arg(hostName)), qPrintable(output));
+    QVERIFY2(output.contains(QStringLiteral("naming: object %1.host_cxt/manager.mgr \n").arg(hostName)), qPrintable(output));
+    QVERIFY2(output.contains(QLatin1String("naming: int_param was 1\n")), qPrintable(output));
+    QTRY_VERIFY_WITH_TIMEOUT(printed(config).contains(QLatin1String("int_param=23 ")), runTimeoutMs);
+    stopConfigComponent(config);
+}
+
+void TestPython::rtcHandleWalksTheNameServer()
+{
+    const QString autoTest = LiveTest::pythonCorpusDir() + QStringLiteral("/AutoTest");
+    if (!QFileInfo::exists(autoTest + QStringLiteral("/rtc_handle.py")))
+        QSKIP(NoPythonCorpus);
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "create", "ConsoleIn?instance_name=HandleFeed"}));
+    QProcess *config = startConfigComponent();
+    QVERIFY(config);
+    bool ok = false;
+    const QString output = runPython(LiveTest::pythonTestScript(QStringLiteral("rtchandle.py")),
+                                     {autoTest, m_live.namingServer(), QStringLiteral("PyConfig0.rtc")}, &ok);
+    QVERIFY2(ok, qPrintable(output));
+    const QString path = hostName + QStringLiteral(".host_cxt/");
+    for (const QString &line : {QStringLiteral("objcet %1PyConfig0.rtc was listed.\n").arg(path),
+                                QStringLiteral("handle for %1PyConfig0.rtc was created.\n").arg(path),
+                                QStringLiteral("objcet %1manager.mgr was listed.\n").arg(path),
+                                // The module names its connectors with Python 2's string.join, which
+                                // Python 3 lacks: a component with ports gets no handle.
+                                QStringLiteral("%1HandleFeed.rtc is not alive.\n").arg(path),
+                                QStringLiteral("rtchandle: instance PyConfig0 ports 0\n"),
+                                QStringLiteral("rtchandle: int_param 1\n"),
+                                QStringLiteral("rtchandle: activate RTC_OK\n"),
+                                QStringLiteral("rtchandle: state ACTIVE_STATE\n"),
+                                QStringLiteral("rtchandle: deactivate RTC_OK\n"),
+                                QStringLiteral("rtchandle: by name True\n"),
+                                QStringLiteral("rtchandle: nvlist {'a': 'b', 'n': 3}\n"),
+                                QStringLiteral("rtchandle: rtc_handle10_11 RtcHandle\n")})
+        QVERIFY2(output.contains(line), qPrintable(line + output));
+    QVERIFY(rtctlSucceeds({"mgr", m_host.managerPath(), "delete", "HandleFeed"}));
+    stopConfigComponent(config);
 }
 
 void TestPython::generatedComponentRuns()

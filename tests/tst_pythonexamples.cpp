@@ -64,6 +64,7 @@ private slots:
     void autoControlRunsUnchanged();
     void throughputRunsUnchanged();
     void staticFsmRunsUnchanged();
+    void serializerExampleRunsUnchanged();
     void dataTypesConvert_data();
     void dataTypesConvert();
 
@@ -625,6 +626,52 @@ void TestPythonExamples::staticFsmRunsUnchanged()
     m_live.stop(oven);
 }
 
+void TestPythonExamples::serializerExampleRunsUnchanged()
+{
+    // Its rtc.conf: ConsoleOutDouble's process loads ShortToDoubleDeserializer.py, whose serializer
+    // turns the TimedShort samples of ConsoleInShort's OutPort into TimedDouble ones for the InPort of
+    // ConsoleOutDouble, named by the connection's inport.marshaling_type. (The runtime's manager reads
+    // no preconnect: the test connects the ports as that line says.)
+    const QString in = example(QStringLiteral("Serializer/ConsoleInShort.py"));
+    if (in.isEmpty())
+        QSKIP(NoPythonCorpus);
+    const QString folder = QFileInfo(in).absolutePath();
+    QProcess *sink = m_scripts.start(example(QStringLiteral("Serializer/ConsoleOutDouble.py")), {QStringLiteral("ConsoleOutDouble0.rtc")},
+                                     runTimeoutMs,
+                                     {QStringLiteral("manager.modules.load_path: ") + folder,
+                                      QStringLiteral("manager.modules.preload: ShortToDoubleDeserializer")});
+    QVERIFY(sink);
+    QProcess *source = m_scripts.start(in, {QStringLiteral("ConsoleInShort0.rtc")}, runTimeoutMs);
+    QVERIFY(source);
+    QVERIFY(m_host.connectThroughOrb(m_orb, QStringLiteral("ConsoleInShort0.rtc:out"), QStringLiteral("ConsoleOutDouble0.rtc:in"),
+                              {{"dataport.data_type", "IDL:RTC/TimedShort:1.0"},
+                               {"dataport.interface_type", "corba_cdr"},
+                               {"dataport.dataflow_type", "push"},
+                               {"dataport.subscription_type", "flush"},
+                               {"dataport.inport.marshaling_type", "cdr:RTC/TimedShort:RTC/TimedDouble"},
+                               {"dataport.outport.marshaling_type", "cdr"}}));
+    QVERIFY(rtctlSucceeds({"act", "ConsoleOutDouble0.rtc", "ConsoleInShort0.rtc"}));
+    QByteArray numbers;
+    for (int i = 1; i <= 200; ++i)
+        numbers += QByteArray::number(i * 3 - 300) + '\n';
+    source->write(numbers);
+    // What arrives is a TimedDouble: its value printed as a float (and the short's value, so negative
+    // numbers too), with the time stamp the source set.
+    const QRegularExpression received(QStringLiteral("Received:  RTC\\.TimedDouble\\(tm=RTC\\.Time\\(sec=[1-9]\\d*, nsec=\\d+\\), "
+                                                     "data=(-?\\d+)\\.0\\)\nReceived:  -?\\d+\\.0\n"));
+    QTRY_VERIFY2_WITH_TIMEOUT(received.globalMatch(printed(sink)).hasNext(), qPrintable(printed(sink).right(3000)), runTimeoutMs);
+    const int value = received.match(printed(sink)).captured(1).toInt();
+    QVERIFY2(value >= -297 && value <= 300 && value % 3 == 0, qPrintable(printed(sink).right(3000)));
+    // Its InPort's data listeners are given the converted value too; the source's, the short.
+    QVERIFY2(QRegularExpression(QStringLiteral("ON_RECEIVED\n.*\n.*\nData: +-?\\d+\\.0\n")).match(printed(sink)).hasMatch(),
+             qPrintable(printed(sink).right(3000)));
+    QVERIFY2(QRegularExpression(QStringLiteral("ON_SEND\n.*\n.*\nData: +-?\\d+\n")).match(printed(source)).hasMatch(),
+             qPrintable(printed(source).right(2000)));
+    QVERIFY(rtctlSucceeds({"deact", "ConsoleInShort0.rtc", "ConsoleOutDouble0.rtc"}));
+    m_live.stop(source);
+    m_live.stop(sink);
+}
+
 void TestPythonExamples::dataTypesConvert_data()
 {
     QTest::addColumn<QString>("script");
@@ -635,6 +682,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("static FSM") << QStringLiteral("staticfsm");
     QTest::newRow("anys and NVLists") << QStringLiteral("anys");
     QTest::newRow("straight to CDR") << QStringLiteral("directcdr");
+    QTest::newRow("serializers") << QStringLiteral("serializers");
 }
 
 void TestPythonExamples::dataTypesConvert()

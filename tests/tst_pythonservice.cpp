@@ -291,8 +291,8 @@ void TestPythonService::callsCarryEveryParameterKind()
     QTRY_VERIFY2_WITH_TIMEOUT(printed(consumer).contains(QLatin1String("consumer: done")),
                               qPrintable(printed(consumer) + printed(provider)), runTimeoutMs);
     const QString out = printed(consumer);
-    // Wide characters and strings, a union in and inout, anys of a double, a string and an unsigned
-    // short in, out and as the result, references in, out and as the result: the
+    // Wide characters and strings, a union in and inout, anys of a double, a string, an unsigned
+    // short, a union, a struct, a TypeCode and a sequence in, out and as the result, references in, out and as the result: the
     // consumer's own servant (_this()) reaches the provider, which calls it back, and comes back
     // callable; the provider's own reference too; the ORB's string_to_object of an IOR.
     for (const QString &line : {QStringLiteral("consumer: letter ('\u00c9', '\u00e9\u00e9\u00e9')\n"),
@@ -301,6 +301,10 @@ void TestPythonService::callsCarryEveryParameterKind()
                                 QStringLiteral("consumer: wrap True double 2.5\n"),
                                 QStringLiteral("consumer: wrap True string 'corba_cdr'\n"),
                                 QStringLiteral("consumer: wrap True unsigned short 7\n"),
+                                QStringLiteral("consumer: wrap True PyKinds::Pick PyKinds.Pick(1, 5)\n"),
+                                QStringLiteral("consumer: wrap True RTC::Time {'sec': 1, 'nsec': 2}\n"),
+                                QStringLiteral("consumer: wrap True TypeCode CORBA.TypeCode('PyKinds::Pick')\n"),
+                                QStringLiteral("consumer: wrap True sequence<long> [1, 2]\n"),
                                 QStringLiteral("consumer: string_to_object _objref_Echo 42\n"),
                                 QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
                                 QStringLiteral("consumer: relay nil None\n")})
@@ -350,6 +354,9 @@ void TestPythonService::everyParameterKindToAndFromCxx()
                                 QStringLiteral("cxx consumer: reversed \u4e16 oll\u00e9h\n"),
                                 QStringLiteral("cxx consumer: swap text t, number 5\n"),
                                 QStringLiteral("cxx consumer: wrap -12 long -12\n"),
+                                QStringLiteral("cxx consumer: wrap RTC::Time {'sec': 1, 'nsec': 2}\n"),
+                                QStringLiteral("cxx consumer: wrap PyKinds::Pick PyKinds.Pick(2, 't')\n"),
+                                QStringLiteral("cxx consumer: wrap TypeCode CORBA.TypeCode('PyKinds::Pick')\n"),
                                 QStringLiteral("cxx consumer: relay 7 True\n")})
         QVERIFY2(printed(cxx).contains(line), qPrintable(line + printed(cxx)));
     QVERIFY2(printed(provider).contains(QLatin1String("provider: relay of a reference that answers calls() 7\n")),
@@ -363,6 +370,10 @@ void TestPythonService::everyParameterKindToAndFromCxx()
                                 QStringLiteral("consumer: wrap True double 2.500000\n"),
                                 QStringLiteral("consumer: wrap True string corba_cdr\n"),
                                 QStringLiteral("consumer: wrap True unsigned short 7\n"),
+                                QStringLiteral("consumer: wrap True Pick number 5\n"),
+                                QStringLiteral("consumer: wrap True RTC::Time 1 2\n"),
+                                QStringLiteral("consumer: wrap True TypeCode IDL:PyKinds/Pick:1.0\n"),
+                                QStringLiteral("consumer: wrap True sequence 1 2\n"),
                                 QStringLiteral("consumer: relay 42 _objref_Echo True\n"),
                                 QStringLiteral("consumer: relay nil None\n")})
         QVERIFY2(printed(consumer).contains(line), qPrintable(line + printed(consumer)));

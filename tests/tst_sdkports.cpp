@@ -630,6 +630,7 @@ private slots:
     void portAdminByName();
     void unsupportedInterfaceTypeRefused_data();
     void unsupportedInterfaceTypeRefused();
+    void userSerializerRefusedByTypedPorts();
     void outPortStatusAndLatestValue();
     void componentPortRegistrationAndProfile();
     void corbaPortConnectionLimit();
@@ -1177,6 +1178,22 @@ void TestSdkPorts::unsupportedInterfaceTypeRefused()
         = QString("interface type '%1' is not available").arg(QString::fromUtf8(interfaceType));
     QTRY_VERIFY2_WITH_TIMEOUT(logText().contains(expected), qPrintable(logText()), 5000);
     QVERIFY(logText().contains(QString::fromUtf8(m_writer->outPort().getName())));
+}
+
+void TestSdkPorts::userSerializerRefusedByTypedPorts()
+{
+    // Typed C++ ports read and write plain CDR of their type: a connection naming a user serializer
+    // (OpenRTM-aist-Python's, for Python InPorts) for either side is refused, naming it.
+    for (const char *side : {"dataport.inport.marshaling_type", "dataport.outport.marshaling_type"}) {
+        RTC::ConnectorProfile profile = dataConnector(m_writer->outPort(), m_reader->inPort(), "corba_cdr");
+        profile.properties.length(profile.properties.length() + 1);
+        profile.properties[profile.properties.length() - 1].name = CORBA::string_dup(side);
+        profile.properties[profile.properties.length() - 1].value <<= "cdr:RTC/TimedShort:RTC/TimedLong";
+        QCOMPARE(m_writer->outPort().connect(profile), RTC::BAD_PARAMETER);
+        QVERIFY(m_writer->outPort().getConnectorIds().empty());
+        QVERIFY(m_reader->inPort().getConnectorIds().empty());
+    }
+    QTRY_VERIFY2_WITH_TIMEOUT(logText().contains("no serializer 'cdr:RTC/TimedShort:RTC/TimedLong'"), qPrintable(logText()), 5000);
 }
 
 void TestSdkPorts::outPortStatusAndLatestValue()

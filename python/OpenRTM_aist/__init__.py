@@ -18,6 +18,8 @@ from OpenRTM_aist.ConfigurationListeners import ConfigurationParamListener, Conf
     ConfigurationSetNameListener
 from OpenRTM_aist.CorbaConsumer import CorbaConsumer
 from OpenRTM_aist.CorbaNaming import CorbaNaming
+from OpenRTM_aist.ByteDataStreamBase import ByteDataStreamBase, SerializerFactories
+from OpenRTM_aist.CORBA_CdrMemoryStream import CORBA_CdrMemoryStream  # noqa: E402 (the class, as OpenRTM-aist-Python's)
 from OpenRTM_aist.CorbaPort import CorbaPort
 from OpenRTM_aist.DataFlowComponentBase import DataFlowComponentBase
 from OpenRTM_aist.POA import POA

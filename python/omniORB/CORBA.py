@@ -80,30 +80,93 @@ class Object(object):
         return omniORB.objrefClass(interface._NP_RepositoryId, True)(self._obj)
 
 
-# TypeCodes of the values an Any carries here (basic types and strings), by the IDL type they name,
-# with CORBA's TCKind numbers.
+# CORBA's TCKind numbers.
 tk_null, tk_void, tk_short, tk_long, tk_ushort, tk_ulong, tk_float, tk_double, tk_boolean, tk_char, tk_octet, \
-    tk_any, tk_TypeCode = range(13)
-tk_objref, tk_string, tk_longlong, tk_ulonglong, tk_wchar, tk_wstring = 14, 18, 23, 24, 26, 27
+    tk_any, tk_TypeCode, tk_Principal, tk_objref, tk_struct, tk_union, tk_enum, tk_string, tk_sequence, tk_array, \
+    tk_alias, tk_except, tk_longlong, tk_ulonglong, tk_longdouble, tk_wchar, tk_wstring = range(28)
 _KINDS = {"null": tk_null, "void": tk_void, "short": tk_short, "long": tk_long, "unsigned short": tk_ushort,
           "unsigned long": tk_ulong, "float": tk_float, "double": tk_double, "boolean": tk_boolean, "char": tk_char,
-          "octet": tk_octet, "string": tk_string, "long long": tk_longlong, "unsigned long long": tk_ulonglong,
-          "wchar": tk_wchar, "wstring": tk_wstring, "Object": tk_objref}
+          "octet": tk_octet, "any": tk_any, "TypeCode": tk_TypeCode, "string": tk_string,
+          "long long": tk_longlong, "unsigned long long": tk_ulonglong, "wchar": tk_wchar, "wstring": tk_wstring,
+          "Object": tk_objref}
 
 
 class TypeCode(object):
-    """The type of an Any's value, named by its IDL type ("long", "string", …)."""
+    """A TypeCode: the IDL type it describes, named as the runtime names types ("long", "string",
+    "RTC::Time", "sequence<long>", "long[3]"); TypeCode("IDL:RTC/Time:1.0") names a declared type by its
+    repository id, as omniORBpy's constructor does. Its parameters come from the runtime's IDL."""
 
     def __init__(self, name):
-        if name not in _KINDS:
-            raise BAD_PARAM(0, COMPLETED_NO)
+        if name.startswith("IDL:"):
+            import _rtstudio
+            scoped = _rtstudio.scoped_name_of(name)
+            if scoped.startswith("IDL:") or not scoped:
+                raise BAD_PARAM(0, COMPLETED_NO)
+            name = scoped
         self._name = name
 
+    def _info(self):
+        import _rtstudio
+        try:
+            return _rtstudio.typecode_info(self._name)
+        except ValueError:
+            raise BAD_TYPECODE(0, COMPLETED_NO)
+
     def kind(self):
-        return _KINDS[self._name]
+        if self._name in _KINDS:
+            return _KINDS[self._name]
+        return self._info()["kind"]
+
+    def _parameter(self, key, kinds):
+        if self.kind() not in kinds:
+            raise TypeCode.BadKind()
+        return self._info()[key]
+
+    def id(self):
+        if self._name == "Object":
+            return "IDL:omg.org/CORBA/Object:1.0"
+        return self._parameter("id", (tk_objref, tk_struct, tk_union, tk_enum, tk_alias, tk_except))
+
+    def name(self):
+        if self._name == "Object":
+            return "Object"
+        return self._parameter("name", (tk_objref, tk_struct, tk_union, tk_enum, tk_alias, tk_except))
+
+    def member_count(self):
+        return len(self._parameter("members", (tk_struct, tk_union, tk_enum, tk_except)))
+
+    def member_name(self, index):
+        members = self._parameter("members", (tk_struct, tk_union, tk_enum, tk_except))
+        if not 0 <= index < len(members):
+            raise TypeCode.Bounds()
+        return members[index][0]
+
+    def member_type(self, index):
+        members = self._parameter("members", (tk_struct, tk_union, tk_except))
+        if not 0 <= index < len(members):
+            raise TypeCode.Bounds()
+        return TypeCode(members[index][1])
+
+    def discriminator_type(self):
+        return TypeCode(self._parameter("discriminator", (tk_union,)))
+
+    def content_type(self):
+        return TypeCode(self._parameter("content", (tk_sequence, tk_array, tk_alias)))
+
+    def length(self):
+        return self._parameter("length", (tk_string, tk_wstring, tk_sequence, tk_array))
 
     def equal(self, other):
         return isinstance(other, TypeCode) and other._name == self._name
+
+    def equivalent(self, other):
+        return self.equal(other) or (isinstance(other, TypeCode) and self._unaliased() == other._unaliased())
+
+    def _unaliased(self):
+        code = self
+        while code.kind() == tk_alias:
+            code = code.content_type()
+        return code._name
 
     __eq__ = equal
 
@@ -116,11 +179,17 @@ class TypeCode(object):
     def __repr__(self):
         return "CORBA.TypeCode(%r)" % self._name
 
+    class BadKind(UserException):
+        _NP_RepositoryId = "IDL:omg.org/CORBA/TypeCode/BadKind:1.0"
+
+    class Bounds(UserException):
+        _NP_RepositoryId = "IDL:omg.org/CORBA/TypeCode/Bounds:1.0"
+
 
 TC_null, TC_void, TC_short, TC_long, TC_ushort, TC_ulong, TC_float, TC_double, TC_boolean, TC_char, TC_octet, \
-    TC_string, TC_longlong, TC_ulonglong, TC_wchar, TC_wstring, TC_Object = (
+    TC_any, TC_TypeCode, TC_string, TC_longlong, TC_ulonglong, TC_wchar, TC_wstring, TC_Object = (
         TypeCode(name) for name in ("null", "void", "short", "long", "unsigned short", "unsigned long", "float",
-                                    "double", "boolean", "char", "octet", "string", "long long",
+                                    "double", "boolean", "char", "octet", "any", "TypeCode", "string", "long long",
                                     "unsigned long long", "wchar", "wstring", "Object"))
 
 

@@ -45,6 +45,16 @@ def registerTypes(classes):
     _rtstudio.add_idl_classes(classes)
 
 
+def cdrMarshal(tc, data, endian=-1):
+    """data of the type of CORBA.TypeCode tc as CDR bytes (endian: 1 little, 0 big, -1 this machine's)."""
+    return _rtstudio.cdr_marshal(tc._name, data, endian != 0 and (endian == 1 or sys.byteorder == "little"))
+
+
+def cdrUnmarshal(tc, encapsulation, endian=-1):
+    """A value of the type of CORBA.TypeCode tc from CDR bytes (endian as cdrMarshal's)."""
+    return _rtstudio.cdr_unmarshal(tc._name, encapsulation, endian != 0 and (endian == 1 or sys.byteorder == "little"))
+
+
 def registerObjref(repository_id, cls):
     _objref_classes[repository_id] = cls
 

@@ -10,6 +10,8 @@ namespace RtPython {
 void bindProperties(pybind11::module_ &module);
 /// IDL data types: loading OpenRTM's IDL, the classes of its structs and enums.
 void bindDataTypes(pybind11::module_ &module);
+/// What CORBA.TypeCode tells of a type (after bindDataTypes).
+void bindTypeCodes(pybind11::module_ &module);
 /// ConnectorInfo and the listener types.
 void bindListeners(pybind11::module_ &module);
 /// InPort and OutPort.

@@ -7,6 +7,7 @@ PYBIND11_MODULE(_rtstudio, module)
     module.doc() = "RT Studio's component runtime for OpenRTM-aist-Python's API (used by OpenRTM_aist and RTC)";
     RtPython::bindProperties(module);
     RtPython::bindDataTypes(module);
+    RtPython::bindTypeCodes(module);
     RtPython::bindListeners(module);
     RtPython::bindPorts(module);
     RtPython::bindObjectRef(module);

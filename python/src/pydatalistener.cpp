@@ -2,14 +2,18 @@
 #include "pydatalistener.h"
 #include "pydatatypes.h"
 #include "pyinterpreter.h"
+#include "pyserializers.h"
+
+#include <iostream>
 
 namespace py = pybind11;
 
 namespace RtPython {
 
-PyDataListener::PyDataListener(py::object listener, std::string repositoryId)
+PyDataListener::PyDataListener(py::object listener, std::string repositoryId, const char *side)
     : m_listener(std::move(listener))
     , m_repositoryId(std::move(repositoryId))
+    , m_side(side)
 {
 }
 
@@ -21,16 +25,21 @@ PyDataListener::~PyDataListener()
 PyDataListener::ReturnCode PyDataListener::operator()(RTC::ConnectorInfo &info, RTC::ByteData &data,
                                                       const std::string &marshalingtype)
 {
-    if ((!marshalingtype.empty() && marshalingtype != "cdr") || !interpreterAlive())
+    if (!interpreterAlive())
         return NO_CHANGE;
     const bool little = info.properties.getProperty("serializer.cdr.endian", "little").compare(0, 6, "little") == 0;
+    const std::string marshaling = marshalingtype.empty() || marshalingtype == "cdr"
+        ? PySerializers::marshalingType(info.properties, m_side) : marshalingtype;
     py::gil_scoped_acquire gil;
     try {
-        const py::object sample =
-            PyDataTypes::instance().decode(m_repositoryId, data.getBuffer(), data.getDataLength(), little);
-        m_listener(info, sample);
+        // A user serializer is handed a value of the port's type, as the port's own read gives it.
+        const py::object dataType = marshaling == "cdr" ? py::none() : PyDataTypes::instance().defaultValue(m_repositoryId);
+        m_listener(info, PySerializers::read(marshaling, dataType, m_repositoryId, data.getBuffer(),
+                                             data.getDataLength(), little));
     } catch (py::error_already_set &error) {
         printError("connector data listener of " + info.name + ":", error);
+    } catch (const std::exception &error) {
+        std::cerr << "connector data listener of " << info.name << ": " << error.what() << std::endl;
     }
     return NO_CHANGE;
 }

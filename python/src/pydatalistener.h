@@ -12,19 +12,20 @@ namespace RtPython {
 /**
  * A Python connector data listener (an OpenRTM_aist.ConnectorDataListenerT: `listener(info, data)`)
  * on a port whose samples are of the IDL type @p repositoryId: the runtime's CDR sample is decoded
- * for it. Listeners observe; what they return is not sent on. Their exceptions are printed and
+ * for it as the connection's marshaling type for the port's @p side (`inport`, `outport`) says. Listeners observe; what they return is not sent on. Their exceptions are printed and
  * do not reach the port.
  */
 class PyDataListener : public RTC::ConnectorDataListener
 {
 public:
-    PyDataListener(pybind11::object listener, std::string repositoryId);
+    PyDataListener(pybind11::object listener, std::string repositoryId, const char *side);
     ~PyDataListener() override;
     ReturnCode operator()(RTC::ConnectorInfo &info, RTC::ByteData &data, const std::string &marshalingtype) override;
 
 private:
     pybind11::object m_listener;
     std::string m_repositoryId;
+    const char *m_side;
 };
 
 } // namespace RtPython

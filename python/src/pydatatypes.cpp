@@ -10,6 +10,8 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
+#include <QSet>
 
 namespace py = pybind11;
 
@@ -147,7 +149,21 @@ py::dict PyDataTypes::describe() const
         if (const std::optional<qint64> value = constant.integerValue())
             consts[py::str(constant.scopedName.toStdString())] = py::int_(static_cast<long long>(*value));
     }
+    // Every named type, for its `_tc_<Name>` TypeCode in its module.
+    py::list named;
+    const auto addNames = [&named](const auto &types) {
+        for (auto it = types.keyBegin(); it != types.keyEnd(); ++it)
+            named.append(it->toStdString());
+    };
+    addNames(model.structs);
+    addNames(model.unions);
+    addNames(model.enums);
+    addNames(model.typedefs);
+    addNames(model.exceptions);
+    addNames(model.interfaces);
     py::dict description;
+    description["files"] = describeFiles(model);
+    description["typecodes"] = named;
     description["unions"] = describeUnions(model);
     description["structs"] = structs;
     description["enums"] = enums;
@@ -168,6 +184,29 @@ py::object labelObject(const QJsonValue &label)
 }
 
 } // namespace
+
+py::dict PyDataTypes::describeFiles(const Codegen::IdlModel &model)
+{
+    // Each file's base name → the top-level modules it declares things in (omniidl's <Base>_idl).
+    QMap<QString, QSet<QString>> modules;
+    for (const Codegen::IdlDeclaration &declaration : model.declarations) {
+        if (declaration.kind == Codegen::IdlDeclaration::Kind::Module || declaration.source.file.isEmpty())
+            continue;
+        const QString top = declaration.scopedName.contains(QStringLiteral("::"))
+            ? declaration.scopedName.section(QStringLiteral("::"), 0, 0) : QStringLiteral("_GlobalIDL");
+        modules[QFileInfo(declaration.source.file).completeBaseName()].insert(top);
+    }
+    py::dict files;
+    for (auto it = modules.constBegin(); it != modules.constEnd(); ++it) {
+        QStringList names = it.value().values();
+        names.sort();
+        py::list list;
+        for (const QString &name : std::as_const(names))
+            list.append(name.toStdString());
+        files[py::str(it.key().toStdString())] = list;
+    }
+    return files;
+}
 
 py::dict PyDataTypes::describeUnions(const Codegen::IdlModel &model)
 {

@@ -32,7 +32,9 @@ public:
      * The declared types for making classes: `structs` (scoped name → member names in
      * declaration order), `enums` (scoped name → enumerator names), `consts` (scoped name →
      * integer value, for those that are integers), `unions` (scoped name → (the enum of the
-     * discriminator or "", the discriminator's type, [(member, [label values], is default)])).
+     * discriminator or "", the discriminator's type, [(member, [label values], is default)])), `typecodes`
+     * (the scoped names of every named type, for their TypeCodes), `files` (each IDL file's base
+     * name → the top-level modules it declares in, for omniidl's `<Base>_idl` modules).
      */
     pybind11::dict describe() const;
     /// The classes of the structs and enums, by scoped name.
@@ -74,6 +76,7 @@ private:
     PyDataTypes() = default;
     void rebuild();
     static pybind11::dict describeUnions(const Codegen::IdlModel &model);
+    static pybind11::dict describeFiles(const Codegen::IdlModel &model);
 
     /// Writes @p text as @p fileName into the folder where added IDL texts find each other.
     QString keepIdlText(const std::string &fileName, const std::string &text);

@@ -4,6 +4,7 @@
 #include "pydatalistener.h"
 #include "pydatatypes.h"
 #include "pyinterpreter.h"
+#include "pyserializers.h"
 
 namespace py = pybind11;
 
@@ -28,17 +29,27 @@ bool PyInPort::read(std::string name)
     return takeSample();
 }
 
+std::string PyInPort::marshalingType()
+{
+    // The first connection's: samples do not tell which connection they came through.
+    const std::vector<RTC::InPortConnector *> &connections = connectors();
+    return connections.empty() ? std::string("cdr")
+                               : PySerializers::marshalingType(connections.front()->profile().properties, "inport");
+}
+
 bool PyInPort::takeSample()
 {
     Runtime::SharedCdr bytes;
     bool little = true;
+    std::string marshaling;
     {
         // A pull connection asks the other side here: other threads run Python meanwhile.
         py::gil_scoped_release released;
         if (!readBytes(&bytes, &little))
             return false;
+        marshaling = marshalingType();
     }
-    m_value = PyDataTypes::instance().decode(dataType(), bytes->data(), bytes->size(), little);
+    m_value = PySerializers::read(marshaling, m_value, dataType(), bytes->data(), bytes->size(), little);
     py::gil_scoped_release released;
     m_listeners.notifyData(RTC::ConnectorDataListenerType::ON_BUFFER_READ, std::string(), bytes->data(),
                            static_cast<unsigned long>(bytes->size()), little);
@@ -53,7 +64,7 @@ py::object PyInPort::readValue()
 
 void PyInPort::addDataListener(RTC::ConnectorDataListenerType type, py::object listener)
 {
-    addConnectorDataListener(type, new PyDataListener(std::move(listener), dataType()));
+    addConnectorDataListener(type, new PyDataListener(std::move(listener), dataType(), "inport"));
 }
 
 void PyInPort::addConnectorListener(RTC::ConnectorListenerType type, py::object listener)

@@ -11,7 +11,8 @@ namespace RtPython {
 
 /**
  * OpenRTM_aist.InPort: an SDK InPort whose samples are CDR of the IDL type of the value it was
- * made with (`InPort("in", RTC.TimedLong(RTC.Time(0, 0), 0))`), decoded into new Python values.
+ * made with (`InPort("in", RTC.TimedLong(RTC.Time(0, 0), 0))`), decoded into new Python values, or
+ * by the Python serializer its connection's marshaling type names.
  */
 class PyInPort : public RTC::InPortBase
 {
@@ -34,6 +35,8 @@ public:
 private:
     /// Takes the next sample into m_value; false when none waits. Needs the GIL.
     bool takeSample();
+    /// The connection's `inport.marshaling_type` (or `marshaling_type`), `cdr` by default.
+    std::string marshalingType();
 
     pybind11::object m_value;
 };

@@ -49,7 +49,7 @@ bool PyOutPort::writeValue(py::object value)
 
 void PyOutPort::addDataListener(RTC::ConnectorDataListenerType type, py::object listener)
 {
-    addConnectorDataListener(type, new PyDataListener(std::move(listener), dataType()));
+    addConnectorDataListener(type, new PyDataListener(std::move(listener), dataType(), "outport"));
 }
 
 void PyOutPort::addConnectorListener(RTC::ConnectorListenerType type, py::object listener)

@@ -6,6 +6,7 @@
 #include <rtmruntime/corbautil.h>
 
 #include "cdrcodec.h"
+#include "cdrtypecode.h"
 
 #include <QJsonArray>
 #include <utility>
@@ -71,6 +72,8 @@ void PyValueConverter::refuse(const QString &path, const QString &reason)
 QJsonValue PyValueConverter::toJson(const IdlType &written, py::handle value, const QString &path) const
 {
     const IdlType type = m_model.resolve(written);
+    if (Codegen::CdrTypeCode::isTypeCode(type))
+        return typeCodeToJson(value, path);
     switch (type.kind) {
     case IdlType::Kind::Basic:
         return basicToJson(type.name, value, path);
@@ -216,12 +219,14 @@ py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QS
 {
     if (!value.isObject())
         return py::none();
-    // A reference of an interface whose stub module is imported is one to call, as omniORBpy gives it.
-    if (!interfaceName.isEmpty()) {
+    // A reference of an interface whose stub module is imported is one to call, as omniORBpy gives it;
+    // so is any reference a call returns (a CORBA::Object of the type its IOR names, to _narrow).
+    if (!interfaceName.isEmpty() || t_callableReferences) {
         const py::object omniORB = py::module_::import("omniORB");
-        const py::object cls
-            = omniORB.attr("objrefClass")(m_model.repositoryId(interfaceName).toStdString(), t_callableReferences);
-        if (!cls.is(omniORB.attr("CORBA").attr("Object"))) {
+        const QString typeId = interfaceName.isEmpty() ? value[QStringLiteral("type_id")].toString()
+                                                       : m_model.repositoryId(interfaceName);
+        const py::object cls = omniORB.attr("objrefClass")(typeId.toStdString(), t_callableReferences);
+        if (!cls.is(omniORB.attr("CORBA").attr("Object")) || t_callableReferences) {
             CORBA::Object_var object = Runtime::theOrb()->string_to_object(IorForm::toIor(value).c_str());
             return cls(py::cast(PyObjectRef(object.in())));
         }
@@ -234,29 +239,50 @@ py::object PyValueConverter::referenceToPython(const QJsonValue &value, const QS
     return referenceClass()(value[QStringLiteral("type_id")].toString().toStdString(), profiles);
 }
 
+Codegen::IdlType PyValueConverter::typeNamed(const QString &name, const QString &path) const
+{
+    try {
+        return Codegen::CdrTypeCode::fromText(m_model, name);
+    } catch (const Codegen::CdrTypeCode::Error &error) {
+        refuse(path, error.message);
+    }
+}
+
 QJsonValue PyValueConverter::anyToJson(py::handle value, const QString &path) const
 {
-    // omniORBpy's CORBA.Any: its TypeCode (here the IDL type it names) and its value.
+    // omniORBpy's CORBA.Any: its TypeCode (here naming the IDL type) and its value.
     if (value.is_none())
         return QJsonValue::Null;
-    if (!py::hasattr(value, "_t") || !py::hasattr(value, "_v") || !py::hasattr(value.attr("_t"), "_name"))
+    if (!py::hasattr(value, "_t") || !py::hasattr(value, "_v"))
         refuse(path, QStringLiteral("a CORBA.Any is needed (CORBA.Any(CORBA.TC_long, 5), omniORB.any.to_any(5))"));
-    const QString name = QString::fromStdString(value.attr("_t").attr("_name").cast<std::string>());
-    std::optional<IdlType> type;
-    if (!Codegen::CdrCodec::anyValueType(name, &type))
-        refuse(path, QStringLiteral("an any of type %1 is not supported yet (basic types and strings only)").arg(name));
+    const QString name = typeCodeToJson(value.attr("_t"), path).toString();
+    const IdlType type = typeNamed(name, path);
     return QJsonObject{{QStringLiteral("type"), name},
-                       {QStringLiteral("value"), type ? toJson(*type, value.attr("_v"), path) : QJsonValue::Null}};
+                       {QStringLiteral("value"), Codegen::CdrTypeCode::isEmpty(type)
+                                                     ? QJsonValue::Null : toJson(type, value.attr("_v"), path)}};
 }
 
 py::object PyValueConverter::anyToPython(const QJsonValue &value) const
 {
-    const py::object corba = py::module_::import("omniORB.CORBA");
     const QString name = value[QStringLiteral("type")].toString(QStringLiteral("null"));
-    std::optional<IdlType> type;
-    Codegen::CdrCodec::anyValueType(name, &type);
-    const py::object content = type ? toPython(*type, value[QStringLiteral("value")]) : py::none();
-    return corba.attr("Any")(corba.attr("TypeCode")(name.toStdString()), content);
+    const IdlType type = typeNamed(name, QString());
+    const py::object content
+        = Codegen::CdrTypeCode::isEmpty(type) ? py::none() : toPython(type, value[QStringLiteral("value")]);
+    return py::module_::import("omniORB.CORBA").attr("Any")(typeCodeToPython(name), content);
+}
+
+QJsonValue PyValueConverter::typeCodeToJson(py::handle value, const QString &path) const
+{
+    if (!py::hasattr(value, "_name"))
+        refuse(path, QStringLiteral("a CORBA.TypeCode is needed (CORBA.TC_long, RTC._tc_Time)"));
+    const QString name = QString::fromStdString(value.attr("_name").cast<std::string>());
+    typeNamed(name, path);
+    return name;
+}
+
+py::object PyValueConverter::typeCodeToPython(const QString &name)
+{
+    return py::module_::import("omniORB.CORBA").attr("TypeCode")(name.toStdString());
 }
 
 py::object PyValueConverter::referenceClass()
@@ -279,6 +305,8 @@ QJsonValue PyValueConverter::enumToJson(const Codegen::IdlEnum &type, py::handle
 py::object PyValueConverter::toPython(const IdlType &written, const QJsonValue &value) const
 {
     const IdlType type = m_model.resolve(written);
+    if (Codegen::CdrTypeCode::isTypeCode(type))
+        return typeCodeToPython(value.toString(QStringLiteral("null")));
     switch (type.kind) {
     case IdlType::Kind::Basic:
         return basicToPython(type.name, value);

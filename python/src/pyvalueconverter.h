@@ -15,8 +15,8 @@ namespace RtPython {
  * its class's items (`RTC.RTC_OK`), integers are int, floating types float, `char` and strings str,
  * `sequence<octet>` bytes, other sequences and arrays lists, a union an object of its class with
  * the discriminator in `_d` and the value in `_v`, an object reference None when nil and else a
- * `_rtstudio_interfaces.ObjectReference` holding its IOR. `any` and TypeCode are refused (not yet
- * mapped).
+ * `_rtstudio_interfaces.ObjectReference` holding its IOR, an `any` a `CORBA.Any` and a TypeCode
+ * a `CORBA.TypeCode` naming its IDL type.
  */
 class PyValueConverter
 {
@@ -28,6 +28,8 @@ public:
     QJsonValue toJson(const Codegen::IdlType &type, pybind11::handle value, const QString &path) const;
     /// The Python value of the codec's @p value of @p type.
     pybind11::object toPython(const Codegen::IdlType &type, const QJsonValue &value) const;
+    /// The model's type @p name names; refused (TypeError naming @p path) when it names none.
+    Codegen::IdlType typeNamed(const QString &name, const QString &path) const;
 
     /**
      * While one lives in a thread, the references toPython() makes there are ones to call (a service
@@ -57,9 +59,12 @@ private:
     /// kept as its IOR (an _rtstudio_interfaces.ObjectReference).
     pybind11::object referenceToPython(const QJsonValue &value, const QString &interfaceName = {}) const;
     static pybind11::object referenceClass();
-    /// An `any` as omniORBpy's CORBA.Any (holding a basic type or a string) and back.
+    /// An `any` as omniORBpy's CORBA.Any (a CORBA.TypeCode and a value of its type) and back.
     QJsonValue anyToJson(pybind11::handle value, const QString &path) const;
     pybind11::object anyToPython(const QJsonValue &value) const;
+    /// A CORBA.TypeCode as the name of its IDL type (Codegen::CdrTypeCode's text) and back.
+    QJsonValue typeCodeToJson(pybind11::handle value, const QString &path) const;
+    static pybind11::object typeCodeToPython(const QString &name);
     QJsonValue enumToJson(const Codegen::IdlEnum &type, pybind11::handle value, const QString &path) const;
     pybind11::object basicToPython(const QString &keyword, const QJsonValue &value) const;
     pybind11::object listToPython(const Codegen::IdlType &element, const QJsonValue &value) const;

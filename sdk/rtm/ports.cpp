@@ -416,7 +416,18 @@ ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
 
 ReturnCode_t InPortBase::publishInterfaces(ConnectorProfile &connector_profile)
 {
-    const ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
+    ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
+    // Typed C++ ports read plain CDR of their type; user serializers are Python ones (PyInPort).
+    if (accepted == RTC_OK && takesValues()) {
+        const Runtime::Properties p = Runtime::nvToProperties(connector_profile.properties);
+        const std::string type = coil::eraseBothEndsBlank(
+            p.value("dataport.inport.marshaling_type", p.value("dataport.marshaling_type", "cdr")));
+        if (!type.empty() && type != "cdr") {
+            RTC_ERROR(("%s: connector '%s' refused: no serializer '%s' (the port reads plain cdr)", getName(),
+                       static_cast<const char *>(connector_profile.name), type.c_str()));
+            accepted = BAD_PARAMETER;
+        }
+    }
     return accepted != RTC_OK ? accepted : Runtime::InPortBase::publishInterfaces(connector_profile);
 }
 

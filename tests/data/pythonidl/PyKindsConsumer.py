@@ -49,7 +49,9 @@ class PyKindsConsumer(OpenRTM_aist.DataFlowComponentBase):
         print("consumer: letter", echo.letter("\u00e9"))
         print("consumer: reversed", echo.reversed("h\u00e9llo \u4e16"))
         print("consumer: swap", echo.swap(PyKinds.Pick(number=5), PyKinds.Pick(text="t")))
-        for value in (any.to_any(2.5), any.to_any("corba_cdr"), CORBA.Any(CORBA.TC_ushort, 7)):
+        for value in (any.to_any(2.5), any.to_any("corba_cdr"), CORBA.Any(CORBA.TC_ushort, 7),
+                      any.to_any(PyKinds.Pick(number=5)), any.to_any(RTC.Time(1, 2)),
+                      CORBA.Any(CORBA.TC_TypeCode, PyKinds._tc_Pick), any.to_any([1, 2])):
             same, described = echo.wrap(value)
             print("consumer: wrap", same == value, any.from_any(described))
         orb = CORBA.ORB_init(sys.argv)

@@ -16,6 +16,11 @@ def check(condition, what):
         sys.exit(1)
 
 
+def name_value(value):
+    import SDOPackage
+    return SDOPackage.NameValue("n", value)
+
+
 def round_trip(value):
     return _rtstudio.cdr_decode(value._NP_RepositoryId, _rtstudio.cdr_encode(value))
 
@@ -49,6 +54,18 @@ for typedef in (PyCalc.TermList, PyCalc.LongList, PyCalc.Triple):
         check(False, "a typedef cannot be constructed")
     except RuntimeError:
         pass
+
+# TypeCodes as omniidl's stubs have them, and anys of the stubs' types.
+from omniORB import any  # noqa: E402
+check(PyCalc._tc_Record.kind() == CORBA.tk_struct and PyCalc._tc_Record.member_type(1) == PyCalc._tc_TermList,
+      "struct TypeCode")
+check(PyCalc._tc_Triple.kind() == CORBA.tk_alias and PyCalc._tc_Triple.content_type().length() == 3, "array TypeCode")
+check(PyCalc._tc_Calculator.id() == "IDL:PyCalc/Calculator:1.0" and PyCalc._tc_TooMany.kind() == CORBA.tk_except,
+      "interface and exception TypeCodes")
+for value in (any.to_any(record), any.to_any(choice), any.to_any(PyCalc.MULTIPLY), any.to_any(error),
+              CORBA.Any(PyCalc._tc_Triple, [1, 2, 3]), CORBA.Any(CORBA.TC_TypeCode, PyCalc._tc_Choice)):
+    pair = round_trip(name_value(value))
+    check(pair.value == value, "any round trip: %r" % (pair.value,))
 
 check(issubclass(PyCalc__POA.Calculator, PortableServer.Servant), "servant base")
 check(issubclass(PyCalc__POA.Scientific, PyCalc__POA.Calculator), "servant inheritance")

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // CxxKinds: provides PyKinds::Echo on its service port "Provided" (as tests/data/pythonidl's
 // PyKindsProvider.py answers) and, once its port "Required" is connected and it is active, calls
-// the Echo there once with wide characters, a union and its own servant's reference, printing
+// the Echo there once with wide characters, a union, anys and its own servant's reference, printing
 // what came back (UTF-8) and "cxx consumer: done".
 #include "Kinds.hh"
 
@@ -12,6 +12,7 @@
 
 #include <clocale>
 #include <cwctype>
+#include <functional>
 #include <iostream>
 #include <string>
 
@@ -97,11 +98,35 @@ public:
             *described <<= (std::string("string ") + text).c_str();
         else if (value >>= small)
             *described <<= ("unsigned short " + std::to_string(small)).c_str();
+        else
+            *described <<= describeConstructed(value).c_str();
         return new CORBA::Any(value);
     }
     CORBA::Long calls() override { return m_calls; }
 
 private:
+    /// An any of a union, a struct, a TypeCode or a sequence, as text ("" for other types).
+    static std::string describeConstructed(const CORBA::Any &value)
+    {
+        const PyKinds::Pick *pick = nullptr;
+        const RTC::Time *time = nullptr;
+        CORBA::TypeCode_ptr type = CORBA::TypeCode::_nil();
+        const CORBA::LongSeq *numbers = nullptr;
+        if (value >>= pick)
+            return "Pick " + describe(*pick);
+        if (value >>= time)
+            return "RTC::Time " + std::to_string(time->sec) + ' ' + std::to_string(time->nsec);
+        if (value >>= type)
+            return std::string("TypeCode ") + type->id();
+        if (value >>= numbers) {
+            std::string text = "sequence";
+            for (CORBA::ULong i = 0; i < numbers->length(); ++i)
+                text += ' ' + std::to_string((*numbers)[i]);
+            return text;
+        }
+        return {};
+    }
+
     CORBA::Long m_calls = 0;
 };
 
@@ -165,11 +190,33 @@ private:
         const char *text = nullptr;
         if ((same.in() >>= back) && (described.in() >>= text))
             printLine("cxx consumer: wrap " + std::to_string(back) + ' ' + text);
+        wrapConstructed();
         PyKinds::Echo_var local = m_local._this();
         PyKinds::Echo_var self;
         PyKinds::Echo_var relayed = m_peer->relay(local.in(), self.out());
         printLine("cxx consumer: relay " + std::to_string(relayed->calls()) + ' '
                   + (self->calls() >= 4 ? "True" : "False"));
+    }
+
+    /// Anys of a struct, a union and a TypeCode to the peer, printing what it made of them.
+    void wrapConstructed()
+    {
+        PyKinds::Pick pick;
+        pick.text("t");
+        const std::function<void(CORBA::Any &)> fills[] = {
+            [](CORBA::Any &value) { value <<= RTC::Time{1, 2}; },
+            [&pick](CORBA::Any &value) { value <<= pick; },
+            [](CORBA::Any &value) { value <<= PyKinds::_tc_Pick; },
+        };
+        for (const auto &fill : fills) {
+            CORBA::Any value;
+            fill(value);
+            CORBA::Any_var described;
+            CORBA::Any_var same = m_peer->wrap(value, described.out());
+            const char *text = nullptr;
+            if ((described.in() >>= text) && same->type()->equal(value.type()))
+                printLine(std::string("cxx consumer: wrap ") + text);
+        }
     }
 
     RTC::CorbaPort m_providedPort;
