@@ -495,7 +495,8 @@ void TestInteropSystem::managerCommands()
 {
     const QString direct = QStringLiteral("corbaloc::127.0.0.1:%1").arg(m_masterPort);
     const RtctlResult created
-        = rtctl({"mgr", direct, "create",
+        // rtcd2 starts the slave as a new process that profiles every module: slow on a loaded machine.
+        = rtctl({"mgr", "--timeout", "20000", direct, "create",
                  "ConsoleOut?instance_name=Made0&manager_name=interopslave", "list"});
     QVERIFY2(created.code == 0, qPrintable(created.err));
     QCOMPARE(created.lines().value(0), QString("Made0"));
