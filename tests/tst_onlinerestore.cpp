@@ -201,7 +201,8 @@ void TestOnlineRestore::japaneseDialogShowsTheEnginesReasons()
     QTranslator japanese;
     QVERIFY(japanese.load(Studio::UiLanguage::catalogue(QStringLiteral("ja"))));
     QVERIFY(QCoreApplication::installTranslator(&japanese));
-    const auto english = qScopeGuard([&japanese] { QCoreApplication::removeTranslator(&japanese); });
+    const auto english
+        = qScopeGuard([&japanese] { QCoreApplication::removeTranslator(&japanese); });
     OnlineSession session;
     RestoreDialog dialog(&session, system("Absent0"), options());
     QSignalSpy planned(&dialog, &RestoreDialog::planned);

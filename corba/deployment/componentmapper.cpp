@@ -319,7 +319,8 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
         if (mapping.manager.isEmpty() && isLivePath(component.pathUri) && slash > 0)
             mapping.manager = QLatin1Char('/') + component.pathUri.left(slash) + QStringLiteral("/manager.mgr");
         if (mapping.manager.isEmpty()) {
-            mapping.message = tr("%1; no manager to create it (give one with -m)").arg(mapping.message);
+            mapping.message
+                = tr("%1; no manager to create it (give one with -m)").arg(mapping.message);
             return mapping;
         }
         mapping.kind = MappingKind::Create;

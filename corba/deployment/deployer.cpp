@@ -100,7 +100,8 @@ QString notLoadable(const QString &type, const QString &node, const QString &rep
                     const Planner::NodeFacts &facts)
 {
     if (repository.isEmpty())
-        return DeployPlan::tr("%1 on %2: not loadable there and no repository given").arg(type, node);
+        return DeployPlan::tr("%1 on %2: not loadable there and no repository given")
+            .arg(type, node);
     return DeployPlan::tr("%1 on %2: not loadable there and no package of %3 fits it (%4)")
         .arg(type, node, repository,
              facts.architecture.value_or(DeployPlan::tr("architecture unknown")));
@@ -449,7 +450,8 @@ DeployReport undeploySystem(const Profile::RtsProfile &profile, const RestorePla
             if (!ours || done.contains(package.name))
                 continue;
             done.insert(package.name);
-            const QString subject = DeployPlan::tr("%1 on %2", "package on node").arg(package.name, node.key());
+            const QString subject
+                = DeployPlan::tr("%1 on %2", "package on node").arg(package.name, node.key());
             const QString message = uninstallPackage(node.key(), package.name, QString());
             steps.add(QStringLiteral("uninstall"), subject,
                       message.isEmpty() ? StepStatus::Done : StepStatus::Skipped, message, false);

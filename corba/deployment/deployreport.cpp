@@ -94,12 +94,14 @@ QString DeployStep::summary() const
 {
     if (message.isEmpty())
         return heading();
-    return tr("%1 %2: %3", "step: action, subject, message").arg(actionText(action), subject, message);
+    return tr("%1 %2: %3", "step: action, subject, message")
+        .arg(actionText(action), subject, message);
 }
 
 QString DeployStep::toString() const
 {
-    return tr("%1 %2", "step line: status, then the step's summary").arg(statusText(status), summary());
+    return tr("%1 %2", "step line: status, then the step's summary")
+        .arg(statusText(status), summary());
 }
 
 QList<DeployStep> DeployReport::stepsWith(StepStatus status) const

@@ -36,7 +36,8 @@ struct DeployStep
 
     /// `action subject`: what the step does, in the UI's language (English in rtctl).
     QString heading() const;
-    /// `action subject: message`, in the UI's language; a failed required step's is the report's error.
+    /// `action subject: message`, in the UI's language; a failed required step's is the report's
+    /// error.
     QString summary() const;
     /// `STATUS action subject: message`, one line as rtctl prints it (translated in the GUI).
     QString toString() const;

@@ -80,7 +80,8 @@ DeployReport SystemHealer::check(const DeployControl &control)
     for (const QString &node : sorted(QStringList(m_gone.cbegin(), m_gone.cend()))) {
         if (alive.contains(node)) {
             m_gone.remove(node);
-            steps.add(QStringLiteral("node back"), node, StepStatus::Done, tr("nothing moved back"));
+            steps.add(QStringLiteral("node back"), node, StepStatus::Done,
+                      tr("nothing moved back"));
         }
     }
     report = steps.report();
@@ -189,7 +190,8 @@ QHash<QString, QString> planPlacement(const Profile::RtsProfile &profile, const 
         QStringList unmet;
         for (const Planner::Unmet &u : plan.unmet)
             unmet << QStringLiteral("%1: %2").arg(u.instanceName, u.requirement);
-        *why = SystemHealer::tr("no plan on %1: %2").arg(nodes.join(QLatin1Char(',')), unmet.join(QStringLiteral("; ")));
+        *why = SystemHealer::tr("no plan on %1: %2")
+                   .arg(nodes.join(QLatin1Char(',')), unmet.join(QStringLiteral("; ")));
         return {};
     }
     QHash<QString, QString> placement;

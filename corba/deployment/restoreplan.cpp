@@ -78,8 +78,9 @@ QString RestorePlan::componentLine(const ComponentMapping &c)
     const bool note = !c.message.isEmpty();
     switch (c.kind) {
     case MappingKind::Create:
-        return note ? tr("component %1 create (%2): %3").arg(c.instanceName, c.createArgument, c.message)
-                    : tr("component %1 create (%2)").arg(c.instanceName, c.createArgument);
+        return note
+            ? tr("component %1 create (%2): %3").arg(c.instanceName, c.createArgument, c.message)
+            : tr("component %1 create (%2)").arg(c.instanceName, c.createArgument);
     case MappingKind::Existing:
         return note ? tr("component %1 existing at %2: %3").arg(c.instanceName, c.path, c.message)
                     : tr("component %1 existing at %2").arg(c.instanceName, c.path);

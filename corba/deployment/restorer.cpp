@@ -105,8 +105,9 @@ private:
             const ComponentProxy proxy(ior, c.path);
             m_live.insert(c.instanceName, proxy);
             m_undo.append({step, [proxy] { proxy.exit(); }});
-            m_steps.finish(step, StepStatus::Done,
-                           tr("%1 by %2", "created: create argument, manager").arg(c.createArgument, address));
+            m_steps.finish(
+                step, StepStatus::Done,
+                tr("%1 by %2", "created: create argument, manager").arg(c.createArgument, address));
         } catch (const Error &e) {
             m_steps.fail(step, e.message());
         }
@@ -143,9 +144,8 @@ private:
     void connect(const ConnectorPlan &c, int step)
     {
         if (!m_live.contains(c.sourceInstance) || !m_live.contains(c.targetInstance))
-            throw Error(
-                Error::Kind::NotFound,
-                tr("%1 or %2 is not there").arg(c.sourceInstance, c.targetInstance));
+            throw Error(Error::Kind::NotFound,
+                        tr("%1 or %2 is not there").arg(c.sourceInstance, c.targetInstance));
         const auto sourcePorts = ports(c.sourceInstance);
         const auto targetPorts = ports(c.targetInstance);
         const Corba::PortInfo *source = findPort(sourcePorts, c.sourcePort, c.sourceInstance);
@@ -156,9 +156,8 @@ private:
         const QString path = proxy(c.sourceInstance).path();
         bool replaced = false;
         if (const Corba::ConnectorInfo *existing = findConnector(*source, c.connectorId)) {
-            const auto alreadyConnected = [&] {
-                m_steps.finish(step, StepStatus::Skipped, tr("already connected"));
-            };
+            const auto alreadyConnected
+                = [&] { m_steps.finish(step, StepStatus::Skipped, tr("already connected")); };
             if (existing->portIors.contains(target->ior)) {
                 alreadyConnected();
                 return;
@@ -186,9 +185,10 @@ private:
         m_undo.append({step, [sourcePort, c, path] {
                            Corba::PortConnection::disconnect(sourcePort, c.connectorId, path);
                        }});
-        m_steps.finish(step, StepStatus::Done,
-                       (replaced ? tr("%1 -> %2 (replaced a broken connector)") : QStringLiteral("%1 -> %2"))
-                           .arg(source->name, target->name));
+        m_steps.finish(
+            step, StepStatus::Done,
+            (replaced ? tr("%1 -> %2 (replaced a broken connector)") : QStringLiteral("%1 -> %2"))
+                .arg(source->name, target->name));
     }
 
     // Files name data types either way (`IDL:RTC/TimedLong:1.0`, `RTC::TimedLong`); the port's
@@ -414,8 +414,10 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
                 continue;
             }
             if (!port) {
-                steps.fail(d.step, RestoreRun::tr("%1: no port named '%2'")
-                                       .arg(job.source->path, shortPortName(c.sourcePort, c.sourceInstance)));
+                steps.fail(
+                    d.step,
+                    RestoreRun::tr("%1: no port named '%2'")
+                        .arg(job.source->path, shortPortName(c.sourcePort, c.sourceInstance)));
                 continue;
             }
             if (!findConnector(*port, c.connectorId)) {

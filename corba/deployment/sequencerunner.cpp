@@ -332,9 +332,8 @@ private:
             for (const auto &other : preceding.precedingComponents) {
                 const ComponentMapping *mapping = live(other.instanceName);
                 if (!mapping)
-                    return unmet(
-                        target, step,
-                        tr("preceding %1 is not there").arg(other.instanceName));
+                    return unmet(target, step,
+                                 tr("preceding %1 is not there").arg(other.instanceName));
                 ComponentProxy proxy(mapping->ior, mapping->path);
                 const int index = ecIndex(proxy, other.id);
                 watched.push_back({other, std::move(proxy), index});
@@ -372,9 +371,8 @@ private:
         for (const auto &other : preceding.precedingComponents) {
             const QStringList matching = plannedKeys(other);
             if (matching.isEmpty())
-                return unmet(
-                    target, step,
-                    tr("preceding %1 is not in the plan").arg(other.instanceName));
+                return unmet(target, step,
+                             tr("preceding %1 is not in the plan").arg(other.instanceName));
             keys += matching;
         }
         const auto allSent = [&] {
@@ -384,9 +382,8 @@ private:
         };
         if (waitUntil(allSent, -1) != WaitResult::Met)
             return cancelled(step);
-        m_steps.finish(
-            step, StepStatus::Done,
-            tr("after %1 was sent").arg(names(preceding.precedingComponents)));
+        m_steps.finish(step, StepStatus::Done,
+                       tr("after %1 was sent").arg(names(preceding.precedingComponents)));
         return true;
     }
 
@@ -444,8 +441,8 @@ private:
         const QString subject = target.instance + QLatin1Char('.') + target.ecId;
         const ComponentMapping *mapping = live(target.instance);
         if (mapping && !mapping->activate) {
-            m_steps.add(actionName(m_action), subject, StepStatus::Skipped,
-                        tr("not selected"), isRequired);
+            m_steps.add(actionName(m_action), subject, StepStatus::Skipped, tr("not selected"),
+                        isRequired);
             return;
         }
         const int step = m_steps.begin(actionName(m_action), subject, isRequired);

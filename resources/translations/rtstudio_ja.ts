@@ -2174,7 +2174,7 @@
         <translation>%1 は %2 ですが、システムが求めているのは %3 です</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>%1; no manager to create it (give one with -m)</source>
         <translation>%1。生成するマネージャがありません（-m で指定してください）</translation>
     </message>
@@ -2187,7 +2187,7 @@
         <translation>%2 の %1：そこではロードできず、リポジトリも指定されていません</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1 on %2: not loadable there and no package of %3 fits it (%4)</source>
         <translation>%2 の %1：そこではロードできず、%3 にも合うパッケージがありません（%4）</translation>
     </message>
@@ -2223,7 +2223,7 @@
         <translation>問題：%1</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+65"/>
         <source>%1 on %2</source>
         <comment>package on node</comment>
         <translation>%2 の %1</translation>
@@ -2232,7 +2232,7 @@
 <context>
     <name>Deploy::DeployReport</name>
     <message>
-        <location filename="../../corba/deployment/deployreport.cpp" line="+123"/>
+        <location filename="../../corba/deployment/deployreport.cpp" line="+125"/>
         <source>failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
@@ -2245,7 +2245,7 @@
 <context>
     <name>Deploy::DeployStep</name>
     <message>
-        <location line="-113"/>
+        <location line="-115"/>
         <source>find</source>
         <comment>step action</comment>
         <translation>検索</translation>
@@ -2419,7 +2419,7 @@
         <translation>%2 の%1：%3</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 %2</source>
         <comment>step line: status, then the step&apos;s summary</comment>
         <translation>[%1] %2</translation>
@@ -2540,7 +2540,7 @@
         <translation>コネクタ %1 を接続：%2 -&gt; %3（%4）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>component %1 create (%2): %3</source>
         <translation>コンポーネント %1 を生成（%2）：%3</translation>
     </message>
@@ -2584,7 +2584,7 @@
         <translation>マネージャが指定されていません</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>%1 by %2</source>
         <comment>created: create argument, manager</comment>
         <translation>%1（%2 で生成）</translation>
@@ -2595,7 +2595,7 @@
         <translation>未選択</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>%1 or %2 is not there</source>
         <translation>%1 または %2 がありません</translation>
     </message>
@@ -2630,7 +2630,7 @@
         <translation>%1 がありません</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+51"/>
         <source>%1: no port named &apos;%2&apos;</source>
         <translation>%1：「%2」という名前のポートはありません</translation>
     </message>
@@ -2649,7 +2649,7 @@
         <translation>開始から %1 ms</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+39"/>
         <source>preceding %1 is not there</source>
         <translation>先行する %1 がありません</translation>
     </message>
@@ -2659,12 +2659,12 @@
         <translation>%1 の後</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>preceding %1 is not in the plan</source>
         <translation>先行する %1 は計画にありません</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>after %1 was sent</source>
         <translation>%1 の送信後</translation>
     </message>
@@ -2695,12 +2695,12 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>not selected</source>
         <translation>未選択</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 is not there</source>
         <translation>%1 がありません</translation>
     </message>
@@ -2713,7 +2713,7 @@
 <context>
     <name>Deploy::SystemHealer</name>
     <message>
-        <location filename="../../corba/deployment/healer.cpp" line="+83"/>
+        <location filename="../../corba/deployment/healer.cpp" line="+84"/>
         <source>nothing moved back</source>
         <translation>何も戻していません</translation>
     </message>
@@ -5194,19 +5194,19 @@ TLS で暗号化されています。サーバは認証局の証明書で &quot;
     </message>
     <message numerus="yes">
         <location line="+46"/>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>%1: %n action(s) done</source>
         <translation>
             <numerusform>%1: %n 件の操作が完了</numerusform>
         </translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-30"/>
         <source>, waiting: %1</source>
         <translation>、待機中: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+25"/>
+        <location line="+26"/>
         <source>%1: cancelled after %n action(s)</source>
         <translation>
             <numerusform>%1: %n 件の操作の後に取り消しました</numerusform>

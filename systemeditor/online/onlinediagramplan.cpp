@@ -120,7 +120,8 @@ void OnlineDiagram::finishSystemPlan(const OnlineResult &result)
         // A wait ended by the failure or by Cancel is not a failure of its own.
         // The first required failure is the summary's error already.
         if (step.status == Deploy::StepStatus::Failed
-            && step.message != Deploy::DeployReport::cancelledError() && step.summary() != report.error)
+            && step.message != Deploy::DeployReport::cancelledError()
+            && step.summary() != report.error)
             failures.append(step.toString());
     }
     QString summary;
