@@ -196,7 +196,9 @@ private:
     bool checkPlan()
     {
         for (const QString &problem : m_plan.problems)
-            m_steps.fail(m_steps.begin(QStringLiteral("plan"), QStringLiteral("deploy")), problem);
+            m_steps.fail(m_steps.begin(QStringLiteral("plan"),
+                                       DeployPlan::tr("deploy", "what the plan check is about")),
+                         problem);
         return m_steps.ok();
     }
 

@@ -423,7 +423,8 @@ private:
     {
         m_steps.fail(step, reason);
         if (m_steps.ok())
-            m_steps.fail(m_steps.begin(QStringLiteral("cancel"), QStringLiteral("plan")),
+            m_steps.fail(m_steps.begin(QStringLiteral("cancel"),
+                                       tr("plan", "the start or stop plan, cancelled")),
                          tr("%1: %2", "instance: reason").arg(target.instance, reason));
         return false;
     }

@@ -2202,7 +2202,13 @@
         <translation>ノード %1：%2</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+74"/>
+        <source>deploy</source>
+        <comment>what the plan check is about</comment>
+        <translation>デプロイ</translation>
+    </message>
+    <message>
+        <location line="+75"/>
         <source>%1 %2 on %3</source>
         <comment>package, version on node</comment>
         <translation>%3 の %1 %2</translation>
@@ -2690,6 +2696,12 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>plan</source>
+        <comment>the start or stop plan, cancelled</comment>
+        <translation>計画</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1: %2</source>
         <comment>instance: reason</comment>
         <translation>%1：%2</translation>
