@@ -17,17 +17,20 @@
 #include "rtsxml.h"
 #include "stallmeter.h"
 #include "stoppedprocess.h"
+#include "uilanguage.h"
 
 #include <QCheckBox>
 #include <QLabel>
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTranslator>
 #include <QTreeWidget>
 
 using namespace SystemEditor;
@@ -42,6 +45,7 @@ private slots:
     void showsTheMappingAndRestores();
     void untickedConnectorsAreNotConnected();
     void missingComponentsBlockTheRestore();
+    void japaneseDialogShowsTheEnginesReasons();
     void createsTheExampleFromNothing();
     void driftShowsAChangedConfigurationValue();
     void stoppedManagerMidRestoreRollsBack();
@@ -189,6 +193,34 @@ void TestOnlineRestore::missingComponentsBlockTheRestore()
     QCOMPARE(dialog.componentTable()->item(1, 2)->text(), QStringLiteral("missing"));
     QVERIFY(!dialog.findChild<QPushButton *>("restoreButton")->isEnabled());
     QVERIFY(dialog.findChild<QLabel *>("summaryLabel")->text().contains("Absent0"));
+}
+
+void TestOnlineRestore::japaneseDialogShowsTheEnginesReasons()
+{
+    // The engine words its reasons in the GUI's language (rtctl installs no translator).
+    QTranslator japanese;
+    QVERIFY(japanese.load(Studio::UiLanguage::catalogue(QStringLiteral("ja"))));
+    QVERIFY(QCoreApplication::installTranslator(&japanese));
+    const auto english
+        = qScopeGuard([&japanese] { QCoreApplication::removeTranslator(&japanese); });
+    OnlineSession session;
+    RestoreDialog dialog(&session, system("Absent0"), options());
+    QSignalSpy planned(&dialog, &RestoreDialog::planned);
+    dialog.plan();
+    QVERIFY(planned.wait(15000));
+    const QString reason = dialog.componentTable()->item(1, RestoreDialog::PathColumn)->text();
+    QVERIFY2(reason.contains(QStringLiteral("Absent0")), qPrintable(reason));
+    QVERIFY2(!reason.contains(QStringLiteral("no live component")), qPrintable(reason));
+    QCOMPARE(reason, QStringLiteral("稼働中のコンポーネント Absent0 が見つかりません"));
+
+    QTest::mouseClick(dialog.findChild<QPushButton *>("dryRunButton"), Qt::LeftButton);
+    const QList<QListWidgetItem *> lines
+        = dialog.progressList()->findItems(QStringLiteral("Absent0"), Qt::MatchContains);
+    QVERIFY(!lines.isEmpty());
+    for (const QListWidgetItem *line : lines)
+        QVERIFY2(!line->text().contains(QStringLiteral("missing"))
+                     && !line->text().contains(QStringLiteral("component")),
+                 qPrintable(line->text()));
 }
 
 void TestOnlineRestore::createsTheExampleFromNothing()

@@ -48,8 +48,8 @@ void collectComponents(const NamingNode &node, QHash<QString, ComponentMapper::L
         else if (problems && isClash(*existing, node))
             // A saved system names its components by instance name only (as RTS profiles do).
             problems->append(
-                QStringLiteral("%1: another component is named %2 too (%3); one instance "
-                               "name can stand for one component only")
+                ComponentMapper::tr("%1: another component is named %2 too (%3); one instance "
+                                    "name can stand for one component only")
                     .arg(node.path, instance, existing->path));
     }
     for (const NamingNode &child : node.children)
@@ -137,6 +137,11 @@ QString mappingKindName(MappingKind kind)
 ComponentMapper::ComponentMapper(TargetOptions options)
     : m_options(std::move(options))
 { }
+
+QString ComponentMapper::notFound(const QString &instanceName)
+{
+    return tr("no live component named %1").arg(instanceName);
+}
 
 QString ComponentMapper::typeNameOf(const QString &componentId)
 {
@@ -261,7 +266,7 @@ bool ComponentMapper::checkLive(ComponentMapping &mapping, const LiveEntry &entr
     try {
         const Corba::ComponentInfo info = Corba::ComponentProxy(entry.ior, entry.path).profile();
         if (info.typeName != mapping.typeName) {
-            mapping.message = QStringLiteral("%1 is a %2, the system wants a %3")
+            mapping.message = tr("%1 is a %2, the system wants a %3")
                                   .arg(entry.path, info.typeName, mapping.typeName);
             return false;
         }
@@ -306,7 +311,7 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
         && checkLive(mapping, *listed))
         return mapping;
     if (mapping.message.isEmpty())
-        mapping.message = QStringLiteral("no live component named %1").arg(component.instanceName);
+        mapping.message = notFound(component.instanceName);
     if (m_options.create) {
         mapping.manager = m_options.manager;
         // Without -m: the manager registered beside the component's saved name, as rtshell's users expect.
@@ -314,7 +319,8 @@ ComponentMapping ComponentMapper::mapOne(const Profile::RtsComponent &component)
         if (mapping.manager.isEmpty() && isLivePath(component.pathUri) && slash > 0)
             mapping.manager = QLatin1Char('/') + component.pathUri.left(slash) + QStringLiteral("/manager.mgr");
         if (mapping.manager.isEmpty()) {
-            mapping.message += QStringLiteral("; no manager to create it (give one with -m)");
+            mapping.message
+                = tr("%1; no manager to create it (give one with -m)").arg(mapping.message);
             return mapping;
         }
         mapping.kind = MappingKind::Create;

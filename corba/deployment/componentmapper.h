@@ -5,6 +5,7 @@
 #include "deployreport.h"
 #include "namingbrowser.h"
 
+#include <QCoreApplication>
 #include <QHash>
 #include <QList>
 #include <QMutex>
@@ -42,7 +43,7 @@ enum class MappingKind {
     Missing ///< not found (or of another type) and will not be created
 };
 
-/// "existing", "create", "missing".
+/// "existing", "create", "missing": the names rtctl prints, never translated.
 QString mappingKindName(MappingKind kind);
 
 /// One saved component and its live counterpart (or how it will be created).
@@ -72,6 +73,9 @@ struct ComponentMapping
  */
 class ComponentMapper
 {
+    // The reasons a component is not found are shown in the Restore dialog (English in rtctl).
+    Q_DECLARE_TR_FUNCTIONS(Deploy::ComponentMapper)
+
 public:
     explicit ComponentMapper(TargetOptions options);
 
@@ -83,6 +87,8 @@ public:
     /// Problems met while looking (unreachable name servers, a manager that does not resolve).
     QStringList problems() const { return m_problems; }
 
+    /// "no live component named X", in the UI's language.
+    static QString notFound(const QString &instanceName);
     /// The type name of a saved component id (`RTC:v:c:Type:1.0` → `Type`; the id itself when it
     /// does not have that form).
     static QString typeNameOf(const QString &componentId);

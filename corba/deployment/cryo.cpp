@@ -176,7 +176,7 @@ Profile::RtsProfile cryoSystem(const CryoOptions &options, DeployReport *report,
     Corba::forEachConcurrently(saved.size(), [&](std::size_t i) {
         const ComponentMapper::LiveEntry entry = live.value(instances.at(qsizetype(i)));
         if (steps.checkCancelled()) {
-            steps.finish(saved[i].step, StepStatus::Skipped, QStringLiteral("cancelled"));
+            steps.finish(saved[i].step, StepStatus::Skipped, DeployReport::cancelledError());
             return;
         }
         try {

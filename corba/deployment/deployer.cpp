@@ -95,6 +95,18 @@ void addInstall(DeployPlan *plan, const Packages::RemoteIndex &index, const QStr
                            entry ? index.packageUrl(*entry) : QString(), {type}});
 }
 
+/// Why @p type cannot be created on @p node: one whole sentence per case, for translators.
+QString notLoadable(const QString &type, const QString &node, const QString &repository,
+                    const Planner::NodeFacts &facts)
+{
+    if (repository.isEmpty())
+        return DeployPlan::tr("%1 on %2: not loadable there and no repository given")
+            .arg(type, node);
+    return DeployPlan::tr("%1 on %2: not loadable there and no package of %3 fits it (%4)")
+        .arg(type, node, repository,
+             facts.architecture.value_or(DeployPlan::tr("architecture unknown")));
+}
+
 /// Picks the packages each node needs; a type a node can neither load nor install is a problem.
 void planInstalls(const QHash<QString, QStringList> &types, const DeployOptions &options,
                   DeployPlan *plan)
@@ -111,7 +123,7 @@ void planInstalls(const QHash<QString, QStringList> &types, const DeployOptions 
     for (const NodeFactsReading &reading : facts) {
         const QString &node = reading.facts.name;
         if (!reading.error.isEmpty()) {
-            plan->problems << QStringLiteral("node %1: %2").arg(node, reading.error);
+            plan->problems << DeployPlan::tr("node %1: %2").arg(node, reading.error);
             continue;
         }
         for (const QString &type : types.value(node)) {
@@ -119,13 +131,7 @@ void planInstalls(const QHash<QString, QStringList> &types, const DeployOptions 
             if (source.package)
                 addInstall(plan, *index, node, *source.package, type);
             else if (!source.loadable)
-                plan->problems << QStringLiteral("%1 on %2: not loadable there and %3")
-                                      .arg(type, node,
-                                           !options.repository.isEmpty() ? QStringLiteral("no package of %1 fits it (%2)")
-                                                       .arg(options.repository,
-                                                            reading.facts.architecture.value_or(
-                                                                QStringLiteral("architecture unknown")))
-                                                 : QStringLiteral("no repository given"));
+                plan->problems << notLoadable(type, node, options.repository, reading.facts);
         }
     }
 }
@@ -190,7 +196,9 @@ private:
     bool checkPlan()
     {
         for (const QString &problem : m_plan.problems)
-            m_steps.fail(m_steps.begin(QStringLiteral("plan"), QStringLiteral("deploy")), problem);
+            m_steps.fail(m_steps.begin(QStringLiteral("plan"),
+                                       DeployPlan::tr("deploy", "what the plan check is about")),
+                         problem);
         return m_steps.ok();
     }
 
@@ -264,7 +272,8 @@ private:
 
     static QString subject(const PackageInstall &install)
     {
-        return QStringLiteral("%1 %2 on %3").arg(install.package, install.version, install.node);
+        return DeployPlan::tr("%1 %2 on %3", "package, version on node")
+            .arg(install.package, install.version, install.node);
     }
 
     static void append(DeployReport *to, const DeployReport &from) { to->steps << from.steps; }
@@ -316,7 +325,7 @@ void applyPins(const Profile::RtsProfile &profile, RestorePlan *plan, bool creat
             mapping.manager = pin;
             if (create && mapping.kind == MappingKind::Missing) {
                 mapping.kind = MappingKind::Create;
-                mapping.message = QStringLiteral("no live component named %1").arg(mapping.instanceName);
+                mapping.message = ComponentMapper::notFound(mapping.instanceName);
             }
             if (mapping.kind == MappingKind::Create) {
                 mapping.createArgument.remove(managerAddress);
@@ -344,7 +353,7 @@ std::optional<Packages::RemoteIndex> readRepositoryIndex(const DeployOptions &op
     const Packages::RepositoryFetcher fetcher(QString(), options.installTimeoutMs, options.caCertificates);
     std::optional<Packages::RemoteIndex> index = Packages::readRemoteIndex(options.repository, fetcher, error);
     if (!index)
-        *error = QStringLiteral("repository %1: %2").arg(options.repository, *error);
+        *error = DeployPlan::tr("repository %1: %2").arg(options.repository, *error);
     return index;
 }
 
@@ -373,12 +382,13 @@ QString DeployPlan::toText() const
 {
     QString text;
     for (const PackageInstall &install : installs)
-        text += QStringLiteral("install %1 %2 on %3 (%4)\n")
+        text += tr("install %1 %2 on %3 (%4)")
                     .arg(install.package, install.version, install.node,
-                         install.types.join(QLatin1Char(' ')));
+                         install.types.join(QLatin1Char(' ')))
+            + QLatin1Char('\n');
     text += restore.toText();
     for (const QString &problem : problems)
-        text += QStringLiteral("problem %1\n").arg(problem);
+        text += tr("problem %1").arg(problem) + QLatin1Char('\n');
     return text;
 }
 
@@ -442,7 +452,8 @@ DeployReport undeploySystem(const Profile::RtsProfile &profile, const RestorePla
             if (!ours || done.contains(package.name))
                 continue;
             done.insert(package.name);
-            const QString subject = QStringLiteral("%1 on %2").arg(package.name, node.key());
+            const QString subject
+                = DeployPlan::tr("%1 on %2", "package on node").arg(package.name, node.key());
             const QString message = uninstallPackage(node.key(), package.name, QString());
             steps.add(QStringLiteral("uninstall"), subject,
                       message.isEmpty() ? StepStatus::Done : StepStatus::Skipped, message, false);

@@ -6,6 +6,7 @@
 #include "remoteindex.h"
 #include "restoreplan.h"
 
+#include <QCoreApplication>
 #include <QList>
 #include <QString>
 #include <QStringList>
@@ -59,8 +60,10 @@ struct DeployPlan
 
     /// The nodes that create components, in the order first named.
     QStringList nodes() const;
-    /// The installs and the restore plan, one line each, then the problems.
+    /// The installs and the restore plan, one line each, then the problems (translated in the GUI).
     QString toText() const;
+
+    Q_DECLARE_TR_FUNCTIONS(Deploy::DeployPlan)
 };
 
 /// The node that creates @p mapping: its `deploy.pin` when the system pins it, else the manager

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QCoreApplication>
 #include <QList>
 #include <QString>
 
@@ -19,7 +20,8 @@ enum class StepStatus {
     RolledBack ///< was done, then undone because a later required step failed
 };
 
-/// "planned", "running", "done", "skipped", "failed", "rolled back".
+/// "planned", "running", "done", "skipped", "failed", "rolled back": the names rtctl's JSON and
+/// scripts read, never translated.
 QString stepStatusName(StepStatus status);
 
 /// One step: an action on one subject (a component instance, a connector id, a set).
@@ -32,8 +34,15 @@ struct DeployStep
     bool required = true; ///< a failure of a required step fails the operation
     qint64 elapsedMs = 0; ///< since the operation began, when the status was set
 
-    /// `STATUS action subject: message`, one line as rtctl prints it.
+    /// `action subject`: what the step does, in the UI's language (English in rtctl).
+    QString heading() const;
+    /// `action subject: message`, in the UI's language; a failed required step's is the report's
+    /// error.
+    QString summary() const;
+    /// `STATUS action subject: message`, one line as rtctl prints it (translated in the GUI).
     QString toString() const;
+
+    Q_DECLARE_TR_FUNCTIONS(Deploy::DeployStep)
 };
 
 /**
@@ -51,6 +60,10 @@ struct DeployReport
     QList<DeployStep> stepsWith(StepStatus status) const;
     /// One line per step, then a summary line.
     QString toText() const;
+    /// The error of an operation the caller cancelled.
+    static QString cancelledError();
+
+    Q_DECLARE_TR_FUNCTIONS(Deploy::DeployReport)
 };
 
 /**

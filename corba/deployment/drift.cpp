@@ -125,36 +125,36 @@ QString DriftItem::kindName(Kind kind)
 {
     switch (kind) {
     case Kind::MissingComponent:
-        return QStringLiteral("missing component");
+        return tr("missing component");
     case Kind::MissingPort:
-        return QStringLiteral("missing port");
+        return tr("missing port");
     case Kind::MissingConnector:
-        return QStringLiteral("missing connector");
+        return tr("missing connector");
     case Kind::ExtraConnector:
-        return QStringLiteral("extra connector");
+        return tr("extra connector");
     case Kind::ConfigurationValue:
-        return QStringLiteral("configuration");
+        return tr("configuration");
     case Kind::ActiveSet:
-        return QStringLiteral("active set");
+        return tr("active set");
     case Kind::State:
-        return QStringLiteral("state");
+        return tr("state");
     case Kind::Unreachable:
         break;
     }
-    return QStringLiteral("unreachable");
+    return tr("unreachable");
 }
 
+// One whole sentence per combination of values, for translators.
 QString DriftItem::toString() const
 {
-    QString line = kindName(kind) + QLatin1Char(' ') + subject;
-    QStringList values;
+    const QString kindText = kindName(kind);
+    if (!saved.isEmpty() && !live.isEmpty())
+        return tr("%1 %2: saved '%3', live '%4'").arg(kindText, subject, saved, live);
     if (!saved.isEmpty())
-        values.append(QStringLiteral("saved '%1'").arg(saved));
+        return tr("%1 %2: saved '%3'").arg(kindText, subject, saved);
     if (!live.isEmpty())
-        values.append(QStringLiteral("live '%1'").arg(live));
-    if (!values.isEmpty())
-        line += QStringLiteral(": ") + values.join(QStringLiteral(", "));
-    return line;
+        return tr("%1 %2: live '%3'").arg(kindText, subject, live);
+    return tr("%1 %2", "drift: kind, subject").arg(kindText, subject);
 }
 
 QList<DriftItem> diffSystem(const Profile::RtsProfile &profile, const RestorePlan &plan)

@@ -3,6 +3,7 @@
 
 #include "restoreplan.h"
 
+#include <QCoreApplication>
 #include <QList>
 #include <QString>
 
@@ -33,8 +34,10 @@ struct DriftItem
 
     /// "missing component", "missing connector", "configuration", ...
     static QString kindName(Kind kind);
-    /// `KIND subject: saved 'x', live 'y'`, one line as rtctl prints it.
+    /// `KIND subject: saved 'x', live 'y'`, one line as rtctl prints it (translated in the GUI).
     QString toString() const;
+
+    Q_DECLARE_TR_FUNCTIONS(Deploy::DriftItem)
 };
 
 /**

@@ -80,7 +80,8 @@ DeployReport SystemHealer::check(const DeployControl &control)
     for (const QString &node : sorted(QStringList(m_gone.cbegin(), m_gone.cend()))) {
         if (alive.contains(node)) {
             m_gone.remove(node);
-            steps.add(QStringLiteral("node back"), node, StepStatus::Done, QStringLiteral("nothing moved back"));
+            steps.add(QStringLiteral("node back"), node, StepStatus::Done,
+                      tr("nothing moved back"));
         }
     }
     report = steps.report();
@@ -108,8 +109,8 @@ DeployReport SystemHealer::heal(const QStringList &lost, const QSet<QString> &al
         here.sort();
         orphans << here;
         steps.add(QStringLiteral("node lost"), node, StepStatus::Done,
-                  here.isEmpty() ? QStringLiteral("it ran nothing of the system")
-                                 : QStringLiteral("it ran %1").arg(here.join(QStringLiteral(", "))));
+                  here.isEmpty() ? tr("it ran nothing of the system")
+                                 : tr("it ran %1").arg(here.join(QStringLiteral(", "))));
     }
     if (orphans.isEmpty())
         return steps.report();
@@ -168,7 +169,7 @@ QHash<QString, QString> planPlacement(const Profile::RtsProfile &profile, const 
             problem.nodes << reading.facts;
     }
     if (problem.nodes.isEmpty()) {
-        *why = QStringLiteral("no node answers");
+        *why = SystemHealer::tr("no node answers");
         return {};
     }
     const std::optional<Packages::RemoteIndex> index = readRepositoryIndex(options, why);
@@ -189,7 +190,8 @@ QHash<QString, QString> planPlacement(const Profile::RtsProfile &profile, const 
         QStringList unmet;
         for (const Planner::Unmet &u : plan.unmet)
             unmet << QStringLiteral("%1: %2").arg(u.instanceName, u.requirement);
-        *why = QStringLiteral("no plan on %1: %2").arg(nodes.join(QLatin1Char(',')), unmet.join(QStringLiteral("; ")));
+        *why = SystemHealer::tr("no plan on %1: %2")
+                   .arg(nodes.join(QLatin1Char(',')), unmet.join(QStringLiteral("; ")));
         return {};
     }
     QHash<QString, QString> placement;

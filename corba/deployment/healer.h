@@ -4,6 +4,7 @@
 #include "deployer.h"
 #include "rtsprofile.h"
 
+#include <QCoreApplication>
 #include <QHash>
 #include <QSet>
 #include <QStringList>
@@ -45,6 +46,9 @@ struct WatchOptions
  */
 class SystemHealer
 {
+    // What each round did, shown in the online diagram's status (English in rtctl deploy --watch).
+    Q_DECLARE_TR_FUNCTIONS(Deploy::SystemHealer)
+
 public:
     /// @p profile: the system as deployed; its components' nodes are their `deploy.pin`, else
     /// where the deploy created them (see creatingNode()).

@@ -62,23 +62,39 @@ QString RestorePlan::toText() const
 {
     QString text;
     for (const QString &problem : problems)
-        text += QStringLiteral("problem %1\n").arg(problem);
-    for (const ComponentMapping &c : components) {
-        text += QStringLiteral("component %1 %2").arg(c.instanceName, mappingKindName(c.kind));
-        if (c.kind == MappingKind::Create)
-            text += QStringLiteral(" (%1)").arg(c.createArgument);
-        else if (c.kind == MappingKind::Existing)
-            text += QStringLiteral(" at %1").arg(c.path);
-        if (!c.message.isEmpty())
-            text += QStringLiteral(": ") + c.message;
-        text += c.required ? QStringLiteral("\n") : QStringLiteral(" [optional]\n");
-    }
-    for (const ConnectorPlan &c : connectors) {
-        text += QStringLiteral("connect %1 %2 -> %3 (%4)%5\n")
-                    .arg(c.connectorId, c.sourcePort, c.targetPort, c.name,
-                         c.required ? QString() : QStringLiteral(" [optional]"));
-    }
+        text += tr("problem %1").arg(problem) + QLatin1Char('\n');
+    for (const ComponentMapping &c : components)
+        text += optionalLine(componentLine(c), c.required);
+    for (const ConnectorPlan &c : connectors)
+        text += optionalLine(
+            tr("connect %1 %2 -> %3 (%4)").arg(c.connectorId, c.sourcePort, c.targetPort, c.name),
+            c.required);
     return text;
+}
+
+// One whole sentence per mapping, so that a translation can order its parts.
+QString RestorePlan::componentLine(const ComponentMapping &c)
+{
+    const bool note = !c.message.isEmpty();
+    switch (c.kind) {
+    case MappingKind::Create:
+        return note
+            ? tr("component %1 create (%2): %3").arg(c.instanceName, c.createArgument, c.message)
+            : tr("component %1 create (%2)").arg(c.instanceName, c.createArgument);
+    case MappingKind::Existing:
+        return note ? tr("component %1 existing at %2: %3").arg(c.instanceName, c.path, c.message)
+                    : tr("component %1 existing at %2").arg(c.instanceName, c.path);
+    case MappingKind::Missing:
+        break;
+    }
+    return note ? tr("component %1 missing: %2").arg(c.instanceName, c.message)
+                : tr("component %1 missing").arg(c.instanceName);
+}
+
+QString RestorePlan::optionalLine(const QString &line, bool required)
+{
+    return (required ? line : tr("%1 [optional]", "a plan line of an optional component").arg(line))
+        + QLatin1Char('\n');
 }
 
 bool isIorKey(const QString &key)

@@ -4,6 +4,7 @@
 #include "componentmapper.h"
 #include "corbatypes.h"
 
+#include <QCoreApplication>
 #include <QList>
 #include <QString>
 #include <QStringList>
@@ -44,8 +45,14 @@ struct RestorePlan
     const ComponentMapping *component(const QString &instanceName) const;
     /// The required components that are neither found nor to be created.
     QList<ComponentMapping> missingRequired() const;
-    /// A readable plan, one line per component and connector.
+    /// A readable plan, one line per component and connector (translated in the GUI).
     QString toText() const;
+
+private:
+    static QString componentLine(const ComponentMapping &c);
+    static QString optionalLine(const QString &line, bool required);
+
+    Q_DECLARE_TR_FUNCTIONS(Deploy::RestorePlan)
 };
 
 /// True for the connector properties that carry object references of one particular live

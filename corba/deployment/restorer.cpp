@@ -10,6 +10,7 @@
 #include "rtsprofile.h"
 #include "steprecorder.h"
 
+#include <QCoreApplication>
 #include <QHash>
 
 #include <cmath>
@@ -33,6 +34,9 @@ struct Undo
 // One run of restoreSystem(): the live proxies, cached port lists and what to undo.
 class RestoreRun
 {
+    // What each step did or why it failed, shown in the Restore dialog (English in rtctl).
+    Q_DECLARE_TR_FUNCTIONS(Deploy::Restorer)
+
 public:
     RestoreRun(const Profile::RtsProfile &profile, const RestorePlan &plan,
                const TargetOptions &options, const DeployControl &control)
@@ -92,7 +96,7 @@ private:
         try {
             const QString address = c.manager.isEmpty() ? m_options.manager : c.manager;
             if (address.isEmpty())
-                throw Error(Error::Kind::BadPath, QStringLiteral("no manager given"));
+                throw Error(Error::Kind::BadPath, tr("no manager given"));
             auto manager = m_managers.find(address);
             if (manager == m_managers.end())
                 manager = m_managers.emplace(address, Corba::ManagerProxy(ComponentMapper::resolveManager(address), address))
@@ -101,7 +105,9 @@ private:
             const ComponentProxy proxy(ior, c.path);
             m_live.insert(c.instanceName, proxy);
             m_undo.append({step, [proxy] { proxy.exit(); }});
-            m_steps.finish(step, StepStatus::Done, QStringLiteral("%1 by %2").arg(c.createArgument, address));
+            m_steps.finish(
+                step, StepStatus::Done,
+                tr("%1 by %2", "created: create argument, manager").arg(c.createArgument, address));
         } catch (const Error &e) {
             m_steps.fail(step, e.message());
         }
@@ -122,7 +128,7 @@ private:
                 return false;
             if (!c.connect) {
                 m_steps.add(QStringLiteral("connect"), c.connectorId, StepStatus::Skipped,
-                            QStringLiteral("not selected"), c.required);
+                            tr("not selected"), c.required);
                 continue;
             }
             const int step = m_steps.begin(QStringLiteral("connect"), c.connectorId, c.required);
@@ -138,22 +144,20 @@ private:
     void connect(const ConnectorPlan &c, int step)
     {
         if (!m_live.contains(c.sourceInstance) || !m_live.contains(c.targetInstance))
-            throw Error(
-                Error::Kind::NotFound,
-                QStringLiteral("%1 or %2 is not there").arg(c.sourceInstance, c.targetInstance));
+            throw Error(Error::Kind::NotFound,
+                        tr("%1 or %2 is not there").arg(c.sourceInstance, c.targetInstance));
         const auto sourcePorts = ports(c.sourceInstance);
         const auto targetPorts = ports(c.targetInstance);
         const Corba::PortInfo *source = findPort(sourcePorts, c.sourcePort, c.sourceInstance);
         const Corba::PortInfo *target = findPort(targetPorts, c.targetPort, c.targetInstance);
         if (!source || !target)
             throw Error(Error::Kind::NotFound,
-                        QStringLiteral("no port %1").arg(source ? c.targetPort : c.sourcePort));
+                        tr("no port %1").arg(source ? c.targetPort : c.sourcePort));
         const QString path = proxy(c.sourceInstance).path();
-        QString replaced;
+        bool replaced = false;
         if (const Corba::ConnectorInfo *existing = findConnector(*source, c.connectorId)) {
-            const auto alreadyConnected = [&] {
-                m_steps.finish(step, StepStatus::Skipped, QStringLiteral("already connected"));
-            };
+            const auto alreadyConnected
+                = [&] { m_steps.finish(step, StepStatus::Skipped, tr("already connected")); };
             if (existing->portIors.contains(target->ior)) {
                 alreadyConnected();
                 return;
@@ -164,7 +168,7 @@ private:
             // rollback, having nothing to connect to.
             if (Corba::PortConnection::hasEndGone(*existing)) {
                 Corba::PortConnection::disconnect(*source, c.connectorId, path);
-                replaced = QStringLiteral(" (replaced a broken connector)");
+                replaced = true;
             } else if (existing->ports.contains(target->name)) {
                 // Both ends answer and one is named as the target: a reference written another
                 // way (another tool made the connector) for the same port.
@@ -181,8 +185,10 @@ private:
         m_undo.append({step, [sourcePort, c, path] {
                            Corba::PortConnection::disconnect(sourcePort, c.connectorId, path);
                        }});
-        m_steps.finish(step, StepStatus::Done,
-                       QStringLiteral("%1 -> %2%3").arg(source->name, target->name, replaced));
+        m_steps.finish(
+            step, StepStatus::Done,
+            (replaced ? tr("%1 -> %2 (replaced a broken connector)") : QStringLiteral("%1 -> %2"))
+                .arg(source->name, target->name));
     }
 
     // Files name data types either way (`IDL:RTC/TimedLong:1.0`, `RTC::TimedLong`); the port's
@@ -312,10 +318,10 @@ private:
         for (auto it = m_undo.crbegin(); it != m_undo.crend(); ++it) {
             try {
                 it->action();
-                m_steps.finish(it->step, StepStatus::RolledBack, QStringLiteral("undone"));
+                m_steps.finish(it->step, StepStatus::RolledBack, tr("undone"));
             } catch (const Error &e) {
                 m_steps.finish(it->step, StepStatus::RolledBack,
-                               QStringLiteral("undo failed: ") + e.message());
+                               tr("undo failed: %1").arg(e.message()));
             }
         }
         m_undo.clear();
@@ -359,7 +365,7 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
         const ComponentMapping *source = plan.component(c.sourceInstance);
         if (!source || source->kind != MappingKind::Existing) {
             steps.add(QStringLiteral("disconnect"), c.connectorId, StepStatus::Skipped,
-                      QStringLiteral("%1 is not there").arg(c.sourceInstance), false);
+                      RestoreRun::tr("%1 is not there").arg(c.sourceInstance), false);
             continue;
         }
         const auto known = jobOf.constFind(c.sourceInstance);
@@ -391,7 +397,7 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
         for (const Disconnect &d : job.connectors) {
             const ConnectorPlan &c = *d.connector;
             if (steps.checkCancelled()) {
-                steps.finish(d.step, StepStatus::Skipped, QStringLiteral("cancelled"));
+                steps.finish(d.step, StepStatus::Skipped, DeployReport::cancelledError());
                 continue;
             }
             const Corba::PortInfo *port = nullptr;
@@ -408,12 +414,14 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
                 continue;
             }
             if (!port) {
-                steps.fail(d.step, QStringLiteral("%1: no port named '%2'")
-                                       .arg(job.source->path, shortPortName(c.sourcePort, c.sourceInstance)));
+                steps.fail(
+                    d.step,
+                    RestoreRun::tr("%1: no port named '%2'")
+                        .arg(job.source->path, shortPortName(c.sourcePort, c.sourceInstance)));
                 continue;
             }
             if (!findConnector(*port, c.connectorId)) {
-                steps.finish(d.step, StepStatus::Skipped, QStringLiteral("not connected"));
+                steps.finish(d.step, StepStatus::Skipped, RestoreRun::tr("not connected"));
                 continue;
             }
             try {
@@ -425,7 +433,7 @@ DeployReport teardownSystem(const RestorePlan &plan, const DeployControl &contro
                 if (stale)
                     readPorts();
                 if (stale && unreachable.isEmpty() && !connected())
-                    steps.finish(d.step, StepStatus::Skipped, QStringLiteral("not connected"));
+                    steps.finish(d.step, StepStatus::Skipped, RestoreRun::tr("not connected"));
                 else
                     steps.fail(d.step, e.message());
             }

@@ -7,6 +7,7 @@
 #include "rtsprofile.h"
 #include "steprecorder.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QHash>
 #include <QMutex>
@@ -91,6 +92,9 @@ QString actionName(SequenceAction action)
  */
 class SequenceRun
 {
+    // Why a start or stop step waited, was skipped or failed, shown by Start All / Stop All.
+    Q_DECLARE_TR_FUNCTIONS(Deploy::SequenceRunner)
+
 public:
     SequenceRun(const Profile::RtsProfile &profile, const RestorePlan &plan, SequenceAction action,
                 StepRecorder &steps)
@@ -290,7 +294,7 @@ private:
         if (const int ms = waitTimeMs(condition); ms > 0 && !condition.preceding) {
             if (waitUntil([&] { return m_clock.elapsed() >= ms; }, -1) != WaitResult::Met)
                 return cancelled(step);
-            m_steps.finish(step, StepStatus::Done, QStringLiteral("%1 ms from the start").arg(ms));
+            m_steps.finish(step, StepStatus::Done, tr("%1 ms from the start").arg(ms));
             return true;
         }
         const Profile::RtsPreceding &preceding = *condition.preceding;
@@ -300,7 +304,7 @@ private:
 
     bool cancelled(int step)
     {
-        m_steps.fail(step, QStringLiteral("cancelled"));
+        m_steps.fail(step, DeployReport::cancelledError());
         return false;
     }
 
@@ -328,9 +332,8 @@ private:
             for (const auto &other : preceding.precedingComponents) {
                 const ComponentMapping *mapping = live(other.instanceName);
                 if (!mapping)
-                    return unmet(
-                        target, step,
-                        QStringLiteral("preceding %1 is not there").arg(other.instanceName));
+                    return unmet(target, step,
+                                 tr("preceding %1 is not there").arg(other.instanceName));
                 ComponentProxy proxy(mapping->ior, mapping->path);
                 const int index = ecIndex(proxy, other.id);
                 watched.push_back({other, std::move(proxy), index});
@@ -350,16 +353,13 @@ private:
             case WaitResult::Stopped:
                 return cancelled(step);
             case WaitResult::TimedOut:
-                return unmet(target, step,
-                             QStringLiteral("%1 did not %2 within %3 ms of the start")
-                                 .arg(names(pending), actionName(m_action))
-                                 .arg(timeout));
+                return unmet(target, step, notReached(names(pending), timeout));
             }
         } catch (const Error &e) {
             return unmet(target, step, e.message());
         }
         m_steps.finish(step, StepStatus::Done,
-                       QStringLiteral("after %1").arg(names(preceding.precedingComponents)));
+                       tr("after %1").arg(names(preceding.precedingComponents)));
         return true;
     }
 
@@ -371,9 +371,8 @@ private:
         for (const auto &other : preceding.precedingComponents) {
             const QStringList matching = plannedKeys(other);
             if (matching.isEmpty())
-                return unmet(
-                    target, step,
-                    QStringLiteral("preceding %1 is not in the plan").arg(other.instanceName));
+                return unmet(target, step,
+                             tr("preceding %1 is not in the plan").arg(other.instanceName));
             keys += matching;
         }
         const auto allSent = [&] {
@@ -383,9 +382,8 @@ private:
         };
         if (waitUntil(allSent, -1) != WaitResult::Met)
             return cancelled(step);
-        m_steps.finish(
-            step, StepStatus::Done,
-            QStringLiteral("after %1 was sent").arg(names(preceding.precedingComponents)));
+        m_steps.finish(step, StepStatus::Done,
+                       tr("after %1 was sent").arg(names(preceding.precedingComponents)));
         return true;
     }
 
@@ -404,13 +402,30 @@ private:
         return keys;
     }
 
+    // One whole sentence per action, for translators.
+    QString notReached(const QString &pending, int timeout) const
+    {
+        switch (m_action) {
+        case SequenceAction::Activate:
+            return tr("%1 did not activate within %2 ms of the start").arg(pending).arg(timeout);
+        case SequenceAction::Deactivate:
+            return tr("%1 did not deactivate within %2 ms of the start").arg(pending).arg(timeout);
+        case SequenceAction::StartContext:
+            return tr("%1 did not start within %2 ms of the start").arg(pending).arg(timeout);
+        case SequenceAction::StopContext:
+            break;
+        }
+        return tr("%1 did not stop within %2 ms of the start").arg(pending).arg(timeout);
+    }
+
     // A preceding condition that cannot be met ends the whole plan, even for optional components.
     bool unmet(const Target &target, int step, const QString &reason)
     {
         m_steps.fail(step, reason);
         if (m_steps.ok())
-            m_steps.fail(m_steps.begin(QStringLiteral("cancel"), QStringLiteral("plan")),
-                         QStringLiteral("%1: %2").arg(target.instance, reason));
+            m_steps.fail(m_steps.begin(QStringLiteral("cancel"),
+                                       tr("plan", "the start or stop plan, cancelled")),
+                         tr("%1: %2", "instance: reason").arg(target.instance, reason));
         return false;
     }
 
@@ -427,20 +442,20 @@ private:
         const QString subject = target.instance + QLatin1Char('.') + target.ecId;
         const ComponentMapping *mapping = live(target.instance);
         if (mapping && !mapping->activate) {
-            m_steps.add(actionName(m_action), subject, StepStatus::Skipped,
-                        QStringLiteral("not selected"), isRequired);
+            m_steps.add(actionName(m_action), subject, StepStatus::Skipped, tr("not selected"),
+                        isRequired);
             return;
         }
         const int step = m_steps.begin(actionName(m_action), subject, isRequired);
         if (!mapping) {
-            m_steps.fail(step, QStringLiteral("%1 is not there").arg(target.instance));
+            m_steps.fail(step, tr("%1 is not there").arg(target.instance));
             return;
         }
         try {
             const ComponentProxy proxy(mapping->ior, mapping->path);
             const int index = ecIndex(proxy, target.ecId);
             if (reached(proxy, index)) {
-                m_steps.finish(step, StepStatus::Skipped, QStringLiteral("already done"));
+                m_steps.finish(step, StepStatus::Skipped, tr("already done"));
                 return;
             }
             act(proxy, index);

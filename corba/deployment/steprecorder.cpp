@@ -49,7 +49,7 @@ void StepRecorder::fail(int index, const QString &message)
     const DeployStep &step = m_report.steps.at(index);
     if (step.required && m_report.ok) {
         m_report.ok = false;
-        m_report.error = QStringLiteral("%1 %2: %3").arg(step.action, step.subject, message);
+        m_report.error = step.summary();
     }
 }
 
@@ -62,7 +62,7 @@ bool StepRecorder::checkCancelled()
         m_report.cancelled = true;
         if (m_report.ok) {
             m_report.ok = false;
-            m_report.error = QStringLiteral("cancelled");
+            m_report.error = DeployReport::cancelledError();
         }
     }
     return true;

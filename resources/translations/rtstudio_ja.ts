@@ -2157,9 +2157,348 @@
     </message>
 </context>
 <context>
+    <name>Deploy::ComponentMapper</name>
+    <message>
+        <location filename="../../corba/deployment/componentmapper.cpp" line="+51"/>
+        <source>%1: another component is named %2 too (%3); one instance name can stand for one component only</source>
+        <translation>%1：別のコンポーネントも %2 という名前です（%3）。1 つのインスタンス名が表せるコンポーネントは 1 つだけです</translation>
+    </message>
+    <message>
+        <location line="+92"/>
+        <source>no live component named %1</source>
+        <translation>稼働中のコンポーネント %1 が見つかりません</translation>
+    </message>
+    <message>
+        <location line="+126"/>
+        <source>%1 is a %2, the system wants a %3</source>
+        <translation>%1 は %2 ですが、システムが求めているのは %3 です</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>%1; no manager to create it (give one with -m)</source>
+        <translation>%1。生成するマネージャがありません（-m で指定してください）</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::DeployPlan</name>
+    <message>
+        <location filename="../../corba/deployment/deployer.cpp" line="+103"/>
+        <source>%1 on %2: not loadable there and no repository given</source>
+        <translation>%2 の %1：そこではロードできず、リポジトリも指定されていません</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 on %2: not loadable there and no package of %3 fits it (%4)</source>
+        <translation>%2 の %1：そこではロードできず、%3 にも合うパッケージがありません（%4）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>architecture unknown</source>
+        <translation>アーキテクチャ不明</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>node %1: %2</source>
+        <translation>ノード %1：%2</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>deploy</source>
+        <comment>what the plan check is about</comment>
+        <translation>デプロイ</translation>
+    </message>
+    <message>
+        <location line="+75"/>
+        <source>%1 %2 on %3</source>
+        <comment>package, version on node</comment>
+        <translation>%3 の %1 %2</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>repository %1: %2</source>
+        <translation>リポジトリ %1：%2</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>install %1 %2 on %3 (%4)</source>
+        <translation>%3 に %1 %2 をインストール（%4）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>problem %1</source>
+        <translation>問題：%1</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>%1 on %2</source>
+        <comment>package on node</comment>
+        <translation>%2 の %1</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::DeployReport</name>
+    <message>
+        <location filename="../../corba/deployment/deployreport.cpp" line="+125"/>
+        <source>failed: %1</source>
+        <translation>失敗：%1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>cancelled</source>
+        <translation>キャンセルされました</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::DeployStep</name>
+    <message>
+        <location line="-115"/>
+        <source>find</source>
+        <comment>step action</comment>
+        <translation>検索</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>create</source>
+        <comment>step action</comment>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>connect</source>
+        <comment>step action</comment>
+        <translation>接続</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>disconnect</source>
+        <comment>step action</comment>
+        <translation>切断</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>configure</source>
+        <comment>step action</comment>
+        <translation>設定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate</source>
+        <comment>step action</comment>
+        <translation>周期設定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>install</source>
+        <comment>step action</comment>
+        <translation>インストール</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uninstall</source>
+        <comment>step action</comment>
+        <translation>アンインストール</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exit</source>
+        <comment>step action</comment>
+        <translation>終了</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plan</source>
+        <comment>step action</comment>
+        <translation>計画</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>activate</source>
+        <comment>step action</comment>
+        <translation>アクティブ化</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>deactivate</source>
+        <comment>step action</comment>
+        <translation>非アクティブ化</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>start</source>
+        <comment>step action</comment>
+        <translation>開始</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stop</source>
+        <comment>step action</comment>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wait</source>
+        <comment>step action</comment>
+        <translation>待機</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancel</source>
+        <comment>step action</comment>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>node back</source>
+        <comment>step action</comment>
+        <translation>ノード復帰</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>node lost</source>
+        <comment>step action</comment>
+        <translation>ノード喪失</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>replan</source>
+        <comment>step action</comment>
+        <translation>再計画</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>list</source>
+        <comment>step action</comment>
+        <translation>一覧取得</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>save</source>
+        <comment>step action</comment>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>planned</source>
+        <comment>step status</comment>
+        <translation>予定</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>running</source>
+        <comment>step status</comment>
+        <translation>実行中</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>done</source>
+        <comment>step status</comment>
+        <translation>完了</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>skipped</source>
+        <comment>step status</comment>
+        <translation>スキップ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>failed</source>
+        <comment>step status</comment>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rolled back</source>
+        <comment>step status</comment>
+        <translation>ロールバック済み</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 %2</source>
+        <comment>step: action, subject</comment>
+        <translation>%2 の%1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 %2: %3</source>
+        <comment>step: action, subject, message</comment>
+        <translation>%2 の%1：%3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 %2</source>
+        <comment>step line: status, then the step&apos;s summary</comment>
+        <translation>[%1] %2</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::DriftItem</name>
+    <message>
+        <location filename="../../corba/deployment/drift.cpp" line="+128"/>
+        <source>missing component</source>
+        <translation>不足しているコンポーネント</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>missing port</source>
+        <translation>不足しているポート</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>missing connector</source>
+        <translation>不足しているコネクタ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>extra connector</source>
+        <translation>余分なコネクタ</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>configuration</source>
+        <translation>コンフィギュレーション</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>active set</source>
+        <translation>アクティブなセット</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>state</source>
+        <translation>状態</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unreachable</source>
+        <translation>到達不能</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 %2: saved &apos;%3&apos;, live &apos;%4&apos;</source>
+        <translation>%1 %2：保存値「%3」、稼働中「%4」</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 %2: saved &apos;%3&apos;</source>
+        <translation>%1 %2：保存値「%3」</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 %2: live &apos;%3&apos;</source>
+        <translation>%1 %2：稼働中「%3」</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2</source>
+        <comment>drift: kind, subject</comment>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
     <name>Deploy::LocalRuntime</name>
     <message>
-        <location filename="../../corba/deployment/localruntime.cpp" line="+266"/>
+        <location filename="../../corba/deployment/localruntime.cpp" line="+275"/>
         <source>omniNames is not installed (Debian package omniorb-nameserver)</source>
         <translation>omniNames がインストールされていません（Debian パッケージ omniorb-nameserver）</translation>
     </message>
@@ -2192,6 +2531,223 @@
         <location line="+20"/>
         <source>rtmanager did not start on port %1: %2</source>
         <translation>rtmanager がポート %1 で起動しませんでした：%2</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::RestorePlan</name>
+    <message>
+        <location filename="../../corba/deployment/restoreplan.cpp" line="+65"/>
+        <source>problem %1</source>
+        <translation>問題：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>connect %1 %2 -&gt; %3 (%4)</source>
+        <translation>コネクタ %1 を接続：%2 -&gt; %3（%4）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>component %1 create (%2): %3</source>
+        <translation>コンポーネント %1 を生成（%2）：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>component %1 create (%2)</source>
+        <translation>コンポーネント %1 を生成（%2）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>component %1 existing at %2: %3</source>
+        <translation>コンポーネント %1 は既存（%2）：%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>component %1 existing at %2</source>
+        <translation>コンポーネント %1 は既存（%2）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>component %1 missing: %2</source>
+        <translation>コンポーネント %1 は不足：%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>component %1 missing</source>
+        <translation>コンポーネント %1 は不足</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 [optional]</source>
+        <comment>a plan line of an optional component</comment>
+        <translation>%1［任意］</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::Restorer</name>
+    <message>
+        <location filename="../../corba/deployment/restorer.cpp" line="+99"/>
+        <source>no manager given</source>
+        <translation>マネージャが指定されていません</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 by %2</source>
+        <comment>created: create argument, manager</comment>
+        <translation>%1（%2 で生成）</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>not selected</source>
+        <translation>未選択</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 or %2 is not there</source>
+        <translation>%1 または %2 がありません</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no port %1</source>
+        <translation>ポート %1 がありません</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>already connected</source>
+        <translation>接続済み</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1 -&gt; %2 (replaced a broken connector)</source>
+        <translation>%1 -&gt; %2（壊れたコネクタを置き換えました）</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>undone</source>
+        <translation>取り消し済み</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>undo failed: %1</source>
+        <translation>取り消しに失敗しました：%1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 is not there</source>
+        <translation>%1 がありません</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>%1: no port named &apos;%2&apos;</source>
+        <translation>%1：「%2」という名前のポートはありません</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+12"/>
+        <source>not connected</source>
+        <translation>未接続</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::SequenceRunner</name>
+    <message>
+        <location filename="../../corba/deployment/sequencerunner.cpp" line="+297"/>
+        <source>%1 ms from the start</source>
+        <translation>開始から %1 ms</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>preceding %1 is not there</source>
+        <translation>先行する %1 がありません</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>after %1</source>
+        <translation>%1 の後</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>preceding %1 is not in the plan</source>
+        <translation>先行する %1 は計画にありません</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>after %1 was sent</source>
+        <translation>%1 の送信後</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 did not activate within %2 ms of the start</source>
+        <translation>%1 は開始から %2 ms 以内にアクティブになりませんでした</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 did not deactivate within %2 ms of the start</source>
+        <translation>%1 は開始から %2 ms 以内に非アクティブになりませんでした</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 did not start within %2 ms of the start</source>
+        <translation>%1 は開始から %2 ms 以内に開始しませんでした</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 did not stop within %2 ms of the start</source>
+        <translation>%1 は開始から %2 ms 以内に停止しませんでした</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>plan</source>
+        <comment>the start or stop plan, cancelled</comment>
+        <translation>計画</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2</source>
+        <comment>instance: reason</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>not selected</source>
+        <translation>未選択</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is not there</source>
+        <translation>%1 がありません</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>already done</source>
+        <translation>実行済み</translation>
+    </message>
+</context>
+<context>
+    <name>Deploy::SystemHealer</name>
+    <message>
+        <location filename="../../corba/deployment/healer.cpp" line="+84"/>
+        <source>nothing moved back</source>
+        <translation>何も戻していません</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>it ran nothing of the system</source>
+        <translation>システムのものは何も動かしていませんでした</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>it ran %1</source>
+        <translation>%1 を動かしていました</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>no node answers</source>
+        <translation>応答するノードがありません</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>no plan on %1: %2</source>
+        <translation>%1 では計画が立ちません：%2</translation>
     </message>
 </context>
 <context>
@@ -4650,19 +5206,19 @@ TLS で暗号化されています。サーバは認証局の証明書で &quot;
     </message>
     <message numerus="yes">
         <location line="+46"/>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>%1: %n action(s) done</source>
         <translation>
             <numerusform>%1: %n 件の操作が完了</numerusform>
         </translation>
     </message>
     <message>
-        <location line="-27"/>
+        <location line="-30"/>
         <source>, waiting: %1</source>
         <translation>、待機中: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+23"/>
+        <location line="+26"/>
         <source>%1: cancelled after %n action(s)</source>
         <translation>
             <numerusform>%1: %n 件の操作の後に取り消しました</numerusform>
@@ -5615,11 +6171,16 @@ Installs: %1</source>
     </message>
     <message>
         <location line="+2"/>
-        <source>Failed: %1 %2: %3</source>
-        <translation>失敗：%1 %2：%3</translation>
+        <source>Failed: %1</source>
+        <translation>失敗：%1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+19"/>
+        <source>Restoring: %1…</source>
+        <translation>復元中：%1…</translation>
+    </message>
+    <message>
+        <location line="-15"/>
         <source>Nothing had to be rolled back.</source>
         <translation>ロールバックの必要はありませんでした。</translation>
     </message>
@@ -5627,11 +6188,6 @@ Installs: %1</source>
         <location line="+1"/>
         <source>Rolled back: %1</source>
         <translation>ロールバック済み：%1</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>Restoring: %1 %2…</source>
-        <translation>復元中：%1 %2…</translation>
     </message>
 </context>
 <context>

@@ -118,7 +118,10 @@ void OnlineDiagram::finishSystemPlan(const OnlineResult &result)
     for (const Deploy::DeployStep &step : std::as_const(report.steps)) {
         done += isPlanAction(step) && step.status == Deploy::StepStatus::Done ? 1 : 0;
         // A wait ended by the failure or by Cancel is not a failure of its own.
-        if (step.status == Deploy::StepStatus::Failed && step.message != QLatin1String("cancelled"))
+        // The first required failure is the summary's error already.
+        if (step.status == Deploy::StepStatus::Failed
+            && step.message != Deploy::DeployReport::cancelledError()
+            && step.summary() != report.error)
             failures.append(step.toString());
     }
     QString summary;
@@ -130,8 +133,6 @@ void OnlineDiagram::finishSystemPlan(const OnlineResult &result)
         summary = tr("%1: %n action(s) done", nullptr, done).arg(m_batch.doing);
     if (report.ok && !failures.isEmpty())
         summary += tr(", %n optional failed", nullptr, int(failures.size()));
-    // The engine's own words for what failed, the first one already in the summary.
-    failures.removeAll(report.error.isEmpty() ? QString() : QStringLiteral("failed ") + report.error);
     m_status->setText(failures.isEmpty() ? summary + QLatin1Char('.')
                                          : summary + QLatin1Char('\n') + failures.join(QLatin1Char('\n')));
     endBatch(summary);

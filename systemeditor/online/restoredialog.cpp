@@ -484,10 +484,10 @@ void RestoreDialog::showReport()
     }
     QStringList lines {tr("Restore failed: %1").arg(m_report.error)};
     for (const Deploy::DeployStep &step : m_report.stepsWith(Deploy::StepStatus::Failed))
-        lines.append(tr("Failed: %1 %2: %3").arg(step.action, step.subject, step.message));
+        lines.append(tr("Failed: %1").arg(step.summary()));
     QStringList undone;
     for (const Deploy::DeployStep &step : m_report.stepsWith(Deploy::StepStatus::RolledBack))
-        undone.append(QStringLiteral("%1 %2").arg(step.action, step.subject));
+        undone.append(step.heading());
     lines.append(undone.isEmpty() ? tr("Nothing had to be rolled back.")
                                   : tr("Rolled back: %1").arg(undone.join(QStringLiteral(", "))));
     m_summary->setText(lines.join(QLatin1Char('\n')));
@@ -503,7 +503,7 @@ void RestoreDialog::addProgress(const Deploy::DeployStep &step)
     if (step.status == Deploy::StepStatus::Running) {
         // What is under way now; the list keeps what finished.
         if (m_stop->isEnabled())
-            m_summary->setText(tr("Restoring: %1 %2…").arg(step.action, step.subject));
+            m_summary->setText(tr("Restoring: %1…").arg(step.heading()));
         return;
     }
     auto *item = new QListWidgetItem(step.toString(), m_progress);
