@@ -29,7 +29,7 @@
 
 namespace {
 
-constexpr int ReplyTimeoutMs = 10000;
+constexpr int ReplyTimeoutMs = 30000;
 constexpr int RawAnswerMs = 50;
 
 class FuzzTarget : public Runtime::RtObject
@@ -184,9 +184,41 @@ void sendAll(int fd, const std::vector<uint8_t> &message)
     }
 }
 
+int s_connectionPort = 0;
+
+int localPort(int fd)
+{
+    sockaddr_in address {};
+    socklen_t length = sizeof address;
+    if (getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length) != 0 || address.sin_family != AF_INET)
+        return -1;
+    return ntohs(address.sin_port);
+}
+
+// The harness's descriptor is still its own connection: the server and the harness share one
+// process, so a descriptor closed twice on the server's side can take the harness's away.
+void checkConnection()
+{
+    const int port = localPort(s_connection);
+    if (port != s_connectionPort) {
+        std::fprintf(stderr, "fuzz_giop: descriptor %d is no longer the harness's connection (port %d, now %d): "
+                     "something in the process closed it; the latest requests:\n", s_connection, s_connectionPort,
+                     port);
+        for (const std::string &request : s_recent)
+            std::fprintf(stderr, "  %s\n", request.c_str());
+        std::abort();
+    }
+}
+
 // Where every thread of the server waits, when gdb is installed: what a hang's cause is seen in.
 void printThreads()
 {
+    std::fprintf(stderr, "fuzz_giop: the harness's connection is fd %d; the sockets of port %d:\n", s_connection,
+                 s_port);
+    const std::string sockets = "ss -tanpi '( sport = :" + std::to_string(s_port) + " or dport = :"
+        + std::to_string(s_port) + " )' >&2";
+    if (std::system(sockets.c_str()) != 0)
+        std::fprintf(stderr, "fuzz_giop: (no socket list: ss is not installed)\n");
     const std::string command = "gdb -p " + std::to_string(getpid())
         + " -batch -nx -ex 'thread apply all bt 30' </dev/null >&2 2>/dev/null";
     if (std::system(command.c_str()) != 0)
@@ -201,6 +233,8 @@ bool readBytes(int fd, uint8_t *buffer, size_t wanted)
     while (have < wanted) {
         pollfd ready {fd, POLLIN, 0};
         if (poll(&ready, 1, ReplyTimeoutMs) <= 0) {
+            if (fd == s_connection)
+                checkConnection();
             std::fprintf(stderr, "fuzz_giop: no reply and no close within %d ms; the latest requests:\n",
                          ReplyTimeoutMs);
             for (const std::string &request : s_recent)
@@ -284,8 +318,11 @@ Received sendRequest(const Target &target, const char *operation, bool little, c
     const uint32_t length = uint32_t(message.size() - 12);
     for (int i = 0; i < 4; ++i)
         message[8 + i] = uint8_t(length >> (little ? 8 * i : 8 * (3 - i)));
-    if (s_connection < 0)
+    if (s_connection < 0) {
         s_connection = connectToOrb();
+        s_connectionPort = localPort(s_connection);
+    }
+    checkConnection();
     sendAll(s_connection, message);
     Received received;
     if (!readMessage(s_connection, &received)) {
@@ -349,8 +386,13 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
              {"naming.enable", "NO"},
              {"logger.enable", "NO"},
              {"manager.slaves.max", "0"},
+             // Components the inputs create stay: a bound keeps the server's state (and memory) small
+             // over a million inputs, and the refusal beyond it is fuzzed too.
+             {"manager.components.max", "8"},
              {"manager.modules.load_path", folder},
+             // Servants call the references inputs carry: unreachable ones fail fast.
              {"corba.call_timeout", "500"},
+             {"corba.connect_timeout", "500"},
              // What the ORB says of each malformed message would drown the fuzzer's own output.
              {"corba.args", "-ORBtraceLevel 0"}})
         config.set(key, value);
