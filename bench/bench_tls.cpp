@@ -10,7 +10,7 @@
 // again as a client (--client).
 #include "livesystem.h"
 #include "rtctlrunner.h"
-#include "tlstransport.h"
+#include "tlsorb.h"
 
 #include <Manager.hh>
 #include <RTC.hh>
@@ -86,21 +86,12 @@ int runClient(int argc, char **argv)
     const std::string address = argv[2];
     const bool tls = argc >= 5 && std::string(argv[3]) != "--first-call";
     const bool firstCallOnly = std::string(argv[argc - 1]) == "--first-call";
-    std::vector<std::string> arguments {argv[0]};
-    if (tls) {
-        std::string error;
-        if (!Tls::Transport::install({argv[3], argv[4], {}}, &error)) {
-            std::printf("error %s\n", error.c_str());
-            return 1;
-        }
-        for (const std::string &argument : Tls::orbArguments())
-            arguments.push_back(argument);
+    std::string error;
+    CORBA::ORB_var orb = LiveTest::initOrb(argv[0], tls ? Tls::Settings {argv[3], argv[4], {}} : Tls::Settings {}, &error);
+    if (CORBA::is_nil(orb)) {
+        std::printf("error %s\n", error.c_str());
+        return 1;
     }
-    std::vector<char *> orbArgv;
-    for (std::string &argument : arguments)
-        orbArgv.push_back(argument.data());
-    int orbArgc = int(orbArgv.size());
-    CORBA::ORB_var orb = CORBA::ORB_init(orbArgc, orbArgv.data());
     try {
         QElapsedTimer timer;
         timer.start();

@@ -38,15 +38,7 @@ private:
 
 QProcess *TestInteropData::startExample(const QString &name, QString *error)
 {
-    // Kept to this test's name server, with no manager servant (no master on port 2810).
-    QStringList arguments;
-    for (const QString &option :
-         {"corba.nameservers:" + m_live.namingServer(), QStringLiteral("corba.endpoints:127.0.0.1:"),
-          QStringLiteral("naming.formats:openrtm.host_cxt/%n.rtc"), QStringLiteral("manager.corba_servant:NO"),
-          QStringLiteral("logger.enable:NO")})
-        arguments << QStringLiteral("-o") << option;
-    return m_live.startProcess(openRtmPrefix + "/share/openrtm-2.1/components/c++/examples/" + name,
-                               arguments, QString(), error, 0);
+    return m_live.startOpenRtmExample(openRtmPrefix, name, QStringLiteral("openrtm"), error);
 }
 
 void TestInteropData::initTestCase()

@@ -239,23 +239,13 @@ QString TestInteropSystem::ourStatus(const QString &component, const QString &na
 
 QProcess *TestInteropSystem::startExample(const QString &name, QString *error)
 {
-    // Registered in this test's name server only; no manager servant, so no master is looked for.
     // Twenty cycles a second keep the examples' console output small.
-    const QString examples = openRtmPrefix + "/share/openrtm-2.1/components/c++/examples/";
-    QStringList options {"corba.nameservers:" + m_server,
-                         QStringLiteral("corba.endpoints:127.0.0.1:"),
-                         QStringLiteral("naming.formats:openrtm.host_cxt/%n.rtc"),
-                         QStringLiteral("manager.corba_servant:NO"),
-                         QStringLiteral("logger.enable:NO"),
-                         QStringLiteral("exec_cxt.periodic.rate:20")};
+    QStringList options {QStringLiteral("exec_cxt.periodic.rate:20")};
     // ConfigSample's sets other than the default come from the example's configuration file.
     if (name == QLatin1String("ConfigSample"))
-        options << "example.ConfigSample.config_file:" + examples + "configsample.conf";
-    QStringList arguments;
-    for (const QString &option : std::as_const(options))
-        arguments << QStringLiteral("-o") << option;
-    QProcess *process
-        = m_live.startProcess(examples + name + "Comp", arguments, QString(), error, 0);
+        options << "example.ConfigSample.config_file:" + openRtmPrefix
+                + "/share/openrtm-2.1/components/c++/examples/configsample.conf";
+    QProcess *process = m_live.startOpenRtmExample(openRtmPrefix, name + "Comp", QStringLiteral("openrtm"), error, options);
     m_examples.insert(name, process);
     return process;
 }

@@ -8,8 +8,7 @@
 #include "componentstatus.h"
 #include "livesystem.h"
 #include "rtctlrunner.h"
-#include "tlsarguments.h"
-#include "tlstransport.h"
+#include "tlsorb.h"
 
 #include <RTC.hh>
 
@@ -90,34 +89,21 @@ bool TestInteropTls::writeSharedConf(QString *error) const
 
 QProcess *TestInteropTls::startExample(const QString &name, QString *error, const QStringList &options)
 {
-    // Kept to this test's name server, with no manager servant (no master on port 2810).
-    QStringList arguments {QStringLiteral("-f"), path("rtc.conf")};
-    for (const QString &option :
-         QStringList {QStringLiteral("naming.formats:openrtm.host_cxt/%n.rtc"), QStringLiteral("manager.corba_servant:NO")}
-             + options)
-        arguments << QStringLiteral("-o") << option;
-    return m_live.startProcess(openRtmPrefix + "/share/openrtm-2.1/components/c++/examples/" + name, arguments,
-                               QString(), error, 0, LiveTest::openRtmEnvironment(openRtmPrefix));
+    // The shared rtc.conf's TLS name server, rather than the plain address given first.
+    return m_live.startOpenRtmExample(
+        openRtmPrefix, name, QStringLiteral("openrtm"), error,
+        QStringList {QStringLiteral("corba.nameservers:corbaloc:ssliop:127.0.0.1:%1").arg(m_live.namingPort())} + options,
+        {QStringLiteral("-f"), path("rtc.conf")});
 }
 
 bool TestInteropTls::initOrb(QString *error)
 {
     // The test reads the components' status itself, as the operator.
     std::string reason;
-    if (!Tls::Transport::install({path("fleet/ca.pem").toStdString(), path("fleet/operator.pem").toStdString(), {}},
-                                 &reason)) {
-        *error = QString::fromStdString(reason);
-        return false;
-    }
-    std::vector<std::string> arguments {"tst_interoptls"};
-    for (const std::string &argument : Tls::orbArguments())
-        arguments.push_back(argument);
-    std::vector<char *> argv;
-    for (std::string &argument : arguments)
-        argv.push_back(argument.data());
-    int argc = int(argv.size());
-    m_orb = CORBA::ORB_init(argc, argv.data());
-    return true;
+    m_orb = LiveTest::initOrb("tst_interoptls",
+                              {path("fleet/ca.pem").toStdString(), path("fleet/operator.pem").toStdString(), {}}, &reason);
+    *error = QString::fromStdString(reason);
+    return !CORBA::is_nil(m_orb);
 }
 
 void TestInteropTls::initTestCase()

@@ -4,10 +4,11 @@
 // operator's certificate; connections without a certificate, with one of another authority or with
 // an expired one refused while they are set up, with the reason; and `rtctl local start --tls`.
 #include "componentstatus.h"
-#include "pythonenvironment.h"
 #include "livesystem.h"
+#include "pythonenvironment.h"
 #include "rtctlrunner.h"
 #include "simulatedhosts.h"
+#include "tlsorb.h"
 #include "tlstransport.h"
 
 #include <RTC.hh>
@@ -112,17 +113,9 @@ void TestTls::initTestCase()
 
     // This test calls the components too, as the operator.
     std::string reason;
-    QVERIFY2(Tls::Transport::install({path("fleet/ca.pem").toStdString(), path("fleet/operator.pem").toStdString(), {}},
-                                     &reason),
-             reason.c_str());
-    std::vector<std::string> arguments {"tst_tls"};
-    for (const std::string &argument : Tls::orbArguments())
-        arguments.push_back(argument);
-    std::vector<char *> argv;
-    for (std::string &argument : arguments)
-        argv.push_back(argument.data());
-    int argc = int(argv.size());
-    m_orb = CORBA::ORB_init(argc, argv.data());
+    m_orb = LiveTest::initOrb("tst_tls", {path("fleet/ca.pem").toStdString(), path("fleet/operator.pem").toStdString(), {}},
+                              &reason);
+    QVERIFY2(!CORBA::is_nil(m_orb), reason.c_str());
 }
 
 void TestTls::cleanupTestCase()

@@ -282,6 +282,21 @@ QProcess *LiveSystem::startRtcdMaster(const QString &prefix, const QString &conf
     return master;
 }
 
+QProcess *LiveSystem::startOpenRtmExample(const QString &prefix, const QString &program, const QString &context,
+                                          QString *error, const QStringList &options, const QStringList &arguments)
+{
+    QStringList all = arguments;
+    for (const QString &option : QStringList {QStringLiteral("corba.nameservers:") + namingServer(),
+                                              QStringLiteral("corba.endpoints:%1:").arg(m_host.address),
+                                              QStringLiteral("naming.formats:%1.host_cxt/%n.rtc").arg(context),
+                                              QStringLiteral("manager.corba_servant:NO"),
+                                              QStringLiteral("logger.enable:NO")}
+                                     + options)
+        all << QStringLiteral("-o") << option;
+    return startProcess(prefix + QStringLiteral("/share/openrtm-2.1/components/c++/examples/") + program, all,
+                        QString(), error, 0, openRtmEnvironment(prefix));
+}
+
 QString PrintedOutput::of(QProcess *process)
 {
     QString &text = m_text[process];

@@ -148,6 +148,15 @@ public:
     void setErrorsRead(bool read) { m_errorsRead = read; }
     /// What @p process printed until it was ready (startProcess() read it while it waited).
     QByteArray printedWhileStarting(QProcess *process) const { return m_startOutput.value(process); }
+    /**
+     * Starts OpenRTM-aist's example program @p program (`ConsoleInComp` …) of the installation at
+     * @p prefix, registered in this system's name server under `<context>.host_cxt`, serving on
+     * this host's address, with no manager servant (so no master is looked for) and no log file;
+     * @p options (`key:value`) are given after those (the later of two wins), after @p arguments.
+     */
+    QProcess *startOpenRtmExample(const QString &prefix, const QString &program, const QString &context,
+                                  QString *error, const QStringList &options = {},
+                                  const QStringList &arguments = {});
     /// Kills and reaps one process started here (and first the slaves of an rtcd2 master).
     void stop(QProcess *process);
     /// Kills and reaps everything started here.
