@@ -272,11 +272,11 @@ void TestDeployInstall::deploysOverTls()
     // service serve TLS only, and rtctl presents an operator's certificate of the fleet's authority.
     const QString fleet = m_work.filePath("fleet");
     if (!QFileInfo::exists(fleet + "/ca.pem")) {
-        for (const QStringList &step : {QStringList {"tls", "init", fleet}, {"tls", "issue", fleet, "node", "--host", "127.0.0.1"},
-                                        QStringList {"tls", "issue", fleet, "operator"}}) {
-            const RtctlResult made = runRtctl(step);
-            QVERIFY2(made.code == 0, qPrintable(made.err));
-        }
+        QString made;
+        QVERIFY2(runRtctlAll({{"tls", "init", fleet}, {"tls", "issue", fleet, "node", "--host", "127.0.0.1"},
+                              {"tls", "issue", fleet, "operator"}},
+                             &made),
+                 qPrintable(made));
     }
     m_live = std::make_unique<LiveTest::LiveSystem>();
     QString error;

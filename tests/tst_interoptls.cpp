@@ -123,10 +123,8 @@ void TestInteropTls::initTestCase()
         {"tls", "init", path("other"), "--name", "Other CA"},
         {"tls", "issue", path("other"), "intruder"},
     };
-    for (const QStringList &step : steps) {
-        const RtctlResult r = runRtctl(step);
-        QVERIFY2(r.code == 0, qPrintable(step.join(' ') + ": " + r.err));
-    }
+    QString made;
+    QVERIFY2(runRtctlAll(steps, &made), qPrintable(made));
     QString error;
     QVERIFY2(m_live.startTlsNameServer(path("fleet/ca.pem"), path("fleet/node.pem"), &error), qPrintable(error));
     QVERIFY2(writeSharedConf(&error), qPrintable(error));

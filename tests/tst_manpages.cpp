@@ -2,37 +2,15 @@
 // The man pages say what the programs say: rtctl(1) is what `rtctl --man` writes from the command
 // table (every command with its usage), rtstudio(1) and rtmanager(1) name every option their
 // --help names, and groff formats each page without a warning.
+#include "rtctlrunner.h"
+
 #include <QFile>
-#include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
 #include <QStandardPaths>
 #include <QTest>
 
 namespace {
-
-struct Run
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-Run run(const QString &program, const QStringList &arguments)
-{
-    QProcess process;
-    process.start(program, arguments);
-    Run result;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return result;
-    }
-    result.code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    result.out = QString::fromUtf8(process.readAllStandardOutput());
-    result.err = QString::fromUtf8(process.readAllStandardError());
-    return result;
-}
 
 QString readText(const QString &path)
 {
@@ -79,19 +57,19 @@ private slots:
 // The installed page is the one the build wrote from this rtctl, not an older one.
 void TestManPages::rtctlPageIsWhatRtctlWrites()
 {
-    const Run man = run(rtctl, {QStringLiteral("--man")});
+    const RtctlResult man = runProgram(rtctl, {QStringLiteral("--man")});
     QCOMPARE(man.code, 0);
     QVERIFY(man.out.startsWith(QStringLiteral(".\\\" SPDX-License-Identifier: MIT\n.TH RTCTL 1")));
     QCOMPARE(readText(QStringLiteral(RTCTL_MAN_PAGE)), man.out);
     QVERIFY2(!man.out.contains(QStringLiteral("@")), "a placeholder of rtctl.1.in was left");
     // Hidden: --help lists commands and options for users, not the build's.
-    QVERIFY(!run(rtctl, {QStringLiteral("--help")}).out.contains(QStringLiteral("--man")));
+    QVERIFY(!runProgram(rtctl, {QStringLiteral("--help")}).out.contains(QStringLiteral("--man")));
 }
 
 void TestManPages::rtctlPageHasEveryCommandAndOption()
 {
     const QString page = readText(QStringLiteral(RTCTL_MAN_PAGE));
-    const Run help = run(rtctl, {QStringLiteral("--help")});
+    const RtctlResult help = runProgram(rtctl, {QStringLiteral("--help")});
     static const QRegularExpression line(QStringLiteral("^  ([a-z]+)  "),
                                          QRegularExpression::MultilineOption);
     QStringList commands;
@@ -107,7 +85,7 @@ void TestManPages::rtctlPageHasEveryCommandAndOption()
         }
         const QString section = page.mid(at, page.indexOf(QStringLiteral(".SS "), at + 1) - at);
         for (const QString &option :
-             optionsInRoff(run(rtctl, {command, QStringLiteral("--help")}).out)) {
+             optionsInRoff(runProgram(rtctl, {command, QStringLiteral("--help")}).out)) {
             if (!names(section, option))
                 missing << command + QLatin1Char(' ') + option;
         }
@@ -130,7 +108,7 @@ void TestManPages::pagesNameEveryOptionOfHelp()
 {
     QFETCH(QString, program);
     QFETCH(QString, page);
-    const Run help = run(program, {QStringLiteral("--help")});
+    const RtctlResult help = runProgram(program, {QStringLiteral("--help")});
     QCOMPARE(help.code, 0);
     const QSet<QString> options = optionsInRoff(help.out);
     QVERIFY2(options.size() >= 4, qPrintable(help.out));
@@ -159,8 +137,8 @@ void TestManPages::groffFormatsWithoutWarnings()
     if (groff.isEmpty())
         QSKIP("groff is not installed (Debian's groff-base, which man-db brings)");
     QVERIFY(QFile::exists(page));
-    const Run formatted
-        = run(groff, {QStringLiteral("-man"), QStringLiteral("-ww"), QStringLiteral("-z"), page});
+    const RtctlResult formatted
+        = runProgram(groff, {QStringLiteral("-man"), QStringLiteral("-ww"), QStringLiteral("-z"), page});
     QCOMPARE(formatted.code, 0);
     QVERIFY2(formatted.err.isEmpty(), qPrintable(formatted.err));
 }

@@ -6,14 +6,15 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 
-RtctlResult runRtctl(const QStringList &arguments, const QHash<QString, QString> &environment)
+RtctlResult runProgram(const QString &program, const QStringList &arguments,
+                       const QHash<QString, QString> &environment)
 {
     QProcess process;
     QProcessEnvironment processEnvironment = QProcessEnvironment::systemEnvironment();
     for (auto it = environment.cbegin(); it != environment.cend(); ++it)
         processEnvironment.insert(it.key(), it.value());
     process.setProcessEnvironment(processEnvironment);
-    process.start(QStringLiteral(RTCTL_PATH), arguments);
+    process.start(program, arguments);
     RtctlResult result;
     // The other programs a test started keep being read meanwhile: a manager whose output pipe
     // fills up stops in the middle of a call rtctl is waiting for.
@@ -29,6 +30,23 @@ RtctlResult runRtctl(const QStringList &arguments, const QHash<QString, QString>
     result.out = QString::fromUtf8(process.readAllStandardOutput());
     result.err = QString::fromUtf8(process.readAllStandardError());
     return result;
+}
+
+RtctlResult runRtctl(const QStringList &arguments, const QHash<QString, QString> &environment)
+{
+    return runProgram(QStringLiteral(RTCTL_PATH), arguments, environment);
+}
+
+bool runRtctlAll(const QList<QStringList> &commands, QString *error)
+{
+    for (const QStringList &command : commands) {
+        const RtctlResult r = runRtctl(command);
+        if (r.code != 0) {
+            *error = command.join(QLatin1Char(' ')) + QStringLiteral(": ") + r.err;
+            return false;
+        }
+    }
+    return true;
 }
 
 RtctlResult runRtctlAt(const QString &context, const QStringList &arguments)
