@@ -107,8 +107,9 @@ int runManager(int argc, char **argv)
         CORBA::Object_var reference = manager.activate(installer.in());
         manager.setPackageInstaller(reference);
     }
-    manager.preloadModules();
-    manager.precreateComponents();
+    // Preloads modules, then creates, connects and activates what rtc.conf names (precreate,
+    // preconnect, preactivation), as OpenRTM-aist's manager does when it is activated.
+    sdkManager->activateManager();
 
     // Launchers (and tests) wait for this line before talking to the manager.
     std::cout << "rtmanager ready on " << manager.address() << std::endl;

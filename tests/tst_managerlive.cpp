@@ -117,6 +117,7 @@ private slots:
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
     void startupKeys();
+    void preconnectAndPreactivation();
     void commandLine();
     void shutdownWithoutComponents_data();
     void shutdownWithoutComponents();
@@ -852,6 +853,52 @@ void TestManagerLive::startupKeys()
     QCOMPARE(pre->length(), CORBA::ULong(1));
     CORBA::Object_var named = resolve(localHost() + ".host_cxt/other.mgr");
     QVERIFY(!CORBA::is_nil(named));
+}
+
+void TestManagerLive::preconnectAndPreactivation()
+{
+    // rtc.conf's preconnect and preactivation as OpenRTM-aist's manager reads them: the components
+    // precreate made are connected (by instance name and by naming address, with the connector's
+    // properties) and activated before the manager reports ready; entries naming what is not there are
+    // reported one by one, and the others still made.
+    const QString byName = QStringLiteral("ConsoleIn0.out?port=ConsoleOut0.in&subscription_type=flush");
+    const QString byAddress = QStringLiteral("ConsoleIn0.out?port=rtcname://%1/%2.host_cxt/ConsoleOut1.in")
+                                  .arg(m_live->namingServer(), localHost());
+    const QStringList entries{byName, byAddress, "Missing0.out?port=ConsoleOut0.in", "ConsoleIn0.nosuch?port1=ConsoleOut0.in"};
+    QString error;
+    QProcess *process = nullptr;
+    m_live->setErrorsRead(true);
+    RTM::Manager_var other = startMaster(&error, &process,
+                                         {"-o", "manager.components.precreate=ConsoleIn,ConsoleOut,ConsoleOut",
+                                          "-o", "manager.components.preconnect=" + entries.join(", "),
+                                          "-o", "manager.components.preactivation=ConsoleOut0, ConsoleOut1,ConsoleIn0,Nobody0",
+                                          "-o", "manager.instance_name=other"});
+    m_live->setErrorsRead(false);
+    QVERIFY2(!CORBA::is_nil(other), qPrintable(error));
+    const QByteArray printed = m_live->printedWhileStarting(process);
+    QVERIFY2(printed.contains("manager.components.preconnect: Missing0.out?port=ConsoleOut0.in: no component Missing0"),
+             printed.constData());
+    QVERIFY2(printed.contains("ConsoleIn0.nosuch?port1=ConsoleOut0.in: ConsoleIn0 has no port ConsoleIn0.nosuch"),
+             printed.constData());
+    QVERIFY2(printed.contains("manager.components.preactivation: Nobody0: no such component"), printed.constData());
+    QVERIFY2(printed.count("manager.components.pre") == 3, printed.constData());
+
+    RTC::RTCList_var source = other->get_components_by_name("ConsoleIn0");
+    QCOMPARE(source->length(), CORBA::ULong(1));
+    for (const char *name : {"ConsoleOut0", "ConsoleOut1"}) {
+        RTC::RTCList_var sink = other->get_components_by_name(name);
+        QCOMPARE(sink->length(), CORBA::ULong(1));
+        QTRY_VERIFY_WITH_TIMEOUT(status(sink[0], "received_count") > 5, 10000);
+        // One connector each, named by its entry.
+        RTC::PortService_var in = port(sink[0], "in");
+        RTC::ConnectorProfileList_var connectors = in->get_connector_profiles();
+        QCOMPARE(connectors->length(), CORBA::ULong(1));
+        QCOMPARE(QString(connectors[0].name), QString(name) == "ConsoleOut0" ? byName : byAddress);
+        if (QString(name) == "ConsoleOut0")
+            QCOMPARE(nv(connectors[0].properties, "dataport.subscription_type"), QString("flush"));
+        QCOMPARE(nv(connectors[0].properties, "dataport.dataflow_type"), QString("push"));
+        QCOMPARE(nv(connectors[0].properties, "dataport.interface_type"), QString("corba_cdr"));
+    }
 }
 
 void TestManagerLive::commandLine()

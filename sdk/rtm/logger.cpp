@@ -147,6 +147,12 @@ int LoggerSink::level()
     return m_enabled ? m_level : Logger::RTL_SILENT;
 }
 
+bool LoggerSink::reachesStandardError(int level)
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_enabled && m_stderr && level <= m_level;
+}
+
 void LoggerSink::write(int level, const std::string &name, const std::string &text)
 {
     static const char *const names[] = {"SILENT", "FATAL", "ERROR", "WARNING", "INFO",

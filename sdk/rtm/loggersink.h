@@ -26,6 +26,8 @@ public:
     /// Applies the manager's `logger.*` keys; a file that cannot be opened is reported on standard error.
     void configure(const Runtime::Properties &config);
     int level();
+    /// Whether a line of @p level reaches standard error (so that a caller need not print it there again).
+    bool reachesStandardError(int level);
     void write(int level, const std::string &name, const std::string &text);
     /// Receives every line written too (with its date apart), passing it to the streams added to it.
     coil::LogStreamBuffer &streams() { return m_streams; }

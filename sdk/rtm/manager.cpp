@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // RTC::Manager: OpenRTM-aist's manager interface on the runtime's Runtime::Manager.
 #include <rtm/Manager.h>
+#include <rtm/CORBA_RTCUtil.h>
 #include <rtm/LocalServiceAdmin.h>
 #include <rtm/ManagerServant.h>
 #include <rtm/NamingManager.h>
@@ -20,6 +21,7 @@
 #include <managerconfig.h>
 
 #include <condition_variable>
+#include <iterator>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
@@ -70,7 +72,37 @@ RTObject_impl *localServant(PortableServer::POA_ptr poa, CORBA::Object_ptr objec
 void reportError(Logger &rtclog, const std::string &message)
 {
     RTC_ERROR_STR(message);
-    std::cerr << message << std::endl;
+    if (!Sdk::LoggerSink::instance().reachesStandardError(Logger::RTL_ERROR))
+        std::cerr << message << std::endl;
+}
+
+const char *returnCodeName(RTC::ReturnCode_t code)
+{
+    static const char *const names[] = {"RTC_OK", "RTC_ERROR", "BAD_PARAMETER", "UNSUPPORTED", "OUT_OF_RESOURCES",
+                                        "PRECONDITION_NOT_MET"};
+    const auto index = static_cast<std::size_t>(code);
+    return index < std::size(names) ? names[index] : "an unknown return code";
+}
+
+/**
+ * A component and one of its ports as rtc.conf's `manager.components.preconnect` and `preactivation`
+ * name them: an instance name of this manager (`ConsoleIn0.out`, the port named in full) or a naming
+ * address (`rtcname://host/ctx.host_cxt/ConsoleIn0.out`, `rtcloc://…`: the port named by what follows
+ * the last slash).
+ */
+struct PortAddress
+{
+    std::string component;
+    std::string port;
+};
+
+PortAddress portAddress(const std::string &text)
+{
+    const std::size_t dot = text.rfind('.');
+    PortAddress address{dot == std::string::npos ? text : text.substr(0, dot), text};
+    if (address.component.find("://") != std::string::npos)
+        address.port = text.substr(text.rfind('/') + 1);
+    return address;
 }
 
 } // namespace
@@ -318,7 +350,97 @@ bool Manager::activateManager()
     if (d->initProc != nullptr)
         d->initProc(this);
     d->runtime->precreateComponents();
+    initPreConnection();
+    initPreActivation();
     return true;
+}
+
+RTC::RTObject_ptr Manager::findComponent(const std::string &name)
+{
+    RTC::RTCList list = name.find("://") == std::string::npos ? d->runtime->componentsByName(name)
+                                                                : getNaming()->string_to_component(name);
+    return list.length() > 0 ? RTC::RTObject::_duplicate(list[0]) : RTC::RTObject::_nil();
+}
+
+void Manager::initPreConnection()
+{
+    const std::string setting = d->config.getProperty("manager.components.preconnect");
+    for (std::string entry : coil::split(setting, ",")) {
+        entry = coil::eraseBothEndsBlank(entry);
+        if (entry.empty())
+            continue;
+        auto fail = [this, &entry](const std::string &why) {
+            reportError(getLogbuf(), "manager.components.preconnect: " + entry + ": " + why);
+        };
+        // The first port, then those named by `port` and `port<N>`; every other parameter is
+        // the connector's (dataport.<key>).
+        const PortAddress first = portAddress(entry.substr(0, entry.find('?')));
+        std::vector<PortAddress> others;
+        coil::Properties properties;
+        for (const auto &[key, value] : coil::urlparam2map(entry)) {
+            int number = 0;
+            if (key == "port"
+                || (key.compare(0, 4, "port") == 0 && coil::stringTo(number, key.substr(4).c_str())))
+                others.push_back(portAddress(coil::eraseBothEndsBlank(value)));
+            else
+                properties.setProperty("dataport." + coil::eraseBothEndsBlank(key), coil::eraseBothEndsBlank(value));
+        }
+        auto portOf = [this, &fail](const PortAddress &address) -> RTC::PortService_ptr {
+            RTC::RTObject_var component = findComponent(address.component);
+            if (CORBA::is_nil(component)) {
+                fail("no component " + address.component);
+                return RTC::PortService::_nil();
+            }
+            RTC::PortService_var port = CORBA_RTCUtil::get_port_by_name(component, address.port);
+            if (CORBA::is_nil(port))
+                fail(address.component + " has no port " + address.port);
+            return port._retn();
+        };
+        try {
+            RTC::PortService_var port0 = portOf(first);
+            if (CORBA::is_nil(port0))
+                continue;
+            // No second port: the first is connected alone (a port that finds its peer itself).
+            if (others.empty())
+                others.push_back(PortAddress());
+            for (const PortAddress &other : others) {
+                RTC::PortService_var port1
+                    = other.component.empty() ? RTC::PortService::_nil() : portOf(other);
+                if (!other.component.empty() && CORBA::is_nil(port1))
+                    continue;
+                const RTC::ReturnCode_t result = CORBA_RTCUtil::connect(entry, properties, port0, port1);
+                if (result != RTC::RTC_OK)
+                    fail(std::string("the connection was refused (") + returnCodeName(result) + ")");
+            }
+        } catch (const CORBA::Exception &e) {
+            fail(Runtime::describeException(e));
+        }
+    }
+}
+
+void Manager::initPreActivation()
+{
+    const std::string setting = d->config.getProperty("manager.components.preactivation");
+    for (std::string name : coil::split(setting, ",")) {
+        name = coil::eraseBothEndsBlank(name);
+        if (name.empty())
+            continue;
+        auto fail = [this, &name](const std::string &why) {
+            reportError(getLogbuf(), "manager.components.preactivation: " + name + ": " + why);
+        };
+        try {
+            RTC::RTObject_var component = findComponent(name);
+            if (CORBA::is_nil(component)) {
+                fail("no such component");
+                continue;
+            }
+            const RTC::ReturnCode_t result = CORBA_RTCUtil::activate(component, 0);
+            if (result != RTC::RTC_OK)
+                fail(std::string("not activated (") + returnCodeName(result) + ")");
+        } catch (const CORBA::Exception &e) {
+            fail(Runtime::describeException(e));
+        }
+    }
 }
 
 void Manager::runManager(bool no_block)

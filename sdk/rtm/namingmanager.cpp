@@ -127,7 +127,20 @@ bool NamingOnCorba::isAlive()
 RTC::RTCList NamingOnCorba::string_to_component(std::string name)
 {
     RTC::RTCList list;
-    CosNaming::NamingContext_var root = rootContext(m_orb, m_endpoint);
+    // rtcname://host:port/ctx.host_cxt/Name addresses the component bound as Name.rtc in the name
+    // server at host:port (`*`: this one); a bare path is looked up here as it is.
+    std::string endpoint = m_endpoint;
+    const std::string scheme = "rtcname://";
+    if (name.compare(0, scheme.size(), scheme) == 0) {
+        const std::string rest = name.substr(scheme.size());
+        const std::size_t slash = rest.find('/');
+        if (slash == std::string::npos || slash + 1 == rest.size())
+            return list;
+        if (rest.compare(0, slash, "*") != 0)
+            endpoint = rest.substr(0, slash);
+        name = rest.substr(slash + 1) + ".rtc";
+    }
+    CosNaming::NamingContext_var root = rootContext(m_orb, endpoint);
     if (CORBA::is_nil(root))
         return list;
     try {

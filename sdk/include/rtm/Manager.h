@@ -75,8 +75,11 @@ public:
 
     coil::Properties &getConfig();
     void setModuleInitProc(ModuleInitProc proc);
-    /// Serves the manager, loads `manager.modules.preload`, runs the init procedure and creates
-    /// `manager.components.precreate`. False when the ORB cannot serve.
+    /**
+     * Serves the manager, loads `manager.modules.preload`, runs the init procedure, creates
+     * `manager.components.precreate`, connects `manager.components.preconnect` and activates
+     * `manager.components.preactivation`. False when the ORB cannot serve.
+     */
     bool activateManager();
     /// Runs until shutdown; with @p no_block true returns at once and runs in the background.
     void runManager(bool no_block = false);
@@ -186,6 +189,15 @@ protected:
     void initManager(int argc, char **argv);
     /// Starts the local services `manager.local_service.enabled_services` names (RTM::LocalServiceAdmin).
     bool initLocalService();
+    /**
+     * Connects the ports `manager.components.preconnect` names: entries separated by commas, each
+     * `Comp0.port?port=Comp1.port&port1=…&key=value…` (the connector is named by the whole entry, its
+     * other parameters are its `dataport.` properties). A connection that cannot be made is reported
+     * and the next one tried.
+     */
+    void initPreConnection();
+    /// Activates the components `manager.components.preactivation` names (in their first context).
+    void initPreActivation();
 
     /// Matches components by instance name (for ComponentManager).
     struct InstanceName
@@ -205,6 +217,8 @@ protected:
 
 private:
     friend bool Sdk::adoptManager(Manager *manager);
+    /// A component by instance name or naming address (`rtcname://…`, `rtcloc://…`); nil when none.
+    RTC::RTObject_ptr findComponent(const std::string &name);
 
     struct Private;
     Private *d;
