@@ -66,6 +66,7 @@ private slots:
     void staticFsmRunsUnchanged_data();
     void staticFsmRunsUnchanged();
     void serializerExampleRunsUnchanged();
+    void serializerExampleRunsAsItsRtcConfSays();
     void dataTypesConvert_data();
     void dataTypesConvert();
 
@@ -699,8 +700,8 @@ void TestPythonExamples::serializerExampleRunsUnchanged()
 {
     // Its rtc.conf: ConsoleOutDouble's process loads ShortToDoubleDeserializer.py, whose serializer
     // turns the TimedShort samples of ConsoleInShort's OutPort into TimedDouble ones for the InPort of
-    // ConsoleOutDouble, named by the connection's inport.marshaling_type. (The runtime's manager reads
-    // no preconnect: the test connects the ports as that line says.)
+    // ConsoleOutDouble, named by the connection's inport.marshaling_type. Here in two programs, the
+    // test connecting the ports as that line says.
     const QString in = example(QStringLiteral("Serializer/ConsoleInShort.py"));
     if (in.isEmpty())
         QSKIP(NoPythonCorpus);
@@ -739,6 +740,35 @@ void TestPythonExamples::serializerExampleRunsUnchanged()
     QVERIFY(rtctlSucceeds({"deact", "ConsoleInShort0.rtc", "ConsoleOutDouble0.rtc"}));
     m_live.stop(source);
     m_live.stop(sink);
+}
+
+void TestPythonExamples::serializerExampleRunsAsItsRtcConfSays()
+{
+    // `python3 ConsoleInShort.py -f rtc.conf` in the example's folder: its rtc.conf preloads the
+    // consumer and the deserializer, creates a ConsoleOutDouble, connects its InPort to the
+    // ConsoleInShort's OutPort with the connector properties written there and activates both.
+    const QString in = example(QStringLiteral("Serializer/ConsoleInShort.py"));
+    if (in.isEmpty())
+        QSKIP(NoPythonCorpus);
+    QProcess *program = m_scripts.start(in, {QStringLiteral("ConsoleInShort0.rtc"), QStringLiteral("ConsoleOutDouble0.rtc")},
+                                        runTimeoutMs, exampleConf(QStringLiteral("Serializer/rtc.conf")));
+    QVERIFY(program);
+    QByteArray numbers;
+    for (int i = 1; i <= 200; ++i)
+        numbers += QByteArray::number(i * 3 - 300) + '\n';
+    program->write(numbers);
+    const QRegularExpression received(
+        QStringLiteral("Received:  RTC\\.TimedDouble\\(tm=RTC\\.Time\\(sec=[1-9]\\d*, nsec=\\d+\\), data=(-?\\d+)\\.0\\)"));
+    QTRY_VERIFY2_WITH_TIMEOUT(received.match(printed(program)).hasMatch(), qPrintable(printed(program).right(3000)),
+                              runTimeoutMs);
+    const int value = received.match(printed(program)).captured(1).toInt();
+    QVERIFY2(value >= -297 && value <= 300 && value % 3 == 0, qPrintable(printed(program).right(3000)));
+    // The connector is named by its line of rtc.conf.
+    QVERIFY2(printed(program).contains(QLatin1String(
+                 "Profile::name:   ConsoleOutDouble0.in?port=ConsoleInShort0.out&inport.marshaling_type=cdr:RTC/TimedShort:"
+                 "RTC/TimedDouble&outport.marshaling_type=cdr\n")),
+             qPrintable(printed(program).left(3000)));
+    m_live.stop(program);
 }
 
 void TestPythonExamples::dataTypesConvert_data()
