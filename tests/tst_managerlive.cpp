@@ -864,14 +864,17 @@ void TestManagerLive::preconnectAndPreactivation()
     const QString byName = QStringLiteral("ConsoleIn0.out?port=ConsoleOut0.in&subscription_type=flush");
     const QString byAddress = QStringLiteral("ConsoleIn0.out?port=rtcname://%1/%2.host_cxt/ConsoleOut1.in")
                                   .arg(m_live->namingServer(), localHost());
-    const QStringList entries{byName, byAddress, "Missing0.out?port=ConsoleOut0.in", "ConsoleIn0.nosuch?port1=ConsoleOut0.in"};
+    // OpenRTM-aist 1.x's form, which older rtc.conf files use.
+    const QString oldForm = QStringLiteral("ConsoleIn0.out^ConsoleOut2.in(dataflow_type=push&subscription_type=new)");
+    const QStringList entries{byName, byAddress, oldForm, "Missing0.out?port=ConsoleOut0.in",
+                              "ConsoleIn0.nosuch?port1=ConsoleOut0.in"};
     QString error;
     QProcess *process = nullptr;
     m_live->setErrorsRead(true);
     RTM::Manager_var other = startMaster(&error, &process,
-                                         {"-o", "manager.components.precreate=ConsoleIn,ConsoleOut,ConsoleOut",
+                                         {"-o", "manager.components.precreate=ConsoleIn,ConsoleOut,ConsoleOut,ConsoleOut",
                                           "-o", "manager.components.preconnect=" + entries.join(", "),
-                                          "-o", "manager.components.preactivation=ConsoleOut0, ConsoleOut1,ConsoleIn0,Nobody0",
+                                          "-o", "manager.components.preactivation=ConsoleOut0, ConsoleOut1,ConsoleOut2,ConsoleIn0,Nobody0",
                                           "-o", "manager.instance_name=other"});
     m_live->setErrorsRead(false);
     QVERIFY2(!CORBA::is_nil(other), qPrintable(error));
@@ -885,7 +888,8 @@ void TestManagerLive::preconnectAndPreactivation()
 
     RTC::RTCList_var source = other->get_components_by_name("ConsoleIn0");
     QCOMPARE(source->length(), CORBA::ULong(1));
-    for (const char *name : {"ConsoleOut0", "ConsoleOut1"}) {
+    const QHash<QString, QString> connectorOf{{"ConsoleOut0", byName}, {"ConsoleOut1", byAddress}, {"ConsoleOut2", oldForm}};
+    for (const char *name : {"ConsoleOut0", "ConsoleOut1", "ConsoleOut2"}) {
         RTC::RTCList_var sink = other->get_components_by_name(name);
         QCOMPARE(sink->length(), CORBA::ULong(1));
         QTRY_VERIFY_WITH_TIMEOUT(status(sink[0], "received_count") > 5, 10000);
@@ -893,9 +897,10 @@ void TestManagerLive::preconnectAndPreactivation()
         RTC::PortService_var in = port(sink[0], "in");
         RTC::ConnectorProfileList_var connectors = in->get_connector_profiles();
         QCOMPARE(connectors->length(), CORBA::ULong(1));
-        QCOMPARE(QString(connectors[0].name), QString(name) == "ConsoleOut0" ? byName : byAddress);
-        if (QString(name) == "ConsoleOut0")
-            QCOMPARE(nv(connectors[0].properties, "dataport.subscription_type"), QString("flush"));
+        QCOMPARE(QString(connectors[0].name), connectorOf.value(name));
+        if (QString(name) != "ConsoleOut1")
+            QCOMPARE(nv(connectors[0].properties, "dataport.subscription_type"),
+                     QString(name) == "ConsoleOut0" ? QString("flush") : QString("new"));
         QCOMPARE(nv(connectors[0].properties, "dataport.dataflow_type"), QString("push"));
         QCOMPARE(nv(connectors[0].properties, "dataport.interface_type"), QString("corba_cdr"));
     }

@@ -105,6 +105,27 @@ PortAddress portAddress(const std::string &text)
     return address;
 }
 
+/**
+ * A preconnect entry in OpenRTM-aist 1.x's form, `Comp0.port^Comp1.port(key=value&…)` (some
+ * examples' rtc.conf put `:` between the ports), written in 2.x's: `Comp0.port?port=Comp1.port&key=value&…`.
+ * Other text is returned as it is.
+ */
+std::string currentPreconnectForm(const std::string &entry)
+{
+    const std::size_t open = entry.find('(');
+    if (entry.find('?') != std::string::npos || open == std::string::npos || entry.back() != ')')
+        return entry;
+    const std::string ports = entry.substr(0, open);
+    std::size_t separator = ports.find('^');
+    if (separator == std::string::npos && ports.find("://") == std::string::npos)
+        separator = ports.find(':');
+    if (separator == std::string::npos)
+        return entry;
+    const std::string parameters = entry.substr(open + 1, entry.size() - open - 2);
+    return ports.substr(0, separator) + "?port=" + ports.substr(separator + 1)
+        + (parameters.empty() ? std::string() : "&" + parameters);
+}
+
 } // namespace
 
 struct Manager::Private
@@ -374,10 +395,11 @@ void Manager::initPreConnection()
         };
         // The first port, then those named by `port` and `port<N>`; every other parameter is
         // the connector's (dataport.<key>).
-        const PortAddress first = portAddress(entry.substr(0, entry.find('?')));
+        const std::string request = currentPreconnectForm(entry);
+        const PortAddress first = portAddress(request.substr(0, request.find('?')));
         std::vector<PortAddress> others;
         coil::Properties properties;
-        for (const auto &[key, value] : coil::urlparam2map(entry)) {
+        for (const auto &[key, value] : coil::urlparam2map(request)) {
             int number = 0;
             if (key == "port"
                 || (key.compare(0, 4, "port") == 0 && coil::stringTo(number, key.substr(4).c_str())))

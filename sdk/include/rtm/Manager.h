@@ -192,8 +192,8 @@ protected:
     /**
      * Connects the ports `manager.components.preconnect` names: entries separated by commas, each
      * `Comp0.port?port=Comp1.port&port1=…&key=value…` (the connector is named by the whole entry, its
-     * other parameters are its `dataport.` properties). A connection that cannot be made is reported
-     * and the next one tried.
+     * other parameters are its `dataport.` properties) or OpenRTM-aist 1.x's `Comp0.port^Comp1.port(key=value&…)`.
+     * A connection that cannot be made is reported and the next one tried.
      */
     void initPreConnection();
     /// Activates the components `manager.components.preactivation` names (in their first context).
