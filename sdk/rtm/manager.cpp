@@ -385,14 +385,7 @@ RTC::RTObject_ptr Manager::findComponent(const std::string &name)
 
 void Manager::initPreConnection()
 {
-    const std::string setting = d->config.getProperty("manager.components.preconnect");
-    for (std::string entry : coil::split(setting, ",")) {
-        entry = coil::eraseBothEndsBlank(entry);
-        if (entry.empty())
-            continue;
-        auto fail = [this, &entry](const std::string &why) {
-            reportError(getLogbuf(), "manager.components.preconnect: " + entry + ": " + why);
-        };
+    forEachStartupEntry("manager.components.preconnect", [this](const std::string &entry, const Failure &fail) {
         // The first port, then those named by `port` and `port<N>`; every other parameter is
         // the connector's (dataport.<key>).
         const std::string request = currentPreconnectForm(entry);
@@ -418,47 +411,49 @@ void Manager::initPreConnection()
                 fail(address.component + " has no port " + address.port);
             return port._retn();
         };
-        try {
-            RTC::PortService_var port0 = portOf(first);
-            if (CORBA::is_nil(port0))
+        RTC::PortService_var port0 = portOf(first);
+        if (CORBA::is_nil(port0))
+            return;
+        // No second port: the first is connected alone (a port that finds its peer itself).
+        if (others.empty())
+            others.push_back(PortAddress());
+        for (const PortAddress &other : others) {
+            RTC::PortService_var port1 = other.component.empty() ? RTC::PortService::_nil() : portOf(other);
+            if (!other.component.empty() && CORBA::is_nil(port1))
                 continue;
-            // No second port: the first is connected alone (a port that finds its peer itself).
-            if (others.empty())
-                others.push_back(PortAddress());
-            for (const PortAddress &other : others) {
-                RTC::PortService_var port1
-                    = other.component.empty() ? RTC::PortService::_nil() : portOf(other);
-                if (!other.component.empty() && CORBA::is_nil(port1))
-                    continue;
-                const RTC::ReturnCode_t result = CORBA_RTCUtil::connect(entry, properties, port0, port1);
-                if (result != RTC::RTC_OK)
-                    fail(std::string("the connection was refused (") + returnCodeName(result) + ")");
-            }
-        } catch (const CORBA::Exception &e) {
-            fail(Runtime::describeException(e));
+            const RTC::ReturnCode_t result = CORBA_RTCUtil::connect(entry, properties, port0, port1);
+            if (result != RTC::RTC_OK)
+                fail(std::string("the connection was refused (") + returnCodeName(result) + ")");
         }
-    }
+    });
 }
 
 void Manager::initPreActivation()
 {
-    const std::string setting = d->config.getProperty("manager.components.preactivation");
-    for (std::string name : coil::split(setting, ",")) {
-        name = coil::eraseBothEndsBlank(name);
-        if (name.empty())
+    forEachStartupEntry("manager.components.preactivation", [this](const std::string &name, const Failure &fail) {
+        RTC::RTObject_var component = findComponent(name);
+        if (CORBA::is_nil(component)) {
+            fail("no such component");
+            return;
+        }
+        const RTC::ReturnCode_t result = CORBA_RTCUtil::activate(component, 0);
+        if (result != RTC::RTC_OK)
+            fail(std::string("not activated (") + returnCodeName(result) + ")");
+    });
+}
+
+void Manager::forEachStartupEntry(const std::string &key,
+                                  const std::function<void(const std::string &, const Failure &)> &handle)
+{
+    for (std::string entry : coil::split(d->config.getProperty(key), ",")) {
+        entry = coil::eraseBothEndsBlank(entry);
+        if (entry.empty())
             continue;
-        auto fail = [this, &name](const std::string &why) {
-            reportError(getLogbuf(), "manager.components.preactivation: " + name + ": " + why);
+        const Failure fail = [this, &key, &entry](const std::string &why) {
+            reportError(getLogbuf(), key + ": " + entry + ": " + why);
         };
         try {
-            RTC::RTObject_var component = findComponent(name);
-            if (CORBA::is_nil(component)) {
-                fail("no such component");
-                continue;
-            }
-            const RTC::ReturnCode_t result = CORBA_RTCUtil::activate(component, 0);
-            if (result != RTC::RTC_OK)
-                fail(std::string("not activated (") + returnCodeName(result) + ")");
+            handle(entry, fail);
         } catch (const CORBA::Exception &e) {
             fail(Runtime::describeException(e));
         }

@@ -219,6 +219,12 @@ private:
     friend bool Sdk::adoptManager(Manager *manager);
     /// A component by instance name or naming address (`rtcname://…`, `rtcloc://…`); nil when none.
     RTC::RTObject_ptr findComponent(const std::string &name);
+    /// Reports why an entry of a startup key failed.
+    using Failure = std::function<void(const std::string &why)>;
+    /// Calls @p handle for each entry of the comma-separated @p key (`manager.components.preconnect`, …)
+    /// with the means to report its failure; a CORBA exception it throws is reported too.
+    void forEachStartupEntry(const std::string &key,
+                             const std::function<void(const std::string &entry, const Failure &fail)> &handle);
 
     struct Private;
     Private *d;
