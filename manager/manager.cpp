@@ -48,6 +48,8 @@ void Manager::destroyOrb()
         m_shutdownThread.join();
     if (m_watchdog.joinable())
         m_watchdog.join();
+    if (m_namingUpdater.joinable())
+        m_namingUpdater.join();
     if (!CORBA::is_nil(m_orb)) {
         try {
             m_orb->destroy();
@@ -201,12 +203,15 @@ bool Manager::start(std::string *error)
         = m_config.contains("manager.spawned_by")
               ? std::vector<std::string>()
               : NamingRegistrar::expand(m_config.value("manager.naming_formats", "%h.host_cxt/%n.mgr"), values);
+    // Kept also when a server did not take them: keepNamesBound() binds them once it answers.
     for (const std::string &path : names) {
-        if (m_naming->bind(path, m_self, &errors))
-            m_ownNames.push_back(path);
+        m_naming->bind(path, m_self, &errors);
+        m_ownNames.push_back(path);
     }
     for (const std::string &message : errors)
         std::cerr << programName() << ": " << message << std::endl;
+    if (!m_naming->servers().empty() && m_config.isYes("naming.update.enable", true))
+        m_namingUpdater = std::thread([this] { keepNamesBound(); });
     if (m_isMaster) {
         m_watchdog = std::thread([this] { watchSlaves(); });
     } else {
@@ -256,6 +261,7 @@ void Manager::cleanup()
         components.swap(m_components);
         m_instanceNames.clear();
     }
+    std::unique_lock naming(m_namingMutex);
     for (auto &component : components) {
         component->servant->setExitHandler({});
         component->servant->shutdownComponent();
@@ -265,6 +271,7 @@ void Manager::cleanup()
     }
     for (const std::string &path : m_ownNames)
         m_naming->unbind(path);
+    naming.unlock();
     if (m_isMaster) {
         RTM::ManagerList all = slaves();
         for (CORBA::ULong i = 0; i < all.length(); ++i) {
@@ -598,13 +605,53 @@ void Manager::registerNames(Component &component)
     if (m_hooks.preNaming)
         m_hooks.preNaming(component.servant, paths, true);
     for (const std::string &path : paths) {
-        if (m_naming->bind(path, component.reference, &errors))
-            component.names.push_back(path);
+        m_naming->bind(path, component.reference, &errors);
+        component.names.push_back(path);
     }
     for (const std::string &message : errors)
         std::cerr << programName() << ": " << message << std::endl;
     if (m_hooks.postNaming)
         m_hooks.postNaming(component.servant, component.names, true);
+}
+
+void Manager::keepNamesBound()
+{
+    const std::chrono::duration<double> interval(std::max(0.05, configNumber("naming.update.interval", 10.0)));
+    const bool everyRound = m_config.isYes("naming.update.rebind", false);
+    std::unique_lock lock(m_mutex);
+    while (!m_stopping) {
+        // Woken early only to stop (the variable also tells of slaves).
+        const auto next = std::chrono::steady_clock::now() + interval;
+        if (m_slavesChanged.wait_until(lock, next, [this] { return m_stopping; }))
+            return;
+        lock.unlock();
+        // A component deleted meanwhile has its names unbound after this round, never before.
+        std::lock_guard naming(m_namingMutex);
+        lock.lock();
+        std::vector<std::pair<std::string, CORBA::Object_var>> names;
+        for (const std::string &path : m_ownNames)
+            names.emplace_back(path, CORBA::Object::_duplicate(m_self));
+        for (const auto &component : m_components) {
+            for (const std::string &path : component->names)
+                names.emplace_back(path, CORBA::Object::_duplicate(component->reference));
+        }
+        lock.unlock();
+        for (const std::string &server : m_naming->servers()) {
+            if (names.empty())
+                break;
+            if (!everyRound
+                && m_naming->lookUp(server, names.front().first, names.front().second)
+                       != NamingRegistrar::Lookup::Missing)
+                continue;
+            std::vector<std::string> errors;
+            for (const auto &[path, object] : names)
+                m_naming->bindOn(server, path, object, &errors);
+            if (!everyRound)
+                std::cerr << programName() << ": name server " << server << " did not have this manager's names: "
+                          << names.size() - errors.size() << " of " << names.size() << " bound again" << std::endl;
+        }
+        lock.lock();
+    }
 }
 
 void Manager::componentExited(RtObject *servant)
@@ -631,8 +678,11 @@ void Manager::forget(RtObject *servant)
     }
     if (m_hooks.preNaming)
         m_hooks.preNaming(removed->servant, removed->names, false);
-    for (const std::string &path : removed->names)
-        m_naming->unbind(path);
+    {
+        std::lock_guard naming(m_namingMutex);
+        for (const std::string &path : removed->names)
+            m_naming->unbind(path);
+    }
     if (m_hooks.postNaming)
         m_hooks.postNaming(removed->servant, removed->names, false);
     releaseServant(m_poa, removed->servant);

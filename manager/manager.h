@@ -264,6 +264,12 @@ private:
     /// manager.shutdown_on_nortcs says so.
     void componentExited(RtObject *component);
     void registerNames(Component &component);
+    /**
+     * OpenRTM-aist's `naming.update.*`: every `naming.update.interval` seconds (10) asks each name
+     * server for one of this manager's names and binds them all again where it is missing (a name
+     * server restarted, or reached for the first time); with `naming.update.rebind` every round.
+     */
+    void keepNamesBound();
     void cleanup();
 
     // managerslaves.cpp
@@ -338,6 +344,9 @@ private:
     bool m_restart = false;
     std::thread m_shutdownThread;
     std::thread m_watchdog;
+    std::thread m_namingUpdater;
+    /// Held by keepNamesBound() while it binds and by forget() while it unbinds.
+    std::mutex m_namingMutex;
 };
 
 } // namespace Runtime

@@ -70,30 +70,54 @@ NamingRegistrar::NamingRegistrar(const std::vector<std::string> &servers)
 
 bool NamingRegistrar::bind(const std::string &path, CORBA::Object_ptr object, std::vector<std::string> *errors)
 {
+    if (toName(path).length() == 0)
+        return false;
+    bool ok = true;
+    for (const std::string &server : m_servers)
+        ok = bindOn(server, path, object, errors) && ok;
+    return ok;
+}
+
+bool NamingRegistrar::bindOn(const std::string &server, const std::string &path, CORBA::Object_ptr object,
+                             std::vector<std::string> *errors)
+{
     const CosNaming::Name name = toName(path);
     if (name.length() == 0)
         return false;
     CosNaming::Name last;
     last.length(1);
     last[0] = name[name.length() - 1];
-    bool ok = true;
-    for (const std::string &server : m_servers) {
+    try {
+        CosNaming::NamingContext_var root = rootContext(server);
         try {
-            CosNaming::NamingContext_var root = rootContext(server);
-            try {
-                // The whole path in one call: the server walks the contexts.
-                root->rebind(name, object);
-            } catch (const CosNaming::NamingContext::NotFound &) {
-                CosNaming::NamingContext_var holder = makeContexts(root, name);
-                holder->rebind(last, object);
-            }
-        } catch (const CORBA::Exception &e) {
-            ok = false;
-            if (errors)
-                errors->push_back("name server " + server + ": cannot bind " + path + ": " + describeException(e));
+            // The whole path in one call: the server walks the contexts.
+            root->rebind(name, object);
+        } catch (const CosNaming::NamingContext::NotFound &) {
+            CosNaming::NamingContext_var holder = makeContexts(root, name);
+            holder->rebind(last, object);
         }
+        return true;
+    } catch (const CORBA::Exception &e) {
+        if (errors)
+            errors->push_back("name server " + server + ": cannot bind " + path + ": " + describeException(e));
+        return false;
     }
-    return ok;
+}
+
+NamingRegistrar::Lookup NamingRegistrar::lookUp(const std::string &server, const std::string &path,
+                                                CORBA::Object_ptr object)
+{
+    try {
+        CosNaming::NamingContext_var root = rootContext(server);
+        CORBA::Object_var bound = root->resolve(toName(path));
+        return bound->_is_equivalent(object) ? Lookup::Bound : Lookup::Missing;
+    } catch (const CosNaming::NamingContext::NotFound &) {
+        return Lookup::Missing;
+    } catch (const CORBA::UserException &) {
+        return Lookup::Missing;
+    } catch (const CORBA::Exception &) {
+        return Lookup::Unreachable;
+    }
 }
 
 void NamingRegistrar::unbind(const std::string &path)

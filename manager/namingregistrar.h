@@ -25,6 +25,14 @@ public:
 
     /// Binds @p object at @p path on every server; errors name the server and the problem.
     bool bind(const std::string &path, CORBA::Object_ptr object, std::vector<std::string> *errors);
+    /// Binds @p object at @p path on @p server only.
+    bool bindOn(const std::string &server, const std::string &path, CORBA::Object_ptr object,
+                std::vector<std::string> *errors);
+
+    enum class Lookup { Bound, Missing, Unreachable };
+    /// Whether @p server has @p object at @p path (Missing: not bound there, or bound to another object).
+    Lookup lookUp(const std::string &server, const std::string &path, CORBA::Object_ptr object);
+    const std::vector<std::string> &servers() const { return m_servers; }
     /// Unbinds @p path everywhere (missing names are fine).
     void unbind(const std::string &path);
 

@@ -118,6 +118,7 @@ private slots:
     void slavesFollowKilledMaster();
     void startupKeys();
     void preconnectAndPreactivation();
+    void namesReturnToARestartedNameServer();
     void commandLine();
     void shutdownWithoutComponents_data();
     void shutdownWithoutComponents();
@@ -904,6 +905,41 @@ void TestManagerLive::preconnectAndPreactivation()
         QCOMPARE(nv(connectors[0].properties, "dataport.dataflow_type"), QString("push"));
         QCOMPARE(nv(connectors[0].properties, "dataport.interface_type"), QString("corba_cdr"));
     }
+}
+
+void TestManagerLive::namesReturnToARestartedNameServer()
+{
+    // OpenRTM-aist's naming.update.*: a name server that comes back empty gets the manager's name and
+    // its components' names again within an interval; a component deleted meanwhile stays away.
+    restartMaster({"-o", "naming.update.interval=0.2", "-o", "manager.instance_name=keeper"});
+    RTC::RTObject_var kept = create("ConsoleIn?instance_name=kept");
+    QVERIFY2(!CORBA::is_nil(kept), qPrintable(lastError(m_master)));
+    RTC::RTObject_var deleted = create("ConsoleIn?instance_name=deleted");
+    QVERIFY2(!CORBA::is_nil(deleted), qPrintable(lastError(m_master)));
+    const QString context = localHost() + ".host_cxt/";
+    const auto bound = [this, &context](const QString &name) {
+        try {
+            return !CORBA::is_nil(CORBA::Object_var(resolve(context + name)));
+        } catch (const CORBA::Exception &) {
+            return false; // the server is not back yet
+        }
+    };
+    QVERIFY(bound("keeper.mgr") && bound("kept.rtc") && bound("deleted.rtc"));
+    const auto restartNameServer = [this] {
+        const quint16 port = m_live->namingPort();
+        m_live->stop(m_live->nameServer());
+        QString error;
+        QVERIFY2(m_live->startNameServer(&error, port), qPrintable(error));
+    };
+    restartNameServer();
+    QTRY_VERIFY_WITH_TIMEOUT(bound("keeper.mgr") && bound("kept.rtc") && bound("deleted.rtc"), 10000);
+    QCOMPARE(m_master->delete_component("deleted"), RTC::RTC_OK);
+    QVERIFY(!bound("deleted.rtc"));
+    // Once more: the round that brings the manager's name back brings every name it still has.
+    restartNameServer();
+    QTRY_VERIFY_WITH_TIMEOUT(bound("keeper.mgr"), 10000);
+    QVERIFY(bound("kept.rtc"));
+    QVERIFY(!bound("deleted.rtc"));
 }
 
 void TestManagerLive::commandLine()

@@ -93,6 +93,8 @@ public:
      */
     bool startTlsNameServer(const QString &caFile, const QString &keyFile, QString *error);
     quint16 namingPort() const { return m_namingPort; }
+    /// The name server's process (the latest started).
+    QProcess *nameServer() const { return m_nameServer; }
     /// `ADDRESS:PORT` of the name server, as an rtshell path element.
     QString namingServer() const;
 
