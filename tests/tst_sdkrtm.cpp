@@ -448,6 +448,8 @@ private slots:
     void serviceCallReturns();
     void managerActionListeners();
     void loggerWritesWhereConfigured();
+    void loggerDateFormat_data();
+    void loggerDateFormat();
     void loadableModulesOfAComponentProgram();
     void sdoServiceAdminOffersFactoryProviders();
     void sdoConfigurationServesTheComponentsSets();
@@ -690,6 +692,33 @@ void TestSdkRtm::loggerWritesWhereConfigured()
     config = Runtime::Properties();
     config.set("logger.log_level", "ERROR");
     RTC::Sdk::LoggerSink::instance().configure(config);
+}
+
+void TestSdkRtm::loggerDateFormat_data()
+{
+    QTest::addColumn<QString>("format");
+    QTest::addColumn<QString>("expected");
+    // 2026-11-29 20:49:07.123456 local time.
+    QTest::newRow("OpenRTM's default") << "%b %d %H:%M:%S.%Q" << "Nov 29 20:49:07.123";
+    QTest::newRow("microseconds") << "%Y-%m-%dT%H:%M:%S.%q" << "2026-11-29T20:49:07.123456";
+    QTest::newRow("no fraction") << "%H:%M:%S" << "20:49:07";
+    QTest::newRow("a percent sign before Q") << "%%Q %S" << "%Q 07";
+}
+
+void TestSdkRtm::loggerDateFormat()
+{
+    QFETCH(QString, format);
+    QFETCH(QString, expected);
+    std::tm local{};
+    local.tm_year = 2026 - 1900;
+    local.tm_mon = 10;
+    local.tm_mday = 29;
+    local.tm_hour = 20;
+    local.tm_min = 49;
+    local.tm_sec = 7;
+    local.tm_isdst = -1;
+    const auto time = std::chrono::system_clock::from_time_t(std::mktime(&local)) + std::chrono::microseconds(123456);
+    QCOMPARE(QString::fromStdString(RTC::Sdk::LoggerSink::formatDate(format.toStdString(), time)), expected);
 }
 
 // A component program is no rtmanager: it cannot load a module in a process of its own to see

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdio>
 #include <ctime>
 #include <iomanip>
 #include <sstream>
@@ -118,6 +119,7 @@ void LoggerSink::configure(const Runtime::Properties &config)
     std::lock_guard<std::mutex> lock(m_mutex);
     m_enabled = config.isYes("logger.enable", true);
     m_level = Logger::strToLevel(config.value("logger.log_level", "INFO"));
+    m_dateFormat = config.value("logger.date_format", defaultDateFormat);
     m_files.clear();
     m_stdout = false;
     m_stderr = false;
@@ -147,6 +149,36 @@ int LoggerSink::level()
     return m_enabled ? m_level : Logger::RTL_SILENT;
 }
 
+std::string LoggerSink::formatDate(const std::string &format, std::chrono::system_clock::time_point now)
+{
+    const auto sinceEpoch = now.time_since_epoch();
+    const auto micros = std::chrono::duration_cast<std::chrono::microseconds>(sinceEpoch).count() % 1000000;
+    // %Q and %q first (strftime does not know them), then the rest.
+    std::string pattern;
+    for (std::size_t i = 0; i < format.size(); ++i) {
+        if (format[i] == '%' && i + 1 < format.size() && (format[i + 1] == 'Q' || format[i + 1] == 'q')) {
+            char digits[8];
+            if (format[i + 1] == 'Q')
+                std::snprintf(digits, sizeof digits, "%03d", int(micros / 1000));
+            else
+                std::snprintf(digits, sizeof digits, "%06d", int(micros));
+            pattern += digits;
+            ++i;
+        } else if (format[i] == '%' && i + 1 < format.size()) {
+            pattern += format.substr(i, 2);
+            ++i;
+        } else {
+            pattern += format[i];
+        }
+    }
+    const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
+    std::tm local{};
+    localtime_r(&seconds, &local);
+    std::ostringstream date;
+    date << std::put_time(&local, pattern.c_str());
+    return date.str();
+}
+
 bool LoggerSink::reachesStandardError(int level)
 {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -157,16 +189,13 @@ void LoggerSink::write(int level, const std::string &name, const std::string &te
 {
     static const char *const names[] = {"SILENT", "FATAL", "ERROR", "WARNING", "INFO",
                                         "DEBUG", "TRACE", "VERBOSE", "PARANOID"};
-    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-    std::tm local{};
-    localtime_r(&now, &local);
-    std::ostringstream date;
-    date << std::put_time(&local, "%b %d %H:%M:%S");
-    std::ostringstream line;
-    line << date.str() << ' ' << names[std::clamp(level, 0, 8)] << ": " << name << ": " << text << '\n';
-    const std::string bytes = line.str();
+    const auto now = std::chrono::system_clock::now();
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_streams.write(level, name, date.str(), text);
+    const std::string date = formatDate(m_dateFormat, now);
+    std::ostringstream line;
+    line << date << ' ' << names[std::clamp(level, 0, 8)] << ": " << name << ": " << text << '\n';
+    const std::string bytes = line.str();
+    m_streams.write(level, name, date, text);
     for (const auto &file : m_files)
         file->write(bytes.data(), std::streamsize(bytes.size())).flush();
     if (m_stdout)

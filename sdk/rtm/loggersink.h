@@ -5,6 +5,7 @@
 
 #include <properties.h>
 
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -29,6 +30,8 @@ public:
     /// Whether a line of @p level reaches standard error (so that a caller need not print it there again).
     bool reachesStandardError(int level);
     void write(int level, const std::string &name, const std::string &text);
+    /// The time @p now as @p format (`logger.date_format`) writes it.
+    static std::string formatDate(const std::string &format, std::chrono::system_clock::time_point now);
     /// Receives every line written too (with its date apart), passing it to the streams added to it.
     coil::LogStreamBuffer &streams() { return m_streams; }
 
@@ -39,6 +42,9 @@ private:
     std::vector<std::unique_ptr<std::ofstream>> m_files;
     bool m_stdout = false;
     bool m_stderr = true;
+    /// `logger.date_format`: strftime's codes, `%Q` milliseconds and `%q` microseconds (OpenRTM-aist's).
+    std::string m_dateFormat = defaultDateFormat;
+    static constexpr const char *defaultDateFormat = "%b %d %H:%M:%S.%Q";
     coil::LogStreamBuffer m_streams;
 };
 
