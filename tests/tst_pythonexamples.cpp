@@ -261,6 +261,15 @@ void TestPythonExamples::configurationSetsAndListeners()
     // The set listeners: the written set with its values, each activation by name.
     QVERIFY2(printed(sets).contains(QLatin1String("activated fast\n")), qPrintable(printed(sets)));
     QVERIFY2(printed(sets).contains(QLatin1String("set changed gain=5\n")), qPrintable(printed(sets)));
+    // A removed listener is told nothing more; the others still are.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("param listener removed\n")), qPrintable(printed(sets)),
+                              runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"conf", "PyConfigSets0.rtc", "-s", "fast", "set", "gain", "41"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(sets).contains(QLatin1String("set fast gain=[41] names=['x']\n")),
+                              qPrintable(printed(sets)), runTimeoutMs);
+    const QString afterRemoval = printed(sets).section(QLatin1String("param listener removed\n"), 1);
+    QVERIFY2(!afterRemoval.contains(QLatin1String("param ")), qPrintable(afterRemoval));
+    QVERIFY2(afterRemoval.contains(QLatin1String("set changed gain=41\n")), qPrintable(afterRemoval));
     m_live.stop(sets);
 }
 

@@ -69,6 +69,9 @@ void bindConfigAdmin(py::module_ &module)
         }, py::arg("config_set") = py::none(), py::arg("config_param") = py::none());
 }
 
+/// The kinds of configuration listener a component notes (PyComponent::rememberListener()).
+enum ListenerKind { ParamListener, SetListener, SetNameListener };
+
 /// Adds the configuration methods to the component bridge (bound in pycomponent.cpp).
 void bindComponentConfiguration(py::module_ &module)
 {
@@ -77,16 +80,37 @@ void bindComponentConfiguration(py::module_ &module)
         .def_property_readonly("_configsets", &PyComponent::getConfigService, py::return_value_policy::reference_internal)
         .def("addConfigurationParamListener", [](PyComponent &self, RTC::ConfigurationParamListenerType type,
                                                  py::object listener, bool) {
-            self.addConfigurationParamListener(type, new PyConfigurationParamListener(std::move(listener)), true);
+            auto *made = new PyConfigurationParamListener(listener);
+            self.rememberListener(ParamListener, int(type), listener, made);
+            self.addConfigurationParamListener(type, made, true);
         }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
+        .def("removeConfigurationParamListener", [](PyComponent &self, RTC::ConfigurationParamListenerType type,
+                                                    py::object listener) {
+            if (void *made = self.takeListener(ParamListener, int(type), listener))
+                self.removeConfigurationParamListener(type, static_cast<PyConfigurationParamListener *>(made));
+        }, py::arg("type"), py::arg("listener"))
         .def("addConfigurationSetListener", [](PyComponent &self, RTC::ConfigurationSetListenerType type,
                                                py::object listener, bool) {
-            self.addConfigurationSetListener(type, new PyConfigurationSetListener(std::move(listener)), true);
+            auto *made = new PyConfigurationSetListener(listener);
+            self.rememberListener(SetListener, int(type), listener, made);
+            self.addConfigurationSetListener(type, made, true);
         }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
+        .def("removeConfigurationSetListener", [](PyComponent &self, RTC::ConfigurationSetListenerType type,
+                                                  py::object listener) {
+            if (void *made = self.takeListener(SetListener, int(type), listener))
+                self.removeConfigurationSetListener(type, static_cast<PyConfigurationSetListener *>(made));
+        }, py::arg("type"), py::arg("listener"))
         .def("addConfigurationSetNameListener", [](PyComponent &self, RTC::ConfigurationSetNameListenerType type,
                                                    py::object listener, bool) {
-            self.addConfigurationSetNameListener(type, new PyConfigurationSetNameListener(std::move(listener)), true);
-        }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true);
+            auto *made = new PyConfigurationSetNameListener(listener);
+            self.rememberListener(SetNameListener, int(type), listener, made);
+            self.addConfigurationSetNameListener(type, made, true);
+        }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
+        .def("removeConfigurationSetNameListener", [](PyComponent &self, RTC::ConfigurationSetNameListenerType type,
+                                                      py::object listener) {
+            if (void *made = self.takeListener(SetNameListener, int(type), listener))
+                self.removeConfigurationSetNameListener(type, static_cast<PyConfigurationSetNameListener *>(made));
+        }, py::arg("type"), py::arg("listener"));
 }
 
 } // namespace

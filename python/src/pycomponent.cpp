@@ -9,6 +9,8 @@
 
 #include <rtm/SystemLogger.h>
 
+#include <algorithm>
+
 namespace py = pybind11;
 
 namespace RtPython {
@@ -61,6 +63,23 @@ PyComponent::~PyComponent()
         m_self.attr("_rtc") = py::none();
     m_ports.clear();
     m_self = py::object();
+}
+
+void PyComponent::rememberListener(int kind, int type, pybind11::handle listener, void *made)
+{
+    m_madeListeners.push_back({kind, type, listener.ptr(), made});
+}
+
+void *PyComponent::takeListener(int kind, int type, pybind11::handle listener)
+{
+    auto it = std::find_if(m_madeListeners.begin(), m_madeListeners.end(), [&](const MadeListener &m) {
+        return m.kind == kind && m.type == type && m.listener == listener.ptr();
+    });
+    if (it == m_madeListeners.end())
+        return nullptr;
+    void *made = it->made;
+    m_madeListeners.erase(it);
+    return made;
 }
 
 bool PyComponent::addPythonInPort(const std::string &name, py::object port)

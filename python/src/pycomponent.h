@@ -46,6 +46,11 @@ public:
     bool bindPythonParameter(const std::string &name, pybind11::object variable, const std::string &defaultValue,
                              pybind11::object trans);
 
+    /// Notes that @p made (owned by the configuration) calls Python listener @p listener for @p kind and @p type.
+    void rememberListener(int kind, int type, pybind11::handle listener, void *made);
+    /// What rememberListener() noted for @p listener, forgotten now; null when nothing was.
+    void *takeListener(int kind, int type, pybind11::handle listener);
+
     RTC::ReturnCode_t onInitialize() override;
     RTC::ReturnCode_t onFinalize() override;
     RTC::ReturnCode_t onStartup(RTC::UniqueId ec_id) override;
@@ -75,6 +80,16 @@ private:
     /// RTC_OK, so the execution context skips them without taking the GIL.
     std::set<std::string> m_ownCallbacks;
     std::string m_createError; ///< why the Python object could not be made (onInitialize then fails)
+    /// The listeners made for Python ones, so that a remove…Listener() finds them; the made
+    /// listener holds a reference to the Python object, which keeps the pointer valid.
+    struct MadeListener
+    {
+        int kind;
+        int type;
+        PyObject *listener;
+        void *made;
+    };
+    std::vector<MadeListener> m_madeListeners;
 };
 
 } // namespace RtPython

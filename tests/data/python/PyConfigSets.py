@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # A Python component with two configuration sets and every kind of configuration listener, which
 # activates itself through its own execution context as OpenRTM-aist-Python's examples do. It
-# prints the active set and its variables whenever they change, and what the listeners are told.
+# prints the active set and its variables whenever they change, and what the listeners are told;
+# with the set "fast" active it removes its parameter listener.
 
 import sys
 
@@ -46,8 +47,9 @@ class PyConfigSets(OpenRTM_aist.DataFlowComponentBase):
     def onInitialize(self):
         self.bindParameter("gain", self._gain, "2")
         self.bindParameter("names", self._names, "a,b")
+        self._param_printer = ParamPrinter()
         self.addConfigurationParamListener(OpenRTM_aist.ConfigurationParamListenerType.ON_UPDATE_CONFIG_PARAM,
-                                           ParamPrinter())
+                                           self._param_printer)
         self.addConfigurationSetListener(OpenRTM_aist.ConfigurationSetListenerType.ON_SET_CONFIG_SET, SetPrinter())
         self.addConfigurationSetNameListener(OpenRTM_aist.ConfigurationSetNameListenerType.ON_ACTIVATE_CONFIG_SET,
                                              ActivationPrinter())
@@ -58,6 +60,12 @@ class PyConfigSets(OpenRTM_aist.DataFlowComponentBase):
         if current != self._printed:
             print(current)
             self._printed = current
+        # Once the "fast" set is active, its parameters change without being told.
+        if self._param_printer and self._configsets.getActiveId() == "fast":
+            self.removeConfigurationParamListener(OpenRTM_aist.ConfigurationParamListenerType.ON_UPDATE_CONFIG_PARAM,
+                                                  self._param_printer)
+            self._param_printer = None
+            print("param listener removed")
         return RTC.RTC_OK
 
 
