@@ -640,8 +640,7 @@ void Manager::keepNamesBound()
             if (names.empty())
                 break;
             if (!everyRound
-                && m_naming->lookUp(server, names.front().first, names.front().second)
-                       != NamingRegistrar::Lookup::Missing)
+                && m_naming->lookUp(server, names.front().first) != NamingRegistrar::Lookup::Missing)
                 continue;
             std::vector<std::string> errors;
             for (const auto &[path, object] : names)

@@ -104,13 +104,12 @@ bool NamingRegistrar::bindOn(const std::string &server, const std::string &path,
     }
 }
 
-NamingRegistrar::Lookup NamingRegistrar::lookUp(const std::string &server, const std::string &path,
-                                                CORBA::Object_ptr object)
+NamingRegistrar::Lookup NamingRegistrar::lookUp(const std::string &server, const std::string &path)
 {
     try {
         CosNaming::NamingContext_var root = rootContext(server);
         CORBA::Object_var bound = root->resolve(toName(path));
-        return bound->_is_equivalent(object) ? Lookup::Bound : Lookup::Missing;
+        return Lookup::Bound;
     } catch (const CosNaming::NamingContext::NotFound &) {
         return Lookup::Missing;
     } catch (const CORBA::UserException &) {

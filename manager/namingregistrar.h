@@ -30,8 +30,9 @@ public:
                 std::vector<std::string> *errors);
 
     enum class Lookup { Bound, Missing, Unreachable };
-    /// Whether @p server has @p object at @p path (Missing: not bound there, or bound to another object).
-    Lookup lookUp(const std::string &server, const std::string &path, CORBA::Object_ptr object);
+    /// Whether @p server has a name @p path (bound to any object: one another process bound there
+    /// under the same name is not taken back).
+    Lookup lookUp(const std::string &server, const std::string &path);
     const std::vector<std::string> &servers() const { return m_servers; }
     /// Unbinds @p path everywhere (missing names are fine).
     void unbind(const std::string &path);
