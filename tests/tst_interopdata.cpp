@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // rtctl print and inject against OpenRTM-aist 2.x's own example components (SeqOut, ConsoleOut):
 // the samples its OutPorts send are decoded, values written into its InPort arrive as written,
-// and rtctl's connectors are gone afterwards. Skipped without an OpenRTM-aist prefix.
+// and rtctl's connectors are gone afterwards; rtmanager's rtc.conf connects to them by naming
+// address. Skipped without an OpenRTM-aist prefix.
 
 #include "livesystem.h"
 #include "rtctlrunner.h"
@@ -26,6 +27,7 @@ private slots:
     void initTestCase();
     void printsOpenRtmSamples();
     void injectsIntoOpenRtmInPort();
+    void rtmanagerPreconnectsToOpenRtm();
 
 private:
     RtctlResult rtctl(const QStringList &arguments) { return runRtctlAt(m_context, arguments); }
@@ -86,6 +88,27 @@ void TestInteropData::injectsIntoOpenRtmInPort()
                               output.contains("Received: 4242") && output.contains("Received: -7")),
                              10000);
     QVERIFY(!rtctl({"cat", "-l", "ConsoleOut0.rtc:in"}).out.contains("Connected to"));
+}
+
+void TestInteropData::rtmanagerPreconnectsToOpenRtm()
+{
+    // rtc.conf's preconnect naming OpenRTM-aist's ConsoleOut by its naming address: rtmanager's
+    // ConsoleIn, created and activated by rtc.conf too, sends it its count from 1.
+    const QString entry
+        = QStringLiteral("ConsoleIn0.out?port=rtcname://%1/openrtm.host_cxt/ConsoleOut0.in").arg(m_live.namingServer());
+    QString error;
+    QProcess *manager = m_live.startHostManager(
+        QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), QStringLiteral("ours"),
+        {"manager.components.precreate=ConsoleIn", "manager.components.preconnect=" + entry,
+         "manager.components.preactivation=ConsoleIn0"},
+        &error);
+    QVERIFY2(manager, qPrintable(error));
+    QByteArray output;
+    QTRY_VERIFY2_WITH_TIMEOUT((output += m_consoleOut->readAllStandardOutput(), output.contains("Received: 3\n")),
+                              output.right(1000).constData(), 10000);
+    const RtctlResult connected = rtctl({"cat", "-l", "ConsoleOut0.rtc:in"});
+    QVERIFY2(connected.out.contains("Connected to"), qPrintable(connected.out));
+    m_live.stop(manager);
 }
 
 QTEST_GUILESS_MAIN(TestInteropData)
