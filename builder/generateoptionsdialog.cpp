@@ -18,7 +18,7 @@ GenerateOptionsDialog::GenerateOptionsDialog(const GenerateOptions &current, QWi
     : QDialog(parent)
     , m_folder(new QLineEdit(QDir::toNativeSeparators(current.outputFolder), this))
     , m_backups(new QSpinBox(this))
-    , m_testComponent(new QCheckBox(tr("Also generate a &test component (C++)"), this))
+    , m_testComponent(new QCheckBox(tr("Also generate a &test component"), this))
 {
     setWindowTitle(tr("Generate"));
     auto *form = new QFormLayout(this);
@@ -38,9 +38,9 @@ GenerateOptionsDialog::GenerateOptionsDialog(const GenerateOptions &current, QWi
                              "deleted."));
     form->addRow(tr("&Backups kept per file:"), m_backups);
     m_testComponent->setChecked(current.testComponent);
-    m_testComponent->setToolTip(tr("Writes test/: a C++ project of the component <N>Test, whose "
-                                   "ports mirror this component's, to exercise it by connecting "
-                                   "the two."));
+    m_testComponent->setToolTip(tr("Writes test/: a project of the component <N>Test (in C++, or in "
+                                   "Python when Python is the only language), whose ports mirror this "
+                                   "component's, to exercise it by connecting the two."));
     form->addRow(QString(), m_testComponent);
     auto *box = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
     QPushButton *ok = box->addButton(tr("&Generate"), QDialogButtonBox::AcceptRole);

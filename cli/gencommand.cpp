@@ -128,8 +128,9 @@ QString GenCommand::usage() const
         "  --overwrite       replace existing files that differ\n"
         "  --templates DIR   user template folder overriding the built-in templates\n"
         "  --backups N       backups kept per file (default 3)\n"
-        "  --test-component  with --lang cpp, also write test/: the project of <N>Test, whose\n"
-        "                    ports mirror the component's, to exercise it by connecting the two\n\n"
+        "  --test-component  also write test/: the project of <N>Test (C++ with --lang cpp, else\n"
+        "                    Python with --lang python), whose ports mirror the component's, to\n"
+        "                    exercise it by connecting the two\n\n"
         "Merged and overwritten files are first renamed to <file>YYYYMMDDHHMMSS.\n"
         "Exit codes: 0 generated, 1 problems (nothing written), 2 usage error.\n");
 }

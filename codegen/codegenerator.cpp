@@ -67,14 +67,18 @@ std::optional<QList<GeneratedFile>> CodeGenerator::generate(const QList<TargetLa
             renderSet(QStringLiteral("common"), *context, QString(), &files, &problems);
         renderSet(targetLanguageKey(languages.at(i)), *context, QString(), &files, &problems);
     }
-    if (m_testComponent && languages.contains(TargetLanguage::Cpp) && !hasErrors(problems)) {
-        addTestComponent(languageNames, &files, &problems);
-    } else if (m_testComponent && !languages.contains(TargetLanguage::Cpp)) {
-        // Asking for it without C++ is no reason to refuse the project, but the user should
-        // learn why test/ stayed empty.
+    // The test component is written in C++ when the project has C++, else in Python.
+    const std::optional<TargetLanguage> testLanguage = languages.contains(TargetLanguage::Cpp)
+        ? std::optional(TargetLanguage::Cpp)
+        : languages.contains(TargetLanguage::Python) ? std::optional(TargetLanguage::Python) : std::nullopt;
+    if (m_testComponent && testLanguage && !hasErrors(problems)) {
+        addTestComponent(*testLanguage, languageNames, &files, &problems);
+    } else if (m_testComponent && !testLanguage) {
+        // Asking for it without C++ or Python is no reason to refuse the project, but the user
+        // should learn why test/ stayed empty.
         problems << Diagnostic::warning(
             QString(), 0, 0,
-            QStringLiteral("the test component is generated for C++ only; no test/ written"));
+            QStringLiteral("the test component is generated in C++ or Python only; no test/ written"));
     }
     if (languages.isEmpty())
         problems << generationError(QString(), QStringLiteral("no target language chosen"));
@@ -113,19 +117,18 @@ RtcProfile CodeGenerator::testComponentProfile(const RtcProfile &profile)
     return test;
 }
 
-void CodeGenerator::addTestComponent(const QStringList &languageNames, QList<GeneratedFile> *files,
-                                     Diagnostics *diagnostics) const
+void CodeGenerator::addTestComponent(TargetLanguage language, const QStringList &languageNames,
+                                     QList<GeneratedFile> *files, Diagnostics *diagnostics) const
 {
     // The test component is a project of its own under test/, with its own copies of the IDL,
     // so that it configures and builds without the component's tree.
     const RtcProfile test = testComponentProfile(m_profile);
     const QString prefix = QStringLiteral("test/");
-    std::optional<QVariantMap> context
-        = ContextBuilder(test, m_idl).build(TargetLanguage::Cpp, diagnostics);
+    std::optional<QVariantMap> context = ContextBuilder(test, m_idl).build(language, diagnostics);
     if (!context)
         return;
     context->insert(QStringLiteral("languages"), languageNames);
-    renderSet(QStringLiteral("cpp"), *context, prefix, files, diagnostics);
+    renderSet(targetLanguageKey(language), *context, prefix, files, diagnostics);
     addIdlCopies(prefix, files, diagnostics);
 }
 

@@ -69,7 +69,8 @@ private:
                    QList<GeneratedFile> *files, Profile::Diagnostics *diagnostics) const;
     bool addIdlCopies(const QString &pathPrefix, QList<GeneratedFile> *files,
                       Profile::Diagnostics *diagnostics) const;
-    void addTestComponent(const QStringList &languageNames, QList<GeneratedFile> *files,
+    /// Writes the test component (testComponentProfile()) in @p language under test/.
+    void addTestComponent(TargetLanguage language, const QStringList &languageNames, QList<GeneratedFile> *files,
                           Profile::Diagnostics *diagnostics) const;
 
     const Profile::RtcProfile &m_profile;

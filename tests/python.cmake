@@ -45,7 +45,10 @@ endif()
 if(TARGET rtpymodules)
     rtstudio_add_test(tst_builderpython SOURCES tst_builderpython.cpp
         LIBS rtstudio_app rtstudio_livetest rtstudio_rtctlrunner rtcorba_stubs)
-    target_compile_definitions(tst_builderpython PRIVATE RTMANAGER_PATH="$<TARGET_FILE:rtmanager>")
+    target_compile_definitions(tst_builderpython PRIVATE RTMANAGER_PATH="$<TARGET_FILE:rtmanager>"
+        RTSTUDIO_PYTHON_PATH="${RTSTUDIO_PYTHON_STAGE}"
+        RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
+        RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
     add_dependencies(tst_builderpython rtmanager rtctl rtpython rtpymodules rtsdk)
     set_tests_properties(tst_builderpython PROPERTIES LABELS python TIMEOUT 600)
 endif()

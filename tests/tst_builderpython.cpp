@@ -9,6 +9,7 @@
 // offers crosses a pair of Python ports in the manager.
 #include "buildcontroller.h"
 #include "hostrtctl.h"
+#include "pythonscripts.h"
 #include "pythonsanitizer.h"
 #include "runcontroller.h"
 #include "typecatalog.h"
@@ -50,6 +51,17 @@ const char userCode[] = R"(    def onExecute(self, ec_id):
 
 const char generatedExecute[] = "    def onExecute(self, ec_id):\n        return RTC.RTC_OK\n";
 
+/// The user's code in the test component's onExecute: counts up on its OutPort `in` and prints what
+/// comes back on its InPort `out`.
+const char testCode[] = R"(    def onExecute(self, ec_id):
+        self._count = getattr(self, "_count", 0) + 1
+        self._d_in.data = self._count
+        self._inOut.write()
+        while self._outIn.isNew():
+            print("test received %d" % self._outIn.read().data)
+        return RTC.RTC_OK
+)";
+
 } // namespace
 
 class TestBuilderPython : public QObject
@@ -64,10 +76,11 @@ private slots:
     void serviceProjectBuildsAndCallsReturn();
     void everyBuilderDataTypeCrossesPorts_data();
     void everyBuilderDataTypeCrossesPorts();
+    void testComponentExercisesTheComponent();
 
 private:
     /// Generates PyRelay's Python project into a new folder below the test's; empty on failure.
-    QString generate(const QString &name);
+    QString generate(const QString &name, const QStringList &options = {});
     /// Replaces @p from by @p to in the project's module (or in its file @p file).
     static bool edit(const QString &project, const QByteArray &from, const QByteArray &to,
                      const QString &file = componentName + QStringLiteral(".py"));
@@ -107,11 +120,12 @@ void TestBuilderPython::initTestCase()
     QVERIFY2(m_manager, qPrintable(error));
 }
 
-QString TestBuilderPython::generate(const QString &name)
+QString TestBuilderPython::generate(const QString &name, const QStringList &options)
 {
     const QString project = m_work.filePath(name);
     const RtctlResult generated = runRtctl(
-        {"gen", RTSTUDIO_TEST_DATA_DIR "/builderpython/PyRelay.xml", "--lang", "python", "-o", project});
+        QStringList{"gen", RTSTUDIO_TEST_DATA_DIR "/builderpython/PyRelay.xml", "--lang", "python", "-o", project}
+        + options);
     if (generated.code != 0) {
         qWarning().noquote() << generated.out << generated.err;
         return {};
@@ -356,6 +370,41 @@ void TestBuilderPython::everyBuilderDataTypeCrossesPorts()
     }
     QVERIFY2(said(QStringLiteral("crossed the ports")),
              qPrintable(m_printed.of(m_manager).split(QLatin1Char('\n')).filter(type + QLatin1Char(':')).join(QLatin1Char('\n'))));
+}
+
+void TestBuilderPython::testComponentExercisesTheComponent()
+{
+    // The project's test component, in Python as the project is: the user writes its onExecute,
+    // runs it beside the component and connects the two, port to mirrored port.
+    const QString project = generate(QStringLiteral("withtest"), {"--test-component"});
+    QVERIFY(!project.isEmpty());
+    QVERIFY(edit(project, generatedExecute, userCode));
+    QVERIFY(edit(project, generatedExecute, testCode, QStringLiteral("test/PyRelayTest.py")));
+    // Both as programs, under a naming context of their own (the manager holds a PyRelay0 already).
+    const QString context = QStringLiteral("pytestcomponent");
+    const LiveTest::HostRtctl host(m_live, context);
+    const LiveTest::PythonScripts scripts(m_live, host, context, QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
+                                          QStringLiteral(RTSTUDIO_PYTHON_PATH), QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
+                                          m_work.path());
+    QProcess *component = scripts.start(QDir(project).filePath(QStringLiteral("PyRelay.py")), {"PyRelay0.rtc"}, runTimeoutMs);
+    QVERIFY(component);
+    QProcess *test = scripts.start(QDir(project).filePath(QStringLiteral("test/PyRelayTest.py")), {"PyRelayTest0.rtc"},
+                                   runTimeoutMs);
+    QVERIFY(test);
+    QVERIFY(host.succeeds({"con", "PyRelayTest0.rtc:in", "PyRelay0.rtc:in"}));
+    QVERIFY(host.succeeds({"con", "PyRelay0.rtc:out", "PyRelayTest0.rtc:out"}));
+    QVERIFY(host.succeeds({"act", "PyRelay0.rtc", "PyRelayTest0.rtc"}));
+    // What the test component sent comes back scaled by the component's gain (2).
+    const QRegularExpression received(QStringLiteral("test received (\\d+)\n"));
+    QTRY_VERIFY2_WITH_TIMEOUT(m_printed.of(test).count(received) >= 3, qPrintable(m_printed.of(test).right(2000)),
+                              runTimeoutMs);
+    for (const QRegularExpressionMatch &match : received.globalMatch(m_printed.of(test))) {
+        const qint64 value = match.captured(1).toLongLong();
+        QVERIFY2(value > 0 && value % 2 == 0, qPrintable(match.captured(0)));
+    }
+    QVERIFY(host.succeeds({"deact", "PyRelayTest0.rtc", "PyRelay0.rtc"}));
+    m_live.stop(test);
+    m_live.stop(component);
 }
 
 QTEST_MAIN(TestBuilderPython)

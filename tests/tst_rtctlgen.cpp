@@ -4,6 +4,7 @@
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -17,7 +18,7 @@ private slots:
     void usageErrors();
     void generatesProject();
     void testComponentWritesTestTree();
-    void testComponentNeedsCpp();
+    void testComponentInPythonOrCpp();
     void keepMergeOverwrite();
     void refusesBadNameWritingNothing();
     void missingInterfaceTypeIsAProblem();
@@ -114,15 +115,31 @@ void TestRtctlGen::testComponentWritesTestTree()
     QVERIFY(QFile::exists(QDir(dir.path()).filePath("src/SampleComp.cpp")));
 }
 
-void TestRtctlGen::testComponentNeedsCpp()
+void TestRtctlGen::testComponentInPythonOrCpp()
 {
-    QTemporaryDir dir;
-    const Result result = rtctl({"gen", fixture(), "--lang", "python", "-o", dir.path(),
-                                 "--idl-dir", idlDir(), "--test-component"});
+    // A Python-only project gets its test component in Python: the module with the ports turned round.
+    QTemporaryDir python;
+    Result result = rtctl({"gen", fixture(), "--lang", "python", "-o", python.path(), "--idl-dir", idlDir(),
+                           "--test-component"});
+    QVERIFY2(result.code == 0, qPrintable(result.err));
+    QVERIFY(QFile::exists(QDir(python.path()).filePath("SampleComp.py")));
+    const QByteArray test = readAll(QDir(python.path()).filePath("test/SampleCompTest.py"));
+    QVERIFY2(test.contains("def SampleCompTestInit(manager):"), test.constData());
+    QVERIFY(QFileInfo(QDir(python.path()).filePath("test/idlcompile.sh")).isExecutable());
+    const QByteArray component = readAll(QDir(python.path()).filePath("SampleComp.py"));
+    for (const QRegularExpressionMatch &port :
+         QRegularExpression(QStringLiteral("OpenRTM_aist\\.(In|Out)Port\\(\"(\\w+)\"")).globalMatch(QString::fromUtf8(component))) {
+        const QString mirrored = QStringLiteral("OpenRTM_aist.%1Port(\"%2\"")
+                                     .arg(port.captured(1) == QLatin1String("In") ? QStringLiteral("Out") : QStringLiteral("In"),
+                                          port.captured(2));
+        QVERIFY2(test.contains(mirrored.toUtf8()), qPrintable(mirrored));
+    }
+    // Java alone gets none, and says why.
+    QTemporaryDir java;
+    result = rtctl({"gen", fixture(), "--lang", "java", "-o", java.path(), "--idl-dir", idlDir(), "--test-component"});
     QCOMPARE(result.code, 0);
-    QVERIFY2(result.err.contains(QStringLiteral("C++ only")), qPrintable(result.err));
-    QVERIFY(QFile::exists(QDir(dir.path()).filePath("SampleComp.py")));
-    QVERIFY(!QFile::exists(QDir(dir.path()).filePath("test")));
+    QVERIFY2(result.err.contains(QStringLiteral("C++ or Python only")), qPrintable(result.err));
+    QVERIFY(!QFile::exists(QDir(java.path()).filePath("test")));
 }
 
 void TestRtctlGen::keepMergeOverwrite()

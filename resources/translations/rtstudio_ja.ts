@@ -1103,8 +1103,8 @@
     <name>Builder::GenerateOptionsDialog</name>
     <message>
         <location filename="../../builder/generateoptionsdialog.cpp" line="+21"/>
-        <source>Also generate a &amp;test component (C++)</source>
-        <translation>テストコンポーネントも生成する (C++)(&amp;T)</translation>
+        <source>Also generate a &amp;test component</source>
+        <translation>テストコンポーネントも生成する(&amp;T)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1133,8 +1133,8 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>Writes test/: a C++ project of the component &lt;N&gt;Test, whose ports mirror this component&apos;s, to exercise it by connecting the two.</source>
-        <translation>test/ に、このコンポーネントと対になるポートを持つコンポーネント &lt;N&gt;Test の C++ プロジェクトを書き出します。両者を接続して動作を確認できます。</translation>
+        <source>Writes test/: a project of the component &lt;N&gt;Test (in C++, or in Python when Python is the only language), whose ports mirror this component&apos;s, to exercise it by connecting the two.</source>
+        <translation>test/ に、このコンポーネントと対になるポートを持つコンポーネント &lt;N&gt;Test のプロジェクト（C++。言語が Python だけのときは Python）を書き出します。両者を接続して動作を確認できます。</translation>
     </message>
     <message>
         <location line="+5"/>
