@@ -72,45 +72,46 @@ void bindConfigAdmin(py::module_ &module)
 /// The kinds of configuration listener a component notes (PyComponent::rememberListener()).
 enum ListenerKind { ParamListener, SetListener, SetNameListener };
 
+/**
+ * Binds @p addName / @p removeName of one kind of configuration listener: adding wraps the Python
+ * listener in a @p Made the component owns and notes which Python object it calls; removing finds
+ * and removes that one.
+ */
+template <typename Made, typename Type, typename Listener>
+void bindListenerKind(ComponentClass &component, ListenerKind kind, const char *addName, const char *removeName,
+                      void (RTC::RTObject_impl::*add)(Type, Listener *, bool),
+                      void (RTC::RTObject_impl::*remove)(Type, Listener *))
+{
+    component
+        .def(addName, [kind, add](PyComponent &self, Type type, py::object listener, bool) {
+            auto *made = new Made(listener);
+            self.rememberListener(kind, int(type), listener, made);
+            (self.*add)(type, made, true);
+        }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
+        .def(removeName, [kind, remove](PyComponent &self, Type type, py::object listener) {
+            if (void *made = self.takeListener(kind, int(type), listener))
+                (self.*remove)(type, static_cast<Made *>(made));
+        }, py::arg("type"), py::arg("listener"));
+}
+
 /// Adds the configuration methods to the component bridge (bound in pycomponent.cpp).
 void bindComponentConfiguration(py::module_ &module)
 {
     ComponentClass component = py::reinterpret_borrow<ComponentClass>(module.attr("Component"));
-    component
-        .def_property_readonly("_configsets", &PyComponent::getConfigService, py::return_value_policy::reference_internal)
-        .def("addConfigurationParamListener", [](PyComponent &self, RTC::ConfigurationParamListenerType type,
-                                                 py::object listener, bool) {
-            auto *made = new PyConfigurationParamListener(listener);
-            self.rememberListener(ParamListener, int(type), listener, made);
-            self.addConfigurationParamListener(type, made, true);
-        }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
-        .def("removeConfigurationParamListener", [](PyComponent &self, RTC::ConfigurationParamListenerType type,
-                                                    py::object listener) {
-            if (void *made = self.takeListener(ParamListener, int(type), listener))
-                self.removeConfigurationParamListener(type, static_cast<PyConfigurationParamListener *>(made));
-        }, py::arg("type"), py::arg("listener"))
-        .def("addConfigurationSetListener", [](PyComponent &self, RTC::ConfigurationSetListenerType type,
-                                               py::object listener, bool) {
-            auto *made = new PyConfigurationSetListener(listener);
-            self.rememberListener(SetListener, int(type), listener, made);
-            self.addConfigurationSetListener(type, made, true);
-        }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
-        .def("removeConfigurationSetListener", [](PyComponent &self, RTC::ConfigurationSetListenerType type,
-                                                  py::object listener) {
-            if (void *made = self.takeListener(SetListener, int(type), listener))
-                self.removeConfigurationSetListener(type, static_cast<PyConfigurationSetListener *>(made));
-        }, py::arg("type"), py::arg("listener"))
-        .def("addConfigurationSetNameListener", [](PyComponent &self, RTC::ConfigurationSetNameListenerType type,
-                                                   py::object listener, bool) {
-            auto *made = new PyConfigurationSetNameListener(listener);
-            self.rememberListener(SetNameListener, int(type), listener, made);
-            self.addConfigurationSetNameListener(type, made, true);
-        }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
-        .def("removeConfigurationSetNameListener", [](PyComponent &self, RTC::ConfigurationSetNameListenerType type,
-                                                      py::object listener) {
-            if (void *made = self.takeListener(SetNameListener, int(type), listener))
-                self.removeConfigurationSetNameListener(type, static_cast<PyConfigurationSetNameListener *>(made));
-        }, py::arg("type"), py::arg("listener"));
+    component.def_property_readonly("_configsets", &PyComponent::getConfigService,
+                                    py::return_value_policy::reference_internal);
+    bindListenerKind<PyConfigurationParamListener>(component, ParamListener, "addConfigurationParamListener",
+                                                   "removeConfigurationParamListener",
+                                                   &RTC::RTObject_impl::addConfigurationParamListener,
+                                                   &RTC::RTObject_impl::removeConfigurationParamListener);
+    bindListenerKind<PyConfigurationSetListener>(component, SetListener, "addConfigurationSetListener",
+                                                 "removeConfigurationSetListener",
+                                                 &RTC::RTObject_impl::addConfigurationSetListener,
+                                                 &RTC::RTObject_impl::removeConfigurationSetListener);
+    bindListenerKind<PyConfigurationSetNameListener>(component, SetNameListener, "addConfigurationSetNameListener",
+                                                     "removeConfigurationSetNameListener",
+                                                     &RTC::RTObject_impl::addConfigurationSetNameListener,
+                                                     &RTC::RTObject_impl::removeConfigurationSetNameListener);
 }
 
 } // namespace
