@@ -181,6 +181,9 @@ void TestInteropPython::servicesCallBothWays()
     // The echo's answer is printed with the next command.
     consumer->write("get_value\n");
     QVERIFY(waitForPrinted(consumer, "echo() finished: python says hello"));
+    // Its execution waits for the next command; OpenRTM-aist's deactivation waits for the execution
+    // (a second at most, then it answers RTC_ERROR): the end of its input lets it return.
+    consumer->closeWriteChannel();
     QVERIFY(rtctlSucceeds({"deact", "MyServiceConsumer0.rtc", "PyMyService0.rtc", "MyServiceProvider0.rtc"}));
 }
 
