@@ -316,8 +316,13 @@ void TestPython::serializerReadsAnotherDataType()
     properties.append(std::pair<QString, QString>("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble"));
     QVERIFY(m_host.connectThroughOrb(m_orb, QStringLiteral("PyLongSource0.rtc:out"), QStringLiteral("PyDoubleSink0.rtc:in"), properties));
     QVERIFY(rtctlSucceeds({"act", "PyDoubleSink0.rtc", "PyLongSource0.rtc"}));
-    QTRY_VERIFY_WITH_TIMEOUT(printed(pair).contains(QLatin1String("sink got 0.75\n")), runTimeoutMs);
-    QVERIFY2(printed(pair).contains(QLatin1String("listener got 0.75\n")), qPrintable(printed(pair)));
+    // The listener hears every sample; the sink's buffer may have overwritten the first ones before its
+    // first execution (a busy machine), so any quarter that is not a whole number shows the serializer.
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(pair).contains(QLatin1String("listener got 0.75\n")), qPrintable(printed(pair)),
+                              runTimeoutMs);
+    const QRegularExpression quarter(QStringLiteral("^sink got \\d+\\.(25|5|75)$"),
+                                     QRegularExpression::MultilineOption);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(pair).contains(quarter), qPrintable(printed(pair)), runTimeoutMs);
     QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSink0.rtc"}));
     m_live.stop(pair);
 }
