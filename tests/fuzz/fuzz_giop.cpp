@@ -20,6 +20,9 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -159,6 +162,49 @@ void appendULong(std::vector<uint8_t> &out, uint32_t value, bool little)
         out.push_back(uint8_t(value >> (little ? 8 * i : 8 * (3 - i))));
 }
 
+// Whether @p fd is ready for @p events (or was closed) within @p timeoutMs. libFuzzer's timer signal
+// (-timeout) interrupts poll() and connect() without restarting them: the wait goes on for the time
+// that is left.
+bool waitFor(int fd, short events, int timeoutMs)
+{
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
+    for (;;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline
+                                                                                - std::chrono::steady_clock::now());
+        pollfd ready {fd, events, 0};
+        const int result = poll(&ready, 1, int(std::max<long>(0, long(left.count()))));
+        if (result > 0)
+            return true;
+        if (result == 0 || errno != EINTR)
+            return false;
+    }
+}
+
+bool waitReadable(int fd, int timeoutMs)
+{
+    return waitFor(fd, POLLIN, timeoutMs);
+}
+
+// Connected (true), or the connection failed with errno set. An interrupted connect() goes on in
+// the background; its outcome is the socket's error once it is writable.
+bool connectTo(int fd, const sockaddr_in &address)
+{
+    if (connect(fd, reinterpret_cast<const sockaddr *>(&address), sizeof address) == 0)
+        return true;
+    if (errno != EINTR)
+        return false;
+    if (!waitFor(fd, POLLOUT, ReplyTimeoutMs)) {
+        errno = ETIMEDOUT;
+        return false;
+    }
+    int error = 0;
+    socklen_t length = sizeof error;
+    if (getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &length) != 0)
+        return false;
+    errno = error;
+    return error == 0;
+}
+
 int connectToOrb()
 {
     const int fd = socket(AF_INET, SOCK_STREAM, 0);
@@ -166,7 +212,7 @@ int connectToOrb()
     address.sin_family = AF_INET;
     address.sin_port = htons(uint16_t(s_port));
     address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (fd < 0 || connect(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) != 0) {
+    if (fd < 0 || !connectTo(fd, address)) {
         std::fprintf(stderr, "fuzz_giop: cannot connect to the ORB: %s\n", std::strerror(errno));
         std::abort();
     }
@@ -178,6 +224,8 @@ void sendAll(int fd, const std::vector<uint8_t> &message)
     size_t sent = 0;
     while (sent < message.size()) {
         const ssize_t n = send(fd, message.data() + sent, message.size() - sent, MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR)
+            continue;
         if (n <= 0)
             return; // the ORB closed the connection: its answer to this input
         sent += size_t(n);
@@ -231,8 +279,7 @@ bool readBytes(int fd, uint8_t *buffer, size_t wanted)
 {
     size_t have = 0;
     while (have < wanted) {
-        pollfd ready {fd, POLLIN, 0};
-        if (poll(&ready, 1, ReplyTimeoutMs) <= 0) {
+        if (!waitReadable(fd, ReplyTimeoutMs)) {
             if (fd == s_connection)
                 checkConnection();
             std::fprintf(stderr, "fuzz_giop: no reply and no close within %d ms; the latest requests:\n",
@@ -243,6 +290,8 @@ bool readBytes(int fd, uint8_t *buffer, size_t wanted)
             std::abort();
         }
         const ssize_t n = recv(fd, buffer + have, wanted - have, 0);
+        if (n < 0 && errno == EINTR)
+            continue;
         if (n <= 0)
             return false;
         have += size_t(n);
@@ -293,9 +342,8 @@ void sendRaw(const uint8_t *data, size_t size)
     const int fd = connectToOrb();
     sendAll(fd, std::vector<uint8_t>(data, data + size));
     shutdown(fd, SHUT_WR);
-    pollfd ready {fd, POLLIN, 0};
     char drain[4096];
-    while (poll(&ready, 1, RawAnswerMs) > 0 && recv(fd, drain, sizeof drain, 0) > 0) {
+    while (waitReadable(fd, RawAnswerMs) && recv(fd, drain, sizeof drain, 0) > 0) {
     }
     close(fd);
 }
@@ -396,6 +444,10 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
              // What the ORB says of each malformed message would drown the fuzzer's own output.
              {"corba.args", "-ORBtraceLevel 0"}})
         config.set(key, value);
+    // FUZZ_GIOP_ORB_ARGS replaces them, to follow a hang in omniORB's own trace, e.g.
+    // "-ORBtraceLevel 25 -ORBtraceThreadId 1 -ORBtraceTime 1 -ORBtraceFile giop.trace".
+    if (const char *orbArguments = std::getenv("FUZZ_GIOP_ORB_ARGS"))
+        config.set("corba.args", orbArguments);
     // Never destroyed: it serves until the process ends, as rtmanager's does.
     static Runtime::Manager &manager = *new Runtime::Manager(config);
     std::string error;
