@@ -44,10 +44,6 @@ RTC::ReturnCode_t DataPortBase::admit(const RTC::ConnectorProfile &profile)
     return PortBase::admit(profile);
 }
 
-namespace {
-
-/// A connection's marshaling type for one side (`inport`, `outport`): the side's own, else the
-/// connection's, else plain `cdr`.
 std::string marshalingType(const Properties &p, const std::string &side)
 {
     std::string type = p.value("dataport." + side + ".marshaling_type", p.value("dataport.marshaling_type", "cdr"));
@@ -55,8 +51,6 @@ std::string marshalingType(const Properties &p, const std::string &side)
     type.erase(type.find_last_not_of(" \t") + 1);
     return type.empty() ? std::string("cdr") : type;
 }
-
-} // namespace
 
 std::string DataPortBase::checkProfile(const Properties &p, bool *pull) const
 {
@@ -72,11 +66,13 @@ std::string DataPortBase::checkProfile(const Properties &p, bool *pull) const
         && !OutPortPushConnector::parseMode(p.value("dataport.subscription_type", "flush"), &mode))
         return "unsupported dataport.subscription_type '" + p.value("dataport.subscription_type") + "'";
     // OpenRTM's user serializers: an InPort's (`inport.marshaling_type=cdr:RTC/TimedShort:RTC/TimedDouble`)
-    // may read another data type than its own; OutPorts write plain CDR.
-    if (!m_input && marshalingType(p, "outport") != "cdr")
-        return "no serializer '" + marshalingType(p, "outport") + "' for an OutPort (they write plain cdr)";
+    // may read another data type than its own, an OutPort's write its samples as another type.
+    const std::string outportMarshaling = marshalingType(p, "outport");
+    if (!m_input && outportMarshaling != "cdr" && !m_userSerializers)
+        return "no serializer '" + outportMarshaling + "' for this OutPort (it writes plain cdr)";
     const std::string type = p.value("dataport.data_type");
-    if (!type.empty() && !sameDataType(type, m_dataType) && marshalingType(p, "inport") == "cdr")
+    if (!type.empty() && !sameDataType(type, m_dataType) && marshalingType(p, "inport") == "cdr"
+        && outportMarshaling == "cdr")
         return "data type '" + type + "' does not match '" + m_dataType + "'";
     return {};
 }

@@ -29,6 +29,12 @@ public:
 protected:
     /// Empty when the profile fits this port; else why not. @p pull tells the data flow.
     std::string checkProfile(const Properties &connectorProperties, bool *pull) const;
+    /**
+     * Connections may name a marshaling type of this port's side other than plain `cdr`
+     * (`outport.marshaling_type`, `inport.marshaling_type`): the port's user serializers make
+     * those bytes (the Python runtime's ports); typed C++ ports read and write plain CDR.
+     */
+    void setUserSerializers(bool enabled) { m_userSerializers = enabled; }
     /// Besides the duplicate check, OpenRTM-aist's limit on connections: an InPort takes
     /// `dataport.inport.fan_in`, an OutPort `dataport.outport.fan_out` of them (the port's own
     /// `fan_in` / `fan_out` first; 100 when neither says).
@@ -70,7 +76,12 @@ protected:
 private:
     std::string m_dataType;
     bool m_input;
+    bool m_userSerializers = false;
 };
+
+/// A connection's marshaling type for one side (`inport`, `outport`): the side's own, else the
+/// connection's, else plain `cdr`.
+std::string marshalingType(const Properties &connectorProperties, const std::string &side);
 
 /**
  * Marshals @p value as CDR in the given byte order into this thread's stream, which is kept

@@ -30,20 +30,22 @@ bool InPortBase::isNew()
     return false;
 }
 
-bool InPortBase::readMarshalled(SharedCdr *data, bool *littleEndian)
+bool InPortBase::readMarshalled(SharedCdr *data, bool *littleEndian, std::string *connectorId)
 {
     const auto all = connectors();
+    const auto took = [&](const InPortConnector &connector) {
+        *littleEndian = connector.littleEndian();
+        if (connectorId)
+            *connectorId = connector.id();
+        return true;
+    };
     for (const auto &connector : all) {
-        if (connector->hasNew() && connector->read(data)) {
-            *littleEndian = connector->littleEndian();
-            return true;
-        }
+        if (connector->hasNew() && connector->read(data))
+            return took(*connector);
     }
     for (const auto &connector : all) {
-        if (dynamic_cast<InPortPullConnector *>(connector.get()) && connector->read(data)) {
-            *littleEndian = connector->littleEndian();
-            return true;
-        }
+        if (dynamic_cast<InPortPullConnector *>(connector.get()) && connector->read(data))
+            return took(*connector);
     }
     return false;
 }

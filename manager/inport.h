@@ -22,8 +22,9 @@ public:
 
     /// True when a pushed sample waits in any connection.
     bool isNew();
-    /// Takes one sample (pushed ones first, then pulls); false when none is available.
-    bool readMarshalled(SharedCdr *data, bool *littleEndian);
+    /// Takes one sample (pushed ones first, then pulls); false when none is available. The id of
+    /// the connection it came through goes to @p connectorId when given.
+    bool readMarshalled(SharedCdr *data, bool *littleEndian, std::string *connectorId = nullptr);
     /// Called (in the ORB's thread) for every sample that arrives, before it is buffered.
     void setReceiveListener(SampleListener listener);
     size_t connectorCount();

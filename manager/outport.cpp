@@ -15,10 +15,15 @@ OutPortBase::OutPortBase(const std::string &name, const std::string &dataType, P
 
 OutPortBase::~OutPortBase() = default;
 
-std::vector<std::pair<std::string, SendStatus>> OutPortBase::writeMarshalled(
-    const std::function<CdrView(bool littleEndian)> &marshalIn)
+OutPortBase::SendResults OutPortBase::writeMarshalled(const std::function<CdrView(bool littleEndian)> &marshalIn)
 {
-    std::vector<std::pair<std::string, SendStatus>> results;
+    return writeMarshalledAs([&marshalIn](bool littleEndian, const std::string &) { return marshalIn(littleEndian); });
+}
+
+OutPortBase::SendResults OutPortBase::writeMarshalledAs(
+    const std::function<CdrView(bool littleEndian, const std::string &marshalingType)> &marshalIn)
+{
+    SendResults results;
     std::vector<std::shared_ptr<OutPortConnector>> connectors;
     {
         std::lock_guard lock(m_mutex);
@@ -27,17 +32,19 @@ std::vector<std::pair<std::string, SendStatus>> OutPortBase::writeMarshalled(
                 connectors.push_back(connector);
         }
     }
-    // Marshal once per byte order in use, not once per connection: all connections of one order
-    // are served before the view of the other is made.
-    for (const bool littleEndian : {true, false}) {
-        CdrView view;
-        bool marshalled = false;
+    // Marshal once per byte order and marshaling type in use, not once per connection: all
+    // connections of one kind are served before the view of the next kind is made.
+    std::vector<std::pair<bool, std::string>> kinds;
+    for (const auto &connector : connectors) {
+        const std::pair<bool, std::string> kind(connector->littleEndian(), connector->marshalingType());
+        if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+            kinds.push_back(kind);
+    }
+    for (const auto &[littleEndian, marshalingType] : kinds) {
+        const CdrView view = marshalIn(littleEndian, marshalingType);
         for (const auto &connector : connectors) {
-            if (connector->littleEndian() != littleEndian)
-                continue;
-            if (!marshalled)
-                view = marshalIn(littleEndian), marshalled = true;
-            results.emplace_back(connector->id(), connector->write(view));
+            if (connector->littleEndian() == littleEndian && connector->marshalingType() == marshalingType)
+                results.emplace_back(connector->id(), view.data ? connector->write(view) : SendStatus::PortError);
         }
     }
     return results;

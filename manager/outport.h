@@ -19,13 +19,20 @@ public:
     OutPortBase(const std::string &name, const std::string &dataType, PortableServer::POA_ptr poa);
     ~OutPortBase() override;
 
+    /// What each connection (by id) did with a sample; bypassed connections are not listed.
+    using SendResults = std::vector<std::pair<std::string, SendStatus>>;
     /**
-     * Sends one sample; @p marshalIn produces its bytes in the requested byte order (called at
+     * Sends one sample; @p marshalIn produces its plain CDR in the requested byte order (called at
      * most twice; each view only has to last until the next call).
      */
-    /// What each connection (by id) did with the sample; bypassed connections are not listed.
-    std::vector<std::pair<std::string, SendStatus>> writeMarshalled(
-        const std::function<CdrView(bool littleEndian)> &marshalIn);
+    SendResults writeMarshalled(const std::function<CdrView(bool littleEndian)> &marshalIn);
+    /**
+     * Sends one sample to connections of any marshaling type (setUserSerializers()): @p marshalIn
+     * produces its bytes for one marshaling type (`cdr` or a user serializer's name) in one byte
+     * order, once per pair in use; a view with no data fails that pair's connections (PortError).
+     */
+    SendResults writeMarshalledAs(
+        const std::function<CdrView(bool littleEndian, const std::string &marshalingType)> &marshalIn);
     /**
      * Leaves connection @p connectorId out of writeMarshalled() (@p bypassed true) or takes it back:
      * the SDK hands such samples to an InPort of the same process itself, without marshalling.

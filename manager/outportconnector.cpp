@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "outportconnector.h"
+#include "dataport.h"
 
 #include "corbautil.h"
 
@@ -19,6 +20,7 @@ Properties bufferProperties(const Properties &connectorProperties, const std::st
 OutPortConnector::OutPortConnector(const std::string &id, const Properties &p)
     : m_id(id)
     , m_littleEndian(p.value("dataport.serializer.cdr.endian", "little").find("big") != 0)
+    , m_marshalingType(Runtime::marshalingType(p, "outport"))
 {
 }
 

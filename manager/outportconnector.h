@@ -27,12 +27,15 @@ public:
     const std::string &id() const { return m_id; }
     /// `dataport.serializer.cdr.endian` (little unless it says big).
     bool littleEndian() const { return m_littleEndian; }
+    /// `dataport.outport.marshaling_type`, else `dataport.marshaling_type`, else `cdr`.
+    const std::string &marshalingType() const { return m_marshalingType; }
     /// Sends (or keeps) one sample; @p data is only valid during the call.
     virtual SendStatus write(const CdrView &data) = 0;
 
 private:
     std::string m_id;
     bool m_littleEndian = true;
+    std::string m_marshalingType;
 };
 
 /**

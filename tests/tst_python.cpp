@@ -308,13 +308,20 @@ void TestPython::serializerReadsAnotherDataType()
     // the sink's InPort and its data listener; without it the two types do not connect.
     QProcess *pair = startScript(LiveTest::pythonTestScript(QStringLiteral("PySerialized.py")), QStringLiteral("PyDoubleSink0.rtc"));
     QVERIFY(pair);
-    QList<std::pair<QString, QString>> properties{{"dataport.data_type", "IDL:RTC/TimedLong:1.0"},
-                                                  {"dataport.interface_type", "corba_cdr"},
-                                                  {"dataport.dataflow_type", "push"},
-                                                  {"dataport.subscription_type", "flush"}};
-    QVERIFY(!m_host.connectThroughOrb(m_orb, QStringLiteral("PyLongSource0.rtc:out"), QStringLiteral("PyDoubleSink0.rtc:in"), properties));
-    properties.append(std::pair<QString, QString>("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble"));
-    QVERIFY(m_host.connectThroughOrb(m_orb, QStringLiteral("PyLongSource0.rtc:out"), QStringLiteral("PyDoubleSink0.rtc:in"), properties));
+    const QString source = QStringLiteral("PyLongSource0.rtc:out");
+    const QString sink = QStringLiteral("PyDoubleSink0.rtc:in");
+    const QList<std::pair<QString, QString>> plain{{"dataport.data_type", "IDL:RTC/TimedLong:1.0"},
+                                                   {"dataport.interface_type", "corba_cdr"},
+                                                   {"dataport.dataflow_type", "push"},
+                                                   {"dataport.subscription_type", "flush"}};
+    // The source's connection to the sink with one more property, that connection's marshaling type.
+    const auto connect = [&](const char *side, const char *marshaling) {
+        return m_host.connectThroughOrb(m_orb, source, sink,
+                                        QList<std::pair<QString, QString>>(plain)
+                                            << std::pair<QString, QString>(side, marshaling));
+    };
+    QVERIFY(!m_host.connectThroughOrb(m_orb, source, sink, plain));
+    QVERIFY(connect("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble"));
     QVERIFY(rtctlSucceeds({"act", "PyDoubleSink0.rtc", "PyLongSource0.rtc"}));
     // The listener hears every sample; the sink's buffer may have overwritten the first ones before its
     // first execution (a busy machine), so any quarter that is not a whole number shows the serializer.
@@ -324,6 +331,24 @@ void TestPython::serializerReadsAnotherDataType()
                                      QRegularExpression::MultilineOption);
     QTRY_VERIFY2_WITH_TIMEOUT(printed(pair).contains(quarter), qPrintable(printed(pair)), runTimeoutMs);
     QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSink0.rtc"}));
+    // The OutPort's side: its serializer writes eighths as TimedDouble, which the InPort reads as plain cdr.
+    QVERIFY(rtctlSucceeds({"dis", source, sink}));
+    QVERIFY(connect("dataport.outport.marshaling_type", "cdr:RTC/TimedDouble:RTC/TimedLong"));
+    QVERIFY(rtctlSucceeds({"act", "PyDoubleSink0.rtc", "PyLongSource0.rtc"}));
+    const QRegularExpression eighth(QStringLiteral("^sink got \\d+\\.(125|375|625|875)$"), QRegularExpression::MultilineOption);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(pair).contains(eighth), qPrintable(printed(pair)), runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSink0.rtc"}));
+    // Two connections of one InPort, each read by its own marshaling type: the serializer's quarters
+    // and PyDoubleSource's plain TimedDouble samples.
+    QVERIFY(rtctlSucceeds({"dis", source, sink}));
+    QVERIFY(connect("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble"));
+    QVERIFY(rtctlSucceeds({"con", "PyDoubleSource0.rtc:out", sink}));
+    const qsizetype before = printed(pair).size();
+    QVERIFY(rtctlSucceeds({"act", "PyDoubleSink0.rtc", "PyLongSource0.rtc", "PyDoubleSource0.rtc"}));
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(pair).mid(before).contains(quarter)
+                                  && printed(pair).mid(before).contains(QLatin1String("sink got 1000.125\n")),
+                              qPrintable(printed(pair).mid(before).right(3000)), runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSource0.rtc", "PyDoubleSink0.rtc"}));
     m_live.stop(pair);
 }
 

@@ -4,6 +4,7 @@
 #include "pyinterpreter.h"
 #include "pyserializers.h"
 
+#include <cstring>
 #include <iostream>
 
 namespace py = pybind11;
@@ -28,8 +29,12 @@ PyDataListener::ReturnCode PyDataListener::operator()(RTC::ConnectorInfo &info, 
     if (!interpreterAlive())
         return NO_CHANGE;
     const bool little = info.properties.getProperty("serializer.cdr.endian", "little").compare(0, 6, "little") == 0;
-    const std::string marshaling = marshalingtype.empty() || marshalingtype == "cdr"
-        ? PySerializers::marshalingType(info.properties, m_side) : marshalingtype;
+    // An OutPort hands its listeners the sample as the component wrote it, plain CDR of the port's
+    // type, whatever serializer the connection sends it with; an InPort's get what arrived.
+    const bool asWritten = std::strcmp(m_side, "outport") == 0;
+    const std::string marshaling = asWritten ? std::string("cdr")
+        : marshalingtype.empty() || marshalingtype == "cdr" ? PySerializers::marshalingType(info.properties, m_side)
+                                                            : marshalingtype;
     py::gil_scoped_acquire gil;
     try {
         // A user serializer is handed a value of the port's type, as the port's own read gives it.

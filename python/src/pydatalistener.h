@@ -12,8 +12,9 @@ namespace RtPython {
 /**
  * A Python connector data listener (an OpenRTM_aist.ConnectorDataListenerT: `listener(info, data)`)
  * on a port whose samples are of the IDL type @p repositoryId: the runtime's CDR sample is decoded
- * for it as the connection's marshaling type for the port's @p side (`inport`, `outport`) says. Listeners observe; what they return is not sent on. Their exceptions are printed and
- * do not reach the port.
+ * for it, on an InPort (@p side `inport`) as the connection's inport marshaling type says, on an
+ * OutPort (`outport`) as the component wrote it. Listeners observe; what they return is not sent on.
+ * Their exceptions are printed and do not reach the port.
  */
 class PyDataListener : public RTC::ConnectorDataListener
 {

@@ -29,12 +29,10 @@ bool PyInPort::read(std::string name)
     return takeSample();
 }
 
-std::string PyInPort::marshalingType()
+std::string PyInPort::marshalingType(const std::string &connectorId)
 {
-    // The first connection's: samples do not tell which connection they came through.
-    const std::vector<RTC::InPortConnector *> &connections = connectors();
-    return connections.empty() ? std::string("cdr")
-                               : PySerializers::marshalingType(connections.front()->profile().properties, "inport");
+    RTC::InPortConnector *connection = getConnectorById(connectorId.c_str());
+    return connection ? PySerializers::marshalingType(connection->profile().properties, "inport") : std::string("cdr");
 }
 
 bool PyInPort::takeSample()
@@ -45,9 +43,10 @@ bool PyInPort::takeSample()
     {
         // A pull connection asks the other side here: other threads run Python meanwhile.
         py::gil_scoped_release released;
-        if (!readBytes(&bytes, &little))
+        std::string connectorId;
+        if (!readBytes(&bytes, &little, &connectorId))
             return false;
-        marshaling = marshalingType();
+        marshaling = marshalingType(connectorId);
     }
     m_value = PySerializers::read(marshaling, m_value, dataType(), bytes->data(), bytes->size(), little);
     py::gil_scoped_release released;

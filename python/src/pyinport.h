@@ -35,8 +35,8 @@ public:
 private:
     /// Takes the next sample into m_value; false when none waits. Needs the GIL.
     bool takeSample();
-    /// The connection's `inport.marshaling_type` (or `marshaling_type`), `cdr` by default.
-    std::string marshalingType();
+    /// The `inport.marshaling_type` (or `marshaling_type`) of connection @p connectorId, `cdr` by default.
+    std::string marshalingType(const std::string &connectorId);
 
     pybind11::object m_value;
 };

@@ -4,6 +4,10 @@
 #include "pydatalistener.h"
 #include "pydatatypes.h"
 #include "pyinterpreter.h"
+#include "pyserializers.h"
+
+#include <map>
+#include <utility>
 
 namespace py = pybind11;
 
@@ -13,6 +17,7 @@ PyOutPort::PyOutPort(const std::string &name, py::object value)
     : OutPortBase(name.c_str(), PyDataTypes::repositoryId(value).c_str())
     , m_value(std::move(value))
 {
+    setUserSerializers(true);
 }
 
 PyOutPort::~PyOutPort()
@@ -31,19 +36,28 @@ bool PyOutPort::writeValue(py::object value)
     const PyDataTypes &types = PyDataTypes::instance();
     const py::object sample = value.is_none() ? m_value : value;
     const std::vector<unsigned char> little = types.encode(dataType(), sample, true);
-    // Peers that asked for big-endian samples are rare; their bytes are made when first asked for.
-    std::vector<unsigned char> big;
-    auto marshal = [&](bool littleEndian) {
-        if (!littleEndian && big.empty()) {
+    // Other byte orders and user serializers' bytes (`outport.marshaling_type`) are made when a
+    // connection first asks for them; a serializer that fails is reported and fails its connections.
+    std::map<std::pair<bool, std::string>, std::vector<unsigned char>> others;
+    auto marshal = [&](bool littleEndian, const std::string &marshaling) {
+        if (littleEndian && marshaling == "cdr")
+            return Runtime::CdrView{little.data(), little.size()};
+        auto &bytes = others[{littleEndian, marshaling}];
+        if (bytes.empty()) {
             py::gil_scoped_acquire gil;
-            big = types.encode(dataType(), sample, false);
+            try {
+                bytes = PySerializers::write(marshaling, sample, dataType(), littleEndian);
+            } catch (const std::exception &error) {
+                // A registered serializer's exception or none registered: logged with the port's name.
+                RTC_ERROR(("%s: %s", getName(), error.what()));
+                return Runtime::CdrView{};
+            }
         }
-        const std::vector<unsigned char> &bytes = littleEndian ? little : big;
         return Runtime::CdrView{bytes.data(), bytes.size()};
     };
     py::gil_scoped_release released;
     notifyWrite(nullptr, typeid(py::object), [&little] { return little; });
-    writeBytes(marshal);
+    writeBytesAs(marshal);
     return true;
 }
 

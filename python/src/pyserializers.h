@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <string>
+#include <vector>
 
 namespace RtPython {
 
@@ -28,6 +29,13 @@ public:
      */
     static pybind11::object read(const std::string &marshaling, pybind11::handle dataType, const std::string &repositoryId,
                                  const unsigned char *data, size_t size, bool littleEndian);
+    /**
+     * The bytes of @p sample, a value of @p repositoryId, as the serializer registered under
+     * @p marshaling for the sample's type writes them (its `serialize(data)`). Needs the GIL;
+     * throws ValueError when none is registered or it cannot write the sample.
+     */
+    static std::vector<unsigned char> write(const std::string &marshaling, pybind11::handle sample,
+                                            const std::string &repositoryId, bool littleEndian);
 };
 
 } // namespace RtPython

@@ -437,9 +437,9 @@ void InPortBase::logUnsupported(const char *operation, const std::string &name)
                getName(), operation, name.c_str()));
 }
 
-bool InPortBase::readBytes(Runtime::SharedCdr *data, bool *littleEndian)
+bool InPortBase::readBytes(Runtime::SharedCdr *data, bool *littleEndian, std::string *connectorId)
 {
-    return readMarshalled(data, littleEndian);
+    return readMarshalled(data, littleEndian, connectorId);
 }
 
 // --- OutPortBase ---
@@ -586,7 +586,17 @@ DataPortStatus toDataPortStatus(Runtime::SendStatus status)
 
 void OutPortBase::writeBytes(const std::function<Runtime::CdrView(bool littleEndian)> &marshal)
 {
-    const auto results = writeMarshalled(marshal);
+    keepStatuses(writeMarshalled(marshal));
+}
+
+void OutPortBase::writeBytesAs(
+    const std::function<Runtime::CdrView(bool littleEndian, const std::string &marshalingType)> &marshal)
+{
+    keepStatuses(writeMarshalledAs(marshal));
+}
+
+void OutPortBase::keepStatuses(const SendResults &results)
+{
     DataPortStatusList statuses;
     {
         std::lock_guard<std::mutex> lock(m_connectorsMutex);

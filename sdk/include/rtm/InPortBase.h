@@ -82,8 +82,9 @@ protected:
 protected:
     /// Logs that @p operation on connection @p name cannot be done on a port with several connections.
     void logUnsupported(const char *operation, const std::string &name);
-    /// Takes one marshalled sample; false when none was waiting.
-    bool readBytes(::Runtime::SharedCdr *data, bool *littleEndian);
+    /// Takes one marshalled sample; false when none was waiting. The id of the connection it came
+    /// through goes to @p connectorId when given.
+    bool readBytes(::Runtime::SharedCdr *data, bool *littleEndian, std::string *connectorId = nullptr);
 
 private:
     std::mutex m_connectorsMutex;

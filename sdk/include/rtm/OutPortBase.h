@@ -68,10 +68,16 @@ protected:
     /// Hands a sample to the connections; @p marshal gives its bytes in the byte order asked for.
     /// What each connection did with it is kept for statusList().
     void writeBytes(const std::function<::Runtime::CdrView(bool littleEndian)> &marshal);
+    /// The same for a port with user serializers (setUserSerializers()): @p marshal gives the
+    /// bytes of one marshaling type (`cdr` or a serializer's name); no data fails those connections.
+    void writeBytesAs(const std::function<::Runtime::CdrView(bool littleEndian, const std::string &marshalingType)> &marshal);
     /// What the last write did on each connection, in the order of connectors().
     DataPortStatusList statusList();
 
 private:
+    /// Keeps what each connection did with the last sample, for statusList().
+    void keepStatuses(const SendResults &results);
+
     std::mutex m_statusMutex;
     DataPortStatusList m_status;
     std::mutex m_directMutex;
