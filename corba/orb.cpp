@@ -8,6 +8,7 @@
 
 #include <omniORB4/minorCode.h>
 #include <omniORB4/omniInterceptors.h>
+#include <returncode.h>
 
 #include <QHash>
 #include <QMutex>
@@ -320,11 +321,10 @@ SDOPackage::NVList toNVList(const Properties &properties)
 
 void checkReturnCode(int code, const QString &target, const QString &operation)
 {
-    static const char *const names[] = {"RTC_OK",      "RTC_ERROR",        "BAD_PARAMETER",
-                                        "UNSUPPORTED", "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET"};
     if (code == 0)
         return;
-    const QString name = code > 0 && code < 6 ? QLatin1String(names[code]) : QString::number(code);
+    const char *idlName = RtStudio::returnCodeName(code);
+    const QString name = idlName ? QLatin1String(idlName) : QString::number(code);
     throw Error(Error::Kind::Refused,
                 QStringLiteral("%1: %2 returned %3").arg(target, operation, name));
 }

@@ -19,6 +19,7 @@
 #include <executioncontextfactory.h>
 #include <manager.h>
 #include <managerconfig.h>
+#include <returncode.h>
 
 #include <condition_variable>
 #include <iterator>
@@ -78,10 +79,8 @@ void reportError(Logger &rtclog, const std::string &message)
 
 const char *returnCodeName(RTC::ReturnCode_t code)
 {
-    static const char *const names[] = {"RTC_OK", "RTC_ERROR", "BAD_PARAMETER", "UNSUPPORTED", "OUT_OF_RESOURCES",
-                                        "PRECONDITION_NOT_MET"};
-    const auto index = static_cast<std::size_t>(code);
-    return index < std::size(names) ? names[index] : "an unknown return code";
+    const char *name = RtStudio::returnCodeName(static_cast<long>(code));
+    return name ? name : "an unknown return code";
 }
 
 /**
