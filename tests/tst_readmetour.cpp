@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// README.md's five-minute tour, run as written (and docs/ja/README.md's, the same): its shell blocks in order in one shell, from a
+// README.md's five-minute tour, run as written (and the other documents that tell it, the same): its shell blocks in order in one shell, from a
 // folder laid out like the checkout after the first set-up command (build/cli and resources/),
 // with its C++ block put into the generated onExecute where step 2 says. The component is built,
 // runs in the local runtime, the saved system starts and the Doubler sends even numbers. The
@@ -63,7 +63,8 @@ class TestReadmeTour : public QObject
 private slots:
     void initTestCase();
     void tourRuns();
-    void japaneseTourIsTheSame();
+    void otherToursAreTheSame_data();
+    void otherToursAreTheSame();
     void cleanupTestCase();
 
 private:
@@ -140,16 +141,26 @@ void TestReadmeTour::tourRuns()
     QVERIFY2(samples == 3, qPrintable(output));
 }
 
-// docs/ja/README.md tells the same tour: the same commands and code, in the same order.
-void TestReadmeTour::japaneseTourIsTheSame()
+// The same tour told elsewhere (docs/ja/README.md, and Getting started, which explains each step):
+// the same commands and code, in the same order, so that what the test above runs is what they say.
+void TestReadmeTour::otherToursAreTheSame_data()
 {
-    QFile readme(QStringLiteral(RTSTUDIO_SOURCE_DIR "/docs/ja/README.md"));
-    QVERIFY(readme.open(QIODevice::ReadOnly));
-    const QList<Block> japanese = tourBlocks(QString::fromUtf8(readme.readAll()));
-    QCOMPARE(japanese.size(), m_blocks.size());
-    for (qsizetype i = 0; i < japanese.size(); ++i) {
-        QCOMPARE(japanese.at(i).language, m_blocks.at(i).language);
-        QCOMPARE(japanese.at(i).text, m_blocks.at(i).text);
+    QTest::addColumn<QString>("document");
+    QTest::newRow("Japanese README") << QStringLiteral("docs/ja/README.md");
+    QTest::newRow("Getting started") << QStringLiteral("docs/getting-started.md");
+    QTest::newRow("Japanese Getting started") << QStringLiteral("docs/ja/getting-started.md");
+}
+
+void TestReadmeTour::otherToursAreTheSame()
+{
+    QFETCH(QString, document);
+    QFile file(QStringLiteral(RTSTUDIO_SOURCE_DIR "/") + document);
+    QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(file.fileName()));
+    const QList<Block> blocks = tourBlocks(QString::fromUtf8(file.readAll()));
+    QCOMPARE(blocks.size(), m_blocks.size());
+    for (qsizetype i = 0; i < blocks.size(); ++i) {
+        QCOMPARE(blocks.at(i).language, m_blocks.at(i).language);
+        QCOMPARE(blocks.at(i).text, m_blocks.at(i).text);
     }
 }
 
