@@ -20,11 +20,22 @@ namespace Runtime {
 
 namespace {
 
-std::mutex s_mutex;
-int s_maximum = 0;
-std::vector<int> s_ports;
-/// The peers' ports of the TCP connections accepted and not known to be closed.
-std::set<int> s_accepted;
+struct State
+{
+    std::mutex mutex;
+    int maximum = 0;
+    std::vector<int> ports;
+    /// The peers' ports of the TCP connections accepted and not known to be closed.
+    std::set<int> accepted;
+};
+
+/// Never destroyed: the ORB's threads may accept a connection while the process exits, after its
+/// static objects are gone (fuzz_giop found it).
+State &state()
+{
+    static State *const s = new State;
+    return *s;
+}
 
 /// The kernel's state code of an established TCP connection in /proc/net/tcp.
 constexpr const char *Established = "01";
@@ -42,24 +53,25 @@ int peerPort(const std::string &address)
 CORBA::Boolean acceptConnection(omni::omniInterceptors::serverAcceptConnection_T::info_T &info)
 {
     const std::string peer = info.peeraddress() ? info.peeraddress() : "";
-    std::lock_guard lock(s_mutex);
+    State &s = state();
+    std::lock_guard lock(s.mutex);
     // TCP and TLS connections count alike (a TLS server listens on TCP ports too); the Unix socket's
     // peers are on this host.
-    if (s_maximum <= 0 || (peer.rfind("giop:tcp:", 0) != 0 && peer.rfind("giop:ssl:", 0) != 0))
+    if (s.maximum <= 0 || (peer.rfind("giop:tcp:", 0) != 0 && peer.rfind("giop:ssl:", 0) != 0))
         return true;
     // Closed connections are dropped from the count first: what the kernel no longer lists as
     // established to one of our ports has gone.
-    const std::set<int> open = ConnectionLimit::establishedPeerPorts(s_ports);
-    for (auto it = s_accepted.begin(); it != s_accepted.end();)
-        it = open.count(*it) ? std::next(it) : s_accepted.erase(it);
-    if (int(s_accepted.size()) >= s_maximum) {
+    const std::set<int> open = ConnectionLimit::establishedPeerPorts(s.ports);
+    for (auto it = s.accepted.begin(); it != s.accepted.end();)
+        it = open.count(*it) ? std::next(it) : s.accepted.erase(it);
+    if (int(s.accepted.size()) >= s.maximum) {
         info.reject = 1;
         info.why = "too many connections (corba.max_connections)";
-        std::cerr << programName() << ": refused a connection from " << peer << ": " << s_accepted.size()
+        std::cerr << programName() << ": refused a connection from " << peer << ": " << s.accepted.size()
                   << " connections are open, as many as corba.max_connections allows" << std::endl;
         return true;
     }
-    s_accepted.insert(peerPort(peer));
+    s.accepted.insert(peerPort(peer));
     return true;
 }
 
@@ -67,10 +79,11 @@ CORBA::Boolean acceptConnection(omni::omniInterceptors::serverAcceptConnection_T
 
 void ConnectionLimit::install(int maximum, const std::vector<int> &ports)
 {
-    std::lock_guard lock(s_mutex);
-    const bool installed = s_maximum > 0;
-    s_maximum = maximum;
-    s_ports = ports;
+    State &s = state();
+    std::lock_guard lock(s.mutex);
+    const bool installed = s.maximum > 0;
+    s.maximum = maximum;
+    s.ports = ports;
     if (maximum > 0 && !installed)
         omniORB::getInterceptors()->serverAcceptConnection.add(acceptConnection);
 }
