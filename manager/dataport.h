@@ -30,9 +30,9 @@ protected:
     /// Empty when the profile fits this port; else why not. @p pull tells the data flow.
     std::string checkProfile(const Properties &connectorProperties, bool *pull) const;
     /**
-     * Connections may name a marshaling type of this port's side other than plain `cdr`
-     * (`outport.marshaling_type`, `inport.marshaling_type`): the port's user serializers make
-     * those bytes (the Python runtime's ports); typed C++ ports read and write plain CDR.
+     * An OutPort's connections may name an `outport.marshaling_type` other than plain `cdr`: the
+     * port's user serializers make those bytes (the Python runtime's OutPorts); typed C++ OutPorts
+     * write plain CDR. (InPorts are not checked here: the SDK refuses for its typed ones.)
      */
     void setUserSerializers(bool enabled) { m_userSerializers = enabled; }
     /// Besides the duplicate check, OpenRTM-aist's limit on connections: an InPort takes

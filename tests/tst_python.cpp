@@ -349,6 +349,25 @@ void TestPython::serializerReadsAnotherDataType()
                                   && printed(pair).mid(before).contains(QLatin1String("sink got 1000.125\n")),
                               qPrintable(printed(pair).mid(before).right(3000)), runTimeoutMs);
     QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSource0.rtc", "PyDoubleSink0.rtc"}));
+    // A serializer no module registered: that connection's writes fail, the other connection's go on.
+    QVERIFY(rtctlSucceeds({"dis", source, sink}));
+    QVERIFY(connect("dataport.outport.marshaling_type", "cdr:RTC/TimedDouble:RTC/Nothing"));
+    // What the sink read since this activation: the lines after its last "sink activated" (earlier
+    // phases' lines may still be on their way when it starts).
+    const QLatin1String activated("sink activated\n");
+    const qsizetype activations = printed(pair).count(activated);
+    QVERIFY(rtctlSucceeds({"act", "PyDoubleSink0.rtc", "PyLongSource0.rtc", "PyDoubleSource0.rtc"}));
+    const auto sinkLines = [&] {
+        const QString text = printed(pair);
+        QStringList lines;
+        for (const QString &line : text.mid(text.lastIndexOf(activated)).split(QLatin1Char('\n')))
+            if (line.startsWith(QLatin1String("sink got ")))
+                lines << line;
+        return lines;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(printed(pair).count(activated) > activations && sinkLines().size() >= 20, runTimeoutMs);
+    QVERIFY(rtctlSucceeds({"deact", "PyLongSource0.rtc", "PyDoubleSource0.rtc", "PyDoubleSink0.rtc"}));
+    QVERIFY2(sinkLines().filter(QLatin1String("sink got 1000.125")).size() == sinkLines().size(), qPrintable(sinkLines().join(QLatin1Char('\n')).left(2000)));
     m_live.stop(pair);
 }
 

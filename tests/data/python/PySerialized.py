@@ -73,6 +73,10 @@ class PyDoubleSink(OpenRTM_aist.DataFlowComponentBase):
         self.addInPort("in", self._inport)
         return RTC.RTC_OK
 
+    def onActivated(self, ec_id):
+        print("sink activated")
+        return RTC.RTC_OK
+
     def onExecute(self, ec_id):
         while self._inport.isNew():
             print("sink got %r" % (self._inport.read().data,))
