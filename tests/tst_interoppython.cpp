@@ -77,8 +77,8 @@ QProcess *TestInteropPython::startScript(const QString &script, const QString &i
         *error = conf + QStringLiteral(": ") + file.errorString();
         return nullptr;
     }
-    file.write(QStringLiteral("corba.nameservers: %1\nnaming.formats: interop.host_cxt/%n.rtc\nlogger.enable: NO\n")
-                   .arg(m_live.namingServer())
+    file.write(QStringLiteral("corba.nameservers: %1\nnaming.formats: interop.host_cxt/%n.rtc\nlogger.enable: NO\n%2\n")
+                   .arg(m_live.namingServer(), LiveTest::NoMasterLine)
                    .toUtf8()
                + extraConf.toUtf8());
     file.close();

@@ -128,8 +128,8 @@ QString TestPythonService::writeConf(const QString &name, const QString &extraCo
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
         return {};
     file.write(QStringLiteral(
-                   "corba.nameservers: %1\nnaming.formats: %2.host_cxt/%n.rtc\nlogger.enable: NO\n")
-                   .arg(m_live.namingServer(), hostName)
+                   "corba.nameservers: %1\nnaming.formats: %2.host_cxt/%n.rtc\nlogger.enable: NO\n%3\n")
+                   .arg(m_live.namingServer(), hostName, LiveTest::NoMasterLine)
                    .toUtf8()
                + extraConf.toUtf8());
     return conf;
@@ -575,7 +575,10 @@ void TestPythonService::autoTestExamplesRunUnchanged()
     for (const QStringList &link : {QStringList{"AutoTestOut0.rtc:out", "AutoTestIn0.rtc:in"},
                                     QStringList{"AutoTestOut0.rtc:seqout", "AutoTestIn0.rtc:seqin"},
                                     QStringList{"AutoTestOut0.rtc:MyService", "AutoTestIn0.rtc:MyService"}})
-        QVERIFY2(rtctlSucceeds(QStringList{"con"} + link), qPrintable(link.join(' ')));
+        QVERIFY2(rtctlSucceeds(QStringList{"con"} + link),
+                 qPrintable(link.join(' ') + QStringLiteral("\nlisted:\n") + rtctl({"ls"}).out
+                            + QStringLiteral("\nAutoTestIn (%1):\n").arg(in->state()) + printed(in)
+                            + QStringLiteral("\nAutoTestOut (%1):\n").arg(out->state()) + printed(out)));
     QVERIFY(rtctlSucceeds({"act", "AutoTestIn0.rtc"}));
     QVERIFY(rtctlSucceeds({"act", "AutoTestOut0.rtc"}));
     QTRY_VERIFY2_WITH_TIMEOUT(printed(in).contains(QLatin1String("fdata: 3.000000")), qPrintable(printed(in)),

@@ -190,7 +190,7 @@ QString TestSdkExamples::writeConf(const QString &name, const QStringList &extra
         return {};
     const QStringList lines = QStringList{QStringLiteral("corba.nameservers: ") + m_live.namingServer(),
                                           QStringLiteral("naming.formats: %1.host_cxt/%n.rtc").arg(hostName),
-                                          QStringLiteral("logger.enable: NO")}
+                                          QStringLiteral("logger.enable: NO"), LiveTest::NoMasterLine}
                               + extraLines;
     conf.write((lines.join('\n') + '\n').toUtf8());
     return file;

@@ -263,8 +263,8 @@ void TestSdkStyles::componentProgramLogsAndTicks()
                               "exec_cxt.periodic.type: ExtTrigExecutionContext\n"
                               "logger.enable: YES\n"
                               "logger.log_level: PARANOID\n"
-                              "logger.file_name: %3\n")
-                   .arg(m_live.namingServer(), hostName, logFile)
+                              "logger.file_name: %3\n%4\n")
+                   .arg(m_live.namingServer(), hostName, logFile, LiveTest::NoMasterLine)
                    .toUtf8());
     file.close();
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();

@@ -18,6 +18,12 @@ namespace LiveTest {
 
 /// A loopback TCP port that was free a moment ago (bound to port 0 and released).
 quint16 freePort();
+/**
+ * The rtc.conf line of a component program that joins no master manager. Without it a program
+ * joins the master at the default localhost:2810, which another test's local runtime may run
+ * meanwhile; that master shuts its slaves down when it stops (as OpenRTM-aist's does).
+ */
+inline const QString NoMasterLine = QStringLiteral("corba.master_manager:");
 /// Waits up to @p timeoutMs for @p process to end; true also when it has ended already (an event
 /// loop the test ran meanwhile, e.g. while rtctl ran, may have seen it end, and then
 /// QProcess::waitForFinished() answers false).

@@ -65,7 +65,7 @@ public:
             return {};
         const QStringList lines{QStringLiteral("corba.nameservers: ") + m_live.namingServer(),
                                 QStringLiteral("naming.formats: %1.host_cxt/%n.rtc").arg(m_host),
-                                QStringLiteral("logger.enable: NO")};
+                                QStringLiteral("logger.enable: NO"), NoMasterLine};
         conf.write(((lines + extraLines).join('\n') + '\n').toUtf8());
         return file;
     }
