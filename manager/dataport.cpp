@@ -3,7 +3,12 @@
 
 #include "outportconnector.h"
 
+#include <iostream>
+#include <random>
+#include <sstream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace Runtime {
 
@@ -52,29 +57,120 @@ std::string marshalingType(const Properties &p, const std::string &side)
     return type.empty() ? std::string("cdr") : type;
 }
 
-std::string DataPortBase::checkProfile(const Properties &p, bool *pull) const
+Properties DataPortBase::connectorProperties(const RTC::ConnectorProfile &profile) const
+{
+    Properties p = connectorDefaults();
+    p.merge(nvToProperties(profile.properties));
+    return p;
+}
+
+void DataPortBase::setCspChannel()
+{
+    m_cspChannel = true;
+    setProperty("dataport.interface_type", "csp_channel");
+    setProperty("dataport.dataflow_type", "duplex");
+}
+
+std::string DataPortBase::checkProfile(const Properties &p, Flow *flow) const
 {
     const std::string interfaceType = p.value("dataport.interface_type", "corba_cdr");
+    const std::string flowType = p.value("dataport.dataflow_type", "push");
+    if (m_cspChannel) {
+        if (interfaceType != "csp_channel" || flowType != "duplex")
+            return "a CSP port takes dataport.interface_type csp_channel with dataflow_type duplex only (not "
+                   + interfaceType + " with " + flowType + ")";
+        *flow = Flow::Channel;
+        return {};
+    }
     if (interfaceType != "corba_cdr")
-        return "unsupported dataport.interface_type '" + interfaceType + "'";
-    const std::string flow = p.value("dataport.dataflow_type", "push");
-    if (flow != "push" && flow != "pull")
-        return "unsupported dataport.dataflow_type '" + flow + "'";
-    *pull = flow == "pull";
+        return "interface type '" + interfaceType + "' is not available (RT Studio's data ports carry corba_cdr"
+               + (interfaceType == "csp_channel" ? ", and csp_channel between CSP ports)" : " only)");
+    if (flowType != "push" && flowType != "pull")
+        return "unsupported dataport.dataflow_type '" + flowType + "'";
+    *flow = flowType == "pull" ? Flow::Pull : Flow::Push;
     OutPortPushConnector::Mode mode;
-    if (!m_input && !*pull
+    if (!m_input && *flow == Flow::Push
         && !OutPortPushConnector::parseMode(p.value("dataport.subscription_type", "flush"), &mode))
         return "unsupported dataport.subscription_type '" + p.value("dataport.subscription_type") + "'";
     // OpenRTM's user serializers: an InPort's (`inport.marshaling_type=cdr:RTC/TimedShort:RTC/TimedDouble`)
     // may read another data type than its own, an OutPort's write its samples as another type.
     const std::string outportMarshaling = marshalingType(p, "outport");
-    if (!m_input && outportMarshaling != "cdr" && !m_userSerializers)
-        return "no serializer '" + outportMarshaling + "' for this OutPort (it writes plain cdr)";
+    const std::string inportMarshaling = marshalingType(p, "inport");
+    const std::string &own = m_input ? inportMarshaling : outportMarshaling;
+    if (own != "cdr" && !m_userSerializers)
+        return "no serializer '" + own + (m_input ? "' for this InPort (it reads plain cdr)"
+                                                   : "' for this OutPort (it writes plain cdr)");
     const std::string type = p.value("dataport.data_type");
-    if (!type.empty() && !sameDataType(type, m_dataType) && marshalingType(p, "inport") == "cdr"
+    if (!type.empty() && !sameDataType(type, m_dataType) && inportMarshaling == "cdr"
         && outportMarshaling == "cdr")
         return "data type '" + type + "' does not match '" + m_dataType + "'";
     return {};
+}
+
+bool DataPortBase::fits(const RTC::ConnectorProfile &profile, const Properties &p, Flow *flow) const
+{
+    const std::string problem = checkProfile(p, flow);
+    if (problem.empty())
+        return true;
+    refused(profile, problem);
+    return false;
+}
+
+namespace {
+
+/// Where a channel's connector profile bears the process mark of its first port.
+constexpr const char *ChannelMarkKey = "dataport.csp_channel.process";
+
+/// This process's mark on the channels it joins: its id and a random number (ids are reused).
+const std::string &processMark()
+{
+    static const std::string mark = [] {
+        std::random_device random;
+        std::ostringstream text;
+        text << getpid() << '-' << std::hex << random() << random();
+        return text.str();
+    }();
+    return mark;
+}
+
+} // namespace
+
+RTC::ReturnCode_t DataPortBase::connect(RTC::ConnectorProfile &connector_profile)
+{
+    SDOPackage::NVList &properties = connector_profile.properties;
+    CORBA::ULong kept = 0;
+    for (CORBA::ULong i = 0; i < properties.length(); ++i) {
+        if (std::string(properties[i].name.in()) != ChannelMarkKey) {
+            if (kept != i)
+                properties[kept] = properties[i];
+            ++kept;
+        }
+    }
+    properties.length(kept);
+    return PortBase::connect(connector_profile);
+}
+
+RTC::ReturnCode_t DataPortBase::joinChannel(RTC::ConnectorProfile &profile) const
+{
+    if (!nvToProperties(profile.properties).contains(ChannelMarkKey)) {
+        nvSet(profile.properties, ChannelMarkKey, processMark());
+        return RTC::RTC_OK;
+    }
+    return checkChannel(profile);
+}
+
+RTC::ReturnCode_t DataPortBase::checkChannel(const RTC::ConnectorProfile &profile) const
+{
+    if (nvToProperties(profile.properties).value(ChannelMarkKey) == processMark())
+        return RTC::RTC_OK;
+    refused(profile, "a CSP channel joins ports of one process, and the other port is in another");
+    return RTC::BAD_PARAMETER;
+}
+
+void DataPortBase::refused(const RTC::ConnectorProfile &profile, const std::string &problem) const
+{
+    std::cerr << programName() << ": port " << getName() << ": connector '" << profile.name.in()
+              << "' refused: " << problem << std::endl;
 }
 
 } // namespace Runtime

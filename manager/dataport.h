@@ -26,13 +26,50 @@ public:
     DataPortBase(const std::string &name, const std::string &portType, const std::string &dataType);
     const std::string &dataType() const { return m_dataType; }
 
-protected:
-    /// Empty when the profile fits this port; else why not. @p pull tells the data flow.
-    std::string checkProfile(const Properties &connectorProperties, bool *pull) const;
     /**
-     * An OutPort's connections may name an `outport.marshaling_type` other than plain `cdr`: the
-     * port's user serializers make those bytes (the Python runtime's OutPorts); typed C++ OutPorts
-     * write plain CDR. (InPorts are not checked here: the SDK refuses for its typed ones.)
+     * Makes this a port of OpenRTM-aist-Python's CSP channels (CSPInPort, CSPOutPort): it takes
+     * connections of `dataport.interface_type` csp_channel and `dataflow_type` duplex only, of any
+     * data type, between ports of this process, and carries no samples itself: the Python runtime
+     * hands them from port to port.
+     */
+    void setCspChannel();
+    /// PortBase::connect() without a channel's process mark that @p connector_profile may carry
+    /// from an earlier connection (a saved system's), which would name a process gone.
+    RTC::ReturnCode_t connect(RTC::ConnectorProfile &connector_profile) override;
+
+protected:
+    /**
+     * The port's own connector settings (`dataport.buffer.length`, …), under those of each
+     * connector profile: OpenRTM's port properties (rtc.conf's `port.inport.<name>.*`). None here.
+     */
+    virtual Properties connectorDefaults() const { return {}; }
+    /// @p profile's properties over connectorDefaults().
+    Properties connectorProperties(const RTC::ConnectorProfile &profile) const;
+    /// How a connection's samples travel.
+    enum class Flow : uint8_t {
+        Push,   ///< the OutPort sends them to the InPort's interface
+        Pull,   ///< the InPort asks the OutPort's interface
+        Channel ///< a CSP channel in this process (setCspChannel())
+    };
+    /// Empty when the profile fits this port; else why not. @p flow tells the data flow.
+    std::string checkProfile(const Properties &connectorProperties, Flow *flow) const;
+    /// checkProfile() of @p profile's properties @p p; a refusal goes to refused().
+    bool fits(const RTC::ConnectorProfile &profile, const Properties &p, Flow *flow) const;
+    /**
+     * A channel joins ports of one process: the first port to publish writes this process's mark
+     * into @p profile, the others check it (checkChannel()).
+     */
+    RTC::ReturnCode_t joinChannel(RTC::ConnectorProfile &profile) const;
+    /// RTC_OK when @p profile bears this process's mark; else BAD_PARAMETER (refused()).
+    RTC::ReturnCode_t checkChannel(const RTC::ConnectorProfile &profile) const;
+    /// Tells that connector @p profile was refused for @p problem: on standard error, with the
+    /// port's name (the SDK's ports write it to the component's log).
+    virtual void refused(const RTC::ConnectorProfile &profile, const std::string &problem) const;
+    /**
+     * A connection may name a marshaling type other than plain `cdr` for this port's side
+     * (`outport.marshaling_type`, `inport.marshaling_type`) only when the port has user serializers
+     * that make or read those bytes (the Python runtime's ports); typed C++ ports write and read
+     * plain CDR and refuse such a connection.
      */
     void setUserSerializers(bool enabled) { m_userSerializers = enabled; }
     /// Besides the duplicate check, OpenRTM-aist's limit on connections: an InPort takes
@@ -77,6 +114,7 @@ private:
     std::string m_dataType;
     bool m_input;
     bool m_userSerializers = false;
+    bool m_cspChannel = false;
 };
 
 /// A connection's marshaling type for one side (`inport`, `outport`): the side's own, else the

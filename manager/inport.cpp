@@ -75,11 +75,13 @@ size_t InPortBase::connectorCount()
 
 RTC::ReturnCode_t InPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
 {
-    const Properties p = nvToProperties(profile.properties);
-    bool pull = false;
-    if (!checkProfile(p, &pull).empty())
+    const Properties p = connectorProperties(profile);
+    Flow flow = Flow::Push;
+    if (!fits(profile, p, &flow))
         return RTC::BAD_PARAMETER;
-    if (pull)
+    if (flow == Flow::Channel)
+        return joinChannel(profile);
+    if (flow == Flow::Pull)
         return RTC::RTC_OK;
     auto connector = std::make_shared<InPortPushConnector>(
         std::string(profile.connector_id), p, m_poa,
@@ -95,11 +97,13 @@ RTC::ReturnCode_t InPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
 
 RTC::ReturnCode_t InPortBase::subscribeInterfaces(const RTC::ConnectorProfile &profile)
 {
-    const Properties p = nvToProperties(profile.properties);
-    bool pull = false;
-    if (!checkProfile(p, &pull).empty())
+    const Properties p = connectorProperties(profile);
+    Flow flow = Flow::Push;
+    if (!fits(profile, p, &flow))
         return RTC::BAD_PARAMETER;
-    if (!pull)
+    if (flow == Flow::Channel)
+        return checkChannel(profile);
+    if (flow == Flow::Push)
         return RTC::RTC_OK;
     OpenRTM::OutPortCdr_var peer = peerInterface<OpenRTM::OutPortCdr>(p, "outport");
     if (CORBA::is_nil(peer))

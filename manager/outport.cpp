@@ -67,11 +67,13 @@ size_t OutPortBase::connectorCount()
 
 RTC::ReturnCode_t OutPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
 {
-    const Properties p = nvToProperties(profile.properties);
-    bool pull = false;
-    if (!checkProfile(p, &pull).empty())
+    const Properties p = connectorProperties(profile);
+    Flow flow = Flow::Push;
+    if (!fits(profile, p, &flow))
         return RTC::BAD_PARAMETER;
-    if (!pull)
+    if (flow == Flow::Channel)
+        return joinChannel(profile);
+    if (flow == Flow::Push)
         return RTC::RTC_OK;
     auto connector = std::make_shared<OutPortPullConnector>(std::string(profile.connector_id), p, m_poa);
     OpenRTM::OutPortCdr_var ref = connector->reference();
@@ -83,11 +85,13 @@ RTC::ReturnCode_t OutPortBase::publishInterfaces(RTC::ConnectorProfile &profile)
 
 RTC::ReturnCode_t OutPortBase::subscribeInterfaces(const RTC::ConnectorProfile &profile)
 {
-    const Properties p = nvToProperties(profile.properties);
-    bool pull = false;
-    if (!checkProfile(p, &pull).empty())
+    const Properties p = connectorProperties(profile);
+    Flow flow = Flow::Push;
+    if (!fits(profile, p, &flow))
         return RTC::BAD_PARAMETER;
-    if (pull)
+    if (flow == Flow::Channel)
+        return checkChannel(profile);
+    if (flow == Flow::Pull)
         return RTC::RTC_OK;
     OpenRTM::InPortCdr_var peer = peerInterface<OpenRTM::InPortCdr>(p, "inport");
     if (CORBA::is_nil(peer))

@@ -163,7 +163,7 @@ private slots:
     void connectorBufferPolicy();
     void connectRejectsMismatch_data();
     void connectRejectsMismatch();
-    void convertingMarshalingTypeTakesAnotherDataType();
+    void marshalingTypeNeedsASerializer();
     void connectRefusesNilPeer_data();
     void connectRefusesNilPeer();
     void duplicateConnectionRefused();
@@ -916,10 +916,11 @@ void TestManagerRuntime::connectRejectsMismatch()
     QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
 }
 
-void TestManagerRuntime::convertingMarshalingTypeTakesAnotherDataType()
+void TestManagerRuntime::marshalingTypeNeedsASerializer()
 {
-    // OpenRTM's user serializers (`inport.marshaling_type=cdr:RTC/TimedLong:RTC/TimedDouble`) let an
-    // InPort read another data type: such a connection is not held to one. OutPorts write plain CDR.
+    // OpenRTM's user serializers (`inport.marshaling_type=cdr:RTC/TimedLong:RTC/TimedDouble`) let a
+    // port read or write another data type. The built-in ports have none: they read and write plain
+    // CDR of their own type and refuse any other marshaling type on their side.
     auto [in, out, outPort, inPort] = consolePair("CI4", "CO4");
     Properties p;
     p.set("dataport.data_type", "IDL:RTC/TimedDouble:1.0");
@@ -929,6 +930,11 @@ void TestManagerRuntime::convertingMarshalingTypeTakesAnotherDataType()
     p.set("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble");
     QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
     p.set("dataport.outport.marshaling_type", "cdr");
+    QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
+    RTC::ConnectorProfileList_var left = outPort->get_connector_profiles();
+    QCOMPARE(left->length(), CORBA::ULong(0));
+    p.set("dataport.data_type", "IDL:RTC/TimedLong:1.0");
+    p.set("dataport.inport.marshaling_type", " cdr ");
     QCOMPARE(connect(outPort, inPort, p), RTC::RTC_OK);
 }
 

@@ -42,6 +42,22 @@ py::list connectorProfiles(Runtime::PortBase &port)
     return result;
 }
 
+/// OpenRTM-aist-Python's disconnect(connector_id): RTC.RTC_OK, or why not.
+template <typename Port>
+int disconnect(Port &port, const std::string &connectorId)
+{
+    return int(port.disconnect(connectorId.c_str()));
+}
+
+/// Makes @p port an end of CSP channels (OpenRTM_aist.CSPPort), of data type "any" when asked.
+template <typename Port>
+void setCspChannel(Port &port, bool anyDataType)
+{
+    port.setCspChannel();
+    if (anyDataType)
+        port.setProperty("dataport.data_type", "any");
+}
+
 } // namespace
 
 void bindPorts(py::module_ &module)
@@ -63,7 +79,12 @@ void bindPorts(py::module_ &module)
         .def("get_connector_profiles", [](PyInPort &port) { return connectorProfiles(port); })
         .def("addConnectorDataListener", &PyInPort::addDataListener, py::arg("listener_type"), py::arg("listener"))
         .def("addConnectorListener", &PyInPort::addConnectorListener, py::arg("listener_type"),
-             py::arg("listener"));
+             py::arg("listener"))
+        .def("properties", [](PyInPort &port) -> coil::Properties & { return port.properties(); },
+             py::return_value_policy::reference_internal)
+        .def("disconnect", &disconnect<PyInPort>, py::arg("connector_id"), Release())
+        .def("disconnect_all", [](PyInPort &port) { return int(port.disconnect_all()); }, Release())
+        .def("_setCspChannel", &setCspChannel<PyInPort>, py::arg("any_data_type"));
     py::class_<PyOutPort>(module, "OutPort")
         .def(py::init([](const std::string &name, py::object value, const py::object &) {
                  return new PyOutPort(name, std::move(value));
@@ -74,7 +95,12 @@ void bindPorts(py::module_ &module)
         .def("get_connector_profiles", [](PyOutPort &port) { return connectorProfiles(port); })
         .def("addConnectorDataListener", &PyOutPort::addDataListener, py::arg("listener_type"), py::arg("listener"))
         .def("addConnectorListener", &PyOutPort::addConnectorListener, py::arg("listener_type"),
-             py::arg("listener"));
+             py::arg("listener"))
+        .def("properties", [](PyOutPort &port) -> coil::Properties & { return port.properties(); },
+             py::return_value_policy::reference_internal)
+        .def("disconnect", &disconnect<PyOutPort>, py::arg("connector_id"), Release())
+        .def("disconnect_all", [](PyOutPort &port) { return int(port.disconnect_all()); }, Release())
+        .def("_setCspChannel", &setCspChannel<PyOutPort>, py::arg("any_data_type"));
 }
 
 } // namespace RtPython

@@ -193,6 +193,30 @@ RTC::ReturnCode_t PyComponent::onRateChanged(RTC::UniqueId ec_id) { return call(
 
 void bindComponent(py::module_ &module)
 {
+    // OpenRTM-aist-Python's Logger methods: RTC_ERROR(msg, opt) writes msg % opt (msg when opt is
+    // empty) when the level is on.
+    py::class_<RTC::Logger, std::unique_ptr<RTC::Logger, py::nodelete>> logger(module, "Logger");
+    const std::pair<const char *, int> levels[] = {
+        {"RTC_FATAL", RTC::Logger::RTL_FATAL}, {"RTC_ERROR", RTC::Logger::RTL_ERROR},
+        {"RTC_WARN", RTC::Logger::RTL_WARN},   {"RTC_INFO", RTC::Logger::RTL_INFO},
+        {"RTC_DEBUG", RTC::Logger::RTL_DEBUG}, {"RTC_TRACE", RTC::Logger::RTL_TRACE},
+        {"RTC_VERBOSE", RTC::Logger::RTL_VERBOSE}, {"RTC_PARANOID", RTC::Logger::RTL_PARANOID}};
+    for (const auto &[name, level] : levels) {
+        logger.def(
+            name,
+            [level = level](RTC::Logger &log, const py::object &message, const py::object &arguments) {
+                if (!log.isValid(level))
+                    return;
+                const std::string text = py::str(py::bool_(arguments) ? message.attr("__mod__")(arguments) : message);
+                py::gil_scoped_release released;
+                log.lock();
+                log.level(level) << text << std::endl;
+                log.unlock();
+            },
+            py::arg("msg"), py::arg("opt") = py::none());
+    }
+    logger.def("isValid", &RTC::Logger::isValid, py::arg("level"));
+
     // Never deleted from Python: the ORB owns the bridge.
     py::class_<PyComponent, std::unique_ptr<PyComponent, py::nodelete>>(module, "Component")
         .def("addInPort", &PyComponent::addPythonInPort, py::arg("name"), py::arg("inport"))
@@ -204,7 +228,8 @@ void bindComponent(py::module_ &module)
         .def("getInstanceName", &PyComponent::getInstanceName)
         .def("getTypeName", &PyComponent::getTypeName)
         .def("getCategory", &PyComponent::getCategory)
-        .def("getProperties", &PyComponent::getProperties, py::return_value_policy::reference_internal);
+        .def("getProperties", &PyComponent::getProperties, py::return_value_policy::reference_internal)
+        .def_property_readonly("_rtcout", &PyComponent::logger, py::return_value_policy::reference_internal);
 }
 
 } // namespace RtPython

@@ -46,6 +46,9 @@ public:
     bool bindPythonParameter(const std::string &name, pybind11::object variable, const std::string &defaultValue,
                              pybind11::object trans);
 
+    /// The component's logger (OpenRTM-aist-Python's `self._rtcout`).
+    RTC::Logger &logger() const { return rtclog; }
+
     /// Notes that @p made (owned by the configuration) calls Python listener @p listener for @p kind and @p type.
     void rememberListener(int kind, int type, pybind11::handle listener, void *made);
     /// What rememberListener() noted for @p listener, forgotten now; null when nothing was.

@@ -14,6 +14,7 @@ PyInPort::PyInPort(const std::string &name, py::object value)
     : InPortBase(name.c_str(), PyDataTypes::repositoryId(value).c_str())
     , m_value(std::move(value))
 {
+    setUserSerializers(true);
 }
 
 PyInPort::~PyInPort()

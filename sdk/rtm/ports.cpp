@@ -226,16 +226,22 @@ void DataPortListeners::init(coil::Properties &prop)
     m_properties << prop;
 }
 
-ReturnCode_t DataPortListeners::checkInterfaceType(const char *portName, const ConnectorProfile &profile)
+Runtime::Properties DataPortListeners::connectorSettings() const
 {
-    const Runtime::Properties p = Runtime::nvToProperties(profile.properties);
-    const std::string type = p.value("dataport.interface_type", "corba_cdr");
-    if (type == "corba_cdr")
-        return RTC_OK;
-    RTC_ERROR(("%s: connector '%s' refused: interface type '%s' is not available (RT Studio's data ports carry "
-               "corba_cdr only)",
-               portName, static_cast<const char *>(profile.name), type.c_str()));
-    return BAD_PARAMETER;
+    // The port's own `dataport.data_type` (set at construction) is not a connection setting.
+    Runtime::Properties settings;
+    const Runtime::Properties own = Sdk::toRuntime(m_properties);
+    for (const auto &[key, value] : own.entries()) {
+        if (key.rfind("dataport.", 0) != 0)
+            settings.set("dataport." + key, value);
+    }
+    return settings;
+}
+
+void DataPortListeners::logRefusal(const char *portName, const ConnectorProfile &profile,
+                                   const std::string &problem) const
+{
+    RTC_ERROR(("%s: connector '%s' refused: %s", portName, static_cast<const char *>(profile.name), problem.c_str()));
 }
 
 coil::Properties &DataPortListeners::properties()
@@ -414,21 +420,9 @@ ReturnCode_t InPortBase::notify_disconnect(const char *connector_id)
     return result;
 }
 
-ReturnCode_t InPortBase::publishInterfaces(ConnectorProfile &connector_profile)
+void InPortBase::refused(const ConnectorProfile &profile, const std::string &problem) const
 {
-    ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
-    // Typed C++ ports read plain CDR of their type; user serializers are Python ones (PyInPort).
-    if (accepted == RTC_OK && takesValues()) {
-        const Runtime::Properties p = Runtime::nvToProperties(connector_profile.properties);
-        const std::string type = coil::eraseBothEndsBlank(
-            p.value("dataport.inport.marshaling_type", p.value("dataport.marshaling_type", "cdr")));
-        if (!type.empty() && type != "cdr") {
-            RTC_ERROR(("%s: connector '%s' refused: no serializer '%s' (the port reads plain cdr)", getName(),
-                       static_cast<const char *>(connector_profile.name), type.c_str()));
-            accepted = BAD_PARAMETER;
-        }
-    }
-    return accepted != RTC_OK ? accepted : Runtime::InPortBase::publishInterfaces(connector_profile);
+    logRefusal(getName(), profile, problem);
 }
 
 void InPortBase::logUnsupported(const char *operation, const std::string &name)
@@ -518,10 +512,9 @@ ReturnCode_t OutPortBase::notify_disconnect(const char *connector_id)
     return result;
 }
 
-ReturnCode_t OutPortBase::publishInterfaces(ConnectorProfile &connector_profile)
+void OutPortBase::refused(const ConnectorProfile &profile, const std::string &problem) const
 {
-    const ReturnCode_t accepted = checkInterfaceType(getName(), connector_profile);
-    return accepted != RTC_OK ? accepted : Runtime::OutPortBase::publishInterfaces(connector_profile);
+    logRefusal(getName(), profile, problem);
 }
 
 void OutPortBase::addDirectPeer(const std::string &connectorId, InPortBase *inport)

@@ -361,18 +361,45 @@ bool RTObject_impl::addPort(CorbaPort &port)
     return addPort(static_cast<PortBase &>(port));
 }
 
+namespace {
+
+/**
+ * rtc.conf's settings of a data port, as OpenRTM-aist's addInPort() gives them to the port:
+ * `port.<kind>.dataport.*` for every port of the kind, then `port.<kind>.<name>.*`; the manager's
+ * configuration (when the component has a manager) first, then the component's own properties.
+ */
+coil::Properties portSettings(Manager *manager, const coil::Properties &component, const char *kind,
+                              const char *name)
+{
+    coil::Properties settings;
+    const std::string prefix = std::string("port.") + kind + '.';
+    const coil::Properties *config = manager != nullptr ? &manager->getConfig() : nullptr;
+    for (const coil::Properties *source : {config, &component}) {
+        for (const std::string &node : {prefix + "dataport", prefix + (name != nullptr ? name : "")}) {
+            if (const coil::Properties *found = source != nullptr ? source->findNode(node) : nullptr)
+                settings << *found;
+        }
+    }
+    return settings;
+}
+
+} // namespace
+
 bool RTObject_impl::addInPort(const char *name, InPortBase &inport)
 {
-    (void)name; // the port keeps the name it was constructed with, as in OpenRTM-aist
+    // The port keeps the name it was constructed with, as in OpenRTM-aist; @p name picks its settings.
     attachPort(inport);
+    coil::Properties settings = portSettings(m_pManager, m_properties, "inport", name);
+    inport.init(settings);
     m_inports.push_back(&inport);
     return true;
 }
 
 bool RTObject_impl::addOutPort(const char *name, OutPortBase &outport)
 {
-    (void)name;
     attachPort(outport);
+    coil::Properties settings = portSettings(m_pManager, m_properties, "outport", name);
+    outport.init(settings);
     m_outports.push_back(&outport);
     return true;
 }

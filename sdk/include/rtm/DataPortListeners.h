@@ -10,6 +10,8 @@
 #include <coil/Properties.h>
 #include <coil/stringutil.h>
 
+#include <rtmruntime/properties.h>
+
 namespace RTC
 {
 /// The part of InPortBase and OutPortBase that does not depend on the direction.
@@ -18,7 +20,11 @@ class DataPortListeners
 public:
     virtual ~DataPortListeners();
 
-    /// Applies port properties (`buffer.length`, …) as OpenRTM's init() does.
+    /**
+     * Takes port properties (`buffer.length`, `subscription_type`, …) as OpenRTM's init() does:
+     * they are the defaults of every connection's `dataport.*` settings. A component's
+     * addInPort() / addOutPort() gives a port rtc.conf's `port.inport.<name>.*` (`port.outport.…`).
+     */
     virtual void init(coil::Properties &prop);
     coil::Properties &properties();
     ConnectorInfoList getConnectorProfiles();
@@ -43,11 +49,10 @@ protected:
     /// @p data_type is the repository id of the port's sample type.
     explicit DataPortListeners(const char *data_type);
 
-    /**
-     * RTC_OK when the connector's `dataport.interface_type` is one the runtime carries
-     * (corba_cdr); otherwise logs why the port @p portName refuses it and answers BAD_PARAMETER.
-     */
-    ReturnCode_t checkInterfaceType(const char *portName, const ConnectorProfile &profile);
+    /// The port properties init() took, as connector settings (`dataport.buffer.length`, …).
+    ::Runtime::Properties connectorSettings() const;
+    /// Logs that the port @p portName refused connector @p profile for @p problem.
+    void logRefusal(const char *portName, const ConnectorProfile &profile, const std::string &problem) const;
 
     coil::Properties m_properties;
     ConnectorListeners m_listeners;

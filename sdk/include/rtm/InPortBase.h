@@ -76,10 +76,10 @@ public:
     ReturnCode_t notify_disconnect(const char *connector_id) override;
 
 protected:
-    /// Refuses, with a logged message, the interface types the runtime does not carry.
-    ReturnCode_t publishInterfaces(ConnectorProfile &connector_profile) override;
-
-protected:
+    /// Writes the runtime's refusal of a connector to the component's log.
+    void refused(const ConnectorProfile &profile, const std::string &problem) const override;
+    /// The settings init() took, under each connector's own.
+    ::Runtime::Properties connectorDefaults() const override { return connectorSettings(); }
     /// Logs that @p operation on connection @p name cannot be done on a port with several connections.
     void logUnsupported(const char *operation, const std::string &name);
     /// Takes one marshalled sample; false when none was waiting. The id of the connection it came

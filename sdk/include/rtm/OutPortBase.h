@@ -58,8 +58,10 @@ public:
     void removeDirectPeer(const std::string &connectorId);
 
 protected:
-    /// Refuses, with a logged message, the interface types the runtime does not carry.
-    ReturnCode_t publishInterfaces(ConnectorProfile &connector_profile) override;
+    /// Writes the runtime's refusal of a connector to the component's log.
+    void refused(const ConnectorProfile &profile, const std::string &problem) const override;
+    /// The settings init() took, under each connector's own.
+    ::Runtime::Properties connectorDefaults() const override { return connectorSettings(); }
     /// Gives @p value to the InPorts of this process connected directly (one copy, no marshalling).
     void writeDirect(const void *value, const std::type_info &type);
     /// Calls the ON_BUFFER_WRITE and ON_SEND listeners with a sample about to be sent.
