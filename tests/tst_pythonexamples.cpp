@@ -16,13 +16,17 @@
 //   exit() at the end taking the program with it;
 // - StaticFsm: Inputbutton's commands driving Microwave's static state machine through event
 //   ports;
+// - CSPSample and CSPSelectSample: writers and readers on CSP channels, selecting among them;
+//   CSPStaticFsmSample failing as it fails on OpenRTM-aist-Python;
 // and the same abilities through components of ours (data/python) that need no corpus: a component
 // with two configuration sets and every configuration listener; a Python module's component as
 // the member of a PeriodicECSharedComposite of rtmanager; a component that ticks its own
 // ExtTrigExecutionContext; a Python component created in a slave manager of its own, whose end
 // leaves the master serving; wide characters, unions and object references in samples
 // (data/python/widechars.py, unions.py, references.py), static FSMs (staticfsm.py), anys and
-// NVLists (anys.py), and values straight to CDR and back as through the converter (directcdr.py).
+// NVLists (anys.py), values straight to CDR and back as through the converter (directcdr.py), and
+// CSP channels, their selection and event ports (csp.py), and rtc.conf's port settings as the defaults
+// of connections (portsettings.py).
 #include "hostrtctl.h"
 #include "pythonscripts.h"
 #include "simulatedhosts.h"
@@ -68,13 +72,18 @@ private slots:
     void serializerExampleRunsUnchanged_data();
     void serializerExampleRunsUnchanged();
     void serializerExampleRunsAsItsRtcConfSays();
+    void cspExamplesRunUnchanged_data();
+    void cspExamplesRunUnchanged();
+    void cspFsmExampleFailsAsOnOpenRtm();
     void dataTypesConvert_data();
     void dataTypesConvert();
 
 private:
     /// The corpus example @p file (`ConfigSample/ConfigSample.py`); empty when the corpus is absent.
     static QString example(const QString &file);
-    static QStringList exampleConf(const QString &file);
+    /// The lines of the example's rtc.conf @p file for the test's name server (see the definition);
+    /// its logger's lines too when @p withLogger.
+    static QStringList exampleConf(const QString &file, bool withLogger = false);
     /// rtctl with more than its default 3 s per call: the Python components answer slowly under
     /// the sanitizers while other tests run.
     bool rtctlSucceeds(QStringList arguments) const
@@ -112,7 +121,7 @@ QString TestPythonExamples::example(const QString &file)
     return QFileInfo::exists(path) ? path : QString();
 }
 
-QStringList TestPythonExamples::exampleConf(const QString &file)
+QStringList TestPythonExamples::exampleConf(const QString &file, bool withLogger)
 {
     // The example's own lines, but for where names are bound and logged (the test's rtc.conf says);
     // its module folder (`./` beside it) is named in full.
@@ -122,7 +131,7 @@ QStringList TestPythonExamples::exampleConf(const QString &file)
     QStringList lines;
     for (const QString &line : QString::fromUtf8(conf.readAll()).split(QLatin1Char('\n'))) {
         if (!line.startsWith(QLatin1String("corba.nameservers")) && !line.startsWith(QLatin1String("naming.formats"))
-            && !line.startsWith(QLatin1String("logger.")))
+            && (withLogger || !line.startsWith(QLatin1String("logger."))))
             lines.append(line);
     }
     return lines << QStringLiteral("manager.modules.load_path: ") + QFileInfo(conf).absolutePath();
@@ -822,6 +831,102 @@ void TestPythonExamples::serializerExampleRunsAsItsRtcConfSays()
     m_live.stop(program);
 }
 
+void TestPythonExamples::cspExamplesRunUnchanged_data()
+{
+    // Each program runs as its .bat file starts it: one process whose rtc.conf creates the other
+    // components, connects them by CSP channels and activates them. What their log prints (at ERROR
+    // level, on standard output) is counted: the `expected` lines each appear several times, and no
+    // more than the channels let through (the slow readers bound the fast writers).
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("conf");
+    QTest::addColumn<QStringList>("instances");
+    QTest::addColumn<QStringList>("expected");
+    QTest::addColumn<QString>("fast");
+    QTest::addColumn<QString>("slow");
+    // DataOut2 writes at 1000 Hz into DataIn2's rendezvous channel (buffer.length 0), read once a second.
+    QTest::newRow("CSPSample") << "CSPSample/DataOut2.py"
+                               << "CSPSample/rtc_samplecsp.conf" << QStringList{"DataOut20.rtc", "DataIn20.rtc"}
+                               << QStringList{"writedata", "dataread: RTC.TimedLong(tm=RTC.Time(sec=0, nsec=0), data=1)"}
+                               << QString() << QString();
+    // One writer selects among three rendezvous readers reading 10, 2 and 1 times a second.
+    QTest::newRow("CSPSelectSample out1in3")
+        << "CSPSelectSample/DataOut_port3.py"
+        << "CSPSelectSample/rtc_out1in3.conf"
+        << QStringList{"DataOut_port30.rtc", "DataIn0.rtc", "DataIn1.rtc", "DataIn2.rtc"}
+        << QStringList{"datawrite: out1", "datawrite: out2", "datawrite: out3"} << "datawrite: out1"
+        << "datawrite: out3";
+    // Three writers (5, 2 and 1 times a second) into one reader's buffered ports.
+    QTest::newRow("CSPSelectSample out3in1")
+        << "CSPSelectSample/DataIn_port3.py"
+        << "CSPSelectSample/rtc_out3in1.conf"
+        << QStringList{"DataIn_port30.rtc", "DataOut0.rtc", "DataOut1.rtc", "DataOut2.rtc"}
+        << QStringList{"dataread: in1", "dataread: in2", "dataread: in3"} << "dataread: in1"
+        << "dataread: in3";
+    // One component selecting among three InPorts and three OutPorts.
+    QTest::newRow("CSPSelectSample out3in3")
+        << "CSPSelectSample/DataInOut.py"
+        << "CSPSelectSample/rtc_out3in3.conf"
+        << QStringList{"DataInOut0.rtc", "DataIn0.rtc", "DataOut2.rtc"}
+        << QStringList{"dataread: in1", "dataread: in3", "datawrite: out1", "datawrite: out3"} << "datawrite: out1"
+        << "datawrite: out3";
+}
+
+void TestPythonExamples::cspExamplesRunUnchanged()
+{
+    QFETCH(QString, program);
+    QFETCH(QString, conf);
+    QFETCH(QStringList, instances);
+    QFETCH(QStringList, expected);
+    QFETCH(QString, fast);
+    QFETCH(QString, slow);
+    const QString script = example(program);
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    QProcess *process = m_scripts.start(script, instances, runTimeoutMs, exampleConf(conf, true));
+    QVERIFY(process);
+    const auto times = [&](const QString &line) { return printed(process).count(line); };
+    const auto enough = [&] {
+        return std::all_of(expected.begin(), expected.end(), [&](const QString &line) { return times(line) >= 3; });
+    };
+    QTRY_VERIFY2_WITH_TIMEOUT(enough(), qPrintable(printed(process).right(3000)), runTimeoutMs);
+    const QString log = printed(process);
+    m_live.stop(process);
+    QVERIFY2(!log.contains(QLatin1String("Traceback")), qPrintable(log.left(3000)));
+    if (!fast.isEmpty())
+        QVERIFY2(log.count(fast) > log.count(slow), qPrintable(log.right(3000)));
+    // A channel passes a sample only when its reader takes one: at 1000 Hz without that, the
+    // fastest writer would have printed thousands of lines by now.
+    const qsizetype lines = log.count(QLatin1Char('\n'));
+    QVERIFY2(lines < 400, qPrintable(QStringLiteral("%1 lines:\n").arg(lines) + log.right(3000)));
+    if (program == QLatin1String("CSPSample/DataOut2.py")) {
+        // Each write ends when the reader takes its sample.
+        const qsizetype writes = log.count(QLatin1String("writedata"));
+        const qsizetype reads = log.count(QLatin1String("dataread"));
+        QVERIFY2(qAbs(writes - reads) <= 2, qPrintable(QStringLiteral("%1 writes, %2 reads").arg(writes).arg(reads)));
+    }
+}
+
+void TestPythonExamples::cspFsmExampleFailsAsOnOpenRtm()
+{
+    // CSPStaticFsmSample's Microwave makes its CSPMachine with two arguments where the class takes
+    // three (OpenRTM-aist-Python 2.1 too): the component fails to initialize with Python's message,
+    // and the program goes on without it, as on OpenRTM-aist-Python.
+    const QString script = example(QStringLiteral("CSPStaticFsmSample/Inputbutton.py"));
+    if (script.isEmpty())
+        QSKIP(NoPythonCorpus);
+    m_live.setErrorsRead(true);
+    QProcess *process = m_scripts.start(script, {QStringLiteral("Inputbutton0.rtc")}, runTimeoutMs,
+                                        exampleConf(QStringLiteral("CSPStaticFsmSample/rtc.conf")));
+    m_live.setErrorsRead(false);
+    QVERIFY(process);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(process).contains(QLatin1String(
+                                  "CSPMachine.__init__() missing 1 required positional argument: 'cspmgr'")),
+                              qPrintable(printed(process).right(3000)), runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(process).contains(QLatin1String("Microwave0 failed to initialize")),
+                              qPrintable(printed(process).right(3000)), runTimeoutMs);
+    m_live.stop(process);
+}
+
 void TestPythonExamples::dataTypesConvert_data()
 {
     QTest::addColumn<QString>("script");
@@ -833,6 +938,8 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("anys and NVLists") << QStringLiteral("anys");
     QTest::newRow("straight to CDR") << QStringLiteral("directcdr");
     QTest::newRow("serializers") << QStringLiteral("serializers");
+    QTest::newRow("CSP channels") << QStringLiteral("csp");
+    QTest::newRow("port settings") << QStringLiteral("portsettings");
 }
 
 void TestPythonExamples::dataTypesConvert()

@@ -29,6 +29,23 @@ class DataFlowComponentBase(object):
         """Finalizes the component and leaves its contexts; the manager then forgets it."""
         return self._rtc.exit()
 
+    def addInPort(self, name, inport):
+        added = self._rtc.addInPort(name, inport)
+        self._configurePort(inport)
+        return added
+
+    def addOutPort(self, name, outport):
+        added = self._rtc.addOutPort(name, outport)
+        self._configurePort(outport)
+        return added
+
+    def _configurePort(self, port):
+        """Hands a port that reads settings of its own (the CSP ports) the properties it was given when
+        added (rtc.conf's port.inport.<name>.*, …) and the component's logger."""
+        configure = getattr(port, "_configure", None)
+        if configure is not None:
+            configure(port.properties(), self._rtc._rtcout)
+
     def activate(self, ec_id):
         return self._rtc.activate(ec_id)
 

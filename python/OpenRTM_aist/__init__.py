@@ -26,6 +26,7 @@ from OpenRTM_aist.POA import POA
 from OpenRTM_aist.RingBuffer import RingBuffer
 from OpenRTM_aist.Listeners import ConnectorDataListener, ConnectorDataListenerT, ConnectorListener, \
     ConnectorListenerStatus, PortType
+from OpenRTM_aist.CSPPort import CSPInPort, CSPManager, CSPOutPort
 
 
 # The manager activates every component on one POA of its own.
