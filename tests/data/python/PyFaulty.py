@@ -4,17 +4,15 @@
 # traceback and keep the process (and onReset) working. And a component class whose constructor
 # raises: creating it fails, the process goes on.
 
+import functools
 import sys
 
 import OpenRTM_aist
 import RTC
+from testspec import component_spec
 
 
-def spec(name):
-    return ["implementation_id", name, "type_name", name, "description", "Raises in its callbacks",
-            "version", "1.0", "vendor", "RT Studio tests", "category", "test",
-            "activity_type", "DataFlowComponent", "max_instance", "1", "language", "Python",
-            "lang_type", "script", ""]
+spec = functools.partial(component_spec, description="Raises in its callbacks")
 
 
 class PyFaulty(OpenRTM_aist.DataFlowComponentBase):

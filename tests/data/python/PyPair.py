@@ -3,16 +3,15 @@
 # Two Python components in one process, a source counting on its OutPort and a sink printing what
 # its InPort receives, for connections whose both ends live in the same process.
 
+import functools
 import sys
 
 import OpenRTM_aist
 import RTC
+from testspec import component_spec
 
 
-def spec(name):
-    return ["implementation_id", name, "type_name", name, "description", "Same-process pair", "version", "1.0",
-            "vendor", "RT Studio tests", "category", "test", "activity_type", "DataFlowComponent",
-            "max_instance", "1", "language", "Python", "lang_type", "script", ""]
+spec = functools.partial(component_spec, description="Same-process pair")
 
 
 class PySource(OpenRTM_aist.DataFlowComponentBase):

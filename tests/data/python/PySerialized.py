@@ -8,16 +8,15 @@
 # its port and its data listener get; its InPort reads each connection's samples by that connection's
 # marshaling type (PyDoubleSource sends plain TimedDouble).
 
+import functools
 import sys
 
 import OpenRTM_aist
 import RTC
+from testspec import component_spec
 
 
-def spec(name):
-    return ["implementation_id", name, "type_name", name, "description", "Serialized pair", "version", "1.0",
-            "vendor", "RT Studio tests", "category", "test", "activity_type", "DataFlowComponent",
-            "max_instance", "1", "language", "Python", "lang_type", "script", ""]
+spec = functools.partial(component_spec, description="Serialized pair")
 
 
 class LongToDouble(OpenRTM_aist.CORBA_CdrMemoryStream):

@@ -7,6 +7,7 @@
 # an event port runs the machine's handler of the connection's fsm_event_name. Connections a CSP port
 # cannot make are refused. Exits non-zero on the first failure; prints "csp: ok" at the end.
 
+import functools
 import sys
 import threading
 import time
@@ -16,6 +17,7 @@ import OpenRTM_aist.CSPEventPort as CSPEventPort
 import OpenRTM_aist.CSPMachine as CSPMachine
 import OpenRTM_aist.StaticFSM as StaticFSM
 import RTC
+from testspec import component_spec
 
 made = {}
 trace = []
@@ -27,12 +29,7 @@ def check(condition, what):
         sys.stdout.flush()
         OpenRTM_aist.Manager.instance().shutdown()
         sys.exit(1)
-
-
-def spec(name):
-    return ["implementation_id", name, "type_name", name, "description", "CSP test", "version", "1.0",
-            "vendor", "RT Studio tests", "category", "test", "activity_type", "DataFlowComponent",
-            "max_instance", "1", "language", "Python", "lang_type", "script", ""]
+spec = functools.partial(component_spec, description="CSP test")
 
 
 @StaticFSM.FSM_TOPSTATE

@@ -6,18 +6,15 @@
 # buffers overwrite the oldest) each receive five samples. Exits non-zero on the first failure;
 # prints "portsettings: ok" at the end.
 
+import functools
 import sys
 
 import OpenRTM_aist
 import RTC
+from testspec import component_spec
 
 made = {}
-
-
-def spec(name):
-    return ["implementation_id", name, "type_name", name, "description", "Port settings test", "version", "1.0",
-            "vendor", "RT Studio tests", "category", "test", "activity_type", "DataFlowComponent",
-            "max_instance", "1", "language", "Python", "lang_type", "script", ""]
+spec = functools.partial(component_spec, description="Port settings test")
 
 
 class Writer(OpenRTM_aist.DataFlowComponentBase):
