@@ -563,14 +563,17 @@ void TestPythonService::autoTestExamplesRunUnchanged()
     const QString previous = QDir::currentPath();
     QVERIFY(QDir::setCurrent(folder.path()));
     const auto back = qScopeGuard([&previous] { QDir::setCurrent(previous); });
-    // As the example's rtc.conf and autotestin.conf: ten cycles a second, the newest sample kept.
-    const QString slow = QStringLiteral("exec_cxt.periodic.rate: 10\n");
+    // The components' settings as the example's rtc.conf names them: AutoTestOut writes ten times a
+    // second (autotestout.conf), AutoTestIn keeps the newest sample of each port (autotestin.conf)
+    // and reads at the default rate.
+    const auto configFile = [](const char *type, const char *file) {
+        return QStringLiteral("example.%1.config_file: %2%3\n").arg(QLatin1String(type), autoTestDir(), QLatin1String(file));
+    };
     QProcess *in = startScript(autoTestDir() + QStringLiteral("AutoTestIn.py"), stubs, QStringLiteral("AutoTestIn0.rtc"),
-                               slow + QStringLiteral("port.inport.in.buffer.length: 1\n"
-                                                     "port.inport.seqin.buffer.length: 1\n"));
+                               configFile("AutoTestIn", "autotestin.conf"));
     QVERIFY(in);
     QProcess *out = startScript(autoTestDir() + QStringLiteral("AutoTestOut.py"), stubs,
-                                QStringLiteral("AutoTestOut0.rtc"), slow);
+                                QStringLiteral("AutoTestOut0.rtc"), configFile("AutoTestOut", "autotestout.conf"));
     QVERIFY(out);
     for (const QStringList &link : {QStringList{"AutoTestOut0.rtc:out", "AutoTestIn0.rtc:in"},
                                     QStringList{"AutoTestOut0.rtc:seqout", "AutoTestIn0.rtc:seqin"},
