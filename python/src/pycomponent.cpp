@@ -35,7 +35,7 @@ PyComponent::PyComponent(RTC::Manager *manager)
 
 PyComponent *PyComponent::create(RTC::Manager *manager, const py::object &cls)
 {
-    py::gil_scoped_acquire gil;
+    Gil gil;
     auto *component = new PyComponent(manager);
     try {
         component->m_self = cls(py::cast(manager, py::return_value_policy::reference));
@@ -58,7 +58,7 @@ PyComponent::~PyComponent()
             port.release();
         return;
     }
-    py::gil_scoped_acquire gil;
+    Gil gil;
     if (m_self && py::hasattr(m_self, "_rtc"))
         m_self.attr("_rtc") = py::none();
     m_ports.clear();
@@ -150,7 +150,7 @@ RTC::ReturnCode_t PyComponent::call(const char *callback, Arguments... arguments
 {
     if (!interpreterAlive() || !m_ownCallbacks.count(callback))
         return RTC::RTC_OK;
-    py::gil_scoped_acquire gil;
+    Gil gil;
     if (!m_self || !py::hasattr(m_self, callback))
         return RTC::RTC_OK;
     try {

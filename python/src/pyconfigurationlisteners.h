@@ -33,7 +33,7 @@ protected:
     {
         if (!interpreterAlive())
             return;
-        pybind11::gil_scoped_acquire gil;
+        Gil gil;
         try {
             m_listener(std::forward<Arguments>(arguments)...);
         } catch (pybind11::error_already_set &error) {

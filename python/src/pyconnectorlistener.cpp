@@ -20,7 +20,7 @@ PyConnectorListener::ReturnCode PyConnectorListener::operator()(RTC::ConnectorIn
 {
     if (!interpreterAlive())
         return NO_CHANGE;
-    py::gil_scoped_acquire gil;
+    Gil gil;
     try {
         m_listener(info);
     } catch (py::error_already_set &error) {

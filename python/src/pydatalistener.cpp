@@ -35,7 +35,7 @@ PyDataListener::ReturnCode PyDataListener::operator()(RTC::ConnectorInfo &info, 
     const std::string marshaling = asWritten ? std::string("cdr")
         : marshalingtype.empty() || marshalingtype == "cdr" ? PySerializers::marshalingType(info.properties, m_side)
                                                             : marshalingtype;
-    py::gil_scoped_acquire gil;
+    Gil gil;
     try {
         // A user serializer is handed a value of the port's type, as the port's own read gives it.
         const py::object dataType = marshaling == "cdr" ? py::none() : PyDataTypes::instance().defaultValue(m_repositoryId);

@@ -26,7 +26,7 @@ bool PyInPort::read(std::string name)
 {
     (void)name; // samples are not told apart by connection (as in the SDK's InPort with several)
     // Also called by the runtime (readAll) from threads that do not hold the GIL.
-    py::gil_scoped_acquire gil;
+    Gil gil;
     return takeSample();
 }
 

@@ -37,8 +37,42 @@ void releasePython(py::object &object)
         object.release();
         return;
     }
-    py::gil_scoped_acquire gil;
+    Gil gil;
     object = py::object();
+}
+
+namespace {
+
+/// Holds one more use of the thread state Gil made for this thread, given up when the thread ends.
+struct KeptThreadState
+{
+    bool kept = false;
+    ~KeptThreadState()
+    {
+        if (!kept || !interpreterAlive())
+            return;
+        // Back to one use, which this acquisition's end gives up: the state is freed.
+        py::gil_scoped_acquire gil;
+        gil.dec_ref();
+    }
+};
+
+thread_local KeptThreadState keptState;
+
+} // namespace
+
+bool Gil::threadHasNoState()
+{
+    return !keptState.kept && PyGILState_GetThisThreadState() == nullptr;
+}
+
+Gil::Gil()
+    : m_first(threadHasNoState())
+{
+    if (m_first) {
+        m_acquired.inc_ref();
+        keptState.kept = true;
+    }
 }
 
 } // namespace RtPython

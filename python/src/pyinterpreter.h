@@ -20,4 +20,25 @@ bool interpreterAlive();
 /// Drops @p object's reference with the GIL, or leaks it when the interpreter is gone.
 void releasePython(pybind11::object &object);
 
+/**
+ * The GIL for the runtime's threads (ORB and execution context threads) calling into Python. As
+ * pybind11::gil_scoped_acquire, but the Python thread state it makes for such a thread is kept
+ * until the thread ends rather than made and freed on every call (with its frame stack, which
+ * Python maps and unmaps), which took microseconds of each sample a Python port received.
+ */
+class Gil
+{
+public:
+    Gil();
+    Gil(const Gil &) = delete;
+    Gil &operator=(const Gil &) = delete;
+
+private:
+    /// True when this thread has no Python thread state yet (read before acquiring).
+    static bool threadHasNoState();
+
+    bool m_first;
+    pybind11::gil_scoped_acquire m_acquired;
+};
+
 } // namespace RtPython

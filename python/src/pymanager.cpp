@@ -21,7 +21,7 @@ py::object *moduleInitProc = nullptr;
 
 void callModuleInitProc(RTC::Manager *manager)
 {
-    py::gil_scoped_acquire gil;
+    Gil gil;
     if (moduleInitProc == nullptr)
         return;
     try {
@@ -63,7 +63,7 @@ bool registerFactory(RTC::Manager &manager, const coil::Properties &profile, py:
         return false;
     std::shared_ptr<py::object> held(new py::object(std::move(cls)), [](py::object *object) {
         if (interpreterAlive()) {
-            py::gil_scoped_acquire gil;
+            Gil gil;
             delete object;
         }
     });

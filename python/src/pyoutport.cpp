@@ -27,7 +27,7 @@ PyOutPort::~PyOutPort()
 
 bool PyOutPort::write()
 {
-    py::gil_scoped_acquire gil;
+    Gil gil;
     return writeValue(m_value);
 }
 
@@ -44,7 +44,7 @@ bool PyOutPort::writeValue(py::object value)
             return Runtime::CdrView{little.data(), little.size()};
         auto &bytes = others[{littleEndian, marshaling}];
         if (bytes.empty()) {
-            py::gil_scoped_acquire gil;
+            Gil gil;
             try {
                 bytes = PySerializers::write(marshaling, sample, dataType(), littleEndian);
             } catch (const std::exception &error) {

@@ -85,7 +85,7 @@ bool PyParameter::set(const std::string &text)
 {
     if (!interpreterAlive())
         return false;
-    py::gil_scoped_acquire gil;
+    Gil gil;
     try {
         if (!m_trans.is_none())
             return py::bool_(m_trans(m_variable, text));

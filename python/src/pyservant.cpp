@@ -65,7 +65,7 @@ private:
 
     void callPython(PyServant &target)
     {
-        py::gil_scoped_acquire gil;
+        Gil gil;
         const PyValueConverter &converter = PyDataTypes::instance().converter();
         try {
             const PyValueConverter::CallableReferences callable;
