@@ -9,6 +9,8 @@
 
 #include <pybind11/stl.h>
 
+#include <unistd.h>
+
 namespace py = pybind11;
 
 namespace RtPython {
@@ -88,6 +90,18 @@ py::object createComponent(RTC::Manager &manager, const std::string &arguments)
     return python ? python->pythonObject() : py::none();
 }
 
+/**
+ * OpenRTM-aist-Python's shutdown(): the program's main thread (the script, which ends next) waits
+ * until the manager has stopped, as there; the runtime would otherwise still be stopping the ORB
+ * while the process exits. A component's thread only starts it.
+ */
+void shutdownManager(RTC::Manager &manager)
+{
+    manager.shutdown();
+    if (gettid() == getpid())
+        manager.join();
+}
+
 } // namespace
 
 void bindManager(py::module_ &module)
@@ -113,7 +127,7 @@ void bindManager(py::module_ &module)
              py::arg("profile"), py::arg("new_func"), py::arg("delete_func") = py::none())
         .def("createComponent", &createComponent, py::arg("comp_args"))
         .def("getConfig", &RTC::Manager::getConfig, py::return_value_policy::reference)
-        .def("shutdown", &RTC::Manager::shutdown, Release())
+        .def("shutdown", &shutdownManager, Release())
         .def("join", &RTC::Manager::join, Release());
 }
 

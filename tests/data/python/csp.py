@@ -29,6 +29,8 @@ def check(condition, what):
         sys.stdout.flush()
         OpenRTM_aist.Manager.instance().shutdown()
         sys.exit(1)
+
+
 spec = functools.partial(component_spec, description="CSP test")
 
 
