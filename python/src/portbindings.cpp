@@ -42,20 +42,30 @@ py::list connectorProfiles(Runtime::PortBase &port)
     return result;
 }
 
-/// OpenRTM-aist-Python's disconnect(connector_id): RTC.RTC_OK, or why not.
+/**
+ * What InPort and OutPort both have: name(), their connections' profiles and listeners, their
+ * properties (rtc.conf's port settings), disconnect(connector_id) / disconnect_all() answering
+ * RTC.RTC_OK or why not, and _setCspChannel(any_data_type), which makes the port an end of CSP
+ * channels (OpenRTM_aist.CSPPort), of data type "any" when asked.
+ */
 template <typename Port>
-int disconnect(Port &port, const std::string &connectorId)
+void bindPortMethods(py::class_<Port> &port)
 {
-    return int(port.disconnect(connectorId.c_str()));
-}
-
-/// Makes @p port an end of CSP channels (OpenRTM_aist.CSPPort), of data type "any" when asked.
-template <typename Port>
-void setCspChannel(Port &port, bool anyDataType)
-{
-    port.setCspChannel();
-    if (anyDataType)
-        port.setProperty("dataport.data_type", "any");
+    using Release = py::call_guard<py::gil_scoped_release>;
+    port.def("name", [](Port &p) { return p.Runtime::PortBase::name(); })
+        .def("get_connector_profiles", [](Port &p) { return connectorProfiles(p); })
+        .def("addConnectorDataListener", &Port::addDataListener, py::arg("listener_type"), py::arg("listener"))
+        .def("addConnectorListener", &Port::addConnectorListener, py::arg("listener_type"), py::arg("listener"))
+        .def("properties", [](Port &p) -> coil::Properties & { return p.properties(); },
+             py::return_value_policy::reference_internal)
+        .def("disconnect", [](Port &p, const std::string &id) { return int(p.disconnect(id.c_str())); },
+             py::arg("connector_id"), Release())
+        .def("disconnect_all", [](Port &p) { return int(p.disconnect_all()); }, Release())
+        .def("_setCspChannel", [](Port &p, bool anyDataType) {
+            p.setCspChannel();
+            if (anyDataType)
+                p.setProperty("dataport.data_type", "any");
+        }, py::arg("any_data_type"));
 }
 
 } // namespace
@@ -67,40 +77,22 @@ void bindPorts(py::module_ &module)
     using Release = py::call_guard<py::gil_scoped_release>;
     // The buffer OpenRTM-aist-Python's constructors take is not the connections' buffer there either:
     // each connection makes its own from the connector's properties (buffer.length, …).
-    py::class_<PyInPort>(module, "InPort")
-        .def(py::init([](const std::string &name, py::object value, const py::object &) {
-                 return new PyInPort(name, std::move(value));
-             }),
-             py::arg("name"), py::arg("value"), py::arg("buffer") = py::none())
-        .def("name", [](PyInPort &port) { return port.Runtime::PortBase::name(); })
+    py::class_<PyInPort> inPort(module, "InPort");
+    inPort.def(py::init([](const std::string &name, py::object value, const py::object &) {
+                   return new PyInPort(name, std::move(value));
+               }),
+               py::arg("name"), py::arg("value"), py::arg("buffer") = py::none())
         .def("isNew", [](PyInPort &port) { return port.isNew(); }, Release())
         .def("isEmpty", [](PyInPort &port) { return port.isEmpty(); }, Release())
-        .def("read", &PyInPort::readValue)
-        .def("get_connector_profiles", [](PyInPort &port) { return connectorProfiles(port); })
-        .def("addConnectorDataListener", &PyInPort::addDataListener, py::arg("listener_type"), py::arg("listener"))
-        .def("addConnectorListener", &PyInPort::addConnectorListener, py::arg("listener_type"),
-             py::arg("listener"))
-        .def("properties", [](PyInPort &port) -> coil::Properties & { return port.properties(); },
-             py::return_value_policy::reference_internal)
-        .def("disconnect", &disconnect<PyInPort>, py::arg("connector_id"), Release())
-        .def("disconnect_all", [](PyInPort &port) { return int(port.disconnect_all()); }, Release())
-        .def("_setCspChannel", &setCspChannel<PyInPort>, py::arg("any_data_type"));
-    py::class_<PyOutPort>(module, "OutPort")
-        .def(py::init([](const std::string &name, py::object value, const py::object &) {
-                 return new PyOutPort(name, std::move(value));
-             }),
-             py::arg("name"), py::arg("value"), py::arg("buffer") = py::none())
-        .def("name", [](PyOutPort &port) { return port.Runtime::PortBase::name(); })
-        .def("write", &PyOutPort::writeValue, py::arg("value") = py::none())
-        .def("get_connector_profiles", [](PyOutPort &port) { return connectorProfiles(port); })
-        .def("addConnectorDataListener", &PyOutPort::addDataListener, py::arg("listener_type"), py::arg("listener"))
-        .def("addConnectorListener", &PyOutPort::addConnectorListener, py::arg("listener_type"),
-             py::arg("listener"))
-        .def("properties", [](PyOutPort &port) -> coil::Properties & { return port.properties(); },
-             py::return_value_policy::reference_internal)
-        .def("disconnect", &disconnect<PyOutPort>, py::arg("connector_id"), Release())
-        .def("disconnect_all", [](PyOutPort &port) { return int(port.disconnect_all()); }, Release())
-        .def("_setCspChannel", &setCspChannel<PyOutPort>, py::arg("any_data_type"));
+        .def("read", &PyInPort::readValue);
+    bindPortMethods(inPort);
+    py::class_<PyOutPort> outPort(module, "OutPort");
+    outPort.def(py::init([](const std::string &name, py::object value, const py::object &) {
+                    return new PyOutPort(name, std::move(value));
+                }),
+                py::arg("name"), py::arg("value"), py::arg("buffer") = py::none())
+        .def("write", &PyOutPort::writeValue, py::arg("value") = py::none());
+    bindPortMethods(outPort);
 }
 
 } // namespace RtPython
