@@ -234,6 +234,15 @@ void Manager::run()
     } catch (const CORBA::BAD_INV_ORDER &) {
         // A shutdown request came in before run() was reached: the ORB is down already.
     }
+    // The ORB stops before the thread that stopped it has ended; whoever waits for run() to return
+    // (a Python program about to end its interpreter) must find the components' finalization over.
+    std::thread stopper;
+    {
+        std::lock_guard lock(m_mutex);
+        stopper.swap(m_shutdownThread);
+    }
+    if (stopper.joinable())
+        stopper.join();
     // The new run of the process must find the endpoint free.
     if (m_restart)
         destroyOrb();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The extension module under OpenRTM_aist and RTC: OpenRTM-aist-Python's API over the C++ SDK.
 #include "bindings.h"
+#include "pyinterpreter.h"
 
 PYBIND11_MODULE(_rtstudio, module)
 {
@@ -17,4 +18,5 @@ PYBIND11_MODULE(_rtstudio, module)
     RtPython::bindConfiguration(module);
     RtPython::bindObjectReferences(module);
     RtPython::bindManager(module);
+    RtPython::guardThreadEnds();
 }

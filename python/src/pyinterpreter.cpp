@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "pyinterpreter.h"
 
+#include <mutex>
+
 namespace py = pybind11;
 
 namespace RtPython {
@@ -43,13 +45,25 @@ void releasePython(py::object &object)
 
 namespace {
 
+/// Guards interpreterEnding; a thread giving its state up holds it while it waits for the GIL.
+std::mutex threadEndMutex;
+/// Set by an atexit function, before the interpreter begins to finalize.
+bool interpreterEnding = false;
+
 /// Holds one more use of the thread state Gil made for this thread, given up when the thread ends.
 struct KeptThreadState
 {
     bool kept = false;
     ~KeptThreadState()
     {
-        if (!kept || !interpreterAlive())
+        if (!kept)
+            return;
+        // Python ends a thread that wants the GIL once finalization has begun, which in this
+        // destructor (noexcept) would abort the process. The atexit function waits for this lock,
+        // with the GIL released, so finalization cannot begin before the GIL is ours. A state
+        // left behind is freed with the interpreter.
+        std::lock_guard lock(threadEndMutex);
+        if (interpreterEnding || !interpreterAlive())
             return;
         // Back to one use, which this acquisition's end gives up: the state is freed.
         py::gil_scoped_acquire gil;
@@ -60,6 +74,15 @@ struct KeptThreadState
 thread_local KeptThreadState keptState;
 
 } // namespace
+
+void guardThreadEnds()
+{
+    py::module_::import("atexit").attr("register")(py::cpp_function([] {
+        py::gil_scoped_release released;
+        std::lock_guard lock(threadEndMutex);
+        interpreterEnding = true;
+    }));
+}
 
 bool Gil::threadHasNoState()
 {

@@ -17,6 +17,11 @@ void printError(const std::string &context, pybind11::error_already_set &error);
  * and acquiring the GIL after finalization would hang them.
  */
 bool interpreterAlive();
+/**
+ * Registers the atexit function after which threads ending no longer give their Python thread
+ * state back (the interpreter frees them as it ends). Called once, when the module is imported.
+ */
+void guardThreadEnds();
 /// Drops @p object's reference with the GIL, or leaks it when the interpreter is gone.
 void releasePython(pybind11::object &object);
 
