@@ -941,6 +941,7 @@ void TestPythonExamples::dataTypesConvert_data()
     QTest::newRow("serializers") << QStringLiteral("serializers");
     QTest::newRow("CSP channels") << QStringLiteral("csp");
     QTest::newRow("port settings") << QStringLiteral("portsettings");
+    QTest::newRow("shutdown") << QStringLiteral("shutdown");
 }
 
 void TestPythonExamples::dataTypesConvert()
