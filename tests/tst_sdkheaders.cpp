@@ -188,7 +188,7 @@ private slots:
 
 private:
     QStringList packageFlags(QString *error);
-    QHash<QString, QPair<bool, QString>> compile(const QStringList &flags,
+    QHash<QString, QPair<bool, QString>> compile(const QString &folder, const QStringList &flags,
                                                  const QList<QPair<QString, QByteArray>> &sources);
     void compileAll(const QStringList &flags);
 
@@ -252,10 +252,16 @@ QStringList TestSdkHeaders::packageFlags(QString *error)
 }
 
 // Compiles each source of @p sources (by key), as many at a time as there are cores: whether it
-// compiled, and the compiler's output with -H's include tree.
-QHash<QString, QPair<bool, QString>> TestSdkHeaders::compile(const QStringList &flags,
+// compiled, and the compiler's output with -H's include tree. The sources are files of m_work's
+// @p folder named by relative paths, so that ccache (when installed) finds the next run's
+// compilations, made in another temporary folder, in its cache.
+QHash<QString, QPair<bool, QString>> TestSdkHeaders::compile(const QString &folder, const QStringList &flags,
                                                             const QList<QPair<QString, QByteArray>> &sources)
 {
+    const QString dir = m_work.filePath(folder);
+    QDir().mkpath(dir);
+    const QString ccache = QStandardPaths::findExecutable(QStringLiteral("ccache"));
+    const QString compiler = QStringLiteral(RTSTUDIO_CXX_COMPILER);
     const int parallel = qMax(1, QThread::idealThreadCount());
     QHash<QString, QPair<bool, QString>> results;
     QList<QPair<QString, QByteArray>> waiting = sources;
@@ -263,14 +269,25 @@ QHash<QString, QPair<bool, QString>> TestSdkHeaders::compile(const QStringList &
     while (!waiting.isEmpty() || !running.isEmpty()) {
         while (!waiting.isEmpty() && running.size() < parallel) {
             const auto [key, source] = waiting.takeFirst();
+            const QString file = QString(key).replace('/', '_') + QStringLiteral(".cpp");
+            QFile written(dir + '/' + file);
+            if (!written.open(QIODevice::WriteOnly) || written.write(source) != source.size()) {
+                results.insert(key, {false, QStringLiteral("cannot write %1").arg(written.fileName())});
+                continue;
+            }
+            written.close();
             auto *process = new QProcess(this);
             process->setProcessChannelMode(QProcess::MergedChannels);
-            process->start(QStringLiteral(RTSTUDIO_CXX_COMPILER),
-                           QStringList(flags) << "-fsyntax-only" << "-H" << "-x" << "c++" << "-");
-            process->write(source);
-            process->closeWriteChannel();
+            process->setWorkingDirectory(dir);
+            const QStringList arguments = QStringList(flags) << "-fsyntax-only" << "-H" << file;
+            if (ccache.isEmpty())
+                process->start(compiler, arguments);
+            else
+                process->start(ccache, QStringList(compiler) << arguments);
             running.append({key, process});
         }
+        if (running.isEmpty())
+            continue;
         const auto [key, process] = running.takeFirst();
         const bool ok = process->waitForFinished(compileTimeoutMs) && process->exitStatus() == QProcess::NormalExit
                         && process->exitCode() == 0;
@@ -291,12 +308,12 @@ void TestSdkHeaders::compileAll(const QStringList &flags)
     QList<QPair<QString, QByteArray>> probes;
     for (const HeaderFact &fact : m_facts)
         probes.append({fact.name, probeSource(fact.name, m_symbols.value(fact.name))});
-    const auto probed = compile(flags, probes);
+    const auto probed = compile(QStringLiteral("probes"), flags, probes);
     QList<QPair<QString, QByteArray>> alone;
     for (const HeaderFact &fact : m_facts)
         if (!probed.value(fact.name).first)
             alone.append({fact.name, probeSource(fact.name, {})});
-    const auto aloneResults = compile(flags, alone);
+    const auto aloneResults = compile(QStringLiteral("alone"), flags, alone);
     for (const HeaderFact &fact : m_facts) {
         const auto withProbes = probed.value(fact.name);
         const auto plain = withProbes.first ? withProbes : aloneResults.value(fact.name);
