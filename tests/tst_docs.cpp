@@ -14,6 +14,8 @@
 #include <QSet>
 #include <QTest>
 
+#include <algorithm>
+
 namespace {
 
 const QString sourceDir = QStringLiteral(RTSTUDIO_SOURCE_DIR);
@@ -209,6 +211,14 @@ void TestDocs::setUpCommandsAgree()
     const QString japanese = readText(QStringLiteral("docs/ja/README.md"));
     QVERIFY(japanese.contains(build));
     QVERIFY(japanese.contains(test));
+    // Getting started builds as the first command does, without starting rtstudio.
+    for (const QString &page : {QStringLiteral("docs/getting-started.md"), QStringLiteral("docs/ja/getting-started.md")}) {
+        const QStringList codes = codeTexts(readText(page));
+        const bool same = std::any_of(codes.cbegin(), codes.cend(), [&](const QString &code) {
+            return setUp.match(code).hasMatch() && build.startsWith(code.trimmed() + QStringLiteral(" && "));
+        });
+        QVERIFY2(same, qPrintable(page));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestDocs)
