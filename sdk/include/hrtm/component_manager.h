@@ -37,10 +37,10 @@ template<class T_New> RTC::RTObject_impl *Create(RTC::Manager * /* manager */)
     return new T_New();
 }
 
-/*! The matching deleter. */
+/*! The matching deleter: @p rtc is the @p T_Delete Create made (RTObject_impl is only declared here). */
 template<class T_Delete> void Delete(RTC::RTObject_impl *rtc)
 {
-    delete rtc;
+    delete static_cast<T_Delete *>(rtc);
 }
 
 class DataFlowComponent;
