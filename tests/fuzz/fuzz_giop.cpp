@@ -1,18 +1,25 @@
 // SPDX-License-Identifier: MIT
 // The network surface: GIOP messages from a peer, through omniORB's request path, into the servants a
-// manager serves (RTM::Manager, a component's RTObject and SDO interfaces, its execution context, its
-// configuration, its ports and an InPortCdr of a connection), in this process over loopback TCP.
+// manager serves (RTM::Manager with RTStudio::Manager's operations, a component's RTObject and SDO
+// interfaces, its execution context, its configuration, its ports, the InPortCdr of a push connection,
+// the OutPortCdr of a pull connection and the manager's package installer), in this process over
+// loopback TCP.
 //
 // Input: byte 0 chooses the object (bits 0-2) or, with bit 7 set, sends the rest as it is on a
 // connection of its own (any GIOP message, or none); byte 1 chooses an operation of the object's
 // interface; bit 0 of byte 2 chooses the byte order; the rest is the request's body (the operation's
 // arguments as CDR). A request is framed correctly, so that every input reaches the servant's
 // unmarshalling. Left out: operations that end the process or the component (shutdown, restart, fork,
-// exit, finalize) or start processes (slaves: manager.slaves.max is 0).
+// exit, finalize) or start processes (slaves: manager.slaves.max is 0), and install_url, which
+// would reach the hosts its inputs name (install_package takes the same package files pushed).
 #include "manager.h"
+#include "packageinstallerservant.h"
 #include "rtobject.h"
 
 #include <RTC.hh>
+#include <RTStudioManager.hh>
+
+#include <QCoreApplication>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -21,12 +28,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <tuple>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -55,7 +64,7 @@ const std::vector<const char *> managerOperations {
     "create_component", "delete_component", "get_components", "get_components_by_name", "get_profile",
     "get_configuration", "set_configuration", "is_master", "get_master_managers", "add_master_manager",
     "remove_master_manager", "get_slave_managers", "add_slave_manager", "remove_slave_manager", "get_service",
-    "_is_a", "_non_existent", "_interface"};
+    "_is_a", "_non_existent", "_interface", "create_components", "get_package_installer"};
 const std::vector<const char *> componentOperations {
     "initialize", "is_alive", "attach_context", "detach_context", "get_context", "get_owned_contexts",
     "get_participating_contexts", "get_context_handle", "on_initialize", "on_finalize", "on_startup", "on_shutdown",
@@ -77,6 +86,9 @@ const std::vector<const char *> portOperations {
     "get_port_profile", "get_connector_profiles", "get_connector_profile", "connect", "disconnect",
     "disconnect_all", "notify_connect", "notify_disconnect"};
 const std::vector<const char *> inPortCdrOperations {"put", "_is_a", "_non_existent"};
+const std::vector<const char *> outPortCdrOperations {"get", "_is_a", "_non_existent"};
+const std::vector<const char *> installerOperations {"install_package", "uninstall", "list_installed", "_is_a",
+                                                     "_non_existent"};
 
 struct Target
 {
@@ -438,6 +450,8 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
              // over a million inputs, and the refusal beyond it is fuzzed too.
              {"manager.components.max", "8"},
              {"manager.modules.load_path", folder},
+             // The installer's store: a folder of the run's own, with no key to trust.
+             {"manager.packages.store", std::string(folder) + "/store"},
              // Servants call the references inputs carry: unreachable ones fail fast.
              {"corba.call_timeout", "500"},
              {"corba.connect_timeout", "500"},
@@ -450,11 +464,20 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
         config.set("corba.args", orbArguments);
     // Never destroyed: it serves until the process ends, as rtmanager's does.
     static Runtime::Manager &manager = *new Runtime::Manager(config);
+    // The package installer as rtmanager makes it, with the Qt application object its tools want.
+    static int applicationArgc = 1;
+    static char applicationName[] = "fuzz_giop";
+    static char *applicationArgv[] = {applicationName, nullptr};
+    static QCoreApplication &application = *new QCoreApplication(applicationArgc, applicationArgv);
+    (void)application;
     std::string error;
-    if (!manager.start(&error)) {
+    PortableServer::ServantBase_var installerServant = Runtime::PackageInstallerServant::create(manager, &error);
+    if (installerServant.in() == nullptr || !manager.start(&error)) {
         std::fprintf(stderr, "fuzz_giop: the manager does not start: %s\n", error.c_str());
         std::abort();
     }
+    CORBA::Object_var installerReference = manager.activate(installerServant.in());
+    manager.setPackageInstaller(installerReference);
     Runtime::Properties profile;
     for (const auto &[key, value] : std::vector<std::pair<const char *, const char *>> {
              {"implementation_id", "FuzzTarget"}, {"type_name", "FuzzTarget"}, {"version", "1.0.0"},
@@ -484,30 +507,46 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
         (name.size() > 3 && name.compare(name.size() - 3, 3, ".in") == 0 ? in : out) =
             RTC::PortService::_duplicate(ports[i]);
     }
-    // The component's OutPort connected to its InPort: an InPortCdr that takes samples.
-    RTC::ConnectorProfile connector;
-    connector.name = CORBA::string_dup("fuzz");
-    connector.connector_id = CORBA::string_dup("");
-    connector.ports.length(2);
-    connector.ports[0] = RTC::PortService::_duplicate(out);
-    connector.ports[1] = RTC::PortService::_duplicate(in);
-    const char *const properties[][2] = {{"dataport.interface_type", "corba_cdr"},
-                                         {"dataport.dataflow_type", "push"},
-                                         {"dataport.subscription_type", "flush"},
-                                         {"dataport.data_type", "IDL:RTC/TimedLong:1.0"}};
-    connector.properties.length(4);
-    for (CORBA::ULong i = 0; i < 4; ++i) {
-        connector.properties[i].name = CORBA::string_dup(properties[i][0]);
-        connector.properties[i].value <<= properties[i][1];
-    }
-    if (out->connect(connector) == RTC::RTC_OK) {
+    // The component's OutPort connected to its InPort twice: pushed, an InPortCdr that takes
+    // samples; pulled, an OutPortCdr that gives them.
+    for (const auto &[flow, end, operations] :
+         {std::tuple("push", "inport", &inPortCdrOperations), std::tuple("pull", "outport", &outPortCdrOperations)}) {
+        RTC::ConnectorProfile connector;
+        connector.name = CORBA::string_dup(flow);
+        connector.connector_id = CORBA::string_dup("");
+        connector.ports.length(2);
+        connector.ports[0] = RTC::PortService::_duplicate(out);
+        connector.ports[1] = RTC::PortService::_duplicate(in);
+        const char *const properties[][2] = {{"dataport.interface_type", "corba_cdr"},
+                                             {"dataport.dataflow_type", flow},
+                                             {"dataport.subscription_type", "flush"},
+                                             {"dataport.data_type", "IDL:RTC/TimedLong:1.0"},
+                                             {"dataport.allow_dup_connection", "YES"}};
+        connector.properties.length(std::size(properties));
+        for (CORBA::ULong i = 0; i < std::size(properties); ++i) {
+            connector.properties[i].name = CORBA::string_dup(properties[i][0]);
+            connector.properties[i].value <<= properties[i][1];
+        }
+        const std::string iorKey = std::string("dataport.corba_cdr.") + end + "_ior";
+        const RTC::ReturnCode_t connected = out->connect(connector);
+        if (connected != RTC::RTC_OK) {
+            std::fprintf(stderr, "fuzz_giop: the %s connection was refused (%d)\n", flow, int(connected));
+            std::abort();
+        }
         for (CORBA::ULong i = 0; i < connector.properties.length(); ++i) {
             const char *value = nullptr;
-            if (std::string(connector.properties[i].name.in()) == "dataport.corba_cdr.inport_ior"
-                && (connector.properties[i].value >>= value))
-                s_targets.push_back({objectKey(value), &inPortCdrOperations});
+            if (iorKey == connector.properties[i].name.in() && (connector.properties[i].value >>= value))
+                s_targets.push_back({objectKey(value), operations});
         }
     }
+    RTM::Manager_var reference = manager.reference();
+    RTStudio::Manager_var extended = RTStudio::Manager::_narrow(reference);
+    RTStudio::PackageInstaller_var installer = extended->get_package_installer();
+    if (CORBA::is_nil(installer)) {
+        std::fprintf(stderr, "fuzz_giop: the manager has no package installer\n");
+        std::abort();
+    }
+    s_targets.push_back({keyOf(orb, installer), &installerOperations});
     std::fprintf(stderr, "fuzz_giop: %zu objects served\n", s_targets.size());
     // The harness's framing reaches the servants: a request without arguments gets its answer.
     for (const Target &target : s_targets) {
