@@ -111,7 +111,7 @@ private slots:
     void rejectsBrokenFiles_data();
     void rejectsBrokenFiles();
     void reportsMissingRequiredParts();
-    void loadsAndSavesLargeSystemsQuickly();
+    void loadsAndSavesLargeSystems();
 };
 
 void TestRtsXml::readsSystemAttributes()
@@ -595,7 +595,7 @@ RtsProfile largeSystem(int components, int connectors)
 
 } // namespace
 
-void TestRtsXml::loadsAndSavesLargeSystemsQuickly()
+void TestRtsXml::loadsAndSavesLargeSystems()
 {
     const RtsProfile big = largeSystem(1000, 1500);
     QElapsedTimer timer;
@@ -607,10 +607,9 @@ void TestRtsXml::loadsAndSavesLargeSystemsQuickly()
     const qint64 loadMs = timer.elapsed();
     QVERIFY(loaded && diagnostics.isEmpty());
     QVERIFY(*loaded == big);
+    // The times are for the reader of the log; bench_profile measures them against the goal.
     qInfo("1000 components, 1500 connectors, %lld KiB: save %lld ms, load %lld ms",
           qint64(saved.size() / 1024), saveMs, loadMs);
-    // The goal is well under 100 ms each in a Release build; unoptimised builds get headroom.
-    QVERIFY2(saveMs < 1000 && loadMs < 1000, "loading or saving a large system is far too slow");
 }
 
 QTEST_GUILESS_MAIN(TestRtsXml)
