@@ -184,6 +184,13 @@ private:
         const py::sequence items = py::reinterpret_borrow<py::sequence>(value);
         checkBound(type, size_t(py::len(items)));
         put<quint32>(quint32(py::len(items)));
+        // Numbers: the element type is looked up once, not once per element.
+        if (const std::optional<Number> number = element.kind == IdlType::Kind::Basic ? numberKind(element.name)
+                                                                                     : std::nullopt) {
+            for (const py::handle item : items)
+                writeNumber(*number, item);
+            return;
+        }
         for (const py::handle item : items)
             write(element, item);
     }
@@ -335,6 +342,13 @@ private:
         if (element.kind == IdlType::Kind::Basic && element.name == QLatin1String("char"))
             return py::reinterpret_steal<py::object>(checked(PyUnicode_DecodeLatin1(take(count), count, nullptr)));
         py::list items(count);
+        // Numbers: the element type is looked up once, not once per element.
+        if (const std::optional<Number> number = element.kind == IdlType::Kind::Basic ? numberKind(element.name)
+                                                                                     : std::nullopt) {
+            for (quint32 i = 0; i < count; ++i)
+                PyList_SET_ITEM(items.ptr(), Py_ssize_t(i), readNumber(*number).release().ptr());
+            return std::move(items);
+        }
         for (quint32 i = 0; i < count; ++i)
             items[i] = read(element);
         return std::move(items);
