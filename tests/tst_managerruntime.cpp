@@ -17,6 +17,9 @@
 
 #include <omniORB4/omniORB.h>
 
+#include <iostream>
+#include <sstream>
+
 using namespace Runtime;
 
 namespace {
@@ -926,6 +929,19 @@ void TestManagerRuntime::marshalingTypeNeedsASerializer()
     p.set("dataport.data_type", "IDL:RTC/TimedDouble:1.0");
     p.set("dataport.inport.marshaling_type", "cdr");
     QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
+    // A built-in port says on standard error which port refused which connector, and why.
+    std::ostringstream said;
+    std::streambuf *const standardError = std::cerr.rdbuf(said.rdbuf());
+    p.set("dataport.outport.marshaling_type", "cdr:RTC/TimedDouble:RTC/TimedLong");
+    const RTC::ReturnCode_t refused = connect(outPort, inPort, p);
+    std::cerr.rdbuf(standardError);
+    QCOMPARE(refused, RTC::BAD_PARAMETER);
+    const QString line = QString::fromStdString(said.str());
+    QVERIFY2(line.contains(QLatin1String(": port CI4.out: connector '"))
+                 && line.contains(QLatin1String("' refused: no serializer 'cdr:RTC/TimedDouble:RTC/TimedLong' for "
+                                                "this OutPort (it writes plain cdr)")),
+             qPrintable(line));
+    p.remove("dataport.outport.marshaling_type");
     p.set("dataport.outport.marshaling_type", "cdr:RTC/TimedDouble:RTC/TimedLong");
     p.set("dataport.inport.marshaling_type", "cdr:RTC/TimedLong:RTC/TimedDouble");
     QCOMPARE(connect(outPort, inPort, p), RTC::BAD_PARAMETER);
