@@ -59,6 +59,13 @@ void RtObject::setStatus(const std::string &name, const std::string &value)
     m_status[name] = value;
 }
 
+void RtObject::setStatus(std::initializer_list<std::pair<std::string, std::string>> values)
+{
+    std::lock_guard lock(m_mutex);
+    for (const auto &[name, value] : values)
+        m_status[name] = value;
+}
+
 std::string RtObject::status(const std::string &name)
 {
     std::lock_guard lock(m_mutex);

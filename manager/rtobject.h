@@ -10,6 +10,7 @@
 #include <OpenRTM.hh>
 
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <mutex>
 #include <set>
@@ -44,6 +45,8 @@ public:
     void setExitHandler(std::function<void(RtObject *)> handler);
     /// A value shown by SDO get_status_list / get_status (e.g. what a sink received).
     void setStatus(const std::string &name, const std::string &value);
+    /// Several values at once: a reader of the status list sees all of them or none.
+    void setStatus(std::initializer_list<std::pair<std::string, std::string>> values);
     std::string status(const std::string &name);
     ConfigAdmin &configuration() { return m_config; }
     /// Why the last initialize() failed: an unknown context type, or what onInitialize() recorded

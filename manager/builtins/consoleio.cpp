@@ -87,9 +87,9 @@ private:
         std::string values;
         for (CORBA::Long value : m_recent)
             values += (values.empty() ? "" : ",") + std::to_string(value);
-        setStatus("received_count", std::to_string(m_count));
-        setStatus("last_value", std::to_string(m_recent.back()));
-        setStatus("received_values", values);
+        setStatus({{"received_count", std::to_string(m_count)},
+                   {"last_value", std::to_string(m_recent.back())},
+                   {"received_values", values}});
     }
 
     InPort<RTC::TimedLong> *m_in = nullptr;

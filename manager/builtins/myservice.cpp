@@ -96,8 +96,7 @@ protected:
             SimpleService::MyService_var service = SimpleService::MyService::_narrow(object);
             const std::string message = "echo " + std::to_string(++m_calls);
             CORBA::String_var reply = service->echo(message.c_str());
-            setStatus("echo_count", std::to_string(m_calls));
-            setStatus("last_reply", std::string(reply.in()));
+            setStatus({{"echo_count", std::to_string(m_calls)}, {"last_reply", std::string(reply.in())}});
         } catch (const CORBA::Exception &) {
             setStatus("last_error", "provider unreachable");
         }
