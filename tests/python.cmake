@@ -77,7 +77,7 @@ if(TARGET rtpymodules)
         RTSTUDIO_PYTHON_EXECUTABLE="${RTSTUDIO_PYTHON_EXECUTABLE}"
         RTSTUDIO_SANITIZER_PRELOAD="${python_sanitizer_preload}")
     add_dependencies(tst_pythonexamples rtmanager rtctl rtpython rtpymodules rtsdk)
-    set_tests_properties(tst_pythonexamples PROPERTIES LABELS python TIMEOUT 600)
+    set_tests_properties(tst_pythonexamples PROPERTIES LABELS "python;conformance" TIMEOUT 600)
 endif()
 
 # Python components and OpenRTM-aist 2.x's C++ examples exchange samples and service calls (interop).

@@ -25,7 +25,7 @@ private slots:
 void TestAppConformance::opensInTheApplication_data()
 {
     QTest::addColumn<QString>("path");
-    const QDir root(QStringLiteral(RTSTUDIO_CONFORMANCE_DIR));
+    const QDir root(RTSTUDIO_CONFORMANCE_DIR);
     if (!root.exists())
         QSKIP("The conformance folder is not present beside the project.");
     for (const char *folder : {"rtc", "rtc-yaml", "rts"}) {

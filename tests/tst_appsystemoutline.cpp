@@ -16,7 +16,7 @@ std::unique_ptr<RtsDocument> loadSystem(const QString &name)
 {
     Profile::Diagnostics diagnostics;
     std::unique_ptr<Document> document
-        = loadDocument(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/app/") + name, &diagnostics);
+        = loadDocument((RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/app/")) + name, &diagnostics);
     if (!document || !qobject_cast<RtsDocument *>(document.get()))
         return nullptr;
     return std::unique_ptr<RtsDocument>(static_cast<RtsDocument *>(document.release()));

@@ -37,7 +37,7 @@ struct Editor
 {
     ComponentModel model {fixture()};
     QUndoStack stack;
-    TypeCatalog types {QStringLiteral(RTSTUDIO_IDL_DIR)};
+    TypeCatalog types {RTSTUDIO_IDL_DIR};
     ComponentEditor editor {&model, &stack, &types};
     BasicPage *basic = editor.basicPage();
 
@@ -239,7 +239,7 @@ void TestBuilderBasic::importIsOneUndoStep()
 {
     Editor e;
     QVERIFY(QTest::qWaitForWindowExposed(&e.editor));
-    QVERIFY(e.basic->importProfile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rtc/full.xml")));
+    QVERIFY(e.basic->importProfile(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/rtc/full.xml")));
     QCOMPARE(e.stack.count(), 1);
     QCOMPARE(e.stack.undoText(), QStringLiteral("Import full.xml"));
     QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Full"));
@@ -254,7 +254,7 @@ void TestBuilderBasic::importIsOneUndoStep()
     e.stack.redo();
     QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Full"));
     // YAML works the same way, told apart by content.
-    QVERIFY(e.basic->importProfile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rtc/full.yaml")));
+    QVERIFY(e.basic->importProfile(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/rtc/full.yaml")));
     QCOMPARE(e.stack.count(), 2);
     QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Yaml"));
 }
@@ -269,7 +269,7 @@ void TestBuilderBasic::importFromTheDialog()
     QFileDialog *dialog = nullptr;
     QTRY_VERIFY((dialog = e.basic->findChild<QFileDialog *>(QStringLiteral("transferDialog"))));
     QCOMPARE(dialog->acceptMode(), QFileDialog::AcceptOpen);
-    dialog->selectFile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rtc/full.xml"));
+    dialog->selectFile(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/rtc/full.xml"));
     static_cast<QDialog *>(dialog)->accept(); // what the Open button does
     QCOMPARE(e.model.profile().basicInfo.name, QStringLiteral("Full"));
     QCOMPARE(e.stack.count(), 1);
@@ -280,7 +280,7 @@ void TestBuilderBasic::importOfBrokenFileNamesLineAndKeepsModel()
     Editor e;
     QVERIFY(QTest::qWaitForWindowExposed(&e.editor));
     QSignalSpy failed(e.basic, &BasicPage::transferFailed);
-    const QString broken = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builder/broken.xml");
+    const QString broken = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/builder/broken.xml");
     QVERIFY(!e.basic->importProfile(broken));
     QCOMPARE(failed.count(), 1);
     const auto problems = failed.at(0).at(0).value<Profile::Diagnostics>();
@@ -297,7 +297,7 @@ void TestBuilderBasic::importOfSystemIsRefused()
 {
     Editor e;
     QVERIFY(QTest::qWaitForWindowExposed(&e.editor));
-    QVERIFY(!e.basic->importProfile(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rts/full.xml")));
+    QVERIFY(!e.basic->importProfile(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/rts/full.xml")));
     QVERIFY(e.basic->transferMessage().contains(QStringLiteral("System Editor")));
     QCOMPARE(e.stack.count(), 0);
     QVERIFY(e.model.profile() == fixture());

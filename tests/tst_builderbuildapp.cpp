@@ -51,7 +51,7 @@ private:
     };
     /// Opens @p profile (the Counter fixture by default) in the Builder of @p window.
     Opened openCounter(Studio::MainWindow *window,
-                       const QString &profile = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml"));
+                       const QString &profile = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/buildergenerate/Counter.xml"));
     /// Generates nothing: points the component's output folder at a copy of fixture `name`.
     bool useFixture(const Opened &opened, const QString &name, const QTemporaryDir &dir);
 
@@ -280,7 +280,7 @@ void TestBuilderBuildApp::openedFromGeneratedProject()
     QTemporaryDir project;
     QVERIFY(project.isValid() && BuildFixture::copy(QStringLiteral("ok"), project.path()));
     const QString profile = project.filePath(QStringLiteral("RTC.xml"));
-    QVERIFY(QFile::copy(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml"), profile));
+    QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/buildergenerate/Counter.xml"), profile));
     Studio::MainWindow window;
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));

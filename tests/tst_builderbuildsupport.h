@@ -14,7 +14,7 @@ namespace BuildFixture {
 
 inline QString source(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/projectbuild/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/projectbuild/")) + name;
 }
 
 /// Copies the fixture `name` into `target` (created when missing); false when a file failed.

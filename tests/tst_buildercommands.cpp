@@ -23,7 +23,7 @@ namespace {
 
 Profile::RtcProfile fixture()
 {
-    QFile file(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builder/component.xml"));
+    QFile file(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/builder/component.xml"));
     if (!file.open(QIODevice::ReadOnly))
         qFatal("missing fixture component.xml");
     Profile::Diagnostics diagnostics;

@@ -39,7 +39,7 @@ Profile::RtcProfile load(const QString &path)
 
 Profile::RtcProfile fixture()
 {
-    return load(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builder/component.xml"));
+    return load(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/builder/component.xml"));
 }
 
 struct Editor
@@ -55,7 +55,7 @@ struct Editor
 
     ComponentModel model;
     QUndoStack stack;
-    TypeCatalog types {QStringLiteral(RTSTUDIO_IDL_DIR)};
+    TypeCatalog types {RTSTUDIO_IDL_DIR};
     ComponentEditor editor {&model, &stack, &types};
     DataPortsPage *page = nullptr;
 };
@@ -252,7 +252,7 @@ void TestBuilderEventPorts::eventTableFollowsPortMoves()
 void TestBuilderEventPorts::fsmFileRoundTrips()
 {
     // A file written by OpenRTP's RTC Builder: part of the shared conformance corpus, when it is there.
-    const QString file = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/rtc/rtcb_fsm_eventName.xml");
+    const QString file = RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/rtc/rtcb_fsm_eventName.xml");
     if (!QFile::exists(file))
         QSKIP("no conformance corpus beside the checkout (../shared/conformance)");
     const Profile::RtcProfile fsm = load(file);

@@ -36,7 +36,7 @@ namespace {
 
 Profile::RtcProfile fixture()
 {
-    QFile file(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml"));
+    QFile file(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/buildergenerate/Counter.xml"));
     if (!file.open(QIODevice::ReadOnly))
         qFatal("missing fixture Counter.xml");
     Profile::Diagnostics diagnostics;
@@ -140,7 +140,7 @@ struct Setup
     /// What the generator makes of `profile` (the expected file contents).
     static QList<Codegen::GeneratedFile> expected(const Profile::RtcProfile &profile)
     {
-        const Codegen::IdlTypeLibrary library({QStringLiteral(RTSTUDIO_IDL_DIR)});
+        const Codegen::IdlTypeLibrary library({RTSTUDIO_IDL_DIR});
         Profile::Diagnostics problems;
         return *Codegen::CodeGenerator(profile, library.model())
                     .generate({TargetLanguage::Python}, &problems);
@@ -488,7 +488,7 @@ void TestBuilderGenerate::editorButtonsReachTheController()
 {
     Setup s;
     QUndoStack stack;
-    TypeCatalog types(QStringLiteral(RTSTUDIO_IDL_DIR));
+    TypeCatalog types(RTSTUDIO_IDL_DIR);
     ComponentEditor editor(&s.model, &stack, &types);
     s.controller.connectEditor(&editor);
     QSignalSpy generated(&s.controller, &GenerateController::generated);

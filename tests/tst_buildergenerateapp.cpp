@@ -71,7 +71,7 @@ void TestBuilderGenerateApp::componentEditorsCanGenerate()
 
 Builder::ComponentEditor *TestBuilderGenerateApp::openCounter(Studio::MainWindow *window)
 {
-    if (!window->openFiles({QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml")}))
+    if (!window->openFiles({RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/buildergenerate/Counter.xml")}))
         return nullptr;
     Studio::Perspective *builder = window->perspective(Studio::Perspective::Id::Builder);
     return qobject_cast<Builder::ComponentEditor *>(builder->editor(window->activeDocument()));

@@ -25,7 +25,7 @@
 
 namespace {
 
-const QString greeterFixture = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
+const QString greeterFixture = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/SdkGreeter");
 constexpr int packageTimeoutMs = 120000;
 
 } // namespace

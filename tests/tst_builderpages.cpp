@@ -53,7 +53,7 @@ struct Editor
 {
     ComponentModel model {fixture()};
     QUndoStack stack;
-    TypeCatalog types {QStringLiteral(RTSTUDIO_IDL_DIR)};
+    TypeCatalog types {RTSTUDIO_IDL_DIR};
     ComponentEditor editor {&model, &stack, &types};
 
     template<typename Page> Page *page(const char *title)
@@ -576,7 +576,7 @@ void TestBuilderPages::generateIsRefusedWhileErrorsRemain()
 
 void TestBuilderPages::typeListsComeFromIdl()
 {
-    TypeCatalog catalog(QStringLiteral(RTSTUDIO_IDL_DIR));
+    TypeCatalog catalog(RTSTUDIO_IDL_DIR);
     QCOMPARE(catalog.dataTypes(), TypeCatalog::builtInDataTypes()); // before loading
     QSignalSpy changed(&catalog, &TypeCatalog::typesChanged);
     catalog.reload();
@@ -605,9 +605,9 @@ void TestBuilderPages::typeListsComeFromIdl()
 
 void TestBuilderPages::idlSettingsStoreUserFolders()
 {
-    TypeCatalog catalog(QStringLiteral(RTSTUDIO_IDL_DIR));
+    TypeCatalog catalog(RTSTUDIO_IDL_DIR);
     IdlSettingsDialog dialog(&catalog);
-    const QString folder = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builder");
+    const QString folder = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/builder");
     dialog.addDirectory(folder);
     dialog.addDirectory(folder);
     QCOMPARE(dialog.directories(), QStringList({folder}));
@@ -615,7 +615,7 @@ void TestBuilderPages::idlSettingsStoreUserFolders()
     dialog.accept(); // reads the folders in the background
     QTRY_COMPARE(changed.count(), 1);
     QCOMPARE(TypeCatalog::userDirectories(), QStringList({folder}));
-    QCOMPARE(catalog.directories(), QStringList({QStringLiteral(RTSTUDIO_IDL_DIR), folder}));
+    QCOMPARE(catalog.directories(), QStringList({RTSTUDIO_IDL_DIR, folder}));
     TypeCatalog::setUserDirectories({});
 }
 

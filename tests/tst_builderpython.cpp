@@ -124,7 +124,7 @@ QString TestBuilderPython::generate(const QString &name, const QStringList &opti
 {
     const QString project = m_work.filePath(name);
     const RtctlResult generated = runRtctl(
-        QStringList{"gen", RTSTUDIO_TEST_DATA_DIR "/builderpython/PyRelay.xml", "--lang", "python", "-o", project}
+        QStringList{"gen", RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/builderpython/PyRelay.xml"), "--lang", "python", "-o", project}
         + options);
     if (generated.code != 0) {
         qWarning().noquote() << generated.out << generated.err;
@@ -284,7 +284,7 @@ void TestBuilderPython::serviceProjectBuildsAndCallsReturn()
     // consumer while its consumer calls the C++ built-in provider, all in one process.
     const QString project = m_work.filePath(QStringLiteral("service"));
     const RtctlResult generated = runRtctl(
-        {"gen", RTSTUDIO_TEST_DATA_DIR "/pythonidl/PyService.xml", "--lang", "python", "-o", project});
+        {"gen", RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/pythonidl/PyService.xml"), "--lang", "python", "-o", project});
     QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
     QVERIFY(edit(project,
                  "        # TODO: implement echo; it returns result\n"
@@ -330,7 +330,7 @@ bool TestBuilderPython::loadAllTypes()
         return false;
     list.close();
     const QString module = folder + QStringLiteral("/PyAllTypes.py");
-    if (!QFile::copy(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/PyAllTypes.py"), module))
+    if (!QFile::copy(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/python/PyAllTypes.py"), module))
         return false;
     return m_host.succeeds({"mgr", m_host.managerPath(), "load", module}) && m_host.succeeds({"act", "PyAllTypes0.rtc"});
 }
@@ -384,7 +384,7 @@ void TestBuilderPython::testComponentExercisesTheComponent()
     const QString context = QStringLiteral("pytestcomponent");
     const LiveTest::HostRtctl host(m_live, context);
     const LiveTest::PythonScripts scripts(m_live, host, context, QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
-                                          QStringLiteral(RTSTUDIO_PYTHON_PATH), QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
+                                          RTSTUDIO_PYTHON_PATH, QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
                                           m_work.path());
     QProcess *component = scripts.start(QDir(project).filePath(QStringLiteral("PyRelay.py")), {"PyRelay0.rtc"}, runTimeoutMs);
     QVERIFY(component);

@@ -72,7 +72,7 @@ private:
 
 namespace {
 
-const QString testModulePath = QStringLiteral(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so");
+const QString testModulePath = MANAGER_TEST_MODULE_DIR + QStringLiteral("/ManagerTestModule.so");
 
 } // namespace
 
@@ -96,7 +96,7 @@ QProcess *TestBuilderRunManager::startManager(quint16 *port, QString *error)
 {
     *port = LiveTest::freePort();
     // No name server: Run in Manager talks to the manager directly.
-    return m_live.startManager(QStringLiteral(RTMANAGER_PATH), *port,
+    return m_live.startManager(RTMANAGER_PATH, *port,
                                {QStringLiteral("naming.enable=NO")}, error);
 }
 
@@ -297,7 +297,7 @@ void TestBuilderRunManager::editorRunsThroughTheChooser()
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY(
-        window.openFiles({QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml")}));
+        window.openFiles({RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/buildergenerate/Counter.xml")}));
     Studio::Perspective *builder = window.perspective(Studio::Perspective::Id::Builder);
     auto *editor
         = qobject_cast<Builder::ComponentEditor *>(builder->editor(window.activeDocument()));
@@ -361,7 +361,7 @@ void TestBuilderRunManager::problemsRowOpensFileAtLine()
     panel.resize(900, 300);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
-    const QString source = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builderrun/BrokenCounter.cpp");
+    const QString source = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/builderrun/BrokenCounter.cpp");
     Profile::Diagnostics diagnostics;
     diagnostics << Profile::Diagnostic::warning(source, 6, 5, QStringLiteral("unused variable"))
                 << Profile::Diagnostic::error(source, 14, 21,

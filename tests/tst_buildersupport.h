@@ -19,7 +19,7 @@ namespace BuilderTest {
 /// The component in the Builder tests' data folder; a fixture that does not load ends the run.
 inline Profile::RtcProfile fixture()
 {
-    QFile file(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/builder/component.xml"));
+    QFile file(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/builder/component.xml"));
     if (!file.open(QIODevice::ReadOnly))
         qFatal("missing fixture component.xml");
     Profile::Diagnostics diagnostics;

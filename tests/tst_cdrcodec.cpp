@@ -78,7 +78,7 @@ private slots:
 
 private:
     CORBA::ORB_var m_orb;
-    Codegen::IdlTypeLibrary m_library {{QStringLiteral(RTSTUDIO_IDL_DIR)}};
+    Codegen::IdlTypeLibrary m_library {{RTSTUDIO_IDL_DIR}};
 };
 
 void TestCdrCodec::initTestCase()

@@ -69,7 +69,7 @@ private:
 
 static QString data(const QString &relative)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/") + relative;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/")) + relative;
 }
 
 static QVariantMap find(const QVariantList &list, const QString &key, const QString &value)
@@ -102,7 +102,7 @@ void TestCodegen::initTestCase()
     QVERIFY2(loaded && loaded->rtc, qPrintable(diagnostics.isEmpty() ? QString() : diagnostics.first().toString()));
     m_profile = *loaded->rtc;
     IdlParser parser;
-    parser.addSearchDirectory(QStringLiteral(RTSTUDIO_IDL_DIR));
+    parser.addSearchDirectory(RTSTUDIO_IDL_DIR);
     QVERIFY(parser.parseFile(data("idl/SampleService.idl")));
     m_idl = parser.model();
     QVERIFY(m_idl.interfaces.contains(QStringLiteral("Sample::Echo")));

@@ -71,7 +71,7 @@ const QStringList &fixtures()
 
 QString data(const QString &relative)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/") + relative;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/")) + relative;
 }
 
 std::optional<QList<GeneratedFile>> generateFixture(const QString &fixture, QString *problems)
@@ -81,7 +81,7 @@ std::optional<QList<GeneratedFile>> generateFixture(const QString &fixture, QStr
         = loadProfileFile(data(fixture + QStringLiteral(".xml")), &diagnostics);
     std::optional<QList<GeneratedFile>> files;
     if (loaded && loaded->rtc) {
-        IdlTypeLibrary library({QStringLiteral(RTSTUDIO_IDL_DIR), data(QStringLiteral("idl"))});
+        IdlTypeLibrary library({RTSTUDIO_IDL_DIR, data(QStringLiteral("idl"))});
         CodeGenerator generator(*loaded->rtc, library.model());
         generator.setTestComponent(true);
         files = generator.generate(allTargetLanguages(), &diagnostics);
@@ -265,13 +265,13 @@ void TestCodegenGolden::compileServants(const QString &root, const QString &comp
     QString output;
     // The project's IDL copies plus the OpenRTM data types they include, as the generated
     // idl/CMakeLists.txt compiles them.
-    QStringList idls {QStringLiteral(RTSTUDIO_IDL_DIR "/BasicDataType.idl")};
+    QStringList idls {RTSTUDIO_IDL_DIR + QStringLiteral("/BasicDataType.idl")};
     for (const QString &idl : filesUnder(tree.filePath("idl"), {QStringLiteral("*.idl")}))
         idls << tree.filePath(QStringLiteral("idl/") + idl);
     for (const QString &idl : std::as_const(idls))
         QVERIFY2(run(QStringLiteral("omniidl"),
                      {"-bcxx", "-Wba", "-Wbh=.hh", "-Wbs=SK.cc", "-Wbd=DynSK.cc",
-                      "-I" RTSTUDIO_IDL_DIR, idl},
+                      QStringLiteral("-I") + RTSTUDIO_IDL_DIR, idl},
                      skeletons.path(), &output),
                  qPrintable(output));
     // A translation unit that creates every servant: instantiating one fails to compile unless

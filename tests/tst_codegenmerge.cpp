@@ -166,11 +166,11 @@ void TestCodegenMerge::initTestCase()
 {
     Diagnostics diagnostics;
     const std::optional<LoadedProfile> loaded = loadProfileFile(
-        QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/SampleComp.xml"), &diagnostics);
+        RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/SampleComp.xml"), &diagnostics);
     QVERIFY(loaded && loaded->rtc);
     m_profile = *loaded->rtc;
     IdlTypeLibrary library(
-        {QStringLiteral(RTSTUDIO_IDL_DIR), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/idl")});
+        {RTSTUDIO_IDL_DIR, RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/idl")});
     m_idl = library.model();
     QElapsedTimer timer;
     timer.start();

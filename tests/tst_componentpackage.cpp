@@ -15,8 +15,8 @@
 
 namespace {
 
-const QString fixtures = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/packages/");
-const QString greeterFixture = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
+const QString fixtures = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/packages/");
+const QString greeterFixture = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/SdkGreeter");
 
 QString tool(const QString &program, const QStringList &arguments)
 {
@@ -116,7 +116,7 @@ void TestComponentPackage::controlFields()
              QStringLiteral("RTC:RTStudioTests:Test:SdkGreeter:1.0.0"));
     QCOMPARE(field(m_deb, "X-RTC-Profile-SHA256").toLatin1(), sha256(m_project + "/RTC.xml"));
     // The SDK ABI is the SONAME of the SDK library this build tree made.
-    const QString sdk = tool("objdump", {"-p", RTSTUDIO_BUILD_DIR "/lib/librtstudio_rtm.so"});
+    const QString sdk = tool("objdump", {"-p", RTSTUDIO_BUILD_DIR + QStringLiteral("/lib/librtstudio_rtm.so")});
     const QRegularExpressionMatch soname = QRegularExpression("SONAME\\s+(\\S+)").match(sdk);
     QVERIFY(soname.hasMatch());
     QCOMPARE(field(m_deb, "X-RTStudio-SDK-ABI"), soname.captured(1));

@@ -17,7 +17,7 @@
 
 namespace {
 
-const QString fixtures = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/packages/");
+const QString fixtures = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/packages/");
 const QString pyPackage = QStringLiteral("rtc-rtstudiotests-packaging-pygreeter");
 const QString nativePackage = QStringLiteral("rtc-rtstudiotests-packaging-native");
 

@@ -86,9 +86,9 @@ void TestCorbaClientManager::initTestCase()
         "manager.components.precreate=ConsoleIn,ConsoleOut,ConfigSample,MyServiceProvider,"
         "MyServiceConsumer",
         "-o",
-        "manager.modules.load_path=" MANAGER_TEST_MODULE_DIR};
+        QStringLiteral("manager.modules.load_path=") + MANAGER_TEST_MODULE_DIR};
     QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+        m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error),
         qPrintable(error));
 }
 
@@ -315,7 +315,7 @@ void TestCorbaClientManager::createsInOneCall()
     QVERIFY(manager.componentsByName("One3").isEmpty());
 
     // Each create has the call timeout a call of its own would have.
-    manager.loadModule(QStringLiteral(MANAGER_TEST_MODULE), "ManagerTestModuleInit");
+    manager.loadModule(MANAGER_TEST_MODULE, "ManagerTestModuleInit");
     {
         const ThreadCallTimeout timeout(600);
         QStringList slow;
@@ -357,7 +357,7 @@ void TestCorbaClientManager::timeoutsArePerThread()
     QString error;
     const quint16 frozenPort = LiveTest::freePort();
     QProcess *frozen = m_live.startProcess(
-        QStringLiteral(RTMANAGER_PATH),
+        RTMANAGER_PATH,
         {"-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(frozenPort), "-o",
          "naming.enable=NO", "-o", "corba.master_manager=", "-o",
          "manager.components.precreate=ConsoleIn"},

@@ -735,7 +735,7 @@ void TestCorbaIdl::timedLongCdrLayout()
 
 void TestCorbaIdl::idlFolderHoldsEveryFile()
 {
-    const QDir dir(QStringLiteral(RTSTUDIO_IDL_DIR));
+    const QDir dir(RTSTUDIO_IDL_DIR);
     const QStringList expected {"BasicDataType.idl",
                                 "CameraCommonInterface.idl",
                                 "ComponentObserver.idl",

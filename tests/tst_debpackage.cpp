@@ -62,7 +62,7 @@ void TestDebPackage::initTestCase()
     QVERIFY(m_work.isValid() && m_unpacked.isValid());
     QString output;
     const int code = run(QStringLiteral(CPACK_COMMAND),
-                         {"-G", "DEB", "--config", RTSTUDIO_BUILD_DIR "/CPackConfig.cmake", "-B", m_work.path()},
+                         {"-G", "DEB", "--config", RTSTUDIO_BUILD_DIR + QStringLiteral("/CPackConfig.cmake"), "-B", m_work.path()},
                          &output, RTSTUDIO_BUILD_DIR);
     QVERIFY2(code == 0, qPrintable(output));
     const QStringList debs = QDir(m_work.path()).entryList({"rtstudio_*_amd64.deb"});

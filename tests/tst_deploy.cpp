@@ -123,7 +123,7 @@ void TestDeploy::restoresBundledExamples()
 {
     QFETCH(QString, file);
     const Profile::RtsProfile profile
-        = loadSystem(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/") + file);
+        = loadSystem((RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/")) + file);
     const Corba::ManagerProxy manager(ComponentMapper::resolveManager(target(false).manager),
                                       QStringLiteral("manager"));
     for (const auto &component : profile.components)
@@ -223,8 +223,7 @@ void TestDeploy::dryRunPlanChangesNothing()
 void TestDeploy::restoreCreatesFromNothing()
 {
     const Profile::RtsProfile profile
-        = loadSystem(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/"
-                                                        "ConsoleInOut.xml"));
+        = loadSystem(RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/" "ConsoleInOut.xml"));
     QList<DeployStep> progress;
     DeployControl control;
     control.progress = [&](const DeployStep &step) { progress.append(step); };
@@ -357,7 +356,7 @@ void TestDeploy::conformanceSystemsFailCleanly_data()
 void TestDeploy::conformanceSystemsFailCleanly()
 {
     QFETCH(QString, file);
-    const QString path = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/rts/") + file;
+    const QString path = (RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/rts/")) + file;
     if (!QFileInfo::exists(path))
         QSKIP("conformance folder absent");
     const Profile::RtsProfile profile = loadSystem(path);

@@ -49,7 +49,7 @@
 
 namespace {
 
-const QString doublerProfile = QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/tour/Doubler.xml");
+const QString doublerProfile = RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/tour/Doubler.xml");
 const QString package = QStringLiteral("rtc-rtstudio-tour-doubler");
 const QStringList systemInstances {QStringLiteral("Count0"), QStringLiteral("Doubler0"),
                                    QStringLiteral("Show0")};
@@ -201,7 +201,7 @@ void TestDeployInstall::init()
                                              "naming.formats=deployhost.host_cxt/%n.rtc",
                                              "manager.naming_formats=deployhost.host_cxt/%n.mgr"}
         + nodeOptions(m_store);
-    QVERIFY2(m_live->startManager(QStringLiteral(RTMANAGER_PATH), m_managerPort, options, &error),
+    QVERIFY2(m_live->startManager(RTMANAGER_PATH, m_managerPort, options, &error),
              qPrintable(error));
 }
 
@@ -288,7 +288,7 @@ void TestDeployInstall::deploysOverTls()
                                              "corba.ssl.certificate_authority_file=" + fleet + "/ca.pem",
                                              "corba.ssl.key_file=" + fleet + "/node.pem"}
         + nodeOptions(m_store);
-    QVERIFY2(m_live->startManager(QStringLiteral(RTMANAGER_PATH), m_managerPort, options, &error), qPrintable(error));
+    QVERIFY2(m_live->startManager(RTMANAGER_PATH, m_managerPort, options, &error), qPrintable(error));
     const QHash<QString, QString> operatorTls {{"RTSTUDIO_TLS_CA", fleet + "/ca.pem"},
                                                {"RTSTUDIO_TLS_KEY", fleet + "/operator.pem"},
                                                {"XDG_RUNTIME_DIR", m_work.path()}};
@@ -503,7 +503,7 @@ QString TestDeployInstall::startSimulatedNodes(SimulatedNodes *nodes, const QStr
         const QString store = m_work.filePath(storePrefix + host);
         QDir(store).removeRecursively();
         nodes->managers[host] = nodes->live[host]->startManager(
-            QStringLiteral(RTMANAGER_PATH), 2810,
+            RTMANAGER_PATH, 2810,
             QStringList {"corba.nameservers=" + nodes->live[host]->namingServer()} + nodeOptions(store), &why);
         if (!nodes->managers[host])
             return why;
@@ -574,7 +574,7 @@ QProcess *TestDeployInstall::startNodeB(QString *nodeB, quint16 port)
     QDir(m_work.filePath("store-b")).removeRecursively();
     QString error;
     QProcess *managerB = m_live->startManager(
-        QStringLiteral(RTMANAGER_PATH), portB,
+        RTMANAGER_PATH, portB,
         QStringList {"corba.nameservers=" + m_live->namingServer(), "naming.formats=nodeb.host_cxt/%n.rtc",
                      "manager.naming_formats=nodeb.host_cxt/%n.mgr"}
             + nodeOptions(m_work.filePath("store-b")),
@@ -609,7 +609,7 @@ void TestDeployInstall::watchHealsWhenANodeDies()
         watcher.waitForFinished(5000);
     });
     watcher.setProcessChannelMode(QProcess::MergedChannels);
-    watcher.start(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli/rtctl"),
+    watcher.start(RTSTUDIO_BUILD_DIR + QStringLiteral("/cli/rtctl"),
                   {"deploy", "--timeout", "20000", "-s", m_live->namingServer(), "--repo", m_repo, "--watch",
                    "--nodes", manager() + "," + nodeB, "--interval", "100", file});
     QString output;
@@ -746,7 +746,7 @@ void TestDeployInstall::plansDeploysAndHealsAcrossHosts()
         watcher.waitForFinished(5000);
     });
     watcher.setProcessChannelMode(QProcess::MergedChannels);
-    watcher.start(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli/rtctl"),
+    watcher.start(RTSTUDIO_BUILD_DIR + QStringLiteral("/cli/rtctl"),
                   {"deploy", "--timeout", "20000", "-s", live.at("hostA")->namingServer(), "-s",
                    live.at("hostB")->namingServer(), "--repo", nodes.repositoryUrl,
                    "--plan", "--nodes", node.value("hostA") + "," + node.value("hostB"), "--watch", "--interval",

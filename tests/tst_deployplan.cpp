@@ -123,7 +123,7 @@ void TestDeployPlan::restoreOrder()
 {
     Profile::Diagnostics diagnostics;
     const auto loaded = Profile::loadProfileFile(
-        QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/broken.xml"), &diagnostics);
+        RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/deploy/broken.xml"), &diagnostics);
     QVERIFY(loaded && loaded->rts);
     Profile::RtsProfile profile = *loaded->rts;
     QList<ComponentMapping> components(2);

@@ -29,7 +29,7 @@ private:
     LiveTest::LiveSystem m_live;
     quint16 m_managerPort = 0;
     const QString m_example
-        = QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml");
+        = RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml");
 };
 
 TestDeployRtctl::Result TestDeployRtctl::rtctl(const QStringList &arguments)
@@ -42,7 +42,7 @@ void TestDeployRtctl::initTestCase()
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     m_managerPort = LiveTest::freePort();
-    QVERIFY2(m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+    QVERIFY2(m_live.startProcess(RTMANAGER_PATH,
                                  {"-d", "-o",
                                   QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(m_managerPort),
                                   "-o", "corba.nameservers=" + m_live.namingServer(), "-o",
@@ -130,7 +130,7 @@ void TestDeployRtctl::usageErrors()
 void TestDeployRtctl::failedResurrectRollsBack()
 {
     const Result result = rtctl({"resurrect", "--create", "-m", manager(),
-                                 QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/broken.xml")});
+                                 RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/deploy/broken.xml")});
     QCOMPARE(result.code, 1);
     QVERIFY2(result.err.contains("rtctl resurrect: connect conn-bad:"), qPrintable(result.err));
     // Each step undone is reported once, after what it undid.
@@ -144,7 +144,7 @@ void TestDeployRtctl::failedResurrectRollsBack()
     QVERIFY(lines.indexOf("rolled back create Src0: undone") > lines.indexOf(created));
     // The created components are gone again (their manager unbinds them as they exit).
     QTRY_VERIFY(rtctl({"resurrect", "--dry-run",
-                       QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/broken.xml")})
+                       RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/deploy/broken.xml")})
                     .out.contains("component Src0 missing"));
 }
 
@@ -154,7 +154,7 @@ void TestDeployRtctl::cryoReportsTwoComponentsOfOneName()
 {
     QString error;
     QVERIFY2(m_live.startHostManager(
-                 QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), "twinhost",
+                 RTMANAGER_PATH, LiveTest::freePort(), "twinhost",
                  {"manager.components.precreate=ConsoleIn?instance_name=Twin0"}, &error),
              qPrintable(error));
     QCOMPARE(rtctl({"mgr", manager(), "create", "ConsoleIn?instance_name=Twin0"}).code, 0);
@@ -181,7 +181,7 @@ void TestDeployRtctl::cryoReportsTwoComponentsOfOneName()
 // (600 ms) though it comes later in the sequence. A SYNC timeout cancels the plan and says why.
 void TestDeployRtctl::startRunsWaitsSideBySide()
 {
-    const QString file = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/waits.xml");
+    const QString file = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/deploy/waits.xml");
     const Result created = rtctl({"resurrect", "--create", "-m", manager(), file});
     QVERIFY2(created.code == 0, qPrintable(created.out + created.err));
     const auto activations = [](const Result &result, const QString &action) {
@@ -205,7 +205,7 @@ void TestDeployRtctl::startRunsWaitsSideBySide()
              QStringList({"done deactivate Free0.0", "done deactivate Slow0.0",
                           "done deactivate Fast0.0"}));
 
-    const QString timeout = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/synctimeout.xml");
+    const QString timeout = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/deploy/synctimeout.xml");
     QCOMPARE(rtctl({"resurrect", "--create", "-m", manager(), timeout}).code, 0);
     const Result cancelled = rtctl({"start", timeout});
     QCOMPARE(cancelled.code, 1);

@@ -29,7 +29,7 @@ inline Profile::RtsProfile loadSystem(const QString &file)
 /// `name` in the deployment tests' data folder.
 inline QString dataFile(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/deploy/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/deploy/")) + name;
 }
 
 /// Subjects of the steps `action` that were done, in report order.
@@ -68,7 +68,7 @@ inline bool startManager(LiveTest::LiveSystem &live, const QString &namingFormat
     const QStringList options {
         "corba.nameservers=" + live.namingServer(), "naming.formats=" + namingFormat,
         "manager.naming_formats=" + managerFormat, "exec_cxt.periodic.rate=200"};
-    return live.startManager(QStringLiteral(RTMANAGER_PATH), *managerPort, options, error)
+    return live.startManager(RTMANAGER_PATH, *managerPort, options, error)
         != nullptr;
 }
 

@@ -36,7 +36,7 @@ struct ShellBlock
 
 QList<ShellBlock> shellBlocks(const QString &page)
 {
-    QFile file(QStringLiteral(RTSTUDIO_SOURCE_DIR "/") + page);
+    QFile file((RTSTUDIO_SOURCE_DIR + QStringLiteral("/")) + page);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
         return {};
     const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'));
@@ -74,7 +74,7 @@ QStringList pages()
 {
     QStringList names{QStringLiteral("README.md")};
     for (const QString &folder : {QStringLiteral("docs"), QStringLiteral("docs/ja")}) {
-        const QDir dir(QStringLiteral(RTSTUDIO_SOURCE_DIR "/") + folder);
+        const QDir dir((RTSTUDIO_SOURCE_DIR + QStringLiteral("/")) + folder);
         for (const QString &name : dir.entryList({QStringLiteral("*.md")}, QDir::Files, QDir::Name))
             names << folder + QLatin1Char('/') + name;
     }
@@ -100,7 +100,7 @@ const Recipe recipes[] = {
 
 QString corpusDir()
 {
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples");
+    return RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-python-examples");
 }
 
 } // namespace
@@ -149,7 +149,7 @@ void TestDocCommands::everyShellBlockIsRun()
                 continue;
             } else {
                 const QString test = block.marker.mid(QStringLiteral("tested by ").size());
-                if (!QFile::exists(QStringLiteral(RTSTUDIO_SOURCE_DIR "/tests/") + test + QStringLiteral(".cpp")))
+                if (!QFile::exists((RTSTUDIO_SOURCE_DIR + QStringLiteral("/tests/")) + test + QStringLiteral(".cpp")))
                     unknown << where + QStringLiteral(" (no test %1)").arg(test);
             }
         }
@@ -178,9 +178,9 @@ QProcessEnvironment TestDocCommands::environment(const QString &folder) const
     // of this build first on PATH, then python3 (bin/, see blockRuns), the SDK's prefix (the build
     // folder) as PREFIX.
     env.insert(QStringLiteral("XDG_RUNTIME_DIR"), m_home.filePath(QStringLiteral("run")));
-    env.insert(QStringLiteral("PATH"), QStringLiteral(RTSTUDIO_BUILD_DIR "/cli:") + m_home.filePath(QStringLiteral("bin"))
+    env.insert(QStringLiteral("PATH"), (RTSTUDIO_BUILD_DIR + QStringLiteral("/cli:")) + m_home.filePath(QStringLiteral("bin"))
                                            + QLatin1Char(':') + env.value(QStringLiteral("PATH")));
-    env.insert(QStringLiteral("PREFIX"), QStringLiteral(RTSTUDIO_BUILD_DIR));
+    env.insert(QStringLiteral("PREFIX"), RTSTUDIO_BUILD_DIR);
     env.insert(QStringLiteral("PWD"), folder);
     env.remove(QStringLiteral("RTCTREE_NAMESERVERS"));
     env.remove(QStringLiteral("PYTHONPATH"));
@@ -192,7 +192,7 @@ QString TestDocCommands::rtctl(const QString &folder, const QStringList &argumen
     QProcess process;
     process.setProcessEnvironment(environment(folder));
     process.setWorkingDirectory(folder);
-    process.start(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli/rtctl"), arguments);
+    process.start(RTSTUDIO_BUILD_DIR + QStringLiteral("/cli/rtctl"), arguments);
     const bool finished = process.waitForFinished(60000);
     if (!finished)
         process.kill();
@@ -253,7 +253,7 @@ void TestDocCommands::blockRuns()
             QVERIFY(QFile::copy(from.filePath(name), folder + QLatin1Char('/') + name));
     }
     for (const QString &file : r.dataFiles)
-        QVERIFY(QFile::copy(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/") + file,
+        QVERIFY(QFile::copy((RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/")) + file,
                             folder + QLatin1Char('/') + QFileInfo(file).fileName()));
 
     QString error;

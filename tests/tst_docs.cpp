@@ -18,7 +18,7 @@
 
 namespace {
 
-const QString sourceDir = QStringLiteral(RTSTUDIO_SOURCE_DIR);
+const QString sourceDir = RTSTUDIO_SOURCE_DIR;
 
 /// README.md and every Markdown page below docs/, relative to the source folder.
 QStringList markdownFiles()

@@ -22,7 +22,7 @@ namespace {
 
 QString dataPath(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/app/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/app/")) + name;
 }
 
 QByteArray readAll(const QString &path)

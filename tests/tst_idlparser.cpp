@@ -10,7 +10,7 @@ namespace {
 
 QString dataDir()
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/idl");
+    return RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/idl");
 }
 
 QString firstError(const IdlParser &parser)

@@ -15,7 +15,7 @@ namespace {
 
 QString dataDir()
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/idl");
+    return RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/idl");
 }
 
 QString readText(const QString &path)

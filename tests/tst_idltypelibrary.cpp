@@ -13,7 +13,7 @@ namespace {
 
 QString dataDir()
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/idl");
+    return RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/idl");
 }
 
 QStringList dataTypeNames(const IdlTypeLibrary &library, bool timedOnly = false)
@@ -172,7 +172,7 @@ void TestIdlTypeLibrary::bundledSetOffersOpenRtpTypes()
     QFETCH(bool, dataType);
     QFETCH(bool, timed);
     QFETCH(QString, file);
-    const IdlTypeLibrary library({QStringLiteral(RTSTUDIO_IDL_DIR)});
+    const IdlTypeLibrary library({RTSTUDIO_IDL_DIR});
     // SDOPackage.idl's #include <orb.idl> (omniORB's folder) is the one thing the folder lacks.
     for (const Profile::Diagnostic &diagnostic : library.diagnostics())
         QVERIFY2(diagnostic.toString().contains(QLatin1String("orb.idl")), qPrintable(diagnostic.toString()));

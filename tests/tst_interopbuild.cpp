@@ -25,7 +25,7 @@
 
 namespace {
 
-const QString fixtureDir = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
+const QString fixtureDir = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/SdkGreeter");
 const QString openRtmPrefix = QStringLiteral(RTSTUDIO_OPENRTM_PREFIX);
 
 /// Configures the generated project in @p dir with OpenRTM-aist's CMake package and builds it
@@ -194,7 +194,7 @@ void TestInteropBuild::codegenFixturesBuild()
 {
     // The golden-file fixtures of the code generator cover the templates' other branches.
     QFETCH(QString, name);
-    const QString fixtures = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen");
+    const QString fixtures = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen");
     const QString dir = m_work.filePath("codegen/" + name);
     const RtctlResult generated = runRtctl({"gen", fixtures + '/' + name + ".xml", "--lang", "cpp",
                                             "-o", dir, "--idl-dir", fixtures + "/idl"});

@@ -98,7 +98,7 @@ void TestInteropData::rtmanagerPreconnectsToOpenRtm()
         = QStringLiteral("ConsoleIn0.out?port=rtcname://%1/openrtm.host_cxt/ConsoleOut0.in").arg(m_live.namingServer());
     QString error;
     QProcess *manager = m_live.startHostManager(
-        QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), QStringLiteral("ours"),
+        RTMANAGER_PATH, LiveTest::freePort(), QStringLiteral("ours"),
         {"manager.components.precreate=ConsoleIn", "manager.components.preconnect=" + entry,
          "manager.components.preactivation=ConsoleIn0"},
         &error);

@@ -80,7 +80,7 @@ void TestInteropFsm::traceMatchesOpenRtmMacho()
     trace.start(m_project + "/build/fsmtrace", {});
     QVERIFY(trace.waitForFinished(20000));
     QCOMPARE(trace.exitCode(), 0);
-    QFile expected(QStringLiteral(SDK_FSM_DIR "/lamp.trace"));
+    QFile expected(SDK_FSM_DIR + QStringLiteral("/lamp.trace"));
     QVERIFY(expected.open(QIODevice::ReadOnly | QIODevice::Text));
     const QStringList wanted = QString::fromUtf8(expected.readAll()).split('\n', Qt::SkipEmptyParts);
     const QStringList lines = QString::fromUtf8(trace.readAllStandardOutput()).split('\n', Qt::SkipEmptyParts);

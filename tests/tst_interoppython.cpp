@@ -22,7 +22,7 @@ constexpr int RunTimeoutMs = 30000;
 QString dataFile(const QString &name)
 {
     for (const char *folder : {"/python/", "/pythonidl/"}) {
-        const QString path = QStringLiteral(RTSTUDIO_TEST_DATA_DIR) + QLatin1String(folder) + name;
+        const QString path = RTSTUDIO_TEST_DATA_DIR + QLatin1String(folder) + name;
         if (QFileInfo::exists(path))
             return path;
     }
@@ -83,7 +83,7 @@ QProcess *TestInteropPython::startScript(const QString &script, const QString &i
                + extraConf.toUtf8());
     file.close();
     const QProcessEnvironment environment = LiveTest::pythonEnvironment(
-        m_stubs + QLatin1Char(':') + QStringLiteral(RTSTUDIO_PYTHON_PATH), QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD));
+        m_stubs + QLatin1Char(':') + RTSTUDIO_PYTHON_PATH, QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD));
     return m_live.startRegistered(
         QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {script, QStringLiteral("-f"), conf},
         [this, &instance] { return rtctl({QStringLiteral("ls")}).out.contains(instance); }, error, RunTimeoutMs,

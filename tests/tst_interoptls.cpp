@@ -137,7 +137,7 @@ void TestInteropTls::initTestCase()
     m_consoleOut = startExample(QStringLiteral("ConsoleOutComp"), &error, {"corba.args:" + tlsOnly(m_consoleOutPort)});
     QVERIFY2(m_consoleOut, qPrintable(error));
     m_live.setErrorsRead(true);
-    QVERIFY2(m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+    QVERIFY2(m_live.startProcess(RTMANAGER_PATH,
                                  {"-f", path("rtc.conf"), "-o", "manager.is_master=YES", "-o",
                                   QStringLiteral("corba.master_manager=127.0.0.1:%1").arg(LiveTest::freePort()), "-o",
                                   "naming.formats=ours.host_cxt/%n.rtc", "-o", "manager.naming_formats=ours.host_cxt/%n.mgr",

@@ -164,10 +164,10 @@ void TestLocalRuntime::deploymentShowsProgressOnATerminal()
     const QStringList arguments {"resurrect", "--create", "-s",
                                  QStringLiteral("127.0.0.1:%1").arg(started["nameServer"]["port"].toInt()), "-m",
                                  QStringLiteral("corbaloc::127.0.0.1:%1").arg(started["manager"]["port"].toInt()),
-                                 QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")};
+                                 RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml")};
     // On a terminal (script's pseudo-terminal) each step under way stands on the line until it is done.
     QProcess terminal;
-    terminal.start(script, {"-qec", QStringLiteral(RTCTL_PATH " ") + arguments.join(' '), "/dev/null"});
+    terminal.start(script, {"-qec", (RTCTL_PATH + QStringLiteral(" ")) + arguments.join(' '), "/dev/null"});
     QVERIFY(terminal.waitForFinished(60000));
     const QString shown = QString::fromUtf8(terminal.readAllStandardOutput());
     QVERIFY2(shown.contains("\r\033[K… create ConsoleIn0\r\033[Kdone create ConsoleIn0"), qPrintable(shown));

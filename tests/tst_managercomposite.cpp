@@ -150,7 +150,7 @@ void TestManagerComposite::init()
                                "exec_cxt.periodic.rate=200",
                                "manager.components.precreate=ConsoleIn, ConsoleOut, PeriodicECSharedComposite",
                                "composite.PeriodicECShared.PeriodicECSharedComposite0.config_file=" + conf};
-    QVERIFY2(m_live->startManager(QStringLiteral(RTMANAGER_PATH), port, options, &error), qPrintable(error));
+    QVERIFY2(m_live->startManager(RTMANAGER_PATH, port, options, &error), qPrintable(error));
     CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
     m_manager = RTM::Manager::_narrow(object);
     QVERIFY(!CORBA::is_nil(m_manager));

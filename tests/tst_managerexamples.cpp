@@ -225,7 +225,7 @@ void TestManagerExamples::initTestCase()
     const QStringList options {"corba.nameservers=" + m_live->namingServer(),
                                "naming.formats=exhost.host_cxt/%n.rtc",
                                "manager.naming_formats=exhost.host_cxt/%n.mgr"};
-    QVERIFY2(m_live->startManager(QStringLiteral(RTMANAGER_PATH), port, options, &error), qPrintable(error));
+    QVERIFY2(m_live->startManager(RTMANAGER_PATH, port, options, &error), qPrintable(error));
     CORBA::Object_var object = m_orb->string_to_object(LiveTest::managerLocation(port).constData());
     m_manager = RTM::Manager::_narrow(object);
     QVERIFY(!CORBA::is_nil(m_manager));

@@ -25,7 +25,7 @@
 
 namespace {
 
-const QString greeterFixture = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
+const QString greeterFixture = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/SdkGreeter");
 const QString package = QStringLiteral("rtc-rtstudiotests-test-sdkgreeter");
 
 QString tool(const QString &program, const QStringList &arguments, int *code = nullptr)
@@ -682,7 +682,7 @@ void TestManagerInstall::systemdUnit()
     const QString unit = units + "/rtmanager.service";
     QCOMPARE(enabled.out.trimmed(), unit);
     const QString text = QString::fromUtf8(readFile(unit));
-    QVERIFY2(text.contains(QStringLiteral("ExecStart=" RTMANAGER_PATH " -f ") + config),
+    QVERIFY2(text.contains((QStringLiteral("ExecStart=") + RTMANAGER_PATH + QStringLiteral(" -f ")) + config),
              qPrintable(text));
     if (QStandardPaths::findExecutable("systemd-analyze").isEmpty())
         QSKIP("systemd-analyze is not installed");

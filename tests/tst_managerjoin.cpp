@@ -127,7 +127,7 @@ void TestManagerJoin::init()
     m_port = LiveTest::freePort();
     QString error;
     QProcess *master = m_live->startManager(
-        QStringLiteral(RTMANAGER_PATH), m_port,
+        RTMANAGER_PATH, m_port,
         {"naming.enable=NO", "manager.components.precreate=ConsoleIn"}, &error);
     QVERIFY2(master, qPrintable(error));
     CORBA::Object_var object
@@ -167,7 +167,7 @@ RTM::Manager_ptr TestManagerJoin::startOwnMaster(QProcess &process)
 {
     const quint16 port = LiveTest::freePort();
     process.start(
-        QStringLiteral(RTMANAGER_PATH),
+        RTMANAGER_PATH,
         {"-d", "-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o", "naming.enable=NO"});
     if (!process.waitForStarted(10000))
         return RTM::Manager::_nil();
@@ -197,7 +197,7 @@ void TestManagerJoin::slavesStartedAtOnceAllJoin()
         auto *slave = new QProcess(this);
         const QString name = QStringLiteral("joiner%1").arg(i);
         slave->setStandardErrorFile(m_dir->filePath(name + ".err"));
-        slave->start(QStringLiteral(RTMANAGER_PATH),
+        slave->start(RTMANAGER_PATH,
                      {"-o", QString("corba.master_manager=127.0.0.1:%1").arg(m_port), "-o",
                       QString("corba.endpoints=127.0.0.1:%1").arg(LiveTest::freePort()), "-o",
                       "naming.enable=NO", "-o", "manager.instance_name=" + name});

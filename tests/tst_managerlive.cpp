@@ -184,12 +184,12 @@ RTM::Manager_ptr TestManagerLive::startMaster(QString *error, QProcess **process
 {
     m_masterPort = LiveTest::freePort();
     // `extra` last: its keys override these.
-    const QStringList args = QStringList{"-f", QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/manager/rtc.conf"),
+    const QStringList args = QStringList{"-f", RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/manager/rtc.conf"),
                               "-o", QString("corba.endpoints=127.0.0.1:%1").arg(m_masterPort),
                               "-o", "corba.nameservers=" + m_live->namingServer(),
-                              "-o", QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR)}
+                              "-o", QStringLiteral("manager.modules.load_path=") + MANAGER_TEST_MODULE_DIR}
                              + extra;
-    QProcess *started = m_live->startProcess(QStringLiteral(RTMANAGER_PATH), args, "rtmanager ready", error);
+    QProcess *started = m_live->startProcess(RTMANAGER_PATH, args, "rtmanager ready", error);
     if (!started)
         return RTM::Manager::_nil();
     if (process)
@@ -275,7 +275,7 @@ void TestManagerLive::masterServesAndRegisters()
     QCOMPARE(nv(profile->properties, "address"), QString("127.0.0.1:%1").arg(m_masterPort));
     // As OpenRTM-aist's, the profile holds the configuration's manager.* keys without the prefix.
     QCOMPARE(nv(profile->properties, "naming_formats"), QString("%h.host_cxt/%n.mgr"));
-    QCOMPARE(nv(profile->properties, "modules.load_path"), QString(MANAGER_TEST_MODULE_DIR));
+    QCOMPARE(nv(profile->properties, "modules.load_path"), MANAGER_TEST_MODULE_DIR);
     QCOMPARE(nv(profile->properties, "slave_check_interval"), QString("200"));
     QCOMPARE(nv(profile->properties, "pid"), QString::number(m_masterProcess->processId()));
     for (CORBA::ULong i = 0; i < profile->properties.length(); ++i) {
@@ -412,8 +412,7 @@ void TestManagerLive::configurationThroughManager()
     QCOMPARE(QByteArray(active->id), QByteArray("mode1"));
 
     // A component configuration file as OpenRTM's config_file key names it; the request still wins.
-    RTC::RTObject_var fromFile = create(QStringLiteral("ConfigSample?config_file=" RTSTUDIO_TEST_DATA_DIR
-                                                       "/manager/configsample.conf&conf.default.int_param1=5"));
+    RTC::RTObject_var fromFile = create(QStringLiteral("ConfigSample?config_file=") + RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/manager/configsample.conf&conf.default.int_param1=5"));
     QVERIFY2(!CORBA::is_nil(fromFile), qPrintable(lastError(m_master)));
     QCOMPARE(statusText(fromFile, "int_param0"), QString("99"));
     QCOMPARE(statusText(fromFile, "int_param1"), QString("5"));
@@ -483,7 +482,7 @@ void TestManagerLive::badRequests()
     } else if (request.startsWith("load:")) {
         // The text file is looked at in a load path of its own: a module from elsewhere is refused first.
         if (request.mid(5) == "notamodule.so")
-            restartMaster({"-o", "manager.modules.load_path=" RTSTUDIO_TEST_DATA_DIR "/manager"});
+            restartMaster({"-o", QStringLiteral("manager.modules.load_path=") + RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/manager")});
         QCOMPARE(m_master->load_module(request.mid(5).toUtf8().constData(), ""), RTC::BAD_PARAMETER);
     } else {
         QDeadlineTimer bound(10000);
@@ -637,14 +636,14 @@ void TestManagerLive::loadModule()
     QCOMPARE(activate(counter), RTC::RTC_OK);
     QTRY_VERIFY(status(counter, "sent_count") > 3);
 
-    QCOMPARE(m_master->unload_module(QStringLiteral(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so").toUtf8().constData()),
+    QCOMPARE(m_master->unload_module((MANAGER_TEST_MODULE_DIR + QStringLiteral("/ManagerTestModule.so")).toUtf8().constData()),
              RTC::RTC_OK);
     loaded = m_master->get_loaded_modules();
     QCOMPARE(loaded->length(), CORBA::ULong(0));
     RTM::ModuleProfileList_var factories = m_master->get_factory_profiles();
     for (CORBA::ULong i = 0; i < factories->length(); ++i)
         QVERIFY(nv(factories[i].properties, "implementation_id") != "ModuleCounter");
-    QCOMPARE(m_master->load_module(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", "NoSuchInit"),
+    QCOMPARE(m_master->load_module(qPrintable(MANAGER_TEST_MODULE_DIR + QStringLiteral("/ManagerTestModule.so")), "NoSuchInit"),
              RTC::BAD_PARAMETER);
     QVERIFY(lastError(m_master).contains("no init function 'NoSuchInit'"));
 }
@@ -657,7 +656,7 @@ void TestManagerLive::modulesOutsideTheLoadPathRefused()
     QTemporaryDir elsewhere;
     QVERIFY(elsewhere.isValid());
     const QString module = elsewhere.filePath("ManagerTestModule.so");
-    QVERIFY(QFile::copy(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", module));
+    QVERIFY(QFile::copy(MANAGER_TEST_MODULE_DIR + QStringLiteral("/ManagerTestModule.so"), module));
     const QByteArray path = module.toUtf8();
     QCOMPARE(m_master->load_module(path.constData(), ""), RTC::BAD_PARAMETER);
     QVERIFY2(lastError(m_master).contains("abs_path_allowed is NO"), qPrintable(lastError(m_master)));
@@ -668,7 +667,7 @@ void TestManagerLive::modulesOutsideTheLoadPathRefused()
     QVERIFY(CORBA::is_nil(RTC::RTObject_var(create(module.chopped(3)))));
     QCOMPARE(RTM::ModuleProfileList_var(m_master->get_loaded_modules())->length(), 0u);
     // The same file in the load path loads by its full path.
-    QCOMPARE(m_master->load_module(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", ""), RTC::RTC_OK);
+    QCOMPARE(m_master->load_module(qPrintable(MANAGER_TEST_MODULE_DIR + QStringLiteral("/ManagerTestModule.so")), ""), RTC::RTC_OK);
 
     restartMaster({"-o", "manager.modules.abs_path_allowed=YES"});
     QCOMPARE(m_master->load_module(path.constData(), ""), RTC::RTC_OK);
@@ -691,7 +690,7 @@ void TestManagerLive::remoteConfigurationCannotChooseCode()
                  qPrintable(lastError(m_master)));
     }
     RTM::NVList_var config = m_master->get_configuration();
-    QCOMPARE(nv(config, "manager.modules.load_path"), QStringLiteral(MANAGER_TEST_MODULE_DIR));
+    QCOMPARE(nv(config, "manager.modules.load_path"), MANAGER_TEST_MODULE_DIR);
     QCOMPARE(nv(config, "manager.modules.abs_path_allowed"), QString());
     // Other keys stay settable, as in OpenRTM-aist.
     QCOMPARE(m_master->set_configuration("manager.naming_formats", "%h.host_cxt/%n.mgr"), RTC::RTC_OK);
@@ -751,8 +750,8 @@ void TestManagerLive::loadableModulesNameTheirTypes()
     QTemporaryDir modules;
     QVERIFY(modules.isValid());
     const QString module = modules.filePath("ManagerTestModule.so");
-    QVERIFY(QFile::copy(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so", module));
-    QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR "/manager/notamodule.so",
+    QVERIFY(QFile::copy(MANAGER_TEST_MODULE_DIR + QStringLiteral("/ManagerTestModule.so"), module));
+    QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/manager/notamodule.so"),
                         modules.filePath("notamodule.so")));
     restartMaster({"-o", "manager.modules.load_path=" + modules.path()});
     RTM::ModuleProfileList_var loadable = m_master->get_loadable_modules();
@@ -777,7 +776,7 @@ void TestManagerLive::loadableModulesNameTheirTypes()
 
     // A file that changes is looked at again.
     QVERIFY(QFile::remove(module));
-    QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR "/manager/notamodule.so", module));
+    QVERIFY(QFile::copy(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/manager/notamodule.so"), module));
     QCOMPARE(RTM::ModuleProfileList_var(m_master->get_loadable_modules())->length(), 0u);
 
     // A module whose init function does not return is given manager.modules.profile_timeout.
@@ -789,10 +788,10 @@ void TestManagerLive::loadableModulesNameTheirTypes()
     environment.insert("MANAGER_TEST_MODULE_INIT_DELAY_MS", "60000");
     const quint16 port = LiveTest::freePort();
     QProcess *hanging = m_live->startProcess(
-        QStringLiteral(RTMANAGER_PATH),
+        RTMANAGER_PATH,
         {"-o", QString("corba.endpoints=127.0.0.1:%1").arg(port), "-o",
          "corba.nameservers=" + m_live->namingServer(), "-o",
-         QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR), "-o",
+         QStringLiteral("manager.modules.load_path=") + MANAGER_TEST_MODULE_DIR, "-o",
          "manager.modules.profile_timeout=300"},
         "rtmanager ready", &error, 10000, environment);
     QVERIFY2(hanging, qPrintable(error));
@@ -803,7 +802,7 @@ void TestManagerLive::loadableModulesNameTheirTypes()
     QCOMPARE(RTM::ModuleProfileList_var(manager->get_loadable_modules())->length(), 0u);
     QVERIFY2(timer.elapsed() < 5000, qPrintable(QString::number(timer.elapsed())));
     // Nothing of it is left running.
-    QTRY_COMPARE(QProcess::execute("pgrep", {"-f", "module-profile " MANAGER_TEST_MODULE_DIR}), 1);
+    QTRY_COMPARE(QProcess::execute("pgrep", {"-f", QStringLiteral("module-profile ") + MANAGER_TEST_MODULE_DIR}), 1);
 }
 
 void TestManagerLive::shutdownUnregisters()
@@ -947,7 +946,7 @@ void TestManagerLive::commandLine()
     // -d makes a master, -p picks its port; unknown arguments and unreadable files are refused.
     const quint16 port = LiveTest::freePort();
     QString error;
-    QProcess *master = m_live->startProcess(QStringLiteral(RTMANAGER_PATH),
+    QProcess *master = m_live->startProcess(RTMANAGER_PATH,
                                             {"-d", "-p", QString::number(port), "-o", "naming.enable=NO"},
                                             QString("rtmanager ready on 127.0.0.1:%1").arg(port), &error);
     QVERIFY2(master, qPrintable(error));
@@ -959,7 +958,7 @@ void TestManagerLive::commandLine()
     // component program).
     m_live->setErrorsRead(true);
     QProcess *standalone = m_live->startProcess(
-        QStringLiteral(RTMANAGER_PATH),
+        RTMANAGER_PATH,
         {"-o", "naming.enable=NO", "-o", QStringLiteral("corba.master_manager=127.0.0.1:%1").arg(LiveTest::freePort())},
         QStringLiteral("rtmanager ready"), &error);
     m_live->setErrorsRead(false);
@@ -971,7 +970,7 @@ void TestManagerLive::commandLine()
     for (const QStringList &bad : {QStringList{"--bogus"}, QStringList{"-f", "/nonexistent/rtc.conf"},
                                    QStringList{"-o", "novalue"}}) {
         QProcess refused;
-        refused.start(QStringLiteral(RTMANAGER_PATH), bad);
+        refused.start(RTMANAGER_PATH, bad);
         QVERIFY(refused.waitForFinished(10000));
         QCOMPARE(refused.exitCode(), 2);
         QVERIFY(!refused.readAllStandardError().isEmpty());
@@ -1000,7 +999,7 @@ void TestManagerLive::shutdownWithoutComponents()
          << "-o" << "corba.master_manager="; // a manager of its own, joining no master
     if (deleteLast)
         args << "-o" << "manager.components.precreate=ConsoleIn";
-    QProcess *process = m_live->startProcess(QStringLiteral(RTMANAGER_PATH), args, "rtmanager ready", &error);
+    QProcess *process = m_live->startProcess(RTMANAGER_PATH, args, "rtmanager ready", &error);
     QVERIFY2(process, qPrintable(error));
     if (deleteLast) {
         CORBA::Object_var object

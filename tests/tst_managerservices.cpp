@@ -87,7 +87,7 @@ void TestManagerServices::init()
                                "manager.components.precreate=ConsoleIn",
                                "manager.slave_call_timeout=800",
                                "manager.slave_check_interval=60000"};
-    m_process = m_live->startManager(QStringLiteral(RTMANAGER_PATH), m_port, options, &error);
+    m_process = m_live->startManager(RTMANAGER_PATH, m_port, options, &error);
     QVERIFY2(m_process, qPrintable(error));
     m_master = managerAt(m_port);
     QVERIFY(!CORBA::is_nil(m_master));

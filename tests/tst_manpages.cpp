@@ -37,7 +37,7 @@ bool names(const QString &roff, const QString &option)
     return word.match(roff).hasMatch();
 }
 
-const QString rtctl = QStringLiteral(RTCTL_PATH);
+const QString rtctl = RTCTL_PATH;
 
 } // namespace
 
@@ -60,7 +60,7 @@ void TestManPages::rtctlPageIsWhatRtctlWrites()
     const RtctlResult man = runProgram(rtctl, {QStringLiteral("--man")});
     QCOMPARE(man.code, 0);
     QVERIFY(man.out.startsWith(QStringLiteral(".\\\" SPDX-License-Identifier: MIT\n.TH RTCTL 1")));
-    QCOMPARE(readText(QStringLiteral(RTCTL_MAN_PAGE)), man.out);
+    QCOMPARE(readText(RTCTL_MAN_PAGE), man.out);
     QVERIFY2(!man.out.contains(QStringLiteral("@")), "a placeholder of rtctl.1.in was left");
     // Hidden: --help lists commands and options for users, not the build's.
     QVERIFY(!runProgram(rtctl, {QStringLiteral("--help")}).out.contains(QStringLiteral("--man")));
@@ -68,7 +68,7 @@ void TestManPages::rtctlPageIsWhatRtctlWrites()
 
 void TestManPages::rtctlPageHasEveryCommandAndOption()
 {
-    const QString page = readText(QStringLiteral(RTCTL_MAN_PAGE));
+    const QString page = readText(RTCTL_MAN_PAGE);
     const RtctlResult help = runProgram(rtctl, {QStringLiteral("--help")});
     static const QRegularExpression line(QStringLiteral("^  ([a-z]+)  "),
                                          QRegularExpression::MultilineOption);
@@ -98,10 +98,10 @@ void TestManPages::pagesNameEveryOptionOfHelp_data()
 {
     QTest::addColumn<QString>("program");
     QTest::addColumn<QString>("page");
-    QTest::newRow("rtstudio") << QStringLiteral(RTSTUDIO_PATH)
-                              << QStringLiteral(MAN_PAGE_DIR "/rtstudio.1");
-    QTest::newRow("rtmanager") << QStringLiteral(RTMANAGER_PATH)
-                               << QStringLiteral(MAN_PAGE_DIR "/rtmanager.1");
+    QTest::newRow("rtstudio") << RTSTUDIO_PATH
+                              << MAN_PAGE_DIR + QStringLiteral("/rtstudio.1");
+    QTest::newRow("rtmanager") << RTMANAGER_PATH
+                               << MAN_PAGE_DIR + QStringLiteral("/rtmanager.1");
 }
 
 void TestManPages::pagesNameEveryOptionOfHelp()
@@ -124,9 +124,9 @@ void TestManPages::pagesNameEveryOptionOfHelp()
 void TestManPages::groffFormatsWithoutWarnings_data()
 {
     QTest::addColumn<QString>("page");
-    QTest::newRow("rtctl") << QStringLiteral(RTCTL_MAN_PAGE);
-    QTest::newRow("rtstudio") << QStringLiteral(MAN_PAGE_DIR "/rtstudio.1");
-    QTest::newRow("rtmanager") << QStringLiteral(MAN_PAGE_DIR "/rtmanager.1");
+    QTest::newRow("rtctl") << RTCTL_MAN_PAGE;
+    QTest::newRow("rtstudio") << MAN_PAGE_DIR + QStringLiteral("/rtstudio.1");
+    QTest::newRow("rtmanager") << MAN_PAGE_DIR + QStringLiteral("/rtmanager.1");
 }
 
 // What `man -l PAGE` formats, with every groff warning on.

@@ -22,7 +22,7 @@ ChildRun runChild(const QStringList &functions)
     environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
     child.setProcessEnvironment(environment);
     child.setProcessChannelMode(QProcess::MergedChannels);
-    child.start(QStringLiteral(MODALGUARD_CHILD_PATH), functions);
+    child.start(MODALGUARD_CHILD_PATH, functions);
     ChildRun run;
     // Only a hang comes near this bound: without the guard the first dialog never closes.
     run.finished = child.waitForFinished(60000);

@@ -159,7 +159,7 @@ QString TestMultiHost::managerLocation(const QString &host) const
 // (%h.host_cxt), and it listens on a Unix socket too, which peers on other hosts must ignore.
 bool TestMultiHost::startManager(const QString &host, QString *error)
 {
-    QProcess *manager = m_live.at(host)->startManager(QStringLiteral(RTMANAGER_PATH), managerPort,
+    QProcess *manager = m_live.at(host)->startManager(RTMANAGER_PATH, managerPort,
                                                       {"corba.nameservers=" + server(host)}, error);
     m_managers[host] = manager;
     return manager != nullptr;
@@ -171,7 +171,7 @@ QString TestMultiHost::writeSystem(bool sinkFirst, QString *error) const
 {
     Profile::Diagnostics diagnostics;
     const auto loaded = Profile::loadProfileFile(
-        QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
+        RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
         &diagnostics);
     if (!loaded || !loaded->rts) {
         *error = QStringLiteral("cannot read the ConsoleInOut example");
@@ -398,7 +398,7 @@ RtctlResult TestMultiHost::restoreKilling(const QString &killed, const QString &
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert("RTCTREE_NAMESERVERS", server(hostA) + ';' + server(hostB));
     process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(RTCTL_PATH), arguments);
+    process.start(RTCTL_PATH, arguments);
     QByteArray out;
     const QDeadlineTimer deadline(30000);
     while (!out.contains(killAfter.toUtf8()) && !deadline.hasExpired()

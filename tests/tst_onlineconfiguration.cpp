@@ -65,7 +65,7 @@ void TestOnlineConfiguration::initTestCase()
                                  "-o",
                                  "manager.components.precreate=ConfigSample"};
     QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+        m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error),
         qPrintable(error));
 }
 

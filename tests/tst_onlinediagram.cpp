@@ -95,7 +95,7 @@ void TestOnlineDiagram::initTestCase()
         "-o",
         "manager.components.precreate=ConsoleIn,ConsoleOut"};
     m_manager
-        = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+        = m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error);
     QVERIFY2(m_manager, qPrintable(error));
 }
 
@@ -548,7 +548,7 @@ void TestOnlineDiagram::killedManagerRecoversOnTheNextPoll()
                                  "manager.naming_formats=diahost.host_cxt/revenant.mgr", "-o",
                                  "manager.components.precreate=ConsoleIn?instance_name=Revenant"};
     QString error;
-    QProcess *manager = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    QProcess *manager = m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error);
     QVERIFY2(manager, qPrintable(error));
     OnlineSession session;
     OnlineDiagram diagram(&session);
@@ -568,7 +568,7 @@ void TestOnlineDiagram::killedManagerRecoversOnTheNextPoll()
     QCOMPARE(diagram.unreachableComponents(), QStringList {"Revenant"});
 
     // Back under a new reference: the next rounds find it through the name server.
-    manager = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+    manager = m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error);
     QVERIFY2(manager, qPrintable(error));
     QVERIFY(component("Revenant").ior() != firstIor);
     pollUntil(diagram, [&] { return diagram.state("Revenant") == LifeCycleState::Inactive; });

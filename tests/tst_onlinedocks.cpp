@@ -201,7 +201,7 @@ void TestOnlineDocks::initTestCase()
         "-o",
         "manager.components.precreate=ConfigSample,ConsoleIn,ConsoleOut"};
     QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+        m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error),
         qPrintable(error));
 }
 

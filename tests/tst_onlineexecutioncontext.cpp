@@ -61,7 +61,7 @@ void TestOnlineExecutionContext::initTestCase()
         "-o",
         "manager.components.precreate=ConsoleIn,ConsoleOut"};
     QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+        m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error),
         qPrintable(error));
 }
 

@@ -62,8 +62,8 @@ QProcess *TestOnlineManager::startManager(const QString &host, QString *error)
         "-o",
         "manager.components.precreate=ConsoleIn",
         "-o",
-        QStringLiteral("manager.modules.load_path=" MANAGER_TEST_MODULE_DIR)};
-    return m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", error);
+        QStringLiteral("manager.modules.load_path=") + MANAGER_TEST_MODULE_DIR};
+    return m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", error);
 }
 
 Corba::ManagerProxy TestOnlineManager::manager(const QString &host) const
@@ -121,7 +121,7 @@ void TestOnlineManager::showsFactoriesAndInstances()
     QCOMPARE(loadable->childCount(), 1);
     QCOMPARE(loadable->child(0)->text(0), QStringLiteral("ModuleCounter"));
     QCOMPARE(loadable->child(0)->text(1),
-             QStringLiteral(MANAGER_TEST_MODULE_DIR "/ManagerTestModule.so"));
+             MANAGER_TEST_MODULE_DIR + QStringLiteral("/ManagerTestModule.so"));
     QVERIFY(view.types().contains("ModuleCounter"));
     view.setCreateForm("ModuleCounter", 0, {{"instance_name", "Counted0"}});
     actAndWait(view, [&] { view.create(); });

@@ -77,7 +77,7 @@ void TestOnlineNameService::initTestCase()
                                  "-o",
                                  "manager.components.precreate=ConsoleIn,ConsoleOut"};
     m_manager
-        = m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error);
+        = m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error);
     QVERIFY2(m_manager, qPrintable(error));
 }
 
@@ -406,7 +406,7 @@ void TestOnlineNameService::stoppedComponentsNeverHideTheTree()
     // is stopped (as a debugger or a hung machine would), the first one keeps answering.
     QString error;
     QProcess *hung = m_live.startHostManager(
-        QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(), "hunghost",
+        RTMANAGER_PATH, LiveTest::freePort(), "hunghost",
         {"manager.components.precreate=ConsoleIn,ConsoleIn,ConsoleIn,ConsoleOut,ConsoleOut"}, &error);
     QVERIFY2(hung, qPrintable(error));
     struct Stop

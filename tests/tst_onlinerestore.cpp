@@ -84,7 +84,7 @@ void TestOnlineRestore::initTestCase()
         "-o",
         "manager.components.precreate=ConsoleIn,ConsoleOut,ConfigSample"};
     QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH), arguments, "rtmanager ready", &error),
+        m_live.startProcess(RTMANAGER_PATH, arguments, "rtmanager ready", &error),
         qPrintable(error));
 }
 
@@ -230,7 +230,7 @@ void TestOnlineRestore::createsTheExampleFromNothing()
     QString error;
     QVERIFY2(fresh.startNameServer(&error), qPrintable(error));
     const quint16 managerPort = LiveTest::freePort();
-    QVERIFY2(fresh.startProcess(QStringLiteral(RTMANAGER_PATH),
+    QVERIFY2(fresh.startProcess(RTMANAGER_PATH,
                                 {"-d", "-o",
                                  QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(managerPort),
                                  "-o", "corba.nameservers=" + fresh.namingServer(), "-o",
@@ -240,7 +240,7 @@ void TestOnlineRestore::createsTheExampleFromNothing()
              qPrintable(error));
     Profile::Diagnostics diagnostics;
     const auto loaded = Profile::loadProfileFile(
-        QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
+        RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
         &diagnostics);
     QVERIFY(loaded && loaded->rts);
     Deploy::TargetOptions target;
@@ -360,10 +360,10 @@ struct TwoManagers
         if (!live.startNameServer(error))
             return false;
         creatorPort = LiveTest::freePort();
-        if (!live.startHostManager(QStringLiteral(RTMANAGER_PATH), creatorPort, "makerhost", {}, error))
+        if (!live.startHostManager(RTMANAGER_PATH, creatorPort, "makerhost", {}, error))
             return false;
         hostPort = LiveTest::freePort();
-        host = live.startHostManager(QStringLiteral(RTMANAGER_PATH), hostPort, "stophost",
+        host = live.startHostManager(RTMANAGER_PATH, hostPort, "stophost",
                                      {"manager.components.precreate=ConsoleOut"}, error);
         creator = QStringLiteral("corbaloc::127.0.0.1:%1").arg(creatorPort);
         return host != nullptr;

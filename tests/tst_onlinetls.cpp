@@ -87,7 +87,7 @@ void TestOnlineTls::nameServiceShowsEncryptionAndIdentity()
     QString error;
     QVERIFY2(m_live.startTlsNameServer(authority + "/ca.pem", authority + "/robot1.pem", &error), qPrintable(error));
     const quint16 managerPort = LiveTest::freePort();
-    QVERIFY2(m_live.startManager(QStringLiteral(RTMANAGER_PATH), managerPort,
+    QVERIFY2(m_live.startManager(RTMANAGER_PATH, managerPort,
                                  {"corba.nameservers=" + m_live.namingServer(), "naming.formats=robot1.host_cxt/%n.rtc",
                                   "manager.naming_formats=robot1.host_cxt/%n.mgr", "manager.components.precreate=ConsoleIn",
                                   "corba.ssl.certificate_authority_file=" + authority + "/ca.pem",

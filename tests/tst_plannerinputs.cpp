@@ -20,7 +20,7 @@ namespace {
 
 QString dataFile(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/planner/")) + name;
 }
 
 Profile::RtsProfile robot()

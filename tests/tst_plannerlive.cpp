@@ -44,7 +44,7 @@ void TestPlannerLive::initTestCase()
     QVERIFY(QDir(m_packages.path()).mkpath(QStringLiteral("rtc-rtstudio-sensor-lidar")));
     m_onboard = LiveTest::freePort();
     QVERIFY2(m_live.startManager(
-                 QStringLiteral(RTMANAGER_PATH), m_onboard,
+                 RTMANAGER_PATH, m_onboard,
                  {QStringLiteral("naming.enable=NO"), QStringLiteral("node.devices=lidar0,camera0"),
                   QStringLiteral("node.role=onboard"),
                   QStringLiteral("manager.modules.package_path=") + m_packages.path()},
@@ -52,7 +52,7 @@ void TestPlannerLive::initTestCase()
              qPrintable(error));
     m_base = LiveTest::freePort();
     QVERIFY2(m_live.startManager(
-                 QStringLiteral(RTMANAGER_PATH), m_base,
+                 RTMANAGER_PATH, m_base,
                  {QStringLiteral("naming.enable=NO"), QStringLiteral("node.role=base")}, &error),
              qPrintable(error));
 }
@@ -105,7 +105,7 @@ void TestPlannerLive::unreachableManagerIsAnError()
 void TestPlannerLive::rtctlPlanPlacesByNodeFacts()
 {
     const RtctlResult result = runRtctl(
-        {QStringLiteral("plan"), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/live.xml"),
+        {QStringLiteral("plan"), RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/planner/live.xml"),
          QStringLiteral("--nodes"), address(m_base) + QLatin1Char(',') + address(m_onboard),
          QStringLiteral("--json"), QStringLiteral("--timeout"), QStringLiteral("3000")});
     QVERIFY2(result.code == 0, qPrintable(result.err));
@@ -125,7 +125,7 @@ void TestPlannerLive::rtctlPlanPlacesByNodeFacts()
 void TestPlannerLive::rtctlPlanWithoutTheDeviceNode()
 {
     const RtctlResult result = runRtctl({QStringLiteral("plan"),
-                                         QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/live.xml"),
+                                         RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/planner/live.xml"),
                                          QStringLiteral("--nodes"), address(m_base),
                                          QStringLiteral("--timeout"), QStringLiteral("3000")});
     QCOMPARE(result.code, 1);

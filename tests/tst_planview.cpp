@@ -33,7 +33,7 @@ constexpr int PlanTimeoutMs = 30000;
 
 QString dataFile(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/planner/")) + name;
 }
 
 std::optional<Profile::LoadedProfile> load(const QString &name)

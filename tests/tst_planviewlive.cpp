@@ -35,7 +35,7 @@ void TestPlanViewLive::initTestCase()
     Corba::Orb::setCallTimeout(3000);
     m_port = LiveTest::freePort();
     QString error;
-    QVERIFY2(m_live.startManager(QStringLiteral(RTMANAGER_PATH), m_port,
+    QVERIFY2(m_live.startManager(RTMANAGER_PATH, m_port,
                                  {QStringLiteral("naming.enable=NO"),
                                   QStringLiteral("node.devices=lidar0"),
                                   QStringLiteral("node.role=onboard")},
@@ -52,7 +52,7 @@ void TestPlanViewLive::lanesFromLiveManagers()
 {
     Profile::Diagnostics diagnostics;
     const auto robot = Profile::loadProfileFile(
-        QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/planner/robot.xml"), &diagnostics);
+        RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/planner/robot.xml"), &diagnostics);
     QVERIFY(robot && robot->rts);
     SystemModel model(*robot->rts);
     QUndoStack undo;

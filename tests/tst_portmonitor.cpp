@@ -59,7 +59,7 @@ void TestPortMonitor::initTestCase()
 {
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
-    QVERIFY2(m_live.startHostManager(QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(),
+    QVERIFY2(m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(),
                                      QStringLiteral("mon"),
                                      {"manager.components.precreate=SeqOut?exec_cxt.periodic.rate=200"},
                                      &error),

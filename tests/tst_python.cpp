@@ -75,7 +75,7 @@ private:
                                       m_host,
                                       hostName,
                                       QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
-                                      QStringLiteral(RTSTUDIO_PYTHON_PATH),
+                                      RTSTUDIO_PYTHON_PATH,
                                       QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
                                       m_work.path()};
 };
@@ -113,7 +113,7 @@ QString TestPython::printed(QProcess *process)
 void TestPython::initTestCase()
 {
     QVERIFY(m_work.isValid());
-    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH "/OpenRTM_aist/__init__.py"), "build rtpython first");
+    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH + QStringLiteral("/OpenRTM_aist/__init__.py")), "build rtpython first");
     int argc = 0;
     m_orb = CORBA::ORB_init(argc, nullptr);
     QString error;
@@ -464,7 +464,7 @@ void TestPython::generatedComponentRuns()
 {
     // The Builder's Python project as generated (data ports, OpenRTM_aist.instantiateDataType).
     const QString project = m_work.filePath(QStringLiteral("generated"));
-    const RtctlResult generated = runRtctl({"gen", RTSTUDIO_TEST_DATA_DIR "/buildergenerate/Counter.xml", "--lang",
+    const RtctlResult generated = runRtctl({"gen", RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/buildergenerate/Counter.xml"), "--lang",
                                             "python", "-o", project});
     QVERIFY2(generated.code == 0, qPrintable(generated.out + generated.err));
     QProcess *counter = startScript(project + QStringLiteral("/Counter.py"), QStringLiteral("Counter0.rtc"));

@@ -107,7 +107,7 @@ private:
                                       m_host,
                                       hostName,
                                       QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
-                                      QStringLiteral(RTSTUDIO_PYTHON_PATH),
+                                      RTSTUDIO_PYTHON_PATH,
                                       QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD),
                                       m_work.path()};
     LiveTest::PrintedOutput m_printed;
@@ -162,7 +162,7 @@ QProcess *TestPythonExamples::startRtctl(const QStringList &arguments)
     environment.insert(QStringLiteral("RTCSH_CWD"), QStringLiteral("/%1/%2.host_cxt").arg(m_live.namingServer(), hostName));
     environment.insert(QStringLiteral("RTCTREE_NAMESERVERS"), QString());
     QString error;
-    QProcess *process = m_live.startProcess(QStringLiteral(RTCTL_PATH), arguments, QString(), &error, runTimeoutMs, environment);
+    QProcess *process = m_live.startProcess(RTCTL_PATH, arguments, QString(), &error, runTimeoutMs, environment);
     if (!process)
         qWarning().noquote() << error;
     return process;
@@ -200,7 +200,7 @@ qint64 TestPythonExamples::slavePid(const QString &name) const
 void TestPythonExamples::initTestCase()
 {
     QVERIFY(m_work.isValid());
-    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH "/OpenRTM_aist/__init__.py"), "build rtpython first");
+    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH + QStringLiteral("/OpenRTM_aist/__init__.py")), "build rtpython first");
     int argc = 0;
     m_orb = CORBA::ORB_init(argc, nullptr);
     QString error;
@@ -209,7 +209,7 @@ void TestPythonExamples::initTestCase()
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     // Our Python modules are in the load path, found by their type names (in slaves too).
     m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName,
-                                        {QStringLiteral("manager.modules.load_path=" RTSTUDIO_TEST_DATA_DIR "/python")},
+                                        {QStringLiteral("manager.modules.load_path=") + RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/python")},
                                         &error);
     QVERIFY2(m_manager, qPrintable(error));
 }

@@ -21,7 +21,7 @@ const QString hostName = QStringLiteral("pymgr");
 
 QString testModule(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/python/")) + name;
 }
 
 /// The 1-based number of the first line of @p file containing @p marker; 0 when none does.
@@ -92,7 +92,7 @@ void TestPythonManager::initTestCase()
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     // The modules of the test data are in the manager's load path, found by their file names.
     m_manager = m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(), hostName,
-                                        {QStringLiteral("manager.modules.load_path=" RTSTUDIO_TEST_DATA_DIR "/python"),
+                                        {QStringLiteral("manager.modules.load_path=") + RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/python"),
                                          QStringLiteral("logger.enable=YES"),
                                          QStringLiteral("logger.file_name=") + m_work.filePath(QStringLiteral("manager.log"))},
                                         &error);
@@ -221,7 +221,7 @@ void TestPythonManager::managerWithoutPythonRefusesClearly()
 
 void TestPythonManager::corpusConsoleOutLoadsUnchanged()
 {
-    const QString module = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples/SimpleIO/ConsoleOut.py");
+    const QString module = RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-python-examples/SimpleIO/ConsoleOut.py");
     if (!QFileInfo::exists(module))
         QSKIP("the OpenRTM-aist-Python examples corpus (shared/conformance/openrtm-python-examples beside the "
               "project) is absent");

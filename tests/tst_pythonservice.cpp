@@ -34,17 +34,17 @@ const QString hostName = QStringLiteral("pysvchost");
 
 QString dataFile(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/pythonidl/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/pythonidl/")) + name;
 }
 
 QString autoTestDir()
 {
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples/AutoTest/");
+    return RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-python-examples/AutoTest/");
 }
 
 QString simpleServiceDir()
 {
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples/SimpleService/");
+    return RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-python-examples/SimpleService/");
 }
 
 } // namespace
@@ -99,7 +99,7 @@ private:
 void TestPythonService::initTestCase()
 {
     QVERIFY(m_work.isValid());
-    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH "/omniORB/__init__.py"),
+    QVERIFY2(QFileInfo::exists(RTSTUDIO_PYTHON_PATH + QStringLiteral("/omniORB/__init__.py")),
              "build rtpython first");
     int argc = 0;
     m_orb = CORBA::ORB_init(argc, nullptr);
@@ -141,7 +141,7 @@ QProcess *TestPythonService::startScript(const QString &script, const QString &s
     const QString conf = writeConf(QFileInfo(script).baseName(), extraConf);
     QString error;
     const QProcessEnvironment environment = LiveTest::pythonEnvironment(
-        stubs + QLatin1Char(':') + QStringLiteral(RTSTUDIO_PYTHON_PATH),
+        stubs + QLatin1Char(':') + RTSTUDIO_PYTHON_PATH,
         QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD));
     QProcess *process = m_live.startRegistered(
         QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE), {script, QStringLiteral("-f"), conf},
@@ -189,7 +189,7 @@ void TestPythonService::stubsOfEveryConstructImportAndConvert()
         QVERIFY2(QFileInfo::exists(stubs + QLatin1Char('/') + QLatin1String(file)), file);
     QProcess python;
     python.setProcessEnvironment(
-        LiveTest::pythonEnvironment(stubs + QLatin1Char(':') + QStringLiteral(RTSTUDIO_PYTHON_PATH),
+        LiveTest::pythonEnvironment(stubs + QLatin1Char(':') + RTSTUDIO_PYTHON_PATH,
                                     QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD)));
     python.start(QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
                  {dataFile(QStringLiteral("stubs.py"))});
@@ -321,9 +321,9 @@ void TestPythonService::everyParameterKindToAndFromCxx()
     // CxxKinds (data/sdkkinds), a C++ component of ours built against the SDK: it provides Echo to
     // PyKindsConsumer and calls PyKindsProvider's.
     const QString dir = m_work.filePath(QStringLiteral("sdk/CxxKinds"));
-    QVERIFY(SdkTest::copyTree(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdkkinds"), dir));
+    QVERIFY(SdkTest::copyTree(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdkkinds"), dir));
     QString log;
-    QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log,
+    QVERIFY2(SdkTest::buildProject(dir, RTSTUDIO_BUILD_DIR, &log,
                                    {QStringLiteral("-DKINDS_IDL=") + dataFile(QStringLiteral("Kinds.idl"))}),
              qPrintable(log.right(4000)));
     const QString stubs = compileIdl({dataFile(QStringLiteral("Kinds.idl"))});
@@ -426,7 +426,7 @@ void TestPythonService::pythonAndCxxComponentsCallEachOther()
 void TestPythonService::pythonComponentAndSdkExamplesCallEachOther()
 {
     // OpenRTM-aist's C++ MyServiceProvider and MyServiceConsumer examples, built against the SDK.
-    const QString corpus = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-examples/");
+    const QString corpus = RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-examples/");
     if (!QFileInfo::exists(corpus + QStringLiteral("MyServiceProvider/CMakeLists.txt")))
         QSKIP("the OpenRTM-aist examples corpus (shared/conformance/openrtm-examples beside the "
               "project) is absent");
@@ -435,7 +435,7 @@ void TestPythonService::pythonComponentAndSdkExamplesCallEachOther()
         const QString dir = m_work.filePath(QStringLiteral("sdk/") + QLatin1String(example));
         QVERIFY(SdkTest::copyTree(corpus + QLatin1String(example), dir));
         QString log;
-        QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log),
+        QVERIFY2(SdkTest::buildProject(dir, RTSTUDIO_BUILD_DIR, &log),
                  qPrintable(log.right(4000)));
         programs << dir + QStringLiteral("/build/src/") + QLatin1String(example)
                 + QStringLiteral("Comp");

@@ -16,7 +16,7 @@ namespace {
 
 QString dataFile(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/pythonidl/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/pythonidl/")) + name;
 }
 
 QString readText(const QString &path)
@@ -53,14 +53,14 @@ private:
 
 void TestPythonStubWriter::initTestCase()
 {
-    m_parser.addSearchDirectory(QStringLiteral(RTSTUDIO_IDL_DIR));
+    m_parser.addSearchDirectory(RTSTUDIO_IDL_DIR);
     const QStringList paths {dataFile(QStringLiteral("Calc.idl")),
                              dataFile(QStringLiteral("Scopes.idl"))};
     QVERIFY2(m_parser.parseFiles(paths), qPrintable(m_parser.diagnostics().value(0).toString()));
     m_files = PythonStubWriter(m_parser.model())
                   .write(paths, {readText(paths.at(0)), readText(paths.at(1))});
 
-    m_canvasParser.addSearchDirectory(QStringLiteral(RTSTUDIO_IDL_DIR));
+    m_canvasParser.addSearchDirectory(RTSTUDIO_IDL_DIR);
     const QStringList canvas{dataFile(QStringLiteral("Canvas.idl")), dataFile(QStringLiteral("Shapes.idl"))};
     QVERIFY2(m_canvasParser.parseFiles(canvas), qPrintable(m_canvasParser.diagnostics().value(0).toString()));
     m_canvasFiles = PythonStubWriter(m_canvasParser.model()).write(canvas, {readText(canvas.at(0)), readText(canvas.at(1))});

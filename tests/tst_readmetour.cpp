@@ -84,14 +84,14 @@ QProcessEnvironment TestReadmeTour::environment() const
 
 void TestReadmeTour::initTestCase()
 {
-    QFile readme(QStringLiteral(RTSTUDIO_SOURCE_DIR "/README.md"));
+    QFile readme(RTSTUDIO_SOURCE_DIR + QStringLiteral("/README.md"));
     QVERIFY(readme.open(QIODevice::ReadOnly));
     m_blocks = tourBlocks(QString::fromUtf8(readme.readAll()));
     QVERIFY2(m_blocks.size() >= 3, "README.md has no tour between <!-- tour --> and <!-- /tour -->");
     QVERIFY(m_checkout.isValid());
     QVERIFY(QDir().mkpath(m_checkout.filePath(QStringLiteral("build"))));
-    QVERIFY(QFile::link(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli"), m_checkout.filePath(QStringLiteral("build/cli"))));
-    QVERIFY(QFile::link(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources"), m_checkout.filePath(QStringLiteral("resources"))));
+    QVERIFY(QFile::link(RTSTUDIO_BUILD_DIR + QStringLiteral("/cli"), m_checkout.filePath(QStringLiteral("build/cli"))));
+    QVERIFY(QFile::link(RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources"), m_checkout.filePath(QStringLiteral("resources"))));
     QVERIFY(QDir().mkpath(m_checkout.filePath(QStringLiteral("run"))));
     QFile::setPermissions(m_checkout.filePath(QStringLiteral("run")),
                           QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
@@ -154,7 +154,7 @@ void TestReadmeTour::otherToursAreTheSame_data()
 void TestReadmeTour::otherToursAreTheSame()
 {
     QFETCH(QString, document);
-    QFile file(QStringLiteral(RTSTUDIO_SOURCE_DIR "/") + document);
+    QFile file((RTSTUDIO_SOURCE_DIR + QStringLiteral("/")) + document);
     QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(file.fileName()));
     const QList<Block> blocks = tourBlocks(QString::fromUtf8(file.readAll()));
     QCOMPARE(blocks.size(), m_blocks.size());
@@ -169,7 +169,7 @@ void TestReadmeTour::cleanupTestCase()
     // The tour ends with `rtctl local stop`; after a failure half-way this stops what it started.
     QProcess stop;
     stop.setProcessEnvironment(environment());
-    stop.start(QStringLiteral(RTSTUDIO_BUILD_DIR "/cli/rtctl"), {QStringLiteral("local"), QStringLiteral("stop")});
+    stop.start(RTSTUDIO_BUILD_DIR + QStringLiteral("/cli/rtctl"), {QStringLiteral("local"), QStringLiteral("stop")});
     if (!stop.waitForFinished(30000))
         stop.kill();
 }

@@ -19,7 +19,7 @@ namespace {
 
 QString conformanceDir(const QString &sub)
 {
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/") + sub;
+    return (RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/")) + sub;
 }
 
 QByteArray readFile(const QString &path)

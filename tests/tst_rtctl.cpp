@@ -30,12 +30,12 @@ private:
 
 static QString example(const QString &relative)
 {
-    return QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/") + relative;
+    return (RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/")) + relative;
 }
 
 static QString data(const QString &relative)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/") + relative;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/")) + relative;
 }
 
 TestRtctl::Result TestRtctl::rtctl(const QStringList &arguments)

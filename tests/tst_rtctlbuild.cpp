@@ -92,7 +92,7 @@ void TestRtctlBuild::interruptCancelsBuild()
     QTemporaryDir dir;
     QVERIFY(BuildFixture::copy(QStringLiteral("slow"), dir.path()));
     QProcess rtctl;
-    rtctl.start(QStringLiteral(RTCTL_PATH), {"build", dir.path(), "-j", "2"});
+    rtctl.start(RTCTL_PATH, {"build", dir.path(), "-j", "2"});
     QVERIFY(rtctl.waitForStarted());
     const QString pidFile = dir.filePath(QStringLiteral("build/waiting.pid"));
     qint64 pid = 0;

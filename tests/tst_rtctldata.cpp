@@ -57,7 +57,7 @@ void TestRtctlData::initTestCase()
 {
     QString error;
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
-    QVERIFY2(m_live.startHostManager(QStringLiteral(RTMANAGER_PATH), LiveTest::freePort(),
+    QVERIFY2(m_live.startHostManager(RTMANAGER_PATH, LiveTest::freePort(),
                                      QStringLiteral("data"),
                                      {"manager.components.precreate=SeqOut,Sensor"}, &error),
              qPrintable(error));
@@ -105,7 +105,7 @@ QProcess *TestRtctlData::startPrint(const QStringList &arguments)
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QStringLiteral("RTCSH_CWD"), m_context);
     process->setProcessEnvironment(environment);
-    process->start(QStringLiteral(RTCTL_PATH), QStringList {"print"} + arguments);
+    process->start(RTCTL_PATH, QStringList {"print"} + arguments);
     m_prints.push_back(std::move(process));
     return m_prints.back().get();
 }

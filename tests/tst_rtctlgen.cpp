@@ -30,12 +30,12 @@ private:
 
 static QString fixture()
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/SampleComp.xml");
+    return RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/SampleComp.xml");
 }
 
 static QString idlDir()
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/idl");
+    return RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/idl");
 }
 
 static QByteArray readAll(const QString &path)
@@ -103,7 +103,7 @@ void TestRtctlGen::testComponentWritesTestTree()
     QVERIFY2(result.code == 0, qPrintable(result.err));
     QVERIFY(result.out.contains(QStringLiteral("created test/src/SampleCompTest.cpp")));
     // The test tree is the one the golden files hold, file for file.
-    const QDir golden(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/golden/SampleComp/test"));
+    const QDir golden(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/golden/SampleComp/test"));
     QDirIterator it(golden.path(), QDir::Files, QDirIterator::Subdirectories);
     int compared = 0;
     while (it.hasNext()) {

@@ -65,7 +65,7 @@ bool TestRtctlRt::startRealManager(quint16 port, const QString &hostName, const 
                                "naming.formats=" + hostName + ".host_cxt/%n.rtc",
                                "manager.naming_formats=" + hostName + ".host_cxt/%n.mgr",
                                "manager.components.precreate=" + precreate};
-    return m_live.startManager(QStringLiteral(RTMANAGER_PATH), port, options, error) != nullptr;
+    return m_live.startManager(RTMANAGER_PATH, port, options, error) != nullptr;
 }
 
 void TestRtctlRt::initTestCase()
@@ -445,7 +445,7 @@ void TestRtctlRt::forkAndRestartTheRealManager()
     // A manager with neither master role nor master to register a sibling with refuses to fork.
     const quint16 lonePort = LiveTest::freePort();
     QVERIFY2(
-        m_live.startProcess(QStringLiteral(RTMANAGER_PATH),
+        m_live.startProcess(RTMANAGER_PATH,
                             {"-o", QStringLiteral("corba.endpoints=127.0.0.1:%1").arg(lonePort),
                              "-o", "corba.master_manager=", "-o", "naming.enable=NO"},
                             "rtmanager ready", &error),

@@ -14,7 +14,7 @@ const QString FileName = QStringLiteral("invalid.xml");
 
 RtcProfile loadInvalid()
 {
-    QFile file(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/rtc/invalid.xml"));
+    QFile file(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/rtc/invalid.xml"));
     if (!file.open(QIODevice::ReadOnly))
         qFatal("cannot open rtc/invalid.xml");
     const auto profile = readRtcXml(file.readAll(), FileName, nullptr);

@@ -15,7 +15,7 @@ namespace {
 
 QByteArray readData(const QString &name)
 {
-    QFile file(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/") + name);
+    QFile file((RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/")) + name);
     if (!file.open(QIODevice::ReadOnly))
         qFatal("cannot open test data %s", qPrintable(name));
     return file.readAll();

@@ -15,7 +15,7 @@ namespace {
 
 QString conformanceDir()
 {
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/rts");
+    return RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/rts");
 }
 
 QByteArray readFile(const QString &path)

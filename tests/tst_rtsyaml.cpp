@@ -13,7 +13,7 @@ namespace {
 
 QString dataPath(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/")) + name;
 }
 
 QByteArray readFile(const QString &path)

@@ -84,7 +84,7 @@ void TestRunLocally::failedStartIsReported()
     const auto restorePath = qScopeGuard([&path] { qputenv("PATH", path); });
     qputenv("PATH", emptyPath.path().toLocal8Bit());
     auto window = std::make_unique<MainWindow>();
-    QVERIFY(window->openFiles({QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")}));
+    QVERIFY(window->openFiles({RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml")}));
     auto *system = qobject_cast<RtsDocument *>(window->activeDocument());
     QVERIFY(system);
     QStringList messages;
@@ -112,7 +112,7 @@ void TestRunLocally::runsTheExampleAndStopsOnQuit()
     QSettings().clear();
     auto window = std::make_unique<MainWindow>();
     window->show();
-    QVERIFY(window->openFiles({QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")}));
+    QVERIFY(window->openFiles({RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml")}));
     auto *system = qobject_cast<RtsDocument *>(window->activeDocument());
     QVERIFY(system);
     auto *label = window->findChild<QLabel *>(QStringLiteral("localRuntimeStatus"));
@@ -201,9 +201,9 @@ void TestRunLocally::terminationSignalStopsTheRuntime()
     QProcess studio;
     studio.setProcessEnvironment(environment);
     studio.setProcessChannelMode(QProcess::ForwardedChannels);
-    studio.start(QStringLiteral(RTSTUDIO_PATH),
+    studio.start(RTSTUDIO_PATH,
                  {QStringLiteral("--run-locally"),
-                  QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")});
+                  RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml")});
     QVERIFY(studio.waitForStarted());
     const auto endStudio = qScopeGuard([&studio] {
         if (studio.state() != QProcess::NotRunning) {

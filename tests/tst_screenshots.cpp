@@ -57,7 +57,7 @@ void TestScreenshots::render()
     QVERIFY(output.isValid());
     QProcess process;
     process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(QStringLiteral(DOCSCREENSHOTS_PATH), {output.path(), language});
+    process.start(DOCSCREENSHOTS_PATH, {output.path(), language});
     QVERIFY(process.waitForFinished(120000));
     QVERIFY2(process.exitCode() == 0, process.readAll().constData());
     for (const Picture &picture : pictures) {
@@ -77,7 +77,7 @@ void TestScreenshots::render()
 
 void TestScreenshots::committedPicturesAreRendered()
 {
-    const QDir images(QStringLiteral(RTSTUDIO_SOURCE_DIR "/docs/images"));
+    const QDir images(RTSTUDIO_SOURCE_DIR + QStringLiteral("/docs/images"));
     QSet<QString> made;
     for (const Picture &picture : pictures)
         made << fileName(picture, QStringLiteral("en")) << fileName(picture, QStringLiteral("ja"));

@@ -415,10 +415,10 @@ void TestSdkEc::managerMembers()
     QVERIFY(m_manager->getComponent("listedB"));
     m_manager->deleteComponent(second);
 
-    QCOMPARE(m_manager->load(MANAGER_TEST_MODULE, ""), RTC::RTC_OK);
+    QCOMPARE(m_manager->load(MANAGER_TEST_MODULE.toStdString(), ""), RTC::RTC_OK);
     const std::vector<coil::Properties> loaded = m_manager->getLoadedModules();
     QCOMPARE(loaded.size(), size_t(1));
-    m_manager->unload(MANAGER_TEST_MODULE);
+    m_manager->unload(qPrintable(MANAGER_TEST_MODULE));
     QVERIFY(m_manager->getLoadedModules().empty());
 
     // Periodic tasks and delayed calls run on the manager's timer thread.
@@ -792,7 +792,7 @@ void TestSdkEc::extTriggerExample()
 {
     // OpenRTM-aist's ExtTrigger example, built against the SDK as it is: ConsoleIn and
     // ConsoleOut programs reading the example's rtc.conf, driven as its ConnectorComp does.
-    const QString example = QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-examples/ExtTrigger");
+    const QString example = RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-examples/ExtTrigger");
     if (!QFileInfo::exists(example + "/rtc.conf"))
         QSKIP("the OpenRTM-aist examples corpus (shared/conformance/openrtm-examples beside the project) is absent");
     QTemporaryDir dir;
@@ -814,7 +814,7 @@ void TestSdkEc::extTriggerExample()
                    .toUtf8());
     cmake.close();
     QString log;
-    QVERIFY2(SdkTest::buildProject(dir.path(), QStringLiteral(RTSTUDIO_BUILD_DIR), &log), qPrintable(log));
+    QVERIFY2(SdkTest::buildProject(dir.path(), RTSTUDIO_BUILD_DIR, &log), qPrintable(log));
 
     LiveTest::LiveSystem live;
     QString error;

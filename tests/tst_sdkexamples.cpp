@@ -21,7 +21,7 @@ const QString hostName = QStringLiteral("exhost");
 
 QString corpusDir()
 {
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-examples");
+    return RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-examples");
 }
 
 /// The example folders that are standalone projects: their CMakeLists.txt finds the OpenRTM package.
@@ -110,7 +110,7 @@ void TestSdkExamples::initTestCase()
     if (!QFileInfo::exists(corpusDir() + QStringLiteral("/COPYRIGHT")))
         QSKIP("the OpenRTM-aist examples corpus (shared/conformance/openrtm-examples beside the project) is absent");
     QVERIFY(m_work.isValid());
-    QVERIFY2(QFileInfo::exists(RTSTUDIO_BUILD_DIR "/lib/librtstudio_rtm.so"), "build rtsdk and rtsdk_stage first");
+    QVERIFY2(QFileInfo::exists(RTSTUDIO_BUILD_DIR + QStringLiteral("/lib/librtstudio_rtm.so")), "build rtsdk and rtsdk_stage first");
     QString log;
     // Inside the work folder, so that ccache finds the projects built against it in the next run.
     m_installPrefix = m_work.filePath(QStringLiteral("prefix"));
@@ -148,7 +148,7 @@ void TestSdkExamples::standaloneProjectBuilds()
     // A copy: the corpus stays as it is whatever a build writes.
     QVERIFY(SdkTest::copyTree(corpusDir() + QLatin1Char('/') + project, dir));
     QString log;
-    QVERIFY2(SdkTest::buildProject(dir, installed ? m_installPrefix : QStringLiteral(RTSTUDIO_BUILD_DIR), &log),
+    QVERIFY2(SdkTest::buildProject(dir, installed ? m_installPrefix : RTSTUDIO_BUILD_DIR, &log),
              qPrintable(project + QStringLiteral(":\n") + log.right(8000)));
     QVERIFY2(QFileInfo::exists(dir + QStringLiteral("/build/src/%1Comp").arg(project)), qPrintable(project));
     QVERIFY2(QFileInfo::exists(dir + QStringLiteral("/build/src/%1.so").arg(project)), qPrintable(project));
@@ -170,9 +170,9 @@ void TestSdkExamples::treeOnlyExampleBuilds()
     QFETCH(QString, components);
     QFETCH(QString, programs);
     const QString dir = m_work.filePath(QStringLiteral("build/") + example);
-    QVERIFY(SdkTest::copyTree(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/openrtm/examplesources"), dir));
+    QVERIFY(SdkTest::copyTree(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/openrtm/examplesources"), dir));
     QString log;
-    QVERIFY2(SdkTest::buildProject(dir, QStringLiteral(RTSTUDIO_BUILD_DIR), &log,
+    QVERIFY2(SdkTest::buildProject(dir, RTSTUDIO_BUILD_DIR, &log,
                                    {"-DEXAMPLE_DIR=" + corpusDir() + '/' + example, "-DCOMPONENTS=" + components,
                                     "-DPROGRAMS=" + programs}),
              qPrintable(log.right(8000)));

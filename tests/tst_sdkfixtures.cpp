@@ -80,7 +80,7 @@ void TestSdkFixtures::generatedProjectRuns_data()
     QTest::addColumn<QString>("profile");
     QTest::addColumn<QString>("type");
     QTest::addColumn<QStringList>("options");
-    const QString codegen = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/codegen/");
+    const QString codegen = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/codegen/");
     const QStringList idl{"--idl-dir", codegen + "idl"};
     QTest::newRow("every configuration type, with its test component")
         << codegen + "ConfigComp.xml" << "ConfigComp" << (idl + QStringList{"--test-component"});
@@ -89,8 +89,8 @@ void TestSdkFixtures::generatedProjectRuns_data()
     QTest::newRow("documented") << codegen + "DocumentedComp.xml" << "DocumentedComp" << idl;
     QTest::newRow("OpenRTP's sample") << codegen + "SampleComp.xml" << "SampleComp" << idl;
     // FSM and multi-mode kinds run their data-flow part.
-    QTest::newRow("all component kinds") << QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/KindsProbe.xml") << "KindsProbe"
-                                         << QStringList{"--idl-dir", RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter"};
+    QTest::newRow("all component kinds") << RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/KindsProbe.xml") << "KindsProbe"
+                                         << QStringList{"--idl-dir", RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/SdkGreeter")};
 }
 
 void TestSdkFixtures::generatedProjectRuns()
@@ -114,7 +114,7 @@ void TestSdkFixtures::examplesConnectToBuiltins()
 {
     // The bundled example system's components, generated from their profiles, replace the
     // built-in types of the same name in this manager and connect like them.
-    const QString examples = QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/RTCs/");
+    const QString examples = RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/RTCs/");
     const QString manager = host() + "/manager.mgr";
     RtctlResult r = rtctl({"mgr", manager, "create", "ConsoleIn?instance_name=BuiltinIn", "create",
                            "ConsoleOut?instance_name=BuiltinOut"});
@@ -183,7 +183,7 @@ QByteArray everyTypeProfile(const Codegen::IdlTypeLibrary &library, const QList<
 void TestSdkFixtures::everyDataTypeTheBuilderOffers()
 {
     // The Builder's data type list comes from the bundled OpenRTM IDL, as here.
-    const Codegen::IdlTypeLibrary library({QStringLiteral(RTSTUDIO_SOURCE_DIR "/corba/idl")});
+    const Codegen::IdlTypeLibrary library({RTSTUDIO_SOURCE_DIR + QStringLiteral("/corba/idl")});
     const QList<Codegen::IdlDataType> types = library.dataTypes();
     QVERIFY2(types.size() > 100, qPrintable(QString::number(types.size())));
     QFile profile(m_work.filePath("EveryType.xml"));

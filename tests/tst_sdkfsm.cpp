@@ -220,7 +220,7 @@ void TestSdkFsm::cleanupTestCase()
 
 void TestSdkFsm::lampFollowsMachoSemantics()
 {
-    QFile expected(QStringLiteral(SDK_FSM_DIR "/lamp.trace"));
+    QFile expected(SDK_FSM_DIR + QStringLiteral("/lamp.trace"));
     QVERIFY(expected.open(QIODevice::ReadOnly | QIODevice::Text));
     const QStringList wanted = QString::fromUtf8(expected.readAll()).split('\n', Qt::SkipEmptyParts);
     QStringList trace;

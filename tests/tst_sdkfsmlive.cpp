@@ -34,7 +34,7 @@ void TestSdkFsmLive::initTestCase()
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     const QStringList options{"corba.nameservers=" + m_live.namingServer(), "naming.formats=fsmhost.host_cxt/%n.rtc",
                               "manager.naming_formats=fsmhost.host_cxt/%n.mgr",
-                              "manager.modules.load_path=" SDK_TEST_MODULE_DIR,
+                              QStringLiteral("manager.modules.load_path=") + SDK_TEST_MODULE_DIR,
                               SdkFsmTest::TrafficLightDriver::precreate()};
     QVERIFY2(m_live.startManager(RTMANAGER_PATH, LiveTest::freePort(), options, &error), qPrintable(error));
     const QString host = QStringLiteral("/%1/fsmhost.host_cxt").arg(m_live.namingServer());

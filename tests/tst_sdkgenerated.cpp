@@ -17,7 +17,7 @@
 
 namespace {
 
-const QString fixtureDir = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdk/SdkGreeter");
+const QString fixtureDir = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/SdkGreeter");
 
 } // namespace
 

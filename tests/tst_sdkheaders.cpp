@@ -202,9 +202,9 @@ void TestSdkHeaders::initTestCase()
 {
     QVERIFY(m_work.isValid());
     QString error;
-    m_facts = readHeaderFacts(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/openrtm/headers.txt"), &error);
+    m_facts = readHeaderFacts(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/openrtm/headers.txt"), &error);
     QVERIFY2(!m_facts.isEmpty(), qPrintable(error));
-    m_symbols = readSymbolFacts(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/openrtm/symbols.txt"), &error);
+    m_symbols = readSymbolFacts(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/openrtm/symbols.txt"), &error);
     QVERIFY2(!m_symbols.isEmpty(), qPrintable(error));
     const QStringList flags = packageFlags(&error);
     QVERIFY2(!flags.isEmpty(), qPrintable(error));
@@ -230,7 +230,7 @@ QStringList TestSdkHeaders::packageFlags(QString *error)
     QProcess cmake;
     cmake.setProcessChannelMode(QProcess::MergedChannels);
     cmake.start(QStringLiteral(RTSTUDIO_CMAKE_COMMAND),
-                {"-S", dir, "-B", dir + "/build", "-DCMAKE_PREFIX_PATH=" RTSTUDIO_BUILD_DIR});
+                {"-S", dir, "-B", dir + "/build", QStringLiteral("-DCMAKE_PREFIX_PATH=") + RTSTUDIO_BUILD_DIR});
     if (!cmake.waitForFinished(configureTimeoutMs) || cmake.exitCode() != 0) {
         *error = QStringLiteral("configuring a find_package(OpenRTM) project failed:\n%1")
                      .arg(QString::fromLocal8Bit(cmake.readAll()));

@@ -91,7 +91,7 @@ void TestSdkIdlFlow::initTestCase()
     QVERIFY(m_workDir.isValid());
     QVERIFY2(!QStandardPaths::findExecutable(QStringLiteral("python3")).isEmpty(), "python3 is missing");
     QVERIFY2(!QStandardPaths::findExecutable(QStringLiteral("omniidl")).isEmpty(), "omniidl is missing");
-    m_prefix = QFileInfo(QStringLiteral(RTSTUDIO_BUILD_DIR)).canonicalFilePath();
+    m_prefix = QFileInfo(RTSTUDIO_BUILD_DIR).canonicalFilePath();
     QVERIFY2(QFileInfo::exists(m_prefix + QStringLiteral("/lib/librtstudio_rtm.so")),
              "build the targets rtsdk and rtsdk_stage first");
 
@@ -99,7 +99,7 @@ void TestSdkIdlFlow::initTestCase()
     QVERIFY(m_installDir.isValid());
     m_installPrefix = QFileInfo(m_installDir.path()).canonicalFilePath();
     const RunResult install = run(QStringLiteral(RTSTUDIO_CMAKE_COMMAND),
-                                  {QStringLiteral("--install"), QStringLiteral(RTSTUDIO_BUILD_DIR),
+                                  {QStringLiteral("--install"), RTSTUDIO_BUILD_DIR,
                                    QStringLiteral("--prefix"), m_installPrefix, QStringLiteral("--component"),
                                    QStringLiteral("sdk")},
                                   QProcessEnvironment::systemEnvironment(), m_workDir.path(), buildTimeoutMs);
@@ -395,7 +395,7 @@ void TestSdkIdlFlow::project()
     QFETCH(QString, expected);
     QFETCH(bool, installed);
     const QString root = installed ? m_installPrefix : m_prefix;
-    const QString source = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdkidlflow/") + fixture;
+    const QString source = (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdkidlflow/")) + fixture;
     const QString binary = m_workDir.filePath(QStringLiteral("project-") + fixture
                                               + (installed ? QStringLiteral("-installed") : QString()));
     const QProcessEnvironment env = environment(root);

@@ -34,7 +34,7 @@ QString canonical(const QString &path)
 
 QString dataDir(const QString &project)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdkpackage/") + project;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdkpackage/")) + project;
 }
 
 QStringList headerNames(const QString &folder)
@@ -82,14 +82,14 @@ void TestSdkPackage::initTestCase()
              "python3 (which omniidl needs too) is missing");
     QVERIFY2(!QStandardPaths::findExecutable(QStringLiteral("omniidl")).isEmpty(), "omniidl is missing");
     QVERIFY2(!QStandardPaths::findExecutable(QStringLiteral("pkg-config")).isEmpty(), "pkg-config is missing");
-    m_buildPrefix = canonical(QStringLiteral(RTSTUDIO_BUILD_DIR));
+    m_buildPrefix = canonical(RTSTUDIO_BUILD_DIR);
     QVERIFY2(QFileInfo::exists(m_buildPrefix + QStringLiteral("/lib/librtstudio_rtm.so")),
              "build the targets rtsdk and rtsdk_stage first");
 
     // The SDK's own component: it needs only what the SDK builds, not the applications.
     m_installPrefix = canonical(m_installDir.path());
     const RunResult install = run(QStringLiteral(RTSTUDIO_CMAKE_COMMAND),
-                                  {QStringLiteral("--install"), QStringLiteral(RTSTUDIO_BUILD_DIR),
+                                  {QStringLiteral("--install"), RTSTUDIO_BUILD_DIR,
                                    QStringLiteral("--prefix"), m_installPrefix, QStringLiteral("--component"),
                                    QStringLiteral("sdk")},
                                   QProcessEnvironment::systemEnvironment(), m_workDir.path(), buildTimeoutMs);
@@ -146,7 +146,7 @@ void TestSdkPackage::layout()
 
     // Every public header of the SDK, and for every bundled IDL file the file itself, omniidl's
     // header and both wrappers.
-    const QString sources = QStringLiteral(RTSTUDIO_SOURCE_DIR "/sdk/include/");
+    const QString sources = RTSTUDIO_SOURCE_DIR + QStringLiteral("/sdk/include/");
     QStringList staged = headerNames(rtm);
     staged.removeAll(QStringLiteral("config_rtc.h"));
     staged.removeAll(QStringLiteral("version.h"));
@@ -160,8 +160,8 @@ void TestSdkPackage::layout()
     QVERIFY(!headerNames(sources + QStringLiteral("hrtm/idls")).isEmpty());
     // The component API's headers reach the runtime's as <rtmruntime/…>.
     QCOMPARE(headerNames(root + QStringLiteral("/include/openrtm-2.1/rtmruntime")),
-             headerNames(QStringLiteral(RTSTUDIO_SOURCE_DIR "/manager")));
-    const QStringList idlFiles = QDir(QStringLiteral(RTSTUDIO_SOURCE_DIR "/corba/idl"))
+             headerNames(RTSTUDIO_SOURCE_DIR + QStringLiteral("/manager")));
+    const QStringList idlFiles = QDir(RTSTUDIO_SOURCE_DIR + QStringLiteral("/corba/idl"))
                                      .entryList({QStringLiteral("*.idl")}, QDir::Files);
     QVERIFY(idlFiles.contains(QStringLiteral("BasicDataType.idl")));
     for (const QString &idl : idlFiles) {

@@ -633,9 +633,9 @@ void TestSdkRtm::managerActionListeners()
     auto *source = dynamic_cast<SdkSource *>(m_manager->createComponent("SdkSource?instance_name=watched"));
     QVERIFY(source);
     QCOMPARE(QString::fromStdString(source->getProperties().getProperty("conf.default.step")), QString("7"));
-    QCOMPARE(m_manager->load(MANAGER_TEST_MODULE, ""), RTC::RTC_OK);
+    QCOMPARE(m_manager->load(MANAGER_TEST_MODULE.toStdString(), ""), RTC::RTC_OK);
     QCOMPARE(m_manager->getLoadedModules().size(), size_t(1));
-    m_manager->unload(MANAGER_TEST_MODULE);
+    m_manager->unload(qPrintable(MANAGER_TEST_MODULE));
     QVERIFY(m_manager->getLoadedModules().empty());
     m_manager->deleteComponent(source);
     QTRY_VERIFY_WITH_TIMEOUT(recorder.calls().contains("postUnbind"), 5000);
@@ -650,7 +650,7 @@ void TestSdkRtm::managerActionListeners()
                                "preBind watched %h.host_cxt/watched.rtc",
                                "postBind",
                                "postCreate watched",
-                               "preLoad " MANAGER_TEST_MODULE,
+                               QStringLiteral("preLoad ") + MANAGER_TEST_MODULE,
                                "postLoad ",
                                "preUnload",
                                "postUnload",

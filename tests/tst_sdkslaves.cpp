@@ -40,7 +40,7 @@ void TestSdkSlaves::initTestCase()
     QVERIFY2(m_live.startNameServer(&error), qPrintable(error));
     const QStringList options{"corba.nameservers=" + m_live.namingServer(), "naming.formats=slavehost.host_cxt/%n.rtc",
                               "manager.naming_formats=slavehost.host_cxt/%n.mgr",
-                              "manager.modules.load_path=" SDK_TEST_MODULE_DIR};
+                              QStringLiteral("manager.modules.load_path=") + SDK_TEST_MODULE_DIR};
     QVERIFY2(m_live.startManager(RTMANAGER_PATH, LiveTest::freePort(), options, &error), qPrintable(error));
 }
 
@@ -109,7 +109,7 @@ void TestSdkSlaves::restoreCreatesTypeFromLoadPath()
                                  {"corba.nameservers=" + m_live.namingServer(),
                                   "naming.formats=restorehost.host_cxt/%n.rtc",
                                   "manager.naming_formats=restorehost.host_cxt/%n.mgr",
-                                  "manager.modules.load_path=" SDK_TEST_MODULE_DIR},
+                                  QStringLiteral("manager.modules.load_path=") + SDK_TEST_MODULE_DIR},
                                  &error),
              qPrintable(error));
     r = runRtctl({"resurrect", "--create", "-m", QStringLiteral("corbaloc::127.0.0.1:%1").arg(port), "-s",
@@ -145,15 +145,7 @@ void TestSdkSlaves::rtcConfPreloadsAndPrecreates()
     QTemporaryDir dir;
     QFile conf(dir.filePath("rtc.conf"));
     QVERIFY(conf.open(QIODevice::WriteOnly));
-    conf.write(QStringLiteral("corba.nameservers: %1\n"
-                              "corba.endpoints: 127.0.0.1:\n"
-                              "corba.master_manager: 127.0.0.1:%2\n"
-                              "manager.is_master: YES\n"
-                              "naming.formats: confhost.host_cxt/%n.rtc\n"
-                              "manager.naming_formats: confhost.host_cxt/%n.mgr\n"
-                              "manager.modules.load_path: " SDK_TEST_MODULE_DIR "\n"
-                              "manager.modules.preload: CrashProbe.so\n"
-                              "manager.components.precreate: CrashProbe?instance_name=Early\n")
+    conf.write((QStringLiteral("corba.nameservers: %1\n" "corba.endpoints: 127.0.0.1:\n" "corba.master_manager: 127.0.0.1:%2\n" "manager.is_master: YES\n" "naming.formats: confhost.host_cxt/%n.rtc\n" "manager.naming_formats: confhost.host_cxt/%n.mgr\n" "manager.modules.load_path: ") + SDK_TEST_MODULE_DIR + QStringLiteral("\n" "manager.modules.preload: CrashProbe.so\n" "manager.components.precreate: CrashProbe?instance_name=Early\n"))
                    .arg(m_live.namingServer())
                    .arg(masterPort)
                    .toUtf8());

@@ -114,7 +114,7 @@ void TestSdkStyles::initTestCase()
     QVERIFY(m_work.isValid());
     m_dir = m_work.filePath(QStringLiteral("sdkstyles"));
     QDir().mkpath(m_dir);
-    const QDir source(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/sdkstyles"));
+    const QDir source(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdkstyles"));
     for (const QString &file : source.entryList(QDir::Files))
         QVERIFY(QFile::copy(source.filePath(file), m_dir + '/' + file));
     QString log;

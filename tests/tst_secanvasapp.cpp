@@ -65,7 +65,7 @@ void TestSeCanvasApp::editorShowsCanvasOverTheDocument()
 {
     Profile::Diagnostics diagnostics;
     std::unique_ptr<Document> loaded
-        = loadDocument(QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/secanvas/system.xml"), &diagnostics);
+        = loadDocument(RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/secanvas/system.xml"), &diagnostics);
     auto *document = qobject_cast<RtsDocument *>(loaded.get());
     QVERIFY(document);
     RtsEditor editor(document);
@@ -164,7 +164,7 @@ void TestSeCanvasApp::editMenuOffersCanvasActions()
     QVERIFY(edit);
     QVERIFY(!shownEditActions(edit).contains(QStringLiteral("actionGroupComposite")));
 
-    QVERIFY(window.openFiles({QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/secanvas/system.xml")}));
+    QVERIFY(window.openFiles({RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/secanvas/system.xml")}));
     auto *document = qobject_cast<RtsDocument *>(window.activeDocument());
     QVERIFY(document);
     auto *editor = window.findChild<RtsEditor *>();
@@ -208,7 +208,7 @@ void TestSeCanvasApp::editMenuOffersCanvasActions()
 void TestSeCanvasApp::repositoryRemembersItsSources()
 {
     SystemEditor::RtcRepository *repository = RtsEditor::sharedRepository();
-    const QString folder = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/secanvas/RTCs");
+    const QString folder = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/secanvas/RTCs");
     QVERIFY(repository->addSource(folder));
     {
         RtsDocument document(Profile::RtsProfile::createNew(QStringLiteral("V"),
@@ -239,9 +239,9 @@ void TestSeCanvasApp::exportFromCommandLine()
     environment.remove(QStringLiteral("DISPLAY"));
     environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
     process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(RTSTUDIO_PATH),
+    process.start(RTSTUDIO_PATH,
                   {QStringLiteral("--export-diagram"),
-                   QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
+                   RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml"),
                    QStringLiteral("--output"), dir.filePath(output)});
     QVERIFY(process.waitForFinished(60000));
     QCOMPARE(process.exitStatus(), QProcess::NormalExit);
@@ -273,7 +273,7 @@ void TestSeCanvasApp::helpAndVersionWithoutDisplay()
     environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
     environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
     process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(RTSTUDIO_PATH), {option});
+    process.start(RTSTUDIO_PATH, {option});
     QVERIFY(process.waitForFinished(60000));
     const QString output = QString::fromUtf8(process.readAllStandardOutput());
     QVERIFY2(process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0,
@@ -302,7 +302,7 @@ void TestSeCanvasApp::exportFailuresExitWithOne()
     QTemporaryDir dir;
     QProcess process;
     process.setWorkingDirectory(dir.path());
-    process.start(QStringLiteral(RTSTUDIO_PATH), arguments);
+    process.start(RTSTUDIO_PATH, arguments);
     QVERIFY(process.waitForFinished(60000));
     QCOMPARE(process.exitCode(), 1);
     QVERIFY2(QString::fromUtf8(process.readAllStandardError()).contains(message),

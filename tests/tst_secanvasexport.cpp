@@ -46,10 +46,9 @@ void TestSeCanvasExport::exportsSvgWithInstanceNames_data()
     QTest::newRow("fixture") << SeCanvasTest::dataPath(QStringLiteral("system.xml"))
                              << QStringList {"Sensor0", "Filter0", "Sink0"};
     QTest::newRow("ConsoleInOut")
-        << QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/ConsoleInOut/ConsoleInOut.xml")
+        << RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/ConsoleInOut/ConsoleInOut.xml")
         << QStringList {"ConsoleIn0", "ConsoleOut0"};
-    QTest::newRow("SeqIO") << QStringLiteral(RTSTUDIO_SOURCE_DIR
-                                             "/resources/examples/SeqIO/SeqIO.xml")
+    QTest::newRow("SeqIO") << RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/SeqIO/SeqIO.xml")
                            << QStringList {"SeqIn0", "SeqOut0"};
 }
 

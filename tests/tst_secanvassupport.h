@@ -13,7 +13,7 @@ namespace SeCanvasTest {
 
 inline QString dataPath(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/secanvas/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/secanvas/")) + name;
 }
 
 /// The fixture system with the RTC profiles its components point at; null on failure.

@@ -33,7 +33,7 @@ namespace {
 
 QString dataFile(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/")) + name;
 }
 
 QString unplacedSystem()
@@ -151,7 +151,7 @@ private slots:
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("cli.png"));
         QProcess process;
-        process.start(QStringLiteral(RTSTUDIO_PATH),
+        process.start(RTSTUDIO_PATH,
                       {QStringLiteral("--export-diagram"), unplacedSystem(),
                        QStringLiteral("--output"), out});
         QVERIFY(process.waitForFinished(60000));

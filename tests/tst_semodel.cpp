@@ -12,7 +12,7 @@ namespace {
 
 QString dataPath(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/systemeditor/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/systemeditor/")) + name;
 }
 
 /// The demo system with its RTC profiles resolved.

@@ -29,8 +29,7 @@ using namespace SystemEditor;
 namespace {
 
 std::unique_ptr<SystemModel> loadModel(const QString &path
-                                       = QStringLiteral(RTSTUDIO_TEST_DATA_DIR
-                                                        "/seprops/system.xml"))
+                                       = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/seprops/system.xml"))
 {
     Profile::Diagnostics diagnostics;
     std::optional<LoadedSystem> loaded = loadSystemFile(path, &diagnostics);

@@ -14,7 +14,7 @@ namespace {
 
 QString dataPath(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/systemeditor/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/systemeditor/")) + name;
 }
 
 QModelIndex category(const RtcRepository &repository, const QString &name)

@@ -24,7 +24,7 @@ using namespace SystemEditor;
 
 namespace {
 
-const QString pyFixture = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/packages/pycomp");
+const QString pyFixture = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/packages/pycomp");
 const QString pyPackage = QStringLiteral("rtc-rtstudiotests-packaging-pygreeter");
 
 /// Copies the fixture's files into @p to, its version set to @p version ("v1_3").

@@ -16,7 +16,7 @@ namespace {
 
 QString dataPath(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/systemeditor/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/systemeditor/")) + name;
 }
 
 QByteArray readAll(const QString &path)
@@ -225,7 +225,7 @@ void TestSeSave::unreadableRtcProfileIsAWarning()
 void TestSeSave::conformanceSystemsOpenAndSave_data()
 {
     QTest::addColumn<QString>("path");
-    const QDir dir(QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/rts"));
+    const QDir dir(RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/rts"));
     if (!dir.exists())
         QSKIP("The shared conformance folder is absent.");
     for (const QFileInfo &info : dir.entryInfoList(QDir::Files))

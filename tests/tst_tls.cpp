@@ -127,7 +127,7 @@ void TestTls::cleanupTestCase()
 QProcess *TestTls::startTlsManager(quint16 port, const QStringList &options, QString *error)
 {
     m_live.setErrorsRead(true);
-    return m_live.startManager(QStringLiteral(RTMANAGER_PATH), port,
+    return m_live.startManager(RTMANAGER_PATH, port,
                                QStringList {QStringLiteral("corba.ssl.certificate_authority_file=") + path("fleet/ca.pem"),
                                             QStringLiteral("corba.ssl.key_file=") + path("fleet/node.pem")}
                                    + options,
@@ -339,7 +339,7 @@ void TestTls::dataFlowsBetweenTwoHosts()
         QString error;
         QVERIFY2(live[host]->startTlsNameServer(path("fleet/ca.pem"), path("fleet/node.pem"), &error),
                  qPrintable(error));
-        QVERIFY2(live[host]->startHostManager(QStringLiteral(RTMANAGER_PATH), 2810, host,
+        QVERIFY2(live[host]->startHostManager(RTMANAGER_PATH, 2810, host,
                                               {"corba.ssl.certificate_authority_file=" + path("fleet/ca.pem"),
                                                "corba.ssl.key_file=" + path("fleet/node.pem")},
                                               &error),
@@ -448,9 +448,9 @@ void TestTls::pythonComponentOverTls()
     QString error;
     QProcess *python = m_live.startRegistered(
         QStringLiteral(RTSTUDIO_PYTHON_EXECUTABLE),
-        {QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/PyScaler.py"), QStringLiteral("-f"), conf.fileName()},
+        {RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/python/PyScaler.py"), QStringLiteral("-f"), conf.fileName()},
         [&] { return operatorRtctl({"ls", server + "/pytls.host_cxt"}).out.contains("PyScaler0.rtc"); }, &error, 20000,
-        LiveTest::pythonEnvironment(QStringLiteral(RTSTUDIO_PYTHON_PATH), QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD)));
+        LiveTest::pythonEnvironment(RTSTUDIO_PYTHON_PATH, QStringLiteral(RTSTUDIO_SANITIZER_PRELOAD)));
     QVERIFY2(python, qPrintable(error));
 
     const QString managerPath = server + QLatin1Char('/') + hostName() + QStringLiteral(".host_cxt/manager.mgr");

@@ -174,7 +174,7 @@ void TestTranslations::initTestCase()
     QCoreApplication::setOrganizationName(QStringLiteral("RtStudioTest"));
     QCoreApplication::setApplicationName(QStringLiteral("tst_translations"));
     QString error;
-    m_committed = readTs(QStringLiteral(RTSTUDIO_TS_FILE), &error);
+    m_committed = readTs(RTSTUDIO_TS_FILE, &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));
     QVERIFY(m_committed.size() > 100);
 }
@@ -186,7 +186,7 @@ void TestTranslations::everySourceStringIsTranslated()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString copy = dir.filePath(QStringLiteral("rtstudio_ja.ts"));
-    QVERIFY(QFile::copy(QStringLiteral(RTSTUDIO_TS_FILE), copy));
+    QVERIFY(QFile::copy(RTSTUDIO_TS_FILE, copy));
     QFile::setPermissions(copy, QFile::ReadOwner | QFile::WriteOwner);
     QProcess lupdate;
     lupdate.setProcessChannelMode(QProcess::MergedChannels);
@@ -194,7 +194,7 @@ void TestTranslations::everySourceStringIsTranslated()
                   {QStringLiteral("-no-obsolete"), QStringLiteral("-locations"),
                    QStringLiteral("absolute"), QStringLiteral("-target-language"),
                    QStringLiteral("ja_JP"),
-                   QLatin1Char('@') + QStringLiteral(RTSTUDIO_TRANSLATED_SOURCES), QStringLiteral("-ts"),
+                   QLatin1Char('@') + RTSTUDIO_TRANSLATED_SOURCES, QStringLiteral("-ts"),
                    copy});
     QVERIFY(lupdate.waitForFinished(120000));
     QVERIFY2(lupdate.exitCode() == 0, lupdate.readAll().constData());
@@ -283,7 +283,7 @@ void TestTranslations::japaneseWindowShowsNoEnglish()
     MainWindow window;
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    const QString data = QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/app/");
+    const QString data = RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/app/");
     QVERIFY(window.openFiles({data + QStringLiteral("component.xml"), data + QStringLiteral("system.xml")}));
 
     // What the user reads in the window's chrome: menus, actions, docks, tabs, labels, buttons,

@@ -100,10 +100,10 @@ void TestUserGuide::initTestCase()
 void TestUserGuide::everyPageIsBuiltIn()
 {
     QStringList pages{QStringLiteral("README.md")};
-    QDirIterator it(QStringLiteral(RTSTUDIO_SOURCE_DIR "/docs"), {QStringLiteral("*.md")}, QDir::Files,
+    QDirIterator it(RTSTUDIO_SOURCE_DIR + QStringLiteral("/docs"), {QStringLiteral("*.md")}, QDir::Files,
                     QDirIterator::Subdirectories);
     while (it.hasNext())
-        pages << QDir(QStringLiteral(RTSTUDIO_SOURCE_DIR)).relativeFilePath(it.next());
+        pages << QDir(RTSTUDIO_SOURCE_DIR).relativeFilePath(it.next());
     QVERIFY(pages.size() > 4);
     for (const QString &page : std::as_const(pages))
         QVERIFY2(QFile::exists(UserGuide::Root + page), qPrintable(page + QStringLiteral(" is not built in")));
@@ -215,7 +215,7 @@ void TestUserGuide::f1ShowsTheSectionOfTheViewInFront()
     auto *help = window.findChild<QAction *>(QStringLiteral("actionContextHelp"));
     QVERIFY(help);
     QCOMPARE(help->shortcut(), QKeySequence(QKeySequence::HelpContents));
-    const QString examples = QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples/");
+    const QString examples = RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples/");
     const auto pressF1 = [&window] {
         QTest::keyClick(&window, Qt::Key_F1);
         QVERIFY(window.userGuide());

@@ -227,7 +227,7 @@ QProcess *LiveSystem::startPeer(const QStringList &components, QString *error, q
     if (zombies)
         arguments << QStringLiteral("--zombies");
     arguments += components;
-    return startProcess(QStringLiteral(RTSTUDIO_LIVEPEER_PATH), arguments, QStringLiteral("ready"),
+    return startProcess(RTSTUDIO_LIVEPEER_PATH, arguments, QStringLiteral("ready"),
                         error);
 }
 

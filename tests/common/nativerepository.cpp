@@ -25,7 +25,7 @@ bool runTool(const QString &program, const QStringList &arguments, QString *outp
 bool copyTree(const QString &tree, const QString &arch, QString *error)
 {
     if (!runTool(QStringLiteral("cp"),
-                 {QStringLiteral("-r"), QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/packages/debtree"),
+                 {QStringLiteral("-r"), RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/packages/debtree"),
                   tree},
                  error))
         return false;

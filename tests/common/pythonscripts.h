@@ -20,13 +20,13 @@ namespace LiveTest {
 /// OpenRTM-aist-Python's examples in the shared corpus (absent on a clone with nothing beside it).
 inline QString pythonCorpusDir()
 {
-    return QStringLiteral(RTSTUDIO_CONFORMANCE_DIR "/openrtm-python-examples");
+    return RTSTUDIO_CONFORMANCE_DIR + QStringLiteral("/openrtm-python-examples");
 }
 
 /// A Python program of the tests' own data.
 inline QString pythonTestScript(const QString &name)
 {
-    return QStringLiteral(RTSTUDIO_TEST_DATA_DIR "/python/") + name;
+    return (RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/python/")) + name;
 }
 #endif
 

@@ -34,7 +34,7 @@ RtctlResult runProgram(const QString &program, const QStringList &arguments,
 
 RtctlResult runRtctl(const QStringList &arguments, const QHash<QString, QString> &environment)
 {
-    return runProgram(QStringLiteral(RTCTL_PATH), arguments, environment);
+    return runProgram(RTCTL_PATH, arguments, environment);
 }
 
 bool runRtctlAll(const QList<QStringList> &commands, QString *error)

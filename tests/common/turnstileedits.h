@@ -36,7 +36,7 @@ inline const SdkTest::UserEdit userEdits[] = {
 /// around it (the <rtc-template> merge); false with the reason in @p log.
 inline bool generate(const QString &dir, QString *log)
 {
-    const QStringList arguments{"gen", RTSTUDIO_TEST_DATA_DIR "/sdk/Turnstile.xml", "--lang", "cpp", "-o", dir};
+    const QStringList arguments{"gen", RTSTUDIO_TEST_DATA_DIR + QStringLiteral("/sdk/Turnstile.xml"), "--lang", "cpp", "-o", dir};
     RtctlResult r = runRtctl(arguments);
     for (const SdkTest::UserEdit &edit : userEdits) {
         if (r.code == 0 && !SdkTest::applyEdit(dir, edit, log))

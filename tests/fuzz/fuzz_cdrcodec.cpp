@@ -16,7 +16,7 @@ namespace {
 
 const Codegen::IdlModel &model()
 {
-    static const Codegen::IdlTypeLibrary library({QStringLiteral(RTSTUDIO_IDL_DIR)});
+    static const Codegen::IdlTypeLibrary library({RTSTUDIO_IDL_DIR});
     return library.model();
 }
 

@@ -203,7 +203,7 @@ bool showConnectorDialog(const Studio::MainWindow &window, const Pictures &pictu
  */
 bool showPlanView(Studio::MainWindow &window)
 {
-    const QDir data(QStringLiteral(RTSTUDIO_SOURCE_DIR "/tests/data/planner"));
+    const QDir data(RTSTUDIO_SOURCE_DIR + QStringLiteral("/tests/data/planner"));
     // Lanes below the diagram want the room of a larger window.
     window.resize(1400, 900);
     if (!window.openFiles({data.filePath(QStringLiteral("robot.xml"))}))
@@ -300,7 +300,7 @@ bool showOnline(Studio::MainWindow &window, const Pictures &pictures, LiveTest::
     QString error;
     const quint16 managerPort = LiveTest::freePort();
     if (!live.startNameServer(&error)
-        || !live.startHostManager(QStringLiteral(RTMANAGER_PATH), managerPort, QStringLiteral("robot"), {}, &error)) {
+        || !live.startHostManager(RTMANAGER_PATH, managerPort, QStringLiteral("robot"), {}, &error)) {
         std::fprintf(stderr, "docscreenshots: %s\n", qPrintable(error));
         return false;
     }
@@ -369,7 +369,7 @@ int main(int argc, char *argv[])
     Studio::UiLanguage::choose(language);
 
     const Pictures pictures{output, language};
-    const QDir examples(QStringLiteral(RTSTUDIO_SOURCE_DIR "/resources/examples"));
+    const QDir examples(RTSTUDIO_SOURCE_DIR + QStringLiteral("/resources/examples"));
     const QString system = examples.filePath(QStringLiteral("ConsoleInOut/ConsoleInOut.xml"));
     Studio::MainWindow window;
     window.resize(1200, 760);
