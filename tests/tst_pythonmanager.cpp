@@ -149,9 +149,10 @@ void TestPythonManager::moduleExchangesDataWithBuiltins()
 void TestPythonManager::creatingATypeLoadsItsModule()
 {
     // As for `<Type>.so`: the type nobody registered is looked for as `<Type>.py` in the load path.
-    QVERIFY(m_host.succeeds({"mgr", m_host.managerPath(), "create", "PyRegistered?instance_name=ByTypeName"}));
+    const RtctlResult created = m_host.run({"mgr", m_host.managerPath(), "create", "PyRegistered?instance_name=ByTypeName"});
+    QVERIFY2(created.code == 0, qPrintable(created.out + created.err));
     QTRY_VERIFY2_WITH_TIMEOUT(printed().contains(QLatin1String("PyRegistered initialized as ByTypeName\n")),
-                              qPrintable(printed()), runTimeoutMs);
+                              qPrintable(created.out + created.err + printed()), runTimeoutMs);
     const RtctlResult list = m_host.run({"mgr", m_host.managerPath(), "list"});
     QVERIFY2(list.out.contains(testModule(QStringLiteral("PyRegistered.py"))), qPrintable(list.out));
 }
