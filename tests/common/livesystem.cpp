@@ -6,6 +6,7 @@
 #include <QDeadlineTimer>
 #include <QDir>
 #include <QFile>
+#include <QRandomGenerator>
 #include <QStandardPaths>
 #include <QTest>
 #include <QThread>
@@ -56,17 +57,27 @@ void prepareChild(QProcess &process, const std::function<void()> &enterChild)
 
 quint16 freePort()
 {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (fd < 0)
-        return 0;
-    sockaddr_in address = loopback(0);
-    socklen_t length = sizeof(address);
-    quint16 port = 0;
-    if (::bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof(address)) == 0
-        && ::getsockname(fd, reinterpret_cast<sockaddr *>(&address), &length) == 0)
-        port = ntohs(address.sin_port);
-    ::close(fd);
-    return port;
+    // Below the kernel's range for the local ports of outgoing connections: a port the kernel
+    // handed out for binding to port 0 could be given to another test's connection before the
+    // server this port is for binds it (omniORB then fails with "Address in use").
+    int ephemeralLow = 32768;
+    QFile range(QStringLiteral("/proc/sys/net/ipv4/ip_local_port_range"));
+    if (range.open(QIODevice::ReadOnly))
+        ephemeralLow = QString::fromLatin1(range.readAll()).split(QLatin1Char('\t')).value(0).trimmed().toInt();
+    const int low = 10000;
+    const int high = qMax(low + 1000, ephemeralLow);
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const quint16 port = quint16(QRandomGenerator::global()->bounded(low, high));
+        const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+        if (fd < 0)
+            return 0;
+        const sockaddr_in address = loopback(port);
+        const bool bound = ::bind(fd, reinterpret_cast<const sockaddr *>(&address), sizeof(address)) == 0;
+        ::close(fd);
+        if (bound)
+            return port;
+    }
+    return 0;
 }
 
 bool isListening(quint16 port)

@@ -16,7 +16,8 @@
 
 namespace LiveTest {
 
-/// A loopback TCP port that was free a moment ago (bound to port 0 and released).
+/// A loopback TCP port that was free a moment ago (a random one below the range of outgoing
+/// connections' local ports, bound and released).
 quint16 freePort();
 /**
  * The rtc.conf line of a component program that joins no master manager. Without it a program
