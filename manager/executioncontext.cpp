@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "executioncontext.h"
+#include "properties.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace Runtime {
 
@@ -23,7 +25,7 @@ RTC::ReturnCode_t guarded(Call call)
 
 ExecutionContext::ExecutionContext(const std::string &typeName, RTC::ExecutionKind kind, double rate,
                                    double transitionTimeoutSeconds)
-    : m_rate(rate > 0 ? rate : 1000.0)
+    : m_rate(rate > 0 && std::isfinite(rate) ? rate : 1000.0)
     , m_transitionTimeout(transitionTimeoutSeconds)
     , m_typeName(typeName)
     , m_kind(kind)
@@ -136,7 +138,7 @@ CORBA::Double ExecutionContext::get_rate()
 
 RTC::ReturnCode_t ExecutionContext::set_rate(CORBA::Double rate)
 {
-    if (!(rate > 0.0))
+    if (!(rate > 0.0) || !std::isfinite(rate))
         return RTC::BAD_PARAMETER;
     {
         std::lock_guard lock(m_mutex);
@@ -388,7 +390,7 @@ RTC::ReturnCode_t PeriodicExecutionContext::requestTransition(const ParticipantP
     m_wake.notify_all();
     // Wait a couple of periods at least, so slow rates still report the finished transition.
     const double waitSeconds = std::max(m_transitionTimeout, 2.0 / m_rate);
-    m_transitioned.wait_for(lock, std::chrono::duration<double>(waitSeconds),
+    m_transitioned.wait_for(lock, boundedSeconds(waitSeconds),
                             [&] { return p->request == Request::None || !m_running; });
     return RTC::RTC_OK;
 }
@@ -412,7 +414,7 @@ void PeriodicExecutionContext::run()
             next = Clock::now();
             continue;
         }
-        next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / m_rate));
+        next += boundedSeconds(1.0 / m_rate);
         const auto now = Clock::now();
         if (next < now)
             next = now; // overrun: do not try to catch up with a burst

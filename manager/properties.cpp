@@ -100,6 +100,13 @@ double Properties::number(const std::string &key, double fallback, std::string *
     return value;
 }
 
+std::chrono::steady_clock::duration boundedSeconds(double seconds)
+{
+    constexpr double longest = 1e9;
+    const double bounded = seconds > 0.0 ? std::min(seconds, longest) : 0.0;
+    return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(bounded));
+}
+
 Properties Properties::parseConf(const std::string &text, std::vector<std::string> *errors)
 {
     Properties result;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -39,6 +40,12 @@ public:
 private:
     std::map<std::string, std::string> m_entries;
 };
+
+/**
+ * @p seconds as a clock's duration for a wait: negative (or not a number) is 0, and more than about
+ * 30 years is 30 years, so that adding it to the clock's time cannot overflow.
+ */
+std::chrono::steady_clock::duration boundedSeconds(double seconds);
 
 /// Trims ASCII white space at both ends.
 std::string trimmed(const std::string &text);

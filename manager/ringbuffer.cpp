@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 namespace Runtime {
 
@@ -14,13 +15,13 @@ std::string lower(std::string text)
     return text;
 }
 
-std::chrono::milliseconds seconds(const std::string &text, std::chrono::milliseconds fallback)
+/// A timeout in seconds; one that is not a number keeps @p fallback.
+std::chrono::milliseconds timeout(const Properties &p, const std::string &key, std::chrono::milliseconds fallback)
 {
-    try {
-        return std::chrono::milliseconds(long(std::stod(text) * 1000.0));
-    } catch (...) {
+    const double seconds = p.number(key, std::nan(""));
+    if (std::isnan(seconds))
         return fallback;
-    }
+    return std::chrono::ceil<std::chrono::milliseconds>(boundedSeconds(seconds));
 }
 
 } // namespace
@@ -41,8 +42,8 @@ RingBuffer::RingBuffer(const Properties &p)
     m_emptyPolicy = empty == "block" ? EmptyPolicy::Block
                     : empty == "do_nothing" ? EmptyPolicy::DoNothing
                                              : EmptyPolicy::Readback;
-    m_writeTimeout = seconds(p.value("write.timeout", "1.0"), m_writeTimeout);
-    m_readTimeout = seconds(p.value("read.timeout", "1.0"), m_readTimeout);
+    m_writeTimeout = timeout(p, "write.timeout", m_writeTimeout);
+    m_readTimeout = timeout(p, "read.timeout", m_readTimeout);
 }
 
 RingBuffer::Status RingBuffer::write(CdrBytes data)

@@ -17,8 +17,11 @@
 
 #include <omniORB4/omniORB.h>
 
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <thread>
 
 using namespace Runtime;
 
@@ -510,6 +513,23 @@ void TestManagerRuntime::ringBufferPolicies()
     QCOMPARE(blocking.read(&out), RingBuffer::Status::Timeout);
     QCOMPARE(blocking.write({7}), RingBuffer::Status::Ok);
     QCOMPARE(blocking.write({8}), RingBuffer::Status::Timeout);
+
+    // Timeouts out of range: a negative one does not wait, one of 10^122 s waits until the buffer
+    // is closed (not a duration that overflows), "nan" keeps the default.
+    RingBuffer extremes(Properties::parseConf("length: 1\nwrite.full_policy: block\nwrite.timeout: 5e122\n"
+                                              "read.empty_policy: block\nread.timeout: -3\n"));
+    QElapsedTimer clock;
+    clock.start();
+    QCOMPARE(extremes.read(&out), RingBuffer::Status::Timeout);
+    QVERIFY2(clock.elapsed() < 500, qPrintable(QString::number(clock.elapsed())));
+    QCOMPARE(extremes.write({1}), RingBuffer::Status::Ok);
+    std::thread closer([&extremes] { extremes.close(); });
+    QCOMPARE(extremes.write({2}), RingBuffer::Status::Timeout);
+    closer.join();
+    RingBuffer notANumber(Properties::parseConf("read.empty_policy: block\nread.timeout: nan\n"));
+    clock.restart();
+    QCOMPARE(notANumber.read(&out), RingBuffer::Status::Timeout);
+    QVERIFY2(clock.elapsed() >= 900, qPrintable(QString::number(clock.elapsed())));
 }
 
 void TestManagerRuntime::cdrLayout()
@@ -650,6 +670,15 @@ void TestManagerRuntime::rateAndProfile()
     RTC::ExecutionContext_var ec = ownedContext(rtc);
     QCOMPARE(ec->get_rate(), 500.0);
     QCOMPARE(ec->set_rate(0.0), RTC::BAD_PARAMETER);
+    QCOMPARE(ec->set_rate(std::numeric_limits<double>::infinity()), RTC::BAD_PARAMETER);
+    QCOMPARE(ec->set_rate(std::nan("")), RTC::BAD_PARAMETER);
+    // A period longer than the clock can add (10^300 s) is served as a very long one: transitions
+    // are still served at once.
+    QCOMPARE(ec->set_rate(1e-300), RTC::RTC_OK);
+    QCOMPARE(ec->activate_component(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(rtc), RTC::ACTIVE_STATE);
+    QCOMPARE(ec->deactivate_component(rtc), RTC::RTC_OK);
+    QCOMPARE(ec->get_component_state(rtc), RTC::INACTIVE_STATE);
     QCOMPARE(ec->set_rate(20.0), RTC::RTC_OK);
     RTC::ExecutionContextService_var service = RTC::ExecutionContextService::_narrow(ec);
     RTC::ExecutionContextProfile_var profile = service->get_profile();

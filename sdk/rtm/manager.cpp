@@ -10,6 +10,7 @@
 
 #include "loggersink.h"
 #include "manageractions.h"
+#include "properties.h"
 #include "sdkinternal.h"
 
 #include <componentfactory.h>
@@ -205,7 +206,7 @@ std::chrono::nanoseconds timerTick(coil::Properties &config)
     }
     if (!(seconds > 0.0))
         seconds = 0.1;
-    return std::chrono::nanoseconds(static_cast<long long>(seconds * 1e9));
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(Runtime::boundedSeconds(seconds));
 }
 
 } // namespace
