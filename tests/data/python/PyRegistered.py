@@ -13,7 +13,7 @@ registered_spec = ["implementation_id", "PyRegistered", "type_name", "PyRegister
 
 class PyRegistered(OpenRTM_aist.DataFlowComponentBase):
     def onInitialize(self):
-        print("PyRegistered initialized as", self._rtc.getInstanceName())
+        print(f"PyRegistered initialized as {self._rtc.getInstanceName()}")
         return RTC.RTC_OK
 
 

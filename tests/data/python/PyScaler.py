@@ -40,7 +40,7 @@ class PyScaler(OpenRTM_aist.DataFlowComponentBase):
             self._d_out.data = sample.data * 1000
             OpenRTM_aist.setTimestamp(self._d_out)
             self._outport.write()
-            print("scaled", sample.data)
+            print(f"scaled {sample.data}")
         return RTC.RTC_OK
 
 
