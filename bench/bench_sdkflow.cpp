@@ -8,7 +8,9 @@
 // Three placements in one run: two components in one RTC::Manager, and a receiver in a second process
 // (this program run with --receiver PORT [tcp]) reached through corbaloc:iiop:127.0.0.1:PORT/manager,
 // once through the Unix socket the runtime offers same-host peers by default and once over loopback
-// TCP only (corba.unix_socket: NO in the receiver).
+// TCP only (corba.unix_socket: NO in the receiver). A fourth, two processes over TLS with client
+// certificates (corba.ssl.* keys, certificates made by `rtctl tls`), runs in a sender process of its
+// own (--tls-sender FOLDER), as a process is plain or TLS from its first call on.
 // The targets, from OpenRTM-aist 2.1's figures, are printed against the measurements at the end.
 // With --openrtm PREFIX (or OPENRTM_PREFIX), OpenRTM-aist's own Throughput example installed there
 // runs afterwards in both placements (bounded in time) and its figures are printed beside ours.
@@ -34,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -263,13 +266,27 @@ private:
     RTC::InPort<RTC::TimedDoubleSeq> m_inIn;
 };
 
-/// The manager of this process: no name server, no master, loopback only.
-RTC::Manager *startManager(const char *program, const std::string &endpoint, bool unixSocket = true)
+/// How a receiver in another process is reached.
+enum class Transport { UnixSocket, Tcp, Tls };
+
+/// The command-line word of each transport, for the receiver process.
+const char *transportWord(Transport transport)
+{
+    return transport == Transport::UnixSocket ? "unix" : transport == Transport::Tcp ? "tcp" : "tls";
+}
+
+/// The manager of this process: no name server, no master, loopback only. With @p tlsFolder (made by
+/// `rtctl tls init` and `issue … node`), TLS only, presenting the node's certificate.
+RTC::Manager *startManager(const char *program, const std::string &endpoint,
+                           Transport transport = Transport::UnixSocket, const std::string &tlsFolder = {})
 {
     setenv("ORBgiopMaxMsgSize", giopMaxMsgSize, 0);
     const std::string endpoints = "corba.endpoints:" + endpoint;
-    const char *transport = unixSocket ? "corba.unix_socket:YES" : "corba.unix_socket:NO";
-    const char *args[] = {program,
+    const char *unixSocket
+        = transport == Transport::UnixSocket ? "corba.unix_socket:YES" : "corba.unix_socket:NO";
+    const std::string authority = "corba.ssl.certificate_authority_file:" + tlsFolder + "/ca.pem";
+    const std::string key = "corba.ssl.key_file:" + tlsFolder + "/node.pem";
+    std::vector<const char *> args = {program,
                           "-o",
                           "naming.enable:NO",
                           "-o",
@@ -279,10 +296,12 @@ RTC::Manager *startManager(const char *program, const std::string &endpoint, boo
                           "-o",
                           "logger.log_level:ERROR",
                           "-o",
-                          transport,
+                          unixSocket,
                           "-i",
                           "-f",
                           "/nonexistent"};
+    if (transport == Transport::Tls)
+        args.insert(args.end(), {"-o", authority.c_str(), "-o", key.c_str()});
     std::vector<char *> argv;
     for (const char *arg : args)
         argv.push_back(const_cast<char *>(arg));
@@ -414,9 +433,9 @@ std::vector<Row> measureAll(FlowSender *sender, const AwaitResult &awaitResult)
 
 /// This program as the receiving process: a manager on 127.0.0.1:PORT with one FlowReceiver that
 /// prints a result line per size; it runs until its standard input closes.
-int runReceiver(const char *program, const char *port, bool unixSocket)
+int runReceiver(const char *program, const char *port, Transport transport, const std::string &tlsFolder)
 {
-    RTC::Manager *manager = startManager(program, std::string("127.0.0.1:") + port, unixSocket);
+    RTC::Manager *manager = startManager(program, std::string("127.0.0.1:") + port, transport, tlsFolder);
     if (manager == nullptr)
         return 1;
     auto *receiver = dynamic_cast<FlowReceiver *>(manager->createComponent("FlowReceiver"));
@@ -445,7 +464,7 @@ public:
     ReceiverProcess &operator=(const ReceiverProcess &) = delete;
     ~ReceiverProcess() { stop(); }
 
-    bool start(unsigned port, bool unixSocket)
+    bool start(unsigned port, Transport transport, const std::string &tlsFolder)
     {
         int toChild[2], fromChild[2];
         if (pipe(toChild) != 0 || pipe(fromChild) != 0)
@@ -459,8 +478,8 @@ public:
             dup2(fromChild[1], STDOUT_FILENO);
             close(toChild[1]);
             close(fromChild[0]);
-            execl("/proc/self/exe", "bench_sdkflow", "--receiver", portText.c_str(),
-                  unixSocket ? static_cast<char *>(nullptr) : "tcp", static_cast<char *>(nullptr));
+            execl("/proc/self/exe", "bench_sdkflow", "--receiver", portText.c_str(), transportWord(transport),
+                  tlsFolder.c_str(), static_cast<char *>(nullptr));
             _exit(127);
         }
         close(toChild[0]);
@@ -578,8 +597,10 @@ std::vector<Row> measureInProcess(RTC::Manager *manager, FlowSender *sender)
 const char *const unixPlacement
     = "(b) two processes on one host, through the Unix socket the runtime offers by default";
 const char *const tcpPlacement = "(c) two processes over loopback TCP (receiver: corba.unix_socket NO)";
+const char *const tlsPlacement = "(d) two processes over loopback TLS, each presenting a certificate (P-256)";
 
-std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *sender, bool unixSocket)
+std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *sender, Transport transport,
+                                         const std::string &tlsFolder = {})
 {
     const unsigned port = freePort();
     ReceiverProcess process;
@@ -593,14 +614,15 @@ std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *send
               }
               return false;
           };
-    if (port == 0 || !process.start(port, unixSocket)
+    if (port == 0 || !process.start(port, transport, tlsFolder)
         || !nextLine(&line, [](const std::string &text) { return text.rfind("ready", 0) == 0; })) {
         std::printf("\nthe receiver process did not start (%s)\n", line.c_str());
         return {};
     }
     RTC::PortService_var in;
     try {
-        const std::string address = "corbaloc:iiop:127.0.0.1:" + std::to_string(port) + "/manager";
+        const std::string address = std::string(transport == Transport::Tls ? "corbaloc:ssliop:" : "corbaloc:iiop:")
+            + "127.0.0.1:" + std::to_string(port) + "/manager";
         CORBA::Object_var object = manager->getORB()->string_to_object(address.c_str());
         RTM::Manager_var remote = RTM::Manager::_narrow(object);
         RTC::RTCList_var components = remote->get_components();
@@ -616,7 +638,9 @@ std::vector<Row> measureBetweenProcesses(RTC::Manager *manager, FlowSender *send
         std::printf("\ncannot connect to the receiver's port\n");
         return {};
     }
-    printHeader(unixSocket ? unixPlacement : tcpPlacement);
+    printHeader(transport == Transport::UnixSocket ? unixPlacement
+                : transport == Transport::Tcp          ? tcpPlacement
+                                                       : tlsPlacement);
     const std::vector<Row> rows = measureAll(sender, [&](Latency *l) {
         std::string result;
         return nextLine(&result, [l](const std::string &text) { return fromLine(text, l); });
@@ -820,10 +844,75 @@ void compareWithOpenRtm(const std::string &prefix, CORBA::ORB_ptr orb,
 
 } // namespace
 
+/// Runs @p arguments (a program and its arguments), its output passed over: true when it exited with 0.
+bool runQuietly(const std::vector<std::string> &arguments)
+{
+    std::vector<char *> argv;
+    for (const std::string &argument : arguments)
+        argv.push_back(const_cast<char *>(argument.c_str()));
+    argv.push_back(nullptr);
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        dup2(null, STDOUT_FILENO);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    close(null);
+    int status = 0;
+    return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/// (d): certificates made with rtctl, then this program again as a TLS sender, which prints the table.
+void measureOverTls()
+{
+    char folder[] = "/tmp/bench_sdkflow-XXXXXX";
+    if (mkdtemp(folder) == nullptr) {
+        std::printf("\ncannot make a folder for the TLS certificates\n");
+        return;
+    }
+    const std::string fleet = std::string(folder) + "/fleet";
+    if (!runQuietly({RTCTL_PATH, "tls", "init", fleet})
+        || !runQuietly({RTCTL_PATH, "tls", "issue", fleet, "node", "--host", "127.0.0.1"})) {
+        std::printf("\nrtctl tls could not make the certificates (%s)\n", RTCTL_PATH);
+    } else {
+        std::fflush(stdout);
+        const pid_t pid = fork();
+        if (pid == 0) {
+            execl("/proc/self/exe", "bench_sdkflow", "--tls-sender", fleet.c_str(), static_cast<char *>(nullptr));
+            _exit(127);
+        }
+        int status = 0;
+        if (pid <= 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            std::printf("\nthe TLS sender did not finish\n");
+    }
+    runQuietly({"/bin/rm", "-rf", folder});
+}
+
+/// This program as the sender over TLS: a manager presenting @p fleet's node certificate.
+int runTlsSender(const char *program, const std::string &fleet)
+{
+    std::signal(SIGPIPE, SIG_IGN);
+    RTC::Manager *manager = startManager(program, "127.0.0.1:", Transport::Tls, fleet);
+    auto *sender = manager ? dynamic_cast<FlowSender *>(manager->createComponent("FlowSender")) : nullptr;
+    if (sender == nullptr) {
+        std::printf("cannot start the TLS manager or create the sending component\n");
+        return 1;
+    }
+    measureBetweenProcesses(manager, sender, Transport::Tls, fleet);
+    std::fflush(stdout);
+    std::_Exit(0);
+}
+
 int main(int argc, char **argv)
 {
-    if ((argc == 3 || argc == 4) && std::string(argv[1]) == "--receiver")
-        return runReceiver(argv[0], argv[2], argc == 3);
+    if ((argc == 4 || argc == 5) && std::string(argv[1]) == "--receiver") {
+        const std::string word = argv[3];
+        const Transport transport = word == "tls" ? Transport::Tls : word == "tcp" ? Transport::Tcp : Transport::UnixSocket;
+        return runReceiver(argv[0], argv[2], transport, argc == 5 ? argv[4] : "");
+    }
+    if (argc == 3 && std::string(argv[1]) == "--tls-sender")
+        return runTlsSender(argv[0], argv[2]);
     std::string openRtm = std::getenv("OPENRTM_PREFIX") ? std::getenv("OPENRTM_PREFIX") : "";
     for (int i = 1; i + 1 < argc; ++i) {
         if (std::string(argv[i]) == "--openrtm")
@@ -846,8 +935,9 @@ int main(int argc, char **argv)
         "ORBgiopMaxMsgSize %s.\n",
         warmUpSamples, sizeBudgetSeconds, std::getenv("ORBgiopMaxMsgSize"));
     const std::vector<Row> inProcess = measureInProcess(manager, sender);
-    const std::vector<Row> between = measureBetweenProcesses(manager, sender, true);
-    const std::vector<Row> tcp = measureBetweenProcesses(manager, sender, false);
+    const std::vector<Row> between = measureBetweenProcesses(manager, sender, Transport::UnixSocket);
+    const std::vector<Row> tcp = measureBetweenProcesses(manager, sender, Transport::Tcp);
+    measureOverTls();
     printTargets(inProcess, between, tcp);
     compareWithOpenRtm(openRtm, manager->getORB(), inProcess, between, tcp);
     std::fflush(stdout);

@@ -3,6 +3,8 @@
 # Throughput example measures them, and the time from Generate to a running instance.
 add_executable(bench_sdkflow bench_sdkflow.cpp openrtmthroughput.h openrtmthroughput.cpp)
 target_link_libraries(bench_sdkflow PRIVATE rtsdk)
+target_compile_definitions(bench_sdkflow PRIVATE RTCTL_PATH="$<TARGET_FILE:rtctl>")
+add_dependencies(bench_sdkflow rtctl)
 
 add_executable(bench_sdkgenerate bench_sdkgenerate.cpp)
 target_link_libraries(bench_sdkgenerate PRIVATE Qt6::Core)
