@@ -8,8 +8,9 @@
 #   cmake -B build-ci -DRTSTUDIO_OPENRTM_PREFIX=PREFIX && ctest --test-dir build-ci -L interop
 #
 # SOURCE is an unpacked OpenRTM-aist v2.1.0 tree (its repository is public; from a bare clone:
-# `git --git-dir=DIR archive v2.1.0 | tar -x -C SOURCE`). Three mistakes of v2.1.0 keep a master
-# from starting slave managers; they are corrected in SOURCE before the build:
+# `git --git-dir=DIR archive v2.1.0 | tar -x -C SOURCE`). It is built with its SSL transport
+# (SSL_ENABLE: lib/openrtm-2.1/ssl/SSLTransport.so), which tst_interoptls needs. Three mistakes of
+# v2.1.0 keep a master from starting slave managers; they are corrected in SOURCE before the build:
 #   - the manager command key lacks the dot in `manager.modules.<lang>.manager_cmd`;
 #   - `-f ""` is passed to a slave when the master has an empty config_file;
 #   - a child whose exec fails returns into the parent's code instead of exiting.
@@ -33,7 +34,7 @@ for file in "$servant" "$process"; do
 done
 
 missing=
-for package in libomniorb4-dev omniidl omniorb omniorb-nameserver omniorb-idl uuid-dev cmake ninja-build; do
+for package in libomniorb4-dev omniidl omniorb omniorb-nameserver omniorb-idl uuid-dev libssl-dev cmake ninja-build; do
     dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed" || missing="$missing $package"
 done
 if [ -n "$missing" ]; then
@@ -57,7 +58,7 @@ grep -q 'lang + ".manager_cmd"' "$servant" && grep -q '_exit(127);' "$process" |
 }
 
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
-    -DDOCUMENTS_ENABLE=OFF
+    -DDOCUMENTS_ENABLE=OFF -DSSL_ENABLE=ON
 ninja -C "$build"
 ninja -C "$build" install
 
