@@ -5237,6 +5237,12 @@ TLS で暗号化されています。サーバは認証局の証明書で &quot;
         </translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>%1.</source>
+        <extracomment>The finished status line as a sentence (its full stop).</extracomment>
+        <translation>%1。</translation>
+    </message>
+    <message>
         <location filename="../../systemeditor/online/onlinediagramheal.cpp" line="+51"/>
         <source>Keep Running is off.</source>
         <translation>稼働の維持はオフです。</translation>

@@ -133,7 +133,8 @@ void OnlineDiagram::finishSystemPlan(const OnlineResult &result)
         summary = tr("%1: %n action(s) done", nullptr, done).arg(m_batch.doing);
     if (report.ok && !failures.isEmpty())
         summary += tr(", %n optional failed", nullptr, int(failures.size()));
-    m_status->setText(failures.isEmpty() ? summary + QLatin1Char('.')
+    //: The finished status line as a sentence (its full stop).
+    m_status->setText(failures.isEmpty() ? tr("%1.").arg(summary)
                                          : summary + QLatin1Char('\n') + failures.join(QLatin1Char('\n')));
     endBatch(summary);
     poll();
