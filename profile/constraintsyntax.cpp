@@ -240,10 +240,12 @@ private:
     bool lookingAtCall(const char *name)
     {
         skipSpace();
-        const QString rest = m_text.mid(m_pos);
-        static const QRegularExpression call(QStringLiteral(R"(^([a-z]+)\s*\()"));
-        const auto match = call.match(rest);
-        return match.hasMatch() && match.captured(1) == QLatin1String(name);
+        // Matched in place: a copy of the rest of the text for every operand made long `&&` chains
+        // take quadratic time.
+        static const QRegularExpression call(QStringLiteral(R"(([a-z]+)\s*\()"));
+        const auto match
+            = call.match(m_text, m_pos, QRegularExpression::NormalMatch, QRegularExpression::AnchorAtOffsetMatchOption);
+        return match.hasMatch() && match.capturedView(1) == QLatin1String(name);
     }
 
     RtcConstraint parseLike()
