@@ -14,6 +14,8 @@
 # log of each run is build-fuzz/fuzz/<harness>.log. Exits non-zero when anything was found.
 # With --seeds-only each harness starts from its seeds alone, in build-fuzz/fuzz/seeds-only/<harness>/
 # (emptied first), so a run shows what a fresh start finds; the grown corpora stay as they are.
+# An input taking over 1 s is a timeout; FUZZ_TIMEOUT=S sets another limit (for long runs on a machine
+# that is not quiet, where a starved harness can take that long over an input it replays in milliseconds).
 set -eu
 
 usage="usage: $0 [--seeds-only] SECONDS [HARNESS...] | $0 [--seeds-only] --runs N [HARNESS...]"

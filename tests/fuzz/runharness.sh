@@ -9,7 +9,8 @@
 # seeds, regression inputs and kept corpus CMake found for the harness) are copied into WORK_CORPUS
 # under their content's hash, as libFuzzer names corpus files, and the harness runs on WORK_CORPUS
 # (which it grows). Inputs are at
-# most 4 KiB; one taking more than 1 s is a timeout. Findings go to ARTIFACTS (emptied first) and are
+# most 4 KiB; one taking more than 1 s is a timeout (FUZZ_TIMEOUT=S in the environment: S seconds,
+# for long runs beside other work, where a starved process can take a second over a 5 ms input). Findings go to ARTIFACTS (emptied first) and are
 # printed in base64 after the row; the exit status is 1 when there are any. With --fresh, WORK_CORPUS
 # is emptied first, so that the run starts from the seeds and the corpus directories alone; with
 # --row FILE, the row is written to FILE as well.
@@ -43,7 +44,7 @@ while IFS= read -r seed; do
     add_seed "$seed"
 done <"$seeds"
 
-"$harness" "$limit" -timeout=1 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
+"$harness" "$limit" -timeout="${FUZZ_TIMEOUT:-1}" -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
     -artifact_prefix="$artifacts/" "$corpus" >"$log" 2>&1 || true
 
 execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
