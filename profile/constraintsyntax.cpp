@@ -237,15 +237,19 @@ private:
         return RtcConstraint::logical(Op::Or, std::move(operands));
     }
 
+    /// `name(`, with white space allowed before the parenthesis. Read in place: a copy (or a
+    /// regular expression's check) of the rest of the text for every operand made long `&&` chains
+    /// take quadratic time.
     bool lookingAtCall(const char *name)
     {
         skipSpace();
-        // Matched in place: a copy of the rest of the text for every operand made long `&&` chains
-        // take quadratic time.
-        static const QRegularExpression call(QStringLiteral(R"(([a-z]+)\s*\()"));
-        const auto match
-            = call.match(m_text, m_pos, QRegularExpression::NormalMatch, QRegularExpression::AnchorAtOffsetMatchOption);
-        return match.hasMatch() && match.capturedView(1) == QLatin1String(name);
+        qsizetype end = m_pos;
+        while (end < m_text.size() && m_text.at(end) >= QLatin1Char('a') && m_text.at(end) <= QLatin1Char('z'))
+            ++end;
+        const QStringView word = QStringView(m_text).mid(m_pos, end - m_pos);
+        while (end < m_text.size() && m_text.at(end).isSpace())
+            ++end;
+        return end < m_text.size() && m_text.at(end) == QLatin1Char('(') && word == QLatin1String(name);
     }
 
     RtcConstraint parseLike()
