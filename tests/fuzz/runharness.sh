@@ -8,11 +8,10 @@
 # LIMIT is libFuzzer's -max_total_time=S or -runs=N. The files SEEDS_FILE lists (one path a line: the
 # seeds, regression inputs and kept corpus CMake found for the harness) are copied into WORK_CORPUS
 # under their content's hash, as libFuzzer names corpus files, and the harness runs on WORK_CORPUS
-# (which it grows). Inputs are at
-# most 4 KiB; one taking more than 1 s is a timeout (FUZZ_TIMEOUT=S in the environment: S seconds,
-# for long runs beside other work, where a starved process can take a second over a 5 ms input). Findings go to ARTIFACTS (emptied first) and are
-# printed in base64 after the row; the exit status is 1 when there are any. With --fresh, WORK_CORPUS
-# is emptied first, so that the run starts from the seeds and the corpus directories alone; with
+# (which it grows). Inputs are at most 4 KiB; one taking more than 1 s is a timeout (FUZZ_TIMEOUT=S
+# in the environment: S seconds, for long runs beside other work, where a starved process can take a
+# second over a 5 ms input). Findings go to ARTIFACTS (emptied first) and are printed in base64 after
+# the row; the exit status is 1 when there are any. With --fresh, WORK_CORPUS is emptied first, so that the run starts from the seeds and the corpus directories alone; with
 # --row FILE, the row is written to FILE as well.
 set -eu
 
