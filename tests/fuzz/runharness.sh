@@ -11,8 +11,9 @@
 # (which it grows). Inputs are at most 4 KiB; one taking more than 1 s is a timeout (FUZZ_TIMEOUT=S
 # in the environment: S seconds, for long runs beside other work, where a starved process can take a
 # second over a 5 ms input). Findings go to ARTIFACTS (emptied first) and are printed in base64 after
-# the row; the exit status is 1 when there are any. With --fresh, WORK_CORPUS is emptied first, so that the run starts from the seeds and the corpus directories alone; with
-# --row FILE, the row is written to FILE as well.
+# the row; the exit status is 1 when there are any. With --fresh, WORK_CORPUS is emptied first, so
+# that the run starts from the seeds and the corpus directories alone; with --row FILE, the row is
+# written to FILE as well.
 set -eu
 
 fresh=0 row_file=
