@@ -51,6 +51,11 @@ add_dependencies(tst_sdkrtm sdkrtm_cxx11)
 rtstudio_add_test(tst_sdkutil SOURCES tst_sdkutil.cpp LIBS rtsdk rtstudio_livetest)
 set_tests_properties(tst_sdkutil PROPERTIES LABELS sdk)
 
+# The manager's `timer.tick` read from its configuration: defaults for unreadable values, a bound
+# for huge ones; one child process per value (the manager is one per process).
+rtstudio_add_test(tst_sdktimertick SOURCES tst_sdktimertick.cpp LIBS rtsdk)
+set_tests_properties(tst_sdktimertick PROPERTIES LABELS sdk)
+
 # Execution contexts (ExtTrig, OpenHRP, Simulator) and the manager's internals, in this process and
 # in rtmanager.
 # OpenRTM-aist's ExtTrigger example is built against the staged SDK and run.
