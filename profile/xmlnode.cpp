@@ -411,6 +411,29 @@ QString xmlSafe(const QString &text)
     return result.isNull() ? text : result;
 }
 
+// A namespace URI as QXmlStreamWriter needs it: it writes namespace declarations as given, without
+// escaping (a URI with '<', '&' or '"' made a file that does not read back), and takes the URI as the
+// key of its declarations, so every use passes the same escaped text.
+QString namespaceText(const QString &uri)
+{
+    const QString text = xmlSafe(uri);
+    QString escaped;
+    escaped.reserve(text.size());
+    for (const QChar c : text) {
+        switch (c.unicode()) {
+        case '&': escaped += QLatin1String("&amp;"); break;
+        case '<': escaped += QLatin1String("&lt;"); break;
+        case '>': escaped += QLatin1String("&gt;"); break;
+        case '"': escaped += QLatin1String("&quot;"); break;
+        case '\t': escaped += QLatin1String("&#9;"); break;
+        case '\n': escaped += QLatin1String("&#10;"); break;
+        case '\r': escaped += QLatin1String("&#13;"); break;
+        default: escaped += c;
+        }
+    }
+    return escaped;
+}
+
 void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
                const QHash<QString, QString> &prefixes, bool isRoot,
                const QList<QPair<QString, QString>> &declarations)
@@ -419,12 +442,12 @@ void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
     // after it, the writer would first invent a prefix of its own for the root's namespace.
     if (isRoot) {
         for (const auto &d : declarations)
-            writer.writeNamespace(xmlSafe(d.first), xmlSafe(d.second));
+            writer.writeNamespace(namespaceText(d.first), xmlSafe(d.second));
     }
     if (node.namespaceUri.isEmpty())
         writer.writeStartElement(xmlSafe(node.name));
     else
-        writer.writeStartElement(xmlSafe(node.namespaceUri), xmlSafe(node.name));
+        writer.writeStartElement(namespaceText(node.namespaceUri), xmlSafe(node.name));
     if (!node.xsiTypeName.isEmpty()) {
         const QString prefix = prefixes.value(node.xsiTypeNamespace);
         writer.writeAttribute(Ns::Xsi, QStringLiteral("type"),
@@ -435,7 +458,7 @@ void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
         if (a.namespaceUri.isEmpty())
             writer.writeAttribute(xmlSafe(a.name), xmlSafe(a.value));
         else
-            writer.writeAttribute(xmlSafe(a.namespaceUri), xmlSafe(a.name), xmlSafe(a.value));
+            writer.writeAttribute(namespaceText(a.namespaceUri), xmlSafe(a.name), xmlSafe(a.value));
     }
     if (!node.text.isEmpty())
         writer.writeCharacters(xmlSafe(node.text));
