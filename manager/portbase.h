@@ -57,6 +57,10 @@ public:
     void setProperty(const std::string &key, const std::string &value);
     /// This port's object reference (activates the servant in the root POA on first use).
     RTC::PortService_ptr reference();
+    /// The name the port was made with, without the instance name.
+    const std::string &shortName() const { return m_name; }
+    /// Profile name `<instance>.<port>`.
+    std::string profileName();
     /// Number of stored connections.
     size_t connectionCount();
     /// Reports the steps of notify_connect / notify_disconnect to @p observer (empty: nobody).
@@ -160,8 +164,6 @@ protected:
     void addInterfaceProfile(const std::string &instanceName, const std::string &typeName, bool provided);
     /// Port profile properties as given so far.
     Properties portProperties();
-    /// Profile name `<instance>.<port>`.
-    std::string profileName();
 
 private:
     enum Hook { Publish, Subscribe, Connected, Unsubscribe, Disconnected, ConnectionLost, HookCount };

@@ -73,22 +73,50 @@ std::string RtObject::status(const std::string &name)
     return it == m_status.end() ? std::string() : it->second;
 }
 
-void RtObject::addPort(PortBase *port)
+bool RtObject::listPort(PortBase *port, bool borrowed)
 {
+    const std::string name = instanceName() + '.' + port->shortName();
+    {
+        std::lock_guard lock(m_mutex);
+        for (PortBase *listed : m_ports) {
+            if (listed == port || listed->profileName() == name)
+                return false;
+        }
+    }
     RTC::RTObject_var self = reference();
     port->setOwner(self, instanceName());
     RTC::PortService_var activated = port->reference();
     std::lock_guard lock(m_mutex);
     m_ports.push_back(port);
+    if (borrowed)
+        m_borrowedPorts.insert(port);
+    return true;
 }
 
-void RtObject::addBorrowedPort(PortBase *port)
+bool RtObject::addPort(PortBase *port)
 {
-    {
-        std::lock_guard lock(m_mutex);
-        m_borrowedPorts.insert(port);
+    if (listPort(port, false))
+        return true;
+    std::cerr << programName() << ": " << instanceName() << ": a port named " << port->shortName()
+              << " is listed already; the new one is not added" << std::endl;
+    releaseServant(m_poa, port);
+    return false;
+}
+
+bool RtObject::addBorrowedPort(PortBase *port)
+{
+    return listPort(port, true);
+}
+
+PortBase *RtObject::findPort(const std::string &name)
+{
+    const std::string profileName = instanceName() + '.' + name;
+    std::lock_guard lock(m_mutex);
+    for (PortBase *listed : m_ports) {
+        if (listed->profileName() == profileName)
+            return listed;
     }
-    addPort(port);
+    return nullptr;
 }
 
 bool RtObject::removePort(PortBase *port)
@@ -148,9 +176,7 @@ void RtObject::setInitializeError(const std::string &reason)
 
 ServicePort *RtObject::addServicePort(const std::string &name)
 {
-    auto *port = new ServicePort(name, m_poa);
-    addPort(port);
-    return port;
+    return addPortOnce<ServicePort>(name);
 }
 
 std::vector<PortBase *> RtObject::portList()

@@ -126,34 +126,48 @@ protected:
     virtual RTC::ReturnCode_t onRateChanged(RTC::ExecutionContextHandle_t) { return RTC::RTC_OK; }
 
     PortableServer::POA_ptr poa() const { return m_poa.in(); }
-    /// Takes ownership of @p port and lists it in the profile.
-    void addPort(PortBase *port);
+    /**
+     * Takes ownership of @p port and lists it in the profile; false (and @p port deleted) when a
+     * port of its name is listed already, as OpenRTM-aist's port admin refuses one: onInitialize()
+     * runs again whenever a peer calls on_initialize(), and its ports must not pile up.
+     */
+    bool addPort(PortBase *port);
     /**
      * Lists @p port, which the component object owns (a member): on finalize the runtime
-     * disconnects and deactivates it but leaves its deletion to the owner.
+     * disconnects and deactivates it but leaves its deletion to the owner. False when it, or a
+     * port of its name, is listed already.
      */
-    void addBorrowedPort(PortBase *port);
+    bool addBorrowedPort(PortBase *port);
     /// Disconnects, deactivates and unlists @p port (deleting it when the runtime owns it).
     bool removePort(PortBase *port);
+    /// The listed port named @p name (without the instance name), or nullptr.
+    PortBase *findPort(const std::string &name);
+    /// A new port named @p name, or the one listed under that name when its type is the same (nullptr otherwise).
     template <typename T>
     InPort<T> *addInPort(const std::string &name)
     {
-        auto *port = new InPort<T>(name, m_poa);
-        addPort(port);
-        return port;
+        return addPortOnce<InPort<T>>(name);
     }
     template <typename T>
     OutPort<T> *addOutPort(const std::string &name)
     {
-        auto *port = new OutPort<T>(name, m_poa);
-        addPort(port);
-        return port;
+        return addPortOnce<OutPort<T>>(name);
     }
     ServicePort *addServicePort(const std::string &name);
     /// Records why onInitialize() refuses, for initializeError() (the manager's refusal names it).
     void setInitializeError(const std::string &reason);
 
 private:
+    template <typename Port>
+    Port *addPortOnce(const std::string &name)
+    {
+        if (PortBase *listed = findPort(name))
+            return dynamic_cast<Port *>(listed);
+        auto *port = new Port(name, m_poa);
+        return addPort(port) ? port : nullptr;
+    }
+    /// Lists @p port unless it, or a port of its name, is listed already.
+    bool listPort(PortBase *port, bool borrowed);
     bool createOwnedContext();
     /// Activates the configuration set that configuration.active_config names, when there is one.
     void activateConfiguredSet();

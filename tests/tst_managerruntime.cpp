@@ -32,6 +32,9 @@ class Faulty : public RtObject
 {
 public:
     using RtObject::RtObject;
+    using RtObject::addInPort;
+    using RtObject::addOutPort;
+    using RtObject::findPort;
     std::atomic<bool> failExecute{false};
     std::atomic<bool> failReset{false};
     std::atomic<int> activations{0};
@@ -166,6 +169,7 @@ private slots:
     void dataFlow_data();
     void dataFlow();
     void disconnectStopsFlow();
+    void onInitializeAgainKeepsPorts();
     void connectorBufferPolicy();
     void connectRejectsMismatch_data();
     void connectRejectsMismatch();
@@ -895,6 +899,42 @@ void TestManagerRuntime::disconnectStopsFlow()
     const long received = statusNumber(out, "received_count");
     QTRY_VERIFY(statusNumber(in, "sent_count") > sent + 40);
     QCOMPARE(statusNumber(out, "received_count"), received);
+}
+
+// on_initialize() is an operation any peer may call: the component's onInitialize() runs again, and
+// its ports must neither pile up (a name is listed once, as in OpenRTM-aist) nor stop working.
+void TestManagerRuntime::onInitializeAgainKeepsPorts()
+{
+    auto [in, out, outPort, inPort] = consolePair("CI2", "CO2");
+    for (int i = 0; i < 3; ++i) {
+        QCOMPARE(in->on_initialize(), RTC::RTC_OK);
+        QCOMPARE(out->on_initialize(), RTC::RTC_OK);
+    }
+    for (RTC::RTObject_ptr rtc : {in.in(), out.in()}) {
+        RTC::PortServiceList_var ports = rtc->get_ports();
+        QCOMPARE(ports->length(), CORBA::ULong(1));
+        RTC::ComponentProfile_var profile = rtc->get_component_profile();
+        QCOMPARE(profile->port_profiles.length(), CORBA::ULong(1));
+    }
+    // The ports the components write and read are still the listed ones.
+    QCOMPARE(connect(outPort, inPort, Properties::parseConf("dataport.dataflow_type: push\n")), RTC::RTC_OK);
+    RTC::ExecutionContext_var sourceEc = ownedContext(in);
+    RTC::ExecutionContext_var sinkEc = ownedContext(out);
+    sinkEc->activate_component(out);
+    sourceEc->activate_component(in);
+    QTRY_VERIFY(statusNumber(out, "received_count") > 5);
+
+    // A port of a listed name is refused; one of another type under that name is not handed out.
+    auto *component = dynamic_cast<Faulty *>(create("Faulty", "F2"));
+    QVERIFY(component);
+    InPort<RTC::TimedLong> *first = component->addInPort<RTC::TimedLong>("extra");
+    QVERIFY(first);
+    QCOMPARE(component->addInPort<RTC::TimedLong>("extra"), first);
+    QCOMPARE(component->addOutPort<RTC::TimedLong>("extra"), static_cast<OutPort<RTC::TimedLong> *>(nullptr));
+    QCOMPARE(component->findPort("extra"), static_cast<PortBase *>(first));
+    RTC::RTObject_var reference = component->reference();
+    RTC::PortServiceList_var ports = reference->get_ports();
+    QCOMPARE(ports->length(), CORBA::ULong(1));
 }
 
 void TestManagerRuntime::connectorBufferPolicy()

@@ -328,15 +328,24 @@ void Runtime::PortBase::setPortConnectListenerHolder(RTC::PortConnectListeners *
 
 namespace RTC {
 
-void RTObject_impl::attachPort(PortBase &port)
+bool RTObject_impl::attachPort(PortBase &port)
 {
+    // As OpenRTM-aist's port admin: a name is listed once (onInitialize() runs again on every
+    // remote on_initialize()).
+    if (std::find(m_addedPorts.begin(), m_addedPorts.end(), &port) != m_addedPorts.end()
+        || findPort(port.shortName()) != nullptr) {
+        RTC_ERROR(("a port named %s is listed already; it is not added again", port.shortName().c_str()));
+        return false;
+    }
     port.setPortConnectListenerHolder(&m_portconnListeners);
     // The listeners see the profile as it will be listed: under the component's instance name.
     RTObject_var self = reference();
     port.setOwner(self.in(), instanceName());
     onAddPort(port.getPortProfile());
-    addBorrowedPort(&port);
+    if (!addBorrowedPort(&port))
+        return false;
     m_addedPorts.push_back(&port);
+    return true;
 }
 
 bool RTObject_impl::detachPort(PortBase &port)
@@ -352,8 +361,7 @@ bool RTObject_impl::detachPort(PortBase &port)
 
 bool RTObject_impl::addPort(PortBase &port)
 {
-    attachPort(port);
-    return true;
+    return attachPort(port);
 }
 
 bool RTObject_impl::addPort(CorbaPort &port)
@@ -388,7 +396,8 @@ coil::Properties portSettings(Manager *manager, const coil::Properties &componen
 bool RTObject_impl::addInPort(const char *name, InPortBase &inport)
 {
     // The port keeps the name it was constructed with, as in OpenRTM-aist; @p name picks its settings.
-    attachPort(inport);
+    if (!attachPort(inport))
+        return false;
     coil::Properties settings = portSettings(m_pManager, m_properties, "inport", name);
     inport.init(settings);
     m_inports.push_back(&inport);
@@ -397,7 +406,8 @@ bool RTObject_impl::addInPort(const char *name, InPortBase &inport)
 
 bool RTObject_impl::addOutPort(const char *name, OutPortBase &outport)
 {
-    attachPort(outport);
+    if (!attachPort(outport))
+        return false;
     coil::Properties settings = portSettings(m_pManager, m_properties, "outport", name);
     outport.init(settings);
     m_outports.push_back(&outport);

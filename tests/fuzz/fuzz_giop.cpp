@@ -97,6 +97,11 @@ struct Target
 };
 
 std::vector<Target> s_targets;
+// The component's reference and how many ports it lists: what a request makes it do again (its
+// onInitialize() on a remote on_initialize()) must not make its ports pile up.
+RTC::RTObject_var s_component;
+CORBA::ULong s_portCount = 0;
+unsigned s_inputs = 0;
 // The latest requests, printed when the server stops answering: the servants keep state from one
 // input to the next, so the input that hangs is seldom the one that caused it.
 std::vector<std::string> s_recent;
@@ -498,7 +503,9 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
     s_targets.push_back({keyOf(orb, contexts[0]), &contextOperations});
     SDOPackage::Configuration_var configuration = rtc->get_configuration();
     s_targets.push_back({keyOf(orb, configuration), &configurationOperations});
+    s_component = RTC::RTObject::_duplicate(rtc);
     RTC::PortServiceList_var ports = rtc->get_ports();
+    s_portCount = ports->length();
     RTC::PortService_var in, out;
     for (CORBA::ULong i = 0; i < ports->length(); ++i) {
         s_targets.push_back({keyOf(orb, ports[i]), &portOperations});
@@ -579,5 +586,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     remember("object " + std::to_string(index) + ' ' + operation + ": " + hex);
     sendRequest(target, operation, data[2] & 1, data + 3, size - 3);
+    if (++s_inputs % 256 == 0 || std::strcmp(operation, "on_initialize") == 0) {
+        RTC::PortServiceList_var ports = s_component->get_ports();
+        if (ports->length() != s_portCount) {
+            std::fprintf(stderr, "fuzz_giop: the component lists %u ports, not its %u; the latest requests:\n",
+                         ports->length(), s_portCount);
+            for (const std::string &request : s_recent)
+                std::fprintf(stderr, "  %s\n", request.c_str());
+            std::abort();
+        }
+    }
     return 0;
 }

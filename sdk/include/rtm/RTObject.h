@@ -506,7 +506,8 @@ private:
         m_actionListeners.notify(type, ec_id, ret);
     }
 
-    void attachPort(PortBase &port);
+    /// False (logged) when @p port, or a port of its name, is listed already.
+    bool attachPort(PortBase &port);
     bool detachPort(PortBase &port);
     template <typename Action>
     ReturnCode_t around(PreComponentActionListenerType pre, PostComponentActionListenerType post, UniqueId ec_id,
