@@ -579,8 +579,31 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
     return 0;
 }
 
+// With FUZZ_GIOP_INPUTS=DIR each input is also written to DIR, numbered, the latest 256 kept: a
+// finding that needs the server's state from earlier inputs is then replayed in order with
+// `fuzz_giop DIR/*`.
+void keepInput(const uint8_t *data, size_t size)
+{
+    static const char *const folder = std::getenv("FUZZ_GIOP_INPUTS");
+    static unsigned long number = 0;
+    if (folder == nullptr)
+        return;
+    const auto path = [](unsigned long n) {
+        char name[32];
+        std::snprintf(name, sizeof name, "/%010lu", n);
+        return std::string(folder) + name;
+    };
+    if (FILE *file = std::fopen(path(++number).c_str(), "wb")) {
+        std::fwrite(data, 1, size, file);
+        std::fclose(file);
+    }
+    if (number > 256)
+        std::remove(path(number - 256).c_str());
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    keepInput(data, size);
     if (size < 3)
         return 0;
     if (data[0] & 0x80) {
