@@ -416,22 +416,11 @@ QString xmlSafe(const QString &text)
 // key of its declarations, so every use passes the same escaped text.
 QString namespaceText(const QString &uri)
 {
-    const QString text = xmlSafe(uri);
-    QString escaped;
-    escaped.reserve(text.size());
-    for (const QChar c : text) {
-        switch (c.unicode()) {
-        case '&': escaped += QLatin1String("&amp;"); break;
-        case '<': escaped += QLatin1String("&lt;"); break;
-        case '>': escaped += QLatin1String("&gt;"); break;
-        case '"': escaped += QLatin1String("&quot;"); break;
-        case '\t': escaped += QLatin1String("&#9;"); break;
-        case '\n': escaped += QLatin1String("&#10;"); break;
-        case '\r': escaped += QLatin1String("&#13;"); break;
-        default: escaped += c;
-        }
-    }
-    return escaped;
+    return xmlSafe(uri)
+        .toHtmlEscaped()
+        .replace(QLatin1Char('\t'), QLatin1String("&#9;"))
+        .replace(QLatin1Char('\n'), QLatin1String("&#10;"))
+        .replace(QLatin1Char('\r'), QLatin1String("&#13;"));
 }
 
 void writeNode(QXmlStreamWriter &writer, const XmlNode &node,
