@@ -4,6 +4,7 @@
 // bad requests, loadable modules and shutdown.
 #include "corbautil.h"
 #include "livesystem.h"
+#include "referenceguard.h"
 
 #include <RTStudioManager.hh>
 #include <omniORB4/Naming.hh>
@@ -85,6 +86,44 @@ RTC::ReturnCode_t activate(RTC::RTObject_ptr rtc)
     return ecs->length() ? ecs[0]->activate_component(rtc) : RTC::BAD_PARAMETER;
 }
 
+/// A stringified reference whose one IIOP profile does not decode: its host name claims more bytes
+/// than the profile holds; @p padding bytes follow it.
+QByteArray undecodableReference(int padding)
+{
+    QByteArray cdr;
+    const auto appendULong = [](QByteArray &to, quint32 value) {
+        while (to.size() % 4)
+            to.append('\0');
+        const quint32 little = qToLittleEndian(value);
+        to.append(reinterpret_cast<const char *>(&little), sizeof little);
+    };
+    cdr.append('\1'); // little endian
+    const QByteArray type("IDL:omg.org/RTC/LightweightRTObject:1.0");
+    appendULong(cdr, quint32(type.size() + 1));
+    cdr.append(type).append('\0');
+    appendULong(cdr, 1); // one profile
+    appendULong(cdr, 0); // TAG_INTERNET_IOP
+    QByteArray body("\1\1\2", 3); // little endian, IIOP 1.2
+    appendULong(body, 0xfffffff0u); // the host name's length
+    body.append(QByteArray(padding, 'x'));
+    appendULong(cdr, quint32(body.size()));
+    cdr.append(body);
+    return "IOR:" + cdr.toHex();
+}
+
+/// The resident memory of process @p pid in KiB, -1 when unknown.
+qint64 residentKiB(qint64 pid)
+{
+    QFile file(QString("/proc/%1/status").arg(pid));
+    if (!file.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray &line : file.readAll().split('\n')) {
+        if (line.startsWith("VmRSS:"))
+            return line.mid(6).trimmed().split(' ').value(0).toLongLong();
+    }
+    return -1;
+}
+
 } // namespace
 
 class TestManagerLive : public QObject
@@ -114,6 +153,7 @@ private slots:
     void remoteConfigurationCannotChooseCode();
     void limitsRefuseRunawayClients();
     void connectionsBeyondTheLimitAreClosed();
+    void undecodableReferencesLeaveNoTrace();
     void shutdownUnregisters();
     void slavesFollowKilledMaster();
     void startupKeys();
@@ -741,6 +781,40 @@ void TestManagerLive::connectionsBeyondTheLimitAreClosed()
     QCOMPARE(count(QAbstractSocket::ConnectedState), 3);
     // It serves on over the connection it had.
     QCOMPARE(m_master->is_master(), CORBA::Boolean(true));
+}
+
+// omniORB 4.2.5 refuses a reference whose profile does not decode with MARSHAL and loses it, with
+// every byte of its profile: a peer repeating such requests grew the manager's memory without end.
+// The manager takes such a reference as one to no object instead.
+void TestManagerLive::undecodableReferencesLeaveNoTrace()
+{
+    // This process makes such references the same way, so that it can send one.
+    Runtime::ReferenceGuard::install();
+    const QByteArray text = undecodableReference(128 * 1024);
+    CORBA::Object_var undecodable = m_orb->string_to_object(text.constData());
+    QVERIFY(!CORBA::is_nil(undecodable));
+    QVERIFY(undecodable->_non_existent());
+    RTC::LightweightRTObject_var component = RTC::LightweightRTObject::_unchecked_narrow(undecodable);
+    QVERIFY_THROWS_EXCEPTION(CORBA::OBJECT_NOT_EXIST, component->is_alive(RTC::ExecutionContext::_nil()));
+
+    RTC::RTObject_var rtc = create("ConsoleIn");
+    QVERIFY2(!CORBA::is_nil(rtc), qPrintable(lastError(m_master)));
+    RTC::ExecutionContextList_var contexts = rtc->get_owned_contexts();
+    QCOMPARE(contexts->length(), 1u);
+    const qint64 before = residentKiB(m_masterProcess->processId());
+    QVERIFY(before > 0);
+    // 1,000 requests carrying 128 KiB each: 128 MiB if the manager kept what it read.
+    for (int i = 0; i < 1000; ++i) {
+        try {
+            QCOMPARE(contexts[0]->remove_component(component), RTC::BAD_PARAMETER);
+        } catch (const CORBA::Exception &e) {
+            QFAIL(qPrintable(QString("request %1: %2").arg(i).arg(QString::fromStdString(Runtime::describeException(e)))));
+        }
+    }
+    const qint64 after = residentKiB(m_masterProcess->processId());
+    QVERIFY2(after - before < 32 * 1024, qPrintable(QString("the manager grew from %1 KiB to %2 KiB").arg(before).arg(after)));
+    QCOMPARE(m_master->delete_component(RTC::ComponentProfile_var(rtc->get_component_profile())->instance_name),
+             RTC::RTC_OK);
 }
 
 // As OpenRTM-aist's: a loadable module is listed by the component types its init function
