@@ -58,6 +58,7 @@ private slots:
     void initTestCase();
     void configSampleRunsUnchanged();
     void configurationSetsAndListeners();
+    void configurationChangesWhileExecuting();
     void compositeRunsUnchanged();
     void pythonMemberOfCompositeInManager();
     void connectorDrivesExtTriggerThroughTheOrb();
@@ -281,6 +282,26 @@ void TestPythonExamples::configurationSetsAndListeners()
     QVERIFY2(!afterRemoval.contains(QLatin1String("param ")), qPrintable(afterRemoval));
     QVERIFY2(afterRemoval.contains(QLatin1String("set changed gain=41\n")), qPrintable(afterRemoval));
     m_live.stop(sets);
+}
+
+// A change from outside reaches the configuration listeners (Python, so they need the interpreter)
+// while the component's execution context, holding the interpreter, asks the configuration for its
+// active set: neither may wait for the other (before, this stopped the component about one time in
+// sixty with PyConfigSets, at once with this one).
+void TestPythonExamples::configurationChangesWhileExecuting()
+{
+    QProcess *busy = m_scripts.start(LiveTest::pythonTestScript(QStringLiteral("PyConfigBusy.py")),
+                                     {QStringLiteral("PyConfigBusy0.rtc")}, runTimeoutMs);
+    QVERIFY(busy);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(busy).contains(QLatin1String("gain [0] sets told 0\n")), qPrintable(printed(busy)),
+                              runTimeoutMs);
+    for (int gain = 1; gain <= 10; ++gain) {
+        QVERIFY2(rtctlSucceeds({"conf", "PyConfigBusy0.rtc", "set", "gain", QString::number(gain)}),
+                 qPrintable(printed(busy).right(600)));
+    }
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(busy).contains(QLatin1String("gain [10] sets told 10\n")),
+                              qPrintable(printed(busy).right(600)), runTimeoutMs);
+    m_live.stop(busy);
 }
 
 void TestPythonExamples::compositeRunsUnchanged()

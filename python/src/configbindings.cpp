@@ -9,6 +9,8 @@
 
 #include <pybind11/stl.h>
 
+#include <optional>
+
 namespace py = pybind11;
 
 namespace RtPython {
@@ -39,33 +41,47 @@ std::vector<coil::Properties> configurationSets(RTC::ConfigAdmin &admin)
     return sets;
 }
 
+/// Calls into the configuration are made without the interpreter: the configuration tells its
+/// listeners, which take the interpreter, while it holds its lock, so a thread that waits for that
+/// lock (the execution context asking for the active set) must not hold the interpreter meanwhile.
+using WithoutGil = py::call_guard<py::gil_scoped_release>;
+
 void bindConfigAdmin(py::module_ &module)
 {
     py::class_<RTC::ConfigAdmin, std::unique_ptr<RTC::ConfigAdmin, py::nodelete>>(module, "ConfigAdmin")
-        .def("getActiveId", &RTC::ConfigAdmin::getActiveId)
-        .def("haveConfig", &RTC::ConfigAdmin::haveConfig, py::arg("config_id"))
-        .def("isActive", &RTC::ConfigAdmin::isActive)
-        .def("isChanged", &RTC::ConfigAdmin::isChanged)
-        .def("isExist", &RTC::ConfigAdmin::isExist, py::arg("param_name"))
-        .def("changedParameters", &RTC::ConfigAdmin::changedParameters)
-        .def("getConfigurationSets", &configurationSets)
-        .def("getConfigurationSet", [](RTC::ConfigAdmin &admin, const char *id) {
-            return coil::Properties(admin.getConfigurationSet(id));
-        }, py::arg("config_id"))
+        .def("getActiveId", [](RTC::ConfigAdmin &admin) { return std::string(admin.getActiveId()); }, WithoutGil())
+        .def("haveConfig", &RTC::ConfigAdmin::haveConfig, py::arg("config_id"), WithoutGil())
+        .def("isActive", &RTC::ConfigAdmin::isActive, WithoutGil())
+        .def("isChanged", &RTC::ConfigAdmin::isChanged, WithoutGil())
+        .def("isExist", &RTC::ConfigAdmin::isExist, py::arg("param_name"), WithoutGil())
+        .def("changedParameters", [](RTC::ConfigAdmin &admin) { return coil::vstring(admin.changedParameters()); },
+             WithoutGil())
+        .def("getConfigurationSets", &configurationSets, WithoutGil())
+        .def("getConfigurationSet", [](RTC::ConfigAdmin &admin, const std::string &id) {
+            return coil::Properties(admin.getConfigurationSet(id.c_str()));
+        }, py::arg("config_id"), WithoutGil())
         .def("getActiveConfigurationSet", [](RTC::ConfigAdmin &admin) {
             return coil::Properties(admin.getActiveConfigurationSet());
-        })
-        .def("activateConfigurationSet", &RTC::ConfigAdmin::activateConfigurationSet, py::arg("config_id"))
-        .def("addConfigurationSet", &RTC::ConfigAdmin::addConfigurationSet, py::arg("configuration_set"))
-        .def("setConfigurationSetValues", &RTC::ConfigAdmin::setConfigurationSetValues, py::arg("config_set"))
-        .def("removeConfigurationSet", &RTC::ConfigAdmin::removeConfigurationSet, py::arg("config_id"))
+        }, WithoutGil())
+        .def("activateConfigurationSet", &RTC::ConfigAdmin::activateConfigurationSet, py::arg("config_id"),
+             WithoutGil())
+        .def("addConfigurationSet", &RTC::ConfigAdmin::addConfigurationSet, py::arg("configuration_set"),
+             WithoutGil())
+        .def("setConfigurationSetValues", &RTC::ConfigAdmin::setConfigurationSetValues, py::arg("config_set"),
+             WithoutGil())
+        .def("removeConfigurationSet", &RTC::ConfigAdmin::removeConfigurationSet, py::arg("config_id"),
+             WithoutGil())
         .def("update", [](RTC::ConfigAdmin &admin, py::object set, py::object param) {
-            if (set.is_none())
+            const std::optional<std::string> setId = set.is_none() ? std::nullopt : std::optional(set.cast<std::string>());
+            const std::optional<std::string> name
+                = param.is_none() ? std::nullopt : std::optional(param.cast<std::string>());
+            py::gil_scoped_release released;
+            if (!setId)
                 admin.update();
-            else if (param.is_none())
-                admin.update(set.cast<std::string>().c_str());
+            else if (!name)
+                admin.update(setId->c_str());
             else
-                admin.update(set.cast<std::string>().c_str(), param.cast<std::string>().c_str());
+                admin.update(setId->c_str(), name->c_str());
         }, py::arg("config_set") = py::none(), py::arg("config_param") = py::none());
 }
 
@@ -86,11 +102,14 @@ void bindListenerKind(ComponentClass &component, ListenerKind kind, const char *
         .def(addName, [kind, add](PyComponent &self, Type type, py::object listener, bool) {
             auto *made = new Made(listener);
             self.rememberListener(kind, int(type), listener, made);
+            py::gil_scoped_release released; // see WithoutGil
             (self.*add)(type, made, true);
         }, py::arg("type"), py::arg("listener"), py::arg("autoclean") = true)
         .def(removeName, [kind, remove](PyComponent &self, Type type, py::object listener) {
-            if (void *made = self.takeListener(kind, int(type), listener))
+            if (void *made = self.takeListener(kind, int(type), listener)) {
+                py::gil_scoped_release released;
                 (self.*remove)(type, static_cast<Made *>(made));
+            }
         }, py::arg("type"), py::arg("listener"));
 }
 

@@ -122,6 +122,8 @@ bool PyComponent::bindPythonParameter(const std::string &name, py::object variab
     auto parameter = std::make_shared<PyParameter>(std::move(variable), std::move(trans));
     if (!parameter->set(defaultValue))
         return false;
+    // Without the interpreter, as every call into the configuration (configbindings.cpp).
+    py::gil_scoped_release released;
     getConfigService().bindSetter(name.c_str(), defaultValue.c_str(),
                                   [parameter](const char *text) { return parameter->set(text); });
     // As OpenRTM-aist-Python's bindParameter: the variable takes the active set's value at once
@@ -224,7 +226,8 @@ void bindComponent(py::module_ &module)
         .def("addPort", &PyComponent::addPythonPort, py::arg("port"))
         .def("bindParameter", &PyComponent::bindPythonParameter, py::arg("param_name"), py::arg("var"),
              py::arg("def_val"), py::arg("trans") = py::none())
-        .def("updateParameters", &PyComponent::updateParameters, py::arg("config_set"))
+        .def("updateParameters", &PyComponent::updateParameters, py::arg("config_set"),
+             py::call_guard<py::gil_scoped_release>()) // see WithoutGil in configbindings.cpp
         .def("getInstanceName", &PyComponent::getInstanceName)
         .def("getTypeName", &PyComponent::getTypeName)
         .def("getCategory", &PyComponent::getCategory)
