@@ -64,12 +64,18 @@ py::object PyInPort::readValue()
 
 void PyInPort::addDataListener(RTC::ConnectorDataListenerType type, py::object listener)
 {
-    addConnectorDataListener(type, new PyDataListener(std::move(listener), dataType(), "inport"));
+    auto *made = new PyDataListener(std::move(listener), dataType(), "inport");
+    // The port's lock is also taken by the ORB's threads while they call listeners, which wait for
+    // the GIL: it is not held while waiting for that lock (as in portbindings.cpp).
+    py::gil_scoped_release released;
+    addConnectorDataListener(type, made);
 }
 
 void PyInPort::addConnectorListener(RTC::ConnectorListenerType type, py::object listener)
 {
-    RTC::InPortBase::addConnectorListener(type, new PyConnectorListener(std::move(listener)));
+    auto *made = new PyConnectorListener(std::move(listener));
+    py::gil_scoped_release released; // see addDataListener()
+    RTC::InPortBase::addConnectorListener(type, made);
 }
 
 } // namespace RtPython

@@ -63,12 +63,18 @@ bool PyOutPort::writeValue(py::object value)
 
 void PyOutPort::addDataListener(RTC::ConnectorDataListenerType type, py::object listener)
 {
-    addConnectorDataListener(type, new PyDataListener(std::move(listener), dataType(), "outport"));
+    auto *made = new PyDataListener(std::move(listener), dataType(), "outport");
+    // The port's lock is also taken by the ORB's threads while they call listeners, which wait for
+    // the GIL: it is not held while waiting for that lock (as in portbindings.cpp).
+    py::gil_scoped_release released;
+    addConnectorDataListener(type, made);
 }
 
 void PyOutPort::addConnectorListener(RTC::ConnectorListenerType type, py::object listener)
 {
-    RTC::OutPortBase::addConnectorListener(type, new PyConnectorListener(std::move(listener)));
+    auto *made = new PyConnectorListener(std::move(listener));
+    py::gil_scoped_release released; // see addDataListener()
+    RTC::OutPortBase::addConnectorListener(type, made);
 }
 
 } // namespace RtPython
