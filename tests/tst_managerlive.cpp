@@ -816,11 +816,13 @@ void TestManagerLive::undecodableReferencesLeaveNoTrace()
         try {
             QCOMPARE(contexts[0]->remove_component(component), RTC::BAD_PARAMETER);
         } catch (const CORBA::Exception &e) {
-            QFAIL(qPrintable(QString("request %1: %2").arg(i).arg(QString::fromStdString(Runtime::describeException(e)))));
+            const QString reason = QString::fromStdString(Runtime::describeException(e));
+            QFAIL(qPrintable(QString("request %1: %2").arg(i).arg(reason)));
         }
     }
     const qint64 after = residentKiB(m_masterProcess->processId());
-    QVERIFY2(after - before < 32 * 1024, qPrintable(QString("the manager grew from %1 KiB to %2 KiB").arg(before).arg(after)));
+    QVERIFY2(after - before < 32 * 1024,
+             qPrintable(QString("the manager grew from %1 KiB to %2 KiB").arg(before).arg(after)));
     QCOMPARE(m_master->delete_component(RTC::ComponentProfile_var(rtc->get_component_profile())->instance_name),
              RTC::RTC_OK);
 }

@@ -72,7 +72,8 @@ void bindConfigAdmin(py::module_ &module)
         .def("removeConfigurationSet", &RTC::ConfigAdmin::removeConfigurationSet, py::arg("config_id"),
              WithoutGil())
         .def("update", [](RTC::ConfigAdmin &admin, py::object set, py::object param) {
-            const std::optional<std::string> setId = set.is_none() ? std::nullopt : std::optional(set.cast<std::string>());
+            const std::optional<std::string> setId
+                = set.is_none() ? std::nullopt : std::optional(set.cast<std::string>());
             const std::optional<std::string> name
                 = param.is_none() ? std::nullopt : std::optional(param.cast<std::string>());
             py::gil_scoped_release released;
