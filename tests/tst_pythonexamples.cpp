@@ -293,13 +293,13 @@ void TestPythonExamples::configurationChangesWhileExecuting()
     QProcess *busy = m_scripts.start(LiveTest::pythonTestScript(QStringLiteral("PyConfigBusy.py")),
                                      {QStringLiteral("PyConfigBusy0.rtc")}, runTimeoutMs);
     QVERIFY(busy);
-    QTRY_VERIFY2_WITH_TIMEOUT(printed(busy).contains(QLatin1String("gain [0] sets told 0\n")), qPrintable(printed(busy)),
-                              runTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(busy).contains(QLatin1String("gain [0] sets told 0 params told 0\n")),
+                              qPrintable(printed(busy)), runTimeoutMs);
     for (int gain = 1; gain <= 10; ++gain) {
         QVERIFY2(rtctlSucceeds({"conf", "PyConfigBusy0.rtc", "set", "gain", QString::number(gain)}),
                  qPrintable(printed(busy).right(600)));
     }
-    QTRY_VERIFY2_WITH_TIMEOUT(printed(busy).contains(QLatin1String("gain [10] sets told 10\n")),
+    QTRY_VERIFY2_WITH_TIMEOUT(printed(busy).contains(QLatin1String("gain [10] sets told 10 params told 10\n")),
                               qPrintable(printed(busy).right(600)), runTimeoutMs);
     m_live.stop(busy);
 }

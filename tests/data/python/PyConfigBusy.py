@@ -59,7 +59,7 @@ class PyConfigBusy(OpenRTM_aist.DataFlowComponentBase):
         for _ in range(2000):
             self._configsets.getActiveId()
             self._configsets.isChanged()
-        current = "gain %r sets told %d" % (self._gain, self._sets.count)
+        current = "gain %r sets told %d params told %d" % (self._gain, self._sets.count, self._params.count)
         if current != self._printed:
             print(current, flush=True)
             self._printed = current
