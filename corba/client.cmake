@@ -21,7 +21,7 @@ target_link_libraries(rtstudio_client PRIVATE
     $<TARGET_FILE:rtpackageinstall>
     $<TARGET_FILE:rtplanner> $<TARGET_FILE:rtprofile>
     -Wl,--no-whole-archive
-    rtcorba_stubs rtcorba_tls yaml-cpp rtstudio_omniorb PkgConfig::Z3 Qt6::Network Qt6::Core)
+    rtcorba_stubs rtcorba_tls rtcorba_guard yaml-cpp rtstudio_omniorb PkgConfig::Z3 Qt6::Network Qt6::Core)
 add_dependencies(rtstudio_client rtdeploy rtcorba rtpackages rtpackageinstall rtplanner rtprofile)
 
 set(rtstudio_client_headers "")

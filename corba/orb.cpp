@@ -3,6 +3,7 @@
 
 #include "corbacall.h"
 #include "iorendpoint.h"
+#include "referenceguard.h"
 #include "rtpath.h"
 #include "tlstransport.h"
 
@@ -87,6 +88,7 @@ void createOrb()
                                 {"verifyObjectExistsAndType", "0"},
                                 {nullptr, nullptr}};
     s_orb = CORBA::ORB_init(argc, argv.data(), "omniORB4", options);
+    ReferenceGuard::install();
     if (Tls::Transport::installed())
         omniORB::getInterceptors()->clientOpenConnection.add(recordPeer);
     s_initialised = true;
@@ -196,6 +198,15 @@ QString tlsFailure()
     return reason.empty() ? QString() : QStringLiteral(": ") + QString::fromStdString(reason);
 }
 
+/// @p text, or its start and end around an ellipsis when it is longer than a message should quote.
+QString elided(const QString &text)
+{
+    const qsizetype shown = 120;
+    if (text.size() <= shown)
+        return text;
+    return text.left(shown / 2) + QStringLiteral("…") + text.right(shown / 2);
+}
+
 } // namespace
 
 void rethrowAsError(const QString &target)
@@ -252,10 +263,19 @@ CORBA::Object_ptr toObject(const QString &reference, const QString &target)
     return call(target, [&] {
         try {
             const QString address = Orb::usesTls() ? corbalocOverTls(reference) : corbalocWithGiop12(reference);
-            return orb()->string_to_object(address.toLatin1().constData());
-        } catch (const CORBA::BAD_PARAM &) {
+            const unsigned long standIns = ReferenceGuard::standInsOnThisThread();
+            CORBA::Object_var object = orb()->string_to_object(address.toLatin1().constData());
+            if (ReferenceGuard::standInsOnThisThread() != standIns) {
+                throw Error(Error::Kind::BadPath, QStringLiteral("%1: not an object reference (its profile does not "
+                                                                 "decode): %2").arg(target, elided(reference)));
+            }
+            return object._retn();
+        } catch (const CORBA::SystemException &e) {
+            // Turning text into a reference makes no remote call: BAD_PARAM or MARSHAL means the text.
+            if (!CORBA::BAD_PARAM::_downcast(&e) && !CORBA::MARSHAL::_downcast(&e))
+                throw;
             throw Error(Error::Kind::BadPath,
-                        QStringLiteral("%1: not an object reference: %2").arg(target, reference));
+                        QStringLiteral("%1: not an object reference: %2").arg(target, elided(reference)));
         }
     });
 }

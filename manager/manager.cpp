@@ -160,7 +160,7 @@ bool Manager::initOrb(std::string *error)
     for (const auto &endpoint : endpoints)
         ports.push_back(endpoint.second);
     ConnectionLimit::install(int(configNumber("corba.max_connections", DefaultConnectionLimit)), ports);
-    ReferenceGuard::install();
+    Corba::ReferenceGuard::install();
     // No remote call may block forever: every outgoing call and connect is bounded.
     omniORB::setClientCallTimeout(CORBA::ULong(configNumber("corba.call_timeout", 5000)));
     omniORB::setClientConnectTimeout(CORBA::ULong(configNumber("corba.connect_timeout", 2000)));

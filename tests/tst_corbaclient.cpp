@@ -7,17 +7,13 @@
 #include "orb.h"
 #include "portconnection.h"
 
-#include <QDeadlineTimer>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QTest>
 #include <QThread>
 
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <thread>
@@ -46,8 +42,6 @@ private slots:
     void shutsTheManagerDown();
     void unreachablePeersGiveTypedErrors();
     void stoppedPeerTimesOut();
-    void nameServerSpeakingGarbage_data();
-    void nameServerSpeakingGarbage();
     void callsFromWorkerThreads();
 
 private:
@@ -487,107 +481,6 @@ void TestCorbaClient::callsFromWorkerThreads()
     for (std::thread &thread : threads)
         thread.join();
     QCOMPARE(good.load(), 40);
-}
-
-namespace {
-
-/**
- * A loopback TCP server standing in for a name server: it answers every request with `reply`
- * and closes, or with an empty `reply` keeps the connection open and says nothing. It serves
- * until destroyed.
- */
-class FakeServer
-{
-public:
-    explicit FakeServer(QByteArray reply)
-        : m_reply(std::move(reply))
-    {
-        m_socket = ::socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in address {};
-        address.sin_family = AF_INET;
-        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        socklen_t length = sizeof address;
-        if (::bind(m_socket, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0
-            && ::listen(m_socket, 8) == 0
-            && ::getsockname(m_socket, reinterpret_cast<sockaddr *>(&address), &length) == 0)
-            m_port = ntohs(address.sin_port);
-        m_thread = std::thread([this] { serve(); });
-    }
-    ~FakeServer()
-    {
-        m_stopping = true;
-        ::shutdown(m_socket, SHUT_RDWR);
-        m_thread.join();
-        ::close(m_socket);
-        for (int client : m_silent)
-            ::close(client);
-    }
-    quint16 port() const { return m_port; }
-
-private:
-    void serve()
-    {
-        while (!m_stopping) {
-            const int client = ::accept(m_socket, nullptr, nullptr);
-            if (client < 0)
-                return;
-            char request[4096];
-            if (::recv(client, request, sizeof request, 0) > 0 && !m_reply.isEmpty()) {
-                ::send(client, m_reply.constData(), size_t(m_reply.size()), MSG_NOSIGNAL);
-                ::close(client);
-            } else {
-                m_silent.push_back(client);
-            }
-        }
-    }
-
-    QByteArray m_reply;
-    int m_socket = -1;
-    quint16 m_port = 0;
-    std::atomic<bool> m_stopping {false};
-    std::vector<int> m_silent;
-    std::thread m_thread;
-};
-
-} // namespace
-
-void TestCorbaClient::nameServerSpeakingGarbage_data()
-{
-    QTest::addColumn<QByteArray>("reply");
-    QTest::addColumn<int>("kind");
-    QTest::newRow("http") << QByteArray("HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n\r\n")
-                          << int(Error::Kind::CommFailure);
-    // A GIOP header announcing a reply far longer than what follows.
-    QTest::newRow("truncated giop") << QByteArray("GIOP\x01\x02\x01\x01\xff\xff\x00\x00\x00\x00", 14)
-                                    << int(Error::Kind::CommFailure);
-    QTest::newRow("random bytes") << QByteArray(64, '\xa5') << int(Error::Kind::CommFailure);
-    QTest::newRow("silent") << QByteArray() << int(Error::Kind::Timeout);
-}
-
-void TestCorbaClient::nameServerSpeakingGarbage()
-{
-    // Whatever a server at a name server's address sends, a listing ends within the call timeout
-    // with a typed error naming the server, and a tree of the root shows it as a zombie.
-    QFETCH(QByteArray, reply);
-    QFETCH(int, kind);
-    FakeServer server(reply);
-    QVERIFY(server.port() != 0);
-    const int timeout = 700;
-    Orb::setCallTimeout(timeout);
-    struct Restore
-    {
-        ~Restore() { Orb::setCallTimeout(2000); }
-    } restore;
-    const QString address = QStringLiteral("127.0.0.1:%1").arg(server.port());
-    QElapsedTimer timer;
-    timer.start();
-    const Error::Kind got = kindOf([&] { NamingBrowser::list(*RtPath::parse('/' + address)); });
-    QVERIFY2(timer.elapsed() < timeout + 1500, qPrintable(QString::number(timer.elapsed())));
-    QVERIFY2(int(got) == kind || (kind == int(Error::Kind::CommFailure) && got == Error::Kind::System),
-             qPrintable(Error::kindName(got)));
-    QVERIFY(messageOf([&] { NamingBrowser::list(*RtPath::parse('/' + address)); }).contains(address));
-    const NamingNode root = NamingBrowser::tree(*RtPath::parse("/"), 2, {address});
-    QCOMPARE(root.children.at(0).type, NodeType::Zombie);
 }
 
 QTEST_GUILESS_MAIN(TestCorbaClient)

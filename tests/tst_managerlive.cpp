@@ -5,6 +5,7 @@
 #include "corbautil.h"
 #include "livesystem.h"
 #include "referenceguard.h"
+#include "roguereference.h"
 
 #include <RTStudioManager.hh>
 #include <omniORB4/Naming.hh>
@@ -84,44 +85,6 @@ RTC::ReturnCode_t activate(RTC::RTObject_ptr rtc)
 {
     RTC::ExecutionContextList_var ecs = rtc->get_owned_contexts();
     return ecs->length() ? ecs[0]->activate_component(rtc) : RTC::BAD_PARAMETER;
-}
-
-/// A stringified reference whose one IIOP profile does not decode: its host name claims more bytes
-/// than the profile holds; @p padding bytes follow it.
-QByteArray undecodableReference(int padding)
-{
-    QByteArray cdr;
-    const auto appendULong = [](QByteArray &to, quint32 value) {
-        while (to.size() % 4)
-            to.append('\0');
-        const quint32 little = qToLittleEndian(value);
-        to.append(reinterpret_cast<const char *>(&little), sizeof little);
-    };
-    cdr.append('\1'); // little endian
-    const QByteArray type("IDL:omg.org/RTC/LightweightRTObject:1.0");
-    appendULong(cdr, quint32(type.size() + 1));
-    cdr.append(type).append('\0');
-    appendULong(cdr, 1); // one profile
-    appendULong(cdr, 0); // TAG_INTERNET_IOP
-    QByteArray body("\1\1\2", 3); // little endian, IIOP 1.2
-    appendULong(body, 0xfffffff0u); // the host name's length
-    body.append(QByteArray(padding, 'x'));
-    appendULong(cdr, quint32(body.size()));
-    cdr.append(body);
-    return "IOR:" + cdr.toHex();
-}
-
-/// The resident memory of process @p pid in KiB, -1 when unknown.
-qint64 residentKiB(qint64 pid)
-{
-    QFile file(QString("/proc/%1/status").arg(pid));
-    if (!file.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray &line : file.readAll().split('\n')) {
-        if (line.startsWith("VmRSS:"))
-            return line.mid(6).trimmed().split(' ').value(0).toLongLong();
-    }
-    return -1;
 }
 
 } // namespace
@@ -792,8 +755,8 @@ void TestManagerLive::connectionsBeyondTheLimitAreClosed()
 void TestManagerLive::undecodableReferencesLeaveNoTrace()
 {
     // This process makes such references the same way, so that it can send one.
-    Runtime::ReferenceGuard::install();
-    const QByteArray text = undecodableReference(128 * 1024);
+    Corba::ReferenceGuard::install();
+    const QByteArray text = LiveTest::undecodableReference(128 * 1024);
     CORBA::Object_var undecodable = m_orb->string_to_object(text.constData());
     QVERIFY(!CORBA::is_nil(undecodable));
     QVERIFY(undecodable->_non_existent());
@@ -809,7 +772,7 @@ void TestManagerLive::undecodableReferencesLeaveNoTrace()
     QVERIFY2(!CORBA::is_nil(rtc), qPrintable(lastError(m_master)));
     RTC::ExecutionContextList_var contexts = rtc->get_owned_contexts();
     QCOMPARE(contexts->length(), 1u);
-    const qint64 before = residentKiB(m_masterProcess->processId());
+    const qint64 before = LiveTest::residentKiB(m_masterProcess->processId());
     QVERIFY(before > 0);
     // 1,000 requests carrying 128 KiB each: 128 MiB if the manager kept what it read.
     for (int i = 0; i < 1000; ++i) {
@@ -820,7 +783,7 @@ void TestManagerLive::undecodableReferencesLeaveNoTrace()
             QFAIL(qPrintable(QString("request %1: %2").arg(i).arg(reason)));
         }
     }
-    const qint64 after = residentKiB(m_masterProcess->processId());
+    const qint64 after = LiveTest::residentKiB(m_masterProcess->processId());
     QVERIFY2(after - before < 32 * 1024,
              qPrintable(QString("the manager grew from %1 KiB to %2 KiB").arg(before).arg(after)));
     QCOMPARE(m_master->delete_component(RTC::ComponentProfile_var(rtc->get_component_profile())->instance_name),

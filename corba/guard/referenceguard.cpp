@@ -9,12 +9,14 @@
 #include <cstring>
 #include <mutex>
 
-namespace Runtime {
+namespace Corba {
 
 namespace {
 
 /// The object key of the references that stand in for undecodable ones: no POA or INS object has it.
 constexpr const char *NoObjectKey = "RTStudio/undecodable-reference";
+
+thread_local unsigned long t_standIns = 0;
 
 /// Selects the profile omniORB would (the first IIOP one) and decodes the reference as omniORB is
 /// about to; true when that succeeds.
@@ -48,6 +50,7 @@ CORBA::Boolean guardIdentity(omni::omniInterceptors::createIdentity_T::info_T &i
     }
     // createIdentity consumes the IOR it is given; the reference keeps its own.
     info.ior->release();
+    ++t_standIns;
     return false;
 }
 
@@ -59,4 +62,9 @@ void ReferenceGuard::install()
     std::call_once(installed, [] { omniORB::getInterceptors()->createIdentity.add(guardIdentity); });
 }
 
-} // namespace Runtime
+unsigned long ReferenceGuard::standInsOnThisThread()
+{
+    return t_standIns;
+}
+
+} // namespace Corba
