@@ -811,6 +811,9 @@ void TestPythonExamples::serializerExampleRunsUnchanged()
     QVERIFY2(QRegularExpression(QStringLiteral("ON_SEND\n.*\n.*\nData: +-?\\d+\n")).match(printed(source)).hasMatch(),
              qPrintable(printed(source).right(2000)));
     QVERIFY(rtctlSucceeds({"deact", "ConsoleInShort0.rtc", "ConsoleOutDouble0.rtc"}));
+    // A source that has read every number (a slow test) waits in onExecute for the next one, and
+    // neither its deactivation nor its exit can end that wait: one more line lets it return.
+    source->write("0\n");
     // Their exits take their names out of the name server (the next row's programs register them
     // again), which killed programs would leave there.
     QVERIFY(rtctlSucceeds({"exit", "ConsoleInShort0.rtc"}));
