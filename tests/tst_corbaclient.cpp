@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "componentproxy.h"
 #include "corbaerror.h"
+#include "errorof.h"
 #include "livesystem.h"
 #include "managerproxy.h"
 #include "namingbrowser.h"
@@ -19,6 +20,8 @@
 #include <thread>
 
 using namespace Corba;
+using LiveTest::kindOf;
+using LiveTest::messageOf;
 
 // Every client call against live peers: omniNames plus rtstudio_livepeer processes.
 class TestCorbaClient : public QObject
@@ -51,26 +54,6 @@ private:
     LiveTest::LiveSystem m_live;
     quint16 m_peerPort = 0;
 };
-
-static Error::Kind kindOf(const std::function<void()> &action)
-{
-    try {
-        action();
-    } catch (const Error &e) {
-        return e.kind();
-    }
-    return Error::Kind(-1);
-}
-
-static QString messageOf(const std::function<void()> &action)
-{
-    try {
-        action();
-    } catch (const Error &e) {
-        return e.message();
-    }
-    return QString();
-}
 
 RtPath TestCorbaClient::path(const QString &relative) const
 {

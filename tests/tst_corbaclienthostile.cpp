@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "componentproxy.h"
 #include "corbaerror.h"
+#include "errorof.h"
 #include "namingbrowser.h"
 #include "orb.h"
 #include "roguereference.h"
@@ -20,6 +21,8 @@
 #include <thread>
 
 using namespace Corba;
+using LiveTest::kindOf;
+using LiveTest::messageOf;
 
 // The client library against peers that are not what they claim: servers answering with
 // garbage, silence, or object references that do not decode.
@@ -36,26 +39,6 @@ private slots:
 };
 
 namespace {
-
-Error::Kind kindOf(const std::function<void()> &action)
-{
-    try {
-        action();
-    } catch (const Error &e) {
-        return e.kind();
-    }
-    return Error::Kind(-1);
-}
-
-QString messageOf(const std::function<void()> &action)
-{
-    try {
-        action();
-    } catch (const Error &e) {
-        return e.message();
-    }
-    return QString();
-}
 
 /**
  * A loopback TCP server standing in for a name server. It hands each connection it accepts, one

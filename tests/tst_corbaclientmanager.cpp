@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "componentproxy.h"
 #include "corbaerror.h"
+#include "errorof.h"
 #include "livesystem.h"
 #include "managerproxy.h"
 #include "namingbrowser.h"
@@ -17,6 +18,7 @@
 #include <thread>
 
 using namespace Corba;
+using LiveTest::kindOf;
 
 // The client library against the project's real rtmanager (manager/) and omniNames.
 class TestCorbaClientManager : public QObject
@@ -43,16 +45,6 @@ private:
     LiveTest::LiveSystem m_live;
     quint16 m_port = 0;
 };
-
-static Error::Kind kindOf(const std::function<void()> &action)
-{
-    try {
-        action();
-    } catch (const Error &e) {
-        return e.kind();
-    }
-    return Error::Kind(-1);
-}
 
 RtPath TestCorbaClientManager::path(const QString &name) const
 {
